@@ -1,0 +1,26 @@
+# mdr: the two commands of the README are `make demo` and `make test`.
+BUILD_DIR := build
+PYTHON := /usr/bin/python3
+JOBS ?= $(shell nproc)
+
+.PHONY: deps build test demo bench clean
+
+deps:
+	@scripts/install-deps
+
+build: deps
+	@cmake --preset release >/dev/null
+	@cmake --build $(BUILD_DIR) -j $(JOBS)
+
+test: build
+	@ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
+
+demo: build
+	@$(BUILD_DIR)/bin/mdr run examples/default.toml --out out/demo
+	@PYTHONPATH=$(BUILD_DIR)/python MPLBACKEND=Agg $(PYTHON) -m mdr plot out/demo
+
+bench: build
+	@$(BUILD_DIR)/bin/mdr_bench --benchmark_counters_tabular=true
+
+clean:
+	@rm -rf $(BUILD_DIR) build-dev out

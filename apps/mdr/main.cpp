@@ -1,0 +1,41 @@
+// mdr: viscoelastic contact mechanics by the Method of Dimensionality Reduction, from the command line.
+
+#include "commands.hpp"
+
+#include <cstdio>
+
+#include "mdr/error.hpp"
+
+namespace mdr::cli {
+
+int guarded(const std::function<void()>& body) {
+    try {
+        body();
+        return 0;
+    } catch (const InvalidInput& error) {
+        std::fprintf(stderr, "mdr: error: %s\n", error.what());
+        return 2;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "mdr: error: %s\n", error.what());
+        return 1;
+    }
+}
+
+}  // namespace mdr::cli
+
+int main(int argc, char** argv) {
+    CLI::App app{"mdr: viscoelastic contact mechanics by the Method of Dimensionality Reduction"};
+    app.set_version_flag("--version", std::string("mdr ") + MDR_VERSION);
+    app.require_subcommand(1);
+    int exit_code = 0;
+    mdr::cli::add_run_command(app, exit_code);
+    mdr::cli::add_check_command(app, exit_code);
+    mdr::cli::add_material_command(app, exit_code);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        const int code = app.exit(error);
+        return code == 0 ? 0 : 2;
+    }
+    return exit_code;
+}

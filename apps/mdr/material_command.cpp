@@ -1,0 +1,62 @@
+// `mdr material CASE --out DIR`: tabulates the material functions of a case as `run` uses them.
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "mdr/error.hpp"
+#include "mdr/io/case_file.hpp"
+#include "mdr/io/material_table.hpp"
+#include "mdr/io/result_files.hpp"
+
+namespace mdr::cli {
+namespace {
+
+std::vector<double> parse_list(const std::string& text, const std::string& option) {
+    std::vector<double> values;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        const std::string item = text.substr(start, comma - start);
+        std::size_t used = 0;
+        double value = 0.0;
+        try {
+            value = std::stod(item, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used == 0 || used != item.size()) throw InvalidInput(option, item, "must be a comma-separated list of numbers");
+        require_positive(option, value);
+        values.push_back(value);
+        start = comma + 1;
+    }
+    return values;
+}
+
+}  // namespace
+
+void add_material_command(CLI::App& app, int& exit_code) {
+    auto* command = app.add_subcommand("material", "Tabulate G(t), J(t) and the complex modulus of a case's material");
+    auto case_path = std::make_shared<std::string>();
+    auto out = std::make_shared<std::string>();
+    auto times = std::make_shared<std::string>();
+    auto omegas = std::make_shared<std::string>();
+    command->add_option("case", *case_path, "The TOML case file")->required();
+    command->add_option("--out,-o", *out, "Result directory (replaced if it exists)")->required();
+    command->add_option("--times", *times, "Comma-separated times t1,t2,... [s] (default: log grid)");
+    command->add_option("--omegas", *omegas, "Comma-separated angular frequencies [rad/s] (default: log grid)");
+    command->callback([=, &exit_code] {
+        exit_code = guarded([&] {
+            const auto contact_case = io::load_case(*case_path);
+            const auto& material = contact_case.material;
+            const auto t = times->empty() ? io::default_times(material) : parse_list(*times, "--times");
+            const auto w = omegas->empty() ? io::default_omegas(material) : parse_list(*omegas, "--omegas");
+            io::write_directory_atomically(*out, [&](const std::filesystem::path& directory) {
+                io::write_material_tables(directory, material, contact_case.shear_material, t, w);
+            });
+            fmt::print("{} times, {} frequencies written to {}/ (functions.csv, dynamic.csv)\n", t.size(), w.size(),
+                       *out);
+        });
+    });
+}
+
+}  // namespace mdr::cli

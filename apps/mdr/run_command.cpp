@@ -1,0 +1,48 @@
+// `mdr run CASE --out DIR`: runs a case and writes its result directory.
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "commands.hpp"
+#include "mdr/drivers/indentation.hpp"
+#include "mdr/io/case_file.hpp"
+#include "mdr/io/result_files.hpp"
+#include "progress.hpp"
+
+namespace mdr::cli {
+
+void add_run_command(CLI::App& app, int& exit_code) {
+    auto* command = app.add_subcommand("run", "Run a case file and write history.csv, summary.json, profiles.csv");
+    auto case_path = std::make_shared<std::string>();
+    auto out = std::make_shared<std::string>();
+    command->add_option("case", *case_path, "The TOML case file")->required();
+    command->add_option("--out,-o", *out, "Result directory (replaced if it exists)")->required();
+    command->callback([case_path, out, &exit_code] {
+        exit_code = guarded([&] {
+            const auto contact_case = io::load_case(*case_path);
+            const auto start = std::chrono::steady_clock::now();
+            ProgressReporter progress;
+            const auto result = drivers::run_indentation(contact_case, std::ref(progress));
+            progress.finish();
+            const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            io::write_directory_atomically(*out, [&](const std::filesystem::path& directory) {
+                io::write_indentation_result(directory, contact_case, result, wall);
+            });
+            const double max_force = *std::max_element(result.force.begin(), result.force.end());
+            const double max_depth = *std::max_element(result.depth.begin(), result.depth.end());
+            const double max_radius = *std::max_element(result.radius.begin(), result.radius.end());
+            fmt::print("{}\n", io::describe(contact_case));
+            fmt::print("  {} steps x {} elements (half-width {:.4g} m, time step {:.4g} s) in {:.3f} s\n",
+                       result.steps, result.numerics.elements, result.numerics.half_width, result.numerics.time_step,
+                       wall);
+            fmt::print("  max force {:.6g} N, max depth {:.6g} m, max contact radius {:.6g} m\n", max_force,
+                       max_depth, max_radius);
+            fmt::print("  results in {}/ (history.csv, summary.json{})\n", *out,
+                       result.snapshots.empty() ? "" : ", profiles.csv");
+        });
+    });
+}
+
+}  // namespace mdr::cli

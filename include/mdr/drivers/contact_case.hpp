@@ -1,0 +1,74 @@
+#pragma once
+/// \file
+/// A normal-contact problem as the drivers see it: material, indenter, load and numerics (no file format here).
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mdr/drivers/load_history.hpp"
+#include "mdr/profile/profile.hpp"
+#include "mdr/rheology/rheology.hpp"
+
+namespace mdr::drivers {
+
+/// How the normal load is prescribed.
+enum class Control {
+    displacement,  ///< depth history d(t)
+    force,         ///< force history F(t) >= 0; the depth is solved for each step
+};
+
+/// User choices of `[numerics]`; every field optional, defaults come from the problem's scales.
+struct NumericsOptions {
+    std::optional<std::size_t> elements;   ///< elements on the half-width
+    std::optional<double> time_step;       ///< largest time step [s]
+    std::optional<double> half_width;      ///< half-width L of the foundation [m]
+    std::size_t output_every = 1;          ///< write every n-th step
+};
+
+/// The numerics actually used, after defaults.
+struct ResolvedNumerics {
+    std::size_t elements = 0;    ///< elements on the half-width
+    double time_step = 0.0;      ///< largest time step [s]
+    double half_width = 0.0;     ///< half-width L [m]
+    std::size_t output_every = 1;
+};
+
+/// A normal indentation problem: a rigid axisymmetric indenter on a viscoelastic half-space.
+struct ContactCase {
+    std::string title;                                  ///< free text
+    rheology::Rheology material;                        ///< combined material (eq. 8)
+    std::shared_ptr<const profile::Profile> indenter;   ///< the gap f(r)
+    Control control = Control::displacement;            ///< what the history prescribes
+    LoadHistory history;                                ///< (t, d) or (t, F) points
+    double end_time = 0.0;                              ///< last time simulated [s]
+    std::vector<double> snapshots;                      ///< times of pressure profiles [s]
+    NumericsOptions numerics;                           ///< `[numerics]`
+    std::optional<rheology::Rheology> shear_material;   ///< the shear part alone, when a bulk part was folded in
+};
+
+/// Elements on the half-width when `[numerics] elements` is not given. With the half-width 1.1 times the largest
+/// contact radius, the contact spans ~1800 elements at the peak, so the midpoint-rule error of the force,
+/// O((dx/a)^2), stays below 1e-5 of the peak force down to a tenth of the peak contact radius.
+inline constexpr std::size_t default_elements = 2000;
+/// Steps over the whole history when `[numerics] time_step` is not given; see resolve_numerics.
+inline constexpr std::size_t default_steps = 2000;
+/// Smallest number of steps per history segment.
+inline constexpr std::size_t min_steps_per_segment = 20;
+
+/// Resolves the defaults: the half-width covers the largest contact radius with a 10% margin (displacement
+/// control: the Lee-Radok radius g^-1(max d), an upper bound also under unloading since the free surface never
+/// rises above the undeformed level; force control: the elastic radius at the largest force with the softest
+/// modulus 1/J(t_end - t_start), 25% margin); a flat punch uses its own radius. The time step is the history
+/// duration over default_steps, and at most a fifth of the shortest material time that is longer than that; under
+/// force control a material with a parallel dashpot (first order in dt there) takes at most 1/5000 of its
+/// shortest retardation time.
+ResolvedNumerics resolve_numerics(const ContactCase& contact_case);
+
+/// Elastic force [N] at contact radius a for shear modulus G and the given profile (incompressible, eq. 21 with
+/// w = g(a) - g(x)): F = 8 G int_0^a (g(a) - g(x)) dx.
+double elastic_force(const profile::Profile& indenter, double shear_modulus, double contact_radius);
+
+}  // namespace mdr::drivers

@@ -1,0 +1,56 @@
+#pragma once
+/// \file
+/// Piecewise-linear load histories (t, value) and the time grid the drivers step along.
+
+#include <string>
+#include <vector>
+
+namespace mdr::drivers {
+
+/// One point (t, value) of a piecewise-linear history.
+struct LoadPoint {
+    double time;   ///< t [s]
+    double value;  ///< depth d [m], force F [N] or tangential quantity at t
+};
+
+/// A piecewise-linear history. The body is undeformed before the first point; a first value other than 0 is a
+/// jump at the first time. Two points with the same time make a jump. Validated at construction: finite values,
+/// times never going backwards. Throws mdr::InvalidInput naming `key[i]`.
+class LoadHistory {
+public:
+    /// `key` names the history in messages, e.g. `load.history`.
+    LoadHistory(std::vector<LoadPoint> points, std::string key);
+
+    /// The points, as given.
+    const std::vector<LoadPoint>& points() const { return points_; }
+    /// Value just after time t (right-continuous); 0 before the first point, the last value after the last point.
+    double value(double t) const;
+    /// Time of the first point [s].
+    double start_time() const { return points_.front().time; }
+    /// Time of the last point [s].
+    double end_time() const { return points_.back().time; }
+    /// Largest value of the history (at least 0).
+    double max_value() const;
+    /// Smallest value of the history (at most 0).
+    double min_value() const;
+    /// True when the history has a jump (two points at one time, or a first value other than 0).
+    bool has_jump() const;
+
+private:
+    std::vector<LoadPoint> points_;
+};
+
+/// One node of the time grid: the drivers step from node to node, the load linear in between. Two consecutive
+/// nodes at the same time are a jump.
+struct GridNode {
+    double time;   ///< t [s]
+    double value;  ///< the prescribed load at this node
+};
+
+/// Nodes covering [history start, end] with every history point and every snapshot time as a node, and no step
+/// longer than `max_step`; each history segment gets at least `min_steps_per_segment` steps. Beyond the last
+/// history point the last value is held. The first node is (start, 0): the undeformed state.
+std::vector<GridNode> make_time_grid(const LoadHistory& history, double end, double max_step,
+                                     std::size_t min_steps_per_segment, const std::vector<double>& snapshots);
+
+}  // namespace mdr::drivers

@@ -1,0 +1,43 @@
+#pragma once
+/// \file
+/// The one exception type for bad input, and a helper that formats its message.
+
+#include <stdexcept>
+#include <string>
+
+namespace mdr {
+
+/// Thrown for every non-physical or malformed input. The message has the form
+/// `key = value: rule`, e.g. `material.tau1 = 0: must be > 0`.
+class InvalidInput : public std::invalid_argument {
+public:
+    /// Builds the message from the offending key, its value as text and the violated rule.
+    InvalidInput(std::string key, std::string value, std::string rule);
+
+    /// The dotted key that holds the bad value (e.g. `material.tau1`).
+    const std::string& key() const noexcept { return key_; }
+    /// The bad value, as text.
+    const std::string& value() const noexcept { return value_; }
+    /// The rule the value breaks (e.g. `must be > 0`).
+    const std::string& rule() const noexcept { return rule_; }
+
+    /// The same error with `prefix` put before the key (`"material."` + `"tau1"`).
+    InvalidInput with_prefix(const std::string& prefix) const;
+
+private:
+    std::string key_;
+    std::string value_;
+    std::string rule_;
+};
+
+/// Formats a double for an error message: shortest representation that round-trips.
+std::string format_value(double value);
+
+/// Throws InvalidInput unless `value` is finite and > 0.
+void require_positive(const std::string& key, double value);
+/// Throws InvalidInput unless `value` is finite and >= 0.
+void require_non_negative(const std::string& key, double value);
+/// Throws InvalidInput unless `value` is finite.
+void require_finite(const std::string& key, double value);
+
+}  // namespace mdr

@@ -1,0 +1,98 @@
+#pragma once
+/// \file
+/// The 1D viscoelastic foundation of the MDR (handbook section 4, Fig. 1; section 5, eq. 13-22).
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "mdr/foundation/step_coefficients.hpp"
+#include "mdr/profile/profile.hpp"
+#include "mdr/rheology/rheology.hpp"
+
+namespace mdr::foundation {
+
+/// A row of independent viscoelastic elements at x_i = (i + 1/2) dx, i = 0 .. n-1, on the half-width [0, L]
+/// (the foundation is symmetric; totals count both halves). Each element has the rheology of the material with
+/// normal stiffness k_z(t) = 4 G(t) dx (eq. 11). State per element: displacement w_i (positive into the body),
+/// one memory variable per relaxation branch, a contact flag and the last "stress" sigma_i (force / (4 dx)).
+///
+/// An element in contact follows the indenter, w = d - g(x) (eq. 13); it leaves contact when holding it would
+/// need a tensile force (eq. 20) and is then force-free: it keeps creeping back, and re-enters when the indenter
+/// reaches its current surface position (eq. 14). Between steps the depth is linear in time, so every update is
+/// exact; the instants of entry and exit are located inside the step by linear interpolation of the crossing
+/// quantity and the element's update is split there (second order in the time step).
+class Foundation {
+public:
+    /// `count` elements of width `spacing` [m] under the MDR profile of `profile`, material `material`.
+    /// Throws mdr::InvalidInput (key `numerics.elements`) when the state would not fit in memory.
+    Foundation(const rheology::Rheology& material, const profile::Profile& profile, double spacing,
+               std::size_t count);
+
+    /// Number of elements on the half-width.
+    std::size_t size() const { return equivalent_.size(); }
+    /// Element width dx [m].
+    double spacing() const { return spacing_; }
+    /// Half-width L = n dx [m].
+    double half_width() const { return spacing_ * static_cast<double>(size()); }
+    /// Centre x_i [m] of element i.
+    double position(std::size_t i) const { return (static_cast<double>(i) + 0.5) * spacing_; }
+
+    /// Prepares a step of the given coefficients from the current state (call before trial_force/advance).
+    void begin_step(const StepCoefficients& coefficients);
+    /// The total normal force [N] (eq. 21) the foundation would carry if the depth went linearly from
+    /// `depth_start` to `depth_end` over the prepared step; the state is not changed.
+    double trial_force(double depth_start, double depth_end) const;
+    /// Advances the state over the prepared step with the depth going linearly from `depth_start` to `depth_end`.
+    /// Throws mdr::InvalidInput (key `numerics.domain`) when the contact reaches the end of the foundation.
+    void advance(double depth_start, double depth_end);
+
+    /// Total normal force [N] after the last step (eq. 21, both halves).
+    double total_force() const { return total_force_; }
+    /// Contact radius a [m] after the last step: the edge between the outermost element in contact and its free
+    /// neighbour, interpolated where sigma/stiffness (inside) and the free gap (outside) cross zero.
+    double contact_radius() const;
+    /// Largest depth at which the indenter touches the current surface without force: min_i (g(x_i) + w_i).
+    double touching_depth() const;
+    /// Number of elements in contact.
+    std::size_t contact_count() const;
+
+    /// Element displacements w_i [m].
+    std::span<const double> displacements() const { return displacement_; }
+    /// Line load q_z(x_i) = F_N(x_i)/dx = 4 sigma_i [N/m] (eq. 22).
+    std::vector<double> line_loads() const;
+    /// MDR profile g(x_i) [m] at the element centres.
+    std::span<const double> equivalent_profile() const { return equivalent_; }
+    /// Contact flags (1 in contact).
+    std::span<const std::uint8_t> contact_flags() const { return in_contact_; }
+
+private:
+    struct Outcome;
+    Outcome evaluate(std::size_t i, double depth_start, double depth_end) const;
+    double split_stress(std::size_t i, const Outcome& outcome, double depth_start, double depth_end, double& w,
+                        double* h) const;
+    double free_substep_stress(double time_step, double& w, double* h) const;
+    double contact_substep_stress(double time_step, double new_displacement, double& w, double* h) const;
+    std::size_t reach(double depth) const;
+
+    const rheology::Rheology& material_;
+    double spacing_;
+    std::vector<double> equivalent_;           ///< g(x_i)
+    std::vector<double> displacement_;         ///< w_i
+    std::vector<double> stress_;               ///< sigma_i at the end of the last step
+    std::vector<double> memory_;               ///< h_{k,i}, branch-major: memory_[k * n + i]
+    std::vector<std::uint8_t> in_contact_;
+    std::vector<double> relaxed_;              ///< G_inf w_i + sum_k G_k E_k h_{k,i} for the prepared step
+    mutable std::vector<double> scratch_;      ///< per-branch memory of a trial split update
+    mutable std::vector<double> scratch_gain_; ///< per-branch B_k of a sub-step
+    std::vector<std::size_t> split_;           ///< elements whose step is split by an event
+    std::vector<double> split_state_;          ///< their new w, sigma and memory, (branches + 2) each
+    double beyond_ = 0.0;                      ///< g just beyond the half-width
+    double last_depth_ = 0.0;                  ///< depth at the end of the last step
+    StepCoefficients step_;
+    std::size_t active_ = 0;                   ///< elements [active_, n) have never been touched: w = h = 0
+    double total_force_ = 0.0;
+};
+
+}  // namespace mdr::foundation

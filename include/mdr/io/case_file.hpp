@@ -1,0 +1,24 @@
+#pragma once
+/// \file
+/// Reading a TOML case file (the contract: shared spec `case-format.md`) into a drivers::ContactCase.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "mdr/drivers/contact_case.hpp"
+
+namespace mdr::io {
+
+/// Parses and validates a case given as TOML text. `source` names it in messages for malformed TOML.
+/// Throws mdr::InvalidInput naming the key, the value and the rule for every unknown key (with the nearest known
+/// one suggested), wrong type, missing key, non-physical value, unsupported feature or malformed file.
+drivers::ContactCase parse_case(std::string_view toml_text, const std::string& source = "case");
+
+/// Reads and parses a case file.
+drivers::ContactCase load_case(const std::filesystem::path& path);
+
+/// One line describing a validated case, for `mdr check` and the run summary.
+std::string describe(const drivers::ContactCase& contact_case);
+
+}  // namespace mdr::io

@@ -1,0 +1,45 @@
+#pragma once
+/// \file
+/// Axisymmetric indenter profiles f(r) and their MDR equivalents g(x) (handbook section 4, eq. 9 and 10).
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mdr::profile {
+
+/// An axisymmetric gap f(r) between the undeformed surfaces, f(0) = 0, non-decreasing in r.
+class Profile {
+public:
+    virtual ~Profile() = default;
+
+    /// The gap f(r) [m] at radius r >= 0.
+    virtual double gap(double r) const = 0;
+    /// The MDR profile g(x) = |x| int_0^|x| f'(r) / sqrt(x^2 - r^2) dr [m] (eq. 9); +infinity where the
+    /// indenter is a rigid wall (beyond a flat punch's radius) or beyond the profile's range.
+    virtual double equivalent(double x) const = 0;
+    /// The smallest radius a >= 0 with g(a) >= d (the Lee-Radok contact radius of eq. 15 at depth d >= 0).
+    virtual double contact_radius(double depth) const = 0;
+    /// Largest radius where the profile is defined [m]: +infinity for analytic shapes, the punch radius for
+    /// a flat punch, the last tabulated r for a table.
+    virtual double max_radius() const = 0;
+    /// True when g has a jump to a rigid wall at max_radius() (flat punch): the contact radius is then fixed.
+    virtual bool is_flat_punch() const { return false; }
+    /// Short human description, e.g. `sphere R = 0.01`.
+    virtual std::string describe() const = 0;
+};
+
+/// Sphere of radius R (parabolic approximation): f = r^2/(2R), g = x^2/R (eq. 30). Key `R`.
+std::unique_ptr<Profile> make_sphere(double R);
+/// Cone; slope_deg is the angle between the flank and the flat surface, 0 < slope < 90:
+/// f = r tan(theta), g = (pi/2)|x| tan(theta) (eq. 24, 25). Key `slope_deg`.
+std::unique_ptr<Profile> make_cone(double slope_deg);
+/// Flat cylindrical punch of radius a: g = 0 for |x| <= a, rigid wall beyond. Key `a`.
+std::unique_ptr<Profile> make_flat_punch(double a);
+/// Power law f = c r^n, n > 0: g = kappa_n c |x|^n, kappa_n = sqrt(pi) Gamma(n/2+1)/Gamma(n/2+1/2). Keys `c`, `n`.
+std::unique_ptr<Profile> make_power_law(double c, double n);
+/// Tabulated gap: r ascending from 0, f(0) = 0, f non-decreasing; f is interpolated by a monotone cubic and g is
+/// computed by eq. (9) with a quadrature that removes the end-point singularity. Keys `r`, `f`.
+std::unique_ptr<Profile> make_table(std::vector<double> r, std::vector<double> f);
+
+}  // namespace mdr::profile

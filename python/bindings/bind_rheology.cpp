@@ -1,0 +1,83 @@
+#include <pybind11/complex.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "mdr/rheology/rheology.hpp"
+
+namespace py = pybind11;
+
+namespace mdr::python {
+namespace {
+
+using rheology::Rheology;
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+template <typename F>
+py::array vectorised(const Array& input, F f) {
+    py::array_t<double> output(input.request().shape);
+    const double* in = input.data();
+    double* out = output.mutable_data();
+    for (py::ssize_t i = 0; i < input.size(); ++i) out[i] = f(in[i]);
+    return std::move(output);
+}
+
+}  // namespace
+
+void bind_rheology(py::module_& module) {
+    py::class_<Rheology>(module, "Material",
+                         "Linear viscoelastic material G(t) = G_inf + eta delta(t) + sum G_k exp(-t/tau_k) "
+                         "(handbook Table 1). Build it with the static factories.")
+        .def(py::init([](double G_inf, double eta, const std::vector<std::pair<double, double>>& terms) {
+                 std::vector<rheology::RelaxationTerm> list;
+                 for (const auto& [modulus, time] : terms) list.push_back({modulus, time});
+                 return Rheology(G_inf, eta, std::move(list));
+             }),
+             py::arg("G_inf"), py::arg("eta") = 0.0, py::arg("terms") = std::vector<std::pair<double, double>>{},
+             "The canonical form: equilibrium modulus, parallel viscosity and (G_k, tau_k) branches.")
+        .def_static("elastic", &Rheology::elastic, py::arg("G"), "Elastic body, G(t) = G.")
+        .def_static("viscous", &Rheology::viscous, py::arg("eta"), "Viscous body, G(t) = eta delta(t).")
+        .def_static("kelvin_voigt", &Rheology::kelvin_voigt, py::arg("G"), py::arg("eta"),
+                    "Kelvin-Voigt body, G(t) = G + eta delta(t).")
+        .def_static("maxwell", &Rheology::maxwell, py::arg("G"), py::arg("tau"), "Maxwell body, G(t) = G exp(-t/tau).")
+        .def_static("standard", &Rheology::standard, py::arg("G_inf"), py::arg("G1"), py::arg("tau1"),
+                    "Standard solid, G(t) = G_inf + G1 exp(-t/tau1).")
+        .def_static(
+            "prony",
+            [](double G_inf, const std::vector<std::pair<double, double>>& terms) {
+                std::vector<rheology::RelaxationTerm> list;
+                for (const auto& [modulus, time] : terms) list.push_back({modulus, time});
+                return Rheology::prony(G_inf, std::move(list));
+            },
+            py::arg("G_inf"), py::arg("terms"), "Prony series, G(t) = G_inf + sum G_k exp(-t/tau_k); terms = [(G_k, tau_k)].")
+        .def("relaxation", [](const Rheology& m, const Array& t) { return vectorised(t, [&](double x) { return m.relaxation(x); }); },
+             py::arg("t"), "G(t) [Pa] at each time (the regular part; a dashpot's delta is left out).")
+        .def("creep", [](const Rheology& m, const Array& t) { return vectorised(t, [&](double x) { return m.creep(x); }); },
+             py::arg("t"), "J(t) [1/Pa] at each time, exact (eq. 6).")
+        .def(
+            "complex_modulus",
+            [](const Rheology& m, const Array& omega) {
+                py::array_t<std::complex<double>> out(omega.request().shape);
+                for (py::ssize_t i = 0; i < omega.size(); ++i) out.mutable_data()[i] = m.complex_modulus(omega.data()[i]);
+                return out;
+            },
+            py::arg("omega"), "G^(omega) = i omega G*(i omega) (eq. 7): real part storage, imaginary part loss [Pa].")
+        .def("series", [](const Rheology& a, const Rheology& b) { return rheology::in_series(a, b); }, py::arg("other"),
+             "This material in series with another: creep functions add (eq. 8).")
+        .def_property_readonly("G_inf", &Rheology::equilibrium_modulus, "Equilibrium modulus [Pa].")
+        .def_property_readonly("eta", &Rheology::viscosity, "Parallel viscosity [Pa s].")
+        .def_property_readonly(
+            "terms",
+            [](const Rheology& m) {
+                std::vector<std::pair<double, double>> list;
+                for (const auto& term : m.terms()) list.emplace_back(term.modulus, term.relaxation_time);
+                return list;
+            },
+            "Relaxation branches [(G_k, tau_k)], ascending tau_k.")
+        .def("__repr__", [](const Rheology& m) {
+            return "Material(G_inf=" + std::to_string(m.equilibrium_modulus()) + ", eta=" + std::to_string(m.viscosity()) +
+                   ", branches=" + std::to_string(m.terms().size()) + ")";
+        });
+}
+
+}  // namespace mdr::python

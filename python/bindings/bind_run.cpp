@@ -1,0 +1,70 @@
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <chrono>
+
+#include "bindings.hpp"
+#include "mdr/drivers/indentation.hpp"
+#include "mdr/io/case_file.hpp"
+#include "mdr/io/result_files.hpp"
+
+namespace py = pybind11;
+
+namespace mdr::python {
+namespace {
+
+py::array_t<double> to_array(const std::vector<double>& values) {
+    py::array_t<double> array(static_cast<py::ssize_t>(values.size()));
+    std::copy(values.begin(), values.end(), array.mutable_data());
+    return array;
+}
+
+py::dict run_case(const std::string& toml_text, const std::string& source) {
+    const auto contact_case = io::parse_case(toml_text, source);
+    drivers::IndentationResult result;
+    double wall = 0.0;
+    {
+        py::gil_scoped_release release;
+        const auto start = std::chrono::steady_clock::now();
+        result = drivers::run_indentation(contact_case, [](double) {
+            py::gil_scoped_acquire acquire;
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        });
+        wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    py::dict history;
+    history["t"] = to_array(result.time);
+    history["d"] = to_array(result.depth);
+    history["F"] = to_array(result.force);
+    history["a"] = to_array(result.radius);
+    py::dict profiles;
+    std::vector<double> t, r, p, w;
+    for (const auto& snapshot : result.snapshots) {
+        t.insert(t.end(), snapshot.radius.size(), snapshot.time);
+        r.insert(r.end(), snapshot.radius.begin(), snapshot.radius.end());
+        p.insert(p.end(), snapshot.pressure.begin(), snapshot.pressure.end());
+        w.insert(w.end(), snapshot.displacement.begin(), snapshot.displacement.end());
+    }
+    profiles["t"] = to_array(t);
+    profiles["r"] = to_array(r);
+    profiles["p"] = to_array(p);
+    profiles["w"] = to_array(w);
+    py::dict out;
+    out["history"] = history;
+    out["profiles"] = profiles;
+    out["summary_json"] = io::summary_json(contact_case, result, wall);
+    out["description"] = io::describe(contact_case);
+    return out;
+}
+
+}  // namespace
+
+void bind_run(py::module_& module) {
+    module.def("_run_toml", &run_case, py::arg("toml_text"), py::arg("source") = "case",
+               "Runs a case given as TOML text; returns history, profiles and summary (use mdr.run).");
+    module.def(
+        "_check_toml", [](const std::string& text, const std::string& source) { return io::describe(io::parse_case(text, source)); },
+        py::arg("toml_text"), py::arg("source") = "case", "Validates a case given as TOML text; returns its description.");
+}
+
+}  // namespace mdr::python

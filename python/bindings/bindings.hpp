@@ -1,0 +1,13 @@
+#pragma once
+// One binding function per area; module.cpp calls them. No logic lives in the bindings.
+
+#include <pybind11/pybind11.h>
+
+namespace mdr::python {
+
+/// mdr.Material: the canonical rheology and its factories.
+void bind_rheology(pybind11::module_& module);
+/// mdr.run and mdr.check: cases from TOML text, results as numpy arrays.
+void bind_run(pybind11::module_& module);
+
+}  // namespace mdr::python

@@ -1,0 +1,11 @@
+#include "bindings.hpp"
+
+#include "mdr/error.hpp"
+
+PYBIND11_MODULE(_mdr, module) {
+    module.doc() = "mdr core: viscoelastic contact mechanics by the Method of Dimensionality Reduction";
+    module.attr("__version__") = MDR_VERSION;
+    pybind11::register_exception<mdr::InvalidInput>(module, "InvalidInput", PyExc_ValueError);
+    mdr::python::bind_rheology(module);
+    mdr::python::bind_run(module);
+}

@@ -1,0 +1,65 @@
+"""mdr: viscoelastic contact mechanics by the Method of Dimensionality Reduction (Popov & Hess).
+
+    import mdr
+    result = mdr.run("examples/default.toml")          # or a dict with the structure of the case file
+    result.history["F"]                                 # numpy arrays keyed by the history.csv columns
+    result.summary["max_force"]                         # the summary.json keys
+    mdr.Material.standard(G_inf=1e6, G1=3e6, tau1=0.1).creep([0.1, 1.0])
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from dataclasses import dataclass, field
+from typing import Any, Mapping, Union
+
+import numpy as np
+
+from . import _mdr
+from ._mdr import InvalidInput, Material
+from ._toml import to_toml
+
+__all__ = ["run", "check", "Material", "Result", "InvalidInput", "__version__"]
+__version__ = _mdr.__version__
+
+CaseLike = Union[str, os.PathLike, Mapping[str, Any]]
+
+
+@dataclass
+class Result:
+    """What a run produced: `history` and `profiles` are dicts of numpy arrays keyed by the CSV column names,
+    `summary` the summary.json object, `description` the one-line description of the case."""
+
+    history: dict[str, np.ndarray]
+    summary: dict[str, Any]
+    profiles: dict[str, np.ndarray] = field(default_factory=dict)
+    description: str = ""
+
+
+def _case_text(case: CaseLike) -> tuple[str, str]:
+    if isinstance(case, Mapping):
+        return to_toml(case), "case"
+    if isinstance(case, (str, os.PathLike)):
+        path = os.fspath(case)
+        try:
+            with open(path, encoding="utf-8") as handle:
+                return handle.read(), path
+        except OSError as error:
+            raise ValueError(f"case = {path}: cannot be read ({error.strerror})") from None
+    raise TypeError(f"case: expected a path or a dict, got {type(case).__name__}")
+
+
+def run(case: CaseLike) -> Result:
+    """Runs a case (a TOML file path or a dict with the same structure) and returns a Result.
+    Bad input raises ValueError with the same message as the command line."""
+    text, source = _case_text(case)
+    raw = _mdr._run_toml(text, source)
+    return Result(history=dict(raw["history"]), summary=json.loads(raw["summary_json"]),
+                  profiles=dict(raw["profiles"]), description=raw["description"])
+
+
+def check(case: CaseLike) -> str:
+    """Validates a case and returns its one-line description; raises ValueError for bad input."""
+    text, source = _case_text(case)
+    return _mdr._check_toml(text, source)

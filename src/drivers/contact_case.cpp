@@ -1,0 +1,109 @@
+#include "mdr/drivers/contact_case.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace mdr::drivers {
+namespace {
+
+// 10-point Gauss-Legendre nodes and weights on [-1, 1].
+constexpr std::array<double, 5> gauss_nodes{0.1488743389816312, 0.4333953941292472, 0.6794095682990244,
+                                            0.8650633666889845, 0.9739065285171717};
+constexpr std::array<double, 5> gauss_weights{0.2955242247147529, 0.2692667193099963, 0.2190863625159820,
+                                              0.1494513491505806, 0.0666713443086881};
+
+double integrate(const auto& f, double lower, double upper, int panels) {
+    double sum = 0.0;
+    const double width = (upper - lower) / panels;
+    for (int p = 0; p < panels; ++p) {
+        const double mid = lower + (p + 0.5) * width;
+        for (std::size_t j = 0; j < gauss_nodes.size(); ++j) {
+            const double dx = 0.5 * width * gauss_nodes[j];
+            sum += gauss_weights[j] * (f(mid - dx) + f(mid + dx));
+        }
+    }
+    return 0.5 * width * sum;
+}
+
+// Contact radius at which the elastic force with the given modulus reaches `force`.
+double elastic_radius(const profile::Profile& indenter, double modulus, double force) {
+    double lower = 0.0;
+    double upper = 1.0;
+    while (elastic_force(indenter, modulus, upper) < force && upper < 1e30) {
+        lower = upper;
+        upper *= 2.0;
+    }
+    while (lower == 0.0 && elastic_force(indenter, modulus, 0.5 * upper) >= force && upper > 1e-30) upper *= 0.5;
+    for (int i = 0; i < 200 && upper - lower > 1e-12 * upper; ++i) {
+        const double mid = 0.5 * (lower + upper);
+        (elastic_force(indenter, modulus, mid) < force ? lower : upper) = mid;
+    }
+    return upper;
+}
+
+// The shortest material time (relaxation or retardation) that is at least `floor`; infinity if none.
+double shortest_time_above(const rheology::Rheology& material, double floor) {
+    double shortest = std::numeric_limits<double>::infinity();
+    for (const auto& term : material.terms()) {
+        if (term.relaxation_time >= floor) shortest = std::min(shortest, term.relaxation_time);
+    }
+    for (const auto& term : material.creep_function().terms) {
+        if (term.retardation_time >= floor) shortest = std::min(shortest, term.retardation_time);
+    }
+    return shortest;
+}
+
+}  // namespace
+
+double elastic_force(const profile::Profile& indenter, double shear_modulus, double contact_radius) {
+    if (contact_radius <= 0.0) return 0.0;
+    const double edge = indenter.equivalent(contact_radius);
+    const auto integrand = [&](double x) { return edge - indenter.equivalent(x); };
+    return 8.0 * shear_modulus * integrate(integrand, 0.0, contact_radius, 16);
+}
+
+ResolvedNumerics resolve_numerics(const ContactCase& contact_case) {
+    const auto& numerics = contact_case.numerics;
+    const auto& indenter = *contact_case.indenter;
+    ResolvedNumerics resolved;
+    resolved.output_every = numerics.output_every;
+    resolved.elements = numerics.elements.value_or(default_elements);
+
+    const double duration = contact_case.end_time - contact_case.history.start_time();
+    if (numerics.time_step) {
+        resolved.time_step = *numerics.time_step;
+    } else if (duration > 0.0) {
+        const double step = duration / static_cast<double>(default_steps);
+        resolved.time_step = std::min(step, shortest_time_above(contact_case.material, step) / 5.0);
+        if (contact_case.control == Control::force && contact_case.material.viscosity() > 0.0) {
+            // A parallel dashpot under force control sees the secant rate of the step: first order in dt, so the
+            // step is tied to the shortest retardation time (error ~ 1e-4 of the creep depth).
+            const auto& retardation = contact_case.material.creep_function().terms;
+            if (!retardation.empty()) resolved.time_step = std::min(resolved.time_step, retardation.front().retardation_time / 5000.0);
+        }
+    } else {
+        resolved.time_step = 1.0;  // a history of jumps only: no step has a length
+    }
+
+    if (numerics.half_width) {
+        resolved.half_width = *numerics.half_width;
+    } else if (indenter.is_flat_punch()) {
+        resolved.half_width = indenter.max_radius();
+    } else {
+        const double peak = contact_case.history.max_value();
+        double radius = 0.0;
+        if (contact_case.control == Control::displacement) {
+            radius = 1.1 * indenter.contact_radius(peak);
+        } else if (peak > 0.0) {
+            const double softest = 1.0 / contact_case.material.creep(std::max(duration, 0.0));
+            radius = 1.25 * elastic_radius(indenter, softest, peak);
+        }
+        if (!(radius > 0.0)) radius = std::isfinite(indenter.max_radius()) ? indenter.max_radius() : 1.0;
+        resolved.half_width = std::min(radius, indenter.max_radius());
+    }
+    return resolved;
+}
+
+}  // namespace mdr::drivers

@@ -1,0 +1,104 @@
+#include "mdr/drivers/load_history.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mdr/error.hpp"
+
+namespace mdr::drivers {
+
+LoadHistory::LoadHistory(std::vector<LoadPoint> points, std::string key) : points_(std::move(points)) {
+    if (points_.empty()) throw InvalidInput(key, "[]", "needs at least one point [t, value]");
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+        const std::string item = key + "[" + std::to_string(i) + "]";
+        require_finite(item + ".t", points_[i].time);
+        require_finite(item + ".value", points_[i].value);
+        if (i > 0 && points_[i].time < points_[i - 1].time) {
+            throw InvalidInput(item + ".t", format_value(points_[i].time),
+                               "times must not go backwards (previous point is at t = " +
+                                   format_value(points_[i - 1].time) + ")");
+        }
+    }
+}
+
+double LoadHistory::value(double t) const {
+    if (t < points_.front().time) return 0.0;
+    if (t >= points_.back().time) return points_.back().value;
+    // Last point with time <= t: right-continuous at jumps.
+    const auto after = std::upper_bound(points_.begin(), points_.end(), t,
+                                        [](double time, const LoadPoint& p) { return time < p.time; });
+    const LoadPoint& b = *after;
+    const LoadPoint& a = *(after - 1);
+    if (b.time == a.time) return b.value;
+    return a.value + (b.value - a.value) * (t - a.time) / (b.time - a.time);
+}
+
+double LoadHistory::max_value() const {
+    double m = 0.0;
+    for (const auto& p : points_) m = std::max(m, p.value);
+    return m;
+}
+
+double LoadHistory::min_value() const {
+    double m = 0.0;
+    for (const auto& p : points_) m = std::min(m, p.value);
+    return m;
+}
+
+bool LoadHistory::has_jump() const {
+    if (points_.front().value != 0.0) return true;
+    for (std::size_t i = 1; i < points_.size(); ++i) {
+        if (points_[i].time == points_[i - 1].time && points_[i].value != points_[i - 1].value) return true;
+    }
+    return false;
+}
+
+std::vector<GridNode> make_time_grid(const LoadHistory& history, double end, double max_step,
+                                     std::size_t min_steps_per_segment, const std::vector<double>& snapshots) {
+    // Breakpoints: the history points up to `end`, the end itself and the snapshots, in time order.
+    std::vector<LoadPoint> points;
+    points.push_back({history.start_time(), 0.0});
+    for (const auto& p : history.points()) {
+        if (p.time <= end) points.push_back(p);
+    }
+    if (points.back().time < end) points.push_back({end, history.value(end)});
+    std::vector<double> inner;
+    for (double s : snapshots) {
+        if (s > history.start_time() && s < end) inner.push_back(s);
+    }
+    std::sort(inner.begin(), inner.end());
+
+    std::vector<GridNode> nodes;
+    nodes.push_back({points.front().time, 0.0});
+    auto next_snapshot = inner.begin();
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const LoadPoint& a = points[i - 1];
+        const LoadPoint& b = points[i];
+        if (b.time == a.time) {
+            if (b.value != a.value) nodes.push_back({b.time, b.value});
+            continue;
+        }
+        // Sub-segments between snapshots inside (a, b).
+        std::vector<double> cuts{a.time};
+        while (next_snapshot != inner.end() && *next_snapshot < b.time) {
+            if (*next_snapshot > a.time) cuts.push_back(*next_snapshot);
+            ++next_snapshot;
+        }
+        cuts.push_back(b.time);
+        const double segment = b.time - a.time;
+        const auto segment_steps = static_cast<double>(std::max<std::size_t>(
+            min_steps_per_segment, static_cast<std::size_t>(std::ceil(segment / max_step))));
+        for (std::size_t c = 1; c < cuts.size(); ++c) {
+            const double span = cuts[c] - cuts[c - 1];
+            const auto steps = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(segment_steps * span / segment - 1e-9)));
+            for (std::size_t s = 1; s <= steps; ++s) {
+                const double t = s == steps ? cuts[c] : cuts[c - 1] + span * static_cast<double>(s) / static_cast<double>(steps);
+                const double value = a.value + (b.value - a.value) * (t - a.time) / segment;
+                nodes.push_back({t, s == steps && c + 1 == cuts.size() ? b.value : value});
+            }
+        }
+    }
+    return nodes;
+}
+
+}  // namespace mdr::drivers

@@ -1,0 +1,253 @@
+#include "mdr/foundation/foundation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <new>
+
+#include "mdr/error.hpp"
+
+namespace mdr::foundation {
+namespace {
+
+constexpr double normal_stiffness_factor = 4.0;  // k_z = 4 G dx, eq. (11)
+
+// Elements beyond this count would need more memory than any machine we target.
+constexpr std::size_t max_elements = std::size_t{1} << 28;
+
+}  // namespace
+
+struct Foundation::Outcome {
+    double stress = 0.0;     ///< sigma at the end of the step
+    bool contact = false;    ///< contact flag at the end of the step
+    bool split = false;      ///< an entry or exit happens inside the step
+    double fraction = 0.0;   ///< where inside the step (0..1)
+};
+
+Foundation::Foundation(const rheology::Rheology& material, const profile::Profile& profile, double spacing,
+                       std::size_t count)
+    : material_(material), spacing_(spacing) {
+    require_positive("numerics.elements", static_cast<double>(count));
+    const std::size_t branches = material.terms().size();
+    if (count > max_elements || count * (branches + 6) > max_elements * 4) {
+        throw InvalidInput("numerics.elements", std::to_string(count),
+                           "the foundation state would not fit in memory; use fewer elements");
+    }
+    try {
+        equivalent_.resize(count);
+        displacement_.assign(count, 0.0);
+        stress_.assign(count, 0.0);
+        memory_.assign(count * branches, 0.0);
+        in_contact_.assign(count, 0);
+        relaxed_.assign(count, 0.0);
+        scratch_.assign(branches, 0.0);
+        scratch_gain_.assign(branches, 0.0);
+    } catch (const std::bad_alloc&) {
+        throw InvalidInput("numerics.elements", std::to_string(count),
+                           "the foundation state does not fit in memory; use fewer elements");
+    }
+    for (std::size_t i = 0; i < count; ++i) equivalent_[i] = profile.equivalent(position(i));
+    beyond_ = profile.equivalent(half_width() * (1.0 + 1e-12));
+}
+
+void Foundation::begin_step(const StepCoefficients& coefficients) {
+    step_ = coefficients;
+    const std::size_t n = size();
+    const double g_inf = material_.equilibrium_modulus();
+    for (std::size_t i = 0; i < active_; ++i) relaxed_[i] = g_inf * displacement_[i];
+    const auto& terms = material_.terms();
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+        const double weight = terms[k].modulus * step_.decay[k];
+        const double* h = memory_.data() + k * n;
+        for (std::size_t i = 0; i < active_; ++i) relaxed_[i] += weight * h[i];
+    }
+}
+
+std::size_t Foundation::reach(double depth) const {
+    std::size_t i = active_;
+    while (i < size() && equivalent_[i] < depth) ++i;
+    return i;
+}
+
+Foundation::Outcome Foundation::evaluate(std::size_t i, double depth_start, double depth_end) const {
+    const double g = equivalent_[i];
+    const double w = displacement_[i];
+    const double relaxed = i < active_ ? relaxed_[i] : 0.0;
+    Outcome outcome;
+    if (in_contact_[i]) {
+        const double stress = relaxed + step_.stiffness * (depth_end - g - w);
+        if (stress >= 0.0) {
+            outcome.stress = stress;
+            outcome.contact = true;
+            return outcome;
+        }
+        // Exit (eq. 20): the force crosses zero inside the step.
+        const double before = stress_[i];
+        outcome.split = true;
+        outcome.fraction = before > 0.0 ? before / (before - stress) : 0.0;
+        return outcome;
+    }
+    const double free_displacement = w - relaxed / step_.stiffness;
+    const double gap_end = depth_end - g - free_displacement;
+    if (gap_end <= 0.0) return outcome;
+    // Entry (eq. 14): the indenter reaches the creeping surface inside the step.
+    const double gap_start = std::min(depth_start - g - w, 0.0);
+    outcome.split = true;
+    outcome.fraction = gap_start / (gap_start - gap_end);
+    outcome.contact = true;
+    return outcome;
+}
+
+double Foundation::free_substep_stress(double time_step, double& w, double* h) const {
+    const auto& terms = material_.terms();
+    if (time_step <= 0.0 && material_.viscosity() > 0.0) return 0.0;  // a dashpot does not move in no time
+    double relaxed = material_.equilibrium_modulus() * w;
+    double stiffness = material_.equilibrium_modulus() + (time_step > 0.0 ? material_.viscosity() / time_step : 0.0);
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+        const double ratio = time_step / terms[k].relaxation_time;
+        const double decay = std::exp(-ratio);
+        const double gain = ratio > 0.0 ? -std::expm1(-ratio) / ratio : 1.0;
+        h[k] *= decay;
+        relaxed += terms[k].modulus * h[k];
+        stiffness += terms[k].modulus * gain;
+        scratch_gain_[k] = gain;
+    }
+    const double dw = -relaxed / stiffness;
+    for (std::size_t k = 0; k < terms.size(); ++k) h[k] += scratch_gain_[k] * dw;
+    w += dw;
+    return 0.0;
+}
+
+double Foundation::contact_substep_stress(double time_step, double new_displacement, double& w, double* h) const {
+    const auto& terms = material_.terms();
+    const double dw = new_displacement - w;
+    double stress = material_.equilibrium_modulus() * new_displacement;
+    if (time_step > 0.0) stress += material_.viscosity() * dw / time_step;
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+        const double ratio = time_step / terms[k].relaxation_time;
+        const double gain = ratio > 0.0 ? -std::expm1(-ratio) / ratio : 1.0;
+        h[k] = std::exp(-ratio) * h[k] + gain * dw;
+        stress += terms[k].modulus * h[k];
+    }
+    w = new_displacement;
+    return stress;
+}
+
+double Foundation::split_stress(std::size_t i, const Outcome& outcome, double depth_start, double depth_end,
+                                double& w, double* h) const {
+    const std::size_t n = size();
+    const std::size_t branches = material_.terms().size();
+    w = displacement_[i];
+    for (std::size_t k = 0; k < branches; ++k) h[k] = memory_[k * n + i];
+    const double first = outcome.fraction * step_.time_step;
+    const double second = step_.time_step - first;
+    const double g = equivalent_[i];
+    if (outcome.contact) {  // free, then in contact from the entry on
+        free_substep_stress(first, w, h);
+        return std::max(contact_substep_stress(second, depth_end - g, w, h), 0.0);
+    }
+    const double depth_at_exit = depth_start + outcome.fraction * (depth_end - depth_start);
+    contact_substep_stress(first, depth_at_exit - g, w, h);
+    return free_substep_stress(second, w, h);
+}
+
+double Foundation::trial_force(double depth_start, double depth_end) const {
+    const std::size_t end = std::min(reach(std::max(depth_start, depth_end)), size());
+    double sum = 0.0;
+    double w = 0.0;
+    for (std::size_t i = 0; i < end; ++i) {
+        const Outcome outcome = evaluate(i, depth_start, depth_end);
+        sum += outcome.split ? split_stress(i, outcome, depth_start, depth_end, w, scratch_.data()) : outcome.stress;
+    }
+    return 2.0 * normal_stiffness_factor * spacing_ * sum;
+}
+
+void Foundation::advance(double depth_start, double depth_end) {
+    const double deepest = std::max(depth_start, depth_end);
+    if (deepest > beyond_) {
+        throw InvalidInput("numerics.half_width", format_value(half_width()),
+                           "the contact reaches the end of the foundation at depth " + format_value(deepest) +
+                               "; give a larger half-width");
+    }
+    const std::size_t n = size();
+    const std::size_t end = reach(deepest);
+    const std::size_t branches = material_.terms().size();
+    split_.clear();
+    split_state_.clear();
+    // relaxed_ is reused for the increments dw of the unsplit elements.
+    for (std::size_t i = 0; i < end; ++i) {
+        const Outcome outcome = evaluate(i, depth_start, depth_end);
+        if (outcome.split) {
+            double w = 0.0;
+            const std::size_t offset = split_state_.size();
+            split_state_.resize(offset + branches + 2);
+            const double stress =
+                split_stress(i, outcome, depth_start, depth_end, w, split_state_.data() + offset + 2);
+            split_state_[offset] = w;
+            split_state_[offset + 1] = stress;
+            split_.push_back(i);
+            in_contact_[i] = outcome.contact ? 1 : 0;
+            relaxed_[i] = 0.0;
+            continue;
+        }
+        const double relaxed = i < active_ ? relaxed_[i] : 0.0;
+        const double dw = outcome.contact ? depth_end - equivalent_[i] - displacement_[i]
+                                          : -relaxed / step_.stiffness;
+        displacement_[i] += dw;
+        stress_[i] = outcome.stress;
+        in_contact_[i] = outcome.contact ? 1 : 0;
+        relaxed_[i] = dw;
+    }
+    const auto& terms = material_.terms();
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+        const double decay = step_.decay[k];
+        const double gain = step_.gain[k];
+        double* h = memory_.data() + k * n;
+        const double* dw = relaxed_.data();
+        for (std::size_t i = 0; i < end; ++i) h[i] = decay * h[i] + gain * dw[i];
+    }
+    for (std::size_t s = 0; s < split_.size(); ++s) {
+        const std::size_t i = split_[s];
+        const double* state = split_state_.data() + s * (branches + 2);
+        displacement_[i] = state[0];
+        stress_[i] = state[1];
+        for (std::size_t k = 0; k < branches; ++k) memory_[k * n + i] = state[2 + k];
+    }
+    active_ = std::max(active_, end);
+    last_depth_ = depth_end;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < active_; ++i) sum += stress_[i];
+    total_force_ = 2.0 * normal_stiffness_factor * spacing_ * sum;
+}
+
+std::size_t Foundation::contact_count() const {
+    return static_cast<std::size_t>(std::count(in_contact_.begin(), in_contact_.begin() + static_cast<std::ptrdiff_t>(active_), 1));
+}
+
+double Foundation::contact_radius() const {
+    std::size_t outer = active_;
+    while (outer > 0 && !in_contact_[outer - 1]) --outer;
+    if (outer == 0) return 0.0;
+    const std::size_t j = outer - 1;
+    if (j + 1 >= size() || !std::isfinite(equivalent_[j + 1])) return position(j) + 0.5 * spacing_;
+    // Inside: sigma/stiffness, the displacement the element could still give up; outside: the free gap.
+    // Both vanish at the edge; interpolate linearly between the two centres.
+    const double inside = stress_[j] / step_.stiffness;
+    const double outside = std::min(last_depth_ - equivalent_[j + 1] - displacement_[j + 1], 0.0);
+    const double fraction = inside > 0.0 ? inside / (inside - outside) : 0.0;
+    return position(j) + std::clamp(fraction, 0.0, 1.0) * spacing_;
+}
+
+double Foundation::touching_depth() const {
+    double depth = active_ < size() ? equivalent_[active_] : beyond_;
+    for (std::size_t i = 0; i < active_; ++i) depth = std::min(depth, equivalent_[i] + displacement_[i]);
+    return depth;
+}
+
+std::vector<double> Foundation::line_loads() const {
+    std::vector<double> q(size());
+    for (std::size_t i = 0; i < size(); ++i) q[i] = normal_stiffness_factor * stress_[i];
+    return q;
+}
+
+}  // namespace mdr::foundation

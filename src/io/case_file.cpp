@@ -1,0 +1,198 @@
+#include "mdr/io/case_file.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "mdr/error.hpp"
+#include "material_reader.hpp"
+#include "toml_reader.hpp"
+
+namespace mdr::io {
+namespace {
+
+std::shared_ptr<const profile::Profile> read_indenter(TableReader& table) {
+    const std::string shape = table.string("shape");
+    std::vector<std::string> known{"shape", "mass", "material"};
+    const auto with = [&](std::initializer_list<const char*> keys) {
+        for (const char* key : keys) known.emplace_back(key);
+        table.reject_unknown(known);
+    };
+    try {
+        if (shape == "sphere") {
+            with({"R"});
+            return profile::make_sphere(table.number("R"));
+        }
+        if (shape == "cone") {
+            with({"slope_deg"});
+            return profile::make_cone(table.number("slope_deg"));
+        }
+        if (shape == "flat") {
+            with({"a"});
+            return profile::make_flat_punch(table.number("a"));
+        }
+        if (shape == "power") {
+            with({"c", "n"});
+            return profile::make_power_law(table.number("c"), table.number("n"));
+        }
+        if (shape == "profile") {
+            with({"r", "f"});
+            return profile::make_table(table.numbers("r"), table.numbers("f"));
+        }
+    } catch (const InvalidInput& error) {
+        if (error.key().rfind("indenter.", 0) == 0) throw;
+        throw error.with_prefix("indenter.");
+    }
+    throw InvalidInput("indenter.shape", "\"" + shape + "\"", "unknown shape; one of sphere, cone, flat, power, profile");
+}
+
+// One body: its shear rheology and, when a bulk part is given, the effective one of eq. (56).
+struct Body {
+    rheology::Rheology shear;
+    std::optional<rheology::Rheology> effective;
+    const rheology::Rheology& contact() const { return effective ? *effective : shear; }
+};
+
+Body read_body(TableReader& table) {
+    Body body{read_rheology(table, "G", {"K", "bulk"}), std::nullopt};
+    if (table.has("K") && table.has("bulk")) {
+        throw InvalidInput(table.key_path("K"), table.text("K"), "give either K or [" + table.key_path("bulk") + "], not both");
+    }
+    if (table.has("K")) {
+        const double bulk_modulus = table.number("K");
+        require_positive(table.key_path("K"), bulk_modulus);
+        body.effective = compressible_effective(body.shear, rheology::Rheology::elastic(bulk_modulus));
+    } else if (auto bulk = table.table("bulk")) {
+        if (!bulk->has("model")) throw InvalidInput(bulk->key_path("model"), "(missing)", "a bulk table needs a model");
+        body.effective = compressible_effective(body.shear, read_rheology(*bulk, "K", {}));
+    }
+    return body;
+}
+
+drivers::LoadHistory read_history(TableReader& load, drivers::Control control) {
+    std::vector<drivers::LoadPoint> points;
+    const char* quantity = control == drivers::Control::force ? "F" : "d";
+    for (const auto& [t, value] : load.pairs("history", "t", quantity)) points.push_back({t, value});
+    drivers::LoadHistory history(std::move(points), "load.history");
+    for (std::size_t i = 0; i < history.points().size(); ++i) {
+        const double value = history.points()[i].value;
+        if (control == drivers::Control::force && value < 0.0) {
+            throw InvalidInput(fmt::format("load.history[{}].F", i), format_value(value),
+                               "must be >= 0 in force control (the contact cannot pull)");
+        }
+    }
+    return history;
+}
+
+}  // namespace
+
+drivers::ContactCase parse_case(std::string_view toml_text, const std::string& source) {
+    toml::table root_table;
+    try {
+        root_table = toml::parse(toml_text, source);
+    } catch (const toml::parse_error& error) {
+        const auto& where = error.source().begin;
+        throw InvalidInput(source, fmt::format("line {}, column {}", where.line, where.column),
+                           fmt::format("malformed TOML: {}", error.description()));
+    }
+    TableReader root(root_table, "");
+    root.reject_unknown({"title", "material", "indenter", "load", "tangential", "output", "numerics"});
+    if (root.has("tangential")) {
+        throw InvalidInput("tangential", "[...]", "tangential loading is not implemented in this version");
+    }
+    const std::string title = root.optional_string("title").value_or("");
+
+    auto material_table = root.table("material");
+    if (!material_table) throw InvalidInput("material", "(missing)", "is required");
+    const Body half_space = read_body(*material_table);
+    rheology::Rheology material = half_space.contact();
+    std::optional<rheology::Rheology> shear_material;
+    if (half_space.effective) shear_material = half_space.shear;
+    auto indenter_table = root.table("indenter");
+    if (!indenter_table) throw InvalidInput("indenter", "(missing)", "is required");
+    auto indenter = read_indenter(*indenter_table);
+    if (auto indenter_material = indenter_table->table("material")) {
+        const Body second = read_body(*indenter_material);
+        material = rheology::in_series(material, second.contact());  // eq. (8): creep functions add
+        if (half_space.effective || second.effective) shear_material = rheology::in_series(half_space.shear, second.shear);
+    }
+
+    auto load = root.table("load");
+    if (!load) throw InvalidInput("load", "(missing)", "is required");
+    load->reject_unknown({"control", "history", "velocity", "end"});
+    const std::string control_name = load->string("control");
+    drivers::Control control;
+    if (control_name == "displacement") control = drivers::Control::displacement;
+    else if (control_name == "force") control = drivers::Control::force;
+    else if (control_name == "impact") {
+        throw InvalidInput("load.control", "\"impact\"", "impact is not implemented in this version");
+    } else {
+        throw InvalidInput("load.control", "\"" + control_name + "\"", "unknown control; one of displacement, force, impact");
+    }
+    if (load->has("velocity")) {
+        throw InvalidInput("load.velocity", load->text("velocity"), "only with control = \"impact\"");
+    }
+    drivers::LoadHistory history = read_history(*load, control);
+    if (control == drivers::Control::displacement && material.viscosity() > 0.0 && history.has_jump()) {
+        throw InvalidInput("load.history", "[...]",
+                           "a jump in depth needs an infinite force with a dashpot (eta > 0); give the jump a duration");
+    }
+    double end_time = history.end_time();
+    if (auto end = load->optional_number("end")) {
+        if (!(*end > history.start_time())) {
+            throw InvalidInput("load.end", format_value(*end),
+                               "must be after the first history time " + format_value(history.start_time()));
+        }
+        end_time = *end;
+    }
+
+    std::vector<double> snapshots;
+    if (auto output = root.table("output")) {
+        output->reject_unknown({"snapshots"});
+        if (output->has("snapshots")) snapshots = output->numbers("snapshots");
+        for (std::size_t i = 0; i < snapshots.size(); ++i) {
+            if (snapshots[i] < history.start_time() || snapshots[i] > end_time) {
+                throw InvalidInput(fmt::format("output.snapshots[{}]", i), format_value(snapshots[i]),
+                                   fmt::format("must lie within the simulated time [{}, {}]",
+                                               history.start_time(), end_time));
+            }
+        }
+    }
+
+    drivers::NumericsOptions numerics;
+    if (auto table = root.table("numerics")) {
+        table->reject_unknown({"elements", "time_step", "output_every", "half_width"});
+        numerics.elements = table->optional_count("elements");
+        numerics.time_step = table->optional_number("time_step");
+        numerics.half_width = table->optional_number("half_width");
+        numerics.output_every = table->optional_count("output_every").value_or(1);
+        if (numerics.time_step) require_positive("numerics.time_step", *numerics.time_step);
+        if (numerics.half_width) require_positive("numerics.half_width", *numerics.half_width);
+    }
+
+    return drivers::ContactCase{title,    std::move(material),  std::move(indenter), control, std::move(history),
+                                end_time, std::move(snapshots), numerics,            std::move(shear_material)};
+}
+
+drivers::ContactCase load_case(const std::filesystem::path& path) {
+    std::ifstream file(path);
+    if (!file) throw InvalidInput("case", path.string(), "cannot be read (no such file, or no permission)");
+    std::ostringstream text;
+    text << file.rdbuf();
+    return parse_case(text.str(), path.string());
+}
+
+std::string describe(const drivers::ContactCase& contact_case) {
+    const auto& material = contact_case.material;
+    std::string rheology = material.terms().empty() && material.viscosity() == 0.0 ? "an elastic" : "a viscoelastic";
+    return fmt::format("{}{} on {} half-space (G(0+) = {:.4g} Pa, G(inf) = {:.4g} Pa, {} branch(es)), {} control, "
+                       "{} history points over t = {:.4g} .. {:.4g} s",
+                       contact_case.title.empty() ? "" : "\"" + contact_case.title + "\": ",
+                       contact_case.indenter->describe(), rheology, material.instantaneous_modulus(),
+                       material.equilibrium_modulus(), material.terms().size(),
+                       contact_case.control == drivers::Control::force ? "force" : "displacement",
+                       contact_case.history.points().size(), contact_case.history.start_time(), contact_case.end_time);
+}
+
+}  // namespace mdr::io

@@ -1,0 +1,53 @@
+#include "mdr/io/material_table.hpp"
+
+#include <fmt/os.h>
+
+#include <cmath>
+
+namespace mdr::io {
+namespace {
+
+std::vector<double> log_grid(double lower, double upper, std::size_t count) {
+    std::vector<double> grid(count);
+    const double step = std::log(upper / lower) / static_cast<double>(count - 1);
+    for (std::size_t i = 0; i < count; ++i) grid[i] = lower * std::exp(step * static_cast<double>(i));
+    return grid;
+}
+
+}  // namespace
+
+std::vector<double> default_times(const rheology::Rheology& material, std::size_t count) {
+    const double shortest = material.shortest_time();
+    const double longest = material.longest_time();
+    if (!(shortest > 0.0)) return log_grid(1e-3, 1e3, count);
+    return log_grid(shortest / 100.0, longest * 100.0, count);
+}
+
+std::vector<double> default_omegas(const rheology::Rheology& material, std::size_t count) {
+    const double shortest = material.shortest_time();
+    const double longest = material.longest_time();
+    if (!(shortest > 0.0)) return log_grid(1e-3, 1e3, count);
+    return log_grid(1.0 / (100.0 * longest), 100.0 / shortest, count);
+}
+
+void write_material_tables(const std::filesystem::path& directory, const rheology::Rheology& material,
+                           const std::optional<rheology::Rheology>& shear, const std::vector<double>& times,
+                           const std::vector<double>& omegas) {
+    auto functions = fmt::output_file((directory / "functions.csv").string());
+    functions.print("{}\n", shear ? "t,G,J,J_shear" : "t,G,J");
+    for (double t : times) {
+        functions.print("{},{},{}", t, material.relaxation(t), material.creep(t));
+        if (shear) functions.print(",{}", shear->creep(t));
+        functions.print("\n");
+    }
+    functions.close();
+    auto dynamic = fmt::output_file((directory / "dynamic.csv").string());
+    dynamic.print("omega,storage,loss\n");
+    for (double omega : omegas) {
+        const auto modulus = material.complex_modulus(omega);
+        dynamic.print("{},{},{}\n", omega, modulus.real(), modulus.imag());
+    }
+    dynamic.close();
+}
+
+}  // namespace mdr::io

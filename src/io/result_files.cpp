@@ -1,0 +1,81 @@
+#include "mdr/io/result_files.hpp"
+
+#include <fmt/format.h>
+#include <fmt/os.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace mdr::io {
+namespace fs = std::filesystem;
+
+namespace {
+
+double max_of(const std::vector<double>& values) {
+    return values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
+}
+
+}  // namespace
+
+void write_directory_atomically(const fs::path& directory, const std::function<void(const fs::path&)>& write) {
+    const fs::path target = fs::absolute(directory);
+    const fs::path temporary = target.parent_path() / fmt::format(".{}.partial-{}", target.filename().string(), getpid());
+    std::error_code ignored;
+    fs::remove_all(temporary, ignored);
+    try {
+        fs::create_directories(temporary);
+        write(temporary);
+        if (fs::exists(target)) fs::remove_all(target);
+        fs::rename(temporary, target);
+    } catch (...) {
+        fs::remove_all(temporary, ignored);
+        throw;
+    }
+}
+
+std::string summary_json(const drivers::ContactCase& contact_case, const drivers::IndentationResult& result,
+                         double wall_seconds) {
+    nlohmann::ordered_json summary;
+    summary["case"] = contact_case.title;
+    summary["max_force"] = max_of(result.force);
+    summary["max_depth"] = max_of(result.depth);
+    summary["max_radius"] = max_of(result.radius);
+    summary["steps"] = result.steps;
+    summary["elements"] = result.numerics.elements;
+    summary["wall_seconds"] = wall_seconds;
+    summary["control"] = contact_case.control == drivers::Control::force ? "force" : "displacement";
+    summary["time_step"] = result.numerics.time_step;
+    summary["half_width"] = result.numerics.half_width;
+    summary["final_force"] = result.force.empty() ? 0.0 : result.force.back();
+    summary["final_depth"] = result.depth.empty() ? 0.0 : result.depth.back();
+    return summary.dump(2);
+}
+
+void write_indentation_result(const fs::path& directory, const drivers::ContactCase& contact_case,
+                              const drivers::IndentationResult& result, double wall_seconds) {
+    auto history = fmt::output_file((directory / "history.csv").string());
+    history.print("t,d,F,a\n");
+    for (std::size_t i = 0; i < result.time.size(); ++i) {
+        history.print("{},{},{},{}\n", result.time[i], result.depth[i], result.force[i], result.radius[i]);
+    }
+    history.close();
+
+    auto summary = fmt::output_file((directory / "summary.json").string());
+    summary.print("{}\n", summary_json(contact_case, result, wall_seconds));
+    summary.close();
+
+    if (result.snapshots.empty()) return;
+    auto profiles = fmt::output_file((directory / "profiles.csv").string());
+    profiles.print("t,r,p,w\n");
+    for (const auto& snapshot : result.snapshots) {
+        for (std::size_t j = 0; j < snapshot.radius.size(); ++j) {
+            profiles.print("{},{},{},{}\n", snapshot.time, snapshot.radius[j], snapshot.pressure[j],
+                           snapshot.displacement[j]);
+        }
+    }
+    profiles.close();
+}
+
+}  // namespace mdr::io

@@ -1,0 +1,118 @@
+#include "toml_reader.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "mdr/error.hpp"
+#include "mdr/io/key_suggestion.hpp"
+
+namespace mdr::io {
+namespace {
+
+std::string node_text(const toml::node& node) {
+    std::ostringstream out;
+    node.visit([&out](const auto& value) { out << value; });
+    std::string text = out.str();
+    for (char& c : text) {
+        if (c == '\n') c = ' ';
+    }
+    return text.size() > 60 ? text.substr(0, 57) + "..." : text;
+}
+
+double as_number(const toml::node& node, const std::string& key) {
+    if (!node.is_number()) throw InvalidInput(key, node_text(node), "must be a number");
+    const double value = node.value<double>().value();
+    require_finite(key, value);
+    return value;
+}
+
+}  // namespace
+
+TableReader::TableReader(const toml::table& table, std::string path) : table_(table), path_(std::move(path)) {}
+
+std::string TableReader::key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+bool TableReader::has(const std::string& key) const { return table_.contains(key); }
+
+const toml::node& TableReader::node(const std::string& key) const {
+    const toml::node* found = table_.get(key);
+    if (found == nullptr) throw InvalidInput(key_path(key), "(missing)", "is required");
+    return *found;
+}
+
+std::string TableReader::text(const std::string& key) const { return node_text(node(key)); }
+
+double TableReader::number(const std::string& key) { return as_number(node(key), key_path(key)); }
+
+std::optional<double> TableReader::optional_number(const std::string& key) {
+    if (!has(key)) return std::nullopt;
+    return number(key);
+}
+
+std::optional<std::size_t> TableReader::optional_count(const std::string& key) {
+    if (!has(key)) return std::nullopt;
+    const toml::node& n = node(key);
+    const double value = as_number(n, key_path(key));
+    if (!n.is_integer() || value < 1.0) throw InvalidInput(key_path(key), node_text(n), "must be an integer >= 1");
+    return static_cast<std::size_t>(value);
+}
+
+std::string TableReader::string(const std::string& key) {
+    const toml::node& n = node(key);
+    if (!n.is_string()) throw InvalidInput(key_path(key), node_text(n), "must be a string");
+    return std::string(*n.value<std::string_view>());
+}
+
+std::optional<std::string> TableReader::optional_string(const std::string& key) {
+    if (!has(key)) return std::nullopt;
+    return string(key);
+}
+
+std::vector<double> TableReader::numbers(const std::string& key) {
+    const toml::node& n = node(key);
+    const toml::array* array = n.as_array();
+    if (array == nullptr) throw InvalidInput(key_path(key), node_text(n), "must be an array of numbers");
+    std::vector<double> values;
+    for (std::size_t i = 0; i < array->size(); ++i) {
+        values.push_back(as_number((*array)[i], key_path(key) + "[" + std::to_string(i) + "]"));
+    }
+    return values;
+}
+
+std::vector<std::pair<double, double>> TableReader::pairs(const std::string& key, const char* first,
+                                                          const char* second) {
+    const toml::node& n = node(key);
+    const toml::array* array = n.as_array();
+    const std::string rule = std::string("must be an array of [") + first + ", " + second + "] pairs";
+    if (array == nullptr) throw InvalidInput(key_path(key), node_text(n), rule);
+    std::vector<std::pair<double, double>> values;
+    for (std::size_t i = 0; i < array->size(); ++i) {
+        const std::string item = key_path(key) + "[" + std::to_string(i) + "]";
+        const toml::array* pair = (*array)[i].as_array();
+        if (pair == nullptr || pair->size() != 2) throw InvalidInput(item, node_text((*array)[i]), rule);
+        values.emplace_back(as_number((*pair)[0], item + "." + first), as_number((*pair)[1], item + "." + second));
+    }
+    return values;
+}
+
+std::optional<TableReader> TableReader::table(const std::string& key) {
+    if (!has(key)) return std::nullopt;
+    const toml::node& n = node(key);
+    const toml::table* sub = n.as_table();
+    if (sub == nullptr) throw InvalidInput(key_path(key), node_text(n), "must be a table");
+    return TableReader(*sub, key_path(key));
+}
+
+void TableReader::reject_unknown(const std::vector<std::string>& known) const {
+    for (const auto& [key, value] : table_) {
+        const std::string name(key.str());
+        bool found = false;
+        for (const auto& k : known) found = found || k == name;
+        if (found) continue;
+        const std::string suggestion = nearest_key(name, known);
+        throw InvalidInput(key_path(name), node_text(value),
+                           "unknown key" + (suggestion.empty() ? std::string() : "; did you mean '" + suggestion + "'?"));
+    }
+}
+
+}  // namespace mdr::io

@@ -1,0 +1,48 @@
+#pragma once
+// Typed, validated access to the tables of a case file; every failure is an mdr::InvalidInput naming the key.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+namespace mdr::io {
+
+/// One table of the case file with its dotted path (e.g. `material`), tracking which keys were read.
+class TableReader {
+public:
+    TableReader(const toml::table& table, std::string path);
+
+    /// The dotted name of `key` in this table (`material.G1`).
+    std::string key_path(const std::string& key) const;
+    /// True when the key is present.
+    bool has(const std::string& key) const;
+    /// A required number (integer or float, finite).
+    double number(const std::string& key);
+    /// An optional number.
+    std::optional<double> optional_number(const std::string& key);
+    /// An optional positive integer.
+    std::optional<std::size_t> optional_count(const std::string& key);
+    /// A required string.
+    std::string string(const std::string& key);
+    /// An optional string.
+    std::optional<std::string> optional_string(const std::string& key);
+    /// A required array of numbers.
+    std::vector<double> numbers(const std::string& key);
+    /// A required array of [a, b] pairs of numbers.
+    std::vector<std::pair<double, double>> pairs(const std::string& key, const char* first, const char* second);
+    /// A sub-table, if present.
+    std::optional<TableReader> table(const std::string& key);
+    /// Throws for the first key of the table that is not in `known` (suggesting the nearest known key).
+    void reject_unknown(const std::vector<std::string>& known) const;
+    /// The value of a key as it was written, for messages.
+    std::string text(const std::string& key) const;
+
+private:
+    const toml::node& node(const std::string& key) const;
+    const toml::table& table_;
+    std::string path_;
+};
+
+}  // namespace mdr::io

@@ -1,0 +1,38 @@
+#include "mdr/error.hpp"
+#include "mdr/profile/profile.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace mdr::profile {
+namespace {
+
+/// Cone f = r tan(theta) (eq. 24), g = (pi/2)|x| tan(theta) (eq. 25), a = 2 d / (pi tan(theta)).
+class Cone final : public Profile {
+public:
+    explicit Cone(double slope_deg)
+        : slope_deg_(slope_deg), slope_(std::tan(slope_deg * std::numbers::pi / 180.0)) {}
+
+    double gap(double r) const override { return std::abs(r) * slope_; }
+    double equivalent(double x) const override { return 0.5 * std::numbers::pi * std::abs(x) * slope_; }
+    double contact_radius(double depth) const override {
+        return depth > 0.0 ? 2.0 * depth / (std::numbers::pi * slope_) : 0.0;
+    }
+    double max_radius() const override { return std::numeric_limits<double>::infinity(); }
+    std::string describe() const override { return "cone slope_deg = " + format_value(slope_deg_); }
+
+private:
+    double slope_deg_;
+    double slope_;  // tan(theta)
+};
+
+}  // namespace
+
+std::unique_ptr<Profile> make_cone(double slope_deg) {
+    require_positive("slope_deg", slope_deg);
+    if (!(slope_deg < 90.0)) throw InvalidInput("slope_deg", format_value(slope_deg), "must be < 90");
+    return std::make_unique<Cone>(slope_deg);
+}
+
+}  // namespace mdr::profile

@@ -1,0 +1,50 @@
+#pragma once
+/// \file
+/// Closed-form and quadrature reference solutions of elastic and viscoelastic normal contact
+/// (incompressible half-space, ν = 1/2, E* = 4G). Independent of the library's MDR code.
+
+#include "reference/indenter.hpp"
+#include "reference/piecewise_linear.hpp"
+#include "reference/prony_material.hpp"
+
+namespace mdr::reference {
+
+/// Hertz: force [N] of a sphere of radius R [m] pressed to depth d ≥ 0 [m] into an elastic half-space of shear
+/// modulus G [Pa]: F = (16/3) G sqrt(R) d^{3/2} (E* = 4G; Johnson eq. 4.22).
+double hertz_force(double radius, double shear_modulus, double depth);
+/// Hertz contact radius a = sqrt(R d) [m] (eq. 31).
+double hertz_contact_radius(double radius, double depth);
+/// Hertz pressure [Pa] at radius r: p = p0 sqrt(1 − r²/a²) for r < a, else 0, with p0 = 8 G a /(π R).
+double hertz_pressure(double radius, double shear_modulus, double depth, double r);
+
+/// Sneddon cone (θ [rad] between flank and surface) at depth d: contact radius a = 2d/(π tanθ) [m] (eq. 26).
+double cone_contact_radius(double slope_angle, double depth);
+/// Sneddon cone force F = 2∫_0^a 4G (d − (π/2) tanθ x) dx = 8 G d² /(π tanθ) [N].
+double cone_force(double slope_angle, double shear_modulus, double depth);
+
+/// Boussinesq flat punch of radius a [m] at depth d: F = 8 G a d [N].
+double flat_punch_force(double punch_radius, double shear_modulus, double depth);
+
+/// Power-law indenter f = c rⁿ at contact radius a [m]: F = 8 G κ_n c n a^{n+1}/(n+1) [N]; the matching depth
+/// is PowerLawIndenter::depth_at_radius(a) = κ_n c aⁿ.
+double power_law_force(const PowerLawIndenter& indenter, double shear_modulus, double contact_radius);
+
+/// Handbook eq. (28): cone, d = v0 t, standard solid (G∞, G1, τ1):
+/// F(t) = (8 v0² /(π tanθ)) [G∞ t² + 2 G1 τ1 t − 2 G1 τ1² (1 − exp(−t/τ1))] [N]. Derived independently from
+/// F = 8 v0 ∫_0^{a(t)} Φ(t − t_c(x)) dx with Φ(s) = ∫_0^s G, x = 2 v0 t_c /(π tanθ); the restatement holds.
+double cone_ramp_force_standard_solid(double slope_angle, double speed, double G_inf, double G1, double tau1,
+                                      double t);
+
+/// Handbook eq. (33): Kelvin–Voigt (G, η) sphere under a force F0 applied at t = 0:
+/// a(t) = [(3 F0 R /(16 G)) (1 − exp(−t G/η))]^{1/3} [m].
+double kelvin_voigt_sphere_creep_radius(double radius, double shear_modulus, double viscosity, double force,
+                                        double t);
+
+/// Lee–Radok force [N] at time t for a non-decreasing piecewise-linear depth d(t) with d(times.front()) = 0:
+/// F(t) = η dF1/dt + ∫ G(t − t') dF1(d(t')), F1 the elastic force at unit modulus, dF1 = 8 a dd (contact
+/// stiffness 8Ga). Integrated per piece over the contact radius a (smooth integrand, dF1 = 8 n κ_n c aⁿ da) by
+/// adaptive Gauss–Kronrod to 1e-13 relative. Throws std::invalid_argument if d decreases anywhere.
+double lee_radok_force(const PowerLawIndenter& indenter, const PronyMaterial& material, const PiecewiseLinear& depth,
+                       double t);
+
+}  // namespace mdr::reference

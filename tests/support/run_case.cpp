@@ -1,0 +1,25 @@
+#include "run_case.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mdr/io/case_file.hpp"
+
+namespace mdr::testing {
+
+drivers::IndentationResult run_toml(const std::string& toml_text) {
+    return drivers::run_indentation(io::parse_case(toml_text, "test case"));
+}
+
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
+    const auto upper = std::upper_bound(x.begin(), x.end(), at);
+    if (upper == x.begin()) return y.front();
+    if (upper == x.end()) return y.back();
+    const auto i = static_cast<std::size_t>(upper - x.begin());
+    const double weight = (at - x[i - 1]) / (x[i] - x[i - 1]);
+    return y[i - 1] + weight * (y[i] - y[i - 1]);
+}
+
+double observed_order(double coarse_error, double fine_error) { return std::log2(coarse_error / fine_error); }
+
+}  // namespace mdr::testing
