@@ -45,8 +45,9 @@ def _case_text(case: CaseLike) -> tuple[str, str]:
         try:
             with open(path, encoding="utf-8") as handle:
                 return handle.read(), path
-        except OSError as error:
-            raise ValueError(f"case = {path}: cannot be read ({error.strerror})") from None
+        except OSError:
+            # The same line as the command line's (src/io/case_file.cpp, load_case).
+            raise InvalidInput(f"case = {path}: cannot be read (no such file, or no permission)") from None
     raise TypeError(f"case: expected a path or a dict, got {type(case).__name__}")
 
 

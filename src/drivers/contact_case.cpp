@@ -81,7 +81,11 @@ ResolvedNumerics resolve_numerics(const ContactCase& contact_case) {
             // A parallel dashpot under force control sees the secant rate of the step: first order in dt, so the
             // step is tied to the shortest retardation time (error ~ 1e-4 of the creep depth).
             const auto& retardation = contact_case.material.creep_function().terms;
-            if (!retardation.empty()) resolved.time_step = std::min(resolved.time_step, retardation.front().retardation_time / 5000.0);
+            if (!retardation.empty()) {
+                const double floor = duration / static_cast<double>(max_dashpot_steps);
+                resolved.time_step = std::min(resolved.time_step,
+                                              std::max(retardation.front().retardation_time / 5000.0, floor));
+            }
         }
     } else {
         resolved.time_step = 1.0;  // a history of jumps only: no step has a length

@@ -12,8 +12,6 @@ namespace {
 
 constexpr double normal_stiffness_factor = 4.0;  // k_z = 4 G dx, eq. (11)
 
-// Elements beyond this count would need more memory than any machine we target.
-constexpr std::size_t max_elements = std::size_t{1} << 28;
 
 }  // namespace
 
@@ -39,6 +37,7 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
         stress_.assign(count, 0.0);
         memory_.assign(count * branches, 0.0);
         in_contact_.assign(count, 0);
+        event_.assign(count, 0.0);
         relaxed_.assign(count, 0.0);
         scratch_.assign(branches, 0.0);
         scratch_gain_.assign(branches, 0.0);
@@ -172,31 +171,61 @@ void Foundation::advance(double depth_start, double depth_end) {
     const std::size_t n = size();
     const std::size_t end = reach(deepest);
     const std::size_t branches = material_.terms().size();
+    // Three passes over the elements, so that the two over all of them are branch-free and vectorise (with
+    // -fno-trapping-math, see CMakeLists.txt):
+    // 1. event_ = 1 where the step is split by an entry or exit (the rule of evaluate()), else 0 (a double, so
+    //    that the pass has one element width);
+    // 2. the new state of the elements whose step is split by an entry or exit, from their state before the step
+    //    (rare, scalar);
+    // 3. every element updated as if unsplit, relaxed_ becoming its increment dw; the split elements are
+    //    overwritten from their saved state after the branch update.
+    // relaxed_ is zero beyond active_ (never written there), as evaluate() assumes. The __restrict pointers live
+    // only in their pass, since pass 2 and the copy-back write the same arrays by other names.
+    const double stiffness = step_.stiffness;
+    {
+        const double* __restrict g = equivalent_.data();
+        const double* __restrict w = displacement_.data();
+        const double* __restrict relaxed = relaxed_.data();
+        const std::uint8_t* __restrict contact = in_contact_.data();
+        double* __restrict event = event_.data();
+        for (std::size_t i = 0; i < end; ++i) {
+            const double contact_stress = relaxed[i] + stiffness * (depth_end - g[i] - w[i]);
+            const double gap_end = depth_end - g[i] - (w[i] - relaxed[i] / stiffness);
+            const bool split = contact[i] != 0 ? !(contact_stress >= 0.0) : !(gap_end <= 0.0);
+            event[i] = split ? 1.0 : 0.0;
+        }
+    }
     split_.clear();
     split_state_.clear();
-    // relaxed_ is reused for the increments dw of the unsplit elements.
     for (std::size_t i = 0; i < end; ++i) {
+        if (event_[i] == 0.0) continue;
         const Outcome outcome = evaluate(i, depth_start, depth_end);
-        if (outcome.split) {
-            double w = 0.0;
-            const std::size_t offset = split_state_.size();
-            split_state_.resize(offset + branches + 2);
-            const double stress =
-                split_stress(i, outcome, depth_start, depth_end, w, split_state_.data() + offset + 2);
-            split_state_[offset] = w;
-            split_state_[offset + 1] = stress;
-            split_.push_back(i);
-            in_contact_[i] = outcome.contact ? 1 : 0;
-            relaxed_[i] = 0.0;
-            continue;
-        }
-        const double relaxed = i < active_ ? relaxed_[i] : 0.0;
-        const double dw = outcome.contact ? depth_end - equivalent_[i] - displacement_[i]
-                                          : -relaxed / step_.stiffness;
-        displacement_[i] += dw;
-        stress_[i] = outcome.stress;
+        double split_w = 0.0;
+        const std::size_t offset = split_state_.size();
+        split_state_.resize(offset + branches + 2);
+        const double stress =
+            split_stress(i, outcome, depth_start, depth_end, split_w, split_state_.data() + offset + 2);
+        split_state_[offset] = split_w;
+        split_state_[offset + 1] = stress;
+        split_.push_back(i);
         in_contact_[i] = outcome.contact ? 1 : 0;
-        relaxed_[i] = dw;
+    }
+    {
+        const double* __restrict g = equivalent_.data();
+        const std::uint8_t* __restrict contact = in_contact_.data();
+        double* __restrict w = displacement_.data();
+        double* __restrict sigma = stress_.data();
+        double* __restrict relaxed = relaxed_.data();
+        for (std::size_t i = 0; i < end; ++i) {
+            const double contact_dw = depth_end - g[i] - w[i];
+            const double contact_stress = relaxed[i] + stiffness * contact_dw;
+            const double free_dw = -relaxed[i] / stiffness;
+            const bool in_contact = contact[i] != 0;
+            const double dw = in_contact ? contact_dw : free_dw;
+            w[i] += dw;
+            sigma[i] = in_contact ? contact_stress : 0.0;
+            relaxed[i] = dw;
+        }
     }
     const auto& terms = material_.terms();
     for (std::size_t k = 0; k < terms.size(); ++k) {

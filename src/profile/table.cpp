@@ -84,7 +84,11 @@ std::vector<double> monotone_slopes(const std::vector<double>& r, const std::vec
 class Table final : public Profile {
 public:
     Table(std::vector<double> r, std::vector<double> f)
-        : r_(std::move(r)), f_(std::move(f)), slope_(monotone_slopes(r_, f_)), g_at_knots_(r_.size()) {
+        : r_(std::move(r)),
+          f_(std::move(f)),
+          slope_(monotone_slopes(r_, f_)),
+          g_at_knots_(r_.size()),
+          monotone_intervals_(count_monotone_intervals()) {
         for (std::size_t j = 0; j < r_.size(); ++j) g_at_knots_[j] = equivalent_inside(r_[j]);
     }
 
@@ -105,38 +109,25 @@ public:
         return x > r_.back() ? infinity : equivalent_inside(x);
     }
 
-    /// The first crossing g(a) = d: the first knot where g reaches d brackets it, and the Illinois variant of
-    /// regula falsi (bisection where it stalls) shrinks the bracket to 1e-15 relative.
-    /// Beyond g(r_last) the wall past the table gives a = r_last (as for a flat punch).
+    /// The first crossing g(a) = d. Where r f'(r) is non-decreasing (convex gaps, power laws) g is too, and the
+    /// knots bracket the crossing; beyond, g may fall again (a gap that flattens), so each interval is sampled
+    /// at 8 points before the bracket is refined. Beyond the largest g the wall past the table gives r_last.
     double contact_radius(double depth) const override {
         if (!(depth > 0.0)) return 0.0;
-        const auto first = std::find_if(g_at_knots_.begin(), g_at_knots_.end(), [&](double g) { return g >= depth; });
-        if (first == g_at_knots_.end()) return r_.back();
-        const auto j = static_cast<std::size_t>(first - g_at_knots_.begin());
-        // Bracket with g(lo) < depth <= g(hi); j >= 1 since g(0) = 0 < depth.
-        double lo = r_[j - 1];
-        double hi = r_[j];
-        double g_lo = g_at_knots_[j - 1] - depth;
-        double g_hi = g_at_knots_[j] - depth;
-        int side = 0;
-        for (int iteration = 0; iteration < 200 && g_hi > 0.0 && hi - lo > 1e-15 * hi; ++iteration) {
-            double x = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
-            if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
-            if (x <= lo || x >= hi) break;
-            const double g_x = equivalent_inside(x) - depth;
-            if (g_x >= 0.0) {
-                hi = x;
-                g_hi = g_x;
-                if (side == 1) g_lo *= 0.5;
-                side = 1;
-            } else {
+        for (std::size_t j = 1; j < r_.size(); ++j) {
+            const bool monotone = j <= monotone_intervals_;
+            const int samples = monotone ? 1 : 8;
+            double lo = r_[j - 1];
+            double g_lo = g_at_knots_[j - 1];
+            for (int s = 1; s <= samples; ++s) {
+                const double x = s == samples ? r_[j] : r_[j - 1] + (r_[j] - r_[j - 1]) * s / samples;
+                const double g_x = s == samples ? g_at_knots_[j] : equivalent_inside(x);
+                if (g_x >= depth) return refine_crossing(lo, x, g_lo - depth, g_x - depth, depth);
                 lo = x;
                 g_lo = g_x;
-                if (side == -1) g_hi *= 0.5;
-                side = -1;
             }
         }
-        return hi;
+        return r_.back();
     }
 
     double max_radius() const override { return r_.back(); }
@@ -160,6 +151,51 @@ private:
                 (slope_[k] + slope_[k + 1] - 2.0 * secant) / (h * h)};
     }
 
+    /// Shrinks a bracket g(lo) < depth <= g(hi) (values given minus depth) to 1e-15 relative with the Illinois
+    /// variant of regula falsi, bisecting where it stalls; returns the upper end, where g >= depth.
+    double refine_crossing(double lo, double hi, double g_lo, double g_hi, double depth) const {
+        int side = 0;
+        for (int iteration = 0; iteration < 200 && g_hi > 0.0 && hi - lo > 1e-15 * hi; ++iteration) {
+            double x = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+            if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+            if (x <= lo || x >= hi) break;
+            const double g_x = equivalent_inside(x) - depth;
+            if (g_x >= 0.0) {
+                hi = x;
+                g_hi = g_x;
+                if (side == 1) g_lo *= 0.5;
+                side = 1;
+            } else {
+                lo = x;
+                g_lo = g_x;
+                if (side == -1) g_hi *= 0.5;
+                side = -1;
+            }
+        }
+        return hi;
+    }
+
+    /// Number of leading intervals on which (r f'(r))' >= 0; g'(x) = int_0^{pi/2} (r f')'(x sin phi) dphi,
+    /// so g is non-decreasing up to the end of the last of them. On interval k, with t = r - r_k,
+    /// (r f')' = f' + r f'' = (d_k + 2 c2 r_k) + (4 c2 + 6 c3 r_k) t + 9 c3 t^2.
+    std::size_t count_monotone_intervals() const {
+        std::size_t k = 0;
+        for (; k + 1 < r_.size(); ++k) {
+            const Cubic c = cubic(k);
+            const double h = r_[k + 1] - r_[k];
+            const double a0 = slope_[k] + 2.0 * c.c2 * r_[k];
+            const double a1 = 4.0 * c.c2 + 6.0 * c.c3 * r_[k];
+            const double a2 = 9.0 * c.c3;
+            const auto value = [&](double t) { return a0 + t * (a1 + t * a2); };
+            double lowest = std::min(value(0.0), value(h));
+            const double vertex = a2 > 0.0 ? -a1 / (2.0 * a2) : 0.0;
+            if (vertex > 0.0 && vertex < h) lowest = std::min(lowest, value(vertex));
+            const double scale = std::abs(a0) + std::abs(a1) * h + std::abs(a2) * h * h;
+            if (lowest < -1e-12 * scale) break;  // rounding of an exactly flat or linear piece is not a decrease
+        }
+        return k;
+    }
+
     /// g(x) for 0 <= x <= r_last.
     double equivalent_inside(double x) const {
         double sum = 0.0;
@@ -181,10 +217,10 @@ private:
         const double sa = std::sqrt((x - ra) * (x + ra));
         const double sb = std::sqrt((x - rb) * (x + rb));
         const double i0 = std::atan2(rb, sb) - std::atan2(ra, sa);
-        const double x_sin = (rb - ra) * (rb + ra) / (sa + sb);                  // int x sin(phi) dphi
-        const double x2_sin2 = 0.5 * (x * x * i0 - (rb * sb - ra * sa));        // int x^2 sin^2(phi) dphi
-        const double t1 = x_sin - ra * i0;                                       // int t dphi
-        const double t2 = x2_sin2 - 2.0 * ra * x_sin + ra * ra * i0;             // int t^2 dphi
+        const double x_sin = (rb - ra) * (rb + ra) / (sa + sb);            // int x sin(phi) dphi
+        const double x2_sin2 = 0.5 * (x * x * i0 - (rb * sb - ra * sa));  // int x^2 sin^2(phi) dphi
+        const double t1 = x_sin - ra * i0;                                 // int t dphi
+        const double t2 = x2_sin2 - 2.0 * ra * x_sin + ra * ra * i0;       // int t^2 dphi
         const Cubic c = cubic(k);
         return slope_[k] * i0 + 2.0 * c.c2 * t1 + 3.0 * c.c3 * t2;
     }
@@ -193,6 +229,7 @@ private:
     std::vector<double> f_;
     std::vector<double> slope_;       // f'(r_k)
     std::vector<double> g_at_knots_;  // g(r_k), to bracket the contact radius
+    std::size_t monotone_intervals_;  // g is non-decreasing on [0, r_m], m = monotone_intervals_
 };
 
 }  // namespace

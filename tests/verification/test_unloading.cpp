@@ -28,6 +28,8 @@ struct TingCase {
     reference::PronyMaterial material;
 };
 
+void PrintTo(const TingCase& c, std::ostream* out) { *out << c.name; }
+
 std::string triangle_case(const TingCase& c, double peak_depth, const std::string& numerics = "") {
     return fmt::format(R"(
 [material]

@@ -55,6 +55,9 @@ struct ContactCase {
 inline constexpr std::size_t default_elements = 2000;
 /// Steps over the whole history when `[numerics] time_step` is not given; see resolve_numerics.
 inline constexpr std::size_t default_steps = 2000;
+/// Most steps the dashpot rule of resolve_numerics may ask for (a retardation time far below the history's
+/// duration is then resolved no further: its creep is over within the first step).
+inline constexpr std::size_t max_dashpot_steps = 200000;
 /// Smallest number of steps per history segment.
 inline constexpr std::size_t min_steps_per_segment = 20;
 

@@ -13,6 +13,9 @@
 
 namespace mdr::foundation {
 
+/// Most elements a foundation may have: beyond, the state would need more memory than the machines we target.
+inline constexpr std::size_t max_elements = std::size_t{1} << 28;
+
 /// A row of independent viscoelastic elements at x_i = (i + 1/2) dx, i = 0 .. n-1, on the half-width [0, L]
 /// (the foundation is symmetric; totals count both halves). Each element has the rheology of the material with
 /// normal stiffness k_z(t) = 4 G(t) dx (eq. 11). State per element: displacement w_i (positive into the body),
@@ -83,6 +86,7 @@ private:
     std::vector<double> stress_;               ///< sigma_i at the end of the last step
     std::vector<double> memory_;               ///< h_{k,i}, branch-major: memory_[k * n + i]
     std::vector<std::uint8_t> in_contact_;
+    std::vector<double> event_;                ///< 1 where the last step was split by an entry or exit, else 0
     std::vector<double> relaxed_;              ///< G_inf w_i + sum_k G_k E_k h_{k,i} for the prepared step
     mutable std::vector<double> scratch_;      ///< per-branch memory of a trial split update
     mutable std::vector<double> scratch_gain_; ///< per-branch B_k of a sub-step

@@ -81,7 +81,8 @@ TEST(TableProfile, QuadratureExactForTheCubicInterpolant) {
     // A cubic table (the interpolant's cubic terms are active) and a step-like table (the Fritsch-Carlson
     // limiter is active): eq. (9) by the closed-form pieces against eq. (9) by parts from gap(), 1e-10 relative.
     const auto cubic = sampled([](double r) { return 1e4 * r * r * r; }, 1e-3, 40);
-    const auto step = mdr::profile::make_table({0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0}, {0.0, 0.0, 0.1, 1.0, 1.0, 1.05, 2.0});
+    const auto step =
+        mdr::profile::make_table({0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0}, {0.0, 0.0, 0.1, 1.0, 1.0, 1.05, 2.0});
     for (const double fraction : {0.13, 0.5, 0.77, 0.999}) {
         const double x_cubic = 1e-3 * fraction;
         const double x_step = 6.0 * fraction;
@@ -138,7 +139,8 @@ TEST(TableProfile, ContactRadiusRoundTrip) {
 
 TEST(TableProfile, ContactRadiusIsTheFirstCrossing) {
     // A cone flattened to a plateau: r f'(r) drops, so g rises and then falls (g is not monotone).
-    const auto table = mdr::profile::make_table({0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0}, {0.0, 1.0, 2.0, 2.0, 2.0, 2.0, 2.0});
+    const auto table =
+        mdr::profile::make_table({0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0}, {0.0, 1.0, 2.0, 2.0, 2.0, 2.0, 2.0});
     double g_max = 0.0;
     for (int k = 0; k <= 6000; ++k) g_max = std::max(g_max, table->equivalent(k * 1e-3));
     ASSERT_GT(g_max, table->equivalent(6.0));
