@@ -93,6 +93,8 @@ def plot_directory(directory: str) -> list[str]:
 
 
 def _save(axes, path: str) -> str:
+    for each in axes.figure.axes:
+        each.ticklabel_format(style="sci", scilimits=(-3, 4), useMathText=True)
     axes.figure.tight_layout()
     axes.figure.savefig(path, dpi=120)
     plt.close(axes.figure)
