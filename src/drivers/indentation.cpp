@@ -40,22 +40,20 @@ double solve_depth(const foundation::Foundation& foundation, double depth_start,
     double f_lower = residual(lower);
     double f_upper = f_lower;
     double step = scale;
-    if (f_lower > 0.0) {
-        while (f_lower > 0.0) {
-            upper = lower;
-            f_upper = f_lower;
-            lower -= step;
-            step *= 2.0;
-            f_lower = residual(lower);
-        }
-    } else {
-        while (f_upper <= 0.0) {
-            lower = upper;
-            f_lower = f_upper;
-            upper += step;
-            step *= 2.0;
-            f_upper = residual(upper);
-        }
+    // Expand the bracket from the guess downwards or upwards (only one of the two loops runs).
+    while (f_lower > 0.0) {
+        upper = lower;
+        f_upper = f_lower;
+        lower -= step;
+        step *= 2.0;
+        f_lower = residual(lower);
+    }
+    while (f_upper <= 0.0) {
+        lower = upper;
+        f_lower = f_upper;
+        upper += step;
+        step *= 2.0;
+        f_upper = residual(upper);
     }
     // Now f(lower) <= 0 < f(upper). Illinois regula falsi; bisection for the zero-force plateau.
     const double depth_tolerance = 1e-15 * std::max(std::abs(upper), scale);

@@ -39,12 +39,6 @@ double LoadHistory::max_value() const {
     return m;
 }
 
-double LoadHistory::min_value() const {
-    double m = 0.0;
-    for (const auto& p : points_) m = std::min(m, p.value);
-    return m;
-}
-
 bool LoadHistory::has_jump() const {
     if (points_.front().value != 0.0) return true;
     for (std::size_t i = 1; i < points_.size(); ++i) {

@@ -274,12 +274,6 @@ double Foundation::contact_radius() const {
     return position(j) + std::clamp(fraction, 0.0, 1.0) * spacing_;
 }
 
-double Foundation::touching_depth() const {
-    double depth = active_ < size() ? equivalent_[active_] : beyond_;
-    for (std::size_t i = 0; i < active_; ++i) depth = std::min(depth, equivalent_[i] + displacement_[i]);
-    return depth;
-}
-
 std::vector<double> Foundation::line_loads() const {
     std::vector<double> q(size());
     for (std::size_t i = 0; i < size(); ++i) q[i] = normal_stiffness_factor * stress_[i];

@@ -31,8 +31,6 @@ public:
     double end_time() const { return points_.back().time; }
     /// Largest value of the history (at least 0).
     double max_value() const;
-    /// Smallest value of the history (at most 0).
-    double min_value() const;
     /// True when the history has a jump (two points at one time, or a first value other than 0).
     bool has_jump() const;
 

@@ -56,8 +56,6 @@ public:
     /// Contact radius a [m] after the last step: the edge between the outermost element in contact and its free
     /// neighbour, interpolated where sigma/stiffness (inside) and the free gap (outside) cross zero.
     double contact_radius() const;
-    /// Largest depth at which the indenter touches the current surface without force: min_i (g(x_i) + w_i).
-    double touching_depth() const;
     /// Number of elements in contact.
     std::size_t contact_count() const;
 
