@@ -14,6 +14,24 @@ namespace {
 constexpr double normal_stiffness_factor = 4.0;  // k_z = 4 G dx, eq. (11)
 
 
+// An element's step when no entry or exit splits it: w follows the indenter in contact (eq. 13) and is
+// force-free outside (eq. 20). `split` tells that it would need a tensile force in contact (an exit) or that the
+// indenter reaches its creeping surface outside (an entry, eq. 14). Branch-free, so that loops over it vectorise.
+struct PlainStep {
+    double increment;  ///< dw
+    double stress;     ///< sigma at the end of the step
+    bool split;        ///< an exit or entry happens inside the step
+};
+
+inline PlainStep plain_step(bool contact, double relaxed, double g, double w, double depth_end, double stiffness) {
+    const double contact_increment = depth_end - g - w;
+    const double contact_stress = relaxed + stiffness * contact_increment;
+    const double free_increment = -relaxed / stiffness;
+    const double gap_end = contact_increment - free_increment;  // indenter below the free surface when > 0
+    return {contact ? contact_increment : free_increment, contact ? contact_stress : 0.0,
+            contact ? !(contact_stress >= 0.0) : !(gap_end <= 0.0)};
+}
+
 }  // namespace
 
 struct Foundation::Outcome {
@@ -72,42 +90,37 @@ std::size_t Foundation::reach(double depth) const {
 Foundation::Outcome Foundation::evaluate(std::size_t i, double depth_start, double depth_end) const {
     const double g = equivalent_[i];
     const double w = displacement_[i];
-    const double relaxed = i < active_ ? relaxed_[i] : 0.0;
+    const bool contact = in_contact_[i] != 0;
+    const PlainStep plain =
+        plain_step(contact, i < active_ ? relaxed_[i] : 0.0, g, w, depth_end, step_.stiffness);
     Outcome outcome;
-    if (in_contact_[i]) {
-        const double stress = relaxed + step_.stiffness * (depth_end - g - w);
-        if (stress >= 0.0) {
-            outcome.stress = stress;
-            outcome.contact = true;
-            return outcome;
-        }
+    outcome.contact = contact;
+    outcome.stress = plain.stress;
+    if (!plain.split) return outcome;
+    outcome.split = true;
+    outcome.contact = !contact;
+    if (contact) {
         // Exit (eq. 20): the force crosses zero inside the step.
         const double before = stress_[i];
-        outcome.split = true;
-        outcome.fraction = before > 0.0 ? before / (before - stress) : 0.0;
-        return outcome;
+        outcome.fraction = before > 0.0 ? before / (before - plain.stress) : 0.0;
+    } else {
+        // Entry (eq. 14): the indenter reaches the creeping surface inside the step.
+        const double gap_start = std::min(depth_start - g - w, 0.0);
+        const double gap_end = depth_end - g - (w + plain.increment);
+        outcome.fraction = gap_start / (gap_start - gap_end);
     }
-    const double free_displacement = w - relaxed / step_.stiffness;
-    const double gap_end = depth_end - g - free_displacement;
-    if (gap_end <= 0.0) return outcome;
-    // Entry (eq. 14): the indenter reaches the creeping surface inside the step.
-    const double gap_start = std::min(depth_start - g - w, 0.0);
-    outcome.split = true;
-    outcome.fraction = gap_start / (gap_start - gap_end);
-    outcome.contact = true;
     return outcome;
 }
 
-double Foundation::free_substep_stress(double time_step, double& w, double* h) const {
+void Foundation::free_substep(double time_step, double& w, double* h) const {
     const auto& terms = material_.terms();
-    if (time_step <= 0.0 && material_.viscosity() > 0.0) return 0.0;  // a dashpot does not move in no time
+    if (time_step <= 0.0 && material_.viscosity() > 0.0) return;  // a dashpot does not move in no time
     double relaxed = material_.equilibrium_modulus() * w;
     double stiffness = material_.equilibrium_modulus() + (time_step > 0.0 ? material_.viscosity() / time_step : 0.0);
     for (std::size_t k = 0; k < terms.size(); ++k) {
         const double ratio = time_step / terms[k].relaxation_time;
-        const double decay = std::exp(-ratio);
-        const double gain = ratio > 0.0 ? -std::expm1(-ratio) / ratio : 1.0;
-        h[k] *= decay;
+        const double gain = branch_gain(ratio);
+        h[k] *= std::exp(-ratio);
         relaxed += terms[k].modulus * h[k];
         stiffness += terms[k].modulus * gain;
         scratch_gain_[k] = gain;
@@ -115,18 +128,16 @@ double Foundation::free_substep_stress(double time_step, double& w, double* h) c
     const double dw = -relaxed / stiffness;
     for (std::size_t k = 0; k < terms.size(); ++k) h[k] += scratch_gain_[k] * dw;
     w += dw;
-    return 0.0;
 }
 
-double Foundation::contact_substep_stress(double time_step, double new_displacement, double& w, double* h) const {
+double Foundation::contact_substep(double time_step, double new_displacement, double& w, double* h) const {
     const auto& terms = material_.terms();
     const double dw = new_displacement - w;
     double stress = material_.equilibrium_modulus() * new_displacement;
     if (time_step > 0.0) stress += material_.viscosity() * dw / time_step;
     for (std::size_t k = 0; k < terms.size(); ++k) {
         const double ratio = time_step / terms[k].relaxation_time;
-        const double gain = ratio > 0.0 ? -std::expm1(-ratio) / ratio : 1.0;
-        h[k] = std::exp(-ratio) * h[k] + gain * dw;
+        h[k] = std::exp(-ratio) * h[k] + branch_gain(ratio) * dw;
         stress += terms[k].modulus * h[k];
     }
     w = new_displacement;
@@ -143,12 +154,13 @@ double Foundation::split_stress(std::size_t i, const Outcome& outcome, double de
     const double second = step_.time_step - first;
     const double g = equivalent_[i];
     if (outcome.contact) {  // free, then in contact from the entry on
-        free_substep_stress(first, w, h);
-        return std::max(contact_substep_stress(second, depth_end - g, w, h), 0.0);
+        free_substep(first, w, h);
+        return std::max(contact_substep(second, depth_end - g, w, h), 0.0);
     }
     const double depth_at_exit = depth_start + outcome.fraction * (depth_end - depth_start);
-    contact_substep_stress(first, depth_at_exit - g, w, h);
-    return free_substep_stress(second, w, h);
+    contact_substep(first, depth_at_exit - g, w, h);
+    free_substep(second, w, h);
+    return 0.0;
 }
 
 double Foundation::trial_force(double depth_start, double depth_end) const {
@@ -190,10 +202,7 @@ void Foundation::advance(double depth_start, double depth_end) {
         const std::uint8_t* __restrict contact = in_contact_.data();
         double* __restrict event = event_.data();
         for (std::size_t i = 0; i < end; ++i) {
-            const double contact_stress = relaxed[i] + stiffness * (depth_end - g[i] - w[i]);
-            const double gap_end = depth_end - g[i] - (w[i] - relaxed[i] / stiffness);
-            const bool split = contact[i] != 0 ? !(contact_stress >= 0.0) : !(gap_end <= 0.0);
-            event[i] = split ? 1.0 : 0.0;
+            event[i] = plain_step(contact[i] != 0, relaxed[i], g[i], w[i], depth_end, stiffness).split ? 1.0 : 0.0;
         }
     }
     split_.clear();
@@ -218,14 +227,10 @@ void Foundation::advance(double depth_start, double depth_end) {
         double* __restrict sigma = stress_.data();
         double* __restrict relaxed = relaxed_.data();
         for (std::size_t i = 0; i < end; ++i) {
-            const double contact_dw = depth_end - g[i] - w[i];
-            const double contact_stress = relaxed[i] + stiffness * contact_dw;
-            const double free_dw = -relaxed[i] / stiffness;
-            const bool in_contact = contact[i] != 0;
-            const double dw = in_contact ? contact_dw : free_dw;
-            w[i] += dw;
-            sigma[i] = in_contact ? contact_stress : 0.0;
-            relaxed[i] = dw;
+            const PlainStep plain = plain_step(contact[i] != 0, relaxed[i], g[i], w[i], depth_end, stiffness);
+            w[i] += plain.increment;
+            sigma[i] = plain.stress;
+            relaxed[i] = plain.increment;
         }
     }
     const auto& terms = material_.terms();

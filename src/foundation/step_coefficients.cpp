@@ -14,8 +14,7 @@ void fill_step_coefficients(const rheology::Rheology& material, double time_step
     for (std::size_t k = 0; k < terms.size(); ++k) {
         const double ratio = time_step / terms[k].relaxation_time;
         out.decay[k] = std::exp(-ratio);
-        // B_k = (1 - E_k) / ratio; expm1 keeps every digit for ratio -> 0, where B_k -> 1.
-        out.gain[k] = ratio > 0.0 ? -std::expm1(-ratio) / ratio : 1.0;
+        out.gain[k] = branch_gain(ratio);
         stiffness += terms[k].modulus * out.gain[k];
     }
     out.stiffness = stiffness;

@@ -11,7 +11,6 @@
 #include "mdr/rheology/rheology.hpp"
 #include "reference/closed_forms.hpp"
 #include "reference/piecewise_linear.hpp"
-#include "reference/quadrature.hpp"
 #include "run_case.hpp"
 
 namespace mdr {
@@ -70,14 +69,6 @@ history = [[0.0, 0.5], [1.0, 0.5]]
     }
 }
 
-// Eq. (34) for the sphere: (16 sqrt(R)/3) d(t)^(3/2) = int_0^t J(t - t') dF(t') for a monotone contact.
-double creep_law_depth(const std::function<double(double)>& creep, double R, double F0, double ramp, double t) {
-    const double response = ramp == 0.0 ? F0 * creep(t)
-                                        : F0 / ramp * reference::integrate([&](double s) { return creep(s); },
-                                                                           std::max(t - ramp, 0.0), t, 1e-12);
-    return std::pow(3.0 * response / (16.0 * std::sqrt(R)), 2.0 / 3.0);
-}
-
 TEST(ViscoelasticLoading, StandardSolidCreepUnderConstantForceEq34) {
     const double G_inf = 1e6, G1 = 3e6, tau1 = 0.2, R = 0.01, F0 = 0.5;
     const auto result = run_toml(R"(
@@ -94,10 +85,10 @@ control = "force"
 history = [[0.0, 0.5], [1.0, 0.5]]
 )");
     const auto creep = [&](double t) { return reference::standard_solid_creep(G_inf, G1, tau1, t); };
-    const double final_depth = creep_law_depth(creep, R, F0, 0.0, 1.0);
+    const double final_depth = reference::sphere_creep_depth(creep, R, F0, 0.0, 1.0);
     for (std::size_t i = 1; i < result.time.size(); ++i) {
         // Table 1 creep function in eq. (34): 1e-4 of the final depth.
-        EXPECT_NEAR(result.depth[i], creep_law_depth(creep, R, F0, 0.0, result.time[i]), 1e-4 * final_depth)
+        EXPECT_NEAR(result.depth[i], reference::sphere_creep_depth(creep, R, F0, 0.0, result.time[i]), 1e-4 * final_depth)
             << "t = " << result.time[i];
     }
 }
@@ -119,10 +110,7 @@ history = [[0.0, 0.0], [0.5, 0.2], [2.0, 0.2]]
     const auto result = run_toml(text);
     const auto material = rheology::Rheology::prony(0.5e6, {{1.0e6, 1e-3}, {0.8e6, 1e-2}, {0.6e6, 1e-1}, {0.4e6, 1.0}});
     const auto creep = [&](double t) { return material.creep(t); };
-    const auto depth = [&](double t) {
-        // Before the end of the ramp the force is F0 t/ramp: the same law with the ramp cut at t.
-        return t <= ramp ? creep_law_depth(creep, R, F0 * t / ramp, t, t) : creep_law_depth(creep, R, F0, ramp, t);
-    };
+    const auto depth = [&](double t) { return reference::sphere_creep_depth(creep, R, F0, ramp, t); };
     const double final_depth = depth(2.0);
     for (std::size_t i = 1; i < result.time.size(); ++i) {
         // Eq. (34) with the exact Prony creep function: 1e-4 of the final depth.

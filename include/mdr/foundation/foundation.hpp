@@ -73,8 +73,8 @@ private:
     Outcome evaluate(std::size_t i, double depth_start, double depth_end) const;
     double split_stress(std::size_t i, const Outcome& outcome, double depth_start, double depth_end, double& w,
                         double* h) const;
-    double free_substep_stress(double time_step, double& w, double* h) const;
-    double contact_substep_stress(double time_step, double new_displacement, double& w, double* h) const;
+    void free_substep(double time_step, double& w, double* h) const;
+    double contact_substep(double time_step, double new_displacement, double& w, double* h) const;
     std::size_t reach(double depth) const;
 
     const rheology::Rheology& material_;

@@ -2,6 +2,7 @@
 /// \file
 /// Coefficients of the exact exponential update of the foundation's internal variables over one time step.
 
+#include <cmath>
 #include <vector>
 
 #include "mdr/rheology/rheology.hpp"
@@ -20,6 +21,10 @@ struct StepCoefficients {
     std::vector<double> gain;         ///< B_k, one per branch
     double stiffness = 0.0;           ///< G_inf + eta/dt + sum_k G_k B_k [Pa], the modulus seen by dw
 };
+
+/// B = (1 - exp(-ratio)) / ratio for ratio = dt/tau >= 0 (1 at ratio = 0). expm1 keeps every digit for
+/// ratio -> 0, where 1 - exp(-ratio) would cancel.
+inline double branch_gain(double ratio) { return ratio > 0.0 ? -std::expm1(-ratio) / ratio : 1.0; }
 
 /// The coefficients for a step of length `time_step` >= 0. B_k uses expm1, so it stays exact for dt << tau_k.
 /// A zero step (a jump) needs a material without a parallel dashpot (eta = 0).

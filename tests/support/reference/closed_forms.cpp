@@ -85,4 +85,11 @@ double lee_radok_force(const PowerLawIndenter& indenter, const PronyMaterial& ma
     return force + material.eta * 8.0 * a_now * depth.slope(t);
 }
 
+double sphere_creep_depth(const std::function<double(double)>& creep, double radius, double force, double ramp,
+                          double t) {
+    const double response =
+        ramp == 0.0 ? force * creep(t) : force / ramp * integrate(creep, std::max(t - ramp, 0.0), t, 1e-13);
+    return std::pow(3.0 * response / (16.0 * std::sqrt(radius)), 2.0 / 3.0);
+}
+
 }  // namespace mdr::reference

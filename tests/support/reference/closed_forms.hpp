@@ -3,6 +3,8 @@
 /// Closed-form and quadrature reference solutions of elastic and viscoelastic normal contact
 /// (incompressible half-space, ν = 1/2, E* = 4G). Independent of the library's MDR code.
 
+#include <functional>
+
 #include "reference/indenter.hpp"
 #include "reference/piecewise_linear.hpp"
 #include "reference/prony_material.hpp"
@@ -46,5 +48,12 @@ double kelvin_voigt_sphere_creep_radius(double radius, double shear_modulus, dou
 /// adaptive Gauss–Kronrod to 1e-13 relative. Throws std::invalid_argument if d decreases anywhere.
 double lee_radok_force(const PowerLawIndenter& indenter, const PronyMaterial& material, const PiecewiseLinear& depth,
                        double t);
+
+/// Handbook eq. (34) for the sphere (radius R [m]) and any creep function J [1/Pa]: the depth d(t) [m] under a
+/// force rising linearly from 0 at t = 0 to F0 [N] at t = `ramp` [s] and held after (ramp = 0: a step at 0), from
+/// (16 sqrt(R)/3) d^(3/2) = int_0^t J(t - t') dF(t'), valid while the contact grows. The integral of J by adaptive
+/// quadrature.
+double sphere_creep_depth(const std::function<double(double)>& creep, double radius, double force, double ramp,
+                          double t);
 
 }  // namespace mdr::reference
