@@ -1,0 +1,100 @@
+#include "stepping.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mdr/contact/stress.hpp"
+
+namespace mdr::drivers {
+namespace {
+
+constexpr std::size_t snapshot_points = 100;  // radii inside the contact, and as many outside
+
+}  // namespace
+
+const foundation::StepCoefficients& CoefficientCache::get(double time_step) {
+    if (!valid_ || time_step != coefficients_.time_step) {
+        foundation::fill_step_coefficients(material_, time_step, coefficients_);
+        valid_ = true;
+    }
+    return coefficients_;
+}
+
+double solve_depth(const foundation::Foundation& foundation, double depth_start, double guess, double scale,
+                   double target, double spring, double anchor) {
+    const auto residual = [&](double depth) {
+        return foundation.trial_force(depth_start, depth) + spring * (depth - anchor) - target;
+    };
+    const bool plateau = spring == 0.0 && target == 0.0;
+    double lower = guess;
+    double upper = guess;
+    double f_lower = residual(lower);
+    double f_upper = f_lower;
+    double step = scale;
+    // Expand the bracket from the guess downwards or upwards (only one of the two loops runs).
+    while (f_lower > 0.0) {
+        upper = lower;
+        f_upper = f_lower;
+        lower -= step;
+        step *= 2.0;
+        f_lower = residual(lower);
+    }
+    while (f_upper <= 0.0) {
+        lower = upper;
+        f_lower = f_upper;
+        upper += step;
+        step *= 2.0;
+        f_upper = residual(upper);
+    }
+    // Now f(lower) <= 0 < f(upper). Illinois regula falsi; bisection for the zero-force plateau.
+    const double depth_tolerance = 1e-15 * std::max(std::abs(upper), scale);
+    const double force_tolerance = 1e-13 * std::max(std::abs(target), spring * scale);
+    int side = 0;
+    for (int iteration = 0; iteration < 200 && upper - lower > depth_tolerance; ++iteration) {
+        double middle = 0.5 * (lower + upper);
+        if (!plateau && f_upper > f_lower) {
+            middle = (lower * f_upper - upper * f_lower) / (f_upper - f_lower);
+            middle = std::clamp(middle, lower, upper);
+        }
+        const double f_middle = residual(middle);
+        if (!plateau && std::abs(f_middle) <= force_tolerance) return middle;
+        if (f_middle <= 0.0) {
+            lower = middle;
+            f_lower = f_middle;
+            if (side == -1) f_upper *= 0.5;
+            side = -1;
+        } else {
+            upper = middle;
+            f_upper = f_middle;
+            if (side == 1) f_lower *= 0.5;
+            side = 1;
+        }
+    }
+    return plateau ? lower : lower - f_lower * (upper - lower) / (f_upper - f_lower);
+}
+
+Snapshot take_snapshot(const foundation::Foundation& foundation, const profile::Profile& indenter, double time) {
+    Snapshot snapshot;
+    snapshot.time = time;
+    snapshot.contact_radius = foundation.contact_radius();
+    const double a = snapshot.contact_radius;
+    const double outer = a > 0.0 ? std::min(2.0 * a, foundation.half_width()) : foundation.half_width();
+    for (std::size_t j = 0; j < snapshot_points && a > 0.0; ++j) {
+        snapshot.radius.push_back(a * static_cast<double>(j) / static_cast<double>(snapshot_points));
+    }
+    for (std::size_t j = 0; j <= snapshot_points; ++j) {
+        snapshot.radius.push_back(a + (outer - a) * static_cast<double>(j) / static_cast<double>(snapshot_points));
+    }
+    const auto q = foundation.line_loads();
+    std::size_t inside = 0;
+    while (inside < q.size() && foundation.position(inside) < a) ++inside;
+    const std::span<const double> loaded(q.data(), inside);
+    const double edge_value = indenter.is_flat_punch() && inside > 0 ? q[inside - 1] : 0.0;
+    snapshot.pressure = contact::stress_from_line_load(foundation.spacing(), loaded, a, edge_value, snapshot.radius);
+    snapshot.displacement = contact::surface_displacement(foundation.spacing(), foundation.displacements(),
+                                                          snapshot.radius);
+    return snapshot;
+}
+
+
+}  // namespace mdr::drivers

@@ -1,0 +1,35 @@
+#pragma once
+// Pieces the drivers share: cached step coefficients, the depth solve on the foundation, and snapshots.
+
+#include "mdr/drivers/indentation.hpp"
+#include "mdr/foundation/foundation.hpp"
+#include "mdr/profile/profile.hpp"
+#include "mdr/rheology/rheology.hpp"
+
+namespace mdr::drivers {
+
+/// Step coefficients, recomputed only when the step length changes.
+class CoefficientCache {
+public:
+    explicit CoefficientCache(const rheology::Rheology& material) : material_(material) {}
+    /// The coefficients of a step of length `time_step`.
+    const foundation::StepCoefficients& get(double time_step);
+
+private:
+    const rheology::Rheology& material_;
+    foundation::StepCoefficients coefficients_;
+    bool valid_ = false;
+};
+
+/// The depth d at the end of the prepared step with F(d) + spring (d - anchor) = target, F the foundation's
+/// force for a depth going linearly from `depth_start` to d (eq. 19 solved on the foundation itself; the spring
+/// term carries the inertia of an impact). F is continuous and non-decreasing, so the root is bracketed from
+/// `guess` in steps of `scale` and found by Illinois regula falsi to 1e-13. With no spring and target 0 the
+/// force has a plateau: the largest depth without force is returned.
+double solve_depth(const foundation::Foundation& foundation, double depth_start, double guess, double scale,
+                   double target, double spring, double anchor);
+
+/// Pressure (eq. 23) and surface displacement at `time` from the foundation's current state.
+Snapshot take_snapshot(const foundation::Foundation& foundation, const profile::Profile& indenter, double time);
+
+}  // namespace mdr::drivers
