@@ -24,7 +24,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
             const auto contact_case = io::load_case(*case_path);
             const auto start = std::chrono::steady_clock::now();
             ProgressReporter progress;
-            const auto result = drivers::run_indentation(contact_case, std::ref(progress));
+            const auto result = drivers::run_case(contact_case, std::ref(progress));
             progress.finish();
             const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             io::write_directory_atomically(*out, [&](const std::filesystem::path& directory) {
@@ -39,6 +39,10 @@ void add_run_command(CLI::App& app, int& exit_code) {
                        wall);
             fmt::print("  max force {:.6g} N, max depth {:.6g} m, max contact radius {:.6g} m\n", max_force,
                        max_depth, max_radius);
+            if (result.impact) {
+                fmt::print("  restitution e = {:.6g}, contact time {:.6g} s, rebound velocity {:.6g} m/s\n",
+                           result.impact->restitution, result.impact->contact_time, result.impact->rebound_velocity);
+            }
             fmt::print("  results in {}/ (history.csv, summary.json{})\n", *out,
                        result.snapshots.empty() ? "" : ", profiles.csv");
         });

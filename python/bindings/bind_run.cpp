@@ -19,14 +19,14 @@ py::array_t<double> to_array(const std::vector<double>& values) {
     return array;
 }
 
-py::dict run_case(const std::string& toml_text, const std::string& source) {
+py::dict run_toml_case(const std::string& toml_text, const std::string& source) {
     const auto contact_case = io::parse_case(toml_text, source);
     drivers::IndentationResult result;
     double wall = 0.0;
     {
         py::gil_scoped_release release;
         const auto start = std::chrono::steady_clock::now();
-        result = drivers::run_indentation(contact_case, [](double) {
+        result = drivers::run_case(contact_case, [](double) {
             py::gil_scoped_acquire acquire;
             if (PyErr_CheckSignals() != 0) throw py::error_already_set();
         });
@@ -37,6 +37,7 @@ py::dict run_case(const std::string& toml_text, const std::string& source) {
     history["d"] = to_array(result.depth);
     history["F"] = to_array(result.force);
     history["a"] = to_array(result.radius);
+    if (!result.velocity.empty()) history["v"] = to_array(result.velocity);
     py::dict profiles;
     std::vector<double> t, r, p, w;
     for (const auto& snapshot : result.snapshots) {
@@ -60,7 +61,7 @@ py::dict run_case(const std::string& toml_text, const std::string& source) {
 }  // namespace
 
 void bind_run(py::module_& module) {
-    module.def("_run_toml", &run_case, py::arg("toml_text"), py::arg("source") = "case",
+    module.def("_run_toml", &run_toml_case, py::arg("toml_text"), py::arg("source") = "case",
                "Runs a case given as TOML text; returns history, profiles and summary (use mdr.run).");
     module.def(
         "_check_toml", [](const std::string& text, const std::string& source) { return io::describe(io::parse_case(text, source)); },

@@ -55,7 +55,47 @@ double shortest_time_above(const rheology::Rheology& material, double floor) {
     return shortest;
 }
 
+// Elastic work W(a) = int_0^a F_el(a') g'(a') da' done by the indenter up to contact radius a (trapezoidal in a).
+double elastic_work(const profile::Profile& indenter, double modulus, double radius) {
+    constexpr int panels = 200;
+    double work = 0.0, previous_force = 0.0, previous_depth = indenter.equivalent(0.0);
+    for (int i = 1; i <= panels; ++i) {
+        const double a = radius * i / panels;
+        const double force = elastic_force(indenter, modulus, a);
+        const double depth = indenter.equivalent(a);
+        work += 0.5 * (force + previous_force) * (depth - previous_depth);
+        previous_force = force;
+        previous_depth = depth;
+    }
+    return work;
+}
+
 }  // namespace
+
+ElasticImpact elastic_impact(const profile::Profile& indenter, double modulus, double mass, double velocity) {
+    const double energy = 0.5 * mass * velocity * velocity;
+    ElasticImpact impact;
+    if (indenter.is_flat_punch()) {
+        impact.radius = indenter.max_radius();
+        impact.depth = std::sqrt(energy / (4.0 * modulus * impact.radius));  // W = 8 G a d^2 / 2
+    } else {
+        double lower = 0.0, upper = 1.0;
+        while (elastic_work(indenter, modulus, upper) < energy && upper < indenter.max_radius() && upper < 1e30) {
+            lower = upper;
+            upper *= 2.0;
+        }
+        upper = std::min(upper, indenter.max_radius());
+        while (lower == 0.0 && elastic_work(indenter, modulus, 0.5 * upper) >= energy && upper > 1e-30) upper *= 0.5;
+        for (int i = 0; i < 100 && upper - lower > 1e-10 * upper; ++i) {
+            const double middle = 0.5 * (lower + upper);
+            (elastic_work(indenter, modulus, middle) < energy ? lower : upper) = middle;
+        }
+        impact.radius = upper;
+        impact.depth = indenter.equivalent(upper);
+    }
+    impact.duration = 3.0 * impact.depth / velocity;  // Hertz: T = 2.94 d_max / v0
+    return impact;
+}
 
 double elastic_force(const profile::Profile& indenter, double shear_modulus, double contact_radius) {
     if (contact_radius <= 0.0) return 0.0;
@@ -64,12 +104,46 @@ double elastic_force(const profile::Profile& indenter, double shear_modulus, dou
     return 8.0 * shear_modulus * integrate(integrand, 0.0, contact_radius, 16);
 }
 
+namespace {
+
+// Impact: the time step from the elastic impact with the stiffest spring modulus, the foundation from the one
+// with the softest modulus (G_inf; for a fluid 1/J at ten stiff impact times), which bounds the depth.
+ResolvedNumerics resolve_impact_numerics(const ContactCase& contact_case) {
+    const auto& numerics = contact_case.numerics;
+    const auto& material = contact_case.material;
+    const auto& indenter = *contact_case.indenter;
+    const auto& impact = *contact_case.impact;
+    double spring_modulus = material.equilibrium_modulus();
+    for (const auto& term : material.terms()) spring_modulus += term.modulus;
+    if (!(spring_modulus > 0.0)) spring_modulus = material.viscosity() / std::max(material.shortest_time(), 1e-300);
+    const ElasticImpact stiff = elastic_impact(indenter, spring_modulus, impact.mass, impact.velocity);
+    const double soft_modulus = material.is_fluid() ? 1.0 / material.creep(10.0 * stiff.duration) : material.equilibrium_modulus();
+    const ElasticImpact soft = elastic_impact(indenter, std::min(soft_modulus, spring_modulus), impact.mass, impact.velocity);
+
+    ResolvedNumerics resolved;
+    resolved.output_every = numerics.output_every;
+    resolved.elements = numerics.elements.value_or(default_elements);
+    const double step = stiff.duration / static_cast<double>(default_steps);
+    resolved.time_step = numerics.time_step.value_or(std::min(step, shortest_time_above(material, step) / 5.0));
+    resolved.half_width = numerics.half_width.value_or(
+        indenter.is_flat_punch() ? indenter.max_radius() : std::min(1.2 * soft.radius, indenter.max_radius()));
+    // Without load.end: ten soft contact times, and at most 200 stiff ones (a fluid may never push back).
+    resolved.time_limit = std::isfinite(contact_case.end_time)
+                              ? contact_case.end_time
+                              : std::min(10.0 * soft.duration, 200.0 * stiff.duration);
+    return resolved;
+}
+
+}  // namespace
+
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case) {
+    if (contact_case.control == Control::impact) return resolve_impact_numerics(contact_case);
     const auto& numerics = contact_case.numerics;
     const auto& indenter = *contact_case.indenter;
     ResolvedNumerics resolved;
     resolved.output_every = numerics.output_every;
     resolved.elements = numerics.elements.value_or(default_elements);
+    resolved.time_limit = contact_case.end_time;
 
     const double duration = contact_case.end_time - contact_case.history.start_time();
     if (numerics.time_step) {

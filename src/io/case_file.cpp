@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "mdr/error.hpp"
@@ -129,20 +131,36 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
     drivers::Control control;
     if (control_name == "displacement") control = drivers::Control::displacement;
     else if (control_name == "force") control = drivers::Control::force;
-    else if (control_name == "impact") {
-        throw InvalidInput("load.control", "\"impact\"", "impact is not implemented in this version");
-    } else {
+    else if (control_name == "impact") control = drivers::Control::impact;
+    else {
         throw InvalidInput("load.control", "\"" + control_name + "\"", "unknown control; one of displacement, force, impact");
     }
-    if (load->has("velocity")) {
-        throw InvalidInput("load.velocity", load->text("velocity"), "only with control = \"impact\"");
+    std::optional<drivers::ImpactLoad> impact;
+    std::optional<drivers::LoadHistory> read;
+    if (control == drivers::Control::impact) {
+        if (load->has("history")) {
+            throw InvalidInput("load.history", load->text("history"),
+                               "not with control = \"impact\" (the motion follows from indenter.mass and load.velocity)");
+        }
+        const double velocity = load->number("velocity");
+        require_positive("load.velocity", velocity);
+        if (!indenter_table->has("mass")) throw InvalidInput("indenter.mass", "(missing)", "is required for an impact");
+        const double mass = indenter_table->number("mass");
+        require_positive("indenter.mass", mass);
+        impact = drivers::ImpactLoad{mass, velocity};
+        read = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
+    } else {
+        if (load->has("velocity")) {
+            throw InvalidInput("load.velocity", load->text("velocity"), "only with control = \"impact\"");
+        }
+        read = read_history(*load, control);
+        if (control == drivers::Control::displacement && material.viscosity() > 0.0 && read->has_jump()) {
+            throw InvalidInput("load.history", "[...]",
+                               "a jump in depth needs an infinite force with a dashpot (eta > 0); give the jump a duration");
+        }
     }
-    drivers::LoadHistory history = read_history(*load, control);
-    if (control == drivers::Control::displacement && material.viscosity() > 0.0 && history.has_jump()) {
-        throw InvalidInput("load.history", "[...]",
-                           "a jump in depth needs an infinite force with a dashpot (eta > 0); give the jump a duration");
-    }
-    double end_time = history.end_time();
+    drivers::LoadHistory history = std::move(*read);
+    double end_time = impact ? std::numeric_limits<double>::infinity() : history.end_time();
     if (auto end = load->optional_number("end")) {
         if (!(*end > history.start_time())) {
             throw InvalidInput("load.end", format_value(*end),
@@ -156,7 +174,7 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
         output->reject_unknown({"snapshots"});
         if (output->has("snapshots")) snapshots = output->numbers("snapshots");
         for (std::size_t i = 0; i < snapshots.size(); ++i) {
-            if (snapshots[i] < history.start_time() || snapshots[i] > end_time) {
+            if (!(snapshots[i] >= history.start_time() && snapshots[i] <= end_time)) {
                 throw InvalidInput(fmt::format("output.snapshots[{}]", i), format_value(snapshots[i]),
                                    fmt::format("must lie within the simulated time [{}, {}]",
                                                history.start_time(), end_time));
@@ -175,8 +193,8 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
         numerics.time_step = table->optional_number("time_step");
         numerics.half_width = table->optional_number("half_width");
         numerics.output_every = table->optional_count("output_every").value_or(1);
-        if (numerics.time_step) {
-            require_positive("numerics.time_step", *numerics.time_step);
+        if (numerics.time_step) require_positive("numerics.time_step", *numerics.time_step);
+        if (numerics.time_step && std::isfinite(end_time)) {
             // The time grid is built up front: a step far below the simulated duration would exhaust memory
             // (or run for days) before the first step is taken.
             const double steps = (end_time - history.start_time()) / *numerics.time_step;
@@ -190,7 +208,8 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
     }
 
     return drivers::ContactCase{title,    std::move(material),  std::move(indenter), control, std::move(history),
-                                end_time, std::move(snapshots), numerics,            std::move(shear_material)};
+                                end_time, std::move(snapshots), numerics,            std::move(shear_material),
+                                impact};
 }
 
 drivers::ContactCase load_case(const std::filesystem::path& path) {
@@ -203,14 +222,22 @@ drivers::ContactCase load_case(const std::filesystem::path& path) {
 
 std::string describe(const drivers::ContactCase& contact_case) {
     const auto& material = contact_case.material;
-    std::string rheology = material.terms().empty() && material.viscosity() == 0.0 ? "an elastic" : "a viscoelastic";
-    return fmt::format("{}{} on {} half-space (G(0+) = {:.4g} Pa, G(inf) = {:.4g} Pa, {} branch(es)), {} control, "
-                       "{} history points over t = {:.4g} .. {:.4g} s",
+    const std::string rheology =
+        material.terms().empty() && material.viscosity() == 0.0 ? "an elastic" : "a viscoelastic";
+    std::string load;
+    if (contact_case.impact) {
+        load = fmt::format("impact of m = {:.4g} kg at v0 = {:.4g} m/s", contact_case.impact->mass,
+                           contact_case.impact->velocity);
+    } else {
+        load = fmt::format("{} control, {} history points over t = {:.4g} .. {:.4g} s",
+                           contact_case.control == drivers::Control::force ? "force" : "displacement",
+                           contact_case.history.points().size(), contact_case.history.start_time(),
+                           contact_case.end_time);
+    }
+    return fmt::format("{}{} on {} half-space (G(0+) = {:.4g} Pa, G(inf) = {:.4g} Pa, {} branch(es)), {}",
                        contact_case.title.empty() ? "" : "\"" + contact_case.title + "\": ",
                        contact_case.indenter->describe(), rheology, material.instantaneous_modulus(),
-                       material.equilibrium_modulus(), material.terms().size(),
-                       contact_case.control == drivers::Control::force ? "force" : "displacement",
-                       contact_case.history.points().size(), contact_case.history.start_time(), contact_case.end_time);
+                       material.equilibrium_modulus(), material.terms().size(), load);
 }
 
 }  // namespace mdr::io

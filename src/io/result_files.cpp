@@ -45,20 +45,31 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
     summary["steps"] = result.steps;
     summary["elements"] = result.numerics.elements;
     summary["wall_seconds"] = wall_seconds;
-    summary["control"] = contact_case.control == drivers::Control::force ? "force" : "displacement";
+    summary["control"] = contact_case.control == drivers::Control::force    ? "force"
+                         : contact_case.control == drivers::Control::impact ? "impact"
+                                                                            : "displacement";
     summary["time_step"] = result.numerics.time_step;
     summary["half_width"] = result.numerics.half_width;
     summary["final_force"] = result.force.empty() ? 0.0 : result.force.back();
     summary["final_depth"] = result.depth.empty() ? 0.0 : result.depth.back();
+    if (result.impact) {
+        summary["restitution"] = result.impact->restitution;
+        summary["contact_time"] = result.impact->contact_time;
+        summary["rebound_velocity"] = result.impact->rebound_velocity;
+        summary["dissipated_energy"] = result.impact->dissipated_energy;
+    }
     return summary.dump(2);
 }
 
 void write_indentation_result(const fs::path& directory, const drivers::ContactCase& contact_case,
                               const drivers::IndentationResult& result, double wall_seconds) {
     auto history = fmt::output_file((directory / "history.csv").string());
-    history.print("t,d,F,a\n");
+    const bool with_velocity = !result.velocity.empty();
+    history.print("{}\n", with_velocity ? "t,d,F,a,v" : "t,d,F,a");
     for (std::size_t i = 0; i < result.time.size(); ++i) {
-        history.print("{},{},{},{}\n", result.time[i], result.depth[i], result.force[i], result.radius[i]);
+        history.print("{},{},{},{}", result.time[i], result.depth[i], result.force[i], result.radius[i]);
+        if (with_velocity) history.print(",{}", result.velocity[i]);
+        history.print("\n");
     }
     history.close();
 

@@ -190,9 +190,23 @@ BAD_CASES = [
     ("tangential", case_text(extra='[tangential]\nfriction = 0.3\ncontrol = "displacement"\n'
                                    'history = [[0.0, 0.0], [1.0, 1e-6]]\n'),
      ["tangential", "not implemented"]),
-    ("impact", case_text(indenter=INDENTER + "mass = 0.03\n",
-                         load='[load]\ncontrol = "impact"\nvelocity = 1.0\n'),
-     ["load.control", '"impact"', "not implemented"]),
+    # impact
+    ("impact-with-history", case_text(indenter=INDENTER + "mass = 0.03\n",
+                                      load='[load]\ncontrol = "impact"\nvelocity = 1.0\n'
+                                           'history = [[0.0, 0.0], [1.0, 1e-4]]\n'),
+     ["load.history", "impact"]),
+    ("impact-zero-mass", case_text(indenter=INDENTER + "mass = 0.0\n",
+                                   load='[load]\ncontrol = "impact"\nvelocity = 1.0\n'),
+     ["indenter.mass", "= 0", "must be > 0"]),
+    ("impact-missing-mass", case_text(load='[load]\ncontrol = "impact"\nvelocity = 1.0\n'),
+     ["indenter.mass", "required"]),
+    ("impact-negative-velocity", case_text(indenter=INDENTER + "mass = 0.03\n",
+                                           load='[load]\ncontrol = "impact"\nvelocity = -1.0\n'),
+     ["load.velocity", "-1", "must be > 0"]),
+    ("impact-no-rebound", case_text(material='[material]\nmodel = "maxwell"\nG = 1.0e6\ntau = 1.0e-6\n',
+                                    indenter=INDENTER + "mass = 0.01\n",
+                                    load='[load]\ncontrol = "impact"\nvelocity = 0.1\nend = 0.01\n', numerics=""),
+     ["load.end", "0.01", "not ended"]),
 ]
 
 
@@ -202,7 +216,7 @@ def test_run_refuses_bad_case(run_case, text, fragments):
 
 
 @pytest.mark.parametrize("case_id", ["unknown-material-key", "nan-time", "malformed-toml", "history-backwards",
-                                     "profile-f-decreasing", "tangential", "impact", "elements-zero"])
+                                     "profile-f-decreasing", "tangential", "impact-with-history", "elements-zero"])
 def test_check_and_material_refuse_the_same_way(run_case, case_id):
     text, fragments = next(case[1:] for case in BAD_CASES if case[0] == case_id)
     run_line = run_case(text).stderr

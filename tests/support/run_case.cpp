@@ -8,7 +8,7 @@
 namespace mdr::testing {
 
 drivers::IndentationResult run_toml(const std::string& toml_text) {
-    return drivers::run_indentation(io::parse_case(toml_text, "test case"));
+    return drivers::run_case(io::parse_case(toml_text, "test case"));
 }
 
 double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {

@@ -18,6 +18,13 @@ namespace mdr::drivers {
 enum class Control {
     displacement,  ///< depth history d(t)
     force,         ///< force history F(t) >= 0; the depth is solved for each step
+    impact,        ///< a rigid indenter of given mass and approach speed hits the surface at t = 0 (eq. 37)
+};
+
+/// The flight of the indenter in an impact.
+struct ImpactLoad {
+    double mass;      ///< m [kg] of the rigid indenter
+    double velocity;  ///< approach speed v0 [m/s] > 0 at first contact, t = 0
 };
 
 /// User choices of `[numerics]`; every field optional, defaults come from the problem's scales.
@@ -34,6 +41,7 @@ struct ResolvedNumerics {
     double time_step = 0.0;      ///< largest time step [s]
     double half_width = 0.0;     ///< half-width L [m]
     std::size_t output_every = 1;
+    double time_limit = 0.0;     ///< last time simulated [s]; for an impact the latest end allowed
 };
 
 /// A normal indentation problem: a rigid axisymmetric indenter on a viscoelastic half-space.
@@ -47,6 +55,8 @@ struct ContactCase {
     std::vector<double> snapshots;                      ///< times of pressure profiles [s]
     NumericsOptions numerics;                           ///< `[numerics]`
     std::optional<rheology::Rheology> shear_material;   ///< the shear part alone, when a bulk part was folded in
+    std::optional<ImpactLoad> impact;                   ///< with control = impact (the history is then the single
+                                                        ///< point (0, 0) and end_time the latest end allowed)
 };
 
 /// Elements on the half-width when `[numerics] elements` is not given. With the half-width 1.1 times the largest
@@ -67,8 +77,20 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// modulus 1/J(t_end - t_start), 25% margin); a flat punch uses its own radius. The time step is the history
 /// duration over default_steps, and at most a fifth of the shortest material time that is longer than that; under
 /// force control a material with a parallel dashpot (first order in dt there) takes at most 1/5000 of its
-/// shortest retardation time.
+/// shortest retardation time. Impact: the time step is the elastic contact time with the instantaneous spring
+/// modulus over default_steps (and the material-time rule), the half-width 1.2 times the elastic contact radius
+/// with the equilibrium modulus (an upper bound: the viscoelastic body is stiffer and dissipates).
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case);
+
+/// Scales of an elastic impact (energy balance m v0^2 / 2 = int F_el dd), used for the impact defaults.
+struct ElasticImpact {
+    double depth = 0.0;     ///< largest depth [m]
+    double radius = 0.0;    ///< largest contact radius [m]
+    double duration = 0.0;  ///< contact time estimate 3 d_max / v0 [s] (Hertz: 2.94 d_max / v0)
+};
+
+/// The elastic impact of `indenter` (mass [kg], approach speed [m/s]) on a half-space of shear modulus G.
+ElasticImpact elastic_impact(const profile::Profile& indenter, double shear_modulus, double mass, double velocity);
 
 /// Elastic force [N] at contact radius a for shear modulus G and the given profile (incompressible, eq. 21 with
 /// w = g(a) - g(x)): F = 8 G int_0^a (g(a) - g(x)) dx.

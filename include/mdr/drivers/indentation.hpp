@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,13 +21,23 @@ struct Snapshot {
     std::vector<double> displacement;   ///< normal surface displacement w(r) [m], positive into the body
 };
 
+/// The outcome of an impact (eq. 39).
+struct ImpactOutcome {
+    double restitution = 0.0;        ///< e = -v(T)/v0
+    double contact_time = 0.0;       ///< T [s], when the last element leaves contact (F returns to 0)
+    double rebound_velocity = 0.0;   ///< -v(T) [m/s], positive away from the surface
+    double dissipated_energy = 0.0;  ///< m (v0^2 - v(T)^2) / 2 [J]
+};
+
 /// What a run produced: one row per written step.
 struct IndentationResult {
     std::vector<double> time;      ///< t [s]
     std::vector<double> depth;     ///< d [m]
     std::vector<double> force;     ///< F [N]
     std::vector<double> radius;    ///< a [m]
+    std::vector<double> velocity;  ///< indenter velocity v = dd/dt [m/s] (impact only, else empty)
     std::vector<Snapshot> snapshots;
+    std::optional<ImpactOutcome> impact;  ///< impact only
     ResolvedNumerics numerics;     ///< what was used
     std::size_t steps = 0;         ///< time steps taken
 };
@@ -34,8 +45,16 @@ struct IndentationResult {
 /// Called now and then with the fraction of the simulated time done (0..1).
 using ProgressObserver = std::function<void(double fraction)>;
 
-/// Runs the case. Throws mdr::InvalidInput for problems found while running (the contact outgrowing the
-/// foundation).
+/// Runs a displacement- or force-controlled case. Throws mdr::InvalidInput for problems found while running (the
+/// contact outgrowing the foundation).
 IndentationResult run_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {});
+
+/// Runs an impact case (control = impact): m d'' = -F_N (eq. 37) with the trapezoidal rule, implicit in the
+/// depth and solved on the foundation each step (second order, no stability limit), until the last element has
+/// left contact (eq. 39). Throws mdr::InvalidInput when the contact does not end before `end_time`.
+IndentationResult run_impact(const ContactCase& contact_case, const ProgressObserver& progress = {});
+
+/// Runs any case: run_impact for control = impact, run_indentation otherwise.
+IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress = {});
 
 }  // namespace mdr::drivers

@@ -1,0 +1,105 @@
+#include <algorithm>
+#include <cmath>
+
+#include "mdr/drivers/indentation.hpp"
+#include "mdr/error.hpp"
+#include "mdr/foundation/foundation.hpp"
+#include "stepping.hpp"
+
+namespace mdr::drivers {
+
+IndentationResult run_impact(const ContactCase& contact_case, const ProgressObserver& progress) {
+    IndentationResult result;
+    result.numerics = resolve_numerics(contact_case);
+    const auto& numerics = result.numerics;
+    const auto& indenter = *contact_case.indenter;
+    const double mass = contact_case.impact->mass;
+    const double approach = contact_case.impact->velocity;
+    foundation::Foundation foundation(contact_case.material, indenter,
+                                      numerics.half_width / static_cast<double>(numerics.elements), numerics.elements);
+    CoefficientCache cache(contact_case.material);
+    std::vector<double> snapshots = contact_case.snapshots;
+    std::sort(snapshots.begin(), snapshots.end());
+    auto snapshot = snapshots.begin();
+
+    double time = 0.0, depth = 0.0, velocity = approach, force = 0.0, previous_force = 0.0, previous_step = 0.0;
+    auto record = [&] {
+        result.time.push_back(time);
+        result.depth.push_back(depth);
+        result.force.push_back(force);
+        result.radius.push_back(foundation.contact_radius());
+        result.velocity.push_back(velocity);
+    };
+    record();
+    for (; snapshot != snapshots.end() && *snapshot <= time; ++snapshot) {
+        result.snapshots.push_back(take_snapshot(foundation, indenter, time));
+    }
+    const double report_interval = numerics.time_limit / 100.0;
+    double next_report = report_interval;
+    for (std::size_t n = 1;; ++n) {
+        if (time >= numerics.time_limit) {
+            throw InvalidInput("load.end", format_value(numerics.time_limit),
+                               "the contact has not ended by then (v = " + format_value(velocity) +
+                                   " m/s): the indenter does not rebound in time; give a later load.end");
+        }
+        // Land exactly on snapshot times.
+        const double step = snapshot != snapshots.end() ? std::min(numerics.time_step, *snapshot - time)
+                                                        : numerics.time_step;
+        foundation.begin_step(cache.get(step));
+        // Trapezoidal rule for m d'' = -F (eq. 37): d1 = d0 + (v0 + v1) dt/2, v1 = v0 - (F0 + F1) dt/(2m), i.e.
+        // F(d1) + (4m/dt^2)(d1 - d0 - v0 dt) = -F0, monotone in d1.
+        const double spring = 4.0 * mass / (step * step);
+        const double anchor = depth + velocity * step;
+        const double guess = anchor - force * step * step / (2.0 * mass);
+        const double scale = std::max(std::abs(velocity) * step, 1e-9 * numerics.half_width);
+        const double new_depth = solve_depth(foundation, depth, guess, scale, -force, spring, anchor);
+        foundation.advance(depth, new_depth);
+        const double new_force = foundation.total_force();
+        double new_velocity = 2.0 * (new_depth - depth) / step - velocity;
+        ++result.steps;
+
+        if (new_force == 0.0 && force > 0.0) {
+            // Every element has left (eq. 39): locate F = 0 inside the step by extrapolating the last two forces,
+            // and take the impulse of the last part of the contact as that of a linear decay.
+            double fraction = 1.0;
+            if (previous_force > force && previous_step > 0.0) {
+                fraction = std::clamp(force / (previous_force - force) * previous_step / step, 0.0, 1.0);
+            }
+            new_velocity = velocity - force * fraction * step / (2.0 * mass);
+            ImpactOutcome outcome;
+            outcome.contact_time = time + fraction * step;
+            outcome.rebound_velocity = -new_velocity;
+            outcome.restitution = -new_velocity / approach;
+            outcome.dissipated_energy = 0.5 * mass * (approach * approach - new_velocity * new_velocity);
+            result.impact = outcome;
+            time += step;
+            depth = new_depth;
+            force = new_force;
+            velocity = new_velocity;
+            record();
+            break;
+        }
+        previous_force = force;
+        previous_step = step;
+        time += step;
+        depth = new_depth;
+        force = new_force;
+        velocity = new_velocity;
+        if (n % numerics.output_every == 0) record();
+        for (; snapshot != snapshots.end() && *snapshot <= time; ++snapshot) {
+            result.snapshots.push_back(take_snapshot(foundation, indenter, time));
+        }
+        if (progress && time >= next_report) {
+            progress(std::min(time / numerics.time_limit, 1.0));
+            next_report += report_interval;
+        }
+    }
+    return result;
+}
+
+IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress) {
+    return contact_case.control == Control::impact ? run_impact(contact_case, progress)
+                                                   : run_indentation(contact_case, progress);
+}
+
+}  // namespace mdr::drivers
