@@ -3,7 +3,7 @@ BUILD_DIR := build
 PYTHON := /usr/bin/python3
 JOBS ?= $(shell nproc)
 
-.PHONY: deps build test demo bench clean
+.PHONY: deps build test demo bench figures clean
 
 deps:
 	@scripts/install-deps
@@ -18,6 +18,9 @@ test: build
 demo: build
 	@$(BUILD_DIR)/bin/mdr run examples/default.toml --out out/demo
 	@PYTHONPATH=$(BUILD_DIR)/python MPLBACKEND=Agg $(PYTHON) -m mdr plot out/demo
+
+figures: build
+	@scripts/restitution-map
 
 bench: build
 	@$(BUILD_DIR)/bin/mdr_bench --benchmark_counters_tabular=true

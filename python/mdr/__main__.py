@@ -5,7 +5,9 @@ from __future__ import annotations
 import argparse
 import sys
 
-from . import plot
+import os
+
+from . import maps, plot
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -13,14 +15,29 @@ def main(argv: list[str] | None = None) -> int:
     commands = parser.add_subparsers(dest="command", required=True)
     plot_command = commands.add_parser("plot", help="write PNG figures for a result directory")
     plot_command.add_argument("directory")
+    range_command = commands.add_parser("p1-range", help="tau1 bounds START:STOP giving p1 from P1_MIN to P1_MAX")
+    range_command.add_argument("case")
+    range_command.add_argument("p1_min", type=float)
+    range_command.add_argument("p1_max", type=float)
+    map_command = commands.add_parser("restitution-map", help="the figure of e over p1 from a sweep directory")
+    map_command.add_argument("directory")
+    map_command.add_argument("case")
+    map_command.add_argument("--out", required=True)
     args = parser.parse_args(argv)
     try:
-        written = plot.plot_directory(args.directory)
-    except (OSError, ValueError) as error:
-        print(f"mdr plot: error: {error}", file=sys.stderr)
+        if args.command == "plot":
+            for path in plot.plot_directory(args.directory):
+                print(path)
+        elif args.command == "p1-range":
+            scale = maps.p1_scale(maps.read_case(args.case))
+            print(f"{args.p1_min / scale!r}:{args.p1_max / scale!r}")
+        else:
+            sweep = plot.read_csv(os.path.join(args.directory, "sweep.csv"))
+            axes = maps.restitution_map(sweep, maps.read_case(args.case))
+            print(plot.save(axes, args.out))
+    except (OSError, ValueError, KeyError) as error:
+        print(f"mdr {args.command}: error: {error}", file=sys.stderr)
         return 2
-    for path in written:
-        print(path)
     return 0
 
 

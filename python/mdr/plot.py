@@ -8,6 +8,7 @@ import os
 from typing import Mapping
 
 import matplotlib
+import matplotlib.ticker
 
 if "MPLBACKEND" not in os.environ:
     matplotlib.use("Agg")
@@ -16,13 +17,21 @@ import numpy as np  # noqa: E402
 
 
 def read_csv(path: str) -> dict[str, np.ndarray]:
-    """A CSV file with a header line as a dict of float arrays keyed by column name."""
+    """A CSV file with a header line as a dict of arrays keyed by column name: float arrays, or string arrays for
+    columns that are not numeric (the `error` column of sweep.csv)."""
     with open(path, newline="", encoding="utf-8") as handle:
         rows = list(csv.reader(handle))
     if not rows:
         raise ValueError(f"{path}: empty file")
-    header, body = rows[0], np.array(rows[1:], dtype=float).reshape(-1, len(rows[0]))
-    return {name: body[:, i] for i, name in enumerate(header)}
+    header = rows[0]
+    columns = {}
+    for i, name in enumerate(header):
+        values = [row[i] for row in rows[1:]]
+        try:
+            columns[name] = np.array(values, dtype=float)
+        except ValueError:
+            columns[name] = np.array(values, dtype=str)
+    return columns
 
 
 def _loading_mask(depth: np.ndarray) -> np.ndarray:
@@ -85,16 +94,20 @@ def plot_directory(directory: str) -> list[str]:
     written = []
     for name, draw in (("force_depth", force_depth), ("force_time", force_time), ("contact_radius", contact_radius)):
         axes = draw(history)
-        written.append(_save(axes, os.path.join(directory, name + ".png")))
+        written.append(save(axes, os.path.join(directory, name + ".png")))
     profiles_path = os.path.join(directory, "profiles.csv")
     if os.path.exists(profiles_path):
-        written.append(_save(pressure_profiles(read_csv(profiles_path)), os.path.join(directory, "pressure.png")))
+        written.append(save(pressure_profiles(read_csv(profiles_path)), os.path.join(directory, "pressure.png")))
     return written
 
 
-def _save(axes, path: str) -> str:
+def save(axes, path: str) -> str:
+    """Writes the axes' figure to `path` (PNG) and closes it; returns the path."""
     for each in axes.figure.axes:
-        each.ticklabel_format(style="sci", scilimits=(-3, 4), useMathText=True)
+        for axis in (each.xaxis, each.yaxis):
+            if isinstance(axis.get_major_formatter(), matplotlib.ticker.ScalarFormatter):  # not on log axes
+                axis.get_major_formatter().set_powerlimits((-3, 4))
+                axis.get_major_formatter().set_useMathText(True)
     axes.figure.tight_layout()
     axes.figure.savefig(path, dpi=120)
     plt.close(axes.figure)

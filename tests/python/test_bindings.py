@@ -414,6 +414,7 @@ def test_every_plot_function_runs_headless(result_directory, file_result, tmp_pa
         "contact_radius": lambda: mdr.plot.contact_radius(file_result.history),
         "pressure_profiles": lambda: mdr.plot.pressure_profiles(profiles),
         "plot_directory": lambda: mdr.plot.plot_directory(str(result_directory)),
+        "save": lambda: mdr.plot.save(mdr.plot.force_depth(history), str(tmp_path / "saved.png")),
     }
     public = {name for name, member in inspect.getmembers(mdr.plot, inspect.isfunction)
               if member.__module__ == "mdr.plot" and not name.startswith("_")}
@@ -429,3 +430,19 @@ def test_every_plot_function_runs_headless(result_directory, file_result, tmp_pa
     figure, axes = plt.subplots()
     assert mdr.plot.pressure_profiles(file_result.profiles, axes=axes) is axes
     plt.close("all")
+
+
+def test_restitution_map_from_a_sweep_table(tmp_path):
+    """mdr.maps: p1 of eq. (40) and the Fig. 3 plot from a sweep table built here."""
+    import mdr.maps
+
+    case = {"material": {"G_inf": 1e6}, "indenter": {"R": 0.01, "mass": 3.27e-2}, "load": {"velocity": 0.1}}
+    rho = 3 * 3.27e-2 / (4 * np.pi * 0.01**3)
+    assert mdr.maps.p1_scale(case) == pytest.approx(0.1**0.2 * (1e6 / rho) ** 0.4 / 0.01, rel=1e-14)
+    tau = np.array([1e-4, 1e-3, 1e-2, 1e-4, 1e-3, 1e-2])
+    sweep = {"material.tau1": tau, "material.G1": np.repeat([1e6, 3e6], 3),
+             "restitution": np.array([0.9, 0.7, 0.95, 0.8, 0.5, 0.9])}
+    axes = mdr.maps.restitution_map(sweep, case)
+    assert len(axes.lines) == 2 and axes.get_xscale() == "log"
+    path = mdr.plot.save(axes, str(tmp_path / "map.png"))
+    assert (tmp_path / "map.png").stat().st_size > 0 and path.endswith("map.png")

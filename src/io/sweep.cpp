@@ -1,0 +1,201 @@
+#include "mdr/io/sweep.hpp"
+
+#include <fmt/format.h>
+#include <fmt/os.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+#include <toml++/toml.h>
+
+#include "mdr/drivers/indentation.hpp"
+#include "mdr/error.hpp"
+#include "mdr/io/case_file.hpp"
+#include "mdr/io/result_files.hpp"
+
+namespace mdr::io {
+namespace {
+
+double parse_number(const std::string& text, const std::string& spec) {
+    std::size_t used = 0;
+    double value = 0.0;
+    try {
+        value = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size() || !std::isfinite(value)) {
+        throw InvalidInput("--vary", spec, "'" + text + "' is not a finite number");
+    }
+    return value;
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t end = text.find(separator, start);
+        parts.push_back(text.substr(start, end == std::string::npos ? std::string::npos : end - start));
+        if (end == std::string::npos) return parts;
+        start = end + 1;
+    }
+}
+
+// The case with each axis key set to its value at `point`, as TOML text.
+std::string case_at(const toml::table& base, const std::vector<SweepAxis>& axes, const std::vector<double>& point) {
+    toml::table table = base;
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+        const auto path = split(axes[a].key, '.');
+        toml::table* parent = &table;
+        for (std::size_t i = 0; i + 1 < path.size(); ++i) parent = (*parent)[path[i]].as_table();
+        parent->insert_or_assign(path.back(), point[a]);
+    }
+    std::ostringstream text;
+    text << table;
+    return text.str();
+}
+
+}  // namespace
+
+SweepAxis parse_sweep_axis(const std::string& spec) {
+    const std::size_t equals = spec.find('=');
+    if (equals == std::string::npos || equals == 0) {
+        throw InvalidInput("--vary", spec, "must be KEY=START:STOP:COUNT[:log] or KEY=v1,v2,...");
+    }
+    SweepAxis axis{spec.substr(0, equals), {}};
+    const std::string grid = spec.substr(equals + 1);
+    if (grid.find(':') == std::string::npos) {
+        for (const auto& item : split(grid, ',')) axis.values.push_back(parse_number(item, spec));
+        return axis;
+    }
+    const auto parts = split(grid, ':');
+    const bool logarithmic = parts.size() == 4 && parts[3] == "log";
+    if (parts.size() != 3 && !logarithmic) {
+        throw InvalidInput("--vary", spec, "must be KEY=START:STOP:COUNT[:log] or KEY=v1,v2,...");
+    }
+    const double start = parse_number(parts[0], spec);
+    const double stop = parse_number(parts[1], spec);
+    const double count = parse_number(parts[2], spec);
+    if (count < 1.0 || count != std::floor(count) || count > 1e6) {
+        throw InvalidInput("--vary", spec, "COUNT must be an integer from 1 to 1e6");
+    }
+    if (logarithmic && !(start > 0.0 && stop > 0.0)) {
+        throw InvalidInput("--vary", spec, "a log grid needs START > 0 and STOP > 0");
+    }
+    const auto n = static_cast<std::size_t>(count);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double fraction = n == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(n - 1);
+        axis.values.push_back(logarithmic ? start * std::pow(stop / start, fraction)
+                                          : start + (stop - start) * fraction);
+    }
+    return axis;
+}
+
+void validate_sweep(std::string_view case_text, const std::string& source, const std::vector<SweepAxis>& axes) {
+    parse_case(case_text, source);
+    const toml::table base = toml::parse(case_text, source);
+    for (const auto& axis : axes) {
+        const toml::node_view node = base.at_path(axis.key);
+        if (!node) throw InvalidInput("--vary", axis.key, "no such key in the case file");
+        if (!node.is_number()) throw InvalidInput("--vary", axis.key, "is not a numeric key of the case file");
+    }
+}
+
+std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& source,
+                                const std::vector<SweepAxis>& axes, unsigned jobs,
+                                const std::function<void(std::size_t, std::size_t)>& progress) {
+    const toml::table base = toml::parse(case_text, source);
+    std::size_t total = 1;
+    for (const auto& axis : axes) total *= axis.values.size();
+    std::vector<SweepRow> rows(total);
+    for (std::size_t r = 0; r < total; ++r) {
+        std::size_t rest = r;
+        rows[r].point.resize(axes.size());
+        for (std::size_t a = axes.size(); a-- > 0;) {
+            rows[r].point[a] = axes[a].values[rest % axes[a].values.size()];
+            rest /= axes[a].values.size();
+        }
+    }
+    std::atomic<std::size_t> next{0};
+    std::size_t done = 0;
+    std::mutex mutex;
+    std::condition_variable finished;
+    const auto work = [&] {
+        for (std::size_t r = next++; r < total; r = next++) {
+            SweepRow& row = rows[r];
+            try {
+                const auto contact_case = parse_case(case_at(base, axes, row.point), source);
+                const auto start = std::chrono::steady_clock::now();
+                const auto result = drivers::run_case(contact_case);
+                const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                row.summary_json = summary_json(contact_case, result, wall);
+            } catch (const std::exception& error) {
+                row.error = error.what();
+            }
+            const std::lock_guard lock(mutex);
+            ++done;
+            finished.notify_one();
+        }
+    };
+    std::vector<std::thread> threads;
+    for (unsigned j = 0; j < std::max(jobs, 1u); ++j) threads.emplace_back(work);
+    {
+        std::unique_lock lock(mutex);
+        std::size_t reported = 0;
+        while (reported < total) {
+            finished.wait(lock, [&] { return done > reported; });
+            reported = done;
+            if (progress) {
+                lock.unlock();
+                progress(reported, total);
+                lock.lock();
+            }
+        }
+    }
+    for (auto& thread : threads) thread.join();
+    return rows;
+}
+
+void write_sweep_csv(const std::filesystem::path& directory, const std::vector<SweepAxis>& axes,
+                     const std::vector<SweepRow>& rows) {
+    // The numeric summary keys, in the order of the first run that succeeded.
+    std::vector<std::string> columns;
+    for (const auto& row : rows) {
+        if (row.summary_json.empty()) continue;
+        const auto summary = nlohmann::ordered_json::parse(row.summary_json);
+        for (const auto& [key, value] : summary.items()) {
+            if (value.is_number()) columns.push_back(key);
+        }
+        break;
+    }
+    auto out = fmt::output_file((directory / "sweep.csv").string());
+    std::string header;
+    for (const auto& axis : axes) header += axis.key + ",";
+    for (const auto& column : columns) header += column + ",";
+    out.print("{}error\n", header);
+    for (const auto& row : rows) {
+        for (double value : row.point) out.print("{},", value);
+        const auto summary = row.summary_json.empty() ? nlohmann::ordered_json::object()
+                                                      : nlohmann::ordered_json::parse(row.summary_json);
+        for (const auto& column : columns) {
+            if (summary.contains(column)) {
+                out.print("{},", summary[column].get<double>());
+            } else {
+                out.print("nan,");
+            }
+        }
+        std::string error = row.error;
+        for (char& c : error) {
+            if (c == '"') c = '\'';
+        }
+        out.print("{}\n", error.empty() ? "" : "\"" + error + "\"");
+    }
+    out.close();
+}
+
+}  // namespace mdr::io
