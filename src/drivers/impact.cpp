@@ -22,7 +22,7 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
     std::sort(snapshots.begin(), snapshots.end());
     auto snapshot = snapshots.begin();
 
-    double time = 0.0, depth = 0.0, velocity = approach, force = 0.0, previous_force = 0.0, previous_step = 0.0;
+    double time = 0.0, depth = 0.0, velocity = approach, force = 0.0;
     auto record = [&] {
         result.time.push_back(time);
         result.depth.push_back(depth);
@@ -59,12 +59,9 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
         ++result.steps;
 
         if (new_force == 0.0 && force > 0.0) {
-            // Every element has left (eq. 39): locate F = 0 inside the step by extrapolating the last two forces,
-            // and take the impulse of the last part of the contact as that of a linear decay.
-            double fraction = 1.0;
-            if (previous_force > force && previous_step > 0.0) {
-                fraction = std::clamp(force / (previous_force - force) * previous_step / step, 0.0, 1.0);
-            }
+            // Every element has left (eq. 39): the last one left where its force crossed zero inside the step
+            // (located by the foundation); the impulse of that part of the step is taken as a linear decay.
+            const double fraction = foundation.latest_exit();
             new_velocity = velocity - force * fraction * step / (2.0 * mass);
             ImpactOutcome outcome;
             outcome.contact_time = time + fraction * step;
@@ -79,8 +76,6 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
             record();
             break;
         }
-        previous_force = force;
-        previous_step = step;
         time += step;
         depth = new_depth;
         force = new_force;

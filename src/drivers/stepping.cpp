@@ -26,10 +26,21 @@ double solve_depth(const foundation::Foundation& foundation, double depth_start,
         return foundation.trial_force(depth_start, depth) + spring * (depth - anchor) - target;
     };
     const bool plateau = spring == 0.0 && target == 0.0;
-    double lower = guess;
-    double upper = guess;
-    double f_lower = residual(lower);
-    double f_upper = f_lower;
+    const double force_tolerance = 1e-13 * std::max(std::abs(target), spring * scale);
+    double start = guess;
+    double f_start = residual(start);
+    // Newton with the slope of the current contact set: exact while no element enters or leaves, so it usually
+    // ends after one correction. Otherwise the bracket below takes over from where it got to.
+    const double slope = foundation.force_slope() + spring;
+    for (int newton = 0; newton < 4 && !plateau && slope > 0.0; ++newton) {
+        if (std::abs(f_start) <= force_tolerance) return start;
+        start -= f_start / slope;
+        f_start = residual(start);
+    }
+    double lower = start;
+    double upper = start;
+    double f_lower = f_start;
+    double f_upper = f_start;
     double step = scale;
     // Expand the bracket from the guess downwards or upwards (only one of the two loops runs).
     while (f_lower > 0.0) {
@@ -48,7 +59,6 @@ double solve_depth(const foundation::Foundation& foundation, double depth_start,
     }
     // Now f(lower) <= 0 < f(upper). Illinois regula falsi; bisection for the zero-force plateau.
     const double depth_tolerance = 1e-15 * std::max(std::abs(upper), scale);
-    const double force_tolerance = 1e-13 * std::max(std::abs(target), spring * scale);
     int side = 0;
     for (int iteration = 0; iteration < 200 && upper - lower > depth_tolerance; ++iteration) {
         double middle = 0.5 * (lower + upper);

@@ -168,8 +168,11 @@ double Foundation::trial_force(double depth_start, double depth_end) const {
     double sum = 0.0;
     double w = 0.0;
     for (std::size_t i = 0; i < end; ++i) {
-        const Outcome outcome = evaluate(i, depth_start, depth_end);
-        sum += outcome.split ? split_stress(i, outcome, depth_start, depth_end, w, scratch_.data()) : outcome.stress;
+        const PlainStep plain = plain_step(in_contact_[i] != 0, i < active_ ? relaxed_[i] : 0.0, equivalent_[i],
+                                           displacement_[i], depth_end, step_.stiffness);
+        sum += plain.split ? split_stress(i, evaluate(i, depth_start, depth_end), depth_start, depth_end, w,
+                                          scratch_.data())
+                           : plain.stress;
     }
     return 2.0 * normal_stiffness_factor * spacing_ * sum;
 }
@@ -207,9 +210,11 @@ void Foundation::advance(double depth_start, double depth_end) {
     }
     split_.clear();
     split_state_.clear();
+    latest_exit_ = 0.0;
     for (std::size_t i = 0; i < end; ++i) {
         if (event_[i] == 0.0) continue;
         const Outcome outcome = evaluate(i, depth_start, depth_end);
+        if (!outcome.contact) latest_exit_ = std::max(latest_exit_, outcome.fraction);
         double split_w = 0.0;
         const std::size_t offset = split_state_.size();
         split_state_.resize(offset + branches + 2);
@@ -263,6 +268,10 @@ void Foundation::advance(double depth_start, double depth_end) {
 
 std::size_t Foundation::contact_count() const {
     return static_cast<std::size_t>(std::count(in_contact_.begin(), in_contact_.begin() + static_cast<std::ptrdiff_t>(active_), 1));
+}
+
+double Foundation::force_slope() const {
+    return 2.0 * normal_stiffness_factor * spacing_ * step_.stiffness * static_cast<double>(contact_count());
 }
 
 double Foundation::contact_radius() const {

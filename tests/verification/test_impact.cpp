@@ -50,7 +50,7 @@ TEST(Impact, ElasticHertz) {
     const double d_max = std::pow(15.0 * c.mass * c.velocity * c.velocity / (16.0 * e_star * std::sqrt(c.radius)), 0.4);
     const double duration = 2.8682656 * std::pow(c.mass * c.mass / (c.radius * e_star * e_star * c.velocity), 0.2);
     EXPECT_NEAR(result.impact->restitution, 1.0, 1e-6);  // no dissipation, default numerics
-    EXPECT_NEAR(result.impact->contact_time, duration, 2e-4 * duration);
+    EXPECT_NEAR(result.impact->contact_time, duration, 1e-6 * duration);
     double deepest = 0.0;
     for (double d : result.depth) deepest = std::max(deepest, d);
     EXPECT_NEAR(deepest, d_max, 1e-5 * d_max);

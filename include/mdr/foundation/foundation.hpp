@@ -58,6 +58,12 @@ public:
     double contact_radius() const;
     /// Number of elements in contact.
     std::size_t contact_count() const;
+    /// Where inside the last step (0..1) the last element to leave contact in it left (its force crossing zero,
+    /// interpolated linearly); 0 when none left.
+    double latest_exit() const { return latest_exit_; }
+    /// dF/dd [N/m] of the prepared step while no element enters or leaves: 8 dx K n_contact (eq. 21), K the
+    /// step's stiffness.
+    double force_slope() const;
 
     /// Element displacements w_i [m].
     std::span<const double> displacements() const { return displacement_; }
@@ -92,6 +98,7 @@ private:
     std::vector<double> split_state_;          ///< their new w, sigma and memory, (branches + 2) each
     double beyond_ = 0.0;                      ///< g just beyond the half-width
     double last_depth_ = 0.0;                  ///< depth at the end of the last step
+    double latest_exit_ = 0.0;                 ///< see latest_exit()
     StepCoefficients step_;
     std::size_t active_ = 0;                   ///< elements [active_, n) have never been touched: w = h = 0
     double total_force_ = 0.0;
