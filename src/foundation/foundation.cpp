@@ -57,6 +57,9 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
         memory_.assign(count * branches, 0.0);
         in_contact_.assign(count, 0);
         event_.assign(count, 0.0);
+        next_displacement_.assign(count, 0.0);
+        next_stress_.assign(count, 0.0);
+        increment_.assign(count, 0.0);
         relaxed_.assign(count, 0.0);
         scratch_.assign(branches, 0.0);
         scratch_gain_.assign(branches, 0.0);
@@ -68,7 +71,7 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
     beyond_ = profile.equivalent(half_width() * (1.0 + 1e-12));
 }
 
-void Foundation::begin_step(const StepCoefficients& coefficients) {
+__attribute__((target_clones("avx2", "default"))) void Foundation::begin_step(const StepCoefficients& coefficients) {
     step_ = coefficients;
     const std::size_t n = size();
     const double g_inf = material_.equilibrium_modulus();
@@ -177,7 +180,7 @@ double Foundation::trial_force(double depth_start, double depth_end) const {
     return 2.0 * normal_stiffness_factor * spacing_ * sum;
 }
 
-void Foundation::advance(double depth_start, double depth_end) {
+__attribute__((target_clones("avx2", "default"))) void Foundation::advance(double depth_start, double depth_end) {
     const double deepest = std::max(depth_start, depth_end);
     if (deepest > beyond_) {
         throw InvalidInput("numerics.half_width", format_value(half_width()),
@@ -187,31 +190,42 @@ void Foundation::advance(double depth_start, double depth_end) {
     const std::size_t n = size();
     const std::size_t end = reach(deepest);
     const std::size_t branches = material_.terms().size();
-    // Three passes over the elements, so that the two over all of them are branch-free and vectorise (with
-    // -fno-trapping-math, see CMakeLists.txt):
-    // 1. event_ = 1 where the step is split by an entry or exit (the rule of evaluate()), else 0 (a double, so
-    //    that the pass has one element width);
-    // 2. the new state of the elements whose step is split by an entry or exit, from their state before the step
-    //    (rare, scalar);
-    // 3. every element updated as if unsplit, relaxed_ becoming its increment dw; the split elements are
-    //    overwritten from their saved state after the branch update.
-    // relaxed_ is zero beyond active_ (never written there), as evaluate() assumes. The __restrict pointers live
-    // only in their pass, since pass 2 and the copy-back write the same arrays by other names.
+    // One branch-free pass over the elements (it vectorises, with -fno-trapping-math, see CMakeLists.txt) writes
+    // every element's step as if unsplit into the next_* buffers, its increment dw, and event_ = 1 where an entry
+    // or exit splits the step (a double, so that the pass has one element width). The old state stays intact for
+    // the scalar pass over the few split elements (evaluate() reads it; relaxed_ is zero beyond active_, never
+    // written there), then the branch memories take dw, the split elements are overwritten from their saved state,
+    // and the buffers swap. Elements at or beyond `end` are untouched: zero in both buffers.
     const double stiffness = step_.stiffness;
     {
         const double* __restrict g = equivalent_.data();
         const double* __restrict w = displacement_.data();
         const double* __restrict relaxed = relaxed_.data();
         const std::uint8_t* __restrict contact = in_contact_.data();
+        double* __restrict next_w = next_displacement_.data();
+        double* __restrict next_sigma = next_stress_.data();
+        double* __restrict dw = increment_.data();
         double* __restrict event = event_.data();
+        // The range of split elements (they gather at the contact edge), so that the scalar pass scans only it.
+        // 32-bit indices (max_elements fits) keep the min/max reductions vectorisable.
+        std::int32_t first = static_cast<std::int32_t>(end), last = -1;
         for (std::size_t i = 0; i < end; ++i) {
-            event[i] = plain_step(contact[i] != 0, relaxed[i], g[i], w[i], depth_end, stiffness).split ? 1.0 : 0.0;
+            const PlainStep plain = plain_step(contact[i] != 0, relaxed[i], g[i], w[i], depth_end, stiffness);
+            next_w[i] = w[i] + plain.increment;
+            next_sigma[i] = plain.stress;
+            dw[i] = plain.increment;
+            event[i] = plain.split ? 1.0 : 0.0;
+            const auto index = static_cast<std::int32_t>(i);
+            first = std::min(first, plain.split ? index : first);
+            last = std::max(last, plain.split ? index : last);
         }
+        split_first_ = static_cast<std::size_t>(first);
+        split_end_ = static_cast<std::size_t>(last + 1);
     }
     split_.clear();
     split_state_.clear();
     latest_exit_ = 0.0;
-    for (std::size_t i = 0; i < end; ++i) {
+    for (std::size_t i = split_first_; i < split_end_; ++i) {
         if (event_[i] == 0.0) continue;
         const Outcome outcome = evaluate(i, depth_start, depth_end);
         if (!outcome.contact) latest_exit_ = std::max(latest_exit_, outcome.fraction);
@@ -225,34 +239,23 @@ void Foundation::advance(double depth_start, double depth_end) {
         split_.push_back(i);
         in_contact_[i] = outcome.contact ? 1 : 0;
     }
-    {
-        const double* __restrict g = equivalent_.data();
-        const std::uint8_t* __restrict contact = in_contact_.data();
-        double* __restrict w = displacement_.data();
-        double* __restrict sigma = stress_.data();
-        double* __restrict relaxed = relaxed_.data();
-        for (std::size_t i = 0; i < end; ++i) {
-            const PlainStep plain = plain_step(contact[i] != 0, relaxed[i], g[i], w[i], depth_end, stiffness);
-            w[i] += plain.increment;
-            sigma[i] = plain.stress;
-            relaxed[i] = plain.increment;
-        }
-    }
     const auto& terms = material_.terms();
     for (std::size_t k = 0; k < terms.size(); ++k) {
         const double decay = step_.decay[k];
         const double gain = step_.gain[k];
-        double* h = memory_.data() + k * n;
-        const double* dw = relaxed_.data();
+        double* __restrict h = memory_.data() + k * n;
+        const double* __restrict dw = increment_.data();
         for (std::size_t i = 0; i < end; ++i) h[i] = decay * h[i] + gain * dw[i];
     }
     for (std::size_t s = 0; s < split_.size(); ++s) {
         const std::size_t i = split_[s];
         const double* state = split_state_.data() + s * (branches + 2);
-        displacement_[i] = state[0];
-        stress_[i] = state[1];
+        next_displacement_[i] = state[0];
+        next_stress_[i] = state[1];
         for (std::size_t k = 0; k < branches; ++k) memory_[k * n + i] = state[2 + k];
     }
+    displacement_.swap(next_displacement_);
+    stress_.swap(next_stress_);
     active_ = std::max(active_, end);
     last_depth_ = depth_end;
     // Four partial sums: the reduction vectorises (a single running sum is a serial chain of additions).

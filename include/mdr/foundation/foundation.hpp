@@ -91,6 +91,11 @@ private:
     std::vector<double> memory_;               ///< h_{k,i}, branch-major: memory_[k * n + i]
     std::vector<std::uint8_t> in_contact_;
     std::vector<double> event_;                ///< 1 where the last step was split by an entry or exit, else 0
+    std::vector<double> next_displacement_;    ///< w_i after the step being taken (swapped in at its end)
+    std::vector<double> next_stress_;          ///< sigma_i after the step being taken (swapped in at its end)
+    std::vector<double> increment_;            ///< dw_i of the step being taken
+    std::size_t split_first_ = 0;              ///< the split elements of the step lie in [split_first_, split_end_)
+    std::size_t split_end_ = 0;
     std::vector<double> relaxed_;              ///< G_inf w_i + sum_k G_k E_k h_{k,i} for the prepared step
     mutable std::vector<double> scratch_;      ///< per-branch memory of a trial split update
     mutable std::vector<double> scratch_gain_; ///< per-branch B_k of a sub-step

@@ -101,7 +101,7 @@ ImpactOdeResult sphere_impact_ting(const PronyMaterial& material, double mass, d
     const double stiffness = 16.0 * std::sqrt(radius) / 3.0;  // K: F = K G s for an elastic body
     const double hertz_time = hertz_impact_time(material.relaxation(0.0), mass, radius, velocity);
     double step = hertz_time / options.steps_per_contact_time;
-    for (const auto& [modulus, time] : material.terms) step = std::min(step, time / options.steps_per_relaxation_time);
+    for (const auto& term : material.terms) step = std::min(step, term.second / options.steps_per_relaxation_time);
     const double time_limit = 1000.0 * hertz_time;
 
     // Loading, y = (d, P, g_1, q_1, g_2, q_2, ...): P = d' + K η s/m absorbs the dashpot (P' = −K[G∞ s + Σ G_k h_k]/m),

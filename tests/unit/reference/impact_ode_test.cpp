@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 namespace mdr::reference {
@@ -17,16 +19,19 @@ constexpr double speed = 0.1;     // approach speed v0 [m/s]
 constexpr double modulus = 1e6;   // G∞ [Pa]
 constexpr double stiffness_factor = 16.0 / 3.0;  // F = (16/3) G sqrt(R) d^{3/2} (Hertz, E* = 4G)
 
+template <std::size_t N>
+using Vector = std::array<double, N>;
+
 /// Classical RK4 with a fixed step dt for y' = rate(y) until stop(y) changes sign from positive; returns the time
 /// and the state at the crossing, linearly interpolated between the last two steps (y holds (d, v, ...)).
 template <std::size_t N>
-std::pair<double, std::array<double, N>> integrate_until(const std::function<std::array<double, N>(const std::array<double, N>&)>& rate,
-                                                       const std::function<double(const std::array<double, N>&)>& stop,
-                                                       std::array<double, N> y, double dt) {
+std::pair<double, Vector<N>> integrate_until(const std::function<Vector<N>(const Vector<N>&)>& rate,
+                                             const std::function<double(const Vector<N>&)>& stop, Vector<N> y,
+                                             double dt) {
     double t = 0.0;
     while (true) {
         const auto k1 = rate(y);
-        std::array<double, N> stage{}, next{};
+        Vector<N> stage{}, next{};
         for (std::size_t i = 0; i < N; ++i) stage[i] = y[i] + 0.5 * dt * k1[i];
         const auto k2 = rate(stage);
         for (std::size_t i = 0; i < N; ++i) stage[i] = y[i] + 0.5 * dt * k2[i];
@@ -145,7 +150,9 @@ TEST(ReferenceImpactOde, RestitutionConvergesUnderRefinement) {
         for (std::size_t i = 2; i < values.size(); ++i) {
             const double coarse = std::abs(values[i - 2] - values[i - 1]);
             const double fine = std::abs(values[i - 1] - values[i]);
-            if (coarse > 1e-12) EXPECT_GT(std::log2(coarse / fine), 1.4) << "refinement " << i;
+            if (coarse > 1e-12) {
+                EXPECT_GT(std::log2(coarse / fine), 1.4) << "refinement " << i;
+            }
         }
         const double by_default = sphere_impact_ting(material, mass, radius, speed).restitution;
         EXPECT_NEAR(by_default, values.back(), 1e-9);
