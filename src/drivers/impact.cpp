@@ -45,7 +45,7 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
         // Land exactly on snapshot times.
         const double step = snapshot != snapshots.end() ? std::min(numerics.time_step, *snapshot - time)
                                                         : numerics.time_step;
-        foundation.begin_step(cache.get(step));
+        foundation.begin_step(cache.get(step), velocity);
         // Trapezoidal rule for m d'' = -F (eq. 37): d1 = d0 + (v0 + v1) dt/2, v1 = v0 - (F0 + F1) dt/(2m), i.e.
         // F(d1) + (4m/dt^2)(d1 - d0 - v0 dt) = -F0, monotone in d1.
         const double spring = 4.0 * mass / (step * step);

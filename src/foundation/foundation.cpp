@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <new>
+#include <optional>
 
 #include "mdr/error.hpp"
 
@@ -23,10 +24,11 @@ struct PlainStep {
     bool split;        ///< an exit or entry happens inside the step
 };
 
-inline PlainStep plain_step(bool contact, double relaxed, double g, double w, double depth_end, double stiffness) {
+inline PlainStep plain_step(bool contact, double contact_relaxed, double free_relaxed, double g, double w,
+                            double depth_end, double contact_stiffness, double free_stiffness) {
     const double contact_increment = depth_end - g - w;
-    const double contact_stress = relaxed + stiffness * contact_increment;
-    const double free_increment = -relaxed / stiffness;
+    const double contact_stress = contact_relaxed + contact_stiffness * contact_increment;
+    const double free_increment = -free_relaxed / free_stiffness;
     const double gap_end = contact_increment - free_increment;  // indenter below the free surface when > 0
     return {contact ? contact_increment : free_increment, contact ? contact_stress : 0.0,
             contact ? !(contact_stress >= 0.0) : !(gap_end <= 0.0)};
@@ -61,6 +63,7 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
         next_stress_.assign(count, 0.0);
         increment_.assign(count, 0.0);
         relaxed_.assign(count, 0.0);
+        if (material.viscosity() > 0.0) free_relaxed_.assign(count, 0.0);
         scratch_.assign(branches, 0.0);
         scratch_gain_.assign(branches, 0.0);
     } catch (const std::bad_alloc&) {
@@ -71,16 +74,38 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
     beyond_ = profile.equivalent(half_width() * (1.0 + 1e-12));
 }
 
-__attribute__((target_clones("avx2", "default"))) void Foundation::begin_step(const StepCoefficients& coefficients) {
+__attribute__((target_clones("avx2", "default"))) void Foundation::begin_step(const StepCoefficients& coefficients,
+                                                                               std::optional<double> indenter_rate) {
     step_ = coefficients;
+    indenter_rate_ = indenter_rate;
     const std::size_t n = size();
     const double g_inf = material_.equilibrium_modulus();
-    for (std::size_t i = 0; i < active_; ++i) relaxed_[i] = g_inf * displacement_[i];
+    const double eta = material_.viscosity();
+    const double dt = step_.time_step;
+    const double springs = step_.stiffness - (dt > 0.0 ? eta / dt : 0.0);  // G_inf + sum G_k B_k
+    // The dashpot's rate at the end of the step: the secant rate for a prescribed depth (exact while it is linear),
+    // the trapezoidal 2 dd/dt - rate0 when the depth is solved from a smooth motion; a free element always takes
+    // the trapezoidal rate from its own start rate -(G_inf w + sum G_k h)/eta (its force is zero).
+    contact_stiffness_ = springs + (dt > 0.0 ? (indenter_rate ? 2.0 : 1.0) * eta / dt : 0.0);
+    contact_offset_ = indenter_rate ? -eta * *indenter_rate : 0.0;
+    free_stiffness_ = springs + (dt > 0.0 ? 2.0 * eta / dt : 0.0);
     const auto& terms = material_.terms();
+    double* __restrict relaxed = relaxed_.data();
+    const double* __restrict w = displacement_.data();
+    for (std::size_t i = 0; i < active_; ++i) relaxed[i] = g_inf * w[i];
     for (std::size_t k = 0; k < terms.size(); ++k) {
         const double weight = terms[k].modulus * step_.decay[k];
-        const double* h = memory_.data() + k * n;
-        for (std::size_t i = 0; i < active_; ++i) relaxed_[i] += weight * h[i];
+        const double* __restrict h = memory_.data() + k * n;
+        for (std::size_t i = 0; i < active_; ++i) relaxed[i] += weight * h[i];
+    }
+    if (eta == 0.0) return;
+    // free_relaxed = relaxed - eta rate0 = relaxed + G_inf w + sum_k G_k h_k.
+    double* __restrict free_relaxed = free_relaxed_.data();
+    for (std::size_t i = 0; i < active_; ++i) free_relaxed[i] = relaxed[i] + g_inf * w[i];
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+        const double weight = terms[k].modulus;
+        const double* __restrict h = memory_.data() + k * n;
+        for (std::size_t i = 0; i < active_; ++i) free_relaxed[i] += weight * h[i];
     }
 }
 
@@ -94,8 +119,10 @@ Foundation::Outcome Foundation::evaluate(std::size_t i, double depth_start, doub
     const double g = equivalent_[i];
     const double w = displacement_[i];
     const bool contact = in_contact_[i] != 0;
-    const PlainStep plain =
-        plain_step(contact, i < active_ ? relaxed_[i] : 0.0, g, w, depth_end, step_.stiffness);
+    const double relaxed = i < active_ ? relaxed_[i] : 0.0;
+    const double free_relaxed = i < active_ ? free_relaxed_of(i) : 0.0;
+    const PlainStep plain = plain_step(contact, relaxed + contact_offset_, free_relaxed, g, w, depth_end,
+                                       contact_stiffness_, free_stiffness_);
     Outcome outcome;
     outcome.contact = contact;
     outcome.stress = plain.stress;
@@ -117,9 +144,14 @@ Foundation::Outcome Foundation::evaluate(std::size_t i, double depth_start, doub
 
 void Foundation::free_substep(double time_step, double& w, double* h) const {
     const auto& terms = material_.terms();
-    if (time_step <= 0.0 && material_.viscosity() > 0.0) return;  // a dashpot does not move in no time
-    double relaxed = material_.equilibrium_modulus() * w;
-    double stiffness = material_.equilibrium_modulus() + (time_step > 0.0 ? material_.viscosity() / time_step : 0.0);
+    const double eta = material_.viscosity();
+    if (time_step <= 0.0 && eta > 0.0) return;  // a dashpot does not move in no time
+    // Force-free: G_inf w + eta w' + sum G_k h_k = 0 at the end, the dashpot with the trapezoidal rate from its
+    // start rate -(G_inf w + sum G_k h_k)/eta.
+    double start_force = material_.equilibrium_modulus() * w;
+    for (std::size_t k = 0; k < terms.size(); ++k) start_force += terms[k].modulus * h[k];
+    double relaxed = material_.equilibrium_modulus() * w + (eta > 0.0 ? start_force : 0.0);
+    double stiffness = material_.equilibrium_modulus() + (eta > 0.0 ? 2.0 * eta / time_step : 0.0);
     for (std::size_t k = 0; k < terms.size(); ++k) {
         const double ratio = time_step / terms[k].relaxation_time;
         const double gain = branch_gain(ratio);
@@ -133,11 +165,11 @@ void Foundation::free_substep(double time_step, double& w, double* h) const {
     w += dw;
 }
 
-double Foundation::contact_substep(double time_step, double new_displacement, double& w, double* h) const {
+double Foundation::contact_substep(double time_step, double new_displacement, double end_rate, double& w,
+                                   double* h) const {
     const auto& terms = material_.terms();
     const double dw = new_displacement - w;
-    double stress = material_.equilibrium_modulus() * new_displacement;
-    if (time_step > 0.0) stress += material_.viscosity() * dw / time_step;
+    double stress = material_.equilibrium_modulus() * new_displacement + material_.viscosity() * end_rate;
     for (std::size_t k = 0; k < terms.size(); ++k) {
         const double ratio = time_step / terms[k].relaxation_time;
         h[k] = std::exp(-ratio) * h[k] + branch_gain(ratio) * dw;
@@ -156,12 +188,16 @@ double Foundation::split_stress(std::size_t i, const Outcome& outcome, double de
     const double first = outcome.fraction * step_.time_step;
     const double second = step_.time_step - first;
     const double g = equivalent_[i];
+    // The indenter's rate at the start and the end of the step (see begin_step).
+    const double secant = step_.time_step > 0.0 ? (depth_end - depth_start) / step_.time_step : 0.0;
+    const double start_rate = indenter_rate_.value_or(secant);
+    const double end_rate = indenter_rate_ ? 2.0 * secant - start_rate : secant;
     if (outcome.contact) {  // free, then in contact from the entry on
         free_substep(first, w, h);
-        return std::max(contact_substep(second, depth_end - g, w, h), 0.0);
+        return std::max(contact_substep(second, depth_end - g, end_rate, w, h), 0.0);
     }
     const double depth_at_exit = depth_start + outcome.fraction * (depth_end - depth_start);
-    contact_substep(first, depth_at_exit - g, w, h);
+    contact_substep(first, depth_at_exit - g, start_rate + outcome.fraction * (end_rate - start_rate), w, h);
     free_substep(second, w, h);
     return 0.0;
 }
@@ -171,8 +207,11 @@ double Foundation::trial_force(double depth_start, double depth_end) const {
     double sum = 0.0;
     double w = 0.0;
     for (std::size_t i = 0; i < end; ++i) {
-        const PlainStep plain = plain_step(in_contact_[i] != 0, i < active_ ? relaxed_[i] : 0.0, equivalent_[i],
-                                           displacement_[i], depth_end, step_.stiffness);
+        const bool touched = i < active_;
+        const PlainStep plain =
+            plain_step(in_contact_[i] != 0, (touched ? relaxed_[i] : 0.0) + contact_offset_,
+                       touched ? free_relaxed_of(i) : 0.0, equivalent_[i], displacement_[i], depth_end,
+                       contact_stiffness_, free_stiffness_);
         sum += plain.split ? split_stress(i, evaluate(i, depth_start, depth_end), depth_start, depth_end, w,
                                           scratch_.data())
                            : plain.stress;
@@ -196,11 +235,15 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
     // the scalar pass over the few split elements (evaluate() reads it; relaxed_ is zero beyond active_, never
     // written there), then the branch memories take dw, the split elements are overwritten from their saved state,
     // and the buffers swap. Elements at or beyond `end` are untouched: zero in both buffers.
-    const double stiffness = step_.stiffness;
+    const double contact_stiffness = contact_stiffness_;
+    const double free_stiffness = free_stiffness_;
+    const double contact_offset = contact_offset_;
     {
         const double* __restrict g = equivalent_.data();
         const double* __restrict w = displacement_.data();
         const double* __restrict relaxed = relaxed_.data();
+        const double* __restrict free_relaxed =
+            material_.viscosity() > 0.0 ? free_relaxed_.data() : relaxed_.data();
         const std::uint8_t* __restrict contact = in_contact_.data();
         double* __restrict next_w = next_displacement_.data();
         double* __restrict next_sigma = next_stress_.data();
@@ -210,7 +253,8 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
         // 32-bit indices (max_elements fits) keep the min/max reductions vectorisable.
         std::int32_t first = static_cast<std::int32_t>(end), last = -1;
         for (std::size_t i = 0; i < end; ++i) {
-            const PlainStep plain = plain_step(contact[i] != 0, relaxed[i], g[i], w[i], depth_end, stiffness);
+            const PlainStep plain = plain_step(contact[i] != 0, relaxed[i] + contact_offset, free_relaxed[i], g[i], w[i],
+                                               depth_end, contact_stiffness, free_stiffness);
             next_w[i] = w[i] + plain.increment;
             next_sigma[i] = plain.stress;
             dw[i] = plain.increment;
@@ -274,7 +318,7 @@ std::size_t Foundation::contact_count() const {
 }
 
 double Foundation::force_slope() const {
-    return 2.0 * normal_stiffness_factor * spacing_ * step_.stiffness * static_cast<double>(contact_count());
+    return 2.0 * normal_stiffness_factor * spacing_ * contact_stiffness_ * static_cast<double>(contact_count());
 }
 
 double Foundation::contact_radius() const {
@@ -285,7 +329,7 @@ double Foundation::contact_radius() const {
     if (j + 1 >= size() || !std::isfinite(equivalent_[j + 1])) return position(j) + 0.5 * spacing_;
     // Inside: sigma/stiffness, the displacement the element could still give up; outside: the free gap.
     // Both vanish at the edge; interpolate linearly between the two centres.
-    const double inside = stress_[j] / step_.stiffness;
+    const double inside = stress_[j] / contact_stiffness_;
     const double outside = std::min(last_depth_ - equivalent_[j + 1] - displacement_[j + 1], 0.0);
     const double fraction = inside > 0.0 ? inside / (inside - outside) : 0.0;
     return position(j) + std::clamp(fraction, 0.0, 1.0) * spacing_;

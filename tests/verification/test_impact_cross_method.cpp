@@ -88,26 +88,21 @@ TEST_P(ImpactKelvinVoigt, MatchesTingOracle) {
 
 INSTANTIATE_TEST_SUITE_P(Damping, ImpactKelvinVoigt, ::testing::Values(5.0, 50.0, 200.0, 500.0, 1300.0));
 
-TEST(ImpactKelvinVoigt, LibraryConvergesToTingOracle) {
-    // The strongest damping above (η = 1300 Pa·s, e = 0.307) is where the library's error is largest (8.5e-5 at
-    // its default step of ~2.1 µs; it is first order in the step there, the dashpot seeing the step's secant
-    // rate). Halving numerics.time_step from 1 µs must shrink |e_mdr − e_oracle| by at least 1.5 each time
-    // (observed 1.9), down to within 2e-5 at 0.25 µs (observed 1.0e-5).
+TEST(ImpactKelvinVoigt, StrongDampingIsAccurateAtDefaultAndFinerSteps) {
+    // The strongest damping above (eta = 1300 Pa s, e = 0.307) is where the dashpot matters most. With the
+    // trapezoidal rate of the indenter the library is within 4e-6 of the oracle at its default step (~2.1 us) and
+    // within 1.5e-6 at 1 us and finer, where the error no longer falls monotonically (event location and end of
+    // contact, ~1e-6). With the step's secant rate it was first order: 8.5e-5 at the default step.
     const double eta = 1300.0;
     const double oracle =
         reference::sphere_impact_ting(reference::PronyMaterial{modulus, eta, {}}, mass, radius, speed).restitution;
-    double previous = 0.0;
-    for (const double step : {1e-6, 5e-7, 2.5e-7}) {
+    const auto by_default = run_toml(impact_case(kelvin_voigt(eta)));
+    EXPECT_NEAR(by_default.impact->restitution, oracle, 1e-5);
+    for (const double step : {1e-6, 2.5e-7}) {
         const auto result =
             run_toml(impact_case(kelvin_voigt(eta)) + fmt::format("[numerics]\ntime_step = {}\n", step));
-        const double difference = std::abs(result.impact->restitution - oracle);
-        RecordProperty(fmt::format("difference_at_{}", step), fmt::format("{:.3e}", difference));
-        if (previous > 0.0) {
-            EXPECT_LT(difference, previous / 1.5) << "time_step = " << step;
-        }
-        previous = difference;
+        EXPECT_NEAR(result.impact->restitution, oracle, 2e-6) << "time_step = " << step;
     }
-    EXPECT_LT(previous, 2e-5);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -43,7 +44,11 @@ public:
     double position(std::size_t i) const { return (static_cast<double>(i) + 0.5) * spacing_; }
 
     /// Prepares a step of the given coefficients from the current state (call before trial_force/advance).
-    void begin_step(const StepCoefficients& coefficients);
+    /// `indenter_rate` is dd/dt at the start of the step when the depth is solved from a smooth motion (impact):
+    /// a dashpot in contact then sees the trapezoidal end rate 2 (d1 - d0)/dt - rate (second order). Without it
+    /// it sees the step's secant rate, exact for a prescribed piecewise-linear depth. Force-free elements always
+    /// take the trapezoidal rate from their own start rate.
+    void begin_step(const StepCoefficients& coefficients, std::optional<double> indenter_rate = std::nullopt);
     /// The total normal force [N] (eq. 21) the foundation would carry if the depth went linearly from
     /// `depth_start` to `depth_end` over the prepared step; the state is not changed.
     double trial_force(double depth_start, double depth_end) const;
@@ -80,7 +85,8 @@ private:
     double split_stress(std::size_t i, const Outcome& outcome, double depth_start, double depth_end, double& w,
                         double* h) const;
     void free_substep(double time_step, double& w, double* h) const;
-    double contact_substep(double time_step, double new_displacement, double& w, double* h) const;
+    double contact_substep(double time_step, double new_displacement, double end_rate, double& w, double* h) const;
+    double free_relaxed_of(std::size_t i) const { return free_relaxed_.empty() ? relaxed_[i] : free_relaxed_[i]; }
     std::size_t reach(double depth) const;
 
     const rheology::Rheology& material_;
@@ -97,6 +103,11 @@ private:
     std::size_t split_first_ = 0;              ///< the split elements of the step lie in [split_first_, split_end_)
     std::size_t split_end_ = 0;
     std::vector<double> relaxed_;              ///< G_inf w_i + sum_k G_k E_k h_{k,i} for the prepared step
+    std::vector<double> free_relaxed_;         ///< with a dashpot: relaxed_ - eta w'_i(start) of a free element
+    std::optional<double> indenter_rate_;      ///< see begin_step
+    double contact_stiffness_ = 0.0;           ///< dsigma/dw of an element in contact over the prepared step
+    double contact_offset_ = 0.0;              ///< -eta rate0 with the trapezoidal rate, else 0
+    double free_stiffness_ = 0.0;              ///< dsigma/dw of a force-free element over the prepared step
     mutable std::vector<double> scratch_;      ///< per-branch memory of a trial split update
     mutable std::vector<double> scratch_gain_; ///< per-branch B_k of a sub-step
     std::vector<std::size_t> split_;           ///< elements whose step is split by an event
