@@ -48,7 +48,7 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
     : material_(material), spacing_(spacing) {
     require_positive("numerics.elements", static_cast<double>(count));
     const std::size_t branches = material.terms().size();
-    if (count > max_elements || count * (branches + 6) > max_elements * 4) {
+    if (count > max_elements || count * (branches + 9) > max_elements * 4) {
         throw InvalidInput("numerics.elements", std::to_string(count),
                            "the foundation state would not fit in memory; use fewer elements");
     }
