@@ -20,7 +20,7 @@ demo: build
 	@PYTHONPATH=$(BUILD_DIR)/python MPLBACKEND=Agg $(PYTHON) -m mdr plot out/demo
 
 figures: build
-	@scripts/restitution-map
+	@scripts/figures
 
 bench: build
 	@$(BUILD_DIR)/bin/mdr_bench --benchmark_counters_tabular=true

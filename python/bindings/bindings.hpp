@@ -9,5 +9,7 @@ namespace mdr::python {
 void bind_rheology(pybind11::module_& module);
 /// mdr.run and mdr.check: cases from TOML text, results as numpy arrays.
 void bind_run(pybind11::module_& module);
+/// mdr.sweep: a case over a grid of numeric keys.
+void bind_sweep(pybind11::module_& module);
 
 }  // namespace mdr::python

@@ -8,4 +8,5 @@ PYBIND11_MODULE(_mdr, module) {
     pybind11::register_exception<mdr::InvalidInput>(module, "InvalidInput", PyExc_ValueError);
     mdr::python::bind_rheology(module);
     mdr::python::bind_run(module);
+    mdr::python::bind_sweep(module);
 }

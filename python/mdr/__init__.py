@@ -10,6 +10,7 @@
 from __future__ import annotations
 
 import json
+import math
 import os
 from dataclasses import dataclass, field
 from typing import Any, Mapping, Union
@@ -20,7 +21,7 @@ from . import _mdr
 from ._mdr import InvalidInput, Material
 from ._toml import to_toml
 
-__all__ = ["run", "check", "Material", "Result", "InvalidInput", "__version__"]
+__all__ = ["run", "check", "sweep", "Material", "Result", "InvalidInput", "__version__"]
 __version__ = _mdr.__version__
 
 CaseLike = Union[str, os.PathLike, Mapping[str, Any]]
@@ -64,3 +65,38 @@ def check(case: CaseLike) -> str:
     """Validates a case and returns its one-line description; raises ValueError for bad input."""
     text, source = _case_text(case)
     return _mdr._check_toml(text, source)
+
+
+def _axis_spec(key: str, values: Any) -> str:
+    if isinstance(values, str):
+        return f"{key}={values}"
+    array = np.asarray(values, dtype=float)
+    if array.ndim != 1 or array.size == 0:
+        raise ValueError(f"vary[{key!r}]: expected a 1-D list of numbers or 'START:STOP:COUNT[:log]'")
+    return f"{key}=" + ",".join(repr(float(v)) for v in array)
+
+
+def sweep(case: CaseLike, vary: Mapping[str, Any], jobs: int | None = None) -> dict[str, np.ndarray]:
+    """Runs a case over the cartesian product of `vary` ({dotted key: values or "START:STOP:COUNT[:log]"}, the
+    last key varying fastest) on `jobs` threads (default: all cores), like `mdr sweep`. Returns a table as a dict
+    of numpy arrays: the varied keys, every numeric key of summary.json (nan where a point failed), and `error`
+    (the failure message, "" where the point ran)."""
+    if not isinstance(vary, Mapping) or not vary:
+        raise TypeError("vary: expected a non-empty dict {key: values}")
+    if jobs is not None and (not isinstance(jobs, int) or jobs < 1):
+        raise ValueError(f"jobs = {jobs!r}: must be an integer >= 1")
+    text, source = _case_text(case)
+    specs = [_axis_spec(key, values) for key, values in vary.items()]
+    raw = _mdr._sweep_toml(text, source, specs, jobs or 0)
+    summaries = [json.loads(s) if s else {} for s in raw["summaries"]]
+    columns = next((list(s) for s in summaries if s), [])
+    table: dict[str, np.ndarray] = {}
+    points = np.asarray(raw["points"], dtype=float).reshape(len(summaries), len(specs))
+    for i, key in enumerate(vary):
+        table[key] = points[:, i]
+    for column in columns:
+        values = [s.get(column, math.nan) if s else math.nan for s in summaries]
+        if all(isinstance(v, (int, float)) for v in values):
+            table[column] = np.asarray(values, dtype=float)
+    table["error"] = np.asarray(raw["errors"], dtype=str)
+    return table

@@ -8,6 +8,7 @@ import inspect
 import json
 import math
 import pathlib
+import re
 import subprocess
 import sys
 
@@ -446,3 +447,35 @@ def test_restitution_map_from_a_sweep_table(tmp_path):
     assert len(axes.lines) == 2 and axes.get_xscale() == "log"
     path = mdr.plot.save(axes, str(tmp_path / "map.png"))
     assert (tmp_path / "map.png").stat().st_size > 0 and path.endswith("map.png")
+
+
+def test_stubs_list_every_public_binding():
+    """python/mdr/_mdr.pyi stays in step with the compiled module."""
+
+    stub = (pathlib.Path(mdr.__file__).parent / "_mdr.pyi").read_text()
+    names = {name for name in dir(mdr._mdr) if not name.startswith("__")}
+    for name in names:
+        assert re.search(rf"\b(def|class) {name}\b|^{name}:", stub, re.M), f"{name} missing from _mdr.pyi"
+    for name in (n for n in dir(mdr.Material) if not n.startswith("_")):
+        assert re.search(rf"def {name}\b", stub), f"Material.{name} missing from _mdr.pyi"
+
+
+def test_sweep_from_python(tmp_path):
+    table = mdr.sweep(CASE_DICT_FOR_SWEEP, {"material.tau1": "0.05:0.5:3:log", "material.G1": [1e6, 2e6]}, jobs=2)
+    assert table["material.tau1"].shape == (6,) and table["material.G1"].tolist() == [1e6, 2e6] * 3
+    assert table["max_force"].dtype == np.float64 and np.all(table["max_force"] > 0)
+    assert list(table["error"]) == [""] * 6
+    failed = mdr.sweep(CASE_DICT_FOR_SWEEP, {"material.tau1": [-1.0, 0.1]})
+    assert failed["error"][0] == "material.tau1 = -1: must be > 0" and np.isnan(failed["max_force"][0])
+    with pytest.raises(ValueError, match="no such key"):
+        mdr.sweep(CASE_DICT_FOR_SWEEP, {"material.tau": [1.0]})
+    with pytest.raises(TypeError):
+        mdr.sweep(CASE_DICT_FOR_SWEEP, {})
+
+
+CASE_DICT_FOR_SWEEP = {
+    "material": {"model": "standard", "G_inf": 1.0e6, "G1": 3.0e6, "tau1": 0.2},
+    "indenter": {"shape": "sphere", "R": 0.01},
+    "load": {"control": "displacement", "history": [[0.0, 0.0], [1.0, 1.0e-4], [2.0, 0.0]]},
+    "numerics": {"elements": 100, "time_step": 0.02},
+}
