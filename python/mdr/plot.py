@@ -1,5 +1,6 @@
-"""Figures of a run: force-depth and force-time with loading and unloading told apart, contact radius, and
-pressure profiles at the snapshots. Uses matplotlib's Agg backend unless another one is set."""
+"""Figures of a run: force-depth and force-time with loading and unloading told apart, contact radius, pressure
+profiles at the snapshots; material functions and complex moduli; a sweep over one or two keys. Uses
+matplotlib's Agg backend unless another one is set."""
 
 from __future__ import annotations
 
@@ -84,20 +85,76 @@ def pressure_profiles(profiles: Mapping[str, np.ndarray], axes=None):
     return axes
 
 
+def material_functions(functions: Mapping[str, np.ndarray], axes=None):
+    """Relaxation G(t) and creep J(t) on log axes (functions.csv of `mdr material`; J_shear too if present)."""
+    axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
+    axes.loglog(functions["t"], functions["G"], color="C0", label="G(t)")
+    axes.set(xlabel="time t [s]", ylabel="relaxation G [Pa]", title="Material functions")
+    right = axes.twinx()
+    right.loglog(functions["t"], functions["J"], color="C1", label="J(t)")
+    if "J_shear" in functions:
+        right.loglog(functions["t"], functions["J_shear"], color="C1", ls="--", label="J_shear(t)")
+    right.set_ylabel("creep J [1/Pa]")
+    axes.figure.legend(loc="upper center")
+    return axes
+
+
+def dynamic_moduli(dynamic: Mapping[str, np.ndarray], axes=None):
+    """Storage and loss moduli over angular frequency on log axes (dynamic.csv of `mdr material`)."""
+    axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
+    axes.loglog(dynamic["omega"], dynamic["storage"], label="storage")
+    axes.loglog(dynamic["omega"], np.maximum(dynamic["loss"], np.finfo(float).tiny), label="loss")
+    axes.set(xlabel="angular frequency omega [rad/s]", ylabel="modulus [Pa]", title="Complex modulus")
+    axes.legend()
+    return axes
+
+
+def sweep_map(sweep: Mapping[str, np.ndarray], value: str, axes=None):
+    """`value` over the first varied key of a sweep.csv table (log axis if its grid is), one line per value of
+    the second varied key if there is one."""
+    axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
+    keys = [k for k in sweep if "." in k]
+    if not keys:
+        raise ValueError("sweep table without varied keys (dotted names)")
+    x = sweep[keys[0]]
+    groups = np.unique(sweep[keys[1]]) if len(keys) > 1 else [None]
+    for group in groups:
+        rows = np.ones(x.shape, bool) if group is None else sweep[keys[1]] == group
+        order = np.argsort(x[rows])
+        axes.plot(x[rows][order], sweep[value][rows][order], label=None if group is None else f"{keys[1]} = {group:g}")
+    if np.all(x > 0) and x.max() / x.min() > 100:
+        axes.set_xscale("log")
+    axes.set(xlabel=keys[0], ylabel=value, title=f"{value} over {keys[0]}")
+    if len(keys) > 1:
+        axes.legend()
+    return axes
+
+
 def plot_directory(directory: str) -> list[str]:
-    """Writes force_depth.png, force_time.png, contact_radius.png and (with profiles) pressure.png into the
-    result directory; returns their paths."""
-    history_path = os.path.join(directory, "history.csv")
-    if not os.path.exists(history_path):
-        raise ValueError(f"{directory}: no history.csv (not a result directory of mdr run)")
-    history = read_csv(history_path)
+    """PNG figures for a result directory: of `mdr run` (force_depth, force_time, contact_radius and, with
+    profiles, pressure), of `mdr material` (material, dynamic) or of `mdr sweep` (sweep: max_force, or the
+    restitution for impacts, over the varied keys). Returns their paths."""
+    def path(name):
+        return os.path.join(directory, name)
+
     written = []
-    for name, draw in (("force_depth", force_depth), ("force_time", force_time), ("contact_radius", contact_radius)):
-        axes = draw(history)
-        written.append(save(axes, os.path.join(directory, name + ".png")))
-    profiles_path = os.path.join(directory, "profiles.csv")
-    if os.path.exists(profiles_path):
-        written.append(save(pressure_profiles(read_csv(profiles_path)), os.path.join(directory, "pressure.png")))
+    if os.path.exists(path("history.csv")):
+        history = read_csv(path("history.csv"))
+        for name, draw in (("force_depth", force_depth), ("force_time", force_time),
+                           ("contact_radius", contact_radius)):
+            written.append(save(draw(history), path(name + ".png")))
+        if os.path.exists(path("profiles.csv")):
+            written.append(save(pressure_profiles(read_csv(path("profiles.csv"))), path("pressure.png")))
+    if os.path.exists(path("functions.csv")):
+        written.append(save(material_functions(read_csv(path("functions.csv"))), path("material.png")))
+    if os.path.exists(path("dynamic.csv")):
+        written.append(save(dynamic_moduli(read_csv(path("dynamic.csv"))), path("dynamic.png")))
+    if os.path.exists(path("sweep.csv")):
+        sweep = read_csv(path("sweep.csv"))
+        value = "restitution" if "restitution" in sweep else "max_force"
+        written.append(save(sweep_map(sweep, value), path("sweep.png")))
+    if not written:
+        raise ValueError(f"{directory}: no history.csv, functions.csv or sweep.csv (not a result directory of mdr)")
     return written
 
 

@@ -406,6 +406,8 @@ def test_every_plot_function_runs_headless(result_directory, file_result, tmp_pa
 
     history = mdr.plot.read_csv(str(result_directory / "history.csv"))
     profiles = mdr.plot.read_csv(str(result_directory / "profiles.csv"))
+    material = mdr.Material.standard(G_inf=1e6, G1=3e6, tau1=0.1)
+    times = np.logspace(-3, 1, 20)
     for name in ("t", "d", "F", "a"):
         np.testing.assert_array_equal(history[name], file_result.history[name])
     calls = {
@@ -416,6 +418,14 @@ def test_every_plot_function_runs_headless(result_directory, file_result, tmp_pa
         "pressure_profiles": lambda: mdr.plot.pressure_profiles(profiles),
         "plot_directory": lambda: mdr.plot.plot_directory(str(result_directory)),
         "save": lambda: mdr.plot.save(mdr.plot.force_depth(history), str(tmp_path / "saved.png")),
+        "material_functions": lambda: mdr.plot.material_functions(
+            {"t": times, "G": material.relaxation(times), "J": material.creep(times)}),
+        "dynamic_moduli": lambda: mdr.plot.dynamic_moduli(
+            {"omega": times, "storage": material.complex_modulus(times).real,
+             "loss": material.complex_modulus(times).imag}),
+        "sweep_map": lambda: mdr.plot.sweep_map(
+            {"material.tau1": np.array([0.1, 1.0, 0.1, 1.0]), "material.G1": np.array([1.0, 1.0, 2.0, 2.0]),
+             "max_force": np.array([1.0, 2.0, 3.0, 4.0])}, "max_force"),
     }
     public = {name for name, member in inspect.getmembers(mdr.plot, inspect.isfunction)
               if member.__module__ == "mdr.plot" and not name.startswith("_")}
