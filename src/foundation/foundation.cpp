@@ -72,6 +72,10 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
     }
     for (std::size_t i = 0; i < count; ++i) equivalent_[i] = profile.equivalent(position(i));
     beyond_ = profile.equivalent(half_width() * (1.0 + 1e-12));
+    // Beyond a tabulated profile nothing is known (not a rigid wall, as beyond a flat punch): the contact must stay
+    // inside it.
+    profile_ends_ = !profile.is_flat_punch() && !std::isfinite(beyond_);
+    if (profile_ends_) beyond_ = profile.equivalent(half_width());
 }
 
 __attribute__((target_clones("avx2", "default"))) void Foundation::begin_step(const StepCoefficients& coefficients,
@@ -221,6 +225,11 @@ double Foundation::trial_force(double depth_start, double depth_end) const {
 
 __attribute__((target_clones("avx2", "default"))) void Foundation::advance(double depth_start, double depth_end) {
     const double deepest = std::max(depth_start, depth_end);
+    if (deepest > beyond_ && profile_ends_) {
+        throw InvalidInput("indenter.r", "[..., " + format_value(half_width()) + "]",
+                           "the contact grows beyond the last tabulated radius at depth " + format_value(deepest) +
+                               "; tabulate the profile further");
+    }
     if (deepest > beyond_) {
         throw InvalidInput("numerics.half_width", format_value(half_width()),
                            "the contact reaches the end of the foundation at depth " + format_value(deepest) +

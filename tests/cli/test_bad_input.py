@@ -190,6 +190,14 @@ BAD_CASES = [
     ("tangential", case_text(extra='[tangential]\nfriction = 0.3\ncontrol = "displacement"\n'
                                    'history = [[0.0, 0.0], [1.0, 1e-6]]\n'),
      ["tangential", "not implemented"]),
+    # a contact that outgrows a tabulated profile: an error, not a silent clamp at the table's end
+    ("profile-too-short", case_text(indenter='[indenter]\nshape = "profile"\nr = [0.0, 2e-4, 4e-4]\n'
+                                             'f = [0.0, 2e-6, 8e-6]\n'),
+     ["indenter.r", "4e-05", "beyond the last tabulated radius"]),
+    ("impact-profile-too-short", case_text(indenter='[indenter]\nshape = "profile"\nr = [0.0, 2e-4, 4e-4]\n'
+                                                    'f = [0.0, 2e-6, 8e-6]\nmass = 0.03\n',
+                                           load='[load]\ncontrol = "impact"\nvelocity = 0.1\n', numerics=""),
+     ["indenter.r", "beyond the last tabulated radius"]),
     # impact
     ("impact-with-history", case_text(indenter=INDENTER + "mass = 0.03\n",
                                       load='[load]\ncontrol = "impact"\nvelocity = 1.0\n'

@@ -53,7 +53,8 @@ public:
     /// `depth_start` to `depth_end` over the prepared step; the state is not changed.
     double trial_force(double depth_start, double depth_end) const;
     /// Advances the state over the prepared step with the depth going linearly from `depth_start` to `depth_end`.
-    /// Throws mdr::InvalidInput (key `numerics.domain`) when the contact reaches the end of the foundation.
+    /// Throws mdr::InvalidInput when the contact reaches the end of the foundation (key `numerics.half_width`)
+    /// or of a tabulated profile (key `indenter.r`).
     void advance(double depth_start, double depth_end);
 
     /// Total normal force [N] after the last step (eq. 21, both halves).
@@ -112,7 +113,8 @@ private:
     mutable std::vector<double> scratch_gain_; ///< per-branch B_k of a sub-step
     std::vector<std::size_t> split_;           ///< elements whose step is split by an event
     std::vector<double> split_state_;          ///< their new w, sigma and memory, (branches + 2) each
-    double beyond_ = 0.0;                      ///< g just beyond the half-width
+    double beyond_ = 0.0;                      ///< g just beyond the half-width (or at it, see profile_ends_)
+    bool profile_ends_ = false;                ///< the half-width is the end of a tabulated profile
     double last_depth_ = 0.0;                  ///< depth at the end of the last step
     double latest_exit_ = 0.0;                 ///< see latest_exit()
     StepCoefficients step_;
