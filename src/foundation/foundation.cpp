@@ -75,6 +75,7 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
     // Beyond a tabulated profile nothing is known (not a rigid wall, as beyond a flat punch): the contact must stay
     // inside it.
     profile_ends_ = !profile.is_flat_punch() && !std::isfinite(beyond_);
+    profile_end_ = profile.max_radius();
     if (profile_ends_) beyond_ = profile.equivalent(half_width());
 }
 
@@ -226,7 +227,7 @@ double Foundation::trial_force(double depth_start, double depth_end) const {
 __attribute__((target_clones("avx2", "default"))) void Foundation::advance(double depth_start, double depth_end) {
     const double deepest = std::max(depth_start, depth_end);
     if (deepest > beyond_ && profile_ends_) {
-        throw InvalidInput("indenter.r", "[..., " + format_value(half_width()) + "]",
+        throw InvalidInput("indenter.r", "[..., " + format_value(profile_end_) + "]",
                            "the contact grows beyond the last tabulated radius at depth " + format_value(deepest) +
                                "; tabulate the profile further");
     }

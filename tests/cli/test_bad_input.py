@@ -193,7 +193,7 @@ BAD_CASES = [
     # a contact that outgrows a tabulated profile: an error, not a silent clamp at the table's end
     ("profile-too-short", case_text(indenter='[indenter]\nshape = "profile"\nr = [0.0, 2e-4, 4e-4]\n'
                                              'f = [0.0, 2e-6, 8e-6]\n'),
-     ["indenter.r", "4e-05", "beyond the last tabulated radius"]),
+     ["indenter.r", "0.0004", "beyond the last tabulated radius"]),
     ("impact-profile-too-short", case_text(indenter='[indenter]\nshape = "profile"\nr = [0.0, 2e-4, 4e-4]\n'
                                                     'f = [0.0, 2e-6, 8e-6]\nmass = 0.03\n',
                                            load='[load]\ncontrol = "impact"\nvelocity = 0.1\n', numerics=""),

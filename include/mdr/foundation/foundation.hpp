@@ -115,6 +115,7 @@ private:
     std::vector<double> split_state_;          ///< their new w, sigma and memory, (branches + 2) each
     double beyond_ = 0.0;                      ///< g just beyond the half-width (or at it, see profile_ends_)
     bool profile_ends_ = false;                ///< the half-width is the end of a tabulated profile
+    double profile_end_ = 0.0;                 ///< the profile's last radius (for the message)
     double last_depth_ = 0.0;                  ///< depth at the end of the last step
     double latest_exit_ = 0.0;                 ///< see latest_exit()
     StepCoefficients step_;
