@@ -9,6 +9,8 @@ namespace mdr::python {
 void bind_rheology(pybind11::module_& module);
 /// mdr.run and mdr.check: cases from TOML text, results as numpy arrays.
 void bind_run(pybind11::module_& module);
+/// mdr.Indenter: the profiles and their g(x).
+void bind_profile(pybind11::module_& module);
 /// mdr.sweep: a case over a grid of numeric keys.
 void bind_sweep(pybind11::module_& module);
 

@@ -18,10 +18,10 @@ from typing import Any, Mapping, Union
 import numpy as np
 
 from . import _mdr
-from ._mdr import InvalidInput, Material
+from ._mdr import Indenter, InvalidInput, Material
 from ._toml import to_toml
 
-__all__ = ["run", "check", "sweep", "Material", "Result", "InvalidInput", "__version__"]
+__all__ = ["run", "check", "sweep", "Material", "Indenter", "Result", "InvalidInput", "__version__"]
 __version__ = _mdr.__version__
 
 CaseLike = Union[str, os.PathLike, Mapping[str, Any]]

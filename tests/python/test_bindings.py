@@ -489,3 +489,21 @@ CASE_DICT_FOR_SWEEP = {
     "load": {"control": "displacement", "history": [[0.0, 0.0], [1.0, 1.0e-4], [2.0, 0.0]]},
     "numerics": {"elements": 100, "time_step": 0.02},
 }
+
+
+def test_indenters_and_their_equivalent_profiles():
+    """mdr.Indenter: g(x) of eq. (9) in closed form for the analytic shapes; a table reproduces the sphere."""
+    x = np.linspace(0.0, 1e-3, 11)
+    sphere = mdr.Indenter.sphere(R=0.01)
+    np.testing.assert_allclose(sphere.equivalent(x), x**2 / 0.01, rtol=1e-14, atol=0)
+    np.testing.assert_allclose(sphere.gap(x), x**2 / 0.02, rtol=1e-14, atol=0)
+    cone = mdr.Indenter.cone(slope_deg=10.0)
+    np.testing.assert_allclose(cone.equivalent(x), np.pi / 2 * np.tan(np.radians(10.0)) * x, rtol=1e-14)
+    assert sphere.contact_radius(1e-4) == pytest.approx(1e-3, rel=1e-14)
+    assert np.isinf(mdr.Indenter.flat(a=1e-3).equivalent(2e-3))
+    r = np.linspace(0.0, 2e-3, 41)
+    table = mdr.Indenter.profile(r=r, f=r**2 / 0.02)
+    np.testing.assert_allclose(table.equivalent(x), x**2 / 0.01, rtol=1e-10, atol=1e-18)
+    assert sphere.equivalent(np.ones((2, 3))).shape == (2, 3)
+    with pytest.raises(ValueError, match="R = -1"):
+        mdr.Indenter.sphere(R=-1.0)
