@@ -38,18 +38,25 @@ py::dict run_toml_case(const std::string& toml_text, const std::string& source) 
     history["F"] = to_array(result.force);
     history["a"] = to_array(result.radius);
     if (!result.velocity.empty()) history["v"] = to_array(result.velocity);
+    if (!result.tangential_force.empty()) {
+        history["u"] = to_array(result.tangential_displacement);
+        history["Fx"] = to_array(result.tangential_force);
+        history["c"] = to_array(result.stick_radius);
+    }
     py::dict profiles;
-    std::vector<double> t, r, p, w;
+    std::vector<double> t, r, p, w, tau;
     for (const auto& snapshot : result.snapshots) {
         t.insert(t.end(), snapshot.radius.size(), snapshot.time);
         r.insert(r.end(), snapshot.radius.begin(), snapshot.radius.end());
         p.insert(p.end(), snapshot.pressure.begin(), snapshot.pressure.end());
         w.insert(w.end(), snapshot.displacement.begin(), snapshot.displacement.end());
+        tau.insert(tau.end(), snapshot.shear_stress.begin(), snapshot.shear_stress.end());
     }
     profiles["t"] = to_array(t);
     profiles["r"] = to_array(r);
     profiles["p"] = to_array(p);
     profiles["w"] = to_array(w);
+    if (!result.tangential_force.empty()) profiles["tau"] = to_array(tau);
     py::dict out;
     out["history"] = history;
     out["profiles"] = profiles;

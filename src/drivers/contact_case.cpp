@@ -165,6 +165,10 @@ ResolvedNumerics resolve_numerics(const ContactCase& contact_case) {
     } else {
         resolved.time_step = 1.0;  // a history of jumps only: no step has a length
     }
+    if (!numerics.time_step && contact_case.tangential && contact_case.tangential->harmonic) {
+        const double period = 1.0 / contact_case.tangential->harmonic->frequency;
+        resolved.time_step = std::min(resolved.time_step, period / default_steps_per_period);
+    }
 
     if (numerics.half_width) {
         resolved.half_width = *numerics.half_width;

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "stepping.hpp"
+#include "tangential_stepping.hpp"
 
 namespace mdr::drivers {
 
@@ -17,8 +20,17 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
     const auto& indenter = *contact_case.indenter;
     foundation::Foundation foundation(material, indenter,
                                       numerics.half_width / static_cast<double>(numerics.elements), numerics.elements);
+    std::vector<double> cuts = contact_case.snapshots;
+    std::optional<TangentialStepper> tangential;
+    if (contact_case.tangential) {
+        tangential.emplace(*contact_case.tangential, material, foundation, contact_case.end_time);
+        const auto breakpoints = contact_case.tangential->breakpoints();
+        cuts.insert(cuts.end(), breakpoints.begin(), breakpoints.end());
+        std::sort(cuts.begin(), cuts.end());
+        cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    }
     const auto nodes = make_time_grid(contact_case.history, contact_case.end_time, numerics.time_step,
-                                      min_steps_per_segment, contact_case.snapshots);
+                                      min_steps_per_segment, cuts);
     CoefficientCache cache(material);
     const bool has_dashpot = material.viscosity() > 0.0;
     const double depth_scale = std::isfinite(indenter.equivalent(numerics.half_width))
@@ -30,6 +42,7 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
         result.depth.push_back(depth);
         result.force.push_back(force);
         result.radius.push_back(foundation.contact_radius());
+        if (tangential) tangential->record(result);
     };
     record(nodes.front().time, 0.0, 0.0);
 
@@ -41,6 +54,7 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
     auto take_due_snapshots = [&](double time) {
         for (; snapshot != snapshots.end() && *snapshot <= time; ++snapshot) {
             result.snapshots.push_back(take_snapshot(foundation, indenter, *snapshot));
+            if (tangential) tangential->add_shear_stress(result.snapshots.back());
         }
     };
     take_due_snapshots(nodes.front().time);
@@ -62,6 +76,7 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
                 new_depth = solve_depth(foundation, depth, guess, scale, target, 0.0, 0.0);
             }
             foundation.advance(depth, new_depth);
+            if (tangential) tangential->step(cache.get(time_step), nodes[n - 1].time, nodes[n].time);
             previous_depth = depth;
             depth = new_depth;
             force = foundation.total_force();
@@ -72,6 +87,7 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
         if (last_at_this_time) take_due_snapshots(nodes[n].time);
         if (progress && n % report_every == 0) progress(static_cast<double>(n) / static_cast<double>(nodes.size() - 1));
     }
+    if (tangential) result.tangential = tangential->outcome();
     return result;
 }
 

@@ -91,6 +91,44 @@ drivers::LoadHistory read_history(TableReader& load, drivers::Control control) {
     return history;
 }
 
+drivers::TangentialLoad read_tangential(TableReader& table, drivers::Control normal_control) {
+    if (normal_control == drivers::Control::impact) {
+        throw InvalidInput("tangential", "[...]", "not with load.control = \"impact\"");
+    }
+    table.reject_unknown({"friction", "control", "history", "amplitude", "frequency", "start", "end"});
+    drivers::TangentialLoad load;
+    load.friction = table.number("friction");
+    require_non_negative("tangential.friction", load.friction);
+    const std::string control = table.optional_string("control").value_or("displacement");
+    if (control == "displacement") load.control = drivers::TangentialControl::displacement;
+    else if (control == "force") load.control = drivers::TangentialControl::force;
+    else throw InvalidInput("tangential.control", "\"" + control + "\"", "unknown control; one of displacement, force");
+    const bool harmonic = table.has("amplitude") || table.has("frequency") || table.has("start") || table.has("end");
+    if (table.has("history") == harmonic) {
+        throw InvalidInput("tangential", "[...]", "give either history or amplitude, frequency, start, end");
+    }
+    if (table.has("history")) {
+        std::vector<drivers::LoadPoint> points;
+        const char* quantity = load.control == drivers::TangentialControl::force ? "Fx" : "u";
+        for (const auto& [t, value] : table.pairs("history", "t", quantity)) points.push_back({t, value});
+        load.history = drivers::LoadHistory(std::move(points), "tangential.history");
+        if (load.history->has_jump()) {
+            throw InvalidInput("tangential.history", table.text("history"),
+                               "must start at 0 and have no jumps (give each change a duration)");
+        }
+        return load;
+    }
+    drivers::HarmonicLoad wave{table.number("amplitude"), table.number("frequency"), table.number("start"),
+                               table.number("end")};
+    require_positive("tangential.frequency", wave.frequency);
+    if (!(wave.end > wave.start)) {
+        throw InvalidInput("tangential.end", format_value(wave.end),
+                           "must be after tangential.start = " + format_value(wave.start));
+    }
+    load.harmonic = wave;
+    return load;
+}
+
 }  // namespace
 
 drivers::ContactCase parse_case(std::string_view toml_text, const std::string& source) {
@@ -104,9 +142,6 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
     }
     TableReader root(root_table, "");
     root.reject_unknown({"title", "material", "indenter", "load", "tangential", "output", "numerics"});
-    if (root.has("tangential")) {
-        throw InvalidInput("tangential", "[...]", "tangential loading is not implemented in this version");
-    }
     const std::string title = root.optional_string("title").value_or("");
 
     auto material_table = root.table("material");
@@ -169,6 +204,12 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
         end_time = *end;
     }
 
+    std::optional<drivers::TangentialLoad> tangential;
+    if (auto table = root.table("tangential")) {
+        tangential = read_tangential(*table, control);
+        if (!load->has("end")) end_time = std::max(end_time, tangential->end_time());
+    }
+
     std::vector<double> snapshots;
     if (auto output = root.table("output")) {
         output->reject_unknown({"snapshots"});
@@ -209,7 +250,7 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
 
     return drivers::ContactCase{title,    std::move(material),  std::move(indenter), control, std::move(history),
                                 end_time, std::move(snapshots), numerics,            std::move(shear_material),
-                                impact};
+                                impact,   std::move(tangential)};
 }
 
 drivers::ContactCase load_case(const std::filesystem::path& path) {
@@ -233,6 +274,13 @@ std::string describe(const drivers::ContactCase& contact_case) {
                            contact_case.control == drivers::Control::force ? "force" : "displacement",
                            contact_case.history.points().size(), contact_case.history.start_time(),
                            contact_case.end_time);
+    }
+    if (const auto& tangential = contact_case.tangential) {
+        load += fmt::format("; tangential {} control, mu = {:.4g}, {}",
+                            tangential->control == drivers::TangentialControl::force ? "force" : "displacement",
+                            tangential->friction,
+                            tangential->harmonic ? fmt::format("harmonic at {:.4g} Hz", tangential->harmonic->frequency)
+                                                 : "piecewise-linear history");
     }
     return fmt::format("{}{} on {} half-space (G(0+) = {:.4g} Pa, G(inf) = {:.4g} Pa, {} branch(es)), {}",
                        contact_case.title.empty() ? "" : "\"" + contact_case.title + "\": ",

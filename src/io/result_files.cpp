@@ -58,6 +58,16 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
         summary["rebound_velocity"] = result.impact->rebound_velocity;
         summary["dissipated_energy"] = result.impact->dissipated_energy;
     }
+    if (result.tangential) {
+        const auto& tangential = *result.tangential;
+        summary["max_tangential_force"] = tangential.max_force;
+        if (tangential.min_stick_radius) summary["min_stick_radius"] = *tangential.min_stick_radius;
+        if (tangential.dissipated_energy_per_cycle) {
+            summary["dissipated_energy_per_cycle"] = *tangential.dissipated_energy_per_cycle;
+        }
+        summary["gross_sliding"] = tangential.sliding_from.has_value();
+        if (tangential.sliding_from) summary["sliding_from"] = *tangential.sliding_from;
+    }
     return summary.dump(2);
 }
 
@@ -65,10 +75,15 @@ void write_indentation_result(const fs::path& directory, const drivers::ContactC
                               const drivers::IndentationResult& result, double wall_seconds) {
     auto history = fmt::output_file((directory / "history.csv").string());
     const bool with_velocity = !result.velocity.empty();
-    history.print("{}\n", with_velocity ? "t,d,F,a,v" : "t,d,F,a");
+    const bool with_tangential = result.tangential.has_value();
+    history.print("t,d,F,a{}{}\n", with_velocity ? ",v" : "", with_tangential ? ",u,Fx,c" : "");
     for (std::size_t i = 0; i < result.time.size(); ++i) {
         history.print("{},{},{},{}", result.time[i], result.depth[i], result.force[i], result.radius[i]);
         if (with_velocity) history.print(",{}", result.velocity[i]);
+        if (with_tangential) {
+            history.print(",{},{},{}", result.tangential_displacement[i], result.tangential_force[i],
+                          result.stick_radius[i]);
+        }
         history.print("\n");
     }
     history.close();
@@ -79,11 +94,13 @@ void write_indentation_result(const fs::path& directory, const drivers::ContactC
 
     if (result.snapshots.empty()) return;
     auto profiles = fmt::output_file((directory / "profiles.csv").string());
-    profiles.print("t,r,p,w\n");
+    profiles.print("t,r,p,w{}\n", with_tangential ? ",tau" : "");
     for (const auto& snapshot : result.snapshots) {
         for (std::size_t j = 0; j < snapshot.radius.size(); ++j) {
-            profiles.print("{},{},{},{}\n", snapshot.time, snapshot.radius[j], snapshot.pressure[j],
+            profiles.print("{},{},{},{}", snapshot.time, snapshot.radius[j], snapshot.pressure[j],
                            snapshot.displacement[j]);
+            if (with_tangential) profiles.print(",{}", snapshot.shear_stress[j]);
+            profiles.print("\n");
         }
     }
     profiles.close();

@@ -186,10 +186,10 @@ BAD_CASES = [
      ["numerics.time_step", "= 0", "must be > 0"]),
     ("output-every-zero", case_text(numerics="[numerics]\noutput_every = 0\n"),
      ["numerics.output_every", "= 0", "integer >= 1"]),
-    # not implemented yet: a clear refusal
-    ("tangential", case_text(extra='[tangential]\nfriction = 0.3\ncontrol = "displacement"\n'
+    # tangential loading (more in test_tangential_input.py)
+    ("tangential", case_text(extra='[tangential]\nfriction = -0.3\ncontrol = "displacement"\n'
                                    'history = [[0.0, 0.0], [1.0, 1e-6]]\n'),
-     ["tangential", "not implemented"]),
+     ["tangential.friction", "-0.3", "must be >= 0"]),
     # a contact that outgrows a tabulated profile: an error, not a silent clamp at the table's end
     ("profile-too-short", case_text(indenter='[indenter]\nshape = "profile"\nr = [0.0, 2e-4, 4e-4]\n'
                                              'f = [0.0, 2e-6, 8e-6]\n'),

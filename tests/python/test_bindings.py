@@ -177,7 +177,7 @@ BAD_TEXTS = {
     "backwards": CASE_TEXT.replace("[1.0, 0.0]]", "[0.2, 0.0]]"),
     "snapshot-outside": CASE_TEXT.replace("[0.25, 0.5]", "[0.25, 5.0]"),
     "elements-zero": CASE_TEXT.replace("elements = 60", "elements = 0"),
-    "tangential": CASE_TEXT + '\n[tangential]\nfriction = 0.3\ncontrol = "displacement"\n'
+    "tangential": CASE_TEXT + '\n[tangential]\nfriction = -0.3\ncontrol = "displacement"\n'
                               'history = [[0.0, 0.0], [1.0, 1e-6]]\n',
     "impact": CASE_TEXT.replace('control = "displacement"', 'control = "impact"'),
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mdr/drivers/load_history.hpp"
+#include "mdr/drivers/tangential_load.hpp"
 #include "mdr/profile/profile.hpp"
 #include "mdr/rheology/rheology.hpp"
 
@@ -57,6 +58,7 @@ struct ContactCase {
     std::optional<rheology::Rheology> shear_material;   ///< the shear part alone, when a bulk part was folded in
     std::optional<ImpactLoad> impact;                   ///< with control = impact (the history is then the single
                                                         ///< point (0, 0) and end_time the latest end allowed)
+    std::optional<TangentialLoad> tangential;           ///< `[tangential]`, superimposed tangential loading
 };
 
 /// Elements on the half-width when `[numerics] elements` is not given. With the half-width 1.1 times the largest
@@ -79,7 +81,8 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// force control a material with a parallel dashpot (first order in dt there) takes at most 1/5000 of its
 /// shortest retardation time. Impact: the time step is the elastic contact time with the instantaneous spring
 /// modulus over default_steps (and the material-time rule), the half-width 1.2 times the elastic contact radius
-/// with the equilibrium modulus (an upper bound: the viscoelastic body is stiffer and dissipates).
+/// with the equilibrium modulus (an upper bound: the viscoelastic body is stiffer and dissipates). A harmonic
+/// tangential load caps the default time step at its period over default_steps_per_period.
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case);
 
 /// Scales of an elastic impact (energy balance m v0^2 / 2 = int F_el dd), used for the impact defaults.

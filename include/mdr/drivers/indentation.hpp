@@ -19,6 +19,7 @@ struct Snapshot {
     std::vector<double> radius;         ///< r [m], from 0 to 2a (or the half-width without contact)
     std::vector<double> pressure;       ///< p(r) [Pa]; 0 for r > a
     std::vector<double> displacement;   ///< normal surface displacement w(r) [m], positive into the body
+    std::vector<double> shear_stress;   ///< tau_xz(r) [Pa] (eq. 47) with tangential loading, else empty
 };
 
 /// The outcome of an impact (eq. 39).
@@ -29,6 +30,16 @@ struct ImpactOutcome {
     double dissipated_energy = 0.0;  ///< m (v0^2 - v(T)^2) / 2 [J]
 };
 
+/// The outcome of a tangential loading (handbook section 6).
+struct TangentialOutcome {
+    double max_force = 0.0;                             ///< largest |F_x| [N] over the run
+    std::optional<double> min_stick_radius;             ///< smallest stick radius c [m] (eq. 51) over the last full
+                                                        ///< harmonic cycle
+    std::optional<double> dissipated_energy_per_cycle;  ///< loop area of F_x du [J] over that cycle
+    std::optional<double> sliding_from;                 ///< force control: time [s] from which |F_x| > mu F_N, the
+                                                        ///< contact slides as a whole (gross sliding)
+};
+
 /// What a run produced: one row per written step.
 struct IndentationResult {
     std::vector<double> time;      ///< t [s]
@@ -36,8 +47,12 @@ struct IndentationResult {
     std::vector<double> force;     ///< F [N]
     std::vector<double> radius;    ///< a [m]
     std::vector<double> velocity;  ///< indenter velocity v = dd/dt [m/s] (impact only, else empty)
+    std::vector<double> tangential_displacement;  ///< u [m] (tangential loading only, else empty)
+    std::vector<double> tangential_force;         ///< F_x [N] (eq. 46; tangential loading only, else empty)
+    std::vector<double> stick_radius;             ///< c [m] (eq. 51; tangential loading only, else empty)
     std::vector<Snapshot> snapshots;
     std::optional<ImpactOutcome> impact;  ///< impact only
+    std::optional<TangentialOutcome> tangential;  ///< tangential loading only
     ResolvedNumerics numerics;     ///< what was used
     std::size_t steps = 0;         ///< time steps taken
 };
@@ -45,8 +60,10 @@ struct IndentationResult {
 /// Called now and then with the fraction of the simulated time done (0..1).
 using ProgressObserver = std::function<void(double fraction)>;
 
-/// Runs a displacement- or force-controlled case. Throws mdr::InvalidInput for problems found while running (the
-/// contact outgrowing the foundation).
+/// Runs a displacement- or force-controlled case, with its tangential loading when it has one (after each normal
+/// step the tangential layer takes the step's tangential increment). Throws mdr::InvalidInput for problems found
+/// while running (the contact outgrowing the foundation; key `tangential` when the tangential load changes while
+/// no element is in normal contact).
 IndentationResult run_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {});
 
 /// Runs an impact case (control = impact): m d'' = -F_N (eq. 37) with the trapezoidal rule, implicit in the

@@ -1,0 +1,96 @@
+#pragma once
+/// \file
+/// The tangential degree of freedom of the MDR foundation's elements with local Coulomb friction (handbook
+/// section 6, eq. 41-51).
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "mdr/foundation/step_coefficients.hpp"
+#include "mdr/rheology/rheology.hpp"
+
+namespace mdr::foundation {
+
+/// Tangential state of an element after a step.
+enum class TangentialState : std::uint8_t {
+    free,   ///< out of contact (or entering it in this step): force-free, relaxing
+    stick,  ///< in contact, moved with the indenter (eq. 50, first case)
+    slip,   ///< in contact, at the friction limit |F_x| = mu F_N (eq. 50, second case; also when held there)
+};
+
+/// Tangential elements beside a normal Foundation, at the same x_i = (i + 1/2) dx. Element i has the material's
+/// rheology with tangential stiffness k_x(t) = (8/3) G(t) dx (eq. 11, 41-43). State: the element's tangential
+/// displacement u_i [m] (eq. 42's u1D), one memory variable per relaxation branch (exact exponential update of
+/// step_coefficients.hpp) and its TangentialState. The element "stress" t_i = G_inf u + eta u' + sum_k G_k h_k
+/// [Pa] gives F_x,i = (8/3) dx t_i.
+///
+/// Rule of a step in which the indenter moves tangentially by du (eq. 50): an element in normal contact at the end
+/// of the step first sticks (u_i += du); if then |F_x,i| > mu F_N,i it slips and F_x,i = mu F_N,i with the sign of
+/// its trial force (the sign of du for an element at rest), u_i solved from that force. An element entering contact
+/// was force-free, so it carries no tangential force at entry; the rule takes its entry at the start of the step
+/// (first order in du for the elements entering while the indenter moves tangentially). Elements out of contact
+/// at the end of the step are force-free and keep relaxing (t_i = 0 solved each step). The dashpot of a material
+/// with eta > 0 sees the step's secant rate (exact for sticking elements under a linear motion, first order in
+/// dt for free and slipping ones).
+class TangentialLayer {
+public:
+    /// `count` elements of width `spacing` [m] of material `material`, friction coefficient `friction` (mu).
+    TangentialLayer(const rheology::Rheology& material, double friction, double spacing, std::size_t count);
+
+    /// Prepares a step of the given coefficients from the current state (call before trial_force/advance).
+    void begin_step(const StepCoefficients& coefficients);
+    /// Total tangential force [N] (eq. 46, both halves) the layer would carry after the prepared step with the
+    /// indenter moving by `increment` [m]; `normal_line_loads` q_z,i = F_N,i/dx [N/m] and `contact` are those of
+    /// the normal foundation at the end of the step. The state is not changed.
+    double trial_force(double increment, std::span<const double> normal_line_loads,
+                       std::span<const std::uint8_t> contact) const;
+    /// The largest |F_x| [N] the contact can carry at the end of the prepared step: mu F_N (gross sliding beyond).
+    double sliding_force(std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact) const;
+    /// The smallest increment [m] in the direction `direction` (+1 or -1) that puts every element in contact at its
+    /// friction limit (the onset of gross sliding) in the prepared step; 0 when nothing is in contact.
+    double sliding_increment(double direction, std::span<const double> normal_line_loads,
+                             std::span<const std::uint8_t> contact) const;
+    /// Advances the state over the prepared step (arguments as for trial_force).
+    void advance(double increment, std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact);
+
+    /// Total tangential force F_x [N] after the last step (eq. 46, both halves).
+    double total_force() const { return total_force_; }
+    /// dF_x/du [N/m] of the prepared step over the elements that stuck in the last step.
+    double stick_slope() const;
+    /// Stick radius c [m] (eq. 51): the edge of the stick zone around the centre, between the last sticking
+    /// element and the first slipping one, where the friction limit mu F_N(x) (linear between the two centres)
+    /// equals the sticking element's force. `contact_radius` when no element in contact slips, 0 when the centre
+    /// element slips or nothing is in contact.
+    double stick_radius(double contact_radius) const;
+    /// Tangential line load q_x,i = F_x,i / dx = (8/3) t_i [N/m] (eq. 45).
+    std::vector<double> line_loads() const;
+    /// Tangential element displacements u_i [m].
+    std::span<const double> displacements() const { return displacement_; }
+    /// State of each element after the last step.
+    std::span<const TangentialState> states() const { return state_; }
+
+private:
+    struct ElementStep {
+        double increment;  ///< du_i
+        double stress;     ///< t_i at the end of the step
+        TangentialState state;
+    };
+    ElementStep element_step(std::size_t i, double increment, double normal_line_load, bool contact) const;
+    double limit(double normal_line_load) const;
+
+    const rheology::Rheology& material_;
+    double friction_;
+    double spacing_;
+    std::vector<double> displacement_;      ///< u_i
+    std::vector<double> stress_;            ///< t_i at the end of the last step
+    std::vector<double> memory_;            ///< h_{k,i}, branch-major: memory_[k * n + i]
+    std::vector<TangentialState> state_;
+    std::vector<double> relaxed_;           ///< G_inf u_i + sum_k G_k E_k h_{k,i} for the prepared step
+    std::vector<double> limit_;             ///< mu F_N,i / ((8/3) dx) at the end of the last step [Pa]
+    StepCoefficients step_;
+    double total_force_ = 0.0;
+};
+
+}  // namespace mdr::foundation

@@ -1,0 +1,129 @@
+#include "tangential_stepping.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "mdr/contact/stress.hpp"
+#include "mdr/error.hpp"
+
+namespace mdr::drivers {
+namespace {
+
+// Relative width of the time window of the last cycle, for times that land on its bounds up to rounding.
+constexpr double cycle_tolerance = 1e-9;
+
+}  // namespace
+
+TangentialStepper::TangentialStepper(const TangentialLoad& load, const rheology::Rheology& material,
+                                     const foundation::Foundation& foundation, double simulated_end)
+    : load_(load),
+      foundation_(foundation),
+      layer_(material, load.friction, foundation.spacing(), foundation.size()),
+      cycle_(load.last_full_cycle(simulated_end)) {
+    if (cycle_) outcome_.min_stick_radius = std::numeric_limits<double>::infinity();
+    if (cycle_) outcome_.dissipated_energy_per_cycle = 0.0;
+}
+
+double TangentialStepper::solve_increment(double target, std::span<const double> q,
+                                          std::span<const std::uint8_t> contact) const {
+    // F_x(du) is continuous, piecewise linear and non-decreasing (each element clamps its force to +-mu F_N):
+    // bracket the root from the last increment outwards, then Illinois regula falsi (exact on a linear piece).
+    const auto residual = [&](double increment) { return layer_.trial_force(increment, q, contact) - target; };
+    const double tolerance = 1e-13 * std::max(std::abs(target), layer_.sliding_force(q, contact));
+    double step = std::max({std::abs(last_increment_), std::abs(displacement_) * 1e-6, 1e-12 * foundation_.half_width()});
+    double lower = last_increment_, upper = last_increment_;
+    double f_lower = residual(lower), f_upper = f_lower;
+    while (f_lower > 0.0) {
+        upper = lower;
+        f_upper = f_lower;
+        lower -= step;
+        step *= 2.0;
+        f_lower = residual(lower);
+    }
+    while (f_upper < 0.0) {
+        lower = upper;
+        f_lower = f_upper;
+        upper += step;
+        step *= 2.0;
+        f_upper = residual(upper);
+    }
+    int side = 0;
+    for (int iteration = 0; iteration < 200; ++iteration) {
+        if (std::abs(f_lower) <= tolerance) return lower;
+        if (std::abs(f_upper) <= tolerance) return upper;
+        const double middle = std::clamp((lower * f_upper - upper * f_lower) / (f_upper - f_lower), lower, upper);
+        const double f_middle = residual(middle);
+        if (f_middle < 0.0) {
+            lower = middle;
+            f_lower = f_middle;
+            if (side == -1) f_upper *= 0.5;
+            side = -1;
+        } else {
+            upper = middle;
+            f_upper = f_middle;
+            if (side == 1) f_lower *= 0.5;
+            side = 1;
+        }
+    }
+    return std::abs(f_lower) < std::abs(f_upper) ? lower : upper;
+}
+
+void TangentialStepper::step(const foundation::StepCoefficients& coefficients, double time_start, double time_end) {
+    const auto q = foundation_.line_loads();
+    const auto contact = foundation_.contact_flags();
+    const double target = load_.value(time_end);
+    const bool force_control = load_.control == TangentialControl::force;
+    const bool loaded = force_control ? target != 0.0 : target != displacement_;
+    if (loaded && foundation_.contact_count() == 0) {
+        throw InvalidInput("tangential", "t = " + format_value(time_end),
+                           force_control ? "a tangential force needs a normal contact, and there is none then"
+                                         : "the tangential displacement changes while there is no normal contact; "
+                                           "apply it while the normal load holds the contact");
+    }
+    layer_.begin_step(coefficients);
+    double increment = target - displacement_;
+    if (force_control) {
+        const double capacity = layer_.sliding_force(q, contact);
+        if (std::abs(target) > capacity) {
+            // Gross sliding: every element at its friction limit; u is where the sliding sets in.
+            if (!outcome_.sliding_from) outcome_.sliding_from = time_end;
+            increment = layer_.sliding_increment(target > 0.0 ? 1.0 : -1.0, q, contact);
+        } else {
+            increment = solve_increment(target, q, contact);
+        }
+    }
+    layer_.advance(increment, q, contact);
+    const double previous_force = force_;
+    displacement_ += increment;
+    last_increment_ = increment;
+    force_ = layer_.total_force();
+    stick_radius_ = layer_.stick_radius(foundation_.contact_radius());
+    outcome_.max_force = std::max(outcome_.max_force, std::abs(force_));
+    if (cycle_) {
+        const double slack = cycle_tolerance * (cycle_->second - cycle_->first);
+        if (time_start >= cycle_->first - slack && time_end <= cycle_->second + slack) {
+            // Loop area by the trapezoidal rule along the steps.
+            *outcome_.dissipated_energy_per_cycle += 0.5 * (previous_force + force_) * increment;
+        }
+        if (time_end >= cycle_->first - slack && time_end <= cycle_->second + slack) {
+            outcome_.min_stick_radius = std::min(*outcome_.min_stick_radius, stick_radius_);
+        }
+    }
+}
+
+void TangentialStepper::record(IndentationResult& result) const {
+    result.tangential_displacement.push_back(displacement_);
+    result.tangential_force.push_back(force_);
+    result.stick_radius.push_back(stick_radius_);
+}
+
+void TangentialStepper::add_shear_stress(Snapshot& snapshot) const {
+    const auto q = layer_.line_loads();
+    std::size_t inside = 0;
+    while (inside < q.size() && foundation_.position(inside) < snapshot.contact_radius) ++inside;
+    snapshot.shear_stress = contact::stress_from_line_load(foundation_.spacing(), std::span(q.data(), inside),
+                                                           snapshot.contact_radius, 0.0, snapshot.radius);
+}
+
+}  // namespace mdr::drivers

@@ -1,0 +1,47 @@
+#pragma once
+// The tangential loading of a displacement- or force-controlled run: steps the tangential layer after each normal
+// step and collects u, F_x, c, the shear stress of snapshots and the cycle measures of a harmonic.
+
+#include <optional>
+#include <utility>
+
+#include "mdr/drivers/indentation.hpp"
+#include "mdr/foundation/foundation.hpp"
+#include "mdr/foundation/tangential_layer.hpp"
+
+namespace mdr::drivers {
+
+/// Drives a TangentialLayer along the case's TangentialLoad beside a normal Foundation.
+class TangentialStepper {
+public:
+    /// `load` and `foundation` must outlive the stepper; `simulated_end` [s] is the run's last time.
+    TangentialStepper(const TangentialLoad& load, const rheology::Rheology& material,
+                      const foundation::Foundation& foundation, double simulated_end);
+
+    /// The tangential step over [time_start, time_end] after the foundation has advanced over it with
+    /// `coefficients`. Throws mdr::InvalidInput (key `tangential`) when the tangential load changes (displacement
+    /// control) or is not zero (force control) while no element is in normal contact.
+    void step(const foundation::StepCoefficients& coefficients, double time_start, double time_end);
+    /// Appends u, F_x and c of the current state to the result's rows.
+    void record(IndentationResult& result) const;
+    /// Fills the snapshot's shear stress tau_xz(r) (eq. 47) from the tangential line load, 0 at the contact edge.
+    void add_shear_stress(Snapshot& snapshot) const;
+    /// Maximum force, and over the last full harmonic cycle the minimum stick radius and the loop area.
+    const TangentialOutcome& outcome() const { return outcome_; }
+
+private:
+    double solve_increment(double target, std::span<const double> normal_line_loads,
+                           std::span<const std::uint8_t> contact) const;
+
+    const TangentialLoad& load_;
+    const foundation::Foundation& foundation_;
+    foundation::TangentialLayer layer_;
+    std::optional<std::pair<double, double>> cycle_;
+    double displacement_ = 0.0;
+    double force_ = 0.0;
+    double stick_radius_ = 0.0;
+    double last_increment_ = 0.0;
+    TangentialOutcome outcome_;
+};
+
+}  // namespace mdr::drivers

@@ -1,0 +1,137 @@
+#include "mdr/foundation/tangential_layer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mdr::foundation {
+namespace {
+
+constexpr double tangential_stiffness_factor = 8.0 / 3.0;  // k_x = (8/3) G dx, eq. (11), (41)
+constexpr double at_limit = 1e-9;                           // |t| within this fraction of the limit: at the limit
+
+}  // namespace
+
+TangentialLayer::TangentialLayer(const rheology::Rheology& material, double friction, double spacing,
+                                 std::size_t count)
+    : material_(material),
+      friction_(friction),
+      spacing_(spacing),
+      displacement_(count, 0.0),
+      stress_(count, 0.0),
+      memory_(count * material.terms().size(), 0.0),
+      state_(count, TangentialState::free),
+      relaxed_(count, 0.0),
+      limit_(count, 0.0) {}
+
+void TangentialLayer::begin_step(const StepCoefficients& coefficients) {
+    step_ = coefficients;
+    const std::size_t n = displacement_.size();
+    const double g_inf = material_.equilibrium_modulus();
+    for (std::size_t i = 0; i < n; ++i) relaxed_[i] = g_inf * displacement_[i];
+    const auto& terms = material_.terms();
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+        const double weight = terms[k].modulus * step_.decay[k];
+        const double* h = memory_.data() + k * n;
+        for (std::size_t i = 0; i < n; ++i) relaxed_[i] += weight * h[i];
+    }
+}
+
+double TangentialLayer::limit(double normal_line_load) const {
+    // |F_x,i| <= mu F_N,i with F_x,i = (8/3) dx t_i and F_N,i = q_z,i dx (eq. 50).
+    return friction_ * std::max(normal_line_load, 0.0) / tangential_stiffness_factor;
+}
+
+TangentialLayer::ElementStep TangentialLayer::element_step(std::size_t i, double increment, double normal_line_load,
+                                                           bool contact) const {
+    const double relaxed = relaxed_[i];
+    const double stiffness = step_.stiffness;
+    if (!contact) return {-relaxed / stiffness, 0.0, TangentialState::free};
+    const double trial = relaxed + stiffness * increment;
+    const double bound = limit(normal_line_load);
+    // An element held exactly at its limit (a slip zone at rest) is still in the slip zone of eq. (51).
+    if (std::abs(trial) < bound * (1.0 - at_limit)) return {increment, trial, TangentialState::stick};
+    if (std::abs(trial) <= bound) return {increment, trial, TangentialState::slip};
+    const double stress = std::copysign(bound, trial);
+    return {(stress - relaxed) / stiffness, stress, TangentialState::slip};
+}
+
+double TangentialLayer::trial_force(double increment, std::span<const double> normal_line_loads,
+                                    std::span<const std::uint8_t> contact) const {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < displacement_.size(); ++i) {
+        sum += element_step(i, increment, normal_line_loads[i], contact[i] != 0).stress;
+    }
+    return 2.0 * tangential_stiffness_factor * spacing_ * sum;
+}
+
+double TangentialLayer::sliding_force(std::span<const double> normal_line_loads,
+                                      std::span<const std::uint8_t> contact) const {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < displacement_.size(); ++i) {
+        if (contact[i]) sum += limit(normal_line_loads[i]);
+    }
+    return 2.0 * tangential_stiffness_factor * spacing_ * sum;
+}
+
+double TangentialLayer::sliding_increment(double direction, std::span<const double> normal_line_loads,
+                                          std::span<const std::uint8_t> contact) const {
+    double increment = 0.0;
+    bool any = false;
+    for (std::size_t i = 0; i < displacement_.size(); ++i) {
+        if (!contact[i]) continue;
+        const double reach = (direction * limit(normal_line_loads[i]) - relaxed_[i]) / step_.stiffness;
+        increment = any ? (direction > 0.0 ? std::max(increment, reach) : std::min(increment, reach)) : reach;
+        any = true;
+    }
+    return increment;
+}
+
+void TangentialLayer::advance(double increment, std::span<const double> normal_line_loads,
+                              std::span<const std::uint8_t> contact) {
+    const std::size_t n = displacement_.size();
+    const auto& terms = material_.terms();
+    double sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const ElementStep s = element_step(i, increment, normal_line_loads[i], contact[i] != 0);
+        displacement_[i] += s.increment;
+        for (std::size_t k = 0; k < terms.size(); ++k) {
+            double& h = memory_[k * n + i];
+            h = step_.decay[k] * h + step_.gain[k] * s.increment;
+        }
+        stress_[i] = s.stress;
+        state_[i] = s.state;
+        limit_[i] = limit(normal_line_loads[i]);
+        sum += s.stress;
+    }
+    total_force_ = 2.0 * tangential_stiffness_factor * spacing_ * sum;
+}
+
+double TangentialLayer::stick_slope() const {
+    const auto sticking = std::count(state_.begin(), state_.end(), TangentialState::stick);
+    return 2.0 * tangential_stiffness_factor * spacing_ * step_.stiffness * static_cast<double>(sticking);
+}
+
+double TangentialLayer::stick_radius(double contact_radius) const {
+    const auto first_slip = std::find(state_.begin(), state_.end(), TangentialState::slip);
+    const bool any_contact = std::any_of(state_.begin(), state_.end(),
+                                         [](TangentialState s) { return s != TangentialState::free; });
+    if (!any_contact) return 0.0;
+    if (first_slip == state_.end()) return contact_radius;
+    const auto j = static_cast<std::size_t>(first_slip - state_.begin());
+    if (j == 0 || state_[j - 1] != TangentialState::stick) {
+        return j == 0 ? 0.0 : (static_cast<double>(j)) * spacing_;
+    }
+    // The limit mu F_N(x), linear between the two centres, meets the sticking element's force.
+    const double inside = limit_[j - 1] - std::abs(stress_[j - 1]);
+    const double drop = limit_[j - 1] - limit_[j];
+    const double fraction = drop > 0.0 ? std::clamp(inside / drop, 0.0, 1.0) : 0.0;
+    return (static_cast<double>(j) - 0.5 + fraction) * spacing_;
+}
+
+std::vector<double> TangentialLayer::line_loads() const {
+    std::vector<double> q(stress_.size());
+    for (std::size_t i = 0; i < q.size(); ++i) q[i] = tangential_stiffness_factor * stress_[i];
+    return q;
+}
+
+}  // namespace mdr::foundation
