@@ -22,6 +22,10 @@ void add_run_command(CLI::App& app, int& exit_code) {
     command->callback([case_path, out, &exit_code] {
         exit_code = guarded([&] {
             const auto contact_case = io::load_case(*case_path);
+            if (contact_case.tangential_approximate) {
+                fmt::print(stderr, "mdr: warning: tangential loading of compressible or dissimilar bodies: the MDR "
+                                   "maps only the normal problem exactly, the tangential result is an approximation\n");
+            }
             const auto start = std::chrono::steady_clock::now();
             ProgressReporter progress;
             const auto result = drivers::run_case(contact_case, std::ref(progress));

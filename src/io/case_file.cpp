@@ -205,9 +205,12 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
     }
 
     std::optional<drivers::TangentialLoad> tangential;
+    bool approximate = false;
     if (auto table = root.table("tangential")) {
         tangential = read_tangential(*table, control);
         if (!load->has("end")) end_time = std::max(end_time, tangential->end_time());
+        // Exact only for elastically similar bodies (section 7): compressible or two bodies make it approximate.
+        approximate = shear_material.has_value() || indenter_table->has("material");
     }
 
     std::vector<double> snapshots;
@@ -250,7 +253,7 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
 
     return drivers::ContactCase{title,    std::move(material),  std::move(indenter), control, std::move(history),
                                 end_time, std::move(snapshots), numerics,            std::move(shear_material),
-                                impact,   std::move(tangential)};
+                                impact,   std::move(tangential), approximate};
 }
 
 drivers::ContactCase load_case(const std::filesystem::path& path) {

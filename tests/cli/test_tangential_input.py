@@ -74,3 +74,26 @@ def test_gross_sliding_is_reported(run_case):
     summary = json.loads((result.out / "summary.json").read_text())
     assert summary["gross_sliding"] is True
     assert 0.5 < summary["sliding_from"] <= 1.0
+
+
+@pytest.mark.parametrize("material", [
+    '[material]\nmodel = "standard"\nG_inf = 1.0e6\nG1 = 2.0e6\ntau1 = 0.1\nK = 3.0e6\n',
+    '[material]\nmodel = "standard"\nG_inf = 1.0e6\nG1 = 2.0e6\ntau1 = 0.1\n',
+], ids=["compressible", "two-bodies"])
+def test_approximate_tangential_cases_run_with_one_warning(run_case, material):
+    indenter = '[indenter]\nshape = "sphere"\nR = 0.01\n'
+    if "K =" not in material:
+        indenter += '[indenter.material]\nmodel = "elastic"\nG = 5.0e6\n'
+    result = run_case(case_text(material=material, indenter=indenter, load=LOAD, extra=HARMONIC))
+    assert result.returncode == 0, result.stderr
+    lines = result.stderr_lines
+    assert len(lines) == 1 and lines[0].startswith("mdr: warning:") and "approximation" in lines[0], lines
+    summary = json.loads((result.out / "summary.json").read_text())
+    assert summary["tangential_approximation"] is True
+
+
+def test_exact_tangential_case_has_no_warning(run_case):
+    result = run_case(tangential_case(HARMONIC))
+    assert result.returncode == 0, result.stderr
+    assert "warning" not in result.stderr
+    assert json.loads((result.out / "summary.json").read_text())["tangential_approximation"] is False

@@ -59,6 +59,9 @@ struct ContactCase {
     std::optional<ImpactLoad> impact;                   ///< with control = impact (the history is then the single
                                                         ///< point (0, 0) and end_time the latest end allowed)
     std::optional<TangentialLoad> tangential;           ///< `[tangential]`, superimposed tangential loading
+    /// True when tangential loading meets compressible or two different bodies: the MDR mapping is then exact for
+    /// the normal problem only (section 7) and the tangential result an approximation.
+    bool tangential_approximate = false;
 };
 
 /// Elements on the half-width when `[numerics] elements` is not given. With the half-width 1.1 times the largest
