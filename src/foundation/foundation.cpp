@@ -7,6 +7,7 @@
 #include <new>
 #include <optional>
 
+#include "branch_sums.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::foundation {
@@ -97,12 +98,7 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::begin_step(co
     const auto& terms = material_.terms();
     double* __restrict relaxed = relaxed_.data();
     const double* __restrict w = displacement_.data();
-    for (std::size_t i = 0; i < active_; ++i) relaxed[i] = g_inf * w[i];
-    for (std::size_t k = 0; k < terms.size(); ++k) {
-        const double weight = terms[k].modulus * step_.decay[k];
-        const double* __restrict h = memory_.data() + k * n;
-        for (std::size_t i = 0; i < active_; ++i) relaxed[i] += weight * h[i];
-    }
+    relaxed_sums(material_, step_, w, memory_.data(), n, active_, relaxed);
     if (eta == 0.0) return;
     // free_relaxed = relaxed - eta rate0 = relaxed + G_inf w + sum_k G_k h_k.
     double* __restrict free_relaxed = free_relaxed_.data();

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "branch_sums.hpp"
+
 namespace mdr::foundation {
 namespace {
 
@@ -26,14 +28,7 @@ TangentialLayer::TangentialLayer(const rheology::Rheology& material, double fric
 void TangentialLayer::begin_step(const StepCoefficients& coefficients) {
     step_ = coefficients;
     const std::size_t n = displacement_.size();
-    const double g_inf = material_.equilibrium_modulus();
-    for (std::size_t i = 0; i < n; ++i) relaxed_[i] = g_inf * displacement_[i];
-    const auto& terms = material_.terms();
-    for (std::size_t k = 0; k < terms.size(); ++k) {
-        const double weight = terms[k].modulus * step_.decay[k];
-        const double* h = memory_.data() + k * n;
-        for (std::size_t i = 0; i < n; ++i) relaxed_[i] += weight * h[i];
-    }
+    relaxed_sums(material_, step_, displacement_.data(), memory_.data(), n, n, relaxed_.data());
 }
 
 double TangentialLayer::limit(double normal_line_load) const {
