@@ -198,6 +198,16 @@ BAD_CASES = [
                                                     'f = [0.0, 2e-6, 8e-6]\nmass = 0.03\n',
                                            load='[load]\ncontrol = "impact"\nvelocity = 0.1\n', numerics=""),
      ["indenter.r", "beyond the last tabulated radius"]),
+    # compressible bodies (eq. 56)
+    ("bulk-modulus-zero", case_text(material=MATERIAL + "K = 0.0\n"), ["material.K", "= 0", "must be > 0"]),
+    ("bulk-modulus-nan", case_text(material=MATERIAL + "K = nan\n"), ["material.K", "nan"]),
+    ("bulk-table-without-model", case_text(material=MATERIAL + "[material.bulk]\nK = 3.0e6\n"),
+     ["material.bulk.model", "needs a model"]),
+    ("bulk-both", case_text(material=MATERIAL + 'K = 3.0e6\n[material.bulk]\nmodel = "elastic"\nK = 3.0e6\n'),
+     ["material.K", "either K or [material.bulk]"]),
+    ("bulk-viscosity-negative",
+     case_text(material=MATERIAL + '[material.bulk]\nmodel = "kelvin_voigt"\nK = 3.0e6\neta = -1.0\n'),
+     ["material.bulk.eta", "-1", "must be > 0"]),
     # impact
     ("impact-with-history", case_text(indenter=INDENTER + "mass = 0.03\n",
                                       load='[load]\ncontrol = "impact"\nvelocity = 1.0\n'

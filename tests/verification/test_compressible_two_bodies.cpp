@@ -117,5 +117,39 @@ history = [[0.0, {}], [1.0, {}]]
     }
 }
 
+TEST(TwoBodies, SphereCreepWithTwoViscoelasticBodies) {
+    // A standard-solid half-space and a standard-solid indenter: J = J1 + J2 (eq. 8), both from Table 1; creep
+    // under a constant force F0 by eq. (34).
+    const double R = 0.01, F0 = 0.5;
+    const auto result = run_toml(fmt::format(R"(
+[material]
+model = "standard"
+G_inf = 1.0e6
+G1 = 3.0e6
+tau1 = 0.2
+[indenter]
+shape = "sphere"
+R = {}
+[indenter.material]
+model = "standard"
+G_inf = 4.0e6
+G1 = 2.0e6
+tau1 = 0.05
+[load]
+control = "force"
+history = [[0.0, {}], [1.0, {}]]
+)",
+                                             R, F0, F0));
+    const auto depth = [&](double t) {
+        const double creep = reference::standard_solid_creep(1e6, 3e6, 0.2, t) +
+                             reference::standard_solid_creep(4e6, 2e6, 0.05, t);
+        return std::pow(3 * F0 * creep / (16 * std::sqrt(R)), 2.0 / 3.0);
+    };
+    for (std::size_t i = 1; i < result.time.size(); ++i) {
+        // 1e-4 of the final depth at every written time.
+        EXPECT_NEAR(result.depth[i], depth(result.time[i]), 1e-4 * depth(1.0)) << "t = " << result.time[i];
+    }
+}
+
 }  // namespace
 }  // namespace mdr
