@@ -85,6 +85,27 @@ def pressure_profiles(profiles: Mapping[str, np.ndarray], axes=None):
     return axes
 
 
+def shear_stress_profiles(profiles: Mapping[str, np.ndarray], axes=None):
+    """Shear stress tau_xz(r) (eq. 47) at each snapshot time (profiles.csv with tangential loading)."""
+    axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
+    for time in np.unique(profiles["t"]):
+        rows = profiles["t"] == time
+        axes.plot(profiles["r"][rows], profiles["tau"][rows], label=f"t = {time:.4g} s")
+    axes.set(xlabel="radius r [m]", ylabel="shear stress tau_xz [Pa]", title="Shear stress profiles")
+    axes.legend()
+    return axes
+
+
+def tangential_loop(history: Mapping[str, np.ndarray], axes=None):
+    """The tangential force over the tangential displacement (the fretting hysteresis loop), and the stick radius
+    over time on a second figure axis."""
+    axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
+    axes.plot(history["u"], history["Fx"], color="C0")
+    axes.set(xlabel="tangential displacement u [m]", ylabel="tangential force F_x [N]",
+             title="Tangential force-displacement loop")
+    return axes
+
+
 def material_functions(functions: Mapping[str, np.ndarray], axes=None):
     """Relaxation G(t) and creep J(t) on log axes (functions.csv of `mdr material`; J_shear too if present)."""
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
@@ -131,8 +152,8 @@ def sweep_map(sweep: Mapping[str, np.ndarray], value: str, axes=None):
 
 
 def plot_directory(directory: str) -> list[str]:
-    """PNG figures for a result directory: of `mdr run` (force_depth, force_time, contact_radius and, with
-    profiles, pressure), of `mdr material` (material, dynamic) or of `mdr sweep` (sweep: max_force, or the
+    """PNG figures for a result directory: of `mdr run` (force_depth, force_time, contact_radius, with
+    tangential loading tangential_loop, and with profiles pressure and shear_stress), of `mdr material` (material, dynamic) or of `mdr sweep` (sweep: max_force, or the
     restitution for impacts, over the varied keys). Returns their paths."""
     def path(name):
         return os.path.join(directory, name)
@@ -143,8 +164,13 @@ def plot_directory(directory: str) -> list[str]:
         for name, draw in (("force_depth", force_depth), ("force_time", force_time),
                            ("contact_radius", contact_radius)):
             written.append(save(draw(history), path(name + ".png")))
+        if "Fx" in history:
+            written.append(save(tangential_loop(history), path("tangential_loop.png")))
         if os.path.exists(path("profiles.csv")):
-            written.append(save(pressure_profiles(read_csv(path("profiles.csv"))), path("pressure.png")))
+            profiles = read_csv(path("profiles.csv"))
+            written.append(save(pressure_profiles(profiles), path("pressure.png")))
+            if "tau" in profiles:
+                written.append(save(shear_stress_profiles(profiles), path("shear_stress.png")))
     if os.path.exists(path("functions.csv")):
         written.append(save(material_functions(read_csv(path("functions.csv"))), path("material.png")))
     if os.path.exists(path("dynamic.csv")):

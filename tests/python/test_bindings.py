@@ -423,6 +423,10 @@ def test_every_plot_function_runs_headless(result_directory, file_result, tmp_pa
         "dynamic_moduli": lambda: mdr.plot.dynamic_moduli(
             {"omega": times, "storage": material.complex_modulus(times).real,
              "loss": material.complex_modulus(times).imag}),
+        "shear_stress_profiles": lambda: mdr.plot.shear_stress_profiles(
+            {"t": np.zeros(3), "r": np.array([0.0, 1e-4, 2e-4]), "tau": np.array([1.0, 2.0, 0.0])}),
+        "tangential_loop": lambda: mdr.plot.tangential_loop(
+            {"u": np.array([0.0, 1e-6, 0.0]), "Fx": np.array([0.0, 0.1, 0.05])}),
         "sweep_map": lambda: mdr.plot.sweep_map(
             {"material.tau1": np.array([0.1, 1.0, 0.1, 1.0]), "material.G1": np.array([1.0, 1.0, 2.0, 2.0]),
              "max_force": np.array([1.0, 2.0, 3.0, 4.0])}, "max_force"),
