@@ -74,31 +74,28 @@ def contact_radius(history: Mapping[str, np.ndarray], axes=None):
     return axes
 
 
-def pressure_profiles(profiles: Mapping[str, np.ndarray], axes=None):
-    """Pressure p(r) at each snapshot time."""
+def _profiles(profiles: Mapping[str, np.ndarray], column: str, ylabel: str, title: str, axes=None):
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     for time in np.unique(profiles["t"]):
         rows = profiles["t"] == time
-        axes.plot(profiles["r"][rows], profiles["p"][rows], label=f"t = {time:.4g} s")
-    axes.set(xlabel="radius r [m]", ylabel="pressure p [Pa]", title="Pressure profiles")
+        axes.plot(profiles["r"][rows], profiles[column][rows], label=f"t = {time:.4g} s")
+    axes.set(xlabel="radius r [m]", ylabel=ylabel, title=title)
     axes.legend()
     return axes
+
+
+def pressure_profiles(profiles: Mapping[str, np.ndarray], axes=None):
+    """Pressure p(r) (eq. 23) at each snapshot time."""
+    return _profiles(profiles, "p", "pressure p [Pa]", "Pressure profiles", axes)
 
 
 def shear_stress_profiles(profiles: Mapping[str, np.ndarray], axes=None):
     """Shear stress tau_xz(r) (eq. 47) at each snapshot time (profiles.csv with tangential loading)."""
-    axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
-    for time in np.unique(profiles["t"]):
-        rows = profiles["t"] == time
-        axes.plot(profiles["r"][rows], profiles["tau"][rows], label=f"t = {time:.4g} s")
-    axes.set(xlabel="radius r [m]", ylabel="shear stress tau_xz [Pa]", title="Shear stress profiles")
-    axes.legend()
-    return axes
+    return _profiles(profiles, "tau", "shear stress tau_xz [Pa]", "Shear stress profiles", axes)
 
 
 def tangential_loop(history: Mapping[str, np.ndarray], axes=None):
-    """The tangential force over the tangential displacement (the fretting hysteresis loop), and the stick radius
-    over time on a second figure axis."""
+    """The tangential force over the tangential displacement (the fretting hysteresis loop)."""
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     axes.plot(history["u"], history["Fx"], color="C0")
     axes.set(xlabel="tangential displacement u [m]", ylabel="tangential force F_x [N]",

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "mdr/contact/stress.hpp"
+#include "monotone_root.hpp"
 
 namespace mdr::drivers {
 namespace {
@@ -37,50 +38,8 @@ double solve_depth(const foundation::Foundation& foundation, double depth_start,
         start -= f_start / slope;
         f_start = residual(start);
     }
-    double lower = start;
-    double upper = start;
-    double f_lower = f_start;
-    double f_upper = f_start;
-    double step = scale;
-    // Expand the bracket from the guess downwards or upwards (only one of the two loops runs).
-    while (f_lower > 0.0) {
-        upper = lower;
-        f_upper = f_lower;
-        lower -= step;
-        step *= 2.0;
-        f_lower = residual(lower);
-    }
-    while (f_upper <= 0.0) {
-        lower = upper;
-        f_lower = f_upper;
-        upper += step;
-        step *= 2.0;
-        f_upper = residual(upper);
-    }
-    // Now f(lower) <= 0 < f(upper). Illinois regula falsi; bisection for the zero-force plateau.
-    const double depth_tolerance = 1e-15 * std::max(std::abs(upper), scale);
-    int side = 0;
-    for (int iteration = 0; iteration < 200 && upper - lower > depth_tolerance; ++iteration) {
-        double middle = 0.5 * (lower + upper);
-        if (!plateau && f_upper > f_lower) {
-            middle = (lower * f_upper - upper * f_lower) / (f_upper - f_lower);
-            middle = std::clamp(middle, lower, upper);
-        }
-        const double f_middle = residual(middle);
-        if (!plateau && std::abs(f_middle) <= force_tolerance) return middle;
-        if (f_middle <= 0.0) {
-            lower = middle;
-            f_lower = f_middle;
-            if (side == -1) f_upper *= 0.5;
-            side = -1;
-        } else {
-            upper = middle;
-            f_upper = f_middle;
-            if (side == 1) f_lower *= 0.5;
-            side = 1;
-        }
-    }
-    return plateau ? lower : lower - f_lower * (upper - lower) / (f_upper - f_lower);
+    return monotone_root(residual, start, f_start, scale, force_tolerance, 1e-15 * std::max(std::abs(start), scale),
+                         plateau);
 }
 
 Snapshot take_snapshot(const foundation::Foundation& foundation, const profile::Profile& indenter, double time) {

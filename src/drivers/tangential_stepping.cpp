@@ -6,6 +6,7 @@
 
 #include "mdr/contact/stress.hpp"
 #include "mdr/error.hpp"
+#include "monotone_root.hpp"
 
 namespace mdr::drivers {
 namespace {
@@ -28,45 +29,12 @@ TangentialStepper::TangentialStepper(const TangentialLoad& load, const rheology:
 double TangentialStepper::solve_increment(double target, std::span<const double> q,
                                           std::span<const std::uint8_t> contact) const {
     // F_x(du) is continuous, piecewise linear and non-decreasing (each element clamps its force to +-mu F_N):
-    // bracket the root from the last increment outwards, then Illinois regula falsi (exact on a linear piece).
+    // the shared bracket and Illinois regula falsi from the last increment (exact on a linear piece).
     const auto residual = [&](double increment) { return layer_.trial_force(increment, q, contact) - target; };
     const double tolerance = 1e-13 * std::max(std::abs(target), layer_.sliding_force(q, contact));
     double step = std::max({std::abs(last_increment_), std::abs(displacement_) * 1e-6, 1e-12 * foundation_.half_width()});
-    double lower = last_increment_, upper = last_increment_;
-    double f_lower = residual(lower), f_upper = f_lower;
-    while (f_lower > 0.0) {
-        upper = lower;
-        f_upper = f_lower;
-        lower -= step;
-        step *= 2.0;
-        f_lower = residual(lower);
-    }
-    while (f_upper < 0.0) {
-        lower = upper;
-        f_lower = f_upper;
-        upper += step;
-        step *= 2.0;
-        f_upper = residual(upper);
-    }
-    int side = 0;
-    for (int iteration = 0; iteration < 200; ++iteration) {
-        if (std::abs(f_lower) <= tolerance) return lower;
-        if (std::abs(f_upper) <= tolerance) return upper;
-        const double middle = std::clamp((lower * f_upper - upper * f_lower) / (f_upper - f_lower), lower, upper);
-        const double f_middle = residual(middle);
-        if (f_middle < 0.0) {
-            lower = middle;
-            f_lower = f_middle;
-            if (side == -1) f_upper *= 0.5;
-            side = -1;
-        } else {
-            upper = middle;
-            f_upper = f_middle;
-            if (side == 1) f_lower *= 0.5;
-            side = 1;
-        }
-    }
-    return std::abs(f_lower) < std::abs(f_upper) ? lower : upper;
+    return monotone_root(residual, last_increment_, residual(last_increment_), step, tolerance,
+                         1e-15 * std::max(std::abs(last_increment_), step), false);
 }
 
 void TangentialStepper::step(const foundation::StepCoefficients& coefficients, double time_start, double time_end) {
