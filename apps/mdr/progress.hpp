@@ -1,5 +1,6 @@
 #pragma once
-// Progress on stderr for long runs: a bar on a terminal, a line every 10% otherwise; silent for short runs.
+// Progress of a long run on a terminal: a bar on stderr, cleared when the run ends or fails, so that a failure
+// still leaves exactly one error line. Nothing when stderr is not a terminal, or for runs under a second.
 
 #include <chrono>
 
@@ -9,6 +10,9 @@ namespace mdr::cli {
 class ProgressReporter {
 public:
     ProgressReporter();
+    ~ProgressReporter();
+    ProgressReporter(const ProgressReporter&) = delete;
+    ProgressReporter& operator=(const ProgressReporter&) = delete;
     /// Reports `fraction` (0..1) done.
     void operator()(double fraction);
     /// Clears the bar, if one was drawn.
@@ -18,7 +22,6 @@ private:
     std::chrono::steady_clock::time_point start_;
     bool terminal_;
     bool drawn_ = false;
-    int last_decile_ = -1;
 };
 
 }  // namespace mdr::cli
