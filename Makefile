@@ -3,19 +3,23 @@ BUILD_DIR := build
 PYTHON := /usr/bin/python3
 JOBS ?= $(shell nproc)
 
-.PHONY: deps build test demo bench figures clean
+.PHONY: deps configure build test demo bench figures clean
 
 deps:
 	@scripts/install-deps
 
-build: deps
+configure: deps
 	@cmake --preset release >/dev/null
+
+build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
 test: build
 	@ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
 
-demo: build
+# The demo builds only what it runs: the command line and the Python module for the figures.
+demo: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target mdr _mdr
 	@$(BUILD_DIR)/bin/mdr run examples/default.toml --out out/demo
 	@PYTHONPATH=$(BUILD_DIR)/python MPLBACKEND=Agg $(PYTHON) -m mdr plot out/demo
 

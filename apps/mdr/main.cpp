@@ -2,8 +2,10 @@
 
 #include "commands.hpp"
 
+#include <csignal>
 #include <cstdio>
 
+#include "interrupt.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::cli {
@@ -12,6 +14,9 @@ int guarded(const std::function<void()>& body) {
     try {
         body();
         return 0;
+    } catch (const Interrupted& error) {
+        std::fprintf(stderr, "mdr: %s\n", error.what());
+        return 128 + (received_signal() != 0 ? received_signal() : SIGINT);
     } catch (const InvalidInput& error) {
         std::fprintf(stderr, "mdr: error: %s\n", error.what());
         return 2;
@@ -27,6 +32,7 @@ int main(int argc, char** argv) {
     CLI::App app{"mdr: viscoelastic contact mechanics by the Method of Dimensionality Reduction"};
     app.set_version_flag("--version", std::string("mdr ") + MDR_VERSION);
     app.require_subcommand(1);
+    mdr::cli::install_interrupt_handlers();
     int exit_code = 0;
     mdr::cli::add_run_command(app, exit_code);
     mdr::cli::add_check_command(app, exit_code);
@@ -35,8 +41,9 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
-        const int code = app.exit(error);
-        return code == 0 ? 0 : 2;
+        if (error.get_exit_code() == 0) return app.exit(error);  // --help, --version
+        std::fprintf(stderr, "mdr: error: %s (see mdr --help)\n", error.what());
+        return 2;
     }
     return exit_code;
 }

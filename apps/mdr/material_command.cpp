@@ -3,10 +3,11 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/material_table.hpp"
-#include "mdr/io/result_files.hpp"
+#include "mdr/io/result_directory.hpp"
 
 namespace mdr::cli {
 namespace {
@@ -41,18 +42,21 @@ void add_material_command(CLI::App& app, int& exit_code) {
     auto times = std::make_shared<std::string>();
     auto omegas = std::make_shared<std::string>();
     command->add_option("case", *case_path, "The TOML case file")->required();
-    command->add_option("--out,-o", *out, "Result directory (replaced if it exists)")->required();
+    command->add_option("--out,-o", *out, "Result directory (created, or replaced if mdr wrote it)")->required();
     command->add_option("--times", *times, "Comma-separated times t1,t2,... [s] (default: log grid)");
     command->add_option("--omegas", *omegas, "Comma-separated angular frequencies [rad/s] (default: log grid)");
     command->callback([=, &exit_code] {
         exit_code = guarded([&] {
+            const io::ResultDirectory directory(*out, "--out", {*case_path});
             const auto contact_case = io::load_case(*case_path);
             const auto& material = contact_case.material;
             const auto t = times->empty() ? io::default_times(material) : parse_list(*times, "--times");
             const auto w = omegas->empty() ? io::default_omegas(material) : parse_list(*omegas, "--omegas");
-            io::write_directory_atomically(*out, [&](const std::filesystem::path& directory) {
-                io::write_material_tables(directory, material, contact_case.shear_material, t, w);
-            });
+            directory.write(
+                [&](const std::filesystem::path& files) {
+                    io::write_material_tables(files, material, contact_case.shear_material, t, w);
+                },
+                received_signal);
             fmt::print("{} times, {} frequencies written to {}/ (functions.csv, dynamic.csv)\n", t.size(), w.size(),
                        *out);
         });

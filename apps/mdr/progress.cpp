@@ -1,5 +1,7 @@
 #include "progress.hpp"
 
+#include "interrupt.hpp"
+
 #include <unistd.h>
 
 #include <cstdio>
@@ -11,6 +13,7 @@ ProgressReporter::ProgressReporter() : start_(std::chrono::steady_clock::now()),
 ProgressReporter::~ProgressReporter() { finish(); }
 
 void ProgressReporter::operator()(double fraction) {
+    throw_if_interrupted();
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     if (!terminal_ || elapsed < 1.0 || fraction <= 0.0) return;
     const double left = elapsed * (1.0 - fraction) / fraction;

@@ -13,7 +13,7 @@ public:
     ~ProgressReporter();
     ProgressReporter(const ProgressReporter&) = delete;
     ProgressReporter& operator=(const ProgressReporter&) = delete;
-    /// Reports `fraction` (0..1) done.
+    /// Reports `fraction` (0..1) done; throws mdr::Interrupted once Ctrl-C or SIGTERM was received.
     void operator()(double fraction);
     /// Clears the bar, if one was drawn.
     void finish();

@@ -6,8 +6,10 @@
 #include <chrono>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/io/case_file.hpp"
+#include "mdr/io/result_directory.hpp"
 #include "mdr/io/result_files.hpp"
 #include "progress.hpp"
 
@@ -18,9 +20,10 @@ void add_run_command(CLI::App& app, int& exit_code) {
     auto case_path = std::make_shared<std::string>();
     auto out = std::make_shared<std::string>();
     command->add_option("case", *case_path, "The TOML case file")->required();
-    command->add_option("--out,-o", *out, "Result directory (replaced if it exists)")->required();
+    command->add_option("--out,-o", *out, "Result directory (created, or replaced if mdr wrote it)")->required();
     command->callback([case_path, out, &exit_code] {
         exit_code = guarded([&] {
+            const io::ResultDirectory directory(*out, "--out", {*case_path});
             const auto contact_case = io::load_case(*case_path);
             if (contact_case.tangential_approximate) {
                 fmt::print(stderr, "mdr: warning: tangential loading of compressible or dissimilar bodies: the MDR "
@@ -31,9 +34,11 @@ void add_run_command(CLI::App& app, int& exit_code) {
             const auto result = drivers::run_case(contact_case, std::ref(progress));
             progress.finish();
             const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            io::write_directory_atomically(*out, [&](const std::filesystem::path& directory) {
-                io::write_indentation_result(directory, contact_case, result, wall);
-            });
+            directory.write(
+                [&](const std::filesystem::path& files) {
+                    io::write_indentation_result(files, contact_case, result, wall);
+                },
+                received_signal);
             const double max_force = *std::max_element(result.force.begin(), result.force.end());
             const double max_depth = *std::max_element(result.depth.begin(), result.depth.end());
             const double max_radius = *std::max_element(result.radius.begin(), result.radius.end());

@@ -9,8 +9,9 @@
 #include <thread>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 #include "mdr/error.hpp"
-#include "mdr/io/result_files.hpp"
+#include "mdr/io/result_directory.hpp"
 #include "mdr/io/sweep.hpp"
 
 namespace mdr::cli {
@@ -21,6 +22,7 @@ class SweepProgress {
 public:
     SweepProgress() : start_(std::chrono::steady_clock::now()), terminal_(isatty(STDERR_FILENO) != 0) {}
     void operator()(std::size_t done, std::size_t total) {
+        throw_if_interrupted();
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
         const double rate = elapsed > 0.0 ? static_cast<double>(done) / elapsed : 0.0;
         const double left = rate > 0.0 ? static_cast<double>(total - done) / rate : 0.0;
@@ -53,10 +55,11 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
                         "KEY=START:STOP:COUNT[:log] or KEY=v1,v2,... (dotted key, e.g. material.tau1); several make "
                         "a cartesian product")
         ->required();
-    command->add_option("--out,-o", *out, "Result directory (replaced if it exists)")->required();
+    command->add_option("--out,-o", *out, "Result directory (created, or replaced if mdr wrote it)")->required();
     command->add_option("--jobs,-j", *jobs, "Parallel runs (default: all cores)")->check(CLI::PositiveNumber);
     command->callback([=, &exit_code] {
         exit_code = guarded([&] {
+            const io::ResultDirectory directory(*out, "--out", {*case_path});
             std::ifstream file(*case_path);
             if (!file) throw InvalidInput("case", *case_path, "cannot be read (no such file, or no permission)");
             std::ostringstream text;
@@ -66,12 +69,16 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
             io::validate_sweep(text.str(), *case_path, axes);
             SweepProgress progress;
             const auto rows = io::run_sweep(text.str(), *case_path, axes, *jobs, std::ref(progress));
-            io::write_directory_atomically(*out, [&](const std::filesystem::path& directory) {
-                io::write_sweep_csv(directory, axes, rows);
-            });
+            directory.write([&](const std::filesystem::path& files) { io::write_sweep_csv(files, axes, rows); },
+                            received_signal);
             std::size_t failed = 0;
             for (const auto& row : rows) failed += row.error.empty() ? 0 : 1;
             fmt::print("{} runs on {} jobs written to {}/sweep.csv\n", rows.size(), *jobs, *out);
+            if (failed == rows.size()) {
+                throw std::runtime_error(fmt::format("every one of the {} runs failed (the messages are in the error "
+                                                     "column); the first: {}",
+                                                     rows.size(), rows.front().error));
+            }
             if (failed > 0) {
                 fmt::print(stderr, "mdr sweep: {} of {} runs failed; their messages are in the error column\n",
                            failed, rows.size());

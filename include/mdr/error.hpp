@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The one exception type for bad input, and a helper that formats its message.
+/// The exception type for bad input (with a helper that formats its message), and the one for a stop on request.
 
 #include <stdexcept>
 #include <string>
@@ -28,6 +28,13 @@ private:
     std::string key_;
     std::string value_;
     std::string rule_;
+};
+
+/// Thrown when a run, a sweep or the writing of a result is stopped on request (Ctrl-C, SIGTERM, a caller's
+/// cancellation): nothing was written.
+class Interrupted : public std::runtime_error {
+public:
+    Interrupted() : std::runtime_error("interrupted; no result was written") {}
 };
 
 /// Formats a double for an error message: shortest representation that round-trips.

@@ -148,34 +148,60 @@ def sweep_map(sweep: Mapping[str, np.ndarray], value: str, axes=None):
     return axes
 
 
+MANIFEST = ".mdr-result"  # include/mdr/io/result_directory.hpp: the files mdr wrote into a result directory
+
+
+def _listed_files(directory: str) -> set[str] | None:
+    try:
+        with open(os.path.join(directory, MANIFEST), encoding="utf-8") as handle:
+            return {line.rstrip("\n") for line in handle if line.strip() and not line.startswith("#")}
+    except FileNotFoundError:
+        return None
+
+
 def plot_directory(directory: str) -> list[str]:
     """PNG figures for a result directory: of `mdr run` (force_depth, force_time, contact_radius, with
-    tangential loading tangential_loop, and with profiles pressure and shear_stress), of `mdr material` (material, dynamic) or of `mdr sweep` (sweep: max_force, or the
-    restitution for impacts, over the varied keys). Returns their paths."""
+    tangential loading tangential_loop, and with profiles pressure and shear_stress), of `mdr material` (material,
+    dynamic) or of `mdr sweep` (sweep: max_force, or the restitution for impacts, over the varied keys). Returns
+    their paths. The figures are added to the directory's manifest, so that mdr may still replace the directory;
+    a file of the same name that mdr did not write is never overwritten (ValueError)."""
+    listed = _listed_files(directory)
+
     def path(name):
         return os.path.join(directory, name)
 
+    def figure(name):
+        target = path(name + ".png")
+        if os.path.lexists(target) and (listed is None or name + ".png" not in listed):
+            raise ValueError(f"{target}: exists and was not written by mdr; not overwritten")
+        return target
+
     written = []
-    if os.path.exists(path("history.csv")):
-        history = read_csv(path("history.csv"))
-        for name, draw in (("force_depth", force_depth), ("force_time", force_time),
-                           ("contact_radius", contact_radius)):
-            written.append(save(draw(history), path(name + ".png")))
-        if "Fx" in history:
-            written.append(save(tangential_loop(history), path("tangential_loop.png")))
-        if os.path.exists(path("profiles.csv")):
-            profiles = read_csv(path("profiles.csv"))
-            written.append(save(pressure_profiles(profiles), path("pressure.png")))
-            if "tau" in profiles:
-                written.append(save(shear_stress_profiles(profiles), path("shear_stress.png")))
-    if os.path.exists(path("functions.csv")):
-        written.append(save(material_functions(read_csv(path("functions.csv"))), path("material.png")))
-    if os.path.exists(path("dynamic.csv")):
-        written.append(save(dynamic_moduli(read_csv(path("dynamic.csv"))), path("dynamic.png")))
-    if os.path.exists(path("sweep.csv")):
-        sweep = read_csv(path("sweep.csv"))
-        value = "restitution" if "restitution" in sweep else "max_force"
-        written.append(save(sweep_map(sweep, value), path("sweep.png")))
+    try:
+        if os.path.exists(path("history.csv")):
+            history = read_csv(path("history.csv"))
+            for name, draw in (("force_depth", force_depth), ("force_time", force_time),
+                               ("contact_radius", contact_radius)):
+                written.append(save(draw(history), figure(name)))
+            if "Fx" in history:
+                written.append(save(tangential_loop(history), figure("tangential_loop")))
+            if os.path.exists(path("profiles.csv")):
+                profiles = read_csv(path("profiles.csv"))
+                written.append(save(pressure_profiles(profiles), figure("pressure")))
+                if "tau" in profiles:
+                    written.append(save(shear_stress_profiles(profiles), figure("shear_stress")))
+        if os.path.exists(path("functions.csv")):
+            written.append(save(material_functions(read_csv(path("functions.csv"))), figure("material")))
+        if os.path.exists(path("dynamic.csv")):
+            written.append(save(dynamic_moduli(read_csv(path("dynamic.csv"))), figure("dynamic")))
+        if os.path.exists(path("sweep.csv")):
+            sweep = read_csv(path("sweep.csv"))
+            value = "restitution" if "restitution" in sweep else "max_force"
+            written.append(save(sweep_map(sweep, value), figure("sweep")))
+    finally:
+        if listed is not None and written:
+            with open(os.path.join(directory, MANIFEST), "a", encoding="utf-8") as handle:
+                handle.writelines(os.path.basename(p) + "\n" for p in written if os.path.basename(p) not in listed)
     if not written:
         raise ValueError(f"{directory}: no history.csv, functions.csv or sweep.csv (not a result directory of mdr)")
     return written

@@ -93,8 +93,10 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
 }
 
 IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress) {
-    return contact_case.control == Control::impact ? run_impact(contact_case, progress)
-                                                   : run_indentation(contact_case, progress);
+    auto result = contact_case.control == Control::impact ? run_impact(contact_case, progress)
+                                                          : run_indentation(contact_case, progress);
+    require_finite_result(result);
+    return result;
 }
 
 }  // namespace mdr::drivers

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 #include <fmt/os.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
@@ -18,22 +17,6 @@ double max_of(const std::vector<double>& values) {
 }
 
 }  // namespace
-
-void write_directory_atomically(const fs::path& directory, const std::function<void(const fs::path&)>& write) {
-    const fs::path target = fs::absolute(directory);
-    const fs::path temporary = target.parent_path() / fmt::format(".{}.partial-{}", target.filename().string(), getpid());
-    std::error_code ignored;
-    fs::remove_all(temporary, ignored);
-    try {
-        fs::create_directories(temporary);
-        write(temporary);
-        if (fs::exists(target)) fs::remove_all(target);
-        fs::rename(temporary, target);
-    } catch (...) {
-        fs::remove_all(temporary, ignored);
-        throw;
-    }
-}
 
 std::string summary_json(const drivers::ContactCase& contact_case, const drivers::IndentationResult& result,
                          double wall_seconds) {

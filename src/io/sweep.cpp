@@ -10,6 +10,7 @@
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <system_error>
 #include <thread>
 #include <toml++/toml.h>
 
@@ -97,6 +98,7 @@ SweepAxis parse_sweep_axis(const std::string& spec) {
 }
 
 void validate_sweep(std::string_view case_text, const std::string& source, const std::vector<SweepAxis>& axes) {
+    sweep_size(axes);
     parse_case(case_text, source);
     const toml::table base = toml::parse(case_text, source);
     for (const auto& axis : axes) {
@@ -106,12 +108,56 @@ void validate_sweep(std::string_view case_text, const std::string& source, const
     }
 }
 
+std::size_t sweep_size(const std::vector<SweepAxis>& axes) {
+    std::size_t total = 1;
+    double exact = 1.0;
+    for (const auto& axis : axes) {
+        exact *= static_cast<double>(axis.values.size());
+        total = exact <= static_cast<double>(max_sweep_points) ? total * axis.values.size() : 0;
+    }
+    if (exact > static_cast<double>(max_sweep_points)) {
+        throw InvalidInput("--vary", fmt::format("{:.4g} points", exact),
+                           fmt::format("a sweep has at most {} points; split the grid into several sweeps",
+                                       max_sweep_points));
+    }
+    return total;
+}
+
+namespace {
+
+// The threads of a sweep: stopped and joined on every way out, so that no exception leaves a joinable thread.
+class Workers {
+public:
+    explicit Workers(std::atomic<bool>& stop) : stop_(stop) {}
+    Workers(const Workers&) = delete;
+    Workers& operator=(const Workers&) = delete;
+    ~Workers() {
+        stop_ = true;
+        for (auto& thread : threads_) thread.join();
+    }
+    void start(unsigned count, const std::function<void()>& work) {
+        for (unsigned j = 0; j < count; ++j) {
+            try {
+                threads_.emplace_back(work);
+            } catch (const std::system_error& error) {
+                throw std::runtime_error(fmt::format("--jobs = {}: could not start thread {} ({}); use fewer jobs",
+                                                     count, j + 1, error.code().message()));
+            }
+        }
+    }
+
+private:
+    std::atomic<bool>& stop_;
+    std::vector<std::thread> threads_;
+};
+
+}  // namespace
+
 std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& source,
                                 const std::vector<SweepAxis>& axes, unsigned jobs,
                                 const std::function<void(std::size_t, std::size_t)>& progress) {
     const toml::table base = toml::parse(case_text, source);
-    std::size_t total = 1;
-    for (const auto& axis : axes) total *= axis.values.size();
+    const std::size_t total = sweep_size(axes);
     std::vector<SweepRow> rows(total);
     for (std::size_t r = 0; r < total; ++r) {
         std::size_t rest = r;
@@ -122,18 +168,24 @@ std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& s
         }
     }
     std::atomic<std::size_t> next{0};
+    std::atomic<bool> stop{false};
     std::size_t done = 0;
     std::mutex mutex;
     std::condition_variable finished;
+    const auto stop_requested = [&](double) {
+        if (stop) throw Interrupted();
+    };
     const auto work = [&] {
-        for (std::size_t r = next++; r < total; r = next++) {
+        for (std::size_t r = next++; r < total && !stop; r = next++) {
             SweepRow& row = rows[r];
             try {
                 const auto contact_case = parse_case(case_at(base, axes, row.point), source);
                 const auto start = std::chrono::steady_clock::now();
-                const auto result = drivers::run_case(contact_case);
+                const auto result = drivers::run_case(contact_case, stop_requested);
                 const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 row.summary_json = summary_json(contact_case, result, wall);
+            } catch (const Interrupted&) {
+                return;
             } catch (const std::exception& error) {
                 row.error = error.what();
             }
@@ -142,22 +194,19 @@ std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& s
             finished.notify_one();
         }
     };
-    std::vector<std::thread> threads;
-    for (unsigned j = 0; j < std::max(jobs, 1u); ++j) threads.emplace_back(work);
-    {
-        std::unique_lock lock(mutex);
-        std::size_t reported = 0;
-        while (reported < total) {
-            finished.wait(lock, [&] { return done > reported; });
-            reported = done;
-            if (progress) {
-                lock.unlock();
-                progress(reported, total);
-                lock.lock();
-            }
+    Workers workers(stop);
+    workers.start(static_cast<unsigned>(std::min<std::size_t>(std::max(jobs, 1u), total)), work);
+    std::unique_lock lock(mutex);
+    while (done < total) {
+        // Woken by each finished point, and at least every 0.2 s so that the caller can stop a long point.
+        finished.wait_for(lock, std::chrono::milliseconds(200), [&] { return done == total; });
+        const std::size_t reported = done;
+        if (progress) {
+            lock.unlock();
+            progress(reported, total);
+            lock.lock();
         }
     }
-    for (auto& thread : threads) thread.join();
     return rows;
 }
 
@@ -183,7 +232,7 @@ void write_sweep_csv(const std::filesystem::path& directory, const std::vector<S
         const auto summary = row.summary_json.empty() ? nlohmann::ordered_json::object()
                                                       : nlohmann::ordered_json::parse(row.summary_json);
         for (const auto& column : columns) {
-            if (summary.contains(column)) {
+            if (summary.contains(column) && summary[column].is_number()) {
                 out.print("{},", summary[column].get<double>());
             } else {
                 out.print("nan,");

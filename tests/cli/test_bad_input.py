@@ -41,7 +41,7 @@ def assert_bad_input(result, *fragments):
     assert result.stdout.strip() == "", result.stdout
     out: pathlib.Path = result.out
     assert not out.exists(), f"{out} was created by a failing run"
-    leftovers = sorted(p.name for p in out.parent.glob(f".{out.name}.partial-*"))
+    leftovers = sorted(p.name for p in out.parent.glob(f".{out.name}.mdr-*"))
     assert leftovers == [], leftovers
 
 
@@ -282,7 +282,7 @@ def test_failed_run_leaves_an_earlier_result_alone(run_case, workdir):
     assert bad.returncode == 2
     assert len(bad.stderr_lines) == 1
     assert sorted(p.name for p in good.out.iterdir()) == before
-    assert list(workdir.glob(".out.partial-*")) == []
+    assert list(workdir.glob(".out.mdr-*")) == []
 
 
 # ---------------------------------------------------------------------------------------------------------------
@@ -322,7 +322,7 @@ def default_run(mdr_binary, tmp_path_factory):
 def test_run_default_example_writes_the_result_files(default_run):
     completed, out = default_run
     assert completed.returncode == 0, completed.stderr
-    assert sorted(p.name for p in out.iterdir()) == ["history.csv", "profiles.csv", "summary.json"]
+    assert sorted(p.name for p in out.iterdir()) == [".mdr-result", "history.csv", "profiles.csv", "summary.json"]
     assert list(out.parent.glob(".*partial*")) == []
 
     header, rows = read_csv(out / "history.csv")
@@ -357,17 +357,19 @@ def test_run_reports_on_stdout_only(default_run):
     assert "mdr: error" not in completed.stderr
 
 
-def test_rerun_replaces_an_existing_directory(run_case, workdir):
+def test_rerun_replaces_its_own_directory_and_no_other(run_case, workdir):
     out = workdir / "out"
-    out.mkdir()
-    (out / "stale.txt").write_text("from an earlier run")
     result = run_case(case_text())
     assert result.returncode == 0, result.stderr
-    assert sorted(p.name for p in out.iterdir()) == ["history.csv", "summary.json"]
+    assert sorted(p.name for p in out.iterdir()) == [".mdr-result", "history.csv", "summary.json"]
     again = run_case(case_text())
     assert again.returncode == 0, again.stderr
-    assert sorted(p.name for p in out.iterdir()) == ["history.csv", "summary.json"]
-    assert list(workdir.glob(".out.partial-*")) == []
+    assert sorted(p.name for p in out.iterdir()) == [".mdr-result", "history.csv", "summary.json"]
+    assert list(workdir.glob(".out.mdr-*")) == []
+    (out / "stale.txt").write_text("written by the user")
+    refused = run_case(case_text())
+    assert refused.returncode == 2 and "holds stale.txt, which mdr did not write" in refused.stderr
+    assert (out / "stale.txt").read_text() == "written by the user"
 
 
 def test_depth_never_reaching_contact_gives_zero_force(run_case):

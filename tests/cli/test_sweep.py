@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import csv
+import resource
+import subprocess
 
 import pytest
 
@@ -85,3 +87,47 @@ def test_failed_points_keep_their_message_and_the_others_run(run_mdr, case_file,
 ])
 def test_bad_sweep_input(run_mdr, case_file, workdir, spec, fragments):
     assert_bad_input(run_mdr("sweep", case_file, "--vary", spec, "--out", workdir / "out"), *fragments)
+
+
+def test_grid_size_is_computed_without_overflow_and_bounded(run_mdr, case_file, workdir):
+    # 524288^4 = 2^76 points wrapped to 0 in 64-bit arithmetic; the bound is checked before anything runs.
+    axes = [arg for key in ("material.tau1", "material.G1", "material.G_inf", "indenter.R")
+            for arg in ("--vary", f"{key}=1:2:524288")]
+    assert_bad_input(run_mdr("sweep", case_file, *axes, "--out", workdir / "out"),
+                     "--vary", "7.556e+22 points", "at most 1000000")
+    assert_bad_input(run_mdr("sweep", case_file, "--vary", "material.tau1=1:2:1001", "--vary",
+                             "material.G1=1:2:1000", "--out", workdir / "out"), "1.001e+06 points")
+
+
+def test_a_point_whose_result_is_not_finite_becomes_a_row_with_its_reason(run_mdr, case_file, workdir):
+    # G_inf = G1 = 1e308: G(0+) overflows to inf and so does the force; the other point still counts.
+    case_file.write_text(CASE.replace("G1 = 3.0e6", "G1 = 1.0e308"), encoding="utf-8")
+    result = run_mdr("sweep", case_file, "--vary", "material.G_inf=1e6,1e308", "--out", workdir / "out")
+    assert result.returncode == 0, result.stderr
+    assert "1 of 2 runs failed" in result.stderr
+    rows = read_rows(workdir / "out" / "sweep.csv")
+    assert rows[0]["error"] == "" and float(rows[0]["max_force"]) > 1e300
+    assert "the result is not finite (F = inf" in rows[1]["error"] and rows[1]["max_force"] == "nan"
+
+
+def test_every_point_failed_exits_non_zero_with_the_table(run_mdr, case_file, workdir):
+    result = run_mdr("sweep", case_file, "--vary", "material.tau1=-1,-2", "--out", workdir / "out")
+    assert result.returncode == 1
+    assert result.stderr_lines[-1].startswith("mdr: error: every one of the 2 runs failed")
+    assert "material.tau1 = -1: must be > 0" in result.stderr_lines[-1]
+    rows = read_rows(workdir / "out" / "sweep.csv")
+    assert [row["error"] != "" for row in rows] == [True, True]
+
+
+def test_threads_that_cannot_start_give_one_line_not_an_abort(mdr_binary, case_file, workdir):
+    """200 thread stacks do not fit into 300 MB of address space: an error line, exit 1, nothing written."""
+    def limit_memory():
+        resource.setrlimit(resource.RLIMIT_AS, (300 * 2**20, 300 * 2**20))
+
+    completed = subprocess.run([mdr_binary, "sweep", str(case_file), "--vary", "material.G1=1e6:2e6:400",
+                                "--jobs", "200", "--out", str(workdir / "out")], cwd=workdir, capture_output=True,
+                               text=True, timeout=120, preexec_fn=limit_memory)
+    lines = completed.stderr.splitlines()
+    assert completed.returncode == 1, completed.stderr
+    assert len(lines) == 1 and lines[0].startswith("mdr: error: --jobs = 200: could not start thread"), lines
+    assert sorted(p.name for p in workdir.iterdir()) == ["case.toml"]

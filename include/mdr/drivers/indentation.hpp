@@ -71,7 +71,12 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
 /// left contact (eq. 39). Throws mdr::InvalidInput when the contact does not end before `end_time`.
 IndentationResult run_impact(const ContactCase& contact_case, const ProgressObserver& progress = {});
 
-/// Runs any case: run_impact for control = impact, run_indentation otherwise.
+/// Throws std::runtime_error naming the first value of `result` that is not finite (a column at a time, an impact or
+/// tangential outcome, a snapshot), so that no NaN or infinity is ever reported as a result.
+void require_finite_result(const IndentationResult& result);
+
+/// Runs any case: run_impact for control = impact, run_indentation otherwise; the result is checked with
+/// require_finite_result.
 IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress = {});
 
 }  // namespace mdr::drivers

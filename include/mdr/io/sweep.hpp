@@ -29,13 +29,24 @@ struct SweepRow {
     std::string error;           ///< the failure message ("" if it succeeded)
 };
 
-/// Checks that every axis names a numeric key present in the case (and the case itself). Throws
+/// The most points one sweep may have; the rows of a sweep are kept in memory (about 1 kB each).
+inline constexpr std::size_t max_sweep_points = 1'000'000;
+
+/// The number of points of the cartesian product of the axes. Throws mdr::InvalidInput (key `--vary`) when it
+/// exceeds max_sweep_points (computed without overflow).
+std::size_t sweep_size(const std::vector<SweepAxis>& axes);
+
+/// Checks the grid size (sweep_size), and that every axis names a numeric key present in the case (and the case
+/// itself). Throws
 /// mdr::InvalidInput otherwise.
 void validate_sweep(std::string_view case_text, const std::string& source, const std::vector<SweepAxis>& axes);
 
 /// Runs the case at every point of the cartesian product of the axes (the last axis varying fastest) on `jobs`
-/// threads. Rows come back in grid order whatever the number of jobs; a failed point keeps its message and does not
-/// stop the others. `progress(done, total)` is called from the calling thread as points finish.
+/// threads (at most one a point). Rows come back in grid order whatever the number of jobs; a failed point keeps its
+/// message and does not stop the others, and so does a point whose summary is not finite. `progress(done, total)`
+/// is called from the calling thread as points finish and at least every 0.2 s; when it throws, the running points
+/// are stopped at their next progress report, every thread is joined and the exception propagates. Throws
+/// mdr::InvalidInput for a grid above max_sweep_points, std::runtime_error when a thread cannot be started.
 std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& source,
                                 const std::vector<SweepAxis>& axes, unsigned jobs,
                                 const std::function<void(std::size_t, std::size_t)>& progress);
