@@ -16,7 +16,7 @@ public:
     const foundation::StepCoefficients& get(double time_step);
 
 private:
-    const rheology::Rheology& material_;
+    rheology::Rheology material_;  // a copy: the caller's material may be a temporary
     foundation::StepCoefficients coefficients_;
     bool valid_ = false;
 };

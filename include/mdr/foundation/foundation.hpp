@@ -29,7 +29,8 @@ inline constexpr std::size_t max_elements = std::size_t{1} << 28;
 /// quantity and the element's update is split there (second order in the time step).
 class Foundation {
 public:
-    /// `count` elements of width `spacing` [m] under the MDR profile of `profile`, material `material`.
+    /// `count` elements of width `spacing` [m] under the MDR profile of `profile`, material `material` (copied;
+    /// the profile is only read here).
     /// Throws mdr::InvalidInput (key `numerics.elements`) when the state would not fit in memory.
     Foundation(const rheology::Rheology& material, const profile::Profile& profile, double spacing,
                std::size_t count);
@@ -90,7 +91,7 @@ private:
     double free_relaxed_of(std::size_t i) const { return free_relaxed_.empty() ? relaxed_[i] : free_relaxed_[i]; }
     std::size_t reach(double depth) const;
 
-    const rheology::Rheology& material_;
+    rheology::Rheology material_;  // a copy: the caller's material may be a temporary
     double spacing_;
     std::vector<double> equivalent_;           ///< g(x_i)
     std::vector<double> displacement_;         ///< w_i

@@ -36,7 +36,7 @@ enum class TangentialState : std::uint8_t {
 /// dt for free and slipping ones).
 class TangentialLayer {
 public:
-    /// `count` elements of width `spacing` [m] of material `material`, friction coefficient `friction` (mu).
+    /// `count` elements of width `spacing` [m] of material `material` (copied), friction coefficient `friction` (mu).
     TangentialLayer(const rheology::Rheology& material, double friction, double spacing, std::size_t count);
 
     /// Prepares a step of the given coefficients from the current state (call before trial_force/advance).
@@ -80,7 +80,7 @@ private:
     ElementStep element_step(std::size_t i, double increment, double normal_line_load, bool contact) const;
     double limit(double normal_line_load) const;
 
-    const rheology::Rheology& material_;
+    rheology::Rheology material_;  // a copy: the caller's material may be a temporary
     double friction_;
     double spacing_;
     std::vector<double> displacement_;      ///< u_i
