@@ -1,6 +1,6 @@
 #pragma once
-// Progress of a long run on a terminal: a bar on stderr, cleared when the run ends or fails, so that a failure
-// still leaves exactly one error line. Nothing when stderr is not a terminal, or for runs under a second.
+// Progress of a long run: on a terminal a bar on stderr after a second, cleared when the run ends or fails, so that a
+// failure still leaves exactly one error line; when stderr is a file or a pipe (a batch job), a line every 5 s.
 
 #include <chrono>
 
@@ -22,6 +22,7 @@ private:
     std::chrono::steady_clock::time_point start_;
     bool terminal_;
     bool drawn_ = false;
+    double next_line_;  // s after the start when the next line is due (stderr not a terminal)
 };
 
 }  // namespace mdr::cli

@@ -71,7 +71,12 @@ void bind_run(py::module_& module) {
     module.def("_run_toml", &run_toml_case, py::arg("toml_text"), py::arg("source") = "case",
                "Runs a case given as TOML text; returns history, profiles and summary (use mdr.run).");
     module.def(
-        "_check_toml", [](const std::string& text, const std::string& source) { return io::describe(io::parse_case(text, source)); },
+        "_check_toml",
+        [](const std::string& text, const std::string& source) {
+            const auto contact_case = io::parse_case(text, source);
+            drivers::resolve_numerics(contact_case);  // the bounds of work and memory
+            return io::describe(contact_case);
+        },
         py::arg("toml_text"), py::arg("source") = "case", "Validates a case given as TOML text; returns its description.");
 }
 

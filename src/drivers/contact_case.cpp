@@ -1,5 +1,7 @@
 #include "mdr/drivers/contact_case.hpp"
 
+#include "mdr/drivers/work_estimate.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -135,10 +137,8 @@ ResolvedNumerics resolve_impact_numerics(const ContactCase& contact_case) {
     return resolved;
 }
 
-}  // namespace
-
-ResolvedNumerics resolve_numerics(const ContactCase& contact_case) {
-    if (contact_case.control == Control::impact) return resolve_impact_numerics(contact_case);
+// Displacement or force control: see resolve_numerics.
+ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
     const auto& numerics = contact_case.numerics;
     const auto& indenter = *contact_case.indenter;
     ResolvedNumerics resolved;
@@ -186,6 +186,16 @@ ResolvedNumerics resolve_numerics(const ContactCase& contact_case) {
         if (!(radius > 0.0)) radius = std::isfinite(indenter.max_radius()) ? indenter.max_radius() : 1.0;
         resolved.half_width = std::min(radius, indenter.max_radius());
     }
+    return resolved;
+}
+
+}  // namespace
+
+ResolvedNumerics resolve_numerics(const ContactCase& contact_case) {
+    const ResolvedNumerics resolved = contact_case.control == Control::impact
+                                          ? resolve_impact_numerics(contact_case)
+                                          : resolve_indentation_numerics(contact_case);
+    require_bounded_work(contact_case, resolved);
     return resolved;
 }
 

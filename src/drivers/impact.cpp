@@ -1,7 +1,11 @@
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/drivers/work_estimate.hpp"
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "stepping.hpp"
@@ -51,12 +55,15 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
         const double spring = 4.0 * mass / (step * step);
         const double anchor = depth + velocity * step;
         const double guess = anchor - force * step * step / (2.0 * mass);
-        const double scale = std::max(std::abs(velocity) * step, 1e-9 * numerics.half_width);
+        // The depth increment of the step, never below a billionth of the approach increment: scales with the
+        // impact itself (not with the half-width), so that a slow impact is solved as precisely as a fast one.
+        const double scale = std::max(std::abs(velocity), 1e-9 * approach) * step;
         const double new_depth = solve_depth(foundation, depth, guess, scale, -force, spring, anchor);
         foundation.advance(depth, new_depth);
         const double new_force = foundation.total_force();
         double new_velocity = 2.0 * (new_depth - depth) / step - velocity;
         ++result.steps;
+        require_steps_within_bound(contact_case, numerics, result.steps, time);
 
         if (new_force == 0.0 && force > 0.0) {
             // Every element has left (eq. 39): the last one left where its force crossed zero inside the step
@@ -68,6 +75,14 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
             outcome.rebound_velocity = -new_velocity;
             outcome.restitution = -new_velocity / approach;
             outcome.dissipated_energy = 0.5 * mass * (approach * approach - new_velocity * new_velocity);
+            // A passive body returns at most the energy it was given (e <= 1), and the indenter leaves (e >= 0);
+            // beyond round-off anything else is a failure of the numerics, never a result.
+            if (!(outcome.restitution >= 0.0 && outcome.restitution <= 1.0 + 1e-6)) {
+                throw std::runtime_error(fmt::format(
+                    "the impact is not resolved at these numerics: restitution e = {} lies outside [0, 1]; give a "
+                    "smaller numerics.time_step (now {:.4g} s) or more numerics.elements",
+                    outcome.restitution, step));
+            }
             result.impact = outcome;
             time += step;
             depth = new_depth;

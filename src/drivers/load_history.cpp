@@ -47,6 +47,10 @@ bool LoadHistory::has_jump() const {
     return false;
 }
 
+double segment_step_count(double segment, double max_step, std::size_t min_steps_per_segment) {
+    return std::max(static_cast<double>(min_steps_per_segment), std::ceil(segment / max_step));
+}
+
 std::vector<GridNode> make_time_grid(const LoadHistory& history, double end, double max_step,
                                      std::size_t min_steps_per_segment, const std::vector<double>& snapshots) {
     // Breakpoints: the history points up to `end`, the end itself and the snapshots, in time order.
@@ -80,8 +84,7 @@ std::vector<GridNode> make_time_grid(const LoadHistory& history, double end, dou
         }
         cuts.push_back(b.time);
         const double segment = b.time - a.time;
-        const auto segment_steps = static_cast<double>(std::max<std::size_t>(
-            min_steps_per_segment, static_cast<std::size_t>(std::ceil(segment / max_step))));
+        const double segment_steps = segment_step_count(segment, max_step, min_steps_per_segment);
         for (std::size_t c = 1; c < cuts.size(); ++c) {
             const double span = cuts[c] - cuts[c - 1];
             const auto steps = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(segment_steps * span / segment - 1e-9)));

@@ -1,6 +1,7 @@
 #include "toml_reader.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 
 #include "mdr/error.hpp"
@@ -10,9 +11,14 @@ namespace mdr::io {
 namespace {
 
 std::string node_text(const toml::node& node) {
-    std::ostringstream out;
-    node.visit([&out](const auto& value) { out << value; });
-    std::string text = out.str();
+    std::string text;
+    if (const auto* floating = node.as_floating_point()) {
+        text = format_value(floating->get());  // shortest round-trip form: 70.3, not 70.299999999999997
+    } else {
+        std::ostringstream out;
+        node.visit([&out](const auto& value) { out << value; });
+        text = out.str();
+    }
     for (char& c : text) {
         if (c == '\n') c = ' ';
     }
@@ -21,7 +27,18 @@ std::string node_text(const toml::node& node) {
 
 double as_number(const toml::node& node, const std::string& key) {
     if (!node.is_number()) throw InvalidInput(key, node_text(node), "must be a number");
-    const double value = node.value<double>().value();
+    if (const auto* integer = node.as_integer()) {
+        const std::int64_t exact = integer->get();
+        const double value = static_cast<double>(exact);
+        // The cast back is defined only inside the range of int64; 2^63 itself is outside.
+        if (!(value >= -0x1p63 && value < 0x1p63) || static_cast<std::int64_t>(value) != exact) {
+            throw InvalidInput(key, node_text(node),
+                               "is an integer that a double cannot hold exactly (the nearest is " +
+                                   format_value(value) + "); write it as a float if that is meant");
+        }
+        return value;
+    }
+    const double value = node.as_floating_point()->get();
     require_finite(key, value);
     return value;
 }

@@ -34,6 +34,8 @@ struct NumericsOptions {
     std::optional<double> time_step;       ///< largest time step [s]
     std::optional<double> half_width;      ///< half-width L of the foundation [m]
     std::size_t output_every = 1;          ///< write every n-th step
+    std::optional<double> max_element_steps;  ///< bound on steps x elements (default_max_element_steps)
+    std::optional<double> max_memory;         ///< bound on the run's memory [bytes] (default_max_memory)
 };
 
 /// The numerics actually used, after defaults.
@@ -85,7 +87,8 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// shortest retardation time. Impact: the time step is the elastic contact time with the instantaneous spring
 /// modulus over default_steps (and the material-time rule), the half-width 1.2 times the elastic contact radius
 /// with the equilibrium modulus (an upper bound: the viscoelastic body is stiffer and dissipates). A harmonic
-/// tangential load caps the default time step at its period over default_steps_per_period.
+/// tangential load caps the default time step at its period over default_steps_per_period. Throws
+/// mdr::InvalidInput when the run would exceed its bounds of work or memory (require_bounded_work).
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case);
 
 /// Scales of an elastic impact (energy balance m v0^2 / 2 = int F_el dd), used for the impact defaults.

@@ -45,6 +45,10 @@ struct GridNode {
     double value;  ///< the prescribed load at this node
 };
 
+/// Steps of a history segment of length `segment` [s] on the time grid: ceil(segment / max_step), at least
+/// `min_steps_per_segment` (as a double: the count is checked against the bounds of work before it is used).
+double segment_step_count(double segment, double max_step, std::size_t min_steps_per_segment);
+
 /// Nodes covering [history start, end] with every history point and every snapshot time as a node, and no step
 /// longer than `max_step`; each history segment gets at least `min_steps_per_segment` steps. Beyond the last
 /// history point the last value is held. The first node is (start, 0): the undeformed state.

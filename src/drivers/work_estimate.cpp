@@ -1,0 +1,104 @@
+#include "mdr/drivers/work_estimate.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "mdr/error.hpp"
+
+namespace mdr::drivers {
+namespace {
+
+// Steps of the time grid of a displacement- or force-controlled run (make_time_grid): each history segment, the
+// hold up to the end, and one more for each snapshot or tangential breakpoint that may cut a step.
+double indentation_steps(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
+    const auto& points = contact_case.history.points();
+    double steps = 0.0;
+    double previous = points.front().time;
+    for (const auto& point : points) {
+        const double until = std::min(point.time, contact_case.end_time);
+        if (until > previous) steps += segment_step_count(until - previous, numerics.time_step, min_steps_per_segment);
+        steps += 1.0;  // a jump, at most
+        previous = std::max(previous, until);
+    }
+    if (contact_case.end_time > previous) {
+        steps += segment_step_count(contact_case.end_time - previous, numerics.time_step, min_steps_per_segment);
+    }
+    steps += static_cast<double>(contact_case.snapshots.size());
+    if (contact_case.tangential) steps += static_cast<double>(contact_case.tangential->breakpoints().size());
+    return steps;
+}
+
+}  // namespace
+
+WorkEstimate estimate_work(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
+    WorkEstimate estimate;
+    const bool impact = contact_case.control == Control::impact;
+    estimate.steps = impact ? numerics.time_limit / numerics.time_step +
+                                  static_cast<double>(contact_case.snapshots.size())
+                            : indentation_steps(contact_case, numerics);
+    const double elements = static_cast<double>(numerics.elements);
+    const double layers = contact_case.tangential ? 2.0 : 1.0;
+    estimate.element_steps = estimate.steps * elements * layers;
+    // Per step: a grid node (t, value) and a history row of up to 8 columns every output_every steps. Per element
+    // and layer: displacement, stress, next displacement and stress, increment, relaxed sums, event, profile, flag,
+    // and one memory value per branch.
+    const double rows = estimate.steps / static_cast<double>(numerics.output_every);
+    const double branches = static_cast<double>(contact_case.material.terms().size());
+    estimate.memory = (impact ? 0.0 : 16.0 * estimate.steps) + 64.0 * rows + layers * elements * 8.0 * (9.0 + branches);
+    return estimate;
+}
+
+void require_bounded_work(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
+    const double start = contact_case.history.start_time();
+    const bool impact = contact_case.control == Control::impact;
+    if (impact && !(std::isfinite(numerics.time_limit) && numerics.time_step > 0.0)) {
+        throw InvalidInput("load.velocity", format_value(contact_case.impact->velocity),
+                           fmt::format("the impact's time scales are not representable (time step {:.4g} s, contact "
+                                       "time limit {:.4g} s); give load.end and numerics.time_step",
+                                       numerics.time_step, numerics.time_limit));
+    }
+    if (!std::isfinite(numerics.time_limit - start)) {
+        throw InvalidInput(impact ? "load.end" : "load.history", fmt::format("[{}, {}]", start, numerics.time_limit),
+                           "the simulated time span is larger than a double can hold");
+    }
+    // An impact given a late load.end usually ends long before it: its steps are counted while it runs
+    // (require_steps_within_bound), not refused from the upper bound here.
+    if (impact && std::isfinite(contact_case.end_time)) return;
+    const WorkEstimate estimate = estimate_work(contact_case, numerics);
+    const double max_element_steps = element_step_bound(contact_case);
+    if (!(estimate.element_steps <= max_element_steps)) {
+        throw InvalidInput(
+            "numerics.max_element_steps", fmt::format("{:.3g}", max_element_steps),
+            fmt::format("exceeded: {:.3g} steps (time step {:.4g} s over [{}, {}] s) x {} elements{} = {:.3g} "
+                        "element-steps; lengthen numerics.time_step, shorten the simulated time, use fewer "
+                        "numerics.elements, or raise numerics.max_element_steps if that is meant",
+                        estimate.steps, numerics.time_step, start, numerics.time_limit, numerics.elements,
+                        contact_case.tangential ? " x 2 layers" : "", estimate.element_steps));
+    }
+    const double max_memory = contact_case.numerics.max_memory.value_or(default_max_memory);
+    if (!(estimate.memory <= max_memory)) {
+        throw InvalidInput("numerics.max_memory", fmt::format("{:.3g}", max_memory),
+                           fmt::format("exceeded: the run would hold about {:.3g} bytes ({:.3g} steps, {} elements); "
+                                       "write fewer rows (numerics.output_every), lengthen numerics.time_step, or "
+                                       "raise numerics.max_memory if the machine has it",
+                                       estimate.memory, estimate.steps, numerics.elements));
+    }
+}
+
+double element_step_bound(const ContactCase& contact_case) {
+    return contact_case.numerics.max_element_steps.value_or(default_max_element_steps);
+}
+
+void require_steps_within_bound(const ContactCase& contact_case, const ResolvedNumerics& numerics,
+                                std::size_t steps, double time) {
+    const double bound = element_step_bound(contact_case);
+    if (static_cast<double>(steps) * static_cast<double>(numerics.elements) <= bound) return;
+    throw InvalidInput("numerics.max_element_steps", fmt::format("{:.3g}", bound),
+                       fmt::format("reached after {} steps x {} elements at t = {:.4g} s, before the run ended "
+                                   "(at the latest at {:.4g} s); give an earlier load.end, a longer "
+                                   "numerics.time_step, or raise numerics.max_element_steps if that is meant",
+                                   steps, numerics.elements, time, numerics.time_limit));
+}
+
+}  // namespace mdr::drivers
