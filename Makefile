@@ -3,7 +3,7 @@ BUILD_DIR := build
 PYTHON := /usr/bin/python3
 JOBS ?= $(shell nproc)
 
-.PHONY: deps configure build test demo bench figures clean
+.PHONY: deps configure build test sanitize demo bench figures clean
 
 deps:
 	@scripts/install-deps
@@ -16,6 +16,13 @@ build: configure
 
 test: build
 	@ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
+
+# The C++ tests, the command-line suites and the fuzzer again, built with AddressSanitizer and
+# UndefinedBehaviorSanitizer (CMakePresets.json: sanitize). CI runs it after `make test`.
+sanitize: deps
+	@cmake --preset sanitize >/dev/null
+	@cmake --build build-sanitize -j $(JOBS)
+	@ctest --test-dir build-sanitize --output-on-failure -j $(JOBS)
 
 # The demo builds only what it runs: the command line and the Python module for the figures.
 demo: configure
@@ -30,4 +37,4 @@ bench: build
 	@$(BUILD_DIR)/bin/mdr_bench --benchmark_counters_tabular=true
 
 clean:
-	@rm -rf $(BUILD_DIR) build-dev out
+	@rm -rf $(BUILD_DIR) build-dev build-sanitize out

@@ -53,7 +53,9 @@ void TangentialStepper::step(const foundation::StepCoefficients& coefficients, d
     double increment = target - displacement_;
     if (force_control) {
         const double capacity = layer_.sliding_force(q, contact);
-        if (std::abs(target) > capacity) {
+        // Within round-off of the capacity the force is reached only by sliding as a whole (the layer's own sum
+        // at saturation may fall short of `capacity` by an ulp, and the solve would find no bracket).
+        if (std::abs(target) >= capacity * (1.0 - 1e-12)) {
             // Gross sliding: every element at its friction limit; u is where the sliding sets in.
             if (!outcome_.sliding_from) outcome_.sliding_from = time_end;
             increment = layer_.sliding_increment(target > 0.0 ? 1.0 : -1.0, q, contact);

@@ -7,6 +7,7 @@ compared byte for byte with what it must be. No test names a real system path.""
 
 from __future__ import annotations
 
+import json
 import os
 import pathlib
 import signal
@@ -16,25 +17,10 @@ import time
 
 import pytest
 
+from test_sweep import CASE
+
 PREFIX = "mdr: error: "
 
-CASE = """
-title = "result directory test"
-[material]
-model = "standard"
-G_inf = 1.0e6
-G1 = 3.0e6
-tau1 = 0.2
-[indenter]
-shape = "sphere"
-R = 0.01
-[load]
-control = "displacement"
-history = [[0.0, 0.0], [1.0, 1.0e-4], [2.0, 0.0]]
-[numerics]
-elements = 100
-time_step = 0.02
-"""
 
 # Minutes of work at these numerics: long enough to be interrupted on any machine.
 LONG_CASE = CASE.replace("elements = 100", "elements = 400000").replace("time_step = 0.02", "time_step = 1e-5")
@@ -163,10 +149,11 @@ def test_result_directory_is_created_and_replaced_also_with_a_trailing_slash(mdr
     assert first.returncode == 0, first.stderr
     manifest = (work / "res" / ".mdr-result").read_text(encoding="utf-8").splitlines()
     assert manifest[0].startswith("#") and sorted(manifest[1:]) == ["history.csv", "summary.json"]
+    first_force = json.loads((work / "res" / "summary.json").read_text(encoding="utf-8"))["max_force"]
     (scratch / "case.toml").write_text(CASE.replace("G1 = 3.0e6", "G1 = 5.0e6"), encoding="utf-8")
     second = mdr_in(mdr_binary, work, "run", "../case.toml", "--out", "res/")
     assert second.returncode == 0, second.stderr
-    assert '"case": "result directory test"' in (work / "res" / "summary.json").read_text(encoding="utf-8")
+    assert json.loads((work / "res" / "summary.json").read_text(encoding="utf-8"))["max_force"] > first_force
     assert sorted(p.name for p in work.iterdir()) == ["res", "sentinel.txt"]
     assert sorted(p.name for p in (work / "res").iterdir()) == [".mdr-result", "history.csv", "summary.json"]
     # Another command's result directory of mdr may be replaced too.

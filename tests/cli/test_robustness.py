@@ -8,6 +8,7 @@ from __future__ import annotations
 import csv
 import json
 import math
+import pathlib
 import time
 
 import pytest
@@ -125,3 +126,14 @@ def test_extreme_times_never_write_nan(run_case, workdir, extra):
         return
     for row in read_history(workdir / "out"):
         assert all(math.isfinite(float(value)) for value in row.values()), row
+
+
+FUZZ_CORPUS = pathlib.Path(__file__).resolve().parents[1] / "fuzz" / "corpus"
+
+
+@pytest.mark.parametrize("name", ["regression_tangential_force_hang"])
+def test_fuzzer_findings_end_within_seconds(run_case, name):
+    result = timed(run_case, (FUZZ_CORPUS / f"{name}.toml").read_text(encoding="utf-8"))
+    if result.returncode != 0:
+        assert result.stderr_lines[-1].startswith("mdr: error: "), result.stderr
+        assert not result.out.exists()
