@@ -1,5 +1,6 @@
 #include "mdr/drivers/contact_case.hpp"
 
+#include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/work_estimate.hpp"
 
 #include <algorithm>
@@ -192,6 +193,7 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
 }  // namespace
 
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case) {
+    validate(contact_case);
     const ResolvedNumerics resolved = contact_case.control == Control::impact
                                           ? resolve_impact_numerics(contact_case)
                                           : resolve_indentation_numerics(contact_case);

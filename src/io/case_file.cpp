@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "mdr/drivers/case_validation.hpp"
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "material_reader.hpp"
@@ -28,8 +29,14 @@ std::shared_ptr<const profile::Profile> read_indenter(TableReader& table) {
             return profile::make_sphere(table.number("R"));
         }
         if (shape == "cone") {
-            with({"slope_deg"});
-            return profile::make_cone(table.number("slope_deg"));
+            with({"slope_deg", "half_angle_deg"});
+            if (table.has("slope_deg") == table.has("half_angle_deg")) {
+                throw InvalidInput("indenter.slope_deg",
+                                   table.has("slope_deg") ? "given with half_angle_deg" : "(missing)", "give one of slope_deg (between flank and surface) or half_angle_deg (between "
+                                   "flank and axis, as tips are specified)");
+            }
+            return table.has("slope_deg") ? profile::make_cone(table.number("slope_deg"))
+                                          : profile::make_cone_from_half_angle(table.number("half_angle_deg"));
         }
         if (shape == "flat") {
             with({"a"});
@@ -77,15 +84,7 @@ drivers::LoadHistory read_history(TableReader& load, drivers::Control control) {
     std::vector<drivers::LoadPoint> points;
     const char* quantity = control == drivers::Control::force ? "F" : "d";
     for (const auto& [t, value] : load.pairs("history", "t", quantity)) points.push_back({t, value});
-    drivers::LoadHistory history(std::move(points), "load.history");
-    for (std::size_t i = 0; i < history.points().size(); ++i) {
-        const double value = history.points()[i].value;
-        if (control == drivers::Control::force && value < 0.0) {
-            throw InvalidInput(fmt::format("load.history[{}].F", i), format_value(value),
-                               "must be >= 0 in force control (the contact cannot pull)");
-        }
-    }
-    return history;
+    return drivers::LoadHistory(std::move(points), "load.history");
 }
 
 drivers::TangentialLoad read_tangential(TableReader& table, drivers::Control normal_control) {
@@ -95,7 +94,6 @@ drivers::TangentialLoad read_tangential(TableReader& table, drivers::Control nor
     table.reject_unknown({"friction", "control", "history", "amplitude", "frequency", "start", "end"});
     drivers::TangentialLoad load;
     load.friction = table.number("friction");
-    require_non_negative("tangential.friction", load.friction);
     const std::string control = table.optional_string("control").value_or("displacement");
     if (control == "displacement") load.control = drivers::TangentialControl::displacement;
     else if (control == "force") load.control = drivers::TangentialControl::force;
@@ -109,20 +107,11 @@ drivers::TangentialLoad read_tangential(TableReader& table, drivers::Control nor
         const char* quantity = load.control == drivers::TangentialControl::force ? "Fx" : "u";
         for (const auto& [t, value] : table.pairs("history", "t", quantity)) points.push_back({t, value});
         load.history = drivers::LoadHistory(std::move(points), "tangential.history");
-        if (load.history->has_jump()) {
-            throw InvalidInput("tangential.history", table.text("history"),
-                               "must start at 0 and have no jumps (give each change a duration)");
-        }
-        return load;
+    } else {
+        load.harmonic = drivers::HarmonicLoad{table.number("amplitude"), table.number("frequency"),
+                                              table.number("start"), table.number("end")};
     }
-    drivers::HarmonicLoad wave{table.number("amplitude"), table.number("frequency"), table.number("start"),
-                               table.number("end")};
-    require_positive("tangential.frequency", wave.frequency);
-    if (!(wave.end > wave.start)) {
-        throw InvalidInput("tangential.end", format_value(wave.end),
-                           "must be after tangential.start = " + format_value(wave.start));
-    }
-    load.harmonic = wave;
+    drivers::validate(load);  // before its end time is used
     return load;
 }
 
@@ -175,31 +164,18 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
                                "not with control = \"impact\" (the motion follows from indenter.mass and load.velocity)");
         }
         const double velocity = load->number("velocity");
-        require_positive("load.velocity", velocity);
         if (!indenter_table->has("mass")) throw InvalidInput("indenter.mass", "(missing)", "is required for an impact");
-        const double mass = indenter_table->number("mass");
-        require_positive("indenter.mass", mass);
-        impact = drivers::ImpactLoad{mass, velocity};
+        impact = drivers::ImpactLoad{indenter_table->number("mass"), velocity};
         read = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
     } else {
         if (load->has("velocity")) {
             throw InvalidInput("load.velocity", load->text("velocity"), "only with control = \"impact\"");
         }
         read = read_history(*load, control);
-        if (control == drivers::Control::displacement && material.viscosity() > 0.0 && read->has_jump()) {
-            throw InvalidInput("load.history", "[...]",
-                               "a jump in depth needs an infinite force with a dashpot (eta > 0); give the jump a duration");
-        }
     }
     drivers::LoadHistory history = std::move(*read);
     double end_time = impact ? std::numeric_limits<double>::infinity() : history.end_time();
-    if (auto end = load->optional_number("end")) {
-        if (!(*end > history.start_time())) {
-            throw InvalidInput("load.end", format_value(*end),
-                               "must be after the first history time " + format_value(history.start_time()));
-        }
-        end_time = *end;
-    }
+    if (auto end = load->optional_number("end")) end_time = *end;
 
     std::optional<drivers::TangentialLoad> tangential;
     bool approximate = false;
@@ -214,37 +190,25 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
     if (auto output = root.table("output")) {
         output->reject_unknown({"snapshots"});
         if (output->has("snapshots")) snapshots = output->numbers("snapshots");
-        for (std::size_t i = 0; i < snapshots.size(); ++i) {
-            if (!(snapshots[i] >= history.start_time() && snapshots[i] <= end_time)) {
-                throw InvalidInput(fmt::format("output.snapshots[{}]", i), format_value(snapshots[i]),
-                                   fmt::format("must lie within the simulated time [{}, {}]",
-                                               history.start_time(), end_time));
-            }
-        }
     }
 
     drivers::NumericsOptions numerics;
     if (auto table = root.table("numerics")) {
-        table->reject_unknown({"elements", "time_step", "output_every", "half_width", "max_element_steps", "max_memory"});
+        table->reject_unknown(
+            {"elements", "time_step", "output_every", "half_width", "max_element_steps", "max_memory"});
         numerics.elements = table->optional_count("elements");
-        if (numerics.elements && *numerics.elements > foundation::max_elements) {
-            throw InvalidInput("numerics.elements", std::to_string(*numerics.elements),
-                               fmt::format("at most {} (the state would not fit in memory)", foundation::max_elements));
-        }
         numerics.time_step = table->optional_number("time_step");
         numerics.half_width = table->optional_number("half_width");
         numerics.output_every = table->optional_count("output_every").value_or(1);
-        if (numerics.time_step) require_positive("numerics.time_step", *numerics.time_step);
-        if (numerics.half_width) require_positive("numerics.half_width", *numerics.half_width);
         numerics.max_element_steps = table->optional_number("max_element_steps");
         numerics.max_memory = table->optional_number("max_memory");
-        if (numerics.max_element_steps) require_positive("numerics.max_element_steps", *numerics.max_element_steps);
-        if (numerics.max_memory) require_positive("numerics.max_memory", *numerics.max_memory);
     }
 
-    return drivers::ContactCase{title,    std::move(material),  std::move(indenter), control, std::move(history),
-                                end_time, std::move(snapshots), numerics,            std::move(shear_material),
-                                impact,   std::move(tangential), approximate};
+    drivers::ContactCase contact_case{title,    std::move(material),  std::move(indenter), control,
+                                      std::move(history), end_time, std::move(snapshots), numerics,
+                                      std::move(shear_material), impact, std::move(tangential), approximate};
+    drivers::validate(contact_case);
+    return contact_case;
 }
 
 drivers::ContactCase load_case(const std::filesystem::path& path) {

@@ -1,3 +1,5 @@
+#include <fmt/format.h>
+
 #include "mdr/error.hpp"
 #include "mdr/profile/profile.hpp"
 
@@ -20,7 +22,10 @@ public:
         return depth > 0.0 ? 2.0 * depth / (std::numbers::pi * slope_) : 0.0;
     }
     double max_radius() const override { return std::numeric_limits<double>::infinity(); }
-    std::string describe() const override { return "cone slope_deg = " + format_value(slope_deg_); }
+    std::string describe() const override {
+        // Ten digits: one of the two angles is 90 minus the other, which need not be exact in binary (19.7).
+        return fmt::format("cone slope_deg = {:.10g} (half_angle_deg = {:.10g})", slope_deg_, 90.0 - slope_deg_);
+    }
 
 private:
     double slope_deg_;
@@ -33,6 +38,12 @@ std::unique_ptr<Profile> make_cone(double slope_deg) {
     require_positive("slope_deg", slope_deg);
     if (!(slope_deg < 90.0)) throw InvalidInput("slope_deg", format_value(slope_deg), "must be < 90");
     return std::make_unique<Cone>(slope_deg);
+}
+
+std::unique_ptr<Profile> make_cone_from_half_angle(double half_angle_deg) {
+    require_positive("half_angle_deg", half_angle_deg);
+    if (!(half_angle_deg < 90.0)) throw InvalidInput("half_angle_deg", format_value(half_angle_deg), "must be < 90");
+    return std::make_unique<Cone>(90.0 - half_angle_deg);
 }
 
 }  // namespace mdr::profile

@@ -440,3 +440,26 @@ def test_tiny_time_step_is_refused_quickly(run_case):
     result = run_case(case_text(numerics="[numerics]\ntime_step = 1e-12\n"), timeout=30)
     assert_bad_input(result, "numerics.time_step", "1e-12", "steps")
     assert time.monotonic() - start < 10.0
+
+
+def test_cone_by_half_angle_matches_sneddon(run_case, workdir):
+    """A cone given by its half-angle alpha (between flank and axis): the elastic force of eq. 24-25,
+    F = 8 G d^2 / (pi tan(90 deg - alpha)), and the description prints both angles."""
+    text = case_text(material='[material]\nmodel = "elastic"\nG = 1.0e6\n',
+                     indenter='[indenter]\nshape = "cone"\nhalf_angle_deg = 70.3\n', numerics="")
+    result = run_case(text)
+    assert result.returncode == 0, result.stderr
+    assert "cone slope_deg = 19.7 (half_angle_deg = 70.3) " in result.stdout
+    summary = json.loads((workdir / "out" / "summary.json").read_text(encoding="utf-8"))
+    expected = 8.0 * 1.0e6 * 1.0e-4**2 * math.tan(math.radians(70.3)) / math.pi
+    assert summary["max_force"] == pytest.approx(expected, rel=1e-4)
+
+
+@pytest.mark.parametrize("keys,fragments", [
+    ("slope_deg = 20\nhalf_angle_deg = 70\n", ["indenter.slope_deg", "given with half_angle_deg", "one of"]),
+    ("", ["indenter.slope_deg", "(missing)", "half_angle_deg"]),
+    ("half_angle_deg = 0\n", ["indenter.half_angle_deg", "= 0", "must be > 0"]),
+    ("half_angle_deg = 90\n", ["indenter.half_angle_deg", "= 90", "must be < 90"]),
+])
+def test_cone_angles_bad_input(run_case, keys, fragments):
+    assert_bad_input(run_case(case_text(indenter=f'[indenter]\nshape = "cone"\n{keys}')), *fragments)

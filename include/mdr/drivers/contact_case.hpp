@@ -88,7 +88,8 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// modulus over default_steps (and the material-time rule), the half-width 1.2 times the elastic contact radius
 /// with the equilibrium modulus (an upper bound: the viscoelastic body is stiffer and dissipates). A harmonic
 /// tangential load caps the default time step at its period over default_steps_per_period. Throws
-/// mdr::InvalidInput when the run would exceed its bounds of work or memory (require_bounded_work).
+/// mdr::InvalidInput for a problem that breaks a rule (validate) or would exceed its bounds of work or memory
+/// (require_bounded_work).
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case);
 
 /// Scales of an elastic impact (energy balance m v0^2 / 2 = int F_el dd), used for the impact defaults.

@@ -34,6 +34,10 @@ std::unique_ptr<Profile> make_sphere(double R);
 /// Cone; slope_deg is the angle between the flank and the flat surface, 0 < slope < 90:
 /// f = r tan(theta), g = (pi/2)|x| tan(theta) (eq. 24, 25). Key `slope_deg`.
 std::unique_ptr<Profile> make_cone(double slope_deg);
+/// The same cone given by its half-angle (between flank and axis, as nanoindentation tips are specified: 70.3 deg
+/// for a Berkovich-equivalent cone): slope_deg = 90 - half_angle_deg. Throws mdr::InvalidInput (key
+/// `half_angle_deg`) unless 0 < half_angle_deg < 90.
+std::unique_ptr<Profile> make_cone_from_half_angle(double half_angle_deg);
 /// Flat cylindrical punch of radius a: g = 0 for |x| <= a, rigid wall beyond. Key `a`.
 std::unique_ptr<Profile> make_flat_punch(double a);
 /// Power law f = c r^n, n > 0: g = kappa_n c |x|^n, kappa_n = sqrt(pi) Gamma(n/2+1)/Gamma(n/2+1/2). Keys `c`, `n`.

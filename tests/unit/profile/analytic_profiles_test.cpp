@@ -147,7 +147,8 @@ TEST(FlatPunch, RigidWallBeyondItsRadius) {
 
 TEST(AnalyticProfiles, Describe) {
     EXPECT_EQ(mdr::profile::make_sphere(0.01)->describe(), "sphere R = 0.01");
-    EXPECT_EQ(mdr::profile::make_cone(30.0)->describe(), "cone slope_deg = 30");
+    EXPECT_EQ(mdr::profile::make_cone(30.0)->describe(), "cone slope_deg = 30 (half_angle_deg = 60)");
+    EXPECT_EQ(mdr::profile::make_cone_from_half_angle(70.3)->describe(), "cone slope_deg = 19.7 (half_angle_deg = 70.3)");
     EXPECT_EQ(mdr::profile::make_flat_punch(0.001)->describe(), "flat punch a = 0.001");
     EXPECT_EQ(mdr::profile::make_power_law(2.0, 1.5)->describe(), "power law c = 2, n = 1.5");
 }

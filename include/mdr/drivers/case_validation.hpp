@@ -1,0 +1,21 @@
+#pragma once
+/// \file
+/// The rules of a contact problem, checked in the library: a ContactCase built in C++ gets the same
+/// `key = value: rule` errors (mdr::InvalidInput, keys named as in the case file) as the command line.
+
+#include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/tangential_load.hpp"
+
+namespace mdr::drivers {
+
+/// Checks a tangential load: friction finite and >= 0 (`tangential.friction`); exactly one of a history (starting
+/// at 0, without jumps) or a harmonic (finite amplitude, frequency > 0, end after start).
+void validate(const TangentialLoad& load);
+
+/// Checks a contact problem: an indenter; for an impact a mass and an approach speed > 0 and no tangential load;
+/// under force control no negative force; under displacement control no jump against a dashpot; an end after the
+/// first history time (finite unless an impact); snapshots within the simulated time; positive numerics. Called by
+/// resolve_numerics, so every driver runs only valid problems.
+void validate(const ContactCase& contact_case);
+
+}  // namespace mdr::drivers

@@ -1,0 +1,109 @@
+#include "mdr/drivers/case_validation.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "mdr/error.hpp"
+#include "mdr/foundation/foundation.hpp"
+
+namespace mdr::drivers {
+namespace {
+
+void validate_history(const ContactCase& contact_case) {
+    const auto& points = contact_case.history.points();
+    if (contact_case.control == Control::force) {
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            if (points[i].value < 0.0) {
+                throw InvalidInput(fmt::format("load.history[{}].F", i), format_value(points[i].value),
+                                   "must be >= 0 in force control (the contact cannot pull)");
+            }
+        }
+    }
+    if (contact_case.control == Control::displacement && contact_case.material.viscosity() > 0.0 &&
+        contact_case.history.has_jump()) {
+        throw InvalidInput("load.history", "[...]",
+                           "a jump in depth needs an infinite force with a dashpot (eta > 0); give the jump a duration");
+    }
+}
+
+void validate_impact(const ContactCase& contact_case) {
+    if (contact_case.control != Control::impact) {
+        if (contact_case.impact) {
+            throw InvalidInput("load.velocity", format_value(contact_case.impact->velocity),
+                               "only with control = \"impact\"");
+        }
+        return;
+    }
+    if (!contact_case.impact) throw InvalidInput("load.velocity", "(missing)", "is required for an impact");
+    require_positive("load.velocity", contact_case.impact->velocity);
+    require_positive("indenter.mass", contact_case.impact->mass);
+    if (contact_case.tangential) throw InvalidInput("tangential", "[...]", "not with load.control = \"impact\"");
+}
+
+void validate_times(const ContactCase& contact_case) {
+    const double start = contact_case.history.start_time();
+    const bool impact = contact_case.control == Control::impact;
+    // A history of jumps only (all points at one time) may end where it starts: no step has a length.
+    const bool instant = contact_case.history.end_time() == start && contact_case.end_time == start;
+    if (!(contact_case.end_time > start || instant) || (!impact && !std::isfinite(contact_case.end_time))) {
+        throw InvalidInput("load.end", format_value(contact_case.end_time),
+                           "must be after the first history time " + format_value(start) +
+                               (impact ? "" : " and finite"));
+    }
+    for (std::size_t i = 0; i < contact_case.snapshots.size(); ++i) {
+        const double t = contact_case.snapshots[i];
+        if (!(t >= start && t <= contact_case.end_time)) {
+            throw InvalidInput(fmt::format("output.snapshots[{}]", i), format_value(t),
+                               fmt::format("must lie within the simulated time [{}, {}]", start,
+                                           contact_case.end_time));
+        }
+    }
+}
+
+void validate_numerics(const NumericsOptions& numerics) {
+    if (numerics.elements && (*numerics.elements < 1 || *numerics.elements > foundation::max_elements)) {
+        throw InvalidInput("numerics.elements", std::to_string(*numerics.elements),
+                           fmt::format("must be from 1 to {} (the state would not fit in memory)",
+                                       foundation::max_elements));
+    }
+    if (numerics.time_step) require_positive("numerics.time_step", *numerics.time_step);
+    if (numerics.half_width) require_positive("numerics.half_width", *numerics.half_width);
+    if (numerics.output_every < 1) throw InvalidInput("numerics.output_every", "0", "must be an integer >= 1");
+    if (numerics.max_element_steps) require_positive("numerics.max_element_steps", *numerics.max_element_steps);
+    if (numerics.max_memory) require_positive("numerics.max_memory", *numerics.max_memory);
+}
+
+}  // namespace
+
+void validate(const TangentialLoad& load) {
+    require_non_negative("tangential.friction", load.friction);
+    if (load.history.has_value() == load.harmonic.has_value()) {
+        throw InvalidInput("tangential", "[...]", "give either history or amplitude, frequency, start, end");
+    }
+    if (load.history && load.history->has_jump()) {
+        throw InvalidInput("tangential.history", "[...]",
+                           "must start at 0 and have no jumps (give each change a duration)");
+    }
+    if (const auto& wave = load.harmonic) {
+        require_finite("tangential.amplitude", wave->amplitude);
+        require_positive("tangential.frequency", wave->frequency);
+        require_finite("tangential.start", wave->start);
+        require_finite("tangential.end", wave->end);
+        if (!(wave->end > wave->start)) {
+            throw InvalidInput("tangential.end", format_value(wave->end),
+                               "must be after tangential.start = " + format_value(wave->start));
+        }
+    }
+}
+
+void validate(const ContactCase& contact_case) {
+    if (!contact_case.indenter) throw InvalidInput("indenter", "(missing)", "is required");
+    validate_impact(contact_case);
+    validate_history(contact_case);
+    validate_times(contact_case);
+    if (contact_case.tangential) validate(*contact_case.tangential);
+    validate_numerics(contact_case.numerics);
+}
+
+}  // namespace mdr::drivers

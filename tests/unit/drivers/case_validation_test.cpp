@@ -1,0 +1,90 @@
+// A ContactCase built in C++, without a case file, gets the command line's `key = value: rule` errors from the
+// library: from validate() and from every driver (which validates before it allocates anything).
+
+#include "mdr/drivers/case_validation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "mdr/drivers/indentation.hpp"
+#include "mdr/error.hpp"
+#include "mdr/profile/profile.hpp"
+
+namespace mdr::drivers {
+namespace {
+
+ContactCase creep_test() {
+    ContactCase contact_case{.title = "creep test",
+                             .material = rheology::Rheology::standard(1e6, 2e6, 0.1),
+                             .indenter = profile::make_sphere(0.01),
+                             .control = Control::force,
+                             .history = LoadHistory({{0.0, 0.0}, {0.1, 0.5}, {1.0, 0.5}}, "load.history"),
+                             .end_time = 1.0};
+    contact_case.numerics.elements = 100;
+    return contact_case;
+}
+
+// The key of the InvalidInput that `call` throws ("" when it throws none).
+template <typename Call>
+std::string key_of(Call call) {
+    try {
+        call();
+    } catch (const InvalidInput& error) {
+        return error.key();
+    }
+    return "";
+}
+
+TEST(CaseValidation, AValidCaseRuns) {
+    const auto contact_case = creep_test();
+    EXPECT_EQ(key_of([&] { validate(contact_case); }), "");
+    EXPECT_GT(run_case(contact_case).force.back(), 0.0);
+}
+
+TEST(CaseValidation, ANegativeForceIsRefusedNotANaNDepth) {
+    auto contact_case = creep_test();
+    contact_case.history = LoadHistory({{0.0, 0.0}, {0.1, -0.5}}, "load.history");
+    EXPECT_EQ(key_of([&] { validate(contact_case); }), "load.history[1].F");
+    EXPECT_EQ(key_of([&] { run_case(contact_case); }), "load.history[1].F");
+}
+
+TEST(CaseValidation, AForgottenEndTimeIsRefusedNotARunOfNoSteps) {
+    auto contact_case = creep_test();
+    contact_case.end_time = 0.0;
+    EXPECT_EQ(key_of([&] { run_case(contact_case); }), "load.end");
+}
+
+TEST(CaseValidation, EveryRuleNamesItsKey) {
+    const auto expect_key = [](const std::string& key, auto change) {
+        auto contact_case = creep_test();
+        change(contact_case);
+        EXPECT_EQ(key_of([&] { validate(contact_case); }), key);
+    };
+    expect_key("indenter", [](ContactCase& c) { c.indenter.reset(); });
+    expect_key("output.snapshots[0]", [](ContactCase& c) { c.snapshots = {2.0}; });
+    expect_key("numerics.time_step", [](ContactCase& c) { c.numerics.time_step = -1.0; });
+    expect_key("numerics.elements", [](ContactCase& c) { c.numerics.elements = 0; });
+    expect_key("numerics.output_every", [](ContactCase& c) { c.numerics.output_every = 0; });
+    expect_key("load.velocity", [](ContactCase& c) { c.control = Control::impact; });
+    expect_key("indenter.mass", [](ContactCase& c) {
+        c.control = Control::impact;
+        c.impact = ImpactLoad{0.0, 1.0};
+    });
+    expect_key("load.history", [](ContactCase& c) {
+        c.control = Control::displacement;
+        c.material = rheology::Rheology::kelvin_voigt(1e6, 1e3);
+        c.history = LoadHistory({{0.0, 1e-5}, {1.0, 1e-5}}, "load.history");
+    });
+    expect_key("tangential.friction", [](ContactCase& c) {
+        c.tangential = TangentialLoad{-0.1, TangentialControl::displacement, std::nullopt,
+                                      HarmonicLoad{1e-6, 10.0, 0.5, 1.0}};
+    });
+    expect_key("tangential.end", [](ContactCase& c) {
+        c.tangential = TangentialLoad{0.3, TangentialControl::displacement, std::nullopt,
+                                      HarmonicLoad{1e-6, 10.0, 0.5, 0.5}};
+    });
+}
+
+}  // namespace
+}  // namespace mdr::drivers
