@@ -103,7 +103,7 @@ def test_pip_venv(tmp_path: pathlib.Path) -> None:
     python = str(venv / "bin/python")
     # Offline (no index) and without build isolation; the existing build is reused (setup.py,
     # MDR_CMAKE_BUILD_DIR): without it pip configures and builds the extension and the binary afresh.
-    run(python, "-m", "pip", "install", "--no-build-isolation", "--no-deps", "--no-index",
+    run(python, "-m", "pip", "install", "--no-build-isolation", "--no-deps", "--no-index", "--no-cache-dir",
         "--disable-pip-version-check", SOURCE, cwd=tmp_path, env=clean_env(MDR_CMAKE_BUILD_DIR=str(BUILD)))
 
     site = pathlib.Path(run(python, "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])").strip())
