@@ -23,6 +23,7 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/mdrConfig.cmake ${CMAKE_CURRENT_BINARY
 # cpack -G DEB: one package with all of the above under /usr. Depends: the shared libraries that the binary and
 # the extension link (libfmt9, libstdc++6, libc6, ..., found by dpkg-shlibdeps) and the Python the extension was
 # built for; the CMake package needs fmt's CMake files to be found, hence libfmt-dev as a recommendation.
+set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME mdr)
 set(CPACK_PACKAGE_VENDOR "mdr developers")
 set(CPACK_PACKAGE_CONTACT "mdr developers <mdr@localhost>")

@@ -88,6 +88,7 @@ def test_cmake_package(tmp_path: pathlib.Path) -> None:
     assert f"mdr_DIR:PATH={prefix}/lib/cmake/mdr" in cache
     run(CMAKE, "--build", consumer, "-j", "2")
     assert run(consumer / "consumer").strip().endswith(f"mdr {VERSION}: ok")
+    assert run(consumer / "io_consumer").strip().endswith(": ok")
 
     workdir = tmp_path / "elsewhere"
     workdir.mkdir()
