@@ -1,0 +1,46 @@
+# What `cmake --install` and `cpack -G DEB` put where (docs/cpp.md, docs/python.md):
+#   bin/mdr                                  the command line
+#   lib/libmdr_core.a, lib/libmdr_io.a       the library (static: see docs/cpp.md)
+#   include/mdr/...                          the public headers
+#   lib/cmake/mdr/                           the CMake package: find_package(mdr), targets mdr::core and mdr::io
+#   lib/python3/dist-packages/mdr/           the Python package (with MDR_BUILD_PYTHON; python/CMakeLists.txt)
+include(CMakePackageConfigHelpers)
+
+set(MDR_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/mdr CACHE STRING
+    "Where the CMake package (mdrConfig.cmake) is installed, relative to the prefix")
+
+install(TARGETS mdr RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS mdr_core mdr_io EXPORT mdrTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(DIRECTORY include/mdr DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
+install(EXPORT mdrTargets NAMESPACE mdr:: FILE mdrTargets.cmake DESTINATION ${MDR_INSTALL_CMAKEDIR})
+configure_package_config_file(cmake/mdrConfig.cmake.in ${CMAKE_CURRENT_BINARY_DIR}/mdrConfig.cmake
+                              INSTALL_DESTINATION ${MDR_INSTALL_CMAKEDIR})
+write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/mdrConfigVersion.cmake
+                                 COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/mdrConfig.cmake ${CMAKE_CURRENT_BINARY_DIR}/mdrConfigVersion.cmake
+        DESTINATION ${MDR_INSTALL_CMAKEDIR})
+
+# cpack -G DEB: one package with all of the above under /usr. Depends: the shared libraries that the binary and
+# the extension link (libfmt9, libstdc++6, libc6, ..., found by dpkg-shlibdeps) and the Python the extension was
+# built for; the CMake package needs fmt's CMake files to be found, hence libfmt-dev as a recommendation.
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGE_NAME mdr)
+set(CPACK_PACKAGE_VENDOR "mdr developers")
+set(CPACK_PACKAGE_CONTACT "mdr developers <mdr@localhost>")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "viscoelastic contact mechanics by the Method of Dimensionality Reduction")
+set(CPACK_PACKAGE_DESCRIPTION
+    "A C++20 library (static, with its CMake package), a command line driven by TOML case files, and a Python package over the same core.")
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libfmt-dev")
+if(MDR_BUILD_PYTHON)
+  # The extension is built for one Python minor version (its file name says which).
+  math(EXPR next_minor "${MDR_PYTHON_VERSION_MINOR} + 1")
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3 (>= ${MDR_PYTHON_VERSION_MAJOR}.${MDR_PYTHON_VERSION_MINOR}~), \
+python3 (<< ${MDR_PYTHON_VERSION_MAJOR}.${next_minor}~), python3-numpy")
+  set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libfmt-dev, python3-matplotlib")
+endif()
+include(CPack)
