@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "mdr/rheology/compressible.hpp"
 #include "mdr/rheology/rheology.hpp"
 
 namespace py = pybind11;
@@ -64,6 +65,22 @@ void bind_rheology(py::module_& module) {
             py::arg("omega"), "G^(omega) = i omega G*(i omega) (eq. 7): real part storage, imaginary part loss [Pa].")
         .def("series", [](const Rheology& a, const Rheology& b) { return rheology::in_series(a, b); }, py::arg("other"),
              "This material in series with another: creep functions add (eq. 8).")
+        .def("with_bulk", &rheology::compressible_effective, py::arg("bulk"),
+             "The effective material of a compressible half-space with this shear material and the bulk material "
+             "`bulk` (K for G; eq. 56): J_eff = J + J_B, what run uses for K or [material.bulk].")
+        .def(py::pickle(
+            [](const Rheology& m) {
+                std::vector<std::pair<double, double>> terms;
+                for (const auto& term : m.terms()) terms.emplace_back(term.modulus, term.relaxation_time);
+                return py::make_tuple(m.equilibrium_modulus(), m.viscosity(), terms);
+            },
+            [](const py::tuple& state) {
+                std::vector<rheology::RelaxationTerm> terms;
+                for (const auto& [modulus, time] : state[2].cast<std::vector<std::pair<double, double>>>()) {
+                    terms.push_back({modulus, time});
+                }
+                return Rheology(state[0].cast<double>(), state[1].cast<double>(), std::move(terms));
+            }))
         .def_property_readonly("G_inf", &Rheology::equilibrium_modulus, "Equilibrium modulus [Pa].")
         .def_property_readonly("eta", &Rheology::viscosity, "Parallel viscosity [Pa s].")
         .def_property_readonly(

@@ -1,48 +1,56 @@
-"""Writes a case given as nested dicts as TOML text, so that dict cases go through the same parser as files."""
+"""Writes a case given as nested dicts as TOML text with tomli-w (Debian python3-tomli-w), so that dict cases go
+through the same reader as files: keys with spaces or dots are quoted, any text is escaped, numpy values and
+`mdr.Material` objects become plain TOML values."""
 
 from __future__ import annotations
 
-import json
-import math
 from typing import Any, Mapping
 
 import numpy as np
+import tomli_w
+
+from ._mdr import Material
 
 
-def _value(value: Any, key: str) -> str:
+def material_table(material: Material) -> dict[str, Any]:
+    """The `[material]` table of a Material: its named model where one fits (elastic, viscous, kelvin_voigt), else
+    a Prony series. A parallel dashpot together with relaxation branches has no model of the case format."""
+    terms = [[modulus, time] for modulus, time in material.terms]
+    if material.eta > 0.0 and terms:
+        raise ValueError("material: a Material with both a parallel dashpot (eta) and relaxation branches has no "
+                         "model of the case format; give [material] as a dict")
+    if material.eta > 0.0:
+        if material.G_inf == 0.0:
+            return {"model": "viscous", "eta": material.eta}
+        return {"model": "kelvin_voigt", "G": material.G_inf, "eta": material.eta}
+    if not terms:
+        return {"model": "elastic", "G": material.G_inf}
+    return {"model": "prony", "G_inf": material.G_inf, "terms": terms}
+
+
+def _plain(value: Any, key: str) -> Any:
+    if isinstance(value, Material):
+        return material_table(value)
+    if isinstance(value, Mapping):
+        for name in value:
+            if not isinstance(name, str):
+                raise TypeError(f"{key}{name!r}: keys must be strings")
+        return {name: _plain(item, f"{key}{name}.") for name, item in value.items()}
     if isinstance(value, (bool, np.bool_)):
-        return "true" if value else "false"
+        return bool(value)
     if isinstance(value, (int, np.integer)):
-        return str(int(value))
+        return int(value)
     if isinstance(value, (float, np.floating)):
-        number = float(value)
-        if math.isnan(number):
-            return "nan"
-        if math.isinf(number):
-            return "inf" if number > 0 else "-inf"
-        return repr(number)
+        return float(value)
     if isinstance(value, str):
-        return json.dumps(value)
+        return value
     if isinstance(value, np.ndarray):
-        return _value(value.tolist(), key)
+        return _plain(value.tolist(), key)
     if isinstance(value, (list, tuple)):
-        return "[" + ", ".join(_value(item, key) for item in value) + "]"
-    raise TypeError(f"{key}: unsupported value of type {type(value).__name__}")
+        return [_plain(item, key) for item in value]
+    raise TypeError(f"{key.rstrip('.')}: unsupported value of type {type(value).__name__}")
 
 
-def to_toml(case: Mapping[str, Any], prefix: str = "") -> str:
-    """TOML text for a nested mapping: scalars and arrays first, then sub-tables as [a.b] headers."""
-    lines = []
-    tables = []
-    for key, value in case.items():
-        if not isinstance(key, str):
-            raise TypeError(f"{prefix}{key}: keys must be strings")
-        if isinstance(value, Mapping):
-            tables.append((key, value))
-        else:
-            lines.append(f"{key} = {_value(value, prefix + key)}")
-    text = "\n".join(lines) + ("\n" if lines else "")
-    for key, value in tables:
-        name = prefix + key
-        text += f"\n[{name}]\n" + to_toml(value, name + ".")
-    return text
+def to_toml(case: Mapping[str, Any]) -> str:
+    """TOML text for a case given as a nested mapping."""
+    return tomli_w.dumps(_plain(case, ""))

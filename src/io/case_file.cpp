@@ -9,6 +9,7 @@
 
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/error.hpp"
+#include "mdr/rheology/compressible.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "material_reader.hpp"
 #include "toml_reader.hpp"
@@ -72,10 +73,10 @@ Body read_body(TableReader& table) {
     if (table.has("K")) {
         const double bulk_modulus = table.number("K");
         require_positive(table.key_path("K"), bulk_modulus);
-        body.effective = compressible_effective(body.shear, rheology::Rheology::elastic(bulk_modulus));
+        body.effective = rheology::compressible_effective(body.shear, rheology::Rheology::elastic(bulk_modulus));
     } else if (auto bulk = table.table("bulk")) {
         if (!bulk->has("model")) throw InvalidInput(bulk->key_path("model"), "(missing)", "a bulk table needs a model");
-        body.effective = compressible_effective(body.shear, read_rheology(*bulk, "K", {}));
+        body.effective = rheology::compressible_effective(body.shear, read_rheology(*bulk, "K", {}));
     }
     return body;
 }

@@ -45,13 +45,4 @@ rheology::Rheology read_rheology(TableReader& table, const std::string& modulus,
     }
 }
 
-rheology::Rheology compressible_effective(const rheology::Rheology& shear, const rheology::Rheology& bulk) {
-    // 3 / (3 Q_K(s) + Q_G(s)) = 1 / (Q_K(s) + Q_G(s)/3): the bulk operational modulus plus a third of the shear one.
-    std::vector<rheology::RelaxationTerm> terms = bulk.terms();
-    for (const auto& term : shear.terms()) terms.push_back({term.modulus / 3.0, term.relaxation_time});
-    const rheology::Rheology volumetric(bulk.equilibrium_modulus() + shear.equilibrium_modulus() / 3.0,
-                                        bulk.viscosity() + shear.viscosity() / 3.0, std::move(terms));
-    return rheology::in_series(shear, volumetric);
-}
-
 }  // namespace mdr::io

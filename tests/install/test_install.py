@@ -127,7 +127,7 @@ def test_deb(tmp_path: pathlib.Path) -> None:
     assert deb.name == f"mdr_{VERSION}_amd64.deb" or deb.name.startswith(f"mdr_{VERSION}_")
 
     depends = run("dpkg-deb", "-f", deb, "Depends")
-    for package in ["libfmt9", "libstdc++6", "libc6", "python3-numpy", "python3 ("]:
+    for package in ["libfmt9", "libstdc++6", "libc6", "python3-numpy", "python3-tomli-w", "python3 ("]:
         assert package in depends, f"Depends: {depends}"
     assert not FOREIGN.search(depends.replace("python3", "")), depends
 

@@ -511,3 +511,37 @@ def test_indenters_and_their_equivalent_profiles():
     assert sphere.equivalent(np.ones((2, 3))).shape == (2, 3)
     with pytest.raises(ValueError, match="R = -1"):
         mdr.Indenter.sphere(R=-1.0)
+
+
+def test_dict_cases_take_any_title_and_material_objects():
+    """Dicts go to the reader through a real TOML writer (tomli-w): a title with an emoji or quotes is kept as
+    written, and an mdr.Material stands for its [material] table (here the standard solid as a Prony series)."""
+    case = dict(CASE_DICT, title='Gummi 🎉 "A", 50 °C')
+    case["material"] = mdr.Material.standard(G_inf=1.0e6, G1=2.0e6, tau1=0.1)
+    result = mdr.run(case)
+    assert result.summary["case"] == 'Gummi 🎉 "A", 50 °C'
+    assert result.summary["max_force"] == pytest.approx(mdr.run(CASE_DICT).summary["max_force"], rel=1e-12)
+    for material in (mdr.Material.elastic(G=1e6), mdr.Material.kelvin_voigt(G=1e6, eta=1e3),
+                     mdr.Material.viscous(eta=1e3)):
+        assert mdr.check(dict(CASE_DICT, material=material))
+
+
+def test_a_key_with_a_space_is_an_unknown_key_not_a_toml_error():
+    case = dict(CASE_DICT, material=dict(CASE_DICT["material"], **{"tau 1": 0.1}))
+    with pytest.raises(ValueError, match=r"^material\.tau 1 = 0\.1: unknown key"):
+        mdr.check(case)
+
+
+def test_materials_pickle_and_compressible_materials_follow_eq_56():
+    import pickle
+
+    material = mdr.Material.prony(G_inf=1e6, terms=[(2e6, 0.01), (1e6, 1.0)])
+    copy = pickle.loads(pickle.dumps(material))
+    t = np.array([0.0, 0.1, 10.0])
+    assert np.array_equal(copy.relaxation(t), material.relaxation(t))
+    assert copy.terms == material.terms
+    # Elastic G and K: J_eff = 1/G + 1/(K + G/3) = 2 (1 - nu) / G (the plane-strain modulus E* = 4 G_eff).
+    G, K = 1.0e6, 5.0e6
+    nu = (3 * K - 2 * G) / (2 * (3 * K + G))
+    effective = mdr.Material.elastic(G=G).with_bulk(mdr.Material.elastic(G=K))
+    assert effective.creep([1.0])[0] == pytest.approx(2 * (1 - nu) / G, rel=1e-12)
