@@ -45,8 +45,8 @@ public:
     double position(std::size_t i) const { return (static_cast<double>(i) + 0.5) * spacing_; }
 
     /// Prepares a step of the given coefficients from the current state (call before trial_force/advance).
-    /// `indenter_rate` is dd/dt at the start of the step when the depth is solved from a smooth motion (impact):
-    /// a dashpot in contact then sees the trapezoidal end rate 2 (d1 - d0)/dt - rate (second order). Without it
+    /// `indenter_rate` is dd/dt at the start of the step when the depth is solved (impact, force control): a
+    /// dashpot in contact then sees the trapezoidal end rate 2 (d1 - d0)/dt - rate (second order). Without it
     /// it sees the step's secant rate, exact for a prescribed piecewise-linear depth. Force-free elements always
     /// take the trapezoidal rate from their own start rate.
     void begin_step(const StepCoefficients& coefficients, std::optional<double> indenter_rate = std::nullopt);
