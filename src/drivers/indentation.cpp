@@ -72,6 +72,7 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
 
     double depth = 0.0;
     double previous_depth = 0.0;
+    double shown_depth = 0.0;
     // Force control with a parallel dashpot: the indenter's rate dd/dt at the current node, so that the dashpot
     // sees the trapezoidal rate (second order, see Foundation::begin_step). Unknown (the secant rate is used for
     // one step) while nothing is in contact: the rate is then not tied to the force.
@@ -98,6 +99,7 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
             // A jump against a dashpot: the dashpot takes the force at once and the depth does not move.
             force = contact_case.control == Control::force ? target : foundation.total_force();
             if (rate) rate = jumped_rate(foundation, material.viscosity(), *rate, target - last_force);
+            shown_depth = depth;
         } else {
             foundation.begin_step(cache.get(time_step), rate);
             double new_depth = target;
@@ -112,11 +114,16 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
             previous_depth = depth;
             depth = new_depth;
             force = foundation.total_force();
+            // Riding on the recovering surface without force: the depth shown is where the surface touches,
+            // located between the centres (the foundation keeps stepping from its own depth).
+            shown_depth = contact_case.control == Control::force && target == 0.0
+                              ? std::min(depth, foundation.touching_depth())
+                              : depth;
         }
         last_force = force;
         ++result.steps;
         const bool last_at_this_time = n + 1 == nodes.size() || nodes[n + 1].time != nodes[n].time;
-        if (n % numerics.output_every == 0 || n + 1 == nodes.size()) record(nodes[n].time, depth, force);
+        if (n % numerics.output_every == 0 || n + 1 == nodes.size()) record(nodes[n].time, shown_depth, force);
         if (last_at_this_time) take_due_snapshots(nodes[n].time);
         if (progress && n % report_every == 0) progress(static_cast<double>(n) / static_cast<double>(nodes.size() - 1));
     }

@@ -25,14 +25,15 @@ constexpr double force = 0.5;      // F0 [N]
 double kelvin_voigt_creep(double t) { return -std::expm1(-t * modulus / viscosity) / modulus; }
 
 struct Record {
-    double hold;  ///< t_end [s]
-    double ramp;  ///< duration of the force ramp [s]; 0: a step at t = 0
+    double hold;              ///< t_end [s]
+    double ramp;              ///< duration of the force ramp [s]; 0: a step at t = 0
+    double radius_tolerance;  ///< of the final radius
 };
 
 class KelvinVoigtLongCreep : public ::testing::TestWithParam<Record> {};
 
 TEST_P(KelvinVoigtLongCreep, DepthAndRadiusAtDefaultNumerics) {
-    const auto [hold, ramp] = GetParam();
+    const auto [hold, ramp, radius_tolerance] = GetParam();
     const std::string history = ramp == 0.0 ? fmt::format("[[0.0, {}], [{}, {}]]", force, hold, force)
                                             : fmt::format("[[0.0, 0.0], [{}, {}], [{}, {}]]", ramp, force, hold, force);
     const auto result = run_toml(fmt::format(R"(
@@ -67,14 +68,16 @@ history = {}
     RecordProperty("radius_error", fmt::format("{:.2e}", radius_error));
     RecordProperty("steps", fmt::format("{}", result.steps));
     EXPECT_LT(depth_error, 1e-4);
-    EXPECT_LT(radius_error, 1e-3);
+    EXPECT_LT(radius_error, radius_tolerance);
     // Bounded work: the graded steps after the start do not grow with the record.
     EXPECT_LT(result.steps, 10000u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Holds, KelvinVoigtLongCreep,
-                         ::testing::Values(Record{10.0, 0.0}, Record{100.0, 0.0}, Record{100.0, 0.01},
-                                           Record{10000.0, 0.0}));
+                         // Observed radius errors 1.2e-5, 1.1e-5, 3.0e-4, 3.6e-5: the ramp's first graded steps
+                         // have a contact narrower than the first element's centre (the radius there is x_0).
+                         ::testing::Values(Record{10.0, 0.0, 1e-4}, Record{100.0, 0.0, 1e-4},
+                                           Record{100.0, 0.01, 1e-3}, Record{10000.0, 0.0, 1e-4}));
 
 }  // namespace
 }  // namespace mdr

@@ -56,4 +56,19 @@ double lee_radok_force(const PowerLawIndenter& indenter, const PronyMaterial& ma
 double sphere_creep_depth(const std::function<double(double)>& creep, double radius, double force, double ramp,
                           double t);
 
+/// Elastic impact of a rigid cone (θ [rad] between flank and surface, mass m [kg], speed v0 [m/s]) on a half-space
+/// of shear modulus G [Pa]: with F = k d², k = 8G/(π tanθ) (Sneddon), the energy balance gives
+/// d_max³ = 3 m v0² / (2k) and the contact time T = 2 ∫_0^d_max dd / v = (2/3) B(1/3, 1/2) d_max / v0 [s].
+double cone_impact_time(double slope_angle, double shear_modulus, double mass, double velocity);
+
+/// A cone (θ [rad] between flank and surface) on a standard solid (G∞, G1, τ1) under a force ramp from 0 at
+/// t = 0 to F0 [N] at t1 [s], then released at once (F = 0 after t1): the depth [m] at which the force-free tip
+/// rides on the recovering surface at t > t1, the surface displacement on the axis. Lee–Radok while loading,
+/// d(s)² = (π tanθ / 8) ∫_0^s J(s − s') dF(s') with J of Table 1; the pressure's elastic axis displacement at unit
+/// modulus U(s) = ∫_0^s G(s − s') dd(s') (the tip is in contact, u = d); after t1 the surface is traction-free, so
+/// by the hereditary law u(0, t) = ∫_0^t1 J(t − s) dU(s) − J(t − t1) U(t1) = ∫_0^t1 J'(t − s) U(s) ds. Nested
+/// adaptive quadrature (d ~ sqrt(s) at the start), ~1e-11 relative.
+double cone_riding_depth(double slope_angle, double G_inf, double G1, double tau1, double force, double t1,
+                         double t);
+
 }  // namespace mdr::reference
