@@ -30,6 +30,20 @@ double cone_force(double slope_angle, double shear_modulus, double depth) {
     return 8.0 * shear_modulus * depth * depth / (pi * std::tan(slope_angle));
 }
 
+double truncated_cone_depth(double slope_angle, double flat_radius, double contact_radius) {
+    return contact_radius * std::tan(slope_angle) * std::acos(flat_radius / contact_radius);
+}
+
+double truncated_cone_force(double slope_angle, double flat_radius, double shear_modulus, double depth) {
+    double upper = 2.0 * flat_radius;
+    while (truncated_cone_depth(slope_angle, flat_radius, upper) < depth) upper *= 2.0;
+    const double a = find_root([&](double r) { return truncated_cone_depth(slope_angle, flat_radius, r) - depth; },
+                               flat_radius, upper, 1e-16 * upper);
+    const double b = flat_radius;
+    return 8.0 * shear_modulus * std::tan(slope_angle) *
+           (0.5 * a * a * std::acos(b / a) + 0.5 * b * std::sqrt((a - b) * (a + b)));
+}
+
 double flat_punch_force(double punch_radius, double shear_modulus, double depth) {
     return 8.0 * shear_modulus * punch_radius * depth;
 }

@@ -24,6 +24,13 @@ double cone_contact_radius(double slope_angle, double depth);
 /// Sneddon cone force F = 2∫_0^a 4G (d − (π/2) tanθ x) dx = 8 G d² /(π tanθ) [N].
 double cone_force(double slope_angle, double shear_modulus, double depth);
 
+/// Truncated cone (flat tip of radius b [m], flanks at θ [rad] beyond: f = (r − b) tanθ) at contact radius a > b:
+/// Sneddon's d = a ∫_0^a f'(r) / sqrt(a² − r²) dr = a tanθ acos(b/a) and
+/// F = 8G ∫_0^a r² f'(r) / sqrt(a² − r²) dr = 8G tanθ [(a²/2) acos(b/a) + (b/2) sqrt(a² − b²)] [N].
+double truncated_cone_depth(double slope_angle, double flat_radius, double contact_radius);
+/// Force [N] of the truncated cone at depth d > 0 (the contact radius from d by bisection).
+double truncated_cone_force(double slope_angle, double flat_radius, double shear_modulus, double depth);
+
 /// Boussinesq flat punch of radius a [m] at depth d: F = 8 G a d [N].
 double flat_punch_force(double punch_radius, double shear_modulus, double depth);
 
