@@ -25,15 +25,14 @@ constexpr double force = 0.5;      // F0 [N]
 double kelvin_voigt_creep(double t) { return -std::expm1(-t * modulus / viscosity) / modulus; }
 
 struct Record {
-    double hold;              ///< t_end [s]
-    double ramp;              ///< duration of the force ramp [s]; 0: a step at t = 0
-    double radius_tolerance;  ///< of the final radius
+    double hold;  ///< t_end [s]
+    double ramp;  ///< duration of the force ramp [s]; 0: a step at t = 0
 };
 
 class KelvinVoigtLongCreep : public ::testing::TestWithParam<Record> {};
 
 TEST_P(KelvinVoigtLongCreep, DepthAndRadiusAtDefaultNumerics) {
-    const auto [hold, ramp, radius_tolerance] = GetParam();
+    const auto [hold, ramp] = GetParam();
     const std::string history = ramp == 0.0 ? fmt::format("[[0.0, {}], [{}, {}]]", force, hold, force)
                                             : fmt::format("[[0.0, 0.0], [{}, {}], [{}, {}]]", ramp, force, hold, force);
     const auto result = run_toml(fmt::format(R"(
@@ -61,23 +60,24 @@ history = {}
         if (ramp == 0.0 && t < 0.005) continue;
         const double exact = depth(t);
         depth_error = std::max(depth_error, std::abs(result.depth[i] - exact) / final_depth);
-        // Eq. (31), a^2 = R d, for the contact radius the foundation locates.
+        // Eq. (31), a^2 = R d, for the contact radius the foundation locates; under the ramp from 1% of it on
+        // (before, the contact is narrower than the first element's centre, and the radius there is x_0: 3e-4).
+        if (t < 0.01 * ramp) continue;
         radius_error = std::max(radius_error, std::abs(result.radius[i] - std::sqrt(radius * exact)) / final_radius);
     }
     RecordProperty("depth_error", fmt::format("{:.2e}", depth_error));
     RecordProperty("radius_error", fmt::format("{:.2e}", radius_error));
     RecordProperty("steps", fmt::format("{}", result.steps));
     EXPECT_LT(depth_error, 1e-4);
-    EXPECT_LT(radius_error, radius_tolerance);
+    EXPECT_LT(radius_error, 1e-4);
     // Bounded work: the graded steps after the start do not grow with the record.
     EXPECT_LT(result.steps, 10000u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Holds, KelvinVoigtLongCreep,
-                         // Observed radius errors 1.2e-5, 1.1e-5, 3.0e-4, 3.6e-5: the ramp's first graded steps
-                         // have a contact narrower than the first element's centre (the radius there is x_0).
-                         ::testing::Values(Record{10.0, 0.0, 1e-4}, Record{100.0, 0.0, 1e-4},
-                                           Record{100.0, 0.01, 1e-3}, Record{10000.0, 0.0, 1e-4}));
+                         // Observed: depth 2.2e-5, 2.0e-5, 2.9e-5, 2.7e-5; radius 1.2e-5, 1.1e-5, 1.9e-5, 3.6e-5.
+                         ::testing::Values(Record{10.0, 0.0}, Record{100.0, 0.0}, Record{100.0, 0.01},
+                                           Record{10000.0, 0.0}));
 
 }  // namespace
 }  // namespace mdr
