@@ -24,7 +24,7 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
     auto snapshot = snapshots.begin();
 
     double time = 0.0, depth = 0.0, velocity = approach, force = 0.0;
-    std::array<double, 2> inner_exits{0.0, 0.0};  // when the two innermost elements last left contact
+    std::array<double, 2> inner_exits{-1.0, -1.0};  // when the two innermost elements last left contact
     auto record = [&] {
         result.time.push_back(time);
         result.depth.push_back(depth);
@@ -69,11 +69,12 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
             const double fraction = foundation.latest_exit();
             new_velocity = velocity - force * fraction * step / (2.0 * mass);
             ImpactOutcome outcome;
-            // The axis leaves last: the exit times of the two innermost elements are linear in g near it, so
-            // extrapolated there (Foundation::axis_weight) they give the end to O(dx^2), where the innermost
-            // element's own exit is only O(dx) for a cone.
+            // Where the contact shrinks to the axis, the exit times of the two innermost elements are linear in
+            // g near it, so extrapolated there (Foundation::axis_weight) they give the end to O(dx^2), where the
+            // innermost element's own exit is only O(dx) for a cone.
             outcome.contact_time = time + fraction * step;
-            if (inner_exits[1] < inner_exits[0]) {
+            const bool axis_last = foundation.inner_exit(0) == fraction;  // not an annulus leaving last
+            if (axis_last && inner_exits[1] >= 0.0 && inner_exits[1] < inner_exits[0]) {
                 outcome.contact_time += foundation.axis_weight() * (inner_exits[1] - inner_exits[0]);
             }
             outcome.rebound_velocity = -new_velocity;

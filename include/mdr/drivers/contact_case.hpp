@@ -89,10 +89,11 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// duration over default_steps, and at most a fifth of the shortest material time that is longer than that; under
 /// force control a material with a parallel dashpot (its creep is singular in time after the start and after a
 /// force jump) has its steps graded from there (jump_grading = jump_grading_ratio, see grade_after_jumps), so
-/// that the step count stays bounded for any record length. Impact: the time step is the elastic contact time with the instantaneous spring
-/// modulus over default_steps (and the material-time rule), the half-width 1.2 times the elastic contact radius
-/// with the equilibrium modulus (an upper bound: the viscoelastic body is stiffer and dissipates). A harmonic
-/// tangential load caps the default time step at its period over default_steps_per_period.
+/// that the step count stays bounded for any record length. Impact: the time step is the elastic contact time
+/// with the instantaneous spring modulus over default_steps (and the material-time rule), the half-width 1.2
+/// times the elastic contact radius with the equilibrium modulus (an upper bound: the viscoelastic body is
+/// stiffer and dissipates). A harmonic tangential load caps the default time step at its period over
+/// default_steps_per_period.
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case);
 
 /// Scales of an elastic impact (energy balance m v0^2 / 2 = int F_el dd), used for the impact defaults.

@@ -115,7 +115,9 @@ double cone_impact_time(double slope_angle, double shear_modulus, double mass, d
 
 double cone_riding_depth(double slope_angle, double G_inf, double G1, double tau1, double force, double t1,
                          double t) {
-    if (!(t > t1)) throw std::invalid_argument("reference cone_riding_depth t = " + std::to_string(t) + ": must be > t1");
+    if (!(t > t1)) {
+        throw std::invalid_argument("reference cone_riding_depth t = " + std::to_string(t) + ": must be > t1");
+    }
     // Table 1: J(s) = (1/G∞)[1 − (G1/(G∞+G1)) exp(−s/λ)], λ = (G∞+G1) τ1 / G∞; its integral from 0 to s.
     const double lambda = (G_inf + G1) * tau1 / G_inf;
     const double share = G1 / (G_inf + G1);

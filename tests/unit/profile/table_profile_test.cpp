@@ -186,9 +186,13 @@ TEST(TableProfile, PiecewiseLinearKeepsTheKinkOfATruncatedCone) {
 TEST(TableProfile, PiecewiseLinearConeIsTheCone) {
     const double slope = std::tan(0.2);
     const auto cone = mdr::profile::make_cone(0.2 * 180.0 / pi);
-    const auto table = mdr::profile::make_table({0.0, 1e-3, 2.5e-3, 4e-3}, {0.0, 1e-3 * slope, 2.5e-3 * slope, 4e-3 * slope},
-                                                mdr::profile::Interpolation::linear);
-    for (double x : {0.0, 0.3e-3, 1e-3, 2e-3, 3.9e-3}) EXPECT_NEAR(table->equivalent(x), cone->equivalent(x), 1e-17) << x;
+    const std::vector<double> r{0.0, 1e-3, 2.5e-3, 4e-3};
+    std::vector<double> f;
+    for (double radius : r) f.push_back(radius * slope);
+    const auto table = mdr::profile::make_table(r, f, mdr::profile::Interpolation::linear);
+    for (double x : {0.0, 0.3e-3, 1e-3, 2e-3, 3.9e-3}) {
+        EXPECT_NEAR(table->equivalent(x), cone->equivalent(x), 1e-17) << "x = " << x;
+    }
 }
 
 }  // namespace
