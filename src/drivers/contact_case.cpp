@@ -154,14 +154,9 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
         const double step = duration / static_cast<double>(default_steps);
         resolved.time_step = std::min(step, shortest_time_above(contact_case.material, step) / 5.0);
         if (contact_case.control == Control::force && contact_case.material.viscosity() > 0.0) {
-            // A parallel dashpot under force control sees the secant rate of the step: first order in dt, so the
-            // step is tied to the shortest retardation time (error ~ 1e-4 of the creep depth).
-            const auto& retardation = contact_case.material.creep_function().terms;
-            if (!retardation.empty()) {
-                const double floor = duration / static_cast<double>(max_dashpot_steps);
-                resolved.time_step = std::min(resolved.time_step,
-                                              std::max(retardation.front().retardation_time / 5000.0, floor));
-            }
+            // A parallel dashpot under force control: the trapezoidal rate is second order, and the creep after the
+            // start and after a force jump, singular in time, is taken on steps graded from there.
+            resolved.jump_grading = jump_grading_ratio;
         }
     } else {
         resolved.time_step = 1.0;  // a history of jumps only: no step has a length

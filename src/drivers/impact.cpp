@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -27,6 +28,7 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
     auto snapshot = snapshots.begin();
 
     double time = 0.0, depth = 0.0, velocity = approach, force = 0.0;
+    std::array<double, 2> inner_exits{-1.0, -1.0};  // when the two innermost elements last left contact
     auto record = [&] {
         result.time.push_back(time);
         result.depth.push_back(depth);
@@ -60,6 +62,9 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
         const double scale = std::max(std::abs(velocity), 1e-9 * approach) * step;
         const double new_depth = solve_depth(foundation, depth, guess, scale, -force, spring, anchor);
         foundation.advance(depth, new_depth);
+        for (std::size_t i = 0; i < inner_exits.size(); ++i) {
+            if (foundation.inner_exit(i) >= 0.0) inner_exits[i] = time + foundation.inner_exit(i) * step;
+        }
         const double new_force = foundation.total_force();
         double new_velocity = 2.0 * (new_depth - depth) / step - velocity;
         ++result.steps;
@@ -71,7 +76,14 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
             const double fraction = foundation.latest_exit();
             new_velocity = velocity - force * fraction * step / (2.0 * mass);
             ImpactOutcome outcome;
+            // Where the contact shrinks to the axis, the exit times of the two innermost elements are linear in
+            // g near it, so extrapolated there (Foundation::axis_weight) they give the end to O(dx^2), where the
+            // innermost element's own exit is only O(dx) for a cone.
             outcome.contact_time = time + fraction * step;
+            const bool axis_last = foundation.inner_exit(0) == fraction;  // not an annulus leaving last
+            if (axis_last && inner_exits[1] >= 0.0 && inner_exits[1] < inner_exits[0]) {
+                outcome.contact_time += foundation.axis_weight() * (inner_exits[1] - inner_exits[0]);
+            }
             outcome.rebound_velocity = -new_velocity;
             outcome.restitution = -new_velocity / approach;
             outcome.dissipated_energy = 0.5 * mass * (approach * approach - new_velocity * new_velocity);

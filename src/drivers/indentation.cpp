@@ -11,6 +11,27 @@
 #include "tangential_stepping.hpp"
 
 namespace mdr::drivers {
+namespace {
+
+// The indenter's rate after a force jump dF at fixed depth: the dashpots of the n elements in contact take it,
+// dF = 8 dx eta n d(rate) (eq. 16, 21); unknown without contact.
+std::optional<double> jumped_rate(const foundation::Foundation& foundation, double viscosity, double rate,
+                                  double force_jump) {
+    const auto contacts = static_cast<double>(foundation.contact_count());
+    if (contacts == 0.0) return std::nullopt;
+    return rate + force_jump / (8.0 * foundation.spacing() * viscosity * contacts);
+}
+
+// The rate at the end of a force-controlled step: the trapezoidal 2 dd/dt - rate0, or the secant dd/dt after a
+// step without a known start rate (what the dashpots saw, so that the next step starts in equilibrium).
+std::optional<double> next_rate(const foundation::Foundation& foundation, std::optional<double> rate,
+                                double depth_start, double depth_end, double time_step) {
+    if (foundation.contact_count() == 0) return std::nullopt;
+    const double secant = (depth_end - depth_start) / time_step;
+    return rate ? 2.0 * secant - *rate : secant;
+}
+
+}  // namespace
 
 IndentationResult run_indentation(const ContactCase& contact_case, const ProgressObserver& progress) {
     IndentationResult result;
@@ -29,8 +50,11 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
         std::sort(cuts.begin(), cuts.end());
         cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
     }
-    const auto nodes = make_time_grid(contact_case.history, contact_case.end_time, numerics.time_step,
-                                      min_steps_per_segment, cuts);
+    auto nodes = make_time_grid(contact_case.history, contact_case.end_time, numerics.time_step,
+                                min_steps_per_segment, cuts);
+    if (numerics.jump_grading > 0.0) {
+        nodes = grade_after_jumps(nodes, numerics.jump_grading, jump_first_step * numerics.time_step);
+    }
     CoefficientCache cache(material);
     const bool has_dashpot = material.viscosity() > 0.0;
     const double depth_scale = std::isfinite(indenter.equivalent(numerics.half_width))
@@ -48,6 +72,13 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
 
     double depth = 0.0;
     double previous_depth = 0.0;
+    double shown_depth = 0.0;
+    // Force control with a parallel dashpot: the indenter's rate dd/dt at the current node, so that the dashpot
+    // sees the trapezoidal rate (second order, see Foundation::begin_step). Unknown (the secant rate is used for
+    // one step) while nothing is in contact: the rate is then not tied to the force.
+    const bool trapezoidal = has_dashpot && contact_case.control == Control::force;
+    std::optional<double> rate = trapezoidal ? std::optional<double>(0.0) : std::nullopt;
+    double last_force = 0.0;
     std::vector<double> snapshots = contact_case.snapshots;
     std::sort(snapshots.begin(), snapshots.end());
     auto snapshot = snapshots.begin();
@@ -67,8 +98,10 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
         if (time_step == 0.0 && has_dashpot) {
             // A jump against a dashpot: the dashpot takes the force at once and the depth does not move.
             force = contact_case.control == Control::force ? target : foundation.total_force();
+            if (rate) rate = jumped_rate(foundation, material.viscosity(), *rate, target - last_force);
+            shown_depth = depth;
         } else {
-            foundation.begin_step(cache.get(time_step));
+            foundation.begin_step(cache.get(time_step), rate);
             double new_depth = target;
             if (contact_case.control == Control::force) {
                 const double guess = depth + (depth - previous_depth);
@@ -76,14 +109,21 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
                 new_depth = solve_depth(foundation, depth, guess, scale, target, 0.0, 0.0);
             }
             foundation.advance(depth, new_depth);
+            if (trapezoidal) rate = next_rate(foundation, rate, depth, new_depth, time_step);
             if (tangential) tangential->step(cache.get(time_step), nodes[n - 1].time, nodes[n].time);
             previous_depth = depth;
             depth = new_depth;
             force = foundation.total_force();
+            // Riding on the recovering surface without force: the depth shown is where the surface touches,
+            // located between the centres (the foundation keeps stepping from its own depth).
+            shown_depth = contact_case.control == Control::force && target == 0.0
+                              ? std::min(depth, foundation.touching_depth())
+                              : depth;
         }
+        last_force = force;
         ++result.steps;
         const bool last_at_this_time = n + 1 == nodes.size() || nodes[n + 1].time != nodes[n].time;
-        if (n % numerics.output_every == 0 || n + 1 == nodes.size()) record(nodes[n].time, depth, force);
+        if (n % numerics.output_every == 0 || n + 1 == nodes.size()) record(nodes[n].time, shown_depth, force);
         if (last_at_this_time) take_due_snapshots(nodes[n].time);
         if (progress && n % report_every == 0) progress(static_cast<double>(n) / static_cast<double>(nodes.size() - 1));
     }

@@ -98,4 +98,27 @@ std::vector<GridNode> make_time_grid(const LoadHistory& history, double end, dou
     return nodes;
 }
 
+std::vector<GridNode> grade_after_jumps(const std::vector<GridNode>& nodes, double ratio, double first_step) {
+    std::vector<GridNode> graded{nodes.front()};
+    double jump = nodes.front().time;
+    bool grading = true;  // the load starts on the undeformed body: no contact, a singular start too
+    for (std::size_t n = 1; n < nodes.size(); ++n) {
+        const GridNode& a = nodes[n - 1];
+        const GridNode& b = nodes[n];
+        if (b.time == a.time) {
+            grading = grading || b.value != a.value;
+            jump = b.time;
+        } else {
+            for (double t = a.time + std::max(first_step, ratio * (a.time - jump)); grading && t < b.time;
+                 t += std::max(first_step, ratio * (t - jump))) {
+                if (b.time - t < 0.5 * std::max(first_step, ratio * (t - jump))) break;
+                graded.push_back({t, a.value + (b.value - a.value) * (t - a.time) / (b.time - a.time)});
+            }
+            grading = grading && ratio * (b.time - jump) < b.time - a.time;
+        }
+        graded.push_back(b);
+    }
+    return graded;
+}
+
 }  // namespace mdr::drivers

@@ -72,6 +72,7 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
                            "the foundation state does not fit in memory; use fewer elements");
     }
     for (std::size_t i = 0; i < count; ++i) equivalent_[i] = profile.equivalent(position(i));
+    axis_ = profile.equivalent(0.0);
     beyond_ = profile.equivalent(half_width() * (1.0 + 1e-12));
     // Beyond a tabulated profile nothing is known (not a rigid wall, as beyond a flat punch): the contact must stay
     // inside it.
@@ -275,10 +276,12 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
     split_.clear();
     split_state_.clear();
     latest_exit_ = 0.0;
+    inner_exit_ = {-1.0, -1.0};
     for (std::size_t i = split_first_; i < split_end_; ++i) {
         if (event_[i] == 0.0) continue;
         const Outcome outcome = evaluate(i, depth_start, depth_end);
         if (!outcome.contact) latest_exit_ = std::max(latest_exit_, outcome.fraction);
+        if (!outcome.contact && i < inner_exit_.size()) inner_exit_[i] = outcome.fraction;
         double split_w = 0.0;
         const std::size_t offset = split_state_.size();
         split_state_.resize(offset + branches + 2);
@@ -327,16 +330,45 @@ double Foundation::force_slope() const {
     return 2.0 * normal_stiffness_factor * spacing_ * contact_stiffness_ * static_cast<double>(contact_count());
 }
 
+double Foundation::free_gap(std::size_t i) const {
+    return i < size() ? last_depth_ - equivalent_[i] - displacement_[i] : -std::numeric_limits<double>::infinity();
+}
+
+double Foundation::axis_weight() const {
+    if (size() < 2 || !(equivalent_[1] > equivalent_[0])) return 0.0;
+    return (axis_ - equivalent_[0]) / (equivalent_[1] - equivalent_[0]);
+}
+
+double Foundation::touching_depth() const {
+    double lowest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < active_; ++i) lowest = std::min(lowest, equivalent_[i] + displacement_[i]);
+    if (active_ < 2) return lowest;
+    const double at_axis = last_depth_ - (1.0 - axis_weight()) * free_gap(0) - axis_weight() * free_gap(1);
+    return std::min(lowest, at_axis);
+}
+
 double Foundation::contact_radius() const {
     std::size_t outer = active_;
     while (outer > 0 && !in_contact_[outer - 1]) --outer;
     if (outer == 0) return 0.0;
     const std::size_t j = outer - 1;
     if (j + 1 >= size() || !std::isfinite(equivalent_[j + 1])) return position(j) + 0.5 * spacing_;
-    // Inside: sigma/stiffness, the displacement the element could still give up; outside: the free gap.
-    // Both vanish at the edge; interpolate linearly between the two centres.
+    const double g_in = equivalent_[j], g_out = equivalent_[j + 1];
+    const double outside = std::min(free_gap(j + 1), 0.0);
+    // The free gap d - g - w vanishes at the edge and is linear in g beyond it (exactly d - g where the surface
+    // was never touched; (d' - w')(t - t_exit) where it left contact): extrapolated in g from the two free
+    // neighbours, the edge is where it reaches zero, and x is interpolated linearly in g between the centres.
+    if (j + 2 < size() && std::isfinite(equivalent_[j + 2]) && !in_contact_[j + 2] && g_out > g_in) {
+        const double further = free_gap(j + 2);
+        const double rise = equivalent_[j + 2] - g_out;
+        if (further < outside && rise > 0.0) {
+            const double edge = g_out + outside * rise / (outside - further);
+            return position(j) + std::clamp((edge - g_in) / (g_out - g_in), 0.0, 1.0) * spacing_;
+        }
+    }
+    // Otherwise (a free element between two in contact, a flat profile) between the two centres, where the
+    // displacement the element could still give up (inside) and the free gap (outside) cross zero.
     const double inside = stress_[j] / contact_stiffness_;
-    const double outside = std::min(last_depth_ - equivalent_[j + 1] - displacement_[j + 1], 0.0);
     const double fraction = inside > 0.0 ? inside / (inside - outside) : 0.0;
     return position(j) + std::clamp(fraction, 0.0, 1.0) * spacing_;
 }

@@ -48,8 +48,15 @@ std::shared_ptr<const profile::Profile> read_indenter(TableReader& table) {
             return profile::make_power_law(table.number("c"), table.number("n"));
         }
         if (shape == "profile") {
-            with({"r", "f"});
-            return profile::make_table(table.numbers("r"), table.numbers("f"));
+            with({"r", "f", "interpolation"});
+            const std::string interpolation = table.optional_string("interpolation").value_or("monotone_cubic");
+            if (interpolation != "monotone_cubic" && interpolation != "linear") {
+                throw InvalidInput("indenter.interpolation", "\"" + interpolation + "\"",
+                                   "must be monotone_cubic or linear");
+            }
+            return profile::make_table(table.numbers("r"), table.numbers("f"),
+                                       interpolation == "linear" ? profile::Interpolation::linear
+                                                                 : profile::Interpolation::monotone_cubic);
         }
     } catch (const InvalidInput& error) {
         if (error.key().rfind("indenter.", 0) == 0) throw;

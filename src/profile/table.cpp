@@ -80,13 +80,40 @@ std::vector<double> monotone_slopes(const std::vector<double>& r, const std::vec
     return d;
 }
 
-/// Tabulated gap: a monotone piecewise cubic Hermite f with continuous f', and g by eq. (9).
+/// f = f_k + c1 t + c2 t^2 + c3 t^3 on interval k, t = r - r_k.
+struct Cubic {
+    double c1;
+    double c2;
+    double c3;
+};
+
+/// The monotone piecewise cubic Hermite interpolant, continuous in f'.
+std::vector<Cubic> monotone_cubic(const std::vector<double>& r, const std::vector<double>& f) {
+    const std::vector<double> slope = monotone_slopes(r, f);
+    std::vector<Cubic> pieces(r.size() - 1);
+    for (std::size_t k = 0; k + 1 < r.size(); ++k) {
+        const double h = r[k + 1] - r[k];
+        const double secant = (f[k + 1] - f[k]) / h;
+        pieces[k] = {slope[k], (3.0 * secant - 2.0 * slope[k] - slope[k + 1]) / h,
+                     (slope[k] + slope[k + 1] - 2.0 * secant) / (h * h)};
+    }
+    return pieces;
+}
+
+/// The piecewise-linear interpolant: the secant on each interval, f' jumps at the points.
+std::vector<Cubic> piecewise_linear(const std::vector<double>& r, const std::vector<double>& f) {
+    std::vector<Cubic> pieces(r.size() - 1);
+    for (std::size_t k = 0; k + 1 < r.size(); ++k) pieces[k] = {(f[k + 1] - f[k]) / (r[k + 1] - r[k]), 0.0, 0.0};
+    return pieces;
+}
+
+/// Tabulated gap: a piecewise cubic (or linear) f, and g by eq. (9).
 class Table final : public Profile {
 public:
-    Table(std::vector<double> r, std::vector<double> f)
+    Table(std::vector<double> r, std::vector<double> f, Interpolation interpolation)
         : r_(std::move(r)),
           f_(std::move(f)),
-          slope_(monotone_slopes(r_, f_)),
+          pieces_(interpolation == Interpolation::linear ? piecewise_linear(r_, f_) : monotone_cubic(r_, f_)),
           g_at_knots_(r_.size()),
           monotone_intervals_(count_monotone_intervals()) {
         for (std::size_t j = 0; j < r_.size(); ++j) g_at_knots_[j] = equivalent_inside(r_[j]);
@@ -96,14 +123,14 @@ public:
         const double x = std::abs(r);
         if (x > r_.back()) return infinity;
         const std::size_t k = segment_of(x);
-        const Cubic c = cubic(k);
+        const Cubic& c = pieces_[k];
         const double t = x - r_[k];
-        return f_[k] + t * (slope_[k] + t * (c.c2 + t * c.c3));
+        return f_[k] + t * (c.c1 + t * (c.c2 + t * c.c3));
     }
 
     /// Eq. (9) with r = x sin(phi): g(x) = x int_0^{pi/2} f'(x sin phi) dphi, split at the knots. f' is a
-    /// quadratic in t = r - r_k on each interval, so each piece is integrated in closed form (exact for the
-    /// interpolant, no singularity left).
+    /// quadratic (or, piecewise linear, a constant) in t = r - r_k on each interval, so each piece is integrated
+    /// in closed form (exact for the interpolant, no singularity left).
     double equivalent(double x) const override {
         x = std::abs(x);
         return x > r_.back() ? infinity : equivalent_inside(x);
@@ -138,19 +165,6 @@ public:
 private:
     static constexpr double infinity = std::numeric_limits<double>::infinity();
 
-    /// f = f_k + d_k t + c2 t^2 + c3 t^3 on interval k, t = r - r_k.
-    struct Cubic {
-        double c2;
-        double c3;
-    };
-
-    Cubic cubic(std::size_t k) const {
-        const double h = r_[k + 1] - r_[k];
-        const double secant = (f_[k + 1] - f_[k]) / h;
-        return {(3.0 * secant - 2.0 * slope_[k] - slope_[k + 1]) / h,
-                (slope_[k] + slope_[k + 1] - 2.0 * secant) / (h * h)};
-    }
-
     /// Shrinks a bracket g(lo) < depth <= g(hi) (values given minus depth) to 1e-15 relative with the Illinois
     /// variant of regula falsi, bisecting where it stalls; returns the upper end, where g >= depth.
     double refine_crossing(double lo, double hi, double g_lo, double g_hi, double depth) const {
@@ -177,13 +191,20 @@ private:
 
     /// Number of leading intervals on which (r f'(r))' >= 0; g'(x) = int_0^{pi/2} (r f')'(x sin phi) dphi,
     /// so g is non-decreasing up to the end of the last of them. On interval k, with t = r - r_k,
-    /// (r f')' = f' + r f'' = (d_k + 2 c2 r_k) + (4 c2 + 6 c3 r_k) t + 9 c3 t^2.
+    /// (r f')' = f' + r f'' = (c1 + 2 c2 r_k) + (4 c2 + 6 c3 r_k) t + 9 c3 t^2. (A piecewise-linear f' only
+    /// rises at the points: f non-decreasing keeps r f' non-decreasing inside each interval.)
     std::size_t count_monotone_intervals() const {
         std::size_t k = 0;
         for (; k + 1 < r_.size(); ++k) {
-            const Cubic c = cubic(k);
+            const Cubic& c = pieces_[k];
+            if (k > 0) {  // f' falling at a point (a concave kink of a piecewise-linear f) is a decrease too
+                const Cubic& b = pieces_[k - 1];
+                const double h0 = r_[k] - r_[k - 1];
+                const double before = b.c1 + h0 * (2.0 * b.c2 + 3.0 * b.c3 * h0);
+                if (c.c1 < before - 1e-12 * std::abs(before)) break;
+            }
             const double h = r_[k + 1] - r_[k];
-            const double a0 = slope_[k] + 2.0 * c.c2 * r_[k];
+            const double a0 = c.c1 + 2.0 * c.c2 * r_[k];
             const double a1 = 4.0 * c.c2 + 6.0 * c.c3 * r_[k];
             const double a2 = 9.0 * c.c3;
             const auto value = [&](double t) { return a0 + t * (a1 + t * a2); };
@@ -209,7 +230,7 @@ private:
         return static_cast<std::size_t>(it - r_.begin()) - 1;
     }
 
-    /// int f'(x sin phi) dphi over the part of interval k below x, with f' = d_k + 2 c2 t + 3 c3 t^2.
+    /// int f'(x sin phi) dphi over the part of interval k below x, with f' = c1 + 2 c2 t + 3 c3 t^2.
     double interval_integral(std::size_t k, double x) const {
         const double ra = r_[k];
         const double rb = std::min(r_[k + 1], x);
@@ -221,22 +242,22 @@ private:
         const double x2_sin2 = 0.5 * (x * x * i0 - (rb * sb - ra * sa));  // int x^2 sin^2(phi) dphi
         const double t1 = x_sin - ra * i0;                                 // int t dphi
         const double t2 = x2_sin2 - 2.0 * ra * x_sin + ra * ra * i0;       // int t^2 dphi
-        const Cubic c = cubic(k);
-        return slope_[k] * i0 + 2.0 * c.c2 * t1 + 3.0 * c.c3 * t2;
+        const Cubic& c = pieces_[k];
+        return c.c1 * i0 + 2.0 * c.c2 * t1 + 3.0 * c.c3 * t2;
     }
 
     std::vector<double> r_;
     std::vector<double> f_;
-    std::vector<double> slope_;       // f'(r_k)
+    std::vector<Cubic> pieces_;       // f on each interval
     std::vector<double> g_at_knots_;  // g(r_k), to bracket the contact radius
     std::size_t monotone_intervals_;  // g is non-decreasing on [0, r_m], m = monotone_intervals_
 };
 
 }  // namespace
 
-std::unique_ptr<Profile> make_table(std::vector<double> r, std::vector<double> f) {
+std::unique_ptr<Profile> make_table(std::vector<double> r, std::vector<double> f, Interpolation interpolation) {
     validate_table(r, f);
-    return std::make_unique<Table>(std::move(r), std::move(f));
+    return std::make_unique<Table>(std::move(r), std::move(f), interpolation);
 }
 
 }  // namespace mdr::profile

@@ -76,6 +76,12 @@ BAD_CASES = [
      ["indenter.shape", '"ball"', "unknown shape", "sphere"]),
     ("unknown-control", case_text(load=sub(LOAD, '"displacement"', '"position"')),
      ["load.control", '"position"', "unknown control", "displacement"]),
+    ("unknown-interpolation",
+     case_text(indenter='[indenter]\nshape = "profile"\nr = [0.0, 0.001, 0.002]\nf = [0.0, 1e-5, 4e-5]\n'
+                        'interpolation = "spline"\n'),
+     ["indenter.interpolation", '"spline"', "must be monotone_cubic or linear"]),
+    ("interpolation-without-table", case_text(indenter=INDENTER + 'interpolation = "linear"\n'),
+     ["indenter.interpolation", "unknown key"]),
     # moduli and times: negative, zero, NaN, infinite
     ("negative-modulus", case_text(material=sub(MATERIAL, "G_inf = 1.0e6", "G_inf = -1")),
      ["material.G_inf", "= -1", "must be > 0"]),

@@ -104,6 +104,45 @@ time_step = {}
     }
 }
 
+TEST(Convergence, TimeStepSecondOrderWithAParallelDashpot) {
+    // Force control on a Kelvin-Voigt body: the dashpot sees the trapezoidal rate of the indenter, so the depth
+    // converges as dt^2 (it was first order with the secant rate). Sphere under a force ramp and hold; eq. (34)
+    // with the Table 1 creep function. The contact starts from nothing (d ~ t^(4/3)): rows from t = 0.1 s.
+    const double G = 1e6, eta = 1e5, R = 0.01, F0 = 0.5, ramp = 0.5;
+    const auto creep = [&](double t) { return -std::expm1(-t * G / eta) / G; };
+    const auto exact_depth = [&](double t) { return reference::sphere_creep_depth(creep, R, F0, ramp, t); };
+    std::vector<double> errors;
+    for (double step : {0.02, 0.01, 0.005, 0.0025}) {
+        const auto result = run_toml(fmt::format(R"(
+[material]
+model = "kelvin_voigt"
+G = 1.0e6
+eta = 1.0e5
+[indenter]
+shape = "sphere"
+R = 0.01
+[load]
+control = "force"
+history = [[0.0, 0.0], [0.5, 0.5], [1.5, 0.5]]
+[numerics]
+elements = 4000
+time_step = {}
+)",
+                                                 step));
+        double worst = 0.0;
+        for (std::size_t i = 0; i < result.time.size(); ++i) {
+            if (result.time[i] < 0.1) continue;
+            worst = std::max(worst, std::abs(result.depth[i] - exact_depth(result.time[i])) / exact_depth(1.5));
+        }
+        errors.push_back(worst);
+    }
+    for (std::size_t i = 1; i < errors.size(); ++i) {
+        const double order = observed_order(errors[i - 1], errors[i]);
+        RecordProperty(fmt::format("order_dashpot_{}", i), fmt::format("{:.2f}", order));
+        EXPECT_GT(order, 1.8) << "errors " << errors[i - 1] << " -> " << errors[i];
+    }
+}
+
 TEST(Convergence, UnloadingIsNotLimitedByTheTimeStep) {
     // Ting's triangle: elements leave contact inside steps and the exit is located there, so even 50 steps per
     // branch reproduce Ting to 1e-8 of the peak force (it would be O(dt) without the location).

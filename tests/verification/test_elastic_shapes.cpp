@@ -99,6 +99,41 @@ TEST(ElasticShapes, TabulatedSphereMatchesAnalyticSphere) {
     }
 }
 
+TEST(ElasticShapes, LinearTableOfAConeIsTheCone) {
+    // A cone is piecewise linear: its table, interpolated linearly, has the cone's g exactly (eq. 25).
+    const double slope = std::tan(10.0 * std::numbers::pi / 180.0);
+    std::string r = "r = [", f = "f = [";
+    for (int i = 0; i <= 7; ++i) {
+        const double radius = 3e-3 * i / 7.0;
+        r += fmt::format("{}{}", i ? ", " : "", radius);
+        f += fmt::format("{}{}", i ? ", " : "", radius * slope);
+    }
+    const auto table = run_toml(
+        elastic_case("shape = \"profile\"\ninterpolation = \"linear\"\n" + r + "]\n" + f + "]", 1e-4));
+    const auto cone = run_toml(elastic_case("shape = \"cone\"\nslope_deg = 10.0", 1e-4));
+    ASSERT_EQ(table.force.size(), cone.force.size());
+    for (std::size_t i = 0; i < table.force.size(); ++i) {
+        EXPECT_NEAR(table.force[i], cone.force[i], 1e-12 * cone.force.back()) << "row " << i;
+    }
+    EXPECT_LT(worst_force_error(table, [&](double d) { return cone_force(10.0 * std::numbers::pi / 180.0, G, d); }),
+              1e-5);
+}
+
+TEST(ElasticShapes, TruncatedConeWithALinearTable) {
+    // A cone with a flat tip (radius b): three points, interpolated linearly, against Sneddon's closed form. The
+    // monotone cubic rounds the kink at b (its error is recorded, not asserted).
+    const double theta = 10.0 * std::numbers::pi / 180.0, b = 1e-3, r_max = 4e-3;
+    const std::string table = fmt::format("shape = \"profile\"\nr = [0.0, {}, {}]\nf = [0.0, 0.0, {}]\n", b, r_max,
+                                          (r_max - b) * std::tan(theta));
+    const auto exact = [&](double d) { return reference::truncated_cone_force(theta, b, G, d); };
+    const auto linear = run_toml(elastic_case(table + "interpolation = \"linear\"", 2e-4));
+    const auto cubic = run_toml(elastic_case(table, 2e-4));
+    const double linear_error = worst_force_error(linear, exact);
+    RecordProperty("linear_error", fmt::format("{:.2e}", linear_error));
+    RecordProperty("monotone_cubic_error", fmt::format("{:.2e}", worst_force_error(cubic, exact)));
+    EXPECT_LT(linear_error, 1e-5);
+}
+
 TEST(ElasticShapes, HertzPressureProfile) {
     const double R = 0.01, d = 1e-4;
     const auto result = run_toml(elastic_case("shape = \"sphere\"\nR = 0.01", d, "[output]\nsnapshots = [1.0]"));

@@ -45,6 +45,9 @@ struct ResolvedNumerics {
     double half_width = 0.0;     ///< half-width L [m]
     std::size_t output_every = 1;
     double time_limit = 0.0;     ///< last time simulated [s]; for an impact the latest end allowed
+    /// > 0: the steps after a jump start at time_step * jump_first_step and grow as this ratio times the time since
+    /// the jump (grade_after_jumps); 0: a uniform grid.
+    double jump_grading = 0.0;
 };
 
 /// A normal indentation problem: a rigid axisymmetric indenter on a viscoelastic half-space.
@@ -72,9 +75,12 @@ struct ContactCase {
 inline constexpr std::size_t default_elements = 2000;
 /// Steps over the whole history when `[numerics] time_step` is not given; see resolve_numerics.
 inline constexpr std::size_t default_steps = 2000;
-/// Most steps the dashpot rule of resolve_numerics may ask for (a retardation time far below the history's
-/// duration is then resolved no further: its creep is over within the first step).
-inline constexpr std::size_t max_dashpot_steps = 200000;
+/// Default ratio of the step to the time since the start or a force jump under force control with a parallel
+/// dashpot (grade_after_jumps): the singular creep there is integrated to ~1e-5 of its depth.
+inline constexpr double jump_grading_ratio = 0.02;
+/// The first step after the start or such a jump, as a fraction of the time step (its error is
+/// O((step / tau)^(2/3)) of the creep depth, tau the retardation time).
+inline constexpr double jump_first_step = 1e-6;
 /// Smallest number of steps per history segment.
 inline constexpr std::size_t min_steps_per_segment = 20;
 
@@ -83,13 +89,14 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// rises above the undeformed level; force control: the elastic radius at the largest force with the softest
 /// modulus 1/J(t_end - t_start), 25% margin); a flat punch uses its own radius. The time step is the history
 /// duration over default_steps, and at most a fifth of the shortest material time that is longer than that; under
-/// force control a material with a parallel dashpot (first order in dt there) takes at most 1/5000 of its
-/// shortest retardation time. Impact: the time step is the elastic contact time with the instantaneous spring
-/// modulus over default_steps (and the material-time rule), the half-width 1.2 times the elastic contact radius
-/// with the equilibrium modulus (an upper bound: the viscoelastic body is stiffer and dissipates). A harmonic
-/// tangential load caps the default time step at its period over default_steps_per_period. Throws
-/// mdr::InvalidInput for a problem that breaks a rule (validate) or would exceed its bounds of work or memory
-/// (require_bounded_work).
+/// force control a material with a parallel dashpot (its creep is singular in time after the start and after a
+/// force jump) has its steps graded from there (jump_grading = jump_grading_ratio, see grade_after_jumps), so
+/// that the step count stays bounded for any record length. Impact: the time step is the elastic contact time
+/// with the instantaneous spring modulus over default_steps (and the material-time rule), the half-width 1.2
+/// times the elastic contact radius with the equilibrium modulus (an upper bound: the viscoelastic body is
+/// stiffer and dissipates). A harmonic tangential load caps the default time step at its period over
+/// default_steps_per_period. Throws mdr::InvalidInput for a problem that breaks a rule (validate) or would exceed
+/// its bounds of work or memory (require_bounded_work).
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case);
 
 /// Scales of an elastic impact (energy balance m v0^2 / 2 = int F_el dd), used for the impact defaults.

@@ -25,7 +25,8 @@ struct Snapshot {
 /// The outcome of an impact (eq. 39).
 struct ImpactOutcome {
     double restitution = 0.0;        ///< e = -v(T)/v0
-    double contact_time = 0.0;       ///< T [s], when the last element leaves contact (F returns to 0)
+    double contact_time = 0.0;       ///< T [s], when the axis leaves contact (the exits of the two innermost
+                                     ///< elements extrapolated to it, Foundation::axis_weight)
     double rebound_velocity = 0.0;   ///< -v(T) [m/s], positive away from the surface
     double dissipated_energy = 0.0;  ///< m (v0^2 - v(T)^2) / 2 [J]
 };

@@ -55,4 +55,12 @@ double segment_step_count(double segment, double max_step, std::size_t min_steps
 std::vector<GridNode> make_time_grid(const LoadHistory& history, double end, double max_step,
                                      std::size_t min_steps_per_segment, const std::vector<double>& snapshots);
 
+/// Refines `nodes` after the start and after every jump (two nodes at one time): the steps start at `first_step`
+/// and grow as `ratio` times the time since the start or jump until they reach the grid's own steps. Against a
+/// parallel dashpot a force jump starts a creep that is singular in time (d ~ t^(2/3) for a sphere, and a contact
+/// growing from nothing under a force ramp is singular too): a step that is a fixed fraction of the time since
+/// the jump keeps the trapezoidal rule's relative error O(ratio^2) there, at about ln(step / first_step) / ratio
+/// extra steps per jump, whatever the record's length. The load stays linear between the original nodes.
+std::vector<GridNode> grade_after_jumps(const std::vector<GridNode>& nodes, double ratio, double first_step);
+
 }  // namespace mdr::drivers

@@ -2,6 +2,7 @@
 /// \file
 /// The 1D viscoelastic foundation of the MDR (handbook section 4, Fig. 1; section 5, eq. 13-22).
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -45,8 +46,8 @@ public:
     double position(std::size_t i) const { return (static_cast<double>(i) + 0.5) * spacing_; }
 
     /// Prepares a step of the given coefficients from the current state (call before trial_force/advance).
-    /// `indenter_rate` is dd/dt at the start of the step when the depth is solved from a smooth motion (impact):
-    /// a dashpot in contact then sees the trapezoidal end rate 2 (d1 - d0)/dt - rate (second order). Without it
+    /// `indenter_rate` is dd/dt at the start of the step when the depth is solved (impact, force control): a
+    /// dashpot in contact then sees the trapezoidal end rate 2 (d1 - d0)/dt - rate (second order). Without it
     /// it sees the step's secant rate, exact for a prescribed piecewise-linear depth. Force-free elements always
     /// take the trapezoidal rate from their own start rate.
     void begin_step(const StepCoefficients& coefficients, std::optional<double> indenter_rate = std::nullopt);
@@ -61,8 +62,20 @@ public:
     /// Total normal force [N] after the last step (eq. 21, both halves).
     double total_force() const { return total_force_; }
     /// Contact radius a [m] after the last step: the edge between the outermost element in contact and its free
-    /// neighbour, interpolated where sigma/stiffness (inside) and the free gap (outside) cross zero.
+    /// neighbour, where the free gap d - g - w, extrapolated linearly in g from the two free neighbours, reaches
+    /// zero (exact in g where the surface was never touched, second order in dx where it left contact); x is
+    /// interpolated linearly in g between the two centres.
     double contact_radius() const;
+    /// The weight lambda <= 0 of the linear extrapolation in g from the two innermost elements to the axis,
+    /// (g(0) - g_0) / (g_1 - g_0) (0 for a flat profile): a quantity q linear in g near the axis is
+    /// (1 - lambda) q_0 + lambda q_1 there. When the contact shrinks to the axis, the exit time and the free gap
+    /// are such quantities.
+    double axis_weight() const;
+    /// Where inside the last step (0..1) element i < 2 left contact; -1 when it did not leave in it.
+    double inner_exit(std::size_t i) const { return inner_exit_[i]; }
+    /// The largest depth [m] at which the indenter does not press on the free surface: the lowest g_i + w_i, with
+    /// the surface at the axis extrapolated (axis_weight) so that a tip riding there is located to O(dx^2).
+    double touching_depth() const;
     /// Number of elements in contact.
     std::size_t contact_count() const;
     /// Where inside the last step (0..1) the last element to leave contact in it left (its force crossing zero,
@@ -88,6 +101,7 @@ private:
                         double* h) const;
     void free_substep(double time_step, double& w, double* h) const;
     double contact_substep(double time_step, double new_displacement, double end_rate, double& w, double* h) const;
+    double free_gap(std::size_t i) const;
     double free_relaxed_of(std::size_t i) const { return free_relaxed_.empty() ? relaxed_[i] : free_relaxed_[i]; }
     std::size_t reach(double depth) const;
 
@@ -114,6 +128,8 @@ private:
     mutable std::vector<double> scratch_gain_; ///< per-branch B_k of a sub-step
     std::vector<std::size_t> split_;           ///< elements whose step is split by an event
     std::vector<double> split_state_;          ///< their new w, sigma and memory, (branches + 2) each
+    double axis_ = 0.0;                        ///< g(0)
+    std::array<double, 2> inner_exit_{-1.0, -1.0};  ///< see inner_exit()
     double beyond_ = 0.0;                      ///< g just beyond the half-width (or at it, see profile_ends_)
     bool profile_ends_ = false;                ///< the half-width is the end of a tabulated profile
     double profile_end_ = 0.0;                 ///< the profile's last radius (for the message)

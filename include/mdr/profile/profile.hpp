@@ -42,8 +42,15 @@ std::unique_ptr<Profile> make_cone_from_half_angle(double half_angle_deg);
 std::unique_ptr<Profile> make_flat_punch(double a);
 /// Power law f = c r^n, n > 0: g = kappa_n c |x|^n, kappa_n = sqrt(pi) Gamma(n/2+1)/Gamma(n/2+1/2). Keys `c`, `n`.
 std::unique_ptr<Profile> make_power_law(double c, double n);
-/// Tabulated gap: r ascending from 0, f(0) = 0, f non-decreasing; f is interpolated by a monotone cubic and g is
-/// computed by eq. (9) with a quadrature that removes the end-point singularity. Keys `r`, `f`.
-std::unique_ptr<Profile> make_table(std::vector<double> r, std::vector<double> f);
+/// How a tabulated gap is interpolated between its points (key `indenter.interpolation`).
+enum class Interpolation {
+    monotone_cubic,  ///< Fritsch-Carlson: continuous slope, exact for quadratics (smooth profiles)
+    linear,          ///< piecewise linear: keeps kinks (a flat tip, a truncated cone), exact for cones
+};
+
+/// Tabulated gap: r ascending from 0, f(0) = 0, f non-decreasing; f is interpolated as asked and g is computed by
+/// eq. (9) in closed form per interval (f' is a polynomial there). Keys `r`, `f`, `interpolation`.
+std::unique_ptr<Profile> make_table(std::vector<double> r, std::vector<double> f,
+                                    Interpolation interpolation = Interpolation::monotone_cubic);
 
 }  // namespace mdr::profile

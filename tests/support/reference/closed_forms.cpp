@@ -30,6 +30,20 @@ double cone_force(double slope_angle, double shear_modulus, double depth) {
     return 8.0 * shear_modulus * depth * depth / (pi * std::tan(slope_angle));
 }
 
+double truncated_cone_depth(double slope_angle, double flat_radius, double contact_radius) {
+    return contact_radius * std::tan(slope_angle) * std::acos(flat_radius / contact_radius);
+}
+
+double truncated_cone_force(double slope_angle, double flat_radius, double shear_modulus, double depth) {
+    double upper = 2.0 * flat_radius;
+    while (truncated_cone_depth(slope_angle, flat_radius, upper) < depth) upper *= 2.0;
+    const double a = find_root([&](double r) { return truncated_cone_depth(slope_angle, flat_radius, r) - depth; },
+                               flat_radius, upper, 1e-16 * upper);
+    const double b = flat_radius;
+    return 8.0 * shear_modulus * std::tan(slope_angle) *
+           (0.5 * a * a * std::acos(b / a) + 0.5 * b * std::sqrt((a - b) * (a + b)));
+}
+
 double flat_punch_force(double punch_radius, double shear_modulus, double depth) {
     return 8.0 * shear_modulus * punch_radius * depth;
 }
@@ -90,6 +104,34 @@ double sphere_creep_depth(const std::function<double(double)>& creep, double rad
     const double response =
         ramp == 0.0 ? force * creep(t) : force / ramp * integrate(creep, std::max(t - ramp, 0.0), t, 1e-13);
     return std::pow(3.0 * response / (16.0 * std::sqrt(radius)), 2.0 / 3.0);
+}
+
+double cone_impact_time(double slope_angle, double shear_modulus, double mass, double velocity) {
+    const double stiffness = 8.0 * shear_modulus / (pi * std::tan(slope_angle));
+    const double max_depth = std::cbrt(1.5 * mass * velocity * velocity / stiffness);
+    const double beta = std::tgamma(1.0 / 3.0) * std::tgamma(0.5) / std::tgamma(5.0 / 6.0);
+    return 2.0 / 3.0 * beta * max_depth / velocity;
+}
+
+double cone_riding_depth(double slope_angle, double G_inf, double G1, double tau1, double force, double t1,
+                         double t) {
+    if (!(t > t1)) {
+        throw std::invalid_argument("reference cone_riding_depth t = " + std::to_string(t) + ": must be > t1");
+    }
+    // Table 1: J(s) = (1/G∞)[1 − (G1/(G∞+G1)) exp(−s/λ)], λ = (G∞+G1) τ1 / G∞; its integral from 0 to s.
+    const double lambda = (G_inf + G1) * tau1 / G_inf;
+    const double share = G1 / (G_inf + G1);
+    const auto creep_integral = [&](double s) { return (s + share * lambda * std::expm1(-s / lambda)) / G_inf; };
+    const auto creep_rate = [&](double s) { return share * std::exp(-s / lambda) / (lambda * G_inf); };
+    const auto depth = [&](double s) {
+        return std::sqrt(pi * std::tan(slope_angle) / 8.0 * force / t1 * creep_integral(s));
+    };
+    // U(s) = G(0) d(s) + ∫_0^s G'(s − s') d(s') ds' (by parts, d(0) = 0), G' = −(G1/τ1) exp(−s/τ1).
+    const auto unit_displacement = [&](double s) {
+        const auto integrand = [&](double r) { return -G1 / tau1 * std::exp(-(s - r) / tau1) * depth(r); };
+        return (G_inf + G1) * depth(s) + integrate(integrand, 0.0, s, 1e-12);
+    };
+    return integrate([&](double s) { return creep_rate(t - s) * unit_displacement(s); }, 0.0, t1, 1e-11);
 }
 
 }  // namespace mdr::reference

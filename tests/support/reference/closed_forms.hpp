@@ -24,6 +24,13 @@ double cone_contact_radius(double slope_angle, double depth);
 /// Sneddon cone force F = 2∫_0^a 4G (d − (π/2) tanθ x) dx = 8 G d² /(π tanθ) [N].
 double cone_force(double slope_angle, double shear_modulus, double depth);
 
+/// Truncated cone (flat tip of radius b [m], flanks at θ [rad] beyond: f = (r − b) tanθ) at contact radius a > b:
+/// Sneddon's d = a ∫_0^a f'(r) / sqrt(a² − r²) dr = a tanθ acos(b/a) and
+/// F = 8G ∫_0^a r² f'(r) / sqrt(a² − r²) dr = 8G tanθ [(a²/2) acos(b/a) + (b/2) sqrt(a² − b²)] [N].
+double truncated_cone_depth(double slope_angle, double flat_radius, double contact_radius);
+/// Force [N] of the truncated cone at depth d > 0 (the contact radius from d by bisection).
+double truncated_cone_force(double slope_angle, double flat_radius, double shear_modulus, double depth);
+
 /// Boussinesq flat punch of radius a [m] at depth d: F = 8 G a d [N].
 double flat_punch_force(double punch_radius, double shear_modulus, double depth);
 
@@ -55,5 +62,20 @@ double lee_radok_force(const PowerLawIndenter& indenter, const PronyMaterial& ma
 /// quadrature.
 double sphere_creep_depth(const std::function<double(double)>& creep, double radius, double force, double ramp,
                           double t);
+
+/// Elastic impact of a rigid cone (θ [rad] between flank and surface, mass m [kg], speed v0 [m/s]) on a half-space
+/// of shear modulus G [Pa]: with F = k d², k = 8G/(π tanθ) (Sneddon), the energy balance gives
+/// d_max³ = 3 m v0² / (2k) and the contact time T = 2 ∫_0^d_max dd / v = (2/3) B(1/3, 1/2) d_max / v0 [s].
+double cone_impact_time(double slope_angle, double shear_modulus, double mass, double velocity);
+
+/// A cone (θ [rad] between flank and surface) on a standard solid (G∞, G1, τ1) under a force ramp from 0 at
+/// t = 0 to F0 [N] at t1 [s], then released at once (F = 0 after t1): the depth [m] at which the force-free tip
+/// rides on the recovering surface at t > t1, the surface displacement on the axis. Lee–Radok while loading,
+/// d(s)² = (π tanθ / 8) ∫_0^s J(s − s') dF(s') with J of Table 1; the pressure's elastic axis displacement at unit
+/// modulus U(s) = ∫_0^s G(s − s') dd(s') (the tip is in contact, u = d); after t1 the surface is traction-free, so
+/// by the hereditary law u(0, t) = ∫_0^t1 J(t − s) dU(s) − J(t − t1) U(t1) = ∫_0^t1 J'(t − s) U(s) ds. Nested
+/// adaptive quadrature (d ~ sqrt(s) at the start), ~1e-11 relative.
+double cone_riding_depth(double slope_angle, double G_inf, double G1, double tau1, double force, double t1,
+                         double t);
 
 }  // namespace mdr::reference

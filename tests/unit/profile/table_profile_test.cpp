@@ -164,3 +164,35 @@ TEST(TableProfile, RangeAndDescription) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(TableProfile, PiecewiseLinearKeepsTheKinkOfATruncatedCone) {
+    // f = 0 for r < b, (r - b) tan(theta) beyond: eq. (9) gives g = x tan(theta) acos(b/x) for x > b, 0 inside.
+    const double b = 1e-3, r_max = 4e-3, slope = std::tan(0.2);
+    const auto table = mdr::profile::make_table({0.0, b, r_max}, {0.0, 0.0, (r_max - b) * slope},
+                                                mdr::profile::Interpolation::linear);
+    for (double x : {0.0, 0.5e-3, 1e-3, 1.0001e-3, 1.3e-3, 2e-3, 3.7e-3, 4e-3}) {
+        const double exact = x > b ? x * slope * std::acos(b / x) : 0.0;
+        EXPECT_NEAR(table->equivalent(x), exact, 1e-14 * r_max) << "x = " << x;
+        EXPECT_NEAR(table->gap(x), x > b ? (x - b) * slope : 0.0, 1e-16) << "x = " << x;
+    }
+    EXPECT_NEAR(table->contact_radius(2e-3 * slope * std::acos(0.5)), 2e-3, 1e-15);
+    // The monotone cubic rounds the kink: its g differs by far more.
+    const auto cubic = mdr::profile::make_table({0.0, b, r_max}, {0.0, 0.0, (r_max - b) * slope});
+    EXPECT_GT(std::abs(cubic->equivalent(1.3e-3) - 1.3e-3 * slope * std::acos(b / 1.3e-3)), 1e-6);
+}
+
+TEST(TableProfile, PiecewiseLinearConeIsTheCone) {
+    const double slope = std::tan(0.2);
+    const auto cone = mdr::profile::make_cone(0.2 * 180.0 / pi);
+    const std::vector<double> r{0.0, 1e-3, 2.5e-3, 4e-3};
+    std::vector<double> f;
+    for (double radius : r) f.push_back(radius * slope);
+    const auto table = mdr::profile::make_table(r, f, mdr::profile::Interpolation::linear);
+    for (double x : {0.0, 0.3e-3, 1e-3, 2e-3, 3.9e-3}) {
+        EXPECT_NEAR(table->equivalent(x), cone->equivalent(x), 1e-17) << "x = " << x;
+    }
+}
+
+}  // namespace
