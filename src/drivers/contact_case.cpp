@@ -127,7 +127,14 @@ ResolvedNumerics resolve_impact_numerics(const ContactCase& contact_case) {
     ResolvedNumerics resolved;
     resolved.output_every = numerics.output_every;
     resolved.elements = numerics.elements.value_or(default_elements);
-    const double step = stiff.duration / static_cast<double>(default_steps);
+    double step = stiff.duration / static_cast<double>(default_steps);
+    if (material.viscosity() > 0.0) {
+        // A parallel dashpot brakes the indenter within m / (8 eta a) (eq. 21 with the dashpot's force 8 eta a v):
+        // an overdamped impact is decided on that scale, which the elastic contact time does not see. The soft
+        // radius bounds a, so this time is bounded below.
+        const double braking_time = impact.mass / (8.0 * material.viscosity() * soft.radius);
+        step = std::min(step, braking_time / static_cast<double>(braking_steps));
+    }
     resolved.time_step = numerics.time_step.value_or(std::min(step, shortest_time_above(material, step) / 5.0));
     resolved.half_width = numerics.half_width.value_or(
         indenter.is_flat_punch() ? indenter.max_radius() : std::min(1.2 * soft.radius, indenter.max_radius()));

@@ -81,6 +81,8 @@ inline constexpr double jump_grading_ratio = 0.02;
 /// The first step after the start or such a jump, as a fraction of the time step (its error is
 /// O((step / tau)^(2/3)) of the creep depth, tau the retardation time).
 inline constexpr double jump_first_step = 1e-6;
+/// Steps per braking time m / (8 eta a) of an impact on a body with a parallel dashpot (resolve_numerics).
+inline constexpr std::size_t braking_steps = 20;
 /// Smallest number of steps per history segment.
 inline constexpr std::size_t min_steps_per_segment = 20;
 
@@ -94,8 +96,9 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// that the step count stays bounded for any record length. Impact: the time step is the elastic contact time
 /// with the instantaneous spring modulus over default_steps (and the material-time rule), the half-width 1.2
 /// times the elastic contact radius with the equilibrium modulus (an upper bound: the viscoelastic body is
-/// stiffer and dissipates). A harmonic tangential load caps the default time step at its period over
-/// default_steps_per_period. Throws mdr::InvalidInput for a problem that breaks a rule (validate) or would exceed
+/// stiffer and dissipates); with a parallel dashpot the step is at most the braking time m / (8 eta a) over
+/// braking_steps (an overdamped impact is decided on that scale). A harmonic tangential load caps the default time
+/// step at its period over default_steps_per_period. Throws mdr::InvalidInput for a problem that breaks a rule (validate) or would exceed
 /// its bounds of work or memory (require_bounded_work).
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case);
 
