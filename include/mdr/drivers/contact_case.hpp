@@ -50,7 +50,8 @@ struct ResolvedNumerics {
     double jump_grading = 0.0;
 };
 
-/// A normal indentation problem: a rigid axisymmetric indenter on a viscoelastic half-space.
+/// A normal indentation problem: a rigid axisymmetric indenter on a viscoelastic half-space. An aggregate: build
+/// it with designated initializers (the fields after end_time are optional); drivers::validate checks it.
 struct ContactCase {
     std::string title;                                  ///< free text
     rheology::Rheology material;                        ///< combined material (eq. 8)
@@ -58,12 +59,12 @@ struct ContactCase {
     Control control = Control::displacement;            ///< what the history prescribes
     LoadHistory history;                                ///< (t, d) or (t, F) points
     double end_time = 0.0;                              ///< last time simulated [s]
-    std::vector<double> snapshots;                      ///< times of pressure profiles [s]
-    NumericsOptions numerics;                           ///< `[numerics]`
-    std::optional<rheology::Rheology> shear_material;   ///< the shear part alone, when a bulk part was folded in
-    std::optional<ImpactLoad> impact;                   ///< with control = impact (the history is then the single
+    std::vector<double> snapshots{};                    ///< times of pressure profiles [s]
+    NumericsOptions numerics{};                         ///< `[numerics]`
+    std::optional<rheology::Rheology> shear_material{}; ///< the shear part alone, when a bulk part was folded in
+    std::optional<ImpactLoad> impact{};                 ///< with control = impact (the history is then the single
                                                         ///< point (0, 0) and end_time the latest end allowed)
-    std::optional<TangentialLoad> tangential;           ///< `[tangential]`, superimposed tangential loading
+    std::optional<TangentialLoad> tangential{};         ///< `[tangential]`, superimposed tangential loading
     /// True when tangential loading meets compressible or two different bodies: the MDR mapping is then exact for
     /// the normal problem only (section 7) and the tangential result an approximation.
     bool tangential_approximate = false;
