@@ -10,12 +10,13 @@
 
 #include "reference/closed_forms.hpp"
 #include "reference/ting.hpp"
+#include "convergence.hpp"
 #include "run_case.hpp"
 
 namespace mdr {
 namespace {
 
-using testing::observed_order;
+using testing::expect_orders_above;
 using testing::run_toml;
 
 // Root-mean-square force error over the written rows with t >= from, relative to the peak exact force.
@@ -58,11 +59,7 @@ time_step = 1e-3
                                                  elements));
         errors.push_back(rms_force_error(result, [&](double t) { return ting.force(t); }, 0.3));
     }
-    for (std::size_t i = 1; i < errors.size(); ++i) {
-        const double order = observed_order(errors[i - 1], errors[i]);
-        RecordProperty(fmt::format("order_elements_{}", i), fmt::format("{:.2f}", order));
-        EXPECT_GT(order, 1.7) << "errors " << errors[i - 1] << " -> " << errors[i];
-    }
+    expect_orders_above(errors, 1.7, "elements");
 }
 
 TEST(Convergence, TimeStepSecondOrderUnderForceControl) {
@@ -97,11 +94,7 @@ time_step = {}
         }
         errors.push_back(worst);
     }
-    for (std::size_t i = 1; i < errors.size(); ++i) {
-        const double order = observed_order(errors[i - 1], errors[i]);
-        RecordProperty(fmt::format("order_time_{}", i), fmt::format("{:.2f}", order));
-        EXPECT_GT(order, 1.7) << "errors " << errors[i - 1] << " -> " << errors[i];
-    }
+    expect_orders_above(errors, 1.7, "time");
 }
 
 TEST(Convergence, TimeStepSecondOrderWithAParallelDashpot) {
@@ -136,11 +129,7 @@ time_step = {}
         }
         errors.push_back(worst);
     }
-    for (std::size_t i = 1; i < errors.size(); ++i) {
-        const double order = observed_order(errors[i - 1], errors[i]);
-        RecordProperty(fmt::format("order_dashpot_{}", i), fmt::format("{:.2f}", order));
-        EXPECT_GT(order, 1.8) << "errors " << errors[i - 1] << " -> " << errors[i];
-    }
+    expect_orders_above(errors, 1.8, "dashpot");
 }
 
 TEST(Convergence, UnloadingIsNotLimitedByTheTimeStep) {

@@ -14,12 +14,13 @@
 
 #include "reference/closed_forms.hpp"
 #include "reference/ting.hpp"
+#include "convergence.hpp"
 #include "run_case.hpp"
 
 namespace mdr {
 namespace {
 
-using testing::observed_order;
+using testing::expect_orders_above;
 using testing::run_toml;
 
 constexpr double slope = 10.0 * std::numbers::pi / 180.0;  // cone flank angle θ [rad]
@@ -53,11 +54,7 @@ TEST(EdgeLocation, ConeImpactContactTimeSecondOrderInTheElements) {
     for (int elements : {250, 500, 1000}) {
         errors.push_back(cone_impact_error(fmt::format("[numerics]\nelements = {}\ntime_step = 2e-7\n", elements)));
     }
-    for (std::size_t i = 1; i < errors.size(); ++i) {
-        const double order = observed_order(errors[i - 1], errors[i]);
-        RecordProperty(fmt::format("order_contact_time_{}", i), fmt::format("{:.2f}", order));
-        EXPECT_GT(order, 1.8) << "errors " << errors[i - 1] << " -> " << errors[i];
-    }
+    expect_orders_above(errors, 1.8, "contact_time");
 }
 
 // Cone on a standard solid, force ramped to 0.05 N over 1 s and released at once: the tip rides on the
@@ -98,11 +95,7 @@ TEST(EdgeLocation, RidingDepthSecondOrderInTheElements) {
     for (int elements : {200, 400, 800}) {
         errors.push_back(riding_depth_error(fmt::format("[numerics]\nelements = {}\ntime_step = 2.5e-4\n", elements)));
     }
-    for (std::size_t i = 1; i < errors.size(); ++i) {
-        const double order = observed_order(errors[i - 1], errors[i]);
-        RecordProperty(fmt::format("order_riding_depth_{}", i), fmt::format("{:.2f}", order));
-        EXPECT_GT(order, 1.8) << "errors " << errors[i - 1] << " -> " << errors[i];
-    }
+    expect_orders_above(errors, 1.8, "riding_depth");
 }
 
 TEST(EdgeLocation, ContactRadiusSecondOrderInTheElements) {
@@ -138,11 +131,7 @@ time_step = 1e-3
         }
         errors.push_back(worst);
     }
-    for (std::size_t i = 1; i < errors.size(); ++i) {
-        const double order = observed_order(errors[i - 1], errors[i]);
-        RecordProperty(fmt::format("order_radius_{}", i), fmt::format("{:.2f}", order));
-        EXPECT_GT(order, 1.8) << "errors " << errors[i - 1] << " -> " << errors[i];
-    }
+    expect_orders_above(errors, 1.8, "radius");
 }
 
 }  // namespace
