@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "setup_progress.hpp"
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/io/case_file.hpp"
 
@@ -14,7 +15,10 @@ void add_check_command(CLI::App& app, int& exit_code) {
     command->add_option("case", *case_path, "The TOML case file")->required();
     command->callback([case_path, &exit_code] {
         exit_code = guarded([&] {
-            const auto contact_case = io::load_case(*case_path);
+            const auto contact_case = [&] {
+                const SetupProgress preparing;
+                return io::load_case(*case_path);
+            }();
             drivers::resolve_numerics(contact_case);  // the bounds of work and memory
             fmt::print("ok: {}\n", io::describe(contact_case));
         });

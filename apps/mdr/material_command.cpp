@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "setup_progress.hpp"
 #include "interrupt.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
@@ -48,7 +49,10 @@ void add_material_command(CLI::App& app, int& exit_code) {
     command->callback([=, &exit_code] {
         exit_code = guarded([&] {
             const io::ResultDirectory directory(*out, "--out", {*case_path});
-            const auto contact_case = io::load_case(*case_path);
+            const auto contact_case = [&] {
+                const SetupProgress preparing;
+                return io::load_case(*case_path);
+            }();
             const auto& material = contact_case.material;
             const auto t = times->empty() ? io::default_times(material) : parse_list(*times, "--times");
             const auto w = omegas->empty() ? io::default_omegas(material) : parse_list(*omegas, "--omegas");

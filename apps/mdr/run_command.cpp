@@ -6,6 +6,7 @@
 #include <chrono>
 
 #include "commands.hpp"
+#include "setup_progress.hpp"
 #include "interrupt.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/io/case_file.hpp"
@@ -24,7 +25,10 @@ void add_run_command(CLI::App& app, int& exit_code) {
     command->callback([case_path, out, &exit_code] {
         exit_code = guarded([&] {
             const io::ResultDirectory directory(*out, "--out", {*case_path});
-            const auto contact_case = io::load_case(*case_path);
+            const auto contact_case = [&] {
+                const SetupProgress preparing;
+                return io::load_case(*case_path);
+            }();
             if (contact_case.tangential_approximate) {
                 fmt::print(stderr, "mdr: warning: tangential loading of compressible or dissimilar bodies: the MDR "
                                    "maps only the normal problem exactly, the tangential result is an approximation\n");
