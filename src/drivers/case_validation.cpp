@@ -22,8 +22,9 @@ void validate_history(const ContactCase& contact_case) {
     }
     if (contact_case.control == Control::displacement && contact_case.material.viscosity() > 0.0 &&
         contact_case.history.has_jump()) {
-        throw InvalidInput("load.history", "[...]",
-                           "a jump in depth needs an infinite force with a dashpot (eta > 0); give the jump a duration");
+        throw InvalidInput(
+            "load.history", "[...]",
+            "a jump in depth needs an infinite force with a dashpot (eta > 0); give the jump a duration");
     }
 }
 
