@@ -21,6 +21,33 @@ py::array_t<double> vectorised(const Array& input, F f) {
     return output;
 }
 
+// The [indenter] table of a profile, as a dict: {"shape": ..., parameters...}.
+py::dict indenter_table(const Profile& p) {
+    const auto definition = p.definition();
+    py::dict table;
+    table["shape"] = definition.shape;
+    for (const auto& [key, value] : definition.numbers) table[py::str(key)] = value;
+    if (definition.shape == "profile") {
+        table["r"] = definition.r;
+        table["f"] = definition.f;
+        table["interpolation"] = definition.interpolation;
+    }
+    return table;
+}
+
+profile::ProfileDefinition definition_of(const py::dict& table) {
+    profile::ProfileDefinition definition;
+    for (const auto& [key, value] : table) {
+        const auto name = key.cast<std::string>();
+        if (name == "shape") definition.shape = value.cast<std::string>();
+        else if (name == "r") definition.r = value.cast<std::vector<double>>();
+        else if (name == "f") definition.f = value.cast<std::vector<double>>();
+        else if (name == "interpolation") definition.interpolation = value.cast<std::string>();
+        else definition.numbers.emplace_back(name, value.cast<double>());
+    }
+    return definition;
+}
+
 }  // namespace
 
 void bind_profile(py::module_& module) {
@@ -36,10 +63,13 @@ void bind_profile(py::module_& module) {
                     py::arg("c"), py::arg("n"), "Power law f = c r^n: g = kappa_n c |x|^n.")
         .def_static(
             "profile",
-            [](std::vector<double> r, std::vector<double> f) {
-                return std::shared_ptr<Profile>(profile::make_table(std::move(r), std::move(f)));
+            [](std::vector<double> r, std::vector<double> f, const std::string& interpolation) {
+                return std::shared_ptr<Profile>(
+                    profile::make_table(std::move(r), std::move(f), profile::interpolation_named(interpolation)));
             },
-            py::arg("r"), py::arg("f"), "Tabulated gap (r ascending from 0, f(0) = 0, f non-decreasing).")
+            py::arg("r"), py::arg("f"), py::arg("interpolation") = "monotone_cubic",
+            "Tabulated gap (r ascending from 0, f(0) = 0, f non-decreasing), interpolated by monotone cubics (smooth "
+            "profiles) or linearly (profiles with kinks).")
         .def("gap", [](const Profile& p, const Array& r) { return vectorised(r, [&](double x) { return p.gap(x); }); },
              py::arg("r"), "The gap f(r) [m].")
         .def("equivalent",
@@ -48,6 +78,12 @@ void bind_profile(py::module_& module) {
         .def("contact_radius",
              [](const Profile& p, const Array& d) { return vectorised(d, [&](double v) { return p.contact_radius(v); }); },
              py::arg("d"), "The Lee-Radok contact radius g^-1(d) [m] at depth d (eq. 15).")
+        .def_property_readonly("table", &indenter_table,
+                               "The [indenter] table of a case that builds this indenter (shape and parameters).")
+        .def(py::pickle(&indenter_table,
+                        [](const py::dict& table) {
+                            return std::shared_ptr<Profile>(profile::make_profile(definition_of(table)));
+                        }))
         .def("__repr__", [](const Profile& p) { return "Indenter(" + p.describe() + ")"; });
 }
 

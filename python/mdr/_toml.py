@@ -1,6 +1,6 @@
 """Writes a case given as nested dicts as TOML text with tomli-w (Debian python3-tomli-w), so that dict cases go
 through the same reader as files: keys with spaces or dots are quoted, any text is escaped, numpy values and
-`mdr.Material` objects become plain TOML values."""
+`mdr.Material` and `mdr.Indenter` objects become their tables."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ from typing import Any, Mapping
 import numpy as np
 import tomli_w
 
-from ._mdr import Material
+from ._mdr import Indenter, Material
 
 
 def material_table(material: Material) -> dict[str, Any]:
@@ -31,6 +31,8 @@ def material_table(material: Material) -> dict[str, Any]:
 def _plain(value: Any, key: str) -> Any:
     if isinstance(value, Material):
         return material_table(value)
+    if isinstance(value, Indenter):
+        return value.table
     if isinstance(value, Mapping):
         for name in value:
             if not isinstance(name, str):

@@ -33,7 +33,8 @@ std::shared_ptr<const profile::Profile> read_indenter(TableReader& table) {
             with({"slope_deg", "half_angle_deg"});
             if (table.has("slope_deg") == table.has("half_angle_deg")) {
                 throw InvalidInput("indenter.slope_deg",
-                                   table.has("slope_deg") ? "given with half_angle_deg" : "(missing)", "give one of slope_deg (between flank and surface) or half_angle_deg (between "
+                                   table.has("slope_deg") ? "given with half_angle_deg" : "(missing)",
+                                   "give one of slope_deg (between flank and surface) or half_angle_deg (between "
                                    "flank and axis, as tips are specified)");
             }
             return table.has("slope_deg") ? profile::make_cone(table.number("slope_deg"))
@@ -49,14 +50,9 @@ std::shared_ptr<const profile::Profile> read_indenter(TableReader& table) {
         }
         if (shape == "profile") {
             with({"r", "f", "interpolation"});
-            const std::string interpolation = table.optional_string("interpolation").value_or("monotone_cubic");
-            if (interpolation != "monotone_cubic" && interpolation != "linear") {
-                throw InvalidInput("indenter.interpolation", "\"" + interpolation + "\"",
-                                   "must be monotone_cubic or linear");
-            }
-            return profile::make_table(table.numbers("r"), table.numbers("f"),
-                                       interpolation == "linear" ? profile::Interpolation::linear
-                                                                 : profile::Interpolation::monotone_cubic);
+            const auto interpolation =
+                profile::interpolation_named(table.optional_string("interpolation").value_or("monotone_cubic"));
+            return profile::make_table(table.numbers("r"), table.numbers("f"), interpolation);
         }
     } catch (const InvalidInput& error) {
         if (error.key().rfind("indenter.", 0) == 0) throw;

@@ -19,6 +19,7 @@ public:
     double max_radius() const override { return radius_; }
     bool is_flat_punch() const override { return true; }
     std::string describe() const override { return "flat punch a = " + format_value(radius_); }
+    ProfileDefinition definition() const override { return {"flat", {{"a", radius_}}, {}, {}, {}}; }
 
 private:
     static constexpr double infinity = std::numeric_limits<double>::infinity();

@@ -33,6 +33,9 @@ public:
     std::string describe() const override {
         return "power law c = " + format_value(coefficient_) + ", n = " + format_value(exponent_);
     }
+    ProfileDefinition definition() const override {
+        return {"power", {{"c", coefficient_}, {"n", exponent_}}, {}, {}, {}};
+    }
 
 private:
     double coefficient_;

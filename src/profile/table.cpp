@@ -113,6 +113,7 @@ public:
     Table(std::vector<double> r, std::vector<double> f, Interpolation interpolation)
         : r_(std::move(r)),
           f_(std::move(f)),
+          interpolation_(interpolation),
           pieces_(interpolation == Interpolation::linear ? piecewise_linear(r_, f_) : monotone_cubic(r_, f_)),
           g_at_knots_(r_.size()),
           monotone_intervals_(count_monotone_intervals()) {
@@ -160,6 +161,9 @@ public:
     double max_radius() const override { return r_.back(); }
     std::string describe() const override {
         return "table " + std::to_string(r_.size()) + " points, r_max = " + format_value(r_.back());
+    }
+    ProfileDefinition definition() const override {
+        return {"profile", {}, r_, f_, interpolation_ == Interpolation::linear ? "linear" : "monotone_cubic"};
     }
 
 private:
@@ -248,6 +252,7 @@ private:
 
     std::vector<double> r_;
     std::vector<double> f_;
+    Interpolation interpolation_;
     std::vector<Cubic> pieces_;       // f on each interval
     std::vector<double> g_at_knots_;  // g(r_k), to bracket the contact radius
     std::size_t monotone_intervals_;  // g is non-decreasing on [0, r_m], m = monotone_intervals_

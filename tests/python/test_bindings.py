@@ -545,3 +545,33 @@ def test_materials_pickle_and_compressible_materials_follow_eq_56():
     nu = (3 * K - 2 * G) / (2 * (3 * K + G))
     effective = mdr.Material.elastic(G=G).with_bulk(mdr.Material.elastic(G=K))
     assert effective.creep([1.0])[0] == pytest.approx(2 * (1 - nu) / G, rel=1e-12)
+
+
+@pytest.mark.parametrize("indenter", [mdr.Indenter.sphere(R=0.01), mdr.Indenter.cone(slope_deg=20.0),
+                                      mdr.Indenter.flat(a=1e-3), mdr.Indenter.power(c=2e3, n=2.5),
+                                      mdr.Indenter.profile(r=[0.0, 1e-3, 2e-3], f=[0.0, 1e-5, 5e-5],
+                                                           interpolation="linear")])
+def test_indenters_pickle_and_stand_for_their_table_in_a_case(indenter):
+    import pickle
+
+    copy = pickle.loads(pickle.dumps(indenter))
+    x = np.linspace(0.0, 0.9e-3, 7)
+    assert np.array_equal(copy.equivalent(x), indenter.equivalent(x))
+    assert copy.table == indenter.table
+    assert repr(copy) == repr(indenter)
+    # In a case, the object is its [indenter] table: the same run as with the table written out.
+    case = dict(CASE_DICT, load={"control": "force", "history": [[0.0, 0.0], [0.5, 1e-3], [1.0, 1e-3]]},
+                output={})
+    by_object = mdr.run(dict(case, indenter=indenter)).summary["max_depth"]
+    by_table = mdr.run(dict(case, indenter=dict(indenter.table))).summary["max_depth"]
+    assert by_object == by_table and by_object > 0.0
+
+
+def test_a_linear_profile_of_a_cone_is_the_cone():
+    """Eq. 9 is exact per linear segment: a two-point linear table of a cone has the cone's g(x) = (pi/2) tan x."""
+    slope = math.tan(math.radians(20.0))
+    table = mdr.Indenter.profile(r=[0.0, 1e-2], f=[0.0, 1e-2 * slope], interpolation="linear")
+    x = np.linspace(0.0, 5e-3, 11)
+    assert table.equivalent(x) == pytest.approx(0.5 * math.pi * slope * x, rel=1e-12, abs=1e-18)
+    with pytest.raises(ValueError, match="must be monotone_cubic or linear"):
+        mdr.Indenter.profile(r=[0.0, 1e-2], f=[0.0, 1e-3], interpolation="spline")

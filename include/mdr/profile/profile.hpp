@@ -4,9 +4,20 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mdr::profile {
+
+/// What defines a profile, named as in the case file's `[indenter]` table: enough to build it again (pickling,
+/// writing a case back).
+struct ProfileDefinition {
+    std::string shape;                                    ///< sphere, cone, flat, power or profile
+    std::vector<std::pair<std::string, double>> numbers;  ///< e.g. {"R", 0.01}
+    std::vector<double> r;                                ///< a table's radii [m] (shape = profile)
+    std::vector<double> f;                                ///< a table's gaps [m]
+    std::string interpolation;                            ///< a table's interpolation (linear, monotone_cubic)
+};
 
 /// An axisymmetric gap f(r) between the undeformed surfaces, f(0) = 0, non-decreasing in r.
 class Profile {
@@ -27,6 +38,8 @@ public:
     virtual bool is_flat_punch() const { return false; }
     /// Short human description, e.g. `sphere R = 0.01`.
     virtual std::string describe() const = 0;
+    /// The shape and parameters that build this profile again (make_profile).
+    virtual ProfileDefinition definition() const = 0;
 };
 
 /// Sphere of radius R (parabolic approximation): f = r^2/(2R), g = x^2/R (eq. 30). Key `R`.
@@ -52,5 +65,12 @@ enum class Interpolation {
 /// eq. (9) in closed form per interval (f' is a polynomial there). Keys `r`, `f`, `interpolation`.
 std::unique_ptr<Profile> make_table(std::vector<double> r, std::vector<double> f,
                                     Interpolation interpolation = Interpolation::monotone_cubic);
+
+/// The interpolation of that name (`monotone_cubic` or `linear`); mdr::InvalidInput (key `interpolation`) else.
+Interpolation interpolation_named(const std::string& name);
+
+/// Builds the profile that `definition` describes (the factories above; their errors name the case-file keys
+/// without the `indenter.` prefix). Throws mdr::InvalidInput for an unknown shape or a missing parameter.
+std::unique_ptr<Profile> make_profile(const ProfileDefinition& definition);
 
 }  // namespace mdr::profile
