@@ -575,3 +575,11 @@ def test_a_linear_profile_of_a_cone_is_the_cone():
     assert table.equivalent(x) == pytest.approx(0.5 * math.pi * slope * x, rel=1e-12, abs=1e-18)
     with pytest.raises(ValueError, match="must be monotone_cubic or linear"):
         mdr.Indenter.profile(r=[0.0, 1e-2], f=[0.0, 1e-3], interpolation="spline")
+
+
+def test_a_result_pickles():
+    import pickle
+
+    result = mdr.run(CASE_DICT)
+    copy = pickle.loads(pickle.dumps(result))
+    assert copy.summary == result.summary and np.array_equal(copy.history["F"], result.history["F"])
