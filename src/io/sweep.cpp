@@ -109,18 +109,14 @@ void validate_sweep(std::string_view case_text, const std::string& source, const
 }
 
 std::size_t sweep_size(const std::vector<SweepAxis>& axes) {
-    std::size_t total = 1;
-    double exact = 1.0;
-    for (const auto& axis : axes) {
-        exact *= static_cast<double>(axis.values.size());
-        total = exact <= static_cast<double>(max_sweep_points) ? total * axis.values.size() : 0;
-    }
-    if (exact > static_cast<double>(max_sweep_points)) {
-        throw InvalidInput("--vary", fmt::format("{:.4g} points", exact),
+    double points = 1.0;  // in double: the product of the axis sizes may exceed any integer type
+    for (const auto& axis : axes) points *= static_cast<double>(axis.values.size());
+    if (points > static_cast<double>(max_sweep_points)) {
+        throw InvalidInput("--vary", fmt::format("{:.4g} points", points),
                            fmt::format("a sweep has at most {} points; split the grid into several sweeps",
                                        max_sweep_points));
     }
-    return total;
+    return static_cast<std::size_t>(points);
 }
 
 namespace {
@@ -198,7 +194,8 @@ std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& s
     workers.start(static_cast<unsigned>(std::min<std::size_t>(std::max(jobs, 1u), total)), work);
     std::unique_lock lock(mutex);
     while (done < total) {
-        // Woken by each finished point, and at least every 0.2 s so that the caller can stop a long point.
+        // Progress every 0.2 s and at the end: the caller sees it, and can stop the sweep (by throwing) also while a
+        // long point runs.
         finished.wait_for(lock, std::chrono::milliseconds(200), [&] { return done == total; });
         const std::size_t reported = done;
         if (progress) {
