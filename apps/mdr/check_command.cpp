@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "setup_progress.hpp"
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/io/case_file.hpp"
+#include "setup_progress.hpp"
 
 namespace mdr::cli {
 

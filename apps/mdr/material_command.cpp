@@ -3,12 +3,12 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "setup_progress.hpp"
 #include "interrupt.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/material_table.hpp"
 #include "mdr/io/result_directory.hpp"
+#include "setup_progress.hpp"
 
 namespace mdr::cli {
 namespace {

@@ -6,13 +6,13 @@
 #include <chrono>
 
 #include "commands.hpp"
-#include "setup_progress.hpp"
 #include "interrupt.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/result_directory.hpp"
 #include "mdr/io/result_files.hpp"
 #include "progress.hpp"
+#include "setup_progress.hpp"
 
 namespace mdr::cli {
 
