@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "mdr/drivers/contact_case.hpp"
 #include "mdr/io/case_file.hpp"
 #include "setup_progress.hpp"
 
@@ -19,8 +18,7 @@ void add_check_command(CLI::App& app, int& exit_code) {
                 const SetupProgress preparing;
                 return io::load_case(*case_path);
             }();
-            drivers::resolve_numerics(contact_case);  // the bounds of work and memory
-            fmt::print("ok: {}\n", io::describe(contact_case));
+            fmt::print("ok: {}\n", io::check(contact_case));
         });
     });
 }

@@ -72,11 +72,7 @@ void bind_run(py::module_& module) {
                "Runs a case given as TOML text; returns history, profiles and summary (use mdr.run).");
     module.def(
         "_check_toml",
-        [](const std::string& text, const std::string& source) {
-            const auto contact_case = io::parse_case(text, source);
-            drivers::resolve_numerics(contact_case);  // the bounds of work and memory
-            return io::describe(contact_case);
-        },
+        [](const std::string& text, const std::string& source) { return io::check(io::parse_case(text, source)); },
         py::arg("toml_text"), py::arg("source") = "case", "Validates a case given as TOML text; returns its description.");
 }
 

@@ -91,10 +91,7 @@ drivers::LoadHistory read_history(TableReader& load, drivers::Control control) {
     return drivers::LoadHistory(std::move(points), "load.history");
 }
 
-drivers::TangentialLoad read_tangential(TableReader& table, drivers::Control normal_control) {
-    if (normal_control == drivers::Control::impact) {
-        throw InvalidInput("tangential", "[...]", "not with load.control = \"impact\"");
-    }
+drivers::TangentialLoad read_tangential(TableReader& table) {
     table.reject_unknown({"friction", "control", "history", "amplitude", "frequency", "start", "end"});
     drivers::TangentialLoad load;
     load.friction = table.number("friction");
@@ -184,7 +181,7 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
     std::optional<drivers::TangentialLoad> tangential;
     bool approximate = false;
     if (auto table = root.table("tangential")) {
-        tangential = read_tangential(*table, control);
+        tangential = read_tangential(*table);
         if (!load->has("end")) end_time = std::max(end_time, tangential->end_time());
         // Exact only for elastically similar bodies (section 7): compressible or two bodies make it approximate.
         approximate = shear_material.has_value() || indenter_table->has("material");
@@ -221,6 +218,11 @@ drivers::ContactCase load_case(const std::filesystem::path& path) {
     std::ostringstream text;
     text << file.rdbuf();
     return parse_case(text.str(), path.string());
+}
+
+std::string check(const drivers::ContactCase& contact_case) {
+    drivers::resolve_numerics(contact_case);  // the rules and the bounds of work and memory
+    return describe(contact_case);
 }
 
 std::string describe(const drivers::ContactCase& contact_case) {

@@ -21,4 +21,8 @@ drivers::ContactCase load_case(const std::filesystem::path& path);
 /// One line describing a validated case, for `mdr check` and the run summary.
 std::string describe(const drivers::ContactCase& contact_case);
 
+/// What `mdr check` answers: the description of a case that also passes the bounds of work and memory
+/// (drivers::resolve_numerics); throws mdr::InvalidInput otherwise.
+std::string check(const drivers::ContactCase& contact_case);
+
 }  // namespace mdr::io
