@@ -221,8 +221,9 @@ std::size_t last_crossing(const Curve& curve, const Baseline& baseline, std::siz
 //     optimised (Brent) for each d_c, each within a grid step of the best grid point (a box that moves where the
 //     minimum is on its edge).
 //  4. The baseline is fitted again to the rows before the contact (before the first row from which the depth
-//     stays beyond d_c), and step 3 is repeated once, starting from its first result; not when that would leave fewer than half of the window's
-//     rows (the depth of a pause before the approach is then within its noise of d_c: the window stays).
+//     stays beyond d_c), and step 3 is repeated once, starting from its first result; not when that would leave
+//     fewer than half of the window's rows (the depth of a pause before the approach is then within its noise of
+//     d_c: the window stays).
 //  5. force_baseline is the line at the time the depth passes d_c. The depth noise is 1.4826 x MAD / sqrt(6) of
 //     the second differences of the depth over the baseline rows (they remove a smooth trend;
 //     var(x[i+1] - 2 x[i] + x[i-1]) = 6 sigma^2 for white noise): row-to-row noise, not slow drift.

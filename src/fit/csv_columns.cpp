@@ -105,7 +105,8 @@ CsvColumns read_csv_columns(const fs::path& file, const std::vector<CsvColumn>& 
     const auto column_index = [&](const std::string& name, const std::string& key) {
         const auto first = std::find(header.begin(), header.end(), name);
         if (first == header.end()) {
-            throw InvalidInput(key, in_quotes(name), "no such column in " + file_name + "; its columns: " + joined(header));
+            throw InvalidInput(key, in_quotes(name),
+                               "no such column in " + file_name + "; its columns: " + joined(header));
         }
         if (std::find(first + 1, header.end(), name) != header.end()) {
             throw InvalidInput(key, in_quotes(name), "the header of " + file_name + " has two columns of this name");

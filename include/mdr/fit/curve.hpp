@@ -32,17 +32,17 @@ struct CurveSource {
 
 /// A measured curve in SI units.
 struct Curve {
-    std::string name;            ///< for messages and outputs (the file stem, or given)
-    std::vector<double> time;    ///< t [s], strictly increasing
-    std::vector<double> depth;   ///< indentation [m] relative to the data's own zero, positive into the body
-    std::vector<double> force;   ///< force [N], as measured (baseline not removed)
-    double force_noise = 0.0;    ///< estimated standard deviation of the force noise [N] (0 when unknown)
-    double depth_noise = 0.0;    ///< estimated standard deviation of the depth noise [m] (0 when unknown)
-    double contact_depth = 0.0;  ///< estimated depth of first contact in the data's depth [m]
-    double force_baseline = 0.0; ///< estimated force before contact [N]
-    double onset_exponent = 0.0;  ///< n of the onset fit F - baseline = A (depth - contact_depth)^n (0 when unknown)
-    double onset_amplitude = 0.0; ///< A of the onset fit [N/m^n] (0 when unknown)
-    std::string estimate_note;    ///< "" when the contact estimates are sound, else why they are not
+    std::string name;              ///< for messages and outputs (the file stem, or given)
+    std::vector<double> time;      ///< t [s], strictly increasing
+    std::vector<double> depth;     ///< indentation [m] relative to the data's own zero, positive into the body
+    std::vector<double> force;     ///< force [N], as measured (baseline not removed)
+    double force_noise = 0.0;      ///< estimated standard deviation of the force noise [N] (0 when unknown)
+    double depth_noise = 0.0;      ///< estimated standard deviation of the depth noise [m] (0 when unknown)
+    double contact_depth = 0.0;    ///< estimated depth of first contact in the data's depth [m]
+    double force_baseline = 0.0;   ///< estimated force before contact [N] (the baseline's value at the contact point)
+    double onset_exponent = 0.0;   ///< n of the onset fit F - baseline = A (depth - contact_depth)^n (0 when unknown)
+    double onset_amplitude = 0.0;  ///< A of the onset fit [N/m^n] (0 when unknown)
+    std::string estimate_note;     ///< "" when the contact estimates are sound, else why they are not
 };
 
 /// The fewest rows a curve may have (after the segment selection).
