@@ -66,6 +66,9 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
         for (std::size_t i = 0; i < n; ++i) {
             curve.time.push_back(data.time[prepared.used[i]]);
             curve.measured.push_back(measured[prepared.used[i]]);
+            curve.drive.push_back(problem.settings.fitted == Fitted::force
+                                      ? data.depth[prepared.used[i]] - curve.contact_depth
+                                      : std::max(data.force[prepared.used[i]] - curve.baseline, 0.0));
             squared += (curve.model[i] - curve.measured[i]) * (curve.model[i] - curve.measured[i]);
             stacked.residuals[row] = r[i];
             for (std::size_t j = 0; j < k; ++j) stacked.jacobian(row, static_cast<Eigen::Index>(j)) = shared_block[i * k + j];

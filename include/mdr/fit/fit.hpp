@@ -80,6 +80,8 @@ struct CurveFit {
     std::vector<double> time;       ///< t [s]
     std::vector<double> measured;   ///< measured force [N] or depth [m] (the fitted quantity)
     std::vector<double> model;      ///< model of the same quantity, baseline and contact point included
+    std::vector<double> drive;      ///< what drove the model: depth below the contact point [m], or force above
+                                    ///< the baseline [N] (0 below it)
     double contact_depth = 0.0;     ///< the contact point used [m]
     double contact_depth_error = 0.0;  ///< its standard error [m] (0 unless fitted)
     double baseline = 0.0;          ///< the force baseline used [N]
