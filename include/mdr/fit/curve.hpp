@@ -4,6 +4,7 @@
 /// receives (time, indentation and force in SI units, with estimates of noise, contact point and force baseline).
 
 #include <filesystem>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@ namespace mdr::fit {
 /// `force_column` or the deflection times the spring constant gives the force.
 struct CurveSource {
     std::filesystem::path file;             ///< CSV file with a header row of column names
+    std::string name;                       ///< the curve's name ("" gives the file's stem)
     std::string time_column;                ///< time
     std::string depth_column;               ///< indentation, positive into the body ("" when raw AFM columns are used)
     std::string force_column;               ///< force on the indenter, positive in compression ("" for raw AFM)
@@ -38,11 +40,21 @@ struct Curve {
     double depth_noise = 0.0;    ///< estimated standard deviation of the depth noise [m] (0 when unknown)
     double contact_depth = 0.0;  ///< estimated depth of first contact in the data's depth [m]
     double force_baseline = 0.0; ///< estimated force before contact [N]
+    double onset_exponent = 0.0;  ///< n of the onset fit F - baseline = A (depth - contact_depth)^n (0 when unknown)
+    double onset_amplitude = 0.0; ///< A of the onset fit [N/m^n] (0 when unknown)
+    std::string estimate_note;    ///< "" when the contact estimates are sound, else why they are not
 };
+
+/// The fewest rows a curve may have (after the segment selection).
+inline constexpr std::size_t minimum_curve_rows = 10;
 
 /// Reads and validates a curve from its CSV source and estimates its noise, contact point and baseline
 /// (estimate_contact). Throws mdr::InvalidInput naming the file, column and row for a missing file or column,
-/// a value that is not a finite number, time not strictly increasing, or too few rows.
+/// a value that is not a finite number, time not strictly increasing, or too few rows; and for a source that
+/// names both or neither depth sources (a depth column, or the AFM piezo and deflection columns with a spring
+/// constant > 0), a force column beside the AFM columns, or segments that select no row. The keys of its errors
+/// are those of a `[[fit.data]]` table (`time`, `force`, `segments`, ...): a caller prefixes them
+/// (InvalidInput::with_prefix). Only the used columns of the kept rows are read: other columns may hold anything.
 Curve load_curve(const CurveSource& source);
 
 /// A validated curve from arrays in SI units (same rules as load_curve), with the same estimates.
