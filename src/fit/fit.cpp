@@ -100,9 +100,8 @@ FitResult fit(const FitProblem& problem) {
         solver_problem.AddResidualBlock(costs.back().get(), nullptr, blocks);
     }
     for (std::size_t j = 0; j < k; ++j) {
-        const auto& parameter = problem.parameters[j];
-        solver_problem.SetParameterLowerBound(shared.data(), static_cast<int>(j), scales.to_internal(j, parameter.lower));
-        solver_problem.SetParameterUpperBound(shared.data(), static_cast<int>(j), scales.to_internal(j, parameter.upper));
+        solver_problem.SetParameterLowerBound(shared.data(), static_cast<int>(j), scales.lower[j]);
+        solver_problem.SetParameterUpperBound(shared.data(), static_cast<int>(j), scales.upper[j]);
     }
 
     ceres::Solver::Options options;
