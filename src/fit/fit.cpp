@@ -18,7 +18,9 @@ namespace mdr::fit {
 void validate(const FitProblem& problem) {
     if (!problem.model) throw InvalidInput("fit.model", "(missing)", "is required");
     if (problem.parameters.empty()) throw InvalidInput("fit.free", "[]", "name at least one parameter to fit");
-    if (problem.curves.empty()) throw InvalidInput("fit.data", "[]", "give at least one measured curve");
+    if (problem.curves.empty()) {
+        throw InvalidInput("fit.data", "(missing)", "give at least one measured curve ([[fit.data]] or arrays)");
+    }
     std::set<std::string> names;
     for (const auto& parameter : problem.parameters) {
         const std::string key = "fit.bounds." + parameter.name;
