@@ -7,6 +7,8 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <string>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -128,6 +130,28 @@ TEST_P(SmallAmplitude, ForceControlFlatPunchStiffnessIsEightAGOmega) {
     const double error = stiffness_error(run_toml(run.toml()), a, omega_tau / tau1);
     RecordProperty("error", fmt::format("{:.3g}", error));
     EXPECT_LT(error, 1e-4) << "omega tau = " << omega_tau;
+}
+
+TEST_P(SmallAmplitude, CompressibleAndTwoBodyForms) {
+    // eq. 56 in the frequency domain: 1 / G_eff = 1 / G(omega) + 3 / (3 K + G(omega)) (elastic bulk K); eq. 8: the
+    // complex compliances of two bodies add, 1 / G_eff = 1 / G(omega) + 1 / G2. Flat punch, k = 8 a G_eff(omega).
+    const double a = 1e-3, K = 3e6, G2 = 5e6, omega_tau = GetParam(), omega = omega_tau / tau1;
+    const std::complex<double> G = standard_solid_modulus(omega);
+    const std::complex<double> compressible = 1.0 / (1.0 / G + 3.0 / (3.0 * K + G));
+    const std::complex<double> two_bodies = 1.0 / (1.0 / G + 1.0 / G2);
+    for (const auto& [material, indenter, modulus] :
+         {std::tuple{fmt::format("K = {}", K), std::string(punch), compressible},
+          std::tuple{std::string(), fmt::format("{}\n[indenter.material]\nmodel = \"elastic\"\nG = {}", punch, G2),
+                     two_bodies}}) {
+        HarmonicRun run{indenter, "displacement", 1e-5, 1e-7, omega_tau, punch_numerics};
+        std::string toml = run.toml();
+        toml.insert(toml.find("[indenter]"), material + "\n");
+        const auto result = run_toml(toml);
+        ASSERT_TRUE(result.harmonic.has_value());
+        const std::complex<double> measured{*result.harmonic->storage_stiffness, *result.harmonic->loss_stiffness};
+        const std::complex<double> expected = 8.0 * a * modulus;
+        EXPECT_LT(std::abs(measured - expected), 1e-4 * std::abs(expected)) << material << indenter;
+    }
 }
 
 // Four decades of omega tau.
