@@ -29,9 +29,9 @@ struct HarmonicLoad {
 };
 
 /// Steps per harmonic period when `[numerics] time_step` is not given (normal and tangential harmonics). With
-/// the load linear between steps, the response's first harmonic is off by O((2 pi / 200)^2 / 12) ~ 1e-4 of its
-/// viscous part at most (measured: below 2e-5 of |k| for a standard solid, tests/verification/
-/// test_harmonic_normal.cpp).
+/// the load linear between steps, the response's first harmonic is off by O((2 pi / 200)^2 / 12) ~ 8e-5 of its
+/// viscous part at most (measured for a standard solid: below 1e-5 of |k| under displacement control, 6e-5 under
+/// force control; tests/verification/test_harmonic_normal.cpp).
 inline constexpr double default_steps_per_period = 200.0;
 
 }  // namespace mdr::drivers
