@@ -223,11 +223,12 @@ harmonic = {{ amplitude = {}, frequency = {}, start = 1.0, end = {} }}
             bem_depth += bem.depth[n] * phasor;
         }
     }
-    EXPECT_LT(largest, 2e-3 * peak);
+    RecordProperty("force_difference", fmt::format("{:.3g}", largest / peak));
+    EXPECT_LT(largest, 5e-4 * peak);  // measured 1.2e-4
     const std::complex<double> bem_stiffness = bem_force / bem_depth;
     const std::complex<double> stiffness{*result.harmonic->storage_stiffness, *result.harmonic->loss_stiffness};
     RecordProperty("stiffness_difference", fmt::format("{:.3g}", std::abs(stiffness - bem_stiffness) / std::abs(bem_stiffness)));
-    EXPECT_LT(std::abs(stiffness - bem_stiffness), 2e-3 * std::abs(bem_stiffness));
+    EXPECT_LT(std::abs(stiffness - bem_stiffness), 5e-4 * std::abs(bem_stiffness));  // measured 1.1e-4
 }
 
 }  // namespace
