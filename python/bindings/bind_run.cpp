@@ -33,6 +33,12 @@ py::dict run_toml_case(const std::string& toml_text, const std::string& source) 
     history["F"] = to_array(result.force);
     history["a"] = to_array(result.radius);
     if (!result.velocity.empty()) history["v"] = to_array(result.velocity);
+    if (!result.base.empty()) {
+        std::vector<double> deflection(result.base.size());
+        for (std::size_t i = 0; i < deflection.size(); ++i) deflection[i] = result.base[i] - result.depth[i];
+        history["z"] = to_array(result.base);
+        history["deflection"] = to_array(deflection);
+    }
     if (!result.tangential_force.empty()) {
         history["u"] = to_array(result.tangential_displacement);
         history["Fx"] = to_array(result.tangential_force);
