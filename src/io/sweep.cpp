@@ -47,11 +47,11 @@ std::vector<std::string> split(const std::string& text, char separator) {
     }
 }
 
-// The case with each axis key set to its value at `point`, as TOML text.
-std::string case_at(const toml::table& base, const std::vector<SweepAxis>& axes, const std::vector<double>& point) {
+// The case with each key set to its value at `point`, as TOML text.
+std::string case_at(const toml::table& base, const std::vector<std::string>& keys, const std::vector<double>& point) {
     toml::table table = base;
-    for (std::size_t a = 0; a < axes.size(); ++a) {
-        const auto path = split(axes[a].key, '.');
+    for (std::size_t a = 0; a < keys.size(); ++a) {
+        const auto path = split(keys[a], '.');
         toml::table* parent = &table;
         for (std::size_t i = 0; i + 1 < path.size(); ++i) parent = (*parent)[path[i]].as_table();
         parent->insert_or_assign(path.back(), point[a]);
@@ -149,19 +149,39 @@ private:
 
 }  // namespace
 
+std::vector<std::vector<double>> sweep_points(const std::vector<SweepAxis>& axes) {
+    const std::size_t total = sweep_size(axes);
+    std::vector<std::vector<double>> points(total, std::vector<double>(axes.size()));
+    for (std::size_t r = 0; r < total; ++r) {
+        std::size_t rest = r;
+        for (std::size_t a = axes.size(); a-- > 0;) {
+            points[r][a] = axes[a].values[rest % axes[a].values.size()];
+            rest /= axes[a].values.size();
+        }
+    }
+    return points;
+}
+
 std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& source,
                                 const std::vector<SweepAxis>& axes, unsigned jobs,
                                 const std::function<void(std::size_t, std::size_t)>& progress) {
+    std::vector<std::string> keys;
+    for (const auto& axis : axes) keys.push_back(axis.key);
+    return run_sweep_points(case_text, source, keys, sweep_points(axes), jobs, progress);
+}
+
+std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::string& source,
+                                       const std::vector<std::string>& keys, std::vector<std::vector<double>> points,
+                                       unsigned jobs, const std::function<void(std::size_t, std::size_t)>& progress) {
     const toml::table base = toml::parse(case_text, source);
-    const std::size_t total = sweep_size(axes);
+    const std::size_t total = points.size();
+    if (total == 0) return {};
     std::vector<SweepRow> rows(total);
     for (std::size_t r = 0; r < total; ++r) {
-        std::size_t rest = r;
-        rows[r].point.resize(axes.size());
-        for (std::size_t a = axes.size(); a-- > 0;) {
-            rows[r].point[a] = axes[a].values[rest % axes[a].values.size()];
-            rest /= axes[a].values.size();
+        if (points[r].size() != keys.size()) {
+            throw InvalidInput("points", fmt::format("row {}", r), fmt::format("needs {} values", keys.size()));
         }
+        rows[r].point = std::move(points[r]);
     }
     std::atomic<std::size_t> next{0};
     std::atomic<bool> stop{false};
@@ -175,7 +195,7 @@ std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& s
         for (std::size_t r = next++; r < total && !stop; r = next++) {
             SweepRow& row = rows[r];
             try {
-                const auto contact_case = parse_case(case_at(base, axes, row.point), source);
+                const auto contact_case = parse_case(case_at(base, keys, row.point), source);
                 const auto start = std::chrono::steady_clock::now();
                 const auto result = drivers::run_case(contact_case, stop_requested);
                 const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
