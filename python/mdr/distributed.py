@@ -33,8 +33,8 @@ from typing import Any, Callable, Sequence
 TARGET_SECONDS = 0.1
 #: The most items in one chunk (bounds the memory of one task).
 MAX_CHUNK = 10_000
-#: How long to wait for a scheduler to answer, and for its first worker.
-CONNECT_TIMEOUT = 10.0
+#: How long to wait for the first worker of a scheduler. (How long to wait for the scheduler itself is Dask's
+#: setting distributed.comm.timeouts.connect, 30 s; environment DASK_DISTRIBUTED__COMM__TIMEOUTS__CONNECT.)
 WORKER_TIMEOUT = 30.0
 
 
@@ -53,6 +53,14 @@ class MapOutcome:
     retried: int
     seconds: float
     compute_seconds: float
+
+
+class SchedulerError(ValueError):
+    """The scheduler cannot be used: `address` and `rule` (the message is "scheduler = ADDRESS: RULE")."""
+
+    def __init__(self, address: str, rule: str):
+        super().__init__(f"scheduler = {address}: {rule}")
+        self.address, self.rule = address, rule
 
 
 def _timed(chunk_function: Callable[[Any], list], payload: Any) -> tuple[list, float]:
@@ -105,9 +113,9 @@ class _DaskPool:
             self._client, self._own = scheduler, False
         elif isinstance(scheduler, str):
             try:
-                self._client = distributed.Client(scheduler, timeout=CONNECT_TIMEOUT, set_as_default=False)
-            except OSError as error:
-                raise ValueError(f"scheduler = {scheduler}: no Dask scheduler answered ({error})") from None
+                self._client = distributed.Client(scheduler, set_as_default=False)
+            except (OSError, ValueError, TypeError) as error:  # refused, timed out, or not an address
+                raise SchedulerError(scheduler, f"no Dask scheduler answered ({error})") from None
             self._own = True
         else:
             raise TypeError(f"scheduler: expected 'tcp://HOST:PORT' or a distributed.Client, got "
@@ -117,7 +125,7 @@ class _DaskPool:
             self._client.wait_for_workers(1, timeout=WORKER_TIMEOUT)
         except (TimeoutError, OSError):
             self.close(False)
-            raise ValueError(f"scheduler = {self.scheduler}: no worker joined within {WORKER_TIMEOUT:g} s") from None
+            raise SchedulerError(self.scheduler, f"no worker joined within {WORKER_TIMEOUT:g} s") from None
         workers = self._client.scheduler_info()["workers"]
         self.workers = len(workers)
         self.threads = sum(worker["nthreads"] for worker in workers.values())
@@ -174,7 +182,7 @@ def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int
     output per item of the chunk, and returns the outputs in item order. `chunk_function` must be picklable by
     reference (a function of an installed module, e.g. with functools.partial) or be defined in `__main__`;
     `read_chunk` runs here, so data read from local files or arrays travels with the tasks. `progress(done, total)`
-    is called at least every 0.5 s. KeyboardInterrupt cancels every chunk and closes what was opened."""
+    is called at least every 0.2 s. KeyboardInterrupt cancels every chunk and closes what was opened."""
     start_time = time.perf_counter()
     pool = _LocalPool(jobs) if scheduler is None else _DaskPool(scheduler)
     outputs: list = [None] * total
@@ -196,7 +204,7 @@ def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int
                 future.add_done_callback(completed.put)
                 tasks += 1
                 next_start = stop
-            ready = _wait_some(completed, timeout=0.5)
+            ready = _wait_some(completed, timeout=0.2)
             for future, (outputs_chunk, seconds) in zip(ready, pool.results(ready)):
                 first, stop = in_flight.pop(future)
                 if len(outputs_chunk) != stop - first:
