@@ -63,8 +63,14 @@ class SchedulerError(ValueError):
         self.address, self.rule = address, rule
 
 
-def _timed(chunk_function: Callable[[Any], list], payload: Any) -> tuple[list, float]:
-    """Runs one chunk where it is sent (a worker, a process) and measures its compute time."""
+def _timed(version: str, chunk_function: Callable[[Any], list], payload: Any) -> tuple[list, float]:
+    """Runs one chunk where it is sent (a worker, a process) and measures its compute time; refuses to run with
+    another version of mdr than the caller's (the rows would not be the local rows)."""
+    from . import _mdr
+
+    if _mdr.__version__ != version:
+        raise RuntimeError(f"this worker has mdr {_mdr.__version__} ({_mdr.__file__}), the caller {version}: "
+                           f"install the same package on every worker")
     start = time.perf_counter()
     outputs = chunk_function(payload)
     return outputs, time.perf_counter() - start
@@ -142,6 +148,10 @@ class _DaskPool:
         except self._distributed.KilledWorker as error:
             raise RuntimeError(f"scheduler = {self.scheduler}: a chunk was lost with more workers than Dask's "
                                f"allowed-failures permits ({error})") from None
+        except Exception as error:  # the chunk itself failed on the worker (per-item failures never get here)
+            raise RuntimeError(f"scheduler = {self.scheduler}: a chunk failed on a worker: {type(error).__name__}: "
+                               f"{error} (each worker needs the mdr package and the module of the per-item "
+                               f"function; docs/distributed.md)") from error
 
     def retried(self, futures) -> int:
         keys = [future.key for future in futures]
@@ -183,6 +193,8 @@ def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int
     reference (a function of an installed module, e.g. with functools.partial) or be defined in `__main__`;
     `read_chunk` runs here, so data read from local files or arrays travels with the tasks. `progress(done, total)`
     is called at least every 0.2 s. KeyboardInterrupt cancels every chunk and closes what was opened."""
+    from . import _mdr
+
     start_time = time.perf_counter()
     pool = _LocalPool(jobs) if scheduler is None else _DaskPool(scheduler)
     outputs: list = [None] * total
@@ -199,7 +211,7 @@ def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int
             while next_start < total and len(in_flight) < (2 * pool.threads if done else pool.threads):
                 size = _chunk_size(seconds_per_item, total - next_start, pool.threads, target_seconds)
                 stop = min(total, next_start + size)
-                future = pool.submit(_timed, chunk_function, read_chunk(next_start, stop))
+                future = pool.submit(_timed, _mdr.__version__, chunk_function, read_chunk(next_start, stop))
                 in_flight[future] = (next_start, stop)
                 future.add_done_callback(completed.put)
                 tasks += 1

@@ -16,6 +16,17 @@ import time
 START_TIMEOUT = 60.0  # seconds for the scheduler and each worker to come up on a loaded 2-core machine
 
 
+def worker_env() -> dict[str, str]:
+    """The environment of the scheduler and workers: the mdr package of the tests (MDR_PYTHONPATH, the build's
+    python/ folder; an installed package needs none) and this folder, for the tests' per-curve module."""
+    env = dict(os.environ)
+    here = str(pathlib.Path(__file__).resolve().parent)
+    env["PYTHONPATH"] = os.pathsep.join(p for p in (os.environ.get("MDR_PYTHONPATH"), here, env.get("PYTHONPATH"))
+                                        if p)
+    env["OMP_NUM_THREADS"] = "1"
+    return env
+
+
 class Cluster:
     """The processes of a running cluster: `address` (tcp://127.0.0.1:PORT), `workers` {name: Popen}."""
 
@@ -83,7 +94,7 @@ class Cluster:
 def local_cluster(workers: int = 2, env: dict[str, str] | None = None, nthreads: int = 1):
     """A scheduler and `workers` workers (named worker-1, ...) on 127.0.0.1; all stopped on exit."""
     with tempfile.TemporaryDirectory(prefix="mdr-dask-") as scratch:
-        cluster = Cluster(pathlib.Path(scratch), dict(env or os.environ))
+        cluster = Cluster(pathlib.Path(scratch), dict(env or worker_env()))
         try:
             cluster.start_scheduler()
             for i in range(workers):

@@ -17,20 +17,11 @@ for path in (str(HERE), _package_path):
         sys.path.insert(0, path)
 os.environ.setdefault("MPLBACKEND", "Agg")
 
-from cluster import local_cluster  # noqa: E402
-
-
-def worker_env() -> dict[str, str]:
-    """The environment of the scheduler and workers: the same mdr package and the tests' per-curve module."""
-    env = dict(os.environ)
-    env["PYTHONPATH"] = os.pathsep.join(p for p in (_package_path, str(HERE), env.get("PYTHONPATH")) if p)
-    env["OMP_NUM_THREADS"] = "1"
-    return env
+from cluster import local_cluster, worker_env  # noqa: E402
 
 
 @pytest.fixture(scope="session")
 def cluster():
-    pytest.importorskip("distributed")
     with local_cluster(workers=2, env=worker_env()) as running:
         yield running
 

@@ -35,3 +35,11 @@ def fit_hertz(curve, radius: float = R) -> dict[str, float]:
     residual = force - c * G * w
     s2 = float(np.dot(residual, residual)) / max(len(force) - 1, 1)
     return {"G": G, "G_stderr": math.sqrt(s2 / (c * c * ww))}
+
+
+def slow_fit_hertz(curve, seconds: float = 0.02) -> dict[str, float]:
+    """fit_hertz after a pause: a per-curve function as slow as a real fit, for the tests of Ctrl-C."""
+    import time
+
+    time.sleep(seconds)
+    return fit_hertz(curve)

@@ -16,7 +16,7 @@ import time
 import pytest
 import tomli_w
 
-from conftest import worker_env
+from cluster import worker_env
 
 VARY = ["--vary", "material.tau1=1e-5:1e-1:60:log", "--vary", "material.G1=1e6,3e6"]
 

@@ -112,15 +112,10 @@ def test_a_user_directory_is_refused_before_any_computing(tmp_path):
     user = tmp_path / "mine"
     user.mkdir()
     (user / "notes.txt").write_text("keep")
-    calls = []
-    with pytest.raises(ValueError, match="out = "):
-        mdr.map_curves(functools.partial(_record, calls), np.zeros((2, 2, 3)), jobs=1, out=user)
+    with pytest.raises(ValueError, match="out = .*mine"):
+        mdr.map_curves(fit_hertz, np.zeros((2, 2, 3, 2)), jobs=1, out=user)
     assert (user / "notes.txt").read_text() == "keep" and os.listdir(user) == ["notes.txt"]
-
-
-def _record(calls, curve):
-    calls.append(curve)
-    return {"x": 0.0}
+    assert os.listdir(tmp_path) == ["mine"]
 
 
 def test_a_map_through_the_scheduler_is_the_local_map(cluster):
@@ -133,3 +128,36 @@ def test_a_map_through_the_scheduler_is_the_local_map(cluster):
     np.testing.assert_array_equal(local.status, remote.status)
     np.testing.assert_array_equal(local.reasons, remote.reasons)
     assert remote.batch.workers == 2 and remote.batch.retried == 0
+
+
+def test_ctrl_c_leaves_no_directory_and_no_process(tmp_path):
+    import _thread
+    import multiprocessing
+    import threading
+    import time
+
+    from hertz_curves import slow_fit_hertz
+
+    curves, _ = synthetic_map()
+    many = np.tile(curves, (4, 4, 1, 1))  # 672 curves, 7 s on 2 processes
+    timer = threading.Timer(1.0, _thread.interrupt_main)
+    timer.start()
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        mdr.map_curves(slow_fit_hertz, many, jobs=2, out=tmp_path / "map")
+    timer.cancel()
+    assert time.monotonic() - start < 5
+    assert os.listdir(tmp_path) == []
+    deadline = time.monotonic() + 5
+    while multiprocessing.active_children() and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not multiprocessing.active_children()
+
+
+def test_a_function_the_workers_cannot_import_fails_the_map_with_the_rule(cluster, tmp_path, monkeypatch):
+    (tmp_path / "private_curves.py").write_text("def fit(curve):\n    return {'x': 1.0}\n")
+    monkeypatch.syspath_prepend(str(tmp_path))  # importable here only, as a module a user forgot to install
+    import private_curves
+
+    with pytest.raises(RuntimeError, match="a chunk failed on a worker.*private_curves.*docs/distributed.md"):
+        mdr.map_curves(private_curves.fit, np.zeros((2, 2, 3)), scheduler=cluster.address)
