@@ -93,7 +93,7 @@ class _LocalPool:
     def retried(self, futures) -> int:
         return 0  # a process that dies breaks the pool (BrokenProcessPool): there is nothing to retry
 
-    def close(self, interrupted: bool):
+    def close(self, interrupted: bool, in_flight: list):
         if interrupted:
             # Running chunks are not waited for: their processes are ended (CPython keeps them in _processes).
             processes = list(getattr(self._pool, "_processes", {}).values())
@@ -130,7 +130,7 @@ class _DaskPool:
         try:
             self._client.wait_for_workers(1, timeout=WORKER_TIMEOUT)
         except (TimeoutError, OSError):
-            self.close(False)
+            self.close(False, [])
             raise SchedulerError(self.scheduler, f"no worker joined within {WORKER_TIMEOUT:g} s") from None
         workers = self._client.scheduler_info()["workers"]
         self.workers = len(workers)
@@ -161,7 +161,9 @@ class _DaskPool:
             keys=keys)
         return int(sum(counts))
 
-    def close(self, interrupted: bool):
+    def close(self, interrupted: bool, in_flight: list):
+        if interrupted and in_flight:
+            self._client.cancel(in_flight)
         if self._own:
             self._client.close()
 
@@ -235,9 +237,7 @@ def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int
                 progress(done, total)
         interrupted = False
     finally:
-        if interrupted and isinstance(pool, _DaskPool):
-            pool._client.cancel(list(in_flight))
-        pool.close(interrupted)
+        pool.close(interrupted, list(in_flight))
     return MapOutcome(outputs=outputs, scheduler=pool.scheduler, workers=pool.workers, threads=pool.threads,
                       tasks=tasks, retried=retried, seconds=time.perf_counter() - start_time,
                       compute_seconds=compute_seconds)
