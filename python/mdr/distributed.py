@@ -31,8 +31,11 @@ from typing import Any, Callable, Sequence
 
 #: Seconds of work a chunk should carry (Dask's scheduling overhead is ~2.5 ms a task, docs/performance.md).
 TARGET_SECONDS = 0.1
-#: The most items in one chunk (bounds the memory of one task).
+#: The most items in one chunk, and about the most bytes of data it carries (the data of a task travels through the
+#: scheduler: below 1 MB, Dask's large-object threshold; an item that costs less to compute than to move is better
+#: mapped locally).
 MAX_CHUNK = 10_000
+MAX_CHUNK_BYTES = 900_000
 #: How long to wait for the first worker of a scheduler. (How long to wait for the scheduler itself is Dask's
 #: setting distributed.comm.timeouts.connect, 30 s; environment DASK_DISTRIBUTED__COMM__TIMEOUTS__CONNECT.)
 WORKER_TIMEOUT = 30.0
@@ -168,12 +171,25 @@ class _DaskPool:
             self._client.close()
 
 
-def _chunk_size(seconds_per_item: float | None, remaining: int, threads: int, target_seconds: float) -> int:
+def _chunk_size(seconds_per_item: float | None, bytes_per_item: float, remaining: int, threads: int,
+                target_seconds: float) -> int:
     if seconds_per_item is None:
         return 1  # the first chunks measure the cost of an item
     full = math.ceil(target_seconds / max(seconds_per_item, 1e-9))
     balanced = math.ceil(remaining / (2 * threads))  # the tail: every thread gets a last chunk or two
-    return max(1, min(full, MAX_CHUNK, max(balanced, math.ceil(full / 4))))
+    largest = min(MAX_CHUNK, max(1, int(MAX_CHUNK_BYTES / max(bytes_per_item, 1.0))))
+    return max(1, min(full, largest, max(balanced, math.ceil(full / 4))))
+
+
+def _nbytes(payload: Any) -> int:
+    """The bytes of the arrays in a chunk's data (numpy arrays, in lists or dicts); 0 for anything else."""
+    if hasattr(payload, "nbytes"):
+        return int(payload.nbytes)
+    if isinstance(payload, dict):
+        return sum(_nbytes(value) for value in payload.values())
+    if isinstance(payload, (list, tuple)):
+        return sum(_nbytes(value) for value in payload)
+    return 0
 
 
 def _wait_some(completed: queue.SimpleQueue, timeout: float) -> list:
@@ -206,14 +222,18 @@ def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int
     completed: queue.SimpleQueue = queue.SimpleQueue()  # futures, as they finish (their callbacks put them)
     tasks = retried = done = next_start = 0
     compute_seconds = 0.0
+    sent_bytes = 0
     interrupted = True
     try:
         while done < total:
             seconds_per_item = compute_seconds / done if done else None
             while next_start < total and len(in_flight) < (2 * pool.threads if done else pool.threads):
-                size = _chunk_size(seconds_per_item, total - next_start, pool.threads, target_seconds)
+                size = _chunk_size(seconds_per_item, sent_bytes / max(next_start, 1), total - next_start,
+                                   pool.threads, target_seconds)
                 stop = min(total, next_start + size)
-                future = pool.submit(_timed, _mdr.__version__, chunk_function, read_chunk(next_start, stop))
+                payload = read_chunk(next_start, stop)
+                sent_bytes += _nbytes(payload)
+                future = pool.submit(_timed, _mdr.__version__, chunk_function, payload)
                 in_flight[future] = (next_start, stop)
                 future.add_done_callback(completed.put)
                 tasks += 1
