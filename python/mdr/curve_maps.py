@@ -20,7 +20,7 @@ import csv
 import json
 import math
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, Callable, Mapping, Sequence
 
 import numpy as np
@@ -35,11 +35,16 @@ STATUS_NAMES = {OK: "ok", FAILED: "failed", NO_CURVE: "no curve"}
 class ArrayStack:
     """Curves in an array (ny, nx, nt[, channels]), or anything indexable like one (an h5py dataset)."""
 
-    def __init__(self, array: Any, source: str = "array"):
+    def __init__(self, array: Any, source: str = "array", inputs: Sequence[str] = (), handle: Any = None):
         if len(array.shape) < 3:
             raise ValueError(f"{source}: expected an array (ny, nx, nt[, channels]), got shape {tuple(array.shape)}")
-        self.array, self.source = array, source
+        self.array, self.source, self.inputs, self._handle = array, source, list(inputs), handle
         self.shape = (int(array.shape[0]), int(array.shape[1]))
+
+    def close(self) -> None:
+        """Closes the file it read from, if it opened one."""
+        if self._handle is not None:
+            self._handle.close()
 
     def read(self, start: int, stop: int) -> list:
         """The curves of the pixels start..stop-1 (row-major), read a block of rows at a time."""
@@ -55,6 +60,7 @@ class DirectoryStack:
     def __init__(self, directory: str):
         self.source = directory
         index = os.path.join(directory, "positions.csv")
+        self.inputs = [index]  # the result directory may be neither this directory nor a parent of it
         try:
             with open(index, newline="", encoding="utf-8") as handle:
                 rows = list(csv.DictReader(handle))
@@ -80,6 +86,9 @@ class DirectoryStack:
         nx = self.shape[1]
         return [self._curve(self.files.get(divmod(i, nx))) for i in range(start, stop)]
 
+    def close(self) -> None:
+        pass
+
     @staticmethod
     def _curve(path: str | None) -> dict[str, np.ndarray] | None:
         if path is None:
@@ -93,9 +102,10 @@ class DirectoryStack:
 
 
 def open_stack(source: Any, dataset: str = "curves"):
-    """A stack of curves from an array, an HDF5 file (dataset `dataset`) or a directory with positions.csv."""
-    if hasattr(source, "read") and hasattr(source, "shape") and not isinstance(source, np.ndarray):
-        return source  # already a stack
+    """A stack of curves from an array (numpy, or indexable like one: an h5py dataset, a memmap), an HDF5 file
+    (dataset `dataset`) or a directory with positions.csv."""
+    if isinstance(source, (ArrayStack, DirectoryStack)):
+        return source
     if isinstance(source, (str, os.PathLike)):
         path = os.fspath(source)
         if os.path.isdir(path):
@@ -107,9 +117,13 @@ def open_stack(source: Any, dataset: str = "curves"):
                 raise ValueError(f"{path}: reading HDF5 needs h5py (Debian: python3-h5py)") from None
             handle = h5py.File(path, "r")
             if dataset not in handle:
-                raise ValueError(f"{path}: no dataset '{dataset}' (it has: {', '.join(handle)})")
-            return ArrayStack(handle[dataset], f"{path}:{dataset}")
+                names = ", ".join(handle)
+                handle.close()
+                raise ValueError(f"{path}: no dataset '{dataset}' (it has: {names})")
+            return ArrayStack(handle[dataset], f"{path}:{dataset}", inputs=[path], handle=handle)
         raise ValueError(f"{path}: expected a directory with positions.csv or an HDF5 file (.h5, .hdf5)")
+    if not isinstance(source, np.ndarray) and hasattr(source, "shape") and hasattr(source, "__getitem__"):
+        return ArrayStack(source, type(source).__name__)  # read in slices, never whole
     return ArrayStack(np.asarray(source))
 
 
@@ -123,7 +137,6 @@ class CurveMap:
     status: np.ndarray
     reasons: np.ndarray
     batch: distributed.MapOutcome | None = None
-    names: list[str] = field(default_factory=list)
 
     def summary(self) -> dict[str, Any]:
         """map.json: the shape, the value names, the counts of each status, and how the map ran."""
@@ -182,15 +195,19 @@ def map_curves(per_curve: Callable[[Any], Mapping[str, float]], stack: Any, *, s
     bit. `per_curve` must be picklable: a function of an installed module (functools.partial for settings) or one
     defined in `__main__` with a scheduler. With `out`, the files of CurveMap.write_files go to that result
     directory (the rules of --out: checked before any computing, written whole or not at all)."""
-    stack = open_stack(stack)
-    directory = None
-    if out is not None:
-        from . import _mdr
+    opened = open_stack(stack)
+    try:
+        directory = None
+        if out is not None:
+            from . import _mdr
 
-        directory = _mdr._ResultDirectory(os.fspath(out), "out", [])
-    ny, nx = stack.shape
-    results, errors, batch = distributed.map_items(
-        _Guarded(per_curve), _LazyCurves(stack), scheduler=scheduler, jobs=jobs, progress=progress)
+            directory = _mdr._ResultDirectory(os.fspath(out), "out", opened.inputs)
+        ny, nx = opened.shape
+        results, errors, batch = distributed.map_items(
+            _Guarded(per_curve), _LazyCurves(opened), scheduler=scheduler, jobs=jobs, progress=progress)
+    finally:
+        if opened is not stack:
+            opened.close()
     batch.outputs = []
     names: list[str] = []
     for result in results:
@@ -208,7 +225,7 @@ def map_curves(per_curve: Callable[[Any], Mapping[str, float]], stack: Any, *, s
             continue
         for name, value in result.items():
             values[name][row, col] = value
-    curve_map = CurveMap(values=values, status=status, reasons=reasons.astype(str), batch=batch, names=names)
+    curve_map = CurveMap(values=values, status=status, reasons=reasons.astype(str), batch=batch)
     if directory is not None:
         directory.write(lambda temporary: curve_map.write_files(temporary, figures))
     return curve_map

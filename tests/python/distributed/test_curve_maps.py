@@ -79,6 +79,8 @@ def test_a_directory_of_curve_files_with_their_positions(tmp_path):
     ok = result.status == curve_maps.OK
     assert np.count_nonzero(ok) == NY * NX - 1
     np.testing.assert_allclose(result.values["G"][ok], G[ok], rtol=1e-12)
+    with pytest.raises(ValueError, match="holds the input file .*positions.csv"):
+        mdr.map_curves(fit_hertz, str(tmp_path), jobs=2, out=tmp_path.parent)
 
 
 def test_an_hdf5_stack_is_read_in_slices(tmp_path):
@@ -88,6 +90,9 @@ def test_an_hdf5_stack_is_read_in_slices(tmp_path):
         handle["curves"] = curves
     result = mdr.map_curves(fit_hertz, str(tmp_path / "map.h5"), jobs=2)
     np.testing.assert_array_equal(result.values["G"], mdr.map_curves(fit_hertz, curves, jobs=1).values["G"])
+    with h5py.File(tmp_path / "map.h5", "r") as handle:  # an open dataset is read in slices too
+        np.testing.assert_array_equal(mdr.map_curves(fit_hertz, handle["curves"], jobs=2).values["G"],
+                                      result.values["G"])
     with pytest.raises(ValueError, match="no dataset 'other'"):
         curve_maps.open_stack(str(tmp_path / "map.h5"), dataset="other")
 
