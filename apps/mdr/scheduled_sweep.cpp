@@ -187,7 +187,7 @@ std::vector<io::SweepRow> run_scheduled_sweep(const std::string& case_text, cons
         }
     }
     const int status = helper.wait();
-    progress(done, rows.size());  // an interruption that ended the helper is reported as such
+    if (done < rows.size()) progress(done, rows.size());  // an interruption that ended the helper is reported so
     if (!finished || status != 0) {
         throw std::runtime_error(fmt::format("--scheduler: the Python helper `{} -m mdr._sweep_rows` ended (exit {}) "
                                              "without a result; it needs the Python package mdr {} and "
