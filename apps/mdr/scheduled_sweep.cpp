@@ -60,10 +60,7 @@ public:
     ~Helper() {
         close_input();
         if (from_child_ >= 0) close(from_child_);
-        if (pid_ > 0) {  // an exception on the way: ask it to stop (it cancels its tasks), then wait for it
-            kill(pid_, SIGINT);
-            wait();
-        }
+        if (pid_ > 0) stop();  // an exception on the way out
     }
 
     void send(const std::string& text) {
@@ -88,7 +85,7 @@ public:
             }
             char chunk[65536];
             const ssize_t n = read(from_child_, chunk, sizeof chunk);
-            if (n < 0 && errno == EINTR) return next_line_after_signal(line);
+            if (n < 0 && errno == EINTR) continue;  // the helper's progress lines come every 0.2 s: checked there
             if (n <= 0) return false;
             buffer_.append(chunk, static_cast<std::size_t>(n));
         }
@@ -104,10 +101,19 @@ public:
     }
 
 private:
-    // A signal interrupted the read: the caller's progress check decides; an empty line means "no news".
-    bool next_line_after_signal(std::string& line) {
-        line.clear();
-        return true;
+    // Asks the helper to stop (SIGINT: it cancels its tasks and closes its client); after 10 s ends it (SIGKILL).
+    void stop() {
+        kill(pid_, SIGINT);
+        for (int tenth = 0; tenth < 100; ++tenth) {
+            int status = 0;
+            if (waitpid(pid_, &status, WNOHANG) == pid_) {
+                pid_ = -1;
+                return;
+            }
+            usleep(100'000);
+        }
+        kill(pid_, SIGKILL);
+        wait();
     }
     void close_input() {
         if (to_child_ >= 0) close(to_child_);
@@ -152,10 +158,6 @@ std::vector<io::SweepRow> run_scheduled_sweep(const std::string& case_text, cons
     bool finished = false;
     std::size_t done = 0;
     while (helper.next_line(line)) {
-        if (line.empty()) {
-            progress(done, rows.size());  // a signal: throws if it asked to stop
-            continue;
-        }
         const auto message = nlohmann::json::parse(line);
         if (message.contains("progress")) {
             done = message["progress"][0].get<std::size_t>();

@@ -223,6 +223,7 @@ def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int
     tasks = retried = done = next_start = 0
     compute_seconds = 0.0
     sent_bytes = 0
+    next_release = start_time + 1.0
     interrupted = True
     try:
         while done < total:
@@ -250,9 +251,12 @@ def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int
                 done += stop - first
                 compute_seconds += seconds
             finished.extend(ready)
-            if len(finished) >= 256 or (done == total and finished):
+            if finished and (done == total or time.perf_counter() > next_release):
+                # Once a second: their retries counted, the finished tasks are released on the scheduler (a worker
+                # that dies later would otherwise make it compute them again).
                 retried += pool.retried(finished)
-                finished.clear()  # releases the finished tasks on the scheduler
+                finished.clear()
+                next_release = time.perf_counter() + 1.0
             if progress:
                 progress(done, total)
         interrupted = False

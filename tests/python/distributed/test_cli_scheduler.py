@@ -86,7 +86,10 @@ def test_refusals_are_one_line_and_write_nothing(binary, cluster, scratch):
     assert sorted(os.listdir(scratch)) == ["case.toml"]
 
 
-def test_ctrl_c_leaves_no_directory_and_no_task(binary, cluster, scratch, light_case):
+@pytest.mark.parametrize("how", ["ctrl-c", "sigterm"])
+def test_an_interruption_leaves_no_directory_and_no_task(binary, cluster, scratch, light_case, how):
+    """Ctrl-C reaches the command line and its helper (the process group); SIGTERM only the command line, which
+    then stops its helper itself."""
     from distributed import Client
 
     slow = dict(light_case, numerics={"elements": 100, "time_step": 1.0e-6})  # ~0.1 s a run
@@ -100,9 +103,12 @@ def test_ctrl_c_leaves_no_directory_and_no_task(binary, cluster, scratch, light_
             while not any(client.processing().values()) and time.monotonic() < deadline:
                 time.sleep(0.05)
             assert any(client.processing().values()), "the sweep never started"
-            os.killpg(process.pid, signal.SIGINT)  # as Ctrl-C does: the command line and its helper
+            if how == "ctrl-c":
+                os.killpg(process.pid, signal.SIGINT)  # as a terminal does: the command line and its helper
+            else:
+                process.send_signal(signal.SIGTERM)
             _, err = process.communicate(timeout=30)
-            assert process.returncode == 130
+            assert process.returncode == (130 if how == "ctrl-c" else 143)
             assert err.splitlines()[-1] == "mdr: interrupted; no result was written"
             deadline = time.monotonic() + 10
             while any(client.processing().values()) and time.monotonic() < deadline:
@@ -110,6 +116,8 @@ def test_ctrl_c_leaves_no_directory_and_no_task(binary, cluster, scratch, light_
             assert not any(client.processing().values())
     finally:
         if process.poll() is None:
-            process.kill()
+            os.killpg(process.pid, signal.SIGKILL)
             process.wait()
     assert sorted(os.listdir(scratch)) == ["case.toml"]
+    helpers = subprocess.run(["pgrep", "-s", str(process.pid)], capture_output=True, text=True).stdout.split()
+    assert helpers == []  # the helper (same session) has ended too
