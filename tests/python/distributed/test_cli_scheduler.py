@@ -100,9 +100,11 @@ def test_an_interruption_leaves_no_directory_and_no_task(binary, cluster, scratc
     try:
         with Client(cluster.address) as client:
             deadline = time.monotonic() + 60
-            while not any(client.processing().values()) and time.monotonic() < deadline:
+            started = False
+            while not started and time.monotonic() < deadline and process.poll() is None:
+                started = any(client.processing().values())
                 time.sleep(0.05)
-            assert any(client.processing().values()), "the sweep never started"
+            assert started, f"the sweep never started: {process.poll()}"
             if how == "ctrl-c":
                 os.killpg(process.pid, signal.SIGINT)  # as a terminal does: the command line and its helper
             else:
