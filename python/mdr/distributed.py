@@ -20,6 +20,7 @@ the worker holding them was lost (the scheduler's `suspicious` count of each tas
 from __future__ import annotations
 
 import concurrent.futures
+import functools
 import math
 import os
 import queue
@@ -28,6 +29,8 @@ import time
 import uuid
 from dataclasses import dataclass
 from typing import Any, Callable, Sequence
+
+from . import _mdr
 
 #: Seconds of work a chunk should carry (Dask's scheduling overhead is ~2.5 ms a task, docs/performance.md).
 TARGET_SECONDS = 0.1
@@ -69,8 +72,6 @@ class SchedulerError(ValueError):
 def _timed(version: str, chunk_function: Callable[[Any], list], payload: Any) -> tuple[list, float]:
     """Runs one chunk where it is sent (a worker, a process) and measures its compute time; refuses to run with
     another version of mdr than the caller's (the rows would not be the local rows)."""
-    from . import _mdr
-
     if _mdr.__version__ != version:
         raise RuntimeError(f"this worker has mdr {_mdr.__version__} ({_mdr.__file__}), the caller {version}: "
                            f"install the same package on every worker")
@@ -211,8 +212,6 @@ def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int
     reference (a function of an installed module, e.g. with functools.partial) or be defined in `__main__`;
     `read_chunk` runs here, so data read from local files or arrays travels with the tasks. `progress(done, total)`
     is called at least every 0.2 s. KeyboardInterrupt cancels every chunk and closes what was opened."""
-    from . import _mdr
-
     start_time = time.perf_counter()
     pool = _LocalPool(jobs) if scheduler is None else _DaskPool(scheduler)
     outputs: list = [None] * total
@@ -272,8 +271,6 @@ def map_items(function: Callable[[Any], Any], items: Sequence[Any], **options: A
     """`function(item)` for every item, in order (options: those of ordered_map). Returns (results, errors,
     outcome): results[i] is None and errors[i] the reason ("ExceptionType: message") where the item failed; a
     failed item does not stop the others."""
-    import functools
-
     outcome = ordered_map(functools.partial(_each_item, function), lambda start, stop: list(items[start:stop]),
                           len(items), **options)
     results = [result for result, _ in outcome.outputs]
@@ -293,8 +290,6 @@ def _each_item(function: Callable[[Any], Any], items: list) -> list[tuple[Any, s
 
 def sweep_chunk(case_text: str, source: str, keys: list[str], points: Any) -> list[tuple[str, str]]:
     """The rows (summary JSON, error) of a sweep at the given points, on one thread (the chunk task of a sweep)."""
-    from . import _mdr
-
     summaries, errors = _mdr._sweep_points(case_text, source, keys, points, 1)
     return list(zip(summaries, errors))
 
@@ -303,10 +298,6 @@ def sweep_rows(case_text: str, source: str, specs: list[str], scheduler: Any,
                progress: Callable[[int, int], None] | None = None) -> tuple[list[str], Any, MapOutcome]:
     """The rows of a sweep run through a Dask scheduler: (keys, points, outcome) with outcome.outputs[i] =
     (summary_json, error) of grid point i, the same rows as the local sweep's, bit for bit."""
-    import functools
-
-    from . import _mdr
-
     keys, points = _mdr._sweep_grid(specs)
     _mdr._sweep_points(case_text, source, keys, points[:0], 1)  # validates the case and the keys here, first
     outcome = ordered_map(functools.partial(sweep_chunk, case_text, source, keys),
