@@ -11,6 +11,7 @@
 #include "mdr/error.hpp"
 #include "mdr/rheology/compressible.hpp"
 #include "mdr/foundation/foundation.hpp"
+#include "case_reader.hpp"
 #include "material_reader.hpp"
 #include "toml_reader.hpp"
 
@@ -118,15 +119,21 @@ drivers::TangentialLoad read_tangential(TableReader& table) {
 
 }  // namespace
 
-drivers::ContactCase parse_case(std::string_view toml_text, const std::string& source) {
-    toml::table root_table;
+toml::table parse_toml(std::string_view toml_text, const std::string& source) {
     try {
-        root_table = toml::parse(toml_text, source);
+        return toml::parse(toml_text, source);
     } catch (const toml::parse_error& error) {
         const auto& where = error.source().begin;
         throw InvalidInput(source, fmt::format("line {}, column {}", where.line, where.column),
                            fmt::format("malformed TOML: {}", error.description()));
     }
+}
+
+drivers::ContactCase parse_case(std::string_view toml_text, const std::string& source) {
+    return read_case(parse_toml(toml_text, source));
+}
+
+drivers::ContactCase read_case(const toml::table& root_table) {
     TableReader root(root_table, "");
     root.reject_unknown({"title", "material", "indenter", "load", "tangential", "output", "numerics"});
     const std::string title = root.optional_string("title").value_or("");

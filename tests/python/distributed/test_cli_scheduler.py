@@ -82,7 +82,7 @@ def test_refusals_are_one_line_and_write_nothing(binary, cluster, scratch):
     assert "cannot start the Python helper" in no_python.stderr
     bad_key = run(binary, "sweep", "case.toml", "--vary", "material.nope=1,2", "--out", "res", "--scheduler",
                   cluster.address, cwd=scratch)
-    assert bad_key.returncode == 2 and "no such key" in bad_key.stderr
+    assert bad_key.returncode == 2 and "no such numeric key" in bad_key.stderr
     assert sorted(os.listdir(scratch)) == ["case.toml"]
 
 

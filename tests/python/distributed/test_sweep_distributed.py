@@ -63,7 +63,7 @@ def test_chunks_keep_the_overhead_below_ten_percent(cluster, light_case):
 
 
 def test_bad_input_is_refused_before_anything_is_sent(cluster, light_case):
-    with pytest.raises(ValueError, match="no such key"):
+    with pytest.raises(ValueError, match="no such numeric key"):
         mdr.sweep(light_case, {"material.nope": [1.0]}, scheduler=cluster.address)
     with pytest.raises(ValueError, match="jobs"):
         mdr.sweep(light_case, VARY, jobs=2, scheduler=cluster.address)
