@@ -21,8 +21,11 @@ from . import _mdr
 from ._mdr import Indenter, InvalidInput, Material
 from ._toml import to_toml
 from .curve_maps import map_curves
+from .fit_maps import fit_map
+from .fitting import FitResult, fit
 
-__all__ = ["run", "check", "sweep", "SweepTable", "map_curves", "Material", "Indenter", "Result", "InvalidInput", "__version__"]
+__all__ = ["run", "check", "sweep", "SweepTable", "fit", "FitResult", "map_curves", "fit_map", "Material", "Indenter",
+           "Result", "InvalidInput", "__version__"]
 __version__ = _mdr.__version__
 
 CaseLike = Union[str, os.PathLike, Mapping[str, Any]]

@@ -18,7 +18,9 @@ namespace mdr::fit {
 void validate(const FitProblem& problem) {
     if (!problem.model) throw InvalidInput("fit.model", "(missing)", "is required");
     if (problem.parameters.empty()) throw InvalidInput("fit.free", "[]", "name at least one parameter to fit");
-    if (problem.curves.empty()) throw InvalidInput("fit.data", "[]", "give at least one measured curve");
+    if (problem.curves.empty()) {
+        throw InvalidInput("fit.data", "(missing)", "give at least one measured curve ([[fit.data]] or arrays)");
+    }
     std::set<std::string> names;
     for (const auto& parameter : problem.parameters) {
         const std::string key = "fit.bounds." + parameter.name;
@@ -100,9 +102,8 @@ FitResult fit(const FitProblem& problem) {
         solver_problem.AddResidualBlock(costs.back().get(), nullptr, blocks);
     }
     for (std::size_t j = 0; j < k; ++j) {
-        const auto& parameter = problem.parameters[j];
-        solver_problem.SetParameterLowerBound(shared.data(), static_cast<int>(j), scales.to_internal(j, parameter.lower));
-        solver_problem.SetParameterUpperBound(shared.data(), static_cast<int>(j), scales.to_internal(j, parameter.upper));
+        solver_problem.SetParameterLowerBound(shared.data(), static_cast<int>(j), scales.lower[j]);
+        solver_problem.SetParameterUpperBound(shared.data(), static_cast<int>(j), scales.upper[j]);
     }
 
     ceres::Solver::Options options;
