@@ -8,7 +8,9 @@ Starts a scheduler and two one-thread workers on 127.0.0.1 (tests/python/distrib
 2. a map of NY x NY synthetic 500-point curves with the closed-form Hertz fit of the tests (tens of microseconds a
    curve: the worst case for scheduling) locally on 2 processes and through the scheduler;
 3. the same map with a per-curve function that runs the standard-solid load-hold case the curves come from once
-   (one model evaluation of a fit, ~1 ms).
+   (one model evaluation of a fit, ~1 ms);
+4. mdr.fit_map of an F x F map (--fit-map F, default 16) of standard-solid load-hold curves of 500 points (G_inf,
+   G1 and tau1 free) locally on 2 processes and through the scheduler.
 Prints wall times, rates, tasks, the share of the scheduling overhead (tasks x 2.5 ms over the chunks' compute) and
 checks that the results are the local ones bit for bit.
 """
@@ -46,6 +48,23 @@ def model_force(curve: np.ndarray) -> dict[str, float]:
     return {"rms": float(np.sqrt(np.mean((force - curve[:, 1]) ** 2)))}
 
 
+def g_inf_truth(n: int) -> np.ndarray:
+    return LOAD_HOLD["material"]["G_inf"] * (1.0 + np.add.outer(np.arange(n), np.arange(n)) / (2.0 * n))
+
+
+def load_hold_map(n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """n x n force curves of the load-hold case at 500 times, G_inf varying over the map, 0.1 % noise."""
+    t = np.linspace(0.0, 0.5, 500)
+    d = np.interp(t, *np.array(LOAD_HOLD["load"]["history"]).T)
+    forces = np.empty((n, n, 500))
+    rng = np.random.default_rng(2)
+    for (row, col), g_inf in np.ndenumerate(g_inf_truth(n)):
+        result = mdr.run({**LOAD_HOLD, "material": {**LOAD_HOLD["material"], "G_inf": g_inf}})
+        force = np.interp(t, result.history["t"], result.history["F"])
+        forces[row, col] = force * (1.0 + 1e-3 * rng.standard_normal(500))
+    return forces, t, d
+
+
 def same_bits(a: np.ndarray, b: np.ndarray) -> bool:
     return a.dtype.kind != "f" and np.array_equal(a, b) or np.array_equal(a.view(np.int64), b.view(np.int64))
 
@@ -62,6 +81,7 @@ def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--points", type=int, default=100_000)
     parser.add_argument("--map", type=int, default=64)
+    parser.add_argument("--fit-map", type=int, default=16)
     args = parser.parse_args()
     with open(ROOT / "examples" / "restitution_map.toml", "rb") as handle:
         case = tomllib.load(handle)
@@ -98,10 +118,24 @@ def main() -> None:
         start = time.perf_counter()
         model_remote = mdr.map_curves(model_force, curves, scheduler=cluster.address)
         report("map, one run a curve, Dask", n * n, time.perf_counter() - start, model_remote.batch)
+        forces, t, d = load_hold_map(args.fit_map)
+        fit_case = {**LOAD_HOLD, "fit": {"free": ["material.G_inf", "material.G1", "material.tau1"],
+                                         "contact_point": "fixed", "baseline": "fixed"}}
+        start = time.perf_counter()
+        fits_local = mdr.fit_map(fit_case, forces, time=t, depth=d, jobs=2)
+        report(f"fit_map {args.fit_map}x{args.fit_map}, local (2 processes)", forces.shape[0] * forces.shape[1],
+               time.perf_counter() - start, fits_local.batch)
+        start = time.perf_counter()
+        fits_remote = mdr.fit_map(fit_case, forces, time=t, depth=d, scheduler=cluster.address)
+        report(f"fit_map {args.fit_map}x{args.fit_map}, Dask", forces.shape[0] * forces.shape[1],
+               time.perf_counter() - start, fits_remote.batch)
+        print(f"fit_map: {np.count_nonzero(fits_local.status == 0)} of {fits_local.status.size} converged; G_inf "
+              f"within {np.nanmax(np.abs(fits_local.values['material.G_inf'] / g_inf_truth(args.fit_map) - 1)):.1e}")
 
     assert all(same_bits(local[k], remote[k]) for k in local if k != "wall_seconds"), "sweep differs"
     assert same_bits(hertz_local.values["G"], hertz_remote.values["G"]), "Hertz map differs"
     assert same_bits(model_local.values["rms"], model_remote.values["rms"]), "model map differs"
+    assert all(same_bits(fits_local.values[k], fits_remote.values[k]) for k in fits_local.values), "fits differ"
     print("results identical bit for bit (wall_seconds aside)")
 
 
