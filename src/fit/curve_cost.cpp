@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <exception>
+#include <limits>
 
 namespace mdr::fit {
 
@@ -11,12 +12,14 @@ namespace {
 // element's entry and exit inside a step), and a step this size keeps the truncation error near 1e-6 while the
 // rounding error of a run (~1e-15 relative) stays far below.
 constexpr double difference_step = 1e-6;
+constexpr double infinity = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
 CurveCost::CurveCost(const FitProblem& problem, const ParameterScales& scales, const CurveModel& prepared,
-                     std::size_t curve, std::atomic<std::size_t>& evaluations)
-    : problem_(problem), scales_(scales), prepared_(prepared), curve_(curve), evaluations_(evaluations) {
+                     std::size_t curve, std::size_t elements, std::atomic<std::size_t>& evaluations)
+    : problem_(problem), scales_(scales), prepared_(prepared), curve_(curve), elements_(elements),
+      evaluations_(evaluations) {
     AddParameterBlock(static_cast<int>(problem.parameters.size()));
     if (scales.nuisance_size() > 0) AddParameterBlock(static_cast<int>(scales.nuisance_size()));
     SetNumResiduals(static_cast<int>(prepared.used.size()));
@@ -37,8 +40,7 @@ double CurveCost::baseline(const double* nuisance) const {
 std::vector<double> CurveCost::model(const double* shared, const double* nuisance) const {
     ++evaluations_;
     auto model_case = problem_.model(scales_.values(shared));
-    const std::size_t elements =
-        problem_.settings.elements.value_or(model_case.numerics.elements.value_or(default_fit_elements));
+    const std::size_t elements = problem_.settings.elements.value_or(model_case.numerics.elements.value_or(elements_));
     return run_curve(std::move(model_case), prepared_, contact_depth(nuisance), baseline(nuisance), elements);
 }
 
@@ -64,14 +66,16 @@ bool CurveCost::Evaluate(double const* const* parameters, double* residuals, dou
     std::vector<double> shared(parameters[0], parameters[0] + k);
     std::vector<double> nuisance(m);
     if (m > 0) nuisance.assign(parameters[1], parameters[1] + m);
+    if (!scales_.within_bounds(shared.data())) return false;  // Ceres keeps its points within them
     if (!residuals_at(shared.data(), nuisance.data(), residuals)) return false;
     if (jacobians == nullptr) return true;
 
     std::vector<double> shifted(n);
     // Column c of block `block` by a forward difference in coordinate `u`.
-    const auto difference = [&](double& u, double* block, std::size_t columns, std::size_t c) {
+    const auto difference = [&](double& u, double* block, std::size_t columns, std::size_t c, double upper) {
         const double saved = u;
-        const double step = difference_step * std::max(std::abs(u), 1.0);
+        double step = difference_step * std::max(std::abs(u), 1.0);
+        if (u + step > upper) step = -step;  // a backward difference at the upper bound
         u += step;
         const bool ok = residuals_at(shared.data(), nuisance.data(), shifted.data());
         u = saved;
@@ -81,7 +85,7 @@ bool CurveCost::Evaluate(double const* const* parameters, double* residuals, dou
     };
     if (jacobians[0] != nullptr) {
         for (std::size_t j = 0; j < k; ++j) {
-            if (!difference(shared[j], jacobians[0], k, j)) return false;
+            if (!difference(shared[j], jacobians[0], k, j, scales_.upper[j])) return false;
         }
     }
     if (m > 0 && jacobians[1] != nullptr) {
@@ -89,7 +93,7 @@ bool CurveCost::Evaluate(double const* const* parameters, double* residuals, dou
         std::size_t c = 0;
         if (scales_.fit_contact) {
             if (force_fitted) {
-                if (!difference(nuisance[0], jacobians[1], m, c)) return false;
+                if (!difference(nuisance[0], jacobians[1], m, c, infinity)) return false;
             } else {  // the fitted depth is the model's depth plus the contact point: exact
                 for (std::size_t i = 0; i < n; ++i) jacobians[1][i * m + c] = scales_.depth[curve_] / prepared_.noise;
             }
@@ -98,7 +102,7 @@ bool CurveCost::Evaluate(double const* const* parameters, double* residuals, dou
         if (scales_.fit_baseline) {
             if (force_fitted) {  // the fitted force is the model's force plus the baseline: exact
                 for (std::size_t i = 0; i < n; ++i) jacobians[1][i * m + c] = scales_.force[curve_] / prepared_.noise;
-            } else if (!difference(nuisance[c], jacobians[1], m, c)) {
+            } else if (!difference(nuisance[c], jacobians[1], m, c, infinity)) {
                 return false;
             }
         }

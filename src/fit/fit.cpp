@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -15,10 +16,18 @@
 
 namespace mdr::fit {
 
+std::size_t default_fit_elements(double noise_to_peak) {
+    const double elements = 1000.0 * std::sqrt(1e-4 / std::max(noise_to_peak, 1e-300));
+    return static_cast<std::size_t>(std::clamp(elements, static_cast<double>(min_fit_elements),
+                                               static_cast<double>(max_fit_elements)));
+}
+
 void validate(const FitProblem& problem) {
     if (!problem.model) throw InvalidInput("fit.model", "(missing)", "is required");
     if (problem.parameters.empty()) throw InvalidInput("fit.free", "[]", "name at least one parameter to fit");
-    if (problem.curves.empty()) throw InvalidInput("fit.data", "[]", "give at least one measured curve");
+    if (problem.curves.empty()) {
+        throw InvalidInput("fit.data", "(missing)", "give at least one measured curve ([[fit.data]] or arrays)");
+    }
     std::set<std::string> names;
     for (const auto& parameter : problem.parameters) {
         const std::string key = "fit.bounds." + parameter.name;
@@ -51,6 +60,19 @@ void validate(const FitProblem& problem) {
 }
 
 namespace {
+
+// The smallest noise relative to its curve's peak, over the curves (the noise floors of prepare_curve keep it > 0).
+double noise_to_peak(const FitProblem& problem, const std::vector<CurveModel>& prepared) {
+    double ratio = 1.0;
+    for (std::size_t c = 0; c < prepared.size(); ++c) {
+        const Curve& curve = problem.curves[c];
+        const auto& measured = problem.settings.fitted == Fitted::force ? curve.force : curve.depth;
+        double peak = 0.0;
+        for (double value : measured) peak = std::max(peak, std::abs(value));
+        if (peak > 0.0) ratio = std::min(ratio, prepared[c].noise / peak);
+    }
+    return ratio;
+}
 
 std::string status_of(const ceres::Solver::Summary& summary) {
     switch (summary.termination_type) {
@@ -88,21 +110,21 @@ FitResult fit(const FitProblem& problem) {
         if (scales.fit_baseline) nuisance[c].push_back(curve.force_baseline / scales.force[c]);
     }
 
+    const std::size_t elements = default_fit_elements(noise_to_peak(problem, prepared));
     std::atomic<std::size_t> evaluations{0};
     ceres::Problem::Options problem_options;
     problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     ceres::Problem solver_problem(problem_options);
     std::vector<std::unique_ptr<CurveCost>> costs;
     for (std::size_t c = 0; c < problem.curves.size(); ++c) {
-        costs.push_back(std::make_unique<CurveCost>(problem, scales, prepared[c], c, evaluations));
+        costs.push_back(std::make_unique<CurveCost>(problem, scales, prepared[c], c, elements, evaluations));
         std::vector<double*> blocks{shared.data()};
         if (m > 0) blocks.push_back(nuisance[c].data());
         solver_problem.AddResidualBlock(costs.back().get(), nullptr, blocks);
     }
     for (std::size_t j = 0; j < k; ++j) {
-        const auto& parameter = problem.parameters[j];
-        solver_problem.SetParameterLowerBound(shared.data(), static_cast<int>(j), scales.to_internal(j, parameter.lower));
-        solver_problem.SetParameterUpperBound(shared.data(), static_cast<int>(j), scales.to_internal(j, parameter.upper));
+        solver_problem.SetParameterLowerBound(shared.data(), static_cast<int>(j), scales.lower[j]);
+        solver_problem.SetParameterUpperBound(shared.data(), static_cast<int>(j), scales.upper[j]);
     }
 
     ceres::Solver::Options options;

@@ -151,6 +151,16 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
             result.lower_95.push_back(value - normal_quantile_95 * scales.scale[j] * sigma);
             result.upper_95.push_back(value + normal_quantile_95 * scales.scale[j] * sigma);
         }
+        const auto& parameter = problem.parameters[j];
+        const double span = scales.scale[j] == 0.0 ? std::log(parameter.upper / parameter.lower)
+                                                   : (parameter.upper - parameter.lower) / scales.scale[j];
+        const double from_lower = scales.to_internal(j, value) - scales.to_internal(j, parameter.lower);
+        const double to_upper = scales.to_internal(j, parameter.upper) - scales.to_internal(j, value);
+        if (std::min(from_lower, to_upper) < 1e-4 * span) {
+            flag(result, flagged, result.names[j],
+                 fmt::format("{} = {:.6g} is at its {} bound: the data push it beyond", result.names[j], value,
+                             from_lower < to_upper ? "lower" : "upper"));
+        }
         if (result.standard_errors[j] > std::abs(value)) {
             flag(result, flagged, result.names[j],
                  fmt::format("its standard error {:.3g} exceeds its value {:.6g}", result.standard_errors[j], value));
@@ -181,7 +191,7 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
     for (std::size_t i = 0; i < k; ++i) {
         for (std::size_t j = i + 1; j < k; ++j) {
             const double r = result.correlation[i][j];
-            if (std::abs(r) > 0.99) {
+            if (std::abs(r) > 0.99 && !undetermined[i] && !undetermined[j]) {
                 const std::string reason = fmt::format("correlation {:.4f} between {} and {}", r, result.names[i], result.names[j]);
                 flag(result, flagged, result.names[i], reason);
                 flag(result, flagged, result.names[j], reason);

@@ -15,7 +15,7 @@ namespace mdr::fit {
 /// covariance s^2 (J^T J)^+ with s^2 = RSS / (n - k) (so that a misjudged noise level does not bias the errors),
 /// the 95 % intervals (normal quantile 1.96; on the logarithmic scale for logarithmic parameters), the curves'
 /// data and model, AIC and BIC, and Undetermined entries for: directions the data do not constrain (singular
-/// values below 1e-8 of the largest), a standard error above the value, |correlation| > 0.99, a time parameter
+/// values below 1e-8 of the largest), a value at its bound, a standard error above the value, |correlation| > 0.99, a time parameter
 /// outside the measured window (above 10 times the longest record or below a tenth of the shortest sampling
 /// interval), two time parameters within 25 % of each other.
 void describe_uncertainty(const FitProblem& problem, const ParameterScales& scales,

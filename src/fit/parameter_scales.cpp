@@ -13,6 +13,13 @@ double ParameterScales::to_value(std::size_t j, double u) const {
     return scale[j] == 0.0 ? std::exp(u) : u * scale[j];
 }
 
+bool ParameterScales::within_bounds(const double* u) const {
+    for (std::size_t j = 0; j < scale.size(); ++j) {
+        if (!(u[j] >= lower[j] && u[j] <= upper[j])) return false;
+    }
+    return true;
+}
+
 std::vector<double> ParameterScales::values(const double* u) const {
     std::vector<double> result(scale.size());
     for (std::size_t j = 0; j < scale.size(); ++j) result[j] = to_value(j, u[j]);
@@ -26,6 +33,10 @@ ParameterScales make_scales(const FitProblem& problem) {
                                    ? 0.0
                                    : std::max({std::abs(parameter.start), 0.5 * (parameter.upper - parameter.lower),
                                                1e-300}));
+    }
+    for (std::size_t j = 0; j < scales.scale.size(); ++j) {
+        scales.lower.push_back(scales.to_internal(j, problem.parameters[j].lower));
+        scales.upper.push_back(scales.to_internal(j, problem.parameters[j].upper));
     }
     for (const auto& curve : problem.curves) {
         double depth = 0.0;

@@ -13,6 +13,8 @@ namespace mdr::fit {
 /// Maps values to the coordinates the solver moves in, and back.
 struct ParameterScales {
     std::vector<double> scale;      ///< per free parameter: 0 for a logarithmic one, else its scale
+    std::vector<double> lower;      ///< per free parameter: its lower bound as a coordinate
+    std::vector<double> upper;      ///< per free parameter: its upper bound as a coordinate
     std::vector<double> depth;      ///< per curve: the scale of its contact point [m] (its largest |depth|)
     std::vector<double> force;      ///< per curve: the scale of its baseline [N] (its largest |force|)
     bool fit_contact = false;       ///< the nuisance block holds the contact point
@@ -24,6 +26,8 @@ struct ParameterScales {
     double to_internal(std::size_t j, double value) const;
     /// The value of free parameter j at coordinate `u`.
     double to_value(std::size_t j, double u) const;
+    /// True when every coordinate of `u` lies within its bounds.
+    bool within_bounds(const double* u) const;
     /// The values of all free parameters at the coordinates `u`.
     std::vector<double> values(const double* u) const;
 };

@@ -137,11 +137,12 @@ FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
     check_per_key_tables(fit_table, keys);
     for (const auto& key : keys) fit_case.parameters.push_back(read_parameter(fit_table, fit_case.model, key));
 
+    // The curves may also come as arrays from a caller (fit::validate requires at least one).
     const auto* data = fit_table["data"].as_array();
-    if (data == nullptr || data->empty()) {
-        throw InvalidInput("fit.data", "(missing)", "give at least one [[fit.data]] table with a measured curve");
+    if (fit_table["data"] && data == nullptr) {
+        throw InvalidInput("fit.data", "(not an array of tables)", "give each curve as a [[fit.data]] table");
     }
-    for (std::size_t i = 0; i < data->size(); ++i) {
+    for (std::size_t i = 0; data != nullptr && i < data->size(); ++i) {
         const auto* table = (*data)[i].as_table();
         const std::string path = fmt::format("fit.data[{}]", i);
         if (table == nullptr) throw InvalidInput(path, "(not a table)", "must be a [[fit.data]] table");
