@@ -45,15 +45,6 @@ double robust_deviation(std::vector<double> values) {
     return mad > 0.0 ? mad_to_deviation * mad : std::sqrt(sum_squares / static_cast<double>(values.size()));
 }
 
-/// Noise of rows [begin, end) of `values` from their second differences (step 5); 0 for fewer than 3 rows.
-double difference_noise(const std::vector<double>& values, std::size_t begin, std::size_t end) {
-    if (end < begin + 3) return 0.0;
-    std::vector<double> second;
-    second.reserve(end - begin - 2);
-    for (std::size_t i = begin + 1; i + 1 < end; ++i) second.push_back(values[i + 1] - 2.0 * values[i] + values[i - 1]);
-    return robust_deviation(std::move(second)) / std::sqrt(6.0);
-}
-
 /// The baseline F = offset + slope (t - t0) and the force noise about it.
 struct Baseline {
     double t0 = 0.0, offset = 0.0, slope = 0.0, noise = 0.0;
@@ -203,6 +194,14 @@ std::size_t last_crossing(const Curve& curve, const Baseline& baseline, std::siz
 }
 
 }  // namespace
+
+double difference_noise(const std::vector<double>& values, std::size_t begin, std::size_t end) {
+    if (end < begin + 3) return 0.0;
+    std::vector<double> second;
+    second.reserve(end - begin - 2);
+    for (std::size_t i = begin + 1; i + 1 < end; ++i) second.push_back(values[i + 1] - 2.0 * values[i] + values[i - 1]);
+    return robust_deviation(std::move(second)) / std::sqrt(6.0);
+}
 
 // The method (also in docs/case-format.md, "Measured curves"). Depth d, force F, time t; "deviations" are the
 // force noise sigma.
