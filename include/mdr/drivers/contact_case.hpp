@@ -68,6 +68,8 @@ struct ContactCase {
     /// True when tangential loading meets compressible or two different bodies: the MDR mapping is then exact for
     /// the normal problem only (section 7) and the tangential result an approximation.
     bool tangential_approximate = false;
+    /// The declared unit system (mdr/io/units.hpp): the names printed beside the numbers; nothing is converted.
+    std::string units = "SI";
 };
 
 /// Elements on the half-width when `[numerics] elements` is not given. With the half-width 1.1 times the largest
