@@ -176,7 +176,10 @@ Examples
 >>> round(cone.equivalent(0.5), 12)                     # the 45 degree cone: (pi/2) x
 0.785398163397
 )doc")
-        .def("gap", [](const Profile& p, const InputArray& r) { return elementwise<double>(r, [&](double x) { return p.gap(x); }); },
+        .def("gap",
+             [](const Profile& p, const InputArray& r) {
+                 return elementwise<double>(r, [&](double x) { return p.gap(x); });
+             },
              py::arg("r"), R"doc(The gap f(r) between indenter and undeformed surface.
 
 Parameters
@@ -195,7 +198,9 @@ Examples
 1.0
 )doc")
         .def("equivalent",
-             [](const Profile& p, const InputArray& x) { return elementwise<double>(x, [&](double v) { return p.equivalent(v); }); },
+             [](const Profile& p, const InputArray& x) {
+                 return elementwise<double>(x, [&](double v) { return p.equivalent(v); });
+             },
              py::arg("x"), R"doc(The MDR profile g(x) (eq. 9); inf beyond a flat punch or a table.
 
 Parameters
@@ -214,7 +219,9 @@ Examples
 array([0., 2.])
 )doc")
         .def("contact_radius",
-             [](const Profile& p, const InputArray& d) { return elementwise<double>(d, [&](double v) { return p.contact_radius(v); }); },
+             [](const Profile& p, const InputArray& d) {
+                 return elementwise<double>(d, [&](double v) { return p.contact_radius(v); });
+             },
              py::arg("d"), R"doc(The Lee-Radok contact radius a = g^-1(d) at depth d (eq. 15).
 
 Parameters

@@ -172,7 +172,9 @@ Examples
 4000000.0
 )doc")
         .def("relaxation",
-             [](const Rheology& m, const InputArray& t) { return elementwise<double>(t, [&](double x) { return m.relaxation(x); }); },
+             [](const Rheology& m, const InputArray& t) {
+                 return elementwise<double>(t, [&](double x) { return m.relaxation(x); });
+             },
              py::arg("t"), R"doc(The relaxation modulus G(t), without a dashpot's delta at t = 0.
 
 Parameters
@@ -191,7 +193,9 @@ Examples
 1000000.0
 )doc")
         .def("creep",
-             [](const Rheology& m, const InputArray& t) { return elementwise<double>(t, [&](double x) { return m.creep(x); }); },
+             [](const Rheology& m, const InputArray& t) {
+                 return elementwise<double>(t, [&](double x) { return m.creep(x); });
+             },
              py::arg("t"), R"doc(The creep compliance J(t), exact (eq. 6: s^2 G*(s) J*(s) = 1).
 
 Parameters
@@ -276,10 +280,11 @@ Examples
             }))
         .def_property_readonly("G_inf", &Rheology::equilibrium_modulus, "float: the equilibrium modulus.")
         .def_property_readonly("eta", &Rheology::viscosity, "float: the parallel viscosity.")
-        .def_property_readonly("terms", &term_pairs, "list of (float, float): the branches (G_k, tau_k), ascending tau_k.")
+        .def_property_readonly("terms", &term_pairs,
+                               "list of (float, float): the branches (G_k, tau_k), ascending tau_k.")
         .def("__repr__", [](const Rheology& m) {
-            return "Material(G_inf=" + std::to_string(m.equilibrium_modulus()) + ", eta=" + std::to_string(m.viscosity()) +
-                   ", branches=" + std::to_string(m.terms().size()) + ")";
+            return "Material(G_inf=" + std::to_string(m.equilibrium_modulus()) +
+                   ", eta=" + std::to_string(m.viscosity()) + ", branches=" + std::to_string(m.terms().size()) + ")";
         });
 }
 

@@ -80,7 +80,8 @@ void bind_run(py::module_& module) {
     module.def(
         "_check_toml",
         [](const std::string& text, const std::string& source) { return io::check(io::parse_case(text, source)); },
-        py::arg("toml_text"), py::arg("source") = "case", "Validates a case given as TOML text; returns its description.");
+        py::arg("toml_text"), py::arg("source") = "case",
+        "Validates a case given as TOML text; returns its description.");
     module.def(
         "_unit_system",
         [](const std::string& name) {

@@ -43,7 +43,8 @@ void bind_sweep(py::module_& module) {
             out["errors"] = errors;
             return out;
         },
-        py::arg("toml_text"), py::arg("source"), py::arg("specs"), py::arg("jobs") = 0, py::arg("progress") = py::none(),
+        py::arg("toml_text"), py::arg("source"), py::arg("specs"), py::arg("jobs") = 0,
+        py::arg("progress") = py::none(),
         "Runs a case over the cartesian product of --vary specs (use mdr.sweep).");
 }
 

@@ -94,8 +94,10 @@ def load_phases(depth: np.ndarray, force: np.ndarray, control: Optional[str] = N
     """
     d, F = np.asarray(depth, float), np.asarray(force, float)
     dd, dF = np.diff(d, prepend=d[:1]), np.diff(F, prepend=F[:1])
-    d_still = np.abs(dd) <= 1e-12 * np.max(np.abs(d), initial=0.0)
-    F_tolerance = 1e-12 * np.max(np.abs(F), initial=0.0)
+    # Still: a change below 1e-9 of the largest value (a force solved for under force control meets its target to
+    # round-off; a step of a real ramp changes by far more).
+    d_still = np.abs(dd) <= 1e-9 * np.max(np.abs(d), initial=0.0)
+    F_tolerance = 1e-9 * np.max(np.abs(F), initial=0.0)
     F_held = (np.abs(dF) <= F_tolerance) & (np.abs(F) > F_tolerance)
     if control is None:
         control = "force" if np.any(F_held & ~d_still) else "displacement"
@@ -318,7 +320,7 @@ def material_functions(functions: Mapping[str, np.ndarray], axes=None, units: Un
     axes : matplotlib.axes.Axes, optional
         Where to draw; a new figure by default.
     units : str or dict, optional
-        The unit system's name (default "SI").
+        The unit system's name, or the summary dict of the result directory (default "SI").
 
     Returns
     -------
@@ -354,7 +356,7 @@ def dynamic_moduli(dynamic: Mapping[str, np.ndarray], axes=None, units: Units = 
     axes : matplotlib.axes.Axes, optional
         Where to draw; a new figure by default.
     units : str or dict, optional
-        The unit system's name (default "SI").
+        The unit system's name, or the summary dict of the result directory (default "SI").
 
     Returns
     -------
@@ -391,7 +393,7 @@ def sweep_map(sweep: Mapping[str, np.ndarray], value: str, axes=None):
     Returns
     -------
     matplotlib.axes.Axes
-        With a log x axis when the first key's grid spans more than two decades of positive values.
+        With a log x axis when the first key's grid spans two decades or more of positive values.
 
     Raises
     ------
@@ -417,7 +419,7 @@ def sweep_map(sweep: Mapping[str, np.ndarray], value: str, axes=None):
         order = np.argsort(x[rows])
         axes.plot(x[rows][order], sweep[value][rows][order], marker=".",
                   label=None if group is None else f"{keys[1]} = {group:g}")
-    if np.all(x > 0) and x.max() / x.min() > 100:
+    if np.all(x > 0) and x.max() / x.min() >= 100:
         axes.set_xscale("log")
     axes.set(xlabel=keys[0], ylabel=value, title=f"{value} over {keys[0]}")
     if len(keys) > 1:
@@ -504,9 +506,11 @@ def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
                 if "tau" in profiles:
                     written.append(save(shear_stress_profiles(profiles, units=units), figure("shear_stress")))
         if os.path.exists(path("functions.csv")):
-            written.append(save(material_functions(read_csv(path("functions.csv"))), figure("material")))
+            functions = read_csv(path("functions.csv"))
+            written.append(save(material_functions(functions, units=_summary(directory)), figure("material")))
         if os.path.exists(path("dynamic.csv")):
-            written.append(save(dynamic_moduli(read_csv(path("dynamic.csv"))), figure("dynamic")))
+            dynamic = read_csv(path("dynamic.csv"))
+            written.append(save(dynamic_moduli(dynamic, units=_summary(directory)), figure("dynamic")))
         if os.path.exists(path("sweep.csv")):
             sweep = read_csv(path("sweep.csv"))
             value = column or ("restitution" if "restitution" in sweep else "max_force")

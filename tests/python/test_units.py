@@ -100,7 +100,8 @@ def assert_twins(si: mdr.Result, twin: mdr.Result, system: str, tolerance: float
                                        atol=tolerance * np.abs(si.profiles[column]).max(), err_msg=f"{name}: {column}")
     for key, dimension in SUMMARY.items():
         if key in si.summary:
-            assert twin.summary[key] * scale[dimension] == pytest.approx(si.summary[key], rel=tolerance, abs=1e-300), key
+            expected = pytest.approx(si.summary[key], rel=tolerance, abs=1e-300)
+            assert twin.summary[key] * scale[dimension] == expected, key
 
 
 @pytest.mark.parametrize("system", sorted(SYSTEMS))
