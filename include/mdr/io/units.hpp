@@ -3,7 +3,7 @@
 /// The unit system a case declares (`units = "SI"`, the default): the names printed beside its numbers in the
 /// description, the command line's report, summary.json and the figures. Nothing is converted: the solver has no
 /// physical constants and no absolute tolerances, so a case in any consistent system gives the results of its SI
-/// twin in that system's units (tests/unit/io/units_test.cpp runs such twins). The declaration only makes the
+/// twin in that system's units (tests/python/test_units.py runs such twins). The declaration only makes the
 /// printed names true; each declared system is consistent (force = mass x length / time^2, pressure = force /
 /// length^2).
 
