@@ -1,6 +1,7 @@
 // `mdr material CASE --out DIR`: tabulates the material functions of a case as `run` uses them.
 
 #include <fmt/format.h>
+#include <fmt/os.h>
 
 #include "commands.hpp"
 #include "interrupt.hpp"
@@ -59,10 +60,14 @@ void add_material_command(CLI::App& app, int& exit_code) {
             directory.write(
                 [&](const std::filesystem::path& files) {
                     io::write_material_tables(files, material, contact_case.shear_material, t, w);
+                    // The declared unit system (mdr/io/units.hpp), which the figures of the tables name.
+                    auto summary = fmt::output_file((files / "summary.json").string());
+                    summary.print("{{\n  \"units\": \"{}\"\n}}\n", contact_case.units);
+                    summary.close();
                 },
                 received_signal);
-            fmt::print("{} times, {} frequencies written to {}/ (functions.csv, dynamic.csv)\n", t.size(), w.size(),
-                       *out);
+            fmt::print("{} times, {} frequencies written to {}/ (functions.csv, dynamic.csv, summary.json)\n",
+                       t.size(), w.size(), *out);
         });
     });
 }

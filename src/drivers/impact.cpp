@@ -45,8 +45,8 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
     for (std::size_t n = 1;; ++n) {
         if (time >= numerics.time_limit) {
             throw InvalidInput("load.end", format_value(numerics.time_limit),
-                               "the contact has not ended by then (v = " + format_value(velocity) +
-                                   " m/s): the indenter does not rebound in time; give a later load.end");
+                               "the contact has not ended by then (velocity v = " + format_value(velocity) +
+                                   "): the indenter does not rebound in time; give a later load.end");
         }
         // Land exactly on snapshot times.
         const double step = snapshot != snapshots.end() ? std::min(numerics.time_step, *snapshot - time)

@@ -12,6 +12,7 @@
 #include "mdr/rheology/compressible.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "case_reader.hpp"
+#include "mdr/io/units.hpp"
 #include "material_reader.hpp"
 #include "toml_reader.hpp"
 
@@ -143,8 +144,9 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
 
 drivers::ContactCase read_case(const toml::table& root_table) {
     TableReader root(root_table, "");
-    root.reject_unknown({"title", "material", "indenter", "load", "tangential", "output", "numerics"});
+    root.reject_unknown({"title", "units", "material", "indenter", "load", "tangential", "output", "numerics"});
     const std::string title = root.optional_string("title").value_or("");
+    const std::string units(unit_system(root.optional_string("units").value_or("SI")).name);
 
     auto material_table = root.table("material");
     if (!material_table) throw InvalidInput("material", "(missing)", "is required");
@@ -242,6 +244,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
                                       std::move(shear_material), impact, std::move(tangential), approximate};
     contact_case.harmonic = harmonic;
     contact_case.spring_constant = spring_constant;
+    contact_case.units = units;
     drivers::validate(contact_case);
     return contact_case;
 }
@@ -261,22 +264,23 @@ std::string check(const drivers::ContactCase& contact_case) {
 
 std::string describe(const drivers::ContactCase& contact_case) {
     const auto& material = contact_case.material;
+    const UnitSystem& units = unit_system(contact_case.units);
     const std::string rheology =
         material.terms().empty() && material.viscosity() == 0.0 ? "an elastic" : "a viscoelastic";
     std::string load;
     if (contact_case.impact) {
-        load = fmt::format("impact of m = {:.4g} kg at v0 = {:.4g} m/s", contact_case.impact->mass,
-                           contact_case.impact->velocity);
+        load = fmt::format("impact of m = {:.4g} {} at v0 = {:.4g} {}", contact_case.impact->mass, units.mass,
+                           contact_case.impact->velocity, units.velocity());
     } else {
-        load = fmt::format("{} control, {} history points over t = {:.4g} .. {:.4g} s",
+        load = fmt::format("{} control, {} history points over t = {:.4g} .. {:.4g} {}",
                            contact_case.control == drivers::Control::force    ? "force"
                            : contact_case.control == drivers::Control::spring ? "spring"
                                                                               : "displacement",
                            contact_case.history.points().size(), contact_case.history.start_time(),
-                           contact_case.end_time);
+                           contact_case.end_time, units.time);
         if (contact_case.spring_constant) load += fmt::format(" (spring k = {:.4g} N/m)", *contact_case.spring_constant);
         if (const auto& harmonic = contact_case.harmonic) {
-            load += fmt::format(", harmonic of amplitude {:.4g} at {:.4g} Hz over t = {:.4g} .. {:.4g} s",
+            load += fmt::format(", harmonic of amplitude {:.4g} at {:.4g} Hz over t = {:.4g} .. {:.4g} {}",
                                 harmonic->amplitude, harmonic->frequency, harmonic->start, harmonic->end);
         }
     }
@@ -287,10 +291,11 @@ std::string describe(const drivers::ContactCase& contact_case) {
                             tangential->harmonic ? fmt::format("harmonic at {:.4g} Hz", tangential->harmonic->frequency)
                                                  : "piecewise-linear history");
     }
-    return fmt::format("{}{} on {} half-space (G(0+) = {:.4g} Pa, G(inf) = {:.4g} Pa, {} branch(es)), {}",
+    return fmt::format("{}{} on {} half-space (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
                        contact_case.title.empty() ? "" : "\"" + contact_case.title + "\": ",
-                       contact_case.indenter->describe(), rheology, material.instantaneous_modulus(),
-                       material.equilibrium_modulus(), material.terms().size(), load);
+                       contact_case.indenter->describe(), rheology, material.instantaneous_modulus(), units.pressure,
+                       material.equilibrium_modulus(), units.pressure, material.terms().size(), load,
+                       contact_case.units == "SI" ? "" : fmt::format(" [units {}]", units.name));
 }
 
 }  // namespace mdr::io

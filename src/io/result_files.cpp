@@ -22,6 +22,7 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
                          double wall_seconds) {
     nlohmann::ordered_json summary;
     summary["case"] = contact_case.title;
+    summary["units"] = contact_case.units;
     summary["max_force"] = max_of(result.force);
     summary["max_depth"] = max_of(result.depth);
     summary["max_radius"] = max_of(result.radius);

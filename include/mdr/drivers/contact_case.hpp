@@ -82,6 +82,8 @@ struct ContactCase {
 
     /// The prescribed load at time t [s]: the history plus the harmonic part.
     double load_value(double t) const { return history.value(t) + (harmonic ? harmonic->value(t) : 0.0); }
+    /// The declared unit system (mdr/io/units.hpp): the names printed beside the numbers; nothing is converted.
+    std::string units = "SI";
 };
 
 /// Elements on the half-width when `[numerics] elements` is not given. With the half-width 1.1 times the largest
