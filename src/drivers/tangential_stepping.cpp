@@ -49,7 +49,7 @@ void TangentialStepper::step(const foundation::StepCoefficients& coefficients, d
                                          : "the tangential displacement changes while there is no normal contact; "
                                            "apply it while the normal load holds the contact");
     }
-    layer_.begin_step(coefficients);
+    layer_.begin_step(coefficients, foundation_.entries());
     double increment = target - displacement_;
     if (force_control) {
         const double capacity = layer_.sliding_force(q, contact);
@@ -88,11 +88,12 @@ void TangentialStepper::record(IndentationResult& result) const {
     result.stick_radius.push_back(stick_radius_);
 }
 
-void TangentialStepper::add_shear_stress(Snapshot& snapshot) const {
-    const auto q = layer_.line_loads();
+void add_shear_stress(const foundation::TangentialLayer& layer, const foundation::Foundation& foundation,
+                      Snapshot& snapshot) {
+    const auto q = layer.line_loads();
     std::size_t inside = 0;
-    while (inside < q.size() && foundation_.position(inside) < snapshot.contact_radius) ++inside;
-    snapshot.shear_stress = contact::stress_from_line_load(foundation_.spacing(), std::span(q.data(), inside),
+    while (inside < q.size() && foundation.position(inside) < snapshot.contact_radius) ++inside;
+    snapshot.shear_stress = contact::stress_from_line_load(foundation.spacing(), std::span(q.data(), inside),
                                                            snapshot.contact_radius, 0.0, snapshot.radius);
 }
 

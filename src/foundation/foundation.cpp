@@ -274,6 +274,7 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
         split_end_ = static_cast<std::size_t>(last + 1);
     }
     split_.clear();
+    entries_.clear();
     split_state_.clear();
     latest_exit_ = 0.0;
     inner_exit_ = {-1.0, -1.0};
@@ -290,6 +291,7 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
         split_state_[offset] = split_w;
         split_state_[offset + 1] = stress;
         split_.push_back(i);
+        if (outcome.contact) entries_.push_back({i, outcome.fraction});
         in_contact_[i] = outcome.contact ? 1 : 0;
     }
     const auto& terms = material_.terms();

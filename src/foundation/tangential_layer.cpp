@@ -23,12 +23,26 @@ TangentialLayer::TangentialLayer(const rheology::Rheology& material, double fric
       memory_(count * material.terms().size(), 0.0),
       state_(count, TangentialState::free),
       relaxed_(count, 0.0),
-      limit_(count, 0.0) {}
+      limit_(count, 0.0),
+      share_(count, 1.0),
+      rate_gain_(material.terms().size(), 0.0) {}
 
-void TangentialLayer::begin_step(const StepCoefficients& coefficients) {
+void TangentialLayer::begin_step(const StepCoefficients& coefficients, std::span<const Entry> entries) {
     step_ = coefficients;
+    for (const std::size_t i : entered_) share_[i] = 1.0;
+    entered_.clear();
+    for (const Entry& entry : entries) {
+        share_[entry.element] = 1.0 - entry.fraction;
+        entered_.push_back(entry.element);
+    }
     const std::size_t n = displacement_.size();
     relaxed_sums(material_, step_, displacement_.data(), memory_.data(), n, n, relaxed_.data());
+    const auto& terms = material_.terms();
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+        // (1 - B) / r with r = dt/tau: its series below r = 1e-3, where 1 - B would cancel (B = 1 - r/2 + ...).
+        const double r = step_.time_step / terms[k].relaxation_time;
+        rate_gain_[k] = r < 1e-3 ? 0.5 - r / 6.0 + r * r / 24.0 - r * r * r / 120.0 : (1.0 - step_.gain[k]) / r;
+    }
 }
 
 double TangentialLayer::limit(double normal_line_load) const {
@@ -41,6 +55,7 @@ TangentialLayer::ElementStep TangentialLayer::element_step(std::size_t i, double
     const double relaxed = relaxed_[i];
     const double stiffness = step_.stiffness;
     if (!contact) return {-relaxed / stiffness, 0.0, TangentialState::free};
+    increment *= share_[i];  // an element entering in the step moves only after its entry
     const double trial = relaxed + stiffness * increment;
     const double bound = limit(normal_line_load);
     // An element held exactly at its limit (a slip zone at rest) is still in the slip zone of eq. (51).
@@ -73,8 +88,8 @@ double TangentialLayer::sliding_increment(double direction, std::span<const doub
     double increment = 0.0;
     bool any = false;
     for (std::size_t i = 0; i < displacement_.size(); ++i) {
-        if (!contact[i]) continue;
-        const double reach = (direction * limit(normal_line_loads[i]) - relaxed_[i]) / step_.stiffness;
+        if (!contact[i] || share_[i] == 0.0) continue;
+        const double reach = (direction * limit(normal_line_loads[i]) - relaxed_[i]) / (step_.stiffness * share_[i]);
         increment = any ? (direction > 0.0 ? std::max(increment, reach) : std::min(increment, reach)) : reach;
         any = true;
     }
@@ -85,20 +100,29 @@ void TangentialLayer::advance(double increment, std::span<const double> normal_l
                               std::span<const std::uint8_t> contact) {
     const std::size_t n = displacement_.size();
     const auto& terms = material_.terms();
-    double sum = 0.0;
+    const double dt = step_.time_step;
+    const double viscous = dt > 0.0 ? material_.viscosity() / dt : 0.0;
+    double sum = 0.0, material_work = 0.0, friction_work = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
         const ElementStep s = element_step(i, increment, normal_line_loads[i], contact[i] != 0);
+        // The element's mean stress over the step, int t dt / dt (see material_work()).
+        double mean = material_.equilibrium_modulus() * (displacement_[i] + 0.5 * s.increment) + viscous * s.increment;
         displacement_[i] += s.increment;
         for (std::size_t k = 0; k < terms.size(); ++k) {
             double& h = memory_[k * n + i];
+            mean += terms[k].modulus * (step_.gain[k] * h + rate_gain_[k] * s.increment);
             h = step_.decay[k] * h + step_.gain[k] * s.increment;
         }
+        material_work += mean * s.increment;
+        if (contact[i]) friction_work += 0.5 * (stress_[i] + s.stress) * (share_[i] * increment - s.increment);
         stress_[i] = s.stress;
         state_[i] = s.state;
         limit_[i] = limit(normal_line_loads[i]);
         sum += s.stress;
     }
     total_force_ = 2.0 * tangential_stiffness_factor * spacing_ * sum;
+    material_work_ = 2.0 * tangential_stiffness_factor * spacing_ * material_work;
+    friction_work_ = 2.0 * tangential_stiffness_factor * spacing_ * friction_work;
 }
 
 double TangentialLayer::stick_slope() const {

@@ -19,7 +19,7 @@ namespace {
 
 std::shared_ptr<const profile::Profile> read_indenter(TableReader& table) {
     const std::string shape = table.string("shape");
-    std::vector<std::string> known{"shape", "mass", "material"};
+    std::vector<std::string> known{"shape", "mass", "moment_of_inertia", "material"};
     const auto with = [&](std::initializer_list<const char*> keys) {
         for (const char* key : keys) known.emplace_back(key);
         table.reject_unknown(known);
@@ -116,6 +116,38 @@ drivers::TangentialLoad read_tangential(TableReader& table) {
     return load;
 }
 
+bool is_oblique(const TableReader& load) {
+    return load.has("tangential_velocity") || load.has("incidence_deg") || load.has("spin");
+}
+
+// The tangential part of an impact: `[load] tangential_velocity` (or `incidence_deg`) and `spin`, `[indenter]
+// moment_of_inertia` (a solid sphere's 2/5 m R^2 by default) and `[tangential] friction`.
+drivers::ObliqueImpactLoad read_oblique(TableReader& load, TableReader& indenter,
+                                        std::optional<TableReader>& tangential, const drivers::ImpactLoad& impact) {
+    if (!tangential || !tangential->has("friction")) {
+        throw InvalidInput("tangential.friction", "(missing)", "is required for an oblique impact");
+    }
+    tangential->reject_unknown({"friction"});
+    if (indenter.string("shape") != "sphere") {
+        throw InvalidInput("indenter.shape", "\"" + indenter.string("shape") + "\"",
+                           "an oblique impact needs shape = \"sphere\" (its radius is the lever of the friction)");
+    }
+    if (load.has("tangential_velocity") && load.has("incidence_deg")) {
+        throw InvalidInput("load.incidence_deg", load.text("incidence_deg"), "give either it or tangential_velocity");
+    }
+    drivers::ObliqueImpactLoad oblique;
+    oblique.friction = tangential->number("friction");
+    oblique.radius = indenter.number("R");
+    oblique.tangential_velocity = load.optional_number("tangential_velocity").value_or(0.0);
+    if (auto incidence = load.optional_number("incidence_deg")) {
+        oblique.tangential_velocity = drivers::incidence_velocity(impact.velocity, *incidence);
+    }
+    oblique.spin = load.optional_number("spin").value_or(0.0);
+    oblique.moment_of_inertia =
+        indenter.optional_number("moment_of_inertia").value_or(0.4 * impact.mass * oblique.radius * oblique.radius);
+    return oblique;
+}
+
 }  // namespace
 
 drivers::ContactCase parse_case(std::string_view toml_text, const std::string& source) {
@@ -148,7 +180,7 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
 
     auto load = root.table("load");
     if (!load) throw InvalidInput("load", "(missing)", "is required");
-    load->reject_unknown({"control", "history", "velocity", "end"});
+    load->reject_unknown({"control", "history", "velocity", "end", "tangential_velocity", "incidence_deg", "spin"});
     const std::string control_name = load->string("control");
     drivers::Control control;
     if (control_name == "displacement") control = drivers::Control::displacement;
@@ -179,8 +211,18 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
     if (auto end = load->optional_number("end")) end_time = *end;
 
     std::optional<drivers::TangentialLoad> tangential;
+    std::optional<drivers::ObliqueImpactLoad> oblique;
     bool approximate = false;
-    if (auto table = root.table("tangential")) {
+    auto tangential_table = root.table("tangential");
+    const bool oblique_keys = is_oblique(*load) || indenter_table->has("moment_of_inertia");
+    if (impact && (tangential_table || oblique_keys)) {
+        oblique = read_oblique(*load, *indenter_table, tangential_table, *impact);
+        // Exact only for an incompressible body and a rigid sphere (section 7); drivers::validate refuses the rest.
+        approximate = shear_material.has_value() || indenter_table->has("material");
+    } else if (oblique_keys) {
+        throw InvalidInput(is_oblique(*load) ? "load.tangential_velocity" : "indenter.moment_of_inertia", "[...]",
+                           "only with control = \"impact\" (an oblique impact)");
+    } else if (auto table = std::move(tangential_table)) {
         tangential = read_tangential(*table);
         if (!load->has("end")) end_time = std::max(end_time, tangential->end_time());
         // Exact only for elastically similar bodies (section 7): compressible or two bodies make it approximate.
@@ -207,7 +249,8 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
 
     drivers::ContactCase contact_case{title,    std::move(material),  std::move(indenter), control,
                                       std::move(history), end_time, std::move(snapshots), numerics,
-                                      std::move(shear_material), impact, std::move(tangential), approximate};
+                                      std::move(shear_material), impact, std::move(tangential), approximate,
+                                      oblique};
     drivers::validate(contact_case);
     return contact_case;
 }

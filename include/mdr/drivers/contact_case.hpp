@@ -28,6 +28,17 @@ struct ImpactLoad {
     double velocity;  ///< approach speed v0 [m/s] > 0 at first contact, t = 0
 };
 
+/// The tangential part of an oblique impact of a rigid sphere (`[load] tangential_velocity`, `spin`,
+/// `[indenter] moment_of_inertia`, `[tangential] friction`). The contact point, R below the centre, slides along x
+/// at v_t - R omega.
+struct ObliqueImpactLoad {
+    double friction = 0.0;             ///< mu >= 0 (local Coulomb friction, eq. 48-50)
+    double tangential_velocity = 0.0;  ///< v_t0 [m/s] of the centre along x at first contact
+    double spin = 0.0;                 ///< omega0 [rad/s] at first contact
+    double moment_of_inertia = 0.0;    ///< I [kg m^2] about the centre (solid sphere: 2/5 m R^2)
+    double radius = 0.0;               ///< R [m] of the sphere: the lever of the tangential force
+};
+
 /// User choices of `[numerics]`; every field optional, defaults come from the problem's scales.
 struct NumericsOptions {
     std::optional<std::size_t> elements;   ///< elements on the half-width
@@ -68,6 +79,7 @@ struct ContactCase {
     /// True when tangential loading meets compressible or two different bodies: the MDR mapping is then exact for
     /// the normal problem only (section 7) and the tangential result an approximation.
     bool tangential_approximate = false;
+    std::optional<ObliqueImpactLoad> oblique{};         ///< with control = impact: its tangential part
 };
 
 /// Elements on the half-width when `[numerics] elements` is not given. With the half-width 1.1 times the largest
