@@ -127,6 +127,13 @@ drivers::ObliqueImpactLoad read_oblique(TableReader& load, TableReader& indenter
     if (!tangential || !tangential->has("friction")) {
         throw InvalidInput("tangential.friction", "(missing)", "is required for an oblique impact");
     }
+    for (const char* key : {"control", "history", "amplitude", "frequency", "start", "end"}) {
+        if (tangential->has(key)) {
+            throw InvalidInput("tangential." + std::string(key), tangential->text(key),
+                               "a tangential load history is not for an impact; an oblique impact takes only "
+                               "tangential.friction, with load.tangential_velocity or load.spin");
+        }
+    }
     tangential->reject_unknown({"friction"});
     if (indenter.string("shape") != "sphere") {
         throw InvalidInput("indenter.shape", "\"" + indenter.string("shape") + "\"",
