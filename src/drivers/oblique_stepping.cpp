@@ -19,9 +19,8 @@ ObliqueStepper::ObliqueStepper(const ObliqueImpactLoad& load, double mass, const
       velocity_(load.tangential_velocity),
       spin_(load.spin) {}
 
-double ObliqueStepper::solve_increment(double spring, double anchor, double time_step,
-                                       std::span<const double> q) const {
-    const auto contact = foundation_.contact_flags();
+double ObliqueStepper::solve_increment(double spring, double anchor, double time_step, std::span<const double> q,
+                                       std::span<const std::uint8_t> contact) const {
     const auto residual = [&](double increment) {
         return layer_.trial_force(increment, q, contact) + spring * (increment - anchor) + force_;
     };
@@ -52,9 +51,11 @@ void ObliqueStepper::step(const foundation::StepCoefficients& coefficients, doub
     layer_.begin_step(coefficients, foundation_.entries());
     const double contact_velocity = velocity_ - load_.radius * spin_;
     const double spring = 4.0 * reduced_mass_ / (time_step * time_step);
-    const auto q = foundation_.line_loads();
-    const auto contact = foundation_.contact_flags();
-    const double increment = solve_increment(spring, contact_velocity * time_step, time_step, q);
+    // The elements the foundation has touched: the others are out of contact and untouched in the layer too.
+    const auto loads = foundation_.line_loads();
+    const auto q = std::span<const double>(loads).first(foundation_.touched());
+    const auto contact = foundation_.contact_flags().first(foundation_.touched());
+    const double increment = solve_increment(spring, contact_velocity * time_step, time_step, q, contact);
     layer_.advance(increment, q, contact);
     const double new_force = layer_.total_force();
     take_impulse(0.5 * (force_ + new_force) * time_step);
@@ -77,7 +78,9 @@ void ObliqueStepper::finish(const foundation::StepCoefficients& coefficients, do
     // The contact point moves with the mean of its velocities over the part of the step in contact, then freely.
     const double increment = (contact_velocity - 0.5 * impulse / reduced_mass_) * fraction * time_step +
                              (contact_velocity - impulse / reduced_mass_) * (1.0 - fraction) * time_step;
-    layer_.advance(increment, foundation_.line_loads(), foundation_.contact_flags());
+    const auto loads = foundation_.line_loads();
+    layer_.advance(increment, std::span<const double>(loads).first(foundation_.touched()),
+                   foundation_.contact_flags().first(foundation_.touched()));
     take_impulse(impulse);
     displacement_ += increment;
     force_ = layer_.total_force();

@@ -2,6 +2,7 @@
 // The tangential part of an oblique impact: the sphere's translation along x and its rotation, driven by the
 // tangential layer beside the normal foundation (handbook section 6 with the equations of motion of the sphere).
 
+#include <cstdint>
 #include <span>
 
 #include "mdr/drivers/contact_case.hpp"
@@ -40,7 +41,8 @@ public:
     double kinetic_energy_lost() const;
 
 private:
-    double solve_increment(double spring, double anchor, double time_step, std::span<const double> q) const;
+    double solve_increment(double spring, double anchor, double time_step, std::span<const double> q,
+                           std::span<const std::uint8_t> contact) const;
     void take_impulse(double impulse);
 
     const ObliqueImpactLoad& load_;

@@ -38,8 +38,10 @@ double TangentialStepper::solve_increment(double target, std::span<const double>
 }
 
 void TangentialStepper::step(const foundation::StepCoefficients& coefficients, double time_start, double time_end) {
-    const auto q = foundation_.line_loads();
-    const auto contact = foundation_.contact_flags();
+    // The elements the foundation has touched: the others are out of contact and untouched in the layer too.
+    const auto loads = foundation_.line_loads();
+    const auto q = std::span<const double>(loads).first(foundation_.touched());
+    const auto contact = foundation_.contact_flags().first(foundation_.touched());
     const double target = load_.value(time_end);
     const bool force_control = load_.control == TangentialControl::force;
     const bool loaded = force_control ? target != 0.0 : target != displacement_;

@@ -1,6 +1,7 @@
 #include "mdr/foundation/tangential_layer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "branch_sums.hpp"
@@ -36,7 +37,7 @@ void TangentialLayer::begin_step(const StepCoefficients& coefficients, std::span
         entered_.push_back(entry.element);
     }
     const std::size_t n = displacement_.size();
-    relaxed_sums(material_, step_, displacement_.data(), memory_.data(), n, n, relaxed_.data());
+    relaxed_sums(material_, step_, displacement_.data(), memory_.data(), n, touched_, relaxed_.data());
     const auto& terms = material_.terms();
     for (std::size_t k = 0; k < terms.size(); ++k) {
         // (1 - B) / r with r = dt/tau: its series below r = 1e-3, where 1 - B would cancel (B = 1 - r/2 + ...).
@@ -45,12 +46,12 @@ void TangentialLayer::begin_step(const StepCoefficients& coefficients, std::span
     }
 }
 
-double TangentialLayer::limit(double normal_line_load) const {
+inline double TangentialLayer::limit(double normal_line_load) const {
     // |F_x,i| <= mu F_N,i with F_x,i = (8/3) dx t_i and F_N,i = q_z,i dx (eq. 50).
     return friction_ * std::max(normal_line_load, 0.0) / tangential_stiffness_factor;
 }
 
-TangentialLayer::ElementStep TangentialLayer::element_step(std::size_t i, double increment, double normal_line_load,
+inline TangentialLayer::ElementStep TangentialLayer::element_step(std::size_t i, double increment, double normal_line_load,
                                                            bool contact) const {
     const double relaxed = relaxed_[i];
     const double stiffness = step_.stiffness;
@@ -67,17 +68,33 @@ TangentialLayer::ElementStep TangentialLayer::element_step(std::size_t i, double
 
 double TangentialLayer::trial_force(double increment, std::span<const double> normal_line_loads,
                                     std::span<const std::uint8_t> contact) const {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < displacement_.size(); ++i) {
-        sum += element_step(i, increment, normal_line_loads[i], contact[i] != 0).stress;
+    // element_step's stress, branch-free: the stick trial clamped to the friction limit in contact, 0 outside.
+    const double stiffness = step_.stiffness;
+    const double per_load = friction_ / tangential_stiffness_factor;  // limit() per unit line load
+    const double* __restrict relaxed = relaxed_.data();
+    const double* __restrict share = share_.data();
+    const double* __restrict q = normal_line_loads.data();
+    const std::uint8_t* __restrict in_contact = contact.data();
+    std::array<double, 4> partial{};  // four partial sums: the reduction vectorises
+    const std::size_t count = contact.size();
+    std::size_t i = 0;
+    const auto stress = [&](std::size_t j) {
+        const double bound = per_load * std::max(q[j], 0.0);
+        const double trial = relaxed[j] + stiffness * (increment * share[j]);
+        return in_contact[j] ? std::min(std::max(trial, -bound), bound) : 0.0;
+    };
+    for (; i + 4 <= count; i += 4) {
+        for (std::size_t lane = 0; lane < 4; ++lane) partial[lane] += stress(i + lane);
     }
+    for (; i < count; ++i) partial[0] += stress(i);
+    const double sum = (partial[0] + partial[1]) + (partial[2] + partial[3]);
     return 2.0 * tangential_stiffness_factor * spacing_ * sum;
 }
 
 double TangentialLayer::sliding_force(std::span<const double> normal_line_loads,
                                       std::span<const std::uint8_t> contact) const {
     double sum = 0.0;
-    for (std::size_t i = 0; i < displacement_.size(); ++i) {
+    for (std::size_t i = 0; i < contact.size(); ++i) {
         if (contact[i]) sum += limit(normal_line_loads[i]);
     }
     return 2.0 * tangential_stiffness_factor * spacing_ * sum;
@@ -87,7 +104,7 @@ double TangentialLayer::sliding_increment(double direction, std::span<const doub
                                           std::span<const std::uint8_t> contact) const {
     double increment = 0.0;
     bool any = false;
-    for (std::size_t i = 0; i < displacement_.size(); ++i) {
+    for (std::size_t i = 0; i < contact.size(); ++i) {
         if (!contact[i] || share_[i] == 0.0) continue;
         const double reach = (direction * limit(normal_line_loads[i]) - relaxed_[i]) / (step_.stiffness * share_[i]);
         increment = any ? (direction > 0.0 ? std::max(increment, reach) : std::min(increment, reach)) : reach;
@@ -99,11 +116,12 @@ double TangentialLayer::sliding_increment(double direction, std::span<const doub
 void TangentialLayer::advance(double increment, std::span<const double> normal_line_loads,
                               std::span<const std::uint8_t> contact) {
     const std::size_t n = displacement_.size();
+    touched_ = std::max(touched_, contact.size());
     const auto& terms = material_.terms();
     const double dt = step_.time_step;
     const double viscous = dt > 0.0 ? material_.viscosity() / dt : 0.0;
     double sum = 0.0, material_work = 0.0, friction_work = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < touched_; ++i) {
         const ElementStep s = element_step(i, increment, normal_line_loads[i], contact[i] != 0);
         // The element's mean stress over the step, int t dt / dt (see material_work()).
         double mean = material_.equilibrium_modulus() * (displacement_[i] + 0.5 * s.increment) + viscous * s.increment;
@@ -126,16 +144,18 @@ void TangentialLayer::advance(double increment, std::span<const double> normal_l
 }
 
 double TangentialLayer::stick_slope() const {
-    const auto sticking = std::count(state_.begin(), state_.end(), TangentialState::stick);
+    const auto end = state_.begin() + static_cast<std::ptrdiff_t>(touched_);
+    const auto sticking = std::count(state_.begin(), end, TangentialState::stick);
     return 2.0 * tangential_stiffness_factor * spacing_ * step_.stiffness * static_cast<double>(sticking);
 }
 
 double TangentialLayer::stick_radius(double contact_radius) const {
-    const auto first_slip = std::find(state_.begin(), state_.end(), TangentialState::slip);
-    const bool any_contact = std::any_of(state_.begin(), state_.end(),
+    const auto end = state_.begin() + static_cast<std::ptrdiff_t>(touched_);
+    const auto first_slip = std::find(state_.begin(), end, TangentialState::slip);
+    const bool any_contact = std::any_of(state_.begin(), end,
                                          [](TangentialState s) { return s != TangentialState::free; });
     if (!any_contact) return 0.0;
-    if (first_slip == state_.end()) return contact_radius;
+    if (first_slip == end) return contact_radius;
     const auto j = static_cast<std::size_t>(first_slip - state_.begin());
     if (j == 0 || state_[j - 1] != TangentialState::stick) {
         return j == 0 ? 0.0 : (static_cast<double>(j)) * spacing_;

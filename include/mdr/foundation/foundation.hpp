@@ -84,6 +84,8 @@ public:
     double touching_depth() const;
     /// The elements that came into contact inside the last step (none with a stale entry from an older step).
     std::span<const Entry> entries() const { return entries_; }
+    /// Elements [0, touched()) have been in contact at some time; the others have w = h = 0 and never touched.
+    std::size_t touched() const { return active_; }
     /// Number of elements in contact.
     std::size_t contact_count() const;
     /// Where inside the last step (0..1) the last element to leave contact in it left (its force crossing zero,

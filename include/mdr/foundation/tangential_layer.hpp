@@ -47,7 +47,9 @@ public:
     void begin_step(const StepCoefficients& coefficients, std::span<const Entry> entries = {});
     /// Total tangential force [N] (eq. 46, both halves) the layer would carry after the prepared step with the
     /// indenter moving by `increment` [m]; `normal_line_loads` q_z,i = F_N,i/dx [N/m] and `contact` are those of
-    /// the normal foundation at the end of the step. The state is not changed.
+    /// the normal foundation at the end of the step, of the same length, at most size(): the elements from there
+    /// on are out of contact (pass at least the elements the foundation has ever touched, and never fewer than
+    /// before). The state is not changed.
     double trial_force(double increment, std::span<const double> normal_line_loads,
                        std::span<const std::uint8_t> contact) const;
     /// The largest |F_x| [N] the contact can carry at the end of the prepared step: mu F_N (gross sliding beyond).
@@ -56,6 +58,8 @@ public:
     /// friction limit (the onset of gross sliding) in the prepared step; 0 when nothing is in contact.
     double sliding_increment(double direction, std::span<const double> normal_line_loads,
                              std::span<const std::uint8_t> contact) const;
+    /// Number of elements.
+    std::size_t size() const { return displacement_.size(); }
     /// Advances the state over the prepared step (arguments as for trial_force).
     void advance(double increment, std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact);
 
@@ -105,6 +109,7 @@ private:
     std::vector<std::size_t> entered_;      ///< the elements whose share_ the prepared step set
     std::vector<double> rate_gain_;         ///< (1 - B_k) tau_k / dt of the prepared step, one per branch
     StepCoefficients step_;
+    std::size_t touched_ = 0;               ///< elements [touched_, n) have never been in contact: u = h = 0
     double total_force_ = 0.0;
     double material_work_ = 0.0;
     double friction_work_ = 0.0;
