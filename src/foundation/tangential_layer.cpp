@@ -117,6 +117,7 @@ void TangentialLayer::advance(double increment, std::span<const double> normal_l
                               std::span<const std::uint8_t> contact) {
     const std::size_t n = displacement_.size();
     touched_ = std::max(touched_, contact.size());
+    high_water_ = std::max(high_water_, touched_);
     const auto& terms = material_.terms();
     const double dt = step_.time_step;
     const double viscous = dt > 0.0 ? material_.viscosity() / dt : 0.0;
@@ -141,6 +142,54 @@ void TangentialLayer::advance(double increment, std::span<const double> normal_l
     total_force_ = 2.0 * tangential_stiffness_factor * spacing_ * sum;
     material_work_ = 2.0 * tangential_stiffness_factor * spacing_ * material_work;
     friction_work_ = 2.0 * tangential_stiffness_factor * spacing_ * friction_work;
+}
+
+void TangentialLayer::save_state(std::span<double> out) const {
+    const std::size_t n = size();
+    out[0] = total_force_;
+    out[1] = static_cast<double>(touched_);
+    double* u = out.data() + 2;
+    double* t = u + n;
+    double* state = t + n;
+    double* bound = state + n;
+    double* h = bound + n;
+    for (std::size_t i = 0; i < touched_; ++i) {
+        u[i] = displacement_[i];
+        t[i] = stress_[i];
+        state[i] = static_cast<double>(state_[i]);
+        bound[i] = limit_[i];
+    }
+    for (std::size_t k = 0; k < material_.terms().size(); ++k) {
+        for (std::size_t i = 0; i < touched_; ++i) h[k * n + i] = memory_[k * n + i];
+    }
+}
+
+void TangentialLayer::load_state(std::span<const double> in) {
+    const std::size_t n = size();
+    const std::size_t branches = material_.terms().size();
+    total_force_ = in[0];
+    const std::size_t touched = static_cast<std::size_t>(in[1]);
+    for (std::size_t i = touched; i < high_water_; ++i) {  // zeros beyond the loaded state's elements
+        displacement_[i] = stress_[i] = relaxed_[i] = limit_[i] = 0.0;
+        state_[i] = TangentialState::free;
+        for (std::size_t k = 0; k < branches; ++k) memory_[k * n + i] = 0.0;
+    }
+    const double* u = in.data() + 2;
+    const double* t = u + n;
+    const double* state = t + n;
+    const double* bound = state + n;
+    const double* h = bound + n;
+    for (std::size_t i = 0; i < touched; ++i) {
+        displacement_[i] = u[i];
+        stress_[i] = t[i];
+        state_[i] = static_cast<TangentialState>(static_cast<std::uint8_t>(state[i]));
+        limit_[i] = bound[i];
+    }
+    for (std::size_t k = 0; k < branches; ++k) {
+        for (std::size_t i = 0; i < touched; ++i) memory_[k * n + i] = h[k * n + i];
+    }
+    touched_ = touched;
+    high_water_ = std::max(high_water_, touched_);
 }
 
 double TangentialLayer::stick_slope() const {

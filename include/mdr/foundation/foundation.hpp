@@ -95,6 +95,20 @@ public:
     /// step's stiffness.
     double force_slope() const;
 
+    /// Doubles of the state that persists between steps (saved by save_state) for `count` elements and `branches`
+    /// relaxation branches: 3 + count (branches + 3).
+    static std::size_t state_size(std::size_t count, std::size_t branches) { return 3 + count * (branches + 3); }
+    /// Writes the persistent state (depth, force, touched elements; w_i, sigma_i, contact flag, h_{k,i}) into `out`
+    /// (state_size(size(), branches) doubles); the untouched elements are left as they are there.
+    void save_state(std::span<double> out) const;
+    /// Replaces the state with one written by save_state (or zeros: no contact yet) by a foundation of the same
+    /// size and material. Call begin_step after it.
+    void load_state(std::span<const double> in);
+    /// Reserves room for an event at every element, so that no later step allocates.
+    void reserve_events();
+    /// Line loads q_z,i [N/m] into `out` (size() values), without allocating.
+    void line_loads(std::span<double> out) const;
+
     /// Element displacements w_i [m].
     std::span<const double> displacements() const { return displacement_; }
     /// Line load q_z(x_i) = F_N(x_i)/dx = 4 sigma_i [N/m] (eq. 22).
@@ -148,6 +162,7 @@ private:
     double latest_exit_ = 0.0;                 ///< see latest_exit()
     StepCoefficients step_;
     std::size_t active_ = 0;                   ///< elements [active_, n) have never been touched: w = h = 0
+    std::size_t high_water_ = 0;               ///< the largest active_ any loaded or stepped state had
     double total_force_ = 0.0;
 };
 

@@ -60,6 +60,15 @@ public:
                              std::span<const std::uint8_t> contact) const;
     /// Number of elements.
     std::size_t size() const { return displacement_.size(); }
+    /// Doubles of the state that persists between steps (saved by save_state) for `count` elements and `branches`
+    /// relaxation branches: 2 + count (branches + 4).
+    static std::size_t state_size(std::size_t count, std::size_t branches) { return 2 + count * (branches + 4); }
+    /// Writes the persistent state (force, touched elements; u_i, t_i, state, limit, h_{k,i}) into `out`; the
+    /// untouched elements are left as they are there.
+    void save_state(std::span<double> out) const;
+    /// Replaces the state with one written by save_state (or zeros) by a layer of the same size and material. Call
+    /// begin_step after it.
+    void load_state(std::span<const double> in);
     /// Advances the state over the prepared step (arguments as for trial_force).
     void advance(double increment, std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact);
 
@@ -110,6 +119,7 @@ private:
     std::vector<double> rate_gain_;         ///< (1 - B_k) tau_k / dt of the prepared step, one per branch
     StepCoefficients step_;
     std::size_t touched_ = 0;               ///< elements [touched_, n) have never been in contact: u = h = 0
+    std::size_t high_water_ = 0;            ///< the largest touched_ any loaded or stepped state had
     double total_force_ = 0.0;
     double material_work_ = 0.0;
     double friction_work_ = 0.0;
