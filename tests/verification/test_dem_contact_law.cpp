@@ -186,5 +186,49 @@ time_step = {}
                 1e-10 * result.impact->oblique->max_tangential_force);
 }
 
+TEST(DemContactLaw, RestitutionAccuracyAtTwentyAndFiftyElements) {
+    // What a DEM user gets from a coarse law: the restitution map's impact (examples/restitution_map.toml, p2 = 3)
+    // at v_t0 = 2 mu v_n0 over p1 (tau1 = 1e-4 .. 1e-2 s), with 20 and 50 elements on the half-width (1.2 times the
+    // elastic radius at G_inf, as by default) against 2000 (converged to 1e-6); the law is the same code
+    // (TwoSphereCollisionMatchesMdrRunToRoundOff). Observed: N = 20 within 3e-4, N = 50 within 1.3e-5.
+    for (const double tau : {1e-4, 1e-3, 1e-2}) {
+        const auto run = [&](int elements) {
+            return testing::run_toml(fmt::format(R"(
+[material]
+model = "standard"
+G_inf = 1.0e6
+G1 = 3.0e6
+tau1 = {}
+[indenter]
+shape = "sphere"
+R = 0.01
+mass = 3.27e-2
+[load]
+control = "impact"
+velocity = 0.1
+tangential_velocity = 0.06
+[tangential]
+friction = 0.3
+[numerics]
+elements = {}
+)",
+                                                 tau, elements));
+        };
+        const auto converged = run(2000);
+        for (const int elements : {20, 50}) {
+            const auto coarse = run(elements);
+            const double normal = coarse.impact->restitution - converged.impact->restitution;
+            const double tangential = coarse.impact->oblique->tangential_restitution -
+                                      converged.impact->oblique->tangential_restitution;
+            RecordProperty(fmt::format("restitution_error_N{}_tau{}", elements, tau), fmt::format("{:.1e}", normal));
+            RecordProperty(fmt::format("tangential_restitution_error_N{}_tau{}", elements, tau),
+                           fmt::format("{:.1e}", tangential));
+            const double bound = elements == 20 ? 5e-4 : 3e-5;
+            EXPECT_LT(std::abs(normal), bound) << "N = " << elements << ", tau1 = " << tau;
+            EXPECT_LT(std::abs(tangential), bound) << "N = " << elements << ", tau1 = " << tau;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace mdr
