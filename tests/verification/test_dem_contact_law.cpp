@@ -192,7 +192,7 @@ TEST(DemContactLaw, RestitutionAccuracyAtTwentyAndFiftyElements) {
     // elastic radius at G_inf, as by default) against 2000 (converged to 1e-6); the law is the same code
     // (TwoSphereCollisionMatchesMdrRunToRoundOff). Observed: N = 20 within 3e-4, N = 50 within 1.3e-5.
     for (const double tau : {1e-4, 1e-3, 1e-2}) {
-        const auto run = [&](int elements) {
+        const auto run = [&](int count) {
             return testing::run_toml(fmt::format(R"(
 [material]
 model = "standard"
@@ -212,20 +212,20 @@ friction = 0.3
 [numerics]
 elements = {}
 )",
-                                                 tau, elements));
+                                                 tau, count));
         };
         const auto converged = run(2000);
-        for (const int elements : {20, 50}) {
-            const auto coarse = run(elements);
+        for (const int count : {20, 50}) {
+            const auto coarse = run(count);
             const double normal = coarse.impact->restitution - converged.impact->restitution;
             const double tangential = coarse.impact->oblique->tangential_restitution -
                                       converged.impact->oblique->tangential_restitution;
-            RecordProperty(fmt::format("restitution_error_N{}_tau{}", elements, tau), fmt::format("{:.1e}", normal));
-            RecordProperty(fmt::format("tangential_restitution_error_N{}_tau{}", elements, tau),
+            RecordProperty(fmt::format("restitution_error_N{}_tau{}", count, tau), fmt::format("{:.1e}", normal));
+            RecordProperty(fmt::format("tangential_restitution_error_N{}_tau{}", count, tau),
                            fmt::format("{:.1e}", tangential));
-            const double bound = elements == 20 ? 5e-4 : 3e-5;
-            EXPECT_LT(std::abs(normal), bound) << "N = " << elements << ", tau1 = " << tau;
-            EXPECT_LT(std::abs(tangential), bound) << "N = " << elements << ", tau1 = " << tau;
+            const double bound = count == 20 ? 5e-4 : 3e-5;
+            EXPECT_LT(std::abs(normal), bound) << "N = " << count << ", tau1 = " << tau;
+            EXPECT_LT(std::abs(tangential), bound) << "N = " << count << ", tau1 = " << tau;
         }
     }
 }
