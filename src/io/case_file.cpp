@@ -283,6 +283,11 @@ std::string describe(const drivers::ContactCase& contact_case) {
     if (contact_case.impact) {
         load = fmt::format("impact of m = {:.4g} kg at v0 = {:.4g} m/s", contact_case.impact->mass,
                            contact_case.impact->velocity);
+        if (const auto& oblique = contact_case.oblique) {
+            load += fmt::format(", oblique: v_t0 = {:.4g} m/s, omega0 = {:.4g} rad/s, I = {:.4g} kg m^2, mu = {:.4g}",
+                                oblique->tangential_velocity, oblique->spin, oblique->moment_of_inertia,
+                                oblique->friction);
+        }
     } else {
         load = fmt::format("{} control, {} history points over t = {:.4g} .. {:.4g} s",
                            contact_case.control == drivers::Control::force ? "force" : "displacement",

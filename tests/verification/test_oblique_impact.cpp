@@ -194,5 +194,17 @@ TEST(ObliqueImpact, ConvergenceOrders) {
     EXPECT_NEAR(by_default.impact->oblique->tangential_restitution, in_time.back(), 1e-4);
 }
 
+TEST(ObliqueImpact, ALightContactPointIsResolvedByDefault) {
+    // I = 0.005 m R^2: m_t = m/201, the contact point oscillates ~8x faster than a solid sphere's; the default step
+    // shrinks with sqrt(m_t) and stays within 1e-4 of a four times finer step.
+    ObliqueImpact c = at_incidence(viscoelastic, 1.0);
+    c.inertia_factor = 0.005;
+    const auto by_default = run_toml(oblique_case(c));
+    const auto finer = run_toml(oblique_case(c, fmt::format("[numerics]\ntime_step = {}",
+                                                            by_default.numerics.time_step / 4.0)));
+    EXPECT_NEAR(by_default.impact->oblique->tangential_restitution, finer.impact->oblique->tangential_restitution,
+                1e-4);
+}
+
 }  // namespace
 }  // namespace mdr

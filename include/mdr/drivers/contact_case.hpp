@@ -110,8 +110,9 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// with the instantaneous spring modulus over default_steps (and the material-time rule), the half-width 1.2
 /// times the elastic contact radius with the equilibrium modulus (an upper bound: the viscoelastic body is
 /// stiffer and dissipates); with a parallel dashpot the step is at most the braking time m / (8 eta a) over
-/// braking_steps (an overdamped impact is decided on that scale). A harmonic tangential load caps the default time
-/// step at its period over default_steps_per_period. Throws mdr::InvalidInput for a problem that breaks a rule (validate) or would exceed
+/// braking_steps (an overdamped impact is decided on that scale); an oblique impact whose contact point is
+/// lighter than a solid sphere's (m_t < 2/7 m) has the step scaled by sqrt(m_t / (2/7 m)). A harmonic tangential
+/// load caps the default time step at its period over default_steps_per_period. Throws mdr::InvalidInput for a problem that breaks a rule (validate) or would exceed
 /// its bounds of work or memory (require_bounded_work).
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case);
 
