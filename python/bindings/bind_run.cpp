@@ -50,6 +50,10 @@ py::dict run_toml_case(const std::string& toml_text, const std::string& source, 
         history["Fx"] = to_array(result.tangential_force);
         history["c"] = to_array(result.stick_radius);
     }
+    if (!result.spin.empty()) {
+        history["v_t"] = to_array(result.tangential_velocity);
+        history["omega"] = to_array(result.spin);
+    }
     py::dict profiles;
     std::vector<double> t, r, p, w, tau;
     for (const auto& snapshot : result.snapshots) {

@@ -21,7 +21,7 @@ namespace {
 
 std::shared_ptr<const profile::Profile> read_indenter(TableReader& table) {
     const std::string shape = table.string("shape");
-    std::vector<std::string> known{"shape", "mass", "material"};
+    std::vector<std::string> known{"shape", "mass", "moment_of_inertia", "material"};
     const auto with = [&](std::initializer_list<const char*> keys) {
         for (const char* key : keys) known.emplace_back(key);
         table.reject_unknown(known);
@@ -126,6 +126,45 @@ drivers::TangentialLoad read_tangential(TableReader& table) {
     return load;
 }
 
+bool is_oblique(const TableReader& load) {
+    return load.has("tangential_velocity") || load.has("incidence_deg") || load.has("spin");
+}
+
+// The tangential part of an impact: `[load] tangential_velocity` (or `incidence_deg`) and `spin`, `[indenter]
+// moment_of_inertia` (a solid sphere's 2/5 m R^2 by default) and `[tangential] friction`.
+drivers::ObliqueImpactLoad read_oblique(TableReader& load, TableReader& indenter,
+                                        std::optional<TableReader>& tangential, const drivers::ImpactLoad& impact) {
+    if (!tangential || !tangential->has("friction")) {
+        throw InvalidInput("tangential.friction", "(missing)", "is required for an oblique impact");
+    }
+    for (const char* key : {"control", "history", "amplitude", "frequency", "start", "end"}) {
+        if (tangential->has(key)) {
+            throw InvalidInput("tangential." + std::string(key), tangential->text(key),
+                               "a tangential load history is not for an impact; an oblique impact takes only "
+                               "tangential.friction, with load.tangential_velocity or load.spin");
+        }
+    }
+    tangential->reject_unknown({"friction"});
+    if (indenter.string("shape") != "sphere") {
+        throw InvalidInput("indenter.shape", "\"" + indenter.string("shape") + "\"",
+                           "an oblique impact needs shape = \"sphere\" (its radius is the lever of the friction)");
+    }
+    if (load.has("tangential_velocity") && load.has("incidence_deg")) {
+        throw InvalidInput("load.incidence_deg", load.text("incidence_deg"), "give either it or tangential_velocity");
+    }
+    drivers::ObliqueImpactLoad oblique;
+    oblique.friction = tangential->number("friction");
+    oblique.radius = indenter.number("R");
+    oblique.tangential_velocity = load.optional_number("tangential_velocity").value_or(0.0);
+    if (auto incidence = load.optional_number("incidence_deg")) {
+        oblique.tangential_velocity = drivers::incidence_velocity(impact.velocity, *incidence);
+    }
+    oblique.spin = load.optional_number("spin").value_or(0.0);
+    oblique.moment_of_inertia =
+        indenter.optional_number("moment_of_inertia").value_or(0.4 * impact.mass * oblique.radius * oblique.radius);
+    return oblique;
+}
+
 }  // namespace
 
 toml::table parse_toml(std::string_view toml_text, const std::string& source) {
@@ -165,7 +204,8 @@ drivers::ContactCase read_case(const toml::table& root_table) {
 
     auto load = root.table("load");
     if (!load) throw InvalidInput("load", "(missing)", "is required");
-    load->reject_unknown({"control", "history", "velocity", "end", "harmonic", "spring_constant"});
+    load->reject_unknown({"control", "history", "velocity", "end", "harmonic", "spring_constant",
+                          "tangential_velocity", "incidence_deg", "spin"});
     const std::string control_name = load->string("control");
     drivers::Control control;
     if (control_name == "displacement") control = drivers::Control::displacement;
@@ -213,8 +253,18 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     if (auto end = load->optional_number("end")) end_time = *end;
 
     std::optional<drivers::TangentialLoad> tangential;
+    std::optional<drivers::ObliqueImpactLoad> oblique;
     bool approximate = false;
-    if (auto table = root.table("tangential")) {
+    auto tangential_table = root.table("tangential");
+    const bool oblique_keys = is_oblique(*load) || indenter_table->has("moment_of_inertia");
+    if (impact && (tangential_table || oblique_keys)) {
+        oblique = read_oblique(*load, *indenter_table, tangential_table, *impact);
+        // Exact only for an incompressible body and a rigid sphere (section 7); drivers::validate refuses the rest.
+        approximate = shear_material.has_value() || indenter_table->has("material");
+    } else if (oblique_keys) {
+        throw InvalidInput(is_oblique(*load) ? "load.tangential_velocity" : "indenter.moment_of_inertia", "[...]",
+                           "only with control = \"impact\" (an oblique impact)");
+    } else if (auto table = std::move(tangential_table)) {
         tangential = read_tangential(*table);
         if (!load->has("end")) end_time = std::max(end_time, tangential->end_time());
         // Exact only for elastically similar bodies (section 7): compressible or two bodies make it approximate.
@@ -241,7 +291,8 @@ drivers::ContactCase read_case(const toml::table& root_table) {
 
     drivers::ContactCase contact_case{title,    std::move(material),  std::move(indenter), control,
                                       std::move(history), end_time, std::move(snapshots), numerics,
-                                      std::move(shear_material), impact, std::move(tangential), approximate};
+                                      std::move(shear_material), impact, std::move(tangential), approximate,
+                                      oblique};
     contact_case.harmonic = harmonic;
     contact_case.spring_constant = spring_constant;
     contact_case.units = units;
@@ -271,6 +322,11 @@ std::string describe(const drivers::ContactCase& contact_case) {
     if (contact_case.impact) {
         load = fmt::format("impact of m = {:.4g} {} at v0 = {:.4g} {}", contact_case.impact->mass, units.mass,
                            contact_case.impact->velocity, units.velocity());
+        if (const auto& oblique = contact_case.oblique) {
+            load += fmt::format(", oblique: v_t0 = {:.4g} {}, omega0 = {:.4g} rad/s, I = {:.4g} {} {}^2, mu = {:.4g}",
+                                oblique->tangential_velocity, units.velocity(), oblique->spin,
+                                oblique->moment_of_inertia, units.mass, units.length, oblique->friction);
+        }
     } else {
         load = fmt::format("{} control, {} history points over t = {:.4g} .. {:.4g} {}",
                            contact_case.control == drivers::Control::force    ? "force"
