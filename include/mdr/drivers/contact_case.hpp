@@ -11,6 +11,7 @@
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/drivers/tangential_load.hpp"
 #include "mdr/profile/profile.hpp"
+#include "mdr/rheology/approximation.hpp"
 #include "mdr/rheology/rheology.hpp"
 
 namespace mdr::drivers {
@@ -68,6 +69,8 @@ struct ContactCase {
     /// True when tangential loading meets compressible or two different bodies: the MDR mapping is then exact for
     /// the normal problem only (section 7) and the tangential result an approximation.
     bool tangential_approximate = false;
+    /// The model behind `material` (its description; for a model converted to a series, the certificate).
+    rheology::MaterialOrigin material_origin{};
 };
 
 /// Elements on the half-width when `[numerics] elements` is not given. With the half-width 1.1 times the largest
