@@ -26,31 +26,18 @@ py::array vectorised(const Array& input, F f) {
 }  // namespace
 
 void bind_rheology(py::module_& module) {
-    py::class_<Rheology>(module, "Material",
+    py::class_<Rheology> material(module, "Material",
                          "Linear viscoelastic material G(t) = G_inf + eta delta(t) + sum G_k exp(-t/tau_k) "
-                         "(handbook Table 1). Build it with the static factories.")
-        .def(py::init([](double G_inf, double eta, const std::vector<std::pair<double, double>>& terms) {
+                         "(handbook Table 1). Build it with the static factories.");
+    material.def(py::init([](double G_inf, double eta, const std::vector<std::pair<double, double>>& terms) {
                  std::vector<rheology::RelaxationTerm> list;
                  for (const auto& [modulus, time] : terms) list.push_back({modulus, time});
                  return Rheology(G_inf, eta, std::move(list));
              }),
              py::arg("G_inf"), py::arg("eta") = 0.0, py::arg("terms") = std::vector<std::pair<double, double>>{},
-             "The canonical form: equilibrium modulus, parallel viscosity and (G_k, tau_k) branches.")
-        .def_static("elastic", &Rheology::elastic, py::arg("G"), "Elastic body, G(t) = G.")
-        .def_static("viscous", &Rheology::viscous, py::arg("eta"), "Viscous body, G(t) = eta delta(t).")
-        .def_static("kelvin_voigt", &Rheology::kelvin_voigt, py::arg("G"), py::arg("eta"),
-                    "Kelvin-Voigt body, G(t) = G + eta delta(t).")
-        .def_static("maxwell", &Rheology::maxwell, py::arg("G"), py::arg("tau"), "Maxwell body, G(t) = G exp(-t/tau).")
-        .def_static("standard", &Rheology::standard, py::arg("G_inf"), py::arg("G1"), py::arg("tau1"),
-                    "Standard solid, G(t) = G_inf + G1 exp(-t/tau1).")
-        .def_static(
-            "prony",
-            [](double G_inf, const std::vector<std::pair<double, double>>& terms) {
-                std::vector<rheology::RelaxationTerm> list;
-                for (const auto& [modulus, time] : terms) list.push_back({modulus, time});
-                return Rheology::prony(G_inf, std::move(list));
-            },
-            py::arg("G_inf"), py::arg("terms"), "Prony series, G(t) = G_inf + sum G_k exp(-t/tau_k); terms = [(G_k, tau_k)].")
+             "The canonical form: equilibrium modulus, parallel viscosity and (G_k, tau_k) branches.");
+    bind_material_models(material);  // mdr.Material.<model>(...) for every registered model
+    material
         .def("relaxation", [](const Rheology& m, const Array& t) { return vectorised(t, [&](double x) { return m.relaxation(x); }); },
              py::arg("t"), "G(t) [Pa] at each time (the regular part; a dashpot's delta is left out).")
         .def("creep", [](const Rheology& m, const Array& t) { return vectorised(t, [&](double x) { return m.creep(x); }); },

@@ -1,0 +1,66 @@
+"""The registry of material models from Python (issue 9) and the power-law material (issue 12)."""
+
+import math
+import os
+import pathlib
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import mdr
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+
+
+def test_stubs_and_docs_follow_the_registry():
+    completed = subprocess.run([sys.executable, str(ROOT / "scripts" / "material-reference"), "--check"],
+                               capture_output=True, text=True, timeout=60, env=dict(os.environ))
+    assert completed.returncode == 0, completed.stderr
+
+
+def test_every_registered_model_is_a_factory():
+    for model in mdr._mdr._material_models():
+        assert callable(getattr(mdr.Material, model["name"])), model["name"]
+        assert model["documentation"] in getattr(mdr.Material, model["name"]).__doc__
+
+
+def test_factories_take_positional_and_keyword_arguments():
+    a = mdr.Material.standard(1e6, 2e6, 0.1)
+    b = mdr.Material.standard(G_inf=1e6, tau1=0.1, G1=2e6)
+    assert a.terms == b.terms == [(2e6, 0.1)] and a.G_inf == b.G_inf == 1e6
+    with pytest.raises(ValueError, match=r"^H = 3: unknown key; valid keys: G$"):
+        mdr.Material.elastic(H=3)
+    with pytest.raises(ValueError, match=r"^G1 = \(missing\): is required$"):
+        mdr.Material.standard(G_inf=1.0, tau1=1.0)
+
+
+@pytest.mark.parametrize("beta", [0.05, 0.3, 0.7])
+def test_power_law_series_is_certified_over_its_window(beta):
+    G0, t0 = 2e3, 0.5
+    material = mdr.Material.power_law(G0, beta, t0, window=(1e-4, 1e2))
+    t = np.geomspace(1e-4, 1e2, 777)
+    np.testing.assert_allclose(material.relaxation(t), G0 * (t / t0) ** -beta, rtol=1e-4, atol=0)
+    omega = 1 / t
+    exact = G0 * math.gamma(1 - beta) * (1j * omega * t0) ** beta
+    assert np.max(np.abs(material.complex_modulus(omega) - exact) / np.abs(exact)) < 1e-4
+    with pytest.raises(ValueError, match=r"^window = \(missing\)"):
+        mdr.Material.power_law(G0, beta)
+    with pytest.raises(ValueError, match=r"^beta = 1: must be > 0 and < 1$"):
+        mdr.Material.power_law(G0, 1.0, window=(1e-3, 1.0))
+
+
+def test_power_law_case_reports_its_certificate():
+    case = {
+        "material": {"model": "power_law", "G0": 1e3, "beta": 0.2, "t0": 1.0},
+        "indenter": {"shape": "sphere", "R": 1e-5},
+        "load": {"control": "displacement", "history": [[0.0, 0.0], [1.0, 1e-6]]},
+        "numerics": {"elements": 200},
+    }
+    result = mdr.run(case)
+    assert 0 < result.summary["material_error"] <= 1e-4
+    assert result.summary["material_window"] == [pytest.approx(1.0 / 2000 / 5), 1.0]
+    assert "power_law (G0 = 1000 Pa, beta = 0.2, t0 = 1 s)" in result.description
+    exact = 8 * math.sqrt(1e-5) * 1e3 * 1e-9 * math.gamma(1.5) * math.gamma(0.8) / math.gamma(2.3)
+    assert result.summary["max_force"] == pytest.approx(exact, rel=1e-3)  # 200 elements: coarse
