@@ -97,6 +97,11 @@ void bind_material_models(py::class_<rheology::Rheology>& material) {
         material.def_static(
             model.name.c_str(), [&model](const py::args& args, const py::kwargs& kwargs) { return build(model, args, kwargs); },
             docstring(model).c_str());
+        if (model.name == "table") {  // the name of the issue and of the docs: mdr.Material.from_table(...)
+            material.def_static(
+                "from_table", [&model](const py::args& args, const py::kwargs& kwargs) { return build(model, args, kwargs); },
+                docstring(model).c_str());
+        }
     }
 }
 

@@ -4,6 +4,9 @@
 
 #include "mdr/error.hpp"
 #include "mdr/rheology/power_law.hpp"
+#include "mdr/rheology/table_material.hpp"
+
+#include <filesystem>
 
 namespace mdr::rheology {
 namespace {
@@ -31,6 +34,40 @@ ModelMaterial build_power_law(const ModelParameters& p, const ConversionOptions&
     const PowerLaw model{p.number("G0"), p.number("beta"), p.number("t0")};
     model.validate();
     Approximation approximation = approximate(model, *options.window, options.tolerance);
+    return {std::move(approximation.series), {"", approximation.certificate, approximation.model}};
+}
+
+ModelMaterial build_table(const ModelParameters& p, const ConversionOptions& options) {
+    const auto given = [&](const char* key) { return p.has(key); };
+    const int sources = (given("G") ? 1 : 0) + (given("J") ? 1 : 0) + (given("storage") || given("loss") ? 1 : 0) +
+                        (given("file") ? 1 : 0);
+    const char* rule = "give one of: t with G, t with J, omega with storage and loss, or file";
+    if (sources != 1) throw InvalidInput("model", "\"table\"", rule);
+    MaterialTable table;
+    if (given("file")) {
+        std::filesystem::path path = p.texts.at("file");
+        if (path.is_relative() && !options.directory.empty()) path = std::filesystem::path(options.directory) / path;
+        table = read_material_table(path);
+        for (const char* key : {"t", "omega"}) {
+            if (given(key)) throw InvalidInput(key, "[...]", "not with file (the file holds the columns)");
+        }
+    } else {
+        table.quantity = given("G") ? TableQuantity::relaxation : given("J") ? TableQuantity::creep : TableQuantity::dynamic;
+        const auto array = [&](const char* key) {
+            const auto found = p.arrays.find(key);
+            if (found == p.arrays.end()) throw InvalidInput(key, "(missing)", rule);
+            return found->second;
+        };
+        table.abscissa = array(table.abscissa_key());
+        table.values = array(table.values_key());
+        if (table.quantity == TableQuantity::dynamic) table.loss = array("loss");
+        for (const char* key : {"t", "omega"}) {
+            if (given(key) && std::string(key) != table.abscissa_key()) {
+                throw InvalidInput(key, "[...]", std::string("not with ") + table.values_key());
+            }
+        }
+    }
+    Approximation approximation = fit_table(table);
     return {std::move(approximation.series), {"", approximation.certificate, approximation.model}};
 }
 
@@ -68,6 +105,17 @@ std::vector<MaterialModel> rows() {
          {modulus("G0", "modulus at t = t0"), {"beta", Kind::number, "1", "exponent, 0 < beta < 1"},
           {"t0", Kind::number, "s", "reference time", false, 1.0}},
          true, build_power_law},
+        {"table",
+         "measured G(t), J(t) or G'(omega), G''(omega), as a Prony series fitted by non-negative least squares",
+         {{"t", Kind::numbers, "s", "times of G or J, ascending", false},
+          {"G", Kind::numbers, "Pa", "relaxation modulus at t", false},
+          {"J", Kind::numbers, "1/Pa", "creep compliance at t", false},
+          {"omega", Kind::numbers, "rad/s", "angular frequencies of storage and loss, ascending", false},
+          {"storage", Kind::numbers, "Pa", "storage modulus G' at omega", false},
+          {"loss", Kind::numbers, "Pa", "loss modulus G'' at omega", false},
+          {"file", Kind::text, "path", "a CSV with the header t,G or t,J or omega,storage,loss (relative to the case)",
+           false}},
+         false, build_table},
     };
 }
 

@@ -64,3 +64,40 @@ def test_power_law_case_reports_its_certificate():
     assert "power_law (G0 = 1000 Pa, beta = 0.2, t0 = 1 s)" in result.description
     exact = 8 * math.sqrt(1e-5) * 1e3 * 1e-9 * math.gamma(1.5) * math.gamma(0.8) / math.gamma(2.3)
     assert result.summary["max_force"] == pytest.approx(exact, rel=1e-3)  # 200 elements: coarse
+
+
+TRUTH = mdr.Material.prony(G_inf=1e5, terms=[(3e5, 2.3e-3), (1e6, 0.047), (4e5, 1.9)])
+
+
+def test_table_from_arrays_recovers_a_prony_series():
+    t = np.geomspace(1e-4, 1e2, 41)
+    fitted = mdr.Material.from_table(t=t, G=TRUTH.relaxation(t))
+    dense = np.geomspace(1e-4, 1e2, 1001)
+    np.testing.assert_allclose(fitted.relaxation(dense), TRUTH.relaxation(dense), rtol=1e-6)
+    w = np.geomspace(1e-2, 1e4, 41)
+    modulus = TRUTH.complex_modulus(w)
+    fitted = mdr.Material.table(omega=w, storage=modulus.real, loss=modulus.imag)
+    np.testing.assert_allclose(fitted.relaxation(dense), TRUTH.relaxation(dense), rtol=1e-6)
+
+
+def test_table_case_from_a_csv_next_to_the_case(tmp_path):
+    t = np.geomspace(1e-3, 10.0, 31)
+    rows = "\n".join(f"{x!r},{y!r}" for x, y in zip(t, TRUTH.creep(t)))
+    (tmp_path / "creep.csv").write_text("t,J\n" + rows + "\n", encoding="utf-8")
+    (tmp_path / "case.toml").write_text(
+        '[material]\nmodel = "table"\nfile = "creep.csv"\n'
+        '[indenter]\nshape = "sphere"\nR = 0.01\n'
+        '[load]\ncontact = 1\n'.replace("contact = 1", 'control = "displacement"\nhistory = [[0.0, 0.0], [1.0, 1e-5]]')
+        + '[numerics]\nelements = 100\n', encoding="utf-8")
+    elsewhere = subprocess.run([os.environ.get("MDR_BINARY", "build/bin/mdr"), "check", str(tmp_path / "case.toml")],
+                               capture_output=True, text=True, timeout=60, cwd="/")
+    assert elsewhere.returncode == 0, elsewhere.stderr
+    assert 'table (file = "creep.csv")' in elsewhere.stdout and "fit residual" in elsewhere.stdout
+    result = mdr.run(str(tmp_path / "case.toml"))
+    assert result.summary["material_error"] < 1e-6
+    assert result.summary["material_window"] == [pytest.approx(1e-3), pytest.approx(10.0)]
+    (tmp_path / "creep.csv").write_text("t,J\n1,2\n2,1\n", encoding="utf-8")
+    refused = subprocess.run([os.environ.get("MDR_BINARY", "build/bin/mdr"), "check", str(tmp_path / "case.toml")],
+                             capture_output=True, text=True, timeout=60)
+    assert refused.returncode == 2
+    assert refused.stderr.startswith("mdr: error: material.J[1] = 1: below the earlier 2: a creep compliance cannot")
