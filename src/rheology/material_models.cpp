@@ -4,9 +4,11 @@
 
 #include "mdr/error.hpp"
 #include "mdr/rheology/power_law.hpp"
+#include "mdr/rheology/springpot.hpp"
 #include "mdr/rheology/table_material.hpp"
 
 #include <filesystem>
+#include <limits>
 
 namespace mdr::rheology {
 namespace {
@@ -32,6 +34,17 @@ std::vector<RelaxationTerm> relaxation_terms(const ModelParameters& p) {
 
 ModelMaterial build_power_law(const ModelParameters& p, const ConversionOptions& options) {
     const PowerLaw model{p.number("G0"), p.number("beta"), p.number("t0")};
+    model.validate();
+    Approximation approximation = approximate(model, *options.window, options.tolerance);
+    return {std::move(approximation.series), {"", approximation.certificate, approximation.model}};
+}
+
+ModelParameter quasi_property() {
+    return {"c", Kind::number, "Pa s^alpha", "springpot quasi-property (stress = c d^alpha strain / dt^alpha)"};
+}
+ModelParameter order() { return {"alpha", Kind::number, "1", "springpot order, 0 < alpha < 1"}; }
+
+ModelMaterial fractional(FractionalModel model, const ConversionOptions& options) {
     model.validate();
     Approximation approximation = approximate(model, *options.window, options.tolerance);
     return {std::move(approximation.series), {"", approximation.certificate, approximation.model}};
@@ -105,6 +118,32 @@ std::vector<MaterialModel> rows() {
          {modulus("G0", "modulus at t = t0"), {"beta", Kind::number, "1", "exponent, 0 < beta < 1"},
           {"t0", Kind::number, "s", "reference time", false, 1.0}},
          true, build_power_law},
+        {"springpot", "G(t) = c t^(-alpha) / Gamma(1 - alpha): a springpot (Scott Blair), as a certified Prony series",
+         {quasi_property(), order()}, true,
+         [](const ModelParameters& p, const ConversionOptions& options) {
+             return fractional({0.0, std::numeric_limits<double>::infinity(), p.number("c"), p.number("alpha")}, options);
+         }},
+        {"fractional_kelvin_voigt", "G(t) = G + c t^(-alpha) / Gamma(1 - alpha): a spring and a springpot in parallel",
+         {modulus("G", "spring modulus"), quasi_property(), order()}, true,
+         [](const ModelParameters& p, const ConversionOptions& options) {
+             return fractional({p.number("G"), std::numeric_limits<double>::infinity(), p.number("c"), p.number("alpha")},
+                               options);
+         }},
+        {"fractional_maxwell", "G(t) = G E_alpha(-(t/tau)^alpha), tau^alpha = c/G: a spring and a springpot in series",
+         {modulus("G", "spring modulus"), quasi_property(), order()}, true,
+         [](const ModelParameters& p, const ConversionOptions& options) {
+             require_positive("G", p.number("G"));
+             return fractional({0.0, p.number("G"), p.number("c"), p.number("alpha")}, options);
+         }},
+        {"fractional_standard", "G(t) = G_inf + G1 E_alpha(-(t/tau)^alpha), tau^alpha = c/G1: the fractional standard solid",
+         {modulus("G_inf", "equilibrium modulus"), modulus("G1", "spring of the fractional Maxwell branch"),
+          quasi_property(), order()},
+         true,
+         [](const ModelParameters& p, const ConversionOptions& options) {
+             require_positive("G_inf", p.number("G_inf"));
+             require_positive("G1", p.number("G1"));
+             return fractional({p.number("G_inf"), p.number("G1"), p.number("c"), p.number("alpha")}, options);
+         }},
         {"table",
          "measured G(t), J(t) or G'(omega), G''(omega), as a Prony series fitted by non-negative least squares",
          {{"t", Kind::numbers, "s", "times of G or J, ascending", false},
