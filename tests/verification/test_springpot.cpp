@@ -72,10 +72,11 @@ namespace {
 
 TEST(SpringpotModels, LibraryMittagLefflerMatchesTheOracle) {
     // The library certifies against its own spectral quadrature; the oracle is series + Talbot inversion, whose
-    // double-precision round-off (~1e-9 relative for alpha near 1, where E is tiny at large x) sets the bound.
+    // double-precision round-off (up to ~2e-8 relative for alpha = 0.99 at large x, where E is tiny; there the library matches
+    // the asymptotic series to 5e-12) sets the bound.
     for (double alpha : {0.03, 0.1, 0.5, 0.9, 0.99}) {
         for (double x = 1e-6; x < 1e6; x *= 3.7) {
-            EXPECT_NEAR(rheology::mittag_leffler_decay(alpha, x) / reference::mittag_leffler(alpha, x), 1.0, 1e-8)
+            EXPECT_NEAR(rheology::mittag_leffler_decay(alpha, x) / reference::mittag_leffler(alpha, x), 1.0, 5e-8)
                 << alpha << " " << x;
         }
     }
