@@ -7,8 +7,12 @@ namespace {
 
 // The key as a table of `modulus` writes it: K for the leading G of a bulk table (G_inf -> K_inf).
 std::string table_key(const std::string& key, bool bulk) {
-    return bulk && !key.empty() && key[0] == 'G' ? "K" + key.substr(1) : key;
+    std::string renamed = key;
+    if (bulk && !renamed.empty() && renamed[0] == 'G') renamed[0] = 'K';
+    return renamed;
 }
+
+std::string bulk_key(const std::string& key) { return table_key(key, true); }
 
 }  // namespace
 
@@ -56,7 +60,9 @@ rheology::ModelMaterial build_material(const MaterialSpec& spec, const std::opti
     try {
         rheology::ConversionOptions options{window, spec.tolerance.value_or(rheology::default_material_tolerance),
                                             directory};
-        return rheology::build_material(*spec.model, spec.parameters, options);
+        rheology::ModelMaterial material = rheology::build_material(*spec.model, spec.parameters, options);
+        if (spec.bulk) material.origin.description = rheology::describe_model(*spec.model, spec.parameters, bulk_key);
+        return material;
     } catch (const InvalidInput& error) {
         if (error.key().rfind(spec.prefix, 0) == 0) throw;
         throw InvalidInput(spec.prefix + table_key(error.key(), spec.bulk), error.value(), error.rule());

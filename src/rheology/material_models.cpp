@@ -204,19 +204,21 @@ ModelMaterial build_material(const MaterialModel& model, const ModelParameters& 
     return material;
 }
 
-std::string describe_model(const MaterialModel& model, const ModelParameters& parameters) {
+std::string describe_model(const MaterialModel& model, const ModelParameters& parameters,
+                           std::string (*rename)(const std::string&)) {
     std::string list;
     for (const ModelParameter& parameter : model.parameters) {
+        const std::string key = rename ? rename(parameter.key) : parameter.key;
         std::string item;
         if (const auto number = parameters.numbers.find(parameter.key); number != parameters.numbers.end()) {
-            item = fmt::format("{} = {}{}", parameter.key, format_value(number->second),
+            item = fmt::format("{} = {}{}", key, format_value(number->second),
                                parameter.unit == "1" ? "" : " " + parameter.unit);
         } else if (const auto pairs = parameters.pairs.find(parameter.key); pairs != parameters.pairs.end()) {
-            item = fmt::format("{} {}", pairs->second.size(), parameter.key);
+            item = fmt::format("{} {}", pairs->second.size(), key);
         } else if (const auto array = parameters.arrays.find(parameter.key); array != parameters.arrays.end()) {
-            item = fmt::format("{} values of {}", array->second.size(), parameter.key);
+            item = fmt::format("{} values of {}", array->second.size(), key);
         } else if (const auto text = parameters.texts.find(parameter.key); text != parameters.texts.end()) {
-            item = fmt::format("{} = \"{}\"", parameter.key, text->second);
+            item = fmt::format("{} = \"{}\"", key, text->second);
         }
         if (!item.empty()) list += (list.empty() ? "" : ", ") + item;
     }

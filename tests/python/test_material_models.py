@@ -101,3 +101,37 @@ def test_table_case_from_a_csv_next_to_the_case(tmp_path):
                              capture_output=True, text=True, timeout=60)
     assert refused.returncode == 2
     assert refused.stderr.startswith("mdr: error: material.J[1] = 1: below the earlier 2: a creep compliance cannot")
+
+
+def power_law_case(**material):
+    return {
+        "material": dict({"model": "power_law", "G0": 1e3, "beta": 0.2}, **material),
+        "indenter": {"shape": "sphere", "R": 1e-5},
+        "load": {"control": "displacement", "history": [[0.0, 0.0], [1.0, 1e-6]]},
+    }
+
+
+@pytest.mark.parametrize("material,message", [
+    ({"beta": 1.5}, r"^material\.beta = 1\.5: must be > 0 and < 1$"),
+    ({"G0": -1.0}, r"^material\.G0 = -1: must be > 0$"),
+    ({"xyzzy": 1.0}, r"^material\.xyzzy = 1: unknown key; valid keys: model, G0, beta, t0, tolerance, K, bulk$"),
+    ({"bet": 0.3}, r"^material\.bet = 0\.3: unknown key; did you mean 'beta'\?$"),
+    ({"tolerance": 0.5}, r"^material\.tolerance = 0\.5: must be from 1e-10 to 0\.1$"),
+    ({"bulk": {"model": "power_law", "G0": 1e3, "beta": 0.2}}, r"^material\.bulk\.G0 = 1000: unknown key"),
+    ({"bulk": {"model": "power_law", "K0": -1e3, "beta": 0.2}}, r"^material\.bulk\.K0 = -1000: must be > 0$"),
+])
+def test_power_law_case_errors_name_the_key(material, message):
+    with pytest.raises(ValueError, match=message):
+        mdr.check(power_law_case(**material))
+
+
+def test_power_law_bulk_and_impact_windows():
+    assert "with bulk power_law (K0 = 3000 Pa" in mdr.check(
+        power_law_case(bulk={"model": "power_law", "K0": 3e3, "beta": 0.1}))
+    impact = dict(power_law_case(), load={"control": "impact", "velocity": 1e-3})
+    impact["indenter"] = {"shape": "sphere", "R": 1e-5, "mass": 1e-9}
+    with pytest.raises(ValueError, match=r"^load\.end = \(missing\): a material converted to a Prony series"):
+        mdr.check(impact)
+    impact["load"]["end"] = 1e-2
+    impact["numerics"] = {"time_step": 1e-6}
+    assert "relative error" in mdr.check(impact)

@@ -92,6 +92,62 @@ history = [[0.0, 0.0], [3.0, {}]]
     }
 }
 
+// Ting's triangle d = v t up to t_m, then v (2 t_m - t), on the power law: the element that entered contact at t_c
+// carries 4 Psi(t, t_c), Psi = v [Phi(t - t_c) - 2 Phi(t - t_m)] after t_m, with Phi(s) = int_0^s G =
+// G0 t0^beta s^(1-beta) / (1 - beta). Ting's edge condition Psi(t, t1) = 0 is then explicit:
+//   t1 = t - 2^(1/(1-beta)) (t - t_m),  a = sqrt(R v t1),  contact lost at t_m k / (k - 1), k = 2^(1/(1-beta)),
+// and F = 8 int_0^a Psi(t, x^2 / (R v)) dx, here by Gauss-Legendre in y = sqrt(t1) sin(theta) (which smooths the
+// endpoint behaviour of (t - y^2)^(1-beta) when t1 -> t).
+double sphere_triangle_force(double G0, double beta, double t0, double R, double v, double tm, double t) {
+    if (t <= tm) return sphere_force(G0, beta, t0, R, v, t);
+    const double k = std::pow(2.0, 1.0 / (1.0 - beta));
+    const double t1 = t - k * (t - tm);
+    if (t1 <= 0.0) return 0.0;
+    const double A = G0 * std::pow(t0, beta) / (1.0 - beta);
+    static constexpr double nodes[] = {0.1488743389816312, 0.4333953941292472, 0.6794095682990244,
+                                       0.8650633666889845, 0.9739065285171717};
+    static constexpr double weights[] = {0.2955242247147529, 0.2692667193099963, 0.2190863625159820,
+                                         0.1494513491505806, 0.0666713443086881};
+    const int panels = 400;
+    const double width = 0.5 * std::numbers::pi / panels;
+    double integral = 0.0;
+    for (int p = 0; p < panels; ++p) {
+        const double middle = (p + 0.5) * width;
+        for (int j = 0; j < 5; ++j) {
+            for (double sign : {-1.0, 1.0}) {
+                const double theta = middle + sign * 0.5 * width * nodes[j];
+                const double y = std::sqrt(t1) * std::sin(theta);
+                const double integrand = std::pow(t - y * y, 1.0 - beta) - 2.0 * std::pow(t - tm, 1.0 - beta);
+                integral += 0.5 * width * weights[j] * integrand * std::sqrt(t1) * std::cos(theta);
+            }
+        }
+    }
+    return 8.0 * v * A * std::sqrt(R * v) * integral;
+}
+
+TEST(PowerLawSphere, TingTriangleMatchesTheExplicitEdgeCondition) {
+    const double G0 = 1.0e3, t0 = 1.0, R = 1e-5, v = 1e-6, tm = 1.0;
+    for (double beta : {0.1, 0.3, 0.5}) {
+        const auto result = testing::run_toml(fmt::format(R"(
+[material]
+model = "power_law"
+G0 = {}
+beta = {}
+[indenter]
+shape = "sphere"
+R = {}
+[load]
+control = "displacement"
+history = [[0.0, 0.0], [1.0, {}], [2.0, 0.0]]
+)",
+                                                          G0, beta, R, v));
+        const double error = peak_relative_error(
+            result, [&](double t) { return sphere_triangle_force(G0, beta, t0, R, v, tm, t); });
+        RecordProperty(fmt::format("ting_error_beta_{}", beta), fmt::format("{:.2e}", error));
+        EXPECT_LT(error, 1e-4) << "beta = " << beta;
+    }
+}
+
 TEST(PowerLawCase, SummaryAndDescriptionStateTheCertificate) {
     const auto contact_case = io::parse_case(R"(
 [material]

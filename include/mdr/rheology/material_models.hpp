@@ -80,8 +80,10 @@ const MaterialModel& material_model(const std::string& name);
 ModelMaterial build_material(const MaterialModel& model, const ModelParameters& parameters,
                              const ConversionOptions& options = {});
 
-/// `name (key = value unit, ...)` for the numbers given; the one-line description of a model's parameters.
-std::string describe_model(const MaterialModel& model, const ModelParameters& parameters);
+/// `name (key = value unit, ...)` for the values given; the one-line description of a model's parameters. `rename`
+/// gives a key as the table writes it (a bulk table: K for G); none: the registry's names.
+std::string describe_model(const MaterialModel& model, const ModelParameters& parameters,
+                           std::string (*rename)(const std::string&) = nullptr);
 
 /// The description of a certificate: `as N Prony terms, error E over t = a .. b s`.
 std::string describe_certificate(const Certificate& certificate, std::size_t terms);
