@@ -107,6 +107,8 @@ def material_functions(functions: Mapping[str, np.ndarray], axes=None):
     """Relaxation G(t) and creep J(t) on log axes (functions.csv of `mdr material`; J_shear too if present)."""
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     axes.loglog(functions["t"], functions["G"], color="C0", label="G(t)")
+    if "G_model" in functions:  # a model or data standing as a series: both, side by side
+        axes.loglog(functions["t"], functions["G_model"], color="k", ls=":", label="G(t), model or data")
     axes.set(xlabel="time t [s]", ylabel="relaxation G [Pa]", title="Material functions")
     right = axes.twinx()
     right.loglog(functions["t"], functions["J"], color="C1", label="J(t)")
@@ -122,6 +124,9 @@ def dynamic_moduli(dynamic: Mapping[str, np.ndarray], axes=None):
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     axes.loglog(dynamic["omega"], dynamic["storage"], label="storage")
     axes.loglog(dynamic["omega"], np.maximum(dynamic["loss"], np.finfo(float).tiny), label="loss")
+    if "storage_model" in dynamic:  # a model or data standing as a series: both, side by side
+        axes.loglog(dynamic["omega"], dynamic["storage_model"], color="k", ls=":", label="model or data")
+        axes.loglog(dynamic["omega"], dynamic["loss_model"], color="k", ls=":")
     axes.set(xlabel="angular frequency omega [rad/s]", ylabel="modulus [Pa]", title="Complex modulus")
     axes.legend()
     return axes

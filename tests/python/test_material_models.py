@@ -135,3 +135,25 @@ def test_power_law_bulk_and_impact_windows():
     impact["load"]["end"] = 1e-2
     impact["numerics"] = {"time_step": 1e-6}
     assert "relative error" in mdr.check(impact)
+
+
+def test_material_command_shows_model_and_series_side_by_side(tmp_path):
+    case = tmp_path / "case.toml"
+    case.write_text('[material]\nmodel = "power_law"\nG0 = 1e3\nbeta = 0.3\n[indenter]\nshape = "sphere"\nR = 1e-5\n'
+                    '[load]\ncontrol = "displacement"\nhistory = [[0.0, 0.0], [1.0, 1e-6]]\n', encoding="utf-8")
+    binary = os.environ.get("MDR_BINARY", "build/bin/mdr")
+    completed = subprocess.run([binary, "material", str(case), "--out", str(tmp_path / "m")], capture_output=True,
+                               text=True, timeout=60)
+    assert completed.returncode == 0, completed.stderr
+    assert completed.stdout.startswith("power_law (G0 = 1000 Pa, beta = 0.3, t0 = 1 s) as ")
+    data = np.genfromtxt(tmp_path / "m" / "functions.csv", delimiter=",", names=True)
+    assert data["t"][0] == pytest.approx(1e-4) and data["t"][-1] == pytest.approx(1.0)  # the certified window
+    np.testing.assert_allclose(data["G_model"], 1e3 * data["t"] ** -0.3, rtol=1e-14)
+    np.testing.assert_allclose(data["G"], data["G_model"], rtol=1e-4)
+    dynamic = np.genfromtxt(tmp_path / "m" / "dynamic.csv", delimiter=",", names=True)
+    np.testing.assert_allclose(dynamic["storage"], dynamic["storage_model"], rtol=1e-4)
+    np.testing.assert_allclose(dynamic["loss"], dynamic["loss_model"], rtol=1e-4)
+    figures = subprocess.run([sys.executable, "-m", "mdr", "plot", str(tmp_path / "m")], capture_output=True,
+                             text=True, timeout=120, env=dict(os.environ, MPLBACKEND="Agg"))
+    assert figures.returncode == 0, figures.stderr
+    assert (tmp_path / "m" / "material.png").stat().st_size > 1000
