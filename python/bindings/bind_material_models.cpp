@@ -31,24 +31,24 @@ void put(rheology::ModelParameters& parameters, const rheology::ModelParameter& 
             case ParameterKind::numbers: parameters.arrays[parameter.key] = value.cast<std::vector<double>>(); break;
             case ParameterKind::text: parameters.texts[parameter.key] = value.cast<std::string>(); break;
         }
-    } catch (const py::cast_error&) {
-        throw InvalidInput(parameter.key, py::str(value).cast<std::string>(), "must be " + [&] {
-            switch (parameter.kind) {
-                case ParameterKind::number: return std::string("a number");
-                case ParameterKind::pairs: return std::string("a sequence of pairs");
-                case ParameterKind::numbers: return std::string("a sequence of numbers");
-                default: return std::string("a string");
-            }
-        }());
+    } catch (const py::cast_error&) {  // a wrong type is a TypeError in Python, as for any function
+        const char* expected = parameter.kind == ParameterKind::number    ? "a number"
+                               : parameter.kind == ParameterKind::pairs   ? "a sequence of pairs"
+                               : parameter.kind == ParameterKind::numbers ? "a sequence of numbers"
+                                                                          : "a string";
+        throw py::type_error(parameter.key + " = " + py::repr(value).cast<std::string>() + ": must be " + expected);
     }
 }
 
 rheology::Rheology build(const MaterialModel& model, const py::args& args, const py::kwargs& kwargs) {
     rheology::ModelParameters parameters;
     rheology::ConversionOptions options;
+    std::string valid;
+    for (const auto& parameter : model.parameters) valid += (valid.empty() ? "" : ", ") + parameter.key;
+    if (model.needs_window) valid += ", window, tolerance";
     if (args.size() > model.parameters.size()) {
-        throw InvalidInput(model.name, fmt::format("{} arguments", args.size()),
-                           fmt::format("takes at most {}", model.parameters.size()));
+        throw py::type_error(fmt::format("{}() takes at most {} positional arguments ({}), {} given", model.name,
+                                         model.parameters.size(), valid, args.size()));
     }
     for (std::size_t i = 0; i < args.size(); ++i) put(parameters, model.parameters[i], args[i]);
     for (const auto& [name, value] : kwargs) {
@@ -65,13 +65,19 @@ rheology::Rheology build(const MaterialModel& model, const py::args& args, const
         const auto found = std::find_if(model.parameters.begin(), model.parameters.end(),
                                         [&](const auto& parameter) { return parameter.key == key; });
         if (found == model.parameters.end()) {
-            std::string valid;
-            for (const auto& parameter : model.parameters) valid += (valid.empty() ? "" : ", ") + parameter.key;
-            if (model.needs_window) valid += ", window, tolerance";
-            throw InvalidInput(key, py::str(value).cast<std::string>(), "unknown key; valid keys: " + valid);
+            throw py::type_error(fmt::format("{}() got an unexpected keyword argument '{}'; valid: {}", model.name,
+                                             key, valid));
         }
-        if (parameters.has(key)) throw InvalidInput(key, py::str(value).cast<std::string>(), "given twice");
+        if (parameters.has(key)) {
+            throw py::type_error(fmt::format("{}() got multiple values for argument '{}'", model.name, key));
+        }
         put(parameters, *found, value);
+    }
+    for (const auto& parameter : model.parameters) {
+        if (parameter.required && !parameters.has(parameter.key)) {
+            throw py::type_error(
+                fmt::format("{}() missing required argument '{}' (arguments: {})", model.name, parameter.key, valid));
+        }
     }
     return rheology::build_material(model, parameters, options).series;
 }
