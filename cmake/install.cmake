@@ -1,8 +1,8 @@
 # What `cmake --install` and `cpack -G DEB` put where (docs/cpp.md, docs/python.md):
 #   bin/mdr                                  the command line
-#   lib/libmdr_core.a, lib/libmdr_io.a       the library (static: see docs/cpp.md)
+#   lib/libmdr_core.a, libmdr_io.a, libmdr_fit.a  the library (static: see docs/cpp.md)
 #   include/mdr/...                          the public headers
-#   lib/cmake/mdr/                           the CMake package: find_package(mdr), targets mdr::core and mdr::io
+#   lib/cmake/mdr/                           the CMake package: find_package(mdr), targets mdr::core, mdr::io, mdr::fit
 #   lib/python3/dist-packages/mdr/           the Python package (with MDR_BUILD_PYTHON; python/CMakeLists.txt)
 include(CMakePackageConfigHelpers)
 
@@ -10,7 +10,7 @@ set(MDR_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/mdr CACHE STRING
     "Where the CMake package (mdrConfig.cmake) is installed, relative to the prefix")
 
 install(TARGETS mdr RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS mdr_core mdr_io EXPORT mdrTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(TARGETS mdr_core mdr_io mdr_fit EXPORT mdrTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY include/mdr DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
 install(EXPORT mdrTargets NAMESPACE mdr:: FILE mdrTargets.cmake DESTINATION ${MDR_INSTALL_CMAKEDIR})
 configure_package_config_file(cmake/mdrConfig.cmake.in ${CMAKE_CURRENT_BINARY_DIR}/mdrConfig.cmake

@@ -19,4 +19,7 @@ void add_material_command(CLI::App& app, int& exit_code);
 /// `mdr sweep CASE --vary KEY=START:STOP:COUNT[:log] ... --out DIR [--jobs N]`.
 void add_sweep_command(CLI::App& app, int& exit_code);
 
+/// `mdr fit CASE --out DIR`.
+void add_fit_command(CLI::App& app, int& exit_code);
+
 }  // namespace mdr::cli

@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
     mdr::cli::add_check_command(app, exit_code);
     mdr::cli::add_material_command(app, exit_code);
     mdr::cli::add_sweep_command(app, exit_code);
+    mdr::cli::add_fit_command(app, exit_code);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {

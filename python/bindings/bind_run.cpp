@@ -3,6 +3,7 @@
 
 #include <chrono>
 
+#include "arrays.hpp"
 #include "bindings.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/io/case_file.hpp"
@@ -12,12 +13,6 @@ namespace py = pybind11;
 
 namespace mdr::python {
 namespace {
-
-py::array_t<double> to_array(const std::vector<double>& values) {
-    py::array_t<double> array(static_cast<py::ssize_t>(values.size()));
-    std::copy(values.begin(), values.end(), array.mutable_data());
-    return array;
-}
 
 py::dict run_toml_case(const std::string& toml_text, const std::string& source) {
     const auto contact_case = io::parse_case(toml_text, source);

@@ -20,4 +20,6 @@ void bind_profile(pybind11::module_& module);
 /// mdr.sweep: a case over a grid of numeric keys.
 void bind_sweep(pybind11::module_& module);
 
+/// mdr.fit: fit cases from TOML text, curves from files or arrays.
+void bind_fit(pybind11::module_& module);
 }  // namespace mdr::python

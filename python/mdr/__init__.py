@@ -20,8 +20,9 @@ import numpy as np
 from . import _mdr
 from ._mdr import Indenter, InvalidInput, Material
 from ._toml import to_toml
+from .fitting import FitResult, fit
 
-__all__ = ["run", "check", "sweep", "Material", "Indenter", "Result", "InvalidInput", "__version__"]
+__all__ = ["run", "check", "sweep", "fit", "FitResult", "Material", "Indenter", "Result", "InvalidInput", "__version__"]
 __version__ = _mdr.__version__
 
 CaseLike = Union[str, os.PathLike, Mapping[str, Any]]

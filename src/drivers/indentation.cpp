@@ -51,7 +51,7 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
         cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
     }
     auto nodes = make_time_grid(contact_case.history, contact_case.end_time, numerics.time_step,
-                                min_steps_per_segment, cuts);
+                                numerics.min_segment_steps, cuts);
     if (numerics.jump_grading > 0.0) {
         nodes = grade_after_jumps(nodes, numerics.jump_grading, jump_first_step * numerics.time_step);
     }

@@ -18,12 +18,12 @@ double indentation_steps(const ContactCase& contact_case, const ResolvedNumerics
     double previous = points.front().time;
     for (const auto& point : points) {
         const double until = std::min(point.time, contact_case.end_time);
-        if (until > previous) steps += segment_step_count(until - previous, numerics.time_step, min_steps_per_segment);
+        if (until > previous) steps += segment_step_count(until - previous, numerics.time_step, numerics.min_segment_steps);
         steps += 1.0;  // a jump, at most
         previous = std::max(previous, until);
     }
     if (contact_case.end_time > previous) {
-        steps += segment_step_count(contact_case.end_time - previous, numerics.time_step, min_steps_per_segment);
+        steps += segment_step_count(contact_case.end_time - previous, numerics.time_step, numerics.min_segment_steps);
     }
     steps += static_cast<double>(contact_case.snapshots.size());
     if (contact_case.tangential) steps += static_cast<double>(contact_case.tangential->breakpoints().size());

@@ -12,6 +12,7 @@
 #include "mdr/error.hpp"
 #include "mdr/rheology/compressible.hpp"
 #include "mdr/foundation/foundation.hpp"
+#include "case_reader.hpp"
 #include "material_reader.hpp"
 #include "toml_reader.hpp"
 
@@ -141,15 +142,21 @@ drivers::TangentialLoad read_tangential(TableReader& table) {
 
 }  // namespace
 
-drivers::ContactCase parse_case(std::string_view toml_text, const std::string& source) {
-    toml::table root_table;
+toml::table parse_toml(std::string_view toml_text, const std::string& source) {
     try {
-        root_table = toml::parse(toml_text, source);
+        return toml::parse(toml_text, source);
     } catch (const toml::parse_error& error) {
         const auto& where = error.source().begin;
         throw InvalidInput(source, fmt::format("line {}, column {}", where.line, where.column),
                            fmt::format("malformed TOML: {}", error.description()));
     }
+}
+
+drivers::ContactCase parse_case(std::string_view toml_text, const std::string& source) {
+    return read_case(parse_toml(toml_text, source));
+}
+
+drivers::ContactCase read_case(const toml::table& root_table) {
     TableReader root(root_table, "");
     root.reject_unknown({"title", "material", "indenter", "load", "tangential", "output", "numerics"});
     const std::string title = root.optional_string("title").value_or("");
@@ -227,7 +234,9 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
     if (half_space_spec.needs_window() || (second_spec && second_spec->needs_window())) {
         window = drivers::material_window(history, end_time, numerics, tangential, impact.has_value());
     }
-    const std::string directory = std::filesystem::path(source).parent_path().string();
+    // Files a material names (a table's `file`) are found next to the case file (the parsed table's source).
+    const auto& source_path = root_table.source().path;
+    const std::string directory = source_path ? std::filesystem::path(*source_path).parent_path().string() : "";
     const Body half_space = build_body(half_space_spec, window, directory);
     rheology::Rheology material = half_space.contact();
     std::optional<rheology::Rheology> shear_material;

@@ -12,11 +12,11 @@
 #include <sstream>
 #include <system_error>
 #include <thread>
-#include <toml++/toml.h>
 
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
+#include "mdr/io/case_template.hpp"
 #include "mdr/io/result_files.hpp"
 
 namespace mdr::io {
@@ -47,18 +47,10 @@ std::vector<std::string> split(const std::string& text, char separator) {
     }
 }
 
-// The case with each axis key set to its value at `point`, as TOML text.
-std::string case_at(const toml::table& base, const std::vector<SweepAxis>& axes, const std::vector<double>& point) {
-    toml::table table = base;
-    for (std::size_t a = 0; a < axes.size(); ++a) {
-        const auto path = split(axes[a].key, '.');
-        toml::table* parent = &table;
-        for (std::size_t i = 0; i + 1 < path.size(); ++i) parent = (*parent)[path[i]].as_table();
-        parent->insert_or_assign(path.back(), point[a]);
-    }
-    std::ostringstream text;
-    text << table;
-    return text.str();
+// The case with each axis key set to its value at `point`.
+drivers::ContactCase case_at(CaseTemplate model, const std::vector<SweepAxis>& axes, const std::vector<double>& point) {
+    for (std::size_t a = 0; a < axes.size(); ++a) model.set_number(axes[a].key, point[a]);
+    return model.build();
 }
 
 }  // namespace
@@ -99,12 +91,13 @@ SweepAxis parse_sweep_axis(const std::string& spec) {
 
 void validate_sweep(std::string_view case_text, const std::string& source, const std::vector<SweepAxis>& axes) {
     sweep_size(axes);
-    parse_case(case_text, source);
-    const toml::table base = toml::parse(case_text, source);
+    const CaseTemplate model(case_text, source);
+    model.build();
     for (const auto& axis : axes) {
-        const toml::node_view node = base.at_path(axis.key);
-        if (!node) throw InvalidInput("--vary", axis.key, "no such key in the case file");
-        if (!node.is_number()) throw InvalidInput("--vary", axis.key, "is not a numeric key of the case file");
+        if (!model.has_number(axis.key)) {
+            throw InvalidInput("--vary", axis.key, "no such numeric key in the case file (arrays by index: "
+                                                   "load.history[1][1])");
+        }
     }
 }
 
@@ -152,7 +145,7 @@ private:
 std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& source,
                                 const std::vector<SweepAxis>& axes, unsigned jobs,
                                 const std::function<void(std::size_t, std::size_t)>& progress) {
-    const toml::table base = toml::parse(case_text, source);
+    const CaseTemplate model(case_text, source);
     const std::size_t total = sweep_size(axes);
     std::vector<SweepRow> rows(total);
     for (std::size_t r = 0; r < total; ++r) {
@@ -175,7 +168,7 @@ std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& s
         for (std::size_t r = next++; r < total && !stop; r = next++) {
             SweepRow& row = rows[r];
             try {
-                const auto contact_case = parse_case(case_at(base, axes, row.point), source);
+                const auto contact_case = case_at(model, axes, row.point);
                 const auto start = std::chrono::steady_clock::now();
                 const auto result = drivers::run_case(contact_case, stop_requested);
                 const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

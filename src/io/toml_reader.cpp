@@ -85,6 +85,27 @@ std::optional<std::string> TableReader::optional_string(const std::string& key) 
     return string(key);
 }
 
+bool TableReader::is_string(const std::string& key) const { return has(key) && node(key).is_string(); }
+
+std::vector<std::string> TableReader::labels(const std::string& key) {
+    const toml::node& n = node(key);
+    const toml::array* array = n.as_array();
+    const std::string rule = "must be an array of strings or integers";
+    if (array == nullptr) throw InvalidInput(key_path(key), node_text(n), rule);
+    std::vector<std::string> values;
+    for (std::size_t i = 0; i < array->size(); ++i) {
+        const toml::node& item = (*array)[i];
+        if (const auto* text = item.as_string()) {
+            values.push_back(text->get());
+        } else if (const auto* integer = item.as_integer()) {
+            values.push_back(std::to_string(integer->get()));
+        } else {
+            throw InvalidInput(key_path(key) + "[" + std::to_string(i) + "]", node_text(item), rule);
+        }
+    }
+    return values;
+}
+
 std::vector<double> TableReader::numbers(const std::string& key) {
     const toml::node& n = node(key);
     const toml::array* array = n.as_array();

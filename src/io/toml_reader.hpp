@@ -28,6 +28,10 @@ public:
     std::string string(const std::string& key);
     /// An optional string.
     std::optional<std::string> optional_string(const std::string& key);
+    /// True when the key is present and holds a string.
+    bool is_string(const std::string& key) const;
+    /// A required array of labels: strings, or integers taken as their decimal text (`[1, 2]` is `["1", "2"]`).
+    std::vector<std::string> labels(const std::string& key);
     /// A required array of numbers.
     std::vector<double> numbers(const std::string& key);
     /// A required array of [a, b] pairs of numbers.

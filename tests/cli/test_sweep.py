@@ -134,3 +134,14 @@ def test_threads_that_cannot_start_give_one_line_not_an_abort(mdr_binary, case_f
     assert completed.returncode == 1, completed.stderr
     assert len(lines) == 1 and lines[0].startswith("mdr: error: --jobs = 200: could not start thread"), lines
     assert sorted(p.name for p in workdir.iterdir()) == ["case.toml"]
+
+
+def test_dotted_keys_reach_array_elements(run_mdr, case_file, workdir):
+    # load.history[1][1] is the depth of the second history point: the peak force grows with it.
+    out = workdir / "deeper"
+    run_mdr("sweep", str(case_file), "--vary", "load.history[1][1]=0.5e-4,1.0e-4", "--out", str(out))
+    rows = read_rows(out / "sweep.csv")
+    assert [float(row["load.history[1][1]"]) for row in rows] == [0.5e-4, 1.0e-4]
+    assert [float(row["max_depth"]) for row in rows] == pytest.approx([0.5e-4, 1.0e-4], rel=1e-12)
+    # Hertz-like growth d^1.5 within the viscoelastic spread: the force more than doubles.
+    assert float(rows[1]["max_force"]) > 2.5 * float(rows[0]["max_force"])

@@ -46,6 +46,10 @@ struct ResolvedNumerics {
     double half_width = 0.0;     ///< half-width L [m]
     std::size_t output_every = 1;
     double time_limit = 0.0;     ///< last time simulated [s]; for an impact the latest end allowed
+    /// Smallest number of steps per history segment: min_steps_per_segment for a history written by hand; a dense
+    /// one (a measured curve, more than default_steps / min_steps_per_segment segments) needs fewer, as its own
+    /// points resolve it: enough that the history has default_steps steps in all, at least one per segment.
+    std::size_t min_segment_steps = 1;
     /// > 0: the steps after a jump start at time_step * jump_first_step and grow as this ratio times the time since
     /// the jump (grade_after_jumps); 0: a uniform grid.
     double jump_grading = 0.0;

@@ -1,0 +1,55 @@
+// `mdr fit CASE --out DIR`: identifies the free parameters of a case from its measured curves.
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "interrupt.hpp"
+#include "mdr/fit/fit_case_run.hpp"
+#include "mdr/io/fit_files.hpp"
+#include "mdr/io/result_directory.hpp"
+#include "setup_progress.hpp"
+
+namespace mdr::cli {
+
+void add_fit_command(CLI::App& app, int& exit_code) {
+    auto* command = app.add_subcommand(
+        "fit", "Fit the free parameters of a case ([fit] table) to measured curves; writes fit.json, fitted.toml, "
+               "curves.csv");
+    auto case_path = std::make_shared<std::string>();
+    auto out = std::make_shared<std::string>();
+    command->add_option("case", *case_path, "The TOML case file with a [fit] table")->required();
+    command->add_option("--out,-o", *out, "Result directory (created, or replaced if mdr wrote it)")->required();
+    command->callback([case_path, out, &exit_code] {
+        bool converged = true;
+        exit_code = guarded([&] {
+            const io::ResultDirectory directory(*out, "--out", {*case_path});
+            auto [fit_case, problem] = [&] {
+                const SetupProgress preparing;
+                auto read = io::load_fit_case(*case_path);
+                auto curves = fit::load_curves(read);
+                auto built = fit::make_problem(read, std::move(curves));
+                fit::validate(built);
+                return std::make_pair(std::move(read), std::move(built));
+            }();
+            const auto result = fit::fit(problem);
+            directory.write([&](const std::filesystem::path& files) { io::write_fit_result(files, fit_case, result); },
+                            received_signal);
+            fmt::print("fit of {} parameter(s) to {} curve(s), {} points: {}\n", result.names.size(),
+                       result.curves.size(), result.points, result.status);
+            for (std::size_t j = 0; j < result.names.size(); ++j) {
+                fmt::print("  {} = {:.6g} +- {:.2g}\n", result.names[j], result.values[j], result.standard_errors[j]);
+            }
+            for (const auto& entry : result.undetermined) {
+                fmt::print("  undetermined: {}: {}\n", entry.name, entry.reason);
+            }
+            fmt::print("  residual RMS {:.4g}, noise {:.4g} (ratio {:.3g}); {} iterations, {} model runs, {:.3f} s\n",
+                       result.rms_residual, result.noise, result.rms_residual / result.noise, result.iterations,
+                       result.evaluations, result.wall_seconds);
+            fmt::print("  results in {}/ (fit.json, fitted.toml, curves.csv)\n", *out);
+            converged = result.converged;
+        });
+        if (exit_code == 0 && !converged) exit_code = 1;  // the result is written, with its status
+    });
+}
+
+}  // namespace mdr::cli

@@ -1,0 +1,66 @@
+#pragma once
+/// \file
+/// Measured curves for fitting: where they come from (a CSV file and its columns, or arrays) and what the fit
+/// receives (time, indentation and force in SI units, with estimates of noise, contact point and force baseline).
+
+#include <filesystem>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mdr::fit {
+
+/// A curve's columns in a CSV file (`[[fit.data]]` of a fit case). Either `depth_column` (indentation, positive
+/// into the body) or the raw AFM pair `piezo_column` + `deflection_column` with `spring_constant` gives the depth;
+/// `force_column` or the deflection times the spring constant gives the force.
+struct CurveSource {
+    std::filesystem::path file;             ///< CSV file with a header row of column names
+    std::string name;                       ///< the curve's name ("" gives the file's stem)
+    std::string time_column;                ///< time
+    std::string depth_column;               ///< indentation, positive into the body ("" when raw AFM columns are used)
+    std::string force_column;               ///< force on the indenter, positive in compression ("" for raw AFM)
+    std::string piezo_column;               ///< AFM: height of the cantilever base, larger = farther from the sample
+    std::string deflection_column;          ///< AFM: cantilever deflection, positive = bent away from the sample
+    std::optional<double> spring_constant;  ///< AFM: cantilever spring constant [N/m]
+    double time_unit = 1.0;                 ///< seconds per unit of the time column
+    double length_unit = 1.0;               ///< metres per unit of the depth, piezo and deflection columns
+    double force_unit = 1.0;                ///< newtons per unit of the force column
+    std::string segment_column;             ///< column naming each row's segment ("" keeps every row)
+    std::vector<std::string> segments;      ///< segments kept (every segment when empty), e.g. {"extend", "pause"}
+};
+
+/// A measured curve in SI units.
+struct Curve {
+    std::string name;            ///< for messages and outputs (the file stem, or given)
+    std::vector<double> time;    ///< t [s], strictly increasing
+    std::vector<double> depth;   ///< indentation [m] relative to the data's own zero, positive into the body
+    std::vector<double> force;   ///< force [N], as measured (baseline not removed)
+    double force_noise = 0.0;    ///< estimated standard deviation of the force noise [N] (0 when unknown)
+    double depth_noise = 0.0;    ///< estimated standard deviation of the depth noise [m] (0 when unknown)
+    double contact_depth = 0.0;  ///< estimated depth of first contact in the data's depth [m]
+    double force_baseline = 0.0; ///< estimated force before contact [N]
+    double onset_exponent = 0.0;  ///< n of the onset fit F - baseline = A (depth - contact_depth)^n (0 when unknown)
+    double onset_amplitude = 0.0; ///< A of the onset fit [N/m^n] (0 when unknown)
+    std::string estimate_note;    ///< "" when the contact estimates are sound, else why they are not
+};
+
+/// The fewest rows a curve may have (after the segment selection).
+inline constexpr std::size_t minimum_curve_rows = 10;
+
+/// Reads and validates a curve from its CSV source and estimates its noise, contact point and baseline
+/// (estimate_contact). Throws mdr::InvalidInput naming the file, column and row for a missing file or column,
+/// a value that is not a finite number, time not strictly increasing, or too few rows; and for a source that
+/// names both or neither depth sources (a depth column, or the AFM piezo and deflection columns with a spring
+/// constant > 0), a force column beside the AFM columns, or segments that select no row. The keys of its errors
+/// are those of a `[[fit.data]]` table (`time`, `force`, `segments`, ...): a caller prefixes them
+/// (InvalidInput::with_prefix). Only the used columns of the kept rows are read: other columns may hold anything.
+Curve load_curve(const CurveSource& source);
+
+/// A validated curve from arrays in SI units (same rules as load_curve), with the same estimates.
+Curve make_curve(std::string name, std::vector<double> time, std::vector<double> depth, std::vector<double> force);
+
+/// Fills noise, contact point and baseline estimates of `curve` (the documented method: see the definition).
+void estimate_contact(Curve& curve);
+
+}  // namespace mdr::fit

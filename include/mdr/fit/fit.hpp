@@ -1,0 +1,139 @@
+#pragma once
+/// \file
+/// Identification of a material (and indenter) from measured curves: bounded nonlinear least squares (Ceres
+/// Solver, Levenberg-Marquardt) over the exact MDR forward model, with standard errors, correlations, information
+/// criteria and the parameters that the data cannot determine named as such.
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mdr/drivers/contact_case.hpp"
+#include "mdr/fit/curve.hpp"
+
+namespace mdr::fit {
+
+/// One free parameter of the model.
+struct FreeParameter {
+    std::string name;    ///< its dotted key in the case, e.g. `material.tau1`
+    double start = 0.0;  ///< start value
+    double lower = 0.0;  ///< lower bound (> 0 for a parameter fitted on a logarithmic scale)
+    double upper = 0.0;  ///< upper bound
+    /// Fitted on a logarithmic scale: moduli, times, radii (every parameter that must stay > 0). The standard
+    /// error is then first order in the relative change, and the bounds are > 0.
+    bool logarithmic = true;
+};
+
+/// Which measured quantity the model reproduces.
+enum class Fitted {
+    force,  ///< the measured depth drives the model (displacement control); the force is fitted
+    depth,  ///< the measured force drives the model (force control); the depth is fitted
+};
+
+/// How each curve's contact point (the data's depth at first contact) is found.
+enum class ContactPointMode {
+    fit,       ///< a free parameter per curve, started at the curve's estimate
+    estimate,  ///< the curve's estimate (Curve::contact_depth), fixed
+    fixed,     ///< the data's zero of depth
+};
+
+/// How each curve's force baseline (the force reading without contact) is found.
+enum class BaselineMode {
+    fit,       ///< a free parameter per curve (linear), started at the curve's estimate
+    estimate,  ///< the curve's estimate (Curve::force_baseline), fixed
+    fixed,     ///< zero: the data's force is already baseline-corrected
+};
+
+/// Settings of a fit; the defaults suit a measured curve.
+struct FitSettings {
+    Fitted fitted = Fitted::force;                               ///< see Fitted
+    ContactPointMode contact_point = ContactPointMode::fit;      ///< see ContactPointMode
+    BaselineMode baseline = BaselineMode::fit;                   ///< see BaselineMode
+    std::size_t max_iterations = 200;                            ///< Levenberg-Marquardt iterations at most
+    /// Elements of the forward model's foundation; unset: the case's `[numerics] elements` or
+    /// default_fit_elements.
+    std::optional<std::size_t> elements;
+};
+
+/// Elements of the forward model when neither the fit nor the case sets them: enough that the model's
+/// discretisation error is below 1 % of the measurement noise. With N elements the error is about
+/// 1e-6 (1000 / N)^2 of the peak (a standard solid is recovered from noise-free Lee-Radok data to 3e-6 with 500
+/// elements, 1e-7 with 1000, 3e-8 with 2000; tests/verification/test_fit.cpp), so
+/// N = 1000 sqrt(1e-4 peak / noise) for the noisiest-relative curve, within [min_fit_elements, max_fit_elements]:
+/// 250 for an AFM curve with noise 1.6e-3 of its peak, the maximum for noise-free data.
+std::size_t default_fit_elements(double noise_to_peak);
+/// See default_fit_elements.
+inline constexpr std::size_t min_fit_elements = 200;
+/// See default_fit_elements.
+inline constexpr std::size_t max_fit_elements = 2000;
+
+/// The model as a function of the free parameters' values (in the order of FitProblem::parameters): the case
+/// (material, indenter, numerics) for those values. Its load is replaced by each curve's measured history. Throws
+/// mdr::InvalidInput for values that break a rule of the case.
+using ModelBuilder = std::function<drivers::ContactCase(const std::vector<double>& values)>;
+
+/// A fit: the model, what is free, the measured curves.
+struct FitProblem {
+    ModelBuilder model;                       ///< see ModelBuilder
+    std::vector<FreeParameter> parameters;    ///< the free parameters of the model
+    std::vector<Curve> curves;                ///< one or more measured curves; one material for all
+    FitSettings settings;                     ///< see FitSettings
+};
+
+/// One curve's data, model and residual at the points used by the fit.
+struct CurveFit {
+    std::string name;               ///< Curve::name
+    std::vector<double> time;       ///< t [s]
+    std::vector<double> measured;   ///< measured force [N] or depth [m] (the fitted quantity)
+    std::vector<double> model;      ///< model of the same quantity, baseline and contact point included
+    std::vector<double> drive;      ///< what drove the model: depth below the contact point [m], or force above
+                                    ///< the baseline [N] (0 below it)
+    double contact_depth = 0.0;     ///< the contact point used [m]
+    double contact_depth_error = 0.0;  ///< its standard error [m] (0 unless fitted)
+    double baseline = 0.0;          ///< the force baseline used [N]
+    double baseline_error = 0.0;    ///< its standard error [N] (0 unless fitted)
+    double noise = 0.0;             ///< the measurement noise of the fitted quantity [N or m]
+    double rms_residual = 0.0;      ///< RMS of model - measured
+};
+
+/// A parameter that the data cannot determine, and why.
+struct Undetermined {
+    std::string name;    ///< the parameter
+    std::string reason;  ///< one line, e.g. "tau1 = 300 s is beyond 10 x the record (30 s)"
+};
+
+/// The outcome of a fit. A fit that did not converge still has its last values, its status says why.
+struct FitResult {
+    std::string status;                      ///< "converged", or the reason it stopped
+    bool converged = false;                  ///< status == "converged"
+    std::vector<std::string> names;          ///< the free parameters, in the order of FitProblem::parameters
+    std::vector<double> values;              ///< fitted values
+    std::vector<double> standard_errors;     ///< one standard deviation, first order (NaN when undetermined)
+    std::vector<double> lower_95;            ///< 95 % confidence interval (on the logarithmic scale where fitted so)
+    std::vector<double> upper_95;            ///< see lower_95
+    std::vector<std::vector<double>> correlation;  ///< correlation matrix of the free parameters
+    std::vector<Undetermined> undetermined;  ///< parameters the data cannot determine
+    std::vector<CurveFit> curves;            ///< per curve
+    double rms_residual = 0.0;               ///< RMS of model - measured over all curves [N or m]
+    double noise = 0.0;                      ///< RMS of the curves' noise estimates, weighted by their points
+    double aic = 0.0;                        ///< Akaike information criterion, n ln(RSS/n) + 2k (RSS of the residuals
+                                             ///< weighted by each curve's noise)
+    double bic = 0.0;                        ///< Bayesian information criterion, n ln(RSS/n) + k ln n
+    std::size_t points = 0;                  ///< residuals n
+    std::size_t free_count = 0;              ///< k: free parameters including contact points and baselines
+    std::size_t iterations = 0;              ///< Levenberg-Marquardt iterations
+    std::size_t evaluations = 0;             ///< forward-model runs
+    double wall_seconds = 0.0;               ///< wall time of the fit
+};
+
+/// Checks a problem (one line per rule: bounds, start values, curves with enough points and a contact).
+/// Throws mdr::InvalidInput.
+void validate(const FitProblem& problem);
+
+/// Fits the model to the curves. Throws mdr::InvalidInput for a problem that breaks a rule (validate); a fit that
+/// fails to converge returns its status.
+FitResult fit(const FitProblem& problem);
+
+}  // namespace mdr::fit

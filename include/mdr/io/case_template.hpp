@@ -1,0 +1,54 @@
+#pragma once
+/// \file
+/// A case parsed once whose numeric values can be read and changed by dotted key, and which builds a
+/// drivers::ContactCase without going through text again: what sweeps and fits vary.
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "mdr/drivers/contact_case.hpp"
+
+namespace mdr::io {
+
+/// A parsed case file. Keys are dotted paths with array indices, as in the case file: `material.tau1`,
+/// `load.history[1][1]` (the value of the second history point), `material.terms[0][1]` (tau of the first Prony
+/// term). Copies are independent.
+class CaseTemplate {
+public:
+    /// Parses TOML text; `source` names it in messages. Throws mdr::InvalidInput for malformed TOML (the case's
+    /// rules are checked by build()).
+    CaseTemplate(std::string_view toml_text, const std::string& source);
+    CaseTemplate(const CaseTemplate& other);
+    CaseTemplate& operator=(const CaseTemplate& other);
+    CaseTemplate(CaseTemplate&&) noexcept;
+    CaseTemplate& operator=(CaseTemplate&&) noexcept;
+    ~CaseTemplate();
+
+    /// True when `key` names a number (integer or floating point) of the case.
+    bool has_number(const std::string& key) const;
+    /// The number at `key`. Throws mdr::InvalidInput (key `key`) when there is none.
+    double number(const std::string& key) const;
+    /// Sets the number at `key` (an integer becomes a floating-point value). Throws mdr::InvalidInput (key `key`)
+    /// when the case has no number there.
+    void set_number(const std::string& key, double value);
+    /// True when the case has the top-level table `name`.
+    bool has_table(const std::string& name) const;
+    /// Removes the top-level table `name` (and returns its TOML text, "" when absent), e.g. `fit` from a fit case.
+    std::string take_table(const std::string& name);
+    /// Sets the top-level table `name` from TOML text (the table's body, without its header).
+    void set_table(const std::string& name, std::string_view body);
+
+    /// The validated case (same rules and messages as parse_case).
+    drivers::ContactCase build() const;
+    /// The case as TOML text.
+    std::string text() const;
+    /// The name used in messages.
+    const std::string& source() const;
+
+private:
+    struct Tables;
+    std::unique_ptr<Tables> tables_;
+};
+
+}  // namespace mdr::io

@@ -1,0 +1,46 @@
+#pragma once
+/// \file
+/// Reading a fit case: a case file with a `[fit]` table (docs/case-format.md, "Fitting"). The model is the case
+/// without `[fit]`; `[load]` may be left out, the measured curves supply the history.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "mdr/fit/curve.hpp"
+#include "mdr/fit/fit.hpp"
+#include "mdr/io/case_template.hpp"
+
+namespace mdr::io {
+
+/// A fit case as read: the model, the free parameters with bounds and start values, the settings and where the
+/// measured curves are.
+struct FitCase {
+    CaseTemplate model;                          ///< the case without `[fit]`, with a `[load]` when it had none
+    std::vector<fit::FreeParameter> parameters;  ///< `fit.free`, with `fit.bounds` and `fit.start`
+    fit::FitSettings settings;                   ///< `fit.fitted`, `contact_point`, `baseline`, `max_iterations`,
+                                                 ///< `elements`
+    std::vector<fit::CurveSource> data;          ///< `[[fit.data]]`, paths relative to the case file's directory
+    bool had_load = false;                       ///< the case gave its own `[load]`
+};
+
+/// Parses a fit case. A free key must name a number of `[material]` or `[indenter]`; its start value is
+/// `fit.start.KEY` or the case's value; a parameter whose start is > 0 and whose bounds (if given) are > 0 is
+/// fitted on a logarithmic scale, with default bounds of 1e-4 to 1e4 times the start. Throws mdr::InvalidInput
+/// (keys `fit.*`) for an unknown key, a free key the model does not have, bounds that are inverted or exclude
+/// the start, a `[load] control` that contradicts `fit.fitted`, and every rule of the case itself.
+FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
+                       const std::filesystem::path& case_directory);
+
+/// Reads and parses a fit case file (curves relative to its directory).
+FitCase load_fit_case(const std::filesystem::path& path);
+
+/// The model as a function of the free values: a copy of the model with each free key set, built.
+fit::ModelBuilder model_builder(const FitCase& fit_case);
+
+/// The model case with `values` set for the free keys, as TOML text, with `[load]` replaced by `load_body` when
+/// it is not empty (fitted.toml).
+std::string fitted_case_text(const FitCase& fit_case, const std::vector<double>& values, std::string_view load_body);
+
+}  // namespace mdr::io

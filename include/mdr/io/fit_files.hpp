@@ -1,0 +1,23 @@
+#pragma once
+/// \file
+/// The result directory of a fit (docs/case-format.md, "Fitting"): fit.json, fitted.toml, curves.csv.
+
+#include <filesystem>
+#include <string>
+
+#include "mdr/fit/fit.hpp"
+#include "mdr/io/fit_case.hpp"
+
+namespace mdr::io {
+
+/// fit.json: status, parameters, standard_errors, intervals_95, correlation, undetermined, curves (contact point,
+/// baseline, noise, RMS residual), rms_residual, noise, residual_to_noise, aic, bic, points, free_count,
+/// iterations, evaluations, wall_seconds. NaN (an undetermined error) is written as null.
+std::string fit_json(const fit::FitResult& result);
+
+/// Writes fit.json, fitted.toml (the case with the fitted values; its load is the case's own, or the first
+/// curve's driving history, the contact point removed) and curves.csv (curve,t,measured,model,residual) into
+/// `directory`.
+void write_fit_result(const std::filesystem::path& directory, const FitCase& fit_case, const fit::FitResult& result);
+
+}  // namespace mdr::io

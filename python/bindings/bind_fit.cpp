@@ -1,0 +1,56 @@
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "mdr/fit/fit_case_run.hpp"
+#include "mdr/io/fit_files.hpp"
+
+namespace py = pybind11;
+
+namespace mdr::python {
+namespace {
+
+using CurveArrays = std::tuple<std::string, std::vector<double>, std::vector<double>, std::vector<double>>;
+
+// A fit case from TOML text; `curves` (name, t, d, F), when not empty, replace its [[fit.data]].
+py::dict fit_toml_case(const std::string& toml_text, const std::string& source, const std::string& directory,
+                       const std::vector<CurveArrays>& curves) {
+    const auto fit_case = io::parse_fit_case(toml_text, source, directory);
+    std::vector<fit::Curve> loaded;
+    if (curves.empty()) {
+        loaded = fit::load_curves(fit_case);
+    } else {
+        for (const auto& [name, time, depth, force] : curves) loaded.push_back(fit::make_curve(name, time, depth, force));
+    }
+    const auto problem = fit::make_problem(fit_case, std::move(loaded));
+    fit::FitResult result;
+    {
+        py::gil_scoped_release release;
+        result = fit::fit(problem);
+    }
+    py::list curve_list;
+    for (const auto& curve : result.curves) {
+        py::dict entry;
+        entry["name"] = curve.name;
+        entry["t"] = to_array(curve.time);
+        entry["measured"] = to_array(curve.measured);
+        entry["model"] = to_array(curve.model);
+        entry["drive"] = to_array(curve.drive);
+        curve_list.append(entry);
+    }
+    py::dict out;
+    out["fit_json"] = io::fit_json(result);
+    out["fitted_case"] = io::fitted_case_text(fit_case, result.values, "");
+    out["curves"] = curve_list;
+    return out;
+}
+
+}  // namespace
+
+void bind_fit(py::module_& module) {
+    module.def("_fit_toml", &fit_toml_case, py::arg("text"), py::arg("source"), py::arg("directory"),
+               py::arg("curves"), "Fits a fit case given as TOML text (mdr.fit is the public entry).");
+}
+
+}  // namespace mdr::python

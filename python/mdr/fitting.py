@@ -1,0 +1,128 @@
+"""mdr.fit: identify the free parameters of a case from measured curves (the command line's ``mdr fit``)."""
+
+from __future__ import annotations
+
+import json
+import os
+import tomllib
+from dataclasses import dataclass, field
+from typing import Any, Mapping, Sequence, Union
+
+import numpy as np
+
+from . import _mdr
+from ._toml import to_toml
+
+CaseLike = Union[str, os.PathLike, Mapping[str, Any]]
+
+
+@dataclass
+class FitResult:
+    """The outcome of :func:`fit`.
+
+    Attributes
+    ----------
+    parameters : dict
+        Fitted values keyed by the dotted names of ``fit.free``.
+    standard_errors : dict
+        One standard deviation of each (NaN where the data cannot determine it).
+    status : str
+        ``"converged"`` or the reason the fit stopped.
+    summary : dict
+        Everything ``fit.json`` holds: intervals, correlation, undetermined parameters, per-curve contact point
+        and baseline, residual and noise, AIC, BIC, evaluations, wall time.
+    curves : list of dict
+        Per curve: ``name``, ``t``, ``measured``, ``model`` and ``drive`` (numpy arrays).
+    fitted_case : str
+        The case with the fitted values, as TOML text.
+    """
+
+    parameters: dict[str, float]
+    standard_errors: dict[str, float]
+    status: str
+    summary: dict[str, Any]
+    curves: list[dict[str, Any]] = field(default_factory=list)
+    fitted_case: str = ""
+
+    def predict(self, load: Mapping[str, Any]):
+        """Run the fitted material and indenter under another load.
+
+        Parameters
+        ----------
+        load : dict
+            A ``[load]`` table, e.g. ``{"control": "displacement", "history": [[0, 0], [1, 1e-6]]}``.
+
+        Returns
+        -------
+        mdr.Result
+            As :func:`mdr.run` returns it.
+        """
+        from . import run
+
+        case = tomllib.loads(self.fitted_case)
+        case["load"] = dict(load)
+        return run(case)
+
+
+def _numbers(summary: Mapping[str, Any], key: str) -> dict[str, float]:
+    return {name: (float("nan") if value is None else float(value)) for name, value in summary[key].items()}
+
+
+def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitResult:
+    """Fit the free parameters of a case to measured curves, like ``mdr fit CASE --out DIR``.
+
+    Parameters
+    ----------
+    case : str, os.PathLike or dict
+        A case file with a ``[fit]`` table, or a dict of the same structure (docs/case-format.md, "Fitting").
+        Paths of ``[[fit.data]]`` are relative to the case file's directory (the working directory for a dict).
+    data : sequence of dict, optional
+        Curves as arrays instead of ``[[fit.data]]``: each a dict with ``time`` [s], ``depth`` [m, positive into
+        the body] and ``force`` [N], and optionally ``name``.
+
+    Returns
+    -------
+    FitResult
+        The parameters with their errors; a fit that did not converge still returns, its status says why.
+
+    Raises
+    ------
+    ValueError
+        For bad input, with the command line's message (``key = value: rule``).
+
+    Examples
+    --------
+    >>> import numpy as np, mdr
+    >>> t = np.linspace(0.0, 1.0, 101)
+    >>> d = 1e-5 * t
+    >>> F = 16.0 / 3.0 * 1e6 * np.sqrt(1e-3) * d ** 1.5          # Hertz, G = 1 MPa, R = 1 mm
+    >>> case = {"material": {"model": "elastic", "G": 3e5}, "indenter": {"shape": "sphere", "R": 1e-3},
+    ...         "fit": {"free": ["material.G"], "contact_point": "fixed", "baseline": "fixed"}}
+    >>> result = mdr.fit(case, data=[{"time": t, "depth": d, "force": F}])
+    >>> round(result.parameters["material.G"] / 1e6, 4)
+    1.0
+    """
+    if isinstance(case, Mapping):
+        text, source, directory = to_toml(case), "case", os.getcwd()
+    elif isinstance(case, (str, os.PathLike)):
+        source = os.fspath(case)
+        try:
+            with open(source, encoding="utf-8") as handle:
+                text = handle.read()
+        except OSError:
+            raise _mdr.InvalidInput(f"case = {source}: cannot be read (no such file, or no permission)") from None
+        directory = os.path.dirname(os.path.abspath(source))
+    else:
+        raise TypeError(f"case: expected a path or a dict, got {type(case).__name__}")
+    curves = []
+    for i, curve in enumerate(data or []):
+        missing = [key for key in ("time", "depth", "force") if key not in curve]
+        if missing:
+            raise ValueError(f"data[{i}].{missing[0]} = (missing): each curve needs time, depth and force")
+        arrays = [np.asarray(curve[key], dtype=float).ravel().tolist() for key in ("time", "depth", "force")]
+        curves.append((str(curve.get("name", f"curve{i}")), *arrays))
+    raw = _mdr._fit_toml(text, source, directory, curves)
+    summary = json.loads(raw["fit_json"])
+    return FitResult(parameters=_numbers(summary, "parameters"), standard_errors=_numbers(summary, "standard_errors"),
+                     status=summary["status"], summary=summary, curves=[dict(c) for c in raw["curves"]],
+                     fitted_case=raw["fitted_case"])

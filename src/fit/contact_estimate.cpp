@@ -1,0 +1,305 @@
+// estimate_contact: force baseline and noise, contact point and depth noise of a measured curve.
+//
+// The method (docs/case-format.md, "Measured curves"):
+//  1. The loading part is the curve up to its largest force (the first row of it, `peak`).
+//  2. Baseline: a straight line in time, F = b0 + b1 t, fitted by least squares to the rows [0, end) (once more
+//     without the rows farther than 5 noise deviations from the first line: spikes). The force noise is
+//     1.4826 x the median absolute deviation (MAD) of its residuals (the RMS where the MAD is 0: quantised data).
+//     The first `end` is where the force last crosses 10 % of its rise above the median of the first tenth of
+//     the loading part; then `end` moves back to the row after the last crossing of baseline + 3 noise deviations
+//     (walking back from the peak) until that crossing lies at or after the window's end.
+//  3. Onset: F - baseline = A (d - d_c)^n for d > d_c, 0 before (a power-law onset: n = 1.5 for a sphere, 2 for a
+//     cone), fitted by least squares to the loading rows up to where the force first exceeds baseline + 20 % of
+//     its rise (at least 10 noise deviations), in depth d from the crossing's depth minus twice the depth span
+//     of the fitted rise. A is linear (solved in closed form), n in [1, 3] and d_c are found by Brent's method
+//     on the profiled residual, d_c after a scan of 32 points (the residual has local minima in d_c).
+//  4. The baseline is fitted again to the rows before the contact (those before the first row from which the depth
+//     stays beyond d_c), and step 3 is repeated once; not when that would leave fewer than half of the window's
+//     rows (the depth of a pause before the approach is then within its noise of d_c: the window stays).
+//  5. Depth noise: 1.4826 x MAD / sqrt(6) of the second differences of the depth over the baseline rows (a
+//     difference of three rows removes a smooth trend; var(x[i+1] - 2 x[i] + x[i-1]) = 6 sigma^2 for white
+//     noise).
+// A curve whose force rises less than 10 noise deviations, or that has fewer than 8 rows before the rise, keeps
+// the noise estimates (from second differences where there is no baseline) and says why in estimate_note.
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "minimize_1d.hpp"
+#include "mdr/error.hpp"
+#include "mdr/fit/curve.hpp"
+
+namespace mdr::fit {
+namespace {
+
+constexpr double mad_to_deviation = 1.4826;   // sigma = 1.4826 MAD for Gaussian noise
+constexpr double spike_deviations = 5.0;      // rows farther from the first baseline line are left out
+constexpr double threshold_deviations = 3.0;  // the force "leaves the baseline" above 3 deviations
+constexpr int max_window_moves = 20;
+constexpr double onset_fraction = 0.2;        // the onset fit reaches 20 % of the rise ...
+constexpr double onset_deviations = 10.0;     // ... and at least 10 deviations; a rise below this is no contact
+constexpr double exponent_min = 1.0;
+constexpr double exponent_max = 3.0;
+constexpr std::size_t baseline_rows_min = 8;
+constexpr int contact_scan_points = 32;
+constexpr int exponent_scan_points = 9;
+
+double median(std::vector<double>& values) {
+    const std::size_t middle = values.size() / 2;
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(middle), values.end());
+    const double upper = values[middle];
+    if (values.size() % 2 == 1) return upper;
+    return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(middle)));
+}
+
+/// 1.4826 x the median absolute deviation of `values` (their RMS about the median where that is 0).
+double robust_deviation(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    const double centre = median(values);
+    double sum_squares = 0.0;
+    for (double& value : values) {
+        value = std::abs(value - centre);
+        sum_squares += value * value;
+    }
+    const double mad = median(values);
+    return mad > 0.0 ? mad_to_deviation * mad : std::sqrt(sum_squares / static_cast<double>(values.size()));
+}
+
+/// Noise of rows [begin, end) of `values` from their second differences (step 5); 0 for fewer than 3 rows.
+double difference_noise(const std::vector<double>& values, std::size_t begin, std::size_t end) {
+    if (end < begin + 3) return 0.0;
+    std::vector<double> second;
+    second.reserve(end - begin - 2);
+    for (std::size_t i = begin + 1; i + 1 < end; ++i) second.push_back(values[i + 1] - 2.0 * values[i] + values[i - 1]);
+    return robust_deviation(std::move(second)) / std::sqrt(6.0);
+}
+
+/// The baseline F = offset + slope (t - t0) and the force noise about it.
+struct Baseline {
+    double t0 = 0.0, offset = 0.0, slope = 0.0, noise = 0.0;
+    double at(double t) const { return offset + slope * (t - t0); }
+};
+
+/// Least-squares line through the rows [0, end) with weight 1 where `keep` (step 2).
+Baseline fit_line(const Curve& curve, std::size_t end, const std::vector<char>& keep) {
+    double count = 0.0, mean_t = 0.0, mean_f = 0.0;
+    for (std::size_t i = 0; i < end; ++i) {
+        if (!keep[i]) continue;
+        count += 1.0;
+        mean_t += curve.time[i];
+        mean_f += curve.force[i];
+    }
+    mean_t /= count;
+    mean_f /= count;
+    double stt = 0.0, stf = 0.0;
+    for (std::size_t i = 0; i < end; ++i) {
+        if (!keep[i]) continue;
+        const double dt = curve.time[i] - mean_t;
+        stt += dt * dt;
+        stf += dt * (curve.force[i] - mean_f);
+    }
+    return {mean_t, mean_f, stt > 0.0 ? stf / stt : 0.0, 0.0};
+}
+
+Baseline fit_baseline(const Curve& curve, std::size_t end) {
+    std::vector<char> keep(end, 1);
+    Baseline line = fit_line(curve, end, keep);
+    std::vector<double> residuals(end);
+    for (std::size_t i = 0; i < end; ++i) residuals[i] = curve.force[i] - line.at(curve.time[i]);
+    const double first_noise = robust_deviation(residuals);
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < end; ++i) {
+        keep[i] = std::abs(residuals[i]) <= spike_deviations * first_noise;
+        kept += keep[i] ? 1 : 0;
+    }
+    if (kept >= baseline_rows_min) line = fit_line(curve, end, keep);
+    residuals.clear();
+    for (std::size_t i = 0; i < end; ++i) {
+        if (keep[i] || kept < baseline_rows_min) residuals.push_back(curve.force[i] - line.at(curve.time[i]));
+    }
+    line.noise = robust_deviation(std::move(residuals));
+    return line;
+}
+
+/// The fitted onset F - baseline = amplitude (d - contact)^exponent.
+struct Onset {
+    double contact = 0.0, exponent = 0.0, amplitude = 0.0;
+};
+
+/// Step 3: the rows [0, limit] with depth above the search interval's lower end enter the fit.
+std::optional<Onset> fit_onset(const Curve& curve, const Baseline& baseline, std::size_t peak, std::size_t crossing,
+                               std::size_t limit) {
+    const double crossing_depth = curve.depth[crossing];
+    const double span = curve.depth[limit] - crossing_depth;
+    if (!(span > 0.0)) return std::nullopt;
+    double lowest = curve.depth[0];
+    for (std::size_t i = 0; i <= peak; ++i) lowest = std::min(lowest, curve.depth[i]);
+    const double lower = std::max(crossing_depth - 2.0 * span, lowest);
+    const double upper = crossing_depth + 0.25 * span;
+    // Scaled depths u = (d - lower) / scale in [0, ~1] keep u^n well inside the range of doubles.
+    const double scale = curve.depth[limit] - lower;
+    std::vector<double> u, y;
+    for (std::size_t i = 0; i <= limit; ++i) {
+        if (curve.depth[i] <= lower) continue;
+        u.push_back((curve.depth[i] - lower) / scale);
+        y.push_back(curve.force[i] - baseline.at(curve.time[i]));
+    }
+    std::vector<double> logs(u.size());
+    std::size_t active = 0;  // rows with u > c, whose logs are in logs[0, active)
+    std::vector<double> rows_y(u.size());
+    // -S_yg^2 / S_gg for g = (u - c)^n: the residual sum of squares less the constant S_yy (A = S_yg / S_gg >= 0).
+    const auto profiled = [&](double n) {
+        double syg = 0.0, sgg = 0.0;
+        for (std::size_t k = 0; k < active; ++k) {
+            const double g = std::exp(n * logs[k]);
+            syg += rows_y[k] * g;
+            sgg += g * g;
+        }
+        return syg > 0.0 && sgg > 0.0 ? -syg * syg / sgg : 0.0;
+    };
+    const auto at_contact = [&](double c) {
+        active = 0;
+        for (std::size_t k = 0; k < u.size(); ++k) {
+            if (u[k] <= c) continue;
+            logs[active] = std::log(u[k] - c);
+            rows_y[active++] = y[k];
+        }
+    };
+    // A scan of (c, n) on a grid, then Brent's method in c within a grid step of the best point, with n optimised
+    // (Brent) within a grid step of its best value for each c. The minimum lies in a narrow diagonal valley (c and n
+    // are correlated): where the refined minimum is at an edge of its box, the box moves there and the refinement
+    // is repeated.
+    const double c_upper = (upper - lower) / scale;
+    const double step = c_upper / (contact_scan_points - 1);
+    const double n_step = (exponent_max - exponent_min) / (exponent_scan_points - 1);
+    double best_c = 0.0, best_n = exponent_min, best_value = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < contact_scan_points; ++k) {
+        at_contact(k * step);
+        for (int j = 0; j < exponent_scan_points; ++j) {
+            const double n = exponent_min + j * n_step;
+            const double value = profiled(n);
+            if (value < best_value) best_value = value, best_c = k * step, best_n = n;
+        }
+    }
+    Minimum1d contact{best_c, best_value}, exponent{best_n, best_value};
+    for (int move = 0; move < contact_scan_points; ++move) {
+        const double n_lower = std::max(exponent.x - n_step, exponent_min);
+        const double n_upper = std::min(exponent.x + n_step, exponent_max);
+        const auto best_exponent = [&](double c) {
+            at_contact(c);
+            return minimize_1d(profiled, n_lower, n_upper, 1e-6, 60);
+        };
+        const double c_lower = std::max(contact.x - step, 0.0), c_upper_box = std::min(contact.x + step, c_upper);
+        contact = minimize_1d([&](double c) { return best_exponent(c).value; }, c_lower, c_upper_box,
+                              1e-6 * c_upper, 60);
+        exponent = best_exponent(contact.x);
+        const double edge_tolerance = 1e-3 * step;
+        const bool at_c_edge = (contact.x - c_lower < edge_tolerance && c_lower > 0.0) ||
+                               (c_upper_box - contact.x < edge_tolerance && c_upper_box < c_upper);
+        const bool at_n_edge = (exponent.x - n_lower < 1e-3 && n_lower > exponent_min) ||
+                               (n_upper - exponent.x < 1e-3 && n_upper < exponent_max);
+        if (!at_c_edge && !at_n_edge) break;
+    }
+    double syg = 0.0, sgg = 0.0;
+    for (std::size_t k = 0; k < active; ++k) {
+        const double g = std::exp(exponent.x * logs[k]);
+        syg += rows_y[k] * g;
+        sgg += g * g;
+    }
+    return Onset{lower + contact.x * scale, exponent.x, syg / sgg / std::pow(scale, exponent.x)};
+}
+
+/// The last row before `peak` whose force is within `threshold` of the baseline (0 when there is none).
+std::size_t last_crossing(const Curve& curve, const Baseline& baseline, std::size_t peak, double threshold) {
+    for (std::size_t i = peak; i-- > 0;) {
+        if (curve.force[i] - baseline.at(curve.time[i]) <= threshold) return i;
+    }
+    return 0;
+}
+
+}  // namespace
+
+void estimate_contact(Curve& curve) {
+    const std::size_t rows = curve.time.size();
+    curve.force_noise = curve.depth_noise = curve.contact_depth = curve.force_baseline = 0.0;
+    curve.onset_exponent = curve.onset_amplitude = 0.0;
+    curve.estimate_note.clear();
+    if (rows < 3) {
+        curve.estimate_note = "too few rows for estimates";
+        return;
+    }
+    const auto without_baseline = [&](std::string note) {
+        curve.force_noise = difference_noise(curve.force, 0, rows);
+        curve.depth_noise = difference_noise(curve.depth, 0, rows);
+        curve.estimate_note = std::move(note);
+    };
+    const std::size_t peak =
+        static_cast<std::size_t>(std::max_element(curve.force.begin(), curve.force.end()) - curve.force.begin());
+    const double round_off = 64.0 * std::numeric_limits<double>::epsilon() *
+                             std::max(std::abs(curve.force[peak]), std::abs(*std::min_element(
+                                                                       curve.force.begin(), curve.force.end())));
+    // Step 2: the first window ends at the last crossing of the level of the first tenth of the loading part + 3
+    // deviations; then it moves to the last crossing of the fitted line + 3 deviations until it stays.
+    std::vector<double> start(curve.force.begin(),
+                              curve.force.begin() + static_cast<std::ptrdiff_t>(std::max(peak / 10, std::size_t{1})));
+    Baseline baseline{0.0, median(start), 0.0, robust_deviation(start)};
+    double threshold = threshold_deviations * baseline.noise + round_off;
+    std::size_t crossing = last_crossing(curve, baseline, peak, threshold);
+    std::size_t end = 0;
+    for (int move = 0; move < max_window_moves && end != crossing + 1; ++move) {
+        end = crossing + 1;
+        if (end < baseline_rows_min) {
+            return without_baseline("fewer than " + std::to_string(baseline_rows_min) +
+                                    " rows before the force rises: no baseline and no contact point");
+        }
+        baseline = fit_baseline(curve, end);
+        threshold = threshold_deviations * baseline.noise + round_off;
+        crossing = last_crossing(curve, baseline, peak, threshold);
+    }
+    curve.force_noise = baseline.noise;
+    curve.depth_noise = difference_noise(curve.depth, 0, end);
+    std::optional<Onset> onset;
+    std::size_t contact_row = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+        const double rise = curve.force[peak] - baseline.at(curve.time[peak]);
+        if (!(rise > onset_deviations * baseline.noise + round_off)) {
+            curve.estimate_note = "the force does not rise clearly above its baseline (by at most " +
+                                  format_value(rise) + ", " + format_value(onset_deviations) +
+                                  " noise deviations needed): no contact point";
+            return;
+        }
+        const double fit_level = std::max(onset_fraction * rise, std::min(onset_deviations * baseline.noise, rise));
+        std::size_t limit = crossing + 1;
+        while (limit < peak && curve.force[limit] - baseline.at(curve.time[limit]) <= fit_level) ++limit;
+        onset = fit_onset(curve, baseline, peak, crossing, limit);
+        if (!onset) {
+            curve.estimate_note = "the depth does not increase where the force rises: no contact point";
+            return;
+        }
+        contact_row = limit;  // the first row from which the depth stays beyond the contact depth up to limit
+        while (contact_row > 0 && curve.depth[contact_row - 1] > onset->contact) --contact_row;
+        if (pass == 1 || contact_row < std::max(baseline_rows_min, end / 2) || contact_row >= end) break;
+        end = contact_row;  // Step 4.
+        baseline = fit_baseline(curve, end);
+        threshold = threshold_deviations * baseline.noise + round_off;
+        crossing = last_crossing(curve, baseline, peak, threshold);
+        curve.force_noise = baseline.noise;
+        curve.depth_noise = difference_noise(curve.depth, 0, end);
+    }
+    curve.contact_depth = onset->contact;
+    curve.onset_exponent = onset->exponent;
+    curve.onset_amplitude = onset->amplitude;
+    // The baseline at the time the depth passes the contact depth (linear between the rows beside it).
+    double contact_time = curve.time[contact_row];
+    if (contact_row > 0 && curve.depth[contact_row] > curve.depth[contact_row - 1]) {
+        const double share = (onset->contact - curve.depth[contact_row - 1]) /
+                             (curve.depth[contact_row] - curve.depth[contact_row - 1]);
+        contact_time = curve.time[contact_row - 1] + std::clamp(share, 0.0, 1.0) *
+                                                         (curve.time[contact_row] - curve.time[contact_row - 1]);
+    }
+    curve.force_baseline = baseline.at(contact_time);
+}
+
+}  // namespace mdr::fit

@@ -1,0 +1,171 @@
+#include "csv_columns.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <string_view>
+#include <system_error>
+
+#include "mdr/error.hpp"
+
+namespace mdr::fit {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string in_quotes(std::string_view text) { return "\"" + std::string(text) + "\""; }
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+    return text;
+}
+
+std::string_view trimmed(std::string_view field) {
+    while (!field.empty() && (field.front() == ' ' || field.front() == '\t')) field.remove_prefix(1);
+    while (!field.empty() && (field.back() == ' ' || field.back() == '\t' || field.back() == '\r')) {
+        field.remove_suffix(1);
+    }
+    if (field.size() >= 2 && field.front() == '"' && field.back() == '"') field = field.substr(1, field.size() - 2);
+    return field;
+}
+
+/// The comma-separated fields of one line, trimmed.
+void split(std::string_view line, std::vector<std::string_view>& fields) {
+    fields.clear();
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = line.find(',', start);
+        fields.push_back(trimmed(line.substr(start, comma == std::string_view::npos ? std::string_view::npos
+                                                                                      : comma - start)));
+        if (comma == std::string_view::npos) return;
+        start = comma + 1;
+    }
+}
+
+/// The whole file; refuses what is not a readable regular file.
+std::string file_text(const fs::path& file) {
+    std::error_code error;
+    const auto status = fs::status(file, error);
+    if (!fs::exists(status)) throw InvalidInput("file", in_quotes(file.string()), "no such file");
+    if (!fs::is_regular_file(status)) throw InvalidInput("file", in_quotes(file.string()), "is not a regular file");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw InvalidInput("file", in_quotes(file.string()), "cannot be opened");
+    std::string text;
+    text.resize(static_cast<std::size_t>(fs::file_size(file, error)));
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    if (error || !in) throw InvalidInput("file", in_quotes(file.string()), "cannot be read");
+    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // a UTF-8 byte-order mark
+    return text;
+}
+
+/// Walks the lines of a text, skipping empty lines and comments, counting line numbers from 1.
+class Lines {
+public:
+    explicit Lines(std::string_view text) : text_(text) {}
+    bool next(std::string_view& line, std::size_t& number) {
+        while (position_ < text_.size()) {
+            const std::size_t end = std::min(text_.find('\n', position_), text_.size());
+            line = text_.substr(position_, end - position_);
+            position_ = end + 1;
+            number = ++line_;
+            const std::string_view content = trimmed(line);
+            if (!content.empty() && content.front() != '#') return true;
+        }
+        return false;
+    }
+
+private:
+    std::string_view text_;
+    std::size_t position_ = 0;
+    std::size_t line_ = 0;
+};
+
+bool parse_finite(std::string_view field, double& value) {
+    if (!field.empty() && field.front() == '+') field.remove_prefix(1);
+    const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
+    return error == std::errc() && end == field.data() + field.size() && std::isfinite(value);
+}
+
+}  // namespace
+
+CsvColumns read_csv_columns(const fs::path& file, const std::vector<CsvColumn>& columns,
+                            const std::string& segment_column, const std::vector<std::string>& segments) {
+    const std::string text = file_text(file);
+    const std::string file_name = file.filename().string();
+    Lines lines(text);
+    std::string_view line;
+    std::size_t line_number = 0;
+    if (!lines.next(line, line_number)) throw InvalidInput("file", in_quotes(file.string()), "has no header line");
+    std::vector<std::string_view> fields;
+    split(line, fields);
+    const std::vector<std::string> header(fields.begin(), fields.end());
+
+    const auto column_index = [&](const std::string& name, const std::string& key) {
+        const auto first = std::find(header.begin(), header.end(), name);
+        if (first == header.end()) {
+            throw InvalidInput(key, in_quotes(name), "no such column in " + file_name + "; its columns: " + joined(header));
+        }
+        if (std::find(first + 1, header.end(), name) != header.end()) {
+            throw InvalidInput(key, in_quotes(name), "the header of " + file_name + " has two columns of this name");
+        }
+        return static_cast<std::size_t>(first - header.begin());
+    };
+    // role[c]: the requested column read from field c, or -1.
+    std::vector<int> role(header.size(), -1);
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+        role[column_index(columns[k].name, columns[k].key)] = static_cast<int>(k);
+    }
+    const bool select = !segment_column.empty();
+    const std::size_t segment_field = select ? column_index(segment_column, "segment_column") : 0;
+
+    std::vector<std::string> present;  // the segments in the file, in order of appearance
+    std::vector<std::size_t> selected(segments.size(), 0);
+    CsvColumns result;
+    result.values.resize(columns.size());
+    while (lines.next(line, line_number)) {
+        split(line, fields);
+        if (fields.size() != header.size()) {
+            throw InvalidInput("file", in_quotes(file.string()),
+                               "line " + std::to_string(line_number) + " has " + std::to_string(fields.size()) +
+                                   " fields; the header has " + std::to_string(header.size()));
+        }
+        if (select) {
+            const std::string_view label = fields[segment_field];
+            // A few distinct segments are expected; more than max_listed are not listed (nor searched).
+            constexpr std::size_t max_listed = 50;
+            if ((present.empty() || present.back() != label) && present.size() <= max_listed &&
+                std::find(present.begin(), present.end(), label) == present.end()) {
+                present.emplace_back(present.size() == max_listed ? std::string_view("...") : label);
+            }
+            if (!segments.empty()) {
+                const auto kept = std::find(segments.begin(), segments.end(), label);
+                if (kept == segments.end()) continue;
+                ++selected[static_cast<std::size_t>(kept - segments.begin())];
+            }
+        }
+        for (std::size_t c = 0; c < fields.size(); ++c) {
+            if (role[c] < 0) continue;
+            double value = 0.0;
+            const CsvColumn& column = columns[static_cast<std::size_t>(role[c])];
+            if (!parse_finite(fields[c], value)) {
+                throw InvalidInput(column.key, fields[c].empty() ? "(empty)" : std::string(fields[c]),
+                                   "in " + file_name + ", line " + std::to_string(line_number) + ", column " +
+                                       in_quotes(column.name) + ": must be a finite number");
+            }
+            result.values[static_cast<std::size_t>(role[c])].push_back(value);
+        }
+        result.lines.push_back(line_number);
+    }
+    for (std::size_t s = 0; s < segments.size(); ++s) {
+        if (selected[s] == 0) {
+            throw InvalidInput("segments", in_quotes(segments[s]),
+                               "no row of " + file_name + " is in this segment (column " + in_quotes(segment_column) +
+                                   "); segments present: " + (present.empty() ? "none" : joined(present)));
+        }
+    }
+    return result;
+}
+
+}  // namespace mdr::fit

@@ -1,0 +1,80 @@
+#include "curve_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mdr/drivers/indentation.hpp"
+
+namespace mdr::fit {
+
+double noise_from_differences(const std::vector<double>& values) {
+    if (values.size() < 5) return 0.0;
+    std::vector<double> deviations(values.size() - 2);
+    for (std::size_t i = 0; i + 2 < values.size(); ++i) {
+        deviations[i] = std::abs(values[i + 2] - 2.0 * values[i + 1] + values[i]);
+    }
+    auto middle = deviations.begin() + static_cast<std::ptrdiff_t>(deviations.size() / 2);
+    std::nth_element(deviations.begin(), middle, deviations.end());
+    return 1.4826 * *middle / std::sqrt(6.0);
+}
+
+CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline) {
+    CurveModel prepared;
+    prepared.curve = &curve;
+    prepared.fitted = fitted;
+    const auto& measured = fitted == Fitted::force ? curve.force : curve.depth;
+    const double estimate = fitted == Fitted::force ? curve.force_noise : curve.depth_noise;
+    prepared.noise = estimate > 0.0 ? estimate : noise_from_differences(measured);
+    // A floor for noise-free data: the weights stay finite, and relative to the largest value.
+    double largest = 0.0;
+    for (double value : measured) largest = std::max(largest, std::abs(value));
+    prepared.noise = std::max(prepared.noise, 1e-12 * largest);
+    const double force_noise = curve.force_noise > 0.0 ? curve.force_noise : noise_from_differences(curve.force);
+    for (std::size_t i = 0; i < curve.time.size(); ++i) {
+        if (fitted == Fitted::force || curve.force[i] - baseline > 3.0 * force_noise) prepared.used.push_back(i);
+    }
+    return prepared;
+}
+
+std::vector<double> run_curve(drivers::ContactCase model_case, const CurveModel& prepared, double contact_depth,
+                              double baseline, std::size_t elements) {
+    const Curve& curve = *prepared.curve;
+    const bool depth_driven = prepared.fitted == Fitted::force;
+    std::vector<drivers::LoadPoint> points;
+    points.reserve(curve.time.size() + 1);
+    double widest = 0.0;
+    for (std::size_t i = 0; i < curve.time.size(); ++i) {
+        // The driving quantity: depth below the contact point, or force above the baseline (the indenter cannot
+        // pull, so a force reading below the baseline is no contact: 0).
+        const double value = depth_driven ? curve.depth[i] - contact_depth : std::max(curve.force[i] - baseline, 0.0);
+        if (i > 0) widest = std::max(widest, curve.time[i] - curve.time[i - 1]);
+        points.push_back({curve.time[i], value});
+    }
+    // Start one interval early from the undeformed state, so that a first point out of contact is no jump.
+    if (points.front().value <= 0.0) points.insert(points.begin(), {curve.time[0] - (curve.time[1] - curve.time[0]), 0.0});
+    model_case.control = depth_driven ? drivers::Control::displacement : drivers::Control::force;
+    model_case.history = drivers::LoadHistory(std::move(points), "load.history");
+    model_case.end_time = curve.time.back();
+    model_case.snapshots.clear();
+    model_case.tangential.reset();
+    model_case.numerics.elements = elements;
+    model_case.numerics.output_every = 1;
+    // Under displacement control each element's update is exact for a depth linear in time (eq. 16, 18): the
+    // measured points are the steps. Force control keeps its own step rule (second order).
+    if (depth_driven) model_case.numerics.time_step = widest;
+    const auto result = drivers::run_case(model_case);
+
+    // The rows at the measured times: the grid has every history point as a node (the last row of a time counts).
+    std::vector<double> model;
+    model.reserve(prepared.used.size());
+    std::size_t row = 0;
+    const auto& values = depth_driven ? result.force : result.depth;
+    for (std::size_t i : prepared.used) {
+        const double t = curve.time[i];
+        while (row + 1 < result.time.size() && result.time[row + 1] <= t) ++row;
+        model.push_back(depth_driven ? values[row] + baseline : values[row] + contact_depth);
+    }
+    return model;
+}
+
+}  // namespace mdr::fit

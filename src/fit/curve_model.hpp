@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// The forward model of one measured curve (internal to mdr_fit): the measured depth (or force) drives the case,
+/// and the model's force (or depth) is read at the measured times.
+
+#include <vector>
+
+#include "mdr/drivers/contact_case.hpp"
+#include "mdr/fit/curve.hpp"
+#include "mdr/fit/fit.hpp"
+
+namespace mdr::fit {
+
+/// A curve prepared for the forward model: the driving history and the points whose fitted quantity counts.
+struct CurveModel {
+    const Curve* curve = nullptr;
+    Fitted fitted = Fitted::force;
+    std::vector<std::size_t> used;  ///< indices of the points in the residual
+    double noise = 0.0;             ///< noise of the fitted quantity (the residuals' weight is 1 / noise)
+};
+
+/// The points of `curve` that enter the residual: every point when the depth drives the model; when the force
+/// drives it, the points where the force minus `baseline` is above 3 noise (the indenter is then in contact).
+CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline);
+
+/// The model of the fitted quantity at the used points (force plus baseline, or depth plus contact_depth):
+/// `model_case` with its load replaced by
+/// the curve's history (depth minus contact_depth under displacement control; force minus baseline, and 0 below
+/// it, under force control) run with `elements` elements and the curve's own points as time steps. The depth
+/// model is the depth below the contact point. Throws what the drivers throw.
+std::vector<double> run_curve(drivers::ContactCase model_case, const CurveModel& prepared, double contact_depth,
+                              double baseline, std::size_t elements);
+
+/// The noise of a measured quantity estimated from the data alone: 1.4826 MAD of its second differences over
+/// sqrt(6) (smooth signals sampled densely cancel in second differences; white noise of deviation s gives
+/// deviation s sqrt(6)).
+double noise_from_differences(const std::vector<double>& values);
+
+}  // namespace mdr::fit

@@ -1,0 +1,156 @@
+#include "mdr/fit/fit.hpp"
+
+#include <ceres/ceres.h>
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <set>
+
+#include "curve_cost.hpp"
+#include "fit_diagnostics.hpp"
+#include "mdr/error.hpp"
+
+namespace mdr::fit {
+
+std::size_t default_fit_elements(double noise_to_peak) {
+    const double elements = 1000.0 * std::sqrt(1e-4 / std::max(noise_to_peak, 1e-300));
+    return static_cast<std::size_t>(std::clamp(elements, static_cast<double>(min_fit_elements),
+                                               static_cast<double>(max_fit_elements)));
+}
+
+void validate(const FitProblem& problem) {
+    if (!problem.model) throw InvalidInput("fit.model", "(missing)", "is required");
+    if (problem.parameters.empty()) throw InvalidInput("fit.free", "[]", "name at least one parameter to fit");
+    if (problem.curves.empty()) {
+        throw InvalidInput("fit.data", "(missing)", "give at least one measured curve ([[fit.data]] or arrays)");
+    }
+    std::set<std::string> names;
+    for (const auto& parameter : problem.parameters) {
+        const std::string key = "fit.bounds." + parameter.name;
+        if (!names.insert(parameter.name).second) throw InvalidInput("fit.free", parameter.name, "is named twice");
+        require_finite(parameter.name, parameter.start);
+        require_finite(key, parameter.lower);
+        require_finite(key, parameter.upper);
+        if (!(parameter.lower < parameter.upper)) {
+            throw InvalidInput(key, fmt::format("[{}, {}]", format_value(parameter.lower), format_value(parameter.upper)),
+                               "the lower bound must be below the upper bound");
+        }
+        if (parameter.logarithmic && !(parameter.lower > 0.0)) {
+            throw InvalidInput(key, format_value(parameter.lower), "must be > 0 (the parameter is positive)");
+        }
+        if (parameter.start < parameter.lower || parameter.start > parameter.upper) {
+            throw InvalidInput(parameter.name, format_value(parameter.start),
+                               fmt::format("the start value must lie within its bounds [{}, {}]",
+                                           format_value(parameter.lower), format_value(parameter.upper)));
+        }
+    }
+    const std::size_t free_count = problem.parameters.size() +
+                                   (problem.settings.contact_point == ContactPointMode::fit ? problem.curves.size() : 0) +
+                                   (problem.settings.baseline == BaselineMode::fit ? problem.curves.size() : 0);
+    std::size_t points = 0;
+    for (const auto& curve : problem.curves) points += curve.time.size();
+    if (points <= free_count) {
+        throw InvalidInput("fit.data", fmt::format("{} points", points),
+                           fmt::format("need more points than the {} free parameters", free_count));
+    }
+}
+
+namespace {
+
+// The smallest noise relative to its curve's peak, over the curves (the noise floors of prepare_curve keep it > 0).
+double noise_to_peak(const FitProblem& problem, const std::vector<CurveModel>& prepared) {
+    double ratio = 1.0;
+    for (std::size_t c = 0; c < prepared.size(); ++c) {
+        const Curve& curve = problem.curves[c];
+        const auto& measured = problem.settings.fitted == Fitted::force ? curve.force : curve.depth;
+        double peak = 0.0;
+        for (double value : measured) peak = std::max(peak, std::abs(value));
+        if (peak > 0.0) ratio = std::min(ratio, prepared[c].noise / peak);
+    }
+    return ratio;
+}
+
+std::string status_of(const ceres::Solver::Summary& summary) {
+    switch (summary.termination_type) {
+    case ceres::CONVERGENCE:
+        return "converged";
+    case ceres::NO_CONVERGENCE:
+        return fmt::format("did not converge in {} iterations", summary.iterations.size());
+    default:
+        return "failed: " + summary.message;
+    }
+}
+
+}  // namespace
+
+FitResult fit(const FitProblem& problem) {
+    validate(problem);
+    const auto start_time = std::chrono::steady_clock::now();
+    const ParameterScales scales = make_scales(problem);
+    const std::size_t k = problem.parameters.size();
+    const std::size_t m = scales.nuisance_size();
+
+    std::vector<double> shared(k);
+    for (std::size_t j = 0; j < k; ++j) shared[j] = scales.to_internal(j, problem.parameters[j].start);
+    std::vector<std::vector<double>> nuisance(problem.curves.size());
+    std::vector<CurveModel> prepared;
+    prepared.reserve(problem.curves.size());
+    for (std::size_t c = 0; c < problem.curves.size(); ++c) {
+        const Curve& curve = problem.curves[c];
+        const double baseline = problem.settings.baseline == BaselineMode::fixed ? 0.0 : curve.force_baseline;
+        prepared.push_back(prepare_curve(curve, problem.settings.fitted, baseline));
+        if (prepared.back().used.empty()) {
+            throw InvalidInput(fmt::format("fit.data[{}]", c), curve.name, "the curve never makes contact");
+        }
+        if (scales.fit_contact) nuisance[c].push_back(curve.contact_depth / scales.depth[c]);
+        if (scales.fit_baseline) nuisance[c].push_back(curve.force_baseline / scales.force[c]);
+    }
+
+    const std::size_t elements = default_fit_elements(noise_to_peak(problem, prepared));
+    std::atomic<std::size_t> evaluations{0};
+    ceres::Problem::Options problem_options;
+    problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+    ceres::Problem solver_problem(problem_options);
+    std::vector<std::unique_ptr<CurveCost>> costs;
+    for (std::size_t c = 0; c < problem.curves.size(); ++c) {
+        costs.push_back(std::make_unique<CurveCost>(problem, scales, prepared[c], c, elements, evaluations));
+        std::vector<double*> blocks{shared.data()};
+        if (m > 0) blocks.push_back(nuisance[c].data());
+        solver_problem.AddResidualBlock(costs.back().get(), nullptr, blocks);
+    }
+    for (std::size_t j = 0; j < k; ++j) {
+        solver_problem.SetParameterLowerBound(shared.data(), static_cast<int>(j), scales.lower[j]);
+        solver_problem.SetParameterUpperBound(shared.data(), static_cast<int>(j), scales.upper[j]);
+    }
+
+    ceres::Solver::Options options;
+    options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+    options.linear_solver_type = ceres::DENSE_QR;
+    options.max_num_iterations = static_cast<int>(problem.settings.max_iterations);
+    options.function_tolerance = 1e-12;
+    options.parameter_tolerance = 1e-12;
+    options.gradient_tolerance = 1e-14;
+    options.num_threads = 1;
+    options.logging_type = ceres::SILENT;
+    ceres::Solver::Summary summary;
+    ceres::Solve(options, &solver_problem, &summary);
+
+    FitResult result;
+    result.status = status_of(summary);
+    result.converged = summary.termination_type == ceres::CONVERGENCE;
+    result.iterations = summary.iterations.empty() ? 0 : summary.iterations.size() - 1;
+    for (std::size_t j = 0; j < k; ++j) {
+        result.names.push_back(problem.parameters[j].name);
+        result.values.push_back(scales.to_value(j, shared[j]));
+    }
+    describe_uncertainty(problem, scales, costs, shared, nuisance, result);
+    result.evaluations = evaluations;
+    result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
+    return result;
+}
+
+}  // namespace mdr::fit

@@ -1,0 +1,231 @@
+#include "fit_diagnostics.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <stdexcept>
+
+namespace mdr::fit {
+
+namespace {
+
+constexpr double normal_quantile_95 = 1.959963984540054;
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// A relaxation or retardation time of the case, by its key: tau, tau1, lambda..., or the second value of a Prony
+// term (material.terms[i][1]).
+bool is_time(const std::string& name) {
+    const std::size_t dot = name.rfind('.');
+    const std::string last = dot == std::string::npos ? name : name.substr(dot + 1);
+    if (last.rfind("tau", 0) == 0 || last.rfind("lambda", 0) == 0) return true;
+    return last.rfind("terms[", 0) == 0 && last.size() > 3 && last.compare(last.size() - 3, 3, "[1]") == 0;
+}
+
+void flag(FitResult& result, std::set<std::string>& flagged, const std::string& name, const std::string& reason) {
+    if (flagged.insert(name).second) result.undetermined.push_back({name, reason});
+}
+
+// Curves' data, model and residual, and the stacked weighted residuals and Jacobian.
+struct Stacked {
+    Eigen::MatrixXd jacobian;
+    Eigen::VectorXd residuals;
+};
+
+Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
+                     const std::vector<double>& shared, const std::vector<std::vector<double>>& nuisance,
+                     std::size_t m, FitResult& result) {
+    const std::size_t k = shared.size();
+    std::size_t rows = 0;
+    for (const auto& cost : costs) rows += static_cast<std::size_t>(cost->num_residuals());
+    Stacked stacked{Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(k + m * costs.size())),
+                    Eigen::VectorXd(static_cast<Eigen::Index>(rows))};
+    Eigen::Index row = 0;
+    for (std::size_t c = 0; c < costs.size(); ++c) {
+        const CurveCost& cost = *costs[c];
+        const CurveModel& prepared = cost.prepared();
+        const std::size_t n = prepared.used.size();
+        std::vector<double> r(n), shared_block(n * k), nuisance_block(n * std::max<std::size_t>(m, 1));
+        const double* parameters[2] = {shared.data(), nuisance[c].data()};
+        double* blocks[2] = {shared_block.data(), nuisance_block.data()};
+        if (!cost.Evaluate(parameters, r.data(), blocks)) {
+            throw std::runtime_error("the model cannot be evaluated at the fitted values");
+        }
+        const Curve& data = problem.curves[c];
+        const auto& measured = problem.settings.fitted == Fitted::force ? data.force : data.depth;
+        CurveFit curve;
+        curve.name = data.name;
+        curve.model = cost.model(shared.data(), nuisance[c].data());
+        curve.contact_depth = cost.contact_depth(nuisance[c].data());
+        curve.baseline = cost.baseline(nuisance[c].data());
+        curve.noise = prepared.noise;
+        double squared = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            curve.time.push_back(data.time[prepared.used[i]]);
+            curve.measured.push_back(measured[prepared.used[i]]);
+            curve.drive.push_back(problem.settings.fitted == Fitted::force
+                                      ? data.depth[prepared.used[i]] - curve.contact_depth
+                                      : std::max(data.force[prepared.used[i]] - curve.baseline, 0.0));
+            squared += (curve.model[i] - curve.measured[i]) * (curve.model[i] - curve.measured[i]);
+            stacked.residuals[row] = r[i];
+            for (std::size_t j = 0; j < k; ++j) stacked.jacobian(row, static_cast<Eigen::Index>(j)) = shared_block[i * k + j];
+            for (std::size_t j = 0; j < m; ++j) {
+                stacked.jacobian(row, static_cast<Eigen::Index>(k + c * m + j)) = nuisance_block[i * m + j];
+            }
+            ++row;
+        }
+        curve.rms_residual = std::sqrt(squared / static_cast<double>(n));
+        result.curves.push_back(std::move(curve));
+    }
+    return stacked;
+}
+
+}  // namespace
+
+void describe_uncertainty(const FitProblem& problem, const ParameterScales& scales,
+                          const std::vector<std::unique_ptr<CurveCost>>& costs, const std::vector<double>& shared,
+                          const std::vector<std::vector<double>>& nuisance, FitResult& result) {
+    const std::size_t k = shared.size();
+    const std::size_t m = scales.nuisance_size();
+    const Stacked stacked = stack_curves(problem, costs, shared, nuisance, m, result);
+    const auto n = static_cast<double>(stacked.residuals.size());
+    const auto columns = static_cast<std::size_t>(stacked.jacobian.cols());
+    result.points = static_cast<std::size_t>(stacked.residuals.size());
+    result.free_count = columns;
+
+    // Physical residual and noise over all curves; information criteria on the weighted residuals.
+    double squared = 0.0;
+    double noise_squared = 0.0;
+    for (const auto& curve : result.curves) {
+        const auto points = static_cast<double>(curve.time.size());
+        squared += curve.rms_residual * curve.rms_residual * points;
+        noise_squared += curve.noise * curve.noise * points;
+    }
+    result.rms_residual = std::sqrt(squared / n);
+    result.noise = std::sqrt(noise_squared / n);
+    const double weighted = std::max(stacked.residuals.squaredNorm(), std::numeric_limits<double>::min());
+    result.aic = n * std::log(weighted / n) + 2.0 * static_cast<double>(columns);
+    result.bic = n * std::log(weighted / n) + static_cast<double>(columns) * std::log(n);
+
+    // Covariance s^2 (J^T J)^+ by the SVD of J: directions with singular values below 1e-8 of the largest are
+    // not determined by the data.
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(stacked.jacobian, Eigen::ComputeThinV);
+    const Eigen::VectorXd& singular = svd.singularValues();
+    const double threshold = 1e-8 * (singular.size() > 0 ? singular[0] : 0.0);
+    const double dof = std::max(n - static_cast<double>(columns), 1.0);
+    const double variance_scale = stacked.residuals.squaredNorm() / dof;
+    Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(columns), static_cast<Eigen::Index>(columns));
+    std::vector<bool> undetermined(columns, false);
+    for (Eigen::Index s = 0; s < singular.size(); ++s) {
+        const Eigen::VectorXd direction = svd.matrixV().col(s);
+        if (singular[s] > threshold) {
+            covariance += direction * direction.transpose() * (variance_scale / (singular[s] * singular[s]));
+        } else {
+            for (std::size_t j = 0; j < columns; ++j) {
+                if (std::abs(direction[static_cast<Eigen::Index>(j)]) > 1e-3) undetermined[j] = true;
+            }
+        }
+    }
+
+    std::set<std::string> flagged;
+    for (std::size_t j = 0; j < k; ++j) {
+        const auto J = static_cast<Eigen::Index>(j);
+        const double value = result.values[j];
+        const double sigma = std::sqrt(std::max(covariance(J, J), 0.0));
+        if (undetermined[j]) {
+            result.standard_errors.push_back(nan);
+            result.lower_95.push_back(nan);
+            result.upper_95.push_back(nan);
+            flag(result, flagged, result.names[j], "the data do not determine it (no change of the fit along it)");
+            continue;
+        }
+        if (scales.scale[j] == 0.0) {  // logarithmic: sigma is relative
+            result.standard_errors.push_back(value * sigma);
+            result.lower_95.push_back(value * std::exp(-normal_quantile_95 * sigma));
+            result.upper_95.push_back(value * std::exp(normal_quantile_95 * sigma));
+        } else {
+            result.standard_errors.push_back(scales.scale[j] * sigma);
+            result.lower_95.push_back(value - normal_quantile_95 * scales.scale[j] * sigma);
+            result.upper_95.push_back(value + normal_quantile_95 * scales.scale[j] * sigma);
+        }
+        const auto& parameter = problem.parameters[j];
+        const double span = scales.scale[j] == 0.0 ? std::log(parameter.upper / parameter.lower)
+                                                   : (parameter.upper - parameter.lower) / scales.scale[j];
+        const double from_lower = scales.to_internal(j, value) - scales.to_internal(j, parameter.lower);
+        const double to_upper = scales.to_internal(j, parameter.upper) - scales.to_internal(j, value);
+        if (std::min(from_lower, to_upper) < 1e-4 * span) {
+            flag(result, flagged, result.names[j],
+                 fmt::format("{} = {:.6g} is at its {} bound: the data push it beyond", result.names[j], value,
+                             from_lower < to_upper ? "lower" : "upper"));
+        }
+        if (result.standard_errors[j] > std::abs(value)) {
+            flag(result, flagged, result.names[j],
+                 fmt::format("its standard error {:.3g} exceeds its value {:.6g}", result.standard_errors[j], value));
+        }
+    }
+    for (std::size_t c = 0; c < result.curves.size(); ++c) {
+        std::size_t column = k + c * m;
+        if (scales.fit_contact) {
+            result.curves[c].contact_depth_error =
+                scales.depth[c] * std::sqrt(std::max(covariance(static_cast<Eigen::Index>(column), static_cast<Eigen::Index>(column)), 0.0));
+            ++column;
+        }
+        if (scales.fit_baseline) {
+            result.curves[c].baseline_error =
+                scales.force[c] * std::sqrt(std::max(covariance(static_cast<Eigen::Index>(column), static_cast<Eigen::Index>(column)), 0.0));
+        }
+    }
+
+    result.correlation.assign(k, std::vector<double>(k, nan));
+    for (std::size_t i = 0; i < k; ++i) {
+        for (std::size_t j = 0; j < k; ++j) {
+            const auto I = static_cast<Eigen::Index>(i);
+            const auto J = static_cast<Eigen::Index>(j);
+            const double denominator = std::sqrt(covariance(I, I) * covariance(J, J));
+            if (denominator > 0.0) result.correlation[i][j] = covariance(I, J) / denominator;
+        }
+    }
+    for (std::size_t i = 0; i < k; ++i) {
+        for (std::size_t j = i + 1; j < k; ++j) {
+            const double r = result.correlation[i][j];
+            if (std::abs(r) > 0.99 && !undetermined[i] && !undetermined[j]) {
+                const std::string reason = fmt::format("correlation {:.4f} between {} and {}", r, result.names[i], result.names[j]);
+                flag(result, flagged, result.names[i], reason);
+                flag(result, flagged, result.names[j], reason);
+            }
+        }
+    }
+
+    // Time parameters against the measured window.
+    double longest = 0.0;
+    double finest = std::numeric_limits<double>::infinity();
+    for (const auto& curve : problem.curves) {
+        longest = std::max(longest, curve.time.back() - curve.time.front());
+        for (std::size_t i = 1; i < curve.time.size(); ++i) finest = std::min(finest, curve.time[i] - curve.time[i - 1]);
+    }
+    for (std::size_t i = 0; i < k; ++i) {
+        if (!is_time(result.names[i])) continue;
+        const double tau = result.values[i];
+        if (tau > 10.0 * longest) {
+            flag(result, flagged, result.names[i],
+                 fmt::format("{} = {:.4g} s is beyond 10 x the longest record ({:.4g} s)", result.names[i], tau, longest));
+        } else if (tau < 0.1 * finest) {
+            flag(result, flagged, result.names[i],
+                 fmt::format("{} = {:.4g} s is below a tenth of the sampling interval ({:.4g} s)", result.names[i], tau, finest));
+        }
+        for (std::size_t j = 0; j < k; ++j) {
+            if (j == i || !is_time(result.names[j])) continue;
+            const double ratio = std::max(tau, result.values[j]) / std::min(tau, result.values[j]);
+            if (ratio < 1.25) {
+                flag(result, flagged, result.names[i],
+                     fmt::format("{} and {} are within 25 % of each other ({:.4g} s, {:.4g} s)", result.names[i],
+                                 result.names[j], tau, result.values[j]));
+            }
+        }
+    }
+}
+
+}  // namespace mdr::fit

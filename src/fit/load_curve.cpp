@@ -1,0 +1,109 @@
+#include <algorithm>
+
+#include "csv_columns.hpp"
+#include "curve_checks.hpp"
+#include "mdr/error.hpp"
+#include "mdr/fit/curve.hpp"
+
+namespace mdr::fit {
+namespace {
+
+std::string in_quotes(const std::string& text) { return "\"" + text + "\""; }
+
+bool is_afm(const CurveSource& source) { return !source.piezo_column.empty() || !source.deflection_column.empty(); }
+
+/// The rules on the source itself, before its file is read.
+void check_source(const CurveSource& source) {
+    const std::string afm = "the AFM columns piezo and deflection with spring_constant";
+    if (source.time_column.empty()) throw InvalidInput("time", "(missing)", "is required: the time column");
+    if (!source.depth_column.empty() && is_afm(source)) {
+        throw InvalidInput("depth", in_quotes(source.depth_column),
+                           "give either depth or the AFM columns piezo and deflection, not both");
+    }
+    if (source.depth_column.empty() && !is_afm(source)) {
+        throw InvalidInput("depth", "(missing)", "is required: the depth column, or " + afm);
+    }
+    if (is_afm(source)) {
+        if (source.piezo_column.empty()) throw InvalidInput("piezo", "(missing)", "is required with deflection");
+        if (source.deflection_column.empty()) throw InvalidInput("deflection", "(missing)", "is required with piezo");
+        if (!source.spring_constant) throw InvalidInput("spring_constant", "(missing)", "is required with " + afm);
+        require_positive("spring_constant", *source.spring_constant);
+        if (!source.force_column.empty()) {
+            throw InvalidInput("force", in_quotes(source.force_column),
+                               "must be left out with the AFM columns: the force is spring_constant x deflection");
+        }
+    } else {
+        if (source.spring_constant) {
+            throw InvalidInput("spring_constant", format_value(*source.spring_constant),
+                               "is used only with the AFM columns piezo and deflection");
+        }
+        if (source.force_column.empty()) throw InvalidInput("force", "(missing)", "is required: the force column");
+    }
+    require_positive("units.time", source.time_unit);
+    require_positive("units.length", source.length_unit);
+    require_positive("units.force", source.force_unit);
+    if (!source.segments.empty() && source.segment_column.empty()) {
+        throw InvalidInput("segments", in_quotes(source.segments.front()), "needs segment_column");
+    }
+    for (auto s = source.segments.begin(); s != source.segments.end(); ++s) {
+        if (std::find(s + 1, source.segments.end(), *s) != source.segments.end()) {
+            throw InvalidInput("segments", in_quotes(*s), "is listed twice");
+        }
+    }
+}
+
+void scale(std::vector<double>& values, double factor) {
+    for (double& value : values) value *= factor;
+}
+
+}  // namespace
+
+Curve load_curve(const CurveSource& source) {
+    check_source(source);
+    const bool afm = is_afm(source);
+    std::vector<CsvColumn> columns{{source.time_column, "time"}};
+    if (afm) {
+        columns.push_back({source.piezo_column, "piezo"});
+        columns.push_back({source.deflection_column, "deflection"});
+    } else {
+        columns.push_back({source.depth_column, "depth"});
+        columns.push_back({source.force_column, "force"});
+    }
+    CsvColumns table = read_csv_columns(source.file, columns, source.segment_column, source.segments);
+    std::vector<double>& time = table.values[0];
+    scale(time, source.time_unit);
+    std::vector<double> depth, force;
+    if (afm) {
+        // Raw AFM (see docs/case-format.md, "Measured curves"): force = k x deflection; the tip height is
+        // piezo + deflection (both larger = farther from the sample), and the indentation is the fall of the tip
+        // height from the first kept row.
+        const std::vector<double>& piezo = table.values[1];
+        const std::vector<double>& deflection = table.values[2];
+        const double k = *source.spring_constant;
+        const double first_height = piezo.empty() ? 0.0 : (piezo[0] + deflection[0]) * source.length_unit;
+        depth.resize(piezo.size());
+        force.resize(piezo.size());
+        for (std::size_t i = 0; i < piezo.size(); ++i) {
+            depth[i] = first_height - (piezo[i] + deflection[i]) * source.length_unit;
+            force[i] = k * (deflection[i] * source.length_unit);
+        }
+    } else {
+        depth = std::move(table.values[1]);
+        force = std::move(table.values[2]);
+        scale(depth, source.length_unit);
+        scale(force, source.force_unit);
+    }
+    const std::string file_name = source.file.filename().string();
+    std::string origin = file_name;
+    if (!source.segments.empty()) {
+        origin += ", segments";
+        for (const auto& segment : source.segments) origin += " " + segment;
+    }
+    const std::vector<std::size_t>& lines = table.lines;
+    return checked_curve(source.name.empty() ? source.file.stem().string() : source.name, std::move(time),
+                         std::move(depth), std::move(force), origin, [&](std::size_t i) {
+                             return "in " + file_name + ", line " + std::to_string(lines[i]);
+                         });
+}
+
+}  // namespace mdr::fit

@@ -1,0 +1,104 @@
+#include "mdr/io/case_template.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <sstream>
+
+#include "case_reader.hpp"
+#include "mdr/error.hpp"
+
+namespace mdr::io {
+
+struct CaseTemplate::Tables {
+    toml::table root;
+    std::string source;
+};
+
+namespace {
+
+// The container holding `key` and the key's last step in it: a table name or an array index.
+struct Location {
+    toml::node* parent = nullptr;
+    std::string name;      // when the parent is a table
+    std::size_t index = 0; // when the parent is an array
+};
+
+std::optional<Location> locate(toml::table& root, const std::string& key) {
+    Location location;
+    std::string parent_key;
+    if (!key.empty() && key.back() == ']') {
+        const std::size_t open = key.rfind('[');
+        if (open == std::string::npos) return std::nullopt;
+        const std::string digits = key.substr(open + 1, key.size() - open - 2);
+        const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), location.index);
+        if (digits.empty() || error != std::errc() || end != digits.data() + digits.size()) return std::nullopt;
+        parent_key = key.substr(0, open);
+    } else {
+        const std::size_t dot = key.rfind('.');
+        location.name = dot == std::string::npos ? key : key.substr(dot + 1);
+        if (dot != std::string::npos) parent_key = key.substr(0, dot);
+    }
+    location.parent = parent_key.empty() ? &root : root.at_path(parent_key).node();
+    if (location.parent == nullptr) return std::nullopt;
+    return location;
+}
+
+}  // namespace
+
+CaseTemplate::CaseTemplate(std::string_view toml_text, const std::string& source)
+    : tables_(std::make_unique<Tables>(Tables{parse_toml(toml_text, source), source})) {}
+CaseTemplate::CaseTemplate(const CaseTemplate& other) : tables_(std::make_unique<Tables>(*other.tables_)) {}
+CaseTemplate& CaseTemplate::operator=(const CaseTemplate& other) {
+    if (this != &other) tables_ = std::make_unique<Tables>(*other.tables_);
+    return *this;
+}
+CaseTemplate::CaseTemplate(CaseTemplate&&) noexcept = default;
+CaseTemplate& CaseTemplate::operator=(CaseTemplate&&) noexcept = default;
+CaseTemplate::~CaseTemplate() = default;
+
+bool CaseTemplate::has_number(const std::string& key) const { return tables_->root.at_path(key).is_number(); }
+
+double CaseTemplate::number(const std::string& key) const {
+    const auto node = tables_->root.at_path(key);
+    if (!node.is_number()) throw InvalidInput(key, "(missing)", "the case has no number under this key");
+    return node.value<double>().value();
+}
+
+void CaseTemplate::set_number(const std::string& key, double value) {
+    if (!has_number(key)) throw InvalidInput(key, "(missing)", "the case has no number under this key");
+    const auto location = locate(tables_->root, key);
+    if (auto* table = location->parent->as_table()) {
+        table->insert_or_assign(location->name, value);
+    } else {
+        auto* array = location->parent->as_array();
+        array->replace(array->begin() + static_cast<std::ptrdiff_t>(location->index), value);
+    }
+}
+
+bool CaseTemplate::has_table(const std::string& name) const { return tables_->root[name].is_table(); }
+
+std::string CaseTemplate::take_table(const std::string& name) {
+    const auto* table = tables_->root[name].as_table();
+    if (table == nullptr) return "";
+    std::ostringstream text;
+    text << *table;
+    tables_->root.erase(name);
+    return text.str();
+}
+
+void CaseTemplate::set_table(const std::string& name, std::string_view body) {
+    tables_->root.insert_or_assign(name, parse_toml(body, tables_->source));
+}
+
+drivers::ContactCase CaseTemplate::build() const { return read_case(tables_->root); }
+
+std::string CaseTemplate::text() const {
+    std::ostringstream text;
+    text << tables_->root;
+    return text.str();
+}
+
+const std::string& CaseTemplate::source() const { return tables_->source; }
+
+}  // namespace mdr::io

@@ -1,0 +1,180 @@
+#include "mdr/io/fit_case.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "case_reader.hpp"
+#include "fit_data_reader.hpp"
+#include "mdr/error.hpp"
+#include "toml_reader.hpp"
+
+namespace mdr::io {
+
+namespace {
+
+// A placeholder history: each curve replaces the load (fit::run_curve).
+constexpr const char* placeholder_load = "control = \"displacement\"\nhistory = [[0.0, 0.0], [1.0, 0.0]]\n";
+
+std::string choice(TableReader& table, const std::string& key, const std::vector<std::string>& choices,
+                   const std::string& fallback) {
+    const std::string value = table.optional_string(key).value_or(fallback);
+    for (const auto& option : choices) {
+        if (value == option) return value;
+    }
+    std::string list;
+    for (const auto& option : choices) list += (list.empty() ? "" : ", ") + option;
+    throw InvalidInput(table.key_path(key), "\"" + value + "\"", "one of " + list);
+}
+
+std::vector<std::string> free_keys(const toml::table& fit) {
+    const auto* array = fit["free"].as_array();
+    if (array == nullptr) throw InvalidInput("fit.free", "(missing)", "is required: an array of dotted keys of the case");
+    std::vector<std::string> keys;
+    for (std::size_t i = 0; i < array->size(); ++i) {
+        const auto key = (*array)[i].value<std::string>();
+        if (!key) throw InvalidInput(fmt::format("fit.free[{}]", i), "(not a string)", "must be a dotted key");
+        keys.push_back(*key);
+    }
+    return keys;
+}
+
+// Per-key numbers of `fit.bounds` or `fit.start`: the table's keys are free keys (quoted in TOML).
+const toml::node* per_key(const toml::table& fit, const char* table, const std::string& key) {
+    const auto* entries = fit[table].as_table();
+    return entries == nullptr ? nullptr : entries->get(key);
+}
+
+void check_per_key_tables(const toml::table& fit, const std::vector<std::string>& keys) {
+    for (const char* table : {"bounds", "start"}) {
+        const auto* entries = fit[table].as_table();
+        if (fit[table] && entries == nullptr) {
+            throw InvalidInput(fmt::format("fit.{}", table), "(not a table)", "must be a table keyed by free keys");
+        }
+        if (entries == nullptr) continue;
+        for (const auto& [name, node] : *entries) {
+            if (std::find(keys.begin(), keys.end(), std::string(name.str())) == keys.end()) {
+                throw InvalidInput(fmt::format("fit.{}.{}", table, name.str()), "", "is not a key of fit.free");
+            }
+        }
+    }
+}
+
+fit::FreeParameter read_parameter(const toml::table& fit, const CaseTemplate& model, const std::string& key) {
+    if (key.rfind("material.", 0) != 0 && key.rfind("indenter.", 0) != 0) {
+        throw InvalidInput("fit.free", key, "must name a number of [material] or [indenter]");
+    }
+    if (!model.has_number(key)) throw InvalidInput("fit.free", key, "the case has no number under this key");
+    fit::FreeParameter parameter{key, model.number(key), 0.0, 0.0, true};
+    if (const auto* start = per_key(fit, "start", key)) {
+        const auto value = start->value<double>();
+        if (!value) throw InvalidInput("fit.start." + key, "(not a number)", "must be a number");
+        parameter.start = *value;
+    }
+    require_finite(key, parameter.start);
+    if (const auto* bounds = per_key(fit, "bounds", key)) {
+        const auto* pair = bounds->as_array();
+        const auto lower = pair && pair->size() == 2 ? (*pair)[0].value<double>() : std::nullopt;
+        const auto upper = pair && pair->size() == 2 ? (*pair)[1].value<double>() : std::nullopt;
+        if (!lower || !upper) throw InvalidInput("fit.bounds." + key, "(not [lower, upper])", "must be [lower, upper]");
+        parameter.lower = *lower;
+        parameter.upper = *upper;
+        parameter.logarithmic = parameter.lower > 0.0 && parameter.start > 0.0;
+    } else if (parameter.start > 0.0) {
+        parameter.lower = parameter.start * 1e-4;
+        parameter.upper = parameter.start * 1e4;
+    } else {
+        throw InvalidInput("fit.bounds." + key, "(missing)",
+                           fmt::format("is required: the start value {} is not > 0", format_value(parameter.start)));
+    }
+    return parameter;
+}
+
+}  // namespace
+
+FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
+                       const std::filesystem::path& case_directory) {
+    CaseTemplate model(toml_text, source);
+    if (!model.has_table("fit")) throw InvalidInput("fit", "(missing)", "a fit case needs a [fit] table");
+    const toml::table fit_table = parse_toml(model.take_table("fit"), source);
+    TableReader fit(fit_table, "fit");
+    fit.reject_unknown({"free", "bounds", "start", "fitted", "contact_point", "baseline", "max_iterations", "elements", "data"});
+
+    FitCase fit_case{std::move(model), {}, {}, {}, false};
+    const std::string fitted = choice(fit, "fitted", {"force", "depth"}, "force");
+    fit_case.settings.fitted = fitted == "force" ? fit::Fitted::force : fit::Fitted::depth;
+    const std::string contact = choice(fit, "contact_point", {"fit", "estimate", "fixed"}, "fit");
+    fit_case.settings.contact_point = contact == "fit"        ? fit::ContactPointMode::fit
+                                      : contact == "estimate" ? fit::ContactPointMode::estimate
+                                                              : fit::ContactPointMode::fixed;
+    const std::string baseline = choice(fit, "baseline", {"fit", "estimate", "fixed"}, "fit");
+    fit_case.settings.baseline = baseline == "fit"        ? fit::BaselineMode::fit
+                                 : baseline == "estimate" ? fit::BaselineMode::estimate
+                                                          : fit::BaselineMode::fixed;
+    if (auto iterations = fit.optional_count("max_iterations")) fit_case.settings.max_iterations = *iterations;
+    fit_case.settings.elements = fit.optional_count("elements");
+
+    // The load: the curves drive the model; a given [load] must agree with what is fitted.
+    fit_case.had_load = fit_case.model.has_table("load");
+    if (fit_case.had_load) {
+        const std::string expected = fitted == "force" ? "displacement" : "force";
+        const std::string load = fit_case.model.take_table("load");
+        const toml::table load_table = parse_toml(load, source);
+        const auto control = load_table["control"].value<std::string>();
+        if (control && *control != expected) {
+            throw InvalidInput("load.control", "\"" + *control + "\"",
+                               fmt::format("must be \"{}\" when fit.fitted = \"{}\" (the measured {} drives the model)",
+                                           expected, fitted, fitted == "force" ? "depth" : "force"));
+        }
+        fit_case.model.set_table("load", load);
+    } else {
+        fit_case.model.set_table("load", placeholder_load);
+    }
+    fit_case.model.build();  // the model's own rules
+
+    const auto keys = free_keys(fit_table);
+    check_per_key_tables(fit_table, keys);
+    for (const auto& key : keys) fit_case.parameters.push_back(read_parameter(fit_table, fit_case.model, key));
+
+    // The curves may also come as arrays from a caller (fit::validate requires at least one).
+    const auto* data = fit_table["data"].as_array();
+    if (fit_table["data"] && data == nullptr) {
+        throw InvalidInput("fit.data", "(not an array of tables)", "give each curve as a [[fit.data]] table");
+    }
+    for (std::size_t i = 0; data != nullptr && i < data->size(); ++i) {
+        const auto* table = (*data)[i].as_table();
+        const std::string path = fmt::format("fit.data[{}]", i);
+        if (table == nullptr) throw InvalidInput(path, "(not a table)", "must be a [[fit.data]] table");
+        TableReader reader(*table, path);
+        fit_case.data.push_back(read_fit_data(reader, case_directory));
+    }
+    return fit_case;
+}
+
+FitCase load_fit_case(const std::filesystem::path& path) {
+    std::ifstream file(path);
+    if (!file) throw InvalidInput("case", path.string(), "cannot be read (no such file, or no permission)");
+    std::ostringstream text;
+    text << file.rdbuf();
+    return parse_fit_case(text.str(), path.string(), path.parent_path());
+}
+
+fit::ModelBuilder model_builder(const FitCase& fit_case) {
+    std::vector<std::string> keys;
+    for (const auto& parameter : fit_case.parameters) keys.push_back(parameter.name);
+    return [model = fit_case.model, keys](const std::vector<double>& values) {
+        CaseTemplate copy = model;
+        for (std::size_t j = 0; j < keys.size(); ++j) copy.set_number(keys[j], values[j]);
+        return copy.build();
+    };
+}
+
+std::string fitted_case_text(const FitCase& fit_case, const std::vector<double>& values, std::string_view load_body) {
+    CaseTemplate copy = fit_case.model;
+    for (std::size_t j = 0; j < fit_case.parameters.size(); ++j) copy.set_number(fit_case.parameters[j].name, values[j]);
+    if (!load_body.empty()) copy.set_table("load", load_body);
+    return copy.text();
+}
+
+}  // namespace mdr::io

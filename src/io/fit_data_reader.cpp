@@ -1,0 +1,51 @@
+#include "fit_data_reader.hpp"
+
+#include <utility>
+
+#include "mdr/error.hpp"
+
+namespace mdr::io {
+
+double read_unit(TableReader& units, const std::string& key, const std::string& base) {
+    if (!units.has(key)) return 1.0;
+    if (!units.is_string(key)) {
+        const double factor = units.number(key);
+        require_positive(units.key_path(key), factor);
+        return factor;
+    }
+    const std::string name = units.string(key);
+    static const std::pair<const char*, double> prefixes[] = {{"", 1.0},    {"p", 1e-12}, {"n", 1e-9}, {"u", 1e-6},
+                                                              {"µ", 1e-6}, {"m", 1e-3},  {"c", 1e-2}, {"k", 1e3}};
+    for (const auto& [prefix, factor] : prefixes) {
+        if (name == prefix + base) return factor;
+    }
+    throw InvalidInput(units.key_path(key), "\"" + name + "\"",
+                       "must be a number > 0 (the unit in " + base + ") or " + base +
+                           " with an SI prefix: p, n, u or µ, m, c, k (e.g. \"n" + base + "\")");
+}
+
+fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory) {
+    table.reject_unknown({"file", "name", "time", "depth", "force", "piezo", "deflection", "spring_constant", "units",
+                          "segment_column", "segments"});
+    fit::CurveSource source;
+    const std::filesystem::path file = table.string("file");
+    source.file = file.is_absolute() ? file : case_directory / file;
+    source.name = table.optional_string("name").value_or("");
+    source.time_column = table.string("time");
+    source.depth_column = table.optional_string("depth").value_or("");
+    source.force_column = table.optional_string("force").value_or("");
+    source.piezo_column = table.optional_string("piezo").value_or("");
+    source.deflection_column = table.optional_string("deflection").value_or("");
+    source.spring_constant = table.optional_number("spring_constant");
+    if (auto units = table.table("units")) {
+        units->reject_unknown({"time", "length", "force"});
+        source.time_unit = read_unit(*units, "time", "s");
+        source.length_unit = read_unit(*units, "length", "m");
+        source.force_unit = read_unit(*units, "force", "N");
+    }
+    source.segment_column = table.optional_string("segment_column").value_or("");
+    if (table.has("segments")) source.segments = table.labels("segments");
+    return source;
+}
+
+}  // namespace mdr::io

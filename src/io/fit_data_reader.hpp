@@ -1,0 +1,23 @@
+#pragma once
+// Reads one `[[fit.data]]` table of a fit case: where a measured curve's columns are (docs/case-format.md,
+// "Measured curves").
+
+#include <filesystem>
+
+#include "mdr/fit/curve.hpp"
+#include "toml_reader.hpp"
+
+namespace mdr::io {
+
+/// The CurveSource of one `[[fit.data]]` table: `file` (relative to `case_directory` unless absolute), the column
+/// keys `time`, `depth`, `force`, `piezo`, `deflection`, `segment_column`, and `spring_constant`, `units`,
+/// `segments`, `name`. Refuses unknown keys (suggesting the nearest) and values of the wrong type; the rules that
+/// relate the keys (one depth source, the spring constant with the AFM columns, ...) are load_curve's, checked
+/// when the curve is loaded.
+fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory);
+
+/// The size of one unit of a `units` entry in SI units (s, m or N for `base`): a number > 0, or a name made of an
+/// SI prefix (p, n, u or µ, m, c, k, or none) and `base` ("nm", "ms", "nN", "m"). `key` names the entry.
+double read_unit(TableReader& units, const std::string& key, const std::string& base);
+
+}  // namespace mdr::io

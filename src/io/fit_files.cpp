@@ -1,0 +1,97 @@
+#include "mdr/io/fit_files.hpp"
+
+#include <fmt/format.h>
+#include <fmt/os.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+namespace mdr::io {
+
+namespace {
+
+nlohmann::ordered_json number(double value) { return std::isfinite(value) ? nlohmann::ordered_json(value) : nullptr; }
+
+// The first curve's driving history as a `[load]` body: at most about 400 points, the contact point removed.
+std::string load_of_first_curve(const FitCase& fit_case, const fit::FitResult& result) {
+    const auto& curve = result.curves.front();
+    const bool depth_driven = fit_case.settings.fitted == fit::Fitted::force;
+    std::string history;
+    const std::size_t stride = std::max<std::size_t>(1, curve.time.size() / 400);
+    for (std::size_t i = 0; i < curve.time.size(); i += stride) {
+        const bool last = i + stride >= curve.time.size();
+        const std::size_t k = last ? curve.time.size() - 1 : i;
+        history += fmt::format("{}[{}, {}]", history.empty() ? "" : ", ", curve.time[k], curve.drive[k]);
+        if (last) break;
+    }
+    return fmt::format("control = \"{}\"\nhistory = [{}]\n", depth_driven ? "displacement" : "force", history);
+}
+
+}  // namespace
+
+std::string fit_json(const fit::FitResult& result) {
+    nlohmann::ordered_json json;
+    json["status"] = result.status;
+    json["converged"] = result.converged;
+    nlohmann::ordered_json parameters, errors, intervals, undetermined, correlation = nlohmann::ordered_json::array();
+    for (std::size_t j = 0; j < result.names.size(); ++j) {
+        parameters[result.names[j]] = number(result.values[j]);
+        errors[result.names[j]] = number(result.standard_errors[j]);
+        intervals[result.names[j]] = {number(result.lower_95[j]), number(result.upper_95[j])};
+        nlohmann::ordered_json row = nlohmann::ordered_json::array();
+        for (double r : result.correlation[j]) row.push_back(number(r));
+        correlation.push_back(row);
+    }
+    for (const auto& entry : result.undetermined) undetermined[entry.name] = entry.reason;
+    json["parameters"] = parameters;
+    json["standard_errors"] = errors;
+    json["intervals_95"] = intervals;
+    json["correlation"] = correlation;
+    json["undetermined"] = undetermined.is_null() ? nlohmann::ordered_json::object() : undetermined;
+    nlohmann::ordered_json curves = nlohmann::ordered_json::array();
+    for (const auto& curve : result.curves) {
+        curves.push_back({{"name", curve.name},
+                          {"points", curve.time.size()},
+                          {"contact_point", number(curve.contact_depth)},
+                          {"contact_point_error", number(curve.contact_depth_error)},
+                          {"baseline", number(curve.baseline)},
+                          {"baseline_error", number(curve.baseline_error)},
+                          {"noise", number(curve.noise)},
+                          {"rms_residual", number(curve.rms_residual)}});
+    }
+    json["curves"] = curves;
+    json["rms_residual"] = number(result.rms_residual);
+    json["noise"] = number(result.noise);
+    json["residual_to_noise"] = number(result.noise > 0.0 ? result.rms_residual / result.noise : NAN);
+    json["aic"] = number(result.aic);
+    json["bic"] = number(result.bic);
+    json["points"] = result.points;
+    json["free_count"] = result.free_count;
+    json["iterations"] = result.iterations;
+    json["evaluations"] = result.evaluations;
+    json["wall_seconds"] = result.wall_seconds;
+    return json.dump(2);
+}
+
+void write_fit_result(const std::filesystem::path& directory, const FitCase& fit_case, const fit::FitResult& result) {
+    auto json = fmt::output_file((directory / "fit.json").string());
+    json.print("{}\n", fit_json(result));
+    json.close();
+
+    auto csv = fmt::output_file((directory / "curves.csv").string());
+    csv.print("curve,t,measured,model,residual\n");
+    for (const auto& curve : result.curves) {
+        for (std::size_t i = 0; i < curve.time.size(); ++i) {
+            csv.print("{},{},{},{},{}\n", curve.name, curve.time[i], curve.measured[i], curve.model[i],
+                      curve.model[i] - curve.measured[i]);
+        }
+    }
+    csv.close();
+
+    auto toml = fmt::output_file((directory / "fitted.toml").string());
+    toml.print("# The case with the fitted values of mdr fit (fit.json has their errors).\n{}\n",
+               fitted_case_text(fit_case, result.values, fit_case.had_load ? "" : load_of_first_curve(fit_case, result)));
+    toml.close();
+}
+
+}  // namespace mdr::io

@@ -1,0 +1,127 @@
+// estimate_contact on synthetic approach curves with a known tilted baseline, Gaussian force noise of known
+// deviation (fixed seeds) and a power-law onset F - baseline = A (d - d_c)^n (Hertz: n = 1.5; cone: 2; flat: 1).
+// The contact point is judged against the noise-equivalent depth d_sigma = (sigma / A)^(1/n), the depth past contact
+// at which the onset force equals one noise deviation.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "mdr/fit/curve.hpp"
+
+namespace mdr::fit {
+namespace {
+
+struct Approach {
+    double exponent = 1.5;
+    double peak_over_noise = 1000.0;  // onset force at the end of the approach / sigma
+    double depth_noise = 0.0;         // deviation of white depth noise [m]
+    std::size_t pause_rows = 0;       // rows at constant depth 0 before the approach
+    bool noise = true;
+};
+
+constexpr std::size_t rows = 2000;
+constexpr double travel = 10e-6;    // m, over the approach
+constexpr double contact = 6e-6;    // m
+constexpr double sigma = 1e-10;     // N
+constexpr double offset = 2e-9;     // N, baseline at t = 0
+constexpr double drift = 3e-10;     // N/s, baseline slope
+constexpr double time_step = 1e-3;  // s
+
+double amplitude(const Approach& a) { return a.peak_over_noise * sigma / std::pow(travel - contact, a.exponent); }
+double noise_depth(const Approach& a) { return std::pow(sigma / amplitude(a), 1.0 / a.exponent); }
+double baseline_at_contact(const Approach& a) {
+    return offset + drift * time_step * (static_cast<double>(a.pause_rows) + contact / travel * (rows - 1));
+}
+
+Curve approach_curve(const Approach& a, unsigned seed) {
+    std::mt19937_64 random(seed);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    const std::size_t total = a.pause_rows + rows;
+    std::vector<double> time(total), depth(total), force(total);
+    for (std::size_t i = 0; i < total; ++i) {
+        time[i] = static_cast<double>(i) * time_step;
+        const double d = i < a.pause_rows ? 0.0 : travel * static_cast<double>(i - a.pause_rows) / (rows - 1);
+        const double onset = d > contact ? amplitude(a) * std::pow(d - contact, a.exponent) : 0.0;
+        force[i] = offset + drift * time[i] + onset + (a.noise ? sigma * normal(random) : 0.0);
+        depth[i] = d + a.depth_noise * normal(random);
+    }
+    return make_curve("synthetic", std::move(time), std::move(depth), std::move(force));
+}
+
+// Tolerances from 40 seeds each during development (the largest error seen, rounded up about 2x): Hertz and cone
+// contact within 0.5 d_sigma (largest 0.21), flat onset within 1 d_sigma (largest 0.98: n = 1 is the lower bound of
+// the exponent, which biases the estimate); noise within 10 % (MAD of ~1900 rows: standard error ~3 %); baseline
+// within 0.5 sigma.
+void expect_estimates(const Approach& a, double contact_tolerance) {
+    for (unsigned seed = 1; seed <= 10; ++seed) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        const Curve curve = approach_curve(a, seed);
+        EXPECT_EQ(curve.estimate_note, "");
+        EXPECT_NEAR(curve.contact_depth, contact, contact_tolerance * noise_depth(a));
+        EXPECT_NEAR(curve.force_noise, sigma, 0.1 * sigma);
+        EXPECT_NEAR(curve.force_baseline, baseline_at_contact(a), 0.5 * sigma);
+        EXPECT_NEAR(curve.onset_exponent, a.exponent, 0.1);
+    }
+}
+
+TEST(ContactEstimate, HertzOnset) { expect_estimates({.exponent = 1.5}, 0.5); }
+TEST(ContactEstimate, ConeOnset) { expect_estimates({.exponent = 2.0}, 0.5); }
+TEST(ContactEstimate, FlatOnset) { expect_estimates({.exponent = 1.0, .peak_over_noise = 100.0}, 1.0); }
+TEST(ContactEstimate, WeakAndStrongSignal) {
+    expect_estimates({.peak_over_noise = 100.0}, 0.5);
+    expect_estimates({.peak_over_noise = 10000.0}, 0.5);
+}
+
+TEST(ContactEstimate, PauseBeforeTheApproach) { expect_estimates({.pause_rows = 500}, 0.5); }
+
+TEST(ContactEstimate, NoiseFreeCurveIsExact) {
+    for (double exponent : {1.0, 1.5, 2.0, 2.5}) {
+        const Approach a{.exponent = exponent, .noise = false};
+        const Curve curve = approach_curve(a, 1);
+        EXPECT_NEAR(curve.contact_depth, contact, 1e-6 * contact) << exponent;
+        EXPECT_NEAR(curve.onset_exponent, exponent, 1e-4) << exponent;
+        EXPECT_NEAR(curve.onset_amplitude, amplitude(a), 1e-3 * amplitude(a)) << exponent;
+        EXPECT_NEAR(curve.force_baseline, baseline_at_contact(a), 1e-6 * offset) << exponent;
+    }
+}
+
+TEST(ContactEstimate, DepthNoiseFromSecondDifferences) {
+    const double depth_sigma = 2e-9;
+    const Curve curve = approach_curve({.depth_noise = depth_sigma}, 3);
+    EXPECT_NEAR(curve.depth_noise, depth_sigma, 0.1 * depth_sigma);
+    EXPECT_LT(approach_curve({}, 3).depth_noise, 1e-15);  // a linear depth: round-off only (~1e-22 m)
+}
+
+TEST(ContactEstimate, ForceThatNeverRisesHasNoContact) {
+    std::mt19937_64 random(5);
+    std::normal_distribution<double> normal(0.0, sigma);
+    std::vector<double> time(rows), depth(rows), force(rows);
+    for (std::size_t i = 0; i < rows; ++i) {
+        time[i] = static_cast<double>(i) * time_step;
+        depth[i] = travel * static_cast<double>(i) / (rows - 1);
+        force[i] = offset + normal(random);
+    }
+    const Curve curve = make_curve("flat", time, depth, force);
+    EXPECT_NE(curve.estimate_note, "");
+    EXPECT_EQ(curve.contact_depth, 0.0);
+    EXPECT_EQ(curve.onset_exponent, 0.0);
+    EXPECT_NEAR(curve.force_noise, sigma, 0.1 * sigma);  // the noise is still known
+}
+
+TEST(ContactEstimate, CurveThatStartsAtItsPeakHasNoContact) {
+    // A stress relaxation from its first row: no part before contact.
+    std::vector<double> time(100), depth(100, 1e-6), force(100);
+    for (std::size_t i = 0; i < 100; ++i) {
+        time[i] = 0.01 * static_cast<double>(i);
+        force[i] = 1e-7 * (0.5 + 0.5 * std::exp(-time[i]));
+    }
+    const Curve curve = make_curve("relaxation", time, depth, force);
+    EXPECT_NE(curve.estimate_note.find("before the force rises"), std::string::npos) << curve.estimate_note;
+    EXPECT_EQ(curve.contact_depth, 0.0);
+    EXPECT_TRUE(std::isfinite(curve.force_noise));
+}
+
+}  // namespace
+}  // namespace mdr::fit

@@ -1,0 +1,110 @@
+// read_fit_data: one `[[fit.data]]` table to its CurveSource (paths relative to the case, units by number or name,
+// segments as strings or integers), and its refusals.
+
+#include "io/fit_data_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include "mdr/error.hpp"
+
+namespace mdr::io {
+namespace {
+
+fit::CurveSource read(const std::string& text, const std::filesystem::path& directory = "/cases") {
+    const toml::table table = toml::parse(text);
+    TableReader reader(table, "fit.data[0]");
+    return read_fit_data(reader, directory);
+}
+
+std::string message(const std::string& text) {
+    try {
+        read(text);
+    } catch (const InvalidInput& error) {
+        return error.what();
+    }
+    return "(accepted)";
+}
+
+TEST(FitDataReader, MapsEveryKey) {
+    const fit::CurveSource source = read(R"(
+        file = "data/curve.csv"
+        name = "cell 1"
+        time = "t"
+        piezo = "z"
+        deflection = "defl"
+        spring_constant = 0.019
+        units = { time = "ms", length = "nm", force = 1e-6 }
+        segment_column = "segment"
+        segments = ["extend", 2]
+    )");
+    EXPECT_EQ(source.file, std::filesystem::path("/cases/data/curve.csv"));
+    EXPECT_EQ(source.name, "cell 1");
+    EXPECT_EQ(source.time_column, "t");
+    EXPECT_EQ(source.depth_column, "");
+    EXPECT_EQ(source.force_column, "");
+    EXPECT_EQ(source.piezo_column, "z");
+    EXPECT_EQ(source.deflection_column, "defl");
+    EXPECT_EQ(source.spring_constant, 0.019);
+    EXPECT_EQ(source.time_unit, 1e-3);
+    EXPECT_EQ(source.length_unit, 1e-9);
+    EXPECT_EQ(source.force_unit, 1e-6);
+    EXPECT_EQ(source.segment_column, "segment");
+    EXPECT_EQ(source.segments, (std::vector<std::string>{"extend", "2"}));
+}
+
+TEST(FitDataReader, DefaultsAndAbsolutePaths) {
+    const fit::CurveSource source = read(R"(
+        file = "/data/curve.csv"
+        time = "t_s"
+        depth = "indentation_m"
+        force = "force_N"
+    )");
+    EXPECT_EQ(source.file, std::filesystem::path("/data/curve.csv"));
+    EXPECT_EQ(source.name, "");
+    EXPECT_EQ(source.depth_column, "indentation_m");
+    EXPECT_EQ(source.force_column, "force_N");
+    EXPECT_FALSE(source.spring_constant.has_value());
+    EXPECT_EQ(source.time_unit, 1.0);
+    EXPECT_EQ(source.length_unit, 1.0);
+    EXPECT_EQ(source.force_unit, 1.0);
+    EXPECT_TRUE(source.segments.empty());
+}
+
+TEST(FitDataReader, UnitNamesAreSiPrefixesOfTheBase) {
+    const auto length = [](const std::string& unit) {
+        return read("file = \"c.csv\"\ntime = \"t\"\nunits = { length = " + unit + " }\n").length_unit;
+    };
+    EXPECT_EQ(length("\"m\""), 1.0);
+    EXPECT_EQ(length("\"mm\""), 1e-3);
+    EXPECT_EQ(length("\"um\""), 1e-6);
+    EXPECT_EQ(length("\"µm\""), 1e-6);
+    EXPECT_EQ(length("\"nm\""), 1e-9);
+    EXPECT_EQ(length("\"pm\""), 1e-12);
+    EXPECT_EQ(length("1e-9"), 1e-9);
+    EXPECT_EQ(read("file = \"c.csv\"\ntime = \"t\"\nunits = { time = \"s\", force = \"pN\" }\n").force_unit, 1e-12);
+    EXPECT_EQ(message("file = \"c.csv\"\ntime = \"t\"\nunits = { length = \"nN\" }\n"),
+              "fit.data[0].units.length = \"nN\": must be a number > 0 (the unit in m) or m with an SI prefix: p, n, "
+              "u or µ, m, c, k (e.g. \"nm\")");
+    EXPECT_EQ(message("file = \"c.csv\"\ntime = \"t\"\nunits = { time = 0 }\n"),
+              "fit.data[0].units.time = 0: must be > 0");
+    EXPECT_EQ(message("file = \"c.csv\"\ntime = \"t\"\nunits = { lenght = \"nm\" }\n"),
+              "fit.data[0].units.lenght = 'nm': unknown key; did you mean 'length'?");
+}
+
+TEST(FitDataReader, RefusesUnknownKeysAndWrongTypes) {
+    EXPECT_EQ(message("file = \"c.csv\"\ntime = \"t\"\ndepht = 'd'\n"),
+              "fit.data[0].depht = 'd': unknown key; did you mean 'depth'?");
+    EXPECT_EQ(message("time = \"t\"\n"), "fit.data[0].file = (missing): is required");
+    EXPECT_EQ(message("file = \"c.csv\"\ntime = 3\n"), "fit.data[0].time = 3: must be a string");
+    EXPECT_EQ(message("file = \"c.csv\"\ntime = \"t\"\nspring_constant = \"stiff\"\n"),
+              "fit.data[0].spring_constant = 'stiff': must be a number");
+    EXPECT_EQ(message("file = \"c.csv\"\ntime = \"t\"\nsegments = \"extend\"\n"),
+              "fit.data[0].segments = 'extend': must be an array of strings or integers");
+    EXPECT_EQ(message("file = \"c.csv\"\ntime = \"t\"\nsegments = [\"extend\", 1.5]\n"),
+              "fit.data[0].segments[1] = 1.5: must be an array of strings or integers");
+    EXPECT_EQ(message("file = \"c.csv\"\ntime = \"t\"\nunits = \"nm\"\n"),
+              "fit.data[0].units = 'nm': must be a table");
+}
+
+}  // namespace
+}  // namespace mdr::io
