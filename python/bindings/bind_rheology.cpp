@@ -29,10 +29,10 @@ std::vector<std::pair<double, double>> term_pairs(const Rheology& m) {
 }  // namespace
 
 void bind_rheology(py::module_& module) {
-    py::class_<Rheology>(module, "Material", R"doc(A linear viscoelastic material (handbook Table 1).
+    py::class_<Rheology> material(module, "Material", R"doc(A linear viscoelastic material (handbook Table 1).
 
 G(t) = G_inf + eta delta(t) + sum_k G_k exp(-t / tau_k): an equilibrium modulus, a parallel dashpot and
-relaxation branches. Build it with the factories (elastic, viscous, kelvin_voigt, maxwell, standard, prony) or
+relaxation branches. Build it with the factories (one per model of the registry: elastic ... prony, power_law, the springpots, table) or
 the canonical constructor. Values are in the case's units (SI: Pa, Pa s, s). A Material pickles, and stands for
 its [material] table in a case dict.
 
@@ -52,125 +52,14 @@ Examples
 4000000.0
 >>> m.terms
 [(3000000.0, 0.1)]
-)doc")
+)doc");
+    material
         .def(py::init([](double G_inf, double eta, const std::vector<std::pair<double, double>>& terms) {
                  return Rheology(G_inf, eta, relaxation_terms(terms));
              }),
-             py::arg("G_inf"), py::arg("eta") = 0.0, py::arg("terms") = std::vector<std::pair<double, double>>{})
-        .def_static("elastic", &Rheology::elastic, py::arg("G"), R"doc(An elastic body, G(t) = G.
-
-Parameters
-----------
-G : float
-    Shear modulus (> 0).
-
-Returns
--------
-Material
-
-Examples
---------
->>> mdr.Material.elastic(G=1e6).creep(5.0)
-1e-06
-)doc")
-        .def_static("viscous", &Rheology::viscous, py::arg("eta"), R"doc(A viscous body, G(t) = eta delta(t).
-
-Parameters
-----------
-eta : float
-    Viscosity (> 0).
-
-Returns
--------
-Material
-
-Examples
---------
->>> mdr.Material.viscous(eta=1e3).creep(2.0)
-0.002
-)doc")
-        .def_static("kelvin_voigt", &Rheology::kelvin_voigt, py::arg("G"), py::arg("eta"),
-                    R"doc(A Kelvin-Voigt body, G(t) = G + eta delta(t).
-
-Parameters
-----------
-G : float
-    Shear modulus of the spring (> 0).
-eta : float
-    Viscosity of the parallel dashpot (> 0).
-
-Returns
--------
-Material
-
-Examples
---------
->>> round(mdr.Material.kelvin_voigt(G=1e6, eta=1e4).creep(0.01) * 1e6, 6)   # (1 - exp(-1)) / G
-0.632121
-)doc")
-        .def_static("maxwell", &Rheology::maxwell, py::arg("G"), py::arg("tau"),
-                    R"doc(A Maxwell body, G(t) = G exp(-t / tau).
-
-Parameters
-----------
-G : float
-    Shear modulus (> 0).
-tau : float
-    Relaxation time (> 0).
-
-Returns
--------
-Material
-
-Examples
---------
->>> mdr.Material.maxwell(G=1e6, tau=0.5).creep(1.0)   # (1 + t / tau) / G
-3e-06
-)doc")
-        .def_static("standard", &Rheology::standard, py::arg("G_inf"), py::arg("G1"), py::arg("tau1"),
-                    R"doc(A standard linear solid, G(t) = G_inf + G1 exp(-t / tau1).
-
-Parameters
-----------
-G_inf : float
-    Equilibrium modulus (> 0).
-G1 : float
-    Modulus of the Maxwell branch (> 0).
-tau1 : float
-    Its relaxation time (> 0).
-
-Returns
--------
-Material
-
-Examples
---------
->>> mdr.Material.standard(G_inf=1e6, G1=3e6, tau1=0.1).relaxation([0.0, 1e3])
-array([4000000., 1000000.])
-)doc")
-        .def_static(
-            "prony",
-            [](double G_inf, const std::vector<std::pair<double, double>>& terms) {
-                return Rheology::prony(G_inf, relaxation_terms(terms));
-            },
-            py::arg("G_inf"), py::arg("terms"), R"doc(A Prony series, G(t) = G_inf + sum_k G_k exp(-t / tau_k).
-
-Parameters
-----------
-G_inf : float
-    Equilibrium modulus (>= 0).
-terms : sequence of (float, float)
-    The branches (G_k, tau_k), each > 0.
-
-Returns
--------
-Material
-
-Examples
---------
->>> mdr.Material.prony(G_inf=1e6, terms=[(2e6, 0.01), (1e6, 1.0)]).relaxation(0.0)
-4000000.0
-)doc")
+             py::arg("G_inf"), py::arg("eta") = 0.0, py::arg("terms") = std::vector<std::pair<double, double>>{});
+    bind_material_models(material);  // mdr.Material.<model>(...) for every registered model (their docstrings)
+    material
         .def("relaxation",
              [](const Rheology& m, const InputArray& t) {
                  return elementwise<double>(t, [&](double x) { return m.relaxation(x); });

@@ -335,6 +335,8 @@ def material_functions(functions: Mapping[str, np.ndarray], axes=None, units: Un
     names = _unit_names(units)
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     axes.loglog(functions["t"], functions["G"], color="C0", label="G(t)")
+    if "G_model" in functions:  # a model or data standing as a series: both, side by side
+        axes.loglog(functions["t"], functions["G_model"], color="k", ls=":", label="G(t), model or data")
     axes.set(xlabel=f"time t [{names['time']}]", ylabel=f"relaxation G [{names['pressure']}]",
              title="Material functions")
     right = axes.twinx()
@@ -372,6 +374,9 @@ def dynamic_moduli(dynamic: Mapping[str, np.ndarray], axes=None, units: Units = 
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     axes.loglog(dynamic["omega"], dynamic["storage"], label="storage")
     axes.loglog(dynamic["omega"], np.maximum(dynamic["loss"], np.finfo(float).tiny), label="loss")
+    if "storage_model" in dynamic:  # a model or data standing as a series: both, side by side
+        axes.loglog(dynamic["omega"], dynamic["storage_model"], color="k", ls=":", label="model or data")
+        axes.loglog(dynamic["omega"], dynamic["loss_model"], color="k", ls=":")
     axes.set(xlabel=f"angular frequency omega [rad/{names['time']}]", ylabel=f"modulus [{names['pressure']}]",
              title="Complex modulus")
     axes.legend(loc="best")

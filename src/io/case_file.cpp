@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "mdr/drivers/case_validation.hpp"
+#include "mdr/drivers/material_window.hpp"
 #include "mdr/error.hpp"
 #include "mdr/rheology/compressible.hpp"
 #include "mdr/foundation/foundation.hpp"
@@ -63,25 +64,47 @@ std::shared_ptr<const profile::Profile> read_indenter(TableReader& table) {
     throw InvalidInput("indenter.shape", "\"" + shape + "\"", "unknown shape; one of sphere, cone, flat, power, profile");
 }
 
-// One body: its shear rheology and, when a bulk part is given, the effective one of eq. (56).
-struct Body {
-    rheology::Rheology shear;
-    std::optional<rheology::Rheology> effective;
-    const rheology::Rheology& contact() const { return effective ? *effective : shear; }
+// One body as read: its shear table and, for a compressible body, K or the bulk table (built once the time window
+// of the case is known, which a model converted to a series needs).
+struct BodySpec {
+    MaterialSpec shear;
+    std::optional<double> bulk_modulus;
+    std::optional<MaterialSpec> bulk;
+    bool needs_window() const { return shear.model->needs_window || (bulk && bulk->model->needs_window); }
 };
 
-Body read_body(TableReader& table) {
-    Body body{read_rheology(table, "G", {"K", "bulk"}), std::nullopt};
+BodySpec read_body(TableReader& table) {
+    BodySpec body{read_material(table, "G", {"K", "bulk"}), std::nullopt, std::nullopt};
     if (table.has("K") && table.has("bulk")) {
         throw InvalidInput(table.key_path("K"), table.text("K"), "give either K or [" + table.key_path("bulk") + "], not both");
     }
     if (table.has("K")) {
-        const double bulk_modulus = table.number("K");
-        require_positive(table.key_path("K"), bulk_modulus);
-        body.effective = rheology::compressible_effective(body.shear, rheology::Rheology::elastic(bulk_modulus));
+        body.bulk_modulus = table.number("K");
+        require_positive(table.key_path("K"), *body.bulk_modulus);
     } else if (auto bulk = table.table("bulk")) {
         if (!bulk->has("model")) throw InvalidInput(bulk->key_path("model"), "(missing)", "a bulk table needs a model");
-        body.effective = rheology::compressible_effective(body.shear, read_rheology(*bulk, "K", {}));
+        body.bulk = read_material(*bulk, "K", {});
+    }
+    return body;
+}
+
+// One body built: its shear rheology and, when a bulk part is given, the effective one of eq. (56).
+struct Body {
+    rheology::Rheology shear;
+    std::optional<rheology::Rheology> effective;
+    rheology::MaterialOrigin origin;
+    const rheology::Rheology& contact() const { return effective ? *effective : shear; }
+};
+
+Body build_body(const BodySpec& spec, const std::optional<rheology::TimeWindow>& window, const std::string& directory) {
+    rheology::ModelMaterial shear = build_material(spec.shear, window, directory);
+    Body body{std::move(shear.series), std::nullopt, std::move(shear.origin)};
+    std::optional<rheology::ModelMaterial> bulk;
+    if (spec.bulk_modulus) bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus), {}};
+    if (spec.bulk) bulk = build_material(*spec.bulk, window, directory);
+    if (bulk) {
+        body.effective = rheology::compressible_effective(body.shear, bulk->series);
+        body.origin = rheology::combined_origin(body.origin, bulk->origin, " with bulk ");
     }
     return body;
 }
@@ -189,18 +212,12 @@ drivers::ContactCase read_case(const toml::table& root_table) {
 
     auto material_table = root.table("material");
     if (!material_table) throw InvalidInput("material", "(missing)", "is required");
-    const Body half_space = read_body(*material_table);
-    rheology::Rheology material = half_space.contact();
-    std::optional<rheology::Rheology> shear_material;
-    if (half_space.effective) shear_material = half_space.shear;
+    const BodySpec half_space_spec = read_body(*material_table);
     auto indenter_table = root.table("indenter");
     if (!indenter_table) throw InvalidInput("indenter", "(missing)", "is required");
     auto indenter = read_indenter(*indenter_table);
-    if (auto indenter_material = indenter_table->table("material")) {
-        const Body second = read_body(*indenter_material);
-        material = rheology::in_series(material, second.contact());  // eq. (8): creep functions add
-        if (half_space.effective || second.effective) shear_material = rheology::in_series(half_space.shear, second.shear);
-    }
+    std::optional<BodySpec> second_spec;
+    if (auto indenter_material = indenter_table->table("material")) second_spec = read_body(*indenter_material);
 
     auto load = root.table("load");
     if (!load) throw InvalidInput("load", "(missing)", "is required");
@@ -268,7 +285,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
         tangential = read_tangential(*table);
         if (!load->has("end")) end_time = std::max(end_time, tangential->end_time());
         // Exact only for elastically similar bodies (section 7): compressible or two bodies make it approximate.
-        approximate = shear_material.has_value() || indenter_table->has("material");
+        approximate = half_space_spec.bulk_modulus || half_space_spec.bulk || indenter_table->has("material");
     }
 
     std::vector<double> snapshots;
@@ -289,10 +306,30 @@ drivers::ContactCase read_case(const toml::table& root_table) {
         numerics.max_memory = table->optional_number("max_memory");
     }
 
+    // The bodies, built over the time window of the case when a model is converted to a series.
+    std::optional<rheology::TimeWindow> window;
+    if (half_space_spec.needs_window() || (second_spec && second_spec->needs_window())) {
+        window = drivers::material_window(history, end_time, numerics, tangential, impact.has_value());
+    }
+    // Files a material names (a table's `file`) are found next to the case file (the parsed table's source).
+    const auto& source_path = root_table.source().path;
+    const std::string directory = source_path ? std::filesystem::path(*source_path).parent_path().string() : "";
+    const Body half_space = build_body(half_space_spec, window, directory);
+    rheology::Rheology material = half_space.contact();
+    std::optional<rheology::Rheology> shear_material;
+    if (half_space.effective) shear_material = half_space.shear;
+    rheology::MaterialOrigin origin = half_space.origin;
+    if (second_spec) {
+        const Body second = build_body(*second_spec, window, directory);
+        material = rheology::in_series(material, second.contact());  // eq. (8): creep functions add
+        if (half_space.effective || second.effective) shear_material = rheology::in_series(half_space.shear, second.shear);
+        origin = rheology::combined_origin(origin, second.origin, " in series with ");
+    }
+
     drivers::ContactCase contact_case{title,    std::move(material),  std::move(indenter), control,
                                       std::move(history), end_time, std::move(snapshots), numerics,
                                       std::move(shear_material), impact, std::move(tangential), approximate,
-                                      oblique};
+                                      oblique, std::move(origin)};
     contact_case.harmonic = harmonic;
     contact_case.spring_constant = spring_constant;
     contact_case.units = units;
@@ -347,10 +384,15 @@ std::string describe(const drivers::ContactCase& contact_case) {
                             tangential->harmonic ? fmt::format("harmonic at {:.4g} Hz", tangential->harmonic->frequency)
                                                  : "piecewise-linear history");
     }
-    return fmt::format("{}{} on {} half-space (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
+    const auto& origin = contact_case.material_origin;
+    std::string model = origin.description.empty() ? std::string() : fmt::format(" {}", origin.description);
+    if (origin.certificate) {
+        model = fmt::format("{} {}", model, rheology::describe_certificate(*origin.certificate, material.terms().size()));
+    }
+    return fmt::format("{}{} on {} half-space{} (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
                        contact_case.title.empty() ? "" : "\"" + contact_case.title + "\": ",
-                       contact_case.indenter->describe(), rheology, material.instantaneous_modulus(), units.pressure,
-                       material.equilibrium_modulus(), units.pressure, material.terms().size(), load,
+                       contact_case.indenter->describe(), rheology, model, material.instantaneous_modulus(),
+                       units.pressure, material.equilibrium_modulus(), units.pressure, material.terms().size(), load,
                        contact_case.units == "SI" ? "" : fmt::format(" [units {}]", units.name));
 }
 

@@ -37,6 +37,10 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
     summary["half_width"] = result.numerics.half_width;
     summary["final_force"] = result.force.empty() ? 0.0 : result.force.back();
     summary["final_depth"] = result.depth.empty() ? 0.0 : result.depth.back();
+    if (const auto& certificate = contact_case.material_origin.certificate) {
+        summary["material_error"] = certificate->error;  // the series standing for the model (power law, table)
+        summary["material_window"] = {certificate->window.shortest, certificate->window.longest};
+    }
     if (contact_case.tangential) summary["tangential_approximation"] = contact_case.tangential_approximate;
     if (result.impact) {
         summary["restitution"] = result.impact->restitution;

@@ -12,6 +12,7 @@
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/drivers/tangential_load.hpp"
 #include "mdr/profile/profile.hpp"
+#include "mdr/rheology/approximation.hpp"
 #include "mdr/rheology/rheology.hpp"
 
 namespace mdr::drivers {
@@ -87,6 +88,8 @@ struct ContactCase {
     /// the normal problem only (section 7) and the tangential result an approximation.
     bool tangential_approximate = false;
     std::optional<ObliqueImpactLoad> oblique{};         ///< with control = impact: its tangential part
+    /// The model behind `material` (its description; for a model converted to a series, the certificate).
+    rheology::MaterialOrigin material_origin{};
     /// `load.harmonic`: a harmonic part added to the history (depth, force or base displacement); the results
     /// over its last full cycle are measured (HarmonicOutcome).
     std::optional<HarmonicLoad> harmonic{};
