@@ -277,7 +277,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     if (impact && (tangential_table || oblique_keys)) {
         oblique = read_oblique(*load, *indenter_table, tangential_table, *impact);
         // Exact only for an incompressible body and a rigid sphere (section 7); drivers::validate refuses the rest.
-        approximate = shear_material.has_value() || indenter_table->has("material");
+        approximate = half_space_spec.bulk_modulus || half_space_spec.bulk || indenter_table->has("material");
     } else if (oblique_keys) {
         throw InvalidInput(is_oblique(*load) ? "load.tangential_velocity" : "indenter.moment_of_inertia", "[...]",
                            "only with control = \"impact\" (an oblique impact)");
@@ -371,10 +371,13 @@ std::string describe(const drivers::ContactCase& contact_case) {
                                                                               : "displacement",
                            contact_case.history.points().size(), contact_case.history.start_time(),
                            contact_case.end_time, units.time);
-        if (contact_case.spring_constant) load += fmt::format(" (spring k = {:.4g} N/m)", *contact_case.spring_constant);
+        if (contact_case.spring_constant) {
+            load += fmt::format(" (spring k = {:.4g} {}/{})", *contact_case.spring_constant, units.force, units.length);
+        }
         if (const auto& harmonic = contact_case.harmonic) {
-            load += fmt::format(", harmonic of amplitude {:.4g} at {:.4g} Hz over t = {:.4g} .. {:.4g} {}",
-                                harmonic->amplitude, harmonic->frequency, harmonic->start, harmonic->end);
+            load += fmt::format(", harmonic of amplitude {:.4g} at {:.4g} 1/{} over t = {:.4g} .. {:.4g} {}",
+                                harmonic->amplitude, harmonic->frequency, units.time, harmonic->start, harmonic->end,
+                                units.time);
         }
     }
     if (const auto& tangential = contact_case.tangential) {
