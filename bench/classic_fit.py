@@ -48,7 +48,8 @@ def mdr_fit(material, start, free, curve):
     case = {"material": start, "indenter": {"shape": "sphere", "R": R}, "fit": {"free": free}}
     begin = time.process_time()
     result = mdr.fit(case, data=[{"time": t, "depth": d, "force": f}])
-    return time.process_time() - begin, result.summary["residual_to_noise"], result.summary["evaluations"]
+    return (time.process_time() - begin, result.summary["residual_to_noise"], result.summary["evaluations"],
+            result.status)
 
 
 def lee_radok(t, d, g_inf, terms):
@@ -74,7 +75,8 @@ def classic_fit(start, curve):
     begin = time.process_time()
     solution = least_squares(residuals, np.log(start), method="trf")
     seconds = time.process_time() - begin
-    return seconds, np.sqrt(np.mean(solution.fun ** 2)), solution.nfev + solution.njev * len(start)
+    return (seconds, np.sqrt(np.mean(solution.fun ** 2)), solution.nfev + solution.njev * len(start),
+            "converged" if solution.success else solution.message)
 
 
 def main():
@@ -89,10 +91,10 @@ def main():
     free = ["material.G_inf"] + [f"material.terms[{i}][{j}]" for i in range(3) for j in range(2)]
     rows.append(("mdr.fit, 3-term Prony", *mdr_fit(PRONY, start, free, curve)))
     rows.append(("scipy Lee-Radok, 3-term Prony", *classic_fit([2e3, 1e3, 0.05, 3e3, 0.5, 2e3, 3.0], curve)))
-    print("| fit | CPU per fit [ms] | residual/noise | model evaluations |")
-    print("|---|---|---|---|")
-    for name, seconds, ratio, runs in rows:
-        print(f"| {name} | {seconds * 1e3:.1f} | {ratio:.3f} | {runs} |")
+    print("| fit | CPU per fit [ms] | residual/noise | model evaluations | status |")
+    print("|---|---|---|---|---|")
+    for name, seconds, ratio, runs, status in rows:
+        print(f"| {name} | {seconds * 1e3:.1f} | {ratio:.3f} | {runs} | {status} |")
     if len(sys.argv) > 1:
         figure, axes = plt.subplots(figsize=(7.0, 3.2))
         axes.barh([r[0] for r in rows][::-1], [r[1] * 1e3 for r in rows][::-1],
