@@ -161,8 +161,8 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
     resolved.elements = numerics.elements.value_or(default_elements);
     resolved.time_limit = contact_case.end_time;
     const auto segments = static_cast<double>(contact_case.history.points().size());
-    resolved.min_segment_steps = static_cast<std::size_t>(std::clamp(
-        std::ceil(static_cast<double>(default_steps) / segments), 1.0, static_cast<double>(min_steps_per_segment)));
+    resolved.min_segment_steps = numerics.min_segment_steps.value_or(static_cast<std::size_t>(std::clamp(
+        std::ceil(static_cast<double>(default_steps) / segments), 1.0, static_cast<double>(min_steps_per_segment))));
 
     const double duration = contact_case.end_time - contact_case.history.start_time();
     if (numerics.time_step) {

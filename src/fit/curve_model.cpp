@@ -54,7 +54,10 @@ std::vector<double> run_curve(drivers::ContactCase model_case, const CurveModel&
     model_case.numerics.output_every = 1;
     // Under displacement control each element's update is exact for a depth linear in time (eq. 16, 18): the
     // measured points are the steps. Force control keeps its own step rule (second order).
-    if (depth_driven) model_case.numerics.time_step = widest;
+    if (depth_driven) {
+        model_case.numerics.time_step = widest;
+        model_case.numerics.min_segment_steps = 1;
+    }
     const auto result = drivers::run_case(model_case);
 
     // The rows at the measured times: the grid has every history point as a node (the last row of a time counts).

@@ -51,6 +51,9 @@ struct NumericsOptions {
     std::size_t output_every = 1;          ///< write every n-th step
     std::optional<double> max_element_steps;  ///< bound on steps x elements (default_max_element_steps)
     std::optional<double> max_memory;         ///< bound on the run's memory [bytes] (default_max_memory)
+    /// Smallest number of steps per history segment (ResolvedNumerics::min_segment_steps); a fit sets 1, as its
+    /// measured points under displacement control are exact steps (not a case-file key).
+    std::optional<std::size_t> min_segment_steps{};
 };
 
 /// The numerics actually used, after defaults.
