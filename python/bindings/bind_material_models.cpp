@@ -93,7 +93,12 @@ std::string docstring(const MaterialModel& model) {
         text += "window : (float, float)\n    the lags (t_min, t_max) [s] over which the series is certified\n"
                 "tolerance : float\n    relative error of G(t) and G^(omega) over the window (default 1e-4)\n";
     }
-    return text + "\nReturns\n-------\nMaterial\n";
+    std::string keywords;
+    for (const auto& parameter : model.parameters) keywords += fmt::format("{}{}=...", keywords.empty() ? "" : ", ", parameter.key);
+    return text + "\nReturns\n-------\nMaterial\n\nExamples\n--------\n" +
+           fmt::format("``mdr.Material.{}({})``, or in a case file ``[material]`` with ``model = \"{}\"`` and the keys "
+                       "above (docs/case-format.md, Material models).\n",
+                       model.name, keywords, model.name);
 }
 
 }  // namespace

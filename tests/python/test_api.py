@@ -268,7 +268,7 @@ def test_docstring_examples_hold(monkeypatch, tmp_path):
     finder = doctest.DocTestFinder()
     runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     tests = []
-    for module in (mdr, mdr.plot, mdr.maps):
+    for module in (mdr, mdr.plot, mdr.maps, mdr.fitting):
         tests += finder.find(module, globs={"mdr": mdr, "np": np, "math": math})
     for cls in (mdr.Material, mdr.Indenter):
         tests += finder.find(cls, cls.__name__, module=False, globs={"mdr": mdr, "np": np, "math": math})
