@@ -194,7 +194,7 @@ def check(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[
     --------
     >>> mdr.check(material={"model": "elastic", "G": 1e6}, indenter={"shape": "sphere", "R": 0.01},
     ...           load={"control": "force", "history": [[0.0, 0.0], [1.0, 0.1]]})  # doctest: +ELLIPSIS
-    'sphere R = 0.01 on an elastic half-space (G(0+) = 1e+06 Pa, ...), force control, ...'
+    'sphere R = 0.01 on an elastic half-space elastic (G = 1000000 Pa) (G(0+) = 1e+06 Pa, ...), force control, ...'
     """
     text, source = _case_text(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
                                                   tangential=tangential, output=output, numerics=numerics)))
