@@ -15,7 +15,6 @@ bool run_model_choice(const io::FitCase& fit_case, const std::vector<fit::Curve>
     const auto choice = fit::fit_candidates(fit_case, curves);
     directory.write([&](const std::filesystem::path& files) { io::write_model_choice(files, fit_case, choice); },
                     received_signal);
-    bool converged = true;
     double seconds = 0.0;
     if (fit_case.model_choice.candidates.empty()) {
         const auto& spectrum = choice.fits.front();
@@ -29,7 +28,6 @@ bool run_model_choice(const io::FitCase& fit_case, const std::vector<fit::Curve>
     }
     for (const auto& fitted : choice.fits) {
         const auto& result = fitted.result;
-        converged = converged && result.converged;
         seconds += result.wall_seconds;
         if (fit_case.model_choice.candidates.empty()) continue;
         const std::string flags = result.undetermined.empty()
@@ -44,7 +42,7 @@ bool run_model_choice(const io::FitCase& fit_case, const std::vector<fit::Curve>
     fmt::print("  {:.3f} s of fitting; results in {}/ ({})\n", seconds, directory.shown(),
                fit_case.model_choice.candidates.empty() ? "fit.json, fitted.toml, curves.csv, spectrum.csv"
                                                         : "models.csv, ranking.json, one folder per model");
-    return converged;
+    return choice.fits[choice.preferred].result.converged;
 }
 
 }  // namespace mdr::cli

@@ -10,7 +10,8 @@
 namespace mdr::cli {
 
 /// Fits the candidates of `fit_case` to `curves`, writes them into `directory` (io::write_model_choice) and prints
-/// the ranking. Returns true when every candidate's fit converged.
+/// the ranking. Returns true when the preferred candidate's fit converged (the others' status is in the
+/// ranking: a term the data do not need often drifts to a bound without converging).
 bool run_model_choice(const io::FitCase& fit_case, const std::vector<fit::Curve>& curves,
                       const io::ResultDirectory& directory);
 

@@ -268,6 +268,14 @@ ModelChoice fit_candidates(const io::FitCase& fit_case, const std::vector<Curve>
     choice.shortest_interval = window.shortest;
     choice.longest_record = window.longest;
     indenter.assign(reference.result.values.begin(), reference.result.values.begin() + static_cast<std::ptrdiff_t>(offset));
+    // Fitted contact points and baselines start where the elastic fit put them.
+    std::vector<Curve> started_curves = curves;
+    for (std::size_t c = 0; c < curves.size(); ++c) {
+        if (base.settings.contact_point == ContactPointMode::fit) {
+            started_curves[c].contact_depth = reference.result.curves[c].contact_depth;
+        }
+        if (base.settings.baseline == BaselineMode::fit) started_curves[c].force_baseline = reference.result.curves[c].baseline;
+    }
 
     for (const auto& name : names) {
         if (name == "elastic") {
@@ -279,10 +287,10 @@ ModelChoice fit_candidates(const io::FitCase& fit_case, const std::vector<Curve>
         const double smoothing = material.spectrum() ? settings.spectrum.value_or(SpectrumSettings{}).smoothing : 0.0;
         const auto penalty = smoothing_penalty(material, offset, smoothing, choice.modulus_scale, curves);
         if (material.spectrum() && base.settings.fitted == Fitted::force) {
-            const auto start = linear_start(base, material, indenter, curves, penalty);
+            const auto start = linear_start(base, material, indenter, started_curves, penalty);
             for (std::size_t j = 0; j < start.size(); ++j) started.parameters[j].start = start[j];
         }
-        choice.fits.push_back(fit_material(base, started, indenter, curves, penalty));
+        choice.fits.push_back(fit_material(base, started, indenter, started_curves, penalty));
     }
 
     std::stable_sort(choice.fits.begin(), choice.fits.end(),
