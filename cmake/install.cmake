@@ -42,5 +42,6 @@ if(MDR_BUILD_PYTHON)
   set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3 (>= ${MDR_PYTHON_VERSION_MAJOR}.${MDR_PYTHON_VERSION_MINOR}~), \
 python3 (<< ${MDR_PYTHON_VERSION_MAJOR}.${next_minor}~), python3-numpy, python3-tomli-w")
   set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libfmt-dev, python3-matplotlib")
+  set(CPACK_DEBIAN_PACKAGE_SUGGESTS "python3-distributed, python3-h5py")  # batches on Dask, HDF5 stacks
 endif()
 include(CPack)

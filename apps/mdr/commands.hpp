@@ -16,7 +16,7 @@ void add_run_command(CLI::App& app, int& exit_code);
 void add_check_command(CLI::App& app, int& exit_code);
 /// `mdr material CASE --out DIR [--times ...] [--omegas ...]`.
 void add_material_command(CLI::App& app, int& exit_code);
-/// `mdr sweep CASE --vary KEY=START:STOP:COUNT[:log] ... --out DIR [--jobs N]`.
+/// `mdr sweep CASE --vary KEY=START:STOP:COUNT[:log] ... --out DIR [--jobs N | --scheduler tcp://HOST:PORT]`.
 void add_sweep_command(CLI::App& app, int& exit_code);
 
 /// `mdr fit CASE --out DIR`.

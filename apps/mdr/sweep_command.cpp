@@ -1,10 +1,12 @@
-// `mdr sweep CASE --vary KEY=START:STOP:COUNT[:log] ... --out DIR [--jobs N]`: a case over a parameter grid.
+// `mdr sweep CASE --vary KEY=START:STOP:COUNT[:log] ... --out DIR [--jobs N | --scheduler tcp://HOST:PORT]`: a case
+// over a parameter grid, on the local cores or on the workers of a Dask scheduler (scheduled_sweep.hpp).
 
 #include <fmt/format.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
 
@@ -13,6 +15,7 @@
 #include "mdr/error.hpp"
 #include "mdr/io/result_directory.hpp"
 #include "mdr/io/sweep.hpp"
+#include "scheduled_sweep.hpp"
 
 namespace mdr::cli {
 namespace {
@@ -42,6 +45,19 @@ private:
     std::size_t last_decile_ = 0;
 };
 
+// scheduler.json: how a scheduled sweep ran, the tasks retried after a worker was lost included.
+void write_scheduler_json(const std::filesystem::path& directory, const ScheduledSweepInfo& batch) {
+    std::ofstream file(directory / "scheduler.json");
+    file << nlohmann::ordered_json{{"scheduler", batch.scheduler},
+                                   {"workers", batch.workers},
+                                   {"tasks", batch.tasks},
+                                   {"retried_tasks", batch.retried},
+                                   {"python", batch.python}}
+                .dump(2)
+         << "\n";
+    if (!file) throw std::runtime_error("cannot write scheduler.json");
+}
+
 }  // namespace
 
 void add_sweep_command(CLI::App& app, int& exit_code) {
@@ -56,7 +72,14 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
                         "a cartesian product")
         ->required();
     command->add_option("--out,-o", *out, "Result directory (created, or replaced if mdr wrote it)")->required();
-    command->add_option("--jobs,-j", *jobs, "Parallel runs (default: all cores)")->check(CLI::PositiveNumber);
+    auto* jobs_option =
+        command->add_option("--jobs,-j", *jobs, "Parallel runs (default: all cores)")->check(CLI::PositiveNumber);
+    auto scheduler = std::make_shared<std::string>();
+    command
+        ->add_option("--scheduler", *scheduler,
+                     "Run on the workers of a Dask scheduler, tcp://HOST:PORT (needs the Python package mdr and "
+                     "python3-distributed; docs/distributed.md)")
+        ->excludes(jobs_option);
     command->callback([=, &exit_code] {
         exit_code = guarded([&] {
             const io::ResultDirectory directory(*out, "--out", {*case_path});
@@ -68,12 +91,25 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
             for (const auto& spec : *specs) axes.push_back(io::parse_sweep_axis(spec));
             io::validate_sweep(text.str(), *case_path, axes);
             SweepProgress progress;
-            const auto rows = io::run_sweep(text.str(), *case_path, axes, *jobs, std::ref(progress));
-            directory.write([&](const std::filesystem::path& files) { io::write_sweep_csv(files, axes, rows); },
-                            received_signal);
+            ScheduledSweepInfo batch;
+            const auto rows = scheduler->empty()
+                                  ? io::run_sweep(text.str(), *case_path, axes, *jobs, std::ref(progress))
+                                  : run_scheduled_sweep(text.str(), *case_path, *specs, axes, *scheduler,
+                                                        std::ref(progress), batch);
+            directory.write(
+                [&](const std::filesystem::path& files) {
+                    io::write_sweep_csv(files, axes, rows);
+                    if (!scheduler->empty()) write_scheduler_json(files, batch);
+                },
+                received_signal);
             std::size_t failed = 0;
             for (const auto& row : rows) failed += row.error.empty() ? 0 : 1;
-            fmt::print("{} runs on {} jobs written to {}/sweep.csv\n", rows.size(), *jobs, *out);
+            if (scheduler->empty()) {
+                fmt::print("{} runs on {} jobs written to {}/sweep.csv\n", rows.size(), *jobs, *out);
+            } else {
+                fmt::print("{} runs on {} ({} workers, {} tasks, {} retried) written to {}/sweep.csv\n", rows.size(),
+                           batch.scheduler, batch.workers, batch.tasks, batch.retried, *out);
+            }
             if (failed == rows.size()) {
                 throw std::runtime_error(fmt::format("every one of the {} runs failed (the messages are in the error "
                                                      "column); the first: {}",

@@ -1,6 +1,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include "arrays.hpp"
 #include "bindings.hpp"
 #include "mdr/fit/candidates.hpp"
 #include "mdr/fit/fit_case_run.hpp"
@@ -11,12 +12,6 @@ namespace py = pybind11;
 
 namespace mdr::python {
 namespace {
-
-py::array_t<double> to_array(const std::vector<double>& values) {
-    py::array_t<double> array(static_cast<py::ssize_t>(values.size()));
-    std::copy(values.begin(), values.end(), array.mutable_data());
-    return array;
-}
 
 using CurveArrays = std::tuple<std::string, std::vector<double>, std::vector<double>, std::vector<double>>;
 

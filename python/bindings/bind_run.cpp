@@ -3,6 +3,7 @@
 
 #include <chrono>
 
+#include "arrays.hpp"
 #include "bindings.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/io/case_file.hpp"
@@ -12,12 +13,6 @@ namespace py = pybind11;
 
 namespace mdr::python {
 namespace {
-
-py::array_t<double> to_array(const std::vector<double>& values) {
-    py::array_t<double> array(static_cast<py::ssize_t>(values.size()));
-    std::copy(values.begin(), values.end(), array.mutable_data());
-    return array;
-}
 
 py::dict run_toml_case(const std::string& toml_text, const std::string& source) {
     const auto contact_case = io::parse_case(toml_text, source);
@@ -38,6 +33,12 @@ py::dict run_toml_case(const std::string& toml_text, const std::string& source) 
     history["F"] = to_array(result.force);
     history["a"] = to_array(result.radius);
     if (!result.velocity.empty()) history["v"] = to_array(result.velocity);
+    if (!result.base.empty()) {
+        std::vector<double> deflection(result.base.size());
+        for (std::size_t i = 0; i < deflection.size(); ++i) deflection[i] = result.base[i] - result.depth[i];
+        history["z"] = to_array(result.base);
+        history["deflection"] = to_array(deflection);
+    }
     if (!result.tangential_force.empty()) {
         history["u"] = to_array(result.tangential_displacement);
         history["Fx"] = to_array(result.tangential_force);

@@ -13,6 +13,8 @@ void bind_run(pybind11::module_& module);
 void bind_profile(pybind11::module_& module);
 /// mdr.sweep: a case over a grid of numeric keys.
 void bind_sweep(pybind11::module_& module);
+/// mdr.distributed: result directories with the rules of --out, for the files Python writes.
+void bind_result_directory(pybind11::module_& module);
 
 /// mdr.fit: fit cases from TOML text, curves from files or arrays.
 void bind_fit(pybind11::module_& module);

@@ -20,9 +20,12 @@ import numpy as np
 from . import _mdr
 from ._mdr import Indenter, InvalidInput, Material
 from ._toml import to_toml
+from .curve_maps import map_curves
+from .fit_maps import fit_map
 from .fitting import FitResult, fit
 
-__all__ = ["run", "check", "sweep", "fit", "FitResult", "Material", "Indenter", "Result", "InvalidInput", "__version__"]
+__all__ = ["run", "check", "sweep", "SweepTable", "fit", "FitResult", "map_curves", "fit_map", "Material", "Indenter",
+           "Result", "InvalidInput", "__version__"]
 __version__ = _mdr.__version__
 
 CaseLike = Union[str, os.PathLike, Mapping[str, Any]]
@@ -77,21 +80,42 @@ def _axis_spec(key: str, values: Any) -> str:
     return f"{key}=" + ",".join(repr(float(v)) for v in array)
 
 
-def sweep(case: CaseLike, vary: Mapping[str, Any], jobs: int | None = None) -> dict[str, np.ndarray]:
+class SweepTable(dict):
+    """The table of a sweep: a dict of numpy arrays (column name -> one value a row); `batch` tells how it ran
+    (mdr.distributed.MapOutcome without the outputs: scheduler, workers, tasks, retried, seconds; None for a local
+    sweep)."""
+
+    batch: Any = None
+
+
+def sweep(case: CaseLike, vary: Mapping[str, Any], jobs: int | None = None, scheduler: Any = None) -> SweepTable:
     """Runs a case over the cartesian product of `vary` ({dotted key: values or "START:STOP:COUNT[:log]"}, the
-    last key varying fastest) on `jobs` threads (default: all cores), like `mdr sweep`. Returns a table as a dict
-    of numpy arrays: the varied keys, every numeric key of summary.json (nan where a point failed), and `error`
-    (the failure message, "" where the point ran)."""
+    last key varying fastest) on `jobs` threads (default: all cores), like `mdr sweep`; or, with `scheduler` (a
+    Dask scheduler address "tcp://HOST:PORT" or a distributed.Client), in chunks on its workers (docs/distributed.md),
+    with the same rows bit for bit. Returns a table as a dict of numpy arrays: the varied keys, every numeric key of
+    summary.json (nan where a point failed), and `error` (the failure message, "" where the point ran)."""
     if not isinstance(vary, Mapping) or not vary:
         raise TypeError("vary: expected a non-empty dict {key: values}")
     if jobs is not None and (not isinstance(jobs, int) or jobs < 1):
         raise ValueError(f"jobs = {jobs!r}: must be an integer >= 1")
+    if jobs is not None and scheduler is not None:
+        raise ValueError(f"jobs = {jobs!r}: not used with a scheduler (its workers' threads run the chunks)")
     text, source = _case_text(case)
     specs = [_axis_spec(key, values) for key, values in vary.items()]
-    raw = _mdr._sweep_toml(text, source, specs, jobs or 0)
+    batch = None
+    if scheduler is None:
+        raw = _mdr._sweep_toml(text, source, specs, jobs or 0)
+    else:
+        from . import distributed
+
+        _, points, batch = distributed.sweep_rows(text, source, specs, scheduler)
+        raw = {"points": points, "summaries": [row[0] for row in batch.outputs],
+               "errors": [row[1] for row in batch.outputs]}
+        batch.outputs = []
     summaries = [json.loads(s) if s else {} for s in raw["summaries"]]
     columns = next((list(s) for s in summaries if s), [])
-    table: dict[str, np.ndarray] = {}
+    table = SweepTable()
+    table.batch = batch
     points = np.asarray(raw["points"], dtype=float).reshape(len(summaries), len(specs))
     for i, key in enumerate(vary):
         table[key] = points[:, i]

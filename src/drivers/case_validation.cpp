@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "mdr/error.hpp"
@@ -25,6 +26,74 @@ void validate_history(const ContactCase& contact_case) {
         throw InvalidInput(
             "load.history", "[...]",
             "a jump in depth needs an infinite force with a dashpot (eta > 0); give the jump a duration");
+    }
+}
+
+// The smallest value of the history over [from, to] (piecewise linear: at the ends or at a point between).
+double history_minimum(const LoadHistory& history, double from, double to) {
+    double lowest = std::min(history.value(from), history.value(to));
+    for (const auto& point : history.points()) {
+        if (point.time >= from && point.time <= to) lowest = std::min(lowest, point.value);
+    }
+    return lowest;
+}
+
+void validate_harmonic(const ContactCase& contact_case) {
+    if (!contact_case.harmonic) return;
+    const HarmonicLoad& harmonic = *contact_case.harmonic;
+    if (contact_case.control == Control::impact) {
+        throw InvalidInput("load.harmonic", "{...}", "not with control = \"impact\"");
+    }
+    validate(harmonic, "load.harmonic.");
+    require_positive("load.harmonic.amplitude", harmonic.amplitude);
+    const double start = contact_case.history.start_time();
+    if (harmonic.start < start) {
+        throw InvalidInput("load.harmonic.start", format_value(harmonic.start),
+                           "must not be before the first history time " + format_value(start) +
+                               " (the harmonic is added to the history)");
+    }
+    if (contact_case.control == Control::force) {
+        const double lowest = history_minimum(contact_case.history, harmonic.start, harmonic.end);
+        if (harmonic.amplitude > lowest) {
+            throw InvalidInput("load.harmonic.amplitude", format_value(harmonic.amplitude),
+                               "must not exceed the smallest force of the history during the harmonic, " +
+                                   format_value(lowest) + " (the force would pull; the contact cannot)");
+        }
+        // After its end the harmonic holds its end value (0 after whole cycles, up to the sine's round-off).
+        const double held = harmonic.value(harmonic.end);
+        const double after = history_minimum(contact_case.history, harmonic.end,
+                                             std::max(harmonic.end, contact_case.history.end_time()));
+        if (held + after < -1e-9 * harmonic.amplitude) {
+            throw InvalidInput("load.harmonic.end", format_value(harmonic.end),
+                               "the harmonic holds " + format_value(held) + " after its end, and with the history's " +
+                                   format_value(after) + " there the force would pull (end after whole cycles)");
+        }
+    }
+}
+
+void validate_spring(const ContactCase& contact_case) {
+    if (contact_case.control != Control::spring) {
+        if (contact_case.spring_constant) {
+            throw InvalidInput("load.spring_constant", format_value(*contact_case.spring_constant),
+                               "only with control = \"spring\"");
+        }
+        return;
+    }
+    if (!contact_case.spring_constant) {
+        throw InvalidInput("load.spring_constant", "(missing)", "is required with control = \"spring\"");
+    }
+    require_positive("load.spring_constant", *contact_case.spring_constant);
+    const auto& points = contact_case.history.points();
+    if (points.front().value > 0.0) {
+        throw InvalidInput("load.history[0].z", format_value(points.front().value),
+                           "must be <= 0: the spring is unloaded at first contact, and the base starts at or "
+                           "above it (give the approach a duration)");
+    }
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        if (points[i].time == points[i - 1].time && points[i].value != points[i - 1].value) {
+            throw InvalidInput(fmt::format("load.history[{}].t", i), format_value(points[i].time),
+                               "the base displacement must not jump (give each change a duration)");
+        }
     }
 }
 
@@ -86,15 +155,17 @@ void validate(const TangentialLoad& load) {
         throw InvalidInput("tangential.history", "[...]",
                            "must start at 0 and have no jumps (give each change a duration)");
     }
-    if (const auto& wave = load.harmonic) {
-        require_finite("tangential.amplitude", wave->amplitude);
-        require_positive("tangential.frequency", wave->frequency);
-        require_finite("tangential.start", wave->start);
-        require_finite("tangential.end", wave->end);
-        if (!(wave->end > wave->start)) {
-            throw InvalidInput("tangential.end", format_value(wave->end),
-                               "must be after tangential.start = " + format_value(wave->start));
-        }
+    if (load.harmonic) validate(*load.harmonic, "tangential.");
+}
+
+void validate(const HarmonicLoad& harmonic, const std::string& prefix) {
+    require_finite(prefix + "amplitude", harmonic.amplitude);
+    require_positive(prefix + "frequency", harmonic.frequency);
+    require_finite(prefix + "start", harmonic.start);
+    require_finite(prefix + "end", harmonic.end);
+    if (!(harmonic.end > harmonic.start)) {
+        throw InvalidInput(prefix + "end", format_value(harmonic.end),
+                           "must be after " + prefix + "start = " + format_value(harmonic.start));
     }
 }
 
@@ -102,6 +173,8 @@ void validate(const ContactCase& contact_case) {
     if (!contact_case.indenter) throw InvalidInput("indenter", "(missing)", "is required");
     validate_impact(contact_case);
     validate_history(contact_case);
+    validate_harmonic(contact_case);
+    validate_spring(contact_case);
     validate_times(contact_case);
     if (contact_case.tangential) validate(*contact_case.tangential);
     validate_numerics(contact_case.numerics);

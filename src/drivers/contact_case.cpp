@@ -163,17 +163,20 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
     } else if (duration > 0.0) {
         const double step = duration / static_cast<double>(default_steps);
         resolved.time_step = std::min(step, shortest_time_above(contact_case.material, step) / 5.0);
-        if (contact_case.control == Control::force && contact_case.material.viscosity() > 0.0) {
-            // A parallel dashpot under force control: the trapezoidal rate is second order, and the creep after the
-            // start and after a force jump, singular in time, is taken on steps graded from there.
+        if (contact_case.control != Control::displacement && contact_case.material.viscosity() > 0.0) {
+            // A parallel dashpot under force (or spring) control: the trapezoidal rate is second order, and the
+            // creep after the start and after a force jump, singular in time, is taken on steps graded from there.
             resolved.jump_grading = jump_grading_ratio;
         }
     } else {
         resolved.time_step = 1.0;  // a history of jumps only: no step has a length
     }
-    if (!numerics.time_step && contact_case.tangential && contact_case.tangential->harmonic) {
-        const double period = 1.0 / contact_case.tangential->harmonic->frequency;
-        resolved.time_step = std::min(resolved.time_step, period / default_steps_per_period);
+    const std::optional<HarmonicLoad> harmonics[] = {
+        contact_case.harmonic, contact_case.tangential ? contact_case.tangential->harmonic : std::nullopt};
+    for (const auto& harmonic : harmonics) {
+        if (!numerics.time_step && harmonic) {
+            resolved.time_step = std::min(resolved.time_step, harmonic->period() / default_steps_per_period);
+        }
     }
 
     if (numerics.half_width) {
@@ -181,13 +184,20 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
     } else if (indenter.is_flat_punch()) {
         resolved.half_width = indenter.max_radius();
     } else {
-        const double peak = contact_case.history.max_value();
+        const double peak = contact_case.history.max_value() +
+                            (contact_case.harmonic ? std::abs(contact_case.harmonic->amplitude) : 0.0);
+        const auto force_bound = [&](double force) {
+            if (!(force > 0.0)) return 0.0;
+            const double softest = 1.0 / contact_case.material.creep(std::max(duration, 0.0));
+            return 1.25 * elastic_radius(indenter, softest, force);
+        };
         double radius = 0.0;
         if (contact_case.control == Control::displacement) {
             radius = 1.1 * indenter.contact_radius(peak);
-        } else if (peak > 0.0) {
-            const double softest = 1.0 / contact_case.material.creep(std::max(duration, 0.0));
-            radius = 1.25 * elastic_radius(indenter, softest, peak);
+        } else if (contact_case.control == Control::force) {
+            radius = force_bound(peak);
+        } else {  // spring: d <= z and F <= k z
+            radius = std::min(1.1 * indenter.contact_radius(peak), force_bound(*contact_case.spring_constant * peak));
         }
         if (!(radius > 0.0)) radius = std::isfinite(indenter.max_radius()) ? indenter.max_radius() : 1.0;
         resolved.half_width = std::min(radius, indenter.max_radius());

@@ -7,6 +7,7 @@
 
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
+#include "cycle_measure.hpp"
 #include "stepping.hpp"
 #include "tangential_stepping.hpp"
 
@@ -47,13 +48,29 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
         tangential.emplace(*contact_case.tangential, material, foundation, contact_case.end_time);
         const auto breakpoints = contact_case.tangential->breakpoints();
         cuts.insert(cuts.end(), breakpoints.begin(), breakpoints.end());
-        std::sort(cuts.begin(), cuts.end());
-        cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
     }
+    std::optional<CycleMeasure> cycle;
+    if (const auto& harmonic = contact_case.harmonic) {
+        cycle.emplace(*harmonic, contact_case.end_time);
+        const auto breakpoints = harmonic->breakpoints();
+        cuts.insert(cuts.end(), breakpoints.begin(), breakpoints.end());
+        if (const auto last = harmonic->last_full_cycle(contact_case.end_time)) {
+            cuts.insert(cuts.end(), {last->first, last->second});  // the measured cycle on uniform steps
+        }
+    }
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
     auto nodes = make_time_grid(contact_case.history, contact_case.end_time, numerics.time_step,
                                 numerics.min_segment_steps, cuts);
+    const bool spring = contact_case.control == Control::spring;
+    if (spring && nodes.size() > 1 && nodes[1].time == nodes[0].time) {
+        nodes.erase(nodes.begin());  // the base starts where it is (z <= 0, validated): no jump from z = 0
+    }
     if (numerics.jump_grading > 0.0) {
         nodes = grade_after_jumps(nodes, numerics.jump_grading, jump_first_step * numerics.time_step);
+    }
+    if (const auto& harmonic = contact_case.harmonic) {
+        for (auto& node : nodes) node.value += harmonic->value(node.time);
     }
     CoefficientCache cache(material);
     const bool has_dashpot = material.viscosity() > 0.0;
@@ -61,22 +78,26 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
                                    ? std::max(indenter.equivalent(numerics.half_width), 1e-300)
                                    : numerics.half_width;
 
-    auto record = [&](double time, double depth, double force) {
+    auto record = [&](double time, double depth, double force, double base) {
         result.time.push_back(time);
         result.depth.push_back(depth);
         result.force.push_back(force);
         result.radius.push_back(foundation.contact_radius());
+        if (spring) result.base.push_back(base);
         if (tangential) tangential->record(result);
     };
-    record(nodes.front().time, 0.0, 0.0);
+    // Spring control: the massless indenter rests on the unloaded spring, d = z, until it touches the surface.
+    double depth = spring ? nodes.front().value : 0.0;
+    record(nodes.front().time, depth, 0.0, nodes.front().value);
+    if (cycle) cycle->observe(nodes.front().time, depth, 0.0, false);
 
-    double depth = 0.0;
-    double previous_depth = 0.0;
-    double shown_depth = 0.0;
-    // Force control with a parallel dashpot: the indenter's rate dd/dt at the current node, so that the dashpot
-    // sees the trapezoidal rate (second order, see Foundation::begin_step). Unknown (the secant rate is used for
-    // one step) while nothing is in contact: the rate is then not tied to the force.
-    const bool trapezoidal = has_dashpot && contact_case.control == Control::force;
+    double previous_depth = depth;
+    double shown_depth = depth;
+    // Force or spring control with a parallel dashpot: the indenter's rate dd/dt at the current node, so that the
+    // dashpot sees the trapezoidal rate (second order, see Foundation::begin_step). Unknown (the secant rate is
+    // used for one step) while nothing is in contact: the rate is then not tied to the force.
+    const bool trapezoidal = has_dashpot && contact_case.control != Control::displacement;
+    const double stiffness = spring ? *contact_case.spring_constant : 0.0;
     std::optional<double> rate = trapezoidal ? std::optional<double>(0.0) : std::nullopt;
     double last_force = 0.0;
     std::vector<double> snapshots = contact_case.snapshots;
@@ -93,20 +114,24 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
 
     for (std::size_t n = 1; n < nodes.size(); ++n) {
         const double time_step = nodes[n].time - nodes[n - 1].time;
-        const double target = nodes[n].value;
+        // Force control: the sine's round-off at a zero of the validated (>= 0) prescribed force is no pull.
+        const double target = contact_case.control == Control::force ? std::max(nodes[n].value, 0.0) : nodes[n].value;
         double force = 0.0;
         if (time_step == 0.0 && has_dashpot) {
-            // A jump against a dashpot: the dashpot takes the force at once and the depth does not move.
+            // A jump against a dashpot: the dashpot takes the force at once and the depth does not move (spring
+            // control has no jumps after the start).
             force = contact_case.control == Control::force ? target : foundation.total_force();
-            if (rate) rate = jumped_rate(foundation, material.viscosity(), *rate, target - last_force);
+            if (rate) rate = jumped_rate(foundation, material.viscosity(), *rate, force - last_force);
             shown_depth = depth;
         } else {
             foundation.begin_step(cache.get(time_step), rate);
             double new_depth = target;
-            if (contact_case.control == Control::force) {
+            if (contact_case.control != Control::displacement) {
+                // Force control: F(d) = target. Spring control: F(d) = k (z - d), i.e. F(d) + k d = k z.
                 const double guess = depth + (depth - previous_depth);
                 const double scale = std::max(std::abs(depth - previous_depth), 1e-6 * depth_scale);
-                new_depth = solve_depth(foundation, depth, guess, scale, target, 0.0, 0.0);
+                new_depth = solve_depth(foundation, depth, guess, scale, spring ? stiffness * target : target,
+                                        stiffness, 0.0);
             }
             foundation.advance(depth, new_depth);
             if (trapezoidal) rate = next_rate(foundation, rate, depth, new_depth, time_step);
@@ -123,11 +148,15 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
         last_force = force;
         ++result.steps;
         const bool last_at_this_time = n + 1 == nodes.size() || nodes[n + 1].time != nodes[n].time;
-        if (n % numerics.output_every == 0 || n + 1 == nodes.size()) record(nodes[n].time, shown_depth, force);
+        if (cycle) cycle->observe(nodes[n].time, shown_depth, force, foundation.contact_count() > 0);
+        if (n % numerics.output_every == 0 || n + 1 == nodes.size()) {
+            record(nodes[n].time, shown_depth, force, nodes[n].value);
+        }
         if (last_at_this_time) take_due_snapshots(nodes[n].time);
         if (progress && n % report_every == 0) progress(static_cast<double>(n) / static_cast<double>(nodes.size() - 1));
     }
     if (tangential) result.tangential = tangential->outcome();
+    if (cycle) result.harmonic = cycle->outcome();
     return result;
 }
 

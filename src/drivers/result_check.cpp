@@ -34,6 +34,7 @@ void require_finite_result(const IndentationResult& result) {
     check_column("u", result.tangential_displacement, result.time);
     check_column("Fx", result.tangential_force, result.time);
     check_column("c", result.stick_radius, result.time);
+    check_column("z", result.base, result.time);
     for (const auto& snapshot : result.snapshots) {
         for (const auto* column :
              {&snapshot.radius, &snapshot.pressure, &snapshot.displacement, &snapshot.shear_stress}) {
@@ -57,6 +58,17 @@ void require_finite_result(const IndentationResult& result) {
             check_value("dissipated_energy_per_cycle", *energy);
         }
         if (result.tangential->sliding_from) check_value("sliding_from", *result.tangential->sliding_from);
+    }
+    if (const auto& harmonic = result.harmonic) {
+        check_value("depth_amplitude", harmonic->depth_amplitude);
+        check_value("force_amplitude", harmonic->force_amplitude);
+        check_value("phase_angle", harmonic->phase);
+        for (const auto& [name, value] : {std::pair{"storage_stiffness", harmonic->storage_stiffness},
+                                          std::pair{"loss_stiffness", harmonic->loss_stiffness},
+                                          std::pair{"loss_tangent", harmonic->loss_tangent}}) {
+            if (value) check_value(name, *value);
+        }
+        check_value("normal_dissipated_energy_per_cycle", harmonic->dissipated_energy);
     }
     check_value("time_step", result.numerics.time_step);
     check_value("half_width", result.numerics.half_width);

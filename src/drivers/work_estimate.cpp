@@ -10,7 +10,7 @@ namespace mdr::drivers {
 namespace {
 
 // Steps of the time grid of a displacement- or force-controlled run (make_time_grid): each history segment, the
-// hold up to the end, one more for each snapshot or tangential breakpoint that may cut a step, and the graded
+// hold up to the end, one more for each snapshot or tangential or harmonic breakpoint that may cut a step, and the graded
 // steps after jumps where the grid has them.
 double indentation_steps(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
     const auto& points = contact_case.history.points();
@@ -27,6 +27,7 @@ double indentation_steps(const ContactCase& contact_case, const ResolvedNumerics
     }
     steps += static_cast<double>(contact_case.snapshots.size());
     if (contact_case.tangential) steps += static_cast<double>(contact_case.tangential->breakpoints().size());
+    if (contact_case.harmonic) steps += static_cast<double>(contact_case.harmonic->breakpoints().size() + 2);
     if (numerics.jump_grading > 0.0) {
         // grade_after_jumps: about ln(1 / jump_first_step) / ratio more steps after the start and each point.
         const double graded = std::ceil(std::log(1.0 / jump_first_step) / std::log1p(numerics.jump_grading));

@@ -17,8 +17,9 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 }  // namespace
 
 CurveCost::CurveCost(const FitProblem& problem, const ParameterScales& scales, const CurveModel& prepared,
-                     std::size_t curve, std::atomic<std::size_t>& evaluations)
-    : problem_(problem), scales_(scales), prepared_(prepared), curve_(curve), evaluations_(evaluations) {
+                     std::size_t curve, std::size_t elements, std::atomic<std::size_t>& evaluations)
+    : problem_(problem), scales_(scales), prepared_(prepared), curve_(curve), elements_(elements),
+      evaluations_(evaluations) {
     AddParameterBlock(static_cast<int>(problem.parameters.size()));
     if (scales.nuisance_size() > 0) AddParameterBlock(static_cast<int>(scales.nuisance_size()));
     SetNumResiduals(static_cast<int>(prepared.used.size()));
@@ -39,8 +40,7 @@ double CurveCost::baseline(const double* nuisance) const {
 std::vector<double> CurveCost::model(const double* shared, const double* nuisance) const {
     ++evaluations_;
     auto model_case = problem_.model(scales_.values(shared));
-    const std::size_t elements =
-        problem_.settings.elements.value_or(model_case.numerics.elements.value_or(default_fit_elements));
+    const std::size_t elements = problem_.settings.elements.value_or(model_case.numerics.elements.value_or(elements_));
     return run_curve(std::move(model_case), prepared_, contact_depth(nuisance), baseline(nuisance), elements);
 }
 

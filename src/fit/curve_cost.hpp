@@ -17,9 +17,10 @@ namespace mdr::fit {
 /// scaled by the curve's depth and force scales) when it has one.
 class CurveCost : public ceres::DynamicCostFunction {
 public:
-    /// `prepared` and `scales` must outlive the cost function; `evaluations` counts the forward runs.
+    /// `prepared` and `scales` must outlive the cost function; `elements` is the default of the forward model
+    /// (default_fit_elements) when neither the settings nor the case set them; `evaluations` counts the runs.
     CurveCost(const FitProblem& problem, const ParameterScales& scales, const CurveModel& prepared, std::size_t curve,
-              std::atomic<std::size_t>& evaluations);
+              std::size_t elements, std::atomic<std::size_t>& evaluations);
 
     /// Ceres' entry point: forward differences for the shared parameters and the contact point under
     /// displacement control, exact derivatives of the terms that enter linearly (the baseline of a fitted force,
@@ -42,6 +43,7 @@ private:
     const ParameterScales& scales_;
     const CurveModel& prepared_;
     std::size_t curve_;
+    std::size_t elements_;
     std::atomic<std::size_t>& evaluations_;
 };
 

@@ -57,6 +57,9 @@ std::vector<double> run_curve(drivers::ContactCase model_case, const CurveModel&
     model_case.end_time = curve.time.back();
     model_case.snapshots.clear();
     model_case.tangential.reset();
+    model_case.harmonic.reset();
+    model_case.spring_constant.reset();
+    model_case.impact.reset();
     model_case.numerics.elements = elements;
     model_case.numerics.output_every = 1;
     // Under displacement control each element's update is exact for a depth linear in time (eq. 16, 18): the

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -16,6 +17,12 @@
 #include "mdr/error.hpp"
 
 namespace mdr::fit {
+
+std::size_t default_fit_elements(double noise_to_peak) {
+    const double elements = 1000.0 * std::sqrt(1e-4 / std::max(noise_to_peak, 1e-300));
+    return static_cast<std::size_t>(std::clamp(elements, static_cast<double>(min_fit_elements),
+                                               static_cast<double>(max_fit_elements)));
+}
 
 void validate(const FitProblem& problem) {
     if (!problem.model) throw InvalidInput("fit.model", "(missing)", "is required");
@@ -61,6 +68,19 @@ void validate(const FitProblem& problem) {
 
 namespace {
 
+// The smallest noise relative to its curve's peak, over the curves (the noise floors of prepare_curve keep it > 0).
+double noise_to_peak(const FitProblem& problem, const std::vector<CurveModel>& prepared) {
+    double ratio = 1.0;
+    for (std::size_t c = 0; c < prepared.size(); ++c) {
+        const Curve& curve = problem.curves[c];
+        const auto& measured = problem.settings.fitted == Fitted::force ? curve.force : curve.depth;
+        double peak = 0.0;
+        for (double value : measured) peak = std::max(peak, std::abs(value));
+        if (peak > 0.0) ratio = std::min(ratio, prepared[c].noise / peak);
+    }
+    return ratio;
+}
+
 std::string status_of(const ceres::Solver::Summary& summary) {
     switch (summary.termination_type) {
     case ceres::CONVERGENCE:
@@ -97,13 +117,14 @@ FitResult fit(const FitProblem& problem) {
         if (scales.fit_baseline) nuisance[c].push_back(curve.force_baseline / scales.force[c]);
     }
 
+    const std::size_t elements = default_fit_elements(noise_to_peak(problem, prepared));
     std::atomic<std::size_t> evaluations{0};
     ceres::Problem::Options problem_options;
     problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     ceres::Problem solver_problem(problem_options);
     std::vector<std::unique_ptr<CurveCost>> costs;
     for (std::size_t c = 0; c < problem.curves.size(); ++c) {
-        costs.push_back(std::make_unique<CurveCost>(problem, scales, prepared[c], c, evaluations));
+        costs.push_back(std::make_unique<CurveCost>(problem, scales, prepared[c], c, elements, evaluations));
         std::vector<double*> blocks{shared.data()};
         if (m > 0) blocks.push_back(nuisance[c].data());
         solver_problem.AddResidualBlock(costs.back().get(), nullptr, blocks);

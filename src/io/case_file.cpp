@@ -87,9 +87,17 @@ Body read_body(TableReader& table) {
 
 drivers::LoadHistory read_history(TableReader& load, drivers::Control control) {
     std::vector<drivers::LoadPoint> points;
-    const char* quantity = control == drivers::Control::force ? "F" : "d";
+    const char* quantity = control == drivers::Control::force    ? "F"
+                           : control == drivers::Control::spring ? "z"
+                                                                 : "d";
     for (const auto& [t, value] : load.pairs("history", "t", quantity)) points.push_back({t, value});
     return drivers::LoadHistory(std::move(points), "load.history");
+}
+
+drivers::HarmonicLoad read_harmonic(TableReader& table) {
+    table.reject_unknown({"amplitude", "frequency", "start", "end"});
+    return drivers::HarmonicLoad{table.number("amplitude"), table.number("frequency"), table.number("start"),
+                                 table.number("end")};
 }
 
 drivers::TangentialLoad read_tangential(TableReader& table) {
@@ -155,15 +163,31 @@ drivers::ContactCase read_case(const toml::table& root_table) {
 
     auto load = root.table("load");
     if (!load) throw InvalidInput("load", "(missing)", "is required");
-    load->reject_unknown({"control", "history", "velocity", "end"});
+    load->reject_unknown({"control", "history", "velocity", "end", "harmonic", "spring_constant"});
     const std::string control_name = load->string("control");
     drivers::Control control;
     if (control_name == "displacement") control = drivers::Control::displacement;
     else if (control_name == "force") control = drivers::Control::force;
     else if (control_name == "impact") control = drivers::Control::impact;
+    else if (control_name == "spring") control = drivers::Control::spring;
     else {
-        throw InvalidInput("load.control", "\"" + control_name + "\"", "unknown control; one of displacement, force, impact");
+        throw InvalidInput("load.control", "\"" + control_name + "\"",
+                           "unknown control; one of displacement, force, impact, spring");
     }
+    std::optional<drivers::HarmonicLoad> harmonic;
+    if (load->has("harmonic")) {
+        if (!load->has("history") && control != drivers::Control::impact) {
+            throw InvalidInput("load.history", "(missing)",
+                               "a harmonic is added to a base history: give one, e.g. [[0.0, 0.0], [1.0, d0]]");
+        }
+        auto table = load->table("harmonic");
+        if (!table) {
+            throw InvalidInput("load.harmonic", load->text("harmonic"),
+                               "must be a table { amplitude, frequency, start, end }");
+        }
+        harmonic = read_harmonic(*table);
+    }
+    const std::optional<double> spring_constant = load->optional_number("spring_constant");
     std::optional<drivers::ImpactLoad> impact;
     std::optional<drivers::LoadHistory> read;
     if (control == drivers::Control::impact) {
@@ -183,6 +207,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     }
     drivers::LoadHistory history = std::move(*read);
     double end_time = impact ? std::numeric_limits<double>::infinity() : history.end_time();
+    if (harmonic && !impact) end_time = std::max(end_time, harmonic->end);
     if (auto end = load->optional_number("end")) end_time = *end;
 
     std::optional<drivers::TangentialLoad> tangential;
@@ -215,6 +240,8 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     drivers::ContactCase contact_case{title,    std::move(material),  std::move(indenter), control,
                                       std::move(history), end_time, std::move(snapshots), numerics,
                                       std::move(shear_material), impact, std::move(tangential), approximate};
+    contact_case.harmonic = harmonic;
+    contact_case.spring_constant = spring_constant;
     drivers::validate(contact_case);
     return contact_case;
 }
@@ -242,9 +269,16 @@ std::string describe(const drivers::ContactCase& contact_case) {
                            contact_case.impact->velocity);
     } else {
         load = fmt::format("{} control, {} history points over t = {:.4g} .. {:.4g} s",
-                           contact_case.control == drivers::Control::force ? "force" : "displacement",
+                           contact_case.control == drivers::Control::force    ? "force"
+                           : contact_case.control == drivers::Control::spring ? "spring"
+                                                                              : "displacement",
                            contact_case.history.points().size(), contact_case.history.start_time(),
                            contact_case.end_time);
+        if (contact_case.spring_constant) load += fmt::format(" (spring k = {:.4g} N/m)", *contact_case.spring_constant);
+        if (const auto& harmonic = contact_case.harmonic) {
+            load += fmt::format(", harmonic of amplitude {:.4g} at {:.4g} Hz over t = {:.4g} .. {:.4g} s",
+                                harmonic->amplitude, harmonic->frequency, harmonic->start, harmonic->end);
+        }
     }
     if (const auto& tangential = contact_case.tangential) {
         load += fmt::format("; tangential {} control, mu = {:.4g}, {}",

@@ -30,6 +30,7 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
     summary["wall_seconds"] = wall_seconds;
     summary["control"] = contact_case.control == drivers::Control::force    ? "force"
                          : contact_case.control == drivers::Control::impact ? "impact"
+                         : contact_case.control == drivers::Control::spring ? "spring"
                                                                             : "displacement";
     summary["time_step"] = result.numerics.time_step;
     summary["half_width"] = result.numerics.half_width;
@@ -41,6 +42,17 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
         summary["contact_time"] = result.impact->contact_time;
         summary["rebound_velocity"] = result.impact->rebound_velocity;
         summary["dissipated_energy"] = result.impact->dissipated_energy;
+    }
+    if (result.harmonic) {
+        const auto& harmonic = *result.harmonic;
+        if (harmonic.storage_stiffness) summary["storage_stiffness"] = *harmonic.storage_stiffness;
+        if (harmonic.loss_stiffness) summary["loss_stiffness"] = *harmonic.loss_stiffness;
+        if (harmonic.loss_tangent) summary["loss_tangent"] = *harmonic.loss_tangent;
+        summary["depth_amplitude"] = harmonic.depth_amplitude;
+        summary["force_amplitude"] = harmonic.force_amplitude;
+        summary["phase_angle"] = harmonic.phase;
+        summary["normal_dissipated_energy_per_cycle"] = harmonic.dissipated_energy;
+        summary["contact_loss_fraction"] = harmonic.contact_loss_fraction;
     }
     if (result.tangential) {
         const auto& tangential = *result.tangential;
@@ -60,10 +72,13 @@ void write_indentation_result(const fs::path& directory, const drivers::ContactC
     auto history = fmt::output_file((directory / "history.csv").string());
     const bool with_velocity = !result.velocity.empty();
     const bool with_tangential = result.tangential.has_value();
-    history.print("t,d,F,a{}{}\n", with_velocity ? ",v" : "", with_tangential ? ",u,Fx,c" : "");
+    const bool with_base = !result.base.empty();
+    history.print("t,d,F,a{}{}{}\n", with_velocity ? ",v" : "", with_base ? ",z,deflection" : "",
+                  with_tangential ? ",u,Fx,c" : "");
     for (std::size_t i = 0; i < result.time.size(); ++i) {
         history.print("{},{},{},{}", result.time[i], result.depth[i], result.force[i], result.radius[i]);
         if (with_velocity) history.print(",{}", result.velocity[i]);
+        if (with_base) history.print(",{},{}", result.base[i], result.base[i] - result.depth[i]);
         if (with_tangential) {
             history.print(",{},{},{}", result.tangential_displacement[i], result.tangential_force[i],
                           result.stick_radius[i]);

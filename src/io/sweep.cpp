@@ -47,9 +47,9 @@ std::vector<std::string> split(const std::string& text, char separator) {
     }
 }
 
-// The case with each axis key set to its value at `point`.
-drivers::ContactCase case_at(CaseTemplate model, const std::vector<SweepAxis>& axes, const std::vector<double>& point) {
-    for (std::size_t a = 0; a < axes.size(); ++a) model.set_number(axes[a].key, point[a]);
+// The case with each key set to its value at `point`.
+drivers::ContactCase case_at(CaseTemplate model, const std::vector<std::string>& keys, const std::vector<double>& point) {
+    for (std::size_t a = 0; a < keys.size(); ++a) model.set_number(keys[a], point[a]);
     return model.build();
 }
 
@@ -142,19 +142,39 @@ private:
 
 }  // namespace
 
+std::vector<std::vector<double>> sweep_points(const std::vector<SweepAxis>& axes) {
+    const std::size_t total = sweep_size(axes);
+    std::vector<std::vector<double>> points(total, std::vector<double>(axes.size()));
+    for (std::size_t r = 0; r < total; ++r) {
+        std::size_t rest = r;
+        for (std::size_t a = axes.size(); a-- > 0;) {
+            points[r][a] = axes[a].values[rest % axes[a].values.size()];
+            rest /= axes[a].values.size();
+        }
+    }
+    return points;
+}
+
 std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& source,
                                 const std::vector<SweepAxis>& axes, unsigned jobs,
                                 const std::function<void(std::size_t, std::size_t)>& progress) {
+    std::vector<std::string> keys;
+    for (const auto& axis : axes) keys.push_back(axis.key);
+    return run_sweep_points(case_text, source, keys, sweep_points(axes), jobs, progress);
+}
+
+std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::string& source,
+                                       const std::vector<std::string>& keys, std::vector<std::vector<double>> points,
+                                       unsigned jobs, const std::function<void(std::size_t, std::size_t)>& progress) {
     const CaseTemplate model(case_text, source);
-    const std::size_t total = sweep_size(axes);
+    const std::size_t total = points.size();
+    if (total == 0) return {};
     std::vector<SweepRow> rows(total);
     for (std::size_t r = 0; r < total; ++r) {
-        std::size_t rest = r;
-        rows[r].point.resize(axes.size());
-        for (std::size_t a = axes.size(); a-- > 0;) {
-            rows[r].point[a] = axes[a].values[rest % axes[a].values.size()];
-            rest /= axes[a].values.size();
+        if (points[r].size() != keys.size()) {
+            throw InvalidInput("points", fmt::format("row {}", r), fmt::format("needs {} values", keys.size()));
         }
+        rows[r].point = std::move(points[r]);
     }
     std::atomic<std::size_t> next{0};
     std::atomic<bool> stop{false};
@@ -168,7 +188,7 @@ std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& s
         for (std::size_t r = next++; r < total && !stop; r = next++) {
             SweepRow& row = rows[r];
             try {
-                const auto contact_case = case_at(model, axes, row.point);
+                const auto contact_case = case_at(model, keys, row.point);
                 const auto start = std::chrono::steady_clock::now();
                 const auto result = drivers::run_case(contact_case, stop_requested);
                 const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -79,8 +79,8 @@ def test_failed_points_keep_their_message_and_the_others_run(run_mdr, case_file,
 
 
 @pytest.mark.parametrize("spec,fragments", [
-    ("material.tau=1:2:3", ["--vary", "material.tau", "no such key"]),
-    ("material.model=1:2:3", ["material.model", "not a numeric key"]),
+    ("material.tau=1:2:3", ["--vary", "material.tau", "no such numeric key"]),
+    ("material.model=1:2:3", ["material.model", "no such numeric key"]),
     ("material.tau1=0:1:3:log", ["log grid", "> 0"]),
     ("material.tau1=1:2:0", ["COUNT", "integer"]),
     ("material.tau1=1:x:3", ["'x'", "not a finite number"]),

@@ -481,7 +481,7 @@ def test_sweep_from_python(tmp_path):
     assert list(table["error"]) == [""] * 6
     failed = mdr.sweep(CASE_DICT_FOR_SWEEP, {"material.tau1": [-1.0, 0.1]})
     assert failed["error"][0] == "material.tau1 = -1: must be > 0" and np.isnan(failed["max_force"][0])
-    with pytest.raises(ValueError, match="no such key"):
+    with pytest.raises(ValueError, match="no such numeric key"):
         mdr.sweep(CASE_DICT_FOR_SWEEP, {"material.tau": [1.0]})
     with pytest.raises(TypeError):
         mdr.sweep(CASE_DICT_FOR_SWEEP, {})

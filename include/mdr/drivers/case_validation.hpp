@@ -3,6 +3,8 @@
 /// The rules of a contact problem, checked in the library: a ContactCase built in C++ gets the same
 /// `key = value: rule` errors (mdr::InvalidInput, keys named as in the case file) as the command line.
 
+#include <string>
+
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/tangential_load.hpp"
 
@@ -12,9 +14,16 @@ namespace mdr::drivers {
 /// at 0, without jumps) or a harmonic (finite amplitude, frequency > 0, end after start).
 void validate(const TangentialLoad& load);
 
+/// Checks a harmonic load: finite amplitude, frequency > 0, finite start and an end after it; keys are named
+/// `prefix` + field (`tangential.`, `load.harmonic.`).
+void validate(const HarmonicLoad& harmonic, const std::string& prefix);
+
 /// Checks a contact problem: an indenter; for an impact a mass and an approach speed > 0 and no tangential load;
 /// under force control no negative force; under displacement control no jump against a dashpot; an end after the
-/// first history time (finite unless an impact); snapshots within the simulated time; positive numerics. Called by
+/// first history time (finite unless an impact); snapshots within the simulated time; positive numerics. A normal
+/// harmonic (not with an impact): amplitude > 0, starting no earlier than the history, and under force control
+/// no larger than the smallest history force during it. Spring control: a spring constant > 0 (and none with
+/// another control), a base history starting at or above the surface (z <= 0) without jumps. Called by
 /// resolve_numerics, so every driver runs only valid problems.
 void validate(const ContactCase& contact_case);
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "mdr/drivers/harmonic_load.hpp"
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/drivers/tangential_load.hpp"
 #include "mdr/profile/profile.hpp"
@@ -20,6 +21,8 @@ enum class Control {
     displacement,  ///< depth history d(t)
     force,         ///< force history F(t) >= 0; the depth is solved for each step
     impact,        ///< a rigid indenter of given mass and approach speed hits the surface at t = 0 (eq. 37)
+    spring,        ///< a base displacement history z(t) acts on the massless rigid indenter through a linear
+                   ///< spring k: F = k (z - d), the spring unloaded at first contact; d is solved for each step
 };
 
 /// The flight of the indenter in an impact.
@@ -72,6 +75,13 @@ struct ContactCase {
     /// True when tangential loading meets compressible or two different bodies: the MDR mapping is then exact for
     /// the normal problem only (section 7) and the tangential result an approximation.
     bool tangential_approximate = false;
+    /// `load.harmonic`: a harmonic part added to the history (depth, force or base displacement); the results
+    /// over its last full cycle are measured (HarmonicOutcome).
+    std::optional<HarmonicLoad> harmonic{};
+    std::optional<double> spring_constant{};            ///< k [N/m] of the spring, with control = spring
+
+    /// The prescribed load at time t [s]: the history plus the harmonic part.
+    double load_value(double t) const { return history.value(t) + (harmonic ? harmonic->value(t) : 0.0); }
 };
 
 /// Elements on the half-width when `[numerics] elements` is not given. With the half-width 1.1 times the largest
@@ -102,9 +112,11 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// with the instantaneous spring modulus over default_steps (and the material-time rule), the half-width 1.2
 /// times the elastic contact radius with the equilibrium modulus (an upper bound: the viscoelastic body is
 /// stiffer and dissipates); with a parallel dashpot the step is at most the braking time m / (8 eta a) over
-/// braking_steps (an overdamped impact is decided on that scale). A harmonic tangential load caps the default time
-/// step at its period over default_steps_per_period. Throws mdr::InvalidInput for a problem that breaks a rule (validate) or would exceed
-/// its bounds of work or memory (require_bounded_work).
+/// braking_steps (an overdamped impact is decided on that scale). A harmonic load (normal or tangential) caps the
+/// default time step at its period over default_steps_per_period. Spring control takes the smaller of the
+/// displacement-control half-width for the largest base displacement (d <= z) and the force-control one for the
+/// force k max z (F <= k z), and grades its steps as force control does. Throws mdr::InvalidInput for a problem
+/// that breaks a rule (validate) or would exceed its bounds of work or memory (require_bounded_work).
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case);
 
 /// Scales of an elastic impact (energy balance m v0^2 / 2 = int F_el dd), used for the impact defaults.

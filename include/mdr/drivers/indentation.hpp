@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// The normal-contact driver: displacement or force control along a piecewise-linear history (section 5).
+/// The normal-contact driver: displacement, force or spring control along a piecewise-linear history with an
+/// optional harmonic part (section 5).
 
 #include <cstddef>
 #include <functional>
@@ -41,6 +42,22 @@ struct TangentialOutcome {
                                                         ///< contact slides as a whole (gross sliding)
 };
 
+/// The response to a harmonic normal load over its last full cycle [t1, t1 + T], from the first harmonics
+/// X = (2/T) int x(t) exp(-i omega (t - start)) dt of depth and force (trapezoidal rule on the uniform steps of the
+/// cycle, exact for the sine), so that x ~ Re(X exp(i omega (t - start))) plus the mean and higher harmonics. The
+/// complex contact stiffness is k = F / D = k' + i k'' (eq. 12 summed over the contact: 8 a G(omega) for a small
+/// amplitude on an incompressible body).
+struct HarmonicOutcome {
+    double depth_amplitude = 0.0;              ///< |D| [m]
+    double force_amplitude = 0.0;              ///< |F| [N]
+    double phase = 0.0;                        ///< arg(F / D) [rad]: how far the force leads the depth
+    std::optional<double> storage_stiffness;   ///< k' = Re(F / D) [N/m] (none when D = 0)
+    std::optional<double> loss_stiffness;      ///< k'' = Im(F / D) [N/m] (none when D = 0)
+    std::optional<double> loss_tangent;        ///< k'' / k' (none when k' = 0 or D = 0)
+    double dissipated_energy = 0.0;            ///< the loop area, closed integral of F dd over the cycle [J]
+    double contact_loss_fraction = 0.0;        ///< fraction of the cycle without any element in contact
+};
+
 /// What a run produced: one row per written step.
 struct IndentationResult {
     std::vector<double> time;      ///< t [s]
@@ -51,9 +68,11 @@ struct IndentationResult {
     std::vector<double> tangential_displacement;  ///< u [m] (tangential loading only, else empty)
     std::vector<double> tangential_force;         ///< F_x [N] (eq. 46; tangential loading only, else empty)
     std::vector<double> stick_radius;             ///< c [m] (eq. 51; tangential loading only, else empty)
+    std::vector<double> base;                     ///< base displacement z [m] (spring control only, else empty)
     std::vector<Snapshot> snapshots;
     std::optional<ImpactOutcome> impact;  ///< impact only
     std::optional<TangentialOutcome> tangential;  ///< tangential loading only
+    std::optional<HarmonicOutcome> harmonic;      ///< harmonic normal load with at least one full cycle only
     ResolvedNumerics numerics;     ///< what was used
     std::size_t steps = 0;         ///< time steps taken
 };

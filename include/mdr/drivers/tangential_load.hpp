@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "mdr/drivers/harmonic_load.hpp"
 #include "mdr/drivers/load_history.hpp"
 
 namespace mdr::drivers {
@@ -14,15 +15,6 @@ namespace mdr::drivers {
 enum class TangentialControl {
     displacement,  ///< tangential displacement u(t) [m] of the indenter
     force,         ///< total tangential force F_x(t) [N]; u is solved for each step
-};
-
-/// A harmonic tangential load: value = amplitude sin(2 pi frequency (t - start)) for start <= t <= end, 0 before
-/// start, held at its end value after end.
-struct HarmonicLoad {
-    double amplitude;  ///< u0 [m] or F0 [N]
-    double frequency;  ///< f [Hz] > 0
-    double start;      ///< [s]
-    double end;        ///< [s] > start
 };
 
 /// `[tangential]`: local Amontons-Coulomb friction (eq. 48-50) and one of a history or a harmonic.
@@ -43,8 +35,5 @@ struct TangentialLoad {
     /// or when not one full cycle fits.
     std::optional<std::pair<double, double>> last_full_cycle(double simulated_end) const;
 };
-
-/// Steps per harmonic period when `[numerics] time_step` is not given.
-inline constexpr double default_steps_per_period = 200.0;
 
 }  // namespace mdr::drivers

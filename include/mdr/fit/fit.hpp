@@ -52,14 +52,22 @@ struct FitSettings {
     ContactPointMode contact_point = ContactPointMode::fit;      ///< see ContactPointMode
     BaselineMode baseline = BaselineMode::fit;                   ///< see BaselineMode
     std::size_t max_iterations = 200;                            ///< Levenberg-Marquardt iterations at most
-    /// Elements of the forward model's foundation; unset: the case's `[numerics] elements` or default_fit_elements.
+    /// Elements of the forward model's foundation; unset: the case's `[numerics] elements` or
+    /// default_fit_elements.
     std::optional<std::size_t> elements;
 };
 
-/// Elements of the forward model when neither the fit nor the case sets them. A standard solid is recovered from
-/// noise-free Lee-Radok data to 1e-7 relative with 1000 elements (3e-6 with 500, 3e-8 with 2000;
-/// tests/verification/test_fit.cpp), far below the noise of indentation instruments (1e-3 to 1e-2 of the peak).
-inline constexpr std::size_t default_fit_elements = 1000;
+/// Elements of the forward model when neither the fit nor the case sets them: enough that the model's
+/// discretisation error is below 1 % of the measurement noise. With N elements the error is about
+/// 1e-6 (1000 / N)^2 of the peak (a standard solid is recovered from noise-free Lee-Radok data to 3e-6 with 500
+/// elements, 1e-7 with 1000, 3e-8 with 2000; tests/verification/test_fit.cpp), so
+/// N = 1000 sqrt(1e-4 peak / noise) for the noisiest-relative curve, within [min_fit_elements, max_fit_elements]:
+/// 250 for an AFM curve with noise 1.6e-3 of its peak, the maximum for noise-free data.
+std::size_t default_fit_elements(double noise_to_peak);
+/// See default_fit_elements.
+inline constexpr std::size_t min_fit_elements = 200;
+/// See default_fit_elements.
+inline constexpr std::size_t max_fit_elements = 2000;
 
 /// The model as a function of the free parameters' values (in the order of FitProblem::parameters): the case
 /// (material, indenter, numerics) for those values. Its load is replaced by each curve's measured history. Throws

@@ -41,6 +41,18 @@ std::size_t sweep_size(const std::vector<SweepAxis>& axes);
 /// mdr::InvalidInput otherwise.
 void validate_sweep(std::string_view case_text, const std::string& source, const std::vector<SweepAxis>& axes);
 
+/// The points of the cartesian product of the axes, in row order (the last axis varying fastest): the value of each
+/// axis at each row. Throws mdr::InvalidInput for a grid above max_sweep_points.
+std::vector<std::vector<double>> sweep_points(const std::vector<SweepAxis>& axes);
+
+/// Runs the case at the given points (`points[r][a]` is the value of `keys[a]` at row r) on `jobs` threads, with
+/// the rules of run_sweep: rows in the order of `points`, failures kept as messages, the same `progress`. A row
+/// does not depend on the other rows, nor on `jobs`: any split of the points gives the same rows, bit for bit (the
+/// distributed sweep of python/mdr/distributed.py runs chunks of points with it).
+std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::string& source,
+                                       const std::vector<std::string>& keys, std::vector<std::vector<double>> points,
+                                       unsigned jobs, const std::function<void(std::size_t, std::size_t)>& progress);
+
 /// Runs the case at every point of the cartesian product of the axes (the last axis varying fastest) on `jobs`
 /// threads (at most one a point). Rows come back in grid order whatever the number of jobs; a failed point keeps its
 /// message and does not stop the others, and so does a point whose summary is not finite. `progress(done, total)`

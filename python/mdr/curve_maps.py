@@ -1,0 +1,271 @@
+"""Maps over stacks of curves (force maps of AFM: one curve a pixel): `map_curves(per_curve, stack)` runs a picklable
+per-curve function over every pixel, locally or on a Dask cluster (mdr.distributed), and collects parameter maps,
+the status of every pixel and the reason of every failure; `CurveMap.write` stores arrays and heat maps.
+
+The hook for fits: `mdr.fit_map` is `map_curves` with a per-curve function that fits one curve with `mdr.fit` and
+returns {parameter: value, parameter + "_stderr": standard error, ...}; a fit that fails raises, and its reason is
+kept for the pixel. docs/distributed.md shows the contract with a closed-form fit.
+
+Stacks (`open_stack`):
+- a numpy array (ny, nx, nt) or (ny, nx, nt, channels): the curve of pixel (row, col) is `array[row, col]`;
+- an HDF5 file `PATH.h5` (`dataset=`, default "curves"), the same layout, read in slices (needs h5py);
+- a directory with `positions.csv` (columns `file,row,col`) and one CSV file a listed curve (a header of column
+  names, then numbers): the curve is a dict {column name: numpy array}; pixels without a file are "no curve".
+The curves are read here, in chunks, and travel with the tasks: workers need no shared file system.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+import os
+from dataclasses import dataclass
+from typing import Any, Callable, Mapping, Sequence
+
+import numpy as np
+
+from . import distributed
+
+#: Pixel status codes of `CurveMap.status` (status.npy).
+OK, FAILED, NO_CURVE = 0, 1, 2
+STATUS_NAMES = {OK: "ok", FAILED: "failed", NO_CURVE: "no curve"}
+
+
+class ArrayStack:
+    """Curves in an array (ny, nx, nt[, channels]), or anything indexable like one (an h5py dataset)."""
+
+    def __init__(self, array: Any, source: str = "array", inputs: Sequence[str] = (), handle: Any = None):
+        if len(array.shape) < 3:
+            raise ValueError(f"{source}: expected an array (ny, nx, nt[, channels]), got shape {tuple(array.shape)}")
+        self.array, self.source, self.inputs, self._handle = array, source, list(inputs), handle
+        self.shape = (int(array.shape[0]), int(array.shape[1]))
+
+    def close(self) -> None:
+        """Closes the file it read from, if it opened one."""
+        if self._handle is not None:
+            self._handle.close()
+
+    def read(self, start: int, stop: int) -> list:
+        """The curves of the pixels start..stop-1 (row-major), read a block of rows at a time."""
+        nx = self.shape[1]
+        first_row, last_row = start // nx, (stop - 1) // nx
+        block = np.asarray(self.array[first_row:last_row + 1])
+        return [block[i // nx - first_row, i % nx] for i in range(start, stop)]
+
+
+class DirectoryStack:
+    """Curves in CSV files listed with their grid positions in `DIRECTORY/positions.csv` (file,row,col)."""
+
+    def __init__(self, directory: str):
+        self.source = directory
+        index = os.path.join(directory, "positions.csv")
+        self.inputs = [index]  # the result directory may be neither this directory nor a parent of it
+        try:
+            with open(index, newline="", encoding="utf-8") as handle:
+                rows = list(csv.DictReader(handle))
+        except OSError as error:
+            raise ValueError(f"{directory}: a directory of curves needs positions.csv (file,row,col): {error}") from None
+        self.files: dict[tuple[int, int], str] = {}
+        for line, row in enumerate(rows, start=2):
+            try:
+                position = (int(row["row"]), int(row["col"]))
+                name = row["file"]
+            except (KeyError, TypeError, ValueError):
+                raise ValueError(f"{index}:{line}: expected file,row,col with integer row and col") from None
+            if min(position) < 0:
+                raise ValueError(f"{index}:{line}: row and col must be >= 0")
+            if position in self.files:
+                raise ValueError(f"{index}:{line}: position {position} listed twice")
+            self.files[position] = os.path.join(directory, name)
+        if not self.files:
+            raise ValueError(f"{index}: lists no curve")
+        self.shape = (max(r for r, _ in self.files) + 1, max(c for _, c in self.files) + 1)
+
+    def read(self, start: int, stop: int) -> list:
+        nx = self.shape[1]
+        return [self._curve(self.files.get(divmod(i, nx))) for i in range(start, stop)]
+
+    def close(self) -> None:
+        pass
+
+    @staticmethod
+    def _curve(path: str | None) -> dict[str, np.ndarray] | None:
+        if path is None:
+            return None
+        with open(path, newline="", encoding="utf-8") as handle:
+            names = next(csv.reader(handle))
+            values = np.loadtxt(handle, delimiter=",", ndmin=2)
+        if values.shape[1] != len(names):
+            raise ValueError(f"{path}: {len(names)} column names, {values.shape[1]} columns of numbers")
+        return {name.strip(): values[:, i] for i, name in enumerate(names)}
+
+
+def open_stack(source: Any, dataset: str = "curves"):
+    """A stack of curves from an array (numpy, or indexable like one: an h5py dataset, a memmap), an HDF5 file
+    (dataset `dataset`) or a directory with positions.csv."""
+    if isinstance(source, (ArrayStack, DirectoryStack)):
+        return source
+    if isinstance(source, (str, os.PathLike)):
+        path = os.fspath(source)
+        if os.path.isdir(path):
+            return DirectoryStack(path)
+        if path.endswith((".h5", ".hdf5")):
+            try:
+                import h5py  # python3-h5py, optional
+            except ImportError:
+                raise ValueError(f"{path}: reading HDF5 needs h5py (Debian: python3-h5py)") from None
+            handle = h5py.File(path, "r")
+            if dataset not in handle:
+                names = ", ".join(handle)
+                handle.close()
+                raise ValueError(f"{path}: no dataset '{dataset}' (it has: {names})")
+            return ArrayStack(handle[dataset], f"{path}:{dataset}", inputs=[path], handle=handle)
+        raise ValueError(f"{path}: expected a directory with positions.csv or an HDF5 file (.h5, .hdf5)")
+    if not isinstance(source, np.ndarray) and hasattr(source, "shape") and hasattr(source, "__getitem__"):
+        return ArrayStack(source, type(source).__name__)  # read in slices, never whole
+    return ArrayStack(np.asarray(source))
+
+
+@dataclass
+class CurveMap:
+    """Per-pixel results: `values[name]` (ny, nx) float arrays (nan where a pixel has no value), `status` (ny, nx)
+    codes (OK, FAILED, NO_CURVE), `reasons` (ny, nx) strings ("" where ok), `batch` how the map ran
+    (mdr.distributed.MapOutcome without outputs)."""
+
+    values: dict[str, np.ndarray]
+    status: np.ndarray
+    reasons: np.ndarray
+    batch: distributed.MapOutcome | None = None
+
+    def summary(self) -> dict[str, Any]:
+        """map.json: the shape, the value names, the counts of each status, and how the map ran."""
+        batch = self.batch
+        return {"shape": list(self.status.shape), "values": list(self.values),
+                **{STATUS_NAMES[c].replace(" ", "_"): int(np.count_nonzero(self.status == c)) for c in STATUS_NAMES},
+                "scheduler": batch.scheduler if batch else None, "workers": batch.workers if batch else None,
+                "tasks": batch.tasks if batch else None, "retried": batch.retried if batch else None,
+                "wall_seconds": batch.seconds if batch else None}
+
+    def write_files(self, directory: str, figures: bool = True) -> list[str]:
+        """Writes NAME.npy per value, status.npy, failures.csv (row,col,reason), map.json and, with `figures`, a
+        heat map NAME.png per value into an existing directory; returns the file names."""
+        names = []
+        for name, array in self.values.items():
+            np.save(os.path.join(directory, f"{name}.npy"), array)
+            names.append(f"{name}.npy")
+        np.save(os.path.join(directory, "status.npy"), self.status)
+        with open(os.path.join(directory, "failures.csv"), "w", newline="", encoding="utf-8") as handle:
+            writer = csv.writer(handle)
+            writer.writerow(["row", "col", "status", "reason"])
+            for row, col in zip(*np.nonzero(self.status != OK)):
+                writer.writerow([row, col, STATUS_NAMES[int(self.status[row, col])], self.reasons[row, col]])
+        with open(os.path.join(directory, "map.json"), "w", encoding="utf-8") as handle:
+            json.dump(self.summary(), handle, indent=2)
+            handle.write("\n")
+        names += ["status.npy", "failures.csv", "map.json"]
+        if figures:
+            for name, array in self.values.items():
+                heat_map(array, name).savefig(os.path.join(directory, f"{name}.png"), dpi=120)
+                names.append(f"{name}.png")
+        return names
+
+
+def heat_map(values: np.ndarray, name: str):
+    """A figure of a (ny, nx) map (pixels without a value left white)."""
+    from matplotlib.figure import Figure  # no pyplot: no GUI backend, safe in any thread
+
+    figure = Figure(figsize=(5.5, 4.5))
+    axes = figure.add_subplot()
+    image = axes.imshow(np.ma.masked_invalid(values), origin="upper", interpolation="nearest", cmap="viridis")
+    figure.colorbar(image, ax=axes, label=name)
+    axes.set(xlabel="col", ylabel="row", title=f"{name} ({np.count_nonzero(np.isfinite(values))} of {values.size} "
+                                                   f"pixels)")
+    figure.tight_layout()
+    return figure
+
+
+def map_curves(per_curve: Callable[[Any], Mapping[str, float]], stack: Any, *, scheduler: Any = None,
+               jobs: int | None = None, out: str | os.PathLike | None = None, figures: bool = True,
+               progress: Callable[[int, int], None] | None = None) -> CurveMap:
+    """Runs `per_curve(curve)` for every pixel of `stack` (see open_stack) and returns a CurveMap: one map per name
+    of the mappings it returns, nan where a pixel failed or has no curve; a pixel whose function raises is FAILED
+    with the reason ("ExceptionType: message") and does not stop the map. Locally on `jobs` processes (default: all
+    cores), or with `scheduler` (Dask address or distributed.Client) on its workers, with the same values bit for
+    bit. `per_curve` must be picklable: a function of an installed module (functools.partial for settings) or one
+    defined in `__main__` with a scheduler. With `out`, the files of CurveMap.write_files go to that result
+    directory (the rules of --out: checked before any computing, written whole or not at all)."""
+    opened = open_stack(stack)
+    try:
+        directory = None
+        if out is not None:
+            from . import _mdr
+
+            directory = _mdr._ResultDirectory(os.fspath(out), "out", opened.inputs)
+        ny, nx = opened.shape
+        results, errors, batch = distributed.map_items(
+            _Guarded(per_curve), _LazyCurves(opened), scheduler=scheduler, jobs=jobs, progress=progress)
+    finally:
+        if opened is not stack:
+            opened.close()
+    batch.outputs = []
+    names: list[str] = []
+    for result in results:
+        for name in result or {}:
+            if name not in names:
+                names.append(name)
+    values = {name: np.full((ny, nx), math.nan) for name in names}
+    status = np.full((ny, nx), OK, dtype=np.int8)
+    reasons = np.full((ny, nx), "", dtype=object)
+    for index, (result, error) in enumerate(zip(results, errors)):
+        row, col = divmod(index, nx)
+        if error:
+            status[row, col] = NO_CURVE if error == _NO_CURVE else FAILED
+            reasons[row, col] = "" if error == _NO_CURVE else error
+            continue
+        for name, value in result.items():
+            values[name][row, col] = value
+    curve_map = CurveMap(values=values, status=status, reasons=reasons.astype(str), batch=batch)
+    if directory is not None:
+        directory.write(lambda temporary: curve_map.write_files(temporary, figures))
+    return curve_map
+
+
+_NO_CURVE = "NoCurve: no curve at this position"
+
+
+class NoCurve(Exception):
+    """A pixel without a curve (a directory stack lists no file for it)."""
+
+    pass
+
+
+class _Guarded:
+    """The per-curve function, with the checks of its output (a mapping of names to finite-or-nan numbers)."""
+
+    def __init__(self, per_curve: Callable[[Any], Mapping[str, float]]):
+        self.per_curve = per_curve
+
+    def __call__(self, curve: Any) -> dict[str, float]:
+        if curve is None:
+            raise NoCurve("no curve at this position")
+        result = self.per_curve(curve)
+        if not isinstance(result, Mapping):
+            raise TypeError(f"the per-curve function returned {type(result).__name__}, not a dict of numbers")
+        return {str(name): float(value) for name, value in result.items()}
+
+
+class _LazyCurves(Sequence):
+    """The pixels of a stack as a sequence whose slices read the curves (mdr.distributed reads chunk by chunk)."""
+
+    def __init__(self, stack: Any):
+        self.stack = stack
+
+    def __len__(self) -> int:
+        return self.stack.shape[0] * self.stack.shape[1]
+
+    def __getitem__(self, index):
+        if isinstance(index, slice):
+            start, stop, _ = index.indices(len(self))
+            return self.stack.read(start, stop)
+        return self.stack.read(index, index + 1)[0]

@@ -1,0 +1,39 @@
+#pragma once
+// The observer of a harmonic normal load: first harmonics, loop area and contact loss over the last full cycle.
+
+#include <complex>
+#include <optional>
+#include <utility>
+
+#include "mdr/drivers/harmonic_load.hpp"
+#include "mdr/drivers/indentation.hpp"
+
+namespace mdr::drivers {
+
+/// Accumulates HarmonicOutcome over the last full cycle of `harmonic` that ends by `simulated_end`; the driver
+/// calls `observe` with the state after every step (and once with the initial state).
+class CycleMeasure {
+public:
+    CycleMeasure(const HarmonicLoad& harmonic, double simulated_end);
+    /// The state at time t [s]: depth d [m], force F [N], whether any element is in contact.
+    void observe(double time, double depth, double force, bool in_contact);
+    /// The outcome; none when not one full cycle was simulated.
+    std::optional<HarmonicOutcome> outcome() const;
+
+private:
+    struct Sample {
+        double time = 0.0;
+        double depth = 0.0;
+        double force = 0.0;
+    };
+    double start_;
+    double omega_;
+    std::optional<std::pair<double, double>> cycle_;
+    std::optional<Sample> last_;
+    std::complex<double> depth_sum_{};
+    std::complex<double> force_sum_{};
+    double work_ = 0.0;
+    double lost_time_ = 0.0;
+};
+
+}  // namespace mdr::drivers

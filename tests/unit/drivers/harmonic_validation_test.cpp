@@ -1,0 +1,94 @@
+// The rules of a harmonic normal load and of spring control, checked by the library on a ContactCase built in C++.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "mdr/drivers/case_validation.hpp"
+#include "mdr/drivers/indentation.hpp"
+#include "mdr/error.hpp"
+#include "mdr/profile/profile.hpp"
+
+namespace mdr::drivers {
+namespace {
+
+ContactCase harmonic_test(Control control) {
+    const double mean = control == Control::force ? 1.0 : 1e-4;
+    ContactCase contact_case{.title = "harmonic test",
+                             .material = rheology::Rheology::standard(1e6, 2e6, 0.1),
+                             .indenter = profile::make_sphere(0.01),
+                             .control = control,
+                             .history = LoadHistory({{0.0, 0.0}, {0.5, mean}, {1.0, mean}}, "load.history"),
+                             .end_time = 1.0};
+    contact_case.harmonic = HarmonicLoad{0.1 * mean, 20.0, 0.5, 1.0};
+    if (control == Control::spring) contact_case.spring_constant = 1e4;
+    contact_case.numerics.elements = 100;
+    return contact_case;
+}
+
+std::string key_of(const ContactCase& contact_case) {
+    try {
+        validate(contact_case);
+    } catch (const InvalidInput& error) {
+        return error.key();
+    }
+    return "";
+}
+
+TEST(HarmonicValidation, ValidCasesRunAndMeasureTheLastCycle) {
+    for (const Control control : {Control::displacement, Control::force, Control::spring}) {
+        const auto contact_case = harmonic_test(control);
+        EXPECT_EQ(key_of(contact_case), "");
+        const auto result = run_case(contact_case);
+        ASSERT_TRUE(result.harmonic.has_value());
+        EXPECT_GT(*result.harmonic->storage_stiffness, 0.0);
+        EXPECT_GT(*result.harmonic->loss_stiffness, 0.0);
+        EXPECT_EQ(result.base.empty(), control != Control::spring);
+    }
+}
+
+TEST(HarmonicValidation, EveryRuleNamesItsKey) {
+    const auto expect_key = [](Control control, const std::string& key, auto change) {
+        auto contact_case = harmonic_test(control);
+        change(contact_case);
+        EXPECT_EQ(key_of(contact_case), key);
+    };
+    expect_key(Control::displacement, "load.harmonic.frequency", [](ContactCase& c) { c.harmonic->frequency = 0.0; });
+    expect_key(Control::displacement, "load.harmonic.amplitude", [](ContactCase& c) { c.harmonic->amplitude = 0.0; });
+    expect_key(Control::displacement, "load.harmonic.end", [](ContactCase& c) { c.harmonic->end = 0.5; });
+    expect_key(Control::displacement, "load.harmonic.start", [](ContactCase& c) { c.harmonic->start = -0.5; });
+    expect_key(Control::force, "load.harmonic.amplitude", [](ContactCase& c) { c.harmonic->amplitude = 1.01; });
+    // Ending at a trough, the harmonic holds -amplitude while the history unloads to 0.
+    expect_key(Control::force, "load.harmonic.end", [](ContactCase& c) {
+        c.history = LoadHistory({{0.0, 0.0}, {0.5, 1.0}, {1.0, 1.0}, {1.1, 0.0}}, "load.history");
+        c.harmonic->end = 0.5375;
+    });
+    expect_key(Control::spring, "load.spring_constant", [](ContactCase& c) { c.spring_constant = -1.0; });
+    expect_key(Control::spring, "load.spring_constant", [](ContactCase& c) { c.spring_constant.reset(); });
+    expect_key(Control::displacement, "load.spring_constant", [](ContactCase& c) { c.spring_constant = 1.0; });
+    expect_key(Control::spring, "load.history[0].z", [](ContactCase& c) {
+        c.history = LoadHistory({{0.0, 1e-6}, {1.0, 1e-4}}, "load.history");
+    });
+    expect_key(Control::spring, "load.history[2].t", [](ContactCase& c) {
+        c.history = LoadHistory({{0.0, 0.0}, {0.5, 1e-4}, {0.5, 2e-4}, {1.0, 2e-4}}, "load.history");
+    });
+}
+
+TEST(HarmonicValidation, TheDefaultStepResolvesThePeriod) {
+    const auto numerics = resolve_numerics(harmonic_test(Control::displacement));
+    EXPECT_LE(numerics.time_step, 1.0 / 20.0 / default_steps_per_period);
+}
+
+TEST(HarmonicValidation, SharedHarmonicLoadCycles) {
+    const HarmonicLoad harmonic{1.0, 2.0, 1.0, 3.0};
+    const auto cycle = harmonic.last_full_cycle(2.9);  // 3.8 periods fit: the fourth is not full
+    ASSERT_TRUE(cycle.has_value());
+    EXPECT_DOUBLE_EQ(cycle->first, 2.0);
+    EXPECT_DOUBLE_EQ(cycle->second, 2.5);
+    EXPECT_FALSE(harmonic.last_full_cycle(1.4).has_value());
+    EXPECT_DOUBLE_EQ(harmonic.value(0.5), 0.0);
+    EXPECT_NEAR(harmonic.value(1.125), 1.0, 1e-15);
+}
+
+}  // namespace
+}  // namespace mdr::drivers
