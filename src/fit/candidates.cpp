@@ -190,11 +190,20 @@ std::vector<double> linear_start(const io::FitCase& base, const Material& materi
     io::CaseTemplate model = base.model;
     for (std::size_t j = 0; j < indenter.size(); ++j) model.set_number(base.parameters[j].name, indenter[j]);
     const drivers::ContactCase built = model.build();
-    const std::size_t elements = base.settings.elements.value_or(built.numerics.elements.value_or(default_fit_elements));
     const auto columns = static_cast<Eigen::Index>(material.parameters.size());
     std::vector<Eigen::VectorXd> blocks_b;
     std::vector<Eigen::MatrixXd> blocks_A;
     Eigen::Index rows = 0;
+    // The elements as fit() chooses them: from the smallest noise relative to its curve's peak force.
+    double noise_to_peak = 1.0;
+    for (const auto& curve : curves) {
+        const CurveModel prepared = prepare_curve(curve, Fitted::force, 0.0);
+        double peak = 0.0;
+        for (double value : curve.force) peak = std::max(peak, std::abs(value));
+        if (peak > 0.0) noise_to_peak = std::min(noise_to_peak, prepared.noise / peak);
+    }
+    const std::size_t elements =
+        base.settings.elements.value_or(built.numerics.elements.value_or(default_fit_elements(noise_to_peak)));
     for (const auto& curve : curves) {
         const bool fixed_contact = base.settings.contact_point == ContactPointMode::fixed;
         const double contact = fixed_contact ? 0.0 : curve.contact_depth;
