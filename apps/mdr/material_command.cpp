@@ -1,6 +1,7 @@
 // `mdr material CASE --out DIR`: tabulates the material functions of a case as `run` uses them.
 
 #include <fmt/format.h>
+#include <fmt/os.h>
 
 #include "commands.hpp"
 #include "interrupt.hpp"
@@ -8,6 +9,7 @@
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/material_table.hpp"
 #include "mdr/io/result_directory.hpp"
+#include "mdr/rheology/material_models.hpp"
 #include "setup_progress.hpp"
 
 namespace mdr::cli {
@@ -54,15 +56,28 @@ void add_material_command(CLI::App& app, int& exit_code) {
                 return io::load_case(*case_path);
             }();
             const auto& material = contact_case.material;
-            const auto t = times->empty() ? io::default_times(material) : parse_list(*times, "--times");
-            const auto w = omegas->empty() ? io::default_omegas(material) : parse_list(*omegas, "--omegas");
+            const auto& origin = contact_case.material_origin;
+            // A model standing as a series: by default its certified window, model and series side by side.
+            auto t = times->empty() ? io::default_times(material) : parse_list(*times, "--times");
+            auto w = omegas->empty() ? io::default_omegas(material) : parse_list(*omegas, "--omegas");
+            if (origin.certificate) {
+                const auto& window = origin.certificate->window;
+                if (times->empty()) t = io::log_grid(window.shortest, window.longest, 121);
+                if (omegas->empty()) w = io::log_grid(1.0 / window.longest, 1.0 / window.shortest, 121);
+                fmt::print("{} {}\n", origin.description,
+                           rheology::describe_certificate(*origin.certificate, material.terms().size()));
+            }
             directory.write(
                 [&](const std::filesystem::path& files) {
-                    io::write_material_tables(files, material, contact_case.shear_material, t, w);
+                    io::write_material_tables(files, material, contact_case.shear_material, t, w, origin.model);
+                    // The declared unit system (mdr/io/units.hpp), which the figures of the tables name.
+                    auto summary = fmt::output_file((files / "summary.json").string());
+                    summary.print("{{\n  \"units\": \"{}\"\n}}\n", contact_case.units);
+                    summary.close();
                 },
                 received_signal);
-            fmt::print("{} times, {} frequencies written to {}/ (functions.csv, dynamic.csv)\n", t.size(), w.size(),
-                       *out);
+            fmt::print("{} times, {} frequencies written to {}/ (functions.csv, dynamic.csv, summary.json)\n",
+                       t.size(), w.size(), *out);
         });
     });
 }

@@ -11,6 +11,7 @@
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/result_directory.hpp"
 #include "mdr/io/result_files.hpp"
+#include "mdr/io/units.hpp"
 #include "progress.hpp"
 #include "setup_progress.hpp"
 
@@ -47,14 +48,16 @@ void add_run_command(CLI::App& app, int& exit_code) {
             const double max_depth = *std::max_element(result.depth.begin(), result.depth.end());
             const double max_radius = *std::max_element(result.radius.begin(), result.radius.end());
             fmt::print("{}\n", io::describe(contact_case));
-            fmt::print("  {} steps x {} elements (half-width {:.4g} m, time step {:.4g} s) in {:.3f} s\n",
-                       result.steps, result.numerics.elements, result.numerics.half_width, result.numerics.time_step,
-                       wall);
-            fmt::print("  max force {:.6g} N, max depth {:.6g} m, max contact radius {:.6g} m\n", max_force,
-                       max_depth, max_radius);
+            const io::UnitSystem& units = io::unit_system(contact_case.units);
+            fmt::print("  {} steps x {} elements (half-width {:.4g} {}, time step {:.4g} {}) in {:.3f} s\n",
+                       result.steps, result.numerics.elements, result.numerics.half_width, units.length,
+                       result.numerics.time_step, units.time, wall);
+            fmt::print("  max force {:.6g} {}, max depth {:.6g} {}, max contact radius {:.6g} {}\n", max_force,
+                       units.force, max_depth, units.length, max_radius, units.length);
             if (result.impact) {
-                fmt::print("  restitution e = {:.6g}, contact time {:.6g} s, rebound velocity {:.6g} m/s\n",
-                           result.impact->restitution, result.impact->contact_time, result.impact->rebound_velocity);
+                fmt::print("  restitution e = {:.6g}, contact time {:.6g} {}, rebound velocity {:.6g} {}\n",
+                           result.impact->restitution, result.impact->contact_time, units.time,
+                           result.impact->rebound_velocity, units.velocity());
             }
             fmt::print("  results in {}/ (history.csv, summary.json{})\n", *out,
                        result.snapshots.empty() ? "" : ", profiles.csv");

@@ -8,25 +8,31 @@
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/result_files.hpp"
+#include "mdr/io/units.hpp"
 
 namespace py = pybind11;
 
 namespace mdr::python {
 namespace {
 
-py::dict run_toml_case(const std::string& toml_text, const std::string& source) {
+// Runs with the GIL released; at each report of the driver, Ctrl-C (a pending signal) stops the run with
+// KeyboardInterrupt, and `progress` (None or a callable of the fraction done) is called; an exception it raises
+// stops the run and propagates. `progress` is called with 1.0 once the run is done.
+py::dict run_toml_case(const std::string& toml_text, const std::string& source, const py::object& progress) {
     const auto contact_case = io::parse_case(toml_text, source);
     drivers::IndentationResult result;
     double wall = 0.0;
     {
         py::gil_scoped_release release;
         const auto start = std::chrono::steady_clock::now();
-        result = drivers::run_case(contact_case, [](double) {
+        result = drivers::run_case(contact_case, [&progress](double fraction) {
             py::gil_scoped_acquire acquire;
             if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+            if (!progress.is_none()) progress(fraction);
         });
         wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
+    if (!progress.is_none()) progress(1.0);
     py::dict history;
     history["t"] = to_array(result.time);
     history["d"] = to_array(result.depth);
@@ -43,6 +49,10 @@ py::dict run_toml_case(const std::string& toml_text, const std::string& source) 
         history["u"] = to_array(result.tangential_displacement);
         history["Fx"] = to_array(result.tangential_force);
         history["c"] = to_array(result.stick_radius);
+    }
+    if (!result.spin.empty()) {
+        history["v_t"] = to_array(result.tangential_velocity);
+        history["omega"] = to_array(result.spin);
     }
     py::dict profiles;
     std::vector<double> t, r, p, w, tau;
@@ -70,11 +80,30 @@ py::dict run_toml_case(const std::string& toml_text, const std::string& source) 
 
 void bind_run(py::module_& module) {
     module.def("_run_toml", &run_toml_case, py::arg("toml_text"), py::arg("source") = "case",
+               py::arg("progress") = py::none(),
                "Runs a case given as TOML text; returns history, profiles and summary (use mdr.run).");
     module.def(
         "_check_toml",
         [](const std::string& text, const std::string& source) { return io::check(io::parse_case(text, source)); },
-        py::arg("toml_text"), py::arg("source") = "case", "Validates a case given as TOML text; returns its description.");
+        py::arg("toml_text"), py::arg("source") = "case",
+        "Validates a case given as TOML text; returns its description.");
+    module.def(
+        "_unit_system",
+        [](const std::string& name) {
+            const io::UnitSystem& units = io::unit_system(name);
+            py::dict names;
+            names["length"] = units.length;
+            names["force"] = units.force;
+            names["time"] = units.time;
+            names["pressure"] = units.pressure;
+            names["mass"] = units.mass;
+            names["energy"] = units.energy;
+            names["velocity"] = units.velocity();
+            names["viscosity"] = units.viscosity();
+            names["compliance"] = units.compliance();
+            return names;
+        },
+        py::arg("name") = "SI", "The unit names of a declared unit system (`units` of a case; mdr/io/units.hpp).");
 }
 
 }  // namespace mdr::python

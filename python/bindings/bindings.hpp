@@ -3,10 +3,16 @@
 
 #include <pybind11/pybind11.h>
 
+#include "mdr/rheology/rheology.hpp"
+
 namespace mdr::python {
 
 /// mdr.Material: the canonical rheology and its factories.
 void bind_rheology(pybind11::module_& module);
+/// The factories of mdr.Material, one per registered material model.
+void bind_material_models(pybind11::class_<rheology::Rheology>& material);
+/// _mdr._material_models(): the registry as data (stubs and docs are checked against it).
+void bind_material_registry(pybind11::module_& module);
 /// mdr.run and mdr.check: cases from TOML text, results as numpy arrays.
 void bind_run(pybind11::module_& module);
 /// mdr.Indenter: the profiles and their g(x).

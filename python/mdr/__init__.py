@@ -1,19 +1,25 @@
 """mdr: viscoelastic contact mechanics by the Method of Dimensionality Reduction (Popov & Hess).
 
     import mdr
-    result = mdr.run("examples/default.toml")          # or a dict with the structure of the case file
+    result = mdr.run(material=mdr.Material.standard(G_inf=1e6, G1=3e6, tau1=0.1),
+                     indenter=mdr.Indenter.sphere(R=0.01),
+                     load={"control": "displacement", "history": [[0, 0], [1, 1e-4], [2, 0]]})
+    result = mdr.run("examples/default.toml")          # or a case file, or a dict with its structure
     result.history["F"]                                 # numpy arrays keyed by the history.csv columns
     result.summary["max_force"]                         # the summary.json keys
-    mdr.Material.standard(G_inf=1e6, G1=3e6, tau1=0.1).creep([0.1, 1.0])
+    mdr.Material.standard(G_inf=1e6, G1=3e6, tau1=0.1).creep(0.1)
+
+`mdr.plot` (figures, matplotlib) and `mdr.maps` are imported on first use.
 """
 
 from __future__ import annotations
 
+import importlib
 import json
 import math
 import os
 from dataclasses import dataclass, field
-from typing import Any, Mapping, Union
+from typing import Any, Callable, Mapping, Optional, Union
 
 import numpy as np
 
@@ -29,12 +35,40 @@ __all__ = ["run", "check", "sweep", "SweepTable", "fit", "FitResult", "map_curve
 __version__ = _mdr.__version__
 
 CaseLike = Union[str, os.PathLike, Mapping[str, Any]]
+_LAZY_MODULES = ("plot", "maps")
+
+
+def __getattr__(name: str) -> Any:
+    # mdr.plot and mdr.maps import matplotlib; they load on first use (PEP 562), so that `import mdr` neither
+    # needs matplotlib nor chooses its backend.
+    if name in _LAZY_MODULES:
+        return importlib.import_module(f".{name}", __name__)
+    raise AttributeError(f"module 'mdr' has no attribute {name!r}")
 
 
 @dataclass
 class Result:
-    """What a run produced: `history` and `profiles` are dicts of numpy arrays keyed by the CSV column names,
-    `summary` the summary.json object, `description` the one-line description of the case."""
+    """What a run produced.
+
+    Attributes
+    ----------
+    history : dict of str to numpy.ndarray
+        One array per column of history.csv (``t``, ``d``, ``F``, ``a``; ``v`` for an impact; ``u``, ``Fx``,
+        ``c`` with tangential loading), in the case's units.
+    summary : dict
+        The summary.json object (``max_force``, ``max_depth``, ``steps``, ...).
+    profiles : dict of str to numpy.ndarray
+        One array per column of profiles.csv (``t``, ``r``, ``p``, ``w``; ``tau`` with tangential loading),
+        empty without ``[output] snapshots``.
+    description : str
+        The one-line description of the case (what ``mdr check`` prints).
+
+    Examples
+    --------
+    >>> result = mdr.run("examples/default.toml")
+    >>> result.history["F"].max() == result.summary["max_force"]
+    True
+    """
 
     history: dict[str, np.ndarray]
     summary: dict[str, Any]
@@ -56,18 +90,114 @@ def _case_text(case: CaseLike) -> tuple[str, str]:
     raise TypeError(f"case: expected a path or a dict, got {type(case).__name__}")
 
 
-def run(case: CaseLike) -> Result:
-    """Runs a case (a TOML file path or a dict with the same structure) and returns a Result.
-    Bad input raises ValueError with the same message as the command line."""
-    text, source = _case_text(case)
-    raw = _mdr._run_toml(text, source)
+def _case_of(case: Optional[CaseLike], tables: Mapping[str, Any]) -> CaseLike:
+    """The case of run and check: a path or dict, or the tables given as keywords (a dict like the file's)."""
+    given = {key: value for key, value in tables.items() if value is not None}
+    if case is not None and given:
+        raise TypeError(f"give a case or its tables ({', '.join(given)}) as keywords, not both")
+    if case is not None:
+        return case
+    if not given:
+        raise TypeError("case: give a case file, a dict, or material=..., indenter=..., load=...")
+    return given
+
+
+def _callable_or_none(progress: Any) -> Any:
+    if progress is not None and not callable(progress):
+        raise TypeError(f"progress: expected a callable or None, got {type(progress).__name__}")
+    return progress
+
+
+def run(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[str, Any], None] = None,
+        indenter: Union[Indenter, Mapping[str, Any], None] = None, load: Optional[Mapping[str, Any]] = None,
+        numerics: Optional[Mapping[str, Any]] = None, tangential: Optional[Mapping[str, Any]] = None,
+        output: Optional[Mapping[str, Any]] = None, title: Optional[str] = None,
+        progress: Optional[Callable[[float], Any]] = None) -> Result:
+    """Runs a contact case.
+
+    Give either `case` (a case file or a dict with its structure) or the case's tables as keywords.
+
+    Parameters
+    ----------
+    case : str, os.PathLike or dict, optional
+        A TOML case file (docs/case-format.md) or a dict with the same structure; values may be numpy numbers or
+        arrays, ``mdr.Material`` (for ``material``) and ``mdr.Indenter`` (for ``indenter``).
+    material : mdr.Material or dict, optional
+        The half-space: an ``mdr.Material`` or a dict like ``[material]``.
+    indenter : mdr.Indenter or dict, optional
+        The indenter: an ``mdr.Indenter`` or a dict like ``[indenter]`` (a dict also takes ``mass`` and the
+        indenter's own ``material``).
+    load : dict, optional
+        A dict like ``[load]``: ``control`` and ``history`` (or ``velocity`` for an impact), optional ``end``.
+    numerics, tangential, output : dict, optional
+        Dicts like ``[numerics]``, ``[tangential]`` and ``[output]``.
+    title : str, optional
+        The case's title.
+    progress : callable, optional
+        Called as ``progress(fraction)`` with the fraction of the simulated time done (0 to 1) as the run goes
+        on, and with 1.0 at its end. An exception it raises stops the run and propagates.
+
+    Returns
+    -------
+    Result
+        The history, summary, profiles and description of the run.
+
+    Raises
+    ------
+    mdr.InvalidInput
+        (a ValueError) for bad input, with the command line's message ``key = value: rule``.
+    TypeError
+        For a case that is neither a path nor a dict, or a case given both ways.
+
+    Examples
+    --------
+    >>> result = mdr.run(material=mdr.Material.standard(G_inf=1e6, G1=3e6, tau1=0.2),
+    ...                  indenter=mdr.Indenter.sphere(R=0.01),
+    ...                  load={"control": "displacement", "history": [[0.0, 0.0], [1.0, 1e-4], [2.0, 0.0]]})
+    >>> round(result.summary["max_force"], 3)
+    0.958
+    >>> mdr.run("examples/default.toml").summary["control"]
+    'displacement'
+    """
+    progress = _callable_or_none(progress)
+    text, source = _case_text(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
+                                                  tangential=tangential, output=output, numerics=numerics)))
+    raw = _mdr._run_toml(text, source, progress)
     return Result(history=dict(raw["history"]), summary=json.loads(raw["summary_json"]),
                   profiles=dict(raw["profiles"]), description=raw["description"])
 
 
-def check(case: CaseLike) -> str:
-    """Validates a case and returns its one-line description; raises ValueError for bad input."""
-    text, source = _case_text(case)
+def check(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[str, Any], None] = None,
+          indenter: Union[Indenter, Mapping[str, Any], None] = None, load: Optional[Mapping[str, Any]] = None,
+          numerics: Optional[Mapping[str, Any]] = None, tangential: Optional[Mapping[str, Any]] = None,
+          output: Optional[Mapping[str, Any]] = None, title: Optional[str] = None) -> str:
+    """Validates a case without running it, like ``mdr check``.
+
+    Parameters
+    ----------
+    case : str, os.PathLike or dict, optional
+        A case file or a dict with its structure, as for `run`.
+    material, indenter, load, numerics, tangential, output, title
+        The case's tables as keywords, as for `run`.
+
+    Returns
+    -------
+    str
+        The one-line description of the case.
+
+    Raises
+    ------
+    mdr.InvalidInput
+        (a ValueError) for bad input, with the command line's message.
+
+    Examples
+    --------
+    >>> mdr.check(material={"model": "elastic", "G": 1e6}, indenter={"shape": "sphere", "R": 0.01},
+    ...           load={"control": "force", "history": [[0.0, 0.0], [1.0, 0.1]]})  # doctest: +ELLIPSIS
+    'sphere R = 0.01 on an elastic half-space (G(0+) = 1e+06 Pa, ...), force control, ...'
+    """
+    text, source = _case_text(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
+                                                  tangential=tangential, output=output, numerics=numerics)))
     return _mdr._check_toml(text, source)
 
 
@@ -88,23 +218,56 @@ class SweepTable(dict):
     batch: Any = None
 
 
-def sweep(case: CaseLike, vary: Mapping[str, Any], jobs: int | None = None, scheduler: Any = None) -> SweepTable:
-    """Runs a case over the cartesian product of `vary` ({dotted key: values or "START:STOP:COUNT[:log]"}, the
-    last key varying fastest) on `jobs` threads (default: all cores), like `mdr sweep`; or, with `scheduler` (a
-    Dask scheduler address "tcp://HOST:PORT" or a distributed.Client), in chunks on its workers (docs/distributed.md),
-    with the same rows bit for bit. Returns a table as a dict of numpy arrays: the varied keys, every numeric key of
-    summary.json (nan where a point failed), and `error` (the failure message, "" where the point ran)."""
+def sweep(case: CaseLike, vary: Mapping[str, Any], jobs: Optional[int] = None,
+          progress: Optional[Callable[[int, int], Any]] = None, scheduler: Any = None) -> SweepTable:
+    """Runs a case over the cartesian product of grids of numeric keys, like ``mdr sweep``.
+
+    Parameters
+    ----------
+    case : str, os.PathLike or dict
+        A case file or a dict with its structure.
+    vary : dict of str to sequence or str
+        ``{dotted key: values}``: a 1-D sequence of numbers or ``"START:STOP:COUNT[:log]"``; the last key varies
+        fastest.
+    jobs : int, optional
+        Threads (default: all cores).
+    progress : callable, optional
+        Called as ``progress(done, total)`` with the number of points finished, as points finish and at least
+        every 0.2 s. An exception it raises stops the sweep and propagates (local sweeps).
+    scheduler : str or distributed.Client, optional
+        A Dask scheduler address ``"tcp://HOST:PORT"`` or a client: the points run in chunks on its workers
+        (docs/distributed.md), with the same rows bit for bit.
+
+    Returns
+    -------
+    SweepTable
+        The table of sweep.csv as a dict of numpy arrays: the varied keys, every numeric key of summary.json (nan
+        where a point failed) and ``error`` (the failure message, "" where the point ran); ``.batch`` tells how a
+        scheduled sweep ran (None for a local one).
+
+    Raises
+    ------
+    mdr.InvalidInput
+        For a bad case or a key that is not a number of the case.
+
+    Examples
+    --------
+    >>> table = mdr.sweep("examples/default.toml", {"material.G_inf": [0.5e6, 1e6, 2e6]}, jobs=2)
+    >>> table["max_force"].shape
+    (3,)
+    """
     if not isinstance(vary, Mapping) or not vary:
         raise TypeError("vary: expected a non-empty dict {key: values}")
     if jobs is not None and (not isinstance(jobs, int) or jobs < 1):
         raise ValueError(f"jobs = {jobs!r}: must be an integer >= 1")
     if jobs is not None and scheduler is not None:
         raise ValueError(f"jobs = {jobs!r}: not used with a scheduler (its workers' threads run the chunks)")
+    progress = _callable_or_none(progress)
     text, source = _case_text(case)
     specs = [_axis_spec(key, values) for key, values in vary.items()]
     batch = None
     if scheduler is None:
-        raw = _mdr._sweep_toml(text, source, specs, jobs or 0)
+        raw = _mdr._sweep_toml(text, source, specs, jobs or 0, progress)
     else:
         from . import distributed
 

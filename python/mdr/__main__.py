@@ -3,18 +3,24 @@
 from __future__ import annotations
 
 import argparse
-import sys
-
 import os
-
-from . import maps, plot
+import sys
 
 
 def main(argv: list[str] | None = None) -> int:
+    """The command line of the package; returns the exit status (2 for bad input)."""
+    import matplotlib
+
+    if "MPLBACKEND" not in os.environ:
+        matplotlib.use("Agg")  # files only: no window, no display needed
+    from . import maps, plot
+
     parser = argparse.ArgumentParser(prog="python3 -m mdr", description=__doc__)
     commands = parser.add_subparsers(dest="command", required=True)
     plot_command = commands.add_parser("plot", help="write PNG figures for a result directory")
     plot_command.add_argument("directory")
+    plot_command.add_argument("--column", help="the column of sweep.csv that sweep.png plots (default: restitution "
+                                               "for impacts, else max_force)")
     range_command = commands.add_parser("p1-range", help="tau1 bounds START:STOP giving p1 from P1_MIN to P1_MAX")
     range_command.add_argument("case")
     range_command.add_argument("p1_min", type=float)
@@ -26,7 +32,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     try:
         if args.command == "plot":
-            for path in plot.plot_directory(args.directory):
+            for path in plot.plot_directory(args.directory, column=args.column):
                 print(path)
         elif args.command == "p1-range":
             scale = maps.p1_scale(maps.read_case(args.case))

@@ -1,25 +1,55 @@
-"""Figures of a run: force-depth and force-time with loading and unloading told apart, contact radius, pressure
-profiles at the snapshots; material functions and complex moduli; a sweep over one or two keys. Uses
-matplotlib's Agg backend unless another one is set."""
+"""Figures of a run: force-depth with loading, holds and unloading told apart, force and depth over time,
+contact radius, pressure profiles at the snapshots; material functions and complex moduli; a sweep over one or
+two keys.
+
+The backend is matplotlib's choice (Agg where there is no display; ``python -m mdr plot`` always uses Agg).
+Every function draws into `axes` when given one, else into a new figure, and returns the axes. Axis labels name
+the units of the case's declared unit system (`units`, default "SI"; docs/case-format.md): a system name or the
+summary dict of a run.
+"""
 
 from __future__ import annotations
 
 import csv
+import json
 import os
-from typing import Mapping
+from typing import Any, Mapping, Optional, Union
 
-import matplotlib
+import matplotlib.pyplot as plt
 import matplotlib.ticker
+import numpy as np
 
-if "MPLBACKEND" not in os.environ:
-    matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from . import _mdr
+
+Units = Union[str, Mapping[str, Any]]
+
+
+def _unit_names(units: Units) -> dict[str, str]:
+    """The unit names of a system name, or of the `units` of a run's summary dict (SI when it has none)."""
+    if isinstance(units, Mapping):
+        units = units.get("units", "SI")
+    return _mdr._unit_system(units)
 
 
 def read_csv(path: str) -> dict[str, np.ndarray]:
-    """A CSV file with a header line as a dict of arrays keyed by column name: float arrays, or string arrays for
-    columns that are not numeric (the `error` column of sweep.csv)."""
+    """Reads a CSV file with a header line.
+
+    Parameters
+    ----------
+    path : str
+        The file (history.csv, profiles.csv, sweep.csv, functions.csv, dynamic.csv).
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        One array per column, keyed by the header's names: float arrays, or string arrays for columns that are
+        not numeric (the ``error`` column of sweep.csv).
+
+    Examples
+    --------
+    >>> history = mdr.plot.read_csv("out/demo/history.csv")  # doctest: +SKIP
+    >>> history["F"].max()                                   # doctest: +SKIP
+    """
     with open(path, newline="", encoding="utf-8") as handle:
         rows = list(csv.reader(handle))
     if not rows:
@@ -35,123 +65,377 @@ def read_csv(path: str) -> dict[str, np.ndarray]:
     return columns
 
 
-def _loading_mask(depth: np.ndarray) -> np.ndarray:
-    """True where the depth grows (loading), False where it falls or holds."""
-    change = np.diff(depth, prepend=depth[:1])
-    return change > 0
+def load_phases(depth: np.ndarray, force: np.ndarray, control: Optional[str] = None) -> np.ndarray:
+    """Tells loading, holds and unloading apart along a history.
+
+    A row ends a hold when the controlled quantity did not change since the row before: the depth under
+    displacement control (where the force relaxes), the force under force control (where the depth creeps).
+    Otherwise it ends loading where the controlled quantity grew, unloading where it fell. Under force control a
+    force of zero is no hold but the recovery of the unloaded surface (unloading).
+
+    Parameters
+    ----------
+    depth, force : numpy.ndarray
+        The ``d`` and ``F`` columns of a history.
+    control : {"displacement", "force", "impact"}, optional
+        The case's control (summary.json ``control``). When not given: force control if the force stays at a
+        non-zero value while the depth changes, else displacement control.
+
+    Returns
+    -------
+    numpy.ndarray of str
+        "loading", "hold" or "unloading" per row (the first row: "hold").
+
+    Examples
+    --------
+    >>> d, F = np.array([0.0, 1.0, 1.5, 1.6, 1.0]), np.array([0.0, 2.0, 2.0, 1.0, 0.0])
+    >>> mdr.plot.load_phases(d, F).tolist()
+    ['hold', 'loading', 'hold', 'unloading', 'unloading']
+    """
+    d, F = np.asarray(depth, float), np.asarray(force, float)
+    dd, dF = np.diff(d, prepend=d[:1]), np.diff(F, prepend=F[:1])
+    # Still: a change below 1e-9 of the largest value (a force solved for under force control meets its target to
+    # round-off; a step of a real ramp changes by far more).
+    d_still = np.abs(dd) <= 1e-9 * np.max(np.abs(d), initial=0.0)
+    F_tolerance = 1e-9 * np.max(np.abs(F), initial=0.0)
+    F_held = (np.abs(dF) <= F_tolerance) & (np.abs(F) > F_tolerance)
+    if control is None:
+        control = "force" if np.any(F_held & ~d_still) else "displacement"
+    if control == "force":
+        hold, change = F_held, dF
+    else:
+        hold, change = d_still, dd
+    phases = np.where(hold, "hold", np.where(change > 0, "loading", "unloading"))
+    phases[:1] = "hold"
+    return phases
 
 
-def force_depth(history: Mapping[str, np.ndarray], axes=None):
-    """Force over depth, loading in one colour and unloading in another."""
+def force_depth(history: Mapping[str, np.ndarray], axes=None, units: Units = "SI", control: Optional[str] = None):
+    """Force over depth, with loading, holds and unloading in their own colours (`load_phases`).
+
+    Parameters
+    ----------
+    history : dict of str to numpy.ndarray
+        With the columns ``d`` and ``F`` (``Result.history`` or history.csv).
+    axes : matplotlib.axes.Axes, optional
+        Where to draw; a new figure by default.
+    units : str or dict, optional
+        The unit system's name, or the run's summary dict (default "SI").
+    control : str, optional
+        The case's control (summary.json ``control``; inferred from the history when not given).
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Examples
+    --------
+    >>> result = mdr.run("examples/default.toml")
+    >>> axes = mdr.plot.force_depth(result.history, units=result.summary, control=result.summary["control"])
+    """
+    names = _unit_names(units)
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     d, F = history["d"], history["F"]
-    loading = _loading_mask(d)
-    axes.plot(d, F, color="0.8", lw=1, zorder=1)
-    axes.plot(np.where(loading, d, np.nan), np.where(loading, F, np.nan), color="C0", label="loading")
-    axes.plot(np.where(~loading, d, np.nan), np.where(~loading, F, np.nan), color="C3", label="unloading / hold")
-    axes.set(xlabel="depth d [m]", ylabel="normal force F [N]", title="Force-depth")
-    axes.legend()
+    phases = load_phases(d, F, control)
+    for phase, color in (("loading", "C0"), ("hold", "C2"), ("unloading", "C3")):
+        # The segment from row i - 1 to row i belongs to the phase of row i; NaN separates the segments.
+        ends = np.flatnonzero(phases[1:] == phase) + 1
+        if ends.size:
+            gaps = np.full(ends.size, np.nan)
+            axes.plot(np.column_stack([d[ends - 1], d[ends], gaps]).ravel(),
+                      np.column_stack([F[ends - 1], F[ends], gaps]).ravel(), color=color, label=phase)
+    axes.set(xlabel=f"depth d [{names['length']}]", ylabel=f"normal force F [{names['force']}]", title="Force-depth")
+    axes.legend(loc="best")
     return axes
 
 
-def force_time(history: Mapping[str, np.ndarray], axes=None):
-    """Force and depth over time (depth on a second axis)."""
+def _legend_of_twins(axes, right) -> None:
+    """One legend for a plot with a second y axis, in a row above the axes (never over the curves, the title
+    above it or the axis labels)."""
+    handles, labels = [], []
+    for each in (axes, right):
+        more_handles, more_labels = each.get_legend_handles_labels()
+        handles += more_handles
+        labels += more_labels
+    axes.legend(handles, labels, loc="lower left", bbox_to_anchor=(0.0, 1.0), ncol=len(labels), frameon=False,
+                borderaxespad=0.2)
+    axes.set_title(axes.get_title(), pad=24)
+
+
+def force_time(history: Mapping[str, np.ndarray], axes=None, units: Units = "SI"):
+    """Force and depth over time (depth on a second y axis).
+
+    Parameters
+    ----------
+    history : dict of str to numpy.ndarray
+        With the columns ``t``, ``d`` and ``F``.
+    axes : matplotlib.axes.Axes, optional
+        Where to draw; a new figure by default.
+    units : str or dict, optional
+        The unit system's name, or the run's summary dict (default "SI").
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        The axes of the force (the depth's is its twin).
+
+    Examples
+    --------
+    >>> axes = mdr.plot.force_time(mdr.run("examples/default.toml").history)
+    """
+    names = _unit_names(units)
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
-    axes.plot(history["t"], history["F"], color="C0", label="F")
-    axes.set(xlabel="time t [s]", ylabel="normal force F [N]", title="Force and depth over time")
+    axes.plot(history["t"], history["F"], color="C0", label="force F")
+    axes.set(xlabel=f"time t [{names['time']}]", ylabel=f"normal force F [{names['force']}]",
+             title="Force and depth over time")
     right = axes.twinx()
-    right.plot(history["t"], history["d"], color="C1", ls="--", label="d")
-    right.set_ylabel("depth d [m]")
-    axes.figure.legend(loc="upper right")
+    right.plot(history["t"], history["d"], color="C1", ls="--", label="depth d")
+    right.set_ylabel(f"depth d [{names['length']}]")
+    _legend_of_twins(axes, right)
     return axes
 
 
-def contact_radius(history: Mapping[str, np.ndarray], axes=None):
-    """Contact radius over time."""
+def contact_radius(history: Mapping[str, np.ndarray], axes=None, units: Units = "SI"):
+    """Contact radius over time.
+
+    Parameters
+    ----------
+    history : dict of str to numpy.ndarray
+        With the columns ``t`` and ``a``.
+    axes : matplotlib.axes.Axes, optional
+        Where to draw; a new figure by default.
+    units : str or dict, optional
+        The unit system's name, or the run's summary dict (default "SI").
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Examples
+    --------
+    >>> axes = mdr.plot.contact_radius(mdr.run("examples/default.toml").history)
+    """
+    names = _unit_names(units)
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     axes.plot(history["t"], history["a"], color="C2")
-    axes.set(xlabel="time t [s]", ylabel="contact radius a [m]", title="Contact radius")
+    axes.set(xlabel=f"time t [{names['time']}]", ylabel=f"contact radius a [{names['length']}]",
+             title="Contact radius")
     return axes
 
 
-def _profiles(profiles: Mapping[str, np.ndarray], column: str, ylabel: str, title: str, axes=None):
+def _profiles(profiles: Mapping[str, np.ndarray], column: str, ylabel: str, title: str, axes, names):
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     for time in np.unique(profiles["t"]):
         rows = profiles["t"] == time
-        axes.plot(profiles["r"][rows], profiles[column][rows], label=f"t = {time:.4g} s")
-    axes.set(xlabel="radius r [m]", ylabel=ylabel, title=title)
-    axes.legend()
+        axes.plot(profiles["r"][rows], profiles[column][rows], label=f"t = {time:.4g} {names['time']}")
+    axes.set(xlabel=f"radius r [{names['length']}]", ylabel=ylabel, title=title)
+    axes.legend(loc="best")
     return axes
 
 
-def pressure_profiles(profiles: Mapping[str, np.ndarray], axes=None):
-    """Pressure p(r) (eq. 23) at each snapshot time."""
-    return _profiles(profiles, "p", "pressure p [Pa]", "Pressure profiles", axes)
+def pressure_profiles(profiles: Mapping[str, np.ndarray], axes=None, units: Units = "SI"):
+    """Pressure p(r) (eq. 23) at each snapshot time.
+
+    Parameters
+    ----------
+    profiles : dict of str to numpy.ndarray
+        With the columns ``t``, ``r`` and ``p`` (``Result.profiles`` or profiles.csv).
+    axes : matplotlib.axes.Axes, optional
+        Where to draw; a new figure by default.
+    units : str or dict, optional
+        The unit system's name, or the run's summary dict (default "SI").
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Examples
+    --------
+    >>> axes = mdr.plot.pressure_profiles(mdr.run("examples/default.toml").profiles)
+    """
+    names = _unit_names(units)
+    return _profiles(profiles, "p", f"pressure p [{names['pressure']}]", "Pressure profiles", axes, names)
 
 
-def shear_stress_profiles(profiles: Mapping[str, np.ndarray], axes=None):
-    """Shear stress tau_xz(r) (eq. 47) at each snapshot time (profiles.csv with tangential loading)."""
-    return _profiles(profiles, "tau", "shear stress tau_xz [Pa]", "Shear stress profiles", axes)
+def shear_stress_profiles(profiles: Mapping[str, np.ndarray], axes=None, units: Units = "SI"):
+    """Shear stress tau_xz(r) (eq. 47) at each snapshot time.
+
+    Parameters
+    ----------
+    profiles : dict of str to numpy.ndarray
+        With the columns ``t``, ``r`` and ``tau`` (profiles of a run with tangential loading).
+    axes : matplotlib.axes.Axes, optional
+        Where to draw; a new figure by default.
+    units : str or dict, optional
+        The unit system's name, or the run's summary dict (default "SI").
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Examples
+    --------
+    >>> axes = mdr.plot.shear_stress_profiles(mdr.run("examples/fretting_stick_radius.toml").profiles)
+    """
+    names = _unit_names(units)
+    return _profiles(profiles, "tau", f"shear stress tau_xz [{names['pressure']}]", "Shear stress profiles", axes,
+                     names)
 
 
-def tangential_loop(history: Mapping[str, np.ndarray], axes=None):
-    """The tangential force over the tangential displacement (the fretting hysteresis loop)."""
+def tangential_loop(history: Mapping[str, np.ndarray], axes=None, units: Units = "SI"):
+    """The tangential force over the tangential displacement (the fretting hysteresis loop).
+
+    Parameters
+    ----------
+    history : dict of str to numpy.ndarray
+        With the columns ``u`` and ``Fx`` (a run with tangential loading).
+    axes : matplotlib.axes.Axes, optional
+        Where to draw; a new figure by default.
+    units : str or dict, optional
+        The unit system's name, or the run's summary dict (default "SI").
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Examples
+    --------
+    >>> axes = mdr.plot.tangential_loop(mdr.run("examples/fretting_stick_radius.toml").history)
+    """
+    names = _unit_names(units)
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     axes.plot(history["u"], history["Fx"], color="C0")
-    axes.set(xlabel="tangential displacement u [m]", ylabel="tangential force F_x [N]",
-             title="Tangential force-displacement loop")
+    axes.set(xlabel=f"tangential displacement u [{names['length']}]",
+             ylabel=f"tangential force F_x [{names['force']}]", title="Tangential force-displacement loop")
     return axes
 
 
-def material_functions(functions: Mapping[str, np.ndarray], axes=None):
-    """Relaxation G(t) and creep J(t) on log axes (functions.csv of `mdr material`; J_shear too if present)."""
+def material_functions(functions: Mapping[str, np.ndarray], axes=None, units: Units = "SI"):
+    """Relaxation G(t) and creep J(t) on log axes (J on a second y axis).
+
+    Parameters
+    ----------
+    functions : dict of str to numpy.ndarray
+        With the columns ``t``, ``G``, ``J`` and optionally ``J_shear`` (functions.csv of ``mdr material``).
+    axes : matplotlib.axes.Axes, optional
+        Where to draw; a new figure by default.
+    units : str or dict, optional
+        The unit system's name, or the summary dict of the result directory (default "SI").
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        The axes of G (J's is its twin).
+
+    Examples
+    --------
+    >>> m, t = mdr.Material.standard(G_inf=1e6, G1=3e6, tau1=0.1), np.logspace(-3, 1, 50)
+    >>> axes = mdr.plot.material_functions({"t": t, "G": m.relaxation(t), "J": m.creep(t)})
+    """
+    names = _unit_names(units)
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     axes.loglog(functions["t"], functions["G"], color="C0", label="G(t)")
-    axes.set(xlabel="time t [s]", ylabel="relaxation G [Pa]", title="Material functions")
+    if "G_model" in functions:  # a model or data standing as a series: both, side by side
+        axes.loglog(functions["t"], functions["G_model"], color="k", ls=":", label="G(t), model or data")
+    axes.set(xlabel=f"time t [{names['time']}]", ylabel=f"relaxation G [{names['pressure']}]",
+             title="Material functions")
     right = axes.twinx()
     right.loglog(functions["t"], functions["J"], color="C1", label="J(t)")
     if "J_shear" in functions:
         right.loglog(functions["t"], functions["J_shear"], color="C1", ls="--", label="J_shear(t)")
-    right.set_ylabel("creep J [1/Pa]")
-    axes.figure.legend(loc="upper center")
+    right.set_ylabel(f"creep J [{names['compliance']}]")
+    _legend_of_twins(axes, right)
     return axes
 
 
-def dynamic_moduli(dynamic: Mapping[str, np.ndarray], axes=None):
-    """Storage and loss moduli over angular frequency on log axes (dynamic.csv of `mdr material`)."""
+def dynamic_moduli(dynamic: Mapping[str, np.ndarray], axes=None, units: Units = "SI"):
+    """Storage and loss moduli over angular frequency on log axes.
+
+    Parameters
+    ----------
+    dynamic : dict of str to numpy.ndarray
+        With the columns ``omega``, ``storage`` and ``loss`` (dynamic.csv of ``mdr material``).
+    axes : matplotlib.axes.Axes, optional
+        Where to draw; a new figure by default.
+    units : str or dict, optional
+        The unit system's name, or the summary dict of the result directory (default "SI").
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Examples
+    --------
+    >>> w = np.logspace(-2, 3, 50)
+    >>> G = mdr.Material.standard(G_inf=1e6, G1=3e6, tau1=0.1).complex_modulus(w)
+    >>> axes = mdr.plot.dynamic_moduli({"omega": w, "storage": G.real, "loss": G.imag})
+    """
+    names = _unit_names(units)
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     axes.loglog(dynamic["omega"], dynamic["storage"], label="storage")
     axes.loglog(dynamic["omega"], np.maximum(dynamic["loss"], np.finfo(float).tiny), label="loss")
-    axes.set(xlabel="angular frequency omega [rad/s]", ylabel="modulus [Pa]", title="Complex modulus")
-    axes.legend()
+    if "storage_model" in dynamic:  # a model or data standing as a series: both, side by side
+        axes.loglog(dynamic["omega"], dynamic["storage_model"], color="k", ls=":", label="model or data")
+        axes.loglog(dynamic["omega"], dynamic["loss_model"], color="k", ls=":")
+    axes.set(xlabel=f"angular frequency omega [rad/{names['time']}]", ylabel=f"modulus [{names['pressure']}]",
+             title="Complex modulus")
+    axes.legend(loc="best")
     return axes
 
 
 def sweep_map(sweep: Mapping[str, np.ndarray], value: str, axes=None):
-    """`value` over the first varied key of a sweep.csv table (log axis if its grid is), one line per value of
-    the second varied key if there is one."""
-    axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
+    """One column of a sweep over the first varied key, one line per value of the second varied key if any.
+
+    Parameters
+    ----------
+    sweep : dict of str to numpy.ndarray
+        A sweep table (``mdr.sweep`` or sweep.csv); the varied keys are the dotted names.
+    value : str
+        The column to plot (a numeric summary key, e.g. "max_force" or "restitution").
+    axes : matplotlib.axes.Axes, optional
+        Where to draw; a new figure by default.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        With a log x axis when the first key's grid spans two decades or more of positive values.
+
+    Raises
+    ------
+    ValueError
+        When the table has no varied keys, or no numeric column `value` (the message lists those it has).
+
+    Examples
+    --------
+    >>> table = mdr.sweep("examples/default.toml", {"material.G_inf": [0.5e6, 1e6, 2e6]}, jobs=2)
+    >>> axes = mdr.plot.sweep_map(table, "max_force")
+    """
     keys = [k for k in sweep if "." in k]
     if not keys:
         raise ValueError("sweep table without varied keys (dotted names)")
+    columns = [k for k in sweep if k not in keys and np.asarray(sweep[k]).dtype.kind == "f"]
+    if value not in columns:
+        raise ValueError(f"column = {value}: not a numeric column of the sweep; one of {', '.join(columns)}")
+    axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     x = sweep[keys[0]]
     groups = np.unique(sweep[keys[1]]) if len(keys) > 1 else [None]
     for group in groups:
         rows = np.ones(x.shape, bool) if group is None else sweep[keys[1]] == group
         order = np.argsort(x[rows])
-        axes.plot(x[rows][order], sweep[value][rows][order], label=None if group is None else f"{keys[1]} = {group:g}")
-    if np.all(x > 0) and x.max() / x.min() > 100:
+        axes.plot(x[rows][order], sweep[value][rows][order], marker=".",
+                  label=None if group is None else f"{keys[1]} = {group:g}")
+    if np.all(x > 0) and x.max() / x.min() >= 100:
         axes.set_xscale("log")
     axes.set(xlabel=keys[0], ylabel=value, title=f"{value} over {keys[0]}")
     if len(keys) > 1:
-        axes.legend()
+        axes.legend(loc="best")
     return axes
 
 
 MANIFEST = ".mdr-result"  # include/mdr/io/result_directory.hpp: the files mdr wrote into a result directory
 
 
-def _listed_files(directory: str) -> set[str] | None:
+def _listed_files(directory: str) -> Optional[set[str]]:
     try:
         with open(os.path.join(directory, MANIFEST), encoding="utf-8") as handle:
             return {line.rstrip("\n") for line in handle if line.strip() and not line.startswith("#")}
@@ -159,12 +443,46 @@ def _listed_files(directory: str) -> set[str] | None:
         return None
 
 
-def plot_directory(directory: str) -> list[str]:
-    """PNG figures for a result directory: of `mdr run` (force_depth, force_time, contact_radius, with
-    tangential loading tangential_loop, and with profiles pressure and shear_stress), of `mdr material` (material,
-    dynamic) or of `mdr sweep` (sweep: max_force, or the restitution for impacts, over the varied keys). Returns
-    their paths. The figures are added to the directory's manifest, so that mdr may still replace the directory;
-    a file of the same name that mdr did not write is never overwritten (ValueError)."""
+def _summary(directory: str) -> dict[str, Any]:
+    try:
+        with open(os.path.join(directory, "summary.json"), encoding="utf-8") as handle:
+            return json.load(handle)
+    except FileNotFoundError:
+        return {}
+
+
+def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
+    """Writes PNG figures for a result directory of mdr, beside its CSV files.
+
+    Of ``mdr run``: force_depth, force_time, contact_radius, with tangential loading tangential_loop, with
+    profiles pressure (and shear_stress); of ``mdr material``: material, dynamic; of ``mdr sweep``: sweep. The
+    figures are added to the directory's manifest, so that mdr may still replace the directory; a file of the
+    same name that mdr did not write is never overwritten.
+
+    Parameters
+    ----------
+    directory : str
+        The result directory.
+    column : str, optional
+        The column of sweep.csv that sweep.png plots (default: ``restitution`` for impacts, else
+        ``max_force``).
+
+    Returns
+    -------
+    list of str
+        The paths of the figures written.
+
+    Raises
+    ------
+    ValueError
+        For a directory without result files, a figure's name taken by a file mdr did not write, or a
+        `column` that sweep.csv does not have.
+
+    Examples
+    --------
+    >>> mdr.plot.plot_directory("out/demo")   # doctest: +SKIP
+    ['out/demo/force_depth.png', 'out/demo/force_time.png', 'out/demo/contact_radius.png', 'out/demo/pressure.png']
+    """
     listed = _listed_files(directory)
 
     def path(name):
@@ -180,23 +498,27 @@ def plot_directory(directory: str) -> list[str]:
     try:
         if os.path.exists(path("history.csv")):
             history = read_csv(path("history.csv"))
-            for name, draw in (("force_depth", force_depth), ("force_time", force_time),
-                               ("contact_radius", contact_radius)):
-                written.append(save(draw(history), figure(name)))
+            units = _summary(directory)
+            written.append(save(force_depth(history, units=units, control=units.get("control")),
+                                figure("force_depth")))
+            for name, draw in (("force_time", force_time), ("contact_radius", contact_radius)):
+                written.append(save(draw(history, units=units), figure(name)))
             if "Fx" in history:
-                written.append(save(tangential_loop(history), figure("tangential_loop")))
+                written.append(save(tangential_loop(history, units=units), figure("tangential_loop")))
             if os.path.exists(path("profiles.csv")):
                 profiles = read_csv(path("profiles.csv"))
-                written.append(save(pressure_profiles(profiles), figure("pressure")))
+                written.append(save(pressure_profiles(profiles, units=units), figure("pressure")))
                 if "tau" in profiles:
-                    written.append(save(shear_stress_profiles(profiles), figure("shear_stress")))
+                    written.append(save(shear_stress_profiles(profiles, units=units), figure("shear_stress")))
         if os.path.exists(path("functions.csv")):
-            written.append(save(material_functions(read_csv(path("functions.csv"))), figure("material")))
+            functions = read_csv(path("functions.csv"))
+            written.append(save(material_functions(functions, units=_summary(directory)), figure("material")))
         if os.path.exists(path("dynamic.csv")):
-            written.append(save(dynamic_moduli(read_csv(path("dynamic.csv"))), figure("dynamic")))
+            dynamic = read_csv(path("dynamic.csv"))
+            written.append(save(dynamic_moduli(dynamic, units=_summary(directory)), figure("dynamic")))
         if os.path.exists(path("sweep.csv")):
             sweep = read_csv(path("sweep.csv"))
-            value = "restitution" if "restitution" in sweep else "max_force"
+            value = column or ("restitution" if "restitution" in sweep else "max_force")
             written.append(save(sweep_map(sweep, value), figure("sweep")))
     finally:
         if listed is not None and written:
@@ -208,7 +530,25 @@ def plot_directory(directory: str) -> list[str]:
 
 
 def save(axes, path: str) -> str:
-    """Writes the axes' figure to `path` (PNG) and closes it; returns the path."""
+    """Writes the figure of `axes` to a PNG file and closes it.
+
+    Parameters
+    ----------
+    axes : matplotlib.axes.Axes
+        Any axes of the figure.
+    path : str
+        The file to write.
+
+    Returns
+    -------
+    str
+        `path`.
+
+    Examples
+    --------
+    >>> mdr.plot.save(mdr.plot.force_depth(mdr.run("examples/default.toml").history), "fd.png")  # doctest: +SKIP
+    'fd.png'
+    """
     for each in axes.figure.axes:
         for axis in (each.xaxis, each.yaxis):
             if isinstance(axis.get_major_formatter(), matplotlib.ticker.ScalarFormatter):  # not on log axes

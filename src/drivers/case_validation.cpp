@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
@@ -108,7 +109,33 @@ void validate_impact(const ContactCase& contact_case) {
     if (!contact_case.impact) throw InvalidInput("load.velocity", "(missing)", "is required for an impact");
     require_positive("load.velocity", contact_case.impact->velocity);
     require_positive("indenter.mass", contact_case.impact->mass);
-    if (contact_case.tangential) throw InvalidInput("tangential", "[...]", "not with load.control = \"impact\"");
+    if (contact_case.tangential) {
+        throw InvalidInput("tangential", "[...]",
+                           "a tangential load history is not for an impact; an oblique impact takes only "
+                           "tangential.friction with load.tangential_velocity or load.spin");
+    }
+}
+
+void validate_oblique(const ContactCase& contact_case) {
+    const auto& oblique = contact_case.oblique;
+    if (!oblique) return;
+    if (contact_case.control != Control::impact) {
+        throw InvalidInput("load.tangential_velocity", format_value(oblique->tangential_velocity),
+                           "only with control = \"impact\" (an oblique impact)");
+    }
+    require_non_negative("tangential.friction", oblique->friction);
+    require_finite("load.tangential_velocity", oblique->tangential_velocity);
+    require_finite("load.spin", oblique->spin);
+    require_positive("indenter.moment_of_inertia", oblique->moment_of_inertia);
+    require_positive("indenter.R", oblique->radius);
+    // Section 6 maps the tangential problem exactly for an incompressible body only: with a compressible body (or
+    // two bodies, whose elastic mismatch couples them) the normal and tangential problems are coupled (section 7).
+    if (contact_case.tangential_approximate) {
+        throw InvalidInput("load.tangential_velocity", format_value(oblique->tangential_velocity),
+                           "an oblique impact needs an incompressible half-space and a rigid sphere: with a "
+                           "compressible body or two bodies the normal and tangential problems are coupled (section "
+                           "7) and the tangential mapping is not exact");
+    }
 }
 
 void validate_times(const ContactCase& contact_case) {
@@ -146,6 +173,14 @@ void validate_numerics(const NumericsOptions& numerics) {
 
 }  // namespace
 
+double incidence_velocity(double velocity, double incidence_deg) {
+    if (!(incidence_deg >= 0.0 && incidence_deg < 90.0)) {
+        throw InvalidInput("load.incidence_deg", format_value(incidence_deg),
+                           "must lie in [0, 90) degrees (from the surface normal)");
+    }
+    return velocity * std::tan(incidence_deg * std::numbers::pi / 180.0);
+}
+
 void validate(const TangentialLoad& load) {
     require_non_negative("tangential.friction", load.friction);
     if (load.history.has_value() == load.harmonic.has_value()) {
@@ -172,6 +207,7 @@ void validate(const HarmonicLoad& harmonic, const std::string& prefix) {
 void validate(const ContactCase& contact_case) {
     if (!contact_case.indenter) throw InvalidInput("indenter", "(missing)", "is required");
     validate_impact(contact_case);
+    validate_oblique(contact_case);
     validate_history(contact_case);
     validate_harmonic(contact_case);
     validate_spring(contact_case);

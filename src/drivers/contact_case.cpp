@@ -135,6 +135,13 @@ ResolvedNumerics resolve_impact_numerics(const ContactCase& contact_case) {
         const double braking_time = impact.mass / (8.0 * material.viscosity() * soft.radius);
         step = std::min(step, braking_time / static_cast<double>(braking_steps));
     }
+    if (const auto& oblique = contact_case.oblique) {
+        // The contact point's motion has the effective mass m_t, 1/m_t = 1/m + R^2/I (2/7 m for a solid sphere, for
+        // which the normal steps resolve it): a lighter m_t oscillates faster, as sqrt(m_t).
+        const double tangential_mass = 1.0 / (1.0 / impact.mass + oblique->radius * oblique->radius /
+                                                                       oblique->moment_of_inertia);
+        step *= std::min(1.0, std::sqrt(tangential_mass / (2.0 / 7.0 * impact.mass)));
+    }
     resolved.time_step = numerics.time_step.value_or(std::min(step, shortest_time_above(material, step) / 5.0));
     resolved.half_width = numerics.half_width.value_or(
         indenter.is_flat_punch() ? indenter.max_radius() : std::min(1.2 * soft.radius, indenter.max_radius()));

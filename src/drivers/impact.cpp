@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/work_estimate.hpp"
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
+#include "oblique_stepping.hpp"
 #include "stepping.hpp"
 
 namespace mdr::drivers {
@@ -23,6 +25,8 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
     foundation::Foundation foundation(contact_case.material, indenter,
                                       numerics.half_width / static_cast<double>(numerics.elements), numerics.elements);
     CoefficientCache cache(contact_case.material);
+    std::optional<ObliqueStepper> oblique;
+    if (contact_case.oblique) oblique.emplace(*contact_case.oblique, mass, contact_case.material, foundation);
     std::vector<double> snapshots = contact_case.snapshots;
     std::sort(snapshots.begin(), snapshots.end());
     auto snapshot = snapshots.begin();
@@ -35,18 +39,23 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
         result.force.push_back(force);
         result.radius.push_back(foundation.contact_radius());
         result.velocity.push_back(velocity);
+        if (oblique) oblique->record(result);
     };
     record();
-    for (; snapshot != snapshots.end() && *snapshot <= time; ++snapshot) {
-        result.snapshots.push_back(take_snapshot(foundation, indenter, time));
-    }
+    const auto add_snapshots = [&] {
+        for (; snapshot != snapshots.end() && *snapshot <= time; ++snapshot) {
+            result.snapshots.push_back(take_snapshot(foundation, indenter, time));
+            if (oblique) oblique->add_shear_stress(result.snapshots.back());
+        }
+    };
+    add_snapshots();
     const double report_interval = numerics.time_limit / 100.0;
     double next_report = report_interval;
     for (std::size_t n = 1;; ++n) {
         if (time >= numerics.time_limit) {
             throw InvalidInput("load.end", format_value(numerics.time_limit),
-                               "the contact has not ended by then (v = " + format_value(velocity) +
-                                   " m/s): the indenter does not rebound in time; give a later load.end");
+                               "the contact has not ended by then (velocity v = " + format_value(velocity) +
+                                   "): the indenter does not rebound in time; give a later load.end");
         }
         // Land exactly on snapshot times.
         const double step = snapshot != snapshots.end() ? std::min(numerics.time_step, *snapshot - time)
@@ -87,6 +96,11 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
             outcome.rebound_velocity = -new_velocity;
             outcome.restitution = -new_velocity / approach;
             outcome.dissipated_energy = 0.5 * mass * (approach * approach - new_velocity * new_velocity);
+            if (oblique) {
+                oblique->finish(cache.get(step), step, fraction);
+                outcome.oblique = oblique->outcome(outcome, approach);
+                outcome.dissipated_energy += oblique->kinetic_energy_lost();
+            }
             // A passive body returns at most the energy it was given (e <= 1), and the indenter leaves (e >= 0);
             // beyond round-off anything else is a failure of the numerics, never a result.
             if (!(outcome.restitution >= 0.0 && outcome.restitution <= 1.0 + 1e-6)) {
@@ -103,14 +117,13 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
             record();
             break;
         }
+        if (oblique) oblique->step(cache.get(step), step);
         time += step;
         depth = new_depth;
         force = new_force;
         velocity = new_velocity;
         if (n % numerics.output_every == 0) record();
-        for (; snapshot != snapshots.end() && *snapshot <= time; ++snapshot) {
-            result.snapshots.push_back(take_snapshot(foundation, indenter, time));
-        }
+        add_snapshots();
         if (progress && time >= next_report) {
             progress(std::min(time / numerics.time_limit, 1.0));
             next_report += report_interval;

@@ -35,6 +35,8 @@ void require_finite_result(const IndentationResult& result) {
     check_column("Fx", result.tangential_force, result.time);
     check_column("c", result.stick_radius, result.time);
     check_column("z", result.base, result.time);
+    check_column("v_t", result.tangential_velocity, result.time);
+    check_column("omega", result.spin, result.time);
     for (const auto& snapshot : result.snapshots) {
         for (const auto* column :
              {&snapshot.radius, &snapshot.pressure, &snapshot.displacement, &snapshot.shear_stress}) {
@@ -50,6 +52,16 @@ void require_finite_result(const IndentationResult& result) {
         check_value("contact_time", result.impact->contact_time);
         check_value("rebound_velocity", result.impact->rebound_velocity);
         check_value("dissipated_energy", result.impact->dissipated_energy);
+        if (const auto& oblique = result.impact->oblique) {
+            check_value("tangential_restitution", oblique->tangential_restitution);
+            check_value("rebound_tangential_velocity", oblique->rebound_tangential_velocity);
+            check_value("rebound_spin", oblique->rebound_spin);
+            check_value("rebound_angle", oblique->rebound_angle);
+            check_value("impulse_ratio", oblique->impulse_ratio);
+            check_value("max_tangential_force", oblique->max_tangential_force);
+            check_value("dissipated_energy_material", oblique->material_dissipation);
+            check_value("dissipated_energy_friction", oblique->friction_dissipation);
+        }
     }
     if (result.tangential) {
         check_value("max_tangential_force", result.tangential->max_force);

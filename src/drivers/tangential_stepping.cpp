@@ -38,8 +38,10 @@ double TangentialStepper::solve_increment(double target, std::span<const double>
 }
 
 void TangentialStepper::step(const foundation::StepCoefficients& coefficients, double time_start, double time_end) {
-    const auto q = foundation_.line_loads();
-    const auto contact = foundation_.contact_flags();
+    // The elements the foundation has touched: the others are out of contact and untouched in the layer too.
+    const auto loads = foundation_.line_loads();
+    const auto q = std::span<const double>(loads).first(foundation_.touched());
+    const auto contact = foundation_.contact_flags().first(foundation_.touched());
     const double target = load_.value(time_end);
     const bool force_control = load_.control == TangentialControl::force;
     const bool loaded = force_control ? target != 0.0 : target != displacement_;
@@ -49,7 +51,7 @@ void TangentialStepper::step(const foundation::StepCoefficients& coefficients, d
                                          : "the tangential displacement changes while there is no normal contact; "
                                            "apply it while the normal load holds the contact");
     }
-    layer_.begin_step(coefficients);
+    layer_.begin_step(coefficients, foundation_.entries());
     double increment = target - displacement_;
     if (force_control) {
         const double capacity = layer_.sliding_force(q, contact);
@@ -88,11 +90,12 @@ void TangentialStepper::record(IndentationResult& result) const {
     result.stick_radius.push_back(stick_radius_);
 }
 
-void TangentialStepper::add_shear_stress(Snapshot& snapshot) const {
-    const auto q = layer_.line_loads();
+void add_shear_stress(const foundation::TangentialLayer& layer, const foundation::Foundation& foundation,
+                      Snapshot& snapshot) {
+    const auto q = layer.line_loads();
     std::size_t inside = 0;
-    while (inside < q.size() && foundation_.position(inside) < snapshot.contact_radius) ++inside;
-    snapshot.shear_stress = contact::stress_from_line_load(foundation_.spacing(), std::span(q.data(), inside),
+    while (inside < q.size() && foundation.position(inside) < snapshot.contact_radius) ++inside;
+    snapshot.shear_stress = contact::stress_from_line_load(foundation.spacing(), std::span(q.data(), inside),
                                                            snapshot.contact_radius, 0.0, snapshot.radius);
 }
 

@@ -11,6 +11,11 @@
 
 namespace mdr::drivers {
 
+/// Fills the snapshot's shear stress tau_xz(r) (eq. 47) from the layer's tangential line load, 0 at the contact
+/// edge.
+void add_shear_stress(const foundation::TangentialLayer& layer, const foundation::Foundation& foundation,
+                      Snapshot& snapshot);
+
 /// Drives a TangentialLayer along the case's TangentialLoad beside a normal Foundation.
 class TangentialStepper {
 public:
@@ -25,7 +30,7 @@ public:
     /// Appends u, F_x and c of the current state to the result's rows.
     void record(IndentationResult& result) const;
     /// Fills the snapshot's shear stress tau_xz(r) (eq. 47) from the tangential line load, 0 at the contact edge.
-    void add_shear_stress(Snapshot& snapshot) const;
+    void add_shear_stress(Snapshot& snapshot) const { drivers::add_shear_stress(layer_, foundation_, snapshot); }
     /// Maximum force, and over the last full harmonic cycle the minimum stick radius and the loop area.
     const TangentialOutcome& outcome() const { return outcome_; }
 

@@ -1,26 +1,4 @@
 // estimate_contact: force baseline and noise, contact point and depth noise of a measured curve.
-//
-// The method (docs/case-format.md, "Measured curves"):
-//  1. The loading part is the curve up to its largest force (the first row of it, `peak`).
-//  2. Baseline: a straight line in time, F = b0 + b1 t, fitted by least squares to the rows [0, end) (once more
-//     without the rows farther than 5 noise deviations from the first line: spikes). The force noise is
-//     1.4826 x the median absolute deviation (MAD) of its residuals (the RMS where the MAD is 0: quantised data).
-//     The first `end` is where the force last crosses 10 % of its rise above the median of the first tenth of
-//     the loading part; then `end` moves back to the row after the last crossing of baseline + 3 noise deviations
-//     (walking back from the peak) until that crossing lies at or after the window's end.
-//  3. Onset: F - baseline = A (d - d_c)^n for d > d_c, 0 before (a power-law onset: n = 1.5 for a sphere, 2 for a
-//     cone), fitted by least squares to the loading rows up to where the force first exceeds baseline + 20 % of
-//     its rise (at least 10 noise deviations), in depth d from the crossing's depth minus twice the depth span
-//     of the fitted rise. A is linear (solved in closed form), n in [1, 3] and d_c are found by Brent's method
-//     on the profiled residual, d_c after a scan of 32 points (the residual has local minima in d_c).
-//  4. The baseline is fitted again to the rows before the contact (those before the first row from which the depth
-//     stays beyond d_c), and step 3 is repeated once; not when that would leave fewer than half of the window's
-//     rows (the depth of a pause before the approach is then within its noise of d_c: the window stays).
-//  5. Depth noise: 1.4826 x MAD / sqrt(6) of the second differences of the depth over the baseline rows (a
-//     difference of three rows removes a smooth trend; var(x[i+1] - 2 x[i] + x[i-1]) = 6 sigma^2 for white
-//     noise).
-// A curve whose force rises less than 10 noise deviations, or that has fewer than 8 rows before the rise, keeps
-// the noise estimates (from second differences where there is no baseline) and says why in estimate_note.
 
 #include <algorithm>
 #include <cmath>
@@ -65,15 +43,6 @@ double robust_deviation(std::vector<double> values) {
     }
     const double mad = median(values);
     return mad > 0.0 ? mad_to_deviation * mad : std::sqrt(sum_squares / static_cast<double>(values.size()));
-}
-
-/// Noise of rows [begin, end) of `values` from their second differences (step 5); 0 for fewer than 3 rows.
-double difference_noise(const std::vector<double>& values, std::size_t begin, std::size_t end) {
-    if (end < begin + 3) return 0.0;
-    std::vector<double> second;
-    second.reserve(end - begin - 2);
-    for (std::size_t i = begin + 1; i + 1 < end; ++i) second.push_back(values[i + 1] - 2.0 * values[i] + values[i - 1]);
-    return robust_deviation(std::move(second)) / std::sqrt(6.0);
 }
 
 /// The baseline F = offset + slope (t - t0) and the force noise about it.
@@ -128,9 +97,10 @@ struct Onset {
     double contact = 0.0, exponent = 0.0, amplitude = 0.0;
 };
 
-/// Step 3: the rows [0, limit] with depth above the search interval's lower end enter the fit.
+/// Step 3: the rows [0, limit] with depth above the search interval's lower end enter the fit. With `start` (the
+/// previous pass's onset) the grid scan is left out and the refinement starts there.
 std::optional<Onset> fit_onset(const Curve& curve, const Baseline& baseline, std::size_t peak, std::size_t crossing,
-                               std::size_t limit) {
+                               std::size_t limit, const std::optional<Onset>& start) {
     const double crossing_depth = curve.depth[crossing];
     const double span = curve.depth[limit] - crossing_depth;
     if (!(span > 0.0)) return std::nullopt;
@@ -175,7 +145,11 @@ std::optional<Onset> fit_onset(const Curve& curve, const Baseline& baseline, std
     const double step = c_upper / (contact_scan_points - 1);
     const double n_step = (exponent_max - exponent_min) / (exponent_scan_points - 1);
     double best_c = 0.0, best_n = exponent_min, best_value = std::numeric_limits<double>::infinity();
-    for (int k = 0; k < contact_scan_points; ++k) {
+    if (start) {
+        best_c = std::clamp((start->contact - lower) / scale, 0.0, c_upper);
+        best_n = start->exponent;
+    }
+    for (int k = 0; k < contact_scan_points && !start; ++k) {
         at_contact(k * step);
         for (int j = 0; j < exponent_scan_points; ++j) {
             const double n = exponent_min + j * n_step;
@@ -221,6 +195,40 @@ std::size_t last_crossing(const Curve& curve, const Baseline& baseline, std::siz
 
 }  // namespace
 
+double difference_noise(const std::vector<double>& values, std::size_t begin, std::size_t end) {
+    if (end < begin + 3) return 0.0;
+    std::vector<double> second;
+    second.reserve(end - begin - 2);
+    for (std::size_t i = begin + 1; i + 1 < end; ++i) second.push_back(values[i + 1] - 2.0 * values[i] + values[i - 1]);
+    return robust_deviation(std::move(second)) / std::sqrt(6.0);
+}
+
+// The method (also in docs/case-format.md, "Measured curves"). Depth d, force F, time t; "deviations" are the
+// force noise sigma.
+//  1. The loading part is the curve up to its largest force (the first row of it, `peak`).
+//  2. Baseline: a straight line in time, F = b0 + b1 t, fitted by least squares to the rows [0, end), and once
+//     more without the rows farther than 5 deviations from the first line (spikes). sigma is 1.4826 x the median
+//     absolute deviation (MAD) of its residuals (their RMS where the MAD is 0: coarsely quantised data). The first
+//     window ends at the last crossing (walking back from the peak) of the median of the first tenth of the
+//     loading part + 3 of its deviations; then it ends at the last crossing of the fitted line + 3 deviations,
+//     again, until that crossing stays (at most 20 moves).
+//  3. Onset: F - baseline = A (d - d_c)^n for d > d_c, 0 before (a power-law onset: n = 1.5 for a sphere, 2 for a
+//     cone, 1 for a flat punch), fitted by least squares to the loading rows up to where the force first exceeds
+//     baseline + 20 % of its rise (at least 10 deviations), with d_c searched from the crossing's depth minus
+//     twice the depth span of the fitted rise to a quarter of that span past the crossing. A is linear (closed
+//     form); n in [1, 3] and d_c minimise the profiled residual: a 32 x 9 grid, then Brent's method in d_c with n
+//     optimised (Brent) for each d_c, each within a grid step of the best grid point (a box that moves where the
+//     minimum is on its edge).
+//  4. The baseline is fitted again to the rows before the contact (before the first row from which the depth
+//     stays beyond d_c), and step 3 is repeated once, starting from its first result; not when that would leave
+//     fewer than half of the window's rows (the depth of a pause before the approach is then within its noise of
+//     d_c: the window stays).
+//  5. force_baseline is the line at the time the depth passes d_c. The depth noise is 1.4826 x MAD / sqrt(6) of
+//     the second differences of the depth over the baseline rows (they remove a smooth trend;
+//     var(x[i+1] - 2 x[i] + x[i-1]) = 6 sigma^2 for white noise): row-to-row noise, not slow drift.
+// A curve whose force rises less than 10 deviations above the baseline, or that has fewer than 8 rows before the
+// rise, gets no contact point (contact_depth, onset_* stay 0) and says why in estimate_note; its noise estimates
+// remain (from second differences over the whole curve where there is no baseline).
 void estimate_contact(Curve& curve) {
     const std::size_t rows = curve.time.size();
     curve.force_noise = curve.depth_noise = curve.contact_depth = curve.force_baseline = 0.0;
@@ -240,8 +248,7 @@ void estimate_contact(Curve& curve) {
     const double round_off = 64.0 * std::numeric_limits<double>::epsilon() *
                              std::max(std::abs(curve.force[peak]), std::abs(*std::min_element(
                                                                        curve.force.begin(), curve.force.end())));
-    // Step 2: the first window ends at the last crossing of the level of the first tenth of the loading part + 3
-    // deviations; then it moves to the last crossing of the fitted line + 3 deviations until it stays.
+    // Step 2.
     std::vector<double> start(curve.force.begin(),
                               curve.force.begin() + static_cast<std::ptrdiff_t>(std::max(peak / 10, std::size_t{1})));
     Baseline baseline{0.0, median(start), 0.0, robust_deviation(start)};
@@ -273,7 +280,7 @@ void estimate_contact(Curve& curve) {
         const double fit_level = std::max(onset_fraction * rise, std::min(onset_deviations * baseline.noise, rise));
         std::size_t limit = crossing + 1;
         while (limit < peak && curve.force[limit] - baseline.at(curve.time[limit]) <= fit_level) ++limit;
-        onset = fit_onset(curve, baseline, peak, crossing, limit);
+        onset = fit_onset(curve, baseline, peak, crossing, limit, onset);
         if (!onset) {
             curve.estimate_note = "the depth does not increase where the force rises: no contact point";
             return;

@@ -105,18 +105,16 @@ CsvColumns read_csv_columns(const fs::path& file, const std::vector<CsvColumn>& 
     const auto column_index = [&](const std::string& name, const std::string& key) {
         const auto first = std::find(header.begin(), header.end(), name);
         if (first == header.end()) {
-            throw InvalidInput(key, in_quotes(name), "no such column in " + file_name + "; its columns: " + joined(header));
+            throw InvalidInput(key, in_quotes(name),
+                               "no such column in " + file_name + "; its columns: " + joined(header));
         }
         if (std::find(first + 1, header.end(), name) != header.end()) {
             throw InvalidInput(key, in_quotes(name), "the header of " + file_name + " has two columns of this name");
         }
         return static_cast<std::size_t>(first - header.begin());
     };
-    // role[c]: the requested column read from field c, or -1.
-    std::vector<int> role(header.size(), -1);
-    for (std::size_t k = 0; k < columns.size(); ++k) {
-        role[column_index(columns[k].name, columns[k].key)] = static_cast<int>(k);
-    }
+    std::vector<std::size_t> field_of;  // the field of each requested column (two may name the same)
+    for (const CsvColumn& column : columns) field_of.push_back(column_index(column.name, column.key));
     const bool select = !segment_column.empty();
     const std::size_t segment_field = select ? column_index(segment_column, "segment_column") : 0;
 
@@ -145,16 +143,15 @@ CsvColumns read_csv_columns(const fs::path& file, const std::vector<CsvColumn>& 
                 ++selected[static_cast<std::size_t>(kept - segments.begin())];
             }
         }
-        for (std::size_t c = 0; c < fields.size(); ++c) {
-            if (role[c] < 0) continue;
+        for (std::size_t k = 0; k < columns.size(); ++k) {
+            const std::string_view field = fields[field_of[k]];
             double value = 0.0;
-            const CsvColumn& column = columns[static_cast<std::size_t>(role[c])];
-            if (!parse_finite(fields[c], value)) {
-                throw InvalidInput(column.key, fields[c].empty() ? "(empty)" : std::string(fields[c]),
+            if (!parse_finite(field, value)) {
+                throw InvalidInput(columns[k].key, field.empty() ? "(empty)" : std::string(field),
                                    "in " + file_name + ", line " + std::to_string(line_number) + ", column " +
-                                       in_quotes(column.name) + ": must be a finite number");
+                                       in_quotes(columns[k].name) + ": must be a finite number");
             }
-            result.values[static_cast<std::size_t>(role[c])].push_back(value);
+            result.values[k].push_back(value);
         }
         result.lines.push_back(line_number);
     }

@@ -7,29 +7,18 @@
 
 namespace mdr::fit {
 
-double noise_from_differences(const std::vector<double>& values) {
-    if (values.size() < 5) return 0.0;
-    std::vector<double> deviations(values.size() - 2);
-    for (std::size_t i = 0; i + 2 < values.size(); ++i) {
-        deviations[i] = std::abs(values[i + 2] - 2.0 * values[i + 1] + values[i]);
-    }
-    auto middle = deviations.begin() + static_cast<std::ptrdiff_t>(deviations.size() / 2);
-    std::nth_element(deviations.begin(), middle, deviations.end());
-    return 1.4826 * *middle / std::sqrt(6.0);
-}
-
 CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline) {
     CurveModel prepared;
     prepared.curve = &curve;
     prepared.fitted = fitted;
     const auto& measured = fitted == Fitted::force ? curve.force : curve.depth;
     const double estimate = fitted == Fitted::force ? curve.force_noise : curve.depth_noise;
-    prepared.noise = estimate > 0.0 ? estimate : noise_from_differences(measured);
+    prepared.noise = estimate > 0.0 ? estimate : difference_noise(measured, 0, measured.size());
     // A floor for noise-free data: the weights stay finite, and relative to the largest value.
     double largest = 0.0;
     for (double value : measured) largest = std::max(largest, std::abs(value));
     prepared.noise = std::max(prepared.noise, 1e-12 * largest);
-    const double force_noise = curve.force_noise > 0.0 ? curve.force_noise : noise_from_differences(curve.force);
+    const double force_noise = curve.force_noise > 0.0 ? curve.force_noise : difference_noise(curve.force, 0, curve.force.size());
     for (std::size_t i = 0; i < curve.time.size(); ++i) {
         if (fitted == Fitted::force || curve.force[i] - baseline > 3.0 * force_noise) prepared.used.push_back(i);
     }
@@ -60,6 +49,7 @@ std::vector<double> run_curve(drivers::ContactCase model_case, const CurveModel&
     model_case.harmonic.reset();
     model_case.spring_constant.reset();
     model_case.impact.reset();
+    model_case.oblique.reset();
     model_case.numerics.elements = elements;
     model_case.numerics.output_every = 1;
     // Under displacement control each element's update is exact for a depth linear in time (eq. 16, 18): the

@@ -31,9 +31,5 @@ CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline);
 std::vector<double> run_curve(drivers::ContactCase model_case, const CurveModel& prepared, double contact_depth,
                               double baseline, std::size_t elements);
 
-/// The noise of a measured quantity estimated from the data alone: 1.4826 MAD of its second differences over
-/// sqrt(6) (smooth signals sampled densely cancel in second differences; white noise of deviation s gives
-/// deviation s sqrt(6)).
-double noise_from_differences(const std::vector<double>& values);
 
 }  // namespace mdr::fit

@@ -274,6 +274,7 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
         split_end_ = static_cast<std::size_t>(last + 1);
     }
     split_.clear();
+    entries_.clear();
     split_state_.clear();
     latest_exit_ = 0.0;
     inner_exit_ = {-1.0, -1.0};
@@ -290,6 +291,7 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
         split_state_[offset] = split_w;
         split_state_[offset + 1] = stress;
         split_.push_back(i);
+        if (outcome.contact) entries_.push_back({i, outcome.fraction});
         in_contact_[i] = outcome.contact ? 1 : 0;
     }
     const auto& terms = material_.terms();
@@ -310,6 +312,7 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
     displacement_.swap(next_displacement_);
     stress_.swap(next_stress_);
     active_ = std::max(active_, end);
+    high_water_ = std::max(high_water_, active_);
     last_depth_ = depth_end;
     // Four partial sums: the reduction vectorises (a single running sum is a serial chain of additions).
     std::array<double, 4> partial{};
@@ -371,6 +374,67 @@ double Foundation::contact_radius() const {
     const double inside = stress_[j] / contact_stiffness_;
     const double fraction = inside > 0.0 ? inside / (inside - outside) : 0.0;
     return position(j) + std::clamp(fraction, 0.0, 1.0) * spacing_;
+}
+
+void Foundation::save_state(std::span<double> out) const {
+    const std::size_t n = size();
+    const std::size_t branches = material_.terms().size();
+    out[0] = last_depth_;
+    out[1] = total_force_;
+    out[2] = static_cast<double>(active_);
+    double* w = out.data() + 3;
+    double* sigma = w + n;
+    double* flag = sigma + n;
+    double* h = flag + n;
+    for (std::size_t i = 0; i < active_; ++i) {
+        w[i] = displacement_[i];
+        sigma[i] = stress_[i];
+        flag[i] = in_contact_[i];
+    }
+    for (std::size_t k = 0; k < branches; ++k) {
+        for (std::size_t i = 0; i < active_; ++i) h[k * n + i] = memory_[k * n + i];
+    }
+}
+
+void Foundation::load_state(std::span<const double> in) {
+    const std::size_t n = size();
+    const std::size_t branches = material_.terms().size();
+    last_depth_ = in[0];
+    total_force_ = in[1];
+    const std::size_t active = static_cast<std::size_t>(in[2]);
+    // Beyond the loaded state's touched elements every buffer must hold zeros (advance() relies on it): clear what
+    // an earlier state left there.
+    for (std::size_t i = active; i < high_water_; ++i) {
+        displacement_[i] = stress_[i] = next_displacement_[i] = next_stress_[i] = increment_[i] = relaxed_[i] = 0.0;
+        event_[i] = 0.0;
+        in_contact_[i] = 0;
+        if (!free_relaxed_.empty()) free_relaxed_[i] = 0.0;
+        for (std::size_t k = 0; k < branches; ++k) memory_[k * n + i] = 0.0;
+    }
+    const double* w = in.data() + 3;
+    const double* sigma = w + n;
+    const double* flag = sigma + n;
+    const double* h = flag + n;
+    for (std::size_t i = 0; i < active; ++i) {
+        displacement_[i] = w[i];
+        stress_[i] = sigma[i];
+        in_contact_[i] = flag[i] != 0.0 ? 1 : 0;
+    }
+    for (std::size_t k = 0; k < branches; ++k) {
+        for (std::size_t i = 0; i < active; ++i) memory_[k * n + i] = h[k * n + i];
+    }
+    active_ = active;
+    high_water_ = std::max(high_water_, active_);
+}
+
+void Foundation::reserve_events() {
+    split_.reserve(size());
+    entries_.reserve(size());
+    split_state_.reserve(size() * (material_.terms().size() + 2));
+}
+
+void Foundation::line_loads(std::span<double> out) const {
+    for (std::size_t i = 0; i < size(); ++i) out[i] = normal_stiffness_factor * stress_[i];
 }
 
 std::vector<double> Foundation::line_loads() const {

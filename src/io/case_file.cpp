@@ -8,10 +8,12 @@
 #include <sstream>
 
 #include "mdr/drivers/case_validation.hpp"
+#include "mdr/drivers/material_window.hpp"
 #include "mdr/error.hpp"
 #include "mdr/rheology/compressible.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "case_reader.hpp"
+#include "mdr/io/units.hpp"
 #include "material_reader.hpp"
 #include "toml_reader.hpp"
 
@@ -20,7 +22,7 @@ namespace {
 
 std::shared_ptr<const profile::Profile> read_indenter(TableReader& table) {
     const std::string shape = table.string("shape");
-    std::vector<std::string> known{"shape", "mass", "material"};
+    std::vector<std::string> known{"shape", "mass", "moment_of_inertia", "material"};
     const auto with = [&](std::initializer_list<const char*> keys) {
         for (const char* key : keys) known.emplace_back(key);
         table.reject_unknown(known);
@@ -62,25 +64,47 @@ std::shared_ptr<const profile::Profile> read_indenter(TableReader& table) {
     throw InvalidInput("indenter.shape", "\"" + shape + "\"", "unknown shape; one of sphere, cone, flat, power, profile");
 }
 
-// One body: its shear rheology and, when a bulk part is given, the effective one of eq. (56).
-struct Body {
-    rheology::Rheology shear;
-    std::optional<rheology::Rheology> effective;
-    const rheology::Rheology& contact() const { return effective ? *effective : shear; }
+// One body as read: its shear table and, for a compressible body, K or the bulk table (built once the time window
+// of the case is known, which a model converted to a series needs).
+struct BodySpec {
+    MaterialSpec shear;
+    std::optional<double> bulk_modulus;
+    std::optional<MaterialSpec> bulk;
+    bool needs_window() const { return shear.model->needs_window || (bulk && bulk->model->needs_window); }
 };
 
-Body read_body(TableReader& table) {
-    Body body{read_rheology(table, "G", {"K", "bulk"}), std::nullopt};
+BodySpec read_body(TableReader& table) {
+    BodySpec body{read_material(table, "G", {"K", "bulk"}), std::nullopt, std::nullopt};
     if (table.has("K") && table.has("bulk")) {
         throw InvalidInput(table.key_path("K"), table.text("K"), "give either K or [" + table.key_path("bulk") + "], not both");
     }
     if (table.has("K")) {
-        const double bulk_modulus = table.number("K");
-        require_positive(table.key_path("K"), bulk_modulus);
-        body.effective = rheology::compressible_effective(body.shear, rheology::Rheology::elastic(bulk_modulus));
+        body.bulk_modulus = table.number("K");
+        require_positive(table.key_path("K"), *body.bulk_modulus);
     } else if (auto bulk = table.table("bulk")) {
         if (!bulk->has("model")) throw InvalidInput(bulk->key_path("model"), "(missing)", "a bulk table needs a model");
-        body.effective = rheology::compressible_effective(body.shear, read_rheology(*bulk, "K", {}));
+        body.bulk = read_material(*bulk, "K", {});
+    }
+    return body;
+}
+
+// One body built: its shear rheology and, when a bulk part is given, the effective one of eq. (56).
+struct Body {
+    rheology::Rheology shear;
+    std::optional<rheology::Rheology> effective;
+    rheology::MaterialOrigin origin;
+    const rheology::Rheology& contact() const { return effective ? *effective : shear; }
+};
+
+Body build_body(const BodySpec& spec, const std::optional<rheology::TimeWindow>& window, const std::string& directory) {
+    rheology::ModelMaterial shear = build_material(spec.shear, window, directory);
+    Body body{std::move(shear.series), std::nullopt, std::move(shear.origin)};
+    std::optional<rheology::ModelMaterial> bulk;
+    if (spec.bulk_modulus) bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus), {}};
+    if (spec.bulk) bulk = build_material(*spec.bulk, window, directory);
+    if (bulk) {
+        body.effective = rheology::compressible_effective(body.shear, bulk->series);
+        body.origin = rheology::combined_origin(body.origin, bulk->origin, " with bulk ");
     }
     return body;
 }
@@ -125,6 +149,45 @@ drivers::TangentialLoad read_tangential(TableReader& table) {
     return load;
 }
 
+bool is_oblique(const TableReader& load) {
+    return load.has("tangential_velocity") || load.has("incidence_deg") || load.has("spin");
+}
+
+// The tangential part of an impact: `[load] tangential_velocity` (or `incidence_deg`) and `spin`, `[indenter]
+// moment_of_inertia` (a solid sphere's 2/5 m R^2 by default) and `[tangential] friction`.
+drivers::ObliqueImpactLoad read_oblique(TableReader& load, TableReader& indenter,
+                                        std::optional<TableReader>& tangential, const drivers::ImpactLoad& impact) {
+    if (!tangential || !tangential->has("friction")) {
+        throw InvalidInput("tangential.friction", "(missing)", "is required for an oblique impact");
+    }
+    for (const char* key : {"control", "history", "amplitude", "frequency", "start", "end"}) {
+        if (tangential->has(key)) {
+            throw InvalidInput("tangential." + std::string(key), tangential->text(key),
+                               "a tangential load history is not for an impact; an oblique impact takes only "
+                               "tangential.friction, with load.tangential_velocity or load.spin");
+        }
+    }
+    tangential->reject_unknown({"friction"});
+    if (indenter.string("shape") != "sphere") {
+        throw InvalidInput("indenter.shape", "\"" + indenter.string("shape") + "\"",
+                           "an oblique impact needs shape = \"sphere\" (its radius is the lever of the friction)");
+    }
+    if (load.has("tangential_velocity") && load.has("incidence_deg")) {
+        throw InvalidInput("load.incidence_deg", load.text("incidence_deg"), "give either it or tangential_velocity");
+    }
+    drivers::ObliqueImpactLoad oblique;
+    oblique.friction = tangential->number("friction");
+    oblique.radius = indenter.number("R");
+    oblique.tangential_velocity = load.optional_number("tangential_velocity").value_or(0.0);
+    if (auto incidence = load.optional_number("incidence_deg")) {
+        oblique.tangential_velocity = drivers::incidence_velocity(impact.velocity, *incidence);
+    }
+    oblique.spin = load.optional_number("spin").value_or(0.0);
+    oblique.moment_of_inertia =
+        indenter.optional_number("moment_of_inertia").value_or(0.4 * impact.mass * oblique.radius * oblique.radius);
+    return oblique;
+}
+
 }  // namespace
 
 toml::table parse_toml(std::string_view toml_text, const std::string& source) {
@@ -143,27 +206,23 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
 
 drivers::ContactCase read_case(const toml::table& root_table) {
     TableReader root(root_table, "");
-    root.reject_unknown({"title", "material", "indenter", "load", "tangential", "output", "numerics"});
+    root.reject_unknown({"title", "units", "material", "indenter", "load", "tangential", "output", "numerics"});
     const std::string title = root.optional_string("title").value_or("");
+    const std::string units(unit_system(root.optional_string("units").value_or("SI")).name);
 
     auto material_table = root.table("material");
     if (!material_table) throw InvalidInput("material", "(missing)", "is required");
-    const Body half_space = read_body(*material_table);
-    rheology::Rheology material = half_space.contact();
-    std::optional<rheology::Rheology> shear_material;
-    if (half_space.effective) shear_material = half_space.shear;
+    const BodySpec half_space_spec = read_body(*material_table);
     auto indenter_table = root.table("indenter");
     if (!indenter_table) throw InvalidInput("indenter", "(missing)", "is required");
     auto indenter = read_indenter(*indenter_table);
-    if (auto indenter_material = indenter_table->table("material")) {
-        const Body second = read_body(*indenter_material);
-        material = rheology::in_series(material, second.contact());  // eq. (8): creep functions add
-        if (half_space.effective || second.effective) shear_material = rheology::in_series(half_space.shear, second.shear);
-    }
+    std::optional<BodySpec> second_spec;
+    if (auto indenter_material = indenter_table->table("material")) second_spec = read_body(*indenter_material);
 
     auto load = root.table("load");
     if (!load) throw InvalidInput("load", "(missing)", "is required");
-    load->reject_unknown({"control", "history", "velocity", "end", "harmonic", "spring_constant"});
+    load->reject_unknown({"control", "history", "velocity", "end", "harmonic", "spring_constant",
+                          "tangential_velocity", "incidence_deg", "spin"});
     const std::string control_name = load->string("control");
     drivers::Control control;
     if (control_name == "displacement") control = drivers::Control::displacement;
@@ -211,12 +270,22 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     if (auto end = load->optional_number("end")) end_time = *end;
 
     std::optional<drivers::TangentialLoad> tangential;
+    std::optional<drivers::ObliqueImpactLoad> oblique;
     bool approximate = false;
-    if (auto table = root.table("tangential")) {
+    auto tangential_table = root.table("tangential");
+    const bool oblique_keys = is_oblique(*load) || indenter_table->has("moment_of_inertia");
+    if (impact && (tangential_table || oblique_keys)) {
+        oblique = read_oblique(*load, *indenter_table, tangential_table, *impact);
+        // Exact only for an incompressible body and a rigid sphere (section 7); drivers::validate refuses the rest.
+        approximate = half_space_spec.bulk_modulus || half_space_spec.bulk || indenter_table->has("material");
+    } else if (oblique_keys) {
+        throw InvalidInput(is_oblique(*load) ? "load.tangential_velocity" : "indenter.moment_of_inertia", "[...]",
+                           "only with control = \"impact\" (an oblique impact)");
+    } else if (auto table = std::move(tangential_table)) {
         tangential = read_tangential(*table);
         if (!load->has("end")) end_time = std::max(end_time, tangential->end_time());
         // Exact only for elastically similar bodies (section 7): compressible or two bodies make it approximate.
-        approximate = shear_material.has_value() || indenter_table->has("material");
+        approximate = half_space_spec.bulk_modulus || half_space_spec.bulk || indenter_table->has("material");
     }
 
     std::vector<double> snapshots;
@@ -237,11 +306,33 @@ drivers::ContactCase read_case(const toml::table& root_table) {
         numerics.max_memory = table->optional_number("max_memory");
     }
 
+    // The bodies, built over the time window of the case when a model is converted to a series.
+    std::optional<rheology::TimeWindow> window;
+    if (half_space_spec.needs_window() || (second_spec && second_spec->needs_window())) {
+        window = drivers::material_window(history, end_time, numerics, tangential, impact.has_value());
+    }
+    // Files a material names (a table's `file`) are found next to the case file (the parsed table's source).
+    const auto& source_path = root_table.source().path;
+    const std::string directory = source_path ? std::filesystem::path(*source_path).parent_path().string() : "";
+    const Body half_space = build_body(half_space_spec, window, directory);
+    rheology::Rheology material = half_space.contact();
+    std::optional<rheology::Rheology> shear_material;
+    if (half_space.effective) shear_material = half_space.shear;
+    rheology::MaterialOrigin origin = half_space.origin;
+    if (second_spec) {
+        const Body second = build_body(*second_spec, window, directory);
+        material = rheology::in_series(material, second.contact());  // eq. (8): creep functions add
+        if (half_space.effective || second.effective) shear_material = rheology::in_series(half_space.shear, second.shear);
+        origin = rheology::combined_origin(origin, second.origin, " in series with ");
+    }
+
     drivers::ContactCase contact_case{title,    std::move(material),  std::move(indenter), control,
                                       std::move(history), end_time, std::move(snapshots), numerics,
-                                      std::move(shear_material), impact, std::move(tangential), approximate};
+                                      std::move(shear_material), impact, std::move(tangential), approximate,
+                                      oblique, std::move(origin)};
     contact_case.harmonic = harmonic;
     contact_case.spring_constant = spring_constant;
+    contact_case.units = units;
     drivers::validate(contact_case);
     return contact_case;
 }
@@ -261,23 +352,32 @@ std::string check(const drivers::ContactCase& contact_case) {
 
 std::string describe(const drivers::ContactCase& contact_case) {
     const auto& material = contact_case.material;
+    const UnitSystem& units = unit_system(contact_case.units);
     const std::string rheology =
         material.terms().empty() && material.viscosity() == 0.0 ? "an elastic" : "a viscoelastic";
     std::string load;
     if (contact_case.impact) {
-        load = fmt::format("impact of m = {:.4g} kg at v0 = {:.4g} m/s", contact_case.impact->mass,
-                           contact_case.impact->velocity);
+        load = fmt::format("impact of m = {:.4g} {} at v0 = {:.4g} {}", contact_case.impact->mass, units.mass,
+                           contact_case.impact->velocity, units.velocity());
+        if (const auto& oblique = contact_case.oblique) {
+            load += fmt::format(", oblique: v_t0 = {:.4g} {}, omega0 = {:.4g} rad/s, I = {:.4g} {} {}^2, mu = {:.4g}",
+                                oblique->tangential_velocity, units.velocity(), oblique->spin,
+                                oblique->moment_of_inertia, units.mass, units.length, oblique->friction);
+        }
     } else {
-        load = fmt::format("{} control, {} history points over t = {:.4g} .. {:.4g} s",
+        load = fmt::format("{} control, {} history points over t = {:.4g} .. {:.4g} {}",
                            contact_case.control == drivers::Control::force    ? "force"
                            : contact_case.control == drivers::Control::spring ? "spring"
                                                                               : "displacement",
                            contact_case.history.points().size(), contact_case.history.start_time(),
-                           contact_case.end_time);
-        if (contact_case.spring_constant) load += fmt::format(" (spring k = {:.4g} N/m)", *contact_case.spring_constant);
+                           contact_case.end_time, units.time);
+        if (contact_case.spring_constant) {
+            load += fmt::format(" (spring k = {:.4g} {}/{})", *contact_case.spring_constant, units.force, units.length);
+        }
         if (const auto& harmonic = contact_case.harmonic) {
-            load += fmt::format(", harmonic of amplitude {:.4g} at {:.4g} Hz over t = {:.4g} .. {:.4g} s",
-                                harmonic->amplitude, harmonic->frequency, harmonic->start, harmonic->end);
+            load += fmt::format(", harmonic of amplitude {:.4g} at {:.4g} 1/{} over t = {:.4g} .. {:.4g} {}",
+                                harmonic->amplitude, harmonic->frequency, units.time, harmonic->start, harmonic->end,
+                                units.time);
         }
     }
     if (const auto& tangential = contact_case.tangential) {
@@ -287,10 +387,16 @@ std::string describe(const drivers::ContactCase& contact_case) {
                             tangential->harmonic ? fmt::format("harmonic at {:.4g} Hz", tangential->harmonic->frequency)
                                                  : "piecewise-linear history");
     }
-    return fmt::format("{}{} on {} half-space (G(0+) = {:.4g} Pa, G(inf) = {:.4g} Pa, {} branch(es)), {}",
+    const auto& origin = contact_case.material_origin;
+    std::string model = origin.description.empty() ? std::string() : fmt::format(" {}", origin.description);
+    if (origin.certificate) {
+        model = fmt::format("{} {}", model, rheology::describe_certificate(*origin.certificate, material.terms().size()));
+    }
+    return fmt::format("{}{} on {} half-space{} (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
                        contact_case.title.empty() ? "" : "\"" + contact_case.title + "\": ",
-                       contact_case.indenter->describe(), rheology, material.instantaneous_modulus(),
-                       material.equilibrium_modulus(), material.terms().size(), load);
+                       contact_case.indenter->describe(), rheology, model, material.instantaneous_modulus(),
+                       units.pressure, material.equilibrium_modulus(), units.pressure, material.terms().size(), load,
+                       contact_case.units == "SI" ? "" : fmt::format(" [units {}]", units.name));
 }
 
 }  // namespace mdr::io

@@ -3,45 +3,69 @@
 #include "mdr/error.hpp"
 
 namespace mdr::io {
+namespace {
 
-const std::vector<std::string>& model_names() {
-    static const std::vector<std::string> names{"elastic", "viscous", "kelvin_voigt", "maxwell", "standard", "prony"};
-    return names;
+// The key as a table of `modulus` writes it: K for the leading G of a bulk table (G_inf -> K_inf).
+std::string table_key(const std::string& key, bool bulk) {
+    std::string renamed = key;
+    if (bulk && !renamed.empty() && renamed[0] == 'G') renamed[0] = 'K';
+    return renamed;
 }
 
-rheology::Rheology read_rheology(TableReader& table, const std::string& modulus, std::vector<std::string> extra_keys) {
-    const std::string model = table.string("model");
-    const std::string G = modulus;
-    std::vector<std::string> keys;
-    if (model == "elastic") keys = {G};
-    else if (model == "viscous") keys = {"eta"};
-    else if (model == "kelvin_voigt") keys = {G, "eta"};
-    else if (model == "maxwell") keys = {G, "tau"};
-    else if (model == "standard") keys = {G + "_inf", G + "1", "tau1"};
-    else if (model == "prony") keys = {G + "_inf", "terms"};
-    else {
-        std::string names;
-        for (const auto& name : model_names()) names += (names.empty() ? "" : ", ") + name;
-        throw InvalidInput(table.key_path("model"), "\"" + model + "\"", "unknown model; one of " + names);
+std::string bulk_key(const std::string& key) { return table_key(key, true); }
+
+}  // namespace
+
+MaterialSpec read_material(TableReader& table, const std::string& modulus, const std::vector<std::string>& extra_keys) {
+    MaterialSpec spec;
+    spec.prefix = table.key_path("");
+    spec.bulk = modulus == "K";
+    const std::string name = table.string("model");
+    try {
+        spec.model = &rheology::material_model(name);
+    } catch (const InvalidInput& error) {
+        throw error.with_prefix(spec.prefix);
     }
-    std::vector<std::string> known = keys;
-    known.push_back("model");
+    std::vector<std::string> known{"model"};
+    for (const auto& parameter : spec.model->parameters) known.push_back(table_key(parameter.key, spec.bulk));
+    if (spec.model->needs_window) known.emplace_back("tolerance");
     known.insert(known.end(), extra_keys.begin(), extra_keys.end());
     table.reject_unknown(known);
-    const std::string prefix = table.key_path("");
+    for (const auto& parameter : spec.model->parameters) {
+        const std::string key = table_key(parameter.key, spec.bulk);
+        if (!table.has(key)) continue;  // required keys are checked when built, in the order of the row
+        switch (parameter.kind) {
+            case rheology::ParameterKind::number: spec.parameters.numbers[parameter.key] = table.number(key); break;
+            case rheology::ParameterKind::pairs: {
+                const std::string first = table_key(parameter.pair_names.first, spec.bulk);
+                spec.parameters.pairs[parameter.key] = table.pairs(key, first.c_str(), parameter.pair_names.second.c_str());
+                break;
+            }
+            case rheology::ParameterKind::numbers: spec.parameters.arrays[parameter.key] = table.numbers(key); break;
+            case rheology::ParameterKind::text: spec.parameters.texts[parameter.key] = table.string(key); break;
+        }
+    }
+    if (spec.model->needs_window) spec.tolerance = table.optional_number("tolerance");
+    // A missing required key is reported now, with its full name, rather than after the rest of the case.
+    for (const auto& parameter : spec.model->parameters) {
+        if (parameter.required && !spec.parameters.has(parameter.key)) {
+            throw InvalidInput(table.key_path(table_key(parameter.key, spec.bulk)), "(missing)", "is required");
+        }
+    }
+    return spec;
+}
+
+rheology::ModelMaterial build_material(const MaterialSpec& spec, const std::optional<rheology::TimeWindow>& window,
+                                       const std::string& directory) {
     try {
-        const auto value = [&](const std::string& key) { return table.number(key); };
-        if (model == "elastic") return rheology::Rheology::elastic(value(G));
-        if (model == "viscous") return rheology::Rheology::viscous(value("eta"));
-        if (model == "kelvin_voigt") return rheology::Rheology::kelvin_voigt(value(G), value("eta"));
-        if (model == "maxwell") return rheology::Rheology::maxwell(value(G), value("tau"));
-        if (model == "standard") return rheology::Rheology::standard(value(G + "_inf"), value(G + "1"), value("tau1"));
-        std::vector<rheology::RelaxationTerm> terms;
-        for (const auto& [modulus_k, time_k] : table.pairs("terms", G.c_str(), "tau")) terms.push_back({modulus_k, time_k});
-        return rheology::Rheology::prony(value(G + "_inf"), std::move(terms));
+        rheology::ConversionOptions options{window, spec.tolerance.value_or(rheology::default_material_tolerance),
+                                            directory};
+        rheology::ModelMaterial material = rheology::build_material(*spec.model, spec.parameters, options);
+        if (spec.bulk) material.origin.description = rheology::describe_model(*spec.model, spec.parameters, bulk_key);
+        return material;
     } catch (const InvalidInput& error) {
-        if (error.key().rfind(prefix, 0) == 0) throw;
-        throw InvalidInput(prefix + error.key(), error.value(), error.rule());
+        if (error.key().rfind(spec.prefix, 0) == 0) throw;
+        throw InvalidInput(spec.prefix + table_key(error.key(), spec.bulk), error.value(), error.rule());
     }
 }
 

@@ -1,16 +1,30 @@
 #pragma once
-// Reads a `[material]`-like table into the canonical rheology.
+// Reads a `[material]`-like table against the registry of material models (rheology/material_models.hpp).
 
-#include "mdr/rheology/rheology.hpp"
+#include <string>
+#include <vector>
+
+#include "mdr/rheology/material_models.hpp"
 #include "toml_reader.hpp"
 
 namespace mdr::io {
 
-/// The model names a material table accepts.
-const std::vector<std::string>& model_names();
+/// A material table read and checked against its model's keys, not yet built: a model converted to a series
+/// waits for the time window of the case.
+struct MaterialSpec {
+    const rheology::MaterialModel* model = nullptr;
+    rheology::ModelParameters parameters{};  ///< by the registry's (shear) key names
+    std::string prefix{};                    ///< the table's dotted path with a trailing dot (`material.`)
+    bool bulk = false;                       ///< a bulk table: K for the leading G of every key
+    std::optional<double> tolerance{};       ///< `tolerance`, for a model converted to a series
+};
 
-/// Reads `model` and its parameters from `table` (keys of the spec; `modulus` is "G" for shear tables and "K"
-/// for a bulk table). Throws mdr::InvalidInput with the full dotted key.
-rheology::Rheology read_rheology(TableReader& table, const std::string& modulus, std::vector<std::string> extra_keys);
+/// Reads `model` and its keys from `table` (`modulus` "G" for shear tables, "K" for a bulk table; `extra_keys`
+/// are the other keys the table may hold). Throws mdr::InvalidInput with the full dotted key.
+MaterialSpec read_material(TableReader& table, const std::string& modulus, const std::vector<std::string>& extra_keys);
+
+/// Builds the material of a spec over `window` (used by models converted to a series). Errors name the full key.
+rheology::ModelMaterial build_material(const MaterialSpec& spec, const std::optional<rheology::TimeWindow>& window,
+                                       const std::string& directory);
 
 }  // namespace mdr::io

@@ -5,16 +5,12 @@
 #include <cmath>
 
 namespace mdr::io {
-namespace {
-
 std::vector<double> log_grid(double lower, double upper, std::size_t count) {
     std::vector<double> grid(count);
     const double step = std::log(upper / lower) / static_cast<double>(count - 1);
     for (std::size_t i = 0; i < count; ++i) grid[i] = lower * std::exp(step * static_cast<double>(i));
     return grid;
 }
-
-}  // namespace
 
 std::vector<double> default_times(const rheology::Rheology& material, std::size_t count) {
     const double shortest = material.shortest_time();
@@ -32,20 +28,26 @@ std::vector<double> default_omegas(const rheology::Rheology& material, std::size
 
 void write_material_tables(const std::filesystem::path& directory, const rheology::Rheology& material,
                            const std::optional<rheology::Rheology>& shear, const std::vector<double>& times,
-                           const std::vector<double>& omegas) {
+                           const std::vector<double>& omegas, const rheology::ModelFunctions& model) {
     auto functions = fmt::output_file((directory / "functions.csv").string());
-    functions.print("{}\n", shear ? "t,G,J,J_shear" : "t,G,J");
+    functions.print("{}{}\n", shear ? "t,G,J,J_shear" : "t,G,J", model.relaxation ? ",G_model" : "");
     for (double t : times) {
         functions.print("{},{},{}", t, material.relaxation(t), material.creep(t));
         if (shear) functions.print(",{}", shear->creep(t));
+        if (model.relaxation) functions.print(",{}", model.relaxation(t));
         functions.print("\n");
     }
     functions.close();
     auto dynamic = fmt::output_file((directory / "dynamic.csv").string());
-    dynamic.print("omega,storage,loss\n");
+    dynamic.print("omega,storage,loss{}\n", model.complex_modulus ? ",storage_model,loss_model" : "");
     for (double omega : omegas) {
         const auto modulus = material.complex_modulus(omega);
-        dynamic.print("{},{},{}\n", omega, modulus.real(), modulus.imag());
+        dynamic.print("{},{},{}", omega, modulus.real(), modulus.imag());
+        if (model.complex_modulus) {
+            const auto exact = model.complex_modulus(omega);
+            dynamic.print(",{},{}", exact.real(), exact.imag());
+        }
+        dynamic.print("\n");
     }
     dynamic.close();
 }

@@ -22,6 +22,7 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
                          double wall_seconds) {
     nlohmann::ordered_json summary;
     summary["case"] = contact_case.title;
+    summary["units"] = contact_case.units;
     summary["max_force"] = max_of(result.force);
     summary["max_depth"] = max_of(result.depth);
     summary["max_radius"] = max_of(result.radius);
@@ -36,12 +37,27 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
     summary["half_width"] = result.numerics.half_width;
     summary["final_force"] = result.force.empty() ? 0.0 : result.force.back();
     summary["final_depth"] = result.depth.empty() ? 0.0 : result.depth.back();
+    if (const auto& certificate = contact_case.material_origin.certificate) {
+        summary["material_error"] = certificate->error;  // the series standing for the model (power law, table)
+        summary["material_window"] = {certificate->window.shortest, certificate->window.longest};
+    }
     if (contact_case.tangential) summary["tangential_approximation"] = contact_case.tangential_approximate;
     if (result.impact) {
         summary["restitution"] = result.impact->restitution;
         summary["contact_time"] = result.impact->contact_time;
         summary["rebound_velocity"] = result.impact->rebound_velocity;
         summary["dissipated_energy"] = result.impact->dissipated_energy;
+        if (const auto& oblique = result.impact->oblique) {
+            summary["tangential_restitution"] = oblique->tangential_restitution;
+            summary["rebound_tangential_velocity"] = oblique->rebound_tangential_velocity;
+            summary["rebound_spin"] = oblique->rebound_spin;
+            summary["rebound_angle_deg"] = oblique->rebound_angle;
+            summary["slid_throughout"] = oblique->slid_throughout;
+            summary["impulse_ratio"] = oblique->impulse_ratio;
+            summary["max_tangential_force"] = oblique->max_tangential_force;
+            summary["dissipated_energy_material"] = oblique->material_dissipation;
+            summary["dissipated_energy_friction"] = oblique->friction_dissipation;
+        }
     }
     if (result.harmonic) {
         const auto& harmonic = *result.harmonic;
@@ -71,10 +87,11 @@ void write_indentation_result(const fs::path& directory, const drivers::ContactC
                               const drivers::IndentationResult& result, double wall_seconds) {
     auto history = fmt::output_file((directory / "history.csv").string());
     const bool with_velocity = !result.velocity.empty();
-    const bool with_tangential = result.tangential.has_value();
+    const bool with_tangential = !result.tangential_force.empty();
     const bool with_base = !result.base.empty();
-    history.print("t,d,F,a{}{}{}\n", with_velocity ? ",v" : "", with_base ? ",z,deflection" : "",
-                  with_tangential ? ",u,Fx,c" : "");
+    const bool with_spin = !result.spin.empty();
+    history.print("t,d,F,a{}{}{}{}\n", with_velocity ? ",v" : "", with_base ? ",z,deflection" : "",
+                  with_tangential ? ",u,Fx,c" : "", with_spin ? ",v_t,omega" : "");
     for (std::size_t i = 0; i < result.time.size(); ++i) {
         history.print("{},{},{},{}", result.time[i], result.depth[i], result.force[i], result.radius[i]);
         if (with_velocity) history.print(",{}", result.velocity[i]);
@@ -83,6 +100,7 @@ void write_indentation_result(const fs::path& directory, const drivers::ContactC
             history.print(",{},{},{}", result.tangential_displacement[i], result.tangential_force[i],
                           result.stick_radius[i]);
         }
+        if (with_spin) history.print(",{},{}", result.tangential_velocity[i], result.spin[i]);
         history.print("\n");
     }
     history.close();

@@ -206,9 +206,9 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
     Workers workers(stop);
     workers.start(static_cast<unsigned>(std::min<std::size_t>(std::max(jobs, 1u), total)), work);
     std::unique_lock lock(mutex);
-    while (done < total) {
-        // Progress every 0.2 s and at the end: the caller sees it, and can stop the sweep (by throwing) also while a
-        // long point runs.
+    do {
+        // Progress every 0.2 s and at the end (also when every point ended before the first wait): the caller sees
+        // it, and can stop the sweep (by throwing) also while a long point runs.
         finished.wait_for(lock, std::chrono::milliseconds(200), [&] { return done == total; });
         const std::size_t reported = done;
         if (progress) {
@@ -216,7 +216,7 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
             progress(reported, total);
             lock.lock();
         }
-    }
+    } while (done < total);
     return rows;
 }
 

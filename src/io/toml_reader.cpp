@@ -148,8 +148,11 @@ void TableReader::reject_unknown(const std::vector<std::string>& known) const {
         for (const auto& k : known) found = found || k == name;
         if (found) continue;
         const std::string suggestion = nearest_key(name, known);
+        std::string valid;
+        for (const auto& k : known) valid += (valid.empty() ? "" : ", ") + k;
         throw InvalidInput(key_path(name), node_text(value),
-                           "unknown key" + (suggestion.empty() ? std::string() : "; did you mean '" + suggestion + "'?"));
+                           "unknown key" + (suggestion.empty() ? "; valid keys: " + valid
+                                                               : "; did you mean '" + suggestion + "'?"));
     }
 }
 

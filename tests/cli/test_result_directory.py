@@ -158,7 +158,8 @@ def test_result_directory_is_created_and_replaced_also_with_a_trailing_slash(mdr
     assert sorted(p.name for p in (work / "res").iterdir()) == [".mdr-result", "history.csv", "summary.json"]
     # Another command's result directory of mdr may be replaced too.
     assert mdr_in(mdr_binary, work, "material", "../case.toml", "--out", "res").returncode == 0
-    assert sorted(p.name for p in (work / "res").iterdir()) == [".mdr-result", "dynamic.csv", "functions.csv"]
+    assert sorted(p.name for p in (work / "res").iterdir()) == [".mdr-result", "dynamic.csv", "functions.csv",
+                                                                 "summary.json"]
     assert (work / "sentinel.txt").read_text(encoding="utf-8") == "keep me\n"
 
 

@@ -333,9 +333,12 @@ def test_series_adds_creep_functions():
 def test_material_functions_keep_the_input_shape(method, value):
     material = mdr.Material.standard(G_inf=G_INF, G1=G1, tau1=TAU1)
     result = getattr(material, method)(value)
-    assert isinstance(result, np.ndarray)
-    assert result.shape == np.shape(value)
-    assert result.dtype == (np.complex128 if method == "complex_modulus" else np.float64)
+    if np.ndim(value) == 0:  # scalar in, scalar out
+        assert type(result) is (complex if method == "complex_modulus" else float)
+    else:
+        assert isinstance(result, np.ndarray)
+        assert result.shape == np.shape(value)
+        assert result.dtype == (np.complex128 if method == "complex_modulus" else np.float64)
     flat = np.asarray(value, dtype=float).ravel()
     for x, y in zip(flat, np.asarray(result).ravel()):
         assert y == getattr(material, method)(np.array([x]))[0]
@@ -427,6 +430,7 @@ def test_every_plot_function_runs_headless(result_directory, file_result, tmp_pa
             {"t": np.zeros(3), "r": np.array([0.0, 1e-4, 2e-4]), "tau": np.array([1.0, 2.0, 0.0])}),
         "tangential_loop": lambda: mdr.plot.tangential_loop(
             {"u": np.array([0.0, 1e-6, 0.0]), "Fx": np.array([0.0, 0.1, 0.05])}),
+        "load_phases": lambda: mdr.plot.load_phases(history["d"], history["F"]),
         "sweep_map": lambda: mdr.plot.sweep_map(
             {"material.tau1": np.array([0.1, 1.0, 0.1, 1.0]), "material.G1": np.array([1.0, 1.0, 2.0, 2.0]),
              "max_force": np.array([1.0, 2.0, 3.0, 4.0])}, "max_force"),

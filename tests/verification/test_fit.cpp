@@ -26,7 +26,8 @@ constexpr double depth = 2e-5;   // peak depth [m]
 fit::ModelBuilder standard_solid_sphere() {
     return [](const std::vector<double>& values) {
         // The load is replaced by each curve's history.
-        return drivers::ContactCase{.material = rheology::Rheology::standard(values[0], values[1], values[2]),
+        return drivers::ContactCase{.title = "fit model",
+                                    .material = rheology::Rheology::standard(values[0], values[1], values[2]),
                                     .indenter = profile::make_sphere(R),
                                     .history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history"),
                                     .end_time = 1.0};
@@ -112,7 +113,8 @@ TEST(Fit, KelvinVoigtFromCreepUnderForce) {
     }
     fit::FitProblem problem;
     problem.model = [](const std::vector<double>& values) {
-        return drivers::ContactCase{.material = rheology::Rheology::kelvin_voigt(values[0], values[1]),
+        return drivers::ContactCase{.title = "fit model",
+                                    .material = rheology::Rheology::kelvin_voigt(values[0], values[1]),
                                     .indenter = profile::make_sphere(R),
                                     .history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history"),
                                     .end_time = 1.0};
@@ -218,6 +220,7 @@ TEST(Fit, TimesTheDataCannotDetermineAreFlagged) {
     fit::FitProblem problem = noise_free_problem(load_hold_curve(one_time, 1.0, 4.0, 201), {});
     problem.model = [](const std::vector<double>& values) {
         return drivers::ContactCase{
+            .title = "fit model",
             .material = rheology::Rheology::prony(values[0], {{values[1], values[2]}, {values[3], values[4]}}),
             .indenter = profile::make_sphere(R),
             .history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history"),

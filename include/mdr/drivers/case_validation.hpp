@@ -17,8 +17,14 @@ void validate(const TangentialLoad& load);
 /// Checks a harmonic load: finite amplitude, frequency > 0, finite start and an end after it; keys are named
 /// `prefix` + field (`tangential.`, `load.harmonic.`).
 void validate(const HarmonicLoad& harmonic, const std::string& prefix);
+/// The tangential velocity [m/s] of an impact at normal speed `velocity` [m/s] whose velocity makes `incidence_deg`
+/// with the surface normal: velocity tan(incidence). Throws mdr::InvalidInput (`load.incidence_deg`) outside
+/// [0, 90).
+double incidence_velocity(double velocity, double incidence_deg);
 
 /// Checks a contact problem: an indenter; for an impact a mass and an approach speed > 0 and no tangential load;
+/// for an oblique impact friction >= 0, finite tangential velocity and spin, a positive moment of inertia and
+/// radius, an incompressible body (no tangential_approximate);
 /// under force control no negative force; under displacement control no jump against a dashpot; an end after the
 /// first history time (finite unless an impact); snapshots within the simulated time; positive numerics. A normal
 /// harmonic (not with an impact): amplitude > 0, starting no earlier than the history, and under force control

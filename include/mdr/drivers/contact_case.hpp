@@ -12,6 +12,7 @@
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/drivers/tangential_load.hpp"
 #include "mdr/profile/profile.hpp"
+#include "mdr/rheology/approximation.hpp"
 #include "mdr/rheology/rheology.hpp"
 
 namespace mdr::drivers {
@@ -29,6 +30,17 @@ enum class Control {
 struct ImpactLoad {
     double mass;      ///< m [kg] of the rigid indenter
     double velocity;  ///< approach speed v0 [m/s] > 0 at first contact, t = 0
+};
+
+/// The tangential part of an oblique impact of a rigid sphere (`[load] tangential_velocity`, `spin`,
+/// `[indenter] moment_of_inertia`, `[tangential] friction`). The contact point, R below the centre, slides along x
+/// at v_t - R omega.
+struct ObliqueImpactLoad {
+    double friction = 0.0;             ///< mu >= 0 (local Coulomb friction, eq. 48-50)
+    double tangential_velocity = 0.0;  ///< v_t0 [m/s] of the centre along x at first contact
+    double spin = 0.0;                 ///< omega0 [rad/s] at first contact
+    double moment_of_inertia = 0.0;    ///< I [kg m^2] about the centre (solid sphere: 2/5 m R^2)
+    double radius = 0.0;               ///< R [m] of the sphere: the lever of the tangential force
 };
 
 /// User choices of `[numerics]`; every field optional, defaults come from the problem's scales.
@@ -75,6 +87,9 @@ struct ContactCase {
     /// True when tangential loading meets compressible or two different bodies: the MDR mapping is then exact for
     /// the normal problem only (section 7) and the tangential result an approximation.
     bool tangential_approximate = false;
+    std::optional<ObliqueImpactLoad> oblique{};         ///< with control = impact: its tangential part
+    /// The model behind `material` (its description; for a model converted to a series, the certificate).
+    rheology::MaterialOrigin material_origin{};
     /// `load.harmonic`: a harmonic part added to the history (depth, force or base displacement); the results
     /// over its last full cycle are measured (HarmonicOutcome).
     std::optional<HarmonicLoad> harmonic{};
@@ -82,6 +97,8 @@ struct ContactCase {
 
     /// The prescribed load at time t [s]: the history plus the harmonic part.
     double load_value(double t) const { return history.value(t) + (harmonic ? harmonic->value(t) : 0.0); }
+    /// The declared unit system (mdr/io/units.hpp): the names printed beside the numbers; nothing is converted.
+    std::string units = "SI";
 };
 
 /// Elements on the half-width when `[numerics] elements` is not given. With the half-width 1.1 times the largest
@@ -112,11 +129,12 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// with the instantaneous spring modulus over default_steps (and the material-time rule), the half-width 1.2
 /// times the elastic contact radius with the equilibrium modulus (an upper bound: the viscoelastic body is
 /// stiffer and dissipates); with a parallel dashpot the step is at most the braking time m / (8 eta a) over
-/// braking_steps (an overdamped impact is decided on that scale). A harmonic load (normal or tangential) caps the
-/// default time step at its period over default_steps_per_period. Spring control takes the smaller of the
-/// displacement-control half-width for the largest base displacement (d <= z) and the force-control one for the
-/// force k max z (F <= k z), and grades its steps as force control does. Throws mdr::InvalidInput for a problem
-/// that breaks a rule (validate) or would exceed its bounds of work or memory (require_bounded_work).
+/// braking_steps (an overdamped impact is decided on that scale); an oblique impact whose contact point is
+/// lighter than a solid sphere's (m_t < 2/7 m) has the step scaled by sqrt(m_t / (2/7 m)). A harmonic load (normal
+/// or tangential) caps the default time step at its period over default_steps_per_period. Spring control takes the
+/// smaller of the displacement-control half-width for the largest base displacement (d <= z) and the force-control
+/// one for the force k max z (F <= k z), and grades its steps as force control does. Throws mdr::InvalidInput for
+/// a problem that breaks a rule (validate) or would exceed its bounds of work or memory (require_bounded_work).
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case);
 
 /// Scales of an elastic impact (energy balance m v0^2 / 2 = int F_el dd), used for the impact defaults.

@@ -23,13 +23,29 @@ struct Snapshot {
     std::vector<double> shear_stress;   ///< tau_xz(r) [Pa] (eq. 47) with tangential loading, else empty
 };
 
+/// The tangential outcome of an oblique impact (handbook section 6 with m v_t' = -F_x, I omega' = R F_x). The
+/// contact point slides at v_c = v_t - R omega.
+struct ObliqueOutcome {
+    double tangential_restitution = 0.0;       ///< -v_c(T) / v_c(0) (0 when v_c(0) = 0)
+    double rebound_tangential_velocity = 0.0;  ///< v_t(T) [m/s] of the centre
+    double rebound_spin = 0.0;                 ///< omega(T) [rad/s]
+    double rebound_angle = 0.0;                ///< atan(v_t(T) / (-v(T))) [deg], from the normal
+    double impulse_ratio = 0.0;                ///< tangential over normal impulse, int F_x dt / int F dt
+    bool slid_throughout = false;              ///< every element in contact slipped at every step
+    double max_tangential_force = 0.0;         ///< largest |F_x| [N]
+    double material_dissipation = 0.0;         ///< work [J] of the normal and tangential forces on the elements
+    double friction_dissipation = 0.0;         ///< work [J] of the element forces on the slip, sum mu F_N,i |slip_i|
+};
+
 /// The outcome of an impact (eq. 39).
 struct ImpactOutcome {
     double restitution = 0.0;        ///< e = -v(T)/v0
     double contact_time = 0.0;       ///< T [s], when the axis leaves contact (the exits of the two innermost
                                      ///< elements extrapolated to it, Foundation::axis_weight)
     double rebound_velocity = 0.0;   ///< -v(T) [m/s], positive away from the surface
-    double dissipated_energy = 0.0;  ///< m (v0^2 - v(T)^2) / 2 [J]
+    double dissipated_energy = 0.0;  ///< kinetic energy lost [J]: m (v0^2 - v(T)^2) / 2, plus the tangential and
+                                     ///< rotational part in an oblique impact
+    std::optional<ObliqueOutcome> oblique{};  ///< oblique impact only
 };
 
 /// The outcome of a tangential loading (handbook section 6).
@@ -69,6 +85,8 @@ struct IndentationResult {
     std::vector<double> tangential_force;         ///< F_x [N] (eq. 46; tangential loading only, else empty)
     std::vector<double> stick_radius;             ///< c [m] (eq. 51; tangential loading only, else empty)
     std::vector<double> base;                     ///< base displacement z [m] (spring control only, else empty)
+    std::vector<double> tangential_velocity;      ///< v_t [m/s] of the centre (oblique impact only, else empty)
+    std::vector<double> spin;                     ///< omega [rad/s] (oblique impact only, else empty)
     std::vector<Snapshot> snapshots;
     std::optional<ImpactOutcome> impact;  ///< impact only
     std::optional<TangentialOutcome> tangential;  ///< tangential loading only

@@ -32,17 +32,17 @@ struct CurveSource {
 
 /// A measured curve in SI units.
 struct Curve {
-    std::string name;            ///< for messages and outputs (the file stem, or given)
-    std::vector<double> time;    ///< t [s], strictly increasing
-    std::vector<double> depth;   ///< indentation [m] relative to the data's own zero, positive into the body
-    std::vector<double> force;   ///< force [N], as measured (baseline not removed)
-    double force_noise = 0.0;    ///< estimated standard deviation of the force noise [N] (0 when unknown)
-    double depth_noise = 0.0;    ///< estimated standard deviation of the depth noise [m] (0 when unknown)
-    double contact_depth = 0.0;  ///< estimated depth of first contact in the data's depth [m]
-    double force_baseline = 0.0; ///< estimated force before contact [N]
-    double onset_exponent = 0.0;  ///< n of the onset fit F - baseline = A (depth - contact_depth)^n (0 when unknown)
-    double onset_amplitude = 0.0; ///< A of the onset fit [N/m^n] (0 when unknown)
-    std::string estimate_note;    ///< "" when the contact estimates are sound, else why they are not
+    std::string name;              ///< for messages and outputs (the file stem, or given)
+    std::vector<double> time;      ///< t [s], strictly increasing
+    std::vector<double> depth;     ///< indentation [m] relative to the data's own zero, positive into the body
+    std::vector<double> force;     ///< force [N], as measured (baseline not removed)
+    double force_noise = 0.0;      ///< estimated standard deviation of the force noise [N] (0 when unknown)
+    double depth_noise = 0.0;      ///< estimated standard deviation of the depth noise [m] (0 when unknown)
+    double contact_depth = 0.0;    ///< estimated depth of first contact in the data's depth [m]
+    double force_baseline = 0.0;   ///< estimated force before contact [N] (the baseline's value at the contact point)
+    double onset_exponent = 0.0;   ///< n of the onset fit F - baseline = A (depth - contact_depth)^n (0 when unknown)
+    double onset_amplitude = 0.0;  ///< A of the onset fit [N/m^n] (0 when unknown)
+    std::string estimate_note;     ///< "" when the contact estimates are sound, else why they are not
 };
 
 /// The fewest rows a curve may have (after the segment selection).
@@ -60,7 +60,11 @@ Curve load_curve(const CurveSource& source);
 /// A validated curve from arrays in SI units (same rules as load_curve), with the same estimates.
 Curve make_curve(std::string name, std::vector<double> time, std::vector<double> depth, std::vector<double> force);
 
-/// Fills noise, contact point and baseline estimates of `curve` (the documented method: see the definition).
+/// Fills the noise, contact point and baseline estimates of `curve`: a straight-line baseline in time fitted before
+/// the force rises (its noise: 1.4826 x MAD of the residuals), then a power-law onset F - baseline = A (d - d_c)^n
+/// (n in [1, 3]) fitted near the rise gives the contact depth d_c; the depth noise comes from second differences.
+/// Where no contact can be found, estimate_note says why. The method in full: the definition, and
+/// docs/case-format.md ("Measured curves").
 void estimate_contact(Curve& curve);
 
 }  // namespace mdr::fit

@@ -18,6 +18,12 @@ namespace mdr::foundation {
 /// Most elements a foundation may have: beyond, the state would need more memory than the machines we target.
 inline constexpr std::size_t max_elements = std::size_t{1} << 28;
 
+/// An element that came into contact inside the last step, and where (eq. 14).
+struct Entry {
+    std::size_t element;  ///< its index i
+    double fraction;      ///< where inside the step (0..1) it entered
+};
+
 /// A row of independent viscoelastic elements at x_i = (i + 1/2) dx, i = 0 .. n-1, on the half-width [0, L]
 /// (the foundation is symmetric; totals count both halves). Each element has the rheology of the material with
 /// normal stiffness k_z(t) = 4 G(t) dx (eq. 11). State per element: displacement w_i (positive into the body),
@@ -76,6 +82,10 @@ public:
     /// The largest depth [m] at which the indenter does not press on the free surface: the lowest g_i + w_i, with
     /// the surface at the axis extrapolated (axis_weight) so that a tip riding there is located to O(dx^2).
     double touching_depth() const;
+    /// The elements that came into contact inside the last step (none with a stale entry from an older step).
+    std::span<const Entry> entries() const { return entries_; }
+    /// Elements [0, touched()) have been in contact at some time; the others have w = h = 0 and never touched.
+    std::size_t touched() const { return active_; }
     /// Number of elements in contact.
     std::size_t contact_count() const;
     /// Where inside the last step (0..1) the last element to leave contact in it left (its force crossing zero,
@@ -84,6 +94,20 @@ public:
     /// dF/dd [N/m] of the prepared step while no element enters or leaves: 8 dx K n_contact (eq. 21), K the
     /// step's stiffness.
     double force_slope() const;
+
+    /// Doubles of the state that persists between steps (saved by save_state) for `count` elements and `branches`
+    /// relaxation branches: 3 + count (branches + 3).
+    static std::size_t state_size(std::size_t count, std::size_t branches) { return 3 + count * (branches + 3); }
+    /// Writes the persistent state (depth, force, touched elements; w_i, sigma_i, contact flag, h_{k,i}) into `out`
+    /// (state_size(size(), branches) doubles); the untouched elements are left as they are there.
+    void save_state(std::span<double> out) const;
+    /// Replaces the state with one written by save_state (or zeros: no contact yet) by a foundation of the same
+    /// size and material. Call begin_step after it.
+    void load_state(std::span<const double> in);
+    /// Reserves room for an event at every element, so that no later step allocates.
+    void reserve_events();
+    /// Line loads q_z,i [N/m] into `out` (size() values), without allocating.
+    void line_loads(std::span<double> out) const;
 
     /// Element displacements w_i [m].
     std::span<const double> displacements() const { return displacement_; }
@@ -127,6 +151,7 @@ private:
     mutable std::vector<double> scratch_;      ///< per-branch memory of a trial split update
     mutable std::vector<double> scratch_gain_; ///< per-branch B_k of a sub-step
     std::vector<std::size_t> split_;           ///< elements whose step is split by an event
+    std::vector<Entry> entries_;               ///< see entries()
     std::vector<double> split_state_;          ///< their new w, sigma and memory, (branches + 2) each
     double axis_ = 0.0;                        ///< g(0)
     std::array<double, 2> inner_exit_{-1.0, -1.0};  ///< see inner_exit()
@@ -137,6 +162,7 @@ private:
     double latest_exit_ = 0.0;                 ///< see latest_exit()
     StepCoefficients step_;
     std::size_t active_ = 0;                   ///< elements [active_, n) have never been touched: w = h = 0
+    std::size_t high_water_ = 0;               ///< the largest active_ any loaded or stepped state had
     double total_force_ = 0.0;
 };
 

@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/rheology/rheology.hpp"
 
@@ -29,8 +30,10 @@ enum class TangentialState : std::uint8_t {
 /// Rule of a step in which the indenter moves tangentially by du (eq. 50): an element in normal contact at the end
 /// of the step first sticks (u_i += du); if then |F_x,i| > mu F_N,i it slips and F_x,i = mu F_N,i with the sign of
 /// its trial force (the sign of du for an element at rest), u_i solved from that force. An element entering contact
-/// was force-free, so it carries no tangential force at entry; the rule takes its entry at the start of the step
-/// (first order in du for the elements entering while the indenter moves tangentially). Elements out of contact
+/// was force-free, so it carries no tangential force at entry and takes only the part of du after its entry,
+/// (1 - fraction) du with the fraction of the Foundation's Entry (the motion linear over the step); without the
+/// entries the rule takes the entry at the start of the step (first order in du for the elements entering while
+/// the indenter moves tangentially). Elements out of contact
 /// at the end of the step are force-free and keep relaxing (t_i = 0 solved each step). The dashpot of a material
 /// with eta > 0 sees the step's secant rate (exact for sticking elements under a linear motion, first order in
 /// dt for free and slipping ones).
@@ -39,11 +42,14 @@ public:
     /// `count` elements of width `spacing` [m] of material `material` (copied), friction coefficient `friction` (mu).
     TangentialLayer(const rheology::Rheology& material, double friction, double spacing, std::size_t count);
 
-    /// Prepares a step of the given coefficients from the current state (call before trial_force/advance).
-    void begin_step(const StepCoefficients& coefficients);
+    /// Prepares a step of the given coefficients from the current state (call before trial_force/advance), with
+    /// the elements that enter normal contact inside it (Foundation::entries after its step).
+    void begin_step(const StepCoefficients& coefficients, std::span<const Entry> entries = {});
     /// Total tangential force [N] (eq. 46, both halves) the layer would carry after the prepared step with the
     /// indenter moving by `increment` [m]; `normal_line_loads` q_z,i = F_N,i/dx [N/m] and `contact` are those of
-    /// the normal foundation at the end of the step. The state is not changed.
+    /// the normal foundation at the end of the step, of the same length, at most size(): the elements from there
+    /// on are out of contact (pass at least the elements the foundation has ever touched, and never fewer than
+    /// before). The state is not changed.
     double trial_force(double increment, std::span<const double> normal_line_loads,
                        std::span<const std::uint8_t> contact) const;
     /// The largest |F_x| [N] the contact can carry at the end of the prepared step: mu F_N (gross sliding beyond).
@@ -52,11 +58,29 @@ public:
     /// friction limit (the onset of gross sliding) in the prepared step; 0 when nothing is in contact.
     double sliding_increment(double direction, std::span<const double> normal_line_loads,
                              std::span<const std::uint8_t> contact) const;
+    /// Number of elements.
+    std::size_t size() const { return displacement_.size(); }
+    /// Doubles of the state that persists between steps (saved by save_state) for `count` elements and `branches`
+    /// relaxation branches: 2 + count (branches + 4).
+    static std::size_t state_size(std::size_t count, std::size_t branches) { return 2 + count * (branches + 4); }
+    /// Writes the persistent state (force, touched elements; u_i, t_i, state, limit, h_{k,i}) into `out`; the
+    /// untouched elements are left as they are there.
+    void save_state(std::span<double> out) const;
+    /// Replaces the state with one written by save_state (or zeros) by a layer of the same size and material. Call
+    /// begin_step after it.
+    void load_state(std::span<const double> in);
     /// Advances the state over the prepared step (arguments as for trial_force).
     void advance(double increment, std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact);
 
     /// Total tangential force F_x [N] after the last step (eq. 46, both halves).
     double total_force() const { return total_force_; }
+    /// Work [J] of the element forces on the element displacements over the last step (both halves), exact for u_i
+    /// linear in time over the step: int t du = du [G_inf (u0 + u1)/2 + eta du/dt + sum_k G_k (B_k h_k0 +
+    /// du (1 - B_k) tau_k/dt)] from h_k' = u' - h_k/tau_k. What the material stores and dissipates.
+    double material_work() const { return material_work_; }
+    /// Work [J] of the element forces on the slip of the last step (both halves): for each element in contact at
+    /// the end, the mean of its start and end force times increment - du_i. What friction dissipates.
+    double friction_work() const { return friction_work_; }
     /// dF_x/du [N/m] of the prepared step over the elements that stuck in the last step.
     double stick_slope() const;
     /// Stick radius c [m] (eq. 51): the edge of the stick zone around the centre, between the last sticking
@@ -89,8 +113,16 @@ private:
     std::vector<TangentialState> state_;
     std::vector<double> relaxed_;           ///< G_inf u_i + sum_k G_k E_k h_{k,i} for the prepared step
     std::vector<double> limit_;             ///< mu F_N,i / ((8/3) dx) at the end of the last step [Pa]
+    std::vector<double> share_;             ///< part of the step's increment an element takes: 1 - its entry
+                                            ///< fraction when it enters in the prepared step, else 1
+    std::vector<std::size_t> entered_;      ///< the elements whose share_ the prepared step set
+    std::vector<double> rate_gain_;         ///< (1 - B_k) tau_k / dt of the prepared step, one per branch
     StepCoefficients step_;
+    std::size_t touched_ = 0;               ///< elements [touched_, n) have never been in contact: u = h = 0
+    std::size_t high_water_ = 0;            ///< the largest touched_ any loaded or stepped state had
     double total_force_ = 0.0;
+    double material_work_ = 0.0;
+    double friction_work_ = 0.0;
 };
 
 }  // namespace mdr::foundation

@@ -124,6 +124,14 @@ TEST_F(LoadCurveTest, RawAfmColumns) {
     }
 }
 
+TEST_F(LoadCurveTest, OneColumnMayServeTwoKeys) {
+    CurveSource source = plain(write("approach.csv", approach_csv()));
+    source.depth_column = "t_ms";
+    const Curve curve = load_curve(source);
+    EXPECT_DOUBLE_EQ(curve.depth[4], 4e-9);
+    EXPECT_DOUBLE_EQ(curve.time[4], 4e-3);
+}
+
 TEST_F(LoadCurveTest, RefusesMissingOrUnreadableFile) {
     const fs::path missing = scratch_ / "missing.csv";
     EXPECT_EQ(message(plain(missing)), "file = \"" + missing.string() + "\": no such file");

@@ -1,4 +1,4 @@
-// The real curves of the project's shared data (MDR_MEASURED_DATA; README.md and .json sidecars there): they load
+// The real curves of examples/data (MDR_MEASURED_DATA; README.md and .json sidecars there): they load
 // with their columns and segments, the raw AFM conversion reproduces the files' own force_N and tip_height_m, and
 // the estimates agree with the sidecars' independent ones where both use the same definition. Skipped where the
 // data are not present.
@@ -44,7 +44,9 @@ const std::vector<RealCurve>& real_curves() {
 
 void PrintTo(const RealCurve& curve, std::ostream* out) { *out << curve.name; }
 
-fs::path data_file(const RealCurve& curve) { return fs::path(MDR_MEASURED_DATA) / (std::string(curve.name) + ".csv"); }
+fs::path data_file(const RealCurve& curve) {
+    return fs::path(MDR_MEASURED_DATA) / (std::string(curve.name) + ".csv");
+}
 
 CurveSource afm_source(const RealCurve& curve) {
     CurveSource source;

@@ -1,0 +1,91 @@
+#pragma once
+/// \file
+/// The one table of material models: name, keys with units and one-line documentation, and factory. The case
+/// reader, its error messages, the description of a case, the Python factories, the stubs and the model list of
+/// docs/case-format.md all come from it; adding a model is one row (material_models.cpp) plus its factory.
+
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "mdr/rheology/approximation.hpp"
+#include "mdr/rheology/rheology.hpp"
+
+namespace mdr::rheology {
+
+/// What a key holds.
+enum class ParameterKind {
+    number,  ///< a finite number
+    pairs,   ///< an array of [a, b] pairs (pair_names name a and b in messages)
+    numbers, ///< an array of numbers
+    text,    ///< a string
+};
+
+/// One key of a model.
+struct ModelParameter {
+    std::string key;            ///< as in a shear table; a bulk table writes K for a leading G (G_inf -> K_inf)
+    ParameterKind kind = ParameterKind::number;
+    std::string unit;           ///< e.g. "Pa", "Pa s", "s", "1"
+    std::string documentation;  ///< one line
+    bool required = true;       ///< false: optional (a number then takes default_value)
+    double default_value = 0.0; ///< for an optional number
+    std::pair<std::string, std::string> pair_names{};  ///< for pairs: the names of the two values
+};
+
+/// The values a case or a caller gave, by key (shear naming).
+struct ModelParameters {
+    std::map<std::string, double> numbers{};
+    std::map<std::string, std::vector<std::pair<double, double>>> pairs{};
+    std::map<std::string, std::vector<double>> arrays{};
+    std::map<std::string, std::string> texts{};
+
+    /// The number under `key` (throws mdr::InvalidInput `key = (missing): is required` if absent).
+    double number(const std::string& key) const;
+    /// True when any kind of value is given for `key`.
+    bool has(const std::string& key) const;
+};
+
+/// What a conversion to a series needs besides the parameters.
+struct ConversionOptions {
+    std::optional<TimeWindow> window{};        ///< the lags the problem needs (required by models with a window)
+    double tolerance = default_material_tolerance;  ///< relative, for models converted to a series
+    std::string directory{};                   ///< where relative file names are found ("" = working directory)
+};
+
+/// What a factory builds.
+struct ModelMaterial {
+    Rheology series;       ///< what the solver uses
+    MaterialOrigin origin; ///< what it stands for
+};
+
+/// One row of the table.
+struct MaterialModel {
+    std::string name;                        ///< `model = "name"`
+    std::string documentation;               ///< one line, e.g. the relaxation modulus
+    std::vector<ModelParameter> parameters;  ///< keys, in the order of the Python factory's arguments
+    bool needs_window = false;               ///< converted to a series over the problem's time window
+    ModelMaterial (*build)(const ModelParameters&, const ConversionOptions&) = nullptr;  ///< the factory
+};
+
+/// Every model, in the order of the documentation.
+const std::vector<MaterialModel>& material_models();
+
+/// The row named `name`; throws mdr::InvalidInput(`model`, "name", "unknown model; one of ...").
+const MaterialModel& material_model(const std::string& name);
+
+/// Builds the material of `model` from `parameters`: checks that every required key is given, then calls the
+/// factory. Errors name the key as in a shear table (the caller prefixes its table).
+ModelMaterial build_material(const MaterialModel& model, const ModelParameters& parameters,
+                             const ConversionOptions& options = {});
+
+/// `name (key = value unit, ...)` for the values given; the one-line description of a model's parameters. `rename`
+/// gives a key as the table writes it (a bulk table: K for G); none: the registry's names.
+std::string describe_model(const MaterialModel& model, const ModelParameters& parameters,
+                           std::string (*rename)(const std::string&) = nullptr);
+
+/// The description of a certificate: `as N Prony terms, error E over t = a .. b s`.
+std::string describe_certificate(const Certificate& certificate, std::size_t terms);
+
+}  // namespace mdr::rheology

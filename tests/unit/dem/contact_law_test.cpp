@@ -1,0 +1,102 @@
+// The DEM contact law's contract: one law steps many contacts whose states live in the caller's memory (the
+// workspace holds none of them between steps), and a step allocates nothing.
+
+#include "mdr/dem/contact_law.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+#include "mdr/error.hpp"
+
+namespace {
+
+std::atomic<long> allocations{0};
+
+}  // namespace
+
+// Counts every allocation of the test binary (the count is read around the steps only).
+void* operator new(std::size_t size) {
+    ++allocations;
+    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+    throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) { return operator new(size); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace mdr::dem {
+namespace {
+
+ContactLaw make_law() {
+    return ContactLaw(rheology::Rheology::prony(1e6, {{3e6, 1e-3}, {1e6, 3e-5}}), 0.005, 0.3, 50, 1e-3, 2e-6);
+}
+
+// A contact's motion at step n: an overlap rising and falling over 600 steps, a tangential displacement that
+// reverses.
+double overlap_at(int n, double scale) { return scale * 4e-5 * std::sin(3.14159 * n / 600.0); }
+double displacement_at(int n, double scale) { return scale * 1e-6 * std::sin(6.28318 * n / 500.0); }
+
+TEST(DemContactLaw, ContactsSharingALawStepAsIfAlone) {
+    auto shared = make_law();
+    std::vector<double> first(shared.state_size()), second(shared.state_size());
+    shared.initialise(first);
+    shared.initialise(second);
+    auto alone_first = make_law(), alone_second = make_law();
+    std::vector<double> own_first(alone_first.state_size()), own_second(alone_second.state_size());
+    alone_first.initialise(own_first);
+    alone_second.initialise(own_second);
+    double most = 0.0, most_tangential = 0.0;
+    for (int n = 1; n < 600; ++n) {
+        // The second contact starts later and is smaller: the shared workspace must not carry one into the other.
+        shared.advance(first, overlap_at(n, 1.0), displacement_at(n, 1.0));
+        alone_first.advance(own_first, overlap_at(n, 1.0), displacement_at(n, 1.0));
+        if (n >= 100) {
+            shared.advance(second, overlap_at(n - 100, 0.3), displacement_at(n - 100, -0.5));
+            alone_second.advance(own_second, overlap_at(n - 100, 0.3), displacement_at(n - 100, -0.5));
+        }
+        ASSERT_EQ(first, own_first) << "step " << n;
+        ASSERT_EQ(second, own_second) << "step " << n;
+        most = std::max(most, shared.normal_force(second));
+        most_tangential = std::max(most_tangential, std::abs(shared.tangential_force(second)));
+    }
+    EXPECT_GT(most, 0.0);  // both contacts were loaded, normally and tangentially
+    EXPECT_GT(most_tangential, 0.0);
+}
+
+TEST(DemContactLaw, AStepAllocatesNothing) {
+    auto law = make_law();
+    std::vector<double> state(law.state_size());
+    law.initialise(state);
+    law.advance(state, overlap_at(1, 1.0), displacement_at(1, 1.0));
+    const long before = allocations.load();
+    for (int n = 2; n < 600; ++n) {
+        law.begin(state);
+        (void)law.normal_trial(overlap_at(n, 1.0));
+        law.advance_normal(overlap_at(n, 1.0));
+        (void)law.tangential_trial(displacement_at(n, 1.0));
+        law.advance_tangential(displacement_at(n, 1.0));
+        law.end(state);
+    }
+    EXPECT_EQ(allocations.load(), before);
+}
+
+TEST(DemContactLaw, StateSizeAndBadParameters) {
+    EXPECT_EQ(ContactLaw::state_size(20, 1), 6u + 20u * 9u);
+    EXPECT_EQ(make_law().state_size(), ContactLaw::state_size(50, 2));
+    const auto material = rheology::Rheology::standard(1e6, 3e6, 1e-3);
+    EXPECT_THROW(ContactLaw(material, 0.0, 0.3, 20, 1e-3, 1e-6), InvalidInput);
+    EXPECT_THROW(ContactLaw(material, 0.01, -0.1, 20, 1e-3, 1e-6), InvalidInput);
+    EXPECT_THROW(ContactLaw(material, 0.01, 0.3, 0, 1e-3, 1e-6), InvalidInput);
+    EXPECT_THROW(ContactLaw(material, 0.01, 0.3, 20, 1e-3, 0.0), InvalidInput);
+}
+
+}  // namespace
+}  // namespace mdr::dem
