@@ -60,6 +60,11 @@ Curve load_curve(const CurveSource& source);
 /// A validated curve from arrays in SI units (same rules as load_curve), with the same estimates.
 Curve make_curve(std::string name, std::vector<double> time, std::vector<double> depth, std::vector<double> force);
 
+/// The noise of values[begin, end) from the data alone: 1.4826 MAD of the second differences over sqrt(6) (a smooth
+/// signal sampled densely cancels in second differences; white noise of deviation s gives deviation s sqrt(6));
+/// 0 for fewer than 3 values.
+double difference_noise(const std::vector<double>& values, std::size_t begin, std::size_t end);
+
 /// Fills the noise, contact point and baseline estimates of `curve`: a straight-line baseline in time fitted before
 /// the force rises (its noise: 1.4826 x MAD of the residuals), then a power-law onset F - baseline = A (d - d_c)^n
 /// (n in [1, 3]) fitted near the rise gives the contact depth d_c; the depth noise comes from second differences.
