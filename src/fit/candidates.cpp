@@ -296,8 +296,8 @@ ModelChoice fit_candidates(const io::FitCase& fit_case, const std::vector<Curve>
         const double smoothing = material.spectrum() ? settings.spectrum.value_or(SpectrumSettings{}).smoothing : 0.0;
         const auto penalty = smoothing_penalty(material, offset, smoothing, choice.modulus_scale, curves);
         if (material.spectrum() && base.settings.fitted == Fitted::force) {
-            const auto start = linear_start(base, material, indenter, started_curves, penalty);
-            for (std::size_t j = 0; j < start.size(); ++j) started.parameters[j].start = start[j];
+            const auto linear = linear_start(base, material, indenter, started_curves, penalty);
+            for (std::size_t j = 0; j < linear.size(); ++j) started.parameters[j].start = linear[j];
         }
         choice.fits.push_back(fit_material(base, started, indenter, started_curves, penalty));
     }
