@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "fit_candidates.hpp"
 #include "interrupt.hpp"
 #include "mdr/fit/fit_case_run.hpp"
 #include "mdr/io/fit_files.hpp"
@@ -14,7 +15,7 @@ namespace mdr::cli {
 void add_fit_command(CLI::App& app, int& exit_code) {
     auto* command = app.add_subcommand(
         "fit", "Fit the free parameters of a case ([fit] table) to measured curves; writes fit.json, fitted.toml, "
-               "curves.csv");
+               "curves.csv; with fit.candidates or [fit.spectrum] a ranking and one fit per model");
     auto case_path = std::make_shared<std::string>();
     auto out = std::make_shared<std::string>();
     command->add_option("case", *case_path, "The TOML case file with a [fit] table")->required();
@@ -27,10 +28,19 @@ void add_fit_command(CLI::App& app, int& exit_code) {
                 const SetupProgress preparing;
                 auto read = io::load_fit_case(*case_path);
                 auto curves = fit::load_curves(read);
+                if (!read.model_choice.empty()) {  // candidates: each builds its own problem from the curves
+                    fit::FitProblem curves_only;
+                    curves_only.curves = std::move(curves);
+                    return std::make_pair(std::move(read), std::move(curves_only));
+                }
                 auto built = fit::make_problem(read, std::move(curves));
                 fit::validate(built);
                 return std::make_pair(std::move(read), std::move(built));
             }();
+            if (!fit_case.model_choice.empty()) {
+                converged = run_model_choice(fit_case, problem.curves, directory);
+                return;
+            }
             const auto result = fit::fit(problem);
             directory.write([&](const std::filesystem::path& files) { io::write_fit_result(files, fit_case, result); },
                             received_signal);

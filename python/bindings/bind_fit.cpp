@@ -3,8 +3,10 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "mdr/fit/candidates.hpp"
 #include "mdr/fit/fit_case_run.hpp"
 #include "mdr/io/fit_files.hpp"
+#include "mdr/io/model_choice_files.hpp"
 
 namespace py = pybind11;
 
@@ -13,22 +15,8 @@ namespace {
 
 using CurveArrays = std::tuple<std::string, std::vector<double>, std::vector<double>, std::vector<double>>;
 
-// A fit case from TOML text; `curves` (name, t, d, F), when not empty, replace its [[fit.data]].
-py::dict fit_toml_case(const std::string& toml_text, const std::string& source, const std::string& directory,
-                       const std::vector<CurveArrays>& curves) {
-    const auto fit_case = io::parse_fit_case(toml_text, source, directory);
-    std::vector<fit::Curve> loaded;
-    if (curves.empty()) {
-        loaded = fit::load_curves(fit_case);
-    } else {
-        for (const auto& [name, time, depth, force] : curves) loaded.push_back(fit::make_curve(name, time, depth, force));
-    }
-    const auto problem = fit::make_problem(fit_case, std::move(loaded));
-    fit::FitResult result;
-    {
-        py::gil_scoped_release release;
-        result = fit::fit(problem);
-    }
+// fit.json, the fitted case and the curves of one fit.
+py::dict fit_output(const io::FitCase& fit_case, const fit::FitResult& result) {
     py::list curve_list;
     for (const auto& curve : result.curves) {
         py::dict entry;
@@ -44,6 +32,43 @@ py::dict fit_toml_case(const std::string& toml_text, const std::string& source, 
     out["fitted_case"] = io::fitted_case_text(fit_case, result.values, "");
     out["curves"] = curve_list;
     return out;
+}
+
+// A fit case from TOML text; `curves` (name, t, d, F), when not empty, replace its [[fit.data]].
+py::dict fit_toml_case(const std::string& toml_text, const std::string& source, const std::string& directory,
+                       const std::vector<CurveArrays>& curves) {
+    const auto fit_case = io::parse_fit_case(toml_text, source, directory);
+    std::vector<fit::Curve> loaded;
+    if (curves.empty()) {
+        loaded = fit::load_curves(fit_case);
+    } else {
+        for (const auto& [name, time, depth, force] : curves) loaded.push_back(fit::make_curve(name, time, depth, force));
+    }
+    if (!fit_case.model_choice.empty()) {
+        fit::ModelChoice choice;
+        {
+            py::gil_scoped_release release;
+            choice = fit::fit_candidates(fit_case, loaded);
+        }
+        py::list candidates;
+        for (const auto& fitted : choice.fits) {
+            py::dict entry = fit_output(fitted.fitted_case, fitted.result);
+            entry["name"] = fitted.name;
+            entry["relaxation_times"] = to_array(fitted.relaxation_times);
+            candidates.append(entry);
+        }
+        py::dict out = fit_output(choice.fits[choice.preferred].fitted_case, choice.fits[choice.preferred].result);
+        out["ranking_json"] = io::ranking_json(choice);
+        out["candidates"] = candidates;
+        return out;
+    }
+    const auto problem = fit::make_problem(fit_case, std::move(loaded));
+    fit::FitResult result;
+    {
+        py::gil_scoped_release release;
+        result = fit::fit(problem);
+    }
+    return fit_output(fit_case, result);
 }
 
 }  // namespace

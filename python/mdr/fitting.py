@@ -35,6 +35,16 @@ class FitResult:
         Per curve: ``name``, ``t``, ``measured``, ``model`` and ``drive`` (numpy arrays).
     fitted_case : str
         The case with the fitted values, as TOML text.
+    ranking : list of dict
+        With ``fit.candidates``: one entry per candidate model in ascending BIC (``name``, ``free_count``,
+        ``residual_to_noise``, ``aic``, ``bic``, ``delta_aic``, ``delta_bic``, ``undetermined``, ...: the
+        ``candidates`` of ranking.json; one entry in spectrum mode); this result is the preferred candidate's.
+        Empty for a single model.
+    candidates : dict
+        With ``fit.candidates`` or ``[fit.spectrum]``: every candidate's own :class:`FitResult`, by name.
+    spectrum : dict or None
+        In spectrum mode (or for the "spectrum" candidate): ``tau`` (the grid [s]), ``G`` (its moduli [Pa]) and
+        ``G_inf`` [Pa].
     """
 
     parameters: dict[str, float]
@@ -43,6 +53,9 @@ class FitResult:
     summary: dict[str, Any]
     curves: list[dict[str, Any]] = field(default_factory=list)
     fitted_case: str = ""
+    ranking: list[dict[str, Any]] = field(default_factory=list)
+    candidates: dict[str, "FitResult"] = field(default_factory=dict)
+    spectrum: dict[str, Any] | None = None
 
     def predict(self, load: Mapping[str, Any]):
         """Run the fitted material and indenter under another load.
@@ -83,7 +96,9 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
     Returns
     -------
     FitResult
-        The parameters with their errors; a fit that did not converge still returns, its status says why.
+        The parameters with their errors; a fit that did not converge still returns, its status says why. With
+        ``fit.candidates``, the preferred candidate's result, with ``ranking`` and every candidate's result in
+        ``candidates``; with ``[fit.spectrum]``, the spectrum's result with ``spectrum``.
 
     Raises
     ------
@@ -122,7 +137,23 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
         arrays = [np.asarray(curve[key], dtype=float).ravel().tolist() for key in ("time", "depth", "force")]
         curves.append((str(curve.get("name", f"curve{i}")), *arrays))
     raw = _mdr._fit_toml(text, source, directory, curves)
+    if "candidates" not in raw:
+        return _result(raw)
+    candidates = {str(entry["name"]): _result(entry) for entry in raw["candidates"]}
+    ranking = json.loads(raw["ranking_json"])
+    preferred = candidates[ranking["preferred"]]
+    preferred.ranking = ranking["candidates"]
+    preferred.candidates = candidates
+    return preferred
+
+
+def _result(raw: Mapping[str, Any]) -> FitResult:
     summary = json.loads(raw["fit_json"])
-    return FitResult(parameters=_numbers(summary, "parameters"), standard_errors=_numbers(summary, "standard_errors"),
-                     status=summary["status"], summary=summary, curves=[dict(c) for c in raw["curves"]],
-                     fitted_case=raw["fitted_case"])
+    result = FitResult(parameters=_numbers(summary, "parameters"), standard_errors=_numbers(summary, "standard_errors"),
+                       status=summary["status"], summary=summary, curves=[dict(c) for c in raw["curves"]],
+                       fitted_case=raw["fitted_case"])
+    times = np.asarray(raw.get("relaxation_times", []), dtype=float)
+    if times.size:
+        result.spectrum = {"tau": times, "G_inf": result.parameters["material.G_inf"],
+                           "G": np.array([result.parameters[f"spectrum.G[{j}]"] for j in range(times.size)])}
+    return result

@@ -9,9 +9,11 @@
 #include <cmath>
 #include <memory>
 #include <set>
+#include <stdexcept>
 
 #include "curve_cost.hpp"
 #include "fit_diagnostics.hpp"
+#include "penalty_cost.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::fit {
@@ -46,6 +48,11 @@ void validate(const FitProblem& problem) {
             throw InvalidInput(parameter.name, format_value(parameter.start),
                                fmt::format("the start value must lie within its bounds [{}, {}]",
                                            format_value(parameter.lower), format_value(parameter.upper)));
+        }
+    }
+    for (const auto& row : problem.penalty) {
+        if (row.size() != problem.parameters.size()) {
+            throw std::invalid_argument("mdr::fit: a penalty row must have one entry per free parameter");
         }
     }
     const std::size_t free_count = problem.parameters.size() +
@@ -122,6 +129,8 @@ FitResult fit(const FitProblem& problem) {
         if (m > 0) blocks.push_back(nuisance[c].data());
         solver_problem.AddResidualBlock(costs.back().get(), nullptr, blocks);
     }
+    PenaltyCost penalty(problem.penalty, scales);
+    if (!problem.penalty.empty()) solver_problem.AddResidualBlock(&penalty, nullptr, shared.data());
     for (std::size_t j = 0; j < k; ++j) {
         solver_problem.SetParameterLowerBound(shared.data(), static_cast<int>(j), scales.lower[j]);
         solver_problem.SetParameterUpperBound(shared.data(), static_cast<int>(j), scales.upper[j]);

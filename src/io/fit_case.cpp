@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "case_reader.hpp"
+#include "fit_candidates_reader.hpp"
 #include "fit_data_reader.hpp"
 #include "mdr/error.hpp"
 #include "toml_reader.hpp"
@@ -28,8 +29,9 @@ std::string choice(TableReader& table, const std::string& key, const std::vector
     throw InvalidInput(table.key_path(key), "\"" + value + "\"", "one of " + list);
 }
 
-std::vector<std::string> free_keys(const toml::table& fit) {
+std::vector<std::string> free_keys(const toml::table& fit, bool optional) {
     const auto* array = fit["free"].as_array();
+    if (array == nullptr && optional && !fit["free"]) return {};
     if (array == nullptr) throw InvalidInput("fit.free", "(missing)", "is required: an array of dotted keys of the case");
     std::vector<std::string> keys;
     for (std::size_t i = 0; i < array->size(); ++i) {
@@ -99,9 +101,10 @@ FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
     if (!model.has_table("fit")) throw InvalidInput("fit", "(missing)", "a fit case needs a [fit] table");
     const toml::table fit_table = parse_toml(model.take_table("fit"), source);
     TableReader fit(fit_table, "fit");
-    fit.reject_unknown({"free", "bounds", "start", "fitted", "contact_point", "baseline", "max_iterations", "elements", "data"});
+    fit.reject_unknown({"free", "bounds", "start", "fitted", "contact_point", "baseline", "max_iterations", "elements", "data",
+                        "candidates", "spectrum"});
 
-    FitCase fit_case{std::move(model), {}, {}, {}, false};
+    FitCase fit_case{std::move(model), {}, {}, {}, false, read_candidates(fit)};
     const std::string fitted = choice(fit, "fitted", {"force", "depth"}, "force");
     fit_case.settings.fitted = fitted == "force" ? fit::Fitted::force : fit::Fitted::depth;
     const std::string contact = choice(fit, "contact_point", {"fit", "estimate", "fixed"}, "fit");
@@ -133,7 +136,8 @@ FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
     }
     fit_case.model.build();  // the model's own rules
 
-    const auto keys = free_keys(fit_table);
+    const auto keys = free_keys(fit_table, !fit_case.model_choice.empty());
+    check_candidate_free_keys(fit_case.model_choice, keys);
     check_per_key_tables(fit_table, keys);
     for (const auto& key : keys) fit_case.parameters.push_back(read_parameter(fit_table, fit_case.model, key));
 

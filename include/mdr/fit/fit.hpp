@@ -80,6 +80,10 @@ struct FitProblem {
     std::vector<FreeParameter> parameters;    ///< the free parameters of the model
     std::vector<Curve> curves;                ///< one or more measured curves; one material for all
     FitSettings settings;                     ///< see FitSettings
+    /// Extra residuals P v, one per row of P (each row as long as `parameters`, v their values), added to the
+    /// cost: a penalty such as a spectrum's smoothing. They move the optimum but do not enter the statistics
+    /// (residual, errors, AIC, BIC are those of the data).
+    std::vector<std::vector<double>> penalty{};
 };
 
 /// One curve's data, model and residual at the points used by the fit.

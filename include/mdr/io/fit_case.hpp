@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "mdr/fit/candidate_settings.hpp"
 #include "mdr/fit/curve.hpp"
 #include "mdr/fit/fit.hpp"
 #include "mdr/io/case_template.hpp"
@@ -23,13 +24,15 @@ struct FitCase {
                                                  ///< `elements`
     std::vector<fit::CurveSource> data;          ///< `[[fit.data]]`, paths relative to the case file's directory
     bool had_load = false;                       ///< the case gave its own `[load]`
+    fit::CandidateSettings model_choice{};       ///< `fit.candidates` and `[fit.spectrum]` (fit::fit_candidates)
 };
 
 /// Parses a fit case. A free key must name a number of `[material]` or `[indenter]`; its start value is
 /// `fit.start.KEY` or the case's value; a parameter whose start is > 0 and whose bounds (if given) are > 0 is
 /// fitted on a logarithmic scale, with default bounds of 1e-4 to 1e4 times the start. Throws mdr::InvalidInput
 /// (keys `fit.*`) for an unknown key, a free key the model does not have, bounds that are inverted or exclude
-/// the start, a `[load] control` that contradicts `fit.fitted`, and every rule of the case itself.
+/// the start, a `[load] control` that contradicts `fit.fitted`, and every rule of the case itself. With
+/// `fit.candidates` or `[fit.spectrum]`, `free` is optional and may name indenter keys only.
 FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
                        const std::filesystem::path& case_directory);
 

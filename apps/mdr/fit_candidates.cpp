@@ -1,0 +1,48 @@
+#include "fit_candidates.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "interrupt.hpp"
+#include "mdr/fit/candidates.hpp"
+#include "mdr/io/model_choice_files.hpp"
+
+namespace mdr::cli {
+
+bool run_model_choice(const io::FitCase& fit_case, const std::vector<fit::Curve>& curves,
+                      const io::ResultDirectory& directory) {
+    const auto choice = fit::fit_candidates(fit_case, curves);
+    directory.write([&](const std::filesystem::path& files) { io::write_model_choice(files, fit_case, choice); },
+                    received_signal);
+    double seconds = 0.0;
+    if (fit_case.model_choice.candidates.empty()) {
+        const auto& spectrum = choice.fits.front();
+        fmt::print("spectrum of {} relaxation times ({:.4g} s to {:.4g} s): {}\n", spectrum.relaxation_times.size(),
+                   spectrum.relaxation_times.front(), spectrum.relaxation_times.back(), spectrum.result.status);
+    } else {
+        fmt::print("{} candidate model(s), ranked by BIC (preferred: {}):\n", choice.fits.size(),
+                   choice.fits[choice.preferred].name);
+        fmt::print("  {:<10} {:>5} {:>12} {:>10} {:>10}  {}\n", "model", "free", "residual/noise", "dAIC", "dBIC",
+                   "status");
+    }
+    for (const auto& fitted : choice.fits) {
+        const auto& result = fitted.result;
+        seconds += result.wall_seconds;
+        if (fit_case.model_choice.candidates.empty()) continue;
+        const std::string flags = result.undetermined.empty()
+                                      ? ""
+                                      : fmt::format(", {} undetermined", result.undetermined.size());
+        fmt::print("  {:<10} {:>5} {:>12.3g} {:>10.1f} {:>10.1f}  {}{}\n", fitted.name, result.free_count,
+                   result.rms_residual / result.noise, fitted.delta_aic, fitted.delta_bic, result.status, flags);
+    }
+    for (const auto& entry : choice.fits[choice.preferred].result.undetermined) {
+        fmt::print("  undetermined ({}): {}: {}\n", choice.fits[choice.preferred].name, entry.name, entry.reason);
+    }
+    fmt::print("  {:.3f} s of fitting; results in {}/ ({})\n", seconds, directory.shown(),
+               fit_case.model_choice.candidates.empty() ? "fit.json, fitted.toml, curves.csv, spectrum.csv"
+                                                        : "models.csv, ranking.json, one folder per model");
+    return choice.fits[choice.preferred].result.converged;
+}
+
+}  // namespace mdr::cli

@@ -1,0 +1,18 @@
+#pragma once
+// `mdr fit` with `fit.candidates` or `[fit.spectrum]`: every candidate fitted, ranked and written.
+
+#include <vector>
+
+#include "mdr/fit/curve.hpp"
+#include "mdr/io/fit_case.hpp"
+#include "mdr/io/result_directory.hpp"
+
+namespace mdr::cli {
+
+/// Fits the candidates of `fit_case` to `curves`, writes them into `directory` (io::write_model_choice) and prints
+/// the ranking. Returns true when the preferred candidate's fit converged (the others' status is in the
+/// ranking: a term the data do not need often drifts to a bound without converging).
+bool run_model_choice(const io::FitCase& fit_case, const std::vector<fit::Curve>& curves,
+                      const io::ResultDirectory& directory);
+
+}  // namespace mdr::cli

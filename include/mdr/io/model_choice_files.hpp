@@ -1,0 +1,26 @@
+#pragma once
+/// \file
+/// The result directory of a model choice or a spectrum (docs/case-format.md, "Fitting"): one fit per candidate,
+/// the ranking (models.csv, ranking.json) and the spectrum's moduli (spectrum.csv).
+
+#include <filesystem>
+#include <string>
+
+#include "mdr/fit/candidates.hpp"
+
+namespace mdr::io {
+
+/// ranking.json: `criterion` ("bic"), `preferred`, `modulus_scale`, `time_window` [s, s], and `candidates` in
+/// ascending BIC, each with `name`, `status`, `converged`, `free_count`, `rms_residual`, `noise`,
+/// `residual_to_noise`, `aic`, `bic`, `delta_aic`, `delta_bic`, `undetermined` (names), `evaluations`,
+/// `wall_seconds`.
+std::string ranking_json(const fit::ModelChoice& choice);
+
+/// Writes the model choice into `directory`: per candidate a folder NAME/ with fit.json, fitted.toml, curves.csv
+/// (and spectrum.csv for a spectrum), models.csv (rank,candidate,free_count,rms_residual,residual_to_noise,aic,
+/// bic,delta_aic,delta_bic,converged,undetermined,wall_seconds) and ranking.json. A spectrum alone (no
+/// candidates) is written as one fit: fit.json, fitted.toml, curves.csv, spectrum.csv in `directory` itself.
+void write_model_choice(const std::filesystem::path& directory, const FitCase& fit_case,
+                        const fit::ModelChoice& choice);
+
+}  // namespace mdr::io

@@ -1,0 +1,321 @@
+#include "mdr/fit/candidates.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "curve_model.hpp"
+#include "mdr/error.hpp"
+#include "nnls.hpp"
+
+namespace mdr::fit {
+
+namespace {
+
+// The most relaxation times of a spectrum: each costs one forward run per Jacobian.
+constexpr std::size_t max_spectrum_terms = 100;
+
+// The data's time window: the finest sampling interval and the longest record [s].
+struct Window {
+    double shortest = std::numeric_limits<double>::infinity();
+    double longest = 0.0;
+};
+
+Window time_window(const std::vector<Curve>& curves) {
+    Window window;
+    for (const auto& curve : curves) {
+        window.longest = std::max(window.longest, curve.time.back() - curve.time.front());
+        for (std::size_t i = 1; i < curve.time.size(); ++i) {
+            window.shortest = std::min(window.shortest, curve.time[i] - curve.time[i - 1]);
+        }
+    }
+    return window;
+}
+
+// A candidate material: its free parameters (values in this order) and how they make G(t).
+struct Material {
+    std::string name;
+    std::vector<FreeParameter> parameters;
+    std::size_t terms = 0;                  // Prony terms with free times (elastic: 0)
+    std::vector<double> grid;               // spectrum: the fixed times, one free modulus each
+    bool spectrum() const { return !grid.empty(); }
+};
+
+// G(t) = G_inf + sum G_k exp(-t / tau_k) (Table 1) of the values; a spectrum drops its zero moduli.
+rheology::Rheology make_material(const Material& material, const double* values) {
+    if (material.parameters.size() == 1) return rheology::Rheology::elastic(values[0]);
+    std::vector<rheology::RelaxationTerm> terms;
+    if (material.spectrum()) {
+        for (std::size_t j = 0; j < material.grid.size(); ++j) {
+            if (values[1 + j] > 0.0) terms.push_back({values[1 + j], material.grid[j]});
+        }
+    } else {
+        for (std::size_t k = 0; k < material.terms; ++k) terms.push_back({values[1 + 2 * k], values[2 + 2 * k]});
+    }
+    return rheology::Rheology::prony(values[0], std::move(terms));
+}
+
+// The `[material]` body of the values, as make_material builds it.
+std::string material_text(const Material& material, const double* values) {
+    const rheology::Rheology rheology = make_material(material, values);
+    if (rheology.terms().empty()) return fmt::format("model = \"elastic\"\nG = {}\n", rheology.equilibrium_modulus());
+    std::string terms;
+    for (const auto& term : rheology.terms()) {
+        terms += fmt::format("{}[{}, {}]", terms.empty() ? "" : ", ", term.modulus, term.relaxation_time);
+    }
+    return fmt::format("model = \"prony\"\nG_inf = {}\nterms = [{}]\n", rheology.equilibrium_modulus(), terms);
+}
+
+Material elastic(double start) { return {"elastic", {{"material.G", start, 1e-6 * start, 1e6 * start, true}}, 0, {}}; }
+
+// N terms: G_inf = G_e / 2, G_k = G_e / N, times evenly spread in log over the window.
+Material prony(const std::string& name, std::size_t terms, double modulus, const Window& window) {
+    Material material{name, {{"material.G_inf", 0.5 * modulus, 1e-6 * modulus, 1e4 * modulus, true}}, terms, {}};
+    for (std::size_t k = 0; k < terms; ++k) {
+        const double x = (static_cast<double>(k) + 0.5) / static_cast<double>(terms);
+        const double tau = std::pow(window.shortest, 1.0 - x) * std::pow(window.longest, x);
+        material.parameters.push_back({fmt::format("material.terms[{}][0]", k), modulus / static_cast<double>(terms),
+                                       1e-6 * modulus, 1e4 * modulus, true});
+        material.parameters.push_back(
+            {fmt::format("material.terms[{}][1]", k), tau, 1e-2 * window.shortest, 1e2 * window.longest, true});
+    }
+    return material;
+}
+
+Material spectrum(const SpectrumSettings& settings, double modulus, const Window& window) {
+    Material material{"spectrum", {}, 0, spectrum_grid(window.shortest, window.longest, settings.per_decade)};
+    if (material.grid.size() > max_spectrum_terms) {
+        throw InvalidInput("fit.spectrum.per_decade", format_value(settings.per_decade),
+                           fmt::format("gives {} relaxation times between {:.3g} s and {:.3g} s: at most {}",
+                                       material.grid.size(), window.shortest, window.longest, max_spectrum_terms));
+    }
+    const double start = 0.5 * modulus / static_cast<double>(material.grid.size());
+    material.parameters.push_back({"material.G_inf", 0.5 * modulus, 0.0, 1e3 * modulus, false});
+    for (std::size_t j = 0; j < material.grid.size(); ++j) {
+        material.parameters.push_back({fmt::format("spectrum.G[{}]", j), start, 0.0, 1e3 * modulus, false});
+    }
+    return material;
+}
+
+Material candidate(const std::string& name, const CandidateSettings& settings, double modulus, const Window& window) {
+    if (name == "elastic") return elastic(modulus);
+    if (name == "standard") return prony(name, 1, modulus, window);
+    if (name == "spectrum") return spectrum(settings.spectrum.value_or(SpectrumSettings{}), modulus, window);
+    return prony(name, static_cast<std::size_t>(std::stoul(name.substr(5))), modulus, window);  // "pronyN", read
+}
+
+// The case with an elastic body of modulus `modulus`: the base of every candidate. Refuses a compressible body or a
+// viscoelastic indenter, whose material the candidates would silently drop.
+io::FitCase base_case(const io::FitCase& fit_case, double modulus) {
+    io::FitCase base = fit_case;
+    if (fit_case.model.build().shear_material) {
+        throw InvalidInput("fit.candidates", "[material] with K or [material.bulk]",
+                           "the candidates replace the shear material: give an incompressible [material]");
+    }
+    base.model.set_table("material", fmt::format("model = \"elastic\"\nG = {}\n", modulus));
+    const auto built = base.model.build();
+    if (!built.material.terms().empty() || built.material.equilibrium_modulus() != modulus) {
+        throw InvalidInput("fit.candidates", "[indenter.material]",
+                           "the candidates replace the body's material: give a rigid indenter");
+    }
+    return base;
+}
+
+// A start modulus from the case's own material: G(0+), or eta / T for a viscous body.
+double case_modulus(const io::FitCase& fit_case, const Window& window) {
+    const auto material = fit_case.model.build().material;
+    const double modulus = material.relaxation(0.0);
+    return modulus > 0.0 ? modulus : material.viscosity() / window.longest;
+}
+
+CandidateFit fit_material(const io::FitCase& base, const Material& material, const std::vector<double>& indenter,
+                          const std::vector<Curve>& curves, const std::vector<std::vector<double>>& penalty) {
+    FitProblem problem;
+    problem.parameters = base.parameters;  // the indenter's free keys (parse_fit_case allows no others here)
+    for (std::size_t j = 0; j < indenter.size(); ++j) problem.parameters[j].start = indenter[j];
+    const std::size_t offset = problem.parameters.size();
+    problem.parameters.insert(problem.parameters.end(), material.parameters.begin(), material.parameters.end());
+    problem.curves = curves;
+    problem.settings = base.settings;
+    problem.penalty = penalty;
+    std::vector<std::string> keys;
+    for (std::size_t j = 0; j < offset; ++j) keys.push_back(problem.parameters[j].name);
+    if (keys.empty()) {
+        problem.model = [built = base.model.build(), material](const std::vector<double>& values) {
+            auto model = built;
+            model.material = make_material(material, values.data());
+            return model;
+        };
+    } else {
+        problem.model = [model = base.model, keys, material](const std::vector<double>& values) {
+            io::CaseTemplate copy = model;
+            for (std::size_t j = 0; j < keys.size(); ++j) copy.set_number(keys[j], values[j]);
+            auto built = copy.build();
+            built.material = make_material(material, values.data() + keys.size());
+            return built;
+        };
+    }
+    CandidateFit fitted{material.name, fit(problem), base, material.grid, 0.0, 0.0};
+    fitted.fitted_case.model.set_table("material", material_text(material, fitted.result.values.data() + offset));
+    return fitted;
+}
+
+// The smoothing penalty of a spectrum (SpectrumSettings::smoothing): rows w (G_j+1 - G_j) / G_e, w = s sqrt(n).
+std::vector<std::vector<double>> smoothing_penalty(const Material& material, std::size_t offset, double smoothing,
+                                                   double modulus, const std::vector<Curve>& curves) {
+    std::vector<std::vector<double>> rows;
+    if (smoothing <= 0.0) return rows;
+    std::size_t points = 0;
+    for (const auto& curve : curves) points += curve.time.size();
+    const double weight = smoothing * std::sqrt(static_cast<double>(points)) / modulus;
+    for (std::size_t j = 0; j + 1 < material.grid.size(); ++j) {
+        std::vector<double> row(offset + material.parameters.size(), 0.0);
+        row[offset + 1 + j] = -weight;  // the moduli follow G_inf
+        row[offset + 2 + j] = weight;
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+// A spectrum's start by a bounded linear solve: under displacement control the force is linear in the moduli
+// wherever the contact radius follows from the depth alone (eq. 18 and 21: loading and holds), so with the contact
+// points and baselines at their start values the moduli minimising the noise-weighted residuals and the penalty
+// (G_inf and one unit term per grid time as basis curves, M + 1 forward runs per curve) are the non-negative
+// least-squares solution. With unloading (the contact recedes as the material dictates) or a fitted contact point
+// this is a start close to the optimum, which the Levenberg-Marquardt fit then refines.
+std::vector<double> linear_start(const io::FitCase& base, const Material& material, const std::vector<double>& indenter,
+                                 const std::vector<Curve>& curves, const std::vector<std::vector<double>>& penalty) {
+    io::CaseTemplate model = base.model;
+    for (std::size_t j = 0; j < indenter.size(); ++j) model.set_number(base.parameters[j].name, indenter[j]);
+    const drivers::ContactCase built = model.build();
+    const auto columns = static_cast<Eigen::Index>(material.parameters.size());
+    std::vector<Eigen::VectorXd> blocks_b;
+    std::vector<Eigen::MatrixXd> blocks_A;
+    Eigen::Index rows = 0;
+    // The elements as fit() chooses them: from the smallest noise relative to its curve's peak force.
+    double noise_to_peak = 1.0;
+    for (const auto& curve : curves) {
+        const CurveModel prepared = prepare_curve(curve, Fitted::force, 0.0);
+        double peak = 0.0;
+        for (double value : curve.force) peak = std::max(peak, std::abs(value));
+        if (peak > 0.0) noise_to_peak = std::min(noise_to_peak, prepared.noise / peak);
+    }
+    const std::size_t elements =
+        base.settings.elements.value_or(built.numerics.elements.value_or(default_fit_elements(noise_to_peak)));
+    for (const auto& curve : curves) {
+        const bool fixed_contact = base.settings.contact_point == ContactPointMode::fixed;
+        const double contact = fixed_contact ? 0.0 : curve.contact_depth;
+        const double baseline = base.settings.baseline == BaselineMode::fixed ? 0.0 : curve.force_baseline;
+        const CurveModel prepared = prepare_curve(curve, Fitted::force, baseline);
+        const auto n = static_cast<Eigen::Index>(prepared.used.size());
+        Eigen::MatrixXd A(n, columns);
+        Eigen::VectorXd b(n);
+        for (Eigen::Index i = 0; i < n; ++i) b[i] = (curve.force[prepared.used[static_cast<std::size_t>(i)]] - baseline) / prepared.noise;
+        for (Eigen::Index j = 0; j < columns; ++j) {
+            drivers::ContactCase basis = built;
+            basis.material = j == 0 ? rheology::Rheology::elastic(1.0)
+                                    : rheology::Rheology::prony(0.0, {{1.0, material.grid[static_cast<std::size_t>(j - 1)]}});
+            const auto force = run_curve(std::move(basis), prepared, contact, 0.0, elements);
+            for (Eigen::Index i = 0; i < n; ++i) A(i, j) = force[static_cast<std::size_t>(i)] / prepared.noise;
+        }
+        rows += n;
+        blocks_A.push_back(std::move(A));
+        blocks_b.push_back(std::move(b));
+    }
+    const std::size_t offset = indenter.size();
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(rows + static_cast<Eigen::Index>(penalty.size()), columns);
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(A.rows());
+    Eigen::Index row = 0;
+    for (std::size_t c = 0; c < blocks_A.size(); ++c) {
+        A.middleRows(row, blocks_A[c].rows()) = blocks_A[c];
+        b.segment(row, blocks_b[c].size()) = blocks_b[c];
+        row += blocks_A[c].rows();
+    }
+    for (const auto& penalty_row : penalty) {
+        for (Eigen::Index j = 0; j < columns; ++j) A(row, j) = penalty_row[offset + static_cast<std::size_t>(j)];
+        ++row;
+    }
+    const Eigen::VectorXd x = non_negative_least_squares(A, b);
+    std::vector<double> start(x.data(), x.data() + x.size());
+    for (std::size_t j = 0; j < start.size(); ++j) start[j] = std::min(start[j], material.parameters[j].upper);
+    return start;
+}
+
+}  // namespace
+
+std::vector<double> spectrum_grid(double shortest, double longest, double per_decade) {
+    std::vector<double> grid{longest};
+    for (std::size_t j = 1;; ++j) {
+        const double tau = longest * std::pow(10.0, -static_cast<double>(j) / per_decade);
+        if (tau < shortest * (1.0 - 1e-12) || grid.size() > max_spectrum_terms) break;
+        grid.push_back(tau);
+    }
+    std::reverse(grid.begin(), grid.end());
+    return grid;
+}
+
+ModelChoice fit_candidates(const io::FitCase& fit_case, const std::vector<Curve>& curves) {
+    if (curves.empty()) {
+        throw InvalidInput("fit.data", "(missing)", "give at least one measured curve ([[fit.data]] or arrays)");
+    }
+    const Window window = time_window(curves);
+    const CandidateSettings& settings = fit_case.model_choice;
+    const std::vector<std::string> names = settings.candidates.empty() ? std::vector<std::string>{"spectrum"}
+                                                                      : settings.candidates;
+    const double start = case_modulus(fit_case, window);
+    const io::FitCase base = base_case(fit_case, start);
+    std::vector<double> indenter;
+    for (const auto& parameter : base.parameters) indenter.push_back(parameter.start);
+
+    // The elastic fit first: its modulus is the scale of every other start value.
+    CandidateFit reference = fit_material(base, elastic(start), indenter, curves, {});
+    const std::size_t offset = base.parameters.size();
+    ModelChoice choice;
+    choice.modulus_scale = reference.result.values[offset];
+    choice.shortest_interval = window.shortest;
+    choice.longest_record = window.longest;
+    indenter.assign(reference.result.values.begin(), reference.result.values.begin() + static_cast<std::ptrdiff_t>(offset));
+    // Fitted contact points and baselines start where the elastic fit put them.
+    std::vector<Curve> started_curves = curves;
+    for (std::size_t c = 0; c < curves.size(); ++c) {
+        if (base.settings.contact_point == ContactPointMode::fit) {
+            started_curves[c].contact_depth = reference.result.curves[c].contact_depth;
+        }
+        if (base.settings.baseline == BaselineMode::fit) started_curves[c].force_baseline = reference.result.curves[c].baseline;
+    }
+
+    for (const auto& name : names) {
+        if (name == "elastic") {
+            choice.fits.push_back(reference);
+            continue;
+        }
+        const Material material = candidate(name, settings, choice.modulus_scale, window);
+        Material started = material;
+        const double smoothing = material.spectrum() ? settings.spectrum.value_or(SpectrumSettings{}).smoothing : 0.0;
+        const auto penalty = smoothing_penalty(material, offset, smoothing, choice.modulus_scale, curves);
+        if (material.spectrum() && base.settings.fitted == Fitted::force) {
+            const auto linear = linear_start(base, material, indenter, started_curves, penalty);
+            for (std::size_t j = 0; j < linear.size(); ++j) started.parameters[j].start = linear[j];
+        }
+        choice.fits.push_back(fit_material(base, started, indenter, started_curves, penalty));
+    }
+
+    std::stable_sort(choice.fits.begin(), choice.fits.end(),
+                     [](const CandidateFit& a, const CandidateFit& b) { return a.result.bic < b.result.bic; });
+    double aic = std::numeric_limits<double>::infinity();
+    for (const auto& fitted : choice.fits) aic = std::min(aic, fitted.result.aic);
+    choice.preferred = choice.fits.size();
+    for (std::size_t i = 0; i < choice.fits.size(); ++i) {
+        auto& fitted = choice.fits[i];
+        fitted.delta_aic = fitted.result.aic - aic;
+        fitted.delta_bic = fitted.result.bic - choice.fits.front().result.bic;
+        const bool sound = fitted.result.converged && fitted.result.undetermined.empty();
+        if (sound && choice.preferred == choice.fits.size()) choice.preferred = i;
+    }
+    if (choice.preferred == choice.fits.size()) choice.preferred = 0;
+    return choice;
+}
+
+}  // namespace mdr::fit

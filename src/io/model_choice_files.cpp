@@ -1,0 +1,94 @@
+#include "mdr/io/model_choice_files.hpp"
+
+#include <fmt/format.h>
+#include <fmt/os.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "mdr/io/fit_files.hpp"
+
+namespace mdr::io {
+
+namespace {
+
+nlohmann::ordered_json number(double value) { return std::isfinite(value) ? nlohmann::ordered_json(value) : nullptr; }
+
+double ratio(const fit::FitResult& result) { return result.noise > 0.0 ? result.rms_residual / result.noise : NAN; }
+
+// spectrum.csv: term,tau,modulus,standard_error; G_inf first with tau = inf.
+void write_spectrum(const std::filesystem::path& directory, const fit::CandidateFit& spectrum) {
+    const auto& result = spectrum.result;
+    const std::size_t offset = result.values.size() - spectrum.relaxation_times.size() - 1;
+    auto csv = fmt::output_file((directory / "spectrum.csv").string());
+    csv.print("term,tau,modulus,standard_error\n");
+    csv.print("G_inf,inf,{},{}\n", result.values[offset], result.standard_errors[offset]);
+    for (std::size_t j = 0; j < spectrum.relaxation_times.size(); ++j) {
+        csv.print("{},{},{},{}\n", j, spectrum.relaxation_times[j], result.values[offset + 1 + j],
+                  result.standard_errors[offset + 1 + j]);
+    }
+    csv.close();
+}
+
+void write_candidate(const std::filesystem::path& directory, const fit::CandidateFit& fitted) {
+    write_fit_result(directory, fitted.fitted_case, fitted.result);
+    if (!fitted.relaxation_times.empty()) write_spectrum(directory, fitted);
+}
+
+}  // namespace
+
+std::string ranking_json(const fit::ModelChoice& choice) {
+    nlohmann::ordered_json json;
+    json["criterion"] = "bic";
+    json["preferred"] = choice.fits[choice.preferred].name;
+    json["modulus_scale"] = number(choice.modulus_scale);
+    json["time_window"] = {number(choice.shortest_interval), number(choice.longest_record)};
+    nlohmann::ordered_json candidates = nlohmann::ordered_json::array();
+    for (const auto& fitted : choice.fits) {
+        const auto& result = fitted.result;
+        nlohmann::ordered_json undetermined = nlohmann::ordered_json::array();
+        for (const auto& entry : result.undetermined) undetermined.push_back(entry.name);
+        candidates.push_back({{"name", fitted.name},
+                              {"status", result.status},
+                              {"converged", result.converged},
+                              {"free_count", result.free_count},
+                              {"rms_residual", number(result.rms_residual)},
+                              {"noise", number(result.noise)},
+                              {"residual_to_noise", number(ratio(result))},
+                              {"aic", number(result.aic)},
+                              {"bic", number(result.bic)},
+                              {"delta_aic", number(fitted.delta_aic)},
+                              {"delta_bic", number(fitted.delta_bic)},
+                              {"undetermined", undetermined},
+                              {"evaluations", result.evaluations},
+                              {"wall_seconds", result.wall_seconds}});
+    }
+    json["candidates"] = candidates;
+    return json.dump(2);
+}
+
+void write_model_choice(const std::filesystem::path& directory, const FitCase& fit_case,
+                        const fit::ModelChoice& choice) {
+    if (fit_case.model_choice.candidates.empty()) {  // a spectrum alone
+        write_candidate(directory, choice.fits.front());
+        return;
+    }
+    auto csv = fmt::output_file((directory / "models.csv").string());
+    csv.print("rank,candidate,free_count,rms_residual,residual_to_noise,aic,bic,delta_aic,delta_bic,converged,"
+              "undetermined,wall_seconds\n");
+    for (std::size_t i = 0; i < choice.fits.size(); ++i) {
+        const auto& fitted = choice.fits[i];
+        const auto& result = fitted.result;
+        csv.print("{},{},{},{},{},{},{},{},{},{},{},{}\n", i + 1, fitted.name, result.free_count, result.rms_residual,
+                  ratio(result), result.aic, result.bic, fitted.delta_aic, fitted.delta_bic, result.converged,
+                  result.undetermined.size(), result.wall_seconds);
+        std::filesystem::create_directory(directory / fitted.name);
+        write_candidate(directory / fitted.name, fitted);
+    }
+    csv.close();
+    auto json = fmt::output_file((directory / "ranking.json").string());
+    json.print("{}\n", ranking_json(choice));
+    json.close();
+}
+
+}  // namespace mdr::io

@@ -1,0 +1,83 @@
+"""`mdr fit` with fit.candidates and [fit.spectrum] on Hertz data (closed form): the ranking and the folders of
+the result directory, a spectrum's fitted case that runs, and bad candidate input refused with one line."""
+
+from __future__ import annotations
+
+import csv
+import json
+
+import pytest
+
+from test_bad_input import assert_bad_input
+from test_fit import G_TRUE, write_curve
+
+CASE = """
+[material]
+model = "elastic"
+G = 5.0e4
+[indenter]
+shape = "sphere"
+R = 5.0e-4
+[fit]
+elements = 300
+{extra}
+[[fit.data]]
+file = "curve.csv"
+time = "t"
+depth = "depth_um"
+force = "force_uN"
+units = {{ length = "um", force = "uN" }}
+"""
+
+
+@pytest.fixture
+def case(workdir):
+    write_curve(workdir / "curve.csv")
+
+    def make(extra):
+        path = workdir / "case.toml"
+        path.write_text(CASE.format(extra=extra), encoding="utf-8")
+        return path
+
+    return make
+
+
+def test_candidates_are_ranked_and_written_in_folders(run_mdr, case, workdir):
+    result = run_mdr("fit", case('candidates = ["standard", "elastic"]'), "--out", workdir / "out", timeout=300)
+    assert result.returncode == 0, result.stderr
+    assert "preferred: elastic" in result.stdout
+    out = workdir / "out"
+    ranking = json.loads((out / "ranking.json").read_text())
+    assert ranking["criterion"] == "bic" and ranking["preferred"] == "elastic"
+    assert [entry["name"] for entry in ranking["candidates"]] == ["elastic", "standard"]
+    with open(out / "models.csv", newline="", encoding="utf-8") as handle:
+        rows = list(csv.DictReader(handle))
+    assert [row["candidate"] for row in rows] == ["elastic", "standard"]
+    assert float(rows[0]["delta_bic"]) == 0.0 and float(rows[1]["delta_bic"]) > 0.0
+    for name in ("elastic", "standard"):
+        assert {"fit.json", "fitted.toml", "curves.csv"} <= {p.name for p in (out / name).iterdir()}
+    elastic = json.loads((out / "elastic" / "fit.json").read_text())
+    assert elastic["parameters"]["material.G"] == pytest.approx(G_TRUE, rel=2e-2)
+
+
+def test_a_spectrum_alone_writes_one_fit_and_its_moduli(run_mdr, case, workdir):
+    result = run_mdr("fit", case("[fit.spectrum]\nper_decade = 1"), "--out", workdir / "out", timeout=300)
+    assert result.returncode == 0, result.stderr
+    out = workdir / "out"
+    with open(out / "spectrum.csv", newline="", encoding="utf-8") as handle:
+        rows = list(csv.DictReader(handle))
+    assert rows[0]["term"] == "G_inf" and len(rows) >= 3
+    assert all(float(row["modulus"]) >= 0.0 for row in rows)
+    again = run_mdr("run", out / "fitted.toml", "--out", workdir / "again")
+    assert again.returncode == 0, again.stderr
+
+
+@pytest.mark.parametrize("extra, fragments", [
+    ('candidates = ["prony9"]', ["fit.candidates[0]", "one of elastic"]),
+    ('candidates = ["elastic", "elastic"]', ["fit.candidates[1]", "named twice"]),
+    ('candidates = ["standard"]\nfree = ["material.G"]', ["fit.free = material.G", "indenter keys only"]),
+    ("[fit.spectrum]\nper_decade = 50", ["fit.spectrum.per_decade = 50", "at most 20"]),
+    ("[fit.spectrum]\nsmoothing = -1", ["fit.spectrum.smoothing", ">= 0"]),
+])
+def test_bad_candidates(run_mdr, case, workdir, extra, fragments):
+    assert_bad_input(run_mdr("fit", case(extra), "--out", workdir / "out"), *fragments)
