@@ -8,7 +8,7 @@
 
 #include "curve_model.hpp"
 #include "mdr/error.hpp"
-#include "nnls.hpp"
+#include "mdr/numerics/nonnegative_least_squares.hpp"
 
 namespace mdr::fit {
 
@@ -237,8 +237,10 @@ std::vector<double> linear_start(const io::FitCase& base, const Material& materi
         for (Eigen::Index j = 0; j < columns; ++j) A(row, j) = penalty_row[offset + static_cast<std::size_t>(j)];
         ++row;
     }
-    const Eigen::VectorXd x = non_negative_least_squares(A, b);
-    std::vector<double> start(x.data(), x.data() + x.size());
+    numerics::ColumnMatrix matrix{static_cast<std::size_t>(A.rows()), static_cast<std::size_t>(A.cols()),
+                                  std::vector<double>(A.data(), A.data() + A.size())};  // Eigen is column-major
+    std::vector<double> start =
+        numerics::nonnegative_least_squares(matrix, std::vector<double>(b.data(), b.data() + b.size())).x;
     for (std::size_t j = 0; j < start.size(); ++j) start[j] = std::min(start[j], material.parameters[j].upper);
     return start;
 }
