@@ -8,6 +8,8 @@
 
 #include "curve_model.hpp"
 #include "mdr/error.hpp"
+#include <Eigen/Dense>
+
 #include "mdr/numerics/nonnegative_least_squares.hpp"
 
 namespace mdr::fit {
