@@ -27,6 +27,7 @@ void add_fit_command(CLI::App& app, int& exit_code) {
             auto [fit_case, problem] = [&] {
                 const SetupProgress preparing;
                 auto read = io::load_fit_case(*case_path);
+                read.settings.check_interrupt = throw_if_interrupted;  // Ctrl-C stops the fit at its next model run
                 auto curves = fit::load_curves(read);
                 if (!read.model_choice.empty()) {  // candidates: each builds its own problem from the curves
                     fit::FitProblem curves_only;

@@ -3,6 +3,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "mdr/error.hpp"
 #include "mdr/fit/candidates.hpp"
 #include "mdr/fit/fit_case_run.hpp"
 #include "mdr/io/fit_files.hpp"
@@ -37,7 +38,25 @@ py::dict fit_output(const io::FitCase& fit_case, const fit::FitResult& result) {
 // A fit case from TOML text; `curves` (name, t, d, F), when not empty, replace its [[fit.data]].
 py::dict fit_toml_case(const std::string& toml_text, const std::string& source, const std::string& directory,
                        const std::vector<CurveArrays>& curves) {
-    const auto fit_case = io::parse_fit_case(toml_text, source, directory);
+    auto fit_case = io::parse_fit_case(toml_text, source, directory);
+    // Ctrl-C (a pending signal) stops the fit at its next model run or progress report with KeyboardInterrupt.
+    bool signalled = false;
+    fit_case.settings.check_interrupt = [&signalled] {
+        py::gil_scoped_acquire acquire;
+        if (PyErr_CheckSignals() != 0) {
+            signalled = true;
+            throw Interrupted();
+        }
+    };
+    const auto solve = [&signalled](const auto& body) {
+        try {
+            py::gil_scoped_release release;
+            body();
+        } catch (const Interrupted&) {
+            if (signalled) throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals raised
+            throw;
+        }
+    };
     std::vector<fit::Curve> loaded;
     if (curves.empty()) {
         loaded = fit::load_curves(fit_case);
@@ -46,10 +65,7 @@ py::dict fit_toml_case(const std::string& toml_text, const std::string& source, 
     }
     if (!fit_case.model_choice.empty()) {
         fit::ModelChoice choice;
-        {
-            py::gil_scoped_release release;
-            choice = fit::fit_candidates(fit_case, loaded);
-        }
+        solve([&] { choice = fit::fit_candidates(fit_case, loaded); });
         py::list candidates;
         for (const auto& fitted : choice.fits) {
             py::dict entry = fit_output(fitted.fitted_case, fitted.result);
@@ -64,10 +80,7 @@ py::dict fit_toml_case(const std::string& toml_text, const std::string& source, 
     }
     const auto problem = fit::make_problem(fit_case, std::move(loaded));
     fit::FitResult result;
-    {
-        py::gil_scoped_release release;
-        result = fit::fit(problem);
-    }
+    solve([&] { result = fit::fit(problem); });
     return fit_output(fit_case, result);
 }
 

@@ -4,6 +4,8 @@
 #include <exception>
 #include <limits>
 
+#include "mdr/error.hpp"
+
 namespace mdr::fit {
 
 namespace {
@@ -38,10 +40,12 @@ double CurveCost::baseline(const double* nuisance) const {
 }
 
 std::vector<double> CurveCost::model(const double* shared, const double* nuisance) const {
+    if (problem_.settings.check_interrupt) problem_.settings.check_interrupt();
     ++evaluations_;
     auto model_case = problem_.model(scales_.values(shared));
     const std::size_t elements = problem_.settings.elements.value_or(model_case.numerics.elements.value_or(elements_));
-    return run_curve(std::move(model_case), prepared_, contact_depth(nuisance), baseline(nuisance), elements);
+    return run_curve(std::move(model_case), prepared_, contact_depth(nuisance), baseline(nuisance), elements,
+                     problem_.settings.check_interrupt);
 }
 
 bool CurveCost::residuals_at(const double* shared, const double* nuisance, double* residuals) const {
@@ -54,6 +58,8 @@ bool CurveCost::residuals_at(const double* shared, const double* nuisance, doubl
             if (!std::isfinite(residuals[i])) return false;
         }
         return true;
+    } catch (const Interrupted&) {
+        throw;  // a stop on request ends the fit
     } catch (const std::exception&) {
         return false;  // values where the model cannot run (bounds of work, a rule of the case): a rejected step
     }

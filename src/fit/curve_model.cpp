@@ -26,7 +26,7 @@ CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline) {
 }
 
 std::vector<double> run_curve(drivers::ContactCase model_case, const CurveModel& prepared, double contact_depth,
-                              double baseline, std::size_t elements) {
+                              double baseline, std::size_t elements, const std::function<void()>& check_interrupt) {
     const Curve& curve = *prepared.curve;
     const bool depth_driven = prepared.fitted == Fitted::force;
     std::vector<drivers::LoadPoint> points;
@@ -58,7 +58,9 @@ std::vector<double> run_curve(drivers::ContactCase model_case, const CurveModel&
         model_case.numerics.time_step = widest;
         model_case.numerics.min_segment_steps = 1;
     }
-    const auto result = drivers::run_case(model_case);
+    drivers::ProgressObserver progress;
+    if (check_interrupt) progress = [&](double) { check_interrupt(); };
+    const auto result = drivers::run_case(model_case, progress);
 
     // The rows at the measured times: the grid has every history point as a node (the last row of a time counts).
     std::vector<double> model;

@@ -3,6 +3,7 @@
 /// The forward model of one measured curve (internal to mdr_fit): the measured depth (or force) drives the case,
 /// and the model's force (or depth) is read at the measured times.
 
+#include <functional>
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
@@ -27,9 +28,11 @@ CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline);
 /// `model_case` with its load replaced by
 /// the curve's history (depth minus contact_depth under displacement control; force minus baseline, and 0 below
 /// it, under force control) run with `elements` elements and the curve's own points as time steps. The depth
-/// model is the depth below the contact point. Throws what the drivers throw.
+/// model is the depth below the contact point. `check_interrupt`, when set, is called at the drivers' progress
+/// reports (it may throw mdr::Interrupted). Throws what the drivers throw.
 std::vector<double> run_curve(drivers::ContactCase model_case, const CurveModel& prepared, double contact_depth,
-                              double baseline, std::size_t elements);
+                              double baseline, std::size_t elements,
+                              const std::function<void()>& check_interrupt = {});
 
 
 }  // namespace mdr::fit

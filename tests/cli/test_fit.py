@@ -127,3 +127,23 @@ def test_a_curve_that_never_makes_contact(run_mdr, fit_case, workdir):
         for i in range(50):
             writer.writerow([0.01 * i, -1.0, 0.0])
     assert_bad_input(run_mdr("fit", path, "--out", workdir / "out"), "never makes contact")
+
+
+def test_ctrl_c_stops_a_fit_and_leaves_nothing(mdr_binary, fit_case, workdir):
+    import signal
+    import subprocess
+    import time
+
+    path = fit_case("elements = 200000")  # long model runs: the fit is stopped at the next one
+    process = subprocess.Popen([mdr_binary, "fit", str(path), "--out", str(workdir / "out")], cwd=workdir,
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(1.5)
+    assert process.poll() is None, "the fit ended before it could be interrupted"
+    interrupted_at = time.monotonic()
+    process.send_signal(signal.SIGINT)
+    stdout, stderr = process.communicate(timeout=60)
+    assert time.monotonic() - interrupted_at < 10.0
+    assert process.returncode == 128 + signal.SIGINT
+    assert stderr.splitlines()[-1] == "mdr: interrupted; no result was written"
+    assert stdout == ""
+    assert sorted(p.name for p in workdir.iterdir()) == ["case.toml", "curve.csv"]

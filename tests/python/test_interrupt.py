@@ -44,3 +44,16 @@ def test_ctrl_c_stops_with_keyboard_interrupt(what):
     small = dict(LONG_CASE, numerics={"elements": 100, "time_step": 0.02})
     assert mdr.run(small).summary["max_force"] > 0.0
     assert list(mdr.sweep(small, {"material.G1": [1e6, 2e6]})["error"]) == ["", ""]
+
+
+def test_ctrl_c_stops_a_fit():
+    # A fit of many model runs (each of 200 000 elements): stopped at the next model run or progress report.
+    t = [0.01 * i for i in range(201)]
+    depth = [1e-4 * min(x, 1.0) for x in t]
+    force = [5.0 * d ** 1.5 for d in depth]
+    case = {"material": {"model": "standard", "G_inf": 1.0e6, "G1": 3.0e6, "tau1": 0.2},
+            "indenter": {"shape": "sphere", "R": 0.01},
+            "fit": {"free": ["material.G_inf", "material.G1", "material.tau1"], "elements": 200000,
+                    "contact_point": "fixed", "baseline": "fixed"}}
+    delay = interrupted_after(0.5, lambda: mdr.fit(case, data=[{"time": t, "depth": depth, "force": force}]))
+    assert delay < 5.0

@@ -55,6 +55,9 @@ struct FitSettings {
     /// Elements of the forward model's foundation; unset: the case's `[numerics] elements` or
     /// default_fit_elements.
     std::optional<std::size_t> elements;
+    /// Called before every model run and within long runs; throws mdr::Interrupted to stop the fit (Ctrl-C of the
+    /// command line or of Python). The fit then throws mdr::Interrupted and returns no result.
+    std::function<void()> check_interrupt{};
 };
 
 /// Elements of the forward model when neither the fit nor the case sets them: enough that the model's
