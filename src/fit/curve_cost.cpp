@@ -72,7 +72,6 @@ bool CurveCost::Evaluate(double const* const* parameters, double* residuals, dou
     std::vector<double> shared(parameters[0], parameters[0] + k);
     std::vector<double> nuisance(m);
     if (m > 0) nuisance.assign(parameters[1], parameters[1] + m);
-    if (!scales_.within_bounds(shared.data())) return false;  // Ceres keeps its points within them
     if (!residuals_at(shared.data(), nuisance.data(), residuals)) return false;
     if (jacobians == nullptr) return true;
 

@@ -33,10 +33,9 @@ public:
     double baseline(const double* nuisance) const;
     /// The curve as prepared for the model (its used points and noise).
     const CurveModel& prepared() const { return prepared_; }
-    /// The model of the fitted quantity at the used points (contact point and baseline included).
-    std::vector<double> model(const double* shared, const double* nuisance) const;
-
 private:
+    /// The model of the fitted quantity at the used points (contact point and baseline included): one forward run.
+    std::vector<double> model(const double* shared, const double* nuisance) const;
     bool residuals_at(const double* shared, const double* nuisance, double* residuals) const;
 
     const FitProblem& problem_;

@@ -68,15 +68,12 @@ void validate(const FitProblem& problem) {
 
 namespace {
 
-// The smallest noise relative to its curve's peak, over the curves (the noise floors of prepare_curve keep it > 0).
-double noise_to_peak(const FitProblem& problem, const std::vector<CurveModel>& prepared) {
+// The smallest noise relative to its curve's peak (the scales hold each curve's largest |force| and |depth|), over
+// the curves (the noise floors of prepare_curve keep it > 0).
+double noise_to_peak(Fitted fitted, const ParameterScales& scales, const std::vector<CurveModel>& prepared) {
     double ratio = 1.0;
     for (std::size_t c = 0; c < prepared.size(); ++c) {
-        const Curve& curve = problem.curves[c];
-        const auto& measured = problem.settings.fitted == Fitted::force ? curve.force : curve.depth;
-        double peak = 0.0;
-        for (double value : measured) peak = std::max(peak, std::abs(value));
-        if (peak > 0.0) ratio = std::min(ratio, prepared[c].noise / peak);
+        ratio = std::min(ratio, prepared[c].noise / (fitted == Fitted::force ? scales.force[c] : scales.depth[c]));
     }
     return ratio;
 }
@@ -117,7 +114,7 @@ FitResult fit(const FitProblem& problem) {
         if (scales.fit_baseline) nuisance[c].push_back(curve.force_baseline / scales.force[c]);
     }
 
-    const std::size_t elements = default_fit_elements(noise_to_peak(problem, prepared));
+    const std::size_t elements = default_fit_elements(noise_to_peak(problem.settings.fitted, scales, prepared));
     std::atomic<std::size_t> evaluations{0};
     ceres::Problem::Options problem_options;
     problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;

@@ -58,7 +58,6 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
         const auto& measured = problem.settings.fitted == Fitted::force ? data.force : data.depth;
         CurveFit curve;
         curve.name = data.name;
-        curve.model = cost.model(shared.data(), nuisance[c].data());
         curve.contact_depth = cost.contact_depth(nuisance[c].data());
         curve.baseline = cost.baseline(nuisance[c].data());
         curve.noise = prepared.noise;
@@ -66,6 +65,7 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
         for (std::size_t i = 0; i < n; ++i) {
             curve.time.push_back(data.time[prepared.used[i]]);
             curve.measured.push_back(measured[prepared.used[i]]);
+            curve.model.push_back(curve.measured[i] + r[i] * prepared.noise);  // r = (model - measured) / noise
             curve.drive.push_back(problem.settings.fitted == Fitted::force
                                       ? data.depth[prepared.used[i]] - curve.contact_depth
                                       : std::max(data.force[prepared.used[i]] - curve.baseline, 0.0));

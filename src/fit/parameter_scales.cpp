@@ -13,13 +13,6 @@ double ParameterScales::to_value(std::size_t j, double u) const {
     return scale[j] == 0.0 ? std::exp(u) : u * scale[j];
 }
 
-bool ParameterScales::within_bounds(const double* u) const {
-    for (std::size_t j = 0; j < scale.size(); ++j) {
-        if (!(u[j] >= lower[j] && u[j] <= upper[j])) return false;
-    }
-    return true;
-}
-
 std::vector<double> ParameterScales::values(const double* u) const {
     std::vector<double> result(scale.size());
     for (std::size_t j = 0; j < scale.size(); ++j) result[j] = to_value(j, u[j]);

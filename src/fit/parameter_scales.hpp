@@ -26,8 +26,6 @@ struct ParameterScales {
     double to_internal(std::size_t j, double value) const;
     /// The value of free parameter j at coordinate `u`.
     double to_value(std::size_t j, double u) const;
-    /// True when every coordinate of `u` lies within its bounds.
-    bool within_bounds(const double* u) const;
     /// The values of all free parameters at the coordinates `u`.
     std::vector<double> values(const double* u) const;
 };
