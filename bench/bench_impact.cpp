@@ -1,5 +1,5 @@
-// Impact (eq. 37-39): one impact at ~1e-4 accuracy in e, one at default numerics, and the 100 x 4 restitution map
-// of Fig. 3 on 1 and 2 threads (the map should scale with the cores).
+// Impact (eq. 37-39): one impact at ~1e-4 accuracy in e, one at default numerics (normal and oblique), and the
+// 100 x 4 restitution map of Fig. 3 on 1 and 2 threads (the map should scale with the cores).
 
 #include <benchmark/benchmark.h>
 
@@ -43,6 +43,13 @@ BENCHMARK(impact_at_1e4)->Unit(benchmark::kMicrosecond);
 
 void impact_at_defaults(benchmark::State& state) { run_impact(state, impact_case); }
 BENCHMARK(impact_at_defaults)->Unit(benchmark::kMillisecond);
+
+// The same impact oblique at v_t0 = 2 mu v_n0 (issue 13: at most twice the normal impact's cost): partial slip, the
+// stick zone opens and closes.
+void oblique_impact_at_defaults(benchmark::State& state) {
+    run_impact(state, impact_case + "tangential_velocity = 0.06\n[tangential]\nfriction = 0.3\n");
+}
+BENCHMARK(oblique_impact_at_defaults)->Unit(benchmark::kMillisecond);
 
 // p1 from 1e-3 to 1e2 (tau1 = p1 / 439.56 s^-1 for this case) and p2 = 0.5, 1, 3, 9, at the coarse numerics.
 void restitution_map(benchmark::State& state) {
