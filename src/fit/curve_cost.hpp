@@ -5,6 +5,7 @@
 #include <ceres/dynamic_cost_function.h>
 
 #include <atomic>
+#include <optional>
 #include <vector>
 
 #include "curve_model.hpp"
@@ -17,14 +18,18 @@ namespace mdr::fit {
 /// scaled by the curve's depth and force scales) when it has one.
 class CurveCost : public ceres::DynamicCostFunction {
 public:
-    /// `prepared` and `scales` must outlive the cost function; `elements` is the default of the forward model
-    /// (default_fit_elements) when neither the settings nor the case set them; `evaluations` counts the runs.
+    /// `prepared` and `scales` must outlive the cost function; `elements` is the default of the element model
+    /// (default_fit_elements) when neither the settings nor the case set them; `evaluations` counts the runs and
+    /// `element_evaluations` those of the element model.
     CurveCost(const FitProblem& problem, const ParameterScales& scales, const CurveModel& prepared, std::size_t curve,
-              std::size_t elements, std::atomic<std::size_t>& evaluations);
+              std::size_t elements, std::atomic<std::size_t>& evaluations,
+              std::atomic<std::size_t>& element_evaluations);
 
     /// Ceres' entry point: forward differences for the shared parameters and the contact point under
     /// displacement control, exact derivatives of the terms that enter linearly (the baseline of a fitted force,
-    /// the contact point of a fitted depth). Returns false when the model cannot be run at these values.
+    /// the contact point of a fitted depth). The continuum model runs where it applies at the point and at every
+    /// shifted point; otherwise all of them run on elements (one model per residual vector and Jacobian). Returns
+    /// false when the model cannot be run at these values.
     bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
 
     /// The contact point and baseline at these values.
@@ -34,9 +39,14 @@ public:
     /// The curve as prepared for the model (its used points and noise).
     const CurveModel& prepared() const { return prepared_; }
 private:
-    /// The model of the fitted quantity at the used points (contact point and baseline included): one forward run.
-    std::vector<double> model(const double* shared, const double* nuisance) const;
-    bool residuals_at(const double* shared, const double* nuisance, double* residuals) const;
+    /// What an evaluation with one forward model gave.
+    enum class Outcome { done, failed, outside_model };
+    /// The model of the fitted quantity at the used points (contact point and baseline included): one forward run;
+    /// nullopt when the continuum model was asked for and does not apply.
+    std::optional<std::vector<double>> model(const double* shared, const double* nuisance, ForwardModel forward) const;
+    Outcome residuals_at(const double* shared, const double* nuisance, ForwardModel forward, double* residuals) const;
+    Outcome evaluate_with(ForwardModel forward, double const* const* parameters, double* residuals,
+                          double** jacobians) const;
 
     const FitProblem& problem_;
     const ParameterScales& scales_;
@@ -44,6 +54,7 @@ private:
     std::size_t curve_;
     std::size_t elements_;
     std::atomic<std::size_t>& evaluations_;
+    std::atomic<std::size_t>& element_evaluations_;
 };
 
 }  // namespace mdr::fit

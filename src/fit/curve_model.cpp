@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "mdr/drivers/indentation.hpp"
+#include "ting_model.hpp"
 
 namespace mdr::fit {
 
@@ -25,10 +26,33 @@ CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline) {
     return prepared;
 }
 
-std::vector<double> run_curve(drivers::ContactCase model_case, const CurveModel& prepared, double contact_depth,
-                              double baseline, std::size_t elements, const std::function<void()>& check_interrupt) {
+namespace {
+
+// The continuum model's force at the used points, plus the baseline; nullopt outside its class.
+std::optional<std::vector<double>> continuum_forces(const drivers::ContactCase& model_case, const CurveModel& prepared,
+                                                    double contact_depth, double baseline) {
+    const Curve& curve = *prepared.curve;
+    std::vector<double> depth(curve.depth.size());
+    for (std::size_t i = 0; i < depth.size(); ++i) depth[i] = curve.depth[i] - contact_depth;
+    const auto forces = ting_forces(model_case.material, *model_case.indenter, curve.time, depth);
+    if (!forces) return std::nullopt;
+    std::vector<double> model;
+    model.reserve(prepared.used.size());
+    for (std::size_t i : prepared.used) model.push_back((*forces)[i] + baseline);
+    return model;
+}
+
+}  // namespace
+
+std::optional<std::vector<double>> run_curve(drivers::ContactCase model_case, const CurveModel& prepared,
+                                             double contact_depth, double baseline, std::size_t elements,
+                                             ForwardModel forward_model, const std::function<void()>& check_interrupt) {
     const Curve& curve = *prepared.curve;
     const bool depth_driven = prepared.fitted == Fitted::force;
+    if (forward_model == ForwardModel::continuum) {
+        if (!depth_driven) return std::nullopt;
+        return continuum_forces(model_case, prepared, contact_depth, baseline);
+    }
     std::vector<drivers::LoadPoint> points;
     points.reserve(curve.time.size() + 1);
     double widest = 0.0;

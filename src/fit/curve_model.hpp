@@ -4,6 +4,7 @@
 /// and the model's force (or depth) is read at the measured times.
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
@@ -24,15 +25,23 @@ struct CurveModel {
 /// drives it, the points where the force minus `baseline` is above 3 noise (the indenter is then in contact).
 CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline);
 
+/// Which forward model runs a curve.
+enum class ForwardModel {
+    continuum,  ///< the continuum foundation of ting_model.hpp (depth-driven curves in Ting's class only)
+    elements,   ///< the drivers' element foundation (any case)
+};
+
 /// The model of the fitted quantity at the used points (force plus baseline, or depth plus contact_depth):
-/// `model_case` with its load replaced by
-/// the curve's history (depth minus contact_depth under displacement control; force minus baseline, and 0 below
-/// it, under force control) run with `elements` elements and the curve's own points as time steps. The depth
-/// model is the depth below the contact point. `check_interrupt`, when set, is called at the drivers' progress
+/// `model_case` with its load replaced by the curve's history (depth minus contact_depth under displacement
+/// control; force minus baseline, and 0 below it, under force control). ForwardModel::elements runs the drivers
+/// with `elements` elements and the curve's own points as time steps (the depth model is the depth below the
+/// contact point); ForwardModel::continuum computes the force of a depth-driven curve exactly (ting_forces) and
+/// gives nullopt where that model does not apply. `check_interrupt`, when set, is called at the drivers' progress
 /// reports (it may throw mdr::Interrupted). Throws what the drivers throw.
-std::vector<double> run_curve(drivers::ContactCase model_case, const CurveModel& prepared, double contact_depth,
-                              double baseline, std::size_t elements,
-                              const std::function<void()>& check_interrupt = {});
+std::optional<std::vector<double>> run_curve(drivers::ContactCase model_case, const CurveModel& prepared,
+                                             double contact_depth, double baseline, std::size_t elements,
+                                             ForwardModel forward_model,
+                                             const std::function<void()>& check_interrupt = {});
 
 
 }  // namespace mdr::fit

@@ -115,13 +115,14 @@ FitResult fit(const FitProblem& problem) {
     }
 
     const std::size_t elements = default_fit_elements(noise_to_peak(problem.settings.fitted, scales, prepared));
-    std::atomic<std::size_t> evaluations{0};
+    std::atomic<std::size_t> evaluations{0}, element_evaluations{0};
     ceres::Problem::Options problem_options;
     problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     ceres::Problem solver_problem(problem_options);
     std::vector<std::unique_ptr<CurveCost>> costs;
     for (std::size_t c = 0; c < problem.curves.size(); ++c) {
-        costs.push_back(std::make_unique<CurveCost>(problem, scales, prepared[c], c, elements, evaluations));
+        costs.push_back(std::make_unique<CurveCost>(problem, scales, prepared[c], c, elements, evaluations,
+                                                    element_evaluations));
         std::vector<double*> blocks{shared.data()};
         if (m > 0) blocks.push_back(nuisance[c].data());
         solver_problem.AddResidualBlock(costs.back().get(), nullptr, blocks);
@@ -155,6 +156,7 @@ FitResult fit(const FitProblem& problem) {
     }
     describe_uncertainty(problem, scales, costs, shared, nuisance, result);
     result.evaluations = evaluations;
+    result.element_evaluations = element_evaluations;
     result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
     return result;
 }

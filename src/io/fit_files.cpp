@@ -69,6 +69,7 @@ std::string fit_json(const fit::FitResult& result) {
     json["free_count"] = result.free_count;
     json["iterations"] = result.iterations;
     json["evaluations"] = result.evaluations;
+    json["element_evaluations"] = result.element_evaluations;
     json["wall_seconds"] = result.wall_seconds;
     return json.dump(2);
 }

@@ -134,7 +134,8 @@ def test_ctrl_c_stops_a_fit_and_leaves_nothing(mdr_binary, fit_case, workdir):
     import subprocess
     import time
 
-    path = fit_case("elements = 200000")  # long model runs: the fit is stopped at the next one
+    # Long model runs (the element model of a force-driven fit): the fit is stopped at the next one.
+    path = fit_case('fitted = "depth"\nelements = 200000')
     process = subprocess.Popen([mdr_binary, "fit", str(path), "--out", str(workdir / "out")], cwd=workdir,
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     time.sleep(1.5)

@@ -47,13 +47,14 @@ def test_ctrl_c_stops_with_keyboard_interrupt(what):
 
 
 def test_ctrl_c_stops_a_fit():
-    # A fit of many model runs (each of 200 000 elements): stopped at the next model run or progress report.
+    # A fit of many model runs (force-driven: the element model, 200 000 elements): stopped at the next model run or
+    # progress report.
     t = [0.01 * i for i in range(201)]
     depth = [1e-4 * min(x, 1.0) for x in t]
     force = [5.0 * d ** 1.5 for d in depth]
     case = {"material": {"model": "standard", "G_inf": 1.0e6, "G1": 3.0e6, "tau1": 0.2},
             "indenter": {"shape": "sphere", "R": 0.01},
-            "fit": {"free": ["material.G_inf", "material.G1", "material.tau1"], "elements": 200000,
+            "fit": {"free": ["material.G_inf", "material.G1", "material.tau1"], "elements": 200000, "fitted": "depth",
                     "contact_point": "fixed", "baseline": "fixed"}}
     delay = interrupted_after(0.5, lambda: mdr.fit(case, data=[{"time": t, "depth": depth, "force": force}]))
     assert delay < 5.0

@@ -132,6 +132,10 @@ struct FitResult {
     std::size_t free_count = 0;              ///< k: free parameters including contact points and baselines
     std::size_t iterations = 0;              ///< Levenberg-Marquardt iterations
     std::size_t evaluations = 0;             ///< forward-model runs
+    /// Of those, runs of the element foundation: curves driven by force, and depth histories that the exact
+    /// continuum model does not cover (outside Ting's class: a reloading, a dip while loading; a parallel dashpot;
+    /// a flat or tabulated indenter). The other runs use that continuum model, which has no discretisation.
+    std::size_t element_evaluations = 0;
     double wall_seconds = 0.0;               ///< wall time of the fit
 };
 

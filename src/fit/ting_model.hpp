@@ -1,0 +1,40 @@
+#pragma once
+/// \file
+/// The force of the MDR foundation in its continuum limit (no elements, no discretisation in x) for a depth history
+/// in Ting's class: the fast forward model of depth-driven fits (internal to mdr_fit).
+///
+/// Element x enters contact at t_x, when the depth first reaches g(x) (eq. 14, 15). While it stays in contact,
+/// w1D = d(t) - g(x) (eq. 13): every element in contact has the rate d'(t), and its force per length is
+/// 4 Psi(t_x, t) with Psi(t_x, t) = int_{t_x}^t G(t - s) d'(s) ds (eq. 16). While the contact radius grows (and
+/// holds), the force is F(t) = 8 int_0^t G(t - s) a(s) d'(s) ds (eq. 21, Lee-Radok). Once it shrinks, the edge is the
+/// element t_1 whose force has fallen to zero, Psi(t_1, t) = 0 (eq. 20), and F(t) = 8 int_0^{t_1} G(t - s) a(s) d'(s)
+/// ds (Ting). For a Prony series each branch of G is a running sum over the steps, so a history of n points costs
+/// O(n x branches) instead of O(n x elements), and the force is exact up to the quadrature of one step (relative
+/// error ~1e-10).
+///
+/// Ting's class: Psi(t_1, t) is non-increasing in t_1 along the loading (dPsi/dt_1 = -G(t - t_1) d'(t_1) <= 0), so
+/// an element that left contact has Psi <= 0 as long as the edge never moves outwards again, and then it cannot
+/// come back into contact (its gap w_free - w1D = -int J(t - s) dPsi(s) stays positive, eq. 6). A history in which
+/// the edge would move outwards again (reloading after an unloading, a hold after a partial unloading, a depth
+/// that dips while it loads) is outside the class: the elements' own states decide it, and the model says so.
+
+#include <optional>
+#include <vector>
+
+#include "mdr/profile/profile.hpp"
+#include "mdr/rheology/rheology.hpp"
+
+namespace mdr::fit {
+
+/// True when the continuum model covers this material and indenter: no parallel dashpot, and a sphere, cone or
+/// power-law profile (closed-form g, contact radius smooth in the depth).
+bool ting_model_applies(const rheology::Rheology& material, const profile::Profile& indenter);
+
+/// The force [N] at each time of a depth history through the points (time[i], depth[i]) (linear between them,
+/// times increasing, depth below the contact point: <= 0 out of contact), incompressible body of `material` (the
+/// combined material of the case, eq. 8 and 56). nullopt when the history is outside Ting's class, when it starts
+/// in contact, or when !ting_model_applies.
+std::optional<std::vector<double>> ting_forces(const rheology::Rheology& material, const profile::Profile& indenter,
+                                               const std::vector<double>& time, const std::vector<double>& depth);
+
+}  // namespace mdr::fit

@@ -1,0 +1,178 @@
+// The continuum forward model of depth-driven fits (src/fit/ting_model.*) against the independent reference
+// solutions of the tests (Ting's triangle, the Lee-Radok quadrature for a load-hold), and the histories it must
+// refuse because they leave Ting's class. Its only error is the quadrature of one step: the force is exact for any
+// piecewise-linear depth, so a coarse sampling of the same history is as accurate as a fine one.
+
+#include "fit/exponential_quadrature.hpp"
+#include "fit/ting_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "mdr/profile/profile.hpp"
+#include "mdr/rheology/rheology.hpp"
+#include "reference/closed_forms.hpp"
+#include "reference/piecewise_linear.hpp"
+#include "reference/ting.hpp"
+
+namespace mdr::fit {
+namespace {
+
+rheology::Rheology library_material(const reference::PronyMaterial& material) {
+    std::vector<rheology::RelaxationTerm> terms;
+    for (const auto& [modulus, time] : material.terms) terms.push_back({modulus, time});
+    return rheology::Rheology(material.G_inf, 0.0, terms);
+}
+
+struct Shape {
+    std::string name;
+    std::shared_ptr<const profile::Profile> library;
+    reference::PowerLawIndenter reference;
+};
+
+std::vector<Shape> shapes() {
+    const double slope = 10.0 * std::numbers::pi / 180.0;
+    return {{"sphere", profile::make_sphere(1e-3), reference::sphere_indenter(1e-3)},
+            {"cone", profile::make_cone(10.0), reference::cone_indenter(slope)},
+            {"power 1.5", profile::make_power_law(0.5, 1.5), reference::PowerLawIndenter{0.5, 1.5}}};
+}
+
+std::vector<std::pair<std::string, reference::PronyMaterial>> materials() {
+    return {{"standard solid", {1e6, 0.0, {{2e6, 0.3}}}},
+            {"maxwell", {0.0, 0.0, {{1e6, 0.5}}}},
+            {"prony 3 (one term far shorter than a step)", {1e5, 0.0, {{2e5, 1e-4}, {5e5, 0.05}, {3e5, 2.0}}}}};
+}
+
+double largest(const std::vector<double>& values) {
+    double peak = 0.0;
+    for (double v : values) peak = std::max(peak, std::abs(v));
+    return peak;
+}
+
+// Ting's triangle d = v t up to t_m = 1 s and back, sampled from before contact to after contact loss: the force
+// at every point within 1e-9 of the peak, for 2401 and for 25 points (no time discretisation error).
+TEST(TingModel, TriangleAgreesWithTingsSolution) {
+    const double peak_depth = 1e-4;
+    for (const auto& shape : shapes()) {
+        for (const auto& [name, material] : materials()) {
+            const reference::TingSolution ting(shape.reference, material, peak_depth, 1.0);
+            for (std::size_t points : {2401u, 25u}) {  // the peak is a point of both
+                std::vector<double> time, depth, expected;
+                for (std::size_t i = 0; i < points; ++i) {
+                    const double t = -0.1 + 2.4 * static_cast<double>(i) / static_cast<double>(points - 1);
+                    time.push_back(t);
+                    depth.push_back(t < 1.0 ? peak_depth * t : peak_depth * (2.0 - t));
+                    expected.push_back(t <= 0.0 ? 0.0 : ting.force(t));
+                }
+                const auto forces = ting_forces(library_material(material), *shape.library, time, depth);
+                ASSERT_TRUE(forces.has_value()) << shape.name << ", " << name;
+                const double peak = largest(expected);
+                for (std::size_t i = 0; i < points; ++i) {
+                    ASSERT_NEAR((*forces)[i], expected[i], 1e-9 * peak)
+                        << shape.name << ", " << name << ", " << points << " points, t = " << time[i];
+                }
+            }
+        }
+    }
+}
+
+// Load, hold, unload to beyond contact loss against the Lee-Radok quadrature while loading and holding (the contact
+// radius does not shrink before the unloading).
+TEST(TingModel, LoadHoldAgreesWithLeeRadok) {
+    const double peak_depth = 2e-6;
+    const reference::PiecewiseLinear history{{0.0, 0.5, 1.5}, {0.0, peak_depth, peak_depth}};
+    for (const auto& shape : shapes()) {
+        for (const auto& [name, material] : materials()) {
+            std::vector<double> time, depth, expected;
+            for (int i = 0; i <= 300; ++i) {
+                const double t = -0.05 + 0.005 * i;
+                time.push_back(t);
+                depth.push_back(t < 0.0 ? peak_depth * t : history.value(t));
+                expected.push_back(t <= 0.0 ? 0.0 : reference::lee_radok_force(shape.reference, material, history, t));
+            }
+            const auto forces = ting_forces(library_material(material), *shape.library, time, depth);
+            ASSERT_TRUE(forces.has_value());
+            const double peak = largest(expected);
+            for (std::size_t i = 0; i < time.size(); ++i) {
+                ASSERT_NEAR((*forces)[i], expected[i], 1e-9 * peak) << shape.name << ", " << name << ", t = " << time[i];
+            }
+        }
+    }
+}
+
+// The product rule is exact for cubics whatever tau; the composite rule integrates a square-root start to 1e-12.
+TEST(ExponentialQuadrature, ExactForCubicsAndSquareRootStarts) {
+    const auto cubic = [](double s) { return 1.0 + s - 2.0 * s * s + 0.5 * s * s * s; };
+    for (double tau : {1e-3, 0.1, 1.0}) {
+        // int_0^1 exp(-(1 - s)/tau) p(s) ds by parts: tau [sum_k (-tau)^k p^(k)(1) - exp(-1/tau) sum_k (-tau)^k
+        // p^(k)(0)] (longer tau cancel in this form).
+        const double p1 = 0.5, d1 = 1.0 - 4.0 + 1.5, dd1 = -4.0 + 3.0, ddd = 3.0;
+        const double p0 = 1.0, d0 = 1.0, dd0 = -4.0;
+        const double at_one = p1 - tau * d1 + tau * tau * dd1 - tau * tau * tau * ddd;
+        const double at_zero = p0 - tau * d0 + tau * tau * dd0 - tau * tau * tau * ddd;
+        const double exact = tau * (at_one - std::exp(-1.0 / tau) * at_zero);
+        const auto w = ExponentialRule::weights(1.0 / tau);
+        double rule = 0.0;
+        for (std::size_t j = 0; j < w.size(); ++j) rule += w[j] * cubic(ExponentialRule::nodes()[j]);
+        EXPECT_NEAR(rule, exact, 1e-13) << "tau = " << tau;
+    }
+    const auto plain = ExponentialRule::weights(0.0);  // tau = +infinity
+    double rule = 0.0;
+    for (std::size_t j = 0; j < plain.size(); ++j) rule += plain[j] * cubic(ExponentialRule::nodes()[j]);
+    EXPECT_NEAR(rule, 1.0 + 0.5 - 2.0 / 3.0 + 0.125, 1e-14);
+    // int_0^1 sqrt(s) ds = 2/3 (tau infinite) and int_0^1 exp(-(1 - s)) sqrt(s) ds against a fine midpoint sum in
+    // the variable v = sqrt(s) (smooth there).
+    const auto root = [](double s) { return std::sqrt(s); };
+    EXPECT_NEAR(exponential_integral(root, 0.0, 1.0, std::numeric_limits<double>::infinity(), true), 2.0 / 3.0, 1e-14);
+    double midpoint = 0.0;
+    const int n = 200000;
+    for (int i = 0; i < n; ++i) {
+        const double v = (i + 0.5) / n;
+        midpoint += 2.0 * v * v * std::exp(-(1.0 - v * v)) / n;
+    }
+    EXPECT_NEAR(exponential_integral(root, 0.0, 1.0, 1.0, true), midpoint, 1e-10);
+}
+
+std::vector<double> uniform(double start, double end, std::size_t points) {
+    std::vector<double> values;
+    for (std::size_t i = 0; i < points; ++i) values.push_back(start + (end - start) * static_cast<double>(i) / static_cast<double>(points - 1));
+    return values;
+}
+
+// Histories where an element that left contact could be pushed back: the model refuses rather than guess.
+TEST(TingModel, RefusesHistoriesOutsideTingsClass) {
+    const auto sphere = profile::make_sphere(1e-3);
+    const auto material = rheology::Rheology::standard(1e6, 2e6, 0.3);
+    const auto time = uniform(0.0, 3.0, 301);
+    const auto depth_at = [&](auto shape) {
+        std::vector<double> depth;
+        for (double t : time) depth.push_back(shape(t));
+        return depth;
+    };
+    // Load, unload half, reload: the edge moves outwards again.
+    const auto cycle = depth_at([](double t) { return t < 1.0 ? 1e-4 * t : t < 1.5 ? 1e-4 * (2.0 - t) : 5e-5 + 1e-4 * (t - 1.5); });
+    EXPECT_FALSE(ting_forces(material, *sphere, time, cycle).has_value());
+    // Load, unload a little quickly, hold: relaxation pushes the edge out again.
+    const auto partial = depth_at([](double t) { return t < 1.0 ? 1e-4 * t : t < 1.01 ? 1e-4 * (1.0 - 5.0 * (t - 1.0)) : 0.95e-4; });
+    EXPECT_FALSE(ting_forces(material, *sphere, time, partial).has_value());
+    // A load that dips and goes on.
+    const auto dip = depth_at([](double t) { return 1e-4 * t + (std::abs(t - 1.0) < 0.015 ? -2e-6 : 0.0); });
+    EXPECT_FALSE(ting_forces(material, *sphere, time, dip).has_value());
+    // Starting in contact; a parallel dashpot; a flat punch: not covered.
+    const auto loading = depth_at([](double t) { return 1e-4 * t; });
+    auto shifted = loading;
+    for (double& d : shifted) d += 1e-6;
+    EXPECT_FALSE(ting_forces(material, *sphere, time, shifted).has_value());
+    EXPECT_FALSE(ting_forces(rheology::Rheology::kelvin_voigt(1e6, 1e5), *sphere, time, loading).has_value());
+    EXPECT_FALSE(ting_forces(material, *profile::make_flat_punch(1e-3), time, loading).has_value());
+    // While a plain load-hold-unload is covered.
+    const auto load_hold_unload = depth_at([](double t) { return t < 1.0 ? 1e-4 * t : t < 2.0 ? 1e-4 : 1e-4 * (3.0 - t); });
+    EXPECT_TRUE(ting_forces(material, *sphere, time, load_hold_unload).has_value());
+}
+
+}  // namespace
+}  // namespace mdr::fit
