@@ -14,6 +14,7 @@
 #include "curve_cost.hpp"
 #include "fit_diagnostics.hpp"
 #include "penalty_cost.hpp"
+#include "statistical_convergence.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::fit {
@@ -81,6 +82,7 @@ double noise_to_peak(Fitted fitted, const ParameterScales& scales, const std::ve
 std::string status_of(const ceres::Solver::Summary& summary) {
     switch (summary.termination_type) {
     case ceres::CONVERGENCE:
+    case ceres::USER_SUCCESS:  // StatisticalConvergence
         return "converged";
     case ceres::NO_CONVERGENCE:
         return fmt::format("did not converge in {} iterations", summary.iterations.size());
@@ -143,12 +145,14 @@ FitResult fit(const FitProblem& problem) {
     options.gradient_tolerance = 1e-14;
     options.num_threads = 1;
     options.logging_type = ceres::SILENT;
+    StatisticalConvergence statistical_convergence;
+    options.callbacks.push_back(&statistical_convergence);
     ceres::Solver::Summary summary;
     ceres::Solve(options, &solver_problem, &summary);
 
     FitResult result;
     result.status = status_of(summary);
-    result.converged = summary.termination_type == ceres::CONVERGENCE;
+    result.converged = summary.termination_type == ceres::CONVERGENCE || summary.termination_type == ceres::USER_SUCCESS;
     result.iterations = summary.iterations.empty() ? 0 : summary.iterations.size() - 1;
     for (std::size_t j = 0; j < k; ++j) {
         result.names.push_back(problem.parameters[j].name);

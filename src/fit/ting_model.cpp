@@ -117,6 +117,25 @@ public:
         return 8.0 * force;
     }
 
+    // A history that starts in contact: the depth jumps from 0 to `depth` at the first contact (the element model's
+    // convention for a first point in contact). Every branch takes the whole jump: Q_b = depth and
+    // R_b = int_0^depth a(d') dd' (the elastic integral of eq. 21). Returns the force 8 G(0) R.
+    double jump(double depth) {
+        const double time = times_.back();
+        const double integral = exponential_integral(
+            [&](double d) { return indenter_.contact_radius(d); }, 0.0, depth, infinity, true);
+        times_.push_back(time);
+        depths_.push_back(depth);
+        double force = 0.0;
+        for (const auto& branch : branches_) {
+            q_.push_back(depth);
+            r_.push_back(integral);
+            interval_decay_.push_back(1.0);
+            force += branch.modulus * integral;
+        }
+        return 8.0 * force;
+    }
+
     // The first step of unloading: the edge sits at the last node; the branches' factors exp(-(t_K - t_k) / tau)
     // relative to the last loading time t_K are taken once.
     void begin_unloading() {
@@ -131,7 +150,7 @@ public:
         }
         now_time_ = times_[last];
         edge_interval_ = last - 1;
-        edge_offset_ = times_[last] - times_[last - 1];
+        edge_offset_ = extent(edge_interval_);
         double scale = 0.0;
         for (const auto& branch : branches_) scale += branch.modulus;
         tolerance_ = 1e-12 * scale * depths_[last];
@@ -161,13 +180,18 @@ public:
                 return 0.0;
             }
             --edge_interval_;
-            upper = times_[edge_interval_ + 1] - times_[edge_interval_];
+            upper = extent(edge_interval_);
         }
         edge_offset_ = edge_root(edge_interval_, upper);
         return edge_force(edge_interval_, edge_offset_);
     }
 
 private:
+    // A loading interval is a step in time (offsets in it are times since its start) or, for a history that starts
+    // in contact, the jump at its first instant (length 0; offsets are depths above its start).
+    bool is_jump(std::size_t m) const { return times_[m + 1] == times_[m]; }
+    double extent(std::size_t m) const { return is_jump(m) ? depths_[m + 1] - depths_[m] : times_[m + 1] - times_[m]; }
+
     // Psi(t_k, t) of the element that entered at node k: sum_b G_b (Q_b(t) - exp(-(t - t_k)/tau_b) Q_b(t_k)).
     double node_memory(std::size_t k) const {
         const std::size_t n = branches_.size();
@@ -181,8 +205,19 @@ private:
     // Psi(t_1, t) and its derivative in t_1 for t_1 = t_m + u inside loading interval m (length L, rate v):
     // exp(-(t - t_1)/tau) Q(t_1) = D (c_{m+1} [E_m Q_m + v tau (exp(-(L - u)/tau) - E_m)]), D the decay since the
     // peak and c_{m+1} = exp(-(t_K - t_{m+1})/tau); dPsi/dt_1 = -v G(t - t_1).
+    // Inside a jump the element entering at depth d_m + u has taken the jump's part above it:
+    // exp(-(t - t_1)/tau) Q(t_1) = D c_m (Q_m + u).
     std::pair<double, double> interval_memory(std::size_t m, double u) const {
         const std::size_t n = branches_.size();
+        if (is_jump(m)) {
+            double psi = 0.0, slope = 0.0;
+            for (std::size_t b = 0; b < n; ++b) {
+                const double factor = decay_since_peak_[b] * to_peak_[m * n + b];
+                psi += branches_[b].modulus * (now_q_[b] - factor * (q_[m * n + b] + u));
+                slope -= branches_[b].modulus * factor;
+            }
+            return {psi, slope};
+        }
         const double length = times_[m + 1] - times_[m];
         const double rate = (depths_[m + 1] - depths_[m]) / length;
         double psi = 0.0, slope = 0.0;
@@ -201,7 +236,7 @@ private:
     // The root of Psi(t_m + u, t) = 0 for u in [0, upper], Psi(t_m) >= 0 >= Psi(t_m + upper): Newton kept inside the
     // bracket (bisection where it would leave it), to 1e-15 of the interval.
     double edge_root(std::size_t m, double upper) const {
-        const double length = times_[m + 1] - times_[m];
+        const double length = extent(m);
         double low = 0.0, high = upper;
         double psi_low = node_memory(m), psi_high = edge_memory(m, upper);
         if (psi_high >= 0.0) return upper;
@@ -222,6 +257,15 @@ private:
     // F = 8 sum_b G_b exp(-(t - t_1)/tau_b) R_b(t_1), t_1 = t_m + u (Ting).
     double edge_force(std::size_t m, double u) const {
         const std::size_t n = branches_.size();
+        if (is_jump(m)) {  // R(t_1) = R_m + int_{d_m}^{d_m + u} a(d') dd'
+            const double integral = exponential_integral([&](double d) { return indenter_.contact_radius(d); },
+                                                         depths_[m], depths_[m] + u, infinity, depths_[m] <= 0.0);
+            double force = 0.0;
+            for (std::size_t b = 0; b < n; ++b) {
+                force += branches_[b].modulus * decay_since_peak_[b] * to_peak_[m * n + b] * (r_[m * n + b] + integral);
+            }
+            return 8.0 * force;
+        }
         const double length = times_[m + 1] - times_[m];
         const double rate = (depths_[m + 1] - depths_[m]) / length;
         double force = 0.0;
@@ -273,7 +317,7 @@ bool ting_model_applies(const rheology::Rheology& material, const profile::Profi
 
 std::optional<std::vector<double>> ting_forces(const rheology::Rheology& material, const profile::Profile& indenter,
                                                const std::vector<double>& time, const std::vector<double>& depth) {
-    if (!ting_model_applies(material, indenter) || time.empty() || depth.front() > 0.0) return std::nullopt;
+    if (!ting_model_applies(material, indenter) || time.empty()) return std::nullopt;
     std::vector<Branch> branches;
     if (material.equilibrium_modulus() > 0.0) branches.push_back({material.equilibrium_modulus(), infinity});
     for (const auto& term : material.terms()) branches.push_back({term.modulus, term.relaxation_time});
@@ -281,6 +325,11 @@ std::optional<std::vector<double>> ting_forces(const rheology::Rheology& materia
     std::vector<double> forces(time.size(), 0.0);
     TingRun run(branches, indenter);
     enum class Phase { approach, loading, unloading } phase = Phase::approach;
+    if (depth.front() > 0.0) {
+        run.touch(time.front());
+        forces.front() = run.jump(depth.front());
+        phase = Phase::loading;
+    }
     for (std::size_t i = 1; i < time.size(); ++i) {
         if (phase == Phase::approach) {
             if (depth[i] <= 0.0) continue;

@@ -32,8 +32,8 @@ bool ting_model_applies(const rheology::Rheology& material, const profile::Profi
 
 /// The force [N] at each time of a depth history through the points (time[i], depth[i]) (linear between them,
 /// times increasing, depth below the contact point: <= 0 out of contact), incompressible body of `material` (the
-/// combined material of the case, eq. 8 and 56). nullopt when the history is outside Ting's class, when it starts
-/// in contact, or when !ting_model_applies.
+/// combined material of the case, eq. 8 and 56). A first depth > 0 is reached by a jump at the first time (as the
+/// element model does). nullopt when the history is outside Ting's class or when !ting_model_applies.
 std::optional<std::vector<double>> ting_forces(const rheology::Rheology& material, const profile::Profile& indenter,
                                                const std::vector<double>& time, const std::vector<double>& depth);
 

@@ -52,18 +52,18 @@ struct FitSettings {
     ContactPointMode contact_point = ContactPointMode::fit;      ///< see ContactPointMode
     BaselineMode baseline = BaselineMode::fit;                   ///< see BaselineMode
     std::size_t max_iterations = 200;                            ///< Levenberg-Marquardt iterations at most
-    /// Elements of the forward model's foundation; unset: the case's `[numerics] elements` or
-    /// default_fit_elements.
+    /// Elements of the element model where it runs (force-driven curves, depth histories outside Ting's class,
+    /// see FitResult::element_evaluations); unset: the case's `[numerics] elements` or default_fit_elements.
     std::optional<std::size_t> elements;
     /// Called before every model run and within long runs; throws mdr::Interrupted to stop the fit (Ctrl-C of the
     /// command line or of Python). The fit then throws mdr::Interrupted and returns no result.
     std::function<void()> check_interrupt{};
 };
 
-/// Elements of the forward model when neither the fit nor the case sets them: enough that the model's
+/// Elements of the element model when neither the fit nor the case sets them: enough that the model's
 /// discretisation error is below 1 % of the measurement noise. With N elements the error is about
-/// 1e-6 (1000 / N)^2 of the peak (a standard solid is recovered from noise-free Lee-Radok data to 3e-6 with 500
-/// elements, 1e-7 with 1000, 3e-8 with 2000; tests/verification/test_fit.cpp), so
+/// 1e-6 (1000 / N)^2 of the peak (measured on elements: a standard solid recovered from noise-free Lee-Radok data
+/// to 3e-6 with 500 elements, 1e-7 with 1000, 3e-8 with 2000), so
 /// N = 1000 sqrt(1e-4 peak / noise) for the noisiest-relative curve, within [min_fit_elements, max_fit_elements]:
 /// 250 for an AFM curve with noise 1.6e-3 of its peak, the maximum for noise-free data.
 std::size_t default_fit_elements(double noise_to_peak);

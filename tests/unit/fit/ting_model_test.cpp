@@ -13,6 +13,7 @@
 #include <numbers>
 #include <string>
 
+#include "mdr/drivers/indentation.hpp"
 #include "mdr/profile/profile.hpp"
 #include "mdr/rheology/rheology.hpp"
 #include "reference/closed_forms.hpp"
@@ -162,16 +163,50 @@ TEST(TingModel, RefusesHistoriesOutsideTingsClass) {
     // A load that dips and goes on.
     const auto dip = depth_at([](double t) { return 1e-4 * t + (std::abs(t - 1.0) < 0.015 ? -2e-6 : 0.0); });
     EXPECT_FALSE(ting_forces(material, *sphere, time, dip).has_value());
-    // Starting in contact; a parallel dashpot; a flat punch: not covered.
+    // A parallel dashpot; a flat punch: not covered.
     const auto loading = depth_at([](double t) { return 1e-4 * t; });
-    auto shifted = loading;
-    for (double& d : shifted) d += 1e-6;
-    EXPECT_FALSE(ting_forces(material, *sphere, time, shifted).has_value());
     EXPECT_FALSE(ting_forces(rheology::Rheology::kelvin_voigt(1e6, 1e5), *sphere, time, loading).has_value());
     EXPECT_FALSE(ting_forces(material, *profile::make_flat_punch(1e-3), time, loading).has_value());
     // While a plain load-hold-unload is covered.
     const auto load_hold_unload = depth_at([](double t) { return t < 1.0 ? 1e-4 * t : t < 2.0 ? 1e-4 : 1e-4 * (3.0 - t); });
     EXPECT_TRUE(ting_forces(material, *sphere, time, load_hold_unload).has_value());
+}
+
+// A history that starts in contact jumps to its first depth at its first time, as the element model's history does:
+// load-hold-unload from 20 % of the peak depth, against the drivers' element model at 1000 and 4000 elements, whose
+// error falls as N^-2 towards the continuum.
+TEST(TingModel, StartInContactIsTheElementModelsJump) {
+    const std::shared_ptr<const profile::Profile> sphere = profile::make_sphere(1e-3);
+    const auto material = rheology::Rheology::prony(1e5, {{2e5, 0.01}, {3e5, 0.3}});
+    const auto time = uniform(0.0, 3.0, 301);
+    std::vector<double> depth;
+    for (double t : time) depth.push_back(t < 1.0 ? 1e-4 * (0.2 + 0.8 * t) : t < 2.0 ? 1e-4 : 1e-4 * (3.0 - t));
+    const auto forces = ting_forces(material, *sphere, time, depth);
+    ASSERT_TRUE(forces.has_value());
+    std::vector<double> errors;
+    for (std::size_t elements : {1000u, 4000u}) {
+        std::vector<drivers::LoadPoint> points;
+        for (std::size_t i = 0; i < time.size(); ++i) points.push_back({time[i], depth[i]});
+        drivers::ContactCase contact_case{.title = "start in contact",
+                                          .material = material,
+                                          .indenter = sphere,
+                                          .history = drivers::LoadHistory(std::move(points), "load.history"),
+                                          .end_time = time.back()};
+        contact_case.numerics.elements = elements;
+        contact_case.numerics.time_step = time[1] - time[0];
+        contact_case.numerics.min_segment_steps = 1;
+        contact_case.numerics.output_every = 1;
+        const auto result = drivers::run_case(contact_case);
+        double error = 0.0;
+        std::size_t row = 0;
+        for (std::size_t i = 0; i < time.size(); ++i) {
+            while (row + 1 < result.time.size() && result.time[row + 1] <= time[i]) ++row;
+            error = std::max(error, std::abs(result.force[row] - (*forces)[i]));
+        }
+        errors.push_back(error / largest(*forces));
+    }
+    EXPECT_LT(errors[1], 1e-6);
+    EXPECT_NEAR(errors[0] / errors[1], 16.0, 4.0);  // second order in the element size
 }
 
 }  // namespace
