@@ -89,6 +89,14 @@ py::dict fit_toml_case(const std::string& toml_text, const std::string& source, 
 void bind_fit(py::module_& module) {
     module.def("_fit_toml", &fit_toml_case, py::arg("text"), py::arg("source"), py::arg("directory"),
                py::arg("curves"), "Fits a fit case given as TOML text (mdr.fit is the public entry).");
+    module.def(
+        "_afm_depth_and_force",
+        [](const std::vector<double>& piezo, const std::vector<double>& deflection, double spring_constant) {
+            auto curve = fit::afm_depth_and_force(piezo, deflection, spring_constant);
+            return py::make_tuple(to_array(curve.depth), to_array(curve.force));
+        },
+        py::arg("piezo"), py::arg("deflection"), py::arg("spring_constant"),
+        "Depth and force of a raw AFM curve (mdr.fit's piezo/deflection arrays).");
 }
 
 }  // namespace mdr::python

@@ -91,7 +91,10 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
         Paths of ``[[fit.data]]`` are relative to the case file's directory (the working directory for a dict).
     data : sequence of dict, optional
         Curves as arrays instead of ``[[fit.data]]``: each a dict with ``time`` [s], ``depth`` [m, positive into
-        the body] and ``force`` [N], and optionally ``name``.
+        the body] and ``force`` [N], and optionally ``name``; or, for a raw AFM curve, ``piezo`` and
+        ``deflection`` [m] (both larger = farther from the sample) with ``spring_constant`` [N/m] instead of
+        ``depth`` and ``force`` (force = k x deflection, depth = fall of piezo + deflection from the first row,
+        as the case file's AFM columns).
 
     Returns
     -------
@@ -131,11 +134,7 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
         raise TypeError(f"case: expected a path or a dict, got {type(case).__name__}")
     curves = []
     for i, curve in enumerate(data or []):
-        missing = [key for key in ("time", "depth", "force") if key not in curve]
-        if missing:
-            raise ValueError(f"data[{i}].{missing[0]} = (missing): each curve needs time, depth and force")
-        arrays = [np.asarray(curve[key], dtype=float).ravel().tolist() for key in ("time", "depth", "force")]
-        curves.append((str(curve.get("name", f"curve{i}")), *arrays))
+        curves.append((str(curve.get("name", f"curve{i}")), *_curve_arrays(curve, f"data[{i}]")))
     raw = _mdr._fit_toml(text, source, directory, curves)
     if "candidates" not in raw:
         return _result(raw)
@@ -145,6 +144,34 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
     preferred.ranking = ranking["candidates"]
     preferred.candidates = candidates
     return preferred
+
+
+def _curve_arrays(curve: Mapping[str, Any], key: str) -> tuple[list[float], list[float], list[float]]:
+    """time, depth and force of one curve of mdr.fit's ``data``: given, or from the raw AFM arrays."""
+    def values(name):
+        return np.asarray(curve[name], dtype=float).ravel().tolist()
+
+    afm = [name for name in ("piezo", "deflection", "spring_constant") if name in curve]
+    if afm:
+        for name in ("depth", "force"):
+            if name in curve:
+                raise ValueError(f"{key}.{name} = (given): give either depth and force or piezo, deflection and "
+                                 "spring_constant, not both")
+        for name in ("time", "piezo", "deflection", "spring_constant"):
+            if name not in curve:
+                raise ValueError(f"{key}.{name} = (missing): a raw AFM curve needs time, piezo, deflection and "
+                                 "spring_constant")
+        try:
+            depth, force = _mdr._afm_depth_and_force(values("piezo"), values("deflection"),
+                                                     float(curve["spring_constant"]))
+        except _mdr.InvalidInput as error:
+            raise ValueError(f"{key}.{error}") from None
+        return values("time"), depth.tolist(), force.tolist()
+    missing = [name for name in ("time", "depth", "force") if name not in curve]
+    if missing:
+        raise ValueError(f"{key}.{missing[0]} = (missing): each curve needs time, depth and force (or the raw AFM "
+                         "arrays piezo, deflection and spring_constant)")
+    return values("time"), values("depth"), values("force")
 
 
 def _result(raw: Mapping[str, Any]) -> FitResult:

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <string>
 
 #include "csv_columns.hpp"
 #include "curve_checks.hpp"
@@ -58,6 +59,22 @@ void scale(std::vector<double>& values, double factor) {
 
 }  // namespace
 
+DepthAndForce afm_depth_and_force(const std::vector<double>& piezo, const std::vector<double>& deflection,
+                                  double spring_constant) {
+    require_positive("spring_constant", spring_constant);
+    if (deflection.size() != piezo.size()) {
+        throw InvalidInput("deflection", std::to_string(deflection.size()) + " values",
+                           "needs as many values as piezo (" + std::to_string(piezo.size()) + ")");
+    }
+    DepthAndForce curve{std::vector<double>(piezo.size()), std::vector<double>(piezo.size())};
+    const double first_height = piezo.empty() ? 0.0 : piezo[0] + deflection[0];
+    for (std::size_t i = 0; i < piezo.size(); ++i) {
+        curve.depth[i] = first_height - (piezo[i] + deflection[i]);
+        curve.force[i] = spring_constant * deflection[i];
+    }
+    return curve;
+}
+
 Curve load_curve(const CurveSource& source) {
     check_source(source);
     const bool afm = is_afm(source);
@@ -74,19 +91,11 @@ Curve load_curve(const CurveSource& source) {
     scale(time, source.time_unit);
     std::vector<double> depth, force;
     if (afm) {
-        // Raw AFM (see docs/case-format.md, "Measured curves"): force = k x deflection; the tip height is
-        // piezo + deflection (both larger = farther from the sample), and the indentation is the fall of the tip
-        // height from the first kept row.
-        const std::vector<double>& piezo = table.values[1];
-        const std::vector<double>& deflection = table.values[2];
-        const double k = *source.spring_constant;
-        const double first_height = piezo.empty() ? 0.0 : (piezo[0] + deflection[0]) * source.length_unit;
-        depth.resize(piezo.size());
-        force.resize(piezo.size());
-        for (std::size_t i = 0; i < piezo.size(); ++i) {
-            depth[i] = first_height - (piezo[i] + deflection[i]) * source.length_unit;
-            force[i] = k * (deflection[i] * source.length_unit);
-        }
+        scale(table.values[1], source.length_unit);
+        scale(table.values[2], source.length_unit);
+        auto converted = afm_depth_and_force(table.values[1], table.values[2], *source.spring_constant);
+        depth = std::move(converted.depth);
+        force = std::move(converted.force);
     } else {
         depth = std::move(table.values[1]);
         force = std::move(table.values[2]);

@@ -54,6 +54,31 @@ def test_bad_input_is_a_value_error_with_the_command_line_message():
         mdr.fit(case, data=[{"time": t, "depth": t}])
 
 
+def test_raw_afm_arrays_are_the_case_files_afm_columns():
+    # A Hertz curve (G = 20 kPa, R = 5 um) seen by a cantilever of k = 0.05 N/m: the tip height falls by the depth
+    # and the cantilever bends by F / k. Given as piezo and deflection, mdr.fit converts them as the case file's AFM
+    # columns do (depth from the first row, force = k x deflection) and fits the same as from depth and force.
+    G, radius, k = 2.0e4, 5.0e-6, 0.05
+    t = np.linspace(0.0, 1.0, 400)
+    d = -0.5e-6 + 2.0e-6 * t                        # contact at t = 0.25 s
+    F = 16.0 / 3.0 * G * np.sqrt(radius) * np.maximum(d, 0.0) ** 1.5
+    deflection = F / k
+    piezo = 3.0e-6 - d - deflection                  # tip height piezo + deflection = 3 um - d
+    case = {"material": {"model": "elastic", "G": 1.0e4}, "indenter": {"shape": "sphere", "R": radius},
+            "fit": {"free": ["material.G"]}}
+    raw = mdr.fit(case, data=[{"time": t, "piezo": piezo, "deflection": deflection, "spring_constant": k}])
+    converted = mdr.fit(case, data=[{"time": t, "depth": d - d[0], "force": F}])
+    assert raw.status == "converged"
+    assert raw.parameters["material.G"] == pytest.approx(G, rel=1e-4)
+    assert raw.parameters["material.G"] == pytest.approx(converted.parameters["material.G"], rel=1e-12)
+    with pytest.raises(ValueError, match="data\\[0\\].spring_constant = -0.05"):
+        mdr.fit(case, data=[{"time": t, "piezo": piezo, "deflection": deflection, "spring_constant": -k}])
+    with pytest.raises(ValueError, match="data\\[0\\].depth = \\(given\\)"):
+        mdr.fit(case, data=[{"time": t, "piezo": piezo, "deflection": deflection, "spring_constant": k, "depth": d}])
+    with pytest.raises(ValueError, match="data\\[0\\].spring_constant = \\(missing\\)"):
+        mdr.fit(case, data=[{"time": t, "piezo": piezo, "deflection": deflection}])
+
+
 def test_the_real_chiaro_curve_of_the_examples():
     result = mdr.fit(REPO_ROOT / "examples" / "fit" / "chiaro-standard.toml")
     assert result.status == "converged"

@@ -57,6 +57,19 @@ inline constexpr std::size_t minimum_curve_rows = 10;
 /// (InvalidInput::with_prefix). Only the used columns of the kept rows are read: other columns may hold anything.
 Curve load_curve(const CurveSource& source);
 
+/// The depth and force of a raw AFM curve.
+struct DepthAndForce {
+    std::vector<double> depth;  ///< indentation [m], positive into the body, 0 at the first row
+    std::vector<double> force;  ///< [N], positive in compression
+};
+
+/// A raw AFM curve as depth and force (docs/case-format.md, "Measured curves"): force = spring_constant x
+/// deflection; the tip height is piezo + deflection (both larger = farther from the sample) and the depth is its
+/// fall from the first row. Lengths in m, spring_constant in N/m. Throws mdr::InvalidInput unless spring_constant
+/// > 0 and finite (key `spring_constant`) and the two arrays have the same length (key `deflection`).
+DepthAndForce afm_depth_and_force(const std::vector<double>& piezo, const std::vector<double>& deflection,
+                                  double spring_constant);
+
 /// A validated curve from arrays in SI units (same rules as load_curve), with the same estimates.
 Curve make_curve(std::string name, std::vector<double> time, std::vector<double> depth, std::vector<double> force);
 
