@@ -14,7 +14,9 @@ namespace py = pybind11;
 namespace mdr::python {
 namespace {
 
-using CurveArrays = std::tuple<std::string, std::vector<double>, std::vector<double>, std::vector<double>>;
+/// name, time, depth, force, fitted ("" for the fit's setting, else "force" or "depth").
+using CurveArrays =
+    std::tuple<std::string, std::vector<double>, std::vector<double>, std::vector<double>, std::string>;
 
 // fit.json, the fitted case and the curves of one fit.
 py::dict fit_output(const io::FitCase& fit_case, const fit::FitResult& result) {
@@ -61,7 +63,15 @@ py::dict fit_toml_case(const std::string& toml_text, const std::string& source, 
     if (curves.empty()) {
         loaded = fit::load_curves(fit_case);
     } else {
-        for (const auto& [name, time, depth, force] : curves) loaded.push_back(fit::make_curve(name, time, depth, force));
+        for (std::size_t i = 0; i < curves.size(); ++i) {
+            const auto& [name, time, depth, force, fitted] = curves[i];
+            loaded.push_back(fit::make_curve(name, time, depth, force));
+            if (fitted == "force") loaded.back().fitted = fit::Fitted::force;
+            else if (fitted == "depth") loaded.back().fitted = fit::Fitted::depth;
+            else if (!fitted.empty()) {
+                throw InvalidInput("data[" + std::to_string(i) + "].fitted", "\"" + fitted + "\"", "one of force, depth");
+            }
+        }
     }
     if (!fit_case.model_choice.empty()) {
         fit::ModelChoice choice;

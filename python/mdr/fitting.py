@@ -94,7 +94,8 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
         the body] and ``force`` [N], and optionally ``name``; or, for a raw AFM curve, ``piezo`` and
         ``deflection`` [m] (both larger = farther from the sample) with ``spring_constant`` [N/m] instead of
         ``depth`` and ``force`` (force = k x deflection, depth = fall of piezo + deflection from the first row,
-        as the case file's AFM columns).
+        as the case file's AFM columns). ``fitted`` (``"force"`` or ``"depth"``) sets what that curve fits when
+        it differs from ``fit.fitted``: a creep curve beside an indentation curve, one material for both.
 
     Returns
     -------
@@ -134,7 +135,8 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
         raise TypeError(f"case: expected a path or a dict, got {type(case).__name__}")
     curves = []
     for i, curve in enumerate(data or []):
-        curves.append((str(curve.get("name", f"curve{i}")), *_curve_arrays(curve, f"data[{i}]")))
+        curves.append((str(curve.get("name", f"curve{i}")), *_curve_arrays(curve, f"data[{i}]"),
+                       str(curve.get("fitted", ""))))
     raw = _mdr._fit_toml(text, source, directory, curves)
     if "candidates" not in raw:
         return _result(raw)

@@ -300,7 +300,10 @@ ModelChoice fit_candidates(const io::FitCase& fit_case, const std::vector<Curve>
         Material started = material;
         const double smoothing = material.spectrum() ? settings.spectrum.value_or(SpectrumSettings{}).smoothing : 0.0;
         const auto penalty = smoothing_penalty(material, offset, smoothing, choice.modulus_scale, curves);
-        if (material.spectrum() && base.settings.fitted == Fitted::force) {
+        const bool all_force_fitted = std::all_of(started_curves.begin(), started_curves.end(), [&](const Curve& curve) {
+            return curve.fitted.value_or(base.settings.fitted) == Fitted::force;
+        });
+        if (material.spectrum() && all_force_fitted) {
             const auto linear = linear_start(base, material, indenter, started_curves, penalty);
             for (std::size_t j = 0; j < linear.size(); ++j) started.parameters[j].start = linear[j];
         }

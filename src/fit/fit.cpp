@@ -67,14 +67,19 @@ void validate(const FitProblem& problem) {
     }
 }
 
+Fitted fitted_of(const FitProblem& problem, std::size_t c) {
+    return problem.curves[c].fitted.value_or(problem.settings.fitted);
+}
+
 namespace {
 
 // The smallest noise relative to its curve's peak (the scales hold each curve's largest |force| and |depth|), over
 // the curves (the noise floors of prepare_curve keep it > 0).
-double noise_to_peak(Fitted fitted, const ParameterScales& scales, const std::vector<CurveModel>& prepared) {
+double noise_to_peak(const ParameterScales& scales, const std::vector<CurveModel>& prepared) {
     double ratio = 1.0;
     for (std::size_t c = 0; c < prepared.size(); ++c) {
-        ratio = std::min(ratio, prepared[c].noise / (fitted == Fitted::force ? scales.force[c] : scales.depth[c]));
+        const bool force = prepared[c].fitted == Fitted::force;
+        ratio = std::min(ratio, prepared[c].noise / (force ? scales.force[c] : scales.depth[c]));
     }
     return ratio;
 }
@@ -108,7 +113,7 @@ FitResult fit(const FitProblem& problem) {
     for (std::size_t c = 0; c < problem.curves.size(); ++c) {
         const Curve& curve = problem.curves[c];
         const double baseline = problem.settings.baseline == BaselineMode::fixed ? 0.0 : curve.force_baseline;
-        prepared.push_back(prepare_curve(curve, problem.settings.fitted, baseline));
+        prepared.push_back(prepare_curve(curve, fitted_of(problem, c), baseline));
         if (prepared.back().used.empty()) {
             throw InvalidInput(fmt::format("fit.data[{}]", c), curve.name, "the curve never makes contact");
         }
@@ -116,7 +121,7 @@ FitResult fit(const FitProblem& problem) {
         if (scales.fit_baseline) nuisance[c].push_back(curve.force_baseline / scales.force[c]);
     }
 
-    const std::size_t elements = default_fit_elements(noise_to_peak(problem.settings.fitted, scales, prepared));
+    const std::size_t elements = default_fit_elements(noise_to_peak(scales, prepared));
     std::atomic<std::size_t> evaluations{0}, element_evaluations{0};
     ceres::Problem::Options problem_options;
     problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;

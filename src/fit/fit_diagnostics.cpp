@@ -55,9 +55,11 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
             throw std::runtime_error("the model cannot be evaluated at the fitted values");
         }
         const Curve& data = problem.curves[c];
-        const auto& measured = problem.settings.fitted == Fitted::force ? data.force : data.depth;
+        const bool force_fitted = prepared.fitted == Fitted::force;
+        const auto& measured = force_fitted ? data.force : data.depth;
         CurveFit curve;
         curve.name = data.name;
+        curve.fitted = prepared.fitted;
         curve.contact_depth = cost.contact_depth(nuisance[c].data());
         curve.baseline = cost.baseline(nuisance[c].data());
         curve.noise = prepared.noise;
@@ -66,8 +68,7 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
             curve.time.push_back(data.time[prepared.used[i]]);
             curve.measured.push_back(measured[prepared.used[i]]);
             curve.model.push_back(curve.measured[i] + r[i] * prepared.noise);  // r = (model - measured) / noise
-            curve.drive.push_back(problem.settings.fitted == Fitted::force
-                                      ? data.depth[prepared.used[i]] - curve.contact_depth
+            curve.drive.push_back(force_fitted ? data.depth[prepared.used[i]] - curve.contact_depth
                                       : std::max(data.force[prepared.used[i]] - curve.baseline, 0.0));
             squared += (curve.model[i] - curve.measured[i]) * (curve.model[i] - curve.measured[i]);
             stacked.residuals[row] = r[i];

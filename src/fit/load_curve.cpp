@@ -109,10 +109,12 @@ Curve load_curve(const CurveSource& source) {
         for (const auto& segment : source.segments) origin += " " + segment;
     }
     const std::vector<std::size_t>& lines = table.lines;
-    return checked_curve(source.name.empty() ? source.file.stem().string() : source.name, std::move(time),
-                         std::move(depth), std::move(force), origin, [&](std::size_t i) {
-                             return "in " + file_name + ", line " + std::to_string(lines[i]);
-                         });
+    Curve curve = checked_curve(source.name.empty() ? source.file.stem().string() : source.name, std::move(time),
+                                std::move(depth), std::move(force), origin, [&](std::size_t i) {
+                                    return "in " + file_name + ", line " + std::to_string(lines[i]);
+                                });
+    curve.fitted = source.fitted;
+    return curve;
 }
 
 }  // namespace mdr::fit

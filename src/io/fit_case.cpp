@@ -18,17 +18,6 @@ namespace {
 // A placeholder history: each curve replaces the load (fit::run_curve).
 constexpr const char* placeholder_load = "control = \"displacement\"\nhistory = [[0.0, 0.0], [1.0, 0.0]]\n";
 
-std::string choice(TableReader& table, const std::string& key, const std::vector<std::string>& choices,
-                   const std::string& fallback) {
-    const std::string value = table.optional_string(key).value_or(fallback);
-    for (const auto& option : choices) {
-        if (value == option) return value;
-    }
-    std::string list;
-    for (const auto& option : choices) list += (list.empty() ? "" : ", ") + option;
-    throw InvalidInput(table.key_path(key), "\"" + value + "\"", "one of " + list);
-}
-
 std::vector<std::string> free_keys(const toml::table& fit, bool optional) {
     const auto* array = fit["free"].as_array();
     if (array == nullptr && optional && !fit["free"]) return {};
@@ -105,8 +94,8 @@ FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
                         "candidates", "spectrum"});
 
     FitCase fit_case{std::move(model), {}, {}, {}, false, read_candidates(fit)};
-    const std::string fitted = choice(fit, "fitted", {"force", "depth"}, "force");
-    fit_case.settings.fitted = fitted == "force" ? fit::Fitted::force : fit::Fitted::depth;
+    fit_case.settings.fitted = read_fitted(fit, fit::Fitted::force);
+    const std::string fitted = fit_case.settings.fitted == fit::Fitted::force ? "force" : "depth";
     const std::string contact = choice(fit, "contact_point", {"fit", "estimate", "fixed"}, "fit");
     fit_case.settings.contact_point = contact == "fit"        ? fit::ContactPointMode::fit
                                       : contact == "estimate" ? fit::ContactPointMode::estimate

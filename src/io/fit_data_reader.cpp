@@ -24,9 +24,25 @@ double read_unit(TableReader& units, const std::string& key, const std::string& 
                            " with an SI prefix: p, n, u or µ, m, c, k (e.g. \"n" + base + "\")");
 }
 
+std::string choice(TableReader& table, const std::string& key, const std::vector<std::string>& choices,
+                   const std::string& fallback) {
+    const std::string value = table.optional_string(key).value_or(fallback);
+    for (const auto& option : choices) {
+        if (value == option) return value;
+    }
+    std::string list;
+    for (const auto& option : choices) list += (list.empty() ? "" : ", ") + option;
+    throw InvalidInput(table.key_path(key), "\"" + value + "\"", "one of " + list);
+}
+
+fit::Fitted read_fitted(TableReader& table, fit::Fitted fallback) {
+    const std::string value = choice(table, "fitted", {"force", "depth"}, fallback == fit::Fitted::force ? "force" : "depth");
+    return value == "force" ? fit::Fitted::force : fit::Fitted::depth;
+}
+
 fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory) {
     table.reject_unknown({"file", "name", "time", "depth", "force", "piezo", "deflection", "spring_constant", "units",
-                          "segment_column", "segments"});
+                          "segment_column", "segments", "fitted"});
     fit::CurveSource source;
     const std::filesystem::path file = table.string("file");
     source.file = file.is_absolute() ? file : case_directory / file;
@@ -45,6 +61,7 @@ fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& 
     }
     source.segment_column = table.optional_string("segment_column").value_or("");
     if (table.has("segments")) source.segments = table.labels("segments");
+    if (table.has("fitted")) source.fitted = read_fitted(table, fit::Fitted::force);
     return source;
 }
 

@@ -3,6 +3,8 @@
 // "Measured curves").
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "mdr/fit/curve.hpp"
 #include "toml_reader.hpp"
@@ -15,6 +17,13 @@ namespace mdr::io {
 /// relate the keys (one depth source, the spring constant with the AFM columns, ...) are load_curve's, checked
 /// when the curve is loaded.
 fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory);
+
+/// The string at `key`, one of `choices` (`fallback` when absent); mdr::InvalidInput listing them otherwise.
+std::string choice(TableReader& table, const std::string& key, const std::vector<std::string>& choices,
+                   const std::string& fallback);
+
+/// `fitted` of a `[fit]` or `[[fit.data]]` table ("force" or "depth"), `fallback` when absent.
+fit::Fitted read_fitted(TableReader& table, fit::Fitted fallback);
 
 /// The size of one unit of a `units` entry in SI units (s, m or N for `base`): a number > 0, or a name made of an
 /// SI prefix (p, n, u or µ, m, c, k, or none) and `base` ("nm", "ms", "nN", "m"). `key` names the entry.

@@ -13,9 +13,9 @@ namespace {
 nlohmann::ordered_json number(double value) { return std::isfinite(value) ? nlohmann::ordered_json(value) : nullptr; }
 
 // The first curve's driving history as a `[load]` body: at most about 400 points, the contact point removed.
-std::string load_of_first_curve(const FitCase& fit_case, const fit::FitResult& result) {
+std::string load_of_first_curve(const fit::FitResult& result) {
     const auto& curve = result.curves.front();
-    const bool depth_driven = fit_case.settings.fitted == fit::Fitted::force;
+    const bool depth_driven = curve.fitted == fit::Fitted::force;
     std::string history;
     const std::size_t stride = std::max<std::size_t>(1, curve.time.size() / 400);
     for (std::size_t i = 0; i < curve.time.size(); i += stride) {
@@ -51,6 +51,7 @@ std::string fit_json(const fit::FitResult& result) {
     nlohmann::ordered_json curves = nlohmann::ordered_json::array();
     for (const auto& curve : result.curves) {
         curves.push_back({{"name", curve.name},
+                          {"fitted", curve.fitted == fit::Fitted::force ? "force" : "depth"},
                           {"points", curve.time.size()},
                           {"contact_point", number(curve.contact_depth)},
                           {"contact_point_error", number(curve.contact_depth_error)},
@@ -91,7 +92,7 @@ void write_fit_result(const std::filesystem::path& directory, const FitCase& fit
 
     auto toml = fmt::output_file((directory / "fitted.toml").string());
     toml.print("# The case with the fitted values of mdr fit (fit.json has their errors).\n{}\n",
-               fitted_case_text(fit_case, result.values, fit_case.had_load ? "" : load_of_first_curve(fit_case, result)));
+               fitted_case_text(fit_case, result.values, fit_case.had_load ? "" : load_of_first_curve(result)));
     toml.close();
 }
 

@@ -42,6 +42,21 @@ def test_kelvin_voigt_from_a_creep_curve_given_as_arrays():
     assert predicted.summary["max_force"] == pytest.approx(0.2)
 
 
+def test_a_curve_can_fit_its_own_quantity():
+    # The creep curve of the test above fits its depth while the fit's setting says force: per-curve `fitted`.
+    t = np.linspace(0.0, 2.0, 201)
+    F = np.full_like(t, 0.2)
+    d = kelvin_voigt_creep_depth(t, 1.0e6, 3.0e5, 0.2)
+    case = {"material": {"model": "kelvin_voigt", "G": 3.0e5, "eta": 1.0e6},
+            "indenter": {"shape": "sphere", "R": R},
+            "fit": {"free": ["material.G", "material.eta"], "contact_point": "fixed", "baseline": "fixed"}}
+    result = mdr.fit(case, data=[{"time": t, "depth": d, "force": F, "fitted": "depth"}])
+    assert result.summary["curves"][0]["fitted"] == "depth"
+    assert result.parameters["material.G"] == pytest.approx(1.0e6, rel=1e-3)
+    with pytest.raises(ValueError, match="data\\[0\\].fitted = \"strain\": one of force, depth"):
+        mdr.fit(case, data=[{"time": t, "depth": d, "force": F, "fitted": "strain"}])
+
+
 def test_bad_input_is_a_value_error_with_the_command_line_message():
     case = {"material": {"model": "elastic", "G": 1.0e6}, "indenter": {"shape": "sphere", "R": R},
             "fit": {"free": ["material.G"], "bounds": {"material.G": [1.0e7, 1.0e8]}}}

@@ -115,6 +115,34 @@ TEST(Fit, StandardSolidFromLoadUnloadTing) {
     EXPECT_EQ(result.element_evaluations, 0u);
 }
 
+TEST(Fit, CreepAndRelaxationCurvesShareOneMaterial) {
+    // A load-hold (depth drives, force fitted: Lee-Radok) and a creep test (force drives, depth fitted: eq. 34 with
+    // the standard solid's creep function, Table 1), each curve with its own `fitted`, one standard solid for both.
+    const reference::PronyMaterial truth{1e6, 0.0, {{2e6, 0.5}}};
+    fit::Curve relaxation = load_hold_curve(truth, 1.0, 4.0, 401);
+    fit::Curve creep;
+    creep.name = "creep";
+    creep.fitted = fit::Fitted::depth;
+    const double force = 0.5;
+    const auto compliance = [](double t) { return reference::standard_solid_creep(1e6, 2e6, 0.5, t); };
+    for (std::size_t i = 0; i <= 400; ++i) {
+        const double t = 0.005 * static_cast<double>(i);
+        creep.time.push_back(t);
+        creep.force.push_back(force * std::min(t / 0.05, 1.0));
+        creep.depth.push_back(reference::sphere_creep_depth(compliance, R, force, 0.05, t));
+    }
+    auto problem = noise_free_problem(relaxation, standard_solid_parameters(3e5, 5e6, 2.0));
+    problem.curves.push_back(creep);
+    problem.settings.elements = 1000;  // the creep curve's force-controlled run: its time step's error
+    const auto result = fit::fit(problem);
+    expect_relative(result, {1e6, 2e6, 0.5}, 1e-4);
+    ASSERT_EQ(result.curves.size(), 2u);
+    EXPECT_EQ(result.curves[0].fitted, fit::Fitted::force);
+    EXPECT_EQ(result.curves[1].fitted, fit::Fitted::depth);
+    // Each curve alone is fitted with what it measures: the creep curve's model is a depth.
+    EXPECT_NEAR(result.curves[1].model.back(), creep.depth.back(), 1e-4 * creep.depth.back());
+}
+
 TEST(Fit, KelvinVoigtFromCreepUnderForce) {
     // The measured force drives the model, the depth is fitted: eq. 34 for a force ramp of 0.05 s and a hold.
     const double G = 1e6, eta = 2e5, force = 0.5;

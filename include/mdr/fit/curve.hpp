@@ -11,6 +11,12 @@
 
 namespace mdr::fit {
 
+/// Which measured quantity the model reproduces.
+enum class Fitted {
+    force,  ///< the measured depth drives the model (displacement control); the force is fitted
+    depth,  ///< the measured force drives the model (force control); the depth is fitted
+};
+
 /// A curve's columns in a CSV file (`[[fit.data]]` of a fit case). Either `depth_column` (indentation, positive
 /// into the body) or the raw AFM pair `piezo_column` + `deflection_column` with `spring_constant` gives the depth;
 /// `force_column` or the deflection times the spring constant gives the force.
@@ -28,6 +34,7 @@ struct CurveSource {
     double force_unit = 1.0;                ///< newtons per unit of the force column
     std::string segment_column;             ///< column naming each row's segment ("" keeps every row)
     std::vector<std::string> segments;      ///< segments kept (every segment when empty), e.g. {"extend", "pause"}
+    std::optional<Fitted> fitted{};         ///< Curve::fitted
 };
 
 /// A measured curve in SI units.
@@ -43,6 +50,9 @@ struct Curve {
     double onset_exponent = 0.0;   ///< n of the onset fit F - baseline = A (depth - contact_depth)^n (0 when unknown)
     double onset_amplitude = 0.0;  ///< A of the onset fit [N/m^n] (0 when unknown)
     std::string estimate_note;     ///< "" when the contact estimates are sound, else why they are not
+    /// What this curve fits, when it differs from the fit's setting (FitSettings::fitted): a creep curve (depth
+    /// fitted) beside a relaxation or an indentation curve (force fitted), one material for both.
+    std::optional<Fitted> fitted{};
 };
 
 /// The fewest rows a curve may have (after the segment selection).

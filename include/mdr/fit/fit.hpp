@@ -26,11 +26,6 @@ struct FreeParameter {
     bool logarithmic = true;
 };
 
-/// Which measured quantity the model reproduces.
-enum class Fitted {
-    force,  ///< the measured depth drives the model (displacement control); the force is fitted
-    depth,  ///< the measured force drives the model (force control); the depth is fitted
-};
 
 /// How each curve's contact point (the data's depth at first contact) is found.
 enum class ContactPointMode {
@@ -92,6 +87,7 @@ struct FitProblem {
 /// One curve's data, model and residual at the points used by the fit.
 struct CurveFit {
     std::string name;               ///< Curve::name
+    Fitted fitted = Fitted::force;  ///< what this curve fitted (fitted_of)
     std::vector<double> time;       ///< t [s]
     std::vector<double> measured;   ///< measured force [N] or depth [m] (the fitted quantity)
     std::vector<double> model;      ///< model of the same quantity, baseline and contact point included
@@ -138,6 +134,9 @@ struct FitResult {
     std::size_t element_evaluations = 0;
     double wall_seconds = 0.0;               ///< wall time of the fit
 };
+
+/// What curve `c` of the problem fits: its own Curve::fitted, else FitSettings::fitted.
+Fitted fitted_of(const FitProblem& problem, std::size_t c);
 
 /// Checks a problem (one line per rule: bounds, start values, curves with enough points and a contact).
 /// Throws mdr::InvalidInput.
