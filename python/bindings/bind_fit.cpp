@@ -34,6 +34,18 @@ py::dict fit_output(const io::FitCase& fit_case, const fit::FitResult& result) {
     out["fit_json"] = io::fit_json(result);
     out["fitted_case"] = io::fitted_case_text(fit_case, result.values, "");
     out["curves"] = curve_list;
+    const auto& bands = result.material;
+    py::dict material;
+    material["t"] = to_array(bands.times);
+    material["omega"] = to_array(bands.omegas);
+    const std::pair<const char*, const fit::MaterialBand*> functions[] = {
+        {"G", &bands.relaxation}, {"J", &bands.creep}, {"storage", &bands.storage}, {"loss", &bands.loss}};
+    for (const auto& [name, band] : functions) {
+        material[name] = to_array(band->value);
+        material[(std::string(name) + "_lower").c_str()] = to_array(band->lower);
+        material[(std::string(name) + "_upper").c_str()] = to_array(band->upper);
+    }
+    out["material"] = material;
     return out;
 }
 

@@ -45,6 +45,10 @@ class FitResult:
     spectrum : dict or None
         In spectrum mode (or for the "spectrum" candidate): ``tau`` (the grid [s]), ``G`` (its moduli [Pa]) and
         ``G_inf`` [Pa].
+    material : dict
+        The identified material on the data's window: ``t``, ``G``, ``J`` and ``omega``, ``storage``, ``loss``
+        (numpy arrays), each function with its 95 % band ``*_lower``, ``*_upper`` (NaN where an undetermined
+        parameter enters); ``mdr.plot.material_functions(result.material)`` and ``dynamic_moduli`` draw them.
     """
 
     parameters: dict[str, float]
@@ -56,6 +60,7 @@ class FitResult:
     ranking: list[dict[str, Any]] = field(default_factory=list)
     candidates: dict[str, "FitResult"] = field(default_factory=dict)
     spectrum: dict[str, Any] | None = None
+    material: dict[str, Any] = field(default_factory=dict)
 
     def predict(self, load: Mapping[str, Any]):
         """Run the fitted material and indenter under another load.
@@ -180,7 +185,7 @@ def _result(raw: Mapping[str, Any]) -> FitResult:
     summary = json.loads(raw["fit_json"])
     result = FitResult(parameters=_numbers(summary, "parameters"), standard_errors=_numbers(summary, "standard_errors"),
                        status=summary["status"], summary=summary, curves=[dict(c) for c in raw["curves"]],
-                       fitted_case=raw["fitted_case"])
+                       fitted_case=raw["fitted_case"], material=dict(raw["material"]))
     times = np.asarray(raw.get("relaxation_times", []), dtype=float)
     if times.size:
         result.spectrum = {"tau": times, "G_inf": result.parameters["material.G_inf"],

@@ -316,7 +316,8 @@ def material_functions(functions: Mapping[str, np.ndarray], axes=None, units: Un
     Parameters
     ----------
     functions : dict of str to numpy.ndarray
-        With the columns ``t``, ``G``, ``J`` and optionally ``J_shear`` (functions.csv of ``mdr material``).
+        With the columns ``t``, ``G``, ``J`` and optionally ``J_shear`` (functions.csv of ``mdr material``), or
+        ``G_lower``, ``G_upper``, ``J_lower``, ``J_upper`` (functions.csv of ``mdr fit``: 95 % bands, shaded).
     axes : matplotlib.axes.Axes, optional
         Where to draw; a new figure by default.
     units : str or dict, optional
@@ -335,17 +336,66 @@ def material_functions(functions: Mapping[str, np.ndarray], axes=None, units: Un
     names = _unit_names(units)
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     axes.loglog(functions["t"], functions["G"], color="C0", label="G(t)")
+    _band(axes, functions, "t", "G", "C0")
     if "G_model" in functions:  # a model or data standing as a series: both, side by side
         axes.loglog(functions["t"], functions["G_model"], color="k", ls=":", label="G(t), model or data")
     axes.set(xlabel=f"time t [{names['time']}]", ylabel=f"relaxation G [{names['pressure']}]",
              title="Material functions")
     right = axes.twinx()
     right.loglog(functions["t"], functions["J"], color="C1", label="J(t)")
+    _band(right, functions, "t", "J", "C1")
     if "J_shear" in functions:
         right.loglog(functions["t"], functions["J_shear"], color="C1", ls="--", label="J_shear(t)")
     right.set_ylabel(f"creep J [{names['compliance']}]")
     _legend_of_twins(axes, right)
     return axes
+
+
+def _band(axes, table: Mapping[str, np.ndarray], x: str, name: str, color: str) -> None:
+    """Shades the 95 % band of column `name` where the table has it (positive part only: log axes)."""
+    if f"{name}_lower" not in table:
+        return
+    lower = np.maximum(table[f"{name}_lower"], np.finfo(float).tiny)
+    axes.fill_between(table[x], lower, table[f"{name}_upper"], color=color, alpha=0.2, lw=0,
+                      label=f"{name}: 95 % band")
+
+
+def fit_curves(curves: Mapping[str, np.ndarray], axes=None):
+    """Measured and fitted curves over time, with the residuals below.
+
+    Parameters
+    ----------
+    curves : dict of str to numpy.ndarray
+        With the columns ``curve`` (names), ``t``, ``measured``, ``model``, ``residual`` (curves.csv of
+        ``mdr fit``).
+    axes : sequence of two matplotlib.axes.Axes, optional
+        Where to draw (data above, residuals below); a new figure by default.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        The axes of the data (the residuals' share its time axis).
+
+    Examples
+    --------
+    >>> t = np.linspace(0.0, 1.0, 50)
+    >>> axes = mdr.plot.fit_curves({"curve": np.array(["a"] * 50), "t": t, "measured": t ** 1.5,
+    ...                             "model": t ** 1.5, "residual": 0 * t})
+    """
+    if axes is None:
+        _, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 5.5), height_ratios=[3, 1.3])
+    top, bottom = axes
+    for i, name in enumerate(dict.fromkeys(curves["curve"])):
+        rows = curves["curve"] == name
+        top.plot(curves["t"][rows], curves["measured"][rows], ".", ms=2, color=f"C{i}", label=f"{name}: measured")
+        top.plot(curves["t"][rows], curves["model"][rows], "-", lw=1, color="k" if i == 0 else f"C{i}",
+                 label=f"{name}: model")
+        bottom.plot(curves["t"][rows], curves["residual"][rows], ".", ms=2, color=f"C{i}")
+    top.set(ylabel="force [N] or depth [m]", title="Fit: data and model")
+    bottom.set(xlabel="time t [s]", ylabel="model - measured")
+    bottom.axhline(0.0, color="k", lw=0.5)
+    top.legend(loc="best", fontsize=8)
+    return top
 
 
 def dynamic_moduli(dynamic: Mapping[str, np.ndarray], axes=None, units: Units = "SI"):
@@ -354,7 +404,8 @@ def dynamic_moduli(dynamic: Mapping[str, np.ndarray], axes=None, units: Units = 
     Parameters
     ----------
     dynamic : dict of str to numpy.ndarray
-        With the columns ``omega``, ``storage`` and ``loss`` (dynamic.csv of ``mdr material``).
+        With the columns ``omega``, ``storage`` and ``loss`` (dynamic.csv of ``mdr material``), and the 95 % bands
+        ``storage_lower`` ... ``loss_upper`` of ``mdr fit`` (shaded) where given.
     axes : matplotlib.axes.Axes, optional
         Where to draw; a new figure by default.
     units : str or dict, optional
@@ -374,6 +425,8 @@ def dynamic_moduli(dynamic: Mapping[str, np.ndarray], axes=None, units: Units = 
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
     axes.loglog(dynamic["omega"], dynamic["storage"], label="storage")
     axes.loglog(dynamic["omega"], np.maximum(dynamic["loss"], np.finfo(float).tiny), label="loss")
+    _band(axes, dynamic, "omega", "storage", "C0")
+    _band(axes, dynamic, "omega", "loss", "C1")
     if "storage_model" in dynamic:  # a model or data standing as a series: both, side by side
         axes.loglog(dynamic["omega"], dynamic["storage_model"], color="k", ls=":", label="model or data")
         axes.loglog(dynamic["omega"], dynamic["loss_model"], color="k", ls=":")
@@ -455,7 +508,8 @@ def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
     """Writes PNG figures for a result directory of mdr, beside its CSV files.
 
     Of ``mdr run``: force_depth, force_time, contact_radius, with tangential loading tangential_loop, with
-    profiles pressure (and shear_stress); of ``mdr material``: material, dynamic; of ``mdr sweep``: sweep. The
+    profiles pressure (and shear_stress); of ``mdr material``: material, dynamic; of ``mdr fit``: fit_curves,
+    material, dynamic (with 95 % bands); of ``mdr sweep``: sweep. The
     figures are added to the directory's manifest, so that mdr may still replace the directory; a file of the
     same name that mdr did not write is never overwritten.
 
@@ -510,6 +564,8 @@ def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
                 written.append(save(pressure_profiles(profiles, units=units), figure("pressure")))
                 if "tau" in profiles:
                     written.append(save(shear_stress_profiles(profiles, units=units), figure("shear_stress")))
+        if os.path.exists(path("curves.csv")):
+            written.append(save(fit_curves(read_csv(path("curves.csv"))), figure("fit_curves")))
         if os.path.exists(path("functions.csv")):
             functions = read_csv(path("functions.csv"))
             written.append(save(material_functions(functions, units=_summary(directory)), figure("material")))
@@ -525,7 +581,8 @@ def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
             with open(os.path.join(directory, MANIFEST), "a", encoding="utf-8") as handle:
                 handle.writelines(os.path.basename(p) + "\n" for p in written if os.path.basename(p) not in listed)
     if not written:
-        raise ValueError(f"{directory}: no history.csv, functions.csv or sweep.csv (not a result directory of mdr)")
+        raise ValueError(f"{directory}: no history.csv, curves.csv, functions.csv or sweep.csv (not a result "
+                         "directory of mdr)")
     return written
 
 

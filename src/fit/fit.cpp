@@ -13,6 +13,7 @@
 
 #include "curve_cost.hpp"
 #include "fit_diagnostics.hpp"
+#include "material_bands.hpp"
 #include "penalty_cost.hpp"
 #include "statistical_convergence.hpp"
 #include "mdr/error.hpp"
@@ -166,6 +167,11 @@ FitResult fit(const FitProblem& problem) {
     describe_uncertainty(problem, scales, costs, shared, nuisance, result);
     result.evaluations = evaluations;
     result.element_evaluations = element_evaluations;
+    try {
+        result.material = material_bands(problem, result);
+    } catch (const std::exception&) {
+        result.material = {};  // a material that cannot be built beside the fitted values: no bands, the fit stands
+    }
     result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
     return result;
 }

@@ -90,6 +90,26 @@ void write_fit_result(const std::filesystem::path& directory, const FitCase& fit
     }
     csv.close();
 
+    const auto& material = result.material;
+    if (!material.times.empty()) {
+        auto functions = fmt::output_file((directory / "functions.csv").string());
+        functions.print("t,G,G_lower,G_upper,J,J_lower,J_upper\n");
+        for (std::size_t i = 0; i < material.times.size(); ++i) {
+            functions.print("{},{},{},{},{},{},{}\n", material.times[i], material.relaxation.value[i],
+                            material.relaxation.lower[i], material.relaxation.upper[i], material.creep.value[i],
+                            material.creep.lower[i], material.creep.upper[i]);
+        }
+        functions.close();
+        auto dynamic = fmt::output_file((directory / "dynamic.csv").string());
+        dynamic.print("omega,storage,storage_lower,storage_upper,loss,loss_lower,loss_upper\n");
+        for (std::size_t i = 0; i < material.omegas.size(); ++i) {
+            dynamic.print("{},{},{},{},{},{},{}\n", material.omegas[i], material.storage.value[i],
+                          material.storage.lower[i], material.storage.upper[i], material.loss.value[i],
+                          material.loss.lower[i], material.loss.upper[i]);
+        }
+        dynamic.close();
+    }
+
     auto toml = fmt::output_file((directory / "fitted.toml").string());
     toml.print("# The case with the fitted values of mdr fit (fit.json has their errors).\n{}\n",
                fitted_case_text(fit_case, result.values, fit_case.had_load ? "" : load_of_first_curve(result)));

@@ -6,7 +6,11 @@ from __future__ import annotations
 import csv
 import json
 import math
+import os
+import pathlib
 import random
+import subprocess
+import sys
 
 import pytest
 
@@ -87,6 +91,21 @@ def test_recovers_the_modulus_and_writes_the_result_directory(run_mdr, fit_case,
     assert again.returncode == 0, again.stderr
     rerun = json.loads((workdir / "again" / "summary.json").read_text())
     assert rerun["max_force"] == pytest.approx(hertz_force(rerun["max_depth"]) * G / G_TRUE, rel=1e-3)
+    # The identified material with its band (G +- 1.96 standard errors for an elastic body), and its figures.
+    with open(out / "functions.csv", newline="", encoding="utf-8") as handle:
+        functions = list(csv.DictReader(handle))
+    assert list(functions[0]) == ["t", "G", "G_lower", "G_upper", "J", "J_lower", "J_upper"]
+    assert float(functions[0]["G_upper"]) - float(functions[0]["G"]) == pytest.approx(1.96 * error, rel=1e-4)
+    assert (out / "dynamic.csv").exists()
+    package = pathlib.Path(os.environ.get("MDR_PYTHONPATH", "/nonexistent"))
+    if not (package / "mdr").is_dir():
+        return  # a build without the Python package (the sanitizer build): no figures to draw
+    environment = dict(os.environ, PYTHONPATH=str(package), MPLBACKEND="Agg")
+    plotted = subprocess.run([sys.executable, "-m", "mdr", "plot", str(out)], capture_output=True, text=True,
+                             env=environment)
+    assert plotted.returncode == 0, plotted.stderr
+    assert sorted(pathlib.Path(p).name for p in plotted.stdout.split()) == ["dynamic.png", "fit_curves.png",
+                                                                           "material.png"]
 
 
 @pytest.mark.parametrize("extra, fragments", [

@@ -86,6 +86,12 @@ def test_raw_afm_arrays_are_the_case_files_afm_columns():
     assert raw.status == "converged"
     assert raw.parameters["material.G"] == pytest.approx(G, rel=1e-4)
     assert raw.parameters["material.G"] == pytest.approx(converted.parameters["material.G"], rel=1e-12)
+    # The identified elastic G(t) = G with its band G +- 1.96 standard errors, over the data's window.
+    material, error = raw.material, raw.standard_errors["material.G"]
+    assert material["t"][0] == pytest.approx(t[1] - t[0]) and material["t"][-1] == pytest.approx(t[-1] - t[0])
+    assert np.allclose(material["G"], raw.parameters["material.G"], rtol=1e-12)
+    assert np.allclose(material["G_upper"] - material["G"], 1.96 * error, rtol=1e-4)
+    assert np.allclose(material["storage"], material["G"][::-1], rtol=1e-12)
     with pytest.raises(ValueError, match="data\\[0\\].spring_constant = -0.05"):
         mdr.fit(case, data=[{"time": t, "piezo": piezo, "deflection": deflection, "spring_constant": -k}])
     with pytest.raises(ValueError, match="data\\[0\\].depth = \\(given\\)"):

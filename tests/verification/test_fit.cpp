@@ -214,6 +214,29 @@ TEST(Fit, ContactPointAndBaselineFromNoisyData) {
     EXPECT_NEAR(result.rms_residual / noise, 1.0, 0.15);
     const std::vector<double> exact{1e6, 2e6, 0.5};
     for (std::size_t j = 0; j < 3; ++j) EXPECT_NEAR(result.values[j], exact[j], 4.0 * result.standard_errors[j]);
+
+    // The identified G(t) and its 95 % band against the delta method written out for the standard solid:
+    // dG/dG_inf = 1, dG/dG1 = e, dG/dtau1 = G1 t e / tau1^2 with e = exp(-t / tau1).
+    const auto& bands = result.material;
+    ASSERT_EQ(bands.times.size(), 121u);
+    EXPECT_NEAR(bands.times.front(), 0.01, 1e-12);  // the sampling interval ...
+    EXPECT_NEAR(bands.times.back(), 3.2, 1e-9);     // ... to the record
+    const auto& s = result.standard_errors;
+    const auto& rho = result.correlation;
+    for (std::size_t i = 0; i < bands.times.size(); i += 20) {
+        const double t = bands.times[i], g1 = result.values[1], tau = result.values[2];
+        const double e = std::exp(-t / tau);
+        const double g[3] = {1.0, e, g1 * t * e / (tau * tau)};
+        double variance = 0.0;
+        for (int a = 0; a < 3; ++a) {
+            for (int b = 0; b < 3; ++b) variance += g[a] * g[b] * s[a] * s[b] * rho[a][b];
+        }
+        EXPECT_NEAR(bands.relaxation.value[i], result.values[0] + g1 * e, 1e-12 * bands.relaxation.value[i]);
+        EXPECT_NEAR(bands.relaxation.upper[i] - bands.relaxation.value[i], 1.96 * std::sqrt(variance),
+                    1e-4 * 1.96 * std::sqrt(variance)) << "t = " << t;
+    }
+    EXPECT_LT(bands.creep.lower.back(), bands.creep.value.back());
+    EXPECT_NEAR(bands.omegas.front() * bands.times.back(), 1.0, 1e-12);
 }
 
 TEST(Fit, NinetyFivePercentIntervalsCoverTheTruth) {

@@ -101,6 +101,25 @@ struct CurveFit {
     double rms_residual = 0.0;      ///< RMS of model - measured
 };
 
+/// A function of the fitted material on a grid, with its 95 % confidence band (first order: the delta method with
+/// the parameters' covariance; NaN where a parameter it depends on is undetermined).
+struct MaterialBand {
+    std::vector<double> value;
+    std::vector<double> lower;
+    std::vector<double> upper;
+};
+
+/// The identified material: G(t) and J(t) over the data's times, storage and loss moduli over the matching
+/// angular frequencies, each with its band.
+struct MaterialBands {
+    std::vector<double> times;   ///< log-spaced from the shortest sampling interval to the longest record [s]
+    MaterialBand relaxation;     ///< G(t) [Pa] (regular part)
+    MaterialBand creep;          ///< J(t) [1/Pa]
+    std::vector<double> omegas;  ///< 1 / times, ascending [rad/s]
+    MaterialBand storage;        ///< G'(omega) [Pa]
+    MaterialBand loss;           ///< G''(omega) [Pa]
+};
+
 /// A parameter that the data cannot determine, and why.
 struct Undetermined {
     std::string name;    ///< the parameter
@@ -133,6 +152,7 @@ struct FitResult {
     /// a flat or tabulated indenter). The other runs use that continuum model, which has no discretisation.
     std::size_t element_evaluations = 0;
     double wall_seconds = 0.0;               ///< wall time of the fit
+    MaterialBands material;                  ///< the identified material functions with their bands
 };
 
 /// What curve `c` of the problem fits: its own Curve::fitted, else FitSettings::fitted.
