@@ -1,55 +1,144 @@
+// mdr.Indenter: its factories, one per row of the registry of indenter shapes (profile/shapes.hpp): positional
+// arguments in the row's order, an alternative key (the cone's half_angle_deg) keyword only; and the profile's g(x).
+
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
 #include <memory>
-#include <optional>
 
 #include "bindings.hpp"
 #include "elementwise.hpp"
 #include "mdr/error.hpp"
 #include "mdr/profile/profile.hpp"
+#include "mdr/profile/shapes.hpp"
 
 namespace py = pybind11;
+using namespace pybind11::literals;
 
 namespace mdr::python {
 namespace {
 
 using profile::Profile;
+using profile::Shape;
+using profile::ShapeParameter;
+using profile::ShapeParameterKind;
 
-// The [indenter] table of a profile, as a dict: {"shape": ..., parameters...}.
-py::dict indenter_table(const Profile& p) {
-    const auto definition = p.definition();
-    py::dict table;
-    table["shape"] = definition.shape;
-    for (const auto& [key, value] : definition.numbers) table[py::str(key)] = value;
-    if (definition.shape == "profile") {
-        table["r"] = definition.r;
-        table["f"] = definition.f;
-        table["interpolation"] = definition.interpolation;
-    }
-    return table;
+// The doctests of the factories (Python only; a shape without one gets a line naming its call).
+const std::map<std::string, std::string> examples{
+    {"sphere", ">>> mdr.Indenter.sphere(R=0.01).contact_radius(1e-4)   # a = sqrt(R d)\n0.001\n"},
+    {"cone", ">>> round(mdr.Indenter.cone(slope_deg=45.0).equivalent(2.0), 12)   # (pi/2) tan(45 deg) x\n"
+             "3.14159265359\n"
+             ">>> berkovich = mdr.Indenter.cone(half_angle_deg=70.3)          # the area-equivalent cone of a "
+             "Berkovich tip\n"},
+    {"flat", ">>> mdr.Indenter.flat(a=1e-3).equivalent([0.0, 2e-3])\narray([ 0., inf])\n"},
+    {"power", ">>> round(mdr.Indenter.power(c=0.5, n=2.0).equivalent(3.0), 12)   # kappa_2 = 2: the sphere of R = "
+              "1 / (2 c)\n9.0\n"},
+    {"profile", ">>> cone = mdr.Indenter.profile(r=[0.0, 1.0], f=[0.0, 1.0], interpolation=\"linear\")\n"
+                ">>> round(cone.equivalent(0.5), 12)                     # the 45 degree cone: (pi/2) x\n"
+                "0.785398163397\n"},
+};
+
+// True when the key has an alternative or is one (the library then checks that exactly one is given).
+bool in_alternatives(const Shape& shape, const ShapeParameter& parameter) {
+    return !parameter.alternative_to.empty() ||
+           std::any_of(shape.parameters.begin(), shape.parameters.end(),
+                       [&](const ShapeParameter& other) { return other.alternative_to == parameter.key; });
 }
 
-profile::ProfileDefinition definition_of(const py::dict& table) {
-    profile::ProfileDefinition definition;
-    for (const auto& [key, value] : table) {
-        const auto name = key.cast<std::string>();
-        if (name == "shape") definition.shape = value.cast<std::string>();
-        else if (name == "r") definition.r = value.cast<std::vector<double>>();
-        else if (name == "f") definition.f = value.cast<std::vector<double>>();
-        else if (name == "interpolation") definition.interpolation = value.cast<std::string>();
-        else definition.numbers.emplace_back(name, value.cast<double>());
-    }
-    return definition;
+const char* python_type(ShapeParameterKind kind) {
+    return kind == ShapeParameterKind::number ? "float" : kind == ShapeParameterKind::numbers ? "sequence of float" : "str";
 }
 
-}  // namespace
+void put(profile::ProfileDefinition& definition, const std::string& key, ShapeParameterKind kind,
+         const py::handle& value) {
+    try {
+        switch (kind) {
+            case ShapeParameterKind::number: definition.numbers[key] = value.cast<double>(); break;
+            case ShapeParameterKind::numbers: definition.arrays[key] = value.cast<std::vector<double>>(); break;
+            case ShapeParameterKind::text: definition.texts[key] = value.cast<std::string>(); break;
+        }
+    } catch (const py::cast_error&) {  // a wrong type is a TypeError in Python, as for any function
+        const char* expected = kind == ShapeParameterKind::number    ? "a number"
+                               : kind == ShapeParameterKind::numbers ? "a sequence of numbers"
+                                                                     : "a string";
+        throw py::type_error(key + " = " + py::repr(value).cast<std::string>() + ": must be " + expected);
+    }
+}
 
-void bind_profile(py::module_& module) {
-    py::class_<Profile, std::shared_ptr<Profile>>(module, "Indenter", R"doc(An axisymmetric rigid indenter.
+std::shared_ptr<Profile> build(const Shape& shape, const py::args& args, const py::kwargs& kwargs) {
+    std::vector<const ShapeParameter*> positional;
+    std::string valid;
+    for (const auto& parameter : shape.parameters) {
+        if (parameter.alternative_to.empty()) positional.push_back(&parameter);
+        valid += (valid.empty() ? "" : ", ") + parameter.key;
+    }
+    if (args.size() > positional.size()) {
+        throw py::type_error(fmt::format("{}() takes at most {} positional arguments, {} given (arguments: {})",
+                                         shape.name, positional.size(), args.size(), valid));
+    }
+    profile::ProfileDefinition definition{shape.name};
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (!args[i].is_none()) put(definition, positional[i]->key, positional[i]->kind, args[i]);
+    }
+    for (const auto& [name, value] : kwargs) {
+        const auto key = name.cast<std::string>();
+        const auto found = std::find_if(shape.parameters.begin(), shape.parameters.end(),
+                                        [&](const ShapeParameter& parameter) { return parameter.key == key; });
+        if (found == shape.parameters.end()) {
+            throw py::type_error(
+                fmt::format("{}() got an unexpected keyword argument '{}'; valid: {}", shape.name, key, valid));
+        }
+        if (definition.has(key)) {
+            throw py::type_error(fmt::format("{}() got multiple values for argument '{}'", shape.name, key));
+        }
+        if (!value.is_none()) put(definition, key, found->kind, value);
+    }
+    for (const auto& parameter : shape.parameters) {
+        if (parameter.required && !in_alternatives(shape, parameter) && !definition.has(parameter.key)) {
+            throw py::type_error(
+                fmt::format("{}() missing required argument '{}' (arguments: {})", shape.name, parameter.key, valid));
+        }
+    }
+    return profile::make_profile(definition);
+}
 
-Its gap f(r) to the undeformed surface and its MDR profile g(x) (handbook eq. 9). Build it with the factories
-(sphere, cone, flat, power, profile); lengths are in the case's units (SI: m). An Indenter
+std::string docstring(const Shape& shape) {
+    std::string text = shape.documentation + ".\n\nParameters\n----------\n";
+    for (const auto& parameter : shape.parameters) {
+        const bool optional = !parameter.required || in_alternatives(shape, parameter);
+        std::string note;
+        if (!parameter.alternative_to.empty()) note = fmt::format(", keyword only; instead of {}", parameter.alternative_to);
+        else if (!parameter.default_text.empty()) note = fmt::format(" (default \"{}\")", parameter.default_text);
+        for (const auto& other : shape.parameters) {
+            if (other.alternative_to == parameter.key) note = fmt::format("; give it or {}", other.key);
+        }
+        text += fmt::format("{} : {}{}\n    {}{}{}\n", parameter.key, python_type(parameter.kind),
+                            optional ? ", optional" : "", parameter.documentation,
+                            parameter.unit.empty() ? "" : " [" + parameter.unit + "]", note);
+    }
+    const auto example = examples.find(shape.name);
+    std::string keywords;
+    for (const auto& parameter : shape.parameters) {
+        if (parameter.required) keywords += fmt::format("{}{}=...", keywords.empty() ? "" : ", ", parameter.key);
+    }
+    return text + "\nReturns\n-------\nIndenter\n\nExamples\n--------\n" +
+           (example != examples.end()
+                ? example->second
+                : fmt::format("``mdr.Indenter.{}({})``, or in a case file ``[indenter]`` with ``shape = \"{}\"`` and "
+                              "the keys above (docs/case-format.md, Indenter shapes).\n",
+                              shape.name, keywords, shape.name));
+}
+
+std::string class_docstring() {
+    std::string names;
+    for (const Shape& shape : profile::shapes()) names += (names.empty() ? "" : ", ") + shape.name;
+    return "An axisymmetric rigid indenter.\n\nIts gap f(r) to the undeformed surface and its MDR profile g(x) "
+           "(handbook eq. 9). Build it with the factories\n(" +
+           names + R"doc(); lengths are in the case's units (SI: m). An Indenter
 pickles, and stands for its [indenter] table in a case dict.
 
 Examples
@@ -59,123 +148,70 @@ Examples
 2.0
 >>> sphere.table
 {'shape': 'sphere', 'R': 0.5}
-)doc")
-        .def_static("sphere", [](double R) { return std::shared_ptr<Profile>(profile::make_sphere(R)); }, py::arg("R"),
-                    R"doc(A sphere (parabolic): f = r^2 / (2R), g = x^2 / R.
+)doc";
+}
 
-Parameters
-----------
-R : float
-    Radius (> 0).
+// The [indenter] table of a profile, as a dict: {"shape": ..., keys in the order of the shape's row}.
+py::dict indenter_table(const Profile& p) {
+    const auto definition = p.definition();
+    py::dict table;
+    table["shape"] = definition.shape;
+    for (const auto& parameter : profile::shape_named(definition.shape).parameters) {
+        const std::string& key = parameter.key;
+        if (const auto number = definition.numbers.find(key); number != definition.numbers.end()) {
+            table[py::str(key)] = number->second;
+        } else if (const auto array = definition.arrays.find(key); array != definition.arrays.end()) {
+            table[py::str(key)] = array->second;
+        } else if (const auto found = definition.texts.find(key); found != definition.texts.end()) {
+            table[py::str(key)] = found->second;
+        }
+    }
+    return table;
+}
 
-Returns
--------
-Indenter
+profile::ProfileDefinition definition_of(const py::dict& table) {
+    profile::ProfileDefinition definition{table["shape"].cast<std::string>()};
+    const auto& parameters = profile::shape_named(definition.shape).parameters;
+    for (const auto& [name, value] : table) {
+        const auto key = name.cast<std::string>();
+        if (key == "shape") continue;
+        const auto found = std::find_if(parameters.begin(), parameters.end(),
+                                        [&](const ShapeParameter& parameter) { return parameter.key == key; });
+        // An unknown key is kept as a number, for make_profile to refuse by name.
+        put(definition, key, found == parameters.end() ? ShapeParameterKind::number : found->kind, value);
+    }
+    return definition;
+}
 
-Examples
---------
->>> mdr.Indenter.sphere(R=0.01).contact_radius(1e-4)   # a = sqrt(R d)
-0.001
-)doc")
-        .def_static(
-            "cone",
-            [](std::optional<double> slope_deg, std::optional<double> half_angle_deg) {
-                if (slope_deg.has_value() == half_angle_deg.has_value()) {
-                    throw InvalidInput("slope_deg", slope_deg ? "given with half_angle_deg" : "(missing)",
-                                       "give one of slope_deg (between flank and surface) or half_angle_deg "
-                                       "(between flank and axis, as tips are specified)");
-                }
-                return std::shared_ptr<Profile>(slope_deg ? profile::make_cone(*slope_deg)
-                                                          : profile::make_cone_from_half_angle(*half_angle_deg));
-            },
-            py::arg("slope_deg") = py::none(), py::kw_only(), py::arg("half_angle_deg") = py::none(),
-            R"doc(A cone: g = (pi/2) tan(theta) |x|.
+py::list shape_rows() {
+    py::list rows;
+    for (const Shape& shape : profile::shapes()) {
+        py::list parameters;
+        for (const auto& parameter : shape.parameters) {
+            static const char* kinds[] = {"number", "numbers", "text"};
+            parameters.append(py::dict("key"_a = parameter.key, "kind"_a = kinds[static_cast<int>(parameter.kind)],
+                                       "unit"_a = parameter.unit, "documentation"_a = parameter.documentation,
+                                       "required"_a = parameter.required, "default"_a = parameter.default_text,
+                                       "alternative_to"_a = parameter.alternative_to));
+        }
+        rows.append(py::dict("name"_a = shape.name, "label"_a = shape.label, "documentation"_a = shape.documentation,
+                             "parameters"_a = parameters));
+    }
+    return rows;
+}
 
-Give one angle: the slope theta between flank and surface, or the half-angle between flank and axis (as
-nanoindentation tips are specified; theta = 90 - half_angle_deg).
+}  // namespace
 
-Parameters
-----------
-slope_deg : float, optional
-    Angle theta between flank and surface in degrees (0 < theta < 90).
-half_angle_deg : float, optional
-    Angle between flank and axis in degrees (0 < angle < 90), keyword only.
-
-Returns
--------
-Indenter
-
-Examples
---------
->>> round(mdr.Indenter.cone(slope_deg=45.0).equivalent(2.0), 12)   # (pi/2) tan(45 deg) x
-3.14159265359
->>> berkovich = mdr.Indenter.cone(half_angle_deg=70.3)          # the area-equivalent cone of a Berkovich tip
-)doc")
-        .def_static("flat", [](double a) { return std::shared_ptr<Profile>(profile::make_flat_punch(a)); },
-                    py::arg("a"), R"doc(A flat punch: g = 0 for |x| <= a, a rigid wall beyond.
-
-Parameters
-----------
-a : float
-    Radius of the punch (> 0).
-
-Returns
--------
-Indenter
-
-Examples
---------
->>> mdr.Indenter.flat(a=1e-3).equivalent([0.0, 2e-3])
-array([ 0., inf])
-)doc")
-        .def_static("power", [](double c, double n) { return std::shared_ptr<Profile>(profile::make_power_law(c, n)); },
-                    py::arg("c"), py::arg("n"), R"doc(A power-law profile f = c r^n: g = kappa_n c |x|^n.
-
-Parameters
-----------
-c : float
-    Coefficient (> 0), in length^(1-n).
-n : float
-    Exponent (> 0).
-
-Returns
--------
-Indenter
-
-Examples
---------
->>> round(mdr.Indenter.power(c=0.5, n=2.0).equivalent(3.0), 12)   # kappa_2 = 2: the sphere of R = 1 / (2 c)
-9.0
-)doc")
-        .def_static(
-            "profile",
-            [](std::vector<double> r, std::vector<double> f, const std::string& interpolation) {
-                return std::shared_ptr<Profile>(
-                    profile::make_table(std::move(r), std::move(f), profile::interpolation_named(interpolation)));
-            },
-            py::arg("r"), py::arg("f"), py::arg("interpolation") = "monotone_cubic",
-            R"doc(A tabulated gap f(r).
-
-Parameters
-----------
-r : sequence of float
-    Radii, ascending from 0.
-f : sequence of float
-    The gap at each radius: f(0) = 0, non-decreasing.
-interpolation : {"monotone_cubic", "linear"}, optional
-    Monotone cubics for smooth profiles (default), linear segments for profiles with kinks (eq. 9 exact per
-    segment).
-
-Returns
--------
-Indenter
-
-Examples
---------
->>> cone = mdr.Indenter.profile(r=[0.0, 1.0], f=[0.0, 1.0], interpolation="linear")
->>> round(cone.equivalent(0.5), 12)                     # the 45 degree cone: (pi/2) x
-0.785398163397
-)doc")
+void bind_profile(py::module_& module) {
+    module.def("_shapes", &shape_rows,
+               "The registry of indenter shapes (name, documentation, parameters), for the stubs and the docs.");
+    py::class_<Profile, std::shared_ptr<Profile>> indenter(module, "Indenter", class_docstring().c_str());
+    for (const Shape& shape : profile::shapes()) {
+        indenter.def_static(
+            shape.name.c_str(), [&shape](const py::args& args, const py::kwargs& kwargs) { return build(shape, args, kwargs); },
+            docstring(shape).c_str());
+    }
+    indenter
         .def("gap",
              [](const Profile& p, const InputArray& r) {
                  return elementwise<double>(r, [&](double x) { return p.gap(x); });

@@ -15,8 +15,10 @@ void bind_material_models(pybind11::class_<rheology::Rheology>& material);
 void bind_material_registry(pybind11::module_& module);
 /// mdr.run and mdr.check: cases from TOML text, results as numpy arrays.
 void bind_run(pybind11::module_& module);
-/// mdr.Indenter: the profiles and their g(x).
+/// mdr.Indenter: the profiles and their g(x), its factories from the registry of shapes, and _mdr._shapes().
 void bind_profile(pybind11::module_& module);
+/// _mdr._controls(): the registry of controls as data (the docs are checked against it).
+void bind_control_registry(pybind11::module_& module);
 /// mdr.sweep: a case over a grid of numeric keys.
 void bind_sweep(pybind11::module_& module);
 /// mdr.distributed: result directories with the rules of --out, for the files Python writes.

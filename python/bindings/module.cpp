@@ -9,6 +9,7 @@ PYBIND11_MODULE(_mdr, module) {
     mdr::python::bind_rheology(module);
     mdr::python::bind_material_registry(module);
     mdr::python::bind_profile(module);
+    mdr::python::bind_control_registry(module);
     mdr::python::bind_run(module);
     mdr::python::bind_sweep(module);
     mdr::python::bind_fit(module);

@@ -218,17 +218,24 @@ class SweepTable(dict):
     batch: Any = None
 
 
-def sweep(case: CaseLike, vary: Mapping[str, Any], jobs: Optional[int] = None,
-          progress: Optional[Callable[[int, int], Any]] = None, scheduler: Any = None) -> SweepTable:
+def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = None, jobs: Optional[int] = None,
+          progress: Optional[Callable[[int, int], Any]] = None, scheduler: Any = None, *,
+          material: Union[Material, Mapping[str, Any], None] = None,
+          indenter: Union[Indenter, Mapping[str, Any], None] = None, load: Optional[Mapping[str, Any]] = None,
+          numerics: Optional[Mapping[str, Any]] = None, tangential: Optional[Mapping[str, Any]] = None,
+          output: Optional[Mapping[str, Any]] = None, title: Optional[str] = None) -> SweepTable:
     """Runs a case over the cartesian product of grids of numeric keys, like ``mdr sweep``.
+
+    Give either `case` (a case file or a dict with its structure) or the case's tables as keywords, as for `run`.
 
     Parameters
     ----------
-    case : str, os.PathLike or dict
+    case : str, os.PathLike or dict, optional
         A case file or a dict with its structure.
     vary : dict of str to sequence or str
         ``{dotted key: values}``: a 1-D sequence of numbers or ``"START:STOP:COUNT[:log]"``; the last key varies
-        fastest.
+        fastest. A key names a number of the case, also inside an array (``"load.history[1][1]"``: the value of
+        the second history point).
     jobs : int, optional
         Threads (default: all cores).
     progress : callable, optional
@@ -237,6 +244,8 @@ def sweep(case: CaseLike, vary: Mapping[str, Any], jobs: Optional[int] = None,
     scheduler : str or distributed.Client, optional
         A Dask scheduler address ``"tcp://HOST:PORT"`` or a client: the points run in chunks on its workers
         (docs/distributed.md), with the same rows bit for bit.
+    material, indenter, load, numerics, tangential, output, title
+        The case's tables as keywords, as for `run` (``mdr.Material`` and ``mdr.Indenter`` objects or dicts).
 
     Returns
     -------
@@ -249,12 +258,23 @@ def sweep(case: CaseLike, vary: Mapping[str, Any], jobs: Optional[int] = None,
     ------
     mdr.InvalidInput
         For a bad case or a key that is not a number of the case.
+    TypeError
+        For a case given both ways, or none.
 
     Examples
     --------
     >>> table = mdr.sweep("examples/default.toml", {"material.G_inf": [0.5e6, 1e6, 2e6]}, jobs=2)
     >>> table["max_force"].shape
     (3,)
+
+    The tables as keywords, and the peak depth of the history varied:
+
+    >>> table = mdr.sweep(material=mdr.Material.elastic(G=1e6), indenter=mdr.Indenter.sphere(R=0.01),
+    ...                   load={"control": "displacement", "history": [[0.0, 0.0], [1.0, 1e-4]]},
+    ...                   vary={"load.history[1][1]": [1e-4, 4e-4]}, jobs=1)
+    >>> ratio = table["max_force"][1] / table["max_force"][0]   # Hertz: F grows as d^(3/2)
+    >>> round(ratio, 2)
+    8.0
     """
     if not isinstance(vary, Mapping) or not vary:
         raise TypeError("vary: expected a non-empty dict {key: values}")
@@ -263,7 +283,8 @@ def sweep(case: CaseLike, vary: Mapping[str, Any], jobs: Optional[int] = None,
     if jobs is not None and scheduler is not None:
         raise ValueError(f"jobs = {jobs!r}: not used with a scheduler (its workers' threads run the chunks)")
     progress = _callable_or_none(progress)
-    text, source = _case_text(case)
+    text, source = _case_text(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
+                                                  tangential=tangential, output=output, numerics=numerics)))
     specs = [_axis_spec(key, values) for key, values in vary.items()]
     batch = None
     if scheduler is None:

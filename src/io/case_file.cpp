@@ -8,61 +8,19 @@
 #include <sstream>
 
 #include "mdr/drivers/case_validation.hpp"
+#include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/material_window.hpp"
 #include "mdr/error.hpp"
 #include "mdr/rheology/compressible.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "case_reader.hpp"
 #include "mdr/io/units.hpp"
+#include "indenter_reader.hpp"
 #include "material_reader.hpp"
 #include "toml_reader.hpp"
 
 namespace mdr::io {
 namespace {
-
-std::shared_ptr<const profile::Profile> read_indenter(TableReader& table) {
-    const std::string shape = table.string("shape");
-    std::vector<std::string> known{"shape", "mass", "moment_of_inertia", "material"};
-    const auto with = [&](std::initializer_list<const char*> keys) {
-        for (const char* key : keys) known.emplace_back(key);
-        table.reject_unknown(known);
-    };
-    try {
-        if (shape == "sphere") {
-            with({"R"});
-            return profile::make_sphere(table.number("R"));
-        }
-        if (shape == "cone") {
-            with({"slope_deg", "half_angle_deg"});
-            if (table.has("slope_deg") == table.has("half_angle_deg")) {
-                throw InvalidInput("indenter.slope_deg",
-                                   table.has("slope_deg") ? "given with half_angle_deg" : "(missing)",
-                                   "give one of slope_deg (between flank and surface) or half_angle_deg (between "
-                                   "flank and axis, as tips are specified)");
-            }
-            return table.has("slope_deg") ? profile::make_cone(table.number("slope_deg"))
-                                          : profile::make_cone_from_half_angle(table.number("half_angle_deg"));
-        }
-        if (shape == "flat") {
-            with({"a"});
-            return profile::make_flat_punch(table.number("a"));
-        }
-        if (shape == "power") {
-            with({"c", "n"});
-            return profile::make_power_law(table.number("c"), table.number("n"));
-        }
-        if (shape == "profile") {
-            with({"r", "f", "interpolation"});
-            const auto interpolation =
-                profile::interpolation_named(table.optional_string("interpolation").value_or("monotone_cubic"));
-            return profile::make_table(table.numbers("r"), table.numbers("f"), interpolation);
-        }
-    } catch (const InvalidInput& error) {
-        if (error.key().rfind("indenter.", 0) == 0) throw;
-        throw error.with_prefix("indenter.");
-    }
-    throw InvalidInput("indenter.shape", "\"" + shape + "\"", "unknown shape; one of sphere, cone, flat, power, profile");
-}
 
 // One body as read: its shear table and, for a compressible body, K or the bulk table (built once the time window
 // of the case is known, which a model converted to a series needs).
@@ -111,9 +69,7 @@ Body build_body(const BodySpec& spec, const std::optional<rheology::TimeWindow>&
 
 drivers::LoadHistory read_history(TableReader& load, drivers::Control control) {
     std::vector<drivers::LoadPoint> points;
-    const char* quantity = control == drivers::Control::force    ? "F"
-                           : control == drivers::Control::spring ? "z"
-                                                                 : "d";
+    const char* quantity = drivers::control_kind(control).column.c_str();
     for (const auto& [t, value] : load.pairs("history", "t", quantity)) points.push_back({t, value});
     return drivers::LoadHistory(std::move(points), "load.history");
 }
@@ -225,13 +181,10 @@ drivers::ContactCase read_case(const toml::table& root_table) {
                           "tangential_velocity", "incidence_deg", "spin"});
     const std::string control_name = load->string("control");
     drivers::Control control;
-    if (control_name == "displacement") control = drivers::Control::displacement;
-    else if (control_name == "force") control = drivers::Control::force;
-    else if (control_name == "impact") control = drivers::Control::impact;
-    else if (control_name == "spring") control = drivers::Control::spring;
-    else {
-        throw InvalidInput("load.control", "\"" + control_name + "\"",
-                           "unknown control; one of displacement, force, impact, spring");
+    try {
+        control = drivers::control_named(control_name).control;
+    } catch (const InvalidInput& error) {
+        throw error.with_prefix("load.");
     }
     std::optional<drivers::HarmonicLoad> harmonic;
     if (load->has("harmonic")) {
@@ -366,9 +319,7 @@ std::string describe(const drivers::ContactCase& contact_case) {
         }
     } else {
         load = fmt::format("{} control, {} history points over t = {:.4g} .. {:.4g} {}",
-                           contact_case.control == drivers::Control::force    ? "force"
-                           : contact_case.control == drivers::Control::spring ? "spring"
-                                                                              : "displacement",
+                           drivers::control_kind(contact_case.control).name,
                            contact_case.history.points().size(), contact_case.history.start_time(),
                            contact_case.end_time, units.time);
         if (contact_case.spring_constant) {

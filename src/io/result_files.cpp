@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "mdr/drivers/controls.hpp"
+
 namespace mdr::io {
 namespace fs = std::filesystem;
 
@@ -29,10 +31,7 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
     summary["steps"] = result.steps;
     summary["elements"] = result.numerics.elements;
     summary["wall_seconds"] = wall_seconds;
-    summary["control"] = contact_case.control == drivers::Control::force    ? "force"
-                         : contact_case.control == drivers::Control::impact ? "impact"
-                         : contact_case.control == drivers::Control::spring ? "spring"
-                                                                            : "displacement";
+    summary["control"] = drivers::control_kind(contact_case.control).name;
     summary["time_step"] = result.numerics.time_step;
     summary["half_width"] = result.numerics.half_width;
     summary["final_force"] = result.force.empty() ? 0.0 : result.force.back();

@@ -18,8 +18,7 @@ public:
     double contact_radius(double depth) const override { return depth > 0.0 ? radius_ : 0.0; }
     double max_radius() const override { return radius_; }
     bool is_flat_punch() const override { return true; }
-    std::string describe() const override { return "flat punch a = " + format_value(radius_); }
-    ProfileDefinition definition() const override { return {"flat", {{"a", radius_}}, {}, {}, {}}; }
+    ProfileDefinition definition() const override { return {"flat", {{"a", radius_}}}; }
 
 private:
     static constexpr double infinity = std::numeric_limits<double>::infinity();

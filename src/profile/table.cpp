@@ -163,7 +163,10 @@ public:
         return "table " + std::to_string(r_.size()) + " points, r_max = " + format_value(r_.back());
     }
     ProfileDefinition definition() const override {
-        return {"profile", {}, r_, f_, interpolation_ == Interpolation::linear ? "linear" : "monotone_cubic"};
+        return {"profile",
+                {},
+                {{"r", r_}, {"f", f_}},
+                {{"interpolation", interpolation_ == Interpolation::linear ? "linear" : "monotone_cubic"}}};
     }
 
 private:

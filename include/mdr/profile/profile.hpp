@@ -2,21 +2,29 @@
 /// \file
 /// Axisymmetric indenter profiles f(r) and their MDR equivalents g(x) (handbook section 4, eq. 9 and 10).
 
+#include <map>
 #include <memory>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace mdr::profile {
 
 /// What defines a profile, named as in the case file's `[indenter]` table: enough to build it again (pickling,
-/// writing a case back).
+/// writing a case back). The keys of each shape are those of its row in the registry (shapes.hpp).
 struct ProfileDefinition {
-    std::string shape;                                    ///< sphere, cone, flat, power or profile
-    std::vector<std::pair<std::string, double>> numbers;  ///< e.g. {"R", 0.01}
-    std::vector<double> r;                                ///< a table's radii [m] (shape = profile)
-    std::vector<double> f;                                ///< a table's gaps [m]
-    std::string interpolation;                            ///< a table's interpolation (linear, monotone_cubic)
+    std::string shape;                                    ///< a shape of the registry: sphere, cone, ...
+    std::map<std::string, double> numbers{};              ///< e.g. {"R", 0.01}
+    std::map<std::string, std::vector<double>> arrays{};  ///< e.g. a table's {"r", ...} and {"f", ...}
+    std::map<std::string, std::string> texts{};           ///< e.g. a table's {"interpolation", "linear"}
+
+    /// The number under `key` (throws mdr::InvalidInput `key = (missing): is required` if absent).
+    double number(const std::string& key) const;
+    /// The array under `key` (throws as number()).
+    const std::vector<double>& array(const std::string& key) const;
+    /// The text under `key` (throws as number()).
+    const std::string& text(const std::string& key) const;
+    /// True when any kind of value is given for `key`.
+    bool has(const std::string& key) const;
 };
 
 /// An axisymmetric gap f(r) between the undeformed surfaces, f(0) = 0, non-decreasing in r.
@@ -36,8 +44,8 @@ public:
     virtual double max_radius() const = 0;
     /// True when g has a jump to a rigid wall at max_radius() (flat punch): the contact radius is then fixed.
     virtual bool is_flat_punch() const { return false; }
-    /// Short human description, e.g. `sphere R = 0.01`.
-    virtual std::string describe() const = 0;
+    /// Short human description, e.g. `sphere R = 0.01`: by default describe_shape(definition()) of the registry.
+    virtual std::string describe() const;
     /// The shape and parameters that build this profile again (make_profile).
     virtual ProfileDefinition definition() const = 0;
 };
@@ -69,8 +77,9 @@ std::unique_ptr<Profile> make_table(std::vector<double> r, std::vector<double> f
 /// The interpolation of that name (`monotone_cubic` or `linear`); mdr::InvalidInput (key `interpolation`) else.
 Interpolation interpolation_named(const std::string& name);
 
-/// Builds the profile that `definition` describes (the factories above; their errors name the case-file keys
-/// without the `indenter.` prefix). Throws mdr::InvalidInput for an unknown shape or a missing parameter.
+/// Builds the profile that `definition` describes with the factory of its shape's row (shapes.hpp; errors name the
+/// case-file keys without the `indenter.` prefix). Throws mdr::InvalidInput for an unknown shape, an unknown or a
+/// missing key, or two alternatives given together (slope_deg with half_angle_deg).
 std::unique_ptr<Profile> make_profile(const ProfileDefinition& definition);
 
 }  // namespace mdr::profile

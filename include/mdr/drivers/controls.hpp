@@ -1,0 +1,33 @@
+#pragma once
+/// \file
+/// The one table of controls (`[load] control`): name, one-line documentation and the keys each needs. The case
+/// reader, its error messages, the description of a case, summary.json and the control table of
+/// docs/case-format.md take the names from it. What a control does lives in the drivers (indentation.cpp,
+/// impact.cpp); its rules in drivers::validate.
+
+#include <string>
+#include <vector>
+
+#include "mdr/drivers/contact_case.hpp"
+
+namespace mdr::drivers {
+
+/// One row of the table.
+struct ControlKind {
+    Control control = Control::displacement;
+    std::string name;              ///< `load.control = "name"`, and summary.json's `control`
+    std::string documentation;     ///< one line
+    std::string column;            ///< the history's value column as messages name it (d, F, z); "" without history
+    std::vector<std::string> keys; ///< the keys it needs, dotted (`load.history`, `indenter.mass`)
+};
+
+/// Every control, in the order of the documentation.
+const std::vector<ControlKind>& controls();
+
+/// The row named `name`; throws mdr::InvalidInput(`control`, "name", "unknown control; one of ...").
+const ControlKind& control_named(const std::string& name);
+
+/// The row of `control`.
+const ControlKind& control_kind(Control control);
+
+}  // namespace mdr::drivers

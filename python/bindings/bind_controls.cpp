@@ -1,0 +1,27 @@
+// _mdr._controls(): the registry of controls (drivers/controls.hpp) as data, for the docs.
+
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "mdr/drivers/controls.hpp"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace mdr::python {
+
+void bind_control_registry(py::module_& module) {
+    module.def(
+        "_controls",
+        [] {
+            py::list rows;
+            for (const drivers::ControlKind& kind : drivers::controls()) {
+                rows.append(py::dict("name"_a = kind.name, "documentation"_a = kind.documentation,
+                                     "column"_a = kind.column, "keys"_a = kind.keys));
+            }
+            return rows;
+        },
+        "The registry of controls (name, documentation, history column, keys), for the docs.");
+}
+
+}  // namespace mdr::python
