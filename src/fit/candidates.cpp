@@ -221,7 +221,7 @@ std::vector<double> linear_start(const io::FitCase& base, const Material& materi
                                     : rheology::Rheology::prony(0.0, {{1.0, material.grid[static_cast<std::size_t>(j - 1)]}});
             auto force = run_curve(basis, prepared, contact, 0.0, elements, ForwardModel::continuum);
             if (!force) force = run_curve(std::move(basis), prepared, contact, 0.0, elements, ForwardModel::elements);
-            for (Eigen::Index i = 0; i < n; ++i) A(i, j) = (*force)[static_cast<std::size_t>(i)] / prepared.noise;
+            for (Eigen::Index i = 0; i < n; ++i) A(i, j) = force->values[static_cast<std::size_t>(i)] / prepared.noise;
         }
         rows += n;
         blocks_A.push_back(std::move(A));

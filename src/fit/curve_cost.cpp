@@ -40,8 +40,7 @@ double CurveCost::baseline(const double* nuisance) const {
     return problem_.settings.baseline == BaselineMode::estimate ? curve.force_baseline : 0.0;
 }
 
-std::optional<std::vector<double>> CurveCost::model(const double* shared, const double* nuisance,
-                                                    ForwardModel forward) const {
+std::optional<ModelValues> CurveCost::model(const double* shared, const double* nuisance, ForwardModel forward) const {
     if (problem_.settings.check_interrupt) problem_.settings.check_interrupt();
     auto model_case = problem_.model(scales_.values(shared));
     const std::size_t elements = problem_.settings.elements.value_or(model_case.numerics.elements.value_or(elements_));
@@ -55,21 +54,65 @@ std::optional<std::vector<double>> CurveCost::model(const double* shared, const 
 }
 
 CurveCost::Outcome CurveCost::residuals_at(const double* shared, const double* nuisance, ForwardModel forward,
-                                           double* residuals) const {
+                                           double* residuals, ModelValues* run) const {
     try {
-        const auto values = model(shared, nuisance, forward);
+        auto values = model(shared, nuisance, forward);
         if (!values) return Outcome::outside_model;
         const Curve& curve = problem_.curves[curve_];
         const auto& measured = prepared_.fitted == Fitted::force ? curve.force : curve.depth;
-        for (std::size_t i = 0; i < values->size(); ++i) {
-            residuals[i] = ((*values)[i] - measured[prepared_.used[i]]) / prepared_.noise;
+        for (std::size_t i = 0; i < values->values.size(); ++i) {
+            residuals[i] = (values->values[i] - measured[prepared_.used[i]]) / prepared_.noise;
             if (!std::isfinite(residuals[i])) return Outcome::failed;
         }
+        if (run != nullptr) *run = std::move(*values);
         return Outcome::done;
     } catch (const Interrupted&) {
         throw;  // a stop on request ends the fit
     } catch (const std::exception&) {
         return Outcome::failed;  // values where the model cannot run (bounds of work, a rule of the case): a rejected step
+    }
+}
+
+namespace {
+
+// The moduli of a material in TingResponse's branch order: G_inf, then the terms.
+std::vector<double> branch_moduli(const rheology::Rheology& material) {
+    std::vector<double> moduli{material.equilibrium_modulus()};
+    for (const auto& term : material.terms()) moduli.push_back(term.modulus);
+    return moduli;
+}
+
+bool same_profile(const profile::ProfileDefinition& a, const profile::ProfileDefinition& b) {
+    return a.shape == b.shape && a.numbers == b.numbers && a.arrays == b.arrays && a.texts == b.texts;
+}
+
+}  // namespace
+
+std::optional<std::vector<double>> CurveCost::modulus_direction(const drivers::ContactCase& base, const double* shared,
+                                                            const std::vector<double>& values, std::size_t j) const {
+    try {
+        auto moved_values = values;
+        const double step = 1e-6 * std::max(std::abs(values[j]), std::numeric_limits<double>::min());
+        moved_values[j] += step;
+        const auto moved = problem_.model(moved_values);
+        const auto& a = base.material.terms();
+        const auto& b = moved.material.terms();
+        if (a.size() != b.size() || base.material.viscosity() != moved.material.viscosity() ||
+            !same_profile(base.indenter->definition(), moved.indenter->definition())) {
+            return std::nullopt;
+        }
+        for (std::size_t k = 0; k < a.size(); ++k) {
+            if (a[k].relaxation_time != b[k].relaxation_time) return std::nullopt;
+        }
+        // d value / d coordinate, by a central difference of the coordinate map (no model built).
+        const double h = 1e-6 * std::max(std::abs(shared[j]), 1.0);
+        const double slope = (scales_.to_value(j, shared[j] + h) - scales_.to_value(j, shared[j] - h)) / (2.0 * h);
+        auto direction = branch_moduli(moved.material);
+        const auto start = branch_moduli(base.material);
+        for (std::size_t k = 0; k < direction.size(); ++k) direction[k] = (direction[k] - start[k]) / step * slope;
+        return direction;
+    } catch (const std::exception&) {
+        return std::nullopt;  // a value the case refuses beside the point: the column by running the model
     }
 }
 
@@ -89,7 +132,9 @@ CurveCost::Outcome CurveCost::evaluate_with(ForwardModel forward, double const* 
     std::vector<double> shared(parameters[0], parameters[0] + k);
     std::vector<double> nuisance(m);
     if (m > 0) nuisance.assign(parameters[1], parameters[1] + m);
-    if (const Outcome outcome = residuals_at(shared.data(), nuisance.data(), forward, residuals); outcome != Outcome::done) {
+    ModelValues run;
+    if (const Outcome outcome = residuals_at(shared.data(), nuisance.data(), forward, residuals, &run);
+        outcome != Outcome::done) {
         return outcome;
     }
     if (jacobians == nullptr) return Outcome::done;
@@ -108,8 +153,22 @@ CurveCost::Outcome CurveCost::evaluate_with(ForwardModel forward, double const* 
         return Outcome::done;
     };
     if (jacobians[0] != nullptr) {
+        // Parameters that only scale moduli: their columns from the run's own derivatives (the continuum model).
+        const auto values = scales_.values(shared.data());
+        std::optional<drivers::ContactCase> base;
+        if (!run.modulus_derivatives.empty()) base = problem_.model(values);
         for (std::size_t j = 0; j < k; ++j) {
-            if (const Outcome outcome = difference(shared[j], jacobians[0], k, j, scales_.upper[j]); outcome != Outcome::done) {
+            const auto direction = base ? modulus_direction(*base, shared.data(), values, j) : std::nullopt;
+            if (direction) {
+                for (std::size_t i = 0; i < n; ++i) {
+                    double derivative = 0.0;
+                    for (std::size_t b = 0; b < direction->size(); ++b) {
+                        derivative += (*direction)[b] * run.modulus_derivatives[b][i];
+                    }
+                    jacobians[0][i * k + j] = derivative / prepared_.noise;
+                }
+            } else if (const Outcome outcome = difference(shared[j], jacobians[0], k, j, scales_.upper[j]);
+                       outcome != Outcome::done) {
                 return outcome;
             }
         }

@@ -43,8 +43,16 @@ private:
     enum class Outcome { done, failed, outside_model };
     /// The model of the fitted quantity at the used points (contact point and baseline included): one forward run;
     /// nullopt when the continuum model was asked for and does not apply.
-    std::optional<std::vector<double>> model(const double* shared, const double* nuisance, ForwardModel forward) const;
-    Outcome residuals_at(const double* shared, const double* nuisance, ForwardModel forward, double* residuals) const;
+    std::optional<ModelValues> model(const double* shared, const double* nuisance, ForwardModel forward) const;
+    /// Residuals of one run; `run`, when given, keeps the run (its modulus derivatives).
+    Outcome residuals_at(const double* shared, const double* nuisance, ForwardModel forward, double* residuals,
+                         ModelValues* run = nullptr) const;
+    /// When parameter j changes nothing but the material's moduli near `values` (same relaxation times, dashpot
+    /// and indenter as `base`, the case at `values`), the derivatives of the moduli with respect to shared
+    /// coordinate j (TingResponse's branch order): a difference of the parameter-to-moduli map, exact for the
+    /// affine maps of moduli parameters, times the coordinate's derivative. No model run.
+    std::optional<std::vector<double>> modulus_direction(const drivers::ContactCase& base, const double* shared,
+                                                         const std::vector<double>& values, std::size_t j) const;
     Outcome evaluate_with(ForwardModel forward, double const* const* parameters, double* residuals,
                           double** jacobians) const;
 

@@ -28,25 +28,30 @@ CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline) {
 
 namespace {
 
-// The continuum model's force at the used points, plus the baseline; nullopt outside its class.
-std::optional<std::vector<double>> continuum_forces(const drivers::ContactCase& model_case, const CurveModel& prepared,
-                                                    double contact_depth, double baseline) {
+// The continuum model's force at the used points, plus the baseline, and its derivatives; nullopt outside its class.
+std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_case, const CurveModel& prepared,
+                                            double contact_depth, double baseline) {
     const Curve& curve = *prepared.curve;
     std::vector<double> depth(curve.depth.size());
     for (std::size_t i = 0; i < depth.size(); ++i) depth[i] = curve.depth[i] - contact_depth;
-    const auto forces = ting_forces(model_case.material, *model_case.indenter, curve.time, depth);
-    if (!forces) return std::nullopt;
-    std::vector<double> model;
-    model.reserve(prepared.used.size());
-    for (std::size_t i : prepared.used) model.push_back((*forces)[i] + baseline);
+    const auto response = ting_forces(model_case.material, *model_case.indenter, curve.time, depth);
+    if (!response) return std::nullopt;
+    ModelValues model;
+    model.values.reserve(prepared.used.size());
+    for (std::size_t i : prepared.used) model.values.push_back(response->force[i] + baseline);
+    for (const auto& derivative : response->modulus_derivatives) {
+        auto& used = model.modulus_derivatives.emplace_back();
+        used.reserve(prepared.used.size());
+        for (std::size_t i : prepared.used) used.push_back(derivative[i]);
+    }
     return model;
 }
 
 }  // namespace
 
-std::optional<std::vector<double>> run_curve(drivers::ContactCase model_case, const CurveModel& prepared,
-                                             double contact_depth, double baseline, std::size_t elements,
-                                             ForwardModel forward_model, const std::function<void()>& check_interrupt) {
+std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const CurveModel& prepared,
+                                     double contact_depth, double baseline, std::size_t elements,
+                                     ForwardModel forward_model, const std::function<void()>& check_interrupt) {
     const Curve& curve = *prepared.curve;
     const bool depth_driven = prepared.fitted == Fitted::force;
     if (forward_model == ForwardModel::continuum) {
@@ -87,14 +92,14 @@ std::optional<std::vector<double>> run_curve(drivers::ContactCase model_case, co
     const auto result = drivers::run_case(model_case, progress);
 
     // The rows at the measured times: the grid has every history point as a node (the last row of a time counts).
-    std::vector<double> model;
-    model.reserve(prepared.used.size());
+    ModelValues model;
+    model.values.reserve(prepared.used.size());
     std::size_t row = 0;
     const auto& values = depth_driven ? result.force : result.depth;
     for (std::size_t i : prepared.used) {
         const double t = curve.time[i];
         while (row + 1 < result.time.size() && result.time[row + 1] <= t) ++row;
-        model.push_back(depth_driven ? values[row] + baseline : values[row] + contact_depth);
+        model.values.push_back(depth_driven ? values[row] + baseline : values[row] + contact_depth);
     }
     return model;
 }

@@ -31,6 +31,14 @@ enum class ForwardModel {
     elements,   ///< the drivers' element foundation (any case)
 };
 
+/// One run of the model of a curve.
+struct ModelValues {
+    std::vector<double> values;  ///< the fitted quantity at the used points
+    /// d values / dG_b per branch of the material (TingResponse's order) at the used points: from the continuum
+    /// model only (empty for the element model).
+    std::vector<std::vector<double>> modulus_derivatives{};
+};
+
 /// The model of the fitted quantity at the used points (force plus baseline, or depth plus contact_depth):
 /// `model_case` with its load replaced by the curve's history (depth minus contact_depth under displacement
 /// control; force minus baseline, and 0 below it, under force control). ForwardModel::elements runs the drivers
@@ -38,10 +46,9 @@ enum class ForwardModel {
 /// contact point); ForwardModel::continuum computes the force of a depth-driven curve exactly (ting_forces) and
 /// gives nullopt where that model does not apply. `check_interrupt`, when set, is called at the drivers' progress
 /// reports (it may throw mdr::Interrupted). Throws what the drivers throw.
-std::optional<std::vector<double>> run_curve(drivers::ContactCase model_case, const CurveModel& prepared,
-                                             double contact_depth, double baseline, std::size_t elements,
-                                             ForwardModel forward_model,
-                                             const std::function<void()>& check_interrupt = {});
+std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const CurveModel& prepared,
+                                     double contact_depth, double baseline, std::size_t elements,
+                                     ForwardModel forward_model, const std::function<void()>& check_interrupt = {});
 
 
 }  // namespace mdr::fit

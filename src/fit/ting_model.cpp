@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <tuple>
 #include <string>
 
 #include "exponential_quadrature.hpp"
@@ -64,7 +65,8 @@ private:
 class TingRun {
 public:
     TingRun(const std::vector<Branch>& branches, const profile::Profile& indenter)
-        : branches_(branches), indenter_(indenter), factors_(branches), now_q_(branches.size()), decay_since_peak_(branches.size()) {}
+        : branches_(branches), indenter_(indenter), factors_(branches), now_q_(branches.size()),
+          decay_since_peak_(branches.size()), derivative_(branches.size(), 0.0) {}
 
     // The first contact at time `start` (depth 0).
     void touch(double start) {
@@ -112,6 +114,7 @@ public:
             q_.push_back(q);
             r_.push_back(r);
             interval_decay_.push_back(decay);
+            derivative_[b] = 8.0 * r;  // the contact history does not depend on the moduli while it grows
             force += branches_[b].modulus * r;
         }
         return 8.0 * force;
@@ -127,11 +130,12 @@ public:
         times_.push_back(time);
         depths_.push_back(depth);
         double force = 0.0;
-        for (const auto& branch : branches_) {
+        for (std::size_t b = 0; b < branches_.size(); ++b) {
             q_.push_back(depth);
             r_.push_back(integral);
             interval_decay_.push_back(1.0);
-            force += branch.modulus * integral;
+            derivative_[b] = 8.0 * integral;
+            force += branches_[b].modulus * integral;
         }
         return 8.0 * force;
     }
@@ -167,6 +171,7 @@ public:
             decay_since_peak_[b] *= factors_.decay(b);
         }
         now_time_ = time;
+        std::fill(derivative_.begin(), derivative_.end(), 0.0);
         if (separated_) {
             if (node_memory(0) > tolerance_) return std::nullopt;  // the first element would be pushed again
             return 0.0;
@@ -182,9 +187,13 @@ public:
             --edge_interval_;
             upper = extent(edge_interval_);
         }
-        edge_offset_ = edge_root(edge_interval_, upper);
-        return edge_force(edge_interval_, edge_offset_);
+        bool moved = false;
+        std::tie(edge_offset_, moved) = edge_root(edge_interval_, upper);
+        return edge_force(edge_interval_, edge_offset_, moved);
     }
+
+    /// dF/dG_b of the last step's force, per branch.
+    const std::vector<double>& modulus_derivatives() const { return derivative_; }
 
 private:
     // A loading interval is a step in time (offsets in it are times since its start) or, for a history that starts
@@ -208,39 +217,40 @@ private:
     // Inside a jump the element entering at depth d_m + u has taken the jump's part above it:
     // exp(-(t - t_1)/tau) Q(t_1) = D c_m (Q_m + u).
     std::pair<double, double> interval_memory(std::size_t m, double u) const {
+        double psi = 0.0, slope = 0.0;
+        for (std::size_t b = 0; b < branches_.size(); ++b) {
+            const auto [branch_psi, branch_slope] = branch_memory(m, u, b);
+            psi += branches_[b].modulus * branch_psi;
+            slope += branches_[b].modulus * branch_slope;
+        }
+        return {psi, slope};
+    }
+    // Branch b's share of interval_memory, per unit modulus.
+    std::pair<double, double> branch_memory(std::size_t m, double u, std::size_t b) const {
         const std::size_t n = branches_.size();
         if (is_jump(m)) {
-            double psi = 0.0, slope = 0.0;
-            for (std::size_t b = 0; b < n; ++b) {
-                const double factor = decay_since_peak_[b] * to_peak_[m * n + b];
-                psi += branches_[b].modulus * (now_q_[b] - factor * (q_[m * n + b] + u));
-                slope -= branches_[b].modulus * factor;
-            }
-            return {psi, slope};
+            const double factor = decay_since_peak_[b] * to_peak_[m * n + b];
+            return {now_q_[b] - factor * (q_[m * n + b] + u), -factor};
         }
         const double length = times_[m + 1] - times_[m];
         const double rate = (depths_[m + 1] - depths_[m]) / length;
-        double psi = 0.0, slope = 0.0;
-        for (std::size_t b = 0; b < n; ++b) {
-            const double tau = branches_[b].time;
-            const double to_end = std::exp(-(length - u) / tau);  // exp(-(t_{m+1} - t_1)/tau)
-            const double factor = decay_since_peak_[b] * to_peak_[(m + 1) * n + b];
-            const double entered = factor * (interval_decay_[m * n + b] * q_[m * n + b] + rate * to_end * relaxed(u, tau));
-            psi += branches_[b].modulus * (now_q_[b] - entered);
-            slope -= branches_[b].modulus * rate * factor * to_end;
-        }
-        return {psi, slope};
+        const double tau = branches_[b].time;
+        const double to_end = std::exp(-(length - u) / tau);  // exp(-(t_{m+1} - t_1)/tau)
+        const double factor = decay_since_peak_[b] * to_peak_[(m + 1) * n + b];
+        const double entered = factor * (interval_decay_[m * n + b] * q_[m * n + b] + rate * to_end * relaxed(u, tau));
+        return {now_q_[b] - entered, -rate * factor * to_end};
     }
     double edge_memory(std::size_t m, double u) const { return interval_memory(m, u).first; }
 
     // The root of Psi(t_m + u, t) = 0 for u in [0, upper], Psi(t_m) >= 0 >= Psi(t_m + upper): Newton kept inside the
-    // bracket (bisection where it would leave it), to 1e-15 of the interval.
-    double edge_root(std::size_t m, double upper) const {
+    // bracket (bisection where it would leave it), to 1e-15 of the interval; and whether Psi = 0 placed it (false:
+    // the edge stays at `upper`, where Psi >= 0, or on a hold of the loading, where Psi is constant).
+    std::pair<double, bool> edge_root(std::size_t m, double upper) const {
         const double length = extent(m);
         double low = 0.0, high = upper;
         double psi_low = node_memory(m), psi_high = edge_memory(m, upper);
-        if (psi_high >= 0.0) return upper;
-        if (!(psi_low > psi_high)) return upper;  // a hold in the loading: Psi constant across it
+        if (psi_high >= 0.0) return {upper, false};
+        if (!(psi_low > psi_high)) return {upper, false};  // a hold in the loading: Psi constant across it
         double u = low + (high - low) * psi_low / (psi_low - psi_high);
         for (int iteration = 0; iteration < 100; ++iteration) {
             const auto [psi, slope] = interval_memory(m, u);
@@ -251,29 +261,36 @@ private:
             u = next;
             if (done) break;
         }
-        return u;
+        return {u, true};
     }
 
-    // F = 8 sum_b G_b exp(-(t - t_1)/tau_b) R_b(t_1), t_1 = t_m + u (Ting).
-    double edge_force(std::size_t m, double u) const {
+    // F = 8 sum_b G_b exp(-(t - t_1)/tau_b) R_b(t_1), t_1 = t_m + u (Ting), and dF/dG_b into derivative_. Where
+    // Psi(t_1, t) = 0 places the edge (`placed`), t_1 moves with the moduli: dt_1/dG_b = -psi_b / (dPsi/dt_1) and
+    // dF/dt_1 = 8 a(t_1) d'(t_1) G(t - t_1) = -8 a(t_1) dPsi/dt_1, so dF/dG_b = 8 [exp(-(t-t_1)/tau_b) R_b(t_1) +
+    // a(t_1) psi_b], psi_b branch b's share of Psi per unit modulus.
+    double edge_force(std::size_t m, double u, bool placed) {
         const std::size_t n = branches_.size();
-        if (is_jump(m)) {  // R(t_1) = R_m + int_{d_m}^{d_m + u} a(d') dd'
-            const double integral = exponential_integral([&](double d) { return indenter_.contact_radius(d); },
-                                                         depths_[m], depths_[m] + u, infinity, depths_[m] <= 0.0);
-            double force = 0.0;
-            for (std::size_t b = 0; b < n; ++b) {
-                force += branches_[b].modulus * decay_since_peak_[b] * to_peak_[m * n + b] * (r_[m * n + b] + integral);
-            }
-            return 8.0 * force;
-        }
+        const bool jump = is_jump(m);
         const double length = times_[m + 1] - times_[m];
-        const double rate = (depths_[m + 1] - depths_[m]) / length;
+        const double rate = jump ? 0.0 : (depths_[m + 1] - depths_[m]) / length;
+        const double edge_depth = jump ? depths_[m] + u : depths_[m] + rate * u;
+        // R(t_1) = R_m + int_{d_m}^{d_m + u} a(d') dd' inside a jump.
+        const double jump_integral = jump ? exponential_integral([&](double d) { return indenter_.contact_radius(d); },
+                                                                 depths_[m], edge_depth, infinity, depths_[m] <= 0.0)
+                                          : 0.0;
+        const double edge_radius = placed ? indenter_.contact_radius(edge_depth) : 0.0;
         double force = 0.0;
         for (std::size_t b = 0; b < n; ++b) {
-            const double tau = branches_[b].time;
-            const double to_edge = decay_since_peak_[b] * to_peak_[(m + 1) * n + b] * std::exp(-(length - u) / tau);
-            double value = decay_since_peak_[b] * to_peak_[m * n + b] * r_[m * n + b];
-            if (rate > 0.0 && u > 0.0) value += to_edge * rate * radius_integral(m, times_[m], times_[m] + u, tau);
+            double value = 0.0;
+            if (jump) {
+                value = decay_since_peak_[b] * to_peak_[m * n + b] * (r_[m * n + b] + jump_integral);
+            } else {
+                const double tau = branches_[b].time;
+                const double to_edge = decay_since_peak_[b] * to_peak_[(m + 1) * n + b] * std::exp(-(length - u) / tau);
+                value = decay_since_peak_[b] * to_peak_[m * n + b] * r_[m * n + b];
+                if (rate > 0.0 && u > 0.0) value += to_edge * rate * radius_integral(m, times_[m], times_[m] + u, tau);
+            }
+            derivative_[b] = 8.0 * (value + (placed ? edge_radius * branch_memory(m, u, b).first : 0.0));
             force += branches_[b].modulus * value;
         }
         return 8.0 * force;
@@ -306,6 +323,7 @@ private:
     double edge_offset_ = 0.0;
     double tolerance_ = 0.0;
     bool separated_ = false;
+    std::vector<double> derivative_;  // dF/dG_b of the last step
 };
 
 }  // namespace
@@ -315,19 +333,25 @@ bool ting_model_applies(const rheology::Rheology& material, const profile::Profi
     return material.viscosity() == 0.0 && (shape == "sphere" || shape == "cone" || shape == "power");
 }
 
-std::optional<std::vector<double>> ting_forces(const rheology::Rheology& material, const profile::Profile& indenter,
-                                               const std::vector<double>& time, const std::vector<double>& depth) {
+std::optional<TingResponse> ting_forces(const rheology::Rheology& material, const profile::Profile& indenter,
+                                        const std::vector<double>& time, const std::vector<double>& depth) {
     if (!ting_model_applies(material, indenter) || time.empty()) return std::nullopt;
-    std::vector<Branch> branches;
-    if (material.equilibrium_modulus() > 0.0) branches.push_back({material.equilibrium_modulus(), infinity});
+    // G_inf first (also when 0: its derivative counts), then the terms.
+    std::vector<Branch> branches{{material.equilibrium_modulus(), infinity}};
     for (const auto& term : material.terms()) branches.push_back({term.modulus, term.relaxation_time});
 
-    std::vector<double> forces(time.size(), 0.0);
+    TingResponse response{std::vector<double>(time.size(), 0.0),
+                          std::vector<std::vector<double>>(branches.size(), std::vector<double>(time.size(), 0.0))};
+    auto& forces = response.force;
     TingRun run(branches, indenter);
+    const auto keep_derivatives = [&](std::size_t i) {
+        for (std::size_t b = 0; b < branches.size(); ++b) response.modulus_derivatives[b][i] = run.modulus_derivatives()[b];
+    };
     enum class Phase { approach, loading, unloading } phase = Phase::approach;
     if (depth.front() > 0.0) {
         run.touch(time.front());
         forces.front() = run.jump(depth.front());
+        keep_derivatives(0);
         phase = Phase::loading;
     }
     for (std::size_t i = 1; i < time.size(); ++i) {
@@ -342,6 +366,7 @@ std::optional<std::vector<double>> ting_forces(const rheology::Rheology& materia
         if (phase == Phase::loading) {
             if (depth[i] >= run.last_depth()) {
                 forces[i] = run.load(time[i], depth[i]);
+                keep_derivatives(i);
                 continue;
             }
             run.begin_unloading();
@@ -350,8 +375,9 @@ std::optional<std::vector<double>> ting_forces(const rheology::Rheology& materia
         const auto force = run.unload(time[i], depth[i], depth[i - 1]);
         if (!force) return std::nullopt;
         forces[i] = *force;
+        keep_derivatives(i);
     }
-    return forces;
+    return response;
 }
 
 }  // namespace mdr::fit

@@ -30,11 +30,20 @@ namespace mdr::fit {
 /// power-law profile (closed-form g, contact radius smooth in the depth).
 bool ting_model_applies(const rheology::Rheology& material, const profile::Profile& indenter);
 
+/// What the continuum model gives for one depth history.
+struct TingResponse {
+    std::vector<double> force;  ///< F [N] at each time
+    /// dF/dG_b at each time, per branch of the material: the equilibrium modulus first, then the Prony terms in the
+    /// material's order ([branch][time]). The force is linear in the moduli for a fixed contact history; where the
+    /// edge of a shrinking contact moves with them (Ting's condition) its motion is included.
+    std::vector<std::vector<double>> modulus_derivatives;
+};
+
 /// The force [N] at each time of a depth history through the points (time[i], depth[i]) (linear between them,
 /// times increasing, depth below the contact point: <= 0 out of contact), incompressible body of `material` (the
 /// combined material of the case, eq. 8 and 56). A first depth > 0 is reached by a jump at the first time (as the
 /// element model does). nullopt when the history is outside Ting's class or when !ting_model_applies.
-std::optional<std::vector<double>> ting_forces(const rheology::Rheology& material, const profile::Profile& indenter,
-                                               const std::vector<double>& time, const std::vector<double>& depth);
+std::optional<TingResponse> ting_forces(const rheology::Rheology& material, const profile::Profile& indenter,
+                                        const std::vector<double>& time, const std::vector<double>& depth);
 
 }  // namespace mdr::fit

@@ -74,7 +74,7 @@ TEST(TingModel, TriangleAgreesWithTingsSolution) {
                 ASSERT_TRUE(forces.has_value()) << shape.name << ", " << name;
                 const double peak = largest(expected);
                 for (std::size_t i = 0; i < points; ++i) {
-                    ASSERT_NEAR((*forces)[i], expected[i], 1e-9 * peak)
+                    ASSERT_NEAR(forces->force[i], expected[i], 1e-9 * peak)
                         << shape.name << ", " << name << ", " << points << " points, t = " << time[i];
                 }
             }
@@ -100,7 +100,7 @@ TEST(TingModel, LoadHoldAgreesWithLeeRadok) {
             ASSERT_TRUE(forces.has_value());
             const double peak = largest(expected);
             for (std::size_t i = 0; i < time.size(); ++i) {
-                ASSERT_NEAR((*forces)[i], expected[i], 1e-9 * peak) << shape.name << ", " << name << ", t = " << time[i];
+                ASSERT_NEAR(forces->force[i], expected[i], 1e-9 * peak) << shape.name << ", " << name << ", t = " << time[i];
             }
         }
     }
@@ -143,6 +143,39 @@ std::vector<double> uniform(double start, double end, std::size_t points) {
     std::vector<double> values;
     for (std::size_t i = 0; i < points; ++i) values.push_back(start + (end - start) * static_cast<double>(i) / static_cast<double>(points - 1));
     return values;
+}
+
+// dF/dG_b from the run itself against central differences of the force in each modulus, over a triangle with a
+// hold at the top (loading: the force is linear in the moduli; unloading: the edge moves with them): 1e-6 of the
+// largest derivative.
+TEST(TingModel, ModulusDerivativesAgreeWithDifferences) {
+    const auto sphere = profile::make_sphere(1e-3);
+    const double g_inf = 1e5;
+    const std::vector<rheology::RelaxationTerm> terms{{2e5, 0.05}, {3e5, 0.4}};
+    std::vector<double> time, depth;
+    for (int i = 0; i <= 300; ++i) {
+        const double t = -0.1 + 0.01 * i;
+        time.push_back(t);
+        depth.push_back(t < 1.0 ? 1e-4 * t : t < 1.3 ? 1e-4 : 1e-4 * (2.3 - t));
+    }
+    const auto response = ting_forces(rheology::Rheology::prony(g_inf, terms), *sphere, time, depth);
+    ASSERT_TRUE(response.has_value());
+    ASSERT_EQ(response->modulus_derivatives.size(), 3u);
+    for (std::size_t b = 0; b < 3; ++b) {
+        const double h = 1e-4 * (b == 0 ? g_inf : terms[b - 1].modulus);
+        const auto shifted = [&](double sign) {
+            double inf = g_inf;
+            auto moved = terms;
+            (b == 0 ? inf : moved[b - 1].modulus) += sign * h;
+            return ting_forces(rheology::Rheology::prony(inf, moved), *sphere, time, depth)->force;
+        };
+        const auto up = shifted(1.0), down = shifted(-1.0);
+        const double scale = largest(response->modulus_derivatives[b]);
+        for (std::size_t i = 0; i < time.size(); ++i) {
+            ASSERT_NEAR(response->modulus_derivatives[b][i], (up[i] - down[i]) / (2.0 * h), 1e-6 * scale)
+                << "branch " << b << ", t = " << time[i];
+        }
+    }
 }
 
 // Histories where an element that left contact could be pushed back: the model refuses rather than guess.
@@ -202,9 +235,9 @@ TEST(TingModel, StartInContactIsTheElementModelsJump) {
         std::size_t row = 0;
         for (std::size_t i = 0; i < time.size(); ++i) {
             while (row + 1 < result.time.size() && result.time[row + 1] <= time[i]) ++row;
-            error = std::max(error, std::abs(result.force[row] - (*forces)[i]));
+            error = std::max(error, std::abs(result.force[row] - forces->force[i]));
         }
-        errors.push_back(error / largest(*forces));
+        errors.push_back(error / largest(forces->force));
     }
     EXPECT_LT(errors[1], 1e-6);
     EXPECT_NEAR(errors[0] / errors[1], 16.0, 4.0);  // second order in the element size
@@ -260,11 +293,11 @@ TEST(TingModel, RandomHistoriesAgreeWithTheElementModel) {
         contact_case.numerics.time_step = widest;
         contact_case.numerics.min_segment_steps = 1;
         const auto result = drivers::run_case(contact_case);
-        const double scale = largest(*forces);
+        const double scale = largest(forces->force);
         std::size_t row = 0;
         for (std::size_t i = 0; i < time.size(); ++i) {
             while (row + 1 < result.time.size() && result.time[row + 1] <= time[i]) ++row;
-            ASSERT_NEAR(result.force[row], (*forces)[i], 1e-6 * scale) << "trial " << trial << ", t = " << time[i];
+            ASSERT_NEAR(result.force[row], forces->force[i], 1e-6 * scale) << "trial " << trial << ", t = " << time[i];
         }
     }
 }

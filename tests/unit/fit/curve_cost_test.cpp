@@ -1,0 +1,73 @@
+// The Jacobian of a curve's residuals: columns of moduli parameters from the continuum model's own derivatives
+// (dF/dG_b with the parameter-to-moduli map), the others by forward differences, against central differences of
+// the residuals themselves, on a load-hold-unload of a standard solid (the edge moves with the moduli on unloading).
+
+#include "fit/curve_cost.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+
+#include "mdr/profile/profile.hpp"
+
+namespace mdr::fit {
+namespace {
+
+TEST(CurveCost, ModulusColumnsAgreeWithDifferencesOfTheResiduals) {
+    FitProblem problem;
+    problem.model = [](const std::vector<double>& v) {
+        return drivers::ContactCase{.title = "standard solid",
+                                    .material = rheology::Rheology::standard(v[0], v[1], v[2]),
+                                    .indenter = profile::make_sphere(1e-3),
+                                    .history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history"),
+                                    .end_time = 1.0};
+    };
+    problem.parameters = {{"material.G_inf", 1e6, 1e3, 1e9}, {"material.G1", 2e6, 1e3, 1e9},
+                          {"material.tau1", 0.3, 1e-3, 1e3}};
+    Curve curve;
+    curve.name = "load-hold-unload";
+    for (int i = 0; i <= 200; ++i) {
+        const double t = -0.1 + 0.01 * i;
+        curve.time.push_back(t);
+        curve.depth.push_back(t < 1.0 ? 1e-5 * t : t < 1.3 ? 1e-5 : 1e-5 * (2.3 - t));
+        curve.force.push_back(0.0);
+    }
+    curve.force_noise = 1e-4;
+    problem.curves = {curve};
+    problem.settings.contact_point = ContactPointMode::fixed;
+    problem.settings.baseline = BaselineMode::fixed;
+    const ParameterScales scales = make_scales(problem);
+    const CurveModel prepared = prepare_curve(problem.curves[0], Fitted::force, 0.0);
+    std::atomic<std::size_t> runs{0}, element_runs{0};
+    const CurveCost cost(problem, scales, prepared, 0, 500, runs, element_runs);
+
+    std::vector<double> u;
+    for (std::size_t j = 0; j < 3; ++j) u.push_back(scales.to_internal(j, problem.parameters[j].start));
+    const std::size_t n = prepared.used.size();
+    std::vector<double> residuals(n), jacobian(n * 3);
+    const double* parameters[1] = {u.data()};
+    double* blocks[1] = {jacobian.data()};
+    ASSERT_TRUE(cost.Evaluate(parameters, residuals.data(), blocks));
+    EXPECT_EQ(element_runs, 0u);
+    EXPECT_EQ(runs, 2u);  // the point and the time's column: the two moduli's columns need no run
+    for (std::size_t j = 0; j < 3; ++j) {
+        const double h = 1e-5;
+        std::vector<double> up = u, down = u, r_up(n), r_down(n);
+        up[j] += h;
+        down[j] -= h;
+        const double* at_up[1] = {up.data()};
+        const double* at_down[1] = {down.data()};
+        ASSERT_TRUE(cost.Evaluate(at_up, r_up.data(), nullptr));
+        ASSERT_TRUE(cost.Evaluate(at_down, r_down.data(), nullptr));
+        double largest = 0.0;
+        for (std::size_t i = 0; i < n; ++i) largest = std::max(largest, std::abs(jacobian[i * 3 + j]));
+        for (std::size_t i = 0; i < n; ++i) {
+            ASSERT_NEAR(jacobian[i * 3 + j], (r_up[i] - r_down[i]) / (2.0 * h), 1e-5 * largest)
+                << "column " << j << ", row " << i;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace mdr::fit
