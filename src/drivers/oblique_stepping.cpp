@@ -45,8 +45,9 @@ double ObliqueStepper::solve_increment(double spring, double anchor, double time
 
 std::span<const double> ObliqueStepper::normal_line_loads() {
     // The elements the foundation has touched: the others are out of contact and untouched in the layer too.
-    foundation_.line_loads(loads_);
-    return std::span<const double>(loads_).first(foundation_.touched());
+    const auto q = std::span<double>(loads_).first(foundation_.touched());
+    foundation_.line_loads(q);
+    return q;
 }
 
 void ObliqueStepper::take_impulse(double impulse) {

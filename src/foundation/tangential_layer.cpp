@@ -73,9 +73,10 @@ inline double TangentialLayer::limit(double normal_line_load) const {
 
 __attribute__((target_clones("avx2", "default"))) double TangentialLayer::trial_force(
     double increment, std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact) const {
-    // advance()'s stress, branch-free: the stick trial clamped to the friction limit in contact, 0 outside. In
-    // blocks on the stack: the contact flags as doubles first, so that the element loop has one element width, then
-    // the stresses, so that their sum vectorises (GCC does not vectorise a reduction whose terms mix widths).
+    // advance()'s stress, branch-free: the stick trial clamped to the friction limit in contact, to a limit of 0
+    // (so to 0) outside. In blocks on the stack: the contact flags as doubles first, so that the element loop has one
+    // element width, then the stresses, so that their sum vectorises (GCC does not vectorise a reduction whose terms
+    // mix widths).
     constexpr std::size_t block = 256;  // a multiple of 8: the sum is add_partial's over all elements
     std::array<double, block> in, stresses;
     Partials partial{};
@@ -90,9 +91,9 @@ __attribute__((target_clones("avx2", "default"))) double TangentialLayer::trial_
         const double* share = share_.data() + start;
         const double* q = normal_line_loads.data() + start;
         for (std::size_t j = 0; j < length; ++j) {
-            const double bound = per_load * std::max(q[j], 0.0);  // limit()
+            const double bound = in[j] * (per_load * std::max(q[j], 0.0));  // limit(), 0 out of contact
             const double trial = relaxed[j] + stiffness * (increment * share[j]);
-            stresses[j] = in[j] != 0.0 ? std::min(std::max(trial, -bound), bound) : 0.0;
+            stresses[j] = std::min(std::max(trial, -bound), bound);
         }
         add_partial(stresses.data(), length, partial);
     }
