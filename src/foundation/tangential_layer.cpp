@@ -133,8 +133,8 @@ __attribute__((target_clones("avx2", "default"))) void TangentialLayer::advance(
     const double viscous = dt > 0.0 ? material_.viscosity() / dt : 0.0;
     const double g_inf = material_.equilibrium_modulus();
     const double stiffness = step_.stiffness;
-    // The contact flags as doubles, so that the element pass below has one element width (it vectorises four
-    // elements to a 32-byte register instead of 32 to eight).
+    // The contact flags as doubles, so that the element pass below has one element width: GCC vectorises it four
+    // elements to a register (with the bytes in it, 32 elements at a time, spilling registers).
     double* __restrict mask = contact_mask_.data();
     for (std::size_t i = 0; i < count; ++i) mask[i] = contact[i] ? 1.0 : 0.0;
     // One branch-free pass (it vectorises, with -fno-trapping-math, see CMakeLists.txt) takes every element's step
@@ -184,8 +184,8 @@ __attribute__((target_clones("avx2", "default"))) void TangentialLayer::advance(
             h[i] = decay * h[i] + gain * du[i];
         }
     }
-    // The state: an element in contact sticks while its trial stays inside the limit, where t is the trial; one
-    // held exactly at its limit (a slip zone at rest) is in the slip zone of eq. (51).
+    // The state: an element in contact stuck when its trial stayed inside the limit by more than at_limit (t is then
+    // that trial); one held at its limit (a slip zone at rest) is in the slip zone of eq. (51).
     for (std::size_t i = 0; i < count; ++i) {
         const bool in = mask[i] != 0.0;
         const bool sticks = in & (std::abs(stress_[i]) < limit_[i] * (1.0 - at_limit));
@@ -249,8 +249,8 @@ void TangentialLayer::load_state(std::span<const double> in) {
     }
     touched_ = touched;
     high_water_ = std::max(high_water_, touched_);
-    sticking_ = static_cast<std::size_t>(std::count(state_.begin(), state_.begin() + static_cast<std::ptrdiff_t>(touched_),
-                                                    TangentialState::stick));
+    sticking_ = static_cast<std::size_t>(
+        std::count(state_.begin(), state_.begin() + static_cast<std::ptrdiff_t>(touched_), TangentialState::stick));
 }
 
 double TangentialLayer::stick_slope() const {
