@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <type_traits>
 
 #include "branch_sums.hpp"
 
@@ -140,9 +141,12 @@ __attribute__((target_clones("avx2", "default"))) void TangentialLayer::advance(
     // One branch-free pass (it vectorises, with -fno-trapping-math, see CMakeLists.txt) takes every element's step
     // (eq. 50): in contact it first sticks, u_i += share du (an element entering moves only after its entry); when
     // then |t| exceeds the friction limit it slips, t = the limit with the sign of its trial, u_i solved from it;
-    // out of contact it is force-free, t = 0. It writes du_i, the element's work on it and friction's; the branches
-    // follow per branch.
-    {
+    // out of contact it is force-free, t = 0. It writes the element's work over the step and friction's, and
+    // updates the first branch's memory (h <- E h + B du, step_coefficients.hpp) in the same pass; the other
+    // branches follow one per pass from du_i.
+    const auto element_pass = [&](auto first_branch, auto more_branches) {
+        constexpr bool fused = decltype(first_branch)::value;
+        constexpr bool keep_increments = decltype(more_branches)::value;
         const double* __restrict relaxed = relaxed_.data();
         const double* __restrict share = share_.data();
         const double* __restrict q = normal_line_loads.data();
@@ -152,8 +156,11 @@ __attribute__((target_clones("avx2", "default"))) void TangentialLayer::advance(
         double* __restrict du = increment_.data();
         double* __restrict work = work_.data();
         double* __restrict slip_work = slip_work_.data();
+        double* __restrict h = memory_.data();  // branch 0
         const double compliance = 1.0 / stiffness;
         const double per_load = per_load_;
+        const double modulus = fused ? terms[0].modulus : 0.0, decay = fused ? step_.decay[0] : 0.0;
+        const double gain = fused ? step_.gain[0] : 0.0, rate_gain = fused ? rate_gain_[0] : 0.0;
 #pragma GCC ivdep
         for (std::size_t i = 0; i < count; ++i) {
             // Products with the mask (1 or 0) rather than selects: GCC then keeps every store unconditional.
@@ -164,16 +171,28 @@ __attribute__((target_clones("avx2", "default"))) void TangentialLayer::advance(
             const double stress = in * std::min(std::max(trial, -bound), bound);  // the trial within the limit
             const double step_increment =
                 in != 0.0 && std::abs(trial) <= bound ? moved : (stress - relaxed[i]) * compliance;
-            // The mean stress over the step, int t dt / dt, without the branches (see material_work()).
-            work[i] = (g_inf * (u[i] + 0.5 * step_increment) + viscous * step_increment) * step_increment;
+            // The mean stress over the step, int t dt / dt, times du (see material_work()).
+            double element_work = (g_inf * (u[i] + 0.5 * step_increment) + viscous * step_increment) * step_increment;
+            if constexpr (fused) {
+                element_work += modulus * (gain * h[i] + rate_gain * step_increment) * step_increment;
+                h[i] = decay * h[i] + gain * step_increment;
+            }
+            work[i] = element_work;
             slip_work[i] = in * (0.5 * (t[i] + stress) * (moved - step_increment));
             u[i] += step_increment;
-            du[i] = step_increment;
+            if constexpr (keep_increments) du[i] = step_increment;
             t[i] = stress;
             bound_of[i] = bound;
         }
+    };
+    if (terms.empty()) {
+        element_pass(std::false_type{}, std::false_type{});
+    } else if (terms.size() == 1) {
+        element_pass(std::true_type{}, std::false_type{});
+    } else {
+        element_pass(std::true_type{}, std::true_type{});
     }
-    for (std::size_t k = 0; k < terms.size(); ++k) {
+    for (std::size_t k = 1; k < terms.size(); ++k) {
         const double modulus = terms[k].modulus, decay = step_.decay[k], gain = step_.gain[k];
         const double rate_gain = rate_gain_[k];
         double* __restrict h = memory_.data() + k * n;
