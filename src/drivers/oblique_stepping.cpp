@@ -16,6 +16,7 @@ ObliqueStepper::ObliqueStepper(const ObliqueImpactLoad& load, double mass, const
       reduced_mass_(1.0 / (1.0 / mass + load.radius * load.radius / load.moment_of_inertia)),
       foundation_(foundation),
       layer_(material, load.friction, foundation.spacing(), foundation.size()),
+      loads_(foundation.size(), 0.0),
       velocity_(load.tangential_velocity),
       spin_(load.spin) {}
 
@@ -27,7 +28,9 @@ double ObliqueStepper::solve_increment(double spring, double anchor, double time
     // The increment of the step, never below a billionth of the initial one: scales with the motion itself.
     const double initial = std::abs(load_.tangential_velocity - load_.radius * load_.spin);
     const double scale = std::max(std::abs(anchor), 1e-9 * initial * time_step);
-    const double tolerance = 1e-13 * std::max({std::abs(force_), layer_.sliding_force(q, contact), spring * scale});
+    // mu F_N, the largest |F_x| (the layer's sliding_force, with the foundation's own sum of the line loads).
+    const double sliding = load_.friction * foundation_.total_force();
+    const double tolerance = 1e-13 * std::max({std::abs(force_), sliding, spring * scale});
     double start = anchor - 2.0 * force_ / spring;  // the explicit guess, F_x1 = F_x0
     double f_start = residual(start);
     // Newton with the slope of the elements that stuck in the last step: exact while no element changes state.
@@ -38,6 +41,13 @@ double ObliqueStepper::solve_increment(double spring, double anchor, double time
         f_start = residual(start);
     }
     return monotone_root(residual, start, f_start, scale, tolerance, 1e-15 * std::max(std::abs(start), scale), false);
+}
+
+std::span<const double> ObliqueStepper::normal_line_loads() {
+    // The elements the foundation has touched: the others are out of contact and untouched in the layer too.
+    const auto q = std::span<double>(loads_).first(foundation_.touched());
+    foundation_.line_loads(q);
+    return q;
 }
 
 void ObliqueStepper::take_impulse(double impulse) {
@@ -51,10 +61,8 @@ void ObliqueStepper::step(const foundation::StepCoefficients& coefficients, doub
     layer_.begin_step(coefficients, foundation_.entries());
     const double contact_velocity = velocity_ - load_.radius * spin_;
     const double spring = 4.0 * reduced_mass_ / (time_step * time_step);
-    // The elements the foundation has touched: the others are out of contact and untouched in the layer too.
-    const auto loads = foundation_.line_loads();
-    const auto q = std::span<const double>(loads).first(foundation_.touched());
-    const auto contact = foundation_.contact_flags().first(foundation_.touched());
+    const auto q = normal_line_loads();
+    const auto contact = foundation_.contact_flags().first(q.size());
     const double increment = solve_increment(spring, contact_velocity * time_step, time_step, q, contact);
     layer_.advance(increment, q, contact);
     const double new_force = layer_.total_force();
@@ -65,10 +73,7 @@ void ObliqueStepper::step(const foundation::StepCoefficients& coefficients, doub
     friction_work_ += layer_.friction_work();
     max_force_ = std::max(max_force_, std::abs(force_));
     stick_radius_ = layer_.stick_radius(foundation_.contact_radius());
-    const auto states = layer_.states();
-    for (std::size_t i = 0; i < states.size(); ++i) {
-        if (contact[i] && states[i] == foundation::TangentialState::stick) slid_throughout_ = false;
-    }
+    if (layer_.sticking_count() > 0) slid_throughout_ = false;  // an element sticks only in contact
 }
 
 void ObliqueStepper::finish(const foundation::StepCoefficients& coefficients, double time_step, double fraction) {
@@ -78,9 +83,8 @@ void ObliqueStepper::finish(const foundation::StepCoefficients& coefficients, do
     // The contact point moves with the mean of its velocities over the part of the step in contact, then freely.
     const double increment = (contact_velocity - 0.5 * impulse / reduced_mass_) * fraction * time_step +
                              (contact_velocity - impulse / reduced_mass_) * (1.0 - fraction) * time_step;
-    const auto loads = foundation_.line_loads();
-    layer_.advance(increment, std::span<const double>(loads).first(foundation_.touched()),
-                   foundation_.contact_flags().first(foundation_.touched()));
+    const auto q = normal_line_loads();
+    layer_.advance(increment, q, foundation_.contact_flags().first(q.size()));
     take_impulse(impulse);
     displacement_ += increment;
     force_ = layer_.total_force();

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/indentation.hpp"
@@ -44,12 +45,15 @@ private:
     double solve_increment(double spring, double anchor, double time_step, std::span<const double> q,
                            std::span<const std::uint8_t> contact) const;
     void take_impulse(double impulse);
+    /// The foundation's line loads q_z,i [N/m] of the elements it has touched, into loads_ (no allocation).
+    std::span<const double> normal_line_loads();
 
     const ObliqueImpactLoad& load_;
     double mass_;
     double reduced_mass_;  ///< m_t
     const foundation::Foundation& foundation_;
     foundation::TangentialLayer layer_;
+    std::vector<double> loads_;  ///< q_z,i of the normal foundation after its step
     double displacement_ = 0.0;  ///< u of the contact point [m]
     double velocity_;            ///< v_t [m/s]
     double spin_;                ///< omega [rad/s]

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <type_traits>
 
 #include "branch_sums.hpp"
 
@@ -12,12 +13,27 @@ namespace {
 constexpr double tangential_stiffness_factor = 8.0 / 3.0;  // k_x = (8/3) G dx, eq. (11), (41)
 constexpr double at_limit = 1e-9;                           // |t| within this fraction of the limit: at the limit
 
+// Partial sums of a reduction: the sum of x[j] for j < size kept as partial[j % 8] (the last size % 8 values in
+// partial[0]). Independent partial sums let the additions vectorise and overlap (a single running sum is a serial
+// chain of additions); eight fill two 4-wide registers.
+using Partials = std::array<double, 8>;
+
+[[gnu::always_inline]] inline void add_partial(const double* x, std::size_t size, Partials& partial) {
+    std::size_t j = 0;
+    for (; j + 8 <= size; j += 8) {
+        for (std::size_t lane = 0; lane < 8; ++lane) partial[lane] += x[j + lane];
+    }
+    for (; j < size; ++j) partial[0] += x[j];
+}
+
+double total(const Partials& p) { return ((p[0] + p[1]) + (p[2] + p[3])) + ((p[4] + p[5]) + (p[6] + p[7])); }
+
 }  // namespace
 
 TangentialLayer::TangentialLayer(const rheology::Rheology& material, double friction, double spacing,
                                  std::size_t count)
     : material_(material),
-      friction_(friction),
+      per_load_(friction / tangential_stiffness_factor),
       spacing_(spacing),
       displacement_(count, 0.0),
       stress_(count, 0.0),
@@ -26,9 +42,14 @@ TangentialLayer::TangentialLayer(const rheology::Rheology& material, double fric
       relaxed_(count, 0.0),
       limit_(count, 0.0),
       share_(count, 1.0),
+      increment_(count, 0.0),
+      work_(count, 0.0),
+      slip_work_(count, 0.0),
+      contact_mask_(count, 0.0),
       rate_gain_(material.terms().size(), 0.0) {}
 
-void TangentialLayer::begin_step(const StepCoefficients& coefficients, std::span<const Entry> entries) {
+__attribute__((target_clones("avx2", "default"))) void TangentialLayer::begin_step(const StepCoefficients& coefficients,
+                                                                                    std::span<const Entry> entries) {
     step_ = coefficients;
     for (const std::size_t i : entered_) share_[i] = 1.0;
     entered_.clear();
@@ -48,47 +69,36 @@ void TangentialLayer::begin_step(const StepCoefficients& coefficients, std::span
 
 inline double TangentialLayer::limit(double normal_line_load) const {
     // |F_x,i| <= mu F_N,i with F_x,i = (8/3) dx t_i and F_N,i = q_z,i dx (eq. 50).
-    return friction_ * std::max(normal_line_load, 0.0) / tangential_stiffness_factor;
+    return per_load_ * std::max(normal_line_load, 0.0);
 }
 
-inline TangentialLayer::ElementStep TangentialLayer::element_step(std::size_t i, double increment, double normal_line_load,
-                                                           bool contact) const {
-    const double relaxed = relaxed_[i];
+__attribute__((target_clones("avx2", "default"))) double TangentialLayer::trial_force(
+    double increment, std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact) const {
+    // advance()'s stress, branch-free: the stick trial clamped to the friction limit in contact, to a limit of 0
+    // (so to 0) outside. In blocks on the stack: the contact flags as doubles first, so that the element loop has one
+    // element width, then the stresses, so that their sum vectorises (GCC does not vectorise a reduction whose terms
+    // mix widths).
+    constexpr std::size_t block = 256;  // a multiple of 8: the sum is add_partial's over all elements
+    std::array<double, block> in, stresses;
+    Partials partial{};
     const double stiffness = step_.stiffness;
-    if (!contact) return {-relaxed / stiffness, 0.0, TangentialState::free};
-    increment *= share_[i];  // an element entering in the step moves only after its entry
-    const double trial = relaxed + stiffness * increment;
-    const double bound = limit(normal_line_load);
-    // An element held exactly at its limit (a slip zone at rest) is still in the slip zone of eq. (51).
-    if (std::abs(trial) < bound * (1.0 - at_limit)) return {increment, trial, TangentialState::stick};
-    if (std::abs(trial) <= bound) return {increment, trial, TangentialState::slip};
-    const double stress = std::copysign(bound, trial);
-    return {(stress - relaxed) / stiffness, stress, TangentialState::slip};
-}
-
-double TangentialLayer::trial_force(double increment, std::span<const double> normal_line_loads,
-                                    std::span<const std::uint8_t> contact) const {
-    // element_step's stress, branch-free: the stick trial clamped to the friction limit in contact, 0 outside.
-    const double stiffness = step_.stiffness;
-    const double per_load = friction_ / tangential_stiffness_factor;  // limit() per unit line load
-    const double* __restrict relaxed = relaxed_.data();
-    const double* __restrict share = share_.data();
-    const double* __restrict q = normal_line_loads.data();
-    const std::uint8_t* __restrict in_contact = contact.data();
-    std::array<double, 4> partial{};  // four partial sums: the reduction vectorises
+    const double per_load = per_load_;
     const std::size_t count = contact.size();
-    std::size_t i = 0;
-    const auto stress = [&](std::size_t j) {
-        const double bound = per_load * std::max(q[j], 0.0);
-        const double trial = relaxed[j] + stiffness * (increment * share[j]);
-        return in_contact[j] ? std::min(std::max(trial, -bound), bound) : 0.0;
-    };
-    for (; i + 4 <= count; i += 4) {
-        for (std::size_t lane = 0; lane < 4; ++lane) partial[lane] += stress(i + lane);
+    for (std::size_t start = 0; start < count; start += block) {
+        const std::size_t length = std::min(block, count - start);
+        const std::uint8_t* flags = contact.data() + start;
+        for (std::size_t j = 0; j < length; ++j) in[j] = flags[j] ? 1.0 : 0.0;
+        const double* relaxed = relaxed_.data() + start;
+        const double* share = share_.data() + start;
+        const double* q = normal_line_loads.data() + start;
+        for (std::size_t j = 0; j < length; ++j) {
+            const double bound = in[j] * (per_load * std::max(q[j], 0.0));  // limit(), 0 out of contact
+            const double trial = relaxed[j] + stiffness * (increment * share[j]);
+            stresses[j] = std::min(std::max(trial, -bound), bound);
+        }
+        add_partial(stresses.data(), length, partial);
     }
-    for (; i < count; ++i) partial[0] += stress(i);
-    const double sum = (partial[0] + partial[1]) + (partial[2] + partial[3]);
-    return 2.0 * tangential_stiffness_factor * spacing_ * sum;
+    return 2.0 * tangential_stiffness_factor * spacing_ * total(partial);
 }
 
 double TangentialLayer::sliding_force(std::span<const double> normal_line_loads,
@@ -113,35 +123,103 @@ double TangentialLayer::sliding_increment(double direction, std::span<const doub
     return increment;
 }
 
-void TangentialLayer::advance(double increment, std::span<const double> normal_line_loads,
-                              std::span<const std::uint8_t> contact) {
+__attribute__((target_clones("avx2", "default"))) void TangentialLayer::advance(
+    double increment, std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact) {
     const std::size_t n = displacement_.size();
     touched_ = std::max(touched_, contact.size());
     high_water_ = std::max(high_water_, touched_);
+    const std::size_t count = touched_;
     const auto& terms = material_.terms();
     const double dt = step_.time_step;
     const double viscous = dt > 0.0 ? material_.viscosity() / dt : 0.0;
-    double sum = 0.0, material_work = 0.0, friction_work = 0.0;
-    for (std::size_t i = 0; i < touched_; ++i) {
-        const ElementStep s = element_step(i, increment, normal_line_loads[i], contact[i] != 0);
-        // The element's mean stress over the step, int t dt / dt (see material_work()).
-        double mean = material_.equilibrium_modulus() * (displacement_[i] + 0.5 * s.increment) + viscous * s.increment;
-        displacement_[i] += s.increment;
-        for (std::size_t k = 0; k < terms.size(); ++k) {
-            double& h = memory_[k * n + i];
-            mean += terms[k].modulus * (step_.gain[k] * h + rate_gain_[k] * s.increment);
-            h = step_.decay[k] * h + step_.gain[k] * s.increment;
+    const double g_inf = material_.equilibrium_modulus();
+    const double stiffness = step_.stiffness;
+    // The contact flags as doubles, so that the element pass below has one element width: GCC vectorises it four
+    // elements to a register (with the bytes in it, 32 elements at a time, spilling registers).
+    double* __restrict mask = contact_mask_.data();
+    for (std::size_t i = 0; i < count; ++i) mask[i] = contact[i] ? 1.0 : 0.0;
+    // One branch-free pass (it vectorises, with -fno-trapping-math, see CMakeLists.txt) takes every element's step
+    // (eq. 50): in contact it first sticks, u_i += share du (an element entering moves only after its entry); when
+    // then |t| exceeds the friction limit it slips, t = the limit with the sign of its trial, u_i solved from it;
+    // out of contact it is force-free, t = 0. It writes the element's work over the step and friction's, and
+    // updates the first branch's memory (h <- E h + B du, step_coefficients.hpp) in the same pass; the other
+    // branches follow one per pass from du_i.
+    const auto element_pass = [&](auto first_branch, auto more_branches) {
+        constexpr bool fused = decltype(first_branch)::value;
+        constexpr bool keep_increments = decltype(more_branches)::value;
+        const double* __restrict relaxed = relaxed_.data();
+        const double* __restrict share = share_.data();
+        const double* __restrict q = normal_line_loads.data();
+        double* __restrict u = displacement_.data();
+        double* __restrict t = stress_.data();
+        double* __restrict bound_of = limit_.data();
+        double* __restrict du = increment_.data();
+        double* __restrict work = work_.data();
+        double* __restrict slip_work = slip_work_.data();
+        double* __restrict h = memory_.data();  // branch 0
+        const double compliance = 1.0 / stiffness;
+        const double per_load = per_load_;
+        const double modulus = fused ? terms[0].modulus : 0.0, decay = fused ? step_.decay[0] : 0.0;
+        const double gain = fused ? step_.gain[0] : 0.0, rate_gain = fused ? rate_gain_[0] : 0.0;
+#pragma GCC ivdep
+        for (std::size_t i = 0; i < count; ++i) {
+            // Products with the mask (1 or 0) rather than selects: GCC then keeps every store unconditional.
+            const double in = mask[i];
+            const double bound = per_load * std::max(q[i], 0.0);  // limit()
+            const double moved = increment * share[i];
+            const double trial = relaxed[i] + stiffness * moved;
+            const double stress = in * std::min(std::max(trial, -bound), bound);  // the trial within the limit
+            const double step_increment =
+                in != 0.0 && std::abs(trial) <= bound ? moved : (stress - relaxed[i]) * compliance;
+            // The mean stress over the step, int t dt / dt, times du (see material_work()).
+            double element_work = (g_inf * (u[i] + 0.5 * step_increment) + viscous * step_increment) * step_increment;
+            if constexpr (fused) {
+                element_work += modulus * (gain * h[i] + rate_gain * step_increment) * step_increment;
+                h[i] = decay * h[i] + gain * step_increment;
+            }
+            work[i] = element_work;
+            slip_work[i] = in * (0.5 * (t[i] + stress) * (moved - step_increment));
+            u[i] += step_increment;
+            if constexpr (keep_increments) du[i] = step_increment;
+            t[i] = stress;
+            bound_of[i] = bound;
         }
-        material_work += mean * s.increment;
-        if (contact[i]) friction_work += 0.5 * (stress_[i] + s.stress) * (share_[i] * increment - s.increment);
-        stress_[i] = s.stress;
-        state_[i] = s.state;
-        limit_[i] = limit(normal_line_loads[i]);
-        sum += s.stress;
+    };
+    if (terms.empty()) {
+        element_pass(std::false_type{}, std::false_type{});
+    } else if (terms.size() == 1) {
+        element_pass(std::true_type{}, std::false_type{});
+    } else {
+        element_pass(std::true_type{}, std::true_type{});
     }
-    total_force_ = 2.0 * tangential_stiffness_factor * spacing_ * sum;
-    material_work_ = 2.0 * tangential_stiffness_factor * spacing_ * material_work;
-    friction_work_ = 2.0 * tangential_stiffness_factor * spacing_ * friction_work;
+    for (std::size_t k = 1; k < terms.size(); ++k) {
+        const double modulus = terms[k].modulus, decay = step_.decay[k], gain = step_.gain[k];
+        const double rate_gain = rate_gain_[k];
+        double* __restrict h = memory_.data() + k * n;
+        const double* __restrict du = increment_.data();
+        double* __restrict work = work_.data();
+        for (std::size_t i = 0; i < count; ++i) {
+            work[i] += modulus * (gain * h[i] + rate_gain * du[i]) * du[i];
+            h[i] = decay * h[i] + gain * du[i];
+        }
+    }
+    // The state: an element in contact stuck when its trial stayed inside the limit by more than at_limit (t is then
+    // that trial); one held at its limit (a slip zone at rest) is in the slip zone of eq. (51).
+    for (std::size_t i = 0; i < count; ++i) {
+        const bool in = mask[i] != 0.0;
+        const bool sticks = in & (std::abs(stress_[i]) < limit_[i] * (1.0 - at_limit));
+        state_[i] = sticks ? TangentialState::stick : (in ? TangentialState::slip : TangentialState::free);
+    }
+    sticking_ = static_cast<std::size_t>(
+        std::count(state_.begin(), state_.begin() + static_cast<std::ptrdiff_t>(count), TangentialState::stick));
+    Partials force{}, material{}, friction{};
+    add_partial(stress_.data(), count, force);
+    add_partial(work_.data(), count, material);
+    add_partial(slip_work_.data(), count, friction);
+    const double scale = 2.0 * tangential_stiffness_factor * spacing_;
+    total_force_ = scale * total(force);
+    material_work_ = scale * total(material);
+    friction_work_ = scale * total(friction);
 }
 
 void TangentialLayer::save_state(std::span<double> out) const {
@@ -190,12 +268,12 @@ void TangentialLayer::load_state(std::span<const double> in) {
     }
     touched_ = touched;
     high_water_ = std::max(high_water_, touched_);
+    sticking_ = static_cast<std::size_t>(
+        std::count(state_.begin(), state_.begin() + static_cast<std::ptrdiff_t>(touched_), TangentialState::stick));
 }
 
 double TangentialLayer::stick_slope() const {
-    const auto end = state_.begin() + static_cast<std::ptrdiff_t>(touched_);
-    const auto sticking = std::count(state_.begin(), end, TangentialState::stick);
-    return 2.0 * tangential_stiffness_factor * spacing_ * step_.stiffness * static_cast<double>(sticking);
+    return 2.0 * tangential_stiffness_factor * spacing_ * step_.stiffness * static_cast<double>(sticking_);
 }
 
 double TangentialLayer::stick_radius(double contact_radius) const {

@@ -106,7 +106,7 @@ public:
     void load_state(std::span<const double> in);
     /// Reserves room for an event at every element, so that no later step allocates.
     void reserve_events();
-    /// Line loads q_z,i [N/m] into `out` (size() values), without allocating.
+    /// Line loads q_z,i [N/m] of the first out.size() <= size() elements into `out`, without allocating.
     void line_loads(std::span<double> out) const;
 
     /// Element displacements w_i [m].

@@ -83,6 +83,8 @@ public:
     double friction_work() const { return friction_work_; }
     /// dF_x/du [N/m] of the prepared step over the elements that stuck in the last step.
     double stick_slope() const;
+    /// Number of elements that stuck in the last step (0: every element in contact slipped).
+    std::size_t sticking_count() const { return sticking_; }
     /// Stick radius c [m] (eq. 51): the edge of the stick zone around the centre, between the last sticking
     /// element and the first slipping one, where the friction limit mu F_N(x) (linear between the two centres)
     /// equals the sticking element's force. `contact_radius` when no element in contact slips, 0 when the centre
@@ -96,16 +98,10 @@ public:
     std::span<const TangentialState> states() const { return state_; }
 
 private:
-    struct ElementStep {
-        double increment;  ///< du_i
-        double stress;     ///< t_i at the end of the step
-        TangentialState state;
-    };
-    ElementStep element_step(std::size_t i, double increment, double normal_line_load, bool contact) const;
     double limit(double normal_line_load) const;
 
     rheology::Rheology material_;  // a copy: the caller's material may be a temporary
-    double friction_;
+    double per_load_;                       ///< mu / (8/3): the friction limit [Pa] per unit line load [N/m]
     double spacing_;
     std::vector<double> displacement_;      ///< u_i
     std::vector<double> stress_;            ///< t_i at the end of the last step
@@ -116,10 +112,15 @@ private:
     std::vector<double> share_;             ///< part of the step's increment an element takes: 1 - its entry
                                             ///< fraction when it enters in the prepared step, else 1
     std::vector<std::size_t> entered_;      ///< the elements whose share_ the prepared step set
+    std::vector<double> increment_;         ///< du_i of the step being taken
+    std::vector<double> work_;              ///< int t_i du_i over it [Pa m]: the element's material work / ((8/3) dx)
+    std::vector<double> slip_work_;         ///< friction's work on the element over it / ((8/3) dx) [Pa m]
+    std::vector<double> contact_mask_;      ///< 1 for an element in contact in the step being taken, else 0
     std::vector<double> rate_gain_;         ///< (1 - B_k) tau_k / dt of the prepared step, one per branch
     StepCoefficients step_;
     std::size_t touched_ = 0;               ///< elements [touched_, n) have never been in contact: u = h = 0
     std::size_t high_water_ = 0;            ///< the largest touched_ any loaded or stepped state had
+    std::size_t sticking_ = 0;              ///< elements that stuck in the last step
     double total_force_ = 0.0;
     double material_work_ = 0.0;
     double friction_work_ = 0.0;
