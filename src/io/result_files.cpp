@@ -29,7 +29,8 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
     summary["steps"] = result.steps;
     summary["elements"] = result.numerics.elements;
     summary["wall_seconds"] = wall_seconds;
-    summary["control"] = contact_case.control == drivers::Control::force    ? "force"
+    summary["control"] = contact_case.shore                                 ? "shore"
+                         : contact_case.control == drivers::Control::force  ? "force"
                          : contact_case.control == drivers::Control::impact ? "impact"
                          : contact_case.control == drivers::Control::spring ? "spring"
                                                                             : "displacement";
@@ -70,6 +71,9 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
         summary["normal_dissipated_energy_per_cycle"] = harmonic.dissipated_energy;
         summary["contact_loss_fraction"] = harmonic.contact_loss_fraction;
     }
+    for (const auto& reading : result.shore_readings) {
+        summary[fmt::format("shore_{:g}s", reading.time)] = reading.reading;
+    }
     if (result.tangential) {
         const auto& tangential = *result.tangential;
         summary["max_tangential_force"] = tangential.max_force;
@@ -90,12 +94,15 @@ void write_indentation_result(const fs::path& directory, const drivers::ContactC
     const bool with_tangential = !result.tangential_force.empty();
     const bool with_base = !result.base.empty();
     const bool with_spin = !result.spin.empty();
-    history.print("t,d,F,a{}{}{}{}\n", with_velocity ? ",v" : "", with_base ? ",z,deflection" : "",
+    const bool with_shore = !result.shore.empty();
+    history.print("t,d,F,a{}{}{}{}{}\n", with_velocity ? ",v" : "", with_base ? ",z,deflection" : "",
+                  with_shore ? ",shore" : "",
                   with_tangential ? ",u,Fx,c" : "", with_spin ? ",v_t,omega" : "");
     for (std::size_t i = 0; i < result.time.size(); ++i) {
         history.print("{},{},{},{}", result.time[i], result.depth[i], result.force[i], result.radius[i]);
         if (with_velocity) history.print(",{}", result.velocity[i]);
         if (with_base) history.print(",{},{}", result.base[i], result.base[i] - result.depth[i]);
+        if (with_shore) history.print(",{}", result.shore[i]);
         if (with_tangential) {
             history.print(",{},{},{}", result.tangential_displacement[i], result.tangential_force[i],
                           result.stick_radius[i]);
