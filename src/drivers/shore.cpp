@@ -17,8 +17,8 @@ constexpr double type_a_half_angle = 17.5 * degree;
 // Type D: a sphere of radius 0.1 mm tangent to a cone whose flank is 15 deg from the axis (30 deg included).
 constexpr double type_d_tip_radius = 0.1e-3;
 constexpr double type_d_half_angle = 15.0 * degree;
-// Points on the spherical cap of the Type D tip: the monotone cubic's error there is O((h / R)^4).
-constexpr int cap_points = 200;
+// Points on the spherical cap of the Type D tip (equal steps of its polar angle).
+constexpr int cap_points = 400;
 
 // The durometer's indenter: its tabulated tip, ending in the rod. Beyond the rod's radius the indenter is a rigid
 // wall, as beyond a flat punch (the contact radius stays at the rod once it reaches it), not an unknown continuation
@@ -81,12 +81,15 @@ std::unique_ptr<profile::Profile> durometer_indenter(ShoreScale scale, double le
     const double tangent = R * std::cos(type_d_half_angle);
     const double tangent_gap = R * (1.0 - std::sin(type_d_half_angle));
     const double flank = 1.0 / std::tan(type_d_half_angle);
-    const double h = tangent / cap_points;
+    // The cap at equal steps of the polar angle phi (r = R sin phi, up to 90 deg - alpha): the steps in r shrink
+    // where the sphere steepens towards the tangent point.
+    const double last_angle = 0.5 * std::numbers::pi - type_d_half_angle;
     for (int j = 0; j <= cap_points; ++j) {
-        const double radius = j * h;
-        r.push_back(radius);
-        f.push_back(j == cap_points ? tangent_gap : R - std::sqrt(R * R - radius * radius));
+        const double angle = last_angle * j / cap_points;
+        r.push_back(j == cap_points ? tangent : R * std::sin(angle));
+        f.push_back(j == cap_points ? tangent_gap : R * (1.0 - std::cos(angle)));
     }
+    const double h = r[cap_points] - r[cap_points - 1];
     for (const double radius : {tangent + h, tangent + 2.0 * h, rod_radius}) {
         r.push_back(radius);
         f.push_back(tangent_gap + (radius - tangent) * flank);

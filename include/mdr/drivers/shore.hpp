@@ -60,7 +60,7 @@ Durometer durometer(ShoreScale scale, double length_unit = 1.0, double force_uni
 /// The standard's indenter of `scale` as a tabulated profile, in units of `length_unit` [m]. Type A: a flat tip of
 /// 0.79 mm diameter, a 35 deg (included angle) frustum up to the rod, piecewise linear (exact, kinks kept). Type D:
 /// a sphere of radius 0.1 mm tangent to a 30 deg cone, sampled on the cap and interpolated by the monotone cubic
-/// (relative error of g below 1e-6, tests/verification/test_shore.cpp). Both end at the rod (a rigid wall beyond).
+/// (relative error of g below 3e-6, tests/unit/drivers/shore_test.cpp). Both end at the rod (a rigid wall beyond).
 std::unique_ptr<profile::Profile> durometer_indenter(ShoreScale scale, double length_unit = 1.0);
 
 /// A Shore test in a ContactCase (control = spring with the durometer's spring rate and a base history
