@@ -45,6 +45,7 @@ py::dict run_toml_case(const std::string& toml_text, const std::string& source, 
         history["z"] = to_array(result.base);
         history["deflection"] = to_array(deflection);
     }
+    if (!result.shore.empty()) history["shore"] = to_array(result.shore);
     if (!result.tangential_force.empty()) {
         history["u"] = to_array(result.tangential_displacement);
         history["Fx"] = to_array(result.tangential_force);

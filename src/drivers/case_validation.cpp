@@ -84,6 +84,7 @@ void validate_spring(const ContactCase& contact_case) {
         throw InvalidInput("load.spring_constant", "(missing)", "is required with control = \"spring\"");
     }
     require_positive("load.spring_constant", *contact_case.spring_constant);
+    if (contact_case.shore) return;  // the durometer's own spring and base (validate_shore)
     const auto& points = contact_case.history.points();
     if (points.front().value > 0.0) {
         throw InvalidInput("load.history[0].z", format_value(points.front().value),
@@ -96,6 +97,19 @@ void validate_spring(const ContactCase& contact_case) {
                                "the base displacement must not jump (give each change a duration)");
         }
     }
+}
+
+// A Shore test is spring control with the durometer's spring and the base history of shore_base_history.
+void validate_shore(const ContactCase& contact_case) {
+    const auto& shore = contact_case.shore;
+    if (!shore) return;
+    require_positive("load.duration", shore->duration);
+    if (contact_case.control != Control::spring || contact_case.spring_constant != shore->instrument.spring_rate) {
+        throw InvalidInput("load.control", "\"shore\"",
+                           "a Shore test is spring control with the durometer's own spring (no spring_constant)");
+    }
+    if (contact_case.harmonic) throw InvalidInput("load.harmonic", "{...}", "not with control = \"shore\"");
+    if (contact_case.tangential) throw InvalidInput("tangential", "[...]", "not with control = \"shore\"");
 }
 
 void validate_impact(const ContactCase& contact_case) {
@@ -211,6 +225,7 @@ void validate(const ContactCase& contact_case) {
     validate_history(contact_case);
     validate_harmonic(contact_case);
     validate_spring(contact_case);
+    validate_shore(contact_case);
     validate_times(contact_case);
     if (contact_case.tangential) validate(*contact_case.tangential);
     validate_numerics(contact_case.numerics);

@@ -19,6 +19,11 @@ std::vector<ControlKind> rows() {
         {Control::spring, "spring",
          "the history prescribes the base z(t) of a spring k in series with the massless indenter: F = k (z - d)", "z",
          {"load.history", "load.spring_constant"}},
+        // After "spring": control_kind(Control::spring) is the plain spring.
+        {Control::spring, "shore",
+         "a Shore A or D durometer (ASTM D2240, ISO 48-4): the standard's indenter pushed through its calibrated spring "
+         "(spring control with a constant base); the reading H = 100 - d / 0.025 mm over time",
+         "", {"load.scale"}},
     };
 }
 

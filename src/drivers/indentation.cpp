@@ -58,12 +58,18 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
             cuts.insert(cuts.end(), {last->first, last->second});  // the measured cycle on uniform steps
         }
     }
+    const auto& shore = contact_case.shore;
+    if (shore) {
+        for (const double time : shore_reading_times) {
+            if (time <= contact_case.end_time) cuts.push_back(time);  // each reading on a node of its own
+        }
+    }
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
     auto nodes = make_time_grid(contact_case.history, contact_case.end_time, numerics.time_step,
                                 numerics.min_segment_steps, cuts);
     const bool spring = contact_case.control == Control::spring;
-    if (spring && nodes.size() > 1 && nodes[1].time == nodes[0].time) {
+    if (spring && !shore && nodes.size() > 1 && nodes[1].time == nodes[0].time) {
         nodes.erase(nodes.begin());  // the base starts where it is (z <= 0, validated): no jump from z = 0
     }
     if (numerics.jump_grading > 0.0) {
@@ -83,7 +89,8 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
         result.depth.push_back(depth);
         result.force.push_back(force);
         result.radius.push_back(foundation.contact_radius());
-        if (spring) result.base.push_back(base);
+        if (spring && !shore) result.base.push_back(base);
+        if (shore) result.shore.push_back(shore->instrument.reading(depth));
         if (tangential) tangential->record(result);
     };
     // Spring control: the massless indenter rests on the unloaded spring, d = z, until it touches the surface.
@@ -120,7 +127,10 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
         if (time_step == 0.0 && has_dashpot) {
             // A jump against a dashpot: the dashpot takes the force at once and the depth does not move (spring
             // control has no jumps after the start).
-            force = contact_case.control == Control::force ? target : foundation.total_force();
+            // (Under spring control only a Shore test has a jump, at the foot's landing: the spring's force.)
+            force = contact_case.control == Control::force ? target
+                    : spring                               ? stiffness * (target - depth)
+                                                           : foundation.total_force();
             if (rate) rate = jumped_rate(foundation, material.viscosity(), *rate, force - last_force);
             shown_depth = depth;
         } else {
@@ -132,6 +142,8 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
                 const double scale = std::max(std::abs(depth - previous_depth), 1e-6 * depth_scale);
                 new_depth = solve_depth(foundation, depth, guess, scale, spring ? stiffness * target : target,
                                         stiffness, 0.0);
+                // A durometer's indenter stops at its full extension (reading 0): the stop takes the rest.
+                if (shore) new_depth = std::min(new_depth, shore->instrument.full_extension());
             }
             foundation.advance(depth, new_depth);
             if (trapezoidal) rate = next_rate(foundation, rate, depth, new_depth, time_step);
@@ -149,6 +161,11 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
         ++result.steps;
         const bool last_at_this_time = n + 1 == nodes.size() || nodes[n + 1].time != nodes[n].time;
         if (cycle) cycle->observe(nodes[n].time, shown_depth, force, foundation.contact_count() > 0);
+        if (shore && last_at_this_time &&
+            std::find(shore_reading_times.begin(), shore_reading_times.end(), nodes[n].time) !=
+                shore_reading_times.end()) {
+            result.shore_readings.push_back({nodes[n].time, shore->instrument.reading(shown_depth)});
+        }
         if (n % numerics.output_every == 0 || n + 1 == nodes.size()) {
             record(nodes[n].time, shown_depth, force, nodes[n].value);
         }

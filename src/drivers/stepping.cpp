@@ -58,7 +58,11 @@ Snapshot take_snapshot(const foundation::Foundation& foundation, const profile::
     std::size_t inside = 0;
     while (inside < q.size() && foundation.position(inside) < a) ++inside;
     const std::span<const double> loaded(q.data(), inside);
-    const double edge_value = indenter.is_flat_punch() && inside > 0 ? q[inside - 1] : 0.0;
+    // At a rigid wall (a flat punch's edge; a durometer's rod once the contact reaches it) the line load does not
+    // vanish at the edge.
+    const bool at_wall = indenter.is_flat_punch() && inside > 0 &&
+                         (inside == q.size() || !std::isfinite(indenter.equivalent(foundation.position(inside))));
+    const double edge_value = at_wall ? q[inside - 1] : 0.0;
     snapshot.pressure = contact::stress_from_line_load(foundation.spacing(), loaded, a, edge_value, snapshot.radius);
     snapshot.displacement = contact::surface_displacement(foundation.spacing(), foundation.displacements(),
                                                           snapshot.radius);

@@ -17,6 +17,7 @@
 #include "mdr/io/units.hpp"
 #include "indenter_reader.hpp"
 #include "material_reader.hpp"
+#include "shore_reader.hpp"
 #include "toml_reader.hpp"
 
 namespace mdr::io {
@@ -169,16 +170,22 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     auto material_table = root.table("material");
     if (!material_table) throw InvalidInput("material", "(missing)", "is required");
     const BodySpec half_space_spec = read_body(*material_table);
+    auto load = root.table("load");
+    if (!load) throw InvalidInput("load", "(missing)", "is required");
+    const std::optional<ShoreLoad> shore = read_shore(*load, unit_system(units));
+    const toml::table no_indenter;  // a durometer brings the standard's indenter: its [indenter] stays empty
     auto indenter_table = root.table("indenter");
+    if (shore && indenter_table) {
+        throw InvalidInput("indenter", "[...]", "not with control = \"shore\": the durometer's indenter is the standard's");
+    }
+    if (shore) indenter_table.emplace(no_indenter, "indenter");
     if (!indenter_table) throw InvalidInput("indenter", "(missing)", "is required");
-    auto indenter = read_indenter(*indenter_table);
+    auto indenter = shore ? shore->indenter : read_indenter(*indenter_table);
     std::optional<BodySpec> second_spec;
     if (auto indenter_material = indenter_table->table("material")) second_spec = read_body(*indenter_material);
 
-    auto load = root.table("load");
-    if (!load) throw InvalidInput("load", "(missing)", "is required");
     load->reject_unknown({"control", "history", "velocity", "end", "harmonic", "spring_constant",
-                          "tangential_velocity", "incidence_deg", "spin"});
+                          "tangential_velocity", "incidence_deg", "spin", "scale", "duration"});
     const std::string control_name = load->string("control");
     drivers::Control control;
     try {
@@ -199,7 +206,8 @@ drivers::ContactCase read_case(const toml::table& root_table) {
         }
         harmonic = read_harmonic(*table);
     }
-    const std::optional<double> spring_constant = load->optional_number("spring_constant");
+    const std::optional<double> spring_constant =
+        shore ? shore->test.instrument.spring_rate : load->optional_number("spring_constant");
     std::optional<drivers::ImpactLoad> impact;
     std::optional<drivers::LoadHistory> read;
     if (control == drivers::Control::impact) {
@@ -215,7 +223,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
         if (load->has("velocity")) {
             throw InvalidInput("load.velocity", load->text("velocity"), "only with control = \"impact\"");
         }
-        read = read_history(*load, control);
+        read = shore ? drivers::shore_base_history(shore->test) : read_history(*load, control);
     }
     drivers::LoadHistory history = std::move(*read);
     double end_time = impact ? std::numeric_limits<double>::infinity() : history.end_time();
@@ -285,6 +293,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
                                       oblique, std::move(origin)};
     contact_case.harmonic = harmonic;
     contact_case.spring_constant = spring_constant;
+    if (shore) contact_case.shore = shore->test;
     contact_case.units = units;
     drivers::validate(contact_case);
     return contact_case;
@@ -317,6 +326,13 @@ std::string describe(const drivers::ContactCase& contact_case) {
                                 oblique->tangential_velocity, units.velocity(), oblique->spin,
                                 oblique->moment_of_inertia, units.mass, units.length, oblique->friction);
         }
+    } else if (const auto& shore = contact_case.shore) {
+        const auto& instrument = shore->instrument;
+        load = fmt::format("Shore {} durometer (spring force {:.4g} {} at reading 100, falling {:.4g} {}/{}; one point "
+                           "= {:.4g} {}), the foot resting from t = 0 to {:.4g} {}",
+                           shore->scale == drivers::ShoreScale::A ? "A" : "D", instrument.reading_100_force,
+                           units.force, instrument.spring_rate, units.force, units.length, instrument.point_depth,
+                           units.length, shore->duration, units.time);
     } else {
         load = fmt::format("{} control, {} history points over t = {:.4g} .. {:.4g} {}",
                            drivers::control_kind(contact_case.control).name,

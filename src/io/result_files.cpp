@@ -31,7 +31,7 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
     summary["steps"] = result.steps;
     summary["elements"] = result.numerics.elements;
     summary["wall_seconds"] = wall_seconds;
-    summary["control"] = drivers::control_kind(contact_case.control).name;
+    summary["control"] = contact_case.shore ? "shore" : drivers::control_kind(contact_case.control).name;
     summary["time_step"] = result.numerics.time_step;
     summary["half_width"] = result.numerics.half_width;
     summary["final_force"] = result.force.empty() ? 0.0 : result.force.back();
@@ -69,6 +69,9 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
         summary["normal_dissipated_energy_per_cycle"] = harmonic.dissipated_energy;
         summary["contact_loss_fraction"] = harmonic.contact_loss_fraction;
     }
+    for (const auto& reading : result.shore_readings) {
+        summary[fmt::format("shore_{:g}s", reading.time)] = reading.reading;
+    }
     if (result.tangential) {
         const auto& tangential = *result.tangential;
         summary["max_tangential_force"] = tangential.max_force;
@@ -89,12 +92,15 @@ void write_indentation_result(const fs::path& directory, const drivers::ContactC
     const bool with_tangential = !result.tangential_force.empty();
     const bool with_base = !result.base.empty();
     const bool with_spin = !result.spin.empty();
-    history.print("t,d,F,a{}{}{}{}\n", with_velocity ? ",v" : "", with_base ? ",z,deflection" : "",
+    const bool with_shore = !result.shore.empty();
+    history.print("t,d,F,a{}{}{}{}{}\n", with_velocity ? ",v" : "", with_base ? ",z,deflection" : "",
+                  with_shore ? ",shore" : "",
                   with_tangential ? ",u,Fx,c" : "", with_spin ? ",v_t,omega" : "");
     for (std::size_t i = 0; i < result.time.size(); ++i) {
         history.print("{},{},{},{}", result.time[i], result.depth[i], result.force[i], result.radius[i]);
         if (with_velocity) history.print(",{}", result.velocity[i]);
         if (with_base) history.print(",{},{}", result.base[i], result.base[i] - result.depth[i]);
+        if (with_shore) history.print(",{}", result.shore[i]);
         if (with_tangential) {
             history.print(",{},{},{}", result.tangential_displacement[i], result.tangential_force[i],
                           result.stick_radius[i]);

@@ -10,6 +10,7 @@
 
 #include "mdr/drivers/harmonic_load.hpp"
 #include "mdr/drivers/load_history.hpp"
+#include "mdr/drivers/shore.hpp"
 #include "mdr/drivers/tangential_load.hpp"
 #include "mdr/profile/profile.hpp"
 #include "mdr/rheology/approximation.hpp"
@@ -97,6 +98,9 @@ struct ContactCase {
     /// over its last full cycle are measured (HarmonicOutcome).
     std::optional<HarmonicLoad> harmonic{};
     std::optional<double> spring_constant{};            ///< k [N/m] of the spring, with control = spring
+    /// A Shore durometer test (control = spring with the durometer's spring and base history, a step at t = 0
+    /// and a stop at the full extension); the readings are measured (IndentationResult::shore).
+    std::optional<ShoreTest> shore{};
 
     /// The prescribed load at time t [s]: the history plus the harmonic part.
     double load_value(double t) const { return history.value(t) + (harmonic ? harmonic->value(t) : 0.0); }

@@ -85,12 +85,14 @@ struct IndentationResult {
     std::vector<double> tangential_force;         ///< F_x [N] (eq. 46; tangential loading only, else empty)
     std::vector<double> stick_radius;             ///< c [m] (eq. 51; tangential loading only, else empty)
     std::vector<double> base;                     ///< base displacement z [m] (spring control only, else empty)
+    std::vector<double> shore;                    ///< Shore reading H (Shore test only, else empty)
     std::vector<double> tangential_velocity;      ///< v_t [m/s] of the centre (oblique impact only, else empty)
     std::vector<double> spin;                     ///< omega [rad/s] (oblique impact only, else empty)
     std::vector<Snapshot> snapshots;
     std::optional<ImpactOutcome> impact;  ///< impact only
     std::optional<TangentialOutcome> tangential;  ///< tangential loading only
     std::optional<HarmonicOutcome> harmonic;      ///< harmonic normal load with at least one full cycle only
+    std::vector<ShoreReading> shore_readings;     ///< Shore test: the readings at shore_reading_times within it
     ResolvedNumerics numerics;     ///< what was used
     std::size_t steps = 0;         ///< time steps taken
 };

@@ -42,7 +42,8 @@ public:
     /// Largest radius where the profile is defined [m]: +infinity for analytic shapes, the punch radius for
     /// a flat punch, the last tabulated r for a table.
     virtual double max_radius() const = 0;
-    /// True when g has a jump to a rigid wall at max_radius() (flat punch): the contact radius is then fixed.
+    /// True when g has a jump to a rigid wall at max_radius() (a flat punch; a durometer's rod): the contact radius
+    /// cannot grow beyond it.
     virtual bool is_flat_punch() const { return false; }
     /// Short human description, e.g. `sphere R = 0.01`: by default describe_shape(definition()) of the registry.
     virtual std::string describe() const;
