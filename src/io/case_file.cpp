@@ -309,7 +309,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     // The bodies, built over the time window of the case when a model is converted to a series.
     std::optional<rheology::TimeWindow> window;
     if (half_space_spec.needs_window() || (second_spec && second_spec->needs_window())) {
-        window = drivers::material_window(history, end_time, numerics, tangential, impact.has_value());
+        window = drivers::material_window(history, end_time, numerics, harmonic, tangential, impact.has_value());
     }
     // Files a material names (a table's `file`) are found next to the case file (the parsed table's source).
     const auto& source_path = root_table.source().path;

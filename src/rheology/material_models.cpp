@@ -226,9 +226,14 @@ std::string describe_model(const MaterialModel& model, const ModelParameters& pa
 }
 
 std::string describe_certificate(const Certificate& certificate, std::size_t terms) {
-    return fmt::format("as {} Prony terms, {} {:.2g} over t = {:.3g} .. {:.3g} s", terms,
-                       certificate.kind == "model" ? "relative error" : "fit residual", certificate.error,
-                       certificate.window.shortest, certificate.window.longest);
+    std::string text = fmt::format("as {} Prony terms, {} {:.2g} over t = {:.3g} .. {:.3g} s", terms,
+                                   certificate.kind == "model" ? "relative error" : "fit residual", certificate.error,
+                                   certificate.window.shortest, certificate.window.longest);
+    const auto& frequencies = certificate.window.frequencies;
+    for (std::size_t i = 0; i < frequencies.size(); ++i) {
+        text += fmt::format("{}{:.4g}", i == 0 ? " and at omega = " : ", ", frequencies[i]);
+    }
+    return frequencies.empty() ? text : text + " rad/s";
 }
 
 }  // namespace mdr::rheology
