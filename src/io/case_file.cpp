@@ -100,7 +100,9 @@ Body build_body(const BodySpec& spec, const std::optional<rheology::TimeWindow>&
     rheology::ModelMaterial shear = build_material(spec.shear, window, directory);
     Body body{std::move(shear.series), std::nullopt, std::move(shear.origin)};
     std::optional<rheology::ModelMaterial> bulk;
-    if (spec.bulk_modulus) bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus), {}};
+    if (spec.bulk_modulus) {
+        bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus), {.times_from_conversion = true}};
+    }
     if (spec.bulk) bulk = build_material(*spec.bulk, window, directory);
     if (bulk) {
         body.effective = rheology::compressible_effective(body.shear, bulk->series);

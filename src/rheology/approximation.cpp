@@ -38,6 +38,7 @@ MaterialOrigin combined_origin(const MaterialOrigin& first, const MaterialOrigin
     if (first.certificate && second.certificate && second.certificate->error > first.certificate->error) {
         combined.certificate->error = second.certificate->error;
     }
+    combined.times_from_conversion = first.times_from_conversion && second.times_from_conversion;
     return combined;
 }
 

@@ -62,11 +62,15 @@ struct MaterialOrigin {
     std::string description{};                 ///< e.g. `power_law (G0 = 1000 Pa, beta = 0.2, t0 = 1 s)`
     std::optional<Certificate> certificate{};  ///< absent for the models of Table 1 (exact series)
     ModelFunctions model{};                    ///< the model's G(t) and G^(omega); empty for Table 1 models
+    /// True when no time of the series is a time of the material: a continuous spectrum's nodes (power law,
+    /// springpots) or no time at all (elastic). The default time step then ignores them under displacement
+    /// control (resolve_numerics).
+    bool times_from_conversion = false;
 };
 
 /// The origin of two materials combined (in series, eq. 8, or with a bulk part, eq. 56): the descriptions joined
 /// by `joiner`, the larger error of the certificates (creep functions add, so the relative error of the sum is at
-/// most the larger one, to first order), no model functions.
+/// most the larger one, to first order), no model functions, times from conversion when both have them so.
 MaterialOrigin combined_origin(const MaterialOrigin& first, const MaterialOrigin& second, const std::string& joiner);
 
 /// The largest relative error of `series` against `model` over the window: |G_s - G| / G at log-spaced lags with
