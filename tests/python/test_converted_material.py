@@ -3,6 +3,7 @@ the conversion; the complex modulus at frequencies far outside the window agains
 
 import math
 import pickle
+import subprocess
 
 import numpy as np
 import pytest
@@ -90,3 +91,19 @@ def test_harmonic_case_reports_its_frequencies():
     assert result.summary["material_frequencies"] == [pytest.approx(omega)]
     assert 0 < result.summary["material_error"] <= 1e-4
     assert "and at omega = 1257 rad/s" in result.description
+
+
+def test_material_command_tabulates_the_harmonic_frequency(tmp_path, mdr_binary):
+    case = tmp_path / "case.toml"
+    case.write_text('[material]\nmodel = "springpot"\nc = 1e3\nalpha = 0.5\n[indenter]\nshape = "flat"\na = 1e-3\n'
+                    '[load]\ncontrol = "displacement"\nhistory = [[0.0, 0.0], [0.01, 1e-5], [0.05, 1e-5]]\n'
+                    'harmonic = { amplitude = 1e-7, frequency = 100.0, start = 0.01, end = 0.05 }\n', encoding="utf-8")
+    completed = subprocess.run([mdr_binary, "material", str(case), "--out", str(tmp_path / "m")], capture_output=True,
+                               text=True, timeout=60)
+    assert completed.returncode == 0, completed.stderr
+    assert "and at omega = 628.3 rad/s" in completed.stdout
+    dynamic = np.genfromtxt(tmp_path / "m" / "dynamic.csv", delimiter=",", names=True)
+    row = np.flatnonzero(np.isclose(dynamic["omega"], 2 * math.pi * 100.0, rtol=1e-12))
+    assert row.size == 1
+    np.testing.assert_allclose(dynamic["storage"][row], dynamic["storage_model"][row], rtol=1e-4)
+    np.testing.assert_allclose(dynamic["loss"][row], dynamic["loss_model"][row], rtol=1e-4)
