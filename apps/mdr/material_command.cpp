@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/os.h>
 
+#include <algorithm>
+
 #include "commands.hpp"
 #include "interrupt.hpp"
 #include "mdr/error.hpp"
@@ -63,7 +65,11 @@ void add_material_command(CLI::App& app, int& exit_code) {
             if (origin.certificate) {
                 const auto& window = origin.certificate->window;
                 if (times->empty()) t = io::log_grid(window.shortest, window.longest, 121);
-                if (omegas->empty()) w = io::log_grid(1.0 / window.longest, 1.0 / window.shortest, 121);
+                if (omegas->empty()) {  // the window's 1/t and the frequencies of the case's harmonic loads
+                    w = io::log_grid(1.0 / window.longest, 1.0 / window.shortest, 121);
+                    w.insert(w.end(), window.frequencies.begin(), window.frequencies.end());
+                    std::sort(w.begin(), w.end());
+                }
                 fmt::print("{} {}\n", origin.description,
                            rheology::describe_certificate(*origin.certificate, material.terms().size()));
             }

@@ -1,6 +1,7 @@
 // The factories of mdr.Material, one per row of the registry of material models (rheology/material_models.hpp):
 // positional arguments in the row's order, keywords by the row's keys; a model converted to a series also takes
-// `window=(t_min, t_max)` and `tolerance`.
+// `window=(t_min, t_max)`, `frequencies` and `tolerance`, and comes back as an mdr.ConvertedMaterial (the series
+// with the error of the conversion).
 
 #include <pybind11/stl.h>
 
@@ -40,12 +41,13 @@ void put(rheology::ModelParameters& parameters, const rheology::ModelParameter& 
     }
 }
 
-rheology::Rheology build(const MaterialModel& model, const py::args& args, const py::kwargs& kwargs) {
+py::object build(const MaterialModel& model, const py::args& args, const py::kwargs& kwargs) {
     rheology::ModelParameters parameters;
     rheology::ConversionOptions options;
+    std::vector<double> frequencies;
     std::string valid;
     for (const auto& parameter : model.parameters) valid += (valid.empty() ? "" : ", ") + parameter.key;
-    if (model.needs_window) valid += ", window, tolerance";
+    if (model.needs_window) valid += ", window, frequencies, tolerance";
     if (args.size() > model.parameters.size()) {
         throw py::type_error(fmt::format("{}() takes at most {} positional arguments ({}), {} given", model.name,
                                          model.parameters.size(), valid, args.size()));
@@ -56,6 +58,10 @@ rheology::Rheology build(const MaterialModel& model, const py::args& args, const
         if (model.needs_window && key == "window") {
             const auto window = value.cast<std::pair<double, double>>();
             options.window = rheology::TimeWindow{window.first, window.second};
+            continue;
+        }
+        if (model.needs_window && key == "frequencies") {
+            frequencies = value.cast<std::vector<double>>();
             continue;
         }
         if (model.needs_window && key == "tolerance") {
@@ -79,8 +85,17 @@ rheology::Rheology build(const MaterialModel& model, const py::args& args, const
                 fmt::format("{}() missing required argument '{}' (arguments: {})", model.name, parameter.key, valid));
         }
     }
-    return rheology::build_material(model, parameters, options).series;
+    if (options.window) {
+        std::sort(frequencies.begin(), frequencies.end());
+        options.window->frequencies = std::move(frequencies);
+    }
+    rheology::ModelMaterial material = rheology::build_material(model, parameters, options);
+    if (!material.origin.certificate) return py::cast(std::move(material.series));
+    return py::cast(ConvertedMaterial{std::move(material.series), std::move(*material.origin.certificate)});
 }
+
+// The models whose factory returns an mdr.ConvertedMaterial: those converted to a series over a window, and tables.
+bool converted(const MaterialModel& model) { return model.needs_window || model.name == "table"; }
 
 std::string docstring(const MaterialModel& model) {
     std::string text = model.documentation + ".\n\nParameters\n----------\n";
@@ -91,11 +106,17 @@ std::string docstring(const MaterialModel& model) {
     }
     if (model.needs_window) {
         text += "window : (float, float)\n    the lags (t_min, t_max) [s] over which the series is certified\n"
+                "frequencies : sequence of float, optional\n    angular frequencies [rad/s] at which G^(omega) is "
+                "certified too, inside or outside the window (a harmonic load's 2 pi f)\n"
                 "tolerance : float\n    relative error of G(t) and G^(omega) over the window (default 1e-4)\n";
     }
     std::string keywords;
     for (const auto& parameter : model.parameters) keywords += fmt::format("{}{}=...", keywords.empty() ? "" : ", ", parameter.key);
-    return text + "\nReturns\n-------\nMaterial\n\nExamples\n--------\n" +
+    const char* returns = converted(model)
+                              ? "ConvertedMaterial\n    a Material with material_error, material_window and "
+                                "material_frequencies\n"
+                              : "Material\n";
+    return text + "\nReturns\n-------\n" + returns + "\nExamples\n--------\n" +
            fmt::format("``mdr.Material.{}({})``, or in a case file ``[material]`` with ``model = \"{}\"`` and the keys "
                        "above (docs/case-format.md, Material models).\n",
                        model.name, keywords, model.name);
@@ -104,6 +125,17 @@ std::string docstring(const MaterialModel& model) {
 }  // namespace
 
 void bind_material_models(py::class_<rheology::Rheology>& material) {
+    // A Material that is its own series (no conversion): None; mdr.ConvertedMaterial gives the values.
+    const auto none = [](const rheology::Rheology&) { return py::none(); };
+    material.def_property_readonly("material_error", none,
+                                   "float or None: the largest relative error of the series against its model (a "
+                                   "table: the largest relative fit residual); None for a Material that is its own "
+                                   "Prony series.");
+    material.def_property_readonly("material_window", none,
+                                   "(float, float) or None: the lags (t_min, t_max) [s] where material_error holds.");
+    material.def_property_readonly("material_frequencies", none,
+                                   "list of float or None: the angular frequencies [rad/s] where G^(omega) is "
+                                   "certified besides the window.");
     for (const MaterialModel& model : rheology::material_models()) {
         material.def_static(
             model.name.c_str(), [&model](const py::args& args, const py::kwargs& kwargs) { return build(model, args, kwargs); },
@@ -114,6 +146,54 @@ void bind_material_models(py::class_<rheology::Rheology>& material) {
                 docstring(model).c_str());
         }
     }
+}
+
+void bind_converted_material(py::module_& module) {
+    using rheology::Certificate;
+    const auto state = [](const ConvertedMaterial& m) {
+        std::vector<std::pair<double, double>> terms;
+        for (const auto& term : m.terms()) terms.emplace_back(term.modulus, term.relaxation_time);
+        const Certificate& c = m.certificate;
+        return py::make_tuple(m.equilibrium_modulus(), m.viscosity(), terms, c.error, c.window.shortest,
+                              c.window.longest, c.window.frequencies, c.tolerance, c.kind);
+    };
+    const auto restore = [](const py::tuple& s) {
+        std::vector<rheology::RelaxationTerm> terms;
+        for (const auto& [G, tau] : s[2].cast<std::vector<std::pair<double, double>>>()) terms.push_back({G, tau});
+        rheology::TimeWindow window{s[4].cast<double>(), s[5].cast<double>(), s[6].cast<std::vector<double>>()};
+        return ConvertedMaterial{rheology::Rheology(s[0].cast<double>(), s[1].cast<double>(), std::move(terms)),
+                                 Certificate{s[3].cast<double>(), std::move(window), s[7].cast<double>(),
+                                             s[8].cast<std::string>()}};
+    };
+    py::class_<ConvertedMaterial, rheology::Rheology>(module, "ConvertedMaterial",
+                                                      R"doc(An mdr.Material converted to a Prony series from a model.
+
+What the factories of the power law, the springpots and tables return: the series, which the solver uses, with the
+error of the conversion. A derived Material (series, with_bulk) is a plain Material again.
+
+Examples
+--------
+>>> cell = mdr.Material.power_law(G0=1e3, beta=0.2, window=(1e-3, 10.0), frequencies=[1e4])
+>>> cell.material_error <= 1e-4, cell.material_window, cell.material_frequencies
+(True, (0.001, 10.0), [10000.0])
+)doc")
+        .def_property_readonly(
+            "material_error", [](const ConvertedMaterial& m) { return m.certificate.error; },
+            "float: the largest relative error of G(t) over the window and of G^(omega) over 1/t of the window and "
+            "at the frequencies (a table: the largest relative fit residual at its data).")
+        .def_property_readonly(
+            "material_window",
+            [](const ConvertedMaterial& m) { return std::pair{m.certificate.window.shortest, m.certificate.window.longest}; },
+            "(float, float): the lags (t_min, t_max) [s] where material_error holds (a table: its data's span).")
+        .def_property_readonly(
+            "material_frequencies", [](const ConvertedMaterial& m) { return m.certificate.window.frequencies; },
+            "list of float: the angular frequencies [rad/s] where G^(omega) is certified besides the window, "
+            "ascending (the factory's frequencies).")
+        .def(py::pickle(state, restore))
+        .def("__repr__", [](const ConvertedMaterial& m) {
+            return fmt::format("ConvertedMaterial(G_inf={}, eta={}, branches={}, material_error={:.3g})",
+                               m.equilibrium_modulus(), m.viscosity(), m.terms().size(), m.certificate.error);
+        });
 }
 
 void bind_material_registry(py::module_& module) {
@@ -131,7 +211,8 @@ void bind_material_registry(py::module_& module) {
                     parameters.append(row);
                 }
                 rows.append(py::dict("name"_a = model.name, "documentation"_a = model.documentation,
-                                     "parameters"_a = parameters, "needs_window"_a = model.needs_window));
+                                     "parameters"_a = parameters, "needs_window"_a = model.needs_window,
+                                     "converted"_a = converted(model)));
             }
             return rows;
         },

@@ -3,14 +3,23 @@
 
 #include <pybind11/pybind11.h>
 
+#include "mdr/rheology/approximation.hpp"
 #include "mdr/rheology/rheology.hpp"
 
 namespace mdr::python {
 
+/// What the factories of a model converted to a Prony series (power law, springpots, table) build: the series
+/// and the certificate of the conversion.
+struct ConvertedMaterial : rheology::Rheology {
+    rheology::Certificate certificate;
+};
+
 /// mdr.Material: the canonical rheology and its factories.
 void bind_rheology(pybind11::module_& module);
-/// The factories of mdr.Material, one per registered material model.
+/// The factories of mdr.Material, one per registered material model, and its material_* properties (None).
 void bind_material_models(pybind11::class_<rheology::Rheology>& material);
+/// mdr.ConvertedMaterial: an mdr.Material with the error, window and frequencies of its conversion.
+void bind_converted_material(pybind11::module_& module);
 /// _mdr._material_models(): the registry as data (stubs and docs are checked against it).
 void bind_material_registry(pybind11::module_& module);
 /// mdr.run and mdr.check: cases from TOML text, results as numpy arrays.

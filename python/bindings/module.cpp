@@ -7,6 +7,7 @@ PYBIND11_MODULE(_mdr, module) {
     module.attr("__version__") = MDR_VERSION;
     pybind11::register_exception<mdr::InvalidInput>(module, "InvalidInput", PyExc_ValueError);
     mdr::python::bind_rheology(module);
+    mdr::python::bind_converted_material(module);
     mdr::python::bind_material_registry(module);
     mdr::python::bind_profile(module);
     mdr::python::bind_control_registry(module);

@@ -24,14 +24,14 @@ from typing import Any, Callable, Mapping, Optional, Union
 import numpy as np
 
 from . import _mdr
-from ._mdr import Indenter, InvalidInput, Material
+from ._mdr import ConvertedMaterial, Indenter, InvalidInput, Material
 from ._toml import to_toml
 from .curve_maps import map_curves
 from .fit_maps import fit_map
 from .fitting import FitResult, fit
 
-__all__ = ["run", "check", "sweep", "SweepTable", "fit", "FitResult", "map_curves", "fit_map", "Material", "Indenter",
-           "Result", "InvalidInput", "__version__"]
+__all__ = ["run", "check", "sweep", "SweepTable", "fit", "FitResult", "map_curves", "fit_map", "Material",
+           "ConvertedMaterial", "Indenter", "Result", "InvalidInput", "__version__"]
 __version__ = _mdr.__version__
 
 CaseLike = Union[str, os.PathLike, Mapping[str, Any]]

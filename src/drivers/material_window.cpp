@@ -2,12 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <utility>
+#include <vector>
 
+#include "mdr/drivers/case_validation.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::drivers {
 
 rheology::TimeWindow material_window(const LoadHistory& history, double end_time, const NumericsOptions& numerics,
+                                     const std::optional<HarmonicLoad>& harmonic,
                                      const std::optional<TangentialLoad>& tangential, bool impact) {
     const char* rule = "a material converted to a Prony series needs the problem's time window";
     if (impact && !std::isfinite(end_time)) {
@@ -22,12 +27,20 @@ rheology::TimeWindow material_window(const LoadHistory& history, double end_time
                            std::string(rule) + ": the history must last (end after its first time)");
     }
     double step = numerics.time_step.value_or(duration / static_cast<double>(default_steps));
-    if (!numerics.time_step && tangential && tangential->harmonic) {
-        step = std::min(step, 1.0 / tangential->harmonic->frequency / default_steps_per_period);
+    std::vector<double> frequencies;
+    const std::pair<std::optional<HarmonicLoad>, const char*> loads[] = {
+        {harmonic, "load.harmonic."}, {tangential ? tangential->harmonic : std::nullopt, "tangential."}};
+    for (const auto& [load, prefix] : loads) {
+        if (!load) continue;
+        validate(*load, prefix);  // its frequency is used here, before the case is validated
+        if (!numerics.time_step) step = std::min(step, load->period() / default_steps_per_period);
+        frequencies.push_back(2.0 * std::numbers::pi * load->frequency);
     }
+    std::sort(frequencies.begin(), frequencies.end());
+    frequencies.erase(std::unique(frequencies.begin(), frequencies.end()), frequencies.end());
     if (numerics.time_step) require_positive("numerics.time_step", step);
     const double shortest = std::min(step / 5.0, duration / 10.0);
-    return {shortest, duration};
+    return {shortest, duration, std::move(frequencies)};
 }
 
 }  // namespace mdr::drivers

@@ -59,7 +59,9 @@ Body build_body(const BodySpec& spec, const std::optional<rheology::TimeWindow>&
     rheology::ModelMaterial shear = build_material(spec.shear, window, directory);
     Body body{std::move(shear.series), std::nullopt, std::move(shear.origin)};
     std::optional<rheology::ModelMaterial> bulk;
-    if (spec.bulk_modulus) bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus), {}};
+    if (spec.bulk_modulus) {
+        bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus), {.times_from_conversion = true}};
+    }
     if (spec.bulk) bulk = build_material(*spec.bulk, window, directory);
     if (bulk) {
         body.effective = rheology::compressible_effective(body.shear, bulk->series);
@@ -270,7 +272,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     // The bodies, built over the time window of the case when a model is converted to a series.
     std::optional<rheology::TimeWindow> window;
     if (half_space_spec.needs_window() || (second_spec && second_spec->needs_window())) {
-        window = drivers::material_window(history, end_time, numerics, tangential, impact.has_value());
+        window = drivers::material_window(history, end_time, numerics, harmonic, tangential, impact.has_value());
     }
     // Files a material names (a table's `file`) are found next to the case file (the parsed table's source).
     const auto& source_path = root_table.source().path;

@@ -39,6 +39,9 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
     if (const auto& certificate = contact_case.material_origin.certificate) {
         summary["material_error"] = certificate->error;  // the series standing for the model (power law, table)
         summary["material_window"] = {certificate->window.shortest, certificate->window.longest};
+        if (!certificate->window.frequencies.empty()) {
+            summary["material_frequencies"] = certificate->window.frequencies;  // [rad/s], certified explicitly
+        }
     }
     if (contact_case.tangential) summary["tangential_approximation"] = contact_case.tangential_approximate;
     if (result.impact) {

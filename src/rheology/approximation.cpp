@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "mdr/error.hpp"
 
@@ -14,6 +15,18 @@ void validate(const TimeWindow& window) {
         throw InvalidInput("window.longest", format_value(window.longest),
                            "must be after window.shortest = " + format_value(window.shortest));
     }
+    for (std::size_t i = 0; i < window.frequencies.size(); ++i) {
+        require_positive("frequencies[" + std::to_string(i) + "]", window.frequencies[i]);
+    }
+}
+
+TimeWindow TimeWindow::lags() const {
+    TimeWindow lags{shortest, longest, {}};
+    for (const double omega : frequencies) {
+        lags.shortest = std::min(lags.shortest, 1.0 / omega);
+        lags.longest = std::max(lags.longest, 1.0 / omega);
+    }
+    return lags;
 }
 
 MaterialOrigin combined_origin(const MaterialOrigin& first, const MaterialOrigin& second, const std::string& joiner) {
@@ -25,6 +38,7 @@ MaterialOrigin combined_origin(const MaterialOrigin& first, const MaterialOrigin
     if (first.certificate && second.certificate && second.certificate->error > first.certificate->error) {
         combined.certificate->error = second.certificate->error;
     }
+    combined.times_from_conversion = first.times_from_conversion && second.times_from_conversion;
     return combined;
 }
 
@@ -43,7 +57,14 @@ double certify(const Rheology& series, const ModelFunctions& model, const TimeWi
             worst = std::max(worst, std::abs(series.complex_modulus(1.0 / t) - modulus) / std::abs(modulus));
         }
     }
-    return 1.02 * worst;
+    worst *= 1.02;
+    if (model.complex_modulus) {
+        for (const double omega : window.frequencies) {  // a harmonic load's: exactly where the case needs it
+            const std::complex<double> modulus = model.complex_modulus(omega);
+            worst = std::max(worst, std::abs(series.complex_modulus(omega) - modulus) / std::abs(modulus));
+        }
+    }
+    return worst;
 }
 
 }  // namespace mdr::rheology

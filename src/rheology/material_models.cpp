@@ -23,8 +23,11 @@ ModelParameter time(std::string key, std::string documentation) {
     return {std::move(key), Kind::number, "s", std::move(documentation)};
 }
 
-// The models of Table 1 are their own series: exact, no certificate.
-ModelMaterial exact(Rheology series) { return {std::move(series), {}}; }
+// The models of Table 1 are their own series: exact, no certificate; an elastic one has no time at all.
+ModelMaterial exact(Rheology series) {
+    const bool timeless = series.terms().empty() && series.viscosity() == 0.0;
+    return {std::move(series), {.times_from_conversion = timeless}};
+}
 
 std::vector<RelaxationTerm> relaxation_terms(const ModelParameters& p) {
     std::vector<RelaxationTerm> terms;
@@ -36,7 +39,7 @@ ModelMaterial build_power_law(const ModelParameters& p, const ConversionOptions&
     const PowerLaw model{p.number("G0"), p.number("beta"), p.number("t0")};
     model.validate();
     Approximation approximation = approximate(model, *options.window, options.tolerance);
-    return {std::move(approximation.series), {"", approximation.certificate, approximation.model}};
+    return {std::move(approximation.series), {"", approximation.certificate, approximation.model, true}};
 }
 
 ModelParameter quasi_property() {
@@ -47,7 +50,7 @@ ModelParameter order() { return {"alpha", Kind::number, "1", "springpot order, 0
 ModelMaterial fractional(FractionalModel model, const ConversionOptions& options) {
     model.validate();
     Approximation approximation = approximate(model, *options.window, options.tolerance);
-    return {std::move(approximation.series), {"", approximation.certificate, approximation.model}};
+    return {std::move(approximation.series), {"", approximation.certificate, approximation.model, true}};
 }
 
 ModelMaterial build_table(const ModelParameters& p, const ConversionOptions& options) {
@@ -226,9 +229,14 @@ std::string describe_model(const MaterialModel& model, const ModelParameters& pa
 }
 
 std::string describe_certificate(const Certificate& certificate, std::size_t terms) {
-    return fmt::format("as {} Prony terms, {} {:.2g} over t = {:.3g} .. {:.3g} s", terms,
-                       certificate.kind == "model" ? "relative error" : "fit residual", certificate.error,
-                       certificate.window.shortest, certificate.window.longest);
+    std::string text = fmt::format("as {} Prony terms, {} {:.2g} over t = {:.3g} .. {:.3g} s", terms,
+                                   certificate.kind == "model" ? "relative error" : "fit residual", certificate.error,
+                                   certificate.window.shortest, certificate.window.longest);
+    const auto& frequencies = certificate.window.frequencies;
+    for (std::size_t i = 0; i < frequencies.size(); ++i) {
+        text += fmt::format("{}{:.4g}", i == 0 ? " and at omega = " : ", ", frequencies[i]);
+    }
+    return frequencies.empty() ? text : text + " rad/s";
 }
 
 }  // namespace mdr::rheology

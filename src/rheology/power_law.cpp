@@ -88,9 +88,11 @@ Approximation approximate(const PowerLaw& model, const TimeWindow& window, doubl
     }
     const ModelFunctions functions = model.functions();
     double h = spacing_for(model.beta, tolerance / 4.0);
-    double below = 30.0, beyond = 100.0;  // the nodes reach t_min / below and t_max * beyond
+    // The nodes reach t_min / below and t_max * beyond, the window widened to the lags 1/omega of its frequencies.
+    const TimeWindow lags = window.lags();
+    double below = 30.0, beyond = 100.0;
     for (int attempt = 0;; ++attempt) {
-        Rheology series = trapezoidal_series(model, window.shortest / below, window.longest * beyond, h);
+        Rheology series = trapezoidal_series(model, lags.shortest / below, lags.longest * beyond, h);
         const double error = certify(series, functions, window, 32.0 * std::numbers::ln10 / h);
         if (error <= tolerance || attempt == 12) {
             if (error > tolerance) {

@@ -216,7 +216,7 @@ def public_callables():
     import mdr.plot
 
     found = {"mdr.run": mdr.run, "mdr.check": mdr.check, "mdr.sweep": mdr.sweep, "mdr.Result": mdr.Result,
-             "mdr.Material": mdr.Material, "mdr.Indenter": mdr.Indenter}
+             "mdr.Material": mdr.Material, "mdr.ConvertedMaterial": mdr.ConvertedMaterial, "mdr.Indenter": mdr.Indenter}
     for module in (mdr.plot, mdr.maps):
         for name, member in inspect.getmembers(module, inspect.isfunction):
             if member.__module__ == module.__name__ and not name.startswith("_"):
@@ -230,8 +230,8 @@ def public_callables():
 
 
 def takes_parameters(name: str, member) -> bool:
-    if name in ("mdr.Material", "mdr.Indenter", "mdr.Result"):
-        return name != "mdr.Indenter"  # Indenter has factories only
+    if name in ("mdr.Material", "mdr.ConvertedMaterial", "mdr.Indenter", "mdr.Result"):
+        return name not in ("mdr.Indenter", "mdr.ConvertedMaterial")  # built by factories only
     doc_signature = (member.__doc__ or "").splitlines()[0] if not inspect.isfunction(member) else ""
     if doc_signature:  # pybind11: "name(self: ..., x: ...) -> ..."
         arguments = doc_signature[doc_signature.index("(") + 1:doc_signature.rindex(")")]
@@ -270,7 +270,7 @@ def test_docstring_examples_hold(monkeypatch, tmp_path):
     tests = []
     for module in (mdr, mdr.plot, mdr.maps, mdr.fitting):
         tests += finder.find(module, globs={"mdr": mdr, "np": np, "math": math})
-    for cls in (mdr.Material, mdr.Indenter):
+    for cls in (mdr.Material, mdr.ConvertedMaterial, mdr.Indenter):
         tests += finder.find(cls, cls.__name__, module=False, globs={"mdr": mdr, "np": np, "math": math})
     examples = 0
     for test in tests:

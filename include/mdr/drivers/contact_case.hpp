@@ -129,7 +129,8 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// control: the Lee-Radok radius g^-1(max d), an upper bound also under unloading since the free surface never
 /// rises above the undeformed level; force control: the elastic radius at the largest force with the softest
 /// modulus 1/J(t_end - t_start), 25% margin); a flat punch uses its own radius. The time step is the history
-/// duration over default_steps, and at most a fifth of the shortest material time that is longer than that; under
+/// duration over default_steps, and at most a fifth of the shortest material time that is longer than that (under
+/// displacement control not for a series whose times all come from a conversion, MaterialOrigin); under
 /// force control a material with a parallel dashpot (its creep is singular in time after the start and after a
 /// force jump) has its steps graded from there (jump_grading = jump_grading_ratio, see grade_after_jumps), so
 /// that the step count stays bounded for any record length. Impact: the time step is the elastic contact time

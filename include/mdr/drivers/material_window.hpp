@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The lags a problem needs of its material: what a model converted to a Prony series (power law, springpots,
-/// tables) must match, from the first time step to the duration.
+/// tables) must match, from the first time step to the duration, and the frequencies of its harmonic loads.
 
 #include <optional>
 
@@ -10,15 +10,16 @@
 
 namespace mdr::drivers {
 
-/// The time window of a problem with the given history, end time, numerics and tangential load, without its
-/// material (the material's series depends on it): longest = end - start; shortest = a fifth of the largest time
-/// step (`numerics.time_step`, or the duration over default_steps, at most a harmonic period over
-/// default_steps_per_period), the smallest step resolve_numerics takes before snapshots (it shortens the default
-/// step to a fifth of a material time at most). A harmonic load's angular frequency 2 pi f lies in
-/// [1/longest, 1/shortest] when it lasts a period. An impact needs `load.end` and `numerics.time_step` (its time
-/// scales follow from the material). Throws mdr::InvalidInput naming the key that is missing or makes the window
-/// empty.
+/// The time window of a problem with the given history, end time, numerics and harmonic loads (normal and
+/// tangential), without its material (the material's series depends on it): longest = end - start; shortest = a
+/// fifth of the largest time step (`numerics.time_step`, or the duration over default_steps, at most a harmonic
+/// period over default_steps_per_period), the smallest step resolve_numerics takes before snapshots (it shortens
+/// the default step to a fifth of a material time at most); frequencies = the angular frequencies 2 pi f of the
+/// harmonic loads, at which the complex modulus is certified explicitly. An impact needs `load.end` and
+/// `numerics.time_step` (its time scales follow from the material). Throws mdr::InvalidInput naming the key that
+/// is missing or makes the window empty.
 rheology::TimeWindow material_window(const LoadHistory& history, double end_time, const NumericsOptions& numerics,
+                                     const std::optional<HarmonicLoad>& harmonic,
                                      const std::optional<TangentialLoad>& tangential, bool impact);
 
 }  // namespace mdr::drivers

@@ -85,7 +85,8 @@ ModelMaterial build_material(const MaterialModel& model, const ModelParameters& 
 std::string describe_model(const MaterialModel& model, const ModelParameters& parameters,
                            std::string (*rename)(const std::string&) = nullptr);
 
-/// The description of a certificate: `as N Prony terms, error E over t = a .. b s`.
+/// The description of a certificate: `as N Prony terms, error E over t = a .. b s`, then `and at omega = w1, w2
+/// rad/s` when it certifies frequencies.
 std::string describe_certificate(const Certificate& certificate, std::size_t terms);
 
 }  // namespace mdr::rheology

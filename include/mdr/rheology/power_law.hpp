@@ -28,7 +28,8 @@ struct PowerLaw {
 /// the trapezoidal rule in log tau of G(t) = G0 t0^beta / Gamma(beta) int tau^(-beta) exp(-t/tau) d ln tau, its
 /// node spacing chosen from the aliasing error ~ 2 |Gamma(beta + 2 pi i / h)| / Gamma(beta), the sum continued past
 /// the window's ends by one Maxwell term each that keeps the sum's moments (so that the area of G below the
-/// window, which a convolution sees, is kept), then certified; refined until certified. Throws mdr::InvalidInput
+/// window, which a convolution sees, is kept), then certified; refined until certified. The nodes span the window
+/// widened to the lags 1/omega of its frequencies, where G^(omega) is certified too. Throws mdr::InvalidInput
 /// for invalid parameters, window or tolerance (not in [1e-10, 0.1]).
 Approximation approximate(const PowerLaw& model, const TimeWindow& window,
                           double tolerance = default_material_tolerance);

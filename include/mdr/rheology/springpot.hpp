@@ -40,7 +40,8 @@ double mittag_leffler_decay(double alpha, double x);
 /// The Prony series of a fractional model over `window`, certified to `tolerance` (relative, G(t) and G^(omega)):
 /// the springpot's series (the power law G0 = c / Gamma(1 - alpha), beta = alpha, t0 = 1 s; see approximate),
 /// put in series with the spring G by eq. (8) (creep functions add) and in parallel with G_inf; certified against
-/// relaxation() and complex_modulus(), the springpot's tolerance tightened until it holds.
+/// relaxation() and complex_modulus() over the window and at its frequencies, the springpot's tolerance tightened
+/// until it holds.
 Approximation approximate(const FractionalModel& model, const TimeWindow& window,
                           double tolerance = default_material_tolerance);
 
