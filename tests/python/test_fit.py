@@ -57,6 +57,23 @@ def test_a_curve_can_fit_its_own_quantity():
         mdr.fit(case, data=[{"time": t, "depth": d, "force": F, "fitted": "strain"}])
 
 
+def test_power_law_modulus_and_exponent_from_the_lee_radok_closed_form():
+    # Issue 12's power law fitted (G0, beta) to the closed form of a sphere at constant rate d = v t:
+    # F = (16 sqrt(R) / 3) G0 v^(3/2) Gamma(5/2) Gamma(1 - beta) / Gamma(5/2 - beta) t^(3/2 - beta) (t0 = 1 s).
+    from math import gamma, sqrt
+    G0, beta, v = 1.0e6, 0.2, 1.0e-5
+    t = np.linspace(0.0, 3.0, 301)
+    F = 16.0 * sqrt(R) / 3.0 * G0 * v ** 1.5 * gamma(2.5) * gamma(1.0 - beta) / gamma(2.5 - beta) * t ** (1.5 - beta)
+    case = {"material": {"model": "power_law", "G0": 5.0e5, "beta": 0.3}, "indenter": {"shape": "sphere", "R": R},
+            "fit": {"free": ["material.G0", "material.beta"], "contact_point": "fixed", "baseline": "fixed",
+                    "bounds": {"material.beta": [0.01, 0.9]}}}
+    result = mdr.fit(case, data=[{"time": t, "depth": v * t, "force": F}])
+    assert result.status == "converged"
+    # The series stands for the power law to its certificate (1e-4 of G): so far, no closer.
+    assert result.parameters["material.G0"] == pytest.approx(G0, rel=1e-4)
+    assert result.parameters["material.beta"] == pytest.approx(beta, rel=1e-4)
+
+
 def test_bad_input_is_a_value_error_with_the_command_line_message():
     case = {"material": {"model": "elastic", "G": 1.0e6}, "indenter": {"shape": "sphere", "R": R},
             "fit": {"free": ["material.G"], "bounds": {"material.G": [1.0e7, 1.0e8]}}}
