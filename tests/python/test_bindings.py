@@ -431,6 +431,9 @@ def test_every_plot_function_runs_headless(result_directory, file_result, tmp_pa
         "tangential_loop": lambda: mdr.plot.tangential_loop(
             {"u": np.array([0.0, 1e-6, 0.0]), "Fx": np.array([0.0, 0.1, 0.05])}),
         "load_phases": lambda: mdr.plot.load_phases(history["d"], history["F"]),
+        "fit_curves": lambda: mdr.plot.fit_curves(
+            {"curve": np.array(["a", "a", "b"]), "t": np.array([0.0, 1.0, 0.0]), "measured": np.array([0.0, 1.0, 2.0]),
+             "model": np.array([0.0, 1.1, 2.0]), "residual": np.array([0.0, 0.1, 0.0])}),
         "sweep_map": lambda: mdr.plot.sweep_map(
             {"material.tau1": np.array([0.1, 1.0, 0.1, 1.0]), "material.G1": np.array([1.0, 1.0, 2.0, 2.0]),
              "max_force": np.array([1.0, 2.0, 3.0, 4.0])}, "max_force"),

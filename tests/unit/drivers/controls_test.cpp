@@ -1,5 +1,6 @@
-// The registry of controls (drivers/controls.hpp): one row per Control, found by name and by value, and the names
-// that the reader's messages, the description and summary.json print come from it.
+// The registry of controls (drivers/controls.hpp): a row per Control found by name and by value (plus the Shore
+// durometer, a spring control of its own), and the names that the reader's messages, the description and
+// summary.json print come from it.
 
 #include "mdr/drivers/controls.hpp"
 #include "mdr/error.hpp"
@@ -14,7 +15,7 @@ namespace {
 
 using mdr::drivers::Control;
 
-TEST(ControlRegistry, OneRowPerControlFoundByNameAndByValue) {
+TEST(ControlRegistry, ARowPerControlFoundByNameAndByValue) {
     std::set<std::string> names;
     for (const Control control : {Control::displacement, Control::force, Control::impact, Control::spring}) {
         const auto& kind = mdr::drivers::control_kind(control);
@@ -24,8 +25,11 @@ TEST(ControlRegistry, OneRowPerControlFoundByNameAndByValue) {
         EXPECT_FALSE(kind.keys.empty()) << kind.name;
         names.insert(kind.name);
     }
-    EXPECT_EQ(names.size(), mdr::drivers::controls().size());
+    EXPECT_EQ(names.size() + 1, mdr::drivers::controls().size());
     EXPECT_EQ(mdr::drivers::control_kind(Control::force).column, "F");
+    // The durometer: found by name, a spring control; by value, Control::spring is the plain spring.
+    EXPECT_EQ(mdr::drivers::control_named("shore").control, Control::spring);
+    EXPECT_EQ(mdr::drivers::control_kind(Control::spring).name, "spring");
 }
 
 TEST(ControlRegistry, UnknownControlListsTheTable) {
@@ -39,7 +43,7 @@ TEST(ControlRegistry, UnknownControlListsTheTable) {
     std::string names;
     for (const auto& kind : mdr::drivers::controls()) names += (names.empty() ? "" : ", ") + kind.name;
     EXPECT_EQ(message, "load.control = \"position\": unknown control; one of " + names);
-    EXPECT_EQ(names, "displacement, force, impact, spring");
+    EXPECT_EQ(names, "displacement, force, impact, spring, shore");
 }
 
 TEST(ControlRegistry, TheHistoryColumnNamesTheValueInMessages) {
