@@ -78,7 +78,6 @@ public:
         }
     }
 
-    double last_time() const { return times_.back(); }
     double last_depth() const { return depths_.back(); }
 
     // The contact grows or holds to (time, depth), depth >= last_depth(); returns the force (eq. 21).
