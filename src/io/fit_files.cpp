@@ -12,6 +12,23 @@ namespace {
 
 nlohmann::ordered_json number(double value) { return std::isfinite(value) ? nlohmann::ordered_json(value) : nullptr; }
 
+// A table of the material's functions over `x` with their 95 % bands: `x,f,f_lower,f_upper,...`.
+void write_bands(const std::filesystem::path& path, const std::string& x_name, const std::vector<double>& x,
+                 const std::vector<std::pair<std::string, fit::MaterialBand>>& bands) {
+    auto file = fmt::output_file(path.string());
+    file.print("{}", x_name);
+    for (const auto& band : bands) file.print(",{0},{0}_lower,{0}_upper", band.first);
+    file.print("\n");
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        file.print("{}", x[i]);
+        for (const auto& band : bands) {
+            file.print(",{},{},{}", band.second.value[i], band.second.lower[i], band.second.upper[i]);
+        }
+        file.print("\n");
+    }
+    file.close();
+}
+
 // The first curve's driving history as a `[load]` body: at most about 400 points, the contact point removed.
 std::string load_of_first_curve(const fit::FitResult& result) {
     const auto& curve = result.curves.front();
@@ -92,22 +109,9 @@ void write_fit_result(const std::filesystem::path& directory, const FitCase& fit
 
     const auto& material = result.material;
     if (!material.times.empty()) {
-        auto functions = fmt::output_file((directory / "functions.csv").string());
-        functions.print("t,G,G_lower,G_upper,J,J_lower,J_upper\n");
-        for (std::size_t i = 0; i < material.times.size(); ++i) {
-            functions.print("{},{},{},{},{},{},{}\n", material.times[i], material.relaxation.value[i],
-                            material.relaxation.lower[i], material.relaxation.upper[i], material.creep.value[i],
-                            material.creep.lower[i], material.creep.upper[i]);
-        }
-        functions.close();
-        auto dynamic = fmt::output_file((directory / "dynamic.csv").string());
-        dynamic.print("omega,storage,storage_lower,storage_upper,loss,loss_lower,loss_upper\n");
-        for (std::size_t i = 0; i < material.omegas.size(); ++i) {
-            dynamic.print("{},{},{},{},{},{},{}\n", material.omegas[i], material.storage.value[i],
-                          material.storage.lower[i], material.storage.upper[i], material.loss.value[i],
-                          material.loss.lower[i], material.loss.upper[i]);
-        }
-        dynamic.close();
+        write_bands(directory / "functions.csv", "t", material.times, {{"G", material.relaxation}, {"J", material.creep}});
+        write_bands(directory / "dynamic.csv", "omega", material.omegas,
+                    {{"storage", material.storage}, {"loss", material.loss}});
     }
 
     auto toml = fmt::output_file((directory / "fitted.toml").string());
