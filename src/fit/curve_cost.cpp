@@ -82,10 +82,6 @@ std::vector<double> branch_moduli(const rheology::Rheology& material) {
     return moduli;
 }
 
-bool same_profile(const profile::ProfileDefinition& a, const profile::ProfileDefinition& b) {
-    return a.shape == b.shape && a.numbers == b.numbers && a.arrays == b.arrays && a.texts == b.texts;
-}
-
 }  // namespace
 
 std::optional<std::vector<double>> CurveCost::modulus_direction(const drivers::ContactCase& base, const double* shared,
@@ -98,7 +94,7 @@ std::optional<std::vector<double>> CurveCost::modulus_direction(const drivers::C
         const auto& a = base.material.terms();
         const auto& b = moved.material.terms();
         if (a.size() != b.size() || base.material.viscosity() != moved.material.viscosity() ||
-            !same_profile(base.indenter->definition(), moved.indenter->definition())) {
+            base.indenter->definition() != moved.indenter->definition()) {
             return std::nullopt;
         }
         for (std::size_t k = 0; k < a.size(); ++k) {

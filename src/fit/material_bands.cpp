@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "mdr/io/material_table.hpp"
+
 namespace mdr::fit {
 
 namespace {
@@ -30,11 +32,8 @@ MaterialBands material_bands(const FitProblem& problem, const FitResult& result)
     }
     MaterialBands bands;
     constexpr std::size_t count = 121;
-    const double ratio = std::log(longest / shortest);
-    if (!(ratio > 0.0) || !std::isfinite(ratio)) return bands;
-    for (std::size_t i = 0; i < count; ++i) {
-        bands.times.push_back(shortest * std::exp(ratio * static_cast<double>(i) / static_cast<double>(count - 1)));
-    }
+    if (!(longest > shortest) || !std::isfinite(longest / shortest)) return bands;
+    bands.times = io::log_grid(shortest, longest, count);
     for (auto t = bands.times.rbegin(); t != bands.times.rend(); ++t) bands.omegas.push_back(1.0 / *t);
 
     const auto& values = result.values;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "exponential_quadrature.hpp"
+#include "mdr/foundation/step_coefficients.hpp"
 
 namespace mdr::fit {
 
@@ -21,8 +22,9 @@ struct Branch {
     double time;
 };
 
-// tau (1 - exp(-span / tau)) = int_0^span exp(-s / tau) ds; span itself for tau = +infinity.
-double relaxed(double span, double tau) { return std::isinf(tau) ? span : -tau * std::expm1(-span / tau); }
+// tau (1 - exp(-span / tau)) = int_0^span exp(-s / tau) ds = span B(span / tau) (the foundation's branch gain, eq.
+// 16/18); span itself for tau = +infinity.
+double relaxed(double span, double tau) { return span * foundation::branch_gain(span / tau); }
 
 // A step of the depth history below which the cubic of ExponentialRule is not accurate enough: the contact radius
 // a(d) ~ d^(1/n) varies too much across it when the depth at its start is below 16 times its depth increment (the

@@ -25,6 +25,8 @@ struct ProfileDefinition {
     const std::string& text(const std::string& key) const;
     /// True when any kind of value is given for `key`.
     bool has(const std::string& key) const;
+    /// The same shape with the same values: the same profile.
+    bool operator==(const ProfileDefinition&) const = default;
 };
 
 /// An axisymmetric gap f(r) between the undeformed surfaces, f(0) = 0, non-decreasing in r.
