@@ -112,6 +112,42 @@ void validate_shore(const ContactCase& contact_case) {
     if (contact_case.tangential) throw InvalidInput("tangential", "[...]", "not with control = \"shore\"");
 }
 
+// Constant-force pauses (ForcePause): spring control only, in time order and apart, inside the simulated time after
+// the history's first point, and not during a harmonic.
+void validate_force_pauses(const ContactCase& contact_case) {
+    const auto& pauses = contact_case.force_pauses;
+    if (pauses.empty()) return;
+    if (contact_case.control != Control::spring || contact_case.shore) {
+        throw InvalidInput("load.force_pauses", "[...]", "only with control = \"spring\" (the feedback moves the base)");
+    }
+    const double first = contact_case.history.start_time();
+    for (std::size_t i = 0; i < pauses.size(); ++i) {
+        const ForcePause& pause = pauses[i];
+        const std::string key = fmt::format("load.force_pauses[{}]", i);
+        const std::string value = fmt::format("[{}, {}]", format_value(pause.start), format_value(pause.end));
+        if (!(pause.start > first)) {
+            throw InvalidInput(key, value, "must start after the history's first time " + format_value(first) +
+                                               " (the force held is that of a contact)");
+        }
+        if (!(pause.end > pause.start)) throw InvalidInput(key, value, "must end after it starts");
+        if (!(pause.end <= contact_case.end_time)) {
+            throw InvalidInput(key, value, "must end by the end of the run, load.end = " +
+                                               format_value(contact_case.end_time));
+        }
+        if (i > 0 && !(pause.start > pauses[i - 1].end)) {
+            throw InvalidInput(key, value, "must start after the previous pause ends at " +
+                                               format_value(pauses[i - 1].end) + " (pauses in time order, apart)");
+        }
+        if (const auto& harmonic = contact_case.harmonic; harmonic && harmonic->start < pause.end &&
+                                                           harmonic->end > pause.start) {
+            throw InvalidInput(key, value,
+                               fmt::format("overlaps load.harmonic (t = {} .. {}): during a pause the feedback holds "
+                                           "the force, so the base cannot follow a harmonic",
+                                           format_value(harmonic->start), format_value(harmonic->end)));
+        }
+    }
+}
+
 void validate_impact(const ContactCase& contact_case) {
     if (contact_case.control != Control::impact) {
         if (contact_case.impact) {
@@ -227,6 +263,7 @@ void validate(const ContactCase& contact_case) {
     validate_spring(contact_case);
     validate_shore(contact_case);
     validate_times(contact_case);
+    validate_force_pauses(contact_case);
     if (contact_case.tangential) validate(*contact_case.tangential);
     validate_numerics(contact_case.numerics);
 }

@@ -2,6 +2,7 @@
 
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/work_estimate.hpp"
+#include "paused_base.hpp"
 
 #include <algorithm>
 #include <array>
@@ -212,7 +213,25 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
         } else if (contact_case.control == Control::force) {
             radius = force_bound(peak);
         } else {  // spring: d <= z and F <= k z
-            radius = std::min(1.1 * indenter.contact_radius(peak), force_bound(*contact_case.spring_constant * peak));
+            const double k = *contact_case.spring_constant;
+            double base = peak;
+            double force = k * peak;
+            if (!contact_case.force_pauses.empty()) {
+                // The force at a depth d <= z is at most the elastic one with G(0+) (the contact only grows up to a
+                // pause); each pause shifts the later base by its creep, at most the depth of that force's bound.
+                const double modulus = contact_case.material.instantaneous_modulus();
+                const auto at_most = [&](double z) {
+                    return std::isfinite(modulus)
+                               ? std::min(k * z, elastic_force(indenter, modulus, indenter.contact_radius(z)))
+                               : k * z;
+                };
+                const double creep = indenter.equivalent(std::min(force_bound(at_most(peak)), indenter.max_radius()));
+                base = paused_base_peak(contact_case.history, contact_case.force_pauses, peak, creep);
+                force = std::isfinite(base) ? at_most(base) : force;
+            }
+            // (An infinite bound: the force bound reaches the indenter's edge, which is then the half-width.)
+            radius = std::isfinite(base) ? std::min(1.1 * indenter.contact_radius(base), force_bound(force))
+                                         : indenter.max_radius();
         }
         if (!(radius > 0.0)) radius = std::isfinite(indenter.max_radius()) ? indenter.max_radius() : 1.0;
         resolved.half_width = std::min(radius, indenter.max_radius());

@@ -8,6 +8,7 @@
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "cycle_measure.hpp"
+#include "paused_base.hpp"
 #include "stepping.hpp"
 #include "tangential_stepping.hpp"
 
@@ -63,6 +64,11 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
         for (const double time : shore_reading_times) {
             if (time <= contact_case.end_time) cuts.push_back(time);  // each reading on a node of its own
         }
+    }
+    std::optional<PausedBase> paused;
+    if (!contact_case.force_pauses.empty()) {
+        paused.emplace(contact_case.force_pauses, *contact_case.spring_constant);
+        for (const ForcePause& pause : contact_case.force_pauses) cuts.insert(cuts.end(), {pause.start, pause.end});
     }
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
@@ -122,7 +128,12 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
     for (std::size_t n = 1; n < nodes.size(); ++n) {
         const double time_step = nodes[n].time - nodes[n - 1].time;
         // Force control: the sine's round-off at a zero of the validated (>= 0) prescribed force is no pull.
-        const double target = contact_case.control == Control::force ? std::max(nodes[n].value, 0.0) : nodes[n].value;
+        // Spring control: the base, the history shifted by the pauses passed (PausedBase); a pause holds the force.
+        const bool holding = paused && paused->holding(nodes[n - 1].time, nodes[n].time);
+        const double target = contact_case.control == Control::force ? std::max(nodes[n].value, 0.0)
+                              : paused                               ? paused->base(nodes[n].value)
+                                                                     : nodes[n].value;
+        double base = target;
         double force = 0.0;
         if (time_step == 0.0 && has_dashpot) {
             // A jump against a dashpot: the dashpot takes the force at once and the depth does not move (spring
@@ -137,11 +148,13 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
             foundation.begin_step(cache.get(time_step), rate);
             double new_depth = target;
             if (contact_case.control != Control::displacement) {
-                // Force control: F(d) = target. Spring control: F(d) = k (z - d), i.e. F(d) + k d = k z.
+                // Force control: F(d) = target. Spring control: F(d) = k (z - d), i.e. F(d) + k d = k z. A force
+                // pause: F(d) = the force held, as under force control (eq. 19).
                 const double guess = depth + (depth - previous_depth);
                 const double scale = std::max(std::abs(depth - previous_depth), 1e-6 * depth_scale);
-                new_depth = solve_depth(foundation, depth, guess, scale, spring ? stiffness * target : target,
-                                        stiffness, 0.0);
+                new_depth = holding ? solve_depth(foundation, depth, guess, scale, paused->held_force(), 0.0, 0.0)
+                                    : solve_depth(foundation, depth, guess, scale,
+                                                  spring ? stiffness * target : target, stiffness, 0.0);
                 // A durometer's indenter stops at its full extension (reading 0): the stop takes the rest.
                 if (shore) new_depth = std::min(new_depth, shore->instrument.full_extension());
             }
@@ -156,10 +169,12 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
             shown_depth = contact_case.control == Control::force && target == 0.0
                               ? std::min(depth, foundation.touching_depth())
                               : depth;
+            if (holding) base = paused->base_in_pause(depth);  // the feedback's base: z = d + F / k
         }
         last_force = force;
         ++result.steps;
         const bool last_at_this_time = n + 1 == nodes.size() || nodes[n + 1].time != nodes[n].time;
+        if (paused && last_at_this_time) paused->passed(nodes[n].time, force, depth, nodes[n].value);
         if (cycle) cycle->observe(nodes[n].time, shown_depth, force, foundation.contact_count() > 0);
         if (shore && last_at_this_time &&
             std::find(shore_reading_times.begin(), shore_reading_times.end(), nodes[n].time) !=
@@ -167,7 +182,7 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
             result.shore_readings.push_back({nodes[n].time, shore->instrument.reading(shown_depth)});
         }
         if (n % numerics.output_every == 0 || n + 1 == nodes.size()) {
-            record(nodes[n].time, shown_depth, force, nodes[n].value);
+            record(nodes[n].time, shown_depth, force, base);
         }
         if (last_at_this_time) take_due_snapshots(nodes[n].time);
         if (progress && n % report_every == 0) progress(static_cast<double>(n) / static_cast<double>(nodes.size() - 1));

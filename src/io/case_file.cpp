@@ -186,7 +186,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     std::optional<BodySpec> second_spec;
     if (auto indenter_material = indenter_table->table("material")) second_spec = read_body(*indenter_material);
 
-    load->reject_unknown({"control", "history", "velocity", "end", "harmonic", "spring_constant",
+    load->reject_unknown({"control", "history", "velocity", "end", "harmonic", "spring_constant", "force_pauses",
                           "tangential_velocity", "incidence_deg", "spin", "scale", "duration"});
     const std::string control_name = load->string("control");
     drivers::Control control;
@@ -296,6 +296,11 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     contact_case.harmonic = harmonic;
     contact_case.spring_constant = spring_constant;
     if (shore) contact_case.shore = shore->test;
+    if (load->has("force_pauses")) {
+        for (const auto& [start, end] : load->pairs("force_pauses", "start", "end")) {
+            contact_case.force_pauses.push_back({start, end});
+        }
+    }
     contact_case.units = units;
     drivers::validate(contact_case);
     return contact_case;
@@ -347,6 +352,9 @@ std::string describe(const drivers::ContactCase& contact_case) {
             load += fmt::format(", harmonic of amplitude {:.4g} at {:.4g} 1/{} over t = {:.4g} .. {:.4g} {}",
                                 harmonic->amplitude, harmonic->frequency, units.time, harmonic->start, harmonic->end,
                                 units.time);
+        }
+        for (const auto& pause : contact_case.force_pauses) {
+            load += fmt::format(", force held from t = {:.4g} to {:.4g} {}", pause.start, pause.end, units.time);
         }
     }
     if (const auto& tangential = contact_case.tangential) {

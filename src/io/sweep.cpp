@@ -3,17 +3,20 @@
 #include <fmt/format.h>
 #include <fmt/os.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <sstream>
 #include <system_error>
 #include <thread>
 
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/drivers/work_estimate.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/case_template.hpp"
@@ -140,6 +143,34 @@ private:
     std::vector<std::thread> threads_;
 };
 
+// The order in which `threads` (> 1) threads take the rows: the costliest first (drivers::estimate_work, steps x
+// elements; a point that cannot be built costs 0, its run fails at once), ties in grid order, so that a parallel
+// sweep does not end waiting on a large point started last. The estimates are spread over the threads too.
+std::vector<std::size_t> costliest_first(const CaseTemplate& model, const std::vector<std::string>& keys,
+                                         const std::vector<SweepRow>& rows, unsigned threads) {
+    std::vector<double> costs(rows.size(), 0.0);
+    std::atomic<std::size_t> next{0};
+    std::atomic<bool> ended{false};
+    {
+        Workers estimators(ended);
+        estimators.start(threads, [&] {
+            for (std::size_t r = next++; r < rows.size(); r = next++) {
+                try {
+                    const auto contact_case = case_at(model, keys, rows[r].point);
+                    const auto numerics = drivers::resolve_numerics(contact_case);
+                    costs[r] = drivers::estimate_work(contact_case, numerics).element_steps;
+                } catch (const std::exception&) {
+                    costs[r] = 0.0;
+                }
+            }
+        });
+    }  // joined
+    std::vector<std::size_t> order(rows.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return costs[a] > costs[b]; });
+    return order;
+}
+
 }  // namespace
 
 std::vector<std::vector<double>> sweep_points(const std::vector<SweepAxis>& axes) {
@@ -176,6 +207,10 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
         }
         rows[r].point = std::move(points[r]);
     }
+    const auto threads = static_cast<unsigned>(std::min<std::size_t>(std::max(jobs, 1u), total));
+    std::vector<std::size_t> order(total);
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    if (threads > 1) order = costliest_first(model, keys, rows, threads);
     std::atomic<std::size_t> next{0};
     std::atomic<bool> stop{false};
     std::size_t done = 0;
@@ -185,8 +220,8 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
         if (stop) throw Interrupted();
     };
     const auto work = [&] {
-        for (std::size_t r = next++; r < total && !stop; r = next++) {
-            SweepRow& row = rows[r];
+        for (std::size_t n = next++; n < total && !stop; n = next++) {
+            SweepRow& row = rows[order[n]];
             try {
                 const auto contact_case = case_at(model, keys, row.point);
                 const auto start = std::chrono::steady_clock::now();
@@ -204,7 +239,7 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
         }
     };
     Workers workers(stop);
-    workers.start(static_cast<unsigned>(std::min<std::size_t>(std::max(jobs, 1u), total)), work);
+    workers.start(threads, work);
     std::unique_lock lock(mutex);
     do {
         // Progress every 0.2 s and at the end (also when every point ended before the first wait): the caller sees

@@ -15,7 +15,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 EXAMPLES = {"cone_standard_solid": 1e-5, "creep_kelvin_voigt": 1e-3, "ting_triangle": 1e-4,
             "compressible_punch": 1e-3, "fretting_stick_radius": 1e-2,
             "dynamic_indentation": 1e-3, "afm_gel_units": 1e-5,
-            "oblique_restitution": 1e-6, "shore_a_filled_rubber": 1e-3}
+            "oblique_restitution": 1e-6, "shore_a_filled_rubber": 1e-3, "afm_creep_pause": 1e-5}
 
 
 def test_every_example_of_the_docs_is_listed():

@@ -29,9 +29,10 @@ double incidence_velocity(double velocity, double incidence_deg);
 /// first history time (finite unless an impact); snapshots within the simulated time; positive numerics. A normal
 /// harmonic (not with an impact): amplitude > 0, starting no earlier than the history, and under force control
 /// no larger than the smallest history force during it. Spring control: a spring constant > 0 (and none with
-/// another control), a base history starting at or above the surface (z <= 0) without jumps. A Shore test: a
-/// duration > 0, spring control with the durometer's spring, no harmonic and no tangential load. Called by
-/// resolve_numerics, so every driver runs only valid problems.
+/// another control), a base history starting at or above the surface (z <= 0) without jumps; force pauses (spring
+/// control only) in time order and apart, each starting after the history's first time, ending after its start and
+/// by the end, and not overlapping a harmonic. A Shore test: a duration > 0, spring control with the durometer's
+/// spring, no harmonic and no tangential load. Called by resolve_numerics, so every driver runs only valid problems.
 void validate(const ContactCase& contact_case);
 
 }  // namespace mdr::drivers

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "mdr/drivers/force_pause.hpp"
 #include "mdr/drivers/harmonic_load.hpp"
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/drivers/shore.hpp"
@@ -101,6 +102,8 @@ struct ContactCase {
     /// A Shore durometer test (control = spring with the durometer's spring and base history, a step at t = 0
     /// and a stop at the full extension); the readings are measured (IndentationResult::shore).
     std::optional<ShoreTest> shore{};
+    /// `load.force_pauses`, with control = spring: the instrument's feedback holds the force over each (ForcePause).
+    std::vector<ForcePause> force_pauses{};
 
     /// The prescribed load at time t [s]: the history plus the harmonic part.
     double load_value(double t) const { return history.value(t) + (harmonic ? harmonic->value(t) : 0.0); }
@@ -141,8 +144,11 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// lighter than a solid sphere's (m_t < 2/7 m) has the step scaled by sqrt(m_t / (2/7 m)). A harmonic load (normal
 /// or tangential) caps the default time step at its period over default_steps_per_period. Spring control takes the
 /// smaller of the displacement-control half-width for the largest base displacement (d <= z) and the force-control
-/// one for the force k max z (F <= k z), and grades its steps as force control does. Throws mdr::InvalidInput for
-/// a problem that breaks a rule (validate) or would exceed its bounds of work or memory (require_bounded_work).
+/// one for the force k max z (F <= k z), and grades its steps as force control does; with force pauses the largest z
+/// is bounded by paused_base_peak, each pause's creep by the depth of the force-control bound for the largest force
+/// (at most k max z and the elastic force of the depth max z with G(0+), as the contact grows up to a pause). Throws
+/// mdr::InvalidInput for a problem that breaks a rule (validate) or would exceed its bounds of work or memory
+/// (require_bounded_work).
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case);
 
 /// Scales of an elastic impact (energy balance m v0^2 / 2 = int F_el dd), used for the impact defaults.

@@ -54,10 +54,12 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
                                        unsigned jobs, const std::function<void(std::size_t, std::size_t)>& progress);
 
 /// Runs the case at every point of the cartesian product of the axes (the last axis varying fastest) on `jobs`
-/// threads (at most one a point). Rows come back in grid order whatever the number of jobs; a failed point keeps its
-/// message and does not stop the others, and so does a point whose summary is not finite. `progress(done, total)`
-/// is called from the calling thread as points finish, at least every 0.2 s and at the end; when it throws, the
-/// running points are stopped at their next progress report, every thread is joined and the exception propagates.
+/// threads (at most one a point; with more than one, the points are handed out costliest first by
+/// drivers::estimate_work, so that no large point starts last). Rows come back in grid order whatever the number of
+/// jobs; a failed point keeps its message and does not stop the others, and so does a point whose summary is not
+/// finite. `progress(done, total)` is called from the calling thread as points finish, at least every 0.2 s and at
+/// the end; when it throws, the running points are stopped at their next progress report, every thread is joined
+/// and the exception propagates.
 /// Throws mdr::InvalidInput for a grid above max_sweep_points, std::runtime_error when a thread cannot be started.
 std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& source,
                                 const std::vector<SweepAxis>& axes, unsigned jobs,
