@@ -170,19 +170,26 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
         resolved.time_step = *numerics.time_step;
     } else if (duration > 0.0) {
         const double step = duration / static_cast<double>(default_steps);
-        // A series standing for a continuous spectrum has a node within a factor exp(h) above any step: under
-        // displacement control its times need no finer step (the load is linear between steps and each branch
-        // integrated exactly; the power-law ramp, triangle and step-hold agree with 3.6x more steps to 2 digits
-        // of their error, tests/verification/test_power_law_default_step.cpp). Under force or spring control
-        // they keep the rule: the creep after a fast load change needs the finer steps.
-        const bool converted_times = contact_case.control == Control::displacement &&
-                                     contact_case.material_origin.times_from_conversion;
-        resolved.time_step =
-            converted_times ? step : std::min(step, shortest_time_above(contact_case.material, step) / 5.0);
-        if (contact_case.control != Control::displacement && contact_case.material.viscosity() > 0.0) {
+        // A series standing for a continuous spectrum has a node within a factor exp(h) above any step: its
+        // times need no finer step (the load is linear between steps and each branch integrated exactly; the
+        // power-law ramp, triangle and step-hold agree with 3.6x more steps to 2 digits of their error,
+        // tests/verification/test_power_law_default_step.cpp). Under force or spring control the creep after a
+        // fast load change, J ~ t^beta on every scale down to the series' shortest time, is taken on steps graded
+        // from there (tests/verification/test_power_law_fast_force_step.cpp).
+        const auto& material = contact_case.material;
+        const bool converted_times = contact_case.material_origin.times_from_conversion;
+        resolved.time_step = converted_times ? step : std::min(step, shortest_time_above(material, step) / 5.0);
+        if (contact_case.control != Control::displacement && material.viscosity() > 0.0) {
             // A parallel dashpot under force (or spring) control: the trapezoidal rate is second order, and the
-            // creep after the start and after a force jump, singular in time, is taken on steps graded from there.
-            resolved.jump_grading = jump_grading_ratio;
+            // creep after the start and after a fast force change, singular in time, is taken on steps graded
+            // from there.
+            resolved.grading_ratio = jump_grading_ratio;
+            resolved.first_graded_step = jump_first_step * resolved.time_step;
+        } else if (contact_case.control != Control::displacement && converted_times && !material.terms().empty()) {
+            // A converted series under force (or spring) control: the same grading, from the series' shortest time
+            // (on shorter steps the series is elastic).
+            resolved.grading_ratio = jump_grading_ratio;
+            resolved.first_graded_step = std::min(material.shortest_time(), resolved.time_step);
         }
     } else {
         resolved.time_step = 1.0;  // a history of jumps only: no step has a length

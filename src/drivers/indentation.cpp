@@ -78,8 +78,10 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
     if (spring && !shore && nodes.size() > 1 && nodes[1].time == nodes[0].time) {
         nodes.erase(nodes.begin());  // the base starts where it is (z <= 0, validated): no jump from z = 0
     }
-    if (numerics.jump_grading > 0.0) {
-        nodes = grade_after_jumps(nodes, numerics.jump_grading, jump_first_step * numerics.time_step);
+    if (numerics.grading_ratio > 0.0) {
+        const auto changes = fast_change_times(contact_case.history, contact_case.end_time, numerics.time_step,
+                                               min_steps_per_segment);
+        nodes = grade_after_changes(nodes, changes, numerics.grading_ratio, numerics.first_graded_step);
     }
     if (const auto& harmonic = contact_case.harmonic) {
         for (auto& node : nodes) node.value += harmonic->value(node.time);

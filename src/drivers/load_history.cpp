@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "mdr/error.hpp"
 
@@ -98,23 +99,37 @@ std::vector<GridNode> make_time_grid(const LoadHistory& history, double end, dou
     return nodes;
 }
 
-std::vector<GridNode> grade_after_jumps(const std::vector<GridNode>& nodes, double ratio, double first_step) {
+std::vector<double> fast_change_times(const LoadHistory& history, double end, double step, std::size_t min_steps) {
+    const auto& points = history.points();
+    double largest = 0.0;
+    for (const auto& p : points) largest = std::max(largest, std::abs(p.value));
+    const double significant = largest / static_cast<double>(std::max<std::size_t>(min_steps, 1));
+    std::vector<double> changes{history.start_time()};  // the load starts on the undeformed body
+    for (std::size_t i = 1; i < points.size() && points[i].time <= end; ++i) {
+        const LoadPoint& a = points[i - 1];
+        const LoadPoint& b = points[i];
+        const bool jump = b.time == a.time && b.value != a.value;
+        const bool fast = b.time > a.time && b.time - a.time < step && std::abs(b.value - a.value) > significant;
+        if ((jump || fast) && a.time > changes.back()) changes.push_back(a.time);
+        if (fast) changes.push_back(b.time);  // the rate changes again at its end
+    }
+    return changes;
+}
+
+std::vector<GridNode> grade_after_changes(const std::vector<GridNode>& nodes, const std::vector<double>& changes,
+                                          double ratio, double first_step) {
     std::vector<GridNode> graded{nodes.front()};
-    double jump = nodes.front().time;
-    bool grading = true;  // the load starts on the undeformed body: no contact, a singular start too
+    auto next_change = changes.begin();
+    std::optional<double> change;
     for (std::size_t n = 1; n < nodes.size(); ++n) {
         const GridNode& a = nodes[n - 1];
         const GridNode& b = nodes[n];
-        if (b.time == a.time) {
-            grading = grading || b.value != a.value;
-            jump = b.time;
-        } else {
-            for (double t = a.time + std::max(first_step, ratio * (a.time - jump)); grading && t < b.time;
-                 t += std::max(first_step, ratio * (t - jump))) {
-                if (b.time - t < 0.5 * std::max(first_step, ratio * (t - jump))) break;
+        while (next_change != changes.end() && *next_change <= a.time) change = *next_change++;
+        if (change && b.time > a.time) {
+            const auto step_at = [&](double t) { return std::max(first_step, ratio * (t - *change)); };
+            for (double t = a.time + step_at(a.time); t < b.time && b.time - t >= 0.5 * step_at(t); t += step_at(t)) {
                 graded.push_back({t, a.value + (b.value - a.value) * (t - a.time) / (b.time - a.time)});
             }
-            grading = grading && ratio * (b.time - jump) < b.time - a.time;
         }
         graded.push_back(b);
     }

@@ -28,9 +28,11 @@ double indentation_steps(const ContactCase& contact_case, const ResolvedNumerics
     steps += static_cast<double>(contact_case.snapshots.size());
     if (contact_case.tangential) steps += static_cast<double>(contact_case.tangential->breakpoints().size());
     if (contact_case.harmonic) steps += static_cast<double>(contact_case.harmonic->breakpoints().size() + 2);
-    if (numerics.jump_grading > 0.0) {
-        // grade_after_jumps: about ln(1 / jump_first_step) / ratio more steps after the start and each point.
-        const double graded = std::ceil(std::log(1.0 / jump_first_step) / std::log1p(numerics.jump_grading));
+    if (numerics.grading_ratio > 0.0) {
+        // grade_after_changes: at most ln(time_step / first_graded_step) / ratio more steps after the start and
+        // each point.
+        const double graded = std::ceil(std::log(std::max(numerics.time_step / numerics.first_graded_step, 1.0)) /
+                                        std::log1p(numerics.grading_ratio));
         steps += graded * static_cast<double>(points.size() + 1);
     }
     return steps;

@@ -1,6 +1,7 @@
 // estimate_contact: force baseline and noise, contact point and depth noise of a measured curve.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -16,6 +17,7 @@ constexpr double mad_to_deviation = 1.4826;   // sigma = 1.4826 MAD for Gaussian
 constexpr double spike_deviations = 5.0;      // rows farther from the first baseline line are left out
 constexpr double threshold_deviations = 3.0;  // the force "leaves the baseline" above 3 deviations
 constexpr int max_window_moves = 20;
+constexpr double curvature_errors = 3.0;      // a window curving upward by more than this stops moving
 constexpr double onset_fraction = 0.2;        // the onset fit reaches 20 % of the rise ...
 constexpr double onset_deviations = 10.0;     // ... and at least 10 deviations; a rise below this is no contact
 constexpr double exponent_min = 1.0;
@@ -90,6 +92,47 @@ Baseline fit_baseline(const Curve& curve, std::size_t end) {
     }
     line.noise = robust_deviation(std::move(residuals));
     return line;
+}
+
+/// True when a parabola F = c0 + c1 x + c2 x^2 (x: time scaled to [-1, 1]) fitted by least squares to the rows
+/// [0, end) curves upward by more than `curvature_errors` standard errors of c2 (from the robust deviation of its
+/// residuals): the window holds the start of a rise, which a tilted baseline (a line) does not.
+bool curves_upward(const Curve& curve, std::size_t end) {
+    const double middle = 0.5 * (curve.time[0] + curve.time[end - 1]);
+    const double half = 0.5 * (curve.time[end - 1] - curve.time[0]);
+    // Normal equations in the monomials 1, x, x^2: moments m[k] = sum x^k, right sides r[k] = sum x^k F.
+    std::array<double, 5> m{};
+    std::array<double, 3> r{};
+    for (std::size_t i = 0; i < end; ++i) {
+        const double x = (curve.time[i] - middle) / half;
+        double power = 1.0;
+        for (std::size_t k = 0; k < m.size(); ++k, power *= x) {
+            m[k] += power;
+            if (k < r.size()) r[k] += power * curve.force[i];
+        }
+    }
+    const std::array<std::array<double, 3>, 3> a{{{m[0], m[1], m[2]}, {m[1], m[2], m[3]}, {m[2], m[3], m[4]}}};
+    const auto determinant = [](const std::array<std::array<double, 3>, 3>& b) {
+        return b[0][0] * (b[1][1] * b[2][2] - b[1][2] * b[2][1]) - b[0][1] * (b[1][0] * b[2][2] - b[1][2] * b[2][0]) +
+               b[0][2] * (b[1][0] * b[2][1] - b[1][1] * b[2][0]);
+    };
+    const double det = determinant(a);
+    if (!(std::abs(det) > 0.0)) return false;
+    std::array<double, 3> c{};
+    for (std::size_t j = 0; j < 3; ++j) {  // Cramer's rule
+        auto column = a;
+        for (std::size_t k = 0; k < 3; ++k) column[k][j] = r[k];
+        c[j] = determinant(column) / det;
+    }
+    std::vector<double> residuals(end);
+    for (std::size_t i = 0; i < end; ++i) {
+        const double x = (curve.time[i] - middle) / half;
+        residuals[i] = curve.force[i] - (c[0] + c[1] * x + c[2] * x * x);
+    }
+    const double noise = robust_deviation(std::move(residuals));
+    // (A^T A)^-1 at (2, 2): the cofactor of a[2][2] over the determinant.
+    const double variance_factor = (a[0][0] * a[1][1] - a[0][1] * a[1][0]) / det;
+    return c[2] > curvature_errors * noise * std::sqrt(std::max(variance_factor, 0.0));
 }
 
 /// The fitted onset F - baseline = amplitude (d - contact)^exponent.
@@ -211,7 +254,12 @@ double difference_noise(const std::vector<double>& values, std::size_t begin, st
 //     absolute deviation (MAD) of its residuals (their RMS where the MAD is 0: coarsely quantised data). The first
 //     window ends at the last crossing (walking back from the peak) of the median of the first tenth of the
 //     loading part + 3 of its deviations; then it ends at the last crossing of the fitted line + 3 deviations,
-//     again, until that crossing stays (at most 20 moves).
+//     again, until that crossing stays (at most 20 moves), but it does not move later once the later window curves
+//     upward: the quadratic coefficient of a parabola in time fitted to it by least squares exceeds 3 standard
+//     errors (from 1.4826 x MAD of the parabola's residuals). A slow onset within 3 deviations of the line at first
+//     enters the window, tilts the line and inflates the MAD of its residuals, so that the next crossing lies
+//     later and the window follows the rise to the peak (sigma was 7-20 times too large for a Hertz onset at 2-4
+//     um/s, tests/python/test_fit_estimate_window.py); a tilted baseline is a line and lets the window move.
 //  3. Onset: F - baseline = A (d - d_c)^n for d > d_c, 0 before (a power-law onset: n = 1.5 for a sphere, 2 for a
 //     cone, 1 for a flat punch), fitted by least squares to the loading rows up to where the force first exceeds
 //     baseline + 20 % of its rise (at least 10 deviations), with d_c searched from the crossing's depth minus
@@ -256,6 +304,7 @@ void estimate_contact(Curve& curve) {
     std::size_t crossing = last_crossing(curve, baseline, peak, threshold);
     std::size_t end = 0;
     for (int move = 0; move < max_window_moves && end != crossing + 1; ++move) {
+        if (end > 0 && crossing + 1 > end && curves_upward(curve, crossing + 1)) break;  // a rise: the window stays
         end = crossing + 1;
         if (end < baseline_rows_min) {
             return without_baseline("fewer than " + std::to_string(baseline_rows_min) +

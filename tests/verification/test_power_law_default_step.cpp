@@ -1,7 +1,7 @@
 // The default time step of a power law under displacement control (issue 12): its series' nodes (a continuous
 // spectrum, one within a factor exp(h) above any step) no longer shorten the step to a fifth of a node, so a ramp
 // takes default_steps; the Lee-Radok closed form of the ramp (test_power_law.cpp) is met as well as with four times
-// as many steps. Under force control the rule stays (the creep after a fast load change needs it).
+// as many steps. Under force control too, with steps graded after each fast load change.
 //   Sphere ramp d = v t: F(t) = 8 sqrt(R) G0 t0^beta v^(3/2) Gamma(3/2) Gamma(1 - beta) / Gamma(5/2 - beta) t^(3/2 - beta)
 
 #include <gtest/gtest.h>
@@ -70,9 +70,14 @@ TEST_P(PowerLawDefaultStep, DisplacementRampTakesTheDefaultStepsAtTheAccuracyOfF
 
 INSTANTIATE_TEST_SUITE_P(Betas, PowerLawDefaultStep, ::testing::Values(0.05, 0.2, 0.5, 0.7));
 
-TEST(PowerLawDefaultStepUnderForceControl, TheSeriesTimesStillShortenTheStep) {
+TEST(PowerLawDefaultStepUnderForceControl, TakesTheDefaultStepGradedAfterTheStart) {
+    // The creep after a load change is taken on graded steps (test_power_law_fast_force_step.cpp), not on a fifth
+    // of a series node everywhere.
     const auto contact_case = io::parse_case(ramp(0.3, "force", ""));
-    EXPECT_LT(drivers::resolve_numerics(contact_case).time_step, duration / drivers::default_steps / 2.0);
+    const auto numerics = drivers::resolve_numerics(contact_case);
+    EXPECT_DOUBLE_EQ(numerics.time_step, duration / drivers::default_steps);
+    EXPECT_EQ(numerics.grading_ratio, drivers::jump_grading_ratio);
+    EXPECT_DOUBLE_EQ(numerics.first_graded_step, contact_case.material.shortest_time());
 }
 
 }  // namespace

@@ -69,9 +69,10 @@ struct ResolvedNumerics {
     /// one (a measured curve, more than default_steps / min_steps_per_segment segments) needs fewer, as its own
     /// points resolve it: enough that the history has default_steps steps in all, at least one per segment.
     std::size_t min_segment_steps = 1;
-    /// > 0: the steps after a jump start at time_step * jump_first_step and grow as this ratio times the time since
-    /// the jump (grade_after_jumps); 0: a uniform grid.
-    double jump_grading = 0.0;
+    /// > 0: the steps after a fast load change (fast_change_times) start at first_graded_step and grow as this
+    /// ratio times the time since the change (grade_after_changes); 0: a uniform grid.
+    double grading_ratio = 0.0;
+    double first_graded_step = 0.0;  ///< the first step after a fast load change [s] (with grading_ratio > 0)
 };
 
 /// A normal indentation problem: a rigid axisymmetric indenter on a viscoelastic half-space. An aggregate: build
@@ -117,10 +118,13 @@ struct ContactCase {
 inline constexpr std::size_t default_elements = 2000;
 /// Steps over the whole history when `[numerics] time_step` is not given; see resolve_numerics.
 inline constexpr std::size_t default_steps = 2000;
-/// Default ratio of the step to the time since the start or a force jump under force control with a parallel
-/// dashpot (grade_after_jumps): the singular creep there is integrated to ~1e-5 of its depth.
+/// Default ratio of the step to the time since the start or a fast load change (fast_change_times) under force
+/// control (grade_after_changes): with a parallel dashpot the singular creep there is integrated to ~1e-5 of its
+/// depth; a series converted from a continuous spectrum (power law, springpots), whose creep J ~ t^beta changes
+/// on every scale from its shortest time on, to ~2e-4 for beta <= 0.5
+/// (tests/verification/test_power_law_fast_force_step.cpp).
 inline constexpr double jump_grading_ratio = 0.02;
-/// The first step after the start or such a jump, as a fraction of the time step (its error is
+/// The first step after the start or such a change, as a fraction of the time step (its error is
 /// O((step / tau)^(2/3)) of the creep depth, tau the retardation time).
 inline constexpr double jump_first_step = 1e-6;
 /// Steps per braking time m / (8 eta a) of an impact on a body with a parallel dashpot (resolve_numerics).
@@ -132,11 +136,13 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// control: the Lee-Radok radius g^-1(max d), an upper bound also under unloading since the free surface never
 /// rises above the undeformed level; force control: the elastic radius at the largest force with the softest
 /// modulus 1/J(t_end - t_start), 25% margin); a flat punch uses its own radius. The time step is the history
-/// duration over default_steps, and at most a fifth of the shortest material time that is longer than that (under
-/// displacement control not for a series whose times all come from a conversion, MaterialOrigin); under
-/// force control a material with a parallel dashpot (its creep is singular in time after the start and after a
-/// force jump) has its steps graded from there (jump_grading = jump_grading_ratio, see grade_after_jumps), so
-/// that the step count stays bounded for any record length. Impact: the time step is the elastic contact time
+/// duration over default_steps, and at most a fifth of the shortest material time that is longer than that (not
+/// for a series whose times all come from a conversion, MaterialOrigin); under force control a material with a
+/// parallel dashpot (its creep is singular in time after the start and after a fast load change) has its steps
+/// graded from there (grading_ratio = jump_grading_ratio from jump_first_step of the time step, see
+/// fast_change_times and grade_after_changes), so that the step count stays bounded for any record length; a
+/// converted series (its creep changes on every scale from its shortest time) is graded likewise from its
+/// shortest time. Impact: the time step is the elastic contact time
 /// with the instantaneous spring modulus over default_steps (and the material-time rule), the half-width 1.2
 /// times the elastic contact radius with the equilibrium modulus (an upper bound: the viscoelastic body is
 /// stiffer and dissipates); with a parallel dashpot the step is at most the braking time m / (8 eta a) over

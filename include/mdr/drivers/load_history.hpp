@@ -2,6 +2,7 @@
 /// \file
 /// Piecewise-linear load histories (t, value) and the time grid the drivers step along.
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -55,12 +56,20 @@ double segment_step_count(double segment, double max_step, std::size_t min_steps
 std::vector<GridNode> make_time_grid(const LoadHistory& history, double end, double max_step,
                                      std::size_t min_steps_per_segment, const std::vector<double>& snapshots);
 
-/// Refines `nodes` after the start and after every jump (two nodes at one time): the steps start at `first_step`
-/// and grow as `ratio` times the time since the start or jump until they reach the grid's own steps. Against a
-/// parallel dashpot a force jump starts a creep that is singular in time (d ~ t^(2/3) for a sphere, and a contact
-/// growing from nothing under a force ramp is singular too): a step that is a fixed fraction of the time since
-/// the jump keeps the trapezoidal rule's relative error O(ratio^2) there, at about ln(step / first_step) / ratio
-/// extra steps per jump, whatever the record's length. The load stays linear between the original nodes.
-std::vector<GridNode> grade_after_jumps(const std::vector<GridNode>& nodes, double ratio, double first_step);
+/// The times at which the load changes fast, in order: the start, every jump (two points at one time, or a first
+/// value other than 0), and the start of every segment shorter than `step` [s] over which the load moves by more
+/// than 1 / `min_steps` of its largest magnitude (a step smoothed over less than one regular time step; a dense
+/// measured record moves by far less between its points). Points after `end` are ignored.
+std::vector<double> fast_change_times(const LoadHistory& history, double end, double step, std::size_t min_steps);
+
+/// Refines `nodes` after each of the (ascending) `changes`: a step that starts at t after the latest change t_c
+/// is at most max(first_step, ratio (t - t_c)), so that the steps grow geometrically from `first_step` until they
+/// reach the grid's own steps. After a load change the creep is singular in time on every scale from the change
+/// on: against a parallel dashpot d ~ t^(2/3) for a sphere (a contact growing from nothing under a ramp is
+/// singular too), a power law's creep J ~ t^beta. A step that is a fixed fraction of the time since the change
+/// keeps the relative error of each step bounded by the ratio, at about ln(step / first_step) / ratio extra steps
+/// per change, whatever the record's length. The load stays linear between the original nodes.
+std::vector<GridNode> grade_after_changes(const std::vector<GridNode>& nodes, const std::vector<double>& changes,
+                                          double ratio, double first_step);
 
 }  // namespace mdr::drivers

@@ -87,6 +87,23 @@ TEST(ContactEstimate, NoiseFreeCurveIsExact) {
     }
 }
 
+TEST(ContactEstimate, SlowOnsetDoesNotDrawTheBaselineWindowIntoTheRise) {
+    // A weak Hertz onset (20 to 50 sigma at the end, over the last 40 % of the rows) rises within 3 sigma of the
+    // baseline for hundreds of rows: the window must not follow it (issue 10). Before the window stopped where it
+    // curves upward, it did: the noise came out ~4 times too large, and at 20 sigma no contact was found.
+    for (const double peak : {20.0, 50.0}) {
+        for (unsigned seed = 1; seed <= 10; ++seed) {
+            SCOPED_TRACE("peak " + std::to_string(peak) + " sigma, seed " + std::to_string(seed));
+            const Approach a{.peak_over_noise = peak};
+            const Curve curve = approach_curve(a, seed);
+            EXPECT_EQ(curve.estimate_note, "");
+            EXPECT_NEAR(curve.force_noise, sigma, 0.1 * sigma);
+            // The line at the estimated contact, which a weak onset leaves uncertain (largest 0.64 sigma at 20).
+            EXPECT_NEAR(curve.force_baseline, baseline_at_contact(a), 1.0 * sigma);
+        }
+    }
+}
+
 TEST(ContactEstimate, DepthNoiseFromSecondDifferences) {
     const double depth_sigma = 2e-9;
     const Curve curve = approach_curve({.depth_noise = depth_sigma}, 3);

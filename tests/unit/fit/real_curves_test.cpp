@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <ostream>
+#include <sstream>
 
 #include "mdr/fit/curve.hpp"
 
@@ -108,8 +110,13 @@ TEST_P(RealCurves, EstimatesAgreeWithTheSidecars) {
     else source.segments = {"extend"};
     const Curve curve = load_curve(source);
     EXPECT_EQ(curve.estimate_note, "");
-    RecordProperty("force_noise", std::to_string(curve.force_noise));
-    RecordProperty("contact_depth", std::to_string(curve.contact_depth));
+    const auto digits = [](double value) {
+        std::ostringstream text;
+        text << std::setprecision(5) << value;
+        return text.str();
+    };
+    RecordProperty("force_noise", digits(curve.force_noise));
+    RecordProperty("contact_depth", digits(curve.contact_depth));
     if (std::string(real.name).rfind("jpk", 0) == 0) {
         // The sidecars' baseline is the constant mean of the first pause, ours a line in time: the pauses drift
         // (by 0.8 nN/s in 0003), so the sidecar's noise is at most larger; the noise about a line through the pause
