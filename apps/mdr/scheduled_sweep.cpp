@@ -168,7 +168,7 @@ std::vector<io::SweepRow> run_scheduled_sweep(const std::string& case_text, cons
                 if (index >= rows.size() || filled[index]) {
                     throw std::runtime_error(fmt::format("--scheduler: row {} came back twice or out of range", index));
                 }
-                rows[index].summary_json = row[0].get<std::string>();
+                rows[index].summary = io::summary_from_json(row[0].dump());
                 rows[index].error = row[1].get<std::string>();
                 filled[index++] = true;
             }

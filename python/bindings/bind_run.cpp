@@ -5,9 +5,10 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "summary_dict.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/io/case_file.hpp"
-#include "mdr/io/result_files.hpp"
+#include "mdr/io/summary.hpp"
 #include "mdr/io/units.hpp"
 
 namespace py = pybind11;
@@ -72,7 +73,7 @@ py::dict run_toml_case(const std::string& toml_text, const std::string& source, 
     py::dict out;
     out["history"] = history;
     out["profiles"] = profiles;
-    out["summary_json"] = io::summary_json(contact_case, result, wall);
+    out["summary"] = summary_dict(io::summarize(contact_case, result, wall));
     out["description"] = io::describe(contact_case);
     return out;
 }
