@@ -106,6 +106,14 @@ void bind_run(py::module_& module) {
             return names;
         },
         py::arg("name") = "SI", "The unit names of a declared unit system (`units` of a case; mdr/io/units.hpp).");
+    module.def(
+        "_unit_systems",
+        [] {
+            py::list names;
+            for (const io::UnitSystem& units : io::unit_systems()) names.append(std::string(units.name));
+            return names;
+        },
+        "The names of the declared unit systems, SI (the default) first, for the docs.");
 }
 
 }  // namespace mdr::python
