@@ -1,10 +1,13 @@
 #include "observer_list.hpp"
 
+#include <stdexcept>
+
 namespace mdr::drivers {
 
 void ObserverList::add(const StepObservers& observers) {
     for (StepObserver* observer : observers) {
-        if (observer != nullptr) observers_.push_back(observer);
+        if (observer == nullptr) throw std::invalid_argument("run_case: an observer is a null pointer");
+        observers_.push_back(observer);
     }
 }
 

@@ -51,8 +51,8 @@ public:
     }
 };
 
-/// Observers a caller attaches to a run (not owned; each must outlive the run). The driver calls them after its
-/// standard ones, in this order.
+/// Observers a caller attaches to a run (not owned; each must outlive the run; a null pointer is an
+/// std::invalid_argument). The driver calls them after its standard ones, in this order.
 using StepObservers = std::vector<StepObserver*>;
 
 }  // namespace mdr::drivers
