@@ -58,22 +58,15 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
         result.stopped = true;
         return result;
     }
-    // The steps land on the snapshots' times (the recorder takes each at the first state at or after it).
-    std::vector<double> snapshot_times = contact_case.snapshots;
-    std::sort(snapshot_times.begin(), snapshot_times.end());
-    auto next_snapshot = snapshot_times.begin();
-    const auto pass_snapshots = [&] {
-        while (next_snapshot != snapshot_times.end() && *next_snapshot <= time) ++next_snapshot;
-    };
-    pass_snapshots();
     for (std::size_t n = 1;; ++n) {
         if (time >= numerics.time_limit) {
             throw InvalidInput("load.end", format_value(numerics.time_limit),
                                "the contact has not ended by then (velocity v = " + format_value(velocity) +
                                    "): the indenter does not rebound in time; give a later load.end");
         }
-        const double step = next_snapshot != snapshot_times.end() ? std::min(numerics.time_step, *next_snapshot - time)
-                                                                  : numerics.time_step;
+        // Land exactly on snapshot times (the recorder takes each at the first state at or after it).
+        const auto snapshot_time = snapshots.next_time();
+        const double step = snapshot_time ? std::min(numerics.time_step, *snapshot_time - time) : numerics.time_step;
         foundation.begin_step(cache.get(step), velocity);
         // Trapezoidal rule for m d'' = -F (eq. 37): d1 = d0 + (v0 + v1) dt/2, v1 = v0 - (F0 + F1) dt/(2m), i.e.
         // F(d1) + (4m/dt^2)(d1 - d0 - v0 dt) = -F0, monotone in d1.
@@ -136,7 +129,6 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
         depth = new_depth;
         force = new_force;
         velocity = new_velocity;
-        pass_snapshots();
         if (notify(n, false)) {
             result.stopped = true;  // the outcome needs the whole impact
             return result;
