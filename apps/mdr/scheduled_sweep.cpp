@@ -158,7 +158,7 @@ std::vector<io::SweepRow> run_scheduled_sweep(const std::string& case_text, cons
     bool finished = false;
     std::size_t done = 0;
     while (helper.next_line(line)) {
-        const auto message = nlohmann::json::parse(line);
+        const auto message = nlohmann::ordered_json::parse(line);  // a row's summary keeps its key order
         if (message.contains("progress")) {
             done = message["progress"][0].get<std::size_t>();
             progress(done, rows.size());
@@ -168,7 +168,7 @@ std::vector<io::SweepRow> run_scheduled_sweep(const std::string& case_text, cons
                 if (index >= rows.size() || filled[index]) {
                     throw std::runtime_error(fmt::format("--scheduler: row {} came back twice or out of range", index));
                 }
-                rows[index].summary_json = row[0].get<std::string>();
+                rows[index].summary = io::summary_from_json(row[0].dump());
                 rows[index].error = row[1].get<std::string>();
                 filled[index++] = true;
             }

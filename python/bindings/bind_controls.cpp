@@ -1,4 +1,4 @@
-// _mdr._controls(): the registry of controls (drivers/controls.hpp) as data, for the docs.
+// _mdr._controls(), _tangential_controls(): the registries of controls (drivers/controls.hpp) as data, for the docs.
 
 #include <pybind11/stl.h>
 
@@ -22,6 +22,17 @@ void bind_control_registry(py::module_& module) {
             return rows;
         },
         "The registry of controls (name, documentation, history column, keys), for the docs.");
+    module.def(
+        "_tangential_controls",
+        [] {
+            py::list rows;
+            for (const drivers::TangentialControlKind& kind : drivers::tangential_controls()) {
+                rows.append(py::dict("name"_a = kind.name, "documentation"_a = kind.documentation,
+                                     "column"_a = kind.column));
+            }
+            return rows;
+        },
+        "The registry of tangential controls (name, documentation, history column; the default first), for the docs.");
 }
 
 }  // namespace mdr::python

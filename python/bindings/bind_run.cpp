@@ -5,9 +5,10 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "summary_dict.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/io/case_file.hpp"
-#include "mdr/io/result_files.hpp"
+#include "mdr/io/summary.hpp"
 #include "mdr/io/units.hpp"
 
 namespace py = pybind11;
@@ -72,7 +73,7 @@ py::dict run_toml_case(const std::string& toml_text, const std::string& source, 
     py::dict out;
     out["history"] = history;
     out["profiles"] = profiles;
-    out["summary_json"] = io::summary_json(contact_case, result, wall);
+    out["summary"] = summary_dict(io::summarize(contact_case, result, wall));
     out["description"] = io::describe(contact_case);
     return out;
 }
@@ -105,6 +106,14 @@ void bind_run(py::module_& module) {
             return names;
         },
         py::arg("name") = "SI", "The unit names of a declared unit system (`units` of a case; mdr/io/units.hpp).");
+    module.def(
+        "_unit_systems",
+        [] {
+            py::list names;
+            for (const io::UnitSystem& units : io::unit_systems()) names.append(std::string(units.name));
+            return names;
+        },
+        "The names of the declared unit systems, SI (the default) first, for the docs.");
 }
 
 }  // namespace mdr::python

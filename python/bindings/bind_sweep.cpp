@@ -4,6 +4,7 @@
 #include <thread>
 
 #include "bindings.hpp"
+#include "summary_dict.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/sweep.hpp"
 
@@ -34,7 +35,7 @@ void bind_sweep(py::module_& module) {
             py::list points, summaries, errors;
             for (const auto& row : rows) {
                 points.append(py::cast(row.point));
-                summaries.append(row.summary_json);
+                summaries.append(summary_dict(row.summary));
                 errors.append(row.error);
             }
             py::dict out;
@@ -85,13 +86,14 @@ void bind_sweep(py::module_& module) {
             }
             py::list summaries, errors;
             for (const auto& row : rows) {
-                summaries.append(row.summary_json);
+                summaries.append(summary_dict(row.summary));
                 errors.append(row.error);
             }
             return py::make_tuple(summaries, errors);
         },
         py::arg("toml_text"), py::arg("source"), py::arg("keys"), py::arg("points"), py::arg("jobs") = 1,
-        "Runs a case at the given points (rows x keys); returns (summaries, errors) in row order. The rows are those "
+        "Runs a case at the given points (rows x keys); returns (summaries, errors) in row order, a summary a dict "
+        "({} where the point failed). The rows are those "
         "of _sweep_toml, bit for bit (mdr.distributed runs chunks of a sweep with it).");
 }
 

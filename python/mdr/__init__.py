@@ -15,7 +15,6 @@
 from __future__ import annotations
 
 import importlib
-import json
 import math
 import os
 from dataclasses import dataclass, field
@@ -163,7 +162,7 @@ def run(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[st
     text, source = _case_text(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
                                                   tangential=tangential, output=output, numerics=numerics)))
     raw = _mdr._run_toml(text, source, progress)
-    return Result(history=dict(raw["history"]), summary=json.loads(raw["summary_json"]),
+    return Result(history=dict(raw["history"]), summary=raw["summary"],
                   profiles=dict(raw["profiles"]), description=raw["description"])
 
 
@@ -296,7 +295,7 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
         raw = {"points": points, "summaries": [row[0] for row in batch.outputs],
                "errors": [row[1] for row in batch.outputs]}
         batch.outputs = []
-    summaries = [json.loads(s) if s else {} for s in raw["summaries"]]
+    summaries = raw["summaries"]
     columns = next((list(s) for s in summaries if s), [])
     table = SweepTable()
     table.batch = batch

@@ -2,7 +2,7 @@
 scheduler for the command line, which keeps the validation, the result directory and sweep.csv.
 
 Protocol: one JSON object on stdin, {"version", "case_text", "source", "specs", "scheduler"}; JSON lines on
-stdout: {"progress": [done, total]} (at least every 0.2 s), {"first": i, "rows": [[summary_json, error], ...]}
+stdout: {"progress": [done, total]} (at least every 0.2 s), {"first": i, "rows": [[summary, error], ...]}
 (all rows, in order, once the sweep is done), then {"done": {"scheduler", "workers", "tasks", "retried"}}; or
 {"error": message} (exit 1), with "value" and "rule" when the scheduler cannot be used (exit 2). Ctrl-C cancels
 the tasks and exits 130.

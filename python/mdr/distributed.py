@@ -288,8 +288,8 @@ def _each_item(function: Callable[[Any], Any], items: list) -> list[tuple[Any, s
     return outputs
 
 
-def sweep_chunk(case_text: str, source: str, keys: list[str], points: Any) -> list[tuple[str, str]]:
-    """The rows (summary JSON, error) of a sweep at the given points, on one thread (the chunk task of a sweep)."""
+def sweep_chunk(case_text: str, source: str, keys: list[str], points: Any) -> list[tuple[dict[str, Any], str]]:
+    """The rows (summary, error) of a sweep at the given points, on one thread (the chunk task of a sweep)."""
     summaries, errors = _mdr._sweep_points(case_text, source, keys, points, 1)
     return list(zip(summaries, errors))
 
@@ -297,7 +297,7 @@ def sweep_chunk(case_text: str, source: str, keys: list[str], points: Any) -> li
 def sweep_rows(case_text: str, source: str, specs: list[str], scheduler: Any,
                progress: Callable[[int, int], None] | None = None) -> tuple[list[str], Any, MapOutcome]:
     """The rows of a sweep run through a Dask scheduler: (keys, points, outcome) with outcome.outputs[i] =
-    (summary_json, error) of grid point i, the same rows as the local sweep's, bit for bit."""
+    (summary, error) of grid point i ({} as the summary of a point that failed), the same rows as the local sweep's, bit for bit."""
     keys, points = _mdr._sweep_grid(specs)
     _mdr._sweep_points(case_text, source, keys, points[:0], 1)  # validates the case and the keys here, first
     outcome = ordered_map(functools.partial(sweep_chunk, case_text, source, keys),

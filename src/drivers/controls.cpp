@@ -27,6 +27,15 @@ std::vector<ControlKind> rows() {
     };
 }
 
+std::vector<TangentialControlKind> tangential_rows() {
+    return {
+        {TangentialControl::displacement, "displacement",
+         "the history (or harmonic) prescribes the indenter's tangential displacement u(t); F_x follows (eq. 46)", "u"},
+        {TangentialControl::force, "force",
+         "the history (or harmonic) prescribes the tangential force F_x(t); u is solved for at each step", "Fx"},
+    };
+}
+
 }  // namespace
 
 const std::vector<ControlKind>& controls() {
@@ -48,6 +57,32 @@ const ControlKind& control_kind(Control control) {
         if (kind.control == control) return kind;
     }
     throw InvalidInput("control", std::to_string(static_cast<int>(control)), "is not a control of the table");
+}
+
+}  // namespace mdr::drivers
+
+namespace mdr::drivers {
+
+const std::vector<TangentialControlKind>& tangential_controls() {
+    static const std::vector<TangentialControlKind> table = tangential_rows();
+    return table;
+}
+
+const TangentialControlKind& tangential_control_named(const std::string& name) {
+    std::string names;
+    for (const TangentialControlKind& kind : tangential_controls()) {
+        if (kind.name == name) return kind;
+        names += (names.empty() ? "" : ", ") + kind.name;
+    }
+    throw InvalidInput("tangential.control", "\"" + name + "\"", "unknown control; one of " + names);
+}
+
+const TangentialControlKind& tangential_control_kind(TangentialControl control) {
+    for (const TangentialControlKind& kind : tangential_controls()) {
+        if (kind.control == control) return kind;
+    }
+    throw InvalidInput("tangential.control", std::to_string(static_cast<int>(control)),
+                       "is not a control of the table");
 }
 
 }  // namespace mdr::drivers

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "mdr/foundation/foundation.hpp"
+
 namespace mdr::drivers {
 
 CycleMeasure::CycleMeasure(const HarmonicLoad& harmonic, double simulated_end)
@@ -10,7 +12,10 @@ CycleMeasure::CycleMeasure(const HarmonicLoad& harmonic, double simulated_end)
       omega_(2.0 * std::numbers::pi * harmonic.frequency),
       cycle_(harmonic.last_full_cycle(simulated_end)) {}
 
-void CycleMeasure::observe(double time, double depth, double force, bool in_contact) {
+void CycleMeasure::observe(const StepState& state) {
+    const double time = state.time;
+    const double depth = state.depth;
+    const double force = state.force;
     const Sample sample{time, depth, force};
     // The cycle's bounds are nodes of the time grid (HarmonicLoad::breakpoints); the steps inside it are uniform.
     if (cycle_ && last_ && last_->time >= cycle_->first && time <= cycle_->second && time >= last_->time) {
@@ -20,7 +25,7 @@ void CycleMeasure::observe(double time, double depth, double force, bool in_cont
         depth_sum_ += 0.5 * step * (last_->depth * phasor(last_->time) + depth * phasor(time));
         force_sum_ += 0.5 * step * (last_->force * phasor(last_->time) + force * phasor(time));
         work_ += 0.5 * (last_->force + force) * (depth - last_->depth);
-        if (!in_contact) lost_time_ += step;
+        if (state.foundation->contact_count() == 0) lost_time_ += step;
     }
     last_ = sample;
 }

@@ -7,16 +7,16 @@
 
 #include "mdr/drivers/harmonic_load.hpp"
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/drivers/step_observer.hpp"
 
 namespace mdr::drivers {
 
-/// Accumulates HarmonicOutcome over the last full cycle of `harmonic` that ends by `simulated_end`; the driver
-/// calls `observe` with the state after every step (and once with the initial state).
-class CycleMeasure {
+/// Accumulates HarmonicOutcome over the last full cycle of `harmonic` that ends by `simulated_end`: an observer of
+/// every state of the run (depth, force, whether any element is in contact).
+class CycleMeasure final : public StepObserver {
 public:
     CycleMeasure(const HarmonicLoad& harmonic, double simulated_end);
-    /// The state at time t [s]: depth d [m], force F [N], whether any element is in contact.
-    void observe(double time, double depth, double force, bool in_contact);
+    void observe(const StepState& state) override;
     /// The outcome; none when not one full cycle was simulated.
     std::optional<HarmonicOutcome> outcome() const;
 

@@ -11,11 +11,14 @@
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "oblique_stepping.hpp"
+#include "observer_list.hpp"
+#include "recorders.hpp"
 #include "stepping.hpp"
 
 namespace mdr::drivers {
 
-IndentationResult run_impact(const ContactCase& contact_case, const ProgressObserver& progress) {
+IndentationResult run_impact(const ContactCase& contact_case, const ProgressObserver& progress,
+                             const StepObservers& extra_observers) {
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
     const auto& numerics = result.numerics;
@@ -27,39 +30,43 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
     CoefficientCache cache(contact_case.material);
     std::optional<ObliqueStepper> oblique;
     if (contact_case.oblique) oblique.emplace(*contact_case.oblique, mass, contact_case.material, foundation);
-    std::vector<double> snapshots = contact_case.snapshots;
-    std::sort(snapshots.begin(), snapshots.end());
-    auto snapshot = snapshots.begin();
 
     double time = 0.0, depth = 0.0, velocity = approach, force = 0.0;
     std::array<double, 2> inner_exits{-1.0, -1.0};  // when the two innermost elements last left contact
-    auto record = [&] {
-        result.time.push_back(time);
-        result.depth.push_back(depth);
-        result.force.push_back(force);
-        result.radius.push_back(foundation.contact_radius());
-        result.velocity.push_back(velocity);
-        if (oblique) oblique->record(result);
+
+    // The standard observers fill the result; the caller's follow them.
+    ObserverList observers(numerics.output_every);
+    RowRecorder rows(result, {.velocity = true, .base = false});
+    observers.add(rows);
+    std::optional<TangentialColumns<ObliqueStepper>> oblique_columns;
+    if (oblique) observers.add(oblique_columns.emplace(*oblique, result));
+    SnapshotRecorder::ShearStress shear_stress;
+    if (oblique) shear_stress = [&](Snapshot& snapshot) { oblique->add_shear_stress(snapshot); };
+    SnapshotRecorder snapshots(contact_case.snapshots, indenter, result, std::move(shear_stress));
+    observers.add(snapshots);
+    std::optional<ProgressReport> progress_report;
+    if (progress) observers.add(progress_report.emplace(progress));
+    observers.add(extra_observers);
+    // The state after `step` steps, the last one when the contact has ended.
+    const auto notify = [&](std::size_t step, bool ended) {
+        StepState state{.step = step, .time = time, .depth = depth, .force = force, .velocity = velocity,
+                        .fraction = std::min(time / numerics.time_limit, 1.0), .last = ended,
+                        .foundation = &foundation};
+        return observers.notify(state);
     };
-    record();
-    const auto add_snapshots = [&] {
-        for (; snapshot != snapshots.end() && *snapshot <= time; ++snapshot) {
-            result.snapshots.push_back(take_snapshot(foundation, indenter, time));
-            if (oblique) oblique->add_shear_stress(result.snapshots.back());
-        }
-    };
-    add_snapshots();
-    const double report_interval = numerics.time_limit / 100.0;
-    double next_report = report_interval;
+    if (notify(0, false)) {
+        result.stopped = true;
+        return result;
+    }
     for (std::size_t n = 1;; ++n) {
         if (time >= numerics.time_limit) {
             throw InvalidInput("load.end", format_value(numerics.time_limit),
                                "the contact has not ended by then (velocity v = " + format_value(velocity) +
                                    "): the indenter does not rebound in time; give a later load.end");
         }
-        // Land exactly on snapshot times.
-        const double step = snapshot != snapshots.end() ? std::min(numerics.time_step, *snapshot - time)
-                                                        : numerics.time_step;
+        // Land exactly on snapshot times (the recorder takes each at the first state at or after it).
+        const auto snapshot_time = snapshots.next_time();
+        const double step = snapshot_time ? std::min(numerics.time_step, *snapshot_time - time) : numerics.time_step;
         foundation.begin_step(cache.get(step), velocity);
         // Trapezoidal rule for m d'' = -F (eq. 37): d1 = d0 + (v0 + v1) dt/2, v1 = v0 - (F0 + F1) dt/(2m), i.e.
         // F(d1) + (4m/dt^2)(d1 - d0 - v0 dt) = -F0, monotone in d1.
@@ -114,27 +121,25 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
             depth = new_depth;
             force = new_force;
             velocity = new_velocity;
-            record();
-            break;
+            notify(n, true);
+            return result;
         }
         if (oblique) oblique->step(cache.get(step), step);
         time += step;
         depth = new_depth;
         force = new_force;
         velocity = new_velocity;
-        if (n % numerics.output_every == 0) record();
-        add_snapshots();
-        if (progress && time >= next_report) {
-            progress(std::min(time / numerics.time_limit, 1.0));
-            next_report += report_interval;
+        if (notify(n, false)) {
+            result.stopped = true;  // the outcome needs the whole impact
+            return result;
         }
     }
-    return result;
 }
 
-IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress) {
-    auto result = contact_case.control == Control::impact ? run_impact(contact_case, progress)
-                                                          : run_indentation(contact_case, progress);
+IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress,
+                           const StepObservers& observers) {
+    auto result = contact_case.control == Control::impact ? run_impact(contact_case, progress, observers)
+                                                          : run_indentation(contact_case, progress, observers);
     require_finite_result(result);
     return result;
 }

@@ -8,7 +8,9 @@
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "cycle_measure.hpp"
+#include "observer_list.hpp"
 #include "paused_base.hpp"
+#include "recorders.hpp"
 #include "stepping.hpp"
 #include "tangential_stepping.hpp"
 
@@ -35,7 +37,8 @@ std::optional<double> next_rate(const foundation::Foundation& foundation, std::o
 
 }  // namespace
 
-IndentationResult run_indentation(const ContactCase& contact_case, const ProgressObserver& progress) {
+IndentationResult run_indentation(const ContactCase& contact_case, const ProgressObserver& progress,
+                                  const StepObservers& extra_observers) {
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
     const auto& numerics = result.numerics;
@@ -92,19 +95,29 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
                                    ? std::max(indenter.equivalent(numerics.half_width), 1e-300)
                                    : numerics.half_width;
 
-    auto record = [&](double time, double depth, double force, double base) {
-        result.time.push_back(time);
-        result.depth.push_back(depth);
-        result.force.push_back(force);
-        result.radius.push_back(foundation.contact_radius());
-        if (spring && !shore) result.base.push_back(base);
-        if (shore) result.shore.push_back(shore->instrument.reading(depth));
-        if (tangential) tangential->record(result);
-    };
+    // The standard observers fill the result; the caller's follow them.
+    ObserverList observers(numerics.output_every);
+    RowRecorder rows(result, {.velocity = false, .base = spring && !shore});
+    observers.add(rows);
+    std::optional<ShoreRecorder> shore_readings;
+    if (shore) observers.add(shore_readings.emplace(shore->instrument, result));
+    std::optional<TangentialColumns<TangentialStepper>> tangential_columns;
+    if (tangential) observers.add(tangential_columns.emplace(*tangential, result));
+    SnapshotRecorder::ShearStress shear_stress;
+    if (tangential) shear_stress = [&](Snapshot& snapshot) { tangential->add_shear_stress(snapshot); };
+    SnapshotRecorder snapshots(contact_case.snapshots, indenter, result, std::move(shear_stress));
+    observers.add(snapshots);
+    if (cycle) observers.add(*cycle);
+    std::optional<ProgressReport> progress_report;
+    if (progress) observers.add(progress_report.emplace(progress));
+    observers.add(extra_observers);
+
     // Spring control: the massless indenter rests on the unloaded spring, d = z, until it touches the surface.
     double depth = spring ? nodes.front().value : 0.0;
-    record(nodes.front().time, depth, 0.0, nodes.front().value);
-    if (cycle) cycle->observe(nodes.front().time, depth, 0.0, false);
+    const std::size_t last_node = nodes.size() - 1;
+    StepState state{.time = nodes.front().time, .depth = depth, .load = nodes.front().value,
+                    .last = last_node == 0, .foundation = &foundation};
+    bool stopped = observers.notify(state);
 
     double previous_depth = depth;
     double shown_depth = depth;
@@ -115,19 +128,8 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
     const double stiffness = spring ? *contact_case.spring_constant : 0.0;
     std::optional<double> rate = trapezoidal ? std::optional<double>(0.0) : std::nullopt;
     double last_force = 0.0;
-    std::vector<double> snapshots = contact_case.snapshots;
-    std::sort(snapshots.begin(), snapshots.end());
-    auto snapshot = snapshots.begin();
-    auto take_due_snapshots = [&](double time) {
-        for (; snapshot != snapshots.end() && *snapshot <= time; ++snapshot) {
-            result.snapshots.push_back(take_snapshot(foundation, indenter, *snapshot));
-            if (tangential) tangential->add_shear_stress(result.snapshots.back());
-        }
-    };
-    take_due_snapshots(nodes.front().time);
-    const std::size_t report_every = std::max<std::size_t>(1, nodes.size() / 100);
 
-    for (std::size_t n = 1; n < nodes.size(); ++n) {
+    for (std::size_t n = 1; n <= last_node && !stopped; ++n) {
         const double time_step = nodes[n].time - nodes[n - 1].time;
         // Force control: the sine's round-off at a zero of the validated (>= 0) prescribed force is no pull.
         // Spring control: the base, the history shifted by the pauses passed (PausedBase); a pause holds the force.
@@ -175,20 +177,15 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
         }
         last_force = force;
         ++result.steps;
-        const bool last_at_this_time = n + 1 == nodes.size() || nodes[n + 1].time != nodes[n].time;
-        if (paused && last_at_this_time) paused->passed(nodes[n].time, force, depth, nodes[n].value);
-        if (cycle) cycle->observe(nodes[n].time, shown_depth, force, foundation.contact_count() > 0);
-        if (shore && last_at_this_time &&
-            std::find(shore_reading_times.begin(), shore_reading_times.end(), nodes[n].time) !=
-                shore_reading_times.end()) {
-            result.shore_readings.push_back({nodes[n].time, shore->instrument.reading(shown_depth)});
-        }
-        if (n % numerics.output_every == 0 || n + 1 == nodes.size()) {
-            record(nodes[n].time, shown_depth, force, base);
-        }
-        if (last_at_this_time) take_due_snapshots(nodes[n].time);
-        if (progress && n % report_every == 0) progress(static_cast<double>(n) / static_cast<double>(nodes.size() - 1));
+        const bool settled = n == last_node || nodes[n + 1].time != nodes[n].time;
+        if (paused && settled) paused->passed(nodes[n].time, force, depth, nodes[n].value);
+        state = {.step = n, .time = nodes[n].time, .depth = shown_depth, .force = force, .load = base,
+                 .fraction = static_cast<double>(n) / static_cast<double>(last_node), .settled = settled,
+                 .last = n == last_node, .foundation = &foundation};
+        stopped = observers.notify(state);
     }
+    result.stopped = observers.stopped();
+    if (result.stopped) return result;  // the outcomes need the whole run
     if (tangential) result.tangential = tangential->outcome();
     if (cycle) result.harmonic = cycle->outcome();
     return result;

@@ -87,18 +87,16 @@ drivers::TangentialLoad read_tangential(TableReader& table) {
     table.reject_unknown({"friction", "control", "history", "amplitude", "frequency", "start", "end"});
     drivers::TangentialLoad load;
     load.friction = table.number("friction");
-    const std::string control = table.optional_string("control").value_or("displacement");
-    if (control == "displacement") load.control = drivers::TangentialControl::displacement;
-    else if (control == "force") load.control = drivers::TangentialControl::force;
-    else throw InvalidInput("tangential.control", "\"" + control + "\"", "unknown control; one of displacement, force");
+    const auto& control = drivers::tangential_control_named(
+        table.optional_string("control").value_or(drivers::tangential_controls().front().name));
+    load.control = control.control;
     const bool harmonic = table.has("amplitude") || table.has("frequency") || table.has("start") || table.has("end");
     if (table.has("history") == harmonic) {
         throw InvalidInput("tangential", "[...]", "give either history or amplitude, frequency, start, end");
     }
     if (table.has("history")) {
         std::vector<drivers::LoadPoint> points;
-        const char* quantity = load.control == drivers::TangentialControl::force ? "Fx" : "u";
-        for (const auto& [t, value] : table.pairs("history", "t", quantity)) points.push_back({t, value});
+        for (const auto& [t, value] : table.pairs("history", "t", control.column.c_str())) points.push_back({t, value});
         load.history = drivers::LoadHistory(std::move(points), "tangential.history");
     } else {
         load.harmonic = drivers::HarmonicLoad{table.number("amplitude"), table.number("frequency"),
@@ -359,7 +357,7 @@ std::string describe(const drivers::ContactCase& contact_case) {
     }
     if (const auto& tangential = contact_case.tangential) {
         load += fmt::format("; tangential {} control, mu = {:.4g}, {}",
-                            tangential->control == drivers::TangentialControl::force ? "force" : "displacement",
+                            drivers::tangential_control_kind(tangential->control).name,
                             tangential->friction,
                             tangential->harmonic ? fmt::format("harmonic at {:.4g} Hz", tangential->harmonic->frequency)
                                                  : "piecewise-linear history");

@@ -3,89 +3,16 @@
 #include <fmt/format.h>
 #include <fmt/os.h>
 
-#include <algorithm>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "mdr/drivers/controls.hpp"
+#include "mdr/io/summary.hpp"
 
 namespace mdr::io {
 namespace fs = std::filesystem;
 
-namespace {
-
-double max_of(const std::vector<double>& values) {
-    return values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
-}
-
-}  // namespace
-
 std::string summary_json(const drivers::ContactCase& contact_case, const drivers::IndentationResult& result,
                          double wall_seconds) {
-    nlohmann::ordered_json summary;
-    summary["case"] = contact_case.title;
-    summary["units"] = contact_case.units;
-    summary["max_force"] = max_of(result.force);
-    summary["max_depth"] = max_of(result.depth);
-    summary["max_radius"] = max_of(result.radius);
-    summary["steps"] = result.steps;
-    summary["elements"] = result.numerics.elements;
-    summary["wall_seconds"] = wall_seconds;
-    summary["control"] = contact_case.shore ? "shore" : drivers::control_kind(contact_case.control).name;
-    summary["time_step"] = result.numerics.time_step;
-    summary["half_width"] = result.numerics.half_width;
-    summary["final_force"] = result.force.empty() ? 0.0 : result.force.back();
-    summary["final_depth"] = result.depth.empty() ? 0.0 : result.depth.back();
-    if (const auto& certificate = contact_case.material_origin.certificate) {
-        summary["material_error"] = certificate->error;  // the series standing for the model (power law, table)
-        summary["material_window"] = {certificate->window.shortest, certificate->window.longest};
-        if (!certificate->window.frequencies.empty()) {
-            summary["material_frequencies"] = certificate->window.frequencies;  // [rad/s], certified explicitly
-        }
-    }
-    if (contact_case.tangential) summary["tangential_approximation"] = contact_case.tangential_approximate;
-    if (result.impact) {
-        summary["restitution"] = result.impact->restitution;
-        summary["contact_time"] = result.impact->contact_time;
-        summary["rebound_velocity"] = result.impact->rebound_velocity;
-        summary["dissipated_energy"] = result.impact->dissipated_energy;
-        if (const auto& oblique = result.impact->oblique) {
-            summary["tangential_restitution"] = oblique->tangential_restitution;
-            summary["rebound_tangential_velocity"] = oblique->rebound_tangential_velocity;
-            summary["rebound_spin"] = oblique->rebound_spin;
-            summary["rebound_angle_deg"] = oblique->rebound_angle;
-            summary["slid_throughout"] = oblique->slid_throughout;
-            summary["impulse_ratio"] = oblique->impulse_ratio;
-            summary["max_tangential_force"] = oblique->max_tangential_force;
-            summary["dissipated_energy_material"] = oblique->material_dissipation;
-            summary["dissipated_energy_friction"] = oblique->friction_dissipation;
-        }
-    }
-    if (result.harmonic) {
-        const auto& harmonic = *result.harmonic;
-        if (harmonic.storage_stiffness) summary["storage_stiffness"] = *harmonic.storage_stiffness;
-        if (harmonic.loss_stiffness) summary["loss_stiffness"] = *harmonic.loss_stiffness;
-        if (harmonic.loss_tangent) summary["loss_tangent"] = *harmonic.loss_tangent;
-        summary["depth_amplitude"] = harmonic.depth_amplitude;
-        summary["force_amplitude"] = harmonic.force_amplitude;
-        summary["phase_angle"] = harmonic.phase;
-        summary["normal_dissipated_energy_per_cycle"] = harmonic.dissipated_energy;
-        summary["contact_loss_fraction"] = harmonic.contact_loss_fraction;
-    }
-    for (const auto& reading : result.shore_readings) {
-        summary[fmt::format("shore_{:g}s", reading.time)] = reading.reading;
-    }
-    if (result.tangential) {
-        const auto& tangential = *result.tangential;
-        summary["max_tangential_force"] = tangential.max_force;
-        if (tangential.min_stick_radius) summary["min_stick_radius"] = *tangential.min_stick_radius;
-        if (tangential.dissipated_energy_per_cycle) {
-            summary["dissipated_energy_per_cycle"] = *tangential.dissipated_energy_per_cycle;
-        }
-        summary["gross_sliding"] = tangential.sliding_from.has_value();
-        if (tangential.sliding_from) summary["sliding_from"] = *tangential.sliding_from;
-    }
-    return summary.dump(2);
+    return to_json(summarize(contact_case, result, wall_seconds));
 }
 
 void write_indentation_result(const fs::path& directory, const drivers::ContactCase& contact_case,

@@ -11,6 +11,7 @@
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <system_error>
 #include <thread>
@@ -20,10 +21,17 @@
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/case_template.hpp"
-#include "mdr/io/result_files.hpp"
+#include "mdr/io/summary.hpp"
 
 namespace mdr::io {
 namespace {
+
+// A summary value that is a number (a count included), as sweep.csv writes it.
+std::optional<double> number_in(const SummaryValue& value) {
+    if (const auto* number = std::get_if<double>(&value)) return *number;
+    if (const auto* count = std::get_if<std::size_t>(&value)) return static_cast<double>(*count);
+    return std::nullopt;
+}
 
 double parse_number(const std::string& text, const std::string& spec) {
     std::size_t used = 0;
@@ -227,7 +235,7 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
                 const auto start = std::chrono::steady_clock::now();
                 const auto result = drivers::run_case(contact_case, stop_requested);
                 const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                row.summary_json = summary_json(contact_case, result, wall);
+                row.summary = summarize(contact_case, result, wall);
             } catch (const Interrupted&) {
                 return;
             } catch (const std::exception& error) {
@@ -260,10 +268,9 @@ void write_sweep_csv(const std::filesystem::path& directory, const std::vector<S
     // The numeric summary keys, in the order of the first run that succeeded.
     std::vector<std::string> columns;
     for (const auto& row : rows) {
-        if (row.summary_json.empty()) continue;
-        const auto summary = nlohmann::ordered_json::parse(row.summary_json);
-        for (const auto& [key, value] : summary.items()) {
-            if (value.is_number()) columns.push_back(key);
+        if (row.summary.empty()) continue;
+        for (const auto& [key, value] : row.summary) {
+            if (number_in(value)) columns.push_back(key);
         }
         break;
     }
@@ -274,11 +281,12 @@ void write_sweep_csv(const std::filesystem::path& directory, const std::vector<S
     out.print("{}error\n", header);
     for (const auto& row : rows) {
         for (double value : row.point) out.print("{},", value);
-        const auto summary = row.summary_json.empty() ? nlohmann::ordered_json::object()
-                                                      : nlohmann::ordered_json::parse(row.summary_json);
         for (const auto& column : columns) {
-            if (summary.contains(column) && summary[column].is_number()) {
-                out.print("{},", summary[column].get<double>());
+            const auto entry = std::find_if(row.summary.begin(), row.summary.end(),
+                                            [&column](const SummaryEntry& e) { return e.key == column; });
+            const auto number = entry != row.summary.end() ? number_in(entry->value) : std::nullopt;
+            if (number) {
+                out.print("{},", *number);
             } else {
                 out.print("nan,");
             }

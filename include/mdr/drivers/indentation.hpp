@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/step_observer.hpp"
 
 namespace mdr::drivers {
 
@@ -95,28 +96,36 @@ struct IndentationResult {
     std::vector<ShoreReading> shore_readings;     ///< Shore test: the readings at shore_reading_times within it
     ResolvedNumerics numerics;     ///< what was used
     std::size_t steps = 0;         ///< time steps taken
+    bool stopped = false;          ///< a StepObserver ended the run early (then without impact, tangential and
+                                   ///< harmonic outcomes)
 };
 
-/// Called now and then with the fraction of the simulated time done (0..1).
+/// Called each time another hundredth of the run is done, with the fraction done (0..1, StepState::fraction); it may
+/// throw to abandon the run.
 using ProgressObserver = std::function<void(double fraction)>;
 
-/// Runs a displacement- or force-controlled case, with its tangential loading when it has one (after each normal
-/// step the tangential layer takes the step's tangential increment). Throws mdr::InvalidInput for problems found
-/// while running (the contact outgrowing the foundation; key `tangential` when the tangential load changes while
-/// no element is in normal contact).
-IndentationResult run_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {});
+/// Runs a displacement-, force- or spring-controlled case, with its tangential loading when it has one (after each
+/// normal step the tangential layer takes the step's tangential increment). The state after every step goes to the
+/// standard observers, which fill the result, then to `observers` (step_observer.hpp). Throws mdr::InvalidInput for
+/// problems found while running (the contact outgrowing the foundation; key `tangential` when the tangential load
+/// changes while no element is in normal contact).
+IndentationResult run_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {},
+                                  const StepObservers& observers = {});
 
 /// Runs an impact case (control = impact): m d'' = -F_N (eq. 37) with the trapezoidal rule, implicit in the
 /// depth and solved on the foundation each step (second order, no stability limit), until the last element has
-/// left contact (eq. 39). Throws mdr::InvalidInput when the contact does not end before `end_time`.
-IndentationResult run_impact(const ContactCase& contact_case, const ProgressObserver& progress = {});
+/// left contact (eq. 39). The state after every step goes to the standard observers, then to `observers`. Throws
+/// mdr::InvalidInput when the contact does not end before `end_time`.
+IndentationResult run_impact(const ContactCase& contact_case, const ProgressObserver& progress = {},
+                             const StepObservers& observers = {});
 
 /// Throws std::runtime_error naming the first value of `result` that is not finite (a column at a time, an impact or
 /// tangential outcome, a snapshot), so that no NaN or infinity is ever reported as a result.
 void require_finite_result(const IndentationResult& result);
 
-/// Runs any case: run_impact for control = impact, run_indentation otherwise; the result is checked with
-/// require_finite_result.
-IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress = {});
+/// Runs any case: run_impact for control = impact, run_indentation otherwise, with the caller's `observers` after
+/// the standard ones; the result is checked with require_finite_result.
+IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress = {},
+                           const StepObservers& observers = {});
 
 }  // namespace mdr::drivers

@@ -13,7 +13,7 @@ namespace mdr::io {
 void write_indentation_result(const std::filesystem::path& directory, const drivers::ContactCase& contact_case,
                               const drivers::IndentationResult& result, double wall_seconds);
 
-/// The summary.json object of a run, as JSON text.
+/// The summary.json object of a run, as JSON text: to_json(summarize(...)) (mdr/io/summary.hpp).
 std::string summary_json(const drivers::ContactCase& contact_case, const drivers::IndentationResult& result,
                          double wall_seconds);
 

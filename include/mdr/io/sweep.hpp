@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "mdr/io/summary.hpp"
+
 namespace mdr::io {
 
 /// One varied key and its values.
@@ -25,7 +27,7 @@ SweepAxis parse_sweep_axis(const std::string& spec);
 /// One grid point's outcome.
 struct SweepRow {
     std::vector<double> point;   ///< the value of each axis
-    std::string summary_json;    ///< the run's summary.json ("" if it failed)
+    Summary summary;             ///< the run's summary (empty if it failed)
     std::string error;           ///< the failure message ("" if it succeeded)
 };
 

@@ -60,11 +60,11 @@ TEST(SweepPoints, AnySplitAndOrderGivesTheRowsOfTheWholeGrid) {
     for (std::size_t r = 0; r < whole.size(); ++r) {
         EXPECT_EQ(rows[r].point, whole[r].point);
         EXPECT_EQ(rows[r].error, whole[r].error);
-        if (whole[r].summary_json.empty()) {
-            EXPECT_TRUE(rows[r].summary_json.empty());
+        if (whole[r].summary.empty()) {
+            EXPECT_TRUE(rows[r].summary.empty());
             ++failed;
         } else {
-            EXPECT_EQ(without_wall_time(rows[r].summary_json), without_wall_time(whole[r].summary_json)) << r;
+            EXPECT_EQ(without_wall_time(to_json(rows[r].summary)), without_wall_time(to_json(whole[r].summary))) << r;
         }
     }
     EXPECT_EQ(failed, 5u);

@@ -1,0 +1,48 @@
+#include "recorders.hpp"
+
+#include <algorithm>
+
+#include "mdr/foundation/foundation.hpp"
+#include "stepping.hpp"
+
+namespace mdr::drivers {
+
+void RowRecorder::observe(const StepState& state) {
+    if (!state.row) return;
+    result_.time.push_back(state.time);
+    result_.depth.push_back(state.depth);
+    result_.force.push_back(state.force);
+    result_.radius.push_back(state.foundation->contact_radius());
+    if (columns_.velocity) result_.velocity.push_back(state.velocity);
+    if (columns_.base) result_.base.push_back(state.load);
+}
+
+SnapshotRecorder::SnapshotRecorder(std::vector<double> times, const profile::Profile& indenter,
+                                   IndentationResult& result, ShearStress shear_stress)
+    : times_(std::move(times)), indenter_(indenter), result_(result), shear_stress_(std::move(shear_stress)) {
+    std::sort(times_.begin(), times_.end());
+}
+
+void SnapshotRecorder::observe(const StepState& state) {
+    if (!state.settled) return;
+    for (; next_ < times_.size() && times_[next_] <= state.time; ++next_) {
+        result_.snapshots.push_back(take_snapshot(*state.foundation, indenter_, state.time));
+        if (shear_stress_) shear_stress_(result_.snapshots.back());
+    }
+}
+
+void ShoreRecorder::observe(const StepState& state) {
+    if (state.row) result_.shore.push_back(instrument_.reading(state.depth));
+    if (state.settled &&
+        std::find(shore_reading_times.begin(), shore_reading_times.end(), state.time) != shore_reading_times.end()) {
+        result_.shore_readings.push_back({state.time, instrument_.reading(state.depth)});
+    }
+}
+
+void ProgressReport::observe(const StepState& state) {
+    if (state.fraction < next_) return;
+    while (next_ <= state.fraction) next_ += 0.01;
+    progress_(std::min(state.fraction, 1.0));
+}
+
+}  // namespace mdr::drivers

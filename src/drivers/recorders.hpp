@@ -1,0 +1,93 @@
+#pragma once
+// The drivers' standard observers: what fills IndentationResult (rows, snapshots, Shore readings, tangential
+// columns) and the progress reports.
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "mdr/drivers/indentation.hpp"
+#include "mdr/drivers/shore.hpp"
+#include "mdr/drivers/step_observer.hpp"
+#include "mdr/profile/profile.hpp"
+
+namespace mdr::drivers {
+
+/// The rows t, d, F, a (and v of an impact, z of spring control when asked) at every written row.
+class RowRecorder final : public StepObserver {
+public:
+    /// The optional columns of IndentationResult that this run fills.
+    struct Columns {
+        bool velocity = false;  ///< v: an impact
+        bool base = false;      ///< z: spring control (not a Shore test)
+    };
+    RowRecorder(IndentationResult& result, Columns columns) : result_(result), columns_(columns) {}
+    void observe(const StepState& state) override;
+
+private:
+    IndentationResult& result_;
+    Columns columns_;
+};
+
+/// Snapshots (pressure, surface displacement, and shear stress when `shear_stress` is given) at the case's times,
+/// each taken at the first settled state at or after it; the drivers put a state on each of these times.
+class SnapshotRecorder final : public StepObserver {
+public:
+    /// Fills a snapshot's shear stress from a tangential layer.
+    using ShearStress = std::function<void(Snapshot&)>;
+    SnapshotRecorder(std::vector<double> times, const profile::Profile& indenter, IndentationResult& result,
+                     ShearStress shear_stress);
+    void observe(const StepState& state) override;
+    /// The earliest time not taken yet (an impact lands its steps on it); none when every snapshot is taken.
+    std::optional<double> next_time() const {
+        return next_ < times_.size() ? std::optional<double>(times_[next_]) : std::nullopt;
+    }
+
+private:
+    std::vector<double> times_;  // ascending
+    std::size_t next_ = 0;
+    const profile::Profile& indenter_;
+    IndentationResult& result_;
+    ShearStress shear_stress_;
+};
+
+/// A Shore test: the reading column H at every row, and the readings at shore_reading_times (settled states on
+/// those times; the driver puts nodes there).
+class ShoreRecorder final : public StepObserver {
+public:
+    ShoreRecorder(const Durometer& instrument, IndentationResult& result) : instrument_(instrument), result_(result) {}
+    void observe(const StepState& state) override;
+
+private:
+    const Durometer& instrument_;
+    IndentationResult& result_;
+};
+
+/// The columns of a tangential stepper (TangentialStepper, ObliqueStepper: its `record`) at every row.
+template <class Stepper>
+class TangentialColumns final : public StepObserver {
+public:
+    TangentialColumns(const Stepper& stepper, IndentationResult& result) : stepper_(stepper), result_(result) {}
+    void observe(const StepState& state) override {
+        if (state.row) stepper_.record(result_);
+    }
+
+private:
+    const Stepper& stepper_;
+    IndentationResult& result_;
+};
+
+/// Calls `progress` with the fraction done each time the run has done another hundredth of it.
+class ProgressReport final : public StepObserver {
+public:
+    /// `progress` must be callable and outlive the report.
+    explicit ProgressReport(const ProgressObserver& progress) : progress_(progress) {}
+    void observe(const StepState& state) override;
+
+private:
+    const ProgressObserver& progress_;
+    double next_ = 0.01;
+};
+
+}  // namespace mdr::drivers
