@@ -43,6 +43,7 @@ CurveFit rebound_entry(const ReboundData& data, ReboundQuantity quantity, const 
     CurveFit entry;
     entry.name = data.name;
     entry.rebound = quantity;
+    entry.mass = data.mass;
     entry.time = data.velocity;
     entry.measured = restitution ? data.restitution : data.contact_time;
     const auto& errors = restitution ? data.restitution_error : data.contact_time_error;

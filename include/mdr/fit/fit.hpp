@@ -112,6 +112,7 @@ struct CurveFit {
     double rms_residual = 0.0;      ///< RMS of model - measured
     /// Rebound data only: the quantity compared (`fitted` is then meaningless); nullopt for a measured curve.
     std::optional<ReboundQuantity> rebound{};
+    double mass = 0.0;              ///< rebound data only: the impactor's mass [kg]
 };
 
 /// A function of the fitted material on a grid, with its 95 % confidence band (first order: the delta method with
