@@ -6,6 +6,10 @@ from __future__ import annotations
 
 import csv
 import json
+import os
+import pathlib
+import subprocess
+import sys
 
 import pytest
 
@@ -93,6 +97,15 @@ def test_recovers_a_standard_solid_from_rebounds(run_mdr, rebound_case, workdir)
     assert again.returncode == 0, again.stderr
     rerun = json.loads((workdir / "again" / "summary.json").read_text())
     assert rerun["restitution"] == pytest.approx(ORACLE[0][1], abs=1e-4)
+    package = pathlib.Path(os.environ.get("MDR_PYTHONPATH", "/nonexistent"))
+    if not (package / "mdr").is_dir():
+        return  # a build without the Python package (the sanitizer build): no figures to draw
+    environment = dict(os.environ, PYTHONPATH=str(package), MPLBACKEND="Agg")
+    plotted = subprocess.run([sys.executable, "-m", "mdr", "plot", str(out)], capture_output=True, text=True,
+                             env=environment)
+    assert plotted.returncode == 0, plotted.stderr
+    assert sorted(pathlib.Path(p).name for p in plotted.stdout.split()) == ["dynamic.png", "fit_rebounds.png",
+                                                                           "material.png"]
 
 
 @pytest.mark.parametrize("edit, fragments", [
