@@ -134,9 +134,6 @@ ReboundData load_rebound(const ReboundSource& source, std::optional<double> case
     };
     one_of(source.restitution_error, source.restitution_error_column, "restitution_error");
     one_of(source.contact_time_error, source.contact_time_error_column, "contact_time_error");
-    if (source.contact_time_column.empty() && (source.contact_time_error || !source.contact_time_error_column.empty())) {
-        throw InvalidInput("contact_time_error", "(given)", "is used only with contact_time");
-    }
     require_positive("units.velocity", source.velocity_unit);
     require_positive("units.time", source.time_unit);
 

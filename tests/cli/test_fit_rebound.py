@@ -6,14 +6,11 @@ from __future__ import annotations
 
 import csv
 import json
-import os
-import pathlib
-import subprocess
-import sys
 
 import pytest
 
 from test_bad_input import assert_bad_input
+from test_fit import plotted_figures
 
 G1_TRUE, TAU1_TRUE = 3.0e6, 1.0e-3   # Pa, s (G_inf = 1 MPa; sphere R = 10 mm, m = 10 g)
 # v0 [m/s], e, T [ms]: tests/support/reference/impact_ode.hpp (sphere_impact_ting, 3D Lee-Radok loading and Ting
@@ -97,15 +94,7 @@ def test_recovers_a_standard_solid_from_rebounds(run_mdr, rebound_case, workdir)
     assert again.returncode == 0, again.stderr
     rerun = json.loads((workdir / "again" / "summary.json").read_text())
     assert rerun["restitution"] == pytest.approx(ORACLE[0][1], abs=1e-4)
-    package = pathlib.Path(os.environ.get("MDR_PYTHONPATH", "/nonexistent"))
-    if not (package / "mdr").is_dir():
-        return  # a build without the Python package (the sanitizer build): no figures to draw
-    environment = dict(os.environ, PYTHONPATH=str(package), MPLBACKEND="Agg")
-    plotted = subprocess.run([sys.executable, "-m", "mdr", "plot", str(out)], capture_output=True, text=True,
-                             env=environment)
-    assert plotted.returncode == 0, plotted.stderr
-    assert sorted(pathlib.Path(p).name for p in plotted.stdout.split()) == ["dynamic.png", "fit_rebounds.png",
-                                                                           "material.png"]
+    assert plotted_figures(out) in (None, ["dynamic.png", "fit_rebounds.png", "material.png"])
 
 
 @pytest.mark.parametrize("edit, fragments", [
