@@ -149,9 +149,10 @@ TEST_F(LoadReboundTest, RefusalsNameTheFileLineAndColumn) {
     drops.restitution_error_column = "sigma";
     EXPECT_EQ(message_of([&] { load_rebound(drops, 0.01); }),
               "restitution_error = 0.01: give either a number or a column, not both");
-    drops.restitution_error_column.clear();
+    drops = source("v_mm_s,e\n100,0.7\n200,0.65\n");
+    drops.restitution_error = 0.01;
     drops.contact_time_error = 1.0;
-    EXPECT_EQ(message_of([&] { load_rebound(drops, 0.01); }), "contact_time_error = 0.001: is used only with contact_time");
+    EXPECT_EQ(message_of([&] { load_rebound(drops, 0.01); }), "contact_time_error = 1: is used only with contact_time");
     drops.contact_time_error.reset();
     drops.velocity_column.clear();
     EXPECT_EQ(message_of([&] { load_rebound(drops, 0.01); }), "velocity = (missing): is required: the velocity column");
