@@ -67,11 +67,14 @@ void validate(const FitProblem& problem) {
         } catch (const InvalidInput& error) {
             throw error.with_prefix(fmt::format("rebounds[{}].", r));
         }
-        if (rebound.restitution_error.size() != rebound.velocity.size() ||
-            rebound.contact_time_error.size() != rebound.contact_time.size()) {
-            throw InvalidInput(fmt::format("rebounds[{}].restitution_error", r), "(sizes)",
-                               "give one uncertainty per impact (make_rebound fills them)");
-        }
+        const auto per_impact = [&](const char* key, const std::vector<double>& errors, std::size_t rows) {
+            if (errors.size() != rows) {
+                throw InvalidInput(fmt::format("rebounds[{}].{}", r, key), fmt::format("{} values", errors.size()),
+                                   fmt::format("give one per impact ({}; make_rebound fills them)", rows));
+            }
+        };
+        per_impact("restitution_error", rebound.restitution_error, rebound.velocity.size());
+        per_impact("contact_time_error", rebound.contact_time_error, rebound.contact_time.size());
     }
     const std::size_t free_count = problem.parameters.size() +
                                    (problem.settings.contact_point == ContactPointMode::fit ? problem.curves.size() : 0) +

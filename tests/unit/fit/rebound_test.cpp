@@ -12,6 +12,7 @@
 #include "convergence.hpp"
 #include "fit/rebound_model.hpp"
 #include "mdr/error.hpp"
+#include "mdr/fit/fit.hpp"
 #include "mdr/fit/rebound.hpp"
 #include "mdr/profile/profile.hpp"
 #include "mdr/rheology/rheology.hpp"
@@ -165,6 +166,22 @@ drivers::ContactCase sphere_on_standard_solid() {
                                 .indenter = profile::make_sphere(0.01),
                                 .history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history"),
                                 .end_time = 1.0};
+}
+
+TEST(MakeRebound, AProblemWithDataBuiltDirectlyFollowsTheSameRules) {
+    FitProblem problem;
+    problem.model = [](const std::vector<double>&) { return sphere_on_standard_solid(); };
+    problem.parameters = {{"material.G", 1e6, 1e3, 1e9}};
+    problem.rebounds = {ReboundData{.name = "d", .mass = 0.01, .velocity = {0.1, 0.2, 0.4},
+                                    .restitution = {0.5, 0.55, 0.6}, .restitution_error = {0.01, 0.01, 0.01},
+                                    .contact_time = {}, .contact_time_error = {}}};
+    EXPECT_EQ(message_of([&] { validate(problem); }), "");
+    problem.rebounds[0].velocity[0] = -0.1;
+    EXPECT_EQ(message_of([&] { validate(problem); }), "rebounds[0].velocity = -0.1: at index 0: must be a speed > 0");
+    problem.rebounds[0].velocity[0] = 0.1;
+    problem.rebounds[0].restitution_error = {0.01};
+    EXPECT_EQ(message_of([&] { validate(problem); }),
+              "rebounds[0].restitution_error = 1 values: give one per impact (3; make_rebound fills them)");
 }
 
 TEST(ReboundModel, ConvergesToTheImpactOdeAtSecondOrder) {
