@@ -29,12 +29,13 @@ void add_fit_command(CLI::App& app, int& exit_code) {
                 auto read = io::load_fit_case(*case_path);
                 read.settings.check_interrupt = throw_if_interrupted;  // Ctrl-C stops the fit at its next model run
                 auto curves = fit::load_curves(read);
+                fit::require_curves_only_for_model_choice(read, read.rebounds.size());
                 if (!read.model_choice.empty()) {  // candidates: each builds its own problem from the curves
                     fit::FitProblem curves_only;
                     curves_only.curves = std::move(curves);
                     return std::make_pair(std::move(read), std::move(curves_only));
                 }
-                auto built = fit::make_problem(read, std::move(curves));
+                auto built = fit::make_problem(read, std::move(curves), fit::load_rebounds(read));
                 fit::validate(built);
                 return std::make_pair(std::move(read), std::move(built));
             }();
@@ -45,8 +46,9 @@ void add_fit_command(CLI::App& app, int& exit_code) {
             const auto result = fit::fit(problem);
             directory.write([&](const std::filesystem::path& files) { io::write_fit_result(files, fit_case, result); },
                             received_signal);
-            fmt::print("fit of {} parameter(s) to {} curve(s), {} points: {}\n", result.names.size(),
-                       result.curves.size(), result.points, result.status);
+            fmt::print("fit of {} parameter(s) to {} curve(s) and {} rebound data set(s), {} points: {}\n",
+                       result.names.size(), problem.curves.size(), problem.rebounds.size(), result.points,
+                       result.status);
             for (std::size_t j = 0; j < result.names.size(); ++j) {
                 fmt::print("  {} = {:.6g} +- {:.2g}\n", result.names[j], result.values[j], result.standard_errors[j]);
             }

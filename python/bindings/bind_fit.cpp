@@ -18,6 +18,11 @@ namespace {
 using CurveArrays =
     std::tuple<std::string, std::vector<double>, std::vector<double>, std::vector<double>, std::string>;
 
+/// index in mdr.fit's data, name, mass (None: the case's indenter.mass), velocity, restitution, contact_time,
+/// restitution_error, contact_time_error (each error list empty, one value or one per impact).
+using ReboundArrays = std::tuple<std::size_t, std::string, std::optional<double>, std::vector<double>,
+                                 std::vector<double>, std::vector<double>, std::vector<double>, std::vector<double>>;
+
 // fit.json, the fitted case and the curves of one fit.
 py::dict fit_output(const io::FitCase& fit_case, const fit::FitResult& result) {
     py::list curve_list;
@@ -49,9 +54,10 @@ py::dict fit_output(const io::FitCase& fit_case, const fit::FitResult& result) {
     return out;
 }
 
-// A fit case from TOML text; `curves` (name, t, d, F), when not empty, replace its [[fit.data]].
+// A fit case from TOML text; `curves` (name, t, d, F) and `rebounds`, when either is not empty, replace its
+// [[fit.data]].
 py::dict fit_toml_case(const std::string& toml_text, const std::string& source, const std::string& directory,
-                       const std::vector<CurveArrays>& curves) {
+                       const std::vector<CurveArrays>& curves, const std::vector<ReboundArrays>& rebounds) {
     auto fit_case = io::parse_fit_case(toml_text, source, directory);
     // Ctrl-C (a pending signal) stops the fit at its next model run or progress report with KeyboardInterrupt.
     bool signalled = false;
@@ -72,9 +78,21 @@ py::dict fit_toml_case(const std::string& toml_text, const std::string& source, 
         }
     };
     std::vector<fit::Curve> loaded;
-    if (curves.empty()) {
+    std::vector<fit::ReboundData> loaded_rebounds;
+    if (curves.empty() && rebounds.empty()) {
         loaded = fit::load_curves(fit_case);
+        loaded_rebounds = fit::load_rebounds(fit_case);
     } else {
+        for (const auto& [index, name, mass, velocity, restitution, contact_time, restitution_error,
+                          contact_time_error] : rebounds) {
+            try {
+                loaded_rebounds.push_back(fit::make_rebound({name, mass ? mass : fit::case_mass(fit_case), velocity,
+                                                             restitution, contact_time, restitution_error,
+                                                             contact_time_error}));
+            } catch (const InvalidInput& error) {
+                throw error.with_prefix("data[" + std::to_string(index) + "].");
+            }
+        }
         for (std::size_t i = 0; i < curves.size(); ++i) {
             const auto& [name, time, depth, force, fitted] = curves[i];
             loaded.push_back(fit::make_curve(name, time, depth, force));
@@ -85,6 +103,7 @@ py::dict fit_toml_case(const std::string& toml_text, const std::string& source, 
             }
         }
     }
+    fit::require_curves_only_for_model_choice(fit_case, loaded_rebounds.size());
     if (!fit_case.model_choice.empty()) {
         fit::ModelChoice choice;
         solve([&] { choice = fit::fit_candidates(fit_case, loaded); });
@@ -100,7 +119,7 @@ py::dict fit_toml_case(const std::string& toml_text, const std::string& source, 
         out["candidates"] = candidates;
         return out;
     }
-    const auto problem = fit::make_problem(fit_case, std::move(loaded));
+    const auto problem = fit::make_problem(fit_case, std::move(loaded), std::move(loaded_rebounds));
     fit::FitResult result;
     solve([&] { result = fit::fit(problem); });
     return fit_output(fit_case, result);
@@ -110,7 +129,7 @@ py::dict fit_toml_case(const std::string& toml_text, const std::string& source, 
 
 void bind_fit(py::module_& module) {
     module.def("_fit_toml", &fit_toml_case, py::arg("text"), py::arg("source"), py::arg("directory"),
-               py::arg("curves"), "Fits a fit case given as TOML text (mdr.fit is the public entry).");
+               py::arg("curves"), py::arg("rebounds"), "Fits a fit case given as TOML text (mdr.fit is the public entry).");
     module.def(
         "_afm_depth_and_force",
         [](const std::vector<double>& piezo, const std::vector<double>& deflection, double spring_constant) {

@@ -32,7 +32,10 @@ class FitResult:
         Everything ``fit.json`` holds: intervals, correlation, undetermined parameters, per-curve contact point
         and baseline, residual and noise, AIC, BIC, evaluations, wall time.
     curves : list of dict
-        Per curve: ``name``, ``t``, ``measured``, ``model`` and ``drive`` (numpy arrays).
+        Per curve: ``name``, ``kind`` (``"curve"``), ``fitted`` (``"force"`` or ``"depth"``), ``t``, ``measured``,
+        ``model`` and ``drive`` (numpy arrays). Rebound data give one entry per quantity (``kind`` ``"rebound"``,
+        ``fitted`` ``"restitution"`` or ``"contact_time"``) with ``t`` holding the approach speeds v0 [m/s] and an
+        empty ``drive``.
     fitted_case : str
         The case with the fitted values, as TOML text.
     ranking : list of dict
@@ -101,6 +104,11 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
         ``depth`` and ``force`` (force = k x deflection, depth = fall of piezo + deflection from the first row,
         as the case file's AFM columns). ``fitted`` (``"force"`` or ``"depth"``) sets what that curve fits when
         it differs from ``fit.fitted``: a creep curve beside an indentation curve, one material for both.
+        Rebound data (one impact of the case's indenter per approach speed, the same material) are a dict with
+        ``"kind": "rebound"``, ``velocity`` (approach speeds v0 [m/s]) and ``restitution`` (e in [0, 1]), and
+        optionally ``contact_time`` (T [s]), ``restitution_error`` and ``contact_time_error`` (standard
+        deviations: a number or one per impact; estimated from the data's scatter when left out, which needs 3
+        impacts), ``mass`` [kg] (default: the case's ``indenter.mass``) and ``name``.
 
     Returns
     -------
@@ -138,11 +146,17 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
         directory = os.path.dirname(os.path.abspath(source))
     else:
         raise TypeError(f"case: expected a path or a dict, got {type(case).__name__}")
-    curves = []
+    curves, rebounds = [], []
     for i, curve in enumerate(data or []):
-        curves.append((str(curve.get("name", f"curve{i}")), *_curve_arrays(curve, f"data[{i}]"),
-                       str(curve.get("fitted", ""))))
-    raw = _mdr._fit_toml(text, source, directory, curves)
+        kind = curve.get("kind", "curve")
+        if kind == "rebound":
+            rebounds.append(_rebound_arrays(curve, i))
+        elif kind == "curve":
+            curves.append((str(curve.get("name", f"curve{i}")), *_curve_arrays(curve, f"data[{i}]"),
+                           str(curve.get("fitted", ""))))
+        else:
+            raise ValueError(f"data[{i}].kind = {kind!r}: one of curve, rebound")
+    raw = _mdr._fit_toml(text, source, directory, curves, rebounds)
     if "candidates" not in raw:
         return _result(raw)
     candidates = {str(entry["name"]): _result(entry) for entry in raw["candidates"]}
@@ -181,10 +195,32 @@ def _curve_arrays(curve: Mapping[str, Any], key: str) -> tuple[list[float], list
     return values("time"), values("depth"), values("force")
 
 
+_REBOUND_KEYS = ("kind", "name", "velocity", "restitution", "contact_time", "restitution_error",
+                 "contact_time_error", "mass")
+
+
+def _rebound_arrays(data: Mapping[str, Any], i: int) -> tuple:
+    """The arrays of one rebound data set of mdr.fit's ``data`` (``kind = "rebound"``), checked by the library."""
+    unknown = [name for name in data if name not in _REBOUND_KEYS]
+    if unknown:
+        raise ValueError(f"data[{i}].{unknown[0]} = (given): unknown key; valid keys: {', '.join(_REBOUND_KEYS)}")
+    for name in ("velocity", "restitution"):
+        if name not in data:
+            raise ValueError(f"data[{i}].{name} = (missing): rebound data need velocity and restitution")
+
+    def values(name):
+        return np.asarray(data.get(name, []), dtype=float).ravel().tolist()
+
+    mass = data.get("mass")
+    return (i, str(data.get("name", f"rebound{i}")), None if mass is None else float(mass), values("velocity"),
+            values("restitution"), values("contact_time"), values("restitution_error"), values("contact_time_error"))
+
+
 def _result(raw: Mapping[str, Any]) -> FitResult:
     summary = json.loads(raw["fit_json"])
     result = FitResult(parameters=_numbers(summary, "parameters"), standard_errors=_numbers(summary, "standard_errors"),
-                       status=summary["status"], summary=summary, curves=[dict(c) for c in raw["curves"]],
+                       status=summary["status"], summary=summary,
+                       curves=[dict(c, kind=s["kind"], fitted=s["fitted"]) for c, s in zip(raw["curves"], summary["curves"])],
                        fitted_case=raw["fitted_case"], material=dict(raw["material"]))
     times = np.asarray(raw.get("relaxation_times", []), dtype=float)
     if times.size:

@@ -398,6 +398,62 @@ def fit_curves(curves: Mapping[str, np.ndarray], axes=None):
     return top
 
 
+_REBOUND_QUANTITIES = {"restitution": "restitution e", "contact_time": "contact time T [ms]"}
+
+
+def _rebound_rows(curves: Mapping[str, np.ndarray]) -> np.ndarray:
+    """Which rows of curves.csv are rebound data (their curve named ``NAME:restitution`` or ``NAME:contact_time``)."""
+    names = np.asarray(curves["curve"], dtype=str)
+    return np.array([name.rpartition(":")[2] in _REBOUND_QUANTITIES and ":" in name for name in names], dtype=bool)
+
+
+def _rows(table: Mapping[str, np.ndarray], keep: np.ndarray) -> dict[str, np.ndarray]:
+    return {name: np.asarray(values)[keep] for name, values in table.items()}
+
+
+def fit_rebounds(curves: Mapping[str, np.ndarray], axes=None):
+    """Measured and fitted rebound data over the approach speed: e(v0) and, where measured, T(v0).
+
+    Parameters
+    ----------
+    curves : dict of str to numpy.ndarray
+        The rebound rows of curves.csv of ``mdr fit`` (``curve`` named ``NAME:restitution`` or
+        ``NAME:contact_time``, ``t`` holding v0 [m/s], ``measured``, ``model``); other rows are left out.
+    axes : sequence of two matplotlib.axes.Axes, optional
+        Where to draw (e above, T below); a new figure by default.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        The axes of e (T's share its speed axis).
+
+    Examples
+    --------
+    >>> v0 = np.array([0.01, 0.1, 1.0])
+    >>> axes = mdr.plot.fit_rebounds({"curve": np.array(["drops:restitution"] * 3), "t": v0,
+    ...                               "measured": np.array([0.5, 0.55, 0.6]), "model": np.array([0.5, 0.56, 0.6])})
+    """
+    rows = _rows(curves, _rebound_rows(curves))
+    if axes is None:
+        _, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 5.5))
+    top, bottom = axes
+    names = np.asarray(rows["curve"], dtype=str)
+    colours = {data_set: f"C{i}" for i, data_set in enumerate(dict.fromkeys(n.rpartition(":")[0] for n in names))}
+    for name in dict.fromkeys(names):
+        data_set, _, quantity = name.rpartition(":")
+        target, scale = (top, 1.0) if quantity == "restitution" else (bottom, 1e3)
+        keep = names == name
+        order = np.argsort(rows["t"][keep])
+        v0 = rows["t"][keep][order]
+        colour = colours[data_set]
+        target.plot(v0, scale * rows["measured"][keep][order], "o", ms=4, color=colour, label=f"{data_set}: measured")
+        target.plot(v0, scale * rows["model"][keep][order], "-", lw=1, color=colour, label=f"{data_set}: model")
+    top.set(xscale="log", ylabel=_REBOUND_QUANTITIES["restitution"], title="Fit: rebound data and model")
+    bottom.set(xlabel="approach speed v0 [m/s]", ylabel=_REBOUND_QUANTITIES["contact_time"])
+    top.legend(loc="best", fontsize=8)
+    return top
+
+
 def dynamic_moduli(dynamic: Mapping[str, np.ndarray], axes=None, units: Units = "SI"):
     """Storage and loss moduli over angular frequency on log axes.
 
@@ -565,7 +621,12 @@ def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
                 if "tau" in profiles:
                     written.append(save(shear_stress_profiles(profiles, units=units), figure("shear_stress")))
         if os.path.exists(path("curves.csv")):
-            written.append(save(fit_curves(read_csv(path("curves.csv"))), figure("fit_curves")))
+            curves = read_csv(path("curves.csv"))
+            rebound = _rebound_rows(curves)
+            if not rebound.all():
+                written.append(save(fit_curves(_rows(curves, ~rebound)), figure("fit_curves")))
+            if rebound.any():
+                written.append(save(fit_rebounds(curves), figure("fit_rebounds")))
         if os.path.exists(path("functions.csv")):
             functions = read_csv(path("functions.csv"))
             written.append(save(material_functions(functions, units=_summary(directory)), figure("material")))

@@ -15,6 +15,7 @@
 #include "fit_diagnostics.hpp"
 #include "material_bands.hpp"
 #include "penalty_cost.hpp"
+#include "rebound_cost.hpp"
 #include "statistical_convergence.hpp"
 #include "mdr/error.hpp"
 
@@ -29,8 +30,9 @@ std::size_t default_fit_elements(double noise_to_peak) {
 void validate(const FitProblem& problem) {
     if (!problem.model) throw InvalidInput("fit.model", "(missing)", "is required");
     if (problem.parameters.empty()) throw InvalidInput("fit.free", "[]", "name at least one parameter to fit");
-    if (problem.curves.empty()) {
-        throw InvalidInput("fit.data", "(missing)", "give at least one measured curve ([[fit.data]] or arrays)");
+    if (problem.curves.empty() && problem.rebounds.empty()) {
+        throw InvalidInput("fit.data", "(missing)",
+                           "give at least one measured curve or rebound data set ([[fit.data]] or arrays)");
     }
     std::set<std::string> names;
     for (const auto& parameter : problem.parameters) {
@@ -57,11 +59,29 @@ void validate(const FitProblem& problem) {
             throw std::invalid_argument("mdr::fit: a penalty row must have one entry per free parameter");
         }
     }
+    for (std::size_t r = 0; r < problem.rebounds.size(); ++r) {  // the rules of make_rebound, for data built directly
+        const ReboundData& rebound = problem.rebounds[r];
+        try {
+            make_rebound({rebound.name, rebound.mass, rebound.velocity, rebound.restitution, rebound.contact_time,
+                          rebound.restitution_error, rebound.contact_time_error});
+        } catch (const InvalidInput& error) {
+            throw error.with_prefix(fmt::format("rebounds[{}].", r));
+        }
+        const auto per_impact = [&](const char* key, const std::vector<double>& errors, std::size_t rows) {
+            if (errors.size() != rows) {
+                throw InvalidInput(fmt::format("rebounds[{}].{}", r, key), fmt::format("{} values", errors.size()),
+                                   fmt::format("give one per impact ({}; make_rebound fills them)", rows));
+            }
+        };
+        per_impact("restitution_error", rebound.restitution_error, rebound.velocity.size());
+        per_impact("contact_time_error", rebound.contact_time_error, rebound.contact_time.size());
+    }
     const std::size_t free_count = problem.parameters.size() +
                                    (problem.settings.contact_point == ContactPointMode::fit ? problem.curves.size() : 0) +
                                    (problem.settings.baseline == BaselineMode::fit ? problem.curves.size() : 0);
     std::size_t points = 0;
     for (const auto& curve : problem.curves) points += curve.time.size();
+    for (const auto& rebound : problem.rebounds) points += rebound.restitution.size() + rebound.contact_time.size();
     if (points <= free_count) {
         throw InvalidInput("fit.data", fmt::format("{} points", points),
                            fmt::format("need more points than the {} free parameters", free_count));
@@ -135,6 +155,12 @@ FitResult fit(const FitProblem& problem) {
         if (m > 0) blocks.push_back(nuisance[c].data());
         solver_problem.AddResidualBlock(costs.back().get(), nullptr, blocks);
     }
+    std::vector<std::unique_ptr<ReboundCost>> rebounds;
+    for (std::size_t r = 0; r < problem.rebounds.size(); ++r) {
+        rebounds.push_back(std::make_unique<ReboundCost>(problem, scales, r, default_rebound_elements, evaluations,
+                                                         element_evaluations));
+        solver_problem.AddResidualBlock(rebounds.back().get(), nullptr, shared.data());
+    }
     PenaltyCost penalty(problem.penalty, scales);
     if (!problem.penalty.empty()) solver_problem.AddResidualBlock(&penalty, nullptr, shared.data());
     for (std::size_t j = 0; j < k; ++j) {
@@ -164,7 +190,7 @@ FitResult fit(const FitProblem& problem) {
         result.names.push_back(problem.parameters[j].name);
         result.values.push_back(scales.to_value(j, shared[j]));
     }
-    describe_uncertainty(problem, scales, costs, shared, nuisance, result);
+    describe_uncertainty(problem, scales, costs, rebounds, shared, nuisance, result);
     result.evaluations = evaluations;
     result.element_evaluations = element_evaluations;
     try {

@@ -12,14 +12,40 @@ std::vector<Curve> load_curves(const io::FitCase& fit_case) {
         try {
             curves.push_back(load_curve(fit_case.data[i]));
         } catch (const InvalidInput& error) {
-            throw error.with_prefix(fmt::format("fit.data[{}].", i));
+            throw error.with_prefix((i < fit_case.data_keys.size() ? fit_case.data_keys[i] : fmt::format("fit.data[{}]", i)) + ".");
         }
     }
     return curves;
 }
 
-FitProblem make_problem(const io::FitCase& fit_case, std::vector<Curve> curves) {
-    return FitProblem{io::model_builder(fit_case), fit_case.parameters, std::move(curves), fit_case.settings};
+std::optional<double> case_mass(const io::FitCase& fit_case) {
+    if (!fit_case.model.has_number("indenter.mass")) return std::nullopt;
+    return fit_case.model.number("indenter.mass");
+}
+
+std::vector<ReboundData> load_rebounds(const io::FitCase& fit_case) {
+    std::vector<ReboundData> rebounds;
+    for (std::size_t i = 0; i < fit_case.rebounds.size(); ++i) {
+        try {
+            rebounds.push_back(load_rebound(fit_case.rebounds[i], case_mass(fit_case)));
+        } catch (const InvalidInput& error) {
+            throw error.with_prefix(fit_case.rebound_keys.at(i) + ".");
+        }
+    }
+    return rebounds;
+}
+
+void require_curves_only_for_model_choice(const io::FitCase& fit_case, std::size_t rebound_sets) {
+    if (!fit_case.model_choice.empty() && rebound_sets > 0) {
+        throw InvalidInput("fit.candidates", "(given)",
+                           "not with rebound data (kind = \"rebound\"): the model choice fits measured curves only");
+    }
+}
+
+FitProblem make_problem(const io::FitCase& fit_case, std::vector<Curve> curves, std::vector<ReboundData> rebounds) {
+    FitProblem problem{io::model_builder(fit_case), fit_case.parameters, std::move(curves), fit_case.settings};
+    problem.rebounds = std::move(rebounds);
+    return problem;
 }
 
 }  // namespace mdr::fit

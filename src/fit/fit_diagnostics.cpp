@@ -9,6 +9,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "data_window.hpp"
+
 namespace mdr::fit {
 
 namespace {
@@ -35,12 +37,35 @@ struct Stacked {
     Eigen::VectorXd residuals;
 };
 
+// One quantity of a rebound data set: measured, model, speeds and noise.
+CurveFit rebound_entry(const ReboundData& data, ReboundQuantity quantity, const std::vector<ImpactValues>& impacts) {
+    const bool restitution = quantity == ReboundQuantity::restitution;
+    CurveFit entry;
+    entry.name = data.name;
+    entry.rebound = quantity;
+    entry.mass = data.mass;
+    entry.time = data.velocity;
+    entry.measured = restitution ? data.restitution : data.contact_time;
+    const auto& errors = restitution ? data.restitution_error : data.contact_time_error;
+    double squared = 0.0, noise_squared = 0.0;
+    for (std::size_t i = 0; i < impacts.size(); ++i) {
+        entry.model.push_back(restitution ? impacts[i].restitution : impacts[i].contact_time);
+        squared += (entry.model[i] - entry.measured[i]) * (entry.model[i] - entry.measured[i]);
+        noise_squared += errors[i] * errors[i];
+    }
+    const auto n = static_cast<double>(impacts.size());
+    entry.rms_residual = std::sqrt(squared / n);
+    entry.noise = std::sqrt(noise_squared / n);  // the RMS of the stated or estimated uncertainties
+    return entry;
+}
+
 Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
-                     const std::vector<double>& shared, const std::vector<std::vector<double>>& nuisance,
-                     std::size_t m, FitResult& result) {
+                     const std::vector<std::unique_ptr<ReboundCost>>& rebounds, const std::vector<double>& shared,
+                     const std::vector<std::vector<double>>& nuisance, std::size_t m, FitResult& result) {
     const std::size_t k = shared.size();
     std::size_t rows = 0;
     for (const auto& cost : costs) rows += static_cast<std::size_t>(cost->num_residuals());
+    for (const auto& cost : rebounds) rows += static_cast<std::size_t>(cost->num_residuals());
     Stacked stacked{Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(k + m * costs.size())),
                     Eigen::VectorXd(static_cast<Eigen::Index>(rows))};
     Eigen::Index row = 0;
@@ -81,17 +106,37 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
         curve.rms_residual = std::sqrt(squared / static_cast<double>(n));
         result.curves.push_back(std::move(curve));
     }
+    for (const auto& cost : rebounds) {  // their rows have no contact point or baseline: 0 in those columns
+        const auto n = static_cast<std::size_t>(cost->num_residuals());
+        std::vector<double> r(n), shared_block(n * k);
+        const double* parameters[1] = {shared.data()};
+        double* blocks[1] = {shared_block.data()};
+        if (!cost->Evaluate(parameters, r.data(), blocks)) {
+            throw std::runtime_error("the model cannot be evaluated at the fitted values");
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            stacked.residuals[row] = r[i];
+            for (std::size_t j = 0; j < k; ++j) stacked.jacobian(row, static_cast<Eigen::Index>(j)) = shared_block[i * k + j];
+            ++row;
+        }
+        const auto impacts = cost->impacts(shared.data());
+        result.curves.push_back(rebound_entry(cost->data(), ReboundQuantity::restitution, impacts));
+        if (!cost->data().contact_time.empty()) {
+            result.curves.push_back(rebound_entry(cost->data(), ReboundQuantity::contact_time, impacts));
+        }
+    }
     return stacked;
 }
 
 }  // namespace
 
 void describe_uncertainty(const FitProblem& problem, const ParameterScales& scales,
-                          const std::vector<std::unique_ptr<CurveCost>>& costs, const std::vector<double>& shared,
+                          const std::vector<std::unique_ptr<CurveCost>>& costs,
+                          const std::vector<std::unique_ptr<ReboundCost>>& rebounds, const std::vector<double>& shared,
                           const std::vector<std::vector<double>>& nuisance, FitResult& result) {
     const std::size_t k = shared.size();
     const std::size_t m = scales.nuisance_size();
-    const Stacked stacked = stack_curves(problem, costs, shared, nuisance, m, result);
+    const Stacked stacked = stack_curves(problem, costs, rebounds, shared, nuisance, m, result);
     const auto n = static_cast<double>(stacked.residuals.size());
     const auto columns = static_cast<std::size_t>(stacked.jacobian.cols());
     result.points = static_cast<std::size_t>(stacked.residuals.size());
@@ -167,7 +212,7 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
                  fmt::format("its standard error {:.3g} exceeds its value {:.6g}", result.standard_errors[j], value));
         }
     }
-    for (std::size_t c = 0; c < result.curves.size(); ++c) {
+    for (std::size_t c = 0; c < problem.curves.size(); ++c) {
         std::size_t column = k + c * m;
         if (scales.fit_contact) {
             result.curves[c].contact_depth_error =
@@ -201,12 +246,7 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
     }
 
     // Time parameters against the measured window.
-    double longest = 0.0;
-    double finest = std::numeric_limits<double>::infinity();
-    for (const auto& curve : problem.curves) {
-        longest = std::max(longest, curve.time.back() - curve.time.front());
-        for (std::size_t i = 1; i < curve.time.size(); ++i) finest = std::min(finest, curve.time[i] - curve.time[i - 1]);
-    }
+    const auto [finest, longest] = data_window(problem, result.values);
     for (std::size_t i = 0; i < k; ++i) {
         if (!is_time(result.names[i])) continue;
         const double tau = result.values[i];

@@ -7,11 +7,13 @@
 #include <vector>
 
 #include "curve_cost.hpp"
+#include "rebound_cost.hpp"
 #include "mdr/fit/fit.hpp"
 
 namespace mdr::fit {
 
-/// Fills the statistics of `result` (values and names already set) at the optimum `shared`, `nuisance`: the
+/// Fills the statistics of `result` (values and names already set) at the optimum `shared`, `nuisance` (the curves'
+/// rows, then the rebound data's, one entry of FitResult::curves per quantity): the
 /// covariance s^2 (J^T J)^+ with s^2 = RSS / (n - k) (so that a misjudged noise level does not bias the errors),
 /// the 95 % intervals (normal quantile 1.96; on the logarithmic scale for logarithmic parameters), the curves'
 /// data and model, AIC and BIC, and Undetermined entries for: directions the data do not constrain (singular
@@ -19,7 +21,8 @@ namespace mdr::fit {
 /// outside the measured window (above 10 times the longest record or below a tenth of the shortest sampling
 /// interval), two time parameters within 25 % of each other.
 void describe_uncertainty(const FitProblem& problem, const ParameterScales& scales,
-                          const std::vector<std::unique_ptr<CurveCost>>& costs, const std::vector<double>& shared,
+                          const std::vector<std::unique_ptr<CurveCost>>& costs,
+                          const std::vector<std::unique_ptr<ReboundCost>>& rebounds, const std::vector<double>& shared,
                           const std::vector<std::vector<double>>& nuisance, FitResult& result);
 
 }  // namespace mdr::fit

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "data_window.hpp"
 #include "mdr/io/material_table.hpp"
 
 namespace mdr::fit {
@@ -25,11 +26,7 @@ std::vector<double> functions_of(const rheology::Rheology& material, const std::
 }  // namespace
 
 MaterialBands material_bands(const FitProblem& problem, const FitResult& result) {
-    double shortest = std::numeric_limits<double>::infinity(), longest = 0.0;
-    for (const auto& curve : problem.curves) {
-        for (std::size_t i = 1; i < curve.time.size(); ++i) shortest = std::min(shortest, curve.time[i] - curve.time[i - 1]);
-        longest = std::max(longest, curve.time.back() - curve.time.front());
-    }
+    const auto [shortest, longest] = data_window(problem, result.values);
     MaterialBands bands;
     constexpr std::size_t count = 121;
     if (!(longest > shortest) || !std::isfinite(longest / shortest)) return bands;

@@ -93,7 +93,7 @@ FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
     fit.reject_unknown({"free", "bounds", "start", "fitted", "contact_point", "baseline", "max_iterations", "elements", "data",
                         "candidates", "spectrum"});
 
-    FitCase fit_case{std::move(model), {}, {}, {}, false, read_candidates(fit)};
+    FitCase fit_case{std::move(model), {}, {}, {}, false, read_candidates(fit), {}, {}, {}};
     fit_case.settings.fitted = read_fitted(fit, fit::Fitted::force);
     const std::string fitted = fit_case.settings.fitted == fit::Fitted::force ? "force" : "depth";
     const std::string contact = choice(fit, "contact_point", {"fit", "estimate", "fixed"}, "fit");
@@ -140,7 +140,13 @@ FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
         const std::string path = fmt::format("fit.data[{}]", i);
         if (table == nullptr) throw InvalidInput(path, "(not a table)", "must be a [[fit.data]] table");
         TableReader reader(*table, path);
-        fit_case.data.push_back(read_fit_data(reader, case_directory));
+        if (choice(reader, "kind", {"curve", "rebound"}, "curve") == "rebound") {
+            fit_case.rebounds.push_back(read_rebound_data(reader, case_directory));
+            fit_case.rebound_keys.push_back(path);
+        } else {
+            fit_case.data.push_back(read_fit_data(reader, case_directory));
+            fit_case.data_keys.push_back(path);
+        }
     }
     return fit_case;
 }

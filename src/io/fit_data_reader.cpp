@@ -41,8 +41,8 @@ fit::Fitted read_fitted(TableReader& table, fit::Fitted fallback) {
 }
 
 fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory) {
-    table.reject_unknown({"file", "name", "time", "depth", "force", "piezo", "deflection", "spring_constant", "units",
-                          "segment_column", "segments", "fitted"});
+    table.reject_unknown({"kind", "file", "name", "time", "depth", "force", "piezo", "deflection", "spring_constant",
+                          "units", "segment_column", "segments", "fitted"});
     fit::CurveSource source;
     const std::filesystem::path file = table.string("file");
     source.file = file.is_absolute() ? file : case_directory / file;
@@ -62,6 +62,41 @@ fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& 
     source.segment_column = table.optional_string("segment_column").value_or("");
     if (table.has("segments")) source.segments = table.labels("segments");
     if (table.has("fitted")) source.fitted = read_fitted(table, fit::Fitted::force);
+    return source;
+}
+
+namespace {
+
+// An uncertainty given as a number (every row) or as a column name: sets one of the two.
+void read_uncertainty(TableReader& table, const std::string& key, std::optional<double>& number, std::string& column) {
+    if (!table.has(key)) return;
+    if (table.is_string(key)) {
+        column = table.string(key);
+    } else {
+        number = table.number(key);
+    }
+}
+
+}  // namespace
+
+fit::ReboundSource read_rebound_data(TableReader& table, const std::filesystem::path& case_directory) {
+    table.reject_unknown({"kind", "file", "name", "velocity", "restitution", "contact_time", "restitution_error",
+                          "contact_time_error", "mass", "units"});
+    fit::ReboundSource source;
+    const std::filesystem::path file = table.string("file");
+    source.file = file.is_absolute() ? file : case_directory / file;
+    source.name = table.optional_string("name").value_or("");
+    source.velocity_column = table.string("velocity");
+    source.restitution_column = table.string("restitution");
+    source.contact_time_column = table.optional_string("contact_time").value_or("");
+    read_uncertainty(table, "restitution_error", source.restitution_error, source.restitution_error_column);
+    read_uncertainty(table, "contact_time_error", source.contact_time_error, source.contact_time_error_column);
+    source.mass = table.optional_number("mass");
+    if (auto units = table.table("units")) {
+        units->reject_unknown({"velocity", "time"});
+        source.velocity_unit = read_unit(*units, "velocity", "m/s");
+        source.time_unit = read_unit(*units, "time", "s");
+    }
     return source;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mdr/fit/curve.hpp"
+#include "mdr/fit/rebound.hpp"
 #include "toml_reader.hpp"
 
 namespace mdr::io {
@@ -17,6 +18,12 @@ namespace mdr::io {
 /// relate the keys (one depth source, the spring constant with the AFM columns, ...) are load_curve's, checked
 /// when the curve is loaded.
 fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory);
+
+/// The ReboundSource of a `[[fit.data]]` table with `kind = "rebound"`: `file`, `name`, the column keys
+/// `velocity`, `restitution`, `contact_time`, the uncertainties `restitution_error` and `contact_time_error` (a
+/// number, or a column name), `mass` and `units` (`velocity`: m/s with an SI prefix or a factor, `time`). Refuses
+/// unknown keys and values of the wrong type; the other rules are load_rebound's.
+fit::ReboundSource read_rebound_data(TableReader& table, const std::filesystem::path& case_directory);
 
 /// The string at `key`, one of `choices` (`fallback` when absent); mdr::InvalidInput listing them otherwise.
 std::string choice(TableReader& table, const std::string& key, const std::vector<std::string>& choices,

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/os.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -29,9 +30,14 @@ void write_bands(const std::filesystem::path& path, const std::string& x_name, c
     file.close();
 }
 
-// The first curve's driving history as a `[load]` body: at most about 400 points, the contact point removed.
-std::string load_of_first_curve(const fit::FitResult& result) {
-    const auto& curve = result.curves.front();
+// The name of what a curve's entry compares.
+const char* quantity_name(const fit::CurveFit& curve) {
+    if (curve.rebound) return *curve.rebound == fit::ReboundQuantity::restitution ? "restitution" : "contact_time";
+    return curve.fitted == fit::Fitted::force ? "force" : "depth";
+}
+
+// A driving history as a `[load]` body: at most about 400 points, the contact point removed.
+std::string load_of_curve(const fit::CurveFit& curve) {
     const bool depth_driven = curve.fitted == fit::Fitted::force;
     std::string history;
     const std::size_t stride = std::max<std::size_t>(1, curve.time.size() / 400);
@@ -42,6 +48,25 @@ std::string load_of_first_curve(const fit::FitResult& result) {
         if (last) break;
     }
     return fmt::format("control = \"{}\"\nhistory = [{}]\n", depth_driven ? "displacement" : "force", history);
+}
+
+// fitted.toml: the case with the fitted values and its own `[load]`; without one, the first measured curve's
+// history, or for rebound data alone the first impact (its speed, and the data set's mass as `indenter.mass`).
+std::string fitted_text(const FitCase& fit_case, const fit::FitResult& result) {
+    if (fit_case.had_load) return fitted_case_text(fit_case, result.values, "");
+    const auto curve = std::find_if(result.curves.begin(), result.curves.end(),
+                                    [](const fit::CurveFit& entry) { return !entry.rebound; });
+    if (curve != result.curves.end()) return fitted_case_text(fit_case, result.values, load_of_curve(*curve));
+    const auto& rebound = result.curves.front();
+    FitCase impact_case = fit_case;
+    if (impact_case.model.has_number("indenter.mass")) {
+        impact_case.model.set_number("indenter.mass", rebound.mass);
+    } else {
+        const std::string indenter = impact_case.model.take_table("indenter");
+        impact_case.model.set_table("indenter", fmt::format("mass = {}\n{}", rebound.mass, indenter));
+    }
+    return fitted_case_text(impact_case, result.values,
+                            fmt::format("control = \"impact\"\nvelocity = {}\n", rebound.time.front()));
 }
 
 }  // namespace
@@ -67,15 +92,21 @@ std::string fit_json(const fit::FitResult& result) {
     json["undetermined"] = undetermined.is_null() ? nlohmann::ordered_json::object() : undetermined;
     nlohmann::ordered_json curves = nlohmann::ordered_json::array();
     for (const auto& curve : result.curves) {
-        curves.push_back({{"name", curve.name},
-                          {"fitted", curve.fitted == fit::Fitted::force ? "force" : "depth"},
-                          {"points", curve.time.size()},
-                          {"contact_point", number(curve.contact_depth)},
-                          {"contact_point_error", number(curve.contact_depth_error)},
-                          {"baseline", number(curve.baseline)},
-                          {"baseline_error", number(curve.baseline_error)},
-                          {"noise", number(curve.noise)},
-                          {"rms_residual", number(curve.rms_residual)}});
+        nlohmann::ordered_json entry{{"name", curve.name},
+                                     {"kind", curve.rebound ? "rebound" : "curve"},
+                                     {"fitted", quantity_name(curve)},
+                                     {"points", curve.time.size()}};
+        if (curve.rebound) {
+            entry["mass"] = number(curve.mass);
+        } else {
+            entry["contact_point"] = number(curve.contact_depth);
+            entry["contact_point_error"] = number(curve.contact_depth_error);
+            entry["baseline"] = number(curve.baseline);
+            entry["baseline_error"] = number(curve.baseline_error);
+        }
+        entry["noise"] = number(curve.noise);
+        entry["rms_residual"] = number(curve.rms_residual);
+        curves.push_back(entry);
     }
     json["curves"] = curves;
     json["rms_residual"] = number(result.rms_residual);
@@ -100,8 +131,10 @@ void write_fit_result(const std::filesystem::path& directory, const FitCase& fit
     auto csv = fmt::output_file((directory / "curves.csv").string());
     csv.print("curve,t,measured,model,residual\n");
     for (const auto& curve : result.curves) {
+        // Rebound data: one row per impact, named NAME:restitution or NAME:contact_time, t holding the speed v0.
+        const std::string name = curve.rebound ? curve.name + ":" + quantity_name(curve) : curve.name;
         for (std::size_t i = 0; i < curve.time.size(); ++i) {
-            csv.print("{},{},{},{},{}\n", curve.name, curve.time[i], curve.measured[i], curve.model[i],
+            csv.print("{},{},{},{},{}\n", name, curve.time[i], curve.measured[i], curve.model[i],
                       curve.model[i] - curve.measured[i]);
         }
     }
@@ -116,7 +149,7 @@ void write_fit_result(const std::filesystem::path& directory, const FitCase& fit
 
     auto toml = fmt::output_file((directory / "fitted.toml").string());
     toml.print("# The case with the fitted values of mdr fit (fit.json has their errors).\n{}\n",
-               fitted_case_text(fit_case, result.values, fit_case.had_load ? "" : load_of_first_curve(result)));
+               fitted_text(fit_case, result));
     toml.close();
 }
 

@@ -434,6 +434,10 @@ def test_every_plot_function_runs_headless(result_directory, file_result, tmp_pa
         "fit_curves": lambda: mdr.plot.fit_curves(
             {"curve": np.array(["a", "a", "b"]), "t": np.array([0.0, 1.0, 0.0]), "measured": np.array([0.0, 1.0, 2.0]),
              "model": np.array([0.0, 1.1, 2.0]), "residual": np.array([0.0, 0.1, 0.0])}),
+        "fit_rebounds": lambda: mdr.plot.fit_rebounds(
+            {"curve": np.array(["a", "d:restitution", "d:restitution", "d:contact_time"]),
+             "t": np.array([0.0, 0.1, 1.0, 0.1]), "measured": np.array([1.0, 0.5, 0.6, 2e-3]),
+             "model": np.array([1.0, 0.51, 0.6, 2e-3]), "residual": np.array([0.0, 0.01, 0.0, 0.0])}),
         "sweep_map": lambda: mdr.plot.sweep_map(
             {"material.tau1": np.array([0.1, 1.0, 0.1, 1.0]), "material.G1": np.array([1.0, 1.0, 2.0, 2.0]),
              "max_force": np.array([1.0, 2.0, 3.0, 4.0])}, "max_force"),

@@ -12,6 +12,7 @@
 
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/fit/curve.hpp"
+#include "mdr/fit/rebound.hpp"
 
 namespace mdr::fit {
 
@@ -76,15 +77,25 @@ using ModelBuilder = std::function<drivers::ContactCase(const std::vector<double
 struct FitProblem {
     ModelBuilder model;                       ///< see ModelBuilder
     std::vector<FreeParameter> parameters;    ///< the free parameters of the model
-    std::vector<Curve> curves;                ///< one or more measured curves; one material for all
+    std::vector<Curve> curves;                ///< measured curves; one material for all
     FitSettings settings;                     ///< see FitSettings
     /// Extra residuals P v, one per row of P (each row as long as `parameters`, v their values), added to the
     /// cost: a penalty such as a spectrum's smoothing. They move the optimum but do not enter the statistics
     /// (residual, errors, AIC, BIC are those of the data).
     std::vector<std::vector<double>> penalty{};
+    /// Rebound data: impacts of the case's indenter at measured approach speeds, the same material as the curves
+    /// (at least one curve or one rebound data set).
+    std::vector<ReboundData> rebounds{};
 };
 
-/// One curve's data, model and residual at the points used by the fit.
+/// What an entry of rebound data in FitResult::curves compares.
+enum class ReboundQuantity {
+    restitution,   ///< the coefficient of restitution e [-]
+    contact_time,  ///< the contact time T [s]
+};
+
+/// One curve's data, model and residual at the points used by the fit; or one quantity of a rebound data set (its
+/// `time` then holds the approach speeds v0 [m/s], `drive` is empty, contact point and baseline are 0).
 struct CurveFit {
     std::string name;               ///< Curve::name
     Fitted fitted = Fitted::force;  ///< what this curve fitted (fitted_of)
@@ -99,6 +110,9 @@ struct CurveFit {
     double baseline_error = 0.0;    ///< its standard error [N] (0 unless fitted)
     double noise = 0.0;             ///< the measurement noise of the fitted quantity [N or m]
     double rms_residual = 0.0;      ///< RMS of model - measured
+    /// Rebound data only: the quantity compared (`fitted` is then meaningless); nullopt for a measured curve.
+    std::optional<ReboundQuantity> rebound{};
+    double mass = 0.0;              ///< rebound data only: the impactor's mass [kg]
 };
 
 /// A function of the fitted material on a grid, with its 95 % confidence band (first order: the delta method with
@@ -158,7 +172,7 @@ struct FitResult {
 /// What curve `c` of the problem fits: its own Curve::fitted, else FitSettings::fitted.
 Fitted fitted_of(const FitProblem& problem, std::size_t c);
 
-/// Checks a problem (one line per rule: bounds, start values, curves with enough points and a contact).
+/// Checks a problem (one line per rule: bounds, start values, curves or rebound data, enough points, a contact).
 /// Throws mdr::InvalidInput.
 void validate(const FitProblem& problem);
 

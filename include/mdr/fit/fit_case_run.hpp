@@ -2,6 +2,7 @@
 /// \file
 /// A fit case from file to result: its curves loaded, the problem built and solved.
 
+#include <optional>
 #include <vector>
 
 #include "mdr/fit/fit.hpp"
@@ -12,7 +13,19 @@ namespace mdr::fit {
 /// The curves of a fit case, loaded and validated; errors name `fit.data[i].KEY`.
 std::vector<Curve> load_curves(const io::FitCase& fit_case);
 
-/// The problem of a fit case with its curves (from load_curves, or arrays given by a caller).
-FitProblem make_problem(const io::FitCase& fit_case, std::vector<Curve> curves);
+/// The rebound data of a fit case, loaded and validated (a data set without its own mass takes the case's
+/// `indenter.mass`); errors name `fit.data[i].KEY`.
+std::vector<ReboundData> load_rebounds(const io::FitCase& fit_case);
+
+/// The case's `indenter.mass`, when it has one (the mass of rebound data that give none).
+std::optional<double> case_mass(const io::FitCase& fit_case);
+
+/// Throws mdr::InvalidInput (key `fit.candidates`) when a fit case with `fit.candidates` or `[fit.spectrum]` has
+/// rebound data (`rebound_sets` > 0): the model choice fits measured curves only.
+void require_curves_only_for_model_choice(const io::FitCase& fit_case, std::size_t rebound_sets);
+
+/// The problem of a fit case with its curves and rebound data (from load_curves and load_rebounds, or arrays given
+/// by a caller).
+FitProblem make_problem(const io::FitCase& fit_case, std::vector<Curve> curves, std::vector<ReboundData> rebounds = {});
 
 }  // namespace mdr::fit

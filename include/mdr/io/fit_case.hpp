@@ -11,6 +11,7 @@
 #include "mdr/fit/candidate_settings.hpp"
 #include "mdr/fit/curve.hpp"
 #include "mdr/fit/fit.hpp"
+#include "mdr/fit/rebound.hpp"
 #include "mdr/io/case_template.hpp"
 
 namespace mdr::io {
@@ -25,6 +26,9 @@ struct FitCase {
     std::vector<fit::CurveSource> data;          ///< `[[fit.data]]`, paths relative to the case file's directory
     bool had_load = false;                       ///< the case gave its own `[load]`
     fit::CandidateSettings model_choice{};       ///< `fit.candidates` and `[fit.spectrum]` (fit::fit_candidates)
+    std::vector<fit::ReboundSource> rebounds{};  ///< `[[fit.data]]` with `kind = "rebound"`
+    std::vector<std::string> data_keys{};        ///< the table of each of `data` in messages, e.g. `fit.data[2]`
+    std::vector<std::string> rebound_keys{};     ///< the table of each of `rebounds`
 };
 
 /// Parses a fit case. A free key must name a number of `[material]` or `[indenter]`; its start value is
