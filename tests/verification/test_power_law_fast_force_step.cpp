@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -96,6 +97,8 @@ struct FastStep {
     double beta;
 };
 
+void PrintTo(const FastStep& step, std::ostream* out) { *out << step.shape << ", beta = " << step.beta; }
+
 class PowerLawFastForceStepDefaults : public ::testing::TestWithParam<FastStep> {};
 
 TEST_P(PowerLawFastForceStepDefaults, MeetTheCreepOfTheModelWithinTwoTenThousandths) {
@@ -117,7 +120,11 @@ TEST_P(PowerLawFastForceStepDefaults, MeetTheCreepOfTheModelWithinTwoTenThousand
 
 INSTANTIATE_TEST_SUITE_P(Shapes, PowerLawFastForceStepDefaults,
                          ::testing::Values(FastStep{"sphere", 0.05}, FastStep{"sphere", 0.2},
-                                           FastStep{"sphere", 0.5}, FastStep{"cone", 0.2}));
+                                           FastStep{"sphere", 0.5}, FastStep{"cone", 0.2}),
+                         [](const auto& param_info) {  // e.g. sphere_beta_0_05
+                             return fmt::format("{}_beta_0_{:02d}", param_info.param.shape,
+                                                static_cast<int>(std::lround(100.0 * param_info.param.beta)));
+                         });
 
 // Spring control, F = k (z - d), with a base step z = z0 t / ramp, then held: eq. (34) with the spring,
 // d^(3/2) = 3/(16 sqrt(R)) int J(t - s) dF(s), a Volterra equation for F. Solved here by product integration: F
