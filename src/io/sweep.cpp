@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/drivers/step_observer.hpp"
 #include "mdr/drivers/work_estimate.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
@@ -151,18 +152,31 @@ private:
     std::vector<std::thread> threads_;
 };
 
+// Ends a run of the sweep when the sweep is being stopped (interrupted or failed), checked at every step.
+class StopWhenAsked : public drivers::StepObserver {
+public:
+    explicit StopWhenAsked(const std::atomic<bool>& stop) : stop_(stop) {}
+    void observe(const drivers::StepState&) override {}
+    bool stop(const drivers::StepState&) override { return stop_.load(std::memory_order_relaxed); }
+
+private:
+    const std::atomic<bool>& stop_;
+};
+
 // The order in which `threads` (> 1) threads take the rows: the costliest first (drivers::estimate_work, steps x
 // elements; a point that cannot be built costs 0, its run fails at once), ties in grid order, so that a parallel
 // sweep does not end waiting on a large point started last. The estimates are spread over the threads too.
+// `stop` ends the estimates early (the sweep was interrupted; the order is then of no use).
 std::vector<std::size_t> costliest_first(const CaseTemplate& model, const std::vector<std::string>& keys,
-                                         const std::vector<SweepRow>& rows, unsigned threads) {
+                                         const std::vector<SweepRow>& rows, unsigned threads,
+                                         const std::atomic<bool>& stop) {
     std::vector<double> costs(rows.size(), 0.0);
     std::atomic<std::size_t> next{0};
-    std::atomic<bool> ended{false};
+    std::atomic<bool> ended{false};  // set by the estimators' Workers on their way out, apart from the sweep's stop
     {
         Workers estimators(ended);
         estimators.start(threads, [&] {
-            for (std::size_t r = next++; r < rows.size(); r = next++) {
+            for (std::size_t r = next++; r < rows.size() && !ended && !stop; r = next++) {
                 try {
                     const auto contact_case = case_at(model, keys, rows[r].point);
                     const auto numerics = drivers::resolve_numerics(contact_case);
@@ -218,26 +232,53 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
     const auto threads = static_cast<unsigned>(std::min<std::size_t>(std::max(jobs, 1u), total));
     std::vector<std::size_t> order(total);
     std::iota(order.begin(), order.end(), std::size_t{0});
-    if (threads > 1) order = costliest_first(model, keys, rows, threads);
-    std::atomic<std::size_t> next{0};
     std::atomic<bool> stop{false};
+    if (threads > 1) {
+        // The estimates run while this thread keeps reporting progress, so that the caller can stop them too.
+        std::mutex estimates_mutex;
+        std::condition_variable estimates_done;
+        bool estimated = false;
+        std::thread estimating([&] {
+            std::vector<std::size_t> costliest;
+            try {
+                costliest = costliest_first(model, keys, rows, threads, stop);
+            } catch (const std::exception&) {  // no threads for the estimates: the points go out in grid order
+            }
+            const std::lock_guard lock(estimates_mutex);
+            if (!costliest.empty()) order = std::move(costliest);
+            estimated = true;
+            estimates_done.notify_one();
+        });
+        try {
+            std::unique_lock lock(estimates_mutex);
+            while (!estimates_done.wait_for(lock, std::chrono::milliseconds(200), [&] { return estimated; })) {
+                lock.unlock();
+                if (progress) progress(0, total);
+                lock.lock();
+            }
+        } catch (...) {
+            stop = true;
+            estimating.join();
+            throw;
+        }
+        estimating.join();
+    }
+    std::atomic<std::size_t> next{0};
     std::size_t done = 0;
     std::mutex mutex;
     std::condition_variable finished;
-    const auto stop_requested = [&](double) {
-        if (stop) throw Interrupted();
-    };
+    StopWhenAsked stop_observer(stop);
+    const drivers::StepObservers observers{&stop_observer};
     const auto work = [&] {
         for (std::size_t n = next++; n < total && !stop; n = next++) {
             SweepRow& row = rows[order[n]];
             try {
                 const auto contact_case = case_at(model, keys, row.point);
                 const auto start = std::chrono::steady_clock::now();
-                const auto result = drivers::run_case(contact_case, stop_requested);
+                const auto result = drivers::run_case(contact_case, {}, observers);
+                if (result.stopped) return;  // interrupted: the row stays empty, the sweep is abandoned
                 const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 row.summary = summarize(contact_case, result, wall);
-            } catch (const Interrupted&) {
-                return;
             } catch (const std::exception& error) {
                 row.error = error.what();
             }
