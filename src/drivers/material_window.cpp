@@ -39,7 +39,15 @@ rheology::TimeWindow material_window(const LoadHistory& history, double end_time
     std::sort(frequencies.begin(), frequencies.end());
     frequencies.erase(std::unique(frequencies.begin(), frequencies.end()), frequencies.end());
     if (numerics.time_step) require_positive("numerics.time_step", step);
-    const double shortest = std::min(step / 5.0, duration / 10.0);
+    // A fast load change (a ramp shorter than the step, fast_change_times) is taken on steps of at most its
+    // length over min_steps_per_segment, and the rows during and just after it need the material at such lags.
+    const auto changes = fast_change_times(history, end_time, step, min_steps_per_segment);
+    double fastest = duration;
+    for (std::size_t i = 1; i < changes.size(); ++i) {
+        if (changes[i] > changes[i - 1]) fastest = std::min(fastest, changes[i] - changes[i - 1]);
+    }
+    const double shortest =
+        std::min({step / 5.0, duration / 10.0, fastest / static_cast<double>(min_steps_per_segment) / 5.0});
     return {shortest, duration, std::move(frequencies)};
 }
 

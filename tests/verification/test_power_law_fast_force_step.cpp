@@ -1,8 +1,9 @@
 // A power-law material under a fast force step (issue 12): a 1e-4 s force ramp to F0, then a hold to 10 s. The
 // series' creep J ~ t^beta changes on every scale from its shortest time on, so after each fast load change the
 // default steps are graded (resolve_numerics, grade_after_changes); the default run meets the creep of the power
-// law itself, eq. (34) with the exact J of the model (not of its series), to 2e-4 for beta <= 0.5; under spring
-// control a fast base step likewise (against the Volterra equation of eq. (34) with the spring, solved here).
+// law itself, eq. (34) with the exact J of the model (not of its series), to 5e-4 for beta <= 0.5 from the
+// certified window on (a fast ramp extends it to a fifth of its own steps); under spring control a fast base step
+// likewise (against the Volterra equation of eq. (34) with the spring, solved here).
 //   eq. (34)/(35): F_el(a(t)) = G int J(t - s) dF(s); sphere d^(3/2) = 3/(16 sqrt(R)) int J dF, a cone (slope theta)
 //   F_el = 8 G d^2 / (pi tan theta), so d^2 = (pi tan theta / 8) int J dF
 //   power law G(t) = G0 (t/t0)^-beta: J(t) = (t/t0)^beta / (G0 Gamma(1 - beta) Gamma(1 + beta))
@@ -101,21 +102,24 @@ void PrintTo(const FastStep& step, std::ostream* out) { *out << step.shape << ",
 
 class PowerLawFastForceStepDefaults : public ::testing::TestWithParam<FastStep> {};
 
-TEST_P(PowerLawFastForceStepDefaults, MeetTheCreepOfTheModelWithinTwoTenThousandths) {
+TEST_P(PowerLawFastForceStepDefaults, MeetTheCreepOfTheModelWithinFiveTenThousandths) {
     const auto [shape, beta] = GetParam();
     constexpr double end = 10.0;
     const auto result = testing::run_toml(fast_step(shape, beta, end, ""));
-    // From the series' certified window on after the change (its shortest lag: a fifth of the default step).
-    const double from = ramp + end / static_cast<double>(drivers::default_steps) / 5.0;
+    // From the series' certified window on (its shortest lag: a fifth of the ramp's steps, material_window), also
+    // during the ramp.
+    const double from = ramp / static_cast<double>(drivers::min_steps_per_segment) / 5.0;
     const double error = depth_error(result, shape, beta, from);
     RecordProperty("default_error", fmt::format("{:.2e}", error));
     RecordProperty("steps", std::to_string(result.steps));
-    // Measured: sphere 1.5e-5 (beta 0.05), 2.4e-5 (0.2), 1.9e-4 (0.5); cone 2.1e-5 (0.2). Before the grading
+    // Measured from the window's start (during the ramp too): sphere 1.4e-5 (beta 0.05), 2.4e-5 (0.2), 3.4e-4 (0.5);
+    // cone 1.0e-4 (0.2); from a fifth of the default step after the ramp: 1.5e-5, 2.4e-5, 1.9e-4; 2.1e-5. Before the grading
     // (uniform steps of a fifth of the series' node above the default step, 4478-9458 steps): 3.8e-3, 3.4e-2,
     // 1.2e-1; cone 2.7e-2.
-    EXPECT_LT(error, 2e-4) << shape << ", beta = " << beta;
-    // The cost: the default steps and the graded ones after the start and the ramp's two ends (measured ~2340).
-    EXPECT_LT(result.steps, drivers::default_steps * 5 / 4) << shape << ", beta = " << beta;
+    EXPECT_LT(error, 5e-4) << shape << ", beta = " << beta;
+    // The cost: the default steps and the graded ones after the start and the ramp's two ends, from the series'
+    // shortest time (measured ~3000).
+    EXPECT_LT(result.steps, drivers::default_steps * 8 / 5) << shape << ", beta = " << beta;
 }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, PowerLawFastForceStepDefaults,
@@ -189,7 +193,7 @@ spring_constant = {}
 history = [[0.0, 0.0], [{}, {}], [{}, {}]]
 )",
                                                       G0, beta, t0, R, k, ramp, z0, end, z0));
-    const double from = ramp + end / static_cast<double>(drivers::default_steps) / 5.0;
+    const double from = ramp / static_cast<double>(drivers::min_steps_per_segment) / 5.0;  // the window, as above
     double worst = 0.0, oracle_change = 0.0;
     for (std::size_t i = 0; i < result.time.size(); ++i) {
         if (result.time[i] < from) continue;
@@ -202,7 +206,7 @@ history = [[0.0, 0.0], [{}, {}], [{}, {}]]
     RecordProperty("oracle_change", fmt::format("{:.2e}", oracle_change));
     EXPECT_LT(oracle_change, 2e-5);  // the oracle's own grid: halving its growth changes it by less
     EXPECT_LT(worst, 2e-4);
-    EXPECT_LT(result.steps, drivers::default_steps * 5 / 4);
+    EXPECT_LT(result.steps, drivers::default_steps * 8 / 5);
 }
 
 TEST(PowerLawFastForceStep, UniformStepsConvergeAtLeastAtFirstOrder) {
