@@ -15,8 +15,8 @@ namespace mdr::drivers {
 /// fifth of the largest time step (`numerics.time_step`, or the duration over default_steps, at most a harmonic
 /// period over default_steps_per_period), the smallest step resolve_numerics takes before snapshots (it shortens
 /// the default step to a fifth of a material time at most), and a fifth of the steps of a fast load change (the
-/// shortest time between fast_change_times over min_steps_per_segment); frequencies = the angular frequencies 2 pi f of the
-/// harmonic loads, at which the complex modulus is certified explicitly. An impact needs `load.end` and
+/// shortest time between fast_change_times over min_steps_per_segment); frequencies = the angular frequencies
+/// 2 pi f of the harmonic loads, at which the complex modulus is certified explicitly. An impact needs `load.end` and
 /// `numerics.time_step` (its time scales follow from the material). Throws mdr::InvalidInput naming the key that
 /// is missing or makes the window empty.
 rheology::TimeWindow material_window(const LoadHistory& history, double end_time, const NumericsOptions& numerics,
