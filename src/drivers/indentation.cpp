@@ -156,9 +156,8 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
                 // pause: F(d) = the force held, as under force control (eq. 19).
                 const double guess = depth + (depth - previous_depth);
                 const double scale = std::max(std::abs(depth - previous_depth), 1e-6 * depth_scale);
-                new_depth = holding ? solve_depth(foundation, depth, guess, scale, paused->held_force(), 0.0, 0.0)
-                                    : solve_depth(foundation, depth, guess, scale,
-                                                  spring ? stiffness * target : target, stiffness, 0.0);
+                const double right_side = holding ? paused->held_force() : spring ? stiffness * target : target;
+                new_depth = solve_depth(foundation, depth, guess, scale, right_side, holding ? 0.0 : stiffness, 0.0);
                 // A durometer's indenter stops at its full extension (reading 0): the stop takes the rest.
                 if (shore) new_depth = std::min(new_depth, shore->instrument.full_extension());
             }

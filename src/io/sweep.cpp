@@ -163,20 +163,38 @@ private:
     const std::atomic<bool>& stop_;
 };
 
+// Waits until `done` (guarded by `mutex`, signalled by `finished`) reaches `total`, calling `report(done)` every
+// 0.2 s and at the end (also when all ended before the first wait), outside the lock: the caller sees progress and
+// can stop the work by throwing, also while a long piece of it runs.
+void report_until_done(std::mutex& mutex, std::condition_variable& finished, const std::size_t& done,
+                       std::size_t total, const std::function<void(std::size_t)>& report) {
+    std::unique_lock lock(mutex);
+    do {
+        finished.wait_for(lock, std::chrono::milliseconds(200), [&] { return done == total; });
+        const std::size_t reported = done;
+        lock.unlock();
+        report(reported);
+        lock.lock();
+    } while (done < total);
+}
+
 // The order in which `threads` (> 1) threads take the rows: the costliest first (drivers::estimate_work, steps x
 // elements; a point that cannot be built costs 0, its run fails at once), ties in grid order, so that a parallel
-// sweep does not end waiting on a large point started last. The estimates are spread over the threads too.
-// `stop` ends the estimates early (the sweep was interrupted; the order is then of no use).
+// sweep does not end waiting on a large point started last. The estimates are spread over the threads too, while
+// this thread reports progress (0 points done) every 0.2 s, so that the caller can stop them by throwing.
 std::vector<std::size_t> costliest_first(const CaseTemplate& model, const std::vector<std::string>& keys,
                                          const std::vector<SweepRow>& rows, unsigned threads,
-                                         const std::atomic<bool>& stop) {
+                                         const std::function<void(std::size_t, std::size_t)>& progress) {
     std::vector<double> costs(rows.size(), 0.0);
     std::atomic<std::size_t> next{0};
-    std::atomic<bool> ended{false};  // set by the estimators' Workers on their way out, apart from the sweep's stop
+    std::size_t estimated = 0;
+    std::mutex mutex;
+    std::condition_variable finished;
     {
+        std::atomic<bool> ended{false};
         Workers estimators(ended);
         estimators.start(threads, [&] {
-            for (std::size_t r = next++; r < rows.size() && !ended && !stop; r = next++) {
+            for (std::size_t r = next++; r < rows.size() && !ended; r = next++) {
                 try {
                     const auto contact_case = case_at(model, keys, rows[r].point);
                     const auto numerics = drivers::resolve_numerics(contact_case);
@@ -184,9 +202,15 @@ std::vector<std::size_t> costliest_first(const CaseTemplate& model, const std::v
                 } catch (const std::exception&) {
                     costs[r] = 0.0;
                 }
+                const std::lock_guard lock(mutex);
+                ++estimated;
+                finished.notify_one();
             }
         });
-    }  // joined
+        report_until_done(mutex, finished, estimated, rows.size(), [&](std::size_t) {
+            if (progress) progress(0, rows.size());  // no point has run yet
+        });
+    }  // joined (also when progress throws: the Workers end the estimates)
     std::vector<std::size_t> order(rows.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return costs[a] > costs[b]; });
@@ -232,37 +256,8 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
     const auto threads = static_cast<unsigned>(std::min<std::size_t>(std::max(jobs, 1u), total));
     std::vector<std::size_t> order(total);
     std::iota(order.begin(), order.end(), std::size_t{0});
+    if (threads > 1) order = costliest_first(model, keys, rows, threads, progress);
     std::atomic<bool> stop{false};
-    if (threads > 1) {
-        // The estimates run while this thread keeps reporting progress, so that the caller can stop them too.
-        std::mutex estimates_mutex;
-        std::condition_variable estimates_done;
-        bool estimated = false;
-        std::thread estimating([&] {
-            std::vector<std::size_t> costliest;
-            try {
-                costliest = costliest_first(model, keys, rows, threads, stop);
-            } catch (const std::exception&) {  // no threads for the estimates: the points go out in grid order
-            }
-            const std::lock_guard lock(estimates_mutex);
-            if (!costliest.empty()) order = std::move(costliest);
-            estimated = true;
-            estimates_done.notify_one();
-        });
-        try {
-            std::unique_lock lock(estimates_mutex);
-            while (!estimates_done.wait_for(lock, std::chrono::milliseconds(200), [&] { return estimated; })) {
-                lock.unlock();
-                if (progress) progress(0, total);
-                lock.lock();
-            }
-        } catch (...) {
-            stop = true;
-            estimating.join();
-            throw;
-        }
-        estimating.join();
-    }
     std::atomic<std::size_t> next{0};
     std::size_t done = 0;
     std::mutex mutex;
@@ -289,18 +284,9 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
     };
     Workers workers(stop);
     workers.start(threads, work);
-    std::unique_lock lock(mutex);
-    do {
-        // Progress every 0.2 s and at the end (also when every point ended before the first wait): the caller sees
-        // it, and can stop the sweep (by throwing) also while a long point runs.
-        finished.wait_for(lock, std::chrono::milliseconds(200), [&] { return done == total; });
-        const std::size_t reported = done;
-        if (progress) {
-            lock.unlock();
-            progress(reported, total);
-            lock.lock();
-        }
-    } while (done < total);
+    report_until_done(mutex, finished, done, total, [&](std::size_t reported) {
+        if (progress) progress(reported, total);
+    });
     return rows;
 }
 
