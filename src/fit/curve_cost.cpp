@@ -139,8 +139,7 @@ CurveCost::Outcome CurveCost::evaluate_with(ForwardModel forward, double const* 
     // Column c of block `block` by a forward difference in coordinate `u`.
     const auto difference = [&](double& u, double* block, std::size_t columns, std::size_t c, double upper) {
         const double saved = u;
-        double step = difference_step * std::max(std::abs(u), 1.0);
-        if (u + step > upper) step = -step;  // a backward difference at the upper bound
+        const double step = one_sided_step(u, difference_step, upper);
         u += step;
         const Outcome outcome = residuals_at(shared.data(), nuisance.data(), forward, shifted.data());
         u = saved;

@@ -3,6 +3,8 @@
 /// The internal coordinates of a fit (internal to mdr_fit): the logarithm of a positive parameter, the value over
 /// a scale otherwise; and each curve's nuisance parameters (contact point and baseline).
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -32,5 +34,12 @@ struct ParameterScales {
 
 /// The scales of a problem: each linear parameter's scale is the larger of |start| and half its bound range.
 ParameterScales make_scales(const FitProblem& problem);
+
+/// The signed step of a one-sided difference in internal coordinate `u`: `relative` x max(|u|, 1), forward, or
+/// backward where the forward step would pass the coordinate's upper bound `upper`.
+inline double one_sided_step(double u, double relative, double upper) {
+    const double step = relative * std::max(std::abs(u), 1.0);
+    return u + step > upper ? -step : step;
+}
 
 }  // namespace mdr::fit

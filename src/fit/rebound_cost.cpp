@@ -72,8 +72,7 @@ bool ReboundCost::Evaluate(double const* const* parameters, double* residuals, d
     std::vector<double> shifted(n);
     for (std::size_t j = 0; j < k; ++j) {
         const double saved = shared[j];
-        double step = difference_step * std::max(std::abs(saved), 1.0);
-        if (saved + step > scales_.upper[j]) step = -step;  // a backward difference at the upper bound
+        const double step = one_sided_step(saved, difference_step, scales_.upper[j]);
         shared[j] += step;
         const bool done = residuals_at(shared.data(), shifted.data());
         shared[j] = saved;
