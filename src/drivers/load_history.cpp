@@ -19,6 +19,14 @@ LoadHistory::LoadHistory(std::vector<LoadPoint> points, std::string key) : point
                                "times must not go backwards (previous point is at t = " +
                                    format_value(points_[i - 1].time) + ")");
         }
+        // The drivers step along each segment at its rate (value - previous) / (t - previous): a double must hold it.
+        if (i > 0 && points_[i].time > points_[i - 1].time &&
+            !std::isfinite((points_[i].value - points_[i - 1].value) / (points_[i].time - points_[i - 1].time))) {
+            throw InvalidInput(item + ".value", format_value(points_[i].value),
+                               "the rate from the previous point (t = " + format_value(points_[i - 1].time) +
+                                   ", value = " + format_value(points_[i - 1].value) +
+                                   ") is larger than a double can hold");
+        }
     }
 }
 

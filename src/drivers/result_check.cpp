@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/drivers/outcomes.hpp"
 
 namespace mdr::drivers {
 namespace {
@@ -19,7 +20,7 @@ void check_column(const char* name, const std::vector<double>& values, const std
     }
 }
 
-void check_value(const char* name, double value) {
+void check_value(const std::string& name, double value) {
     if (!std::isfinite(value)) not_finite(fmt::format("{} = {}", name, value));
 }
 
@@ -47,40 +48,8 @@ void require_finite_result(const IndentationResult& result) {
             }
         }
     }
-    if (result.impact) {
-        check_value("restitution", result.impact->restitution);
-        check_value("contact_time", result.impact->contact_time);
-        check_value("rebound_velocity", result.impact->rebound_velocity);
-        check_value("dissipated_energy", result.impact->dissipated_energy);
-        if (const auto& oblique = result.impact->oblique) {
-            check_value("tangential_restitution", oblique->tangential_restitution);
-            check_value("rebound_tangential_velocity", oblique->rebound_tangential_velocity);
-            check_value("rebound_spin", oblique->rebound_spin);
-            check_value("rebound_angle", oblique->rebound_angle);
-            check_value("impulse_ratio", oblique->impulse_ratio);
-            check_value("max_tangential_force", oblique->max_tangential_force);
-            check_value("dissipated_energy_material", oblique->material_dissipation);
-            check_value("dissipated_energy_friction", oblique->friction_dissipation);
-        }
-    }
-    if (result.tangential) {
-        check_value("max_tangential_force", result.tangential->max_force);
-        if (result.tangential->min_stick_radius) check_value("min_stick_radius", *result.tangential->min_stick_radius);
-        if (const auto& energy = result.tangential->dissipated_energy_per_cycle) {
-            check_value("dissipated_energy_per_cycle", *energy);
-        }
-        if (result.tangential->sliding_from) check_value("sliding_from", *result.tangential->sliding_from);
-    }
-    if (const auto& harmonic = result.harmonic) {
-        check_value("depth_amplitude", harmonic->depth_amplitude);
-        check_value("force_amplitude", harmonic->force_amplitude);
-        check_value("phase_angle", harmonic->phase);
-        for (const auto& [name, value] : {std::pair{"storage_stiffness", harmonic->storage_stiffness},
-                                          std::pair{"loss_stiffness", harmonic->loss_stiffness},
-                                          std::pair{"loss_tangent", harmonic->loss_tangent}}) {
-            if (value) check_value(name, *value);
-        }
-        check_value("normal_dissipated_energy_per_cycle", harmonic->dissipated_energy);
+    for (const auto& [name, value] : outcomes(result)) {
+        if (const double* number = std::get_if<double>(&value)) check_value(name, *number);
     }
     check_value("time_step", result.numerics.time_step);
     check_value("half_width", result.numerics.half_width);

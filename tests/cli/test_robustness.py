@@ -37,6 +37,11 @@ REFUSED = [
     ("history-over-1e308-seconds",
      case_text(load='[load]\ncontrol = "displacement"\nhistory = [[-1e308, 0.0], [1e308, 1.0e-4]]\n', numerics=""),
      ["load.history", "larger than a double can hold"]),
+    # Found by the fuzzer: the approach's rate, 1e308 m over 0.5 s, overflows (it ended in F = nan at t = 0.5 s).
+    ("history-rate-over-a-double",
+     case_text(load='[load]\ncontrol = "displacement"\nhistory = [[0.0, -1e308], [0.5, 5.0e-5]]\nend = 2.0\n',
+               numerics=""),
+     ["load.history[1].value = 5e-05", "rate from the previous point", "larger than a double can hold"]),
     ("time-step-of-1e-15-s", case_text(numerics="[numerics]\ntime_step = 1e-15\n"),
      ["numerics.max_element_steps", "1e+15 steps", "numerics.time_step"]),
     # Depths of 1e-240 m: the forces underflow and the indenter never rebounds within the default time limit.

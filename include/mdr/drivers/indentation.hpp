@@ -119,8 +119,8 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
 IndentationResult run_impact(const ContactCase& contact_case, const ProgressObserver& progress = {},
                              const StepObservers& observers = {});
 
-/// Throws std::runtime_error naming the first value of `result` that is not finite (a column at a time, an impact or
-/// tangential outcome, a snapshot), so that no NaN or infinity is ever reported as a result.
+/// Throws std::runtime_error naming the first value of `result` that is not finite (a column at a time, a snapshot,
+/// one of its outcomes()), so that no NaN or infinity is ever reported as a result.
 void require_finite_result(const IndentationResult& result);
 
 /// Runs any case: run_impact for control = impact, run_indentation otherwise, with the caller's `observers` after

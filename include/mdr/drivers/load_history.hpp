@@ -16,7 +16,8 @@ struct LoadPoint {
 
 /// A piecewise-linear history. The body is undeformed before the first point; a first value other than 0 is a
 /// jump at the first time. Two points with the same time make a jump. Validated at construction: finite values,
-/// times never going backwards. Throws mdr::InvalidInput naming `key[i]`.
+/// times never going backwards, a rate between two points that a double can hold. Throws mdr::InvalidInput naming
+/// `key[i]`.
 class LoadHistory {
 public:
     /// `key` names the history in messages, e.g. `load.history`.

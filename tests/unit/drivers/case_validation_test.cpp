@@ -55,6 +55,13 @@ TEST(CaseValidation, AForgottenEndTimeIsRefusedNotARunOfNoSteps) {
     EXPECT_EQ(key_of([&] { run_case(contact_case); }), "load.end");
 }
 
+TEST(CaseValidation, AHistoryWhoseRateOverflowsIsRefusedNotANaNForce) {
+    // 1e308 m over 0.5 s: the rate 2e308 m/s is beyond a double (the fuzzer's approach that ended in F = nan).
+    EXPECT_EQ(key_of([] { LoadHistory({{0.0, -1e308}, {0.5, 5e-5}}, "load.history"); }), "load.history[1].value");
+    EXPECT_EQ(key_of([] { LoadHistory({{0.0, -1e307}, {0.5, 5e-5}}, "load.history"); }), "");
+    EXPECT_EQ(key_of([] { LoadHistory({{0.0, 0.0}, {0.0, 1.0}}, "load.history"); }), "");  // a jump has no rate
+}
+
 TEST(CaseValidation, EveryRuleNamesItsKey) {
     const auto expect_key = [](const std::string& key, auto change) {
         auto contact_case = creep_test();
