@@ -59,7 +59,7 @@ mdr::fit::Curve synthetic_curve(const std::string& true_material, std::size_t po
         depth[i] = depth_at(time[i]);
         history.push_back({time[i], std::max(depth[i], 0.0)});
     }
-    model.history = mdr::drivers::LoadHistory(std::move(history), "load.history");
+    model.load.history = mdr::drivers::LoadHistory(std::move(history), "load.history");
     model.end_time = time.back();
     model.numerics.elements = 2000;
     model.numerics.time_step = 2.2 / static_cast<double>(points - 1);

@@ -16,12 +16,18 @@ void bind_control_registry(py::module_& module) {
         [] {
             py::list rows;
             for (const drivers::ControlKind& kind : drivers::controls()) {
+                py::list keys;
+                for (const drivers::ControlKey& key : kind.keys) {
+                    keys.append(py::dict("key"_a = key.key, "unit"_a = key.unit, "documentation"_a = key.documentation,
+                                         "required"_a = key.required));
+                }
                 rows.append(py::dict("name"_a = kind.name, "documentation"_a = kind.documentation,
-                                     "column"_a = kind.column, "keys"_a = kind.keys));
+                                     "column"_a = kind.column, "keys"_a = keys, "other_keys"_a = kind.other_keys));
             }
             return rows;
         },
-        "The registry of controls (name, documentation, history column, keys), for the docs.");
+        "The registry of controls (name, documentation, history column, `[load]` keys with units, keys of other "
+        "tables), for the docs.");
     module.def(
         "_tangential_controls",
         [] {

@@ -13,7 +13,7 @@ namespace mdr::drivers {
 namespace {
 
 void validate_history(const ContactCase& contact_case) {
-    const auto& points = contact_case.history.points();
+    const auto& points = contact_case.load.history->points();
     if (contact_case.control == Control::force) {
         for (std::size_t i = 0; i < points.size(); ++i) {
             if (points[i].value < 0.0) {
@@ -23,7 +23,7 @@ void validate_history(const ContactCase& contact_case) {
         }
     }
     if (contact_case.control == Control::displacement && contact_case.material.viscosity() > 0.0 &&
-        contact_case.history.has_jump()) {
+        contact_case.load.history->has_jump()) {
         throw InvalidInput(
             "load.history", "[...]",
             "a jump in depth needs an infinite force with a dashpot (eta > 0); give the jump a duration");
@@ -40,21 +40,21 @@ double history_minimum(const LoadHistory& history, double from, double to) {
 }
 
 void validate_harmonic(const ContactCase& contact_case) {
-    if (!contact_case.harmonic) return;
-    const HarmonicLoad& harmonic = *contact_case.harmonic;
+    if (!contact_case.load.harmonic) return;
+    const HarmonicLoad& harmonic = *contact_case.load.harmonic;
     if (contact_case.control == Control::impact) {
         throw InvalidInput("load.harmonic", "{...}", "not with control = \"impact\"");
     }
     validate(harmonic, "load.harmonic.");
     require_positive("load.harmonic.amplitude", harmonic.amplitude);
-    const double start = contact_case.history.start_time();
+    const double start = contact_case.load.history->start_time();
     if (harmonic.start < start) {
         throw InvalidInput("load.harmonic.start", format_value(harmonic.start),
                            "must not be before the first history time " + format_value(start) +
                                " (the harmonic is added to the history)");
     }
     if (contact_case.control == Control::force) {
-        const double lowest = history_minimum(contact_case.history, harmonic.start, harmonic.end);
+        const double lowest = history_minimum(*contact_case.load.history, harmonic.start, harmonic.end);
         if (harmonic.amplitude > lowest) {
             throw InvalidInput("load.harmonic.amplitude", format_value(harmonic.amplitude),
                                "must not exceed the smallest force of the history during the harmonic, " +
@@ -62,8 +62,8 @@ void validate_harmonic(const ContactCase& contact_case) {
         }
         // After its end the harmonic holds its end value (0 after whole cycles, up to the sine's round-off).
         const double held = harmonic.value(harmonic.end);
-        const double after = history_minimum(contact_case.history, harmonic.end,
-                                             std::max(harmonic.end, contact_case.history.end_time()));
+        const double after = history_minimum(*contact_case.load.history, harmonic.end,
+                                             std::max(harmonic.end, contact_case.load.history->end_time()));
         if (held + after < -1e-9 * harmonic.amplitude) {
             throw InvalidInput("load.harmonic.end", format_value(harmonic.end),
                                "the harmonic holds " + format_value(held) + " after its end, and with the history's " +
@@ -85,7 +85,7 @@ void validate_spring(const ContactCase& contact_case) {
     }
     require_positive("load.spring_constant", *contact_case.spring_constant);
     if (contact_case.shore) return;  // the durometer's own spring and base (validate_shore)
-    const auto& points = contact_case.history.points();
+    const auto& points = contact_case.load.history->points();
     if (points.front().value > 0.0) {
         throw InvalidInput("load.history[0].z", format_value(points.front().value),
                            "must be <= 0: the spring is unloaded at first contact, and the base starts at or "
@@ -108,7 +108,7 @@ void validate_shore(const ContactCase& contact_case) {
         throw InvalidInput("load.control", "\"shore\"",
                            "a Shore test is spring control with the durometer's own spring (no spring_constant)");
     }
-    if (contact_case.harmonic) throw InvalidInput("load.harmonic", "{...}", "not with control = \"shore\"");
+    if (contact_case.load.harmonic) throw InvalidInput("load.harmonic", "{...}", "not with control = \"shore\"");
     if (contact_case.tangential) throw InvalidInput("tangential", "[...]", "not with control = \"shore\"");
 }
 
@@ -120,7 +120,7 @@ void validate_force_pauses(const ContactCase& contact_case) {
     if (contact_case.control != Control::spring || contact_case.shore) {
         throw InvalidInput("load.force_pauses", "[...]", "only with control = \"spring\" (the feedback moves the base)");
     }
-    const double first = contact_case.history.start_time();
+    const double first = contact_case.load.history->start_time();
     for (std::size_t i = 0; i < pauses.size(); ++i) {
         const ForcePause& pause = pauses[i];
         const std::string key = fmt::format("load.force_pauses[{}]", i);
@@ -138,7 +138,7 @@ void validate_force_pauses(const ContactCase& contact_case) {
             throw InvalidInput(key, value, "must start after the previous pause ends at " +
                                                format_value(pauses[i - 1].end) + " (pauses in time order, apart)");
         }
-        if (const auto& harmonic = contact_case.harmonic; harmonic && harmonic->start < pause.end &&
+        if (const auto& harmonic = contact_case.load.harmonic; harmonic && harmonic->start < pause.end &&
                                                            harmonic->end > pause.start) {
             throw InvalidInput(key, value,
                                fmt::format("overlaps load.harmonic (t = {} .. {}): during a pause the feedback holds "
@@ -189,10 +189,10 @@ void validate_oblique(const ContactCase& contact_case) {
 }
 
 void validate_times(const ContactCase& contact_case) {
-    const double start = contact_case.history.start_time();
+    const double start = contact_case.load.history->start_time();
     const bool impact = contact_case.control == Control::impact;
     // A history of jumps only (all points at one time) may end where it starts: no step has a length.
-    const bool instant = contact_case.history.end_time() == start && contact_case.end_time == start;
+    const bool instant = contact_case.load.history->end_time() == start && contact_case.end_time == start;
     if (!(contact_case.end_time > start || instant) || (!impact && !std::isfinite(contact_case.end_time))) {
         throw InvalidInput("load.end", format_value(contact_case.end_time),
                            "must be after the first history time " + format_value(start) +
@@ -233,14 +233,15 @@ double incidence_velocity(double velocity, double incidence_deg) {
 
 void validate(const TangentialLoad& load) {
     require_non_negative("tangential.friction", load.friction);
-    if (load.history.has_value() == load.harmonic.has_value()) {
+    const auto& [history, harmonic] = load.load;
+    if (history.has_value() == harmonic.has_value()) {
         throw InvalidInput("tangential", "[...]", "give either history or amplitude, frequency, start, end");
     }
-    if (load.history && load.history->has_jump()) {
+    if (history && history->has_jump()) {
         throw InvalidInput("tangential.history", "[...]",
                            "must start at 0 and have no jumps (give each change a duration)");
     }
-    if (load.harmonic) validate(*load.harmonic, "tangential.");
+    if (harmonic) validate(*harmonic, "tangential.");
 }
 
 void validate(const HarmonicLoad& harmonic, const std::string& prefix) {
@@ -256,6 +257,9 @@ void validate(const HarmonicLoad& harmonic, const std::string& prefix) {
 
 void validate(const ContactCase& contact_case) {
     if (!contact_case.indenter) throw InvalidInput("indenter", "(missing)", "is required");
+    if (!contact_case.load.history) {
+        throw InvalidInput("load.history", "(missing)", "is required (under control = \"impact\" the point (0, 0))");
+    }
     validate_impact(contact_case);
     validate_oblique(contact_case);
     validate_history(contact_case);

@@ -161,11 +161,11 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
     resolved.output_every = numerics.output_every;
     resolved.elements = numerics.elements.value_or(default_elements);
     resolved.time_limit = contact_case.end_time;
-    const auto segments = static_cast<double>(contact_case.history.points().size());
+    const auto segments = static_cast<double>(contact_case.load.history->points().size());
     resolved.min_segment_steps = numerics.min_segment_steps.value_or(static_cast<std::size_t>(std::clamp(
         std::ceil(static_cast<double>(default_steps) / segments), 1.0, static_cast<double>(min_steps_per_segment))));
 
-    const double duration = contact_case.end_time - contact_case.history.start_time();
+    const double duration = contact_case.end_time - contact_case.load.history->start_time();
     if (numerics.time_step) {
         resolved.time_step = *numerics.time_step;
     } else if (duration > 0.0) {
@@ -195,7 +195,7 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
         resolved.time_step = 1.0;  // a history of jumps only: no step has a length
     }
     const std::optional<HarmonicLoad> harmonics[] = {
-        contact_case.harmonic, contact_case.tangential ? contact_case.tangential->harmonic : std::nullopt};
+        contact_case.load.harmonic, contact_case.tangential ? contact_case.tangential->load.harmonic : std::nullopt};
     for (const auto& harmonic : harmonics) {
         if (!numerics.time_step && harmonic) {
             resolved.time_step = std::min(resolved.time_step, harmonic->period() / default_steps_per_period);
@@ -207,8 +207,8 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
     } else if (indenter.is_flat_punch()) {
         resolved.half_width = indenter.max_radius();
     } else {
-        const double peak = contact_case.history.max_value() +
-                            (contact_case.harmonic ? std::abs(contact_case.harmonic->amplitude) : 0.0);
+        const double peak = contact_case.load.history->max_value() +
+                            (contact_case.load.harmonic ? std::abs(contact_case.load.harmonic->amplitude) : 0.0);
         const auto force_bound = [&](double force) {
             if (!(force > 0.0)) return 0.0;
             const double softest = 1.0 / contact_case.material.creep(std::max(duration, 0.0));
@@ -233,7 +233,7 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
                                : k * z;
                 };
                 const double creep = indenter.equivalent(std::min(force_bound(at_most(peak)), indenter.max_radius()));
-                base = paused_base_peak(contact_case.history, contact_case.force_pauses, peak, creep);
+                base = paused_base_peak(*contact_case.load.history, contact_case.force_pauses, peak, creep);
                 force = std::isfinite(base) ? at_most(base) : force;
             }
             // (An infinite bound: the force bound reaches the indenter's edge, which is then the half-width.)

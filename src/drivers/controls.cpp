@@ -1,29 +1,58 @@
 #include "mdr/drivers/controls.hpp"
 
+#include <algorithm>
+
+#include "mdr/drivers/shore.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::drivers {
 namespace {
 
+// The keys several controls share.
+ControlKey history(const char* unit, const char* column) {
+    return {"history", unit, std::string("the (t, ") + column + ") points of a piecewise-linear history", true};
+}
+ControlKey harmonic(const char* amplitude_unit) {
+    return {"harmonic", "",
+            std::string("{ amplitude [") + amplitude_unit +
+                "], frequency [Hz], start [s], end [s] }: a sine added to the history; its last full cycle is measured"};
+}
+ControlKey end() { return {"end", "s", "the last time simulated (default: the end of the history and harmonic)"}; }
+
 std::vector<ControlKind> rows() {
     return {
         {Control::displacement, "displacement", "the history prescribes the depth d(t); the force follows (eq. 16)",
-         "d", {"load.history"}},
+         "d", {history("s, m", "d"), harmonic("m"), end()}, {}},
         {Control::force, "force",
          "the history prescribes the force F(t) >= 0; the depth is solved for at each step (eq. 19)", "F",
-         {"load.history"}},
+         {history("s, N", "F"), harmonic("N"), end()}, {}},
         {Control::impact, "impact",
          "a rigid indenter of mass m meets the surface at speed v0 at t = 0 and moves by m d'' = -F (eq. 37) until it "
          "leaves",
-         "", {"load.velocity", "indenter.mass"}},
+         "",
+         {{"velocity", "m/s", "the approach speed v0 > 0 at first contact", true},
+          {"end", "s", "the latest end (default: from the contact time's scales)"},
+          {"tangential_velocity", "m/s", "an oblique impact: the centre's tangential speed at first contact"},
+          {"incidence_deg", "deg", "an oblique impact: the angle of the velocity from the normal (instead of "
+                                   "tangential_velocity)"},
+          {"spin", "rad/s", "an oblique impact: the sphere's spin at first contact"}},
+         {"indenter.mass"}},
         {Control::spring, "spring",
          "the history prescribes the base z(t) of a spring k in series with the massless indenter: F = k (z - d)", "z",
-         {"load.history", "load.spring_constant"}},
+         {history("s, m", "z"),
+          {"spring_constant", "N/m", "the spring's stiffness k > 0", true},
+          harmonic("m"),
+          {"force_pauses", "s", "[[start, end], ...]: the instrument's feedback holds the force over each"},
+          end()},
+         {}},
         // After "spring": control_kind(Control::spring) is the plain spring.
         {Control::spring, "shore",
          "a Shore A or D durometer (ASTM D2240, ISO 48-4): the standard's indenter pushed through its calibrated spring "
          "(spring control with a constant base); the reading H = 100 - d / 0.025 mm over time",
-         "", {"load.scale"}},
+         "",
+         {{"scale", "", "\"A\" (soft rubbers) or \"D\" (hard rubbers, plastics)", true},
+          {"duration", "s", "how long the foot rests on the sample (default " + format_value(shore_default_duration) + ")"}},
+         {}},
     };
 }
 
@@ -41,6 +70,23 @@ std::vector<TangentialControlKind> tangential_rows() {
 const std::vector<ControlKind>& controls() {
     static const std::vector<ControlKind> table = rows();
     return table;
+}
+
+const ControlKey* ControlKind::key_named(const std::string& key) const {
+    for (const ControlKey& entry : keys) {
+        if (entry.key == key) return &entry;
+    }
+    return nullptr;
+}
+
+std::vector<std::string> load_keys() {
+    std::vector<std::string> names{"control"};
+    for (const ControlKind& kind : controls()) {
+        for (const ControlKey& entry : kind.keys) {
+            if (std::find(names.begin(), names.end(), entry.key) == names.end()) names.push_back(entry.key);
+        }
+    }
+    return names;
 }
 
 const ControlKind& control_named(const std::string& name) {

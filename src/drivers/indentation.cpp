@@ -50,11 +50,11 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
     std::optional<TangentialStepper> tangential;
     if (contact_case.tangential) {
         tangential.emplace(*contact_case.tangential, material, foundation, contact_case.end_time);
-        const auto breakpoints = contact_case.tangential->breakpoints();
+        const auto breakpoints = contact_case.tangential->load.breakpoints();
         cuts.insert(cuts.end(), breakpoints.begin(), breakpoints.end());
     }
     std::optional<CycleMeasure> cycle;
-    if (const auto& harmonic = contact_case.harmonic) {
+    if (const auto& harmonic = contact_case.load.harmonic) {
         cycle.emplace(*harmonic, contact_case.end_time);
         const auto breakpoints = harmonic->breakpoints();
         cuts.insert(cuts.end(), breakpoints.begin(), breakpoints.end());
@@ -75,18 +75,18 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
     }
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-    auto nodes = make_time_grid(contact_case.history, contact_case.end_time, numerics.time_step,
+    auto nodes = make_time_grid(*contact_case.load.history, contact_case.end_time, numerics.time_step,
                                 numerics.min_segment_steps, cuts);
     const bool spring = contact_case.control == Control::spring;
     if (spring && !shore && nodes.size() > 1 && nodes[1].time == nodes[0].time) {
         nodes.erase(nodes.begin());  // the base starts where it is (z <= 0, validated): no jump from z = 0
     }
     if (numerics.grading_ratio > 0.0) {
-        const auto changes = fast_change_times(contact_case.history, contact_case.end_time, numerics.time_step,
+        const auto changes = fast_change_times(*contact_case.load.history, contact_case.end_time, numerics.time_step,
                                                min_steps_per_segment);
         nodes = grade_after_changes(nodes, changes, numerics.grading_ratio, numerics.first_graded_step);
     }
-    if (const auto& harmonic = contact_case.harmonic) {
+    if (const auto& harmonic = contact_case.load.harmonic) {
         for (auto& node : nodes) node.value += harmonic->value(node.time);
     }
     CoefficientCache cache(material);

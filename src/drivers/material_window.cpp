@@ -11,8 +11,7 @@
 
 namespace mdr::drivers {
 
-rheology::TimeWindow material_window(const LoadHistory& history, double end_time, const NumericsOptions& numerics,
-                                     const std::optional<HarmonicLoad>& harmonic,
+rheology::TimeWindow material_window(const Load& load, double end_time, const NumericsOptions& numerics,
                                      const std::optional<TangentialLoad>& tangential, bool impact) {
     const char* rule = "a material converted to a Prony series needs the problem's time window";
     if (impact && !std::isfinite(end_time)) {
@@ -21,6 +20,8 @@ rheology::TimeWindow material_window(const LoadHistory& history, double end_time
     if (impact && !numerics.time_step) {
         throw InvalidInput("numerics.time_step", "(missing)", std::string(rule) + ": give it for an impact");
     }
+    if (!load.history) throw InvalidInput("load.history", "(missing)", "is required");
+    const LoadHistory& history = *load.history;
     const double duration = end_time - history.start_time();
     if (!(duration > 0.0) || !std::isfinite(duration)) {
         throw InvalidInput("load.end", format_value(end_time),
@@ -28,13 +29,13 @@ rheology::TimeWindow material_window(const LoadHistory& history, double end_time
     }
     double step = numerics.time_step.value_or(duration / static_cast<double>(default_steps));
     std::vector<double> frequencies;
-    const std::pair<std::optional<HarmonicLoad>, const char*> loads[] = {
-        {harmonic, "load.harmonic."}, {tangential ? tangential->harmonic : std::nullopt, "tangential."}};
-    for (const auto& [load, prefix] : loads) {
-        if (!load) continue;
-        validate(*load, prefix);  // its frequency is used here, before the case is validated
-        if (!numerics.time_step) step = std::min(step, load->period() / default_steps_per_period);
-        frequencies.push_back(2.0 * std::numbers::pi * load->frequency);
+    const std::pair<std::optional<HarmonicLoad>, const char*> harmonics[] = {
+        {load.harmonic, "load.harmonic."}, {tangential ? tangential->load.harmonic : std::nullopt, "tangential."}};
+    for (const auto& [harmonic, prefix] : harmonics) {
+        if (!harmonic) continue;
+        validate(*harmonic, prefix);  // its frequency is used here, before the case is validated
+        if (!numerics.time_step) step = std::min(step, harmonic->period() / default_steps_per_period);
+        frequencies.push_back(2.0 * std::numbers::pi * harmonic->frequency);
     }
     std::sort(frequencies.begin(), frequencies.end());
     frequencies.erase(std::unique(frequencies.begin(), frequencies.end()), frequencies.end());

@@ -21,7 +21,7 @@ TangentialStepper::TangentialStepper(const TangentialLoad& load, const rheology:
     : load_(load),
       foundation_(foundation),
       layer_(material, load.friction, foundation.spacing(), foundation.size()),
-      cycle_(load.last_full_cycle(simulated_end)) {
+      cycle_(load.load.last_full_cycle(simulated_end)) {
     if (cycle_) outcome_.min_stick_radius = std::numeric_limits<double>::infinity();
     if (cycle_) outcome_.dissipated_energy_per_cycle = 0.0;
 }
@@ -42,7 +42,7 @@ void TangentialStepper::step(const foundation::StepCoefficients& coefficients, d
     const auto loads = foundation_.line_loads();
     const auto q = std::span<const double>(loads).first(foundation_.touched());
     const auto contact = foundation_.contact_flags().first(foundation_.touched());
-    const double target = load_.value(time_end);
+    const double target = load_.load.value(time_end);
     const bool force_control = load_.control == TangentialControl::force;
     const bool loaded = force_control ? target != 0.0 : target != displacement_;
     if (loaded && foundation_.contact_count() == 0) {

@@ -13,7 +13,7 @@ namespace {
 // hold up to the end, one more for each snapshot or tangential or harmonic breakpoint that may cut a step, and the graded
 // steps after jumps where the grid has them.
 double indentation_steps(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
-    const auto& points = contact_case.history.points();
+    const auto& points = contact_case.load.history->points();
     double steps = 0.0;
     double previous = points.front().time;
     for (const auto& point : points) {
@@ -26,8 +26,8 @@ double indentation_steps(const ContactCase& contact_case, const ResolvedNumerics
         steps += segment_step_count(contact_case.end_time - previous, numerics.time_step, numerics.min_segment_steps);
     }
     steps += static_cast<double>(contact_case.snapshots.size());
-    if (contact_case.tangential) steps += static_cast<double>(contact_case.tangential->breakpoints().size());
-    if (contact_case.harmonic) steps += static_cast<double>(contact_case.harmonic->breakpoints().size() + 2);
+    if (contact_case.tangential) steps += static_cast<double>(contact_case.tangential->load.breakpoints().size());
+    if (contact_case.load.harmonic) steps += static_cast<double>(contact_case.load.harmonic->breakpoints().size() + 2);
     if (numerics.grading_ratio > 0.0) {
         // grade_after_changes: at most ln(time_step / first_graded_step) / ratio more steps after the start and
         // each point.
@@ -59,7 +59,7 @@ WorkEstimate estimate_work(const ContactCase& contact_case, const ResolvedNumeri
 }
 
 void require_bounded_work(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
-    const double start = contact_case.history.start_time();
+    const double start = contact_case.load.history->start_time();
     const bool impact = contact_case.control == Control::impact;
     if (impact && !(std::isfinite(numerics.time_limit) && numerics.time_step > 0.0)) {
         throw InvalidInput("load.velocity", format_value(contact_case.impact->velocity),

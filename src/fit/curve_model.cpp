@@ -71,11 +71,11 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     // Start one interval early from the undeformed state, so that a first point out of contact is no jump.
     if (points.front().value <= 0.0) points.insert(points.begin(), {curve.time[0] - (curve.time[1] - curve.time[0]), 0.0});
     model_case.control = depth_driven ? drivers::Control::displacement : drivers::Control::force;
-    model_case.history = drivers::LoadHistory(std::move(points), "load.history");
+    model_case.load.history = drivers::LoadHistory(std::move(points), "load.history");
     model_case.end_time = curve.time.back();
     model_case.snapshots.clear();
     model_case.tangential.reset();
-    model_case.harmonic.reset();
+    model_case.load.harmonic.reset();
     model_case.spring_constant.reset();
     model_case.impact.reset();
     model_case.oblique.reset();

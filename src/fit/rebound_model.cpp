@@ -10,11 +10,11 @@ ImpactValues run_rebound(drivers::ContactCase model_case, double mass, double ve
                          const std::function<void()>& check_interrupt) {
     model_case.control = drivers::Control::impact;
     model_case.impact = drivers::ImpactLoad{mass, velocity};
-    model_case.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
+    model_case.load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
     model_case.end_time = std::numeric_limits<double>::infinity();
     model_case.snapshots.clear();
     model_case.tangential.reset();
-    model_case.harmonic.reset();
+    model_case.load.harmonic.reset();
     model_case.spring_constant.reset();
     model_case.oblique.reset();
     model_case.shore.reset();

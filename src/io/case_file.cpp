@@ -14,6 +14,7 @@
 #include "mdr/rheology/compressible.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "case_reader.hpp"
+#include "control_reader.hpp"
 #include "mdr/io/units.hpp"
 #include "indenter_reader.hpp"
 #include "material_reader.hpp"
@@ -70,15 +71,14 @@ Body build_body(const BodySpec& spec, const std::optional<rheology::TimeWindow>&
     return body;
 }
 
-drivers::LoadHistory read_history(TableReader& load, drivers::Control control) {
+// The parts of a load (normal or tangential): a table's `history` of (t, column) points, and a harmonic's keys.
+drivers::LoadHistory read_history(TableReader& table, const std::string& column) {
     std::vector<drivers::LoadPoint> points;
-    const char* quantity = drivers::control_kind(control).column.c_str();
-    for (const auto& [t, value] : load.pairs("history", "t", quantity)) points.push_back({t, value});
-    return drivers::LoadHistory(std::move(points), "load.history");
+    for (const auto& [t, value] : table.pairs("history", "t", column.c_str())) points.push_back({t, value});
+    return drivers::LoadHistory(std::move(points), table.key_path("history"));
 }
 
 drivers::HarmonicLoad read_harmonic(TableReader& table) {
-    table.reject_unknown({"amplitude", "frequency", "start", "end"});
     return drivers::HarmonicLoad{table.number("amplitude"), table.number("frequency"), table.number("start"),
                                  table.number("end")};
 }
@@ -95,12 +95,9 @@ drivers::TangentialLoad read_tangential(TableReader& table) {
         throw InvalidInput("tangential", "[...]", "give either history or amplitude, frequency, start, end");
     }
     if (table.has("history")) {
-        std::vector<drivers::LoadPoint> points;
-        for (const auto& [t, value] : table.pairs("history", "t", control.column.c_str())) points.push_back({t, value});
-        load.history = drivers::LoadHistory(std::move(points), "tangential.history");
+        load.load.history = read_history(table, control.column);
     } else {
-        load.harmonic = drivers::HarmonicLoad{table.number("amplitude"), table.number("frequency"),
-                                              table.number("start"), table.number("end")};
+        load.load.harmonic = read_harmonic(table);
     }
     drivers::validate(load);  // before its end time is used
     return load;
@@ -172,7 +169,10 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     const BodySpec half_space_spec = read_body(*material_table);
     auto load = root.table("load");
     if (!load) throw InvalidInput("load", "(missing)", "is required");
-    const std::optional<ShoreLoad> shore = read_shore(*load, unit_system(units));
+    const drivers::ControlKind& control_kind = read_control(*load);
+    const drivers::Control control = control_kind.control;
+    const std::optional<ShoreLoad> shore =
+        control_kind.name == "shore" ? std::optional(read_shore(*load, unit_system(units))) : std::nullopt;
     const toml::table no_indenter;  // a durometer brings the standard's indenter: its [indenter] stays empty
     auto indenter_table = root.table("indenter");
     if (shore && indenter_table) {
@@ -184,18 +184,9 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     std::optional<BodySpec> second_spec;
     if (auto indenter_material = indenter_table->table("material")) second_spec = read_body(*indenter_material);
 
-    load->reject_unknown({"control", "history", "velocity", "end", "harmonic", "spring_constant", "force_pauses",
-                          "tangential_velocity", "incidence_deg", "spin", "scale", "duration"});
-    const std::string control_name = load->string("control");
-    drivers::Control control;
-    try {
-        control = drivers::control_named(control_name).control;
-    } catch (const InvalidInput& error) {
-        throw error.with_prefix("load.");
-    }
-    std::optional<drivers::HarmonicLoad> harmonic;
+    drivers::Load normal_load;
     if (load->has("harmonic")) {
-        if (!load->has("history") && control != drivers::Control::impact) {
+        if (!load->has("history")) {
             throw InvalidInput("load.history", "(missing)",
                                "a harmonic is added to a base history: give one, e.g. [[0.0, 0.0], [1.0, d0]]");
         }
@@ -204,30 +195,22 @@ drivers::ContactCase read_case(const toml::table& root_table) {
             throw InvalidInput("load.harmonic", load->text("harmonic"),
                                "must be a table { amplitude, frequency, start, end }");
         }
-        harmonic = read_harmonic(*table);
+        table->reject_unknown({"amplitude", "frequency", "start", "end"});
+        normal_load.harmonic = read_harmonic(*table);
     }
+    require_control_keys(*load, control_kind);
     const std::optional<double> spring_constant =
         shore ? shore->test.instrument.spring_rate : load->optional_number("spring_constant");
     std::optional<drivers::ImpactLoad> impact;
-    std::optional<drivers::LoadHistory> read;
     if (control == drivers::Control::impact) {
-        if (load->has("history")) {
-            throw InvalidInput("load.history", load->text("history"),
-                               "not with control = \"impact\" (the motion follows from indenter.mass and load.velocity)");
-        }
         const double velocity = load->number("velocity");
         if (!indenter_table->has("mass")) throw InvalidInput("indenter.mass", "(missing)", "is required for an impact");
         impact = drivers::ImpactLoad{indenter_table->number("mass"), velocity};
-        read = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
+        normal_load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
     } else {
-        if (load->has("velocity")) {
-            throw InvalidInput("load.velocity", load->text("velocity"), "only with control = \"impact\"");
-        }
-        read = shore ? drivers::shore_base_history(shore->test) : read_history(*load, control);
+        normal_load.history = shore ? drivers::shore_base_history(shore->test) : read_history(*load, control_kind.column);
     }
-    drivers::LoadHistory history = std::move(*read);
-    double end_time = impact ? std::numeric_limits<double>::infinity() : history.end_time();
-    if (harmonic && !impact) end_time = std::max(end_time, harmonic->end);
+    double end_time = impact ? std::numeric_limits<double>::infinity() : normal_load.end_time();
     if (auto end = load->optional_number("end")) end_time = *end;
 
     std::optional<drivers::TangentialLoad> tangential;
@@ -244,7 +227,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
                            "only with control = \"impact\" (an oblique impact)");
     } else if (auto table = std::move(tangential_table)) {
         tangential = read_tangential(*table);
-        if (!load->has("end")) end_time = std::max(end_time, tangential->end_time());
+        if (!load->has("end")) end_time = std::max(end_time, tangential->load.end_time());
         // Exact only for elastically similar bodies (section 7): compressible or two bodies make it approximate.
         approximate = half_space_spec.bulk_modulus || half_space_spec.bulk || indenter_table->has("material");
     }
@@ -270,7 +253,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     // The bodies, built over the time window of the case when a model is converted to a series.
     std::optional<rheology::TimeWindow> window;
     if (half_space_spec.needs_window() || (second_spec && second_spec->needs_window())) {
-        window = drivers::material_window(history, end_time, numerics, harmonic, tangential, impact.has_value());
+        window = drivers::material_window(normal_load, end_time, numerics, tangential, impact.has_value());
     }
     // Files a material names (a table's `file`) are found next to the case file (the parsed table's source).
     const auto& source_path = root_table.source().path;
@@ -288,10 +271,9 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     }
 
     drivers::ContactCase contact_case{title,    std::move(material),  std::move(indenter), control,
-                                      std::move(history), end_time, std::move(snapshots), numerics,
+                                      std::move(normal_load), end_time, std::move(snapshots), numerics,
                                       std::move(shear_material), impact, std::move(tangential), approximate,
                                       oblique, std::move(origin)};
-    contact_case.harmonic = harmonic;
     contact_case.spring_constant = spring_constant;
     if (shore) contact_case.shore = shore->test;
     if (load->has("force_pauses")) {
@@ -341,12 +323,12 @@ std::string describe(const drivers::ContactCase& contact_case) {
     } else {
         load = fmt::format("{} control, {} history points over t = {:.4g} .. {:.4g} {}",
                            drivers::control_kind(contact_case.control).name,
-                           contact_case.history.points().size(), contact_case.history.start_time(),
+                           contact_case.load.history->points().size(), contact_case.load.history->start_time(),
                            contact_case.end_time, units.time);
         if (contact_case.spring_constant) {
             load += fmt::format(" (spring k = {:.4g} {}/{})", *contact_case.spring_constant, units.force, units.length);
         }
-        if (const auto& harmonic = contact_case.harmonic) {
+        if (const auto& harmonic = contact_case.load.harmonic) {
             load += fmt::format(", harmonic of amplitude {:.4g} at {:.4g} 1/{} over t = {:.4g} .. {:.4g} {}",
                                 harmonic->amplitude, harmonic->frequency, units.time, harmonic->start, harmonic->end,
                                 units.time);
@@ -359,8 +341,9 @@ std::string describe(const drivers::ContactCase& contact_case) {
         load += fmt::format("; tangential {} control, mu = {:.4g}, {}",
                             drivers::tangential_control_kind(tangential->control).name,
                             tangential->friction,
-                            tangential->harmonic ? fmt::format("harmonic at {:.4g} Hz", tangential->harmonic->frequency)
-                                                 : "piecewise-linear history");
+                            tangential->load.harmonic
+                                ? fmt::format("harmonic at {:.4g} Hz", tangential->load.harmonic->frequency)
+                                : "piecewise-linear history");
     }
     const auto& origin = contact_case.material_origin;
     std::string model = origin.description.empty() ? std::string() : fmt::format(" {}", origin.description);

@@ -4,7 +4,6 @@
 #include <string>
 #include <string_view>
 
-#include "mdr/error.hpp"
 
 namespace mdr::io {
 namespace {
@@ -26,14 +25,7 @@ double force_size(std::string_view name) {
 
 }  // namespace
 
-std::optional<ShoreLoad> read_shore(TableReader& load, const UnitSystem& system) {
-    if (load.optional_string("control") != "shore") {
-        for (const char* key : {"scale", "duration"}) {
-            if (load.has(key)) throw InvalidInput(load.key_path(key), load.text(key), "only with control = \"shore\"");
-        }
-        return std::nullopt;
-    }
-    load.reject_unknown({"control", "scale", "duration"});
+ShoreLoad read_shore(TableReader& load, const UnitSystem& system) {
     const drivers::ShoreScale scale = drivers::shore_scale_named(load.string("scale"));
     const double length_unit = length_size(system.length);
     const double duration = load.optional_number("duration").value_or(drivers::shore_default_duration);

@@ -2,7 +2,6 @@
 // The Shore durometer test of a case's `[load]` (control = "shore"), internal to mdr_io.
 
 #include <memory>
-#include <optional>
 
 #include "mdr/drivers/shore.hpp"
 #include "mdr/io/units.hpp"
@@ -17,9 +16,8 @@ struct ShoreLoad {
     std::shared_ptr<const profile::Profile> indenter;
 };
 
-/// The Shore test when `load.control = "shore"` (keys control, scale, duration; any other key is refused), the
-/// durometer's constants expressed in `system`'s units; none for another control, which must not have `scale` or
-/// `duration`.
-std::optional<ShoreLoad> read_shore(TableReader& load, const UnitSystem& system);
+/// The Shore test of a `[load]` with `control = "shore"` (keys scale, duration; read_control has checked the keys),
+/// the durometer's constants expressed in `system`'s units.
+ShoreLoad read_shore(TableReader& load, const UnitSystem& system);
 
 }  // namespace mdr::io

@@ -29,7 +29,7 @@ fit::ModelBuilder standard_solid_sphere() {
         return drivers::ContactCase{.title = "fit model",
                                     .material = rheology::Rheology::standard(values[0], values[1], values[2]),
                                     .indenter = profile::make_sphere(R),
-                                    .history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history"),
+                                    .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
                                     .end_time = 1.0};
     };
 }
@@ -160,7 +160,7 @@ TEST(Fit, KelvinVoigtFromCreepUnderForce) {
         return drivers::ContactCase{.title = "fit model",
                                     .material = rheology::Rheology::kelvin_voigt(values[0], values[1]),
                                     .indenter = profile::make_sphere(R),
-                                    .history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history"),
+                                    .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
                                     .end_time = 1.0};
     };
     problem.parameters = {{"material.G", 3e5, 1e3, 1e9}, {"material.eta", 1e6, 1e2, 1e9}};
@@ -290,7 +290,7 @@ TEST(Fit, TimesTheDataCannotDetermineAreFlagged) {
             .title = "fit model",
             .material = rheology::Rheology::prony(values[0], {{values[1], values[2]}, {values[3], values[4]}}),
             .indenter = profile::make_sphere(R),
-            .history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history"),
+            .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
             .end_time = 1.0};
     };
     problem.parameters = {{"material.G_inf", 1e6, 1e3, 1e9},          {"material.terms[0][0]", 1e6, 1e3, 1e9},

@@ -31,7 +31,7 @@ fit::ModelBuilder sphere_model(rheology::Rheology (*material)(const std::vector<
         return drivers::ContactCase{.title = "rebound fit model",
                                     .material = material(values),
                                     .indenter = profile::make_sphere(radius),
-                                    .history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history"),
+                                    .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
                                     .end_time = 1.0};
     };
 }

@@ -54,7 +54,7 @@ fit::FitProblem problem_for(const Material& material, fit::Curve curve) {
         return drivers::ContactCase{.title = "fit model",
                                     .material = rheology::Rheology(values[0], 0.0, std::move(terms)),
                                     .indenter = profile::make_sphere(R),
-                                    .history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history"),
+                                    .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
                                     .end_time = 1.0};
     };
     problem.parameters.push_back({"material.G_inf", material.start[0], 1e3, 1e9});

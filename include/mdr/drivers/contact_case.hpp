@@ -9,8 +9,7 @@
 #include <vector>
 
 #include "mdr/drivers/force_pause.hpp"
-#include "mdr/drivers/harmonic_load.hpp"
-#include "mdr/drivers/load_history.hpp"
+#include "mdr/drivers/load.hpp"
 #include "mdr/drivers/shore.hpp"
 #include "mdr/drivers/tangential_load.hpp"
 #include "mdr/profile/profile.hpp"
@@ -81,14 +80,16 @@ struct ContactCase {
     std::string title;                                  ///< free text
     rheology::Rheology material;                        ///< combined material (eq. 8)
     std::shared_ptr<const profile::Profile> indenter;   ///< the gap f(r)
-    Control control = Control::displacement;            ///< what the history prescribes
-    LoadHistory history;                                ///< (t, d) or (t, F) points
+    Control control = Control::displacement;            ///< what the load prescribes
+    /// The history of (t, d), (t, F) or (t, z) points, required (with control = impact the single point (0, 0)),
+    /// and `load.harmonic`, a harmonic part added to it, whose last full cycle is measured (HarmonicOutcome).
+    Load load;
     double end_time = 0.0;                              ///< last time simulated [s]
     std::vector<double> snapshots{};                    ///< times of pressure profiles [s]
     NumericsOptions numerics{};                         ///< `[numerics]`
     std::optional<rheology::Rheology> shear_material{}; ///< the shear part alone, when a bulk part was folded in
-    std::optional<ImpactLoad> impact{};                 ///< with control = impact (the history is then the single
-                                                        ///< point (0, 0) and end_time the latest end allowed)
+    std::optional<ImpactLoad> impact{};                 ///< with control = impact (end_time is then the latest end
+                                                        ///< allowed)
     std::optional<TangentialLoad> tangential{};         ///< `[tangential]`, superimposed tangential loading
     /// True when tangential loading meets compressible or two different bodies: the MDR mapping is then exact for
     /// the normal problem only (section 7) and the tangential result an approximation.
@@ -96,9 +97,6 @@ struct ContactCase {
     std::optional<ObliqueImpactLoad> oblique{};         ///< with control = impact: its tangential part
     /// The model behind `material` (its description; for a model converted to a series, the certificate).
     rheology::MaterialOrigin material_origin{};
-    /// `load.harmonic`: a harmonic part added to the history (depth, force or base displacement); the results
-    /// over its last full cycle are measured (HarmonicOutcome).
-    std::optional<HarmonicLoad> harmonic{};
     std::optional<double> spring_constant{};            ///< k [N/m] of the spring, with control = spring
     /// A Shore durometer test (control = spring with the durometer's spring and base history, a step at t = 0
     /// and a stop at the full extension); the readings are measured (IndentationResult::shore).
@@ -106,8 +104,6 @@ struct ContactCase {
     /// `load.force_pauses`, with control = spring: the instrument's feedback holds the force over each (ForcePause).
     std::vector<ForcePause> force_pauses{};
 
-    /// The prescribed load at time t [s]: the history plus the harmonic part.
-    double load_value(double t) const { return history.value(t) + (harmonic ? harmonic->value(t) : 0.0); }
     /// The declared unit system (mdr/io/units.hpp): the names printed beside the numbers; nothing is converted.
     std::string units = "SI";
 };

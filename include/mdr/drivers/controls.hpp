@@ -1,9 +1,10 @@
 #pragma once
 /// \file
-/// The tables of controls (`[load] control`, `[tangential] control`): name, one-line documentation and the keys each
-/// needs. The case reader, its error messages, the description of a case, summary.json and the control table of
-/// docs/case-format.md take the names from them. What a control does lives in the drivers (indentation.cpp,
-/// impact.cpp); its rules in drivers::validate.
+/// The tables of controls (`[load] control`, `[tangential] control`): name, one-line documentation and the `[load]`
+/// keys each takes, with units. The case reader (which `[load]` keys exist, which control takes each, which are
+/// required), its error messages, the description of a case, summary.json and the control table of
+/// docs/case-format.md take them from here: a control's new key is a new entry of its row (and the code that reads
+/// it). What a control does lives in the drivers (indentation.cpp, impact.cpp); its rules in drivers::validate.
 
 #include <string>
 #include <vector>
@@ -13,17 +14,34 @@
 
 namespace mdr::drivers {
 
+/// One `[load]` key of a control.
+struct ControlKey {
+    std::string key;            ///< in `[load]`, e.g. `velocity`
+    std::string unit;           ///< SI unit of its numbers, e.g. "m/s" (a case's `units` system names its own); ""
+                                ///< for a name
+    std::string documentation;  ///< one line
+    bool required = false;      ///< the control needs it
+};
+
 /// One row of the table.
 struct ControlKind {
     Control control = Control::displacement;
-    std::string name;              ///< `load.control = "name"`, and summary.json's `control`
-    std::string documentation;     ///< one line
-    std::string column;            ///< the history's value column as messages name it (d, F, z); "" without history
-    std::vector<std::string> keys; ///< the keys it needs, dotted (`load.history`, `indenter.mass`)
+    std::string name;                     ///< `load.control = "name"`, and summary.json's `control`
+    std::string documentation;            ///< one line
+    std::string column;                   ///< the history's value column as messages name it (d, F, z); "" without
+                                          ///< history
+    std::vector<ControlKey> keys;         ///< its `[load]` keys besides `control`; no other key is taken with it
+    std::vector<std::string> other_keys;  ///< the keys it needs in other tables, dotted (`indenter.mass`)
+
+    /// The entry of `key`, or none when this control does not take it.
+    const ControlKey* key_named(const std::string& key) const;
 };
 
 /// Every control, in the order of the documentation.
 const std::vector<ControlKind>& controls();
+
+/// Every `[load]` key: `control`, then each row's keys in the order of the table, each once.
+std::vector<std::string> load_keys();
 
 /// The row named `name`; throws mdr::InvalidInput(`control`, "name", "unknown control; one of ...").
 const ControlKind& control_named(const std::string& name);

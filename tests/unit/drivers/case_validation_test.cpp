@@ -19,7 +19,7 @@ ContactCase creep_test() {
                              .material = rheology::Rheology::standard(1e6, 2e6, 0.1),
                              .indenter = profile::make_sphere(0.01),
                              .control = Control::force,
-                             .history = LoadHistory({{0.0, 0.0}, {0.1, 0.5}, {1.0, 0.5}}, "load.history"),
+                             .load = {.history = LoadHistory({{0.0, 0.0}, {0.1, 0.5}, {1.0, 0.5}}, "load.history")},
                              .end_time = 1.0};
     contact_case.numerics.elements = 100;
     return contact_case;
@@ -44,7 +44,7 @@ TEST(CaseValidation, AValidCaseRuns) {
 
 TEST(CaseValidation, ANegativeForceIsRefusedNotANaNDepth) {
     auto contact_case = creep_test();
-    contact_case.history = LoadHistory({{0.0, 0.0}, {0.1, -0.5}}, "load.history");
+    contact_case.load.history = LoadHistory({{0.0, 0.0}, {0.1, -0.5}}, "load.history");
     EXPECT_EQ(key_of([&] { validate(contact_case); }), "load.history[1].F");
     EXPECT_EQ(key_of([&] { run_case(contact_case); }), "load.history[1].F");
 }
@@ -81,15 +81,13 @@ TEST(CaseValidation, EveryRuleNamesItsKey) {
     expect_key("load.history", [](ContactCase& c) {
         c.control = Control::displacement;
         c.material = rheology::Rheology::kelvin_voigt(1e6, 1e3);
-        c.history = LoadHistory({{0.0, 1e-5}, {1.0, 1e-5}}, "load.history");
+        c.load.history = LoadHistory({{0.0, 1e-5}, {1.0, 1e-5}}, "load.history");
     });
     expect_key("tangential.friction", [](ContactCase& c) {
-        c.tangential = TangentialLoad{-0.1, TangentialControl::displacement, std::nullopt,
-                                      HarmonicLoad{1e-6, 10.0, 0.5, 1.0}};
+        c.tangential = TangentialLoad{.friction = -0.1, .load = {.harmonic = HarmonicLoad{1e-6, 10.0, 0.5, 1.0}}};
     });
     expect_key("tangential.end", [](ContactCase& c) {
-        c.tangential = TangentialLoad{0.3, TangentialControl::displacement, std::nullopt,
-                                      HarmonicLoad{1e-6, 10.0, 0.5, 0.5}};
+        c.tangential = TangentialLoad{.friction = 0.3, .load = {.harmonic = HarmonicLoad{1e-6, 10.0, 0.5, 0.5}}};
     });
 }
 

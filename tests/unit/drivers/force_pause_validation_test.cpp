@@ -19,8 +19,8 @@ ContactCase pause_test() {
                              .material = rheology::Rheology::standard(1e6, 2e6, 1.0),
                              .indenter = profile::make_sphere(0.01),
                              .control = Control::spring,
-                             .history = LoadHistory({{0.0, 0.0}, {1.0, 1e-4}, {4.0, 1e-4}, {5.0, -5e-5}},
-                                                    "load.history"),
+                             .load = {.history = LoadHistory({{0.0, 0.0}, {1.0, 1e-4}, {4.0, 1e-4}, {5.0, -5e-5}},
+                                                    "load.history")},
                              .end_time = 5.0};
     contact_case.spring_constant = 2e4;
     contact_case.force_pauses = {{1.0, 4.0}};
@@ -66,13 +66,13 @@ TEST(ForcePauseValidation, EveryRuleNamesThePause) {
     expect_key("load.force_pauses[0]", [](ContactCase& c) { c.force_pauses = {{1.0, 5.5}}; });
     expect_key("load.force_pauses[1]", [](ContactCase& c) { c.force_pauses = {{1.0, 2.0}, {2.0, 3.0}}; });
     expect_key("load.force_pauses[1]", [](ContactCase& c) { c.force_pauses = {{3.0, 4.0}, {1.0, 2.0}}; });
-    expect_key("load.force_pauses[0]", [](ContactCase& c) { c.harmonic = HarmonicLoad{1e-6, 2.0, 3.9, 4.5}; });
-    expect_key("", [](ContactCase& c) { c.harmonic = HarmonicLoad{1e-6, 2.0, 4.0, 5.0}; });  // after the pause
+    expect_key("load.force_pauses[0]", [](ContactCase& c) { c.load.harmonic = HarmonicLoad{1e-6, 2.0, 3.9, 4.5}; });
+    expect_key("", [](ContactCase& c) { c.load.harmonic = HarmonicLoad{1e-6, 2.0, 4.0, 5.0}; });  // after the pause
 }
 
 TEST(ForcePauseValidation, APauseWithoutContactStopsTheRunNamingIt) {
     auto contact_case = pause_test();
-    contact_case.history = LoadHistory({{0.0, -1e-4}, {1.0, 1e-4}, {4.0, 1e-4}}, "load.history");
+    contact_case.load.history = LoadHistory({{0.0, -1e-4}, {1.0, 1e-4}, {4.0, 1e-4}}, "load.history");
     contact_case.end_time = 4.0;
     contact_case.force_pauses = {{0.25, 4.0}};  // z = -5e-5 there: above the surface
     EXPECT_EQ(key_of(contact_case), "");

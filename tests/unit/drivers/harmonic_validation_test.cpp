@@ -18,9 +18,9 @@ ContactCase harmonic_test(Control control) {
                              .material = rheology::Rheology::standard(1e6, 2e6, 0.1),
                              .indenter = profile::make_sphere(0.01),
                              .control = control,
-                             .history = LoadHistory({{0.0, 0.0}, {0.5, mean}, {1.0, mean}}, "load.history"),
+                             .load = {.history = LoadHistory({{0.0, 0.0}, {0.5, mean}, {1.0, mean}}, "load.history"),
+                                      .harmonic = HarmonicLoad{0.1 * mean, 20.0, 0.5, 1.0}},
                              .end_time = 1.0};
-    contact_case.harmonic = HarmonicLoad{0.1 * mean, 20.0, 0.5, 1.0};
     if (control == Control::spring) contact_case.spring_constant = 1e4;
     contact_case.numerics.elements = 100;
     return contact_case;
@@ -53,24 +53,26 @@ TEST(HarmonicValidation, EveryRuleNamesItsKey) {
         change(contact_case);
         EXPECT_EQ(key_of(contact_case), key);
     };
-    expect_key(Control::displacement, "load.harmonic.frequency", [](ContactCase& c) { c.harmonic->frequency = 0.0; });
-    expect_key(Control::displacement, "load.harmonic.amplitude", [](ContactCase& c) { c.harmonic->amplitude = 0.0; });
-    expect_key(Control::displacement, "load.harmonic.end", [](ContactCase& c) { c.harmonic->end = 0.5; });
-    expect_key(Control::displacement, "load.harmonic.start", [](ContactCase& c) { c.harmonic->start = -0.5; });
-    expect_key(Control::force, "load.harmonic.amplitude", [](ContactCase& c) { c.harmonic->amplitude = 1.01; });
+    expect_key(Control::displacement, "load.harmonic.frequency",
+               [](ContactCase& c) { c.load.harmonic->frequency = 0.0; });
+    expect_key(Control::displacement, "load.harmonic.amplitude",
+               [](ContactCase& c) { c.load.harmonic->amplitude = 0.0; });
+    expect_key(Control::displacement, "load.harmonic.end", [](ContactCase& c) { c.load.harmonic->end = 0.5; });
+    expect_key(Control::displacement, "load.harmonic.start", [](ContactCase& c) { c.load.harmonic->start = -0.5; });
+    expect_key(Control::force, "load.harmonic.amplitude", [](ContactCase& c) { c.load.harmonic->amplitude = 1.01; });
     // Ending at a trough, the harmonic holds -amplitude while the history unloads to 0.
     expect_key(Control::force, "load.harmonic.end", [](ContactCase& c) {
-        c.history = LoadHistory({{0.0, 0.0}, {0.5, 1.0}, {1.0, 1.0}, {1.1, 0.0}}, "load.history");
-        c.harmonic->end = 0.5375;
+        c.load.history = LoadHistory({{0.0, 0.0}, {0.5, 1.0}, {1.0, 1.0}, {1.1, 0.0}}, "load.history");
+        c.load.harmonic->end = 0.5375;
     });
     expect_key(Control::spring, "load.spring_constant", [](ContactCase& c) { c.spring_constant = -1.0; });
     expect_key(Control::spring, "load.spring_constant", [](ContactCase& c) { c.spring_constant.reset(); });
     expect_key(Control::displacement, "load.spring_constant", [](ContactCase& c) { c.spring_constant = 1.0; });
     expect_key(Control::spring, "load.history[0].z", [](ContactCase& c) {
-        c.history = LoadHistory({{0.0, 1e-6}, {1.0, 1e-4}}, "load.history");
+        c.load.history = LoadHistory({{0.0, 1e-6}, {1.0, 1e-4}}, "load.history");
     });
     expect_key(Control::spring, "load.history[2].t", [](ContactCase& c) {
-        c.history = LoadHistory({{0.0, 0.0}, {0.5, 1e-4}, {0.5, 2e-4}, {1.0, 2e-4}}, "load.history");
+        c.load.history = LoadHistory({{0.0, 0.0}, {0.5, 1e-4}, {0.5, 2e-4}, {1.0, 2e-4}}, "load.history");
     });
 }
 

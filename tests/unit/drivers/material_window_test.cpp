@@ -13,50 +13,52 @@ namespace mdr::drivers {
 namespace {
 
 const LoadHistory history({{0.0, 0.0}, {1.0, 1e-6}, {10.0, 1e-6}}, "load.history");
+
 constexpr double two_pi = 2.0 * std::numbers::pi;
 
+// The history with a normal harmonic of the given frequency from t = 1 to 10.
+Load with_harmonic(double frequency) {
+    return {.load = {.history = history, .harmonic = HarmonicLoad{1e-7, frequency, 1.0, 10.0}};
+}
+
 TangentialLoad tangential_harmonic(double frequency) {
-    TangentialLoad load;
-    load.friction = 0.3;
-    load.harmonic = HarmonicLoad{1e-7, frequency, 1.0, 10.0};
-    return load;
+    return {.friction = 0.3, .load = {.harmonic = HarmonicLoad{1e-7, frequency, 1.0, 10.0}}};
 }
 
 TEST(MaterialWindow, WithoutAHarmonicTheWindowHasNoFrequencies) {
-    const auto window = material_window(history, 10.0, {}, std::nullopt, std::nullopt, false);
+    const auto window = material_window({.history = history}, 10.0, {}, std::nullopt, false);
     EXPECT_DOUBLE_EQ(window.shortest, 10.0 / 2000.0 / 5.0);
     EXPECT_DOUBLE_EQ(window.longest, 10.0);
-    EXPECT_TRUE(window.frequencies.empty());
+    EXPECT_TRUE(window.frequencies.empty()});
 }
 
 TEST(MaterialWindow, ANormalHarmonicCapsTheStepAndGivesItsFrequency) {
     // 500 Hz over 10 s: its period over 200 (1e-5 s) is below the duration over 2000.
-    const auto window = material_window(history, 10.0, {}, HarmonicLoad{1e-7, 500.0, 1.0, 10.0}, std::nullopt, false);
+    const auto window = material_window(with_harmonic(500.0), 10.0, {}, std::nullopt, false);
     EXPECT_DOUBLE_EQ(window.shortest, 1.0 / 500.0 / 200.0 / 5.0);
     EXPECT_EQ(window.frequencies, std::vector<double>{two_pi * 500.0});
 }
 
 TEST(MaterialWindow, NormalAndTangentialFrequenciesAscendOnceEach) {
-    const HarmonicLoad normal{1e-7, 30.0, 1.0, 10.0};
-    const auto both = material_window(history, 10.0, {}, normal, tangential_harmonic(2.0), false);
+    const Load normal = with_harmonic(30.0);
+    const auto both = material_window(normal, 10.0, {}, tangential_harmonic(2.0), false);
     EXPECT_EQ(both.frequencies, (std::vector<double>{two_pi * 2.0, two_pi * 30.0}));
     EXPECT_DOUBLE_EQ(both.shortest, 1.0 / 30.0 / 200.0 / 5.0);
-    const auto same = material_window(history, 10.0, {}, normal, tangential_harmonic(30.0), false);
+    const auto same = material_window(normal, 10.0, {}, tangential_harmonic(30.0), false);
     EXPECT_EQ(same.frequencies, std::vector<double>{two_pi * 30.0});
 }
 
 TEST(MaterialWindow, AGivenTimeStepSetsTheShortEndAndKeepsTheFrequencies) {
     NumericsOptions numerics;
     numerics.time_step = 1e-3;
-    const auto window = material_window(history, 10.0, numerics, HarmonicLoad{1e-7, 500.0, 1.0, 10.0}, std::nullopt,
-                                        false);
+    const auto window = material_window(with_harmonic(500.0), 10.0, numerics, std::nullopt, false);
     EXPECT_DOUBLE_EQ(window.shortest, 1e-3 / 5.0);
     EXPECT_EQ(window.frequencies, std::vector<double>{two_pi * 500.0});
 }
 
 TEST(MaterialWindow, AnInvalidHarmonicIsNamedBeforeItsFrequencyIsUsed) {
     try {
-        material_window(history, 10.0, {}, HarmonicLoad{1e-7, 0.0, 1.0, 10.0}, std::nullopt, false);
+        material_window(with_harmonic(0.0), 10.0, {}, std::nullopt, false);
         FAIL() << "no error";
     } catch (const InvalidInput& error) {
         EXPECT_EQ(error.key(), "load.harmonic.frequency");

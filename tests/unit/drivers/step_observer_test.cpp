@@ -25,7 +25,8 @@ ContactCase creep_with_jumps() {
         .material = rheology::Rheology::kelvin_voigt(1e6, 1e3),
         .indenter = profile::make_sphere(0.01),
         .control = Control::force,
-        .history = LoadHistory({{0.0, 0.0}, {0.0, 0.5}, {0.05, 0.5}, {0.05, 0.2}, {0.1, 0.2}}, "load.history"),
+        .load = {.history =
+                     LoadHistory({{0.0, 0.0}, {0.0, 0.5}, {0.05, 0.5}, {0.05, 0.2}, {0.1, 0.2}}, "load.history")},
         .end_time = 0.1,
         .snapshots = {0.05}};
     contact_case.numerics.elements = 100;
@@ -39,7 +40,7 @@ ContactCase impact() {
                              .material = rheology::Rheology::standard(1e6, 4e6, 1e-3),
                              .indenter = profile::make_sphere(0.01),
                              .control = Control::impact,
-                             .history = LoadHistory({{0.0, 0.0}}, "load.history"),
+                             .load = {.history = LoadHistory({{0.0, 0.0}}, "load.history")},
                              .end_time = 0.1,
                              .impact = ImpactLoad{.mass = 0.01, .velocity = 0.5}};
     contact_case.numerics.elements = 100;

@@ -20,7 +20,7 @@ TEST(CurveCost, ModulusColumnsAgreeWithDifferencesOfTheResiduals) {
         return drivers::ContactCase{.title = "standard solid",
                                     .material = rheology::Rheology::standard(v[0], v[1], v[2]),
                                     .indenter = profile::make_sphere(1e-3),
-                                    .history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history"),
+                                    .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
                                     .end_time = 1.0};
     };
     problem.parameters = {{"material.G_inf", 1e6, 1e3, 1e9}, {"material.G1", 2e6, 1e3, 1e9},

@@ -164,7 +164,7 @@ drivers::ContactCase sphere_on_standard_solid() {
     return drivers::ContactCase{.title = "rebound",
                                 .material = rheology::Rheology::standard(1e6, 3e6, 1e-3),
                                 .indenter = profile::make_sphere(0.01),
-                                .history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history"),
+                                .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
                                 .end_time = 1.0};
 }
 

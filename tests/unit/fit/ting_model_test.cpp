@@ -224,7 +224,7 @@ TEST(TingModel, StartInContactIsTheElementModelsJump) {
         drivers::ContactCase contact_case{.title = "start in contact",
                                           .material = material,
                                           .indenter = sphere,
-                                          .history = drivers::LoadHistory(std::move(points), "load.history"),
+                                          .load = {.history = drivers::LoadHistory(std::move(points), "load.history")},
                                           .end_time = time.back()};
         contact_case.numerics.elements = elements;
         contact_case.numerics.time_step = time[1] - time[0];
@@ -285,7 +285,7 @@ TEST(TingModel, RandomHistoriesAgreeWithTheElementModel) {
         drivers::ContactCase contact_case{.title = "random",
                                           .material = material,
                                           .indenter = indenter,
-                                          .history = drivers::LoadHistory(std::move(points), "load.history"),
+                                          .load = {.history = drivers::LoadHistory(std::move(points), "load.history")},
                                           .end_time = time.back()};
         contact_case.numerics.elements = 4000;
         double widest = 0.0;

@@ -35,7 +35,7 @@ TEST(CaseTemplate, ReadsAndSetsNumbersByDottedKeyAndArrayIndex) {
     const auto built = model.build();
     EXPECT_EQ(built.material.equilibrium_modulus(), 2.5e6);
     EXPECT_EQ(built.material.terms()[1].relaxation_time, 3.0);
-    EXPECT_EQ(built.history.points()[1].value, 2e-4);
+    EXPECT_EQ(built.load.history->points()[1].value, 2e-4);
     const mdr::io::CaseTemplate copy = model;  // independent copies
     model.set_number("material.G_inf", 1.0);
     EXPECT_EQ(copy.number("material.G_inf"), 2.5e6);

@@ -1,0 +1,36 @@
+#include "mdr/drivers/load.hpp"
+
+#include <algorithm>
+
+namespace mdr::drivers {
+
+double Load::value(double t) const {
+    if (!harmonic) return history->value(t);
+    if (!history) return harmonic->value(t);
+    return history->value(t) + harmonic->value(t);
+}
+
+double Load::end_time() const {
+    if (!harmonic) return history->end_time();
+    if (!history) return harmonic->end;
+    return std::max(history->end_time(), harmonic->end);
+}
+
+std::vector<double> Load::breakpoints() const {
+    std::vector<double> times;
+    if (history) {
+        for (const auto& point : history->points()) times.push_back(point.time);
+    }
+    if (harmonic) {
+        const auto cycle = harmonic->breakpoints();
+        times.insert(times.end(), cycle.begin(), cycle.end());
+    }
+    return times;
+}
+
+std::optional<std::pair<double, double>> Load::last_full_cycle(double simulated_end) const {
+    if (!harmonic) return std::nullopt;
+    return harmonic->last_full_cycle(simulated_end);
+}
+
+}  // namespace mdr::drivers
