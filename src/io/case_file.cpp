@@ -222,8 +222,8 @@ drivers::ContactCase read_case(const toml::table& root_table) {
         oblique = read_oblique(*load, *indenter_table, tangential_table, *impact);
         // Exact only for an incompressible body and a rigid sphere (section 7); drivers::validate refuses the rest.
         approximate = half_space_spec.bulk_modulus || half_space_spec.bulk || indenter_table->has("material");
-    } else if (oblique_keys) {
-        throw InvalidInput(is_oblique(*load) ? "load.tangential_velocity" : "indenter.moment_of_inertia", "[...]",
+    } else if (oblique_keys) {  // the oblique keys of [load] are the impact's (read_control)
+        throw InvalidInput("indenter.moment_of_inertia", indenter_table->text("moment_of_inertia"),
                            "only with control = \"impact\" (an oblique impact)");
     } else if (auto table = std::move(tangential_table)) {
         tangential = read_tangential(*table);

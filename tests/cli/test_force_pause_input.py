@@ -49,7 +49,7 @@ BAD_CASES = [
     ("not-pairs", pause_case("[1.0, 4.0]"), ["load.force_pauses"]),
     ("not-an-array", pause_case('"1 to 4"'), ["load.force_pauses"]),
     ("with-shore", '[material]\nmodel = "elastic"\nG = 1.0e6\n[load]\ncontrol = "shore"\nscale = "A"\n'
-     "force_pauses = [[1.0, 2.0]]\n", ["load.force_pauses", "unknown key"]),
+     "force_pauses = [[1.0, 2.0]]\n", ["load.force_pauses", 'only with control = "spring", not "shore"']),
 ]
 
 

@@ -18,7 +18,7 @@ constexpr double two_pi = 2.0 * std::numbers::pi;
 
 // The history with a normal harmonic of the given frequency from t = 1 to 10.
 Load with_harmonic(double frequency) {
-    return {.load = {.history = history, .harmonic = HarmonicLoad{1e-7, frequency, 1.0, 10.0}};
+    return {.history = history, .harmonic = HarmonicLoad{1e-7, frequency, 1.0, 10.0}};
 }
 
 TangentialLoad tangential_harmonic(double frequency) {
@@ -29,7 +29,7 @@ TEST(MaterialWindow, WithoutAHarmonicTheWindowHasNoFrequencies) {
     const auto window = material_window({.history = history}, 10.0, {}, std::nullopt, false);
     EXPECT_DOUBLE_EQ(window.shortest, 10.0 / 2000.0 / 5.0);
     EXPECT_DOUBLE_EQ(window.longest, 10.0);
-    EXPECT_TRUE(window.frequencies.empty()});
+    EXPECT_TRUE(window.frequencies.empty());
 }
 
 TEST(MaterialWindow, ANormalHarmonicCapsTheStepAndGivesItsFrequency) {
