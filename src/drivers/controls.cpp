@@ -15,7 +15,8 @@ ControlKey history(const char* unit, const char* column) {
 ControlKey harmonic(const char* amplitude_unit) {
     return {"harmonic", "",
             std::string("{ amplitude [") + amplitude_unit +
-                "], frequency [Hz], start [s], end [s] }: a sine added to the history; its last full cycle is measured"};
+                "], frequency [Hz], start [s], end [s] }: a sine added to the history; its last full cycle is "
+                "measured"};
 }
 ControlKey end() { return {"end", "s", "the last time simulated (default: the end of the history and harmonic)"}; }
 
@@ -51,7 +52,8 @@ std::vector<ControlKind> rows() {
          "(spring control with a constant base); the reading H = 100 - d / 0.025 mm over time",
          "",
          {{"scale", "", "\"A\" (soft rubbers) or \"D\" (hard rubbers, plastics)", true},
-          {"duration", "s", "how long the foot rests on the sample (default " + format_value(shore_default_duration) + ")"}},
+          {"duration", "s",
+           "how long the foot rests on the sample (default " + format_value(shore_default_duration) + ")"}},
          {}},
     };
 }

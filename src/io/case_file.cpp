@@ -170,6 +170,11 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     auto load = root.table("load");
     if (!load) throw InvalidInput("load", "(missing)", "is required");
     const drivers::ControlKind& control_kind = read_control(*load);
+    if (load->has("harmonic") && !load->has("history")) {
+        throw InvalidInput("load.history", "(missing)",
+                           "a harmonic is added to a base history: give one, e.g. [[0.0, 0.0], [1.0, d0]]");
+    }
+    require_control_keys(*load, control_kind);
     const drivers::Control control = control_kind.control;
     const std::optional<ShoreLoad> shore =
         control_kind.name == "shore" ? std::optional(read_shore(*load, unit_system(units))) : std::nullopt;
@@ -186,10 +191,6 @@ drivers::ContactCase read_case(const toml::table& root_table) {
 
     drivers::Load normal_load;
     if (load->has("harmonic")) {
-        if (!load->has("history")) {
-            throw InvalidInput("load.history", "(missing)",
-                               "a harmonic is added to a base history: give one, e.g. [[0.0, 0.0], [1.0, d0]]");
-        }
         auto table = load->table("harmonic");
         if (!table) {
             throw InvalidInput("load.harmonic", load->text("harmonic"),
@@ -198,7 +199,6 @@ drivers::ContactCase read_case(const toml::table& root_table) {
         table->reject_unknown({"amplitude", "frequency", "start", "end"});
         normal_load.harmonic = read_harmonic(*table);
     }
-    require_control_keys(*load, control_kind);
     const std::optional<double> spring_constant =
         shore ? shore->test.instrument.spring_rate : load->optional_number("spring_constant");
     std::optional<drivers::ImpactLoad> impact;
@@ -208,7 +208,8 @@ drivers::ContactCase read_case(const toml::table& root_table) {
         impact = drivers::ImpactLoad{indenter_table->number("mass"), velocity};
         normal_load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
     } else {
-        normal_load.history = shore ? drivers::shore_base_history(shore->test) : read_history(*load, control_kind.column);
+        normal_load.history =
+            shore ? drivers::shore_base_history(shore->test) : read_history(*load, control_kind.column);
     }
     double end_time = impact ? std::numeric_limits<double>::infinity() : normal_load.end_time();
     if (auto end = load->optional_number("end")) end_time = *end;

@@ -43,7 +43,8 @@ const drivers::ControlKind& read_control(TableReader& load) {
 void require_control_keys(const TableReader& load, const drivers::ControlKind& kind) {
     for (const drivers::ControlKey& entry : kind.keys) {
         if (entry.required && !load.has(entry.key)) {
-            throw InvalidInput(load.key_path(entry.key), "(missing)", "is required with control = \"" + kind.name + "\"");
+            throw InvalidInput(load.key_path(entry.key), "(missing)",
+                               "is required with control = \"" + kind.name + "\"");
         }
     }
 }
