@@ -23,8 +23,8 @@ void validate(const HarmonicLoad& harmonic, const std::string& prefix);
 double incidence_velocity(double velocity, double incidence_deg);
 
 /// Checks a contact problem: an indenter; for an impact a mass and an approach speed > 0 and no tangential load;
-/// for an oblique impact friction >= 0, finite tangential velocity and spin, a positive moment of inertia and
-/// radius, an incompressible body (no tangential_approximate);
+/// for an oblique impact friction >= 0, finite tangential velocity and spin, a sphere, a positive moment of
+/// inertia when one is given, one incompressible body (tangential_exact);
 /// under force control no negative force; under displacement control no jump against a dashpot; an end after the
 /// first history time (finite unless an impact); snapshots within the simulated time; positive numerics. A normal
 /// harmonic (not with an impact): amplitude > 0, starting no earlier than the history, and under force control
