@@ -7,6 +7,7 @@ from __future__ import annotations
 import os
 import pathlib
 import re
+import shutil
 import subprocess
 import sys
 
@@ -126,17 +127,10 @@ def test_cmake_package(tmp_path: pathlib.Path) -> None:
     check_binary(prefix / "bin/mdr", PYTHON, workdir, env)
 
 
-def test_pip_venv(tmp_path: pathlib.Path) -> None:
-    venv = tmp_path / "venv"
-    run(PYTHON, "-m", "venv", "--system-site-packages", venv)
+def check_venv(venv: pathlib.Path, workdir: pathlib.Path) -> None:
+    """What pip installed into `venv`: the package and the command line, used from `workdir`; then uninstalled."""
     python = str(venv / "bin/python")
-    # Offline (no index) and without build isolation; the existing build is reused (setup.py,
-    # MDR_CMAKE_BUILD_DIR): without it pip configures and builds the extension and the binary afresh.
-    run(python, "-m", "pip", "install", "--no-build-isolation", "--no-deps", "--no-index", "--no-cache-dir",
-        "--disable-pip-version-check", SOURCE, cwd=tmp_path, env=clean_env(MDR_CMAKE_BUILD_DIR=str(BUILD)))
-
     site = pathlib.Path(run(python, "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])").strip())
-    workdir = tmp_path / "elsewhere"
     workdir.mkdir()
     env = clean_env(PATH=f"{venv / 'bin'}{os.pathsep}{os.environ.get('PATH', '')}")
     check_python_package(python, site, workdir, env)
@@ -145,6 +139,45 @@ def test_pip_venv(tmp_path: pathlib.Path) -> None:
 
     run(python, "-m", "pip", "uninstall", "-y", "mdr", env=env)
     assert not (venv / "bin/mdr").exists(), "pip uninstall left bin/mdr"
+
+
+def test_pip_venv(tmp_path: pathlib.Path) -> None:
+    venv = tmp_path / "venv"
+    run(PYTHON, "-m", "venv", "--system-site-packages", venv)
+    # Offline (no index) and without build isolation; the existing build is reused (setup.py,
+    # MDR_CMAKE_BUILD_DIR): without it pip configures and builds the extension and the binary afresh
+    # (test_pip_from_scratch).
+    run(venv / "bin/python", "-m", "pip", "install", "--no-build-isolation", "--no-deps", "--no-index",
+        "--no-cache-dir", "--disable-pip-version-check", SOURCE, cwd=tmp_path,
+        env=clean_env(MDR_CMAKE_BUILD_DIR=str(BUILD)))
+    check_venv(venv, tmp_path / "elsewhere")
+
+
+def source_copy(destination: pathlib.Path) -> pathlib.Path:
+    """The source tree as a clone has it (with uncommitted edits): no build folders, results or caches
+    (those of .gitignore)."""
+    def ignored(folder: str, names: list[str]) -> set[str]:
+        at_root = pathlib.Path(folder) == SOURCE
+        return {name for name in names
+                if name in ("__pycache__", ".git") or name.endswith((".pyc", ".egg-info"))
+                or (at_root and (name in ("build", "out") or name.startswith("build-")))}
+    shutil.copytree(SOURCE, destination, ignore=ignored, symlinks=True)
+    return destination
+
+
+def test_pip_from_scratch(tmp_path: pathlib.Path) -> None:
+    """docs/python.md's commands as written, in a copy of the sources with no build: pip configures and builds
+    the extension and the command line itself (minutes)."""
+    source = source_copy(tmp_path / "mdr")
+    venv = tmp_path / "venv"
+    run(PYTHON, "-m", "venv", "--system-site-packages", venv)
+    # ccache (which CMakeLists.txt uses where it is installed) hits across runs in different scratch folders
+    # when paths are taken relative to the copy; the objects are those the compiler gives.
+    env = clean_env(CCACHE_BASEDIR=str(source))
+    run(venv / "bin/pip", "install", "--no-build-isolation", "--no-deps", ".", cwd=source, env=env)
+    assert run(venv / "bin/mdr", "--version", env=env).strip() == f"mdr {VERSION}"
+    check_venv(venv, tmp_path / "elsewhere")
+    shutil.rmtree(source / "build")  # hundreds of MB; pytest keeps its last scratch folders
 
 
 def test_deb(tmp_path: pathlib.Path) -> None:
