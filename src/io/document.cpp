@@ -28,7 +28,7 @@ nlohmann::ordered_json json_of(const Document& document) {
 
 }  // namespace
 
-Document number(double value) { return std::isfinite(value) ? Document{value} : Document{}; }
+Document number_or_null(double value) { return std::isfinite(value) ? Document{value} : Document{}; }
 
 std::string to_json(const Document& document) { return json_of(document).dump(2); }
 

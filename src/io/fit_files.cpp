@@ -72,12 +72,12 @@ Document fit_document(const fit::FitResult& result) {
     Document::Table parameters, errors, intervals, undetermined;
     Document::List correlation;
     for (std::size_t j = 0; j < result.names.size(); ++j) {
-        parameters.emplace_back(result.names[j], number(result.values[j]));
-        errors.emplace_back(result.names[j], number(result.standard_errors[j]));
-        const Document::List interval{number(result.lower_95[j]), number(result.upper_95[j])};
+        parameters.emplace_back(result.names[j], number_or_null(result.values[j]));
+        errors.emplace_back(result.names[j], number_or_null(result.standard_errors[j]));
+        const Document::List interval{number_or_null(result.lower_95[j]), number_or_null(result.upper_95[j])};
         intervals.emplace_back(result.names[j], Document{interval});
         Document::List row;
-        for (double r : result.correlation[j]) row.push_back(number(r));
+        for (double r : result.correlation[j]) row.push_back(number_or_null(r));
         correlation.push_back({std::move(row)});
     }
     for (const auto& entry : result.undetermined) undetermined.emplace_back(entry.name, Document{entry.reason});
@@ -88,15 +88,15 @@ Document fit_document(const fit::FitResult& result) {
                               {"fitted", {std::string(quantity_name(curve))}},
                               {"points", {curve.time.size()}}};
         if (curve.rebound) {
-            entry.emplace_back("mass", number(curve.mass));
+            entry.emplace_back("mass", number_or_null(curve.mass));
         } else {
-            entry.emplace_back("contact_point", number(curve.contact_depth));
-            entry.emplace_back("contact_point_error", number(curve.contact_depth_error));
-            entry.emplace_back("baseline", number(curve.baseline));
-            entry.emplace_back("baseline_error", number(curve.baseline_error));
+            entry.emplace_back("contact_point", number_or_null(curve.contact_depth));
+            entry.emplace_back("contact_point_error", number_or_null(curve.contact_depth_error));
+            entry.emplace_back("baseline", number_or_null(curve.baseline));
+            entry.emplace_back("baseline_error", number_or_null(curve.baseline_error));
         }
-        entry.emplace_back("noise", number(curve.noise));
-        entry.emplace_back("rms_residual", number(curve.rms_residual));
+        entry.emplace_back("noise", number_or_null(curve.noise));
+        entry.emplace_back("rms_residual", number_or_null(curve.rms_residual));
         curves.push_back({std::move(entry)});
     }
     return {Document::Table{
@@ -108,11 +108,11 @@ Document fit_document(const fit::FitResult& result) {
         {"correlation", {std::move(correlation)}},
         {"undetermined", {std::move(undetermined)}},
         {"curves", {std::move(curves)}},
-        {"rms_residual", number(result.rms_residual)},
-        {"noise", number(result.noise)},
-        {"residual_to_noise", number(result.noise > 0.0 ? result.rms_residual / result.noise : NAN)},
-        {"aic", number(result.aic)},
-        {"bic", number(result.bic)},
+        {"rms_residual", number_or_null(result.rms_residual)},
+        {"noise", number_or_null(result.noise)},
+        {"residual_to_noise", number_or_null(result.noise > 0.0 ? result.rms_residual / result.noise : NAN)},
+        {"aic", number_or_null(result.aic)},
+        {"bic", number_or_null(result.bic)},
         {"points", {result.points}},
         {"free_count", {result.free_count}},
         {"iterations", {result.iterations}},

@@ -44,13 +44,13 @@ Document ranking_document(const fit::ModelChoice& choice) {
                                               {"status", {result.status}},
                                               {"converged", {result.converged}},
                                               {"free_count", {result.free_count}},
-                                              {"rms_residual", number(result.rms_residual)},
-                                              {"noise", number(result.noise)},
-                                              {"residual_to_noise", number(ratio(result))},
-                                              {"aic", number(result.aic)},
-                                              {"bic", number(result.bic)},
-                                              {"delta_aic", number(fitted.delta_aic)},
-                                              {"delta_bic", number(fitted.delta_bic)},
+                                              {"rms_residual", number_or_null(result.rms_residual)},
+                                              {"noise", number_or_null(result.noise)},
+                                              {"residual_to_noise", number_or_null(ratio(result))},
+                                              {"aic", number_or_null(result.aic)},
+                                              {"bic", number_or_null(result.bic)},
+                                              {"delta_aic", number_or_null(fitted.delta_aic)},
+                                              {"delta_bic", number_or_null(fitted.delta_bic)},
                                               {"undetermined", {std::move(undetermined)}},
                                               {"evaluations", {result.evaluations}},
                                               {"wall_seconds", {result.wall_seconds}}}});
@@ -58,8 +58,9 @@ Document ranking_document(const fit::ModelChoice& choice) {
     return {Document::Table{
         {"criterion", {std::string("bic")}},
         {"preferred", {choice.fits[choice.preferred].name}},
-        {"modulus_scale", number(choice.modulus_scale)},
-        {"time_window", {Document::List{number(choice.shortest_interval), number(choice.longest_record)}}},
+        {"modulus_scale", number_or_null(choice.modulus_scale)},
+        {"time_window",
+         {Document::List{number_or_null(choice.shortest_interval), number_or_null(choice.longest_record)}}},
         {"candidates", {std::move(candidates)}},
     }};
 }

@@ -24,7 +24,7 @@ struct Document {
 };
 
 /// `value` as a document: a finite number, else null (an undetermined error, a ratio to a zero noise).
-Document number(double value);
+Document number_or_null(double value);
 
 /// The document as JSON text indented by 2: numbers with the digits that give back the same double, counts as
 /// integers, null for null.

@@ -19,12 +19,12 @@ TEST(Document, JsonKeepsOrderTypesAndDigits) {
         {"zeta", {std::string("text")}},
         {"alpha", {true}},
         {"count", {std::size_t{7}}},
-        {"third", number(third)},
-        {"undetermined", number(std::numeric_limits<double>::quiet_NaN())},
-        {"infinite", number(std::numeric_limits<double>::infinity())},
+        {"third", number_or_null(third)},
+        {"undetermined", number_or_null(std::numeric_limits<double>::quiet_NaN())},
+        {"infinite", number_or_null(std::numeric_limits<double>::infinity())},
         {"empty_table", {Document::Table{}}},
         {"empty_list", {Document::List{}}},
-        {"list", {Document::List{number(1.5), {std::size_t{2}}}}},
+        {"list", {Document::List{number_or_null(1.5), {std::size_t{2}}}}},
     }};
     const auto json = nlohmann::ordered_json::parse(to_json(document));
     std::string keys;
@@ -42,10 +42,10 @@ TEST(Document, JsonKeepsOrderTypesAndDigits) {
 }
 
 TEST(Document, NumberIsNullOnlyWhenNotFinite) {
-    EXPECT_EQ(number(0.0), Document{0.0});
-    EXPECT_EQ(number(-1e308), Document{-1e308});
-    EXPECT_EQ(number(std::nan("")), Document{});
-    EXPECT_EQ(number(-std::numeric_limits<double>::infinity()), Document{});
+    EXPECT_EQ(number_or_null(0.0), Document{0.0});
+    EXPECT_EQ(number_or_null(-1e308), Document{-1e308});
+    EXPECT_EQ(number_or_null(std::nan("")), Document{});
+    EXPECT_EQ(number_or_null(-std::numeric_limits<double>::infinity()), Document{});
 }
 
 }  // namespace
