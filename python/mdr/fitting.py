@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import os
 import tomllib
 from dataclasses import dataclass, field
@@ -160,7 +159,7 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
     if "candidates" not in raw:
         return _result(raw)
     candidates = {str(entry["name"]): _result(entry) for entry in raw["candidates"]}
-    ranking = json.loads(raw["ranking_json"])
+    ranking = raw["ranking"]
     preferred = candidates[ranking["preferred"]]
     preferred.ranking = ranking["candidates"]
     preferred.candidates = candidates
@@ -217,7 +216,7 @@ def _rebound_arrays(data: Mapping[str, Any], i: int) -> tuple:
 
 
 def _result(raw: Mapping[str, Any]) -> FitResult:
-    summary = json.loads(raw["fit_json"])
+    summary = raw["fit"]
     result = FitResult(parameters=_numbers(summary, "parameters"), standard_errors=_numbers(summary, "standard_errors"),
                        status=summary["status"], summary=summary,
                        curves=[dict(c, kind=s["kind"], fitted=s["fitted"]) for c, s in zip(raw["curves"], summary["curves"])],

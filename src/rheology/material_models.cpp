@@ -110,12 +110,13 @@ std::vector<MaterialModel> rows() {
          [](const ModelParameters& p, const ConversionOptions&) {
              return exact(Rheology::standard(p.number("G_inf"), p.number("G1"), p.number("tau1")));
          }},
-        {"prony", "G(t) = G_inf + sum G_k exp(-t/tau_k): a Prony series (generalised Maxwell)",
+        {"prony", "G(t) = G_inf + eta delta(t) + sum G_k exp(-t/tau_k): a Prony series (generalised Maxwell)",
          {modulus("G_inf", "equilibrium modulus (0 for a fluid)"),
-          {"terms", Kind::pairs, "Pa, s", "the branches [[G_1, tau_1], [G_2, tau_2], ...]", true, 0.0, {"G", "tau"}}},
+          {"terms", Kind::pairs, "Pa, s", "the branches [[G_1, tau_1], [G_2, tau_2], ...]", true, 0.0, {"G", "tau"}},
+          {"eta", Kind::number, "Pa s", "viscosity of a dashpot in parallel", false, 0.0}},
          false,
          [](const ModelParameters& p, const ConversionOptions&) {
-             return exact(Rheology::prony(p.number("G_inf"), relaxation_terms(p)));
+             return exact(Rheology(p.number("G_inf"), p.number("eta"), relaxation_terms(p)));
          }},
         {"power_law", "G(t) = G0 (t/t0)^(-beta): power-law rheology of cells and soft tissue, as a certified Prony series",
          {modulus("G0", "modulus at t = t0"), {"beta", Kind::number, "1", "exponent, 0 < beta < 1"},
