@@ -55,14 +55,15 @@ struct Body {
     const rheology::Rheology& contact() const { return effective ? *effective : shear; }
 };
 
-Body build_body(const BodySpec& spec, const std::optional<rheology::TimeWindow>& window, const std::string& directory) {
-    rheology::ModelMaterial shear = build_material(spec.shear, window, directory);
+Body build_body(const BodySpec& spec, const std::optional<rheology::TimeWindow>& window, const std::string& directory,
+                const UnitSystem& units) {
+    rheology::ModelMaterial shear = build_material(spec.shear, window, directory, units);
     Body body{std::move(shear.series), std::nullopt, std::move(shear.origin)};
     std::optional<rheology::ModelMaterial> bulk;
     if (spec.bulk_modulus) {
         bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus), {.times_from_conversion = true}};
     }
-    if (spec.bulk) bulk = build_material(*spec.bulk, window, directory);
+    if (spec.bulk) bulk = build_material(*spec.bulk, window, directory, units);
     if (bulk) {
         body.effective = rheology::compressible_effective(body.shear, bulk->series);
         body.origin = rheology::combined_origin(body.origin, bulk->origin, " with bulk ");
@@ -275,13 +276,13 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     // Files a material names (a table's `file`) are found next to the case file (the parsed table's source).
     const auto& source_path = root_table.source().path;
     const std::string directory = source_path ? std::filesystem::path(*source_path).parent_path().string() : "";
-    const Body half_space = build_body(half_space_spec, window, directory);
+    const Body half_space = build_body(half_space_spec, window, directory, unit_system(units));
     rheology::Rheology material = half_space.contact();
     std::optional<rheology::Rheology> shear_material;
     if (half_space.effective) shear_material = half_space.shear;
     rheology::MaterialOrigin origin = half_space.origin;
     if (second_spec) {
-        const Body second = build_body(*second_spec, window, directory);
+        const Body second = build_body(*second_spec, window, directory, unit_system(units));
         material = rheology::in_series(material, second.contact());  // eq. (8): creep functions add
         if (half_space.effective || second.effective) shear_material = rheology::in_series(half_space.shear, second.shear);
         origin = rheology::combined_origin(origin, second.origin, " in series with ");
@@ -365,7 +366,8 @@ std::string describe(const drivers::ContactCase& contact_case) {
     const auto& origin = contact_case.material_origin;
     std::string model = origin.description.empty() ? std::string() : fmt::format(" {}", origin.description);
     if (origin.certificate) {
-        model = fmt::format("{} {}", model, rheology::describe_certificate(*origin.certificate, material.terms().size()));
+        model = fmt::format("{} {}", model,
+                            rheology::describe_certificate(*origin.certificate, material.terms().size(), unit_names(units)));
     }
     return fmt::format("{}{} on {} half-space{} (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
                        contact_case.title.empty() ? "" : "\"" + contact_case.title + "\": ",

@@ -6,14 +6,16 @@
 #include <gtest/gtest.h>
 
 #include "mdr/error.hpp"
+#include "mdr/io/units.hpp"
 
 namespace mdr::io {
 namespace {
 
-fit::CurveSource read(const std::string& text, const std::filesystem::path& directory = "/cases") {
+fit::CurveSource read(const std::string& text, const std::filesystem::path& directory = "/cases",
+                      const std::string& units = "SI") {
     const toml::table table = toml::parse(text);
     TableReader reader(table, "fit.data[0]");
-    return read_fit_data(reader, directory);
+    return read_fit_data(reader, directory, unit_system(units));
 }
 
 std::string message(const std::string& text) {
