@@ -124,7 +124,8 @@ FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
     } else {
         fit_case.model.set_table("load", placeholder_load);
     }
-    const UnitSystem& units = unit_system(fit_case.model.build().units);  // the model's own rules; its system
+    fit_case.units = fit_case.model.build().units;  // the model's own rules; its unit system
+    const UnitSystem& units = unit_system(fit_case.units);
 
     const auto keys = free_keys(fit_table, !fit_case.model_choice.empty());
     check_candidate_free_keys(fit_case.model_choice, keys);

@@ -71,7 +71,7 @@ std::string fitted_text(const FitCase& fit_case, const fit::FitResult& result) {
 
 }  // namespace
 
-std::string fit_json(const fit::FitResult& result) {
+std::string fit_json(const fit::FitResult& result, const std::string& units) {
     nlohmann::ordered_json json;
     json["status"] = result.status;
     json["converged"] = result.converged;
@@ -120,12 +120,13 @@ std::string fit_json(const fit::FitResult& result) {
     json["evaluations"] = result.evaluations;
     json["element_evaluations"] = result.element_evaluations;
     json["wall_seconds"] = result.wall_seconds;
+    json["units"] = units;
     return json.dump(2);
 }
 
 void write_fit_result(const std::filesystem::path& directory, const FitCase& fit_case, const fit::FitResult& result) {
     auto json = fmt::output_file((directory / "fit.json").string());
-    json.print("{}\n", fit_json(result));
+    json.print("{}\n", fit_json(result, fit_case.units));
     json.close();
 
     auto csv = fmt::output_file((directory / "curves.csv").string());
