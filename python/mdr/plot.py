@@ -439,7 +439,7 @@ def fit_rebounds(curves: Mapping[str, np.ndarray], axes=None, units: Units = "SI
     >>> axes = mdr.plot.fit_rebounds({"curve": np.array(["drops:restitution"] * 3), "t": v0,
     ...                               "measured": np.array([0.5, 0.55, 0.6]), "model": np.array([0.5, 0.56, 0.6])})
     """
-    names = _unit_names(units)
+    unit_names = _unit_names(units)
     rows = _rows(curves, _rebound_rows(curves))
     if axes is None:
         _, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 5.5))
@@ -456,8 +456,8 @@ def fit_rebounds(curves: Mapping[str, np.ndarray], axes=None, units: Units = "SI
         target.plot(v0, scale * rows["measured"][keep][order], "o", ms=4, color=colour, label=f"{data_set}: measured")
         target.plot(v0, scale * rows["model"][keep][order], "-", lw=1, color=colour, label=f"{data_set}: model")
     top.set(xscale="log", ylabel=_REBOUND_QUANTITIES["restitution"], title="Fit: rebound data and model")
-    bottom.set(xlabel=f"approach speed v0 [{names['velocity']}]",
-               ylabel=_REBOUND_QUANTITIES["contact_time"].format(time=names["time"]))
+    bottom.set(xlabel=f"approach speed v0 [{unit_names['velocity']}]",
+               ylabel=_REBOUND_QUANTITIES["contact_time"].format(time=unit_names["time"]))
     top.legend(loc="best", fontsize=8)
     return top
 
