@@ -366,8 +366,8 @@ std::string describe(const drivers::ContactCase& contact_case) {
     const auto& origin = contact_case.material_origin;
     std::string model = origin.description.empty() ? std::string() : fmt::format(" {}", origin.description);
     if (origin.certificate) {
-        model = fmt::format("{} {}", model,
-                            rheology::describe_certificate(*origin.certificate, material.terms().size(), unit_names(units)));
+        model = fmt::format("{} {}", model, rheology::describe_certificate(*origin.certificate, material.terms().size(),
+                                                                           unit_names(units)));
     }
     return fmt::format("{}{} on {} half-space{} (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
                        contact_case.title.empty() ? "" : "\"" + contact_case.title + "\": ",

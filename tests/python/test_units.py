@@ -260,8 +260,8 @@ def test_fit_data_are_converted_to_the_declared_system(tmp_path):
     axes = mdr.plot.fit_curves(table, units=cells.summary)
     assert axes.get_ylabel() == "force [nN] or depth [µm]"
     assert mdr.plot.fit_curves(table).get_ylabel() == "force [N] or depth [m]"
-    drops = {"curve": np.array(["drops:restitution"] * 3 + ["drops:contact_time"] * 3), "t": np.tile([1.0, 2.0, 3.0], 2),
-             "measured": np.full(6, 0.5), "model": np.full(6, 0.5)}
+    drops = {"curve": np.array(["drops:restitution"] * 3 + ["drops:contact_time"] * 3),
+             "t": np.tile([1.0, 2.0, 3.0], 2), "measured": np.full(6, 0.5), "model": np.full(6, 0.5)}
     bottom = mdr.plot.fit_rebounds(drops, units="nm-nN-s").figure.axes[1]
     assert (bottom.get_xlabel(), bottom.get_ylabel()) == ("approach speed v0 [nm/s]", "contact time T [ms]")
     plt.close("all")

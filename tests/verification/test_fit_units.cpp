@@ -48,8 +48,8 @@ std::vector<Sample> load_hold() {
     std::vector<Sample> samples;
     for (int i = 0; i <= 400; ++i) {
         const double t = 0.01 * i;
-        samples.push_back({t, history.value(t),
-                           reference::lee_radok_force(reference::cone_indenter(slope_deg * std::numbers::pi / 180.0), truth, history, t)});
+        const auto cone = reference::cone_indenter(slope_deg * std::numbers::pi / 180.0);
+        samples.push_back({t, history.value(t), reference::lee_radok_force(cone, truth, history, t)});
     }
     return samples;
 }
@@ -67,7 +67,9 @@ protected:
     void write_curve(const std::string& name, double time, double length, double force) const {
         auto file = fmt::output_file((scratch_ / name).string());
         file.print("t,d,F\n");
-        for (const Sample& s : load_hold()) file.print("{:.17g},{:.17g},{:.17g}\n", s.t * time, s.d * length, s.F * force);
+        for (const Sample& s : load_hold()) {
+            file.print("{:.17g},{:.17g},{:.17g}\n", s.t * time, s.d * length, s.F * force);
+        }
         file.close();
     }
 
@@ -136,13 +138,15 @@ TEST_F(FitUnits, DataAreConvertedToTheDeclaredSystem) {
     // um-nN-s: pressure nN/um^2 = 1 kPa = 1e3 Pa.
     const double kPa = 1e3;
     expect_twin(fit("um-nN-s", kPa, "file = \"um_nN.csv\"\n" + columns), si, kPa, "data in the case's units");
-    expect_twin(fit("um-nN-s", kPa, "file = \"um_nN.csv\"\n" + columns + "units = { length = \"µm\", force = \"nN\" }"),
-                si, kPa, "data in um and nN, named");
+    expect_twin(
+        fit("um-nN-s", kPa, "file = \"um_nN.csv\"\n" + columns + "units = { length = \"µm\", force = \"nN\" }"), si,
+        kPa, "data in um and nN, named");
     expect_twin(fit("um-nN-s", kPa, "file = \"si.csv\"\n" + columns + "units = { length = \"m\", force = \"N\" }"),
                 si, kPa, "data in m and N");
     write_curve("nm_pN_ms.csv", 1e3, 1e9, 1e12);
     expect_twin(fit("um-nN-s", kPa,
-                    "file = \"nm_pN_ms.csv\"\n" + columns + "units = { time = \"ms\", length = \"nm\", force = \"pN\" }"),
+                    "file = \"nm_pN_ms.csv\"\n" + columns +
+                        "units = { time = \"ms\", length = \"nm\", force = \"pN\" }"),
                 si, kPa, "data in nm, pN and ms");
     expect_twin(fit("um-nN-s", kPa,
                     "file = \"nm_pN_ms.csv\"\n" + columns + "units = { time = 1e-3, length = 1e-9, force = 1e-12 }"),

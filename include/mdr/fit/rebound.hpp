@@ -29,7 +29,8 @@ struct ReboundSource {
     double time_unit = 1.0;                     ///< the case's time units per unit of the contact time columns
 };
 
-/// Measured rebounds in the case's units (SI names below for a case in SI), validated: one impact of mass `mass` at each approach speed.
+/// Measured rebounds in the case's units (SI names below for a case in SI), validated: one impact of mass `mass` at
+/// each approach speed.
 struct ReboundData {
     std::string name;                         ///< for messages and outputs (the file stem, or given)
     double mass = 0.0;                        ///< impactor mass m [kg] > 0

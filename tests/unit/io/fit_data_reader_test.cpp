@@ -110,7 +110,8 @@ TEST(FitDataReader, UnitsConvertToTheCasesSystem) {
     EXPECT_DOUBLE_EQ(si.length_unit, 1e6);
     EXPECT_DOUBLE_EQ(si.force_unit, 1e9);
     EXPECT_EQ(in_cells("{}").length_unit, 1.0);
-    EXPECT_EQ(read("file = \"c.csv\"\ntime = \"t\"\nunits = { length = \"um\" }\n", "/cases", "mm-N-s").length_unit, 1e-3);
+    const std::string in_um = "file = \"c.csv\"\ntime = \"t\"\nunits = { length = \"um\" }\n";
+    EXPECT_EQ(read(in_um, "/cases", "mm-N-s").length_unit, 1e-3);
 
     const toml::table table = toml::parse(
         "file = \"d.csv\"\nvelocity = \"v\"\nrestitution = \"e\"\nunits = { velocity = \"mm/s\", time = \"ms\" }\n");

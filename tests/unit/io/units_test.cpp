@@ -106,14 +106,14 @@ TEST(UnitSystems, TheModelIsDescribedInTheDeclaredSystem) {
     std::string text = case_text;
     text.replace(text.find("model = \"elastic\"\nG = 2.0"), 24,
                  "model = \"kelvin_voigt\"\nG = 2.0\neta = 0.5\n[material.bulk]\nmodel = \"elastic\"\nK = 40.0");
-    EXPECT_NE(describe(parse_case(text)).find("kelvin_voigt (G = 2 kPa, eta = 0.5 kPa s) with bulk elastic (K = 40 kPa)"),
-              std::string::npos)
-        << describe(parse_case(text));
+    const std::string cells = describe(parse_case(text));
+    EXPECT_NE(cells.find("kelvin_voigt (G = 2 kPa, eta = 0.5 kPa s) with bulk elastic (K = 40 kPa)"), std::string::npos)
+        << cells;
     const std::string si_text = text.substr(text.find("[material]"));
     EXPECT_EQ(describe(parse_case(si_text)),
               "sphere R = 5 on a viscoelastic half-space kelvin_voigt (G = 2 Pa, eta = 0.5 Pa s) with bulk elastic "
-              "(K = 40 Pa) (G(0+) = inf Pa, G(inf) = 1.906 Pa, 1 branch(es)), displacement control, 2 history points over "
-              "t = 0 .. 1 s");
+              "(K = 40 Pa) (G(0+) = inf Pa, G(inf) = 1.906 Pa, 1 branch(es)), displacement control, 2 history "
+              "points over t = 0 .. 1 s");
     text = case_text;
     text.replace(text.find("model = \"elastic\"\nG = 2.0"), 24,
                  "model = \"fractional_kelvin_voigt\"\nG = 2.0\nc = 0.5\nalpha = 0.3");
