@@ -28,7 +28,7 @@ enum class ParameterKind {
 struct ModelParameter {
     std::string key;            ///< as in a shear table; a bulk table writes K for a leading G (G_inf -> K_inf)
     ParameterKind kind = ParameterKind::number;
-    std::string unit;           ///< e.g. "Pa", "Pa s", "s", "1"
+    std::string unit;           ///< in SI symbols, e.g. "Pa", "Pa s", "s", "1" (a case's system: UnitNames)
     std::string documentation;  ///< one line
     bool required = true;       ///< false: optional (a number then takes default_value)
     double default_value = 0.0; ///< for an optional number
