@@ -46,7 +46,7 @@ std::string UnitSystem::names(std::string_view si_unit) const {
     return text;
 }
 
-rheology::UnitNames unit_names(const UnitSystem& system) {
+std::function<std::string(const std::string&)> unit_names(const UnitSystem& system) {
     return [&system](const std::string& si_unit) { return system.names(si_unit); };
 }
 

@@ -9,11 +9,10 @@
 /// Shore durometer (shore_reader.cpp). Each declared system is consistent (force = mass x length / time^2,
 /// pressure = force / length^2).
 
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
-
-#include "mdr/rheology/material_models.hpp"
 
 namespace mdr::io {
 
@@ -43,9 +42,9 @@ struct UnitSystem {
 /// The declared systems, SI first (the default).
 std::span<const UnitSystem> unit_systems();
 
-/// How rheology's descriptions print a registry unit in `system` (UnitSystem::names); `system` is one of
-/// unit_systems(), which live as long as the program.
-rheology::UnitNames unit_names(const UnitSystem& system);
+/// How rheology's descriptions print a registry unit in `system` (UnitSystem::names; a rheology::UnitNames);
+/// `system` is one of unit_systems(), which live as long as the program.
+std::function<std::string(const std::string&)> unit_names(const UnitSystem& system);
 
 /// The system named `name`. Throws mdr::InvalidInput (key `units`) for an unknown name, listing the known ones.
 const UnitSystem& unit_system(std::string_view name);
