@@ -37,7 +37,7 @@ py::dict fit_output(const io::FitCase& fit_case, const fit::FitResult& result) {
         curve_list.append(entry);
     }
     py::dict out;
-    out["fit"] = document_object(io::fit_document(result));
+    out["fit"] = document_object(io::fit_document(result, fit_case.units));
     out["fitted_case"] = io::fitted_case_text(fit_case, result.values, "");
     out["curves"] = curve_list;
     const auto& bands = result.material;

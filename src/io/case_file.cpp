@@ -50,12 +50,12 @@ BodySpec read_body(TableReader& table) {
 
 // One body built (over the case's time window when a model is converted to a series).
 rheology::Body build_body(const BodySpec& spec, const std::optional<rheology::TimeWindow>& window,
-                          const std::string& directory) {
-    rheology::Body body{build_material(spec.shear, window, directory)};
+                          const std::string& directory, const UnitSystem& units) {
+    rheology::Body body{build_material(spec.shear, window, directory, units)};
     if (spec.bulk_modulus) {
         body.bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus), {.times_from_conversion = true}};
     }
-    if (spec.bulk) body.bulk = build_material(*spec.bulk, window, directory);
+    if (spec.bulk) body.bulk = build_material(*spec.bulk, window, directory, units);
     return body;
 }
 
@@ -254,8 +254,10 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     const auto& source_path = root_table.source().path;
     const std::string directory = source_path ? std::filesystem::path(*source_path).parent_path().string() : "";
     std::optional<rheology::Body> second;
-    if (second_spec) second = build_body(*second_spec, window, directory);
-    rheology::ContactMaterial contact = rheology::contact_material(build_body(half_space_spec, window, directory), second);
+    const UnitSystem& system = unit_system(units);
+    if (second_spec) second = build_body(*second_spec, window, directory, system);
+    rheology::ContactMaterial contact =
+        rheology::contact_material(build_body(half_space_spec, window, directory, system), second);
 
     drivers::ContactCase contact_case{title,    std::move(contact.material),  std::move(indenter), control,
                                       std::move(history), end_time, std::move(snapshots), numerics,
@@ -336,7 +338,8 @@ std::string describe(const drivers::ContactCase& contact_case) {
     const auto& origin = contact_case.material_origin;
     std::string model = origin.description.empty() ? std::string() : fmt::format(" {}", origin.description);
     if (origin.certificate) {
-        model = fmt::format("{} {}", model, rheology::describe_certificate(*origin.certificate, material.terms().size()));
+        model = fmt::format("{} {}", model, rheology::describe_certificate(*origin.certificate, material.terms().size(),
+                                                                           unit_names(units)));
     }
     return fmt::format("{}{} on {} half-space{} (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
                        contact_case.title.empty() ? "" : "\"" + contact_case.title + "\": ",

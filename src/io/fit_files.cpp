@@ -68,7 +68,7 @@ std::string fitted_text(const FitCase& fit_case, const fit::FitResult& result) {
 
 }  // namespace
 
-Document fit_document(const fit::FitResult& result) {
+Document fit_document(const fit::FitResult& result, const std::string& units) {
     Document::Table parameters, errors, intervals, undetermined;
     Document::List correlation;
     for (std::size_t j = 0; j < result.names.size(); ++j) {
@@ -119,14 +119,17 @@ Document fit_document(const fit::FitResult& result) {
         {"evaluations", {result.evaluations}},
         {"element_evaluations", {result.element_evaluations}},
         {"wall_seconds", {result.wall_seconds}},
+        {"units", {units}},
     }};
 }
 
-std::string fit_json(const fit::FitResult& result) { return to_json(fit_document(result)); }
+std::string fit_json(const fit::FitResult& result, const std::string& units) {
+    return to_json(fit_document(result, units));
+}
 
 void write_fit_result(const std::filesystem::path& directory, const FitCase& fit_case, const fit::FitResult& result) {
     auto json = fmt::output_file((directory / "fit.json").string());
-    json.print("{}\n", fit_json(result));
+    json.print("{}\n", fit_json(result, fit_case.units));
     json.close();
 
     auto csv = fmt::output_file((directory / "curves.csv").string());
