@@ -11,6 +11,7 @@
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/material_table.hpp"
 #include "mdr/io/result_directory.hpp"
+#include "mdr/io/units.hpp"
 #include "mdr/rheology/material_models.hpp"
 #include "setup_progress.hpp"
 
@@ -71,7 +72,8 @@ void add_material_command(CLI::App& app, int& exit_code) {
                     std::sort(w.begin(), w.end());
                 }
                 fmt::print("{} {}\n", origin.description,
-                           rheology::describe_certificate(*origin.certificate, material.terms().size()));
+                           rheology::describe_certificate(*origin.certificate, material.terms().size(),
+                                                          io::unit_names(io::unit_system(contact_case.units))));
             }
             directory.write(
                 [&](const std::filesystem::path& files) {

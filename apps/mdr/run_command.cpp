@@ -30,7 +30,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
                 const SetupProgress preparing;
                 return io::load_case(*case_path);
             }();
-            if (contact_case.tangential_approximate) {
+            if (contact_case.tangential_approximate()) {
                 fmt::print(stderr, "mdr: warning: tangential loading of compressible or dissimilar bodies: the MDR "
                                    "maps only the normal problem exactly, the tangential result is an approximation\n");
             }

@@ -3,6 +3,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "document_object.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/candidates.hpp"
 #include "mdr/fit/fit_case_run.hpp"
@@ -23,7 +24,7 @@ using CurveArrays =
 using ReboundArrays = std::tuple<std::size_t, std::string, std::optional<double>, std::vector<double>,
                                  std::vector<double>, std::vector<double>, std::vector<double>, std::vector<double>>;
 
-// fit.json, the fitted case and the curves of one fit.
+// fit.json (as a dict), the fitted case and the curves of one fit.
 py::dict fit_output(const io::FitCase& fit_case, const fit::FitResult& result) {
     py::list curve_list;
     for (const auto& curve : result.curves) {
@@ -36,7 +37,7 @@ py::dict fit_output(const io::FitCase& fit_case, const fit::FitResult& result) {
         curve_list.append(entry);
     }
     py::dict out;
-    out["fit_json"] = io::fit_json(result);
+    out["fit"] = document_object(io::fit_document(result, fit_case.units));
     out["fitted_case"] = io::fitted_case_text(fit_case, result.values, "");
     out["curves"] = curve_list;
     const auto& bands = result.material;
@@ -115,7 +116,7 @@ py::dict fit_toml_case(const std::string& toml_text, const std::string& source, 
             candidates.append(entry);
         }
         py::dict out = fit_output(choice.fits[choice.preferred].fitted_case, choice.fits[choice.preferred].result);
-        out["ranking_json"] = io::ranking_json(choice);
+        out["ranking"] = document_object(io::ranking_document(choice));
         out["candidates"] = candidates;
         return out;
     }

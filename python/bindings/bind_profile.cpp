@@ -205,6 +205,14 @@ py::list shape_rows() {
 void bind_profile(py::module_& module) {
     module.def("_shapes", &shape_rows,
                "The registry of indenter shapes (name, documentation, parameters), for the stubs and the docs.");
+    module.def(
+        "_interpolations",
+        [] {
+            py::list rows;
+            for (const auto& row : profile::interpolations()) rows.append(py::dict("name"_a = row.name, "use"_a = row.use));
+            return rows;
+        },
+        "The registry of a tabulated profile's interpolations (name, use), the default first, for the docs.");
     py::class_<Profile, std::shared_ptr<Profile>> indenter(module, "Indenter", class_docstring().c_str());
     for (const Shape& shape : profile::shapes()) {
         indenter.def_static(

@@ -144,7 +144,9 @@ Examples
         .def("with_bulk", &rheology::compressible_effective, py::arg("bulk"),
              R"doc(The effective material of a compressible half-space (eq. 56): J_eff = J + J_B.
 
-What a run uses for [material] K or [material.bulk].
+What a run uses for [material] K or [material.bulk]. The result is a plain Material: put into a case as
+[material] it is run as an incompressible body's, so tangential loading cannot know it is approximate there
+(section 7); give K or [material.bulk] in the case for that.
 
 Parameters
 ----------

@@ -14,18 +14,18 @@ from ._mdr import Indenter, Material
 
 def material_table(material: Material) -> dict[str, Any]:
     """The `[material]` table of a Material: its named model where one fits (elastic, viscous, kelvin_voigt), else
-    a Prony series. A parallel dashpot together with relaxation branches has no model of the case format."""
+    a Prony series (with its parallel dashpot `eta` where it has one)."""
     terms = [[modulus, time] for modulus, time in material.terms]
-    if material.eta > 0.0 and terms:
-        raise ValueError("material: a Material with both a parallel dashpot (eta) and relaxation branches has no "
-                         "model of the case format; give [material] as a dict")
-    if material.eta > 0.0:
+    if not terms:
+        if material.eta == 0.0:
+            return {"model": "elastic", "G": material.G_inf}
         if material.G_inf == 0.0:
             return {"model": "viscous", "eta": material.eta}
         return {"model": "kelvin_voigt", "G": material.G_inf, "eta": material.eta}
-    if not terms:
-        return {"model": "elastic", "G": material.G_inf}
-    return {"model": "prony", "G_inf": material.G_inf, "terms": terms}
+    table = {"model": "prony", "G_inf": material.G_inf, "terms": terms}
+    if material.eta > 0.0:
+        table["eta"] = material.eta
+    return table
 
 
 def _plain(value: Any, key: str) -> Any:

@@ -103,7 +103,37 @@ class DirectoryStack:
 
 def open_stack(source: Any, dataset: str = "curves"):
     """A stack of curves from an array (numpy, or indexable like one: an h5py dataset, a memmap), an HDF5 file
-    (dataset `dataset`) or a directory with positions.csv."""
+    (dataset `dataset`) or a directory with positions.csv.
+
+    Parameters
+    ----------
+    source : array-like, str or os.PathLike
+        An array (ny, nx, nt) or (ny, nx, nt, channels), the curve of pixel (row, col) being ``source[row, col]``;
+        an HDF5 file ``*.h5`` or ``*.hdf5`` holding such an array (needs h5py); or a directory with
+        ``positions.csv`` (columns ``file,row,col``) and one CSV file a listed curve. A stack is returned as it is.
+    dataset : str, optional
+        The dataset of an HDF5 file (default ``"curves"``).
+
+    Returns
+    -------
+    ArrayStack or DirectoryStack
+        ``shape`` (ny, nx), ``read(start, stop)`` (the curves of the pixels start..stop-1, row-major; a directory's
+        curve is a dict {column name: numpy array}, None where no file is listed) and ``close()`` (closes an HDF5
+        file that it opened).
+
+    Raises
+    ------
+    ValueError
+        For an array of fewer than 3 dimensions, a missing or malformed positions.csv, an HDF5 file without the
+        dataset, or a path that is neither.
+
+    Examples
+    --------
+    >>> stack = mdr.curve_maps.open_stack(np.zeros((2, 3, 50)))
+    >>> stack.shape, stack.read(4, 6)[1].shape     # pixels (1, 1) and (1, 2)
+    ((2, 3), (50,))
+    >>> stack = mdr.curve_maps.open_stack("force-map.h5", dataset="forces")   # doctest: +SKIP
+    """
     if isinstance(source, (ArrayStack, DirectoryStack)):
         return source
     if isinstance(source, (str, os.PathLike)):
@@ -172,7 +202,27 @@ class CurveMap:
 
 
 def heat_map(values: np.ndarray, name: str):
-    """A figure of a (ny, nx) map (pixels without a value left white)."""
+    """A figure of a (ny, nx) map (pixels without a value left white), the heat maps of CurveMap.write_files.
+
+    Parameters
+    ----------
+    values : numpy.ndarray
+        The (ny, nx) map; nan where a pixel has no value.
+    name : str
+        The value's name, for the colour bar and the title.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Made without pyplot (no GUI backend; safe in any thread): save it with ``savefig``.
+
+    Examples
+    --------
+    >>> values = np.array([[1.0, 2.0, 3.0], [4.0, np.nan, 6.0]])
+    >>> figure = mdr.curve_maps.heat_map(values, "material.G")
+    >>> figure.axes[0].get_title()
+    'material.G (5 of 6 pixels)'
+    """
     from matplotlib.figure import Figure  # no pyplot: no GUI backend, safe in any thread
 
     figure = Figure(figsize=(5.5, 4.5))
@@ -188,13 +238,56 @@ def heat_map(values: np.ndarray, name: str):
 def map_curves(per_curve: Callable[[Any], Mapping[str, float]], stack: Any, *, scheduler: Any = None,
                jobs: int | None = None, out: str | os.PathLike | None = None, figures: bool = True,
                progress: Callable[[int, int], None] | None = None) -> CurveMap:
-    """Runs `per_curve(curve)` for every pixel of `stack` (see open_stack) and returns a CurveMap: one map per name
-    of the mappings it returns, nan where a pixel failed or has no curve; a pixel whose function raises is FAILED
-    with the reason ("ExceptionType: message") and does not stop the map. Locally on `jobs` processes (default: all
-    cores), or with `scheduler` (Dask address or distributed.Client) on its workers, with the same values bit for
-    bit. `per_curve` must be picklable: a function of an installed module (functools.partial for settings) or one
-    defined in `__main__` with a scheduler. With `out`, the files of CurveMap.write_files go to that result
-    directory (the rules of --out: checked before any computing, written whole or not at all)."""
+    """Runs `per_curve(curve)` for every pixel of `stack` and collects a map per value, the status of every pixel
+    and the reason of every failure.
+
+    A pixel whose function raises is FAILED with the reason ("ExceptionType: message") and does not stop the map.
+    The pixels run locally on `jobs` processes, or with `scheduler` on the workers of a Dask cluster, with the same
+    values bit for bit (docs/distributed.md).
+
+    Parameters
+    ----------
+    per_curve : callable
+        ``per_curve(curve)`` returns a dict {name: number} for one pixel's curve (as `open_stack` reads it). It
+        must be picklable: a function of an installed module (``functools.partial`` for settings), or one defined
+        in ``__main__`` with a scheduler.
+    stack : array-like, str or os.PathLike
+        The curves: anything `open_stack` takes (an array (ny, nx, nt[, channels]), an HDF5 file, a directory with
+        positions.csv), or a stack it returned.
+    scheduler : str or distributed.Client, optional
+        A Dask scheduler address ``"tcp://HOST:PORT"`` or a client; the pixels then run in chunks on its workers.
+    jobs : int, optional
+        Local processes (default: all cores); not with a scheduler.
+    out : str or os.PathLike, optional
+        A result directory for the files of ``CurveMap.write_files``, with the rules of ``--out``: checked before
+        any computing, written whole or not at all.
+    figures : bool, optional
+        With `out`: a heat map NAME.png per value too (default True).
+    progress : callable, optional
+        Called as ``progress(done, total)`` with the number of pixels finished, at least every 0.2 s.
+
+    Returns
+    -------
+    CurveMap
+        ``values[name]`` (ny, nx) per name the function returned (nan where a pixel failed or has no curve),
+        ``status`` (``OK``, ``FAILED``, ``NO_CURVE``), ``reasons`` ("" where ok) and ``batch`` (how the map ran).
+
+    Examples
+    --------
+    Hertz force curves F = (16/3) G sqrt(R) d^(3/2) of a 1 x 2 map, each fitted by ``mdr.fit_maps.fit_curve`` (a
+    function of the package, so picklable; ``mdr.fit_map`` does the same in one call):
+
+    >>> import functools
+    >>> t = np.linspace(0.0, 1.0, 51)
+    >>> d = 1e-5 * t
+    >>> forces = np.stack([16.0 / 3.0 * G * math.sqrt(1e-3) * d ** 1.5 for G in (1e6, 2e6)])[None]   # (1, 2, 51)
+    >>> case = {"material": {"model": "elastic", "G": 3e5}, "indenter": {"shape": "sphere", "R": 1e-3},
+    ...         "fit": {"free": ["material.G"], "contact_point": "fixed", "baseline": "fixed"}}
+    >>> per_curve = functools.partial(mdr.fit_maps.fit_curve, case=case, time=t, depth=d)
+    >>> result = mdr.map_curves(per_curve, forces, jobs=1)
+    >>> np.round(result.values["material.G"] / 1e6, 4), result.status
+    (array([[1., 2.]]), array([[0, 0]], dtype=int8))
+    """
     opened = open_stack(stack)
     try:
         directory = None

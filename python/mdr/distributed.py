@@ -207,11 +207,55 @@ def _wait_some(completed: queue.SimpleQueue, timeout: float) -> list:
 def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int, int], Any], total: int, *,
                 scheduler: Any = None, jobs: int | None = None, target_seconds: float = TARGET_SECONDS,
                 progress: Callable[[int, int], None] | None = None) -> MapOutcome:
-    """Runs `chunk_function(read_chunk(start, stop))` over chunks of the items 0..total-1, which must return one
-    output per item of the chunk, and returns the outputs in item order. `chunk_function` must be picklable by
-    reference (a function of an installed module, e.g. with functools.partial) or be defined in `__main__`;
-    `read_chunk` runs here, so data read from local files or arrays travels with the tasks. `progress(done, total)`
-    is called at least every 0.2 s. KeyboardInterrupt cancels every chunk and closes what was opened."""
+    """Runs `chunk_function(read_chunk(start, stop))` over chunks of the items 0..total-1 and returns the outputs in
+    item order, whatever ran where.
+
+    Chunks carry about `target_seconds` of work each, as measured on the first ones; at most two a worker thread
+    are in flight. KeyboardInterrupt cancels every chunk and closes what was opened.
+
+    Parameters
+    ----------
+    chunk_function : callable
+        ``chunk_function(chunk)`` returns one output per item of the chunk, in order. It must be picklable by
+        reference (a function of an installed module, e.g. with functools.partial) or be defined in ``__main__``.
+    read_chunk : callable
+        ``read_chunk(start, stop)`` gives the data of the items start..stop-1. It runs here, so data read from
+        local files or arrays travels with the tasks (workers need no shared file system).
+    total : int
+        The number of items.
+    scheduler : str or distributed.Client, optional
+        A Dask scheduler address ``"tcp://HOST:PORT"`` or a client; None (the default): local processes.
+    jobs : int, optional
+        Local processes (default: all cores); only without a scheduler.
+    target_seconds : float, optional
+        The compute time a chunk should carry (default `TARGET_SECONDS`, 0.1 s).
+    progress : callable, optional
+        Called as ``progress(done, total)`` at least every 0.2 s.
+
+    Returns
+    -------
+    MapOutcome
+        ``outputs[i]`` the output for item i, and how the map ran: scheduler, workers, threads, tasks, retried,
+        seconds, compute_seconds.
+
+    Raises
+    ------
+    SchedulerError
+        When no scheduler answers at the address, or no worker joins within `WORKER_TIMEOUT`.
+    RuntimeError
+        When a chunk fails as a whole on a worker (a missing module, another mdr version) or is lost with more
+        workers than Dask allows.
+
+    Examples
+    --------
+    The chunk function ``np.sqrt`` (picklable) over chunks of squares read here:
+
+    >>> outcome = mdr.distributed.ordered_map(np.sqrt, lambda start, stop: np.arange(start, stop) ** 2.0, 6, jobs=1)
+    >>> [float(x) for x in outcome.outputs], outcome.scheduler
+    ([0.0, 1.0, 2.0, 3.0, 4.0, 5.0], 'local')
+    >>> outcome = mdr.distributed.ordered_map(np.sqrt, read_chunk, 10**6,
+    ...                                       scheduler="tcp://127.0.0.1:8786")      # doctest: +SKIP
+    """
     start_time = time.perf_counter()
     pool = _LocalPool(jobs) if scheduler is None else _DaskPool(scheduler)
     outputs: list = [None] * total
@@ -268,9 +312,32 @@ def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int
 
 def map_items(function: Callable[[Any], Any], items: Sequence[Any], **options: Any) -> tuple[list, list[str],
                                                                                               MapOutcome]:
-    """`function(item)` for every item, in order (options: those of ordered_map). Returns (results, errors,
-    outcome): results[i] is None and errors[i] the reason ("ExceptionType: message") where the item failed; a
-    failed item does not stop the others."""
+    """`function(item)` for every item, in order; a failed item does not stop the others.
+
+    Parameters
+    ----------
+    function : callable
+        ``function(item)`` for one item; picklable as for `ordered_map`.
+    items : sequence
+        The items; slices of it travel with the tasks.
+    **options
+        Those of `ordered_map`: ``scheduler``, ``jobs``, ``target_seconds``, ``progress``.
+
+    Returns
+    -------
+    results : list
+        ``function(item)`` per item; None where the item failed.
+    errors : list of str
+        The reason ("ExceptionType: message") where the item failed, else "".
+    outcome : MapOutcome
+        How the map ran (its ``outputs`` are the pairs (result, error)).
+
+    Examples
+    --------
+    >>> results, errors, outcome = mdr.distributed.map_items(math.sqrt, [4.0, -1.0, 9.0], jobs=1)
+    >>> results, errors
+    ([2.0, None, 3.0], ['', 'ValueError: math domain error', ''])
+    """
     outcome = ordered_map(functools.partial(_each_item, function), lambda start, stop: list(items[start:stop]),
                           len(items), **options)
     results = [result for result, _ in outcome.outputs]
@@ -289,15 +356,89 @@ def _each_item(function: Callable[[Any], Any], items: list) -> list[tuple[Any, s
 
 
 def sweep_chunk(case_text: str, source: str, keys: list[str], points: Any) -> list[tuple[dict[str, Any], str]]:
-    """The rows (summary, error) of a sweep at the given points, on one thread (the chunk task of a sweep)."""
+    r"""The rows (summary, error) of a sweep at the given points, on one thread (the chunk task of a sweep).
+
+    Parameters
+    ----------
+    case_text : str
+        The case as TOML text.
+    source : str
+        The case's name in messages (its file name).
+    keys : list of str
+        The varied dotted keys, e.g. ``"material.G"`` or ``"load.history[1][1]"``.
+    points : array-like
+        One row a point, one column a key.
+
+    Returns
+    -------
+    list of (dict, str)
+        Per point its summary (the keys of summary.json; {} where the point failed) and its error ("" where it
+        ran).
+
+    Raises
+    ------
+    mdr.InvalidInput
+        For a bad case, a key that is not a number of the case, or points with another number of columns.
+
+    Examples
+    --------
+    >>> text = ('[material]\nmodel = "elastic"\nG = 1.0e6\n[indenter]\nshape = "sphere"\nR = 0.01\n'
+    ...         '[load]\ncontrol = "displacement"\nhistory = [[0.0, 0.0], [1.0, 1.0e-4]]\n')
+    >>> rows = mdr.distributed.sweep_chunk(text, "case.toml", ["material.G"], [[1.0e6], [4.0e6]])
+    >>> [round(summary["max_force"] / rows[0][0]["max_force"], 6) for summary, _ in rows], [e for _, e in rows]
+    ([1.0, 4.0], ['', ''])
+    """
     summaries, errors = _mdr._sweep_points(case_text, source, keys, points, 1)
     return list(zip(summaries, errors))
 
 
 def sweep_rows(case_text: str, source: str, specs: list[str], scheduler: Any,
                progress: Callable[[int, int], None] | None = None) -> tuple[list[str], Any, MapOutcome]:
-    """The rows of a sweep run through a Dask scheduler: (keys, points, outcome) with outcome.outputs[i] =
-    (summary, error) of grid point i ({} as the summary of a point that failed), the same rows as the local sweep's, bit for bit."""
+    r"""The rows of a sweep run in chunks through a Dask scheduler (`mdr.sweep` with ``scheduler=``), the same rows
+    as the local sweep's, bit for bit.
+
+    Parameters
+    ----------
+    case_text : str
+        The case as TOML text.
+    source : str
+        The case's name in messages (its file name).
+    specs : list of str
+        One axis each, ``"KEY=V1,V2,..."`` or ``"KEY=START:STOP:COUNT[:log]"`` (the last varies fastest).
+    scheduler : str or distributed.Client or None
+        A Dask scheduler address ``"tcp://HOST:PORT"`` or a client; None runs the chunks in local processes.
+    progress : callable, optional
+        Called as ``progress(done, total)`` at least every 0.2 s.
+
+    Returns
+    -------
+    keys : list of str
+        The varied keys.
+    points : numpy.ndarray
+        The grid, one row a point.
+    outcome : MapOutcome
+        ``outputs[i]`` = (summary, error) of point i ({} as the summary of a point that failed), and how it ran.
+
+    Raises
+    ------
+    mdr.InvalidInput
+        For a bad case or axis, checked here before any chunk is sent.
+    SchedulerError
+        When the scheduler cannot be used.
+
+    Examples
+    --------
+    >>> text = ('[material]\nmodel = "elastic"\nG = 1.0e6\n[indenter]\nshape = "sphere"\nR = 0.01\n'
+    ...         '[load]\ncontrol = "displacement"\nhistory = [[0.0, 0.0], [1.0, 1.0e-4]]\n')
+    >>> keys, points, outcome = mdr.distributed.sweep_rows(text, "case.toml", ["material.G=1e6,4e6"], None)
+    >>> keys, points.tolist(), [round(summary["max_force"], 4) for summary, _ in outcome.outputs]   # Hertz
+    (['material.G'], [[1000000.0], [4000000.0]], [0.5333, 2.1333])
+
+    The same rows on the workers of a Dask scheduler:
+
+    >>> rows = mdr.distributed.sweep_rows(text, "case.toml", ["material.G=1e6,4e6"],
+    ...                                   "tcp://127.0.0.1:8786")      # doctest: +SKIP
+    """
     keys, points = _mdr._sweep_grid(specs)
     _mdr._sweep_points(case_text, source, keys, points[:0], 1)  # validates the case and the keys here, first
     outcome = ordered_map(functools.partial(sweep_chunk, case_text, source, keys),

@@ -23,10 +23,44 @@ class FitNotConverged(Exception):
 
 def fit_curve(curve: Any, case: Mapping[str, Any], time: Sequence[float] | None = None,
               depth: Sequence[float] | None = None, columns: Mapping[str, str] | None = None) -> dict[str, float]:
-    """Fits one curve with mdr.fit and returns {key: value, key + "_stderr": standard error} for every free key,
-    `rms_residual` and `evaluations`. The curve: a dict of columns (named by `columns`, {"time": name, ...}, default
-    the channel names), a (nt, 3) array of time, depth and force, or a (nt,) array of force with the common `time`
-    and `depth`. Raises FitNotConverged with the fit's status when it did not converge, ValueError for a bad curve."""
+    """Fits one curve with mdr.fit: the per-curve function of `fit_map`.
+
+    Parameters
+    ----------
+    curve : dict, numpy.ndarray
+        A dict of columns (named by `columns`), a (nt, 3) array of time [s], depth [m] and force [N], or a (nt,)
+        array of force with the common `time` and `depth`.
+    case : dict
+        A fit case (``[fit]`` table included) as a dict; its ``[[fit.data]]`` is not used.
+    time, depth : sequence of float, optional
+        The common time [s] and depth [m] of curves given as force alone.
+    columns : dict, optional
+        The column names of a dict curve, ``{"time": name, "depth": name, "force": name}`` (default: those names).
+
+    Returns
+    -------
+    dict
+        ``{key: value, key + "_stderr": standard error}`` for every free key, ``rms_residual`` and
+        ``evaluations``.
+
+    Raises
+    ------
+    FitNotConverged
+        With the fit's status, when it stopped without converging.
+    ValueError
+        For a bad curve or case (the fit's message).
+
+    Examples
+    --------
+    >>> t = np.linspace(0.0, 1.0, 51)
+    >>> d = 1e-5 * t
+    >>> F = 16.0 / 3.0 * 1e6 * math.sqrt(1e-3) * d ** 1.5          # Hertz, G = 1 MPa, R = 1 mm
+    >>> case = {"material": {"model": "elastic", "G": 3e5}, "indenter": {"shape": "sphere", "R": 1e-3},
+    ...         "fit": {"free": ["material.G"], "contact_point": "fixed", "baseline": "fixed"}}
+    >>> values = mdr.fit_maps.fit_curve(F, case, time=t, depth=d)
+    >>> round(values["material.G"] / 1e6, 4), sorted(values)
+    (1.0, ['evaluations', 'material.G', 'material.G_stderr', 'rms_residual'])
+    """
     from .fitting import fit
 
     if isinstance(curve, Mapping):
@@ -57,13 +91,53 @@ def fit_map(case: str | os.PathLike | Mapping[str, Any], stack: Any, *, time: Se
             depth: Sequence[float] | None = None, columns: Mapping[str, str] | None = None, scheduler: Any = None,
             jobs: int | None = None, out: str | os.PathLike | None = None, figures: bool = True,
             progress: Callable[[int, int], None] | None = None) -> CurveMap:
-    """Fits every curve of `stack` (mdr.curve_maps.open_stack: an array (ny, nx, nt) of force with `time` and
-    `depth`, an array (ny, nx, nt, 3) of time, depth and force, an HDF5 file, or a directory of curve files with
-    positions.csv whose columns `columns` names) with the fit case `case` (its [fit] table; its [[fit.data]], if
-    any, is replaced by each pixel's curve). Returns a CurveMap: per free key a map of values and one of standard
-    errors (`KEY_stderr`), `rms_residual` and `evaluations`; a pixel whose fit fails or does not converge is FAILED
-    with the reason. Options: those of mdr.map_curves (a Dask `scheduler`, local `jobs`, a result directory `out`
-    with arrays and heat maps)."""
+    """Fits every curve of `stack` with the fit case `case`: `mdr.map_curves` with `fit_curve` for every pixel.
+
+    A pixel whose fit fails or does not converge is FAILED with the reason; the map goes on. Locally on `jobs`
+    processes or on the workers of a Dask `scheduler`, with the same values bit for bit (docs/distributed.md).
+
+    Parameters
+    ----------
+    case : str, os.PathLike or dict
+        A fit case (docs/case-format.md, "Fitting"): its ``[fit]`` table is used; its ``[[fit.data]]``, if any, is
+        replaced by each pixel's curve.
+    stack : array-like, str or os.PathLike
+        What ``mdr.curve_maps.open_stack`` takes: an array (ny, nx, nt) of force [N] with `time` and `depth`, an
+        array (ny, nx, nt, 3) of time, depth and force, an HDF5 file of either, or a directory of curve files with
+        positions.csv whose columns `columns` names.
+    time, depth : sequence of float, optional
+        The common time [s] and depth [m] of a stack of forces alone.
+    columns : dict, optional
+        The column names of a directory's curves, ``{"time": name, "depth": name, "force": name}`` (default: those
+        names).
+    scheduler, jobs, out, figures, progress
+        As for `mdr.map_curves`: a Dask scheduler or local processes, a result directory with the arrays and heat
+        maps, a progress callback ``progress(done, total)``.
+
+    Returns
+    -------
+    CurveMap
+        Per free key a map of values and one of standard errors (``KEY_stderr``), ``rms_residual`` and
+        ``evaluations``; ``status`` and ``reasons`` per pixel.
+
+    Examples
+    --------
+    A 2 x 2 map of Hertz curves F = (16/3) G sqrt(R) d^(3/2), one pixel with a gap in its force:
+
+    >>> t = np.linspace(0.0, 1.0, 51)
+    >>> d = 1e-5 * t
+    >>> G = np.array([[1e6, 2e6], [3e6, 4e6]])
+    >>> forces = 16.0 / 3.0 * G[..., None] * math.sqrt(1e-3) * d ** 1.5                  # (2, 2, 51)
+    >>> forces[1, 1, 20] = np.nan
+    >>> case = {"material": {"model": "elastic", "G": 3e5}, "indenter": {"shape": "sphere", "R": 1e-3},
+    ...         "fit": {"free": ["material.G"], "contact_point": "fixed", "baseline": "fixed"}}
+    >>> fits = mdr.fit_map(case, forces, time=t, depth=d, jobs=1)
+    >>> np.round(fits.values["material.G"] / 1e6, 4)
+    array([[ 1.,  2.],
+           [ 3., nan]])
+    >>> fits.status[1, 1] == mdr.curve_maps.FAILED, fits.reasons[1, 1]
+    (True, 'InvalidInput: force = nan: at index 20: must be a finite number')
+    """
     if isinstance(case, (str, os.PathLike)):
         with open(case, "rb") as handle:
             case = tomllib.load(handle)

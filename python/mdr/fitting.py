@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import os
 import tomllib
 from dataclasses import dataclass, field
@@ -34,8 +33,8 @@ class FitResult:
     curves : list of dict
         Per curve: ``name``, ``kind`` (``"curve"``), ``fitted`` (``"force"`` or ``"depth"``), ``t``, ``measured``,
         ``model`` and ``drive`` (numpy arrays). Rebound data give one entry per quantity (``kind`` ``"rebound"``,
-        ``fitted`` ``"restitution"`` or ``"contact_time"``) with ``t`` holding the approach speeds v0 [m/s] and an
-        empty ``drive``.
+        ``fitted`` ``"restitution"`` or ``"contact_time"``) with ``t`` holding the approach speeds v0 and an
+        empty ``drive``. Numbers in the case's units (``summary["units"]``).
     fitted_case : str
         The case with the fitted values, as TOML text.
     ranking : list of dict
@@ -46,8 +45,8 @@ class FitResult:
     candidates : dict
         With ``fit.candidates`` or ``[fit.spectrum]``: every candidate's own :class:`FitResult`, by name.
     spectrum : dict or None
-        In spectrum mode (or for the "spectrum" candidate): ``tau`` (the grid [s]), ``G`` (its moduli [Pa]) and
-        ``G_inf`` [Pa].
+        In spectrum mode (or for the "spectrum" candidate): ``tau`` (the grid), ``G`` (its moduli) and
+        ``G_inf``, in the case's units (SI: s, Pa).
     material : dict
         The identified material on the data's window: ``t``, ``G``, ``J`` and ``omega``, ``storage``, ``loss``
         (numpy arrays), each function with its 95 % band ``*_lower``, ``*_upper`` (NaN where an undetermined
@@ -98,17 +97,18 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
         A case file with a ``[fit]`` table, or a dict of the same structure (docs/case-format.md, "Fitting").
         Paths of ``[[fit.data]]`` are relative to the case file's directory (the working directory for a dict).
     data : sequence of dict, optional
-        Curves as arrays instead of ``[[fit.data]]``: each a dict with ``time`` [s], ``depth`` [m, positive into
-        the body] and ``force`` [N], and optionally ``name``; or, for a raw AFM curve, ``piezo`` and
-        ``deflection`` [m] (both larger = farther from the sample) with ``spring_constant`` [N/m] instead of
+        Curves as arrays instead of ``[[fit.data]]``, every number in the case's units (``units``; SI: s, m, N,
+        N/m): each a dict with ``time``, ``depth`` (positive into the body) and ``force``, and optionally
+        ``name``; or, for a raw AFM curve, ``piezo`` and ``deflection`` (lengths, both larger = farther from the
+        sample) with ``spring_constant`` (force / length) instead of
         ``depth`` and ``force`` (force = k x deflection, depth = fall of piezo + deflection from the first row,
         as the case file's AFM columns). ``fitted`` (``"force"`` or ``"depth"``) sets what that curve fits when
         it differs from ``fit.fitted``: a creep curve beside an indentation curve, one material for both.
         Rebound data (one impact of the case's indenter per approach speed, the same material) are a dict with
-        ``"kind": "rebound"``, ``velocity`` (approach speeds v0 [m/s]) and ``restitution`` (e in [0, 1]), and
-        optionally ``contact_time`` (T [s]), ``restitution_error`` and ``contact_time_error`` (standard
+        ``"kind": "rebound"``, ``velocity`` (approach speeds v0) and ``restitution`` (e in [0, 1]), and
+        optionally ``contact_time`` (T), ``restitution_error`` and ``contact_time_error`` (standard
         deviations: a number or one per impact; estimated from the data's scatter when left out, which needs 3
-        impacts), ``mass`` [kg] (default: the case's ``indenter.mass``) and ``name``.
+        impacts), ``mass`` (default: the case's ``indenter.mass``) and ``name``.
 
     Returns
     -------
@@ -160,7 +160,7 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
     if "candidates" not in raw:
         return _result(raw)
     candidates = {str(entry["name"]): _result(entry) for entry in raw["candidates"]}
-    ranking = json.loads(raw["ranking_json"])
+    ranking = raw["ranking"]
     preferred = candidates[ranking["preferred"]]
     preferred.ranking = ranking["candidates"]
     preferred.candidates = candidates
@@ -217,7 +217,7 @@ def _rebound_arrays(data: Mapping[str, Any], i: int) -> tuple:
 
 
 def _result(raw: Mapping[str, Any]) -> FitResult:
-    summary = json.loads(raw["fit_json"])
+    summary = raw["fit"]
     result = FitResult(parameters=_numbers(summary, "parameters"), standard_errors=_numbers(summary, "standard_errors"),
                        status=summary["status"], summary=summary,
                        curves=[dict(c, kind=s["kind"], fitted=s["fitted"]) for c, s in zip(raw["curves"], summary["curves"])],

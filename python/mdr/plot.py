@@ -360,7 +360,7 @@ def _band(axes, table: Mapping[str, np.ndarray], x: str, name: str, color: str) 
                       label=f"{name}: 95 % band")
 
 
-def fit_curves(curves: Mapping[str, np.ndarray], axes=None):
+def fit_curves(curves: Mapping[str, np.ndarray], axes=None, units: Units = "SI"):
     """Measured and fitted curves over time, with the residuals below.
 
     Parameters
@@ -370,6 +370,8 @@ def fit_curves(curves: Mapping[str, np.ndarray], axes=None):
         ``mdr fit``).
     axes : sequence of two matplotlib.axes.Axes, optional
         Where to draw (data above, residuals below); a new figure by default.
+    units : str or dict, optional
+        The unit system's name, or the fit's summary dict (fit.json; default "SI").
 
     Returns
     -------
@@ -382,6 +384,7 @@ def fit_curves(curves: Mapping[str, np.ndarray], axes=None):
     >>> axes = mdr.plot.fit_curves({"curve": np.array(["a"] * 50), "t": t, "measured": t ** 1.5,
     ...                             "model": t ** 1.5, "residual": 0 * t})
     """
+    names = _unit_names(units)
     if axes is None:
         _, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 5.5), height_ratios=[3, 1.3])
     top, bottom = axes
@@ -391,14 +394,14 @@ def fit_curves(curves: Mapping[str, np.ndarray], axes=None):
         top.plot(curves["t"][rows], curves["model"][rows], "-", lw=1, color="k" if i == 0 else f"C{i}",
                  label=f"{name}: model")
         bottom.plot(curves["t"][rows], curves["residual"][rows], ".", ms=2, color=f"C{i}")
-    top.set(ylabel="force [N] or depth [m]", title="Fit: data and model")
-    bottom.set(xlabel="time t [s]", ylabel="model - measured")
+    top.set(ylabel=f"force [{names['force']}] or depth [{names['length']}]", title="Fit: data and model")
+    bottom.set(xlabel=f"time t [{names['time']}]", ylabel="model - measured")
     bottom.axhline(0.0, color="k", lw=0.5)
     top.legend(loc="best", fontsize=8)
     return top
 
 
-_REBOUND_QUANTITIES = {"restitution": "restitution e", "contact_time": "contact time T [ms]"}
+_REBOUND_QUANTITIES = {"restitution": "restitution e", "contact_time": "contact time T [m{time}]"}
 
 
 def _rebound_rows(curves: Mapping[str, np.ndarray]) -> np.ndarray:
@@ -411,16 +414,19 @@ def _rows(table: Mapping[str, np.ndarray], keep: np.ndarray) -> dict[str, np.nda
     return {name: np.asarray(values)[keep] for name, values in table.items()}
 
 
-def fit_rebounds(curves: Mapping[str, np.ndarray], axes=None):
+def fit_rebounds(curves: Mapping[str, np.ndarray], axes=None, units: Units = "SI"):
     """Measured and fitted rebound data over the approach speed: e(v0) and, where measured, T(v0).
 
     Parameters
     ----------
     curves : dict of str to numpy.ndarray
         The rebound rows of curves.csv of ``mdr fit`` (``curve`` named ``NAME:restitution`` or
-        ``NAME:contact_time``, ``t`` holding v0 [m/s], ``measured``, ``model``); other rows are left out.
+        ``NAME:contact_time``, ``t`` holding v0, ``measured``, ``model``); other rows are left out.
     axes : sequence of two matplotlib.axes.Axes, optional
         Where to draw (e above, T below); a new figure by default.
+    units : str or dict, optional
+        The unit system's name, or the fit's summary dict (fit.json; default "SI"). T is drawn in thousandths of
+        its time unit (ms in every declared system).
 
     Returns
     -------
@@ -433,6 +439,7 @@ def fit_rebounds(curves: Mapping[str, np.ndarray], axes=None):
     >>> axes = mdr.plot.fit_rebounds({"curve": np.array(["drops:restitution"] * 3), "t": v0,
     ...                               "measured": np.array([0.5, 0.55, 0.6]), "model": np.array([0.5, 0.56, 0.6])})
     """
+    unit_names = _unit_names(units)
     rows = _rows(curves, _rebound_rows(curves))
     if axes is None:
         _, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 5.5))
@@ -449,7 +456,8 @@ def fit_rebounds(curves: Mapping[str, np.ndarray], axes=None):
         target.plot(v0, scale * rows["measured"][keep][order], "o", ms=4, color=colour, label=f"{data_set}: measured")
         target.plot(v0, scale * rows["model"][keep][order], "-", lw=1, color=colour, label=f"{data_set}: model")
     top.set(xscale="log", ylabel=_REBOUND_QUANTITIES["restitution"], title="Fit: rebound data and model")
-    bottom.set(xlabel="approach speed v0 [m/s]", ylabel=_REBOUND_QUANTITIES["contact_time"])
+    bottom.set(xlabel=f"approach speed v0 [{unit_names['velocity']}]",
+               ylabel=_REBOUND_QUANTITIES["contact_time"].format(time=unit_names["time"]))
     top.legend(loc="best", fontsize=8)
     return top
 
@@ -553,11 +561,14 @@ def _listed_files(directory: str) -> Optional[set[str]]:
 
 
 def _summary(directory: str) -> dict[str, Any]:
-    try:
-        with open(os.path.join(directory, "summary.json"), encoding="utf-8") as handle:
-            return json.load(handle)
-    except FileNotFoundError:
-        return {}
+    """summary.json of a run or of mdr material, else fit.json of a fit (both hold ``units``); {} without either."""
+    for name in ("summary.json", "fit.json"):
+        try:
+            with open(os.path.join(directory, name), encoding="utf-8") as handle:
+                return json.load(handle)
+        except FileNotFoundError:
+            pass
+    return {}
 
 
 def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
@@ -624,9 +635,10 @@ def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
             curves = read_csv(path("curves.csv"))
             rebound = _rebound_rows(curves)
             if not rebound.all():
-                written.append(save(fit_curves(_rows(curves, ~rebound)), figure("fit_curves")))
+                written.append(save(fit_curves(_rows(curves, ~rebound), units=_summary(directory)),
+                                    figure("fit_curves")))
             if rebound.any():
-                written.append(save(fit_rebounds(curves), figure("fit_rebounds")))
+                written.append(save(fit_rebounds(curves, units=_summary(directory)), figure("fit_rebounds")))
         if os.path.exists(path("functions.csv")):
             functions = read_csv(path("functions.csv"))
             written.append(save(material_functions(functions, units=_summary(directory)), figure("material")))

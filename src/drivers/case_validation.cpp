@@ -8,6 +8,7 @@
 
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
+#include "mdr/profile/profile.hpp"
 
 namespace mdr::drivers {
 namespace {
@@ -176,11 +177,15 @@ void validate_oblique(const ContactCase& contact_case) {
     require_non_negative("tangential.friction", oblique->friction);
     require_finite("load.tangential_velocity", oblique->tangential_velocity);
     require_finite("load.spin", oblique->spin);
-    require_positive("indenter.moment_of_inertia", oblique->moment_of_inertia);
-    require_positive("indenter.R", oblique->radius);
+    const profile::ProfileDefinition sphere = contact_case.indenter->definition();
+    if (sphere.shape != "sphere") {
+        throw InvalidInput("indenter.shape", "\"" + sphere.shape + "\"",
+                           "an oblique impact needs shape = \"sphere\" (its radius is the lever of the friction)");
+    }
+    if (oblique->moment_of_inertia) require_positive("indenter.moment_of_inertia", *oblique->moment_of_inertia);
     // Section 6 maps the tangential problem exactly for an incompressible body only: with a compressible body (or
     // two bodies, whose elastic mismatch couples them) the normal and tangential problems are coupled (section 7).
-    if (contact_case.tangential_approximate) {
+    if (contact_case.tangential_approximate()) {
         throw InvalidInput("load.tangential_velocity", format_value(oblique->tangential_velocity),
                            "an oblique impact needs an incompressible half-space and a rigid sphere: with a "
                            "compressible body or two bodies the normal and tangential problems are coupled (section "

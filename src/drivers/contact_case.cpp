@@ -1,6 +1,7 @@
 #include "mdr/drivers/contact_case.hpp"
 
 #include "mdr/drivers/case_validation.hpp"
+#include "mdr/drivers/oblique_sphere.hpp"
 #include "mdr/drivers/work_estimate.hpp"
 #include "paused_base.hpp"
 
@@ -136,11 +137,11 @@ ResolvedNumerics resolve_impact_numerics(const ContactCase& contact_case) {
         const double braking_time = impact.mass / (8.0 * material.viscosity() * soft.radius);
         step = std::min(step, braking_time / static_cast<double>(braking_steps));
     }
-    if (const auto& oblique = contact_case.oblique) {
+    if (contact_case.oblique) {
         // The contact point's motion has the effective mass m_t, 1/m_t = 1/m + R^2/I (2/7 m for a solid sphere, for
         // which the normal steps resolve it): a lighter m_t oscillates faster, as sqrt(m_t).
-        const double tangential_mass = 1.0 / (1.0 / impact.mass + oblique->radius * oblique->radius /
-                                                                       oblique->moment_of_inertia);
+        const auto [radius, inertia] = oblique_sphere(contact_case);
+        const double tangential_mass = 1.0 / (1.0 / impact.mass + radius * radius / inertia);
         step *= std::min(1.0, std::sqrt(tangential_mass / (2.0 / 7.0 * impact.mass)));
     }
     resolved.time_step = numerics.time_step.value_or(std::min(step, shortest_time_above(material, step) / 5.0));

@@ -29,7 +29,9 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
                                       numerics.half_width / static_cast<double>(numerics.elements), numerics.elements);
     CoefficientCache cache(contact_case.material);
     std::optional<ObliqueStepper> oblique;
-    if (contact_case.oblique) oblique.emplace(*contact_case.oblique, mass, contact_case.material, foundation);
+    if (contact_case.oblique) {
+        oblique.emplace(*contact_case.oblique, oblique_sphere(contact_case), mass, contact_case.material, foundation);
+    }
 
     double time = 0.0, depth = 0.0, velocity = approach, force = 0.0;
     std::array<double, 2> inner_exits{-1.0, -1.0};  // when the two innermost elements last left contact

@@ -9,11 +9,13 @@
 
 namespace mdr::drivers {
 
-ObliqueStepper::ObliqueStepper(const ObliqueImpactLoad& load, double mass, const rheology::Rheology& material,
-                               const foundation::Foundation& foundation)
+ObliqueStepper::ObliqueStepper(const ObliqueImpactLoad& load, const ObliqueSphere& sphere, double mass,
+                               const rheology::Rheology& material, const foundation::Foundation& foundation)
     : load_(load),
+      radius_(sphere.radius),
+      inertia_(sphere.moment_of_inertia),
       mass_(mass),
-      reduced_mass_(1.0 / (1.0 / mass + load.radius * load.radius / load.moment_of_inertia)),
+      reduced_mass_(1.0 / (1.0 / mass + radius_ * radius_ / inertia_)),
       foundation_(foundation),
       layer_(material, load.friction, foundation.spacing(), foundation.size()),
       loads_(foundation.size(), 0.0),
@@ -26,7 +28,7 @@ double ObliqueStepper::solve_increment(double spring, double anchor, double time
         return layer_.trial_force(increment, q, contact) + spring * (increment - anchor) + force_;
     };
     // The increment of the step, never below a billionth of the initial one: scales with the motion itself.
-    const double initial = std::abs(load_.tangential_velocity - load_.radius * load_.spin);
+    const double initial = std::abs(load_.tangential_velocity - radius_ * load_.spin);
     const double scale = std::max(std::abs(anchor), 1e-9 * initial * time_step);
     // mu F_N, the largest |F_x| (the layer's sliding_force, with the foundation's own sum of the line loads).
     const double sliding = load_.friction * foundation_.total_force();
@@ -53,13 +55,13 @@ std::span<const double> ObliqueStepper::normal_line_loads() {
 void ObliqueStepper::take_impulse(double impulse) {
     // m dv_t = -dP, I domega = R dP (the force -F_x acts on the sphere at the contact point, R below the centre).
     velocity_ -= impulse / mass_;
-    spin_ += load_.radius * impulse / load_.moment_of_inertia;
+    spin_ += radius_ * impulse / inertia_;
     impulse_ += impulse;
 }
 
 void ObliqueStepper::step(const foundation::StepCoefficients& coefficients, double time_step) {
     layer_.begin_step(coefficients, foundation_.entries());
-    const double contact_velocity = velocity_ - load_.radius * spin_;
+    const double contact_velocity = velocity_ - radius_ * spin_;
     const double spring = 4.0 * reduced_mass_ / (time_step * time_step);
     const auto q = normal_line_loads();
     const auto contact = foundation_.contact_flags().first(q.size());
@@ -78,7 +80,7 @@ void ObliqueStepper::step(const foundation::StepCoefficients& coefficients, doub
 
 void ObliqueStepper::finish(const foundation::StepCoefficients& coefficients, double time_step, double fraction) {
     layer_.begin_step(coefficients);
-    const double contact_velocity = velocity_ - load_.radius * spin_;
+    const double contact_velocity = velocity_ - radius_ * spin_;
     const double impulse = 0.5 * force_ * fraction * time_step;
     // The contact point moves with the mean of its velocities over the part of the step in contact, then freely.
     const double increment = (contact_velocity - 0.5 * impulse / reduced_mass_) * fraction * time_step +
@@ -107,13 +109,13 @@ void ObliqueStepper::add_shear_stress(Snapshot& snapshot) const {
 
 double ObliqueStepper::kinetic_energy_lost() const {
     const double v0 = load_.tangential_velocity, w0 = load_.spin;
-    return 0.5 * mass_ * (v0 * v0 - velocity_ * velocity_) + 0.5 * load_.moment_of_inertia * (w0 * w0 - spin_ * spin_);
+    return 0.5 * mass_ * (v0 * v0 - velocity_ * velocity_) + 0.5 * inertia_ * (w0 * w0 - spin_ * spin_);
 }
 
 ObliqueOutcome ObliqueStepper::outcome(const ImpactOutcome& normal, double approach) const {
     ObliqueOutcome outcome;
-    const double initial = load_.tangential_velocity - load_.radius * load_.spin;
-    const double final = velocity_ - load_.radius * spin_;
+    const double initial = load_.tangential_velocity - radius_ * load_.spin;
+    const double final = velocity_ - radius_ * spin_;
     outcome.tangential_restitution = initial != 0.0 ? -final / initial : 0.0;
     outcome.rebound_tangential_velocity = velocity_;
     outcome.rebound_spin = spin_;

@@ -8,6 +8,7 @@
 
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/drivers/oblique_sphere.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/tangential_layer.hpp"
 
@@ -22,8 +23,8 @@ namespace mdr::drivers {
 class ObliqueStepper {
 public:
     /// `foundation` (the normal problem) must outlive the stepper; `mass` [kg] is the sphere's.
-    ObliqueStepper(const ObliqueImpactLoad& load, double mass, const rheology::Rheology& material,
-                   const foundation::Foundation& foundation);
+    ObliqueStepper(const ObliqueImpactLoad& load, const ObliqueSphere& sphere, double mass,
+                   const rheology::Rheology& material, const foundation::Foundation& foundation);
 
     /// The tangential step of length `time_step` [s] after the foundation has advanced over it with `coefficients`.
     void step(const foundation::StepCoefficients& coefficients, double time_step);
@@ -49,6 +50,8 @@ private:
     std::span<const double> normal_line_loads();
 
     const ObliqueImpactLoad& load_;
+    double radius_;   ///< R [m], the lever of the tangential force
+    double inertia_;  ///< I [kg m^2]
     double mass_;
     double reduced_mass_;  ///< m_t
     const foundation::Foundation& foundation_;

@@ -43,6 +43,7 @@ void check_source(const CurveSource& source) {
     require_positive("units.time", source.time_unit);
     require_positive("units.length", source.length_unit);
     require_positive("units.force", source.force_unit);
+    require_positive("spring_constant_unit", source.spring_constant_unit);
     if (!source.segments.empty() && source.segment_column.empty()) {
         throw InvalidInput("segments", in_quotes(source.segments.front()), "needs segment_column");
     }
@@ -93,7 +94,8 @@ Curve load_curve(const CurveSource& source) {
     if (afm) {
         scale(table.values[1], source.length_unit);
         scale(table.values[2], source.length_unit);
-        auto converted = afm_depth_and_force(table.values[1], table.values[2], *source.spring_constant);
+        auto converted = afm_depth_and_force(table.values[1], table.values[2],
+                                             *source.spring_constant * source.spring_constant_unit);
         depth = std::move(converted.depth);
         force = std::move(converted.force);
     } else {

@@ -10,8 +10,9 @@
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/material_window.hpp"
+#include "mdr/drivers/oblique_sphere.hpp"
 #include "mdr/error.hpp"
-#include "mdr/rheology/compressible.hpp"
+#include "mdr/rheology/contact_bodies.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "case_reader.hpp"
 #include "control_reader.hpp"
@@ -48,26 +49,14 @@ BodySpec read_body(TableReader& table) {
     return body;
 }
 
-// One body built: its shear rheology and, when a bulk part is given, the effective one of eq. (56).
-struct Body {
-    rheology::Rheology shear;
-    std::optional<rheology::Rheology> effective;
-    rheology::MaterialOrigin origin;
-    const rheology::Rheology& contact() const { return effective ? *effective : shear; }
-};
-
-Body build_body(const BodySpec& spec, const std::optional<rheology::TimeWindow>& window, const std::string& directory) {
-    rheology::ModelMaterial shear = build_material(spec.shear, window, directory);
-    Body body{std::move(shear.series), std::nullopt, std::move(shear.origin)};
-    std::optional<rheology::ModelMaterial> bulk;
+// One body built (over the case's time window when a model is converted to a series).
+rheology::Body build_body(const BodySpec& spec, const std::optional<rheology::TimeWindow>& window,
+                          const std::string& directory, const UnitSystem& units) {
+    rheology::Body body{build_material(spec.shear, window, directory, units)};
     if (spec.bulk_modulus) {
-        bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus), {.times_from_conversion = true}};
+        body.bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus), {.times_from_conversion = true}};
     }
-    if (spec.bulk) bulk = build_material(*spec.bulk, window, directory);
-    if (bulk) {
-        body.effective = rheology::compressible_effective(body.shear, bulk->series);
-        body.origin = rheology::combined_origin(body.origin, bulk->origin, " with bulk ");
-    }
+    if (spec.bulk) body.bulk = build_material(*spec.bulk, window, directory, units);
     return body;
 }
 
@@ -108,7 +97,7 @@ bool is_oblique(const TableReader& load) {
 }
 
 // The tangential part of an impact: `[load] tangential_velocity` (or `incidence_deg`) and `spin`, `[indenter]
-// moment_of_inertia` (a solid sphere's 2/5 m R^2 by default) and `[tangential] friction`.
+// moment_of_inertia` (optional: drivers::oblique_sphere) and `[tangential] friction`.
 drivers::ObliqueImpactLoad read_oblique(TableReader& load, TableReader& indenter,
                                         std::optional<TableReader>& tangential, const drivers::ImpactLoad& impact) {
     if (!tangential || !tangential->has("friction")) {
@@ -122,23 +111,17 @@ drivers::ObliqueImpactLoad read_oblique(TableReader& load, TableReader& indenter
         }
     }
     tangential->reject_unknown({"friction"});
-    if (indenter.string("shape") != "sphere") {
-        throw InvalidInput("indenter.shape", "\"" + indenter.string("shape") + "\"",
-                           "an oblique impact needs shape = \"sphere\" (its radius is the lever of the friction)");
-    }
     if (load.has("tangential_velocity") && load.has("incidence_deg")) {
         throw InvalidInput("load.incidence_deg", load.text("incidence_deg"), "give either it or tangential_velocity");
     }
     drivers::ObliqueImpactLoad oblique;
     oblique.friction = tangential->number("friction");
-    oblique.radius = indenter.number("R");
     oblique.tangential_velocity = load.optional_number("tangential_velocity").value_or(0.0);
     if (auto incidence = load.optional_number("incidence_deg")) {
         oblique.tangential_velocity = drivers::incidence_velocity(impact.velocity, *incidence);
     }
     oblique.spin = load.optional_number("spin").value_or(0.0);
-    oblique.moment_of_inertia =
-        indenter.optional_number("moment_of_inertia").value_or(0.4 * impact.mass * oblique.radius * oblique.radius);
+    oblique.moment_of_inertia = indenter.optional_number("moment_of_inertia");
     return oblique;
 }
 
@@ -216,21 +199,16 @@ drivers::ContactCase read_case(const toml::table& root_table) {
 
     std::optional<drivers::TangentialLoad> tangential;
     std::optional<drivers::ObliqueImpactLoad> oblique;
-    bool approximate = false;
     auto tangential_table = root.table("tangential");
     const bool oblique_keys = is_oblique(*load) || indenter_table->has("moment_of_inertia");
     if (impact && (tangential_table || oblique_keys)) {
         oblique = read_oblique(*load, *indenter_table, tangential_table, *impact);
-        // Exact only for an incompressible body and a rigid sphere (section 7); drivers::validate refuses the rest.
-        approximate = half_space_spec.bulk_modulus || half_space_spec.bulk || indenter_table->has("material");
     } else if (oblique_keys) {  // the oblique keys of [load] are the impact's (read_control)
         throw InvalidInput("indenter.moment_of_inertia", indenter_table->text("moment_of_inertia"),
                            "only with control = \"impact\" (an oblique impact)");
     } else if (auto table = std::move(tangential_table)) {
         tangential = read_tangential(*table);
         if (!load->has("end")) end_time = std::max(end_time, tangential->load.end_time());
-        // Exact only for elastically similar bodies (section 7): compressible or two bodies make it approximate.
-        approximate = half_space_spec.bulk_modulus || half_space_spec.bulk || indenter_table->has("material");
     }
 
     std::vector<double> snapshots;
@@ -259,22 +237,16 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     // Files a material names (a table's `file`) are found next to the case file (the parsed table's source).
     const auto& source_path = root_table.source().path;
     const std::string directory = source_path ? std::filesystem::path(*source_path).parent_path().string() : "";
-    const Body half_space = build_body(half_space_spec, window, directory);
-    rheology::Rheology material = half_space.contact();
-    std::optional<rheology::Rheology> shear_material;
-    if (half_space.effective) shear_material = half_space.shear;
-    rheology::MaterialOrigin origin = half_space.origin;
-    if (second_spec) {
-        const Body second = build_body(*second_spec, window, directory);
-        material = rheology::in_series(material, second.contact());  // eq. (8): creep functions add
-        if (half_space.effective || second.effective) shear_material = rheology::in_series(half_space.shear, second.shear);
-        origin = rheology::combined_origin(origin, second.origin, " in series with ");
-    }
+    std::optional<rheology::Body> second;
+    const UnitSystem& system = unit_system(units);
+    if (second_spec) second = build_body(*second_spec, window, directory, system);
+    rheology::ContactMaterial contact =
+        rheology::contact_material(build_body(half_space_spec, window, directory, system), second);
 
-    drivers::ContactCase contact_case{title,    std::move(material),  std::move(indenter), control,
+    drivers::ContactCase contact_case{title,    std::move(contact.material),  std::move(indenter), control,
                                       std::move(normal_load), end_time, std::move(snapshots), numerics,
-                                      std::move(shear_material), impact, std::move(tangential), approximate,
-                                      oblique, std::move(origin)};
+                                      std::move(contact.shear_material), impact, std::move(tangential),
+                                      contact.tangential_exact, oblique, std::move(contact.origin)};
     contact_case.spring_constant = spring_constant;
     if (shore) contact_case.shore = shore->test;
     if (load->has("force_pauses")) {
@@ -312,7 +284,8 @@ std::string describe(const drivers::ContactCase& contact_case) {
         if (const auto& oblique = contact_case.oblique) {
             load += fmt::format(", oblique: v_t0 = {:.4g} {}, omega0 = {:.4g} rad/s, I = {:.4g} {} {}^2, mu = {:.4g}",
                                 oblique->tangential_velocity, units.velocity(), oblique->spin,
-                                oblique->moment_of_inertia, units.mass, units.length, oblique->friction);
+                                drivers::oblique_sphere(contact_case).moment_of_inertia, units.mass, units.length,
+                                oblique->friction);
         }
     } else if (const auto& shore = contact_case.shore) {
         const auto& instrument = shore->instrument;
@@ -349,7 +322,8 @@ std::string describe(const drivers::ContactCase& contact_case) {
     const auto& origin = contact_case.material_origin;
     std::string model = origin.description.empty() ? std::string() : fmt::format(" {}", origin.description);
     if (origin.certificate) {
-        model = fmt::format("{} {}", model, rheology::describe_certificate(*origin.certificate, material.terms().size()));
+        model = fmt::format("{} {}", model, rheology::describe_certificate(*origin.certificate, material.terms().size(),
+                                                                           unit_names(units)));
     }
     return fmt::format("{}{} on {} half-space{} (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
                        contact_case.title.empty() ? "" : "\"" + contact_case.title + "\": ",

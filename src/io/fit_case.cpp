@@ -9,6 +9,7 @@
 #include "fit_candidates_reader.hpp"
 #include "fit_data_reader.hpp"
 #include "mdr/error.hpp"
+#include "mdr/io/units.hpp"
 #include "toml_reader.hpp"
 
 namespace mdr::io {
@@ -123,7 +124,8 @@ FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
     } else {
         fit_case.model.set_table("load", placeholder_load);
     }
-    fit_case.model.build();  // the model's own rules
+    fit_case.units = fit_case.model.build().units;  // the model's own rules; its unit system
+    const UnitSystem& units = unit_system(fit_case.units);
 
     const auto keys = free_keys(fit_table, !fit_case.model_choice.empty());
     check_candidate_free_keys(fit_case.model_choice, keys);
@@ -141,10 +143,10 @@ FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
         if (table == nullptr) throw InvalidInput(path, "(not a table)", "must be a [[fit.data]] table");
         TableReader reader(*table, path);
         if (choice(reader, "kind", {"curve", "rebound"}, "curve") == "rebound") {
-            fit_case.rebounds.push_back(read_rebound_data(reader, case_directory));
+            fit_case.rebounds.push_back(read_rebound_data(reader, case_directory, units));
             fit_case.rebound_keys.push_back(path);
         } else {
-            fit_case.data.push_back(read_fit_data(reader, case_directory));
+            fit_case.data.push_back(read_fit_data(reader, case_directory, units));
             fit_case.data_keys.push_back(path);
         }
     }

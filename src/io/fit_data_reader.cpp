@@ -6,18 +6,18 @@
 
 namespace mdr::io {
 
-double read_unit(TableReader& units, const std::string& key, const std::string& base) {
+double read_unit(TableReader& units, const std::string& key, const std::string& base, double system_size) {
     if (!units.has(key)) return 1.0;
     if (!units.is_string(key)) {
-        const double factor = units.number(key);
-        require_positive(units.key_path(key), factor);
-        return factor;
+        const double size = units.number(key);
+        require_positive(units.key_path(key), size);
+        return size / system_size;
     }
     const std::string name = units.string(key);
     static const std::pair<const char*, double> prefixes[] = {{"", 1.0},    {"p", 1e-12}, {"n", 1e-9}, {"u", 1e-6},
                                                               {"µ", 1e-6}, {"m", 1e-3},  {"c", 1e-2}, {"k", 1e3}};
-    for (const auto& [prefix, factor] : prefixes) {
-        if (name == prefix + base) return factor;
+    for (const auto& [prefix, size] : prefixes) {
+        if (name == prefix + base) return size / system_size;
     }
     throw InvalidInput(units.key_path(key), "\"" + name + "\"",
                        "must be a number > 0 (the unit in " + base + ") or " + base +
@@ -40,7 +40,8 @@ fit::Fitted read_fitted(TableReader& table, fit::Fitted fallback) {
     return value == "force" ? fit::Fitted::force : fit::Fitted::depth;
 }
 
-fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory) {
+fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory,
+                               const UnitSystem& system) {
     table.reject_unknown({"kind", "file", "name", "time", "depth", "force", "piezo", "deflection", "spring_constant",
                           "units", "segment_column", "segments", "fitted"});
     fit::CurveSource source;
@@ -53,11 +54,12 @@ fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& 
     source.piezo_column = table.optional_string("piezo").value_or("");
     source.deflection_column = table.optional_string("deflection").value_or("");
     source.spring_constant = table.optional_number("spring_constant");
+    source.spring_constant_unit = system.length_size / system.force_size;  // N/m in the case's force / length
     if (auto units = table.table("units")) {
         units->reject_unknown({"time", "length", "force"});
-        source.time_unit = read_unit(*units, "time", "s");
-        source.length_unit = read_unit(*units, "length", "m");
-        source.force_unit = read_unit(*units, "force", "N");
+        source.time_unit = read_unit(*units, "time", "s", system.time_size);
+        source.length_unit = read_unit(*units, "length", "m", system.length_size);
+        source.force_unit = read_unit(*units, "force", "N", system.force_size);
     }
     source.segment_column = table.optional_string("segment_column").value_or("");
     if (table.has("segments")) source.segments = table.labels("segments");
@@ -79,7 +81,8 @@ void read_uncertainty(TableReader& table, const std::string& key, std::optional<
 
 }  // namespace
 
-fit::ReboundSource read_rebound_data(TableReader& table, const std::filesystem::path& case_directory) {
+fit::ReboundSource read_rebound_data(TableReader& table, const std::filesystem::path& case_directory,
+                                     const UnitSystem& system) {
     table.reject_unknown({"kind", "file", "name", "velocity", "restitution", "contact_time", "restitution_error",
                           "contact_time_error", "mass", "units"});
     fit::ReboundSource source;
@@ -94,8 +97,8 @@ fit::ReboundSource read_rebound_data(TableReader& table, const std::filesystem::
     source.mass = table.optional_number("mass");
     if (auto units = table.table("units")) {
         units->reject_unknown({"velocity", "time"});
-        source.velocity_unit = read_unit(*units, "velocity", "m/s");
-        source.time_unit = read_unit(*units, "time", "s");
+        source.velocity_unit = read_unit(*units, "velocity", "m/s", system.length_size / system.time_size);
+        source.time_unit = read_unit(*units, "time", "s", system.time_size);
     }
     return source;
 }

@@ -5,13 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <nlohmann/json.hpp>
 
 namespace mdr::io {
 
 namespace {
-
-nlohmann::ordered_json number(double value) { return std::isfinite(value) ? nlohmann::ordered_json(value) : nullptr; }
 
 // A table of the material's functions over `x` with their 95 % bands: `x,f,f_lower,f_upper,...`.
 void write_bands(const std::filesystem::path& path, const std::string& x_name, const std::vector<double>& x,
@@ -71,61 +68,68 @@ std::string fitted_text(const FitCase& fit_case, const fit::FitResult& result) {
 
 }  // namespace
 
-std::string fit_json(const fit::FitResult& result) {
-    nlohmann::ordered_json json;
-    json["status"] = result.status;
-    json["converged"] = result.converged;
-    nlohmann::ordered_json parameters, errors, intervals, undetermined, correlation = nlohmann::ordered_json::array();
+Document fit_document(const fit::FitResult& result, const std::string& units) {
+    Document::Table parameters, errors, intervals, undetermined;
+    Document::List correlation;
     for (std::size_t j = 0; j < result.names.size(); ++j) {
-        parameters[result.names[j]] = number(result.values[j]);
-        errors[result.names[j]] = number(result.standard_errors[j]);
-        intervals[result.names[j]] = {number(result.lower_95[j]), number(result.upper_95[j])};
-        nlohmann::ordered_json row = nlohmann::ordered_json::array();
-        for (double r : result.correlation[j]) row.push_back(number(r));
-        correlation.push_back(row);
+        parameters.emplace_back(result.names[j], number_or_null(result.values[j]));
+        errors.emplace_back(result.names[j], number_or_null(result.standard_errors[j]));
+        const Document::List interval{number_or_null(result.lower_95[j]), number_or_null(result.upper_95[j])};
+        intervals.emplace_back(result.names[j], Document{interval});
+        Document::List row;
+        for (double r : result.correlation[j]) row.push_back(number_or_null(r));
+        correlation.push_back({std::move(row)});
     }
-    for (const auto& entry : result.undetermined) undetermined[entry.name] = entry.reason;
-    json["parameters"] = parameters;
-    json["standard_errors"] = errors;
-    json["intervals_95"] = intervals;
-    json["correlation"] = correlation;
-    json["undetermined"] = undetermined.is_null() ? nlohmann::ordered_json::object() : undetermined;
-    nlohmann::ordered_json curves = nlohmann::ordered_json::array();
+    for (const auto& entry : result.undetermined) undetermined.emplace_back(entry.name, Document{entry.reason});
+    Document::List curves;
     for (const auto& curve : result.curves) {
-        nlohmann::ordered_json entry{{"name", curve.name},
-                                     {"kind", curve.rebound ? "rebound" : "curve"},
-                                     {"fitted", quantity_name(curve)},
-                                     {"points", curve.time.size()}};
+        Document::Table entry{{"name", {curve.name}},
+                              {"kind", {std::string(curve.rebound ? "rebound" : "curve")}},
+                              {"fitted", {std::string(quantity_name(curve))}},
+                              {"points", {curve.time.size()}}};
         if (curve.rebound) {
-            entry["mass"] = number(curve.mass);
+            entry.emplace_back("mass", number_or_null(curve.mass));
         } else {
-            entry["contact_point"] = number(curve.contact_depth);
-            entry["contact_point_error"] = number(curve.contact_depth_error);
-            entry["baseline"] = number(curve.baseline);
-            entry["baseline_error"] = number(curve.baseline_error);
+            entry.emplace_back("contact_point", number_or_null(curve.contact_depth));
+            entry.emplace_back("contact_point_error", number_or_null(curve.contact_depth_error));
+            entry.emplace_back("baseline", number_or_null(curve.baseline));
+            entry.emplace_back("baseline_error", number_or_null(curve.baseline_error));
         }
-        entry["noise"] = number(curve.noise);
-        entry["rms_residual"] = number(curve.rms_residual);
-        curves.push_back(entry);
+        entry.emplace_back("noise", number_or_null(curve.noise));
+        entry.emplace_back("rms_residual", number_or_null(curve.rms_residual));
+        curves.push_back({std::move(entry)});
     }
-    json["curves"] = curves;
-    json["rms_residual"] = number(result.rms_residual);
-    json["noise"] = number(result.noise);
-    json["residual_to_noise"] = number(result.noise > 0.0 ? result.rms_residual / result.noise : NAN);
-    json["aic"] = number(result.aic);
-    json["bic"] = number(result.bic);
-    json["points"] = result.points;
-    json["free_count"] = result.free_count;
-    json["iterations"] = result.iterations;
-    json["evaluations"] = result.evaluations;
-    json["element_evaluations"] = result.element_evaluations;
-    json["wall_seconds"] = result.wall_seconds;
-    return json.dump(2);
+    return {Document::Table{
+        {"status", {result.status}},
+        {"converged", {result.converged}},
+        {"parameters", {std::move(parameters)}},
+        {"standard_errors", {std::move(errors)}},
+        {"intervals_95", {std::move(intervals)}},
+        {"correlation", {std::move(correlation)}},
+        {"undetermined", {std::move(undetermined)}},
+        {"curves", {std::move(curves)}},
+        {"rms_residual", number_or_null(result.rms_residual)},
+        {"noise", number_or_null(result.noise)},
+        {"residual_to_noise", number_or_null(result.noise > 0.0 ? result.rms_residual / result.noise : NAN)},
+        {"aic", number_or_null(result.aic)},
+        {"bic", number_or_null(result.bic)},
+        {"points", {result.points}},
+        {"free_count", {result.free_count}},
+        {"iterations", {result.iterations}},
+        {"evaluations", {result.evaluations}},
+        {"element_evaluations", {result.element_evaluations}},
+        {"wall_seconds", {result.wall_seconds}},
+        {"units", {units}},
+    }};
+}
+
+std::string fit_json(const fit::FitResult& result, const std::string& units) {
+    return to_json(fit_document(result, units));
 }
 
 void write_fit_result(const std::filesystem::path& directory, const FitCase& fit_case, const fit::FitResult& result) {
     auto json = fmt::output_file((directory / "fit.json").string());
-    json.print("{}\n", fit_json(result));
+    json.print("{}\n", fit_json(result, fit_case.units));
     json.close();
 
     auto csv = fmt::output_file((directory / "curves.csv").string());

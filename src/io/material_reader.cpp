@@ -56,12 +56,15 @@ MaterialSpec read_material(TableReader& table, const std::string& modulus, const
 }
 
 rheology::ModelMaterial build_material(const MaterialSpec& spec, const std::optional<rheology::TimeWindow>& window,
-                                       const std::string& directory) {
+                                       const std::string& directory, const UnitSystem& units) {
     try {
         rheology::ConversionOptions options{window, spec.tolerance.value_or(rheology::default_material_tolerance),
-                                            directory};
+                                            directory, unit_names(units)};
         rheology::ModelMaterial material = rheology::build_material(*spec.model, spec.parameters, options);
-        if (spec.bulk) material.origin.description = rheology::describe_model(*spec.model, spec.parameters, bulk_key);
+        if (spec.bulk) {
+            material.origin.description =
+                rheology::describe_model(*spec.model, spec.parameters, bulk_key, options.unit_names);
+        }
         return material;
     } catch (const InvalidInput& error) {
         if (error.key().rfind(spec.prefix, 0) == 0) throw;

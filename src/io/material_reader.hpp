@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mdr/rheology/material_models.hpp"
+#include "mdr/io/units.hpp"
 #include "toml_reader.hpp"
 
 namespace mdr::io {
@@ -23,8 +24,9 @@ struct MaterialSpec {
 /// are the other keys the table may hold). Throws mdr::InvalidInput with the full dotted key.
 MaterialSpec read_material(TableReader& table, const std::string& modulus, const std::vector<std::string>& extra_keys);
 
-/// Builds the material of a spec over `window` (used by models converted to a series). Errors name the full key.
+/// Builds the material of a spec over `window` (used by models converted to a series), described in the case's
+/// `units`. Errors name the full key.
 rheology::ModelMaterial build_material(const MaterialSpec& spec, const std::optional<rheology::TimeWindow>& window,
-                                       const std::string& directory);
+                                       const std::string& directory, const UnitSystem& units);
 
 }  // namespace mdr::io

@@ -4,15 +4,12 @@
 #include <fmt/os.h>
 
 #include <cmath>
-#include <nlohmann/json.hpp>
 
 #include "mdr/io/fit_files.hpp"
 
 namespace mdr::io {
 
 namespace {
-
-nlohmann::ordered_json number(double value) { return std::isfinite(value) ? nlohmann::ordered_json(value) : nullptr; }
 
 double ratio(const fit::FitResult& result) { return result.noise > 0.0 ? result.rms_residual / result.noise : NAN; }
 
@@ -37,35 +34,38 @@ void write_candidate(const std::filesystem::path& directory, const fit::Candidat
 
 }  // namespace
 
-std::string ranking_json(const fit::ModelChoice& choice) {
-    nlohmann::ordered_json json;
-    json["criterion"] = "bic";
-    json["preferred"] = choice.fits[choice.preferred].name;
-    json["modulus_scale"] = number(choice.modulus_scale);
-    json["time_window"] = {number(choice.shortest_interval), number(choice.longest_record)};
-    nlohmann::ordered_json candidates = nlohmann::ordered_json::array();
+Document ranking_document(const fit::ModelChoice& choice) {
+    Document::List candidates;
     for (const auto& fitted : choice.fits) {
         const auto& result = fitted.result;
-        nlohmann::ordered_json undetermined = nlohmann::ordered_json::array();
-        for (const auto& entry : result.undetermined) undetermined.push_back(entry.name);
-        candidates.push_back({{"name", fitted.name},
-                              {"status", result.status},
-                              {"converged", result.converged},
-                              {"free_count", result.free_count},
-                              {"rms_residual", number(result.rms_residual)},
-                              {"noise", number(result.noise)},
-                              {"residual_to_noise", number(ratio(result))},
-                              {"aic", number(result.aic)},
-                              {"bic", number(result.bic)},
-                              {"delta_aic", number(fitted.delta_aic)},
-                              {"delta_bic", number(fitted.delta_bic)},
-                              {"undetermined", undetermined},
-                              {"evaluations", result.evaluations},
-                              {"wall_seconds", result.wall_seconds}});
+        Document::List undetermined;
+        for (const auto& entry : result.undetermined) undetermined.push_back({entry.name});
+        candidates.push_back({Document::Table{{"name", {fitted.name}},
+                                              {"status", {result.status}},
+                                              {"converged", {result.converged}},
+                                              {"free_count", {result.free_count}},
+                                              {"rms_residual", number_or_null(result.rms_residual)},
+                                              {"noise", number_or_null(result.noise)},
+                                              {"residual_to_noise", number_or_null(ratio(result))},
+                                              {"aic", number_or_null(result.aic)},
+                                              {"bic", number_or_null(result.bic)},
+                                              {"delta_aic", number_or_null(fitted.delta_aic)},
+                                              {"delta_bic", number_or_null(fitted.delta_bic)},
+                                              {"undetermined", {std::move(undetermined)}},
+                                              {"evaluations", {result.evaluations}},
+                                              {"wall_seconds", {result.wall_seconds}}}});
     }
-    json["candidates"] = candidates;
-    return json.dump(2);
+    return {Document::Table{
+        {"criterion", {std::string("bic")}},
+        {"preferred", {choice.fits[choice.preferred].name}},
+        {"modulus_scale", number_or_null(choice.modulus_scale)},
+        {"time_window",
+         {Document::List{number_or_null(choice.shortest_interval), number_or_null(choice.longest_record)}}},
+        {"candidates", {std::move(candidates)}},
+    }};
 }
+
+std::string ranking_json(const fit::ModelChoice& choice) { return to_json(ranking_document(choice)); }
 
 void write_model_choice(const std::filesystem::path& directory, const FitCase& fit_case,
                         const fit::ModelChoice& choice) {

@@ -42,7 +42,7 @@ Summary summarize(const drivers::ContactCase& contact_case, const drivers::Inden
             add("material_frequencies", certificate->window.frequencies);  // [rad/s], certified explicitly
         }
     }
-    if (contact_case.tangential) add("tangential_approximation", contact_case.tangential_approximate);
+    if (contact_case.tangential) add("tangential_approximation", contact_case.tangential_approximate());
     for (auto& [name, value] : drivers::outcomes(result)) {
         std::visit([&](auto held) { add(std::move(name), held); }, value);
     }

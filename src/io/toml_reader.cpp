@@ -10,7 +10,9 @@
 namespace mdr::io {
 namespace {
 
+// A value as an error message prints it: one short line; a table or an array of tables as `[...]`.
 std::string node_text(const toml::node& node) {
+    if (node.is_table() || node.is_array_of_tables()) return "[...]";
     std::string text;
     if (const auto* floating = node.as_floating_point()) {
         text = format_value(floating->get());  // shortest round-trip form: 70.3, not 70.299999999999997

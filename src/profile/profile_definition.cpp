@@ -23,10 +23,4 @@ bool ProfileDefinition::has(const std::string& key) const {
     return numbers.contains(key) || arrays.contains(key) || texts.contains(key);
 }
 
-Interpolation interpolation_named(const std::string& name) {
-    if (name == "monotone_cubic") return Interpolation::monotone_cubic;
-    if (name == "linear") return Interpolation::linear;
-    throw InvalidInput("interpolation", "\"" + name + "\"", "must be monotone_cubic or linear");
-}
-
 }  // namespace mdr::profile

@@ -37,8 +37,7 @@ std::vector<Shape> rows() {
         {"profile", "table", "a tabulated gap f(r), interpolated; g by eq. (9) in closed form per interval",
          {{"r", Kind::numbers, "m", "radii, ascending from 0"},
           {"f", Kind::numbers, "m", "the gap at each radius: f(0) = 0, non-decreasing"},
-          {"interpolation", Kind::text, "", "monotone_cubic (smooth profiles) or linear (profiles with kinks)", false,
-           "monotone_cubic"}},
+          {"interpolation", Kind::text, "", interpolation_list(true), false, interpolations().front().name}},
          [](const ProfileDefinition& d) {
              return make_table(d.array("r"), d.array("f"), interpolation_named(d.text("interpolation")));
          }},

@@ -166,7 +166,7 @@ public:
         return {"profile",
                 {},
                 {{"r", r_}, {"f", f_}},
-                {{"interpolation", interpolation_ == Interpolation::linear ? "linear" : "monotone_cubic"}}};
+                {{"interpolation", interpolation_kind(interpolation_).name}}};
     }
 
 private:

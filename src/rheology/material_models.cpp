@@ -110,12 +110,13 @@ std::vector<MaterialModel> rows() {
          [](const ModelParameters& p, const ConversionOptions&) {
              return exact(Rheology::standard(p.number("G_inf"), p.number("G1"), p.number("tau1")));
          }},
-        {"prony", "G(t) = G_inf + sum G_k exp(-t/tau_k): a Prony series (generalised Maxwell)",
+        {"prony", "G(t) = G_inf + eta delta(t) + sum G_k exp(-t/tau_k): a Prony series (generalised Maxwell)",
          {modulus("G_inf", "equilibrium modulus (0 for a fluid)"),
-          {"terms", Kind::pairs, "Pa, s", "the branches [[G_1, tau_1], [G_2, tau_2], ...]", true, 0.0, {"G", "tau"}}},
+          {"terms", Kind::pairs, "Pa, s", "the branches [[G_1, tau_1], [G_2, tau_2], ...]", true, 0.0, {"G", "tau"}},
+          {"eta", Kind::number, "Pa s", "viscosity of a dashpot in parallel", false, 0.0}},
          false,
          [](const ModelParameters& p, const ConversionOptions&) {
-             return exact(Rheology::prony(p.number("G_inf"), relaxation_terms(p)));
+             return exact(Rheology(p.number("G_inf"), p.number("eta"), relaxation_terms(p)));
          }},
         {"power_law", "G(t) = G0 (t/t0)^(-beta): power-law rheology of cells and soft tissue, as a certified Prony series",
          {modulus("G0", "modulus at t = t0"), {"beta", Kind::number, "1", "exponent, 0 < beta < 1"},
@@ -203,19 +204,20 @@ ModelMaterial build_material(const MaterialModel& model, const ModelParameters& 
         validate(*options.window);
     }
     ModelMaterial material = model.build(complete, options);
-    material.origin.description = describe_model(model, complete);
+    material.origin.description = describe_model(model, complete, nullptr, options.unit_names);
     return material;
 }
 
 std::string describe_model(const MaterialModel& model, const ModelParameters& parameters,
-                           std::string (*rename)(const std::string&)) {
+                           std::string (*rename)(const std::string&), const UnitNames& unit_names) {
+    const auto unit = [&](const std::string& si) { return unit_names ? unit_names(si) : si; };
     std::string list;
     for (const ModelParameter& parameter : model.parameters) {
         const std::string key = rename ? rename(parameter.key) : parameter.key;
         std::string item;
         if (const auto number = parameters.numbers.find(parameter.key); number != parameters.numbers.end()) {
-            item = fmt::format("{} = {}{}", key, format_value(number->second),
-                               parameter.unit == "1" ? "" : " " + parameter.unit);
+            item = fmt::format("{} = {}", key, format_value(number->second));
+            if (parameter.unit != "1") item += fmt::format(" {}", unit(parameter.unit));
         } else if (const auto pairs = parameters.pairs.find(parameter.key); pairs != parameters.pairs.end()) {
             item = fmt::format("{} {}", pairs->second.size(), key);
         } else if (const auto array = parameters.arrays.find(parameter.key); array != parameters.arrays.end()) {
@@ -228,15 +230,16 @@ std::string describe_model(const MaterialModel& model, const ModelParameters& pa
     return model.name + " (" + list + ")";
 }
 
-std::string describe_certificate(const Certificate& certificate, std::size_t terms) {
-    std::string text = fmt::format("as {} Prony terms, {} {:.2g} over t = {:.3g} .. {:.3g} s", terms,
+std::string describe_certificate(const Certificate& certificate, std::size_t terms, const UnitNames& unit_names) {
+    const auto unit = [&](const std::string& si) { return unit_names ? unit_names(si) : si; };
+    std::string text = fmt::format("as {} Prony terms, {} {:.2g} over t = {:.3g} .. {:.3g} {}", terms,
                                    certificate.kind == "model" ? "relative error" : "fit residual", certificate.error,
-                                   certificate.window.shortest, certificate.window.longest);
+                                   certificate.window.shortest, certificate.window.longest, unit("s"));
     const auto& frequencies = certificate.window.frequencies;
     for (std::size_t i = 0; i < frequencies.size(); ++i) {
         text += fmt::format("{}{:.4g}", i == 0 ? " and at omega = " : ", ", frequencies[i]);
     }
-    return frequencies.empty() ? text : text + " rad/s";
+    return frequencies.empty() ? text : text + " " + unit("rad/s");
 }
 
 }  // namespace mdr::rheology

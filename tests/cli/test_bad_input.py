@@ -56,7 +56,12 @@ BAD_CASES = [
     ("unknown-top-level", case_text(title='titel = "x"\n'),
      ["titel = ", "x", "unknown key", "'title'"]),
     ("unknown-top-level-table", case_text(extra="[numeric]\nelements = 50\n"),
-     ["numeric", "unknown key", "'numerics'"]),
+     ["numeric = [...]: unknown key", "'numerics'"]),
+    # a misspelt table prints as [...], not as its re-rendered contents
+    ("unknown-table-with-content", case_text(load=sub(LOAD, "[load]", "[lod]")),
+     ["lod = [...]: unknown key; did you mean 'load'?"]),
+    ("unknown-array-of-tables", case_text(extra="[[numeric]]\nelements = 50\n"),
+     ["numeric = [...]: unknown key; did you mean 'numerics'?"]),
     ("unknown-material-key", case_text(material=sub(MATERIAL, "G_inf", "Ginf")),
      ["material.Ginf", "unknown key", "'G_inf'"]),
     ("unknown-material-key-for-model", case_text(material=MATERIAL + "eta = 5\n"),

@@ -183,3 +183,85 @@ def test_the_command_line_reports_in_the_declared_units(mdr_binary, tmp_path):
     assert "max force" in completed.stdout and " N, max depth " in completed.stdout
     assert " mm, max contact radius " in completed.stdout and " mm/s\n" in completed.stdout
     assert "MPa" in completed.stdout and " t at v0 = " in completed.stdout
+
+
+MODEL_CASE = """{units}
+[material]
+model = "kelvin_voigt"
+G = {G}
+eta = {eta}
+[indenter]
+shape = "cone"
+slope_deg = 20.0
+[load]
+control = "displacement"
+history = [[0.0, 0.0], [1.0, {depth}]]
+"""
+
+
+def test_check_prints_the_model_in_the_declared_units(mdr_binary, tmp_path):
+    """`mdr check` names the model's keys in the case's units (kPa, kPa s in um-nN-s); SI as it always printed."""
+    def check(text):
+        path = tmp_path / "case.toml"
+        path.write_text(text, encoding="utf-8")
+        completed = subprocess.run([mdr_binary, "check", str(path)], capture_output=True, text=True, timeout=60)
+        assert completed.returncode == 0, completed.stderr
+        return completed.stdout
+
+    cells = check(MODEL_CASE.format(units='units = "um-nN-s"', G=2.0, eta=0.5, depth=1.0))
+    assert "kelvin_voigt (G = 2 kPa, eta = 0.5 kPa s) (G(0+) = inf kPa, G(inf) = 2 kPa, " in cells, cells
+    assert " over t = 0 .. 1 s [units um-nN-s]" in cells, cells
+    si = check(MODEL_CASE.format(units="", G=2.0e3, eta=500.0, depth=1.0e-6))
+    assert si == ("ok: cone slope_deg = 20 (half_angle_deg = 70) on a viscoelastic half-space kelvin_voigt "
+                  "(G = 2000 Pa, eta = 500 Pa s) (G(0+) = inf Pa, G(inf) = 2000 Pa, 0 branch(es)), displacement "
+                  "control, 2 history points over t = 0 .. 1 s\n"), si
+
+
+def write_flat_punch_curve(path, length, force):
+    """A flat punch of radius 5 um pressed 1 um in 1 s into an elastic 2 kPa body: F = 8 G a d (Sneddon), the
+    columns in data units of `length` and `force` [m, N]."""
+    a, G = 5.0e-6, 2.0e3
+    t = np.linspace(0.0, 1.0, 101)
+    d = 1.0e-6 * t
+    rows = ["t,d,F"] + [f"{ti!r},{di / length!r},{8.0 * G * a * di / force!r}" for ti, di in zip(t, d)]
+    path.write_text("\n".join(rows) + "\n", encoding="utf-8")
+
+
+def fit_flat_punch(tmp_path, units, G, a, data_file, data_units):
+    import tomli_w
+
+    case = {"material": {"model": "elastic", "G": G}, "indenter": {"shape": "flat", "a": a},
+            "fit": {"free": ["material.G"], "contact_point": "fixed", "baseline": "fixed", "elements": 200,
+                    "data": [{"file": data_file, "time": "t", "depth": "d", "force": "F", "units": data_units}]}}
+    if units != "SI":
+        case["units"] = units
+    path = tmp_path / f"fit_{units}.toml"
+    path.write_text(tomli_w.dumps(case), encoding="utf-8")
+    return mdr.fit(str(path))
+
+
+def test_fit_data_are_converted_to_the_declared_system(tmp_path):
+    """The audit's flat punch: data in um and nN fitted in an um-nN-s case give G in kPa (not 1e-3 of it), the
+    same as data in m and N there, and the SI twin's G in Pa / 1e3; fit.json and the fit figures name the units."""
+    write_flat_punch_curve(tmp_path / "si.csv", 1.0, 1.0)
+    write_flat_punch_curve(tmp_path / "cells.csv", 1.0e-6, 1.0e-9)
+    si = fit_flat_punch(tmp_path, "SI", 5.0e2, 5.0e-6, "si.csv", {})
+    cells = fit_flat_punch(tmp_path, "um-nN-s", 0.5, 5.0, "cells.csv", {"length": "um", "force": "nN"})
+    named_si = fit_flat_punch(tmp_path, "um-nN-s", 0.5, 5.0, "si.csv", {"length": "m", "force": "N"})
+    assert si.parameters["material.G"] == pytest.approx(2.0e3, rel=1e-3)  # the element model's discretisation
+    for result in (cells, named_si):
+        assert result.parameters["material.G"] * 1e3 == pytest.approx(si.parameters["material.G"], rel=1e-6)
+        assert result.summary["units"] == "um-nN-s"
+    assert si.summary["units"] == "SI"
+    import matplotlib.pyplot as plt
+
+    table = {"curve": np.array(["c"] * 3), "t": np.arange(3.0), "measured": np.ones(3), "model": np.ones(3),
+             "residual": np.zeros(3)}
+    axes = mdr.plot.fit_curves(table, units=cells.summary)
+    assert axes.get_ylabel() == "force [nN] or depth [µm]"
+    assert mdr.plot.fit_curves(table).get_ylabel() == "force [N] or depth [m]"
+    drops = {"curve": np.array(["drops:restitution"] * 3 + ["drops:contact_time"] * 3),
+             "t": np.tile([1.0, 2.0, 3.0], 2), "measured": np.full(6, 0.5), "model": np.full(6, 0.5)}
+    bottom = mdr.plot.fit_rebounds(drops, units="nm-nN-s").figure.axes[1]
+    assert (bottom.get_xlabel(), bottom.get_ylabel()) == ("approach speed v0 [nm/s]", "contact time T [ms]")
+    plt.close("all")

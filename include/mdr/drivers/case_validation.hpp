@@ -22,11 +22,11 @@ void validate(const HarmonicLoad& harmonic, const std::string& prefix);
 /// [0, 90).
 double incidence_velocity(double velocity, double incidence_deg);
 
-/// Checks a contact problem: an indenter and a load history; for an impact a mass and an approach speed > 0 and no
-/// tangential load; for an oblique impact friction >= 0, finite tangential velocity and spin, a positive moment of
-/// inertia and radius, an incompressible body (no tangential_approximate); under force control no negative force;
-/// under displacement control no jump against a dashpot; an end after the first history time (finite unless an
-/// impact); snapshots within the simulated time; positive numerics. A normal
+/// Checks a contact problem: an indenter and a load history; for an impact a mass and an approach speed > 0 and
+/// no tangential load; for an oblique impact friction >= 0, finite tangential velocity and spin, a sphere, a
+/// positive moment of inertia when one is given, one incompressible body (tangential_exact);
+/// under force control no negative force; under displacement control no jump against a dashpot; an end after the
+/// first history time (finite unless an impact); snapshots within the simulated time; positive numerics. A normal
 /// harmonic (not with an impact): amplitude > 0, starting no earlier than the history, and under force control
 /// no larger than the smallest history force during it. Spring control: a spring constant > 0 (and none with
 /// another control), a base history starting at or above the surface (z <= 0) without jumps; force pauses (spring

@@ -40,8 +40,9 @@ struct ObliqueImpactLoad {
     double friction = 0.0;             ///< mu >= 0 (local Coulomb friction, eq. 48-50)
     double tangential_velocity = 0.0;  ///< v_t0 [m/s] of the centre along x at first contact
     double spin = 0.0;                 ///< omega0 [rad/s] at first contact
-    double moment_of_inertia = 0.0;    ///< I [kg m^2] about the centre (solid sphere: 2/5 m R^2)
-    double radius = 0.0;               ///< R [m] of the sphere: the lever of the tangential force
+    /// I [kg m^2] about the centre; absent: a solid sphere's 2/5 m R^2 (oblique_sphere). The lever R is the
+    /// indenter's: an oblique impact needs a sphere (drivers::validate).
+    std::optional<double> moment_of_inertia{};
 };
 
 /// User choices of `[numerics]`; every field optional, defaults come from the problem's scales.
@@ -91,9 +92,9 @@ struct ContactCase {
     std::optional<ImpactLoad> impact{};                 ///< with control = impact (end_time is then the latest end
                                                         ///< allowed)
     std::optional<TangentialLoad> tangential{};         ///< `[tangential]`, superimposed tangential loading
-    /// True when tangential loading meets compressible or two different bodies: the MDR mapping is then exact for
-    /// the normal problem only (section 7) and the tangential result an approximation.
-    bool tangential_approximate = false;
+    /// False when `material` is a compressible body's or two bodies' (rheology::contact_material sets it): the MDR
+    /// then maps the normal problem only exactly (section 7).
+    bool tangential_exact = true;
     std::optional<ObliqueImpactLoad> oblique{};         ///< with control = impact: its tangential part
     /// The model behind `material` (its description; for a model converted to a series, the certificate).
     rheology::MaterialOrigin material_origin{};
@@ -104,6 +105,9 @@ struct ContactCase {
     /// `load.force_pauses`, with control = spring: the instrument's feedback holds the force over each (ForcePause).
     std::vector<ForcePause> force_pauses{};
 
+    /// True when tangential loading (or an oblique impact) meets a material that is not tangential_exact: the
+    /// tangential result is then an approximation.
+    bool tangential_approximate() const { return !tangential_exact && (tangential || oblique); }
     /// The declared unit system (mdr/io/units.hpp): the names printed beside the numbers; nothing is converted.
     std::string units = "SI";
 };

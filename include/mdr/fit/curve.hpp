@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Measured curves for fitting: where they come from (a CSV file and its columns, or arrays) and what the fit
-/// receives (time, indentation and force in SI units, with estimates of noise, contact point and force baseline).
+/// receives (time, indentation and force in the case's units, with estimates of noise, contact point and force
+/// baseline). The reader converts a file's units to the case's (io::read_fit_data); arrays are in the case's units.
 
 #include <filesystem>
 #include <cstddef>
@@ -28,16 +29,17 @@ struct CurveSource {
     std::string force_column;               ///< force on the indenter, positive in compression ("" for raw AFM)
     std::string piezo_column;               ///< AFM: height of the cantilever base, larger = farther from the sample
     std::string deflection_column;          ///< AFM: cantilever deflection, positive = bent away from the sample
-    std::optional<double> spring_constant;  ///< AFM: cantilever spring constant [N/m]
-    double time_unit = 1.0;                 ///< seconds per unit of the time column
-    double length_unit = 1.0;               ///< metres per unit of the depth, piezo and deflection columns
-    double force_unit = 1.0;                ///< newtons per unit of the force column
+    std::optional<double> spring_constant;  ///< AFM: cantilever spring constant, in units of spring_constant_unit
+    double spring_constant_unit = 1.0;      ///< the curve's force / length per unit of spring_constant
+    double time_unit = 1.0;                 ///< the curve's time units per unit of the time column
+    double length_unit = 1.0;               ///< the curve's length units per unit of the depth, piezo and deflection
+    double force_unit = 1.0;                ///< the curve's force units per unit of the force column
     std::string segment_column;             ///< column naming each row's segment ("" keeps every row)
     std::vector<std::string> segments;      ///< segments kept (every segment when empty), e.g. {"extend", "pause"}
     std::optional<Fitted> fitted{};         ///< Curve::fitted
 };
 
-/// A measured curve in SI units.
+/// A measured curve in the units of its case (the fit's model): SI names below for a case in SI.
 struct Curve {
     std::string name;              ///< for messages and outputs (the file stem, or given)
     std::vector<double> time;      ///< t [s], strictly increasing
@@ -80,7 +82,7 @@ struct DepthAndForce {
 DepthAndForce afm_depth_and_force(const std::vector<double>& piezo, const std::vector<double>& deflection,
                                   double spring_constant);
 
-/// A validated curve from arrays in SI units (same rules as load_curve), with the same estimates.
+/// A validated curve from arrays in the case's units (same rules as load_curve), with the same estimates.
 Curve make_curve(std::string name, std::vector<double> time, std::vector<double> depth, std::vector<double> force);
 
 /// The noise of values[begin, end) from the data alone: 1.4826 MAD of the second differences over sqrt(6) (a smooth

@@ -24,12 +24,13 @@ struct ReboundSource {
     std::string restitution_error_column;       ///< or a column of them ("" when not given)
     std::optional<double> contact_time_error{}; ///< standard deviation of every T (in the time unit)
     std::string contact_time_error_column;      ///< or a column of them ("" when not given)
-    std::optional<double> mass{};               ///< impactor mass [kg]; unset: the case's `indenter.mass`
-    double velocity_unit = 1.0;                 ///< m/s per unit of the velocity column
-    double time_unit = 1.0;                     ///< seconds per unit of the contact time columns
+    std::optional<double> mass{};               ///< impactor mass (case's units); unset: the case's `indenter.mass`
+    double velocity_unit = 1.0;                 ///< the case's velocity units per unit of the velocity column
+    double time_unit = 1.0;                     ///< the case's time units per unit of the contact time columns
 };
 
-/// Measured rebounds in SI units, validated: one impact of mass `mass` at each approach speed.
+/// Measured rebounds in the case's units (SI names below for a case in SI), validated: one impact of mass `mass` at
+/// each approach speed.
 struct ReboundData {
     std::string name;                         ///< for messages and outputs (the file stem, or given)
     double mass = 0.0;                        ///< impactor mass m [kg] > 0
@@ -54,7 +55,7 @@ struct ReboundArrays {
     std::vector<double> contact_time_error{};///< empty, one value, or one per row
 };
 
-/// Validates rebound arrays in SI units and fills their uncertainties. Throws mdr::InvalidInput (keys `mass`,
+/// Validates rebound arrays in the case's units and fills their uncertainties. Throws mdr::InvalidInput (keys `mass`,
 /// `velocity`, `restitution`, `contact_time`, `restitution_error`, `contact_time_error`; a caller prefixes them)
 /// for: a mass that is missing or not > 0, no rows, arrays of different lengths, a value that is not finite, a
 /// speed or contact time not > 0, e outside [0, 1], an uncertainty not > 0, and an uncertainty to be estimated

@@ -29,6 +29,7 @@ struct FitCase {
     std::vector<fit::ReboundSource> rebounds{};  ///< `[[fit.data]]` with `kind = "rebound"`
     std::vector<std::string> data_keys{};        ///< the table of each of `data` in messages, e.g. `fit.data[2]`
     std::vector<std::string> rebound_keys{};     ///< the table of each of `rebounds`
+    std::string units = "SI";                    ///< the model's declared unit system (mdr/io/units.hpp)
 };
 
 /// Parses a fit case. A free key must name a number of `[material]` or `[indenter]`; its start value is

@@ -6,14 +6,19 @@
 #include <string>
 
 #include "mdr/fit/fit.hpp"
+#include "mdr/io/document.hpp"
 #include "mdr/io/fit_case.hpp"
 
 namespace mdr::io {
 
-/// fit.json: status, parameters, standard_errors, intervals_95, correlation, undetermined, curves (contact point,
-/// baseline, noise, RMS residual), rms_residual, noise, residual_to_noise, aic, bic, points, free_count,
-/// iterations, evaluations, wall_seconds. NaN (an undetermined error) is written as null.
-std::string fit_json(const fit::FitResult& result);
+/// fit.json as a document: status, converged, parameters, standard_errors, intervals_95, correlation,
+/// undetermined, curves (contact point, baseline, noise, RMS residual), rms_residual, noise, residual_to_noise, aic,
+/// bic, points, free_count, iterations, evaluations, element_evaluations, wall_seconds, and `units`, the case's
+/// declared unit system in which its numbers are (for the figures). NaN (an undetermined error) is null.
+Document fit_document(const fit::FitResult& result, const std::string& units = "SI");
+
+/// fit.json: fit_document as JSON text.
+std::string fit_json(const fit::FitResult& result, const std::string& units = "SI");
 
 /// Writes fit.json, fitted.toml (the case with the fitted values; its load is the case's own, or the first
 /// curve's driving history, the contact point removed) and curves.csv (curve,t,measured,model,residual) into

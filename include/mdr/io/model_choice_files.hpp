@@ -7,13 +7,17 @@
 #include <string>
 
 #include "mdr/fit/candidates.hpp"
+#include "mdr/io/document.hpp"
 
 namespace mdr::io {
 
-/// ranking.json: `criterion` ("bic"), `preferred`, `modulus_scale`, `time_window` [s, s], and `candidates` in
-/// ascending BIC, each with `name`, `status`, `converged`, `free_count`, `rms_residual`, `noise`,
+/// ranking.json as a document: `criterion` ("bic"), `preferred`, `modulus_scale`, `time_window` [s, s], and
+/// `candidates` in ascending BIC, each with `name`, `status`, `converged`, `free_count`, `rms_residual`, `noise`,
 /// `residual_to_noise`, `aic`, `bic`, `delta_aic`, `delta_bic`, `undetermined` (names), `evaluations`,
 /// `wall_seconds`.
+Document ranking_document(const fit::ModelChoice& choice);
+
+/// ranking.json: ranking_document as JSON text.
 std::string ranking_json(const fit::ModelChoice& choice);
 
 /// Writes the model choice into `directory`: per candidate a folder NAME/ with fit.json, fitted.toml, curves.csv

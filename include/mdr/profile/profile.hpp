@@ -77,7 +77,21 @@ enum class Interpolation {
 std::unique_ptr<Profile> make_table(std::vector<double> r, std::vector<double> f,
                                     Interpolation interpolation = Interpolation::monotone_cubic);
 
-/// The interpolation of that name (`monotone_cubic` or `linear`); mdr::InvalidInput (key `interpolation`) else.
+/// One row of the registry of interpolations: `interpolation = "name"` and what it is for.
+struct InterpolationKind {
+    Interpolation interpolation;
+    std::string name;  ///< e.g. `monotone_cubic`
+    std::string use;   ///< e.g. `smooth profiles`
+};
+
+/// The interpolations, the default first: the reader, its messages, the shape registry's documentation and the
+/// docs' lists come from it.
+const std::vector<InterpolationKind>& interpolations();
+/// The row of `interpolation`.
+const InterpolationKind& interpolation_kind(Interpolation interpolation);
+/// The names as text, `monotone_cubic or linear`, each with its use in parentheses when `with_uses`.
+std::string interpolation_list(bool with_uses);
+/// The interpolation of that name (a row's); mdr::InvalidInput (key `interpolation`) naming the rows else.
 Interpolation interpolation_named(const std::string& name);
 
 /// Builds the profile that `definition` describes with the factory of its shape's row (shapes.hpp; errors name the

@@ -4,6 +4,7 @@
 /// reader, its error messages, the description of a case, the Python factories, the stubs and the model list of
 /// docs/case-format.md all come from it; adding a model is one row (material_models.cpp) plus its factory.
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -27,7 +28,7 @@ enum class ParameterKind {
 struct ModelParameter {
     std::string key;            ///< as in a shear table; a bulk table writes K for a leading G (G_inf -> K_inf)
     ParameterKind kind = ParameterKind::number;
-    std::string unit;           ///< e.g. "Pa", "Pa s", "s", "1"
+    std::string unit;           ///< in SI symbols, e.g. "Pa", "Pa s", "s", "1" (a case's system: UnitNames)
     std::string documentation;  ///< one line
     bool required = true;       ///< false: optional (a number then takes default_value)
     double default_value = 0.0; ///< for an optional number
@@ -47,11 +48,16 @@ struct ModelParameters {
     bool has(const std::string& key) const;
 };
 
+/// How the description prints a registry unit (written with SI symbols, e.g. "Pa s"): in the case's declared
+/// system (io::UnitSystem::names gives "kPa s" in um-nN-s). Empty: the registry's own, SI.
+using UnitNames = std::function<std::string(const std::string&)>;
+
 /// What a conversion to a series needs besides the parameters.
 struct ConversionOptions {
     std::optional<TimeWindow> window{};        ///< the lags the problem needs (required by models with a window)
     double tolerance = default_material_tolerance;  ///< relative, for models converted to a series
     std::string directory{};                   ///< where relative file names are found ("" = working directory)
+    UnitNames unit_names{};                    ///< the units of the description (empty: SI)
 };
 
 /// What a factory builds.
@@ -81,12 +87,13 @@ ModelMaterial build_material(const MaterialModel& model, const ModelParameters& 
                              const ConversionOptions& options = {});
 
 /// `name (key = value unit, ...)` for the values given; the one-line description of a model's parameters. `rename`
-/// gives a key as the table writes it (a bulk table: K for G); none: the registry's names.
+/// gives a key as the table writes it (a bulk table: K for G); none: the registry's names. `unit_names` prints
+/// the units in the case's system; empty: the registry's (SI).
 std::string describe_model(const MaterialModel& model, const ModelParameters& parameters,
-                           std::string (*rename)(const std::string&) = nullptr);
+                           std::string (*rename)(const std::string&) = nullptr, const UnitNames& unit_names = {});
 
 /// The description of a certificate: `as N Prony terms, error E over t = a .. b s`, then `and at omega = w1, w2
-/// rad/s` when it certifies frequencies.
-std::string describe_certificate(const Certificate& certificate, std::size_t terms);
+/// rad/s` when it certifies frequencies; `unit_names` as for describe_model.
+std::string describe_certificate(const Certificate& certificate, std::size_t terms, const UnitNames& unit_names = {});
 
 }  // namespace mdr::rheology

@@ -5,9 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
 
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/drivers/oblique_sphere.hpp"
 #include "mdr/error.hpp"
 #include "mdr/profile/profile.hpp"
 
@@ -60,6 +62,35 @@ TEST(CaseValidation, AHistoryWhoseRateOverflowsIsRefusedNotANaNForce) {
     EXPECT_EQ(key_of([] { LoadHistory({{0.0, -1e308}, {0.5, 5e-5}}, "load.history"); }), "load.history[1].value");
     EXPECT_EQ(key_of([] { LoadHistory({{0.0, -1e307}, {0.5, 5e-5}}, "load.history"); }), "");
     EXPECT_EQ(key_of([] { LoadHistory({{0.0, 0.0}, {0.0, 1.0}}, "load.history"); }), "");  // a jump has no rate
+}
+
+ContactCase oblique_impact(std::shared_ptr<const profile::Profile> indenter) {
+    ContactCase contact_case{.title = "oblique impact",
+                             .material = rheology::Rheology::standard(1e6, 2e6, 1e-3),
+                             .indenter = std::move(indenter),
+                             .control = Control::impact,
+                             .load = {.history = LoadHistory({{0.0, 0.0}}, "load.history")},
+                             .end_time = std::numeric_limits<double>::infinity()};
+    contact_case.impact = ImpactLoad{0.03, 0.1};
+    contact_case.oblique = ObliqueImpactLoad{.friction = 0.3, .tangential_velocity = 0.05};
+    contact_case.numerics.elements = 100;
+    return contact_case;
+}
+
+TEST(CaseValidation, AnObliqueImpactTakesItsLeverFromTheSphereAndRefusesOtherShapes) {
+    auto contact_case = oblique_impact(profile::make_sphere(0.01));
+    EXPECT_EQ(key_of([&] { validate(contact_case); }), "");
+    EXPECT_DOUBLE_EQ(oblique_sphere(contact_case).radius, 0.01);
+    EXPECT_DOUBLE_EQ(oblique_sphere(contact_case).moment_of_inertia, 0.4 * 0.03 * 0.01 * 0.01);  // a solid sphere
+    EXPECT_GT(run_case(contact_case).impact->oblique->impulse_ratio, 0.0);
+    contact_case.oblique->moment_of_inertia = 2e-6;
+    EXPECT_DOUBLE_EQ(oblique_sphere(contact_case).moment_of_inertia, 2e-6);
+    contact_case.oblique->moment_of_inertia = 0.0;
+    EXPECT_EQ(key_of([&] { validate(contact_case); }), "indenter.moment_of_inertia");
+    EXPECT_EQ(key_of([&] { validate(oblique_impact(profile::make_cone(10.0))); }), "indenter.shape");
+    auto compressible = oblique_impact(profile::make_sphere(0.01));
+    compressible.tangential_exact = false;  // as rheology::contact_material gives for K or a second body
+    EXPECT_EQ(key_of([&] { validate(compressible); }), "load.tangential_velocity");
 }
 
 TEST(CaseValidation, EveryRuleNamesItsKey) {

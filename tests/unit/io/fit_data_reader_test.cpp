@@ -6,14 +6,16 @@
 #include <gtest/gtest.h>
 
 #include "mdr/error.hpp"
+#include "mdr/io/units.hpp"
 
 namespace mdr::io {
 namespace {
 
-fit::CurveSource read(const std::string& text, const std::filesystem::path& directory = "/cases") {
+fit::CurveSource read(const std::string& text, const std::filesystem::path& directory = "/cases",
+                      const std::string& units = "SI") {
     const toml::table table = toml::parse(text);
     TableReader reader(table, "fit.data[0]");
-    return read_fit_data(reader, directory);
+    return read_fit_data(reader, directory, unit_system(units));
 }
 
 std::string message(const std::string& text) {
@@ -89,6 +91,34 @@ TEST(FitDataReader, UnitNamesAreSiPrefixesOfTheBase) {
               "fit.data[0].units.time = 0: must be > 0");
     EXPECT_EQ(message("file = \"c.csv\"\ntime = \"t\"\nunits = { lenght = \"nm\" }\n"),
               "fit.data[0].units.lenght = 'nm': unknown key; did you mean 'length'?");
+}
+
+TEST(FitDataReader, UnitsConvertToTheCasesSystem) {
+    // The factor takes a data unit to the case's unit (the units table's sizes), not to SI: in um-nN-s a column in
+    // nm is 1e-3 um, in m 1e6 um; a number is the data unit's size in SI; absent, the data are in the case's units.
+    const auto in_cells = [](const std::string& units) {
+        return read("file = \"c.csv\"\ntime = \"t\"\nspring_constant = 0.02\nunits = " + units + "\n", "/cases",
+                    "um-nN-s");
+    };
+    const fit::CurveSource named = in_cells("{ time = \"ms\", length = \"nm\", force = \"pN\" }");
+    EXPECT_DOUBLE_EQ(named.time_unit, 1e-3);
+    EXPECT_DOUBLE_EQ(named.length_unit, 1e-3);
+    EXPECT_DOUBLE_EQ(named.force_unit, 1e-3);
+    EXPECT_DOUBLE_EQ(named.spring_constant_unit, 1e3);  // 1 N/m = 1e3 nN/um
+    EXPECT_EQ(named.spring_constant, 0.02);             // as given, for messages
+    const fit::CurveSource si = in_cells("{ length = \"m\", force = 1.0 }");
+    EXPECT_DOUBLE_EQ(si.length_unit, 1e6);
+    EXPECT_DOUBLE_EQ(si.force_unit, 1e9);
+    EXPECT_EQ(in_cells("{}").length_unit, 1.0);
+    const std::string in_um = "file = \"c.csv\"\ntime = \"t\"\nunits = { length = \"um\" }\n";
+    EXPECT_EQ(read(in_um, "/cases", "mm-N-s").length_unit, 1e-3);
+
+    const toml::table table = toml::parse(
+        "file = \"d.csv\"\nvelocity = \"v\"\nrestitution = \"e\"\nunits = { velocity = \"mm/s\", time = \"ms\" }\n");
+    TableReader reader(table, "fit.data[1]");
+    const fit::ReboundSource drops = read_rebound_data(reader, "/cases", unit_system("nm-nN-s"));
+    EXPECT_DOUBLE_EQ(drops.velocity_unit, 1e6);  // 1 mm/s = 1e6 nm/s
+    EXPECT_DOUBLE_EQ(drops.time_unit, 1e-3);
 }
 
 TEST(FitDataReader, RefusesUnknownKeysAndWrongTypes) {

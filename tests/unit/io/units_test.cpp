@@ -45,6 +45,32 @@ TEST(UnitSystems, EveryRowIsConsistent) {
     }
 }
 
+TEST(UnitSystems, SizesAreThoseOfTheNames) {
+    for (const auto& system : unit_systems()) {
+        SCOPED_TRACE(std::string(system.name));
+        EXPECT_EQ(si_size(std::string(system.length)), system.length_size);
+        EXPECT_EQ(si_size(std::string(system.force)), system.force_size);
+        EXPECT_EQ(si_size(std::string(system.time)), system.time_size);
+    }
+}
+
+TEST(UnitSystems, RegistryUnitsInASystemsNames) {
+    // Every unit of the material and shape registries, in SI symbols, is SI's own name and is written in um-nN-s
+    // symbol by symbol; what is no unit symbol (rad, deg, path, 1, an exponent) stays.
+    const auto& si = unit_system("SI");
+    const auto& cells = unit_system("um-nN-s");
+    const std::map<std::string, std::string> expected{
+        {"Pa", "kPa"},   {"Pa s", "kPa s"}, {"s", "s"},        {"1/Pa", "1/kPa"}, {"Pa s^alpha", "kPa s^alpha"},
+        {"Pa, s", "kPa, s"}, {"rad/s", "rad/s"}, {"1", "1"},   {"path", "path"},  {"m", "µm"},
+        {"deg", "deg"},  {"kg", "g"},       {"N/m", "nN/µm"}, {"J", "fJ"},       {"m^s", "µm^s"}};
+    for (const auto& [unit, in_cells] : expected) {
+        EXPECT_EQ(si.names(unit), unit);
+        EXPECT_EQ(cells.names(unit), in_cells) << unit;
+    }
+    EXPECT_EQ(unit_system("mm-N-s").names("Pa s"), "MPa s");
+    EXPECT_EQ(unit_system("nm-nN-s").names("1/Pa"), "1/GPa");
+}
+
 constexpr const char* case_text = R"(
 units = "um-nN-s"
 [material]
@@ -73,6 +99,27 @@ TEST(UnitSystems, TheReaderTakesTheDeclaredSystem) {
     } catch (const InvalidInput& error) {
         EXPECT_STREQ(error.what(), "units = \"nano\": unknown unit system; one of SI, mm-N-s, um-nN-s, nm-nN-s");
     }
+}
+
+TEST(UnitSystems, TheModelIsDescribedInTheDeclaredSystem) {
+    // The model's keys (and a bulk table's, and a certificate's window) in the system's names; SI as it always was.
+    std::string text = case_text;
+    text.replace(text.find("model = \"elastic\"\nG = 2.0"), 24,
+                 "model = \"kelvin_voigt\"\nG = 2.0\neta = 0.5\n[material.bulk]\nmodel = \"elastic\"\nK = 40.0");
+    const std::string cells = describe(parse_case(text));
+    EXPECT_NE(cells.find("kelvin_voigt (G = 2 kPa, eta = 0.5 kPa s) with bulk elastic (K = 40 kPa)"), std::string::npos)
+        << cells;
+    const std::string si_text = text.substr(text.find("[material]"));
+    EXPECT_EQ(describe(parse_case(si_text)),
+              "sphere R = 5 on a viscoelastic half-space kelvin_voigt (G = 2 Pa, eta = 0.5 Pa s) with bulk elastic "
+              "(K = 40 Pa) (G(0+) = inf Pa, G(inf) = 1.906 Pa, 1 branch(es)), displacement control, 2 history "
+              "points over t = 0 .. 1 s");
+    text = case_text;
+    text.replace(text.find("model = \"elastic\"\nG = 2.0"), 24,
+                 "model = \"fractional_kelvin_voigt\"\nG = 2.0\nc = 0.5\nalpha = 0.3");
+    const std::string fractional = describe(parse_case(text));
+    EXPECT_NE(fractional.find("(G = 2 kPa, c = 0.5 kPa s^alpha, alpha = 0.3) as "), std::string::npos) << fractional;
+    EXPECT_NE(fractional.find(" s (G(0+) = "), std::string::npos) << fractional;  // the certificate's window
 }
 
 }  // namespace

@@ -91,6 +91,19 @@ TEST(ShapeRegistry, BadDefinitionsNameTheKeyAndTheRule) {
     EXPECT_EQ(table->definition().texts.at("interpolation"), "monotone_cubic");
 }
 
+TEST(InterpolationRegistry, EveryRowBuildsItsTableAndNamesItselfBack) {
+    for (const auto& row : mdr::profile::interpolations()) {
+        const auto table = mdr::profile::make_profile(
+            {"profile", {}, {{"r", {0.0, 1.0, 2.0}}, {"f", {0.0, 1.0, 4.0}}}, {{"interpolation", row.name}}});
+        EXPECT_EQ(table->definition().texts.at("interpolation"), row.name);
+        EXPECT_EQ(mdr::profile::interpolation_kind(mdr::profile::interpolation_named(row.name)).name, row.name);
+    }
+    // The default is the first row, and the shape registry documents every row with its use.
+    EXPECT_EQ(mdr::profile::interpolations().front().interpolation, mdr::profile::Interpolation::monotone_cubic);
+    EXPECT_EQ(mdr::profile::interpolation_list(true),
+              "monotone_cubic (smooth profiles) or linear (profiles with kinks)");
+}
+
 std::string case_with_indenter(const std::string& indenter) {
     return "[material]\nmodel = \"elastic\"\nG = 1e6\n[indenter]\n" + indenter +
            "[load]\ncontrol = \"displacement\"\nhistory = [[0.0, 0.0], [1.0, 1e-5]]\n";

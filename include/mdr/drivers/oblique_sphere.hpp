@@ -1,0 +1,20 @@
+#pragma once
+/// \file
+/// The sphere of an oblique impact (handbook section 6 with m v_t' = -F_x, I omega' = R F_x): its lever and its
+/// moment of inertia, from the case.
+
+#include "mdr/drivers/contact_case.hpp"
+
+namespace mdr::drivers {
+
+/// The rotating sphere of an oblique impact.
+struct ObliqueSphere {
+    double radius;             ///< R [m] of the indenter: the lever of the tangential force
+    double moment_of_inertia;  ///< I [kg m^2] about the centre
+};
+
+/// The sphere of `contact_case`, an oblique impact on a sphere (drivers::validate): R from the indenter, I as
+/// given (ObliqueImpactLoad::moment_of_inertia) or a solid sphere's 2/5 m R^2.
+ObliqueSphere oblique_sphere(const ContactCase& contact_case);
+
+}  // namespace mdr::drivers
