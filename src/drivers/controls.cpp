@@ -13,10 +13,11 @@ ControlKey history(const char* unit, const char* column) {
     return {"history", unit, std::string("the (t, ") + column + ") points of a piecewise-linear history", true};
 }
 ControlKey harmonic(const char* amplitude_unit) {
-    return {"harmonic", "",
-            std::string("{ amplitude [") + amplitude_unit +
-                "], frequency [Hz], start [s], end [s] }: a sine added to the history; its last full cycle is "
-                "measured"};
+    std::string keys;
+    for (const auto& key : harmonic_keys()) {
+        keys += (keys.empty() ? "" : ", ") + key.key + " [" + (key.unit.empty() ? amplitude_unit : key.unit) + "]";
+    }
+    return {"harmonic", "", "{ " + keys + " }: a sine added to the history; its last full cycle is measured"};
 }
 ControlKey end() { return {"end", "s", "the last time simulated (default: the end of the history and harmonic)"}; }
 
@@ -68,6 +69,22 @@ std::vector<TangentialControlKind> tangential_rows() {
 }
 
 }  // namespace
+
+const std::vector<ControlKey>& harmonic_keys() {
+    static const std::vector<ControlKey> keys{
+        {"amplitude", "", "of the sine, amplitude sin(2 pi frequency (t - start)), > 0", true},
+        {"frequency", "Hz", "> 0", true},
+        {"start", "s", "the sine starts from 0 here", true},
+        {"end", "s", "> start; the value reached is held after it", true},
+    };
+    return keys;
+}
+
+std::vector<std::string> harmonic_key_names() {
+    std::vector<std::string> names;
+    for (const auto& key : harmonic_keys()) names.push_back(key.key);
+    return names;
+}
 
 const std::vector<ControlKind>& controls() {
     static const std::vector<ControlKind> table = rows();

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -54,7 +55,8 @@ rheology::Body build_body(const BodySpec& spec, const std::optional<rheology::Ti
                           const std::string& directory, const UnitSystem& units) {
     rheology::Body body{build_material(spec.shear, window, directory, units)};
     if (spec.bulk_modulus) {
-        body.bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus), {.times_from_conversion = true}};
+        body.bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus),
+                                            {.times_from_conversion = true}};
     }
     if (spec.bulk) body.bulk = build_material(*spec.bulk, window, directory, units);
     return body;
@@ -73,15 +75,20 @@ drivers::HarmonicLoad read_harmonic(TableReader& table) {
 }
 
 drivers::TangentialLoad read_tangential(TableReader& table) {
-    table.reject_unknown({"friction", "control", "history", "amplitude", "frequency", "start", "end"});
+    std::vector<std::string> known{"friction", "control", "history"};
+    const std::vector<std::string> harmonic_keys = drivers::harmonic_key_names();
+    known.insert(known.end(), harmonic_keys.begin(), harmonic_keys.end());
+    table.reject_unknown(known);
     drivers::TangentialLoad load;
     load.friction = table.number("friction");
     const auto& control = drivers::tangential_control_named(
         table.optional_string("control").value_or(drivers::tangential_controls().front().name));
     load.control = control.control;
-    const bool harmonic = table.has("amplitude") || table.has("frequency") || table.has("start") || table.has("end");
+    const bool harmonic =
+        std::any_of(harmonic_keys.begin(), harmonic_keys.end(), [&table](const auto& key) { return table.has(key); });
     if (table.has("history") == harmonic) {
-        throw InvalidInput("tangential", "[...]", "give either history or amplitude, frequency, start, end");
+        throw InvalidInput("tangential", "[...]",
+                           fmt::format("give either history or {}", fmt::join(harmonic_keys, ", ")));
     }
     if (table.has("history")) {
         load.load.history = read_history(table, control.column);
@@ -103,9 +110,11 @@ drivers::ObliqueImpactLoad read_oblique(TableReader& load, TableReader& indenter
     if (!tangential || !tangential->has("friction")) {
         throw InvalidInput("tangential.friction", "(missing)", "is required for an oblique impact");
     }
-    for (const char* key : {"control", "history", "amplitude", "frequency", "start", "end"}) {
+    std::vector<std::string> load_keys{"control", "history"};
+    for (auto& key : drivers::harmonic_key_names()) load_keys.push_back(std::move(key));
+    for (const auto& key : load_keys) {
         if (tangential->has(key)) {
-            throw InvalidInput("tangential." + std::string(key), tangential->text(key),
+            throw InvalidInput("tangential." + key, tangential->text(key),
                                "a tangential load history is not for an impact; an oblique impact takes only "
                                "tangential.friction, with load.tangential_velocity or load.spin");
         }
@@ -177,9 +186,10 @@ drivers::ContactCase read_case(const toml::table& root_table) {
         auto table = load->table("harmonic");
         if (!table) {
             throw InvalidInput("load.harmonic", load->text("harmonic"),
-                               "must be a table { amplitude, frequency, start, end }");
+                               fmt::format("must be a table {{ {} }}",
+                                           fmt::join(drivers::harmonic_key_names(), ", ")));
         }
-        table->reject_unknown({"amplitude", "frequency", "start", "end"});
+        table->reject_unknown(drivers::harmonic_key_names());
         normal_load.harmonic = read_harmonic(*table);
     }
     const std::optional<double> spring_constant =

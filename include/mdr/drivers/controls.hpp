@@ -37,6 +37,14 @@ struct ControlKind {
     const ControlKey* key_named(const std::string& key) const;
 };
 
+/// The keys of a harmonic load part (`load.harmonic = { ... }`, or a harmonic `[tangential]` table), in the order
+/// messages list them; the amplitude's unit is the controlled quantity's (""). The reader's key checks and
+/// messages and the controls' documentation of `harmonic` come from it.
+const std::vector<ControlKey>& harmonic_keys();
+
+/// The names of harmonic_keys(): amplitude, frequency, start, end.
+std::vector<std::string> harmonic_key_names();
+
 /// Every control, in the order of the documentation.
 const std::vector<ControlKind>& controls();
 
