@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "mdr/drivers/controls.hpp"
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "mdr/profile/profile.hpp"
@@ -240,7 +241,8 @@ void validate(const TangentialLoad& load) {
     require_non_negative("tangential.friction", load.friction);
     const auto& [history, harmonic] = load.load;
     if (history.has_value() == harmonic.has_value()) {
-        throw InvalidInput("tangential", "[...]", "give either history or amplitude, frequency, start, end");
+        throw InvalidInput("tangential", "[...]",
+                           fmt::format("give either history or {}", fmt::join(harmonic_key_names(), ", ")));
     }
     if (history && history->has_jump()) {
         throw InvalidInput("tangential.history", "[...]",

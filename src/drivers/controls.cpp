@@ -34,10 +34,7 @@ std::vector<ControlKind> rows() {
          "",
          {{"velocity", "m/s", "the approach speed v0 > 0 at first contact", true},
           {"end", "s", "the latest end (default: from the contact time's scales)"},
-          {"tangential_velocity", "m/s", "an oblique impact: the centre's tangential speed at first contact"},
-          {"incidence_deg", "deg", "an oblique impact: the angle of the velocity from the normal (instead of "
-                                   "tangential_velocity)"},
-          {"spin", "rad/s", "an oblique impact: the sphere's spin at first contact"}},
+          oblique_impact_keys()[0], oblique_impact_keys()[1], oblique_impact_keys()[2]},
          {"indenter.mass"}},
         {Control::spring, "spring",
          "the history prescribes the base z(t) of a spring k in series with the massless indenter: F = k (z - d)", "z",
@@ -70,9 +67,19 @@ std::vector<TangentialControlKind> tangential_rows() {
 
 }  // namespace
 
+const std::vector<ControlKey>& oblique_impact_keys() {
+    static const std::vector<ControlKey> keys{
+        {"tangential_velocity", "m/s", "an oblique impact: the centre's tangential speed at first contact"},
+        {"incidence_deg", "deg", "an oblique impact: the angle of the velocity from the normal (instead of "
+                                 "tangential_velocity)"},
+        {"spin", "rad/s", "an oblique impact: the sphere's spin at first contact"},
+    };
+    return keys;
+}
+
 const std::vector<ControlKey>& harmonic_keys() {
     static const std::vector<ControlKey> keys{
-        {"amplitude", "", "of the sine, amplitude sin(2 pi frequency (t - start)), > 0", true},
+        {"amplitude", "", "of the sine, amplitude sin(2 pi frequency (t - start)); > 0 in load.harmonic", true},
         {"frequency", "Hz", "> 0", true},
         {"start", "s", "the sine starts from 0 here", true},
         {"end", "s", "> start; the value reached is held after it", true},

@@ -74,11 +74,18 @@ drivers::HarmonicLoad read_harmonic(TableReader& table) {
                                  table.number("end")};
 }
 
+// The keys of `[tangential]` that describe a load (all but friction): control, history and the harmonic's.
+std::vector<std::string> tangential_load_keys() {
+    std::vector<std::string> keys{"control", "history"};
+    for (auto& key : drivers::harmonic_key_names()) keys.push_back(std::move(key));
+    return keys;
+}
+
 drivers::TangentialLoad read_tangential(TableReader& table) {
-    std::vector<std::string> known{"friction", "control", "history"};
-    const std::vector<std::string> harmonic_keys = drivers::harmonic_key_names();
-    known.insert(known.end(), harmonic_keys.begin(), harmonic_keys.end());
+    std::vector<std::string> known{"friction"};
+    for (auto& key : tangential_load_keys()) known.push_back(std::move(key));
     table.reject_unknown(known);
+    const std::vector<std::string> harmonic_keys = drivers::harmonic_key_names();
     drivers::TangentialLoad load;
     load.friction = table.number("friction");
     const auto& control = drivers::tangential_control_named(
@@ -100,7 +107,8 @@ drivers::TangentialLoad read_tangential(TableReader& table) {
 }
 
 bool is_oblique(const TableReader& load) {
-    return load.has("tangential_velocity") || load.has("incidence_deg") || load.has("spin");
+    const auto& keys = drivers::oblique_impact_keys();
+    return std::any_of(keys.begin(), keys.end(), [&load](const drivers::ControlKey& key) { return load.has(key.key); });
 }
 
 // The tangential part of an impact: `[load] tangential_velocity` (or `incidence_deg`) and `spin`, `[indenter]
@@ -110,9 +118,7 @@ drivers::ObliqueImpactLoad read_oblique(TableReader& load, TableReader& indenter
     if (!tangential || !tangential->has("friction")) {
         throw InvalidInput("tangential.friction", "(missing)", "is required for an oblique impact");
     }
-    std::vector<std::string> load_keys{"control", "history"};
-    for (auto& key : drivers::harmonic_key_names()) load_keys.push_back(std::move(key));
-    for (const auto& key : load_keys) {
+    for (const auto& key : tangential_load_keys()) {
         if (tangential->has(key)) {
             throw InvalidInput("tangential." + key, tangential->text(key),
                                "a tangential load history is not for an impact; an oblique impact takes only "
@@ -197,7 +203,11 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     std::optional<drivers::ImpactLoad> impact;
     if (control == drivers::Control::impact) {
         const double velocity = load->number("velocity");
-        if (!indenter_table->has("mass")) throw InvalidInput("indenter.mass", "(missing)", "is required for an impact");
+        for (const auto& key : control_kind.other_keys) {  // indenter.mass
+            if (!indenter_table->has(key.substr(key.find('.') + 1))) {
+                throw InvalidInput(key, "(missing)", "is required for an impact");
+            }
+        }
         impact = drivers::ImpactLoad{indenter_table->number("mass"), velocity};
         normal_load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
     } else {

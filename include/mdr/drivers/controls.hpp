@@ -45,6 +45,10 @@ const std::vector<ControlKey>& harmonic_keys();
 /// The names of harmonic_keys(): amplitude, frequency, start, end.
 std::vector<std::string> harmonic_key_names();
 
+/// The `[load]` keys that make an impact oblique (tangential_velocity, incidence_deg, spin): the impact row's last
+/// three, and what the reader looks for.
+const std::vector<ControlKey>& oblique_impact_keys();
+
 /// Every control, in the order of the documentation.
 const std::vector<ControlKind>& controls();
 

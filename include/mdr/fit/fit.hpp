@@ -2,7 +2,8 @@
 /// \file
 /// Identification of a material (and indenter) from measured curves: bounded nonlinear least squares (Ceres
 /// Solver, Levenberg-Marquardt) over the exact MDR forward model, with standard errors, correlations, information
-/// criteria and the parameters that the data cannot determine named as such.
+/// criteria and the parameters that the data cannot determine named as such. The units in brackets are SI's; every
+/// number is in the case's declared system (`units`, mdr/io/units.hpp), as the model is.
 
 #include <cstddef>
 #include <functional>

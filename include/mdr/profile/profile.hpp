@@ -79,7 +79,7 @@ std::unique_ptr<Profile> make_table(std::vector<double> r, std::vector<double> f
 
 /// One row of the registry of interpolations: `interpolation = "name"` and what it is for.
 struct InterpolationKind {
-    Interpolation interpolation;
+    Interpolation interpolation;  ///< the method
     std::string name;  ///< e.g. `monotone_cubic`
     std::string use;   ///< e.g. `smooth profiles`
 };
