@@ -1,6 +1,5 @@
 #include "shore_reader.hpp"
 
-
 namespace mdr::io {
 
 ShoreLoad read_shore(TableReader& load, const UnitSystem& system) {

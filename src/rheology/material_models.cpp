@@ -162,6 +162,11 @@ std::vector<MaterialModel> rows() {
     };
 }
 
+// A registry unit (SI symbols) as the case's system names it; as written without `unit_names`.
+std::string in_system(const UnitNames& unit_names, const std::string& si_unit) {
+    return unit_names ? unit_names(si_unit) : si_unit;
+}
+
 }  // namespace
 
 double ModelParameters::number(const std::string& key) const {
@@ -210,14 +215,13 @@ ModelMaterial build_material(const MaterialModel& model, const ModelParameters& 
 
 std::string describe_model(const MaterialModel& model, const ModelParameters& parameters,
                            std::string (*rename)(const std::string&), const UnitNames& unit_names) {
-    const auto unit = [&](const std::string& si) { return unit_names ? unit_names(si) : si; };
     std::string list;
     for (const ModelParameter& parameter : model.parameters) {
         const std::string key = rename ? rename(parameter.key) : parameter.key;
         std::string item;
         if (const auto number = parameters.numbers.find(parameter.key); number != parameters.numbers.end()) {
             item = fmt::format("{} = {}", key, format_value(number->second));
-            if (parameter.unit != "1") item += fmt::format(" {}", unit(parameter.unit));
+            if (parameter.unit != "1") item += " " + in_system(unit_names, parameter.unit);
         } else if (const auto pairs = parameters.pairs.find(parameter.key); pairs != parameters.pairs.end()) {
             item = fmt::format("{} {}", pairs->second.size(), key);
         } else if (const auto array = parameters.arrays.find(parameter.key); array != parameters.arrays.end()) {
@@ -231,15 +235,15 @@ std::string describe_model(const MaterialModel& model, const ModelParameters& pa
 }
 
 std::string describe_certificate(const Certificate& certificate, std::size_t terms, const UnitNames& unit_names) {
-    const auto unit = [&](const std::string& si) { return unit_names ? unit_names(si) : si; };
     std::string text = fmt::format("as {} Prony terms, {} {:.2g} over t = {:.3g} .. {:.3g} {}", terms,
                                    certificate.kind == "model" ? "relative error" : "fit residual", certificate.error,
-                                   certificate.window.shortest, certificate.window.longest, unit("s"));
+                                   certificate.window.shortest, certificate.window.longest,
+                                   in_system(unit_names, "s"));
     const auto& frequencies = certificate.window.frequencies;
     for (std::size_t i = 0; i < frequencies.size(); ++i) {
         text += fmt::format("{}{:.4g}", i == 0 ? " and at omega = " : ", ", frequencies[i]);
     }
-    return frequencies.empty() ? text : text + " " + unit("rad/s");
+    return frequencies.empty() ? text : text + " " + in_system(unit_names, "rad/s");
 }
 
 }  // namespace mdr::rheology
