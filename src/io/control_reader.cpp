@@ -1,7 +1,9 @@
 #include "control_reader.hpp"
 
 #include <string>
+#include <vector>
 
+#include "mdr/alternatives.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::io {
@@ -9,14 +11,11 @@ namespace {
 
 // "a", "a" or "b", "a", "b" or "c": the controls that take `key`, quoted.
 std::string controls_taking(const std::string& key) {
-    std::string names;
-    std::string last;
+    std::vector<std::string> names;
     for (const drivers::ControlKind& kind : drivers::controls()) {
-        if (!kind.key_named(key)) continue;
-        if (!last.empty()) names += (names.empty() ? "" : ", ") + last;
-        last = "\"" + kind.name + "\"";
+        if (kind.key_named(key)) names.push_back("\"" + kind.name + "\"");
     }
-    return names.empty() ? last : names + " or " + last;
+    return either_of(names);
 }
 
 }  // namespace

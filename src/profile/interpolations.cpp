@@ -1,5 +1,6 @@
 #include <algorithm>
 
+#include "mdr/alternatives.hpp"
 #include "mdr/error.hpp"
 #include "mdr/profile/profile.hpp"
 
@@ -20,13 +21,9 @@ const InterpolationKind& interpolation_kind(Interpolation interpolation) {
 }
 
 std::string interpolation_list(bool with_uses) {
-    const auto& rows = interpolations();
-    std::string text;
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-        text += (i == 0 ? "" : i + 1 == rows.size() ? " or " : ", ") + rows[i].name;
-        if (with_uses) text += " (" + rows[i].use + ")";
-    }
-    return text;
+    std::vector<std::string> names;
+    for (const auto& row : interpolations()) names.push_back(with_uses ? row.name + " (" + row.use + ")" : row.name);
+    return either_of(names);
 }
 
 Interpolation interpolation_named(const std::string& name) {
