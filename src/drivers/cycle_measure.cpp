@@ -1,11 +1,28 @@
 #include "cycle_measure.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "mdr/foundation/foundation.hpp"
 
 namespace mdr::drivers {
+namespace {
+
+// The part [first, second] (fractions 0..1) of the last step with some element in contact, from the contact at its
+// start and end: a loss or a regain is located inside the step where the foundation located the last exit (the
+// force crossing zero) or the first entry (the gap closing), by linear interpolation of the crossing quantity
+// (second order; numerics-notes, events inside a step).
+std::pair<double, double> touching_part_of_step(bool touching_before, bool touching_after,
+                                                const foundation::Foundation& foundation) {
+    if (touching_before) return {0.0, touching_after ? 1.0 : foundation.latest_exit()};
+    if (!touching_after) return {0.0, 0.0};
+    double first_entry = 1.0;
+    for (const foundation::Entry& entry : foundation.entries()) first_entry = std::min(first_entry, entry.fraction);
+    return {first_entry, 1.0};
+}
+
+}  // namespace
 
 CycleMeasure::CycleMeasure(const HarmonicLoad& harmonic, double simulated_end)
     : start_(harmonic.start),
@@ -16,16 +33,26 @@ void CycleMeasure::observe(const StepState& state) {
     const double time = state.time;
     const double depth = state.depth;
     const double force = state.force;
-    const Sample sample{time, depth, force};
+    const foundation::Foundation& foundation = *state.foundation;
+    const Sample sample{time, depth, force, foundation.contact_count() > 0};
     // The cycle's bounds are nodes of the time grid (HarmonicLoad::breakpoints); the steps inside it are uniform.
     if (cycle_ && last_ && last_->time >= cycle_->first && time <= cycle_->second && time >= last_->time) {
         const double step = time - last_->time;
         const auto phasor = [&](double t) { return std::polar(1.0, -omega_ * (t - start_)); };
         // Trapezoidal rule: exact for a trigonometric polynomial below the step count on a uniform cycle.
         depth_sum_ += 0.5 * step * (last_->depth * phasor(last_->time) + depth * phasor(time));
-        force_sum_ += 0.5 * step * (last_->force * phasor(last_->time) + force * phasor(time));
-        work_ += 0.5 * (last_->force + force) * (depth - last_->depth);
-        if (state.foundation->contact_count() == 0) lost_time_ += step;
+        // The force is zero out of contact. It falls to zero continuously at a loss, but may jump at a regain (a
+        // dashpot meeting the surface at a different rate): there it is taken as the step's end value from the
+        // entry on, so that the jump's place inside the step is kept (second order; a trapezoid over the whole
+        // step would be first order).
+        const auto [first, second] = touching_part_of_step(last_->touching, sample.touching, foundation);
+        const double t_first = last_->time + first * step, t_second = last_->time + second * step;
+        const double force_first = first > 0.0 ? force : last_->force;
+        const double force_second = second < 1.0 ? 0.0 : force;
+        const double depth_change = (second - first) * (depth - last_->depth);
+        force_sum_ += 0.5 * (t_second - t_first) * (force_first * phasor(t_first) + force_second * phasor(t_second));
+        work_ += 0.5 * (force_first + force_second) * depth_change;
+        lost_time_ += step - (t_second - t_first);
     }
     last_ = sample;
 }

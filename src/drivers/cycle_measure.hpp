@@ -25,6 +25,7 @@ private:
         double time = 0.0;
         double depth = 0.0;
         double force = 0.0;
+        bool touching = false;  ///< any element in contact
     };
     double start_;
     double omega_;

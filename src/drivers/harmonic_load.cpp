@@ -11,6 +11,12 @@ double HarmonicLoad::value(double t) const {
     return amplitude * std::sin(2.0 * std::numbers::pi * frequency * (std::min(t, end) - start));
 }
 
+double HarmonicLoad::rate(double t) const {
+    if (t < start || t >= end) return 0.0;
+    const double omega = 2.0 * std::numbers::pi * frequency;
+    return amplitude * omega * std::cos(omega * (t - start));
+}
+
 std::vector<double> HarmonicLoad::breakpoints() const {
     std::vector<double> times{start, end};
     if (const auto cycle = last_full_cycle(end)) {

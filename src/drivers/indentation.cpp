@@ -127,6 +127,7 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
     const bool trapezoidal = has_dashpot && contact_case.control != Control::displacement;
     const double stiffness = spring ? *contact_case.spring_constant : 0.0;
     std::optional<double> rate = trapezoidal ? std::optional<double>(0.0) : std::nullopt;
+    const bool sine_rate = has_dashpot && contact_case.control == Control::displacement && contact_case.load.harmonic;
     double last_force = 0.0;
 
     for (std::size_t n = 1; n <= last_node && !stopped; ++n) {
@@ -149,6 +150,16 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
             if (rate) rate = jumped_rate(foundation, material.viscosity(), *rate, force - last_force);
             shown_depth = depth;
         } else {
+            if (sine_rate) {
+                // Displacement control under a harmonic with a dashpot: the depth is not linear inside a step, and
+                // the secant rate would be first order at the nodes. The dashpot takes the trapezoidal rate from the
+                // prescribed rate at the step's start, the history's slope plus the sine's rate (second order).
+                const auto& harmonic = *contact_case.load.harmonic;
+                const double t0 = nodes[n - 1].time, t1 = nodes[n].time;
+                const double history_change =
+                    (nodes[n].value - harmonic.value(t1)) - (nodes[n - 1].value - harmonic.value(t0));
+                rate = history_change / time_step + harmonic.rate(t0);
+            }
             foundation.begin_step(cache.get(time_step), rate);
             double new_depth = target;
             if (contact_case.control != Control::displacement) {

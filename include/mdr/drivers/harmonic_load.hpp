@@ -19,6 +19,9 @@ struct HarmonicLoad {
 
     /// The harmonic value at time t [s].
     double value(double t) const;
+    /// The harmonic's rate d value / dt [unit/s] just after time t (from the right): 2 pi f amplitude
+    /// cos(2 pi f (t - start)) for start <= t < end, else 0.
+    double rate(double t) const;
     /// The period 1 / frequency [s].
     double period() const { return 1.0 / frequency; }
     /// Times [s] the time grid must step on: start, end and the bounds of the last full cycle.
