@@ -167,6 +167,8 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
         std::ceil(static_cast<double>(default_steps) / segments), 1.0, static_cast<double>(min_steps_per_segment))));
 
     const double duration = contact_case.end_time - contact_case.load.history->start_time();
+    const auto& material = contact_case.material;
+    const bool converted_times = contact_case.material_origin.times_from_conversion;
     if (numerics.time_step) {
         resolved.time_step = *numerics.time_step;
     } else if (duration > 0.0) {
@@ -174,26 +176,30 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
         // A series standing for a continuous spectrum has a node within a factor exp(h) above any step: its
         // times need no finer step (the load is linear between steps and each branch integrated exactly; the
         // power-law ramp, triangle and step-hold agree with 3.6x more steps to 2 digits of their error,
-        // tests/verification/test_power_law_default_step.cpp). Under force or spring control the creep after a
-        // fast load change, J ~ t^beta on every scale down to the series' shortest time, is taken on steps graded
-        // from there (tests/verification/test_power_law_fast_force_step.cpp).
-        const auto& material = contact_case.material;
-        const bool converted_times = contact_case.material_origin.times_from_conversion;
+        // tests/verification/test_power_law_default_step.cpp).
         resolved.time_step = converted_times ? step : std::min(step, shortest_time_above(material, step) / 5.0);
-        if (contact_case.control != Control::displacement && material.viscosity() > 0.0) {
-            // A parallel dashpot under force (or spring) control: the trapezoidal rate is second order, and the
-            // creep after the start and after a fast force change, singular in time, is taken on steps graded
-            // from there.
-            resolved.grading_ratio = jump_grading_ratio;
-            resolved.first_graded_step = jump_first_step * resolved.time_step;
-        } else if (contact_case.control != Control::displacement && converted_times && !material.terms().empty()) {
-            // A converted series under force (or spring) control: the same grading, from the series' shortest time
-            // (on shorter steps the series is elastic).
-            resolved.grading_ratio = jump_grading_ratio;
-            resolved.first_graded_step = std::min(material.shortest_time(), resolved.time_step);
-        }
     } else {
         resolved.time_step = 1.0;  // a history of jumps only: no step has a length
+    }
+    // Under force or spring control the creep after the start and after a fast load change is taken on steps graded
+    // from there, scaled to the time step, the user's too (a finer step is never worse than the default):
+    if (contact_case.control != Control::displacement && duration > 0.0) {
+        if (material.viscosity() > 0.0) {
+            // a parallel dashpot: the trapezoidal rate is second order, and the creep, singular in time there, is
+            // graded from a small fraction of the step;
+            resolved.grading_ratio = jump_grading_ratio;
+            resolved.first_graded_step = jump_first_step * resolved.time_step;
+        } else if (converted_times && !material.terms().empty()) {
+            // a converted series, J ~ t^beta on every scale down to its shortest time: from that time (on shorter
+            // steps the series is elastic; tests/verification/test_power_law_fast_force_step.cpp);
+            resolved.grading_ratio = jump_grading_ratio;
+            resolved.first_graded_step = std::min(material.shortest_time(), resolved.time_step);
+        } else if (!material.terms().empty() && material.shortest_time() < resolved.time_step) {
+            // a finite series with a time shorter than the step (the default step skips such times): its exponential
+            // creep is resolved from jump_grading_ratio of that time on (test_prony_fast_force_step.cpp).
+            resolved.grading_ratio = jump_grading_ratio;
+            resolved.first_graded_step = jump_grading_ratio * material.shortest_time();
+        }
     }
     const std::optional<HarmonicLoad> harmonics[] = {
         contact_case.load.harmonic, contact_case.tangential ? contact_case.tangential->load.harmonic : std::nullopt};

@@ -97,10 +97,12 @@ time_step = {}
     expect_orders_above(errors, 1.7, "time");
 }
 
-TEST(Convergence, TimeStepSecondOrderWithAParallelDashpot) {
-    // Force control on a Kelvin-Voigt body: the dashpot sees the trapezoidal rate of the indenter, so the depth
-    // converges as dt^2 (it was first order with the secant rate). Sphere under a force ramp and hold; eq. (34)
-    // with the Table 1 creep function. The contact starts from nothing (d ~ t^(4/3)): rows from t = 0.1 s.
+TEST(Convergence, UserTimeStepWithAParallelDashpotIsGraded) {
+    // Force control on a Kelvin-Voigt body: the dashpot sees the trapezoidal rate of the indenter, and a user's
+    // time_step is graded after the start as the default is (issue 23; the second order of the trapezoidal rate is
+    // checked on uniform steps by KelvinVoigtHarmonic.ForceControlFlatPunchErrorFallsAsTheSquareOfTheStep). Sphere
+    // under a force ramp and hold; eq. (34) with the Table 1 creep function. The contact starts from nothing
+    // (d ~ t^(4/3)): rows from t = 0.1 s.
     const double G = 1e6, eta = 1e5, R = 0.01, F0 = 0.5, ramp = 0.5;
     const auto creep = [&](double t) { return -std::expm1(-t * G / eta) / G; };
     const auto exact_depth = [&](double t) { return reference::sphere_creep_depth(creep, R, F0, ramp, t); };
@@ -129,7 +131,10 @@ time_step = {}
         }
         errors.push_back(worst);
     }
-    expect_orders_above(errors, 1.8, "dashpot");
+    for (std::size_t i = 0; i < errors.size(); ++i) {
+        RecordProperty(fmt::format("error_{}", i), fmt::format("{:.2e}", errors[i]));
+        EXPECT_LT(errors[i], 1e-4) << "step " << i;
+    }
 }
 
 TEST(Convergence, UnloadingIsNotLimitedByTheTimeStep) {
