@@ -209,6 +209,44 @@ history = [[0.0, 0.0], [{}, {}], [{}, {}]]
     EXPECT_LT(result.steps, drivers::default_steps * 8 / 5);
 }
 
+TEST(PowerLawFastForceStep, AJumpIsClaimedFromTheWindowsStartOn) {
+    // A force jump at t = 0 held 10 s: the rows from the certified window's start on (a fifth of the default step,
+    // docs/case-format.md) meet eq. (34), d^(3/2) = 3 F0 J(t) / (16 sqrt(R)), within 1e-3 of the final depth. The
+    // rows before it are not claimed (the series is elastic below its shortest time; at the jump itself the exact
+    // depth is 0, J(0+) = 0, and the row shows the series' instantaneous depth): the test states where they stand.
+    constexpr double end = 10.0;
+    const double window_start = end / static_cast<double>(drivers::default_steps) / 5.0;
+    for (const double beta : {0.05, 0.2}) {
+        const auto result = testing::run_toml(fmt::format(R"(
+[material]
+model = "power_law"
+G0 = {}
+beta = {}
+t0 = {}
+[indenter]
+shape = "sphere"
+R = {}
+[load]
+control = "force"
+history = [[0.0, 0.0], [0.0, {}], [{}, {}]]
+)",
+                                                          G0, beta, t0, R, F0, end, F0));
+        const auto exact = [&](double t) {
+            return std::pow(3.0 * F0 * creep(beta, t) / (16.0 * std::sqrt(R)), 2.0 / 3.0);
+        };
+        const double final_depth = exact(end);
+        double inside = 0.0, outside = 0.0;
+        for (std::size_t i = 1; i < result.time.size(); ++i) {
+            double& worst = result.time[i] >= window_start ? inside : outside;
+            worst = std::max(worst, std::abs(result.depth[i] - exact(result.time[i])) / final_depth);
+        }
+        RecordProperty(fmt::format("window_error_{}", beta), fmt::format("{:.2e}", inside));
+        RecordProperty(fmt::format("before_window_error_{}", beta), fmt::format("{:.2e}", outside));
+        EXPECT_LT(inside, 1e-3) << "beta = " << beta;
+        EXPECT_GT(outside, 1e-3) << "beta = " << beta << ": the rows before the window would be claimable";
+    }
+}
+
 TEST(PowerLawFastForceStep, AFinerUserStepIsNeverWorseThanTheDefault) {
     // A [numerics] time_step is graded after the changes as the default is, from the series' shortest time (issue
     // 23): finer steps meet the default's bound. Before, it was taken uniform, without grading: 7e-3 at 4e-4 s.
