@@ -122,7 +122,8 @@ inline constexpr std::size_t default_steps = 2000;
 /// control (grade_after_changes): with a parallel dashpot the singular creep there is integrated to ~1e-5 of its
 /// depth; a series converted from a continuous spectrum (power law, springpots), whose creep J ~ t^beta changes
 /// on every scale from its shortest time on, to ~2e-4 for beta <= 0.5
-/// (tests/verification/test_power_law_fast_force_step.cpp).
+/// (tests/verification/test_power_law_fast_force_step.cpp); a finite series whose shortest time is below the step,
+/// from a fraction jump_grading_ratio of that time, to ~2e-5 (tests/verification/test_prony_fast_force_step.cpp).
 inline constexpr double jump_grading_ratio = 0.02;
 /// The first step after the start or such a change, as a fraction of the time step (its error is
 /// O((step / tau)^(2/3)) of the creep depth, tau the retardation time).
@@ -142,7 +143,8 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// graded from there (grading_ratio = jump_grading_ratio from jump_first_step of the time step, see
 /// fast_change_times and grade_after_changes), so that the step count stays bounded for any record length; a
 /// converted series (its creep changes on every scale from its shortest time) is graded likewise from its
-/// shortest time. Impact: the time step is the elastic contact time
+/// shortest time, and a finite series with a time shorter than the time step from jump_grading_ratio of that
+/// time; a user's time_step is graded by the same rules, scaled to it (a finer step is never worse). Impact: the time step is the elastic contact time
 /// with the instantaneous spring modulus over default_steps (and the material-time rule), the half-width 1.2
 /// times the elastic contact radius with the equilibrium modulus (an upper bound: the viscoelastic body is
 /// stiffer and dissipates); with a parallel dashpot the step is at most the braking time m / (8 eta a) over
