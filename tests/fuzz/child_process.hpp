@@ -22,14 +22,17 @@ namespace mdr::fuzz {
 struct ChildOutcome {
     int exit_code = -1;               ///< its exit status, -1 when a signal ended it
     int signal = 0;                   ///< the signal that ended it (0: it exited)
-    bool timed_out = false;           ///< killed after the wall-clock limit
+    bool timed_out = false;           ///< ended by the CPU-time limit (SIGXCPU) or killed after the wall-clock one
     bool left_processes = false;      ///< processes of its group still ran after it ended (they are killed)
     long max_resident_kib = 0;        ///< its peak resident memory [KiB]
     double wall_seconds = 0.0;        ///< how long it ran [s]
+    double cpu_seconds = 0.0;         ///< the processor time it used, user and system [s]
 };
 
 /// Runs `argv` (argv[0] a path) in `directory` with stdin from /dev/null and stdout and stderr into the files
-/// `stdout_path` and `stderr_path`; kills its process group after `timeout_seconds`; `memory_limit_bytes` > 0
+/// `stdout_path` and `stderr_path`. It may use `timeout_seconds` of processor time (RLIMIT_CPU), and its process
+/// group is killed after three times as long on the wall clock (a child that waits for ever; the factor leaves
+/// room for a machine shared with other work). `memory_limit_bytes` > 0
 /// bounds its address space (RLIMIT_AS; leave it 0 for a program built with AddressSanitizer, which reserves
 /// terabytes of address space).
 inline ChildOutcome run_child(const std::vector<std::string>& argv, const std::filesystem::path& directory,
@@ -46,6 +49,9 @@ inline ChildOutcome run_child(const std::vector<std::string>& argv, const std::f
             const rlimit limit{memory_limit_bytes, memory_limit_bytes};
             setrlimit(RLIMIT_AS, &limit);
         }
+        const auto cpu_seconds = static_cast<rlim_t>(timeout_seconds) + 1;
+        const rlimit cpu{cpu_seconds, cpu_seconds + 1};
+        setrlimit(RLIMIT_CPU, &cpu);
         const rlimit no_core{0, 0};
         setrlimit(RLIMIT_CORE, &no_core);
         const int input = open("/dev/null", O_RDONLY);
@@ -65,7 +71,7 @@ inline ChildOutcome run_child(const std::vector<std::string>& argv, const std::f
     rusage usage{};
     for (auto pause = std::chrono::microseconds(200);; pause = std::min(pause * 2, std::chrono::microseconds(5000))) {
         if (wait4(child, &status, WNOHANG, &usage) == child) break;
-        if (std::chrono::steady_clock::now() - start > std::chrono::duration<double>(timeout_seconds)) {
+        if (std::chrono::steady_clock::now() - start > std::chrono::duration<double>(3.0 * timeout_seconds)) {
             outcome.timed_out = true;
             kill(-child, SIGKILL);
             wait4(child, &status, 0, &usage);
@@ -75,8 +81,11 @@ inline ChildOutcome run_child(const std::vector<std::string>& argv, const std::f
     }
     outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outcome.max_resident_kib = usage.ru_maxrss;
+    outcome.cpu_seconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                          1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
     if (WIFEXITED(status)) outcome.exit_code = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);
+    if (outcome.signal == SIGXCPU || outcome.cpu_seconds > timeout_seconds) outcome.timed_out = true;
     if (kill(-child, 0) == 0) {
         outcome.left_processes = true;
         kill(-child, SIGKILL);

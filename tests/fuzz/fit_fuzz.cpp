@@ -4,7 +4,8 @@
 // limit. Each mutant must satisfy every oracle (docs/case-format.md, "Fitting" and "Bad input"):
 //
 //   crash         no signal ends mdr
-//   hang          mdr ends within the time limit (--timeout, 10 s)
+//   hang          mdr ends within the time limit (--timeout, 10 s of processor time; killed after 3 times as
+//                 long on the wall clock)
 //   memory        no allocation failure under the address-space limit (--memory-limit, 2048 MiB)
 //   exit_code     the exit code is 0, 1 or 2
 //   exit1_result  exit 1 (not converged) has written its result (out/fit.json or out/ranking.json)
@@ -24,9 +25,10 @@
 //
 // CORPUS_DIR holds one folder per seed: `case.toml` and the files it reads. The seeds run first, unmutated; then
 // mutants until SECONDS have passed or N mutants have run. The summary line counts the mutants that failed each
-// oracle. The first K (default 3) failing mutants of each oracle are kept in `fit-fuzz-failures/ORACLE-N/` in the
-// working directory (the mutated case and data, mdr's stdout and stderr, and `failure.txt` saying what failed);
-// the program exits with status 1 when any mutant failed. --mdr defaults to `mdr` beside this program.
+// oracle. Every failure is a line of `fit-fuzz-failures/failures.log` in the working directory, and the first K
+// (default 3) failing mutants of each oracle are kept in `fit-fuzz-failures/ORACLE-N/` (the mutated case and
+// data, mdr's stdout and stderr, and `failure.txt` saying what failed); the program exits with status 1 when any
+// mutant failed. --mdr defaults to `mdr` beside this program.
 
 #include <unistd.h>
 
@@ -169,7 +171,9 @@ MutantReport run_mutant(const Files& files, const fs::path& work, bool existing_
     Failures failures;
     const auto fail = [&](const std::string& oracle, const std::string& what) { failures.emplace_back(oracle, what); };
     if (outcome.timed_out) {
-        fail("hang", "ran longer than " + std::to_string(options.timeout) + " s");
+        fail("hang", "ran " + std::to_string(outcome.cpu_seconds) + " s of processor time and " +
+                         std::to_string(outcome.wall_seconds) + " s on the wall clock (limit " +
+                         std::to_string(options.timeout) + " s)");
     } else if (outcome.signal != 0) {
         fail("crash", "signal " + std::to_string(outcome.signal));
     }
@@ -226,6 +230,23 @@ void keep_failure(const Files& files, const fs::path& work, const std::string& o
     std::ofstream note(folder / "failure.txt");
     note << "mutant " << mutant << " of seed " << seed << "\n";
     for (const auto& [name, what] : failures) note << name << ": " << what << "\n";
+}
+
+// `text` on one line as printable ASCII: other bytes as \xNN, at most 300 characters.
+std::string printable(const std::string& text) {
+    std::string line;
+    for (const char c : text.substr(0, 300)) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte < 0x7f) {
+            line += c;
+        } else {
+            static constexpr char digits[] = "0123456789abcdef";
+            line += "\\x";
+            line += digits[byte >> 4];
+            line += digits[byte & 15];
+        }
+    }
+    return line;
 }
 
 std::string summary_line(const std::map<std::string, std::size_t>& counts) {
@@ -305,10 +326,18 @@ int main(int argc, char** argv) {
         const bool existing_out = !seed_input && mutator.pick(16) == 0;
         const auto [failures, outcome] = run_mutant(files, work, existing_out, options);
         ++exit_codes[outcome.exit_code >= 0 && outcome.exit_code <= 2 ? outcome.exit_code : 3];
-        slowest = std::max(slowest, outcome.wall_seconds);
+        slowest = std::max(slowest, outcome.cpu_seconds);
         peak_kib = std::max(peak_kib, outcome.max_resident_kib);
         std::set<std::string> failed_oracles;
         for (const auto& [oracle, what] : failures) failed_oracles.insert(oracle);
+        if (!failures.empty()) {
+            ++failed;
+            fs::create_directories("fit-fuzz-failures");
+            std::ofstream log("fit-fuzz-failures/failures.log", std::ios::app);
+            for (const auto& [oracle, what] : failures) {
+                log << inputs << " " << oracle << ": " << printable(what) << '\n';
+            }
+        }
         for (const auto& oracle : failed_oracles) {
             const std::size_t number = ++counts[oracle];
             if (number <= options.keep) keep_failure(files, work, oracle, number, inputs, options.seed, failures);
@@ -316,15 +345,18 @@ int main(int argc, char** argv) {
                 const auto what = std::find_if(failures.begin(), failures.end(),
                                                [&](const auto& failure) { return failure.first == oracle; })->second;
                 std::fprintf(stderr, "mdr_fit_fuzz: input %zu fails %s: %s\n", inputs, oracle.c_str(),
-                             what.substr(0, 300).c_str());
+                             printable(what).c_str());
             }
         }
-        failed += failures.empty() ? 0 : 1;
+        if (inputs % 1000 == 999) {
+            std::fprintf(stderr, "mdr_fit_fuzz: %zu inputs, %zu failed:%s\n", inputs + 1, failed,
+                         summary_line(counts).c_str());
+        }
     }
     fs::remove_all(work);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("mdr_fit_fuzz: %zu inputs (%zu seeds, %zu mutants) in %.0f s, seed %u; exit 0/1/2/other: "
-                "%zu/%zu/%zu/%zu; slowest %.2f s, peak %ld MiB; %zu failed:%s\n",
+                "%zu/%zu/%zu/%zu; slowest %.2f s (processor), peak %ld MiB; %zu failed:%s\n",
                 inputs, seeds.size(), inputs - seeds.size(), elapsed, options.seed, exit_codes[0], exit_codes[1],
                 exit_codes[2], exit_codes[3], slowest, peak_kib / 1024, failed, summary_line(counts).c_str());
     return failed == 0 ? 0 : 1;
