@@ -12,7 +12,9 @@
 //   exit2_wrote   exit 2 (bad input) has written nothing: the directory holds what it held before
 //   one_line      exit 2 prints exactly one line on stderr, `mdr: error: ...`
 //   non_finite    exit 0 writes no NaN, infinity or null (but where the docs allow them for undetermined
-//                 parameters) and only readable JSON and TOML
+//                 parameters)
+//   unreadable    a written result (exit 0 or 1) is readable as its format: JSON, TOML, CSV with as many
+//                 fields in every row as in its header
 //   raw_bytes     stdout and stderr hold no control byte (but line ends), DEL or invalid UTF-8
 //   solver_log    no log line of the solver (glog: "W1127 10:00:00 ... trust_region_minimizer.cc:NN] ...")
 //   uncaught      no text of an escaped C++ exception or sanitizer report ("terminate called", "std::", ...)
@@ -55,7 +57,8 @@ using mdr::fuzz::read_file;
 
 // The oracles in the order of the summary line.
 const std::vector<std::string> oracle_names = {"crash",    "hang",       "memory",    "exit_code", "exit1_result",
-                                               "exit2_wrote", "one_line", "non_finite", "raw_bytes", "solver_log",
+                                               "exit2_wrote", "one_line", "non_finite", "unreadable", "raw_bytes",
+                                               "solver_log",
                                                "uncaught", "user_files", "leftovers"};
 
 // A seed or a mutant: file name -> content; `case.toml` is the case.
@@ -192,10 +195,11 @@ MutantReport run_mutant(const Files& files, const fs::path& work, bool existing_
                       !err_text.starts_with("mdr: error: "))) {
         fail("one_line", "exit 2 with stderr: " + err_text);
     }
-    if (code == 0) {
-        if (!result_written) {
-            fail("non_finite", "exit 0 without a result");
-        } else if (const auto where = mdr::fuzz::NonFiniteScan::scan(out); !where.empty()) {
+    if (code == 0 && !result_written) fail("non_finite", "exit 0 without a result");
+    if ((code == 0 || code == 1) && result_written) {
+        using mdr::fuzz::ResultCheck, mdr::fuzz::ResultScan;
+        if (const auto where = ResultScan::scan(out, ResultCheck::format); !where.empty()) fail("unreadable", where);
+        if (const auto where = ResultScan::scan(out, ResultCheck::values); code == 0 && !where.empty()) {
             fail("non_finite", where);
         }
     }

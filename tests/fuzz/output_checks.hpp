@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// The checks fit_fuzz.cpp makes of what `mdr fit` printed and wrote: messages are clean lines (no control bytes,
-/// valid UTF-8, no solver log, no text of an uncaught C++ exception), and the result files of a converged fit hold
-/// no NaN, infinity or null outside the places docs/case-format.md allows them.
+/// valid UTF-8, no solver log, no text of an uncaught C++ exception), result files are readable as their format,
+/// and those of a converged fit hold no NaN, infinity or null outside the places docs/case-format.md allows them.
 
 #include <algorithm>
 #include <cctype>
@@ -62,26 +62,28 @@ inline std::string uncaught_exception_text(const std::string& text) {
     return std::regex_search(text, match, uncaught) ? match.str() : std::string();
 }
 
-/// Where a result file (fit.json, ranking.json, a CSV file, fitted.toml) of a run that exited with 0 holds a value
-/// that is not finite (NaN, infinity, null) or is not readable as its format; "" when it has none. Allowed, as
-/// docs/case-format.md documents them: the standard errors, 95 % intervals and correlations of a fit with
-/// undetermined parameters (and its bands `*_lower`, `*_upper` and `standard_error` columns), and spectrum.csv's
-/// `tau` of G_inf (`inf`).
-class NonFiniteScan {
+/// What ResultScan looks for: files that are not readable as their format (JSON, CSV with as many fields in
+/// every row as in its header, TOML), or, in readable files, values that are not finite.
+enum class ResultCheck { format, values };
+
+/// Where a result file (fit.json, ranking.json, a CSV file, fitted.toml) is not readable as its format, or holds a
+/// value that is not finite (NaN, infinity, null); "" when it has none. Allowed, as docs/case-format.md documents
+/// them: the standard errors, 95 % intervals and correlations of a fit with undetermined parameters (and its
+/// bands `*_lower`, `*_upper` and `standard_error` columns), and spectrum.csv's `tau` of G_inf (`inf`).
+class ResultScan {
 public:
     /// Scans every file below `directory` (a fit's result directory: one fit, or a model choice with one directory
     /// per candidate); the allowances hold where the fit.json beside a file lists undetermined parameters.
-    static std::string scan(const std::filesystem::path& directory) {
+    static std::string scan(const std::filesystem::path& directory, ResultCheck check) {
         for (const auto& entry : std::filesystem::recursive_directory_iterator(directory)) {
             if (!entry.is_regular_file()) continue;
             const auto& path = entry.path();
-            const bool undetermined = has_undetermined(path.parent_path() / "fit.json");
+            const ResultScan file{check, has_undetermined(path.parent_path() / "fit.json"),
+                                  path.filename() == "spectrum.csv"};
             std::string where;
-            if (path.extension() == ".json") where = scan_json(read_file(path), undetermined);
-            if (path.extension() == ".csv") {
-                where = scan_csv(read_file(path), undetermined, path.filename() == "spectrum.csv");
-            }
-            if (path.extension() == ".toml") where = scan_toml(read_file(path));
+            if (path.extension() == ".json") where = file.scan_json(read_file(path));
+            if (path.extension() == ".csv") where = file.scan_csv(read_file(path));
+            if (path.extension() == ".toml") where = file.scan_toml(read_file(path));
             if (!where.empty()) return std::filesystem::relative(path, directory).string() + ": " + where;
         }
         return {};
@@ -93,26 +95,29 @@ private:
         return json.is_object() && json.contains("undetermined") && !json["undetermined"].empty();
     }
 
-    static std::string scan_json(const std::string& text, bool undetermined) {
+    ResultScan(ResultCheck check, bool undetermined, bool spectrum)
+        : check_(check), undetermined_(undetermined), spectrum_(spectrum) {}
+
+    std::string scan_json(const std::string& text) const {
         const auto json = nlohmann::json::parse(text, nullptr, false);
-        if (json.is_discarded()) return "not JSON";
-        return walk(json, "", undetermined);
+        if (json.is_discarded()) return check_ == ResultCheck::format ? "not JSON" : "";
+        return check_ == ResultCheck::values ? walk(json, "") : "";
     }
 
-    static std::string walk(const nlohmann::json& value, const std::string& path, bool undetermined) {
-        const bool allowed = undetermined && (path.starts_with("/standard_errors") ||
+    std::string walk(const nlohmann::json& value, const std::string& path) const {
+        const bool allowed = undetermined_ && (path.starts_with("/standard_errors") ||
                                               path.starts_with("/intervals_95") || path.starts_with("/correlation"));
         if ((value.is_null() || (value.is_number_float() && !std::isfinite(value.get<double>()))) && !allowed) {
             return path + " = " + value.dump();
         }
         if (value.is_object()) {
             for (const auto& [key, item] : value.items()) {
-                if (auto where = walk(item, path + "/" + key, undetermined); !where.empty()) return where;
+                if (auto where = walk(item, path + "/" + key); !where.empty()) return where;
             }
         }
         if (value.is_array()) {
             for (std::size_t i = 0; i < value.size(); ++i) {
-                if (auto where = walk(value[i], path + "/" + std::to_string(i), undetermined); !where.empty()) {
+                if (auto where = walk(value[i], path + "/" + std::to_string(i)); !where.empty()) {
                     return where;
                 }
             }
@@ -120,15 +125,17 @@ private:
         return {};
     }
 
-    static std::string scan_csv(const std::string& text, bool undetermined, bool spectrum) {
+    std::string scan_csv(const std::string& text) const {
         const auto lines = lines_of(text);
-        if (lines.empty()) return "empty";
+        if (lines.empty()) return check_ == ResultCheck::format ? "empty" : "";
         const auto header = fields_of(lines[0]);
         for (std::size_t row = 1; row < lines.size(); ++row) {
             const auto fields = fields_of(lines[row]);
             if (fields.size() != header.size()) {
+                if (check_ == ResultCheck::values) return {};
                 return "line " + std::to_string(row + 1) + ": another number of fields than the header";
             }
+            if (check_ == ResultCheck::format) continue;
             for (std::size_t column = 0; column < fields.size(); ++column) {
                 std::string field = fields[column];
                 std::transform(field.begin(), field.end(), field.begin(),
@@ -139,24 +146,25 @@ private:
                 const std::string& name = header[column];
                 const bool text_column = name == "curve" || name == "candidate" || name == "name";
                 const bool band = name.ends_with("_lower") || name.ends_with("_upper") || name == "standard_error";
-                const bool g_inf_time = spectrum && name == "tau" && fields[0] == "G_inf";
-                if (text_column || (band && undetermined) || g_inf_time) continue;
+                const bool g_inf_time = spectrum_ && name == "tau" && fields[0] == "G_inf";
+                if (text_column || (band && undetermined_) || g_inf_time) continue;
                 return "line " + std::to_string(row + 1) + ", " + name + " = " + fields[column];
             }
         }
         return {};
     }
 
-    static std::string scan_toml(const std::string& text) {
+    std::string scan_toml(const std::string& text) const {
         try {
             const auto table = toml::parse(text);
+            if (check_ == ResultCheck::format) return {};
             std::string where;
             table.for_each([&](const toml::key& key, auto&& node) {
                 if (where.empty()) where = walk_toml(node, std::string(key.str()));
             });
             return where;
         } catch (const toml::parse_error& error) {
-            return std::string("not TOML: ") + std::string(error.description());
+            return check_ == ResultCheck::format ? "not TOML: " + std::string(error.description()) : "";
         }
     }
 
@@ -175,6 +183,10 @@ private:
         }
         return where;
     }
+
+    ResultCheck check_;
+    bool undetermined_;
+    bool spectrum_;
 
     // The fields of a CSV line mdr wrote: comma-separated, a field in double quotes may hold commas.
     static std::vector<std::string> fields_of(const std::string& line) {
