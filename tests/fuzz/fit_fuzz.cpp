@@ -84,26 +84,33 @@ struct MutantReport {
     mdr::fuzz::ChildOutcome outcome;
 };
 
-std::vector<Files> read_corpus(const fs::path& corpus) {
+// A seed: its folder's name and its files.
+struct Seed {
+    std::string name;
+    Files files;
+};
+
+std::vector<Seed> read_corpus(const fs::path& corpus) {
     std::vector<fs::path> folders;
     for (const auto& entry : fs::directory_iterator(corpus)) {
         if (entry.is_directory() && fs::exists(entry.path() / "case.toml")) folders.push_back(entry.path());
     }
     std::sort(folders.begin(), folders.end());  // the same order, and so the same mutants, on every machine
-    std::vector<Files> seeds;
+    std::vector<Seed> seeds;
     for (const auto& folder : folders) {
         Files files;
         for (const auto& entry : fs::directory_iterator(folder)) {
             if (entry.is_regular_file()) files[entry.path().filename().string()] = read_file(entry.path());
         }
-        seeds.push_back(std::move(files));
+        seeds.push_back({folder.filename().string(), std::move(files)});
     }
     return seeds;
 }
 
 // A seed with one to four mutations (one, half of the time) of its case, of one of its data files, or of both.
-Files mutate(const std::vector<Files>& seeds, mdr::fuzz::Mutator& mutator) {
-    Files files = seeds[mutator.pick(seeds.size())];
+Seed mutate(const std::vector<Seed>& seeds, mdr::fuzz::Mutator& mutator) {
+    Seed mutant = seeds[mutator.pick(seeds.size())];
+    Files& files = mutant.files;
     std::vector<std::string> data;
     for (const auto& [name, text] : files) {
         if (name != "case.toml") data.push_back(name);
@@ -127,7 +134,7 @@ Files mutate(const std::vector<Files>& seeds, mdr::fuzz::Mutator& mutator) {
             }
         }
     }
-    return files;
+    return mutant;
 }
 
 void write_files(const fs::path& directory, const Files& files) {
@@ -225,14 +232,14 @@ MutantReport run_mutant(const Files& files, const fs::path& work, bool existing_
 }
 
 // Keeps a failing mutant in fit-fuzz-failures/ORACLE-N/.
-void keep_failure(const Files& files, const fs::path& work, const std::string& oracle, std::size_t number,
-                  std::size_t mutant, unsigned seed, const Failures& failures) {
+void keep_failure(const Seed& input, const fs::path& work, const std::string& oracle, std::size_t number,
+                  const std::string& origin, const Failures& failures) {
     const fs::path folder = fs::path("fit-fuzz-failures") / (oracle + "-" + std::to_string(number));
     fs::remove_all(folder);
-    write_files(folder, files);
+    write_files(folder, input.files);
     for (const char* stream : {"stdout", "stderr"}) fs::copy_file(work / stream, folder / stream);
     std::ofstream note(folder / "failure.txt");
-    note << "mutant " << mutant << " of seed " << seed << "\n";
+    note << origin << "\n";
     for (const auto& [name, what] : failures) note << name << ": " << what << "\n";
 }
 
@@ -308,8 +315,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     std::vector<std::string> line_pool;
-    for (const auto& files : seeds) {
-        for (const auto& [name, text] : files) {
+    for (const auto& seed : seeds) {
+        for (const auto& [name, text] : seed.files) {
             for (auto& line : mdr::fuzz::lines_of(text)) line_pool.push_back(std::move(line));
         }
     }
@@ -326,9 +333,11 @@ int main(int argc, char** argv) {
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const bool seed_input = inputs < seeds.size();
         if (!seed_input && (elapsed > options.seconds || inputs - seeds.size() >= options.mutants)) break;
-        const Files files = seed_input ? seeds[inputs] : mutate(seeds, mutator);
+        const Seed input = seed_input ? seeds[inputs] : mutate(seeds, mutator);
+        const std::string origin = "input " + std::to_string(inputs) + (seed_input ? " (seed " : " (a mutant of ") +
+                                   input.name + ", fuzzer seed " + std::to_string(options.seed) + ")";
         const bool existing_out = !seed_input && mutator.pick(16) == 0;
-        const auto [failures, outcome] = run_mutant(files, work, existing_out, options);
+        const auto [failures, outcome] = run_mutant(input.files, work, existing_out, options);
         ++exit_codes[outcome.exit_code >= 0 && outcome.exit_code <= 2 ? outcome.exit_code : 3];
         slowest = std::max(slowest, outcome.cpu_seconds);
         peak_kib = std::max(peak_kib, outcome.max_resident_kib);
@@ -339,16 +348,16 @@ int main(int argc, char** argv) {
             fs::create_directories("fit-fuzz-failures");
             std::ofstream log("fit-fuzz-failures/failures.log", std::ios::app);
             for (const auto& [oracle, what] : failures) {
-                log << inputs << " " << oracle << ": " << printable(what) << '\n';
+                log << origin << " " << oracle << ": " << printable(what) << '\n';
             }
         }
         for (const auto& oracle : failed_oracles) {
             const std::size_t number = ++counts[oracle];
-            if (number <= options.keep) keep_failure(files, work, oracle, number, inputs, options.seed, failures);
+            if (number <= options.keep) keep_failure(input, work, oracle, number, origin, failures);
             if (number == 1) {  // the first of each kind as it happens
                 const auto what = std::find_if(failures.begin(), failures.end(),
                                                [&](const auto& failure) { return failure.first == oracle; })->second;
-                std::fprintf(stderr, "mdr_fit_fuzz: input %zu fails %s: %s\n", inputs, oracle.c_str(),
+                std::fprintf(stderr, "mdr_fit_fuzz: %s fails %s: %s\n", origin.c_str(), oracle.c_str(),
                              printable(what).c_str());
             }
         }
