@@ -212,7 +212,9 @@ MutantReport run_mutant(const Files& files, const fs::path& work, bool existing_
     }
     for (const auto& [stream, text] : {std::pair{"stderr", &err_text}, std::pair{"stdout", &out_text}}) {
         const std::string name = stream;
-        if (const auto where = mdr::fuzz::raw_byte(*text); !where.empty()) fail("raw_bytes", name + ": " + where);
+        if (const auto where = mdr::fuzz::raw_byte(*text); !where.empty()) {
+            fail("raw_bytes", name + ": " + where + " of: " + *text);
+        }
         if (const auto line = mdr::fuzz::solver_log_line(*text); !line.empty()) fail("solver_log", name + ": " + line);
         if (const auto what = mdr::fuzz::uncaught_exception_text(*text); !what.empty()) {
             fail("uncaught", name + ": " + what);
