@@ -6,7 +6,8 @@
 //   crash         no signal ends mdr
 //   hang          mdr ends within the time limit (--timeout, 10 s of processor time; killed after 3 times as
 //                 long on the wall clock)
-//   memory        no allocation failure under the address-space limit (--memory-limit, 2048 MiB)
+//   memory        no allocation failure under the address-space limit (--memory-limit, 2048 MiB), and a peak
+//                 resident memory below half of it
 //   exit_code     the exit code is 0, 1 or 2
 //   exit1_result  exit 1 (not converged) has written its result (out/fit.json or out/ranking.json)
 //   exit2_wrote   exit 2 (bad input) has written nothing: the directory holds what it held before
@@ -190,6 +191,9 @@ MutantReport run_mutant(const Files& files, const fs::path& work, bool existing_
     if (err_text.find("bad_alloc") != std::string::npos || err_text.find("Cannot allocate") != std::string::npos ||
         err_text.find("out of memory") != std::string::npos) {
         fail("memory", "an allocation failed (peak " + std::to_string(outcome.max_resident_kib / 1024) + " MiB)");
+    } else if (options.memory_limit_mib > 0 &&
+               static_cast<std::size_t>(outcome.max_resident_kib) > options.memory_limit_mib * 1024 / 2) {
+        fail("memory", "a peak of " + std::to_string(outcome.max_resident_kib / 1024) + " MiB resident");
     }
     if (!outcome.timed_out && outcome.signal == 0 && code != 0 && code != 1 && code != 2) {
         fail("exit_code", "exit code " + std::to_string(code));
