@@ -39,6 +39,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -57,10 +58,9 @@ namespace fs = std::filesystem;
 using mdr::fuzz::read_file;
 
 // The oracles in the order of the summary line.
-const std::vector<std::string> oracle_names = {"crash",    "hang",       "memory",    "exit_code", "exit1_result",
-                                               "exit2_wrote", "one_line", "non_finite", "unreadable", "raw_bytes",
-                                               "solver_log",
-                                               "uncaught", "user_files", "leftovers"};
+const std::vector<std::string> oracle_names = {
+    "crash",      "hang",       "memory",    "exit_code",  "exit1_result", "exit2_wrote", "one_line",
+    "non_finite", "unreadable", "raw_bytes", "solver_log", "uncaught",     "user_files",  "leftovers"};
 
 // A seed or a mutant: file name -> content; `case.toml` is the case.
 using Files = std::map<std::string, std::string>;
@@ -309,7 +309,12 @@ bool parse_options(int argc, char** argv, Options& options) {
 
 int main(int argc, char** argv) {
     Options options;
-    if (!parse_options(argc, argv, options)) {
+    bool parsed = false;
+    try {
+        parsed = parse_options(argc, argv, options);
+    } catch (const std::exception&) {  // a number that is not one
+    }
+    if (!parsed) {
         std::fprintf(stderr, "usage: mdr_fit_fuzz CORPUS_DIR SECONDS [SEED] [--mutants N] [--mdr PATH] "
                              "[--timeout S] [--memory-limit MIB] [--keep K]\n");
         return 2;
