@@ -1,137 +1,79 @@
 // A seeded mutation fuzzer over the case reader, `check` (the bounds of work) and small runs: every input must end
 // in a result or in mdr::InvalidInput / std::runtime_error (one clear line on the command line), never in another
-// exception, a crash, a hang, or (under the sanitizer build) a memory error or undefined behaviour.
+// exception, a crash, a hang, or (under the sanitizer build) a memory error or undefined behaviour; a run that ends
+// must have a finite history and summary.
 //
 //   mdr_case_fuzz CORPUS_DIR SECONDS [SEED]
 //
-// Mutations: byte flips, deleted and duplicated spans, numbers replaced by edge values (0, -1, 5e-324, 1e308,
-// nan, inf, 2^53 + 1, ...), keys and whole lines taken from other corpus files. An input that fails (or takes
-// longer than 10 s: a hang) is written to `fuzz-failure.toml` in the working directory and the program exits with
-// status 1; it then belongs in tests/cli/test_robustness.py and in the corpus.
+// Mutations (mutator.hpp, shared with fit_fuzz.cpp): byte flips, deleted and duplicated spans, numbers replaced by
+// edge values (0, -1, 5e-324, 1e308, nan, inf, 2^53 + 1, ...), keys and whole lines taken from other corpus files.
+// An input that fails (or takes longer than 10 s: a hang) is written to `fuzz-failure.toml` in the working
+// directory and the program exits with status 1; it then belongs in tests/cli/test_robustness.py and in the corpus.
 
 #include <atomic>
-#include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
-#include <random>
 #include <stdexcept>
 #include <string>
-#include <string_view>
 #include <thread>
+#include <typeinfo>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
+#include "mdr/io/summary.hpp"
+#include "mutator.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using mdr::fuzz::read_file;
 
-const std::vector<std::string> edge_values = {
-    "0",     "-1",   "1",     "5e-324", "1e-300", "1e308",  "-1e308", "nan", "inf",  "-inf",
-    "9007199254740993", "9223372036854775807", "-0.0", "1e-15", "1e15", "0.5", "[]", "\"\"", "{}", "[[0, 0]]"};
-
-std::string read_file(const fs::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(file), {}};
+// A corpus file with one to four mutations.
+std::string next_input(const std::vector<std::string>& corpus, mdr::fuzz::Mutator& mutator) {
+    std::string text = corpus[mutator.pick(corpus.size())];
+    const std::size_t mutations = 1 + mutator.pick(4);
+    for (std::size_t m = 0; m < mutations; ++m) mutator.mutate(text);
+    return text;
 }
 
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::size_t start = 0;
-    while (start < text.size()) {
-        const std::size_t end = std::min(text.find('\n', start), text.size());
-        lines.push_back(text.substr(start, end - start));
-        start = end + 1;
-    }
-    return lines;
-}
-
-class Mutator {
-public:
-    Mutator(std::vector<std::string> corpus, unsigned seed) : corpus_(std::move(corpus)), random_(seed) {
-        for (const auto& text : corpus_) {
-            for (auto& line : lines_of(text)) all_lines_.push_back(std::move(line));
-        }
-    }
-
-    std::string next() {
-        std::string text = corpus_[pick(corpus_.size())];
-        const std::size_t mutations = 1 + pick(4);
-        for (std::size_t m = 0; m < mutations; ++m) mutate(text);
-        return text;
-    }
-
-private:
-    std::size_t pick(std::size_t count) { return std::uniform_int_distribution<std::size_t>(0, count - 1)(random_); }
-
-    void mutate(std::string& text) {
-        if (text.empty()) text.push_back('x');
-        switch (pick(6)) {
-            case 0:  // replace a number by an edge value
-            {
-                std::vector<std::pair<std::size_t, std::size_t>> spans;  // numbers: a digit, then [0-9_.eE+-]
-                for (std::size_t i = 0; i < text.size(); ++i) {
-                    if (!std::isdigit(static_cast<unsigned char>(text[i]))) continue;
-                    const std::size_t begin = i > 0 && (text[i - 1] == '-' || text[i - 1] == '+') ? i - 1 : i;
-                    while (i < text.size() && (std::isdigit(static_cast<unsigned char>(text[i])) ||
-                                               std::string_view("_.eE+-").find(text[i]) != std::string_view::npos)) {
-                        ++i;
-                    }
-                    spans.emplace_back(begin, i - begin);
-                }
-                if (spans.empty()) break;
-                const auto [at, length] = spans[pick(spans.size())];
-                text = text.substr(0, at) + edge_values[pick(edge_values.size())] + text.substr(at + length);
-                break;
-            }
-            case 1:  // flip a byte
-                text[pick(text.size())] = static_cast<char>(pick(256));
-                break;
-            case 2:  // delete a span
-            {
-                const std::size_t at = pick(text.size());
-                text = text.substr(0, at) + text.substr(std::min(text.size(), at + 1 + pick(16)));
-                break;
-            }
-            case 3:  // duplicate a span
-            {
-                const std::size_t at = pick(text.size());
-                text = text.substr(0, at) + text.substr(at, 1 + pick(16)) + text.substr(at);
-                break;
-            }
-            case 4:  // insert a line of another corpus file
-            {
-                auto lines = lines_of(text);
-                lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(pick(lines.size() + 1)),
-                             all_lines_[pick(all_lines_.size())]);
-                text.clear();
-                for (const auto& line : lines) text += line + "\n";
-                break;
-            }
-            default:  // drop a line
-            {
-                auto lines = lines_of(text);
-                if (lines.empty()) break;
-                lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(pick(lines.size())));
-                text.clear();
-                for (const auto& line : lines) text += line + "\n";
-                break;
-            }
-        }
-    }
-
-    std::vector<std::string> corpus_;
-    std::vector<std::string> all_lines_;
-    std::mt19937 random_;
+// A run that ends is reported: its history columns and every number of its summary (summary.json) must be finite
+// (docs/case-format.md: no run ever reports NaN or infinity). Throws NonFiniteOutput naming the first that is not.
+struct NonFiniteOutput : std::logic_error {
+    using std::logic_error::logic_error;
 };
+
+void require_finite_output(const mdr::drivers::ContactCase& contact_case,
+                           const mdr::drivers::IndentationResult& result) {
+    const std::pair<const char*, const std::vector<double>*> columns[] = {
+        {"t", &result.time}, {"d", &result.depth}, {"F", &result.force}, {"a", &result.radius},
+        {"v", &result.velocity}, {"u", &result.tangential_displacement}, {"Fx", &result.tangential_force},
+        {"c", &result.stick_radius}, {"z", &result.base}, {"shore", &result.shore},
+        {"v_t", &result.tangential_velocity}, {"omega", &result.spin}};
+    for (const auto& [name, column] : columns) {
+        for (const double value : *column) {
+            if (!std::isfinite(value)) throw NonFiniteOutput(std::string("history column ") + name + " not finite");
+        }
+    }
+    for (const auto& entry : mdr::io::summarize(contact_case, result, 0.0)) {
+        std::vector<double> numbers;
+        if (const auto* number = std::get_if<double>(&entry.value)) numbers.push_back(*number);
+        if (const auto* list = std::get_if<std::vector<double>>(&entry.value)) numbers = *list;
+        for (const double value : numbers) {
+            if (!std::isfinite(value)) throw NonFiniteOutput("summary." + entry.key + " = " + std::to_string(value));
+        }
+    }
+}
 
 // Parses and checks the case; then runs it on at most 100 elements when that stays below 2e6 element-steps, for
 // at most a second.
@@ -148,9 +90,10 @@ void exercise(const std::string& text) {
         return;  // too large to run here; the check above is what counted
     }
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(1);
-    mdr::drivers::run_case(contact_case, [&](double) {
+    const auto result = mdr::drivers::run_case(contact_case, [&](double) {
         if (std::chrono::steady_clock::now() > deadline) throw mdr::Interrupted();
     });
+    require_finite_output(contact_case, result);
 }
 
 void write_failure(const std::string& text) { std::ofstream("fuzz-failure.toml", std::ios::binary) << text; }
@@ -209,7 +152,11 @@ int main(int argc, char** argv) {
     }
     const double seconds = std::stod(argv[2]);
     const unsigned seed = argc > 3 ? static_cast<unsigned>(std::stoul(argv[3])) : 1u;
-    Mutator mutator(corpus, seed);
+    std::vector<std::string> line_pool;
+    for (const auto& text : corpus) {
+        for (auto& line : mdr::fuzz::lines_of(text)) line_pool.push_back(std::move(line));
+    }
+    mdr::fuzz::Mutator mutator(std::move(line_pool), seed);
     Watchdog watchdog(std::chrono::seconds(10));
     const auto start = std::chrono::steady_clock::now();
     std::size_t inputs = 0, accepted = 0;
@@ -217,7 +164,7 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0;; ++i) {
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (i >= corpus.size() && elapsed > seconds) break;
-        const std::string text = i < corpus.size() ? corpus[i] : mutator.next();
+        const std::string text = i < corpus.size() ? corpus[i] : next_input(corpus, mutator);
         ++inputs;
         watchdog.start(text);
         try {
