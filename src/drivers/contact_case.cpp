@@ -123,8 +123,10 @@ ResolvedNumerics resolve_impact_numerics(const ContactCase& contact_case) {
     for (const auto& term : material.terms()) spring_modulus += term.modulus;
     if (!(spring_modulus > 0.0)) spring_modulus = material.viscosity() / std::max(material.shortest_time(), 1e-300);
     const ElasticImpact stiff = elastic_impact(indenter, spring_modulus, impact.mass, impact.velocity);
-    const double soft_modulus = material.is_fluid() ? 1.0 / material.creep(10.0 * stiff.duration) : material.equilibrium_modulus();
-    const ElasticImpact soft = elastic_impact(indenter, std::min(soft_modulus, spring_modulus), impact.mass, impact.velocity);
+    const double soft_modulus =
+        material.is_fluid() ? 1.0 / material.creep(10.0 * stiff.duration) : material.equilibrium_modulus();
+    const ElasticImpact soft =
+        elastic_impact(indenter, std::min(soft_modulus, spring_modulus), impact.mass, impact.velocity);
 
     ResolvedNumerics resolved;
     resolved.output_every = numerics.output_every;

@@ -51,7 +51,8 @@ double exact_depth(const std::string& shape, double beta, double t) {
 }
 
 std::string fast_step(const std::string& shape, double beta, double end, const std::string& numerics) {
-    const std::string indenter = shape == "sphere" ? fmt::format("R = {}", R) : fmt::format("slope_deg = {}", slope_deg);
+    const std::string indenter =
+        shape == "sphere" ? fmt::format("R = {}", R) : fmt::format("slope_deg = {}", slope_deg);
     return fmt::format(R"(
 [material]
 model = "power_law"
@@ -113,8 +114,8 @@ TEST_P(PowerLawFastForceStepDefaults, MeetTheCreepOfTheModelWithinFiveTenThousan
     RecordProperty("default_error", fmt::format("{:.2e}", error));
     RecordProperty("steps", std::to_string(result.steps));
     // Measured from the window's start (during the ramp too): sphere 1.4e-5 (beta 0.05), 2.4e-5 (0.2), 3.4e-4 (0.5);
-    // cone 1.0e-4 (0.2); from a fifth of the default step after the ramp: 1.5e-5, 2.4e-5, 1.9e-4; 2.1e-5. Before the grading
-    // (uniform steps of a fifth of the series' node above the default step, 4478-9458 steps): 3.8e-3, 3.4e-2,
+    // cone 1.0e-4 (0.2); from a fifth of the default step after the ramp: 1.5e-5, 2.4e-5, 1.9e-4; 2.1e-5. Before the
+    // grading (uniform steps of a fifth of the series' node above the default step, 4478-9458 steps): 3.8e-3, 3.4e-2,
     // 1.2e-1; cone 2.7e-2.
     EXPECT_LT(error, 5e-4) << shape << ", beta = " << beta;
     // The cost: the default steps and the graded ones after the start and the ramp's two ends, from the series'

@@ -144,8 +144,8 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// fast_change_times and grade_after_changes), so that the step count stays bounded for any record length; a
 /// converted series (its creep changes on every scale from its shortest time) is graded likewise from its
 /// shortest time, and a finite series with a time shorter than the time step from jump_grading_ratio of that
-/// time; a user's time_step is graded by the same rules, scaled to it (a finer step is never worse). Impact: the time step is the elastic contact time
-/// with the instantaneous spring modulus over default_steps (and the material-time rule), the half-width 1.2
+/// time; a user's time_step is graded by the same rules, scaled to it (a finer step is never worse). Impact: the
+/// time step is the elastic contact time with the instantaneous spring modulus over default_steps (and the material-time rule), the half-width 1.2
 /// times the elastic contact radius with the equilibrium modulus (an upper bound: the viscoelastic body is
 /// stiffer and dissipates); with a parallel dashpot the step is at most the braking time m / (8 eta a) over
 /// braking_steps (an overdamped impact is decided on that scale); an oblique impact whose contact point is
