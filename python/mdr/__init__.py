@@ -23,6 +23,7 @@ from typing import Any, Callable, Mapping, Optional, Union
 import numpy as np
 
 from . import _mdr
+from ._arrays import real_array
 from ._jobs import check_jobs, local_workers
 from ._mdr import ConvertedMaterial, Indenter, InvalidInput, Material
 from ._toml import to_toml
@@ -204,9 +205,9 @@ def check(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[
 def _axis_spec(key: str, values: Any) -> str:
     if isinstance(values, str):
         return f"{key}={values}"
-    array = np.asarray(values, dtype=float)
-    if array.ndim != 1 or array.size == 0:
-        raise ValueError(f"vary[{key!r}]: expected a 1-D list of numbers or 'START:STOP:COUNT[:log]'")
+    array = real_array(values, f"vary[{key!r}]")
+    if array.size == 0:
+        raise ValueError(f"vary[{key!r}]: an empty array; must be a 1-D list of numbers or 'START:STOP:COUNT[:log]'")
     return f"{key}=" + ",".join(repr(float(v)) for v in array)
 
 
