@@ -42,12 +42,11 @@ void put(rheology::ModelParameters& parameters, const rheology::ModelParameter& 
     }
 }
 
-// The row's parameter `key`; throws mdr::InvalidInput for a key the model does not have.
-const rheology::ModelParameter& parameter_of(const MaterialModel& model, const std::string& key) {
+// The row's parameter `key`, or nullptr for a key the model does not have.
+const rheology::ModelParameter* find_parameter(const MaterialModel& model, const std::string& key) {
     const auto found = std::find_if(model.parameters.begin(), model.parameters.end(),
                                     [&](const auto& parameter) { return parameter.key == key; });
-    if (found == model.parameters.end()) throw InvalidInput(key, "(given)", "not a key of model " + model.name);
-    return *found;
+    return found == model.parameters.end() ? nullptr : &*found;
 }
 
 py::object build(const MaterialModel& model, const py::args& args, const py::kwargs& kwargs) {
@@ -79,9 +78,8 @@ py::object build(const MaterialModel& model, const py::args& args, const py::kwa
             options.tolerance = *tolerance;
             continue;
         }
-        const auto found = std::find_if(model.parameters.begin(), model.parameters.end(),
-                                        [&](const auto& parameter) { return parameter.key == key; });
-        if (found == model.parameters.end()) {
+        const rheology::ModelParameter* found = find_parameter(model, key);
+        if (found == nullptr) {
             throw py::type_error(fmt::format("{}() got an unexpected keyword argument '{}'; valid: {}", model.name,
                                              key, valid));
         }
@@ -102,7 +100,7 @@ py::object build(const MaterialModel& model, const py::args& args, const py::kwa
     }
     // A relative file is the working directory's now; its definition names it absolutely, for any later case.
     for (auto& [key, text] : parameters.texts) {
-        if (parameter_of(model, key).unit == "path") text = std::filesystem::absolute(text).string();
+        if (find_parameter(model, key)->unit == "path") text = std::filesystem::absolute(text).string();
     }
     rheology::ModelMaterial material = rheology::build_material(model, parameters, options);
     if (!material.origin.certificate) return py::cast(std::move(material.series));
@@ -133,8 +131,13 @@ void restore_definition(ConvertedMaterial& material, const py::dict& table) {
     material.model = model.name;
     for (const auto& [name, value] : table) {
         const auto key = name.cast<std::string>();
-        if (key == "tolerance") material.tolerance = value.cast<double>();
-        else if (key != "model") put(material.parameters, parameter_of(model, key), value);
+        if (key == "tolerance") {
+            material.tolerance = value.cast<double>();
+        } else if (key != "model") {
+            const rheology::ModelParameter* parameter = find_parameter(model, key);
+            if (parameter == nullptr) throw InvalidInput(key, "(given)", "not a key of model " + model.name);
+            put(material.parameters, *parameter, value);
+        }
     }
 }
 

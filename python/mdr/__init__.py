@@ -240,7 +240,7 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
         the second history point).
     jobs : int, optional
         Threads (default: all cores); min(jobs, cores, points) run (``.threads`` of the table), and more than the
-        cores warns (ResourceWarning).
+        cores warns (RuntimeWarning).
     progress : callable, optional
         Called as ``progress(done, total)`` with the number of points finished, as points finish and at least
         every 0.2 s. An exception it raises stops the sweep and propagates (local sweeps).

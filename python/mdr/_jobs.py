@@ -1,6 +1,6 @@
 """The one rule for the local workers of mdr.sweep, mdr.map_curves, mdr.fit_map and mdr.distributed: `jobs` is an
 integer >= 1 (or None: every core), not given with a scheduler, and a run starts min(jobs, cores, items) workers;
-asking for more than the cores warns once (a ResourceWarning naming the bound)."""
+asking for more than the cores warns once (a RuntimeWarning naming the bound)."""
 
 from __future__ import annotations
 
@@ -35,5 +35,5 @@ def local_workers(jobs: Any, items: int) -> int:
     available = cores()
     if jobs is not None and jobs > available:
         warnings.warn(f"jobs = {jobs}: more than the {available} cores; {min(available, max(items, 1))} workers run "
-                      f"the {items} items", ResourceWarning, stacklevel=3)
+                      f"the {items} items", RuntimeWarning, stacklevel=3)
     return max(1, min(available if jobs is None else int(jobs), available, items))

@@ -259,7 +259,7 @@ def map_curves(per_curve: Callable[[Any], Mapping[str, float]], stack: Any, *, s
         A Dask scheduler address ``"tcp://HOST:PORT"`` or a client; the pixels then run in chunks on its workers.
     jobs : int, optional
         Local processes (default: all cores); min(jobs, cores, pixels) start (``batch.workers``, ``workers`` of
-        map.json), and more than the cores warns (ResourceWarning); not with a scheduler.
+        map.json), and more than the cores warns (RuntimeWarning); not with a scheduler.
     out : str or os.PathLike, optional
         A result directory for the files of ``CurveMap.write_files``, with the rules of ``--out``: checked before
         any computing, written whole or not at all.

@@ -227,7 +227,7 @@ def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int
         A Dask scheduler address ``"tcp://HOST:PORT"`` or a client; None (the default): local processes.
     jobs : int, optional
         Local processes (default: all cores); min(jobs, cores, total) start (``MapOutcome.workers``), and more
-        than the cores warns (ResourceWarning); only without a scheduler.
+        than the cores warns (RuntimeWarning); only without a scheduler.
     target_seconds : float, optional
         The compute time a chunk should carry (default `TARGET_SECONDS`, 0.1 s).
     progress : callable, optional

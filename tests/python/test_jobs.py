@@ -1,5 +1,5 @@
 """The local workers of mdr.sweep, mdr.map_curves, mdr.fit_map and mdr.distributed (issue 23, item 2): one rule,
-min(jobs, cores, items) workers, a ResourceWarning past the cores, and a ValueError naming `jobs` for anything
+min(jobs, cores, items) workers, a RuntimeWarning past the cores, and a ValueError naming `jobs` for anything
 but an integer >= 1 (before, jobs=10**6 forked thousands of processes for a 6-pixel map)."""
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ def test_cores_are_this_process_cores():
 
 @pytest.mark.parametrize("items", [1, 3])
 def test_workers_are_bounded_by_the_items_and_the_cores(items):
-    with pytest.warns(ResourceWarning, match=rf"^jobs = {CORES + 3}: more than the {CORES} cores"):
+    with pytest.warns(RuntimeWarning, match=rf"^jobs = {CORES + 3}: more than the {CORES} cores"):
         outcome = distributed.ordered_map(process_ids, lambda start, stop: list(range(start, stop)), items,
                                           jobs=CORES + 3)
     assert outcome.workers == outcome.threads == min(CORES, items)
@@ -43,14 +43,14 @@ def test_a_six_pixel_fit_map_with_a_million_jobs_runs_on_at_most_six_workers():
     d = 1e-5 * t
     G = np.array([[1e6, 2e6, 3e6], [4e6, 5e6, 6e6]])
     forces = 16.0 / 3.0 * G[..., None] * math.sqrt(1e-3) * d ** 1.5  # Hertz, eq. of docs/case-format.md
-    with pytest.warns(ResourceWarning, match=r"^jobs = 1000000: more than the"):
+    with pytest.warns(RuntimeWarning, match=r"^jobs = 1000000: more than the"):
         fits = mdr.fit_map(HERTZ_CASE, forces, time=t, depth=d, jobs=10**6)
     assert fits.batch.workers == min(CORES, 6) and fits.summary()["workers"] == min(CORES, 6)
     np.testing.assert_allclose(fits.values["material.G"], G, rtol=1e-4)
 
 
 def test_a_sweep_runs_on_at_most_its_points():
-    with pytest.warns(ResourceWarning, match=r"^jobs = 1000000: more than the"):
+    with pytest.warns(RuntimeWarning, match=r"^jobs = 1000000: more than the"):
         table = mdr.sweep(SWEEP_CASE, {"material.G": [1e6, 2e6, 3e6]}, jobs=10**6)
     assert table.threads == min(CORES, 3)
     np.testing.assert_allclose(table["max_force"] / table["max_force"][0], [1.0, 2.0, 3.0], rtol=1e-12)
