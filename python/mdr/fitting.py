@@ -229,7 +229,8 @@ def _rebound_arrays(data: Mapping[str, Any], i: int) -> tuple:
             raise ValueError(f"data[{i}].{name} = (missing): rebound data need velocity and restitution")
 
     def values(name):  # the errors: a number or one per impact
-        return real_array(data.get(name, ()), f"data[{i}].{name}", dims=(0, 1) if name.endswith("_error") else (1,)).reshape(-1)
+        dims = (0, 1) if name.endswith("_error") else (1,)
+        return real_array(data.get(name, ()), f"data[{i}].{name}", dims=dims).reshape(-1)
 
     mass = data.get("mass")
     mass = None if mass is None else real_number(mass, f"data[{i}].mass")
