@@ -15,14 +15,14 @@ namespace py = pybind11;
 namespace mdr::python {
 namespace {
 
-/// name, time, depth, force, fitted ("" for the fit's setting, else "force" or "depth").
-using CurveArrays =
-    std::tuple<std::string, std::vector<double>, std::vector<double>, std::vector<double>, std::string>;
+/// name, time, depth, force, fitted ("" for the fit's setting, else "force" or "depth"); numpy arrays come in
+/// without a copy (mdr.fit checks them, python/mdr/_arrays.py) and are copied once, into the curve.
+using CurveArrays = std::tuple<std::string, InputArray, InputArray, InputArray, std::string>;
 
 /// index in mdr.fit's data, name, mass (None: the case's indenter.mass), velocity, restitution, contact_time,
 /// restitution_error, contact_time_error (each error list empty, one value or one per impact).
-using ReboundArrays = std::tuple<std::size_t, std::string, std::optional<double>, std::vector<double>,
-                                 std::vector<double>, std::vector<double>, std::vector<double>, std::vector<double>>;
+using ReboundArrays = std::tuple<std::size_t, std::string, std::optional<double>, InputArray, InputArray, InputArray,
+                                 InputArray, InputArray>;
 
 // fit.json (as a dict), the fitted case and the curves of one fit.
 py::dict fit_output(const io::FitCase& fit_case, const fit::FitResult& result) {
@@ -87,16 +87,16 @@ py::dict fit_toml_case(const std::string& toml_text, const std::string& source, 
         for (const auto& [index, name, mass, velocity, restitution, contact_time, restitution_error,
                           contact_time_error] : rebounds) {
             try {
-                loaded_rebounds.push_back(fit::make_rebound({name, mass ? mass : fit::case_mass(fit_case), velocity,
-                                                             restitution, contact_time, restitution_error,
-                                                             contact_time_error}));
+                loaded_rebounds.push_back(fit::make_rebound(
+                    {name, mass ? mass : fit::case_mass(fit_case), to_vector(velocity), to_vector(restitution),
+                     to_vector(contact_time), to_vector(restitution_error), to_vector(contact_time_error)}));
             } catch (const InvalidInput& error) {
                 throw error.with_prefix("data[" + std::to_string(index) + "].");
             }
         }
         for (std::size_t i = 0; i < curves.size(); ++i) {
             const auto& [name, time, depth, force, fitted] = curves[i];
-            loaded.push_back(fit::make_curve(name, time, depth, force));
+            loaded.push_back(fit::make_curve(name, to_vector(time), to_vector(depth), to_vector(force)));
             if (fitted == "force") loaded.back().fitted = fit::Fitted::force;
             else if (fitted == "depth") loaded.back().fitted = fit::Fitted::depth;
             else if (!fitted.empty()) {
@@ -133,8 +133,8 @@ void bind_fit(py::module_& module) {
                py::arg("curves"), py::arg("rebounds"), "Fits a fit case given as TOML text (mdr.fit is the public entry).");
     module.def(
         "_afm_depth_and_force",
-        [](const std::vector<double>& piezo, const std::vector<double>& deflection, double spring_constant) {
-            auto curve = fit::afm_depth_and_force(piezo, deflection, spring_constant);
+        [](const InputArray& piezo, const InputArray& deflection, double spring_constant) {
+            auto curve = fit::afm_depth_and_force(to_vector(piezo), to_vector(deflection), spring_constant);
             return py::make_tuple(to_array(curve.depth), to_array(curve.force));
         },
         py::arg("piezo"), py::arg("deflection"), py::arg("spring_constant"),

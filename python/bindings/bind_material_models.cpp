@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 
 #include "bindings.hpp"
 #include "mdr/error.hpp"
@@ -41,10 +42,18 @@ void put(rheology::ModelParameters& parameters, const rheology::ModelParameter& 
     }
 }
 
+// The row's parameter `key`, or nullptr for a key the model does not have.
+const rheology::ModelParameter* find_parameter(const MaterialModel& model, const std::string& key) {
+    const auto found = std::find_if(model.parameters.begin(), model.parameters.end(),
+                                    [&](const auto& parameter) { return parameter.key == key; });
+    return found == model.parameters.end() ? nullptr : &*found;
+}
+
 py::object build(const MaterialModel& model, const py::args& args, const py::kwargs& kwargs) {
     rheology::ModelParameters parameters;
     rheology::ConversionOptions options;
     std::vector<double> frequencies;
+    std::optional<double> tolerance;
     std::string valid;
     for (const auto& parameter : model.parameters) valid += (valid.empty() ? "" : ", ") + parameter.key;
     if (model.needs_window) valid += ", window, frequencies, tolerance";
@@ -65,12 +74,12 @@ py::object build(const MaterialModel& model, const py::args& args, const py::kwa
             continue;
         }
         if (model.needs_window && key == "tolerance") {
-            options.tolerance = value.cast<double>();
+            tolerance = value.cast<double>();
+            options.tolerance = *tolerance;
             continue;
         }
-        const auto found = std::find_if(model.parameters.begin(), model.parameters.end(),
-                                        [&](const auto& parameter) { return parameter.key == key; });
-        if (found == model.parameters.end()) {
+        const rheology::ModelParameter* found = find_parameter(model, key);
+        if (found == nullptr) {
             throw py::type_error(fmt::format("{}() got an unexpected keyword argument '{}'; valid: {}", model.name,
                                              key, valid));
         }
@@ -89,9 +98,47 @@ py::object build(const MaterialModel& model, const py::args& args, const py::kwa
         std::sort(frequencies.begin(), frequencies.end());
         options.window->frequencies = std::move(frequencies);
     }
+    // A relative file is the working directory's now; its definition names it absolutely, for any later case.
+    for (auto& [key, text] : parameters.texts) {
+        if (find_parameter(model, key)->unit == "path") text = std::filesystem::absolute(text).string();
+    }
     rheology::ModelMaterial material = rheology::build_material(model, parameters, options);
     if (!material.origin.certificate) return py::cast(std::move(material.series));
-    return py::cast(ConvertedMaterial{std::move(material.series), std::move(*material.origin.certificate)});
+    return py::cast(ConvertedMaterial{std::move(material.series), std::move(*material.origin.certificate), model.name,
+                                      std::move(parameters), tolerance});
+}
+
+// The [material] table of a converted material's model: what a case converts again (mdr.Material objects in a
+// case dict, python/mdr/_toml.py).
+py::dict definition_table(const ConvertedMaterial& material) {
+    py::dict table;
+    table["model"] = material.model;
+    for (const auto& [key, value] : material.parameters.numbers) table[key.c_str()] = value;
+    for (const auto& [key, value] : material.parameters.pairs) {
+        py::list pairs;
+        for (const auto& [a, b] : value) pairs.append(py::make_tuple(a, b));
+        table[key.c_str()] = pairs;
+    }
+    for (const auto& [key, value] : material.parameters.arrays) table[key.c_str()] = value;
+    for (const auto& [key, value] : material.parameters.texts) table[key.c_str()] = value;
+    if (material.tolerance) table["tolerance"] = *material.tolerance;
+    return table;
+}
+
+// The model and parameters of a definition table (a pickle's), inverse of definition_table.
+void restore_definition(ConvertedMaterial& material, const py::dict& table) {
+    const MaterialModel& model = rheology::material_model(table["model"].cast<std::string>());
+    material.model = model.name;
+    for (const auto& [name, value] : table) {
+        const auto key = name.cast<std::string>();
+        if (key == "tolerance") {
+            material.tolerance = value.cast<double>();
+        } else if (key != "model") {
+            const rheology::ModelParameter* parameter = find_parameter(model, key);
+            if (parameter == nullptr) throw InvalidInput(key, "(given)", "not a key of model " + model.name);
+            put(material.parameters, *parameter, value);
+        }
+    }
 }
 
 // The models whose factory returns an mdr.ConvertedMaterial: those converted to a series over a window, and tables.
@@ -133,6 +180,9 @@ void bind_material_models(py::class_<rheology::Rheology>& material) {
                                    "Prony series.");
     material.def_property_readonly("material_window", none,
                                    "(float, float) or None: the lags (t_min, t_max) [s] where material_error holds.");
+    material.def_property_readonly("_definition", none,
+                                   "None: a Material that is its own series stands for itself in a case (its "
+                                   "Prony table, python/mdr/_toml.py).");
     material.def_property_readonly("material_frequencies", none,
                                    "list of float or None: the angular frequencies [rad/s] where G^(omega) is "
                                    "certified besides the window.");
@@ -155,15 +205,18 @@ void bind_converted_material(py::module_& module) {
         for (const auto& term : m.terms()) terms.emplace_back(term.modulus, term.relaxation_time);
         const Certificate& c = m.certificate;
         return py::make_tuple(m.equilibrium_modulus(), m.viscosity(), terms, c.error, c.window.shortest,
-                              c.window.longest, c.window.frequencies, c.tolerance, c.kind);
+                              c.window.longest, c.window.frequencies, c.tolerance, c.kind, definition_table(m));
     };
     const auto restore = [](const py::tuple& s) {
         std::vector<rheology::RelaxationTerm> terms;
         for (const auto& [G, tau] : s[2].cast<std::vector<std::pair<double, double>>>()) terms.push_back({G, tau});
         rheology::TimeWindow window{s[4].cast<double>(), s[5].cast<double>(), s[6].cast<std::vector<double>>()};
-        return ConvertedMaterial{rheology::Rheology(s[0].cast<double>(), s[1].cast<double>(), std::move(terms)),
-                                 Certificate{s[3].cast<double>(), std::move(window), s[7].cast<double>(),
-                                             s[8].cast<std::string>()}};
+        ConvertedMaterial material{
+            rheology::Rheology(s[0].cast<double>(), s[1].cast<double>(), std::move(terms)),
+            Certificate{s[3].cast<double>(), std::move(window), s[7].cast<double>(), s[8].cast<std::string>()},
+            {}, {}, {}};
+        restore_definition(material, s[9].cast<py::dict>());
+        return material;
     };
     py::class_<ConvertedMaterial, rheology::Rheology>(module, "ConvertedMaterial",
                                                       R"doc(An mdr.Material converted to a Prony series from a model.
@@ -189,6 +242,9 @@ Examples
             "material_frequencies", [](const ConvertedMaterial& m) { return m.certificate.window.frequencies; },
             "list of float: the angular frequencies [rad/s] where G^(omega) is certified besides the window, "
             "ascending (the factory's frequencies).")
+        .def_property_readonly("_definition", &definition_table,
+                               "dict: the model's [material] table, which stands for this material in a case (the "
+                               "case converts it again over its own window, as for the same table given as a dict).")
         .def(py::pickle(state, restore))
         .def("__repr__", [](const ConvertedMaterial& m) {
             return fmt::format("ConvertedMaterial(G_inf={}, eta={}, branches={}, material_error={:.3g})",

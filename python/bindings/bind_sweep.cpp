@@ -49,6 +49,14 @@ void bind_sweep(py::module_& module) {
         py::arg("progress") = py::none(),
         "Runs a case over the cartesian product of --vary specs (use mdr.sweep).");
     module.def(
+        "_sweep_size",
+        [](const std::vector<std::string>& specs) {
+            std::vector<io::SweepAxis> axes;
+            for (const auto& spec : specs) axes.push_back(io::parse_sweep_axis(spec));
+            return io::sweep_size(axes);
+        },
+        py::arg("specs"), "The number of grid points of --vary specs (mdr.sweep bounds its threads by it).");
+    module.def(
         "_sweep_grid",
         [](const std::vector<std::string>& specs) {
             std::vector<io::SweepAxis> axes;

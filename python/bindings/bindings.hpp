@@ -3,15 +3,23 @@
 
 #include <pybind11/pybind11.h>
 
+#include <optional>
+#include <string>
+
 #include "mdr/rheology/approximation.hpp"
+#include "mdr/rheology/material_models.hpp"
 #include "mdr/rheology/rheology.hpp"
 
 namespace mdr::python {
 
 /// What the factories of a model converted to a Prony series (power law, springpots, table) build: the series
-/// and the certificate of the conversion.
+/// and the certificate of the conversion, and the model's definition, which stands for it in a case (a case
+/// converts the model again over its own window and harmonic frequencies, as for the same [material] table).
 struct ConvertedMaterial : rheology::Rheology {
     rheology::Certificate certificate;
+    std::string model;                     ///< the registry's name of the model
+    rheology::ModelParameters parameters;  ///< the values given to its factory (a table's file: absolute)
+    std::optional<double> tolerance;       ///< the factory's tolerance, when given
 };
 
 /// mdr.Material: the canonical rheology and its factories.

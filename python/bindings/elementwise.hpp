@@ -7,10 +7,9 @@
 
 #include <utility>
 
-namespace mdr::python {
+#include "arrays.hpp"
 
-/// Any array-like input, converted to a C-contiguous float64 array (a Python or numpy scalar gives 0 dimensions).
-using InputArray = pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>;
+namespace mdr::python {
 
 /// f applied to each value of `input`: a Python float (or complex) for a scalar, else an array of `input`'s shape.
 template <typename Value, typename F>

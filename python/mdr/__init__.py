@@ -23,6 +23,8 @@ from typing import Any, Callable, Mapping, Optional, Union
 import numpy as np
 
 from . import _mdr
+from ._arrays import real_array
+from ._jobs import check_jobs, local_workers
 from ._mdr import ConvertedMaterial, Indenter, InvalidInput, Material
 from ._toml import to_toml
 from .curve_maps import map_curves
@@ -203,18 +205,19 @@ def check(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[
 def _axis_spec(key: str, values: Any) -> str:
     if isinstance(values, str):
         return f"{key}={values}"
-    array = np.asarray(values, dtype=float)
-    if array.ndim != 1 or array.size == 0:
-        raise ValueError(f"vary[{key!r}]: expected a 1-D list of numbers or 'START:STOP:COUNT[:log]'")
+    array = real_array(values, f"vary[{key!r}]")
+    if array.size == 0:
+        raise ValueError(f"vary[{key!r}]: an empty array; must be a 1-D list of numbers or 'START:STOP:COUNT[:log]'")
     return f"{key}=" + ",".join(repr(float(v)) for v in array)
 
 
 class SweepTable(dict):
     """The table of a sweep: a dict of numpy arrays (column name -> one value a row); `batch` tells how it ran
     (mdr.distributed.MapOutcome without the outputs: scheduler, workers, tasks, retried, seconds; None for a local
-    sweep)."""
+    sweep); `threads` the threads of a local sweep, min(jobs, cores, points) (None for a scheduled one)."""
 
     batch: Any = None
+    threads: Optional[int] = None
 
 
 def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = None, jobs: Optional[int] = None,
@@ -236,7 +239,8 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
         fastest. A key names a number of the case, also inside an array (``"load.history[1][1]"``: the value of
         the second history point).
     jobs : int, optional
-        Threads (default: all cores).
+        Threads (default: all cores); min(jobs, cores, points) run (``.threads`` of the table), and more than the
+        cores warns (RuntimeWarning).
     progress : callable, optional
         Called as ``progress(done, total)`` with the number of points finished, as points finish and at least
         every 0.2 s. An exception it raises stops the sweep and propagates (local sweeps).
@@ -257,6 +261,8 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
     ------
     mdr.InvalidInput
         For a bad case or a key that is not a number of the case.
+    ValueError
+        For `jobs` not an integer >= 1 (a bool included), or given with a scheduler.
     TypeError
         For a case given both ways, or none.
 
@@ -277,17 +283,15 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
     """
     if not isinstance(vary, Mapping) or not vary:
         raise TypeError("vary: expected a non-empty dict {key: values}")
-    if jobs is not None and (not isinstance(jobs, int) or jobs < 1):
-        raise ValueError(f"jobs = {jobs!r}: must be an integer >= 1")
-    if jobs is not None and scheduler is not None:
-        raise ValueError(f"jobs = {jobs!r}: not used with a scheduler (its workers' threads run the chunks)")
+    check_jobs(jobs, scheduler)
     progress = _callable_or_none(progress)
     text, source = _case_text(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
                                                   tangential=tangential, output=output, numerics=numerics)))
     specs = [_axis_spec(key, values) for key, values in vary.items()]
-    batch = None
+    batch = threads = None
     if scheduler is None:
-        raw = _mdr._sweep_toml(text, source, specs, jobs or 0, progress)
+        threads = local_workers(jobs, _mdr._sweep_size(specs))
+        raw = _mdr._sweep_toml(text, source, specs, threads, progress)
     else:
         from . import distributed
 
@@ -299,6 +303,7 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
     columns = next((list(s) for s in summaries if s), [])
     table = SweepTable()
     table.batch = batch
+    table.threads = threads
     points = np.asarray(raw["points"], dtype=float).reshape(len(summaries), len(specs))
     for i, key in enumerate(vary):
         table[key] = points[:, i]

@@ -13,8 +13,12 @@ from ._mdr import Indenter, Material
 
 
 def material_table(material: Material) -> dict[str, Any]:
-    """The `[material]` table of a Material: its named model where one fits (elastic, viscous, kelvin_voigt), else
+    """The `[material]` table of a Material: for an `mdr.ConvertedMaterial` the model it was built from (its name,
+    parameters and tolerance), which the case converts again over its own window and harmonic frequencies, exactly
+    as the same table given as a dict; else its named model where one fits (elastic, viscous, kelvin_voigt), else
     a Prony series (with its parallel dashpot `eta` where it has one)."""
+    if material._definition is not None:
+        return material._definition
     terms = [[modulus, time] for modulus, time in material.terms]
     if not terms:
         if material.eta == 0.0:

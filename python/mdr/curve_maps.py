@@ -26,6 +26,7 @@ from typing import Any, Callable, Mapping, Sequence
 import numpy as np
 
 from . import distributed
+from ._jobs import check_jobs
 
 #: Pixel status codes of `CurveMap.status` (status.npy).
 OK, FAILED, NO_CURVE = 0, 1, 2
@@ -257,7 +258,8 @@ def map_curves(per_curve: Callable[[Any], Mapping[str, float]], stack: Any, *, s
     scheduler : str or distributed.Client, optional
         A Dask scheduler address ``"tcp://HOST:PORT"`` or a client; the pixels then run in chunks on its workers.
     jobs : int, optional
-        Local processes (default: all cores); not with a scheduler.
+        Local processes (default: all cores); min(jobs, cores, pixels) start (``batch.workers``, ``workers`` of
+        map.json), and more than the cores warns (RuntimeWarning); not with a scheduler.
     out : str or os.PathLike, optional
         A result directory for the files of ``CurveMap.write_files``, with the rules of ``--out``: checked before
         any computing, written whole or not at all.
@@ -288,6 +290,7 @@ def map_curves(per_curve: Callable[[Any], Mapping[str, float]], stack: Any, *, s
     >>> np.round(result.values["material.G"] / 1e6, 4), result.status
     (array([[1., 2.]]), array([[0, 0]], dtype=int8))
     """
+    check_jobs(jobs, scheduler)
     opened = open_stack(stack)
     try:
         directory = None

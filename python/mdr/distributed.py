@@ -22,7 +22,6 @@ from __future__ import annotations
 import concurrent.futures
 import functools
 import math
-import os
 import queue
 import signal
 import time
@@ -31,6 +30,7 @@ from dataclasses import dataclass
 from typing import Any, Callable, Sequence
 
 from . import _mdr
+from ._jobs import check_jobs, local_workers
 
 #: Seconds of work a chunk should carry (Dask's scheduling overhead is ~2.5 ms a task, docs/performance.md).
 TARGET_SECONDS = 0.1
@@ -81,10 +81,10 @@ def _timed(version: str, chunk_function: Callable[[Any], list], payload: Any) ->
 
 
 class _LocalPool:
-    """The chunks in `jobs` local processes (ProcessPoolExecutor; Ctrl-C is the parent's alone)."""
+    """The chunks in min(jobs, cores, items) local processes (ProcessPoolExecutor; Ctrl-C is the parent's alone)."""
 
-    def __init__(self, jobs: int | None):
-        self.workers = self.threads = jobs or os.cpu_count() or 1
+    def __init__(self, jobs: int | None, items: int):
+        self.workers = self.threads = local_workers(jobs, items)
         self.scheduler = "local"
         self._pool = concurrent.futures.ProcessPoolExecutor(self.threads, initializer=_ignore_interrupts)
 
@@ -226,7 +226,8 @@ def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int
     scheduler : str or distributed.Client, optional
         A Dask scheduler address ``"tcp://HOST:PORT"`` or a client; None (the default): local processes.
     jobs : int, optional
-        Local processes (default: all cores); only without a scheduler.
+        Local processes (default: all cores); min(jobs, cores, total) start (``MapOutcome.workers``), and more
+        than the cores warns (RuntimeWarning); only without a scheduler.
     target_seconds : float, optional
         The compute time a chunk should carry (default `TARGET_SECONDS`, 0.1 s).
     progress : callable, optional
@@ -240,6 +241,8 @@ def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int
 
     Raises
     ------
+    ValueError
+        For `jobs` not an integer >= 1 (a bool included), or given with a scheduler.
     SchedulerError
         When no scheduler answers at the address, or no worker joins within `WORKER_TIMEOUT`.
     RuntimeError
@@ -256,8 +259,9 @@ def ordered_map(chunk_function: Callable[[Any], list], read_chunk: Callable[[int
     >>> outcome = mdr.distributed.ordered_map(np.sqrt, read_chunk, 10**6,
     ...                                       scheduler="tcp://127.0.0.1:8786")      # doctest: +SKIP
     """
+    check_jobs(jobs, scheduler)
     start_time = time.perf_counter()
-    pool = _LocalPool(jobs) if scheduler is None else _DaskPool(scheduler)
+    pool = _LocalPool(jobs, total) if scheduler is None else _DaskPool(scheduler)
     outputs: list = [None] * total
     placed = [False] * total
     in_flight: dict[Any, tuple[int, int]] = {}

@@ -11,6 +11,7 @@ from typing import Any, Callable, Mapping, Sequence
 
 import numpy as np
 
+from ._arrays import real_array
 from .curve_maps import CurveMap, map_curves
 
 #: The channels of a curve, in the order of the last axis of a stack (ny, nx, nt, 3), and the names of its columns.
@@ -67,14 +68,14 @@ def fit_curve(curve: Any, case: Mapping[str, Any], time: Sequence[float] | None 
         names = {channel: (columns or {}).get(channel, channel) for channel in CHANNELS}
         data = {channel: curve[name] for channel, name in names.items()}
     else:
-        array = np.asarray(curve, dtype=float)
+        array = real_array(curve, "curve", dims=(1, 2))
         if array.ndim == 2 and array.shape[1] == 3:
             data = dict(zip(CHANNELS, array.T))
         elif array.ndim == 1 and time is not None and depth is not None:
             data = {"time": time, "depth": depth, "force": array}
         else:
-            raise ValueError(f"a curve of shape {array.shape}: expected (nt, 3) time, depth, force, or (nt,) force "
-                             f"with time= and depth= given")
+            raise ValueError(f"curve: an array of shape {array.shape}; must be (nt, 3) time, depth, force, or (nt,) "
+                             f"force with time= and depth= given")
     result = fit(case, data=[data])
     if result.status != "converged":
         raise FitNotConverged(result.status)
@@ -143,6 +144,6 @@ def fit_map(case: str | os.PathLike | Mapping[str, Any], stack: Any, *, time: Se
             case = tomllib.load(handle)
     case = dict(case)
     case["fit"] = {key: value for key, value in dict(case.get("fit", {})).items() if key != "data"}
-    per_curve = functools.partial(fit_curve, case=case, time=None if time is None else np.asarray(time, float),
-                                  depth=None if depth is None else np.asarray(depth, float), columns=columns)
+    per_curve = functools.partial(fit_curve, case=case, time=None if time is None else real_array(time, "time"),
+                                  depth=None if depth is None else real_array(depth, "depth"), columns=columns)
     return map_curves(per_curve, stack, scheduler=scheduler, jobs=jobs, out=out, figures=figures, progress=progress)

@@ -10,6 +10,7 @@ from typing import Any, Mapping, Sequence, Union
 import numpy as np
 
 from . import _mdr
+from ._arrays import real_array, real_number
 from ._toml import to_toml
 
 CaseLike = Union[str, os.PathLike, Mapping[str, Any]]
@@ -88,7 +89,7 @@ def _numbers(summary: Mapping[str, Any], key: str) -> dict[str, float]:
     return {name: (float("nan") if value is None else float(value)) for name, value in summary[key].items()}
 
 
-def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitResult:
+def fit(case: CaseLike, data: Mapping[str, Any] | Sequence[Mapping[str, Any]] | None = None) -> FitResult:
     """Fit the free parameters of a case to measured curves, like ``mdr fit CASE --out DIR``.
 
     Parameters
@@ -96,9 +97,11 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
     case : str, os.PathLike or dict
         A case file with a ``[fit]`` table, or a dict of the same structure (docs/case-format.md, "Fitting").
         Paths of ``[[fit.data]]`` are relative to the case file's directory (the working directory for a dict).
-    data : sequence of dict, optional
-        Curves as arrays instead of ``[[fit.data]]``, every number in the case's units (``units``; SI: s, m, N,
-        N/m): each a dict with ``time``, ``depth`` (positive into the body) and ``force``, and optionally
+    data : dict or sequence of dict, optional
+        Curves as arrays instead of ``[[fit.data]]`` (one dict: one curve), every number in the case's units
+        (``units``; SI: s, m, N, N/m); arrays of 1 dimension of real numbers (integers and float16/32 are taken as
+        float64; bool, complex, text and 2-D arrays are refused naming the key), float64 arrays without a copy:
+        each a dict with ``time``, ``depth`` (positive into the body) and ``force``, and optionally
         ``name``; or, for a raw AFM curve, ``piezo`` and ``deflection`` (lengths, both larger = farther from the
         sample) with ``spring_constant`` (force / length) instead of
         ``depth`` and ``force`` (force = k x deflection, depth = fall of piezo + deflection from the first row,
@@ -120,7 +123,10 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
     Raises
     ------
     ValueError
-        For bad input, with the command line's message (``key = value: rule``).
+        For bad input, with the command line's message (``key = value: rule``), or an array of other dimensions
+        than 1.
+    TypeError
+        For data that are not dicts of arrays of real numbers (naming the key: ``data[0].force``).
 
     Examples
     --------
@@ -147,7 +153,7 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
     else:
         raise TypeError(f"case: expected a path or a dict, got {type(case).__name__}")
     curves, rebounds = [], []
-    for i, curve in enumerate(data or []):
+    for i, curve in enumerate(_data_list(data)):
         kind = curve.get("kind", "curve")
         if kind == "rebound":
             rebounds.append(_rebound_arrays(curve, i))
@@ -167,10 +173,24 @@ def fit(case: CaseLike, data: Sequence[Mapping[str, Any]] | None = None) -> FitR
     return preferred
 
 
-def _curve_arrays(curve: Mapping[str, Any], key: str) -> tuple[list[float], list[float], list[float]]:
+def _data_list(data: Any) -> list[Mapping[str, Any]]:
+    """mdr.fit's ``data``: a sequence of dicts, or one dict for one curve (or one rebound data set)."""
+    if data is None:
+        return []
+    if isinstance(data, Mapping):
+        return [data]
+    if isinstance(data, (str, bytes)) or not isinstance(data, Sequence):
+        raise TypeError(f"data: a {type(data).__name__}; must be a dict of arrays (one curve) or a list of them")
+    for i, item in enumerate(data):
+        if not isinstance(item, Mapping):
+            raise TypeError(f"data[{i}]: a {type(item).__name__}; must be a dict of arrays (time, depth, force, ...)")
+    return list(data)
+
+
+def _curve_arrays(curve: Mapping[str, Any], key: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """time, depth and force of one curve of mdr.fit's ``data``: given, or from the raw AFM arrays."""
     def values(name):
-        return np.asarray(curve[name], dtype=float).ravel().tolist()
+        return real_array(curve[name], f"{key}.{name}")
 
     afm = [name for name in ("piezo", "deflection", "spring_constant") if name in curve]
     if afm:
@@ -184,10 +204,10 @@ def _curve_arrays(curve: Mapping[str, Any], key: str) -> tuple[list[float], list
                                  "spring_constant")
         try:
             depth, force = _mdr._afm_depth_and_force(values("piezo"), values("deflection"),
-                                                     float(curve["spring_constant"]))
+                                                     real_number(curve["spring_constant"], f"{key}.spring_constant"))
         except _mdr.InvalidInput as error:
             raise ValueError(f"{key}.{error}") from None
-        return values("time"), depth.tolist(), force.tolist()
+        return values("time"), depth, force
     missing = [name for name in ("time", "depth", "force") if name not in curve]
     if missing:
         raise ValueError(f"{key}.{missing[0]} = (missing): each curve needs time, depth and force (or the raw AFM "
@@ -208,11 +228,13 @@ def _rebound_arrays(data: Mapping[str, Any], i: int) -> tuple:
         if name not in data:
             raise ValueError(f"data[{i}].{name} = (missing): rebound data need velocity and restitution")
 
-    def values(name):
-        return np.asarray(data.get(name, []), dtype=float).ravel().tolist()
+    def values(name):  # the errors: a number or one per impact
+        dims = (0, 1) if name.endswith("_error") else (1,)
+        return real_array(data.get(name, ()), f"data[{i}].{name}", dims=dims).reshape(-1)
 
     mass = data.get("mass")
-    return (i, str(data.get("name", f"rebound{i}")), None if mass is None else float(mass), values("velocity"),
+    mass = None if mass is None else real_number(mass, f"data[{i}].mass")
+    return (i, str(data.get("name", f"rebound{i}")), mass, values("velocity"),
             values("restitution"), values("contact_time"), values("restitution_error"), values("contact_time_error"))
 
 
