@@ -17,6 +17,7 @@
 #include "material_bands.hpp"
 #include "penalty_cost.hpp"
 #include "rebound_cost.hpp"
+#include "result_check.hpp"
 #include "statistical_convergence.hpp"
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
@@ -270,6 +271,7 @@ FitResult fit(const FitProblem& problem) {
         result.material = {};  // a material that cannot be built beside the fitted values: no bands, the fit stands
     }
     result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
+    require_finite_result(result);
     return result;
 }
 
