@@ -186,7 +186,8 @@ void validate(const FitProblem& problem);
 
 /// Fits the model to the curves. Throws mdr::InvalidInput for a problem that breaks a rule (validate); a fit that
 /// fails to converge returns its status. Throws std::runtime_error when a number of the result that must be finite
-/// is not (the fitted values, the model, the statistics, the material's functions): no such result is returned.
+/// is not (the fitted values, the model, the RMS residual and noise, the material's functions): no such result is
+/// returned.
 FitResult fit(const FitProblem& problem);
 
 }  // namespace mdr::fit
