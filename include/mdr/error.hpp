@@ -40,9 +40,10 @@ public:
 /// Formats a double for an error message: shortest representation that round-trips.
 std::string format_value(double value);
 
-/// Throws InvalidInput unless `value` is finite and > 0.
+/// Throws InvalidInput unless `value` is finite and > 0, and not subnormal (at least the smallest normal double,
+/// 2.2e-308: a subnormal value has lost its precision).
 void require_positive(const std::string& key, double value);
-/// Throws InvalidInput unless `value` is finite and >= 0.
+/// Throws InvalidInput unless `value` is finite and >= 0, and 0 or not subnormal (see require_positive).
 void require_non_negative(const std::string& key, double value);
 /// Throws InvalidInput unless `value` is finite.
 void require_finite(const std::string& key, double value);

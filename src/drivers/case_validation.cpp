@@ -215,11 +215,7 @@ void validate_times(const ContactCase& contact_case) {
 }
 
 void validate_numerics(const NumericsOptions& numerics) {
-    if (numerics.elements && (*numerics.elements < 1 || *numerics.elements > foundation::max_elements)) {
-        throw InvalidInput("numerics.elements", std::to_string(*numerics.elements),
-                           fmt::format("must be from 1 to {} (the state would not fit in memory)",
-                                       foundation::max_elements));
-    }
+    if (numerics.elements) foundation::require_element_count("numerics.elements", *numerics.elements);
     if (numerics.time_step) require_positive("numerics.time_step", *numerics.time_step);
     if (numerics.half_width) require_positive("numerics.half_width", *numerics.half_width);
     if (numerics.output_every < 1) throw InvalidInput("numerics.output_every", "0", "must be an integer >= 1");

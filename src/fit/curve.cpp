@@ -7,6 +7,16 @@
 
 namespace mdr::fit {
 
+bool curve_value_in_range(double value) {
+    const double magnitude = std::abs(value);
+    return magnitude == 0.0 || (magnitude >= smallest_curve_value && magnitude <= largest_curve_value);
+}
+
+std::string curve_value_rule() {
+    return "must be 0 or of a magnitude from " + format_value(smallest_curve_value) + " to " +
+           format_value(largest_curve_value) + " (the fit squares and sums the values)";
+}
+
 Curve checked_curve(std::string name, std::vector<double> time, std::vector<double> depth, std::vector<double> force,
                     const std::string& origin, const RowLocation& where) {
     const std::size_t rows = time.size();
@@ -26,6 +36,9 @@ Curve checked_curve(std::string name, std::vector<double> time, std::vector<doub
         for (std::size_t i = 0; i < rows; ++i) {
             if (!std::isfinite(values[i])) {
                 throw InvalidInput(key, format_value(values[i]), where(i) + ": must be a finite number");
+            }
+            if (!curve_value_in_range(values[i])) {
+                throw InvalidInput(key, format_value(values[i]), where(i) + ": " + curve_value_rule());
             }
         }
     };

@@ -1,5 +1,7 @@
 #include "curve_cost.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -70,6 +72,29 @@ CurveCost::Outcome CurveCost::residuals_at(const double* shared, const double* n
         throw;  // a stop on request ends the fit
     } catch (const std::exception&) {
         return Outcome::failed;  // values where the model cannot run (bounds of work, a rule of the case): a rejected step
+    }
+}
+
+std::string CurveCost::failure_at(const double* shared, const double* nuisance) const {
+    try {
+        std::optional<ModelValues> values;
+        if (prepared_.fitted == Fitted::force) values = model(shared, nuisance, ForwardModel::continuum);
+        if (!values) values = model(shared, nuisance, ForwardModel::elements);
+        const Curve& curve = problem_.curves[curve_];
+        const auto& measured = prepared_.fitted == Fitted::force ? curve.force : curve.depth;
+        for (std::size_t i = 0; i < values->values.size(); ++i) {
+            const std::size_t row = prepared_.used[i];
+            if (!std::isfinite((values->values[i] - measured[row]) / prepared_.noise)) {
+                return fmt::format("the residual at t = {} (row {}) is not finite: model {}, measured {}, noise {}",
+                                   format_value(curve.time[row]), row + 1, format_value(values->values[i]),
+                                   format_value(measured[row]), format_value(prepared_.noise));
+            }
+        }
+        return "";
+    } catch (const Interrupted&) {
+        throw;
+    } catch (const std::exception& error) {
+        return error.what();
     }
 }
 

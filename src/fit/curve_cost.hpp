@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "curve_model.hpp"
@@ -31,6 +32,10 @@ public:
     /// shifted point; otherwise all of them run on elements (one model per residual vector and Jacobian). Returns
     /// false when the model cannot be run at these values.
     bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
+
+    /// Why the model of this curve or its residuals cannot be evaluated at these values, "" when they can: the
+    /// model's error, or the first point whose residual is not finite (its time, model and measured value).
+    std::string failure_at(const double* shared, const double* nuisance) const;
 
     /// The contact point and baseline at these values.
     double contact_depth(const double* nuisance) const;

@@ -37,6 +37,12 @@ std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_ca
     const auto response = ting_forces(model_case.material, *model_case.indenter, curve.time, depth);
     if (!response) return std::nullopt;
     ModelValues model;
+    if (prepared.used.size() == response->force.size()) {  // every point (increasing indices): moved, not copied
+        model.values = std::move(response->force);
+        for (double& value : model.values) value += baseline;
+        model.modulus_derivatives = std::move(response->modulus_derivatives);
+        return model;
+    }
     model.values.reserve(prepared.used.size());
     for (std::size_t i : prepared.used) model.values.push_back(response->force[i] + baseline);
     for (const auto& derivative : response->modulus_derivatives) {

@@ -2,6 +2,7 @@
 
 #include <ceres/ceres.h>
 #include <fmt/format.h>
+#include <glog/logging.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -16,8 +17,10 @@
 #include "material_bands.hpp"
 #include "penalty_cost.hpp"
 #include "rebound_cost.hpp"
+#include "result_check.hpp"
 #include "statistical_convergence.hpp"
 #include "mdr/error.hpp"
+#include "mdr/foundation/foundation.hpp"
 
 namespace mdr::fit {
 
@@ -34,6 +37,11 @@ void validate(const FitProblem& problem) {
         throw InvalidInput("fit.data", "(missing)",
                            "give at least one measured curve or rebound data set ([[fit.data]] or arrays)");
     }
+    if (problem.settings.max_iterations < 1 || problem.settings.max_iterations > max_fit_iterations) {
+        throw InvalidInput("fit.max_iterations", std::to_string(problem.settings.max_iterations),
+                           fmt::format("must be from 1 to {}", max_fit_iterations));
+    }
+    if (problem.settings.elements) foundation::require_element_count("fit.elements", *problem.settings.elements);
     std::set<std::string> names;
     for (const auto& parameter : problem.parameters) {
         const std::string key = "fit.bounds." + parameter.name;
@@ -105,6 +113,65 @@ double noise_to_peak(const ParameterScales& scales, const std::vector<CurveModel
     return ratio;
 }
 
+// Ceres tells how a solve ended in its Summary (status_of), and also logs some endings through glog ("Terminating:
+// ..." at ERROR, with "Logging before InitGoogleLogging()" first), which would reach the user raw on stderr. Once per
+// process, glog's threshold goes to FATAL: below it nothing is logged (a host's own threshold, if higher, stays).
+void silence_solver_log() {
+    static const bool silenced = [] {
+        FLAGS_minloglevel = std::max(FLAGS_minloglevel, static_cast<google::int32>(google::GLOG_FATAL));
+        return true;
+    }();
+    static_cast<void>(silenced);
+}
+
+// The rules that need a curve's model: its fitted quantity has a noise > 0 (the residuals' weight 1 / noise is
+// finite: not 0 in every row), and a depth-driven curve reaches past its start contact point (else the model's
+// force is 0 at every point whatever the parameters). Keys name the curve as fit.data[c].
+void require_fittable(const Curve& curve, const CurveCost& cost, const double* nuisance, std::size_t c) {
+    const CurveModel& prepared = cost.prepared();
+    const bool force_fitted = prepared.fitted == Fitted::force;
+    if (!(prepared.noise > 0.0)) {
+        throw InvalidInput(fmt::format("fit.data[{}].{}", c, force_fitted ? "force" : "depth"), "0 in every row",
+                           "the fitted quantity must differ from 0 somewhere (its noise weights the residuals)");
+    }
+    const double contact = cost.contact_depth(nuisance);
+    if (force_fitted && !(*std::max_element(curve.depth.begin(), curve.depth.end()) > contact)) {
+        throw InvalidInput(fmt::format("fit.data[{}]", c), curve.name,
+                           fmt::format("the curve never makes contact: no depth passes its contact point {}",
+                                       format_value(contact)));
+    }
+}
+
+// A solve that failed before its first step: the model or the residuals at the start values are the cause when they
+// cannot be evaluated there. Throws mdr::InvalidInput naming the key or the curve.
+void require_evaluable_start(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
+                             const std::vector<std::unique_ptr<ReboundCost>>& rebounds,
+                             const std::vector<double>& shared, const std::vector<std::vector<double>>& nuisance) {
+    std::vector<double> start;
+    for (const auto& parameter : problem.parameters) start.push_back(parameter.start);
+    try {
+        static_cast<void>(problem.model(start));
+    } catch (const InvalidInput& error) {
+        throw InvalidInput(error.key(), error.value(), error.rule() + " (at the start values of fit.free)");
+    }
+    for (std::size_t c = 0; c < costs.size(); ++c) {
+        if (const std::string why = costs[c]->failure_at(shared.data(), nuisance[c].data()); !why.empty()) {
+            throw InvalidInput(fmt::format("fit.data[{}]", c), problem.curves[c].name,
+                               "the model cannot be evaluated at the start values: " + why);
+        }
+    }
+    for (const auto& rebound : rebounds) {
+        try {
+            static_cast<void>(rebound->impacts(shared.data()));
+        } catch (const Interrupted&) {
+            throw;
+        } catch (const std::exception& error) {
+            throw InvalidInput("fit.data", rebound->data().name,
+                               std::string("the impacts cannot be run at the start values: ") + error.what());
+        }
+    }
+}
+
 std::string status_of(const ceres::Solver::Summary& summary) {
     switch (summary.termination_type) {
     case ceres::CONVERGENCE:
@@ -154,6 +221,7 @@ FitResult fit(const FitProblem& problem) {
         std::vector<double*> blocks{shared.data()};
         if (m > 0) blocks.push_back(nuisance[c].data());
         solver_problem.AddResidualBlock(costs.back().get(), nullptr, blocks);
+        require_fittable(problem.curves[c], *costs.back(), nuisance[c].data(), c);
     }
     std::vector<std::unique_ptr<ReboundCost>> rebounds;
     for (std::size_t r = 0; r < problem.rebounds.size(); ++r) {
@@ -180,7 +248,11 @@ FitResult fit(const FitProblem& problem) {
     StatisticalConvergence statistical_convergence;
     options.callbacks.push_back(&statistical_convergence);
     ceres::Solver::Summary summary;
+    silence_solver_log();
     ceres::Solve(options, &solver_problem, &summary);
+    if (summary.termination_type == ceres::FAILURE && summary.num_successful_steps == 0) {
+        require_evaluable_start(problem, costs, rebounds, shared, nuisance);
+    }
 
     FitResult result;
     result.status = status_of(summary);
@@ -199,6 +271,7 @@ FitResult fit(const FitProblem& problem) {
         result.material = {};  // a material that cannot be built beside the fitted values: no bands, the fit stands
     }
     result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
+    require_finite_result(result);
     return result;
 }
 

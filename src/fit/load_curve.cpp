@@ -54,8 +54,30 @@ void check_source(const CurveSource& source) {
     }
 }
 
-void scale(std::vector<double>& values, double factor) {
-    for (double& value : values) value *= factor;
+/// Where a converted value of a column comes from, for messages.
+struct ColumnOrigin {
+    const std::string& column;
+    const std::string& file_name;
+    const std::vector<std::size_t>& lines;
+};
+
+/// Throws, naming the factor's key, when `factor` (a unit, the spring constant) took a value that is in the range of
+/// curve_value_in_range to one that is not: the value itself is refused later by checked_curve, naming its column.
+void require_kept_in_range(double read, double converted, std::size_t row, const std::string& factor_key,
+                           double factor, const ColumnOrigin& origin) {
+    if (!curve_value_in_range(read) || curve_value_in_range(converted)) return;
+    throw InvalidInput(factor_key, format_value(factor),
+                       "takes " + format_value(read) + " of column " + in_quotes(origin.column) + " (in " +
+                           origin.file_name + ", line " + std::to_string(origin.lines[row]) + ") to " +
+                           format_value(converted) + ", and a curve's value " + curve_value_rule());
+}
+
+void scale(std::vector<double>& values, double factor, const std::string& factor_key, const ColumnOrigin& origin) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        const double read = values[i];
+        values[i] *= factor;
+        require_kept_in_range(read, values[i], i, factor_key, factor, origin);
+    }
 }
 
 }  // namespace
@@ -88,31 +110,36 @@ Curve load_curve(const CurveSource& source) {
         columns.push_back({source.force_column, "force"});
     }
     CsvColumns table = read_csv_columns(source.file, columns, source.segment_column, source.segments);
+    const std::string file_name = source.file.filename().string();
+    const std::vector<std::size_t>& lines = table.lines;
+    const auto origin = [&](const std::string& column) { return ColumnOrigin{column, file_name, lines}; };
     std::vector<double>& time = table.values[0];
-    scale(time, source.time_unit);
+    scale(time, source.time_unit, "units.time", origin(source.time_column));
     std::vector<double> depth, force;
     if (afm) {
-        scale(table.values[1], source.length_unit);
-        scale(table.values[2], source.length_unit);
-        auto converted = afm_depth_and_force(table.values[1], table.values[2],
-                                             *source.spring_constant * source.spring_constant_unit);
+        scale(table.values[1], source.length_unit, "units.length", origin(source.piezo_column));
+        scale(table.values[2], source.length_unit, "units.length", origin(source.deflection_column));
+        const double spring_constant = *source.spring_constant * source.spring_constant_unit;
+        auto converted = afm_depth_and_force(table.values[1], table.values[2], spring_constant);
+        for (std::size_t i = 0; i < converted.force.size(); ++i) {
+            require_kept_in_range(table.values[2][i], converted.force[i], i, "spring_constant",
+                                  *source.spring_constant, origin(source.deflection_column));
+        }
         depth = std::move(converted.depth);
         force = std::move(converted.force);
     } else {
         depth = std::move(table.values[1]);
         force = std::move(table.values[2]);
-        scale(depth, source.length_unit);
-        scale(force, source.force_unit);
+        scale(depth, source.length_unit, "units.length", origin(source.depth_column));
+        scale(force, source.force_unit, "units.force", origin(source.force_column));
     }
-    const std::string file_name = source.file.filename().string();
-    std::string origin = file_name;
+    std::string origin_text = file_name;
     if (!source.segments.empty()) {
-        origin += ", segments";
-        for (const auto& segment : source.segments) origin += " " + segment;
+        origin_text += ", segments";
+        for (const auto& segment : source.segments) origin_text += " " + segment;
     }
-    const std::vector<std::size_t>& lines = table.lines;
     Curve curve = checked_curve(source.name.empty() ? source.file.stem().string() : source.name, std::move(time),
-                                std::move(depth), std::move(force), origin, [&](std::size_t i) {
+                                std::move(depth), std::move(force), origin_text, [&](std::size_t i) {
                                     return "in " + file_name + ", line " + std::to_string(lines[i]);
                                 });
     curve.fitted = source.fitted;

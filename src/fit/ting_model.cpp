@@ -70,6 +70,16 @@ public:
         : branches_(branches), indenter_(indenter), factors_(branches), now_q_(branches.size()),
           decay_since_peak_(branches.size()), derivative_(branches.size(), 0.0) {}
 
+    // Room for a record of `steps` steps: the record grows without copies (a curve may have 10^7 points).
+    void reserve(std::size_t steps) {
+        const std::size_t n = branches_.size();
+        times_.reserve(steps + 1);
+        depths_.reserve(steps + 1);
+        q_.reserve((steps + 1) * n);
+        r_.reserve((steps + 1) * n);
+        interval_decay_.reserve(steps * n);
+    }
+
     // The first contact at time `start` (depth 0).
     void touch(double start) {
         times_.push_back(start);
@@ -345,6 +355,7 @@ std::optional<TingResponse> ting_forces(const rheology::Rheology& material, cons
                           std::vector<std::vector<double>>(branches.size(), std::vector<double>(time.size(), 0.0))};
     auto& forces = response.force;
     TingRun run(branches, indenter);
+    run.reserve(time.size());
     const auto keep_derivatives = [&](std::size_t i) {
         for (std::size_t b = 0; b < branches.size(); ++b) response.modulus_derivatives[b][i] = run.modulus_derivatives()[b];
     };

@@ -11,6 +11,14 @@
 #include "mdr/error.hpp"
 
 namespace mdr::foundation {
+
+void require_element_count(const std::string& key, std::size_t count) {
+    if (count < 1 || count > max_elements) {
+        throw InvalidInput(key, std::to_string(count),
+                           "must be from 1 to " + std::to_string(max_elements) + " (the state would not fit in memory)");
+    }
+}
+
 namespace {
 
 constexpr double normal_stiffness_factor = 4.0;  // k_z = 4 G dx, eq. (11)

@@ -22,7 +22,9 @@ constexpr const char* placeholder_load = "control = \"displacement\"\nhistory = 
 std::vector<std::string> free_keys(const toml::table& fit, bool optional) {
     const auto* array = fit["free"].as_array();
     if (array == nullptr && optional && !fit["free"]) return {};
-    if (array == nullptr) throw InvalidInput("fit.free", "(missing)", "is required: an array of dotted keys of the case");
+    const std::string rule = "an array of dotted keys of the case, e.g. [\"material.G\"]";
+    if (!fit["free"]) throw InvalidInput("fit.free", "(missing)", "is required: " + rule);
+    if (array == nullptr) throw InvalidInput("fit.free", TableReader(fit, "fit").text("free"), "must be " + rule);
     std::vector<std::string> keys;
     for (std::size_t i = 0; i < array->size(); ++i) {
         const auto key = (*array)[i].value<std::string>();
@@ -59,19 +61,15 @@ fit::FreeParameter read_parameter(const toml::table& fit, const CaseTemplate& mo
     }
     if (!model.has_number(key)) throw InvalidInput("fit.free", key, "the case has no number under this key");
     fit::FreeParameter parameter{key, model.number(key), 0.0, 0.0, true};
-    if (const auto* start = per_key(fit, "start", key)) {
-        const auto value = start->value<double>();
-        if (!value) throw InvalidInput("fit.start." + key, "(not a number)", "must be a number");
-        parameter.start = *value;
-    }
+    // The numbers of a TOML case's rules (TableReader: finite, an integer exactly a double).
+    if (per_key(fit, "start", key)) parameter.start = TableReader(*fit["start"].as_table(), "fit.start").number(key);
     require_finite(key, parameter.start);
-    if (const auto* bounds = per_key(fit, "bounds", key)) {
-        const auto* pair = bounds->as_array();
-        const auto lower = pair && pair->size() == 2 ? (*pair)[0].value<double>() : std::nullopt;
-        const auto upper = pair && pair->size() == 2 ? (*pair)[1].value<double>() : std::nullopt;
-        if (!lower || !upper) throw InvalidInput("fit.bounds." + key, "(not [lower, upper])", "must be [lower, upper]");
-        parameter.lower = *lower;
-        parameter.upper = *upper;
+    if (per_key(fit, "bounds", key)) {
+        TableReader bounds(*fit["bounds"].as_table(), "fit.bounds");
+        const std::vector<double> pair = bounds.numbers(key);
+        if (pair.size() != 2) throw InvalidInput("fit.bounds." + key, bounds.text(key), "must be [lower, upper]");
+        parameter.lower = pair[0];
+        parameter.upper = pair[1];
         parameter.logarithmic = parameter.lower > 0.0 && parameter.start > 0.0;
     } else if (parameter.start > 0.0) {
         parameter.lower = parameter.start * 1e-4;

@@ -62,7 +62,13 @@ fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& 
         source.force_unit = read_unit(*units, "force", "N", system.force_size);
     }
     source.segment_column = table.optional_string("segment_column").value_or("");
-    if (table.has("segments")) source.segments = table.labels("segments");
+    if (table.has("segments")) {
+        source.segments = table.labels("segments");
+        if (source.segments.empty()) {
+            throw InvalidInput(table.key_path("segments"), "[]",
+                               "name at least one segment (leave segments out to keep every row)");
+        }
+    }
     if (table.has("fitted")) source.fitted = read_fitted(table, fit::Fitted::force);
     return source;
 }

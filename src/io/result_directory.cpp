@@ -66,6 +66,23 @@ void write_manifest(const fs::path& directory, const std::vector<std::string>& n
     if (!file.flush()) throw std::system_error(errno, std::generic_category(), "cannot write the manifest");
 }
 
+// True when the entry `name` of a result directory is what mdr wrote there: a regular file the manifest lists, or a
+// folder it lists (a candidate's, mdr fit) holding only regular files that it lists as `name/file`.
+bool is_listed(const fs::path& path, const std::string& name, const std::set<std::string>& listed) {
+    std::error_code error;
+    const auto status = fs::symlink_status(path, error);
+    if (error || !listed.contains(name)) return false;
+    if (fs::is_regular_file(status)) return true;
+    if (!fs::is_directory(status)) return false;
+    for (fs::directory_iterator it(path, error), end; !error && it != end; it.increment(error)) {
+        const auto inner = fs::symlink_status(it->path(), error);
+        if (error || !fs::is_regular_file(inner) || !listed.contains(name + "/" + it->path().filename().string())) {
+            return false;
+        }
+    }
+    return !error;
+}
+
 bool process_alive(pid_t pid) { return kill(pid, 0) == 0 || errno == EPERM; }
 
 // `.NAME<infix>PID-N` of a process that no longer runs, holding a manifest: left by a killed run of mdr.
@@ -142,7 +159,7 @@ void ResultDirectory::check() const {
         if (error) break;
         const std::string name = it->path().filename().string();
         if (name == manifest_file_name) continue;
-        if (!it->is_regular_file(error) || it->is_symlink(error) || !listed->contains(name)) {
+        if (!is_listed(it->path(), name, *listed)) {
             refuse("holds " + name + ", which mdr did not write; name a new directory or remove it yourself");
         }
     }
@@ -168,7 +185,13 @@ void ResultDirectory::write(const std::function<void(const fs::path&)>& write_fi
         if (interrupted && interrupted()) throw Interrupted();
         std::vector<std::string> names;
         for (const auto& entry : fs::directory_iterator(temporary)) {
-            if (entry.path().filename() != manifest_file_name) names.push_back(entry.path().filename().string());
+            const std::string entry_name = entry.path().filename().string();
+            if (entry_name == manifest_file_name) continue;
+            names.push_back(entry_name);
+            if (!entry.is_directory()) continue;
+            for (const auto& inner : fs::directory_iterator(entry.path())) {
+                names.push_back(entry_name + "/" + inner.path().filename().string());
+            }
         }
         std::sort(names.begin(), names.end());
         write_manifest(temporary, names);

@@ -172,3 +172,82 @@ def test_ctrl_c_stops_a_fit_and_leaves_nothing(mdr_binary, fit_case, workdir):
     assert stderr.splitlines()[-1] == "mdr: interrupted; no result was written"
     assert stdout == ""
     assert sorted(p.name for p in workdir.iterdir()) == ["case.toml", "curve.csv"]
+
+
+def rewrite_curve(workdir, edit):
+    """Applies `edit` to the rows (lists of floats) of curve.csv, header kept."""
+    with open(workdir / "curve.csv", newline="", encoding="utf-8") as handle:
+        header, *rows = list(csv.reader(handle))
+    numbers = [[float(value) for value in row] for row in rows]
+    rows = edit(numbers) or numbers
+    with open(workdir / "curve.csv", "w", newline="", encoding="utf-8") as handle:
+        csv.writer(handle).writerows([header, *rows])
+
+
+def set_value(row, column, value):
+    def edit(rows):
+        rows[row][column] = value
+    return edit
+
+
+# Data whose values the fit cannot weigh (once "converged" with an infinite residual and nulls in fit.json, or exit 1
+# with glog's lines on stderr): refused naming the column and the line, nothing written.
+@pytest.mark.parametrize("edit, fragments", [
+    (set_value(150, 2, 1e308), ["fit.data[0].force", "line 152", "magnitude from 1e-100 to 1e+100"]),
+    (lambda rows: [[t, d, f * 1e200] for t, d, f in rows], ["fit.data[0].force", "line 2", "magnitude"]),
+    (lambda rows: [[t, d, 0.0] for t, d, _ in rows[:-1]] + [[rows[-1][0], rows[-1][1], 1.7976931348623157e308]],
+     ["fit.data[0].force", "line 301", "magnitude"]),
+    (set_value(150, 1, 1e308), ["fit.data[0].depth", "line 152", "magnitude"]),
+    (lambda rows: [[t, d, 0.0] for t, d, _ in rows], ["fit.data[0].force = 0 in every row", "noise"]),
+])
+def test_data_the_fit_cannot_weigh(run_mdr, fit_case, workdir, edit, fragments):
+    path = fit_case()
+    rewrite_curve(workdir, edit)
+    assert_bad_input(run_mdr("fit", path, "--out", workdir / "out"), *fragments)
+
+
+# Settings and values the fit cannot run with (once exit 0 or 1 with a wrong status, a raw glog line, "bad optional
+# access" or "(missing)"): refused with the key and its rule, one stderr line, nothing written.
+@pytest.mark.parametrize("edit, fragments", [
+    (('[fit]', '[fit]\nmax_iterations = 2147483648'), ["fit.max_iterations = 2147483648", "from 1 to 1000000"]),
+    (('[fit]', '[fit]\nelements = 1000000000\nfitted = "depth"'), ["fit.elements = 1000000000", "from 1 to"]),
+    (('[fit]', '[fit]\nstart = { "material.G" = 0.0 }\nbounds = { "material.G" = [0.0, 1.0e6] }'),
+     ["material.G = 0", "must be > 0", "start values"]),
+    (('[fit]', '[fit]\nstart = { "material.G" = 9007199254740993 }'),
+     ["fit.start.material.G = 9007199254740993", "cannot hold exactly"]),
+    (('free = ["material.G"]', 'free = "material.G"'), ["fit.free", "must be an array of dotted keys"]),
+    (('units = {', 'segment_column = "t"\nsegments = []\nunits = {'),
+     ["fit.data[0].segments = []", "at least one segment"]),
+    (('length = "um"', 'length = 1e308'), ["fit.data[0].units.length = 1e+308", "line 2", "magnitude"]),
+    (('model = "elastic"\nG = 5.0e4', 'model = "kelvin_voigt"\nG = 5.0e4\neta = 5e-320'),
+     ["material.eta = 5e-320", "subnormal"]),
+    (('model = "elastic"\nG = 5.0e4', 'model = "standard"\nG_inf = 5.0e4\nG1 = 5e-324\ntau1 = 0.5'),
+     ["material.G1 = 5e-324", "subnormal"]),
+])
+def test_fit_input_refused_with_its_key(run_mdr, fit_case, workdir, edit, fragments):
+    path = fit_case()
+    text = path.read_text()
+    assert edit[0] in text
+    text = text.replace(edit[0], edit[1], 1)
+    path.write_text(text.replace('"material.G"]', '"material.G_inf"]') if "G_inf" in text else text)
+    assert_bad_input(run_mdr("fit", path, "--out", workdir / "out"), *fragments)
+
+
+@pytest.mark.parametrize("spring_constant, fragments", [
+    ("1e308", ["fit.data[0].spring_constant = 1e+308", "line 2", "magnitude"]),
+    ("1e-308", ["fit.data[0].spring_constant = 1e-308", "subnormal"]),
+])
+def test_a_spring_constant_the_fit_cannot_weigh(run_mdr, fit_case, workdir, spring_constant, fragments):
+    path = fit_case()
+    rewrite_curve(workdir, lambda rows: [[t, -d, f * 1e-3] for t, d, f in rows])  # piezo, deflection in um
+    text = path.read_text().replace('depth = "depth_um"\nforce = "force_uN"',
+                                    f'piezo = "depth_um"\ndeflection = "force_uN"\nspring_constant = {spring_constant}')
+    path.write_text(text.replace(', force = "uN"', ""))
+    assert_bad_input(run_mdr("fit", path, "--out", workdir / "out"), *fragments)
+
+
+def test_a_depth_driven_curve_that_never_makes_contact(run_mdr, fit_case, workdir):
+    """All depths negative with the contact point fixed at the data's zero: the docs promise a refusal."""
+    path = fit_case('contact_point = "fixed"')
+    rewrite_curve(workdir, lambda rows: [[t, -1.0 - 1e-3 * i, f] for i, (t, _, f) in enumerate(rows)])
+    assert_bad_input(run_mdr("fit", path, "--out", workdir / "out"), "fit.data[0]", "never makes contact")

@@ -81,3 +81,17 @@ def test_a_spectrum_alone_writes_one_fit_and_its_moduli(run_mdr, case, workdir):
 ])
 def test_bad_candidates(run_mdr, case, workdir, extra, fragments):
     assert_bad_input(run_mdr("fit", case(extra), "--out", workdir / "out"), *fragments)
+
+
+def test_a_candidates_fit_replaces_its_own_result_directory(run_mdr, case, workdir):
+    """mdr wrote the candidates' folders, so a second fit into the same directory replaces it (once refused: "holds
+    prony2, which mdr did not write"); a file of the user's put into a folder still protects it."""
+    path = case('candidates = ["elastic"]')
+    assert run_mdr("fit", path, "--out", workdir / "out", timeout=300).returncode == 0
+    again = run_mdr("fit", path, "--out", workdir / "out", timeout=300)
+    assert again.returncode == 0, again.stderr
+    assert (workdir / "out" / "elastic" / "fit.json").is_file()
+    (workdir / "out" / "elastic" / "notes.txt").write_text("mine", encoding="utf-8")
+    refused = run_mdr("fit", path, "--out", workdir / "out", timeout=300)
+    assert refused.returncode == 2 and "holds elastic, which mdr did not write" in refused.stderr, refused.stderr
+    assert (workdir / "out" / "elastic" / "notes.txt").read_text(encoding="utf-8") == "mine"

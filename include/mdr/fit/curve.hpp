@@ -62,7 +62,9 @@ inline constexpr std::size_t minimum_curve_rows = 10;
 
 /// Reads and validates a curve from its CSV source and estimates its noise, contact point and baseline
 /// (estimate_contact). Throws mdr::InvalidInput naming the file, column and row for a missing file or column,
-/// a value that is not a finite number, time not strictly increasing, or too few rows; and for a source that
+/// a value that is not a finite number or (in the case's units) not 0 or of a magnitude from 1e-100 to 1e100 (the
+/// unit or spring constant is named when it takes a file's value out of that range), time not strictly increasing,
+/// or too few rows; and for a source that
 /// names both or neither depth sources (a depth column, or the AFM piezo and deflection columns with a spring
 /// constant > 0), a force column beside the AFM columns, or segments that select no row. The keys of its errors
 /// are those of a `[[fit.data]]` table (`time`, `force`, `segments`, ...): a caller prefixes them

@@ -43,14 +43,20 @@ enum class BaselineMode {
     fixed,     ///< zero: the data's force is already baseline-corrected
 };
 
+/// The most Levenberg-Marquardt iterations a fit may ask for (Ceres counts them in an int; a fit that needs more
+/// has no optimum the data determine).
+inline constexpr std::size_t max_fit_iterations = 1000000;
+
 /// Settings of a fit; the defaults suit a measured curve.
 struct FitSettings {
     Fitted fitted = Fitted::force;                               ///< see Fitted
     ContactPointMode contact_point = ContactPointMode::fit;      ///< see ContactPointMode
     BaselineMode baseline = BaselineMode::fit;                   ///< see BaselineMode
-    std::size_t max_iterations = 200;                            ///< Levenberg-Marquardt iterations at most
+    /// Levenberg-Marquardt iterations at most, from 1 to max_fit_iterations.
+    std::size_t max_iterations = 200;
     /// Elements of the element model where it runs (force-driven curves, depth histories outside Ting's class,
-    /// see FitResult::element_evaluations); unset: the case's `[numerics] elements` or default_fit_elements.
+    /// see FitResult::element_evaluations), from 1 to foundation::max_elements; unset: the case's
+    /// `[numerics] elements` or default_fit_elements.
     std::optional<std::size_t> elements;
     /// Called before every model run and within long runs; throws mdr::Interrupted to stop the fit (Ctrl-C of the
     /// command line or of Python). The fit then throws mdr::Interrupted and returns no result.
@@ -173,12 +179,15 @@ struct FitResult {
 /// What curve `c` of the problem fits: its own Curve::fitted, else FitSettings::fitted.
 Fitted fitted_of(const FitProblem& problem, std::size_t c);
 
-/// Checks a problem (one line per rule: bounds, start values, curves or rebound data, enough points, a contact).
-/// Throws mdr::InvalidInput.
+/// Checks a problem (one line per rule: settings, bounds, start values, curves or rebound data, enough points).
+/// Throws mdr::InvalidInput. fit() checks further what needs the prepared curves: each curve makes contact, its
+/// fitted quantity is not 0 in every row, and the model and its residuals are finite at the start values.
 void validate(const FitProblem& problem);
 
 /// Fits the model to the curves. Throws mdr::InvalidInput for a problem that breaks a rule (validate); a fit that
-/// fails to converge returns its status.
+/// fails to converge returns its status. Throws std::runtime_error when a number of the result that must be finite
+/// is not (the fitted values, the model, the RMS residual and noise, the material's functions): no such result is
+/// returned.
 FitResult fit(const FitProblem& problem);
 
 }  // namespace mdr::fit

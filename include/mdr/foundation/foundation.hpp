@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "mdr/foundation/step_coefficients.hpp"
@@ -17,6 +18,9 @@ namespace mdr::foundation {
 
 /// Most elements a foundation may have: beyond, the state would need more memory than the machines we target.
 inline constexpr std::size_t max_elements = std::size_t{1} << 28;
+
+/// Throws mdr::InvalidInput naming `key` unless 1 <= `count` <= max_elements (`numerics.elements`, `fit.elements`).
+void require_element_count(const std::string& key, std::size_t count);
 
 /// An element that came into contact inside the last step, and where (eq. 14).
 struct Entry {

@@ -266,3 +266,34 @@ TEST_F(LoadCurveTest, RefusesUnitsThatAreNotPositive) {
 
 }  // namespace
 }  // namespace mdr::fit
+
+namespace mdr::fit {
+namespace {
+
+// A unit or spring constant that takes a file's values out of what the fit can weigh (curve_value_in_range) is named
+// with the value, the column and the line: the file's values are fine (once: "depth = inf" at a line that reads 100,
+// or a fit that "converged" with an infinite residual).
+TEST_F(LoadCurveTest, NamesTheFactorThatTakesValuesOutOfRange) {
+    CurveSource source = plain(write("approach.csv", approach_csv()));
+    source.length_unit = 1e300;
+    EXPECT_EQ(message(source), "units.length = 1e+300: takes 100 of column \"d_nm\" (in approach.csv, line 3) to "
+                               "1e+302, and a curve's value must be 0 or of a magnitude from 1e-100 to 1e+100 (the "
+                               "fit squares and sums the values)");
+    source = plain(source.file);
+    source.force_unit = 1e-300;
+    EXPECT_EQ(message(source).substr(0, 88), "units.force = 1e-300: takes 1 of column \"F_nN\" (in approach.csv, "
+                                             "line 12) to 1e-300, and");
+    source = plain(source.file);
+    source.depth_column = "";
+    source.force_column = "";
+    source.piezo_column = "d_nm";
+    source.deflection_column = "F_nN";
+    source.spring_constant = 1e200;  // a deflection of 1 nN (as length 1e-9) becomes a force of 1e191
+    EXPECT_EQ(message(source).rfind("spring_constant = 1e+200: takes 1e-09 of column \"F_nN\" (in approach.csv, "
+                                    "line 12) to 1e+191, and",
+                                    0),
+              0u);
+}
+
+}  // namespace
+}  // namespace mdr::fit

@@ -67,6 +67,26 @@ TEST(MakeCurve, RefusesValuesThatAreNotFinite) {
     EXPECT_EQ(message(a), "time = -inf: at index 0: must be a finite number");
 }
 
+// The fit squares, differences and sums a curve's values: beyond 1e100 or below 1e-100 (0 apart) the residuals,
+// noise and estimates overflow or underflow (a force of 1e308 once "converged" with an infinite residual).
+TEST(MakeCurve, RefusesValuesTheFitCannotWeigh) {
+    Arrays a = ramp();
+    a.force[15] = 1e101;
+    EXPECT_EQ(message(a), "force = 1e+101: at index 15: must be 0 or of a magnitude from 1e-100 to 1e+100 (the fit "
+                          "squares and sums the values)");
+    a = ramp();
+    a.depth[4] = -1e-101;
+    EXPECT_EQ(message(a), "depth = -1e-101: at index 4: must be 0 or of a magnitude from 1e-100 to 1e+100 (the fit "
+                          "squares and sums the values)");
+    a = ramp();
+    a.force[15] = std::numeric_limits<double>::max();
+    EXPECT_NE(message(a).find("force = 1.7976931348623157e+308: at index 15"), std::string::npos);
+    a = ramp();
+    a.force[15] = 1e100;
+    a.depth[4] = -1e-100;
+    EXPECT_EQ(message(a), "(accepted)");  // the limits themselves, and 0 (the ramp's first rows)
+}
+
 TEST(MakeCurve, RefusesTimeThatDoesNotIncrease) {
     Arrays a = ramp();
     a.time[5] = a.time[4];
