@@ -1,13 +1,15 @@
 #include "instrument/jpk_reader.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <bit>
+#include <limits>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <utility>
 
-#include "instrument/java_properties.hpp"
 #include "instrument/zip_archive.hpp"
 #include "mdr/error.hpp"
 
@@ -161,36 +163,44 @@ Affine slot_affine(const Header& header, const std::string& channel, const std::
     return total;
 }
 
-/// The encoded values (encoder scaling applied) of a channel's big-endian samples.
-std::vector<double> decode(const std::string& bytes, const Encoding& encoding) {
-    const std::size_t count = bytes.size() / encoding.bytes;
-    std::vector<double> values(count);
-    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-    for (std::size_t i = 0; i < count; ++i) {
-        std::uint64_t word = 0;
-        for (std::size_t b = 0; b < encoding.bytes; ++b) word = (word << 8) | data[i * encoding.bytes + b];
-        double raw = 0.0;
-        const unsigned bits = static_cast<unsigned>(encoding.bytes * 8);
-        switch (encoding.kind) {
-            case Encoding::Kind::unsigned_integer: raw = static_cast<double>(word); break;
-            case Encoding::Kind::signed_integer:
-                // Sign extension: shift the word's top bit to bit 63, then shift back arithmetically (C++20).
-                raw = static_cast<double>(static_cast<std::int64_t>(word << (64 - bits)) >> (64 - bits));
-                break;
-            case Encoding::Kind::floating:
-                if (encoding.bytes == 4) {
-                    float f = 0.0f;
-                    const auto narrow = static_cast<std::uint32_t>(word);
-                    std::memcpy(&f, &narrow, sizeof f);
-                    raw = f;
-                } else {
-                    std::memcpy(&raw, &word, sizeof raw);
-                }
-                break;
-        }
-        values[i] = encoding.scaling.offset + encoding.scaling.multiplier * raw;
+std::uint16_t from_big_endian(std::uint16_t word) {
+    return std::endian::native == std::endian::little ? __builtin_bswap16(word) : word;
+}
+std::uint32_t from_big_endian(std::uint32_t word) {
+    return std::endian::native == std::endian::little ? __builtin_bswap32(word) : word;
+}
+std::uint64_t from_big_endian(std::uint64_t word) {
+    return std::endian::native == std::endian::little ? __builtin_bswap64(word) : word;
+}
+
+/// The big-endian numbers of type `Value` (stored as `Word`) in `bytes`, as doubles.
+template <typename Word, typename Value>
+void decode_as(const std::string& bytes, std::vector<double>& raw) {
+    static_assert(sizeof(Word) == sizeof(Value));
+    raw.resize(bytes.size() / sizeof(Word));
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+        Word word;
+        std::memcpy(&word, bytes.data() + i * sizeof(Word), sizeof word);
+        word = from_big_endian(word);
+        Value value;
+        std::memcpy(&value, &word, sizeof value);
+        raw[i] = static_cast<double>(value);
     }
-    return values;
+}
+
+/// The stored numbers of a channel, before the encoder's scaling.
+void decode(const std::string& bytes, const Encoding& encoding, std::vector<double>& raw) {
+    using Kind = Encoding::Kind;
+    switch (encoding.bytes * 4 + static_cast<std::size_t>(encoding.kind)) {
+        case 2 * 4 + static_cast<std::size_t>(Kind::signed_integer): decode_as<std::uint16_t, std::int16_t>(bytes, raw); break;
+        case 2 * 4 + static_cast<std::size_t>(Kind::unsigned_integer): decode_as<std::uint16_t, std::uint16_t>(bytes, raw); break;
+        case 4 * 4 + static_cast<std::size_t>(Kind::signed_integer): decode_as<std::uint32_t, std::int32_t>(bytes, raw); break;
+        case 4 * 4 + static_cast<std::size_t>(Kind::unsigned_integer): decode_as<std::uint32_t, std::uint32_t>(bytes, raw); break;
+        case 4 * 4 + static_cast<std::size_t>(Kind::floating): decode_as<std::uint32_t, float>(bytes, raw); break;
+        case 8 * 4 + static_cast<std::size_t>(Kind::signed_integer): decode_as<std::uint64_t, std::int64_t>(bytes, raw); break;
+        case 8 * 4 + static_cast<std::size_t>(Kind::unsigned_integer): decode_as<std::uint64_t, std::uint64_t>(bytes, raw); break;
+        default: decode_as<std::uint64_t, double>(bytes, raw);
+    }
 }
 
 /// The measured height sensors, preferred in this order over the piezo's `height`.
@@ -206,9 +216,9 @@ bool lists(const std::string& list, const std::string& name) {
     return false;
 }
 
-/// The samples of one calibrated channel of a segment: encoded values through the slot's affine map.
-std::vector<double> channel_values(ZipArchive& zip, const Header& header, const std::string& folder,
-                                   const std::string& channel, std::size_t points, const Affine& slot) {
+/// A channel of a segment: its stored numbers (`raw`) and the encoder's scaling to its base slot.
+Affine read_channel(ZipArchive& zip, const Header& header, const std::string& folder, const std::string& channel,
+                    std::size_t points, std::vector<double>& raw) {
     const Encoding encoding = channel_encoding(header, channel);
     const std::string member = folder + header.text("channel." + channel + ".data.file.name");
     const std::string bytes = zip.read(member);
@@ -218,9 +228,17 @@ std::vector<double> channel_values(ZipArchive& zip, const Header& header, const 
                                std::to_string(points) + " points of " + std::to_string(encoding.bytes) +
                                " bytes (truncated or corrupted)");
     }
-    std::vector<double> values = decode(bytes, encoding);
-    for (double& value : values) value = slot.offset + slot.multiplier * value;
-    return values;
+    decode(bytes, encoding, raw);
+    return encoding.scaling;
+}
+
+/// Appends `slot(encoder(raw))` to `out`: a channel calibrated to one slot of its conversion chain.
+void append_calibrated(std::vector<double>& out, const std::vector<double>& raw, const Affine& encoder,
+                       const Affine& slot) {
+    const Affine total{slot.offset + slot.multiplier * encoder.offset, slot.multiplier * encoder.multiplier};
+    const std::size_t start = out.size();
+    out.resize(start + raw.size());
+    for (std::size_t i = 0; i < raw.size(); ++i) out[start + i] = total.offset + total.multiplier * raw[i];
 }
 
 /// One curve: the segments under `root` (`""` or `index/N/`), described by `series` (its header.properties).
@@ -235,6 +253,7 @@ Curve read_series(ZipArchive& zip, const std::string& root, const Properties& se
     while (zip.contains(root + "segments/" + std::to_string(segments) + "/segment-header.properties")) ++segments;
     if (segments == 0) throw series_header.error(type + ".force-segments.count", "(no segments/0/)", "a curve needs a segment");
     double start_time = 0.0;
+    std::vector<double> scratch;
     for (std::size_t index = 0; index < segments; ++index) {
         const std::string folder = root + "segments/" + std::to_string(index) + "/";
         const std::string member = folder + "segment-header.properties";
@@ -281,20 +300,20 @@ Curve read_series(ZipArchive& zip, const std::string& root, const Properties& se
             curve.spring_constant = spring_constant;
             curve.sensitivity = sensitivity;
         }
-        const auto force = channel_values(zip, header, folder, "vDeflection", points,
-                                          slot_affine(header, "vDeflection", "force"));
-        const auto deflection = channel_values(zip, header, folder, "vDeflection", points,
-                                               slot_affine(header, "vDeflection", "distance"));
+        std::vector<double>& raw = scratch;
+        const Affine volts = read_channel(zip, header, folder, "vDeflection", points, raw);
+        append_calibrated(curve.force, raw, volts, slot_affine(header, "vDeflection", "force"));
+        append_calibrated(curve.deflection, raw, volts, slot_affine(header, "vDeflection", "distance"));
         const std::string& height_slot = header.text("channel." + height + ".conversion-set.conversions.default");
-        const auto heights = channel_values(zip, header, folder, height, points, slot_affine(header, height, height_slot));
-        curve.force.insert(curve.force.end(), force.begin(), force.end());
-        curve.deflection.insert(curve.deflection.end(), deflection.begin(), deflection.end());
-        curve.height.insert(curve.height.end(), heights.begin(), heights.end());
+        const Affine height_encoder = read_channel(zip, header, folder, height, points, raw);
+        append_calibrated(curve.height, raw, height_encoder, slot_affine(header, height, height_slot));
         const double step = duration / static_cast<double>(points);
-        for (std::size_t i = 0; i < points; ++i) {
-            curve.time.push_back(start_time + static_cast<double>(i) * step);
-            curve.segment.push_back(curve.segment_names.size() - 1);
+        if (curve.segment_names.size() > std::numeric_limits<std::uint16_t>::max()) {
+            throw header.error("force-segment-header", member, "a curve holds at most 65535 segments");
         }
+        const auto segment = static_cast<std::uint16_t>(curve.segment_names.size() - 1);
+        for (std::size_t i = 0; i < points; ++i) curve.time.push_back(start_time + static_cast<double>(i) * step);
+        curve.segment.insert(curve.segment.end(), points, segment);
         start_time += duration;
     }
     if (curve.force.empty()) throw series_header.error(type, "(no samples)", "a curve needs samples");
@@ -355,28 +374,29 @@ bool ends_with(const std::string& text, std::string_view tail) {
 
 }  // namespace
 
-std::vector<Curve> read_jpk(const std::filesystem::path& path) {
-    ZipArchive zip(path);
-    const Properties top = parse_properties(zip.read("header.properties"), zip.file() + " header.properties");
-    Properties shared;
+JpkSource::JpkSource(const std::filesystem::path& path) : zip_(std::make_unique<ZipArchive>(path)) {
+    ZipArchive& zip = *zip_;
+    top_ = parse_properties(zip.read("header.properties"), zip.file() + " header.properties");
     if (zip.contains("shared-data/header.properties")) {
-        shared = parse_properties(zip.read("shared-data/header.properties"),
-                                  zip.file() + " shared-data/header.properties");
+        shared_ = parse_properties(zip.read("shared-data/header.properties"),
+                                   zip.file() + " shared-data/header.properties");
     }
-    const Header header(top, shared, zip.file(), "header.properties");
-    const std::string type = header.text("type");
-    const std::string extension = path.extension().string();
-    const bool map = ends_with(type, "-map");
-    if (!map && !ends_with(type, "-series")) {
-        throw header.error("type", type, "must be a force-scan series or map (a JPK force file)");
+    const Header header(top_, shared_, zip.file(), "header.properties");
+    type_ = header.text("type");
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const bool map = ends_with(type_, "-map");
+    if (!map && !ends_with(type_, "-series")) {
+        throw header.error("type", type_, "must be a force-scan series or map (a JPK force file)");
     }
-    if ((extension == ".jpk-force" && map) || ((extension == ".jpk-force-map" || extension == ".jpk-qi-data") && !map)) {
-        throw header.error("type", type, "does not match the file name's ending " + extension);
+    if ((extension == ".jpk-force" && map) ||
+        ((extension == ".jpk-force-map" || extension == ".jpk-qi-data") && !map)) {
+        throw header.error("type", type_, "does not match the file name's ending " + extension);
     }
     if (!map) {
-        Curve curve = read_series(zip, "", top, shared);
-        curve.metadata.insert(top.begin(), top.end());
-        return {std::move(curve)};
+        roots_.emplace_back();
+        return;
     }
     std::vector<std::size_t> indices;
     for (const std::string& name : zip.names()) {
@@ -384,33 +404,47 @@ std::vector<Curve> read_jpk(const std::filesystem::path& path) {
         if (map_index(name, index)) indices.push_back(index);
     }
     std::sort(indices.begin(), indices.end());
-    if (indices.empty()) throw header.error(type, "(no index/N/header.properties)", "a map needs curves");
-    const std::size_t lowest = header.count(type + ".indexes.min");
-    const std::size_t highest = header.count(type + ".indexes.max");
-    std::vector<Curve> curves;
-    curves.reserve(indices.size());
+    if (indices.empty()) throw header.error(type_, "(no index/N/header.properties)", "a map needs curves");
+    const std::size_t lowest = header.count(type_ + ".indexes.min");
+    const std::size_t highest = header.count(type_ + ".indexes.max");
     for (const std::size_t index : indices) {
         if (index < lowest || index > highest) {
-            throw header.error(type + ".indexes.max", std::to_string(highest),
+            throw header.error(type_ + ".indexes.max", std::to_string(highest),
                                "the archive holds curve index/" + std::to_string(index) + " outside " +
                                    std::to_string(lowest) + ".." + std::to_string(highest));
         }
-        const std::string root = "index/" + std::to_string(index) + "/";
-        const Properties series = parse_properties(zip.read(root + "header.properties"),
-                                                   zip.file() + " " + root + "header.properties");
-        Curve curve = read_series(zip, root, series, shared);
-        const Header series_header(series, shared, zip.file(), root + "header.properties");
-        const std::string series_type = series_header.text("type");
-        curve.in_map = true;
-        curve.position.x = series_header.number(series_type + ".header.position.x");
-        curve.position.y = series_header.number(series_type + ".header.position.y");
-        curve.position.index = series_header.count(series_type + ".header.position-index");
-        place_on_grid(header, type, curve);
-        curve.metadata.insert(series.begin(), series.end());
-        curve.metadata.insert(top.begin(), top.end());
-        curves.push_back(std::move(curve));
+        roots_.push_back("index/" + std::to_string(index) + "/");
+        if (!zip.contains(roots_.back() + "segments/0/segment-header.properties")) {
+            throw InvalidInput(zip.file(), roots_.back(), "a curve of the map has no segments/0/ (missing pixel data)");
+        }
     }
-    return curves;
+}
+
+JpkSource::~JpkSource() = default;
+
+std::size_t JpkSource::size() const { return roots_.size(); }
+
+Curve JpkSource::read(std::size_t index) {
+    ZipArchive& zip = *zip_;
+    const std::string& root = roots_.at(index);
+    if (root.empty()) {
+        Curve curve = read_series(zip, "", top_, shared_);
+        curve.metadata.insert(top_.begin(), top_.end());
+        return curve;
+    }
+    const Properties series = parse_properties(zip.read(root + "header.properties"),
+                                               zip.file() + " " + root + "header.properties");
+    Curve curve = read_series(zip, root, series, shared_);
+    const Header series_header(series, shared_, zip.file(), root + "header.properties");
+    const std::string series_type = series_header.text("type");
+    curve.in_map = true;
+    curve.position.x = series_header.number(series_type + ".header.position.x");
+    curve.position.y = series_header.number(series_type + ".header.position.y");
+    curve.position.index = series_header.count(series_type + ".header.position-index");
+    place_on_grid(Header(top_, shared_, zip.file(), "header.properties"), type_, curve);
+    curve.metadata.insert(series.begin(), series.end());
+    curve.metadata.insert(top_.begin(), top_.end());
+    return curve;
 }
 
 }  // namespace mdr::instrument

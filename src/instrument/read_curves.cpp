@@ -13,14 +13,19 @@ namespace mdr::instrument {
 
 namespace {
 
-using Reader = std::vector<Curve> (*)(const std::filesystem::path&);
+using Opener = std::unique_ptr<CurveSource> (*)(const std::filesystem::path&);
+
+template <typename Source>
+std::unique_ptr<CurveSource> open_as(const std::filesystem::path& path) {
+    return std::make_unique<Source>(path);
+}
 
 /// A format: its file name endings, the first bytes every such file starts with, and its reader.
 struct Format {
     std::vector<std::string> extensions;
     std::string magic;
     std::string description;
-    Reader reader;
+    Opener open;
 };
 
 const std::vector<Format>& formats() {
@@ -28,7 +33,7 @@ const std::vector<Format>& formats() {
         {{".jpk-force", ".jpk-force-map", ".jpk-qi-data", ".jpk-qi-series"},
          std::string("PK\x03\x04", 4),
          "a zip archive (JPK)",
-         &read_jpk},
+         &open_as<JpkSource>},
     };
     return table;
 }
@@ -46,7 +51,7 @@ std::vector<std::string> supported_extensions() {
     return result;
 }
 
-std::vector<Curve> read_curves(const std::filesystem::path& path) {
+CurveFile::CurveFile(const std::filesystem::path& path) {
     const std::string file = path.string();
     const std::string extension = lower(path.extension().string());
     const auto format = std::find_if(formats().begin(), formats().end(), [&](const Format& candidate) {
@@ -64,7 +69,28 @@ std::vector<Curve> read_curves(const std::filesystem::path& path) {
     if (static_cast<std::size_t>(stream.gcount()) != head.size() || head != format->magic) {
         throw InvalidInput(file, extension, "the file is not " + format->description + " as its ending says");
     }
-    return format->reader(path);
+    source_ = format->open(path);
+}
+
+CurveFile::~CurveFile() = default;
+CurveFile::CurveFile(CurveFile&&) noexcept = default;
+CurveFile& CurveFile::operator=(CurveFile&&) noexcept = default;
+
+std::size_t CurveFile::size() const { return source_->size(); }
+
+Curve CurveFile::read(std::size_t index) {
+    if (index >= source_->size()) {
+        throw InvalidInput("curve index", std::to_string(index), "must be < " + std::to_string(source_->size()));
+    }
+    return source_->read(index);
+}
+
+std::vector<Curve> read_curves(const std::filesystem::path& path) {
+    CurveFile file(path);
+    std::vector<Curve> curves;
+    curves.reserve(file.size());
+    for (std::size_t index = 0; index < file.size(); ++index) curves.push_back(file.read(index));
+    return curves;
 }
 
 }  // namespace mdr::instrument

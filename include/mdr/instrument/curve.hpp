@@ -3,6 +3,7 @@
 /// One force curve as an AFM or nanoindentation instrument recorded it, in SI units, with its metadata.
 
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -37,7 +38,7 @@ struct Curve {
     std::vector<double> force;        ///< N
     std::vector<double> height;       ///< m, larger = farther from the sample
     std::vector<double> deflection;   ///< m, cantilever deflection
-    std::vector<std::size_t> segment; ///< per sample, the index into `segment_names`
+    std::vector<std::uint16_t> segment; ///< per sample, the index into `segment_names`
     /// Per segment, in order: `extend`, `pause` or `retract`.
     std::vector<std::string> segment_names;
     double spring_constant = 0.0;     ///< N/m

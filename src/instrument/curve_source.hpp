@@ -1,0 +1,22 @@
+#pragma once
+/// \file
+/// What each format's reader implements: a file opened once, its curves read one at a time.
+
+#include <cstddef>
+
+#include "mdr/instrument/curve.hpp"
+
+namespace mdr::instrument {
+
+/// An opened instrument file. The constructor of an implementation reads what is needed to count and check the
+/// curves; `read` decodes one curve's samples.
+class CurveSource {
+public:
+    virtual ~CurveSource() = default;
+    /// How many curves the file holds.
+    virtual std::size_t size() const = 0;
+    /// The curve at `index` (< size()), in the instrument's order.
+    virtual Curve read(std::size_t index) = 0;
+};
+
+}  // namespace mdr::instrument
