@@ -6,7 +6,9 @@ namespace mdr::instrument {
 
 namespace {
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\f'; }
+bool is_blank(char c) {
+    return c == ' ' || c == '\t' || c == '\f';
+}
 
 void append_utf8(std::string& out, unsigned code_point) {
     if (code_point < 0x80) {
@@ -33,10 +35,14 @@ unsigned hex4(std::string_view text, std::size_t at, const std::string& source) 
     for (std::size_t i = at; i < at + 4; ++i) {
         const char c = text[i];
         unsigned digit = 0;
-        if (c >= '0' && c <= '9') digit = static_cast<unsigned>(c - '0');
-        else if (c >= 'a' && c <= 'f') digit = static_cast<unsigned>(c - 'a' + 10);
-        else if (c >= 'A' && c <= 'F') digit = static_cast<unsigned>(c - 'A' + 10);
-        else throw InvalidInput(source, std::string(text), "has a \\u escape that is not four hex digits");
+        if (c >= '0' && c <= '9')
+            digit = static_cast<unsigned>(c - '0');
+        else if (c >= 'a' && c <= 'f')
+            digit = static_cast<unsigned>(c - 'a' + 10);
+        else if (c >= 'A' && c <= 'F')
+            digit = static_cast<unsigned>(c - 'A' + 10);
+        else
+            throw InvalidInput(source, std::string(text), "has a \\u escape that is not four hex digits");
         value = value * 16 + digit;
     }
     return value;
@@ -124,8 +130,7 @@ Properties parse_properties(std::string_view text, const std::string& source) {
         while (value_start < line.size() && is_blank(line[value_start])) ++value_start;
         if (value_start < line.size() && (line[value_start] == '=' || line[value_start] == ':')) ++value_start;
         while (value_start < line.size() && is_blank(line[value_start])) ++value_start;
-        result.insert_or_assign(unescape(line.substr(0, key_end), source),
-                                unescape(line.substr(value_start), source));
+        result.insert_or_assign(unescape(line.substr(0, key_end), source), unescape(line.substr(value_start), source));
     }
     return result;
 }

@@ -1,13 +1,13 @@
 #include "instrument/jpk_reader.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <bit>
-#include <limits>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <utility>
 
 #include "instrument/zip_archive.hpp"
@@ -118,16 +118,22 @@ Encoding channel_encoding(const Header& header, const std::string& channel) {
     const std::string* encoder = header.find(prefix + "encoder.type");
     if (encoder == nullptr) {
         const std::string& type = header.text(prefix + "type");
-        if (type == "float" || type == "float-data") encoding.bytes = 4;
-        else if (type == "double" || type == "double-data") encoding.bytes = 8;
-        else throw header.error(prefix + "type", type, "must be float-data or double-data when there is no encoder");
+        if (type == "float" || type == "float-data")
+            encoding.bytes = 4;
+        else if (type == "double" || type == "double-data")
+            encoding.bytes = 8;
+        else
+            throw header.error(prefix + "type", type, "must be float-data or double-data when there is no encoder");
         encoding.kind = Encoding::Kind::floating;
         return encoding;
     }
     static const std::pair<const char*, std::pair<std::size_t, Encoding::Kind>> encoders[] = {
-        {"signedshort", {2, Encoding::Kind::signed_integer}},   {"unsignedshort", {2, Encoding::Kind::unsigned_integer}},
-        {"signedinteger", {4, Encoding::Kind::signed_integer}}, {"unsignedinteger", {4, Encoding::Kind::unsigned_integer}},
-        {"signedlong", {8, Encoding::Kind::signed_integer}},    {"unsignedlong", {8, Encoding::Kind::unsigned_integer}}};
+        {"signedshort", {2, Encoding::Kind::signed_integer}},
+        {"unsignedshort", {2, Encoding::Kind::unsigned_integer}},
+        {"signedinteger", {4, Encoding::Kind::signed_integer}},
+        {"unsignedinteger", {4, Encoding::Kind::unsigned_integer}},
+        {"signedlong", {8, Encoding::Kind::signed_integer}},
+        {"unsignedlong", {8, Encoding::Kind::unsigned_integer}}};
     const auto* known = std::find_if(std::begin(encoders), std::end(encoders),
                                      [&](const auto& entry) { return *encoder == entry.first; });
     if (known == std::end(encoders)) {
@@ -153,7 +159,8 @@ Affine slot_affine(const Header& header, const std::string& channel, const std::
         if (steps.size() > 16) throw header.error(set + "conversion." + slot, current, "conversion chain loops");
         const std::string conversion = set + "conversion." + current + ".";
         const std::string* defined = header.find(conversion + "defined");
-        if (defined != nullptr && *defined != "true") throw header.error(conversion + "defined", *defined, "must be true");
+        if (defined != nullptr && *defined != "true")
+            throw header.error(conversion + "defined", *defined, "must be true");
         steps.push_back(scaling_at(header, conversion + "scaling."));
         current = header.text(conversion + "base-calibration-slot");
     }
@@ -192,13 +199,25 @@ void decode_as(const std::string& bytes, std::vector<double>& raw) {
 void decode(const std::string& bytes, const Encoding& encoding, std::vector<double>& raw) {
     using Kind = Encoding::Kind;
     switch (encoding.bytes * 4 + static_cast<std::size_t>(encoding.kind)) {
-        case 2 * 4 + static_cast<std::size_t>(Kind::signed_integer): decode_as<std::uint16_t, std::int16_t>(bytes, raw); break;
-        case 2 * 4 + static_cast<std::size_t>(Kind::unsigned_integer): decode_as<std::uint16_t, std::uint16_t>(bytes, raw); break;
-        case 4 * 4 + static_cast<std::size_t>(Kind::signed_integer): decode_as<std::uint32_t, std::int32_t>(bytes, raw); break;
-        case 4 * 4 + static_cast<std::size_t>(Kind::unsigned_integer): decode_as<std::uint32_t, std::uint32_t>(bytes, raw); break;
+        case 2 * 4 + static_cast<std::size_t>(Kind::signed_integer):
+            decode_as<std::uint16_t, std::int16_t>(bytes, raw);
+            break;
+        case 2 * 4 + static_cast<std::size_t>(Kind::unsigned_integer):
+            decode_as<std::uint16_t, std::uint16_t>(bytes, raw);
+            break;
+        case 4 * 4 + static_cast<std::size_t>(Kind::signed_integer):
+            decode_as<std::uint32_t, std::int32_t>(bytes, raw);
+            break;
+        case 4 * 4 + static_cast<std::size_t>(Kind::unsigned_integer):
+            decode_as<std::uint32_t, std::uint32_t>(bytes, raw);
+            break;
         case 4 * 4 + static_cast<std::size_t>(Kind::floating): decode_as<std::uint32_t, float>(bytes, raw); break;
-        case 8 * 4 + static_cast<std::size_t>(Kind::signed_integer): decode_as<std::uint64_t, std::int64_t>(bytes, raw); break;
-        case 8 * 4 + static_cast<std::size_t>(Kind::unsigned_integer): decode_as<std::uint64_t, std::uint64_t>(bytes, raw); break;
+        case 8 * 4 + static_cast<std::size_t>(Kind::signed_integer):
+            decode_as<std::uint64_t, std::int64_t>(bytes, raw);
+            break;
+        case 8 * 4 + static_cast<std::size_t>(Kind::unsigned_integer):
+            decode_as<std::uint64_t, std::uint64_t>(bytes, raw);
+            break;
         default: decode_as<std::uint64_t, double>(bytes, raw);
     }
 }
@@ -251,7 +270,8 @@ Curve read_series(ZipArchive& zip, const std::string& root, const Properties& se
     // stops early (spot3-0192 plans 3, records 2) writes fewer, and a segment past a gap is not read.
     std::size_t segments = 0;
     while (zip.contains(root + "segments/" + std::to_string(segments) + "/segment-header.properties")) ++segments;
-    if (segments == 0) throw series_header.error(type + ".force-segments.count", "(no segments/0/)", "a curve needs a segment");
+    if (segments == 0)
+        throw series_header.error(type + ".force-segments.count", "(no segments/0/)", "a curve needs a segment");
     double start_time = 0.0;
     std::vector<double> scratch;
     for (std::size_t index = 0; index < segments; ++index) {
@@ -285,8 +305,8 @@ Curve read_series(ZipArchive& zip, const std::string& root, const Properties& se
         if (!lists(channels, height)) throw header.error("channels.list", channels, "must list a height channel");
         if (curve.height_channel.empty()) curve.height_channel = height;
         if (curve.height_channel != height) {
-            throw header.error("channels.list", channels, "must hold the height channel of the first segment, " +
-                                                              curve.height_channel);
+            throw header.error("channels.list", channels,
+                               "must hold the height channel of the first segment, " + curve.height_channel);
         }
         // vDeflection: volts -> distance (x sensitivity, m/V) -> force (x spring constant, N/m).
         const std::string deflection_set = "channel.vDeflection.conversion-set.conversion.";
@@ -378,8 +398,8 @@ JpkSource::JpkSource(const std::filesystem::path& path) : zip_(std::make_unique<
     ZipArchive& zip = *zip_;
     top_ = parse_properties(zip.read("header.properties"), zip.file() + " header.properties");
     if (zip.contains("shared-data/header.properties")) {
-        shared_ = parse_properties(zip.read("shared-data/header.properties"),
-                                   zip.file() + " shared-data/header.properties");
+        shared_ =
+            parse_properties(zip.read("shared-data/header.properties"), zip.file() + " shared-data/header.properties");
     }
     const Header header(top_, shared_, zip.file(), "header.properties");
     type_ = header.text("type");
@@ -422,7 +442,9 @@ JpkSource::JpkSource(const std::filesystem::path& path) : zip_(std::make_unique<
 
 JpkSource::~JpkSource() = default;
 
-std::size_t JpkSource::size() const { return roots_.size(); }
+std::size_t JpkSource::size() const {
+    return roots_.size();
+}
 
 Curve JpkSource::read(std::size_t index) {
     ZipArchive& zip = *zip_;
@@ -432,8 +454,8 @@ Curve JpkSource::read(std::size_t index) {
         curve.metadata.insert(top_.begin(), top_.end());
         return curve;
     }
-    const Properties series = parse_properties(zip.read(root + "header.properties"),
-                                               zip.file() + " " + root + "header.properties");
+    const Properties series =
+        parse_properties(zip.read(root + "header.properties"), zip.file() + " " + root + "header.properties");
     Curve curve = read_series(zip, root, series, shared_);
     const Header series_header(series, shared_, zip.file(), root + "header.properties");
     const std::string series_type = series_header.text("type");

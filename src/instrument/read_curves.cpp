@@ -47,7 +47,8 @@ std::string lower(std::string text) {
 
 std::vector<std::string> supported_extensions() {
     std::vector<std::string> result;
-    for (const Format& format : formats()) result.insert(result.end(), format.extensions.begin(), format.extensions.end());
+    for (const Format& format : formats())
+        result.insert(result.end(), format.extensions.begin(), format.extensions.end());
     return result;
 }
 
@@ -76,7 +77,9 @@ CurveFile::~CurveFile() = default;
 CurveFile::CurveFile(CurveFile&&) noexcept = default;
 CurveFile& CurveFile::operator=(CurveFile&&) noexcept = default;
 
-std::size_t CurveFile::size() const { return source_->size(); }
+std::size_t CurveFile::size() const {
+    return source_->size();
+}
 
 Curve CurveFile::read(std::size_t index) {
     if (index >= source_->size()) {

@@ -26,7 +26,9 @@ ZipArchive::ZipArchive(const std::filesystem::path& path) : file_(path.string())
     }
 }
 
-ZipArchive::~ZipArchive() { zip_discard(archive_); }
+ZipArchive::~ZipArchive() {
+    zip_discard(archive_);
+}
 
 std::vector<std::string> ZipArchive::names() const {
     const zip_int64_t count = zip_get_num_entries(archive_, 0);
@@ -39,7 +41,9 @@ std::vector<std::string> ZipArchive::names() const {
     return result;
 }
 
-bool ZipArchive::contains(const std::string& name) const { return zip_name_locate(archive_, name.c_str(), 0) >= 0; }
+bool ZipArchive::contains(const std::string& name) const {
+    return zip_name_locate(archive_, name.c_str(), 0) >= 0;
+}
 
 std::string ZipArchive::read(const std::string& name) {
     const zip_int64_t index = zip_name_locate(archive_, name.c_str(), 0);

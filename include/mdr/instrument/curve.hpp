@@ -22,11 +22,11 @@ struct MapGrid {
 
 /// Where a curve of a map was taken: the stage position and the pixel of the grid.
 struct MapPosition {
-    double x = 0.0;              ///< position, m, as the instrument states it
-    double y = 0.0;              ///< position, m
-    std::size_t column = 0;      ///< pixel index along x, 0 at the grid's low-x edge
-    std::size_t row = 0;         ///< pixel index along y, 0 at the grid's low-y edge
-    std::size_t index = 0;       ///< the instrument's own number of the curve in the map (JPK `position-index`)
+    double x = 0.0;          ///< position, m, as the instrument states it
+    double y = 0.0;          ///< position, m
+    std::size_t column = 0;  ///< pixel index along x, 0 at the grid's low-x edge
+    std::size_t row = 0;     ///< pixel index along y, 0 at the grid's low-y edge
+    std::size_t index = 0;   ///< the instrument's own number of the curve in the map (JPK `position-index`)
 };
 
 /// One force curve: equally long sample vectors in SI units, and what the file says about them.
@@ -34,22 +34,22 @@ struct MapPosition {
 /// `height` is the measured height sensor where the file has one, else the piezo height, oriented so that a
 /// larger height is farther from the sample (an approach lowers it).
 struct Curve {
-    std::vector<double> time;         ///< s, from the start of the first segment
-    std::vector<double> force;        ///< N
-    std::vector<double> height;       ///< m, larger = farther from the sample
-    std::vector<double> deflection;   ///< m, cantilever deflection
-    std::vector<std::uint16_t> segment; ///< per sample, the index into `segment_names`
+    std::vector<double> time;            ///< s, from the start of the first segment
+    std::vector<double> force;           ///< N
+    std::vector<double> height;          ///< m, larger = farther from the sample
+    std::vector<double> deflection;      ///< m, cantilever deflection
+    std::vector<std::uint16_t> segment;  ///< per sample, the index into `segment_names`
     /// Per segment, in order: `extend`, `pause` or `retract`.
     std::vector<std::string> segment_names;
-    double spring_constant = 0.0;     ///< N/m
-    double sensitivity = 0.0;         ///< m/V, deflection per photodiode volt (0 where the file has none)
-    std::string height_channel;       ///< the file's channel that `height` comes from (e.g. `strainGaugeHeight`)
-    bool in_map = false;              ///< whether `position` and `grid` are set (a curve of a map)
-    MapPosition position;             ///< where on the map (only when `in_map`)
-    MapGrid grid;                     ///< the map's raster (only when `in_map`)
+    double spring_constant = 0.0;  ///< N/m
+    double sensitivity = 0.0;      ///< m/V, deflection per photodiode volt (0 where the file has none)
+    std::string height_channel;    ///< the file's channel that `height` comes from (e.g. `strainGaugeHeight`)
+    bool in_map = false;           ///< whether `position` and `grid` are set (a curve of a map)
+    MapPosition position;          ///< where on the map (only when `in_map`)
+    MapGrid grid;                  ///< the map's raster (only when `in_map`)
     /// The header metadata as the file states it (JPK: the curve's own header properties, keys as in the file).
     std::map<std::string, std::string> metadata;
-    std::string source;               ///< the file, and the member or index within it
+    std::string source;  ///< the file, and the member or index within it
 };
 
 }  // namespace mdr::instrument
