@@ -1,10 +1,11 @@
 #include "mdr/instrument/read_curves.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <fstream>
+#include <string_view>
 
+#include "instrument/chiaro_reader.hpp"
 #include "instrument/jpk_reader.hpp"
 #include "mdr/alternatives.hpp"
 #include "mdr/error.hpp"
@@ -20,10 +21,17 @@ std::unique_ptr<CurveSource> open_as(const std::filesystem::path& path) {
     return std::make_unique<Source>(path);
 }
 
-/// A format: its file name endings, the first bytes every such file starts with, and its reader.
+/// How many first bytes of a file the formats are recognised by.
+constexpr std::size_t head_bytes = 4096;
+
+bool is_zip(std::string_view head) {
+    return head.substr(0, 4) == std::string_view("PK\x03\x04", 4);
+}
+
+/// A format: its file name endings, the test its first bytes must pass, and its reader.
 struct Format {
     std::vector<std::string> extensions;
-    std::string magic;
+    bool (*recognises)(std::string_view head);
     std::string description;
     Opener open;
 };
@@ -31,9 +39,10 @@ struct Format {
 const std::vector<Format>& formats() {
     static const std::vector<Format> table = {
         {{".jpk-force", ".jpk-force-map", ".jpk-qi-data", ".jpk-qi-series"},
-         std::string("PK\x03\x04", 4),
+         &is_zip,
          "a zip archive (JPK)",
          &open_as<JpkSource>},
+        {{".txt"}, &looks_like_chiaro, "an Optics11 Chiaro text export", &open_as<ChiaroSource>},
     };
     return table;
 }
@@ -47,30 +56,40 @@ std::string lower(std::string text) {
 
 std::vector<std::string> supported_extensions() {
     std::vector<std::string> result;
-    for (const Format& format : formats())
-        result.insert(result.end(), format.extensions.begin(), format.extensions.end());
+    for (const Format& format : formats()) {
+        for (const std::string& extension : format.extensions) {
+            if (std::find(result.begin(), result.end(), extension) == result.end()) result.push_back(extension);
+        }
+    }
     return result;
 }
 
 CurveFile::CurveFile(const std::filesystem::path& path) {
     const std::string file = path.string();
     const std::string extension = lower(path.extension().string());
-    const auto format = std::find_if(formats().begin(), formats().end(), [&](const Format& candidate) {
+    const auto has_extension = [&](const Format& candidate) {
         return std::find(candidate.extensions.begin(), candidate.extensions.end(), extension) !=
                candidate.extensions.end();
-    });
-    if (format == formats().end()) {
+    };
+    if (std::none_of(formats().begin(), formats().end(), has_extension)) {
         throw InvalidInput(file, extension.empty() ? "(no ending)" : extension,
                            "the file name must end in " + either_of(supported_extensions()));
     }
     std::ifstream stream(path, std::ios::binary);
     if (!stream) throw InvalidInput(file, "(unreadable)", "the file cannot be opened for reading");
-    std::string head(format->magic.size(), '\0');
+    std::string head(head_bytes, '\0');
     stream.read(head.data(), static_cast<std::streamsize>(head.size()));
-    if (static_cast<std::size_t>(stream.gcount()) != head.size() || head != format->magic) {
-        throw InvalidInput(file, extension, "the file is not " + format->description + " as its ending says");
+    head.resize(static_cast<std::size_t>(stream.gcount()));
+    std::vector<std::string> expected;
+    for (const Format& format : formats()) {
+        if (!has_extension(format)) continue;
+        if (format.recognises(head)) {
+            source_ = format.open(path);
+            return;
+        }
+        expected.push_back(format.description);
     }
-    source_ = format->open(path);
+    throw InvalidInput(file, extension, "the file is not " + either_of(expected) + " as its ending says");
 }
 
 CurveFile::~CurveFile() = default;
