@@ -37,8 +37,9 @@ bool looks_like_chiaro(std::string_view head) {
     return head.substr(0, 5) == "Date\t" && head.find("Chiaro") != std::string_view::npos;
 }
 
-ChiaroSource::ChiaroSource(const std::filesystem::path& path) {
+ChiaroSource::ChiaroSource(const std::filesystem::path& path, const ReadOptions& options) {
     const std::string file = path.string();
+    refuse_calibration(options, file);
     const std::string text = read_text_file(path);
     const auto lines = split_lines(text);
     const auto data_header = std::find_if(lines.begin(), lines.end(), [](const TextLine& line) {

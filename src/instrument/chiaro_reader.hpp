@@ -20,7 +20,7 @@ bool looks_like_chiaro(std::string_view head);
 class ChiaroSource final : public CurveSource {
 public:
     /// Reads `path`; throws mdr::InvalidInput naming the file, the line and what is wrong.
-    explicit ChiaroSource(const std::filesystem::path& path);
+    ChiaroSource(const std::filesystem::path& path, const ReadOptions& options);
     std::size_t size() const override { return 1; }
     Curve read(std::size_t index) override;
 

@@ -4,7 +4,10 @@
 
 #include <cstddef>
 
+#include <string>
+
 #include "mdr/instrument/curve.hpp"
+#include "mdr/instrument/read_options.hpp"
 
 namespace mdr::instrument {
 
@@ -18,5 +21,8 @@ public:
     /// The curve at `index` (< size()), in the instrument's order.
     virtual Curve read(std::size_t index) = 0;
 };
+
+/// Throws mdr::InvalidInput if `options` gives a calibration that `file` states itself.
+void refuse_calibration(const ReadOptions& options, const std::string& file);
 
 }  // namespace mdr::instrument

@@ -394,7 +394,9 @@ bool ends_with(const std::string& text, std::string_view tail) {
 
 }  // namespace
 
-JpkSource::JpkSource(const std::filesystem::path& path) : zip_(std::make_unique<ZipArchive>(path)) {
+JpkSource::JpkSource(const std::filesystem::path& path, const ReadOptions& options)
+    : zip_(std::make_unique<ZipArchive>(path)) {
+    refuse_calibration(options, zip_->file());
     ZipArchive& zip = *zip_;
     top_ = parse_properties(zip.read("header.properties"), zip.file() + " header.properties");
     if (zip.contains("shared-data/header.properties")) {

@@ -21,7 +21,7 @@ class ZipArchive;
 class JpkSource final : public CurveSource {
 public:
     /// Opens `path`; throws mdr::InvalidInput naming the file and what is wrong.
-    explicit JpkSource(const std::filesystem::path& path);
+    JpkSource(const std::filesystem::path& path, const ReadOptions& options);
     ~JpkSource() override;
     std::size_t size() const override;
     Curve read(std::size_t index) override;

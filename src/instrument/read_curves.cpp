@@ -5,6 +5,7 @@
 #include <fstream>
 #include <string_view>
 
+#include "instrument/afm_workshop_reader.hpp"
 #include "instrument/chiaro_reader.hpp"
 #include "instrument/jpk_reader.hpp"
 #include "mdr/alternatives.hpp"
@@ -14,11 +15,11 @@ namespace mdr::instrument {
 
 namespace {
 
-using Opener = std::unique_ptr<CurveSource> (*)(const std::filesystem::path&);
+using Opener = std::unique_ptr<CurveSource> (*)(const std::filesystem::path&, const ReadOptions&);
 
 template <typename Source>
-std::unique_ptr<CurveSource> open_as(const std::filesystem::path& path) {
-    return std::make_unique<Source>(path);
+std::unique_ptr<CurveSource> open_as(const std::filesystem::path& path, const ReadOptions& options) {
+    return std::make_unique<Source>(path, options);
 }
 
 /// How many first bytes of a file the formats are recognised by.
@@ -43,6 +44,8 @@ const std::vector<Format>& formats() {
          "a zip archive (JPK)",
          &open_as<JpkSource>},
         {{".txt"}, &looks_like_chiaro, "an Optics11 Chiaro text export", &open_as<ChiaroSource>},
+        {{".csv"}, &looks_like_afm_workshop, "an AFM Workshop force-distance export", &open_as<AfmWorkshopSource>},
+        {{".zip"}, &is_zip, "a zip archive of AFM Workshop mapping CSVs", &open_as<AfmWorkshopMapSource>},
     };
     return table;
 }
@@ -64,7 +67,7 @@ std::vector<std::string> supported_extensions() {
     return result;
 }
 
-CurveFile::CurveFile(const std::filesystem::path& path) {
+CurveFile::CurveFile(const std::filesystem::path& path, const ReadOptions& options) {
     const std::string file = path.string();
     const std::string extension = lower(path.extension().string());
     const auto has_extension = [&](const Format& candidate) {
@@ -84,7 +87,7 @@ CurveFile::CurveFile(const std::filesystem::path& path) {
     for (const Format& format : formats()) {
         if (!has_extension(format)) continue;
         if (format.recognises(head)) {
-            source_ = format.open(path);
+            source_ = format.open(path, options);
             return;
         }
         expected.push_back(format.description);
@@ -107,8 +110,8 @@ Curve CurveFile::read(std::size_t index) {
     return source_->read(index);
 }
 
-std::vector<Curve> read_curves(const std::filesystem::path& path) {
-    CurveFile file(path);
+std::vector<Curve> read_curves(const std::filesystem::path& path, const ReadOptions& options) {
+    CurveFile file(path, options);
     std::vector<Curve> curves;
     curves.reserve(file.size());
     for (std::size_t index = 0; index < file.size(); ++index) curves.push_back(file.read(index));

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mdr/instrument/curve.hpp"
+#include "mdr/instrument/read_options.hpp"
 
 namespace mdr::instrument {
 
@@ -24,8 +25,8 @@ std::vector<std::string> supported_extensions();
 /// the bounds in docs/instrument-files.md.
 class CurveFile {
 public:
-    /// Opens `path` and reads the headers that list its curves.
-    explicit CurveFile(const std::filesystem::path& path);
+    /// Opens `path` and reads the headers that list its curves; `options` supplies what the file lacks.
+    explicit CurveFile(const std::filesystem::path& path, const ReadOptions& options = {});
     ~CurveFile();
     CurveFile(CurveFile&&) noexcept;
     CurveFile& operator=(CurveFile&&) noexcept;
@@ -40,6 +41,6 @@ private:
 };
 
 /// All curves of the file at `path` (CurveFile, each curve read).
-std::vector<Curve> read_curves(const std::filesystem::path& path);
+std::vector<Curve> read_curves(const std::filesystem::path& path, const ReadOptions& options = {});
 
 }  // namespace mdr::instrument

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""Builds JPK archives for the instrument readers' tests and timing from the vendor force map.
+"""Builds bad instrument files for the readers' tests, and a large JPK map for timing, from the vendor files.
 
-  make_jpk_test_files.py bad OUTDIR      the bad files of tests/data/instrument (a map missing a channel of one
-                                         pixel, an archive whose member inflates to 300 MiB)
-  make_jpk_test_files.py map N OUT       a map of N curves: the vendor map's pixel 109 copied N times on a
+  make_instrument_test_files.py bad OUTDIR   the bad files of tests/data/instrument (a JPK map missing a channel
+                                            of one pixel, a JPK archive whose member inflates to 300 MiB, an AFM
+                                            Workshop mapping without its pixel 05)
+  make_instrument_test_files.py map N OUT    a JPK map of N curves: the vendor map's pixel 109 copied N times on a
                                          ceil(sqrt(N))^2 grid (positions rewritten to each pixel's centre)
 """
 import math
@@ -11,8 +12,9 @@ import pathlib
 import sys
 import zipfile
 
-VENDOR_MAP = (pathlib.Path(__file__).resolve().parent.parent / "examples" / "data" / "vendor" /
-              "fmt-jpk-fd_map-data-reference-points.jpk-force-map")
+VENDOR = pathlib.Path(__file__).resolve().parent.parent / "examples" / "data" / "vendor"
+VENDOR_MAP = VENDOR / "fmt-jpk-fd_map-data-reference-points.jpk-force-map"
+WORKSHOP_MAP = VENDOR / "fmt-afm-workshop-fd_mapping_16_2018-08-01_13.07.zip"
 GRID = "force-scan-map.position-pattern.grid."
 
 
@@ -34,6 +36,11 @@ def bad(outdir):
                 target.writestr(info.filename, source.read(info.filename))
     with zipfile.ZipFile(outdir / "bomb.jpk-force", "w", zipfile.ZIP_DEFLATED, compresslevel=9) as target:
         target.writestr("header.properties", b"#" * (300 << 20))
+    with zipfile.ZipFile(WORKSHOP_MAP) as source, \
+            zipfile.ZipFile(outdir / "afm-workshop-missing-pixel.zip", "w", zipfile.ZIP_DEFLATED) as target:
+        for info in source.infolist():
+            if not info.filename.endswith("13.07.05.csv"):
+                target.writestr(info.filename, source.read(info.filename))
 
 
 def big_map(count, out):
