@@ -137,7 +137,7 @@ bool looks_like_afm_workshop(std::string_view head) {
 }
 
 AfmWorkshopSource::AfmWorkshopSource(const std::filesystem::path& path, const ReadOptions& options)
-    : curve_(parse_export(read_text_file(path), path.string(), options)) {}
+    : curve_(parse_export(read_whole_file(path), path.string(), options)) {}
 
 Curve AfmWorkshopSource::read(std::size_t) {
     return curve_;

@@ -40,7 +40,7 @@ bool looks_like_chiaro(std::string_view head) {
 ChiaroSource::ChiaroSource(const std::filesystem::path& path, const ReadOptions& options) {
     const std::string file = path.string();
     refuse_calibration(options, file);
-    const std::string text = read_text_file(path);
+    const std::string text = read_whole_file(path);
     const auto lines = split_lines(text);
     const auto data_header = std::find_if(lines.begin(), lines.end(), [](const TextLine& line) {
         return line.text.substr(0, data_header_start.size()) == data_header_start;

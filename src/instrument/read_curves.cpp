@@ -7,6 +7,7 @@
 
 #include "instrument/afm_workshop_reader.hpp"
 #include "instrument/chiaro_reader.hpp"
+#include "instrument/igor_reader.hpp"
 #include "instrument/jpk_reader.hpp"
 #include "mdr/alternatives.hpp"
 #include "mdr/error.hpp"
@@ -45,6 +46,7 @@ const std::vector<Format>& formats() {
          &open_as<JpkSource>},
         {{".txt"}, &looks_like_chiaro, "an Optics11 Chiaro text export", &open_as<ChiaroSource>},
         {{".csv"}, &looks_like_afm_workshop, "an AFM Workshop force-distance export", &open_as<AfmWorkshopSource>},
+        {{".ibw"}, &looks_like_igor_wave, "an Igor binary wave (version 5)", &open_as<IgorWaveSource>},
         {{".zip"}, &is_zip, "a zip archive of AFM Workshop mapping CSVs", &open_as<AfmWorkshopMapSource>},
     };
     return table;

@@ -8,13 +8,13 @@
 
 namespace mdr::instrument {
 
-std::string read_text_file(const std::filesystem::path& path) {
+std::string read_whole_file(const std::filesystem::path& path) {
     std::error_code error;
     const std::uintmax_t size = std::filesystem::file_size(path, error);
     if (error) throw InvalidInput(path.string(), "(unreadable)", "the file cannot be read: " + error.message());
-    if (size > max_text_bytes) {
+    if (size > max_file_bytes) {
         throw InvalidInput(path.string(), std::to_string(size) + " bytes",
-                           "a text export is read up to " + std::to_string(max_text_bytes >> 20) + " MiB");
+                           "a file of this format is read up to " + std::to_string(max_file_bytes >> 20) + " MiB");
     }
     std::ifstream stream(path, std::ios::binary);
     if (!stream) throw InvalidInput(path.string(), "(unreadable)", "the file cannot be opened for reading");

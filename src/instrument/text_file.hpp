@@ -10,11 +10,11 @@
 
 namespace mdr::instrument {
 
-/// The largest text export read (larger files are refused, not read into memory).
-constexpr std::uint64_t max_text_bytes = std::uint64_t{512} << 20;
+/// The largest file read whole (text exports, Igor waves): larger ones are refused, not read into memory.
+constexpr std::uint64_t max_file_bytes = std::uint64_t{512} << 20;
 
-/// The whole file; throws mdr::InvalidInput if it cannot be read or exceeds `max_text_bytes`.
-std::string read_text_file(const std::filesystem::path& path);
+/// The whole file; throws mdr::InvalidInput if it cannot be read or exceeds `max_file_bytes`.
+std::string read_whole_file(const std::filesystem::path& path);
 
 /// The lines of `text`, split at `\r\n`, `\n` or a lone `\r`; blank lines dropped, each with its 1-based number.
 struct TextLine {
