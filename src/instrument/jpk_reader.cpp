@@ -241,7 +241,7 @@ Affine read_channel(ZipArchive& zip, const Header& header, const std::string& fo
     const Encoding encoding = channel_encoding(header, channel);
     const std::string member = folder + header.text("channel." + channel + ".data.file.name");
     const std::string bytes = zip.read(member);
-    if (bytes.size() != points * encoding.bytes) {
+    if (bytes.size() % encoding.bytes != 0 || bytes.size() / encoding.bytes != points) {
         throw InvalidInput(zip.file(), member,
                            "holds " + std::to_string(bytes.size()) + " bytes, the segment header states " +
                                std::to_string(points) + " points of " + std::to_string(encoding.bytes) +
