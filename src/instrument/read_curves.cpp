@@ -9,6 +9,7 @@
 #include "instrument/chiaro_reader.hpp"
 #include "instrument/igor_reader.hpp"
 #include "instrument/jpk_reader.hpp"
+#include "instrument/nanoscope_reader.hpp"
 #include "mdr/alternatives.hpp"
 #include "mdr/error.hpp"
 
@@ -47,6 +48,7 @@ const std::vector<Format>& formats() {
         {{".txt"}, &looks_like_chiaro, "an Optics11 Chiaro text export", &open_as<ChiaroSource>},
         {{".csv"}, &looks_like_afm_workshop, "an AFM Workshop force-distance export", &open_as<AfmWorkshopSource>},
         {{".ibw"}, &looks_like_igor_wave, "an Igor binary wave (version 5)", &open_as<IgorWaveSource>},
+        {{".spm"}, &looks_like_nanoscope_force, "a Bruker NanoScope force file", &open_as<NanoscopeSource>},
         {{".zip"}, &is_zip, "a zip archive of AFM Workshop mapping CSVs", &open_as<AfmWorkshopMapSource>},
     };
     return table;

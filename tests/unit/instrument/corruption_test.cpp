@@ -50,6 +50,7 @@ INSTANTIATE_TEST_SUITE_P(VendorFiles, DamagedFile,
                          ::testing::Values("fmt-jpk-fd_spot3-0192.jpk-force", "fmt-igor-fd_SiN_FD_plot.ibw",
                                            "fmt-afm-workshop-fd_single_2018-08-01_13.06.09.csv",
                                            "fmt-afm-workshop-fd_mapping_16_2018-08-01_13.07.zip",
-                                           "fmt-jpk-fd_2020.02.07-16.29.05.036.jpk-qi-data"));
+                                           "fmt-jpk-fd_2020.02.07-16.29.05.036.jpk-qi-data",
+                                           "20200904_Egel4-Z1.0_00025.spm"));
 
 }  // namespace
