@@ -14,17 +14,6 @@ namespace {
 
 constexpr std::string_view first_line = "Force-Distance Curve";
 
-void require_calibration(const ReadOptions& options, const std::string& file) {
-    if (!(options.spring_constant > 0.0) || !std::isfinite(options.spring_constant)) {
-        throw InvalidInput("spring_constant", format_value(options.spring_constant),
-                           file + " records no spring constant: give one > 0 (N/m)");
-    }
-    if (!(options.sensitivity > 0.0) || !std::isfinite(options.sensitivity)) {
-        throw InvalidInput("sensitivity", format_value(options.sensitivity),
-                           file + " records deflection in volts: give the sensitivity > 0 (m/V)");
-    }
-}
-
 /// One export: header `name:<TAB>value` lines, then `Extend Z-Sense(nm),Extend T-B(V),Retract Z-Sense(nm),
 /// Retract T-B(V)` and the rows; a segment's fields may end early (empty) when it is shorter than the other.
 Curve parse_export(std::string_view text, const std::string& file, const ReadOptions& options) {
@@ -77,7 +66,7 @@ Curve parse_export(std::string_view text, const std::string& file, const ReadOpt
         }
     }
     if (z_sense[0].empty()) throw InvalidInput(file, "(no rows)", "an AFM Workshop export needs data rows");
-    require_calibration(options, file);
+    require_calibration(options, file, "volts", "m/V");
     curve.spring_constant = options.spring_constant;
     curve.sensitivity = options.sensitivity;
     curve.segment_names = {"extend", "retract"};

@@ -22,6 +22,12 @@ public:
     virtual Curve read(std::size_t index) = 0;
 };
 
+/// Throws mdr::InvalidInput naming `spring_constant` or `sensitivity` if `options` lacks it (> 0, finite), for a
+/// `file` that records the deflection signal in `signal_unit` (e.g. `volts`) without a calibration;
+/// `sensitivity_unit` is the unit the sensitivity is given in (`m/V`).
+void require_calibration(const ReadOptions& options, const std::string& file, const std::string& signal_unit,
+                         const std::string& sensitivity_unit);
+
 /// Throws mdr::InvalidInput if `options` gives a calibration that `file` states itself.
 void refuse_calibration(const ReadOptions& options, const std::string& file);
 

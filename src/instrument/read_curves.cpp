@@ -10,6 +10,7 @@
 #include "instrument/igor_reader.hpp"
 #include "instrument/jpk_reader.hpp"
 #include "instrument/nanoscope_reader.hpp"
+#include "instrument/ntmdt_reader.hpp"
 #include "mdr/alternatives.hpp"
 #include "mdr/error.hpp"
 
@@ -46,6 +47,7 @@ const std::vector<Format>& formats() {
          "a zip archive (JPK)",
          &open_as<JpkSource>},
         {{".txt"}, &looks_like_chiaro, "an Optics11 Chiaro text export", &open_as<ChiaroSource>},
+        {{".txt"}, &looks_like_ntmdt_text, "an NT-MDT Nova text export", &open_as<NtmdtTextSource>},
         {{".csv"}, &looks_like_afm_workshop, "an AFM Workshop force-distance export", &open_as<AfmWorkshopSource>},
         {{".ibw"}, &looks_like_igor_wave, "an Igor binary wave (version 5)", &open_as<IgorWaveSource>},
         {{".spm"}, &looks_like_nanoscope_force, "a Bruker NanoScope force file", &open_as<NanoscopeSource>},

@@ -23,7 +23,9 @@ TEST_P(DamagedFile, EveryDamageReadsOrIsRefusedAsInvalidInput) {
     const std::string bytes{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
     ASSERT_FALSE(bytes.empty());
     const fs::path damaged = fs::temp_directory_path() / ("mdr_instrument_damaged_" + GetParam());
-    const mdr::instrument::ReadOptions options = original.extension() == ".zip" || original.extension() == ".csv"
+    // The formats without their own calibration (AFM Workshop, NT-MDT) are given one.
+    const std::string extension = original.extension().string();
+    const mdr::instrument::ReadOptions options = extension == ".zip" || extension == ".csv" || extension == ".txt"
                                                      ? mdr::instrument::ReadOptions{20.0, 1e-8}
                                                      : mdr::instrument::ReadOptions{};
     // 80 positions spread over the file, each flipped to its complement, plus the file cut there.
@@ -51,6 +53,7 @@ INSTANTIATE_TEST_SUITE_P(VendorFiles, DamagedFile,
                                            "fmt-afm-workshop-fd_single_2018-08-01_13.06.09.csv",
                                            "fmt-afm-workshop-fd_mapping_16_2018-08-01_13.07.zip",
                                            "fmt-jpk-fd_2020.02.07-16.29.05.036.jpk-qi-data",
-                                           "20200904_Egel4-Z1.0_00025.spm"));
+                                           "20200904_Egel4-Z1.0_00025.spm",
+                                           "fmt-ntmdt-txt-fd_2015_01_17_gel4-0,1_mQ_adh_6B_Curve_DFL_Height_51.txt"));
 
 }  // namespace
