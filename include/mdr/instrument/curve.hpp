@@ -42,7 +42,7 @@ struct Curve {
     /// Per segment, in order: `extend`, `pause` or `retract`.
     std::vector<std::string> segment_names;
     double spring_constant = 0.0;  ///< N/m
-    double sensitivity = 0.0;      ///< m/V, deflection per photodiode volt (0 where the file has none)
+    double sensitivity = 0.0;  ///< m/V, deflection per photodiode volt (NT-MDT: m/A; 0 where the file has none)
     std::string height_channel;    ///< the file's channel that `height` comes from (e.g. `strainGaugeHeight`)
     bool in_map = false;           ///< whether `position` and `grid` are set (a curve of a map)
     MapPosition position;          ///< where on the map (only when `in_map`)
