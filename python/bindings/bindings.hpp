@@ -41,6 +41,9 @@ void bind_sweep(pybind11::module_& module);
 /// mdr.distributed: result directories with the rules of --out, for the files Python writes.
 void bind_result_directory(pybind11::module_& module);
 
+/// mdr.Curve and _mdr._read_curves: the curves of AFM instrument files (docs/instrument-files.md).
+void bind_instrument(pybind11::module_& module);
+
 /// mdr.fit: fit cases from TOML text, curves from files or arrays.
 void bind_fit(pybind11::module_& module);
 }  // namespace mdr::python

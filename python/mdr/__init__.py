@@ -30,9 +30,10 @@ from ._toml import to_toml
 from .curve_maps import map_curves
 from .fit_maps import fit_map
 from .fitting import FitResult, fit
+from .instruments import Curve, read_curves
 
 __all__ = ["run", "check", "sweep", "SweepTable", "fit", "FitResult", "map_curves", "fit_map", "Material",
-           "ConvertedMaterial", "Indenter", "Result", "InvalidInput", "__version__"]
+           "ConvertedMaterial", "Indenter", "Result", "InvalidInput", "read_curves", "Curve", "__version__"]
 __version__ = _mdr.__version__
 
 CaseLike = Union[str, os.PathLike, Mapping[str, Any]]

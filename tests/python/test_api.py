@@ -217,7 +217,7 @@ def public_callables():
 
     found = {"mdr.run": mdr.run, "mdr.check": mdr.check, "mdr.sweep": mdr.sweep, "mdr.Result": mdr.Result,
              "mdr.Material": mdr.Material, "mdr.ConvertedMaterial": mdr.ConvertedMaterial, "mdr.Indenter": mdr.Indenter}
-    for module in (mdr.plot, mdr.maps, mdr.curve_maps, mdr.fit_maps, mdr.distributed):
+    for module in (mdr.plot, mdr.maps, mdr.curve_maps, mdr.fit_maps, mdr.distributed, mdr.instruments):
         for name, member in inspect.getmembers(module, inspect.isfunction):
             if member.__module__ == module.__name__ and not name.startswith("_"):
                 found[f"{module.__name__}.{name}"] = member
@@ -268,7 +268,8 @@ def test_docstring_examples_hold(monkeypatch, tmp_path):
     finder = doctest.DocTestFinder()
     runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     tests = []
-    for module in (mdr, mdr.plot, mdr.maps, mdr.fitting, mdr.curve_maps, mdr.fit_maps, mdr.distributed):
+    for module in (mdr, mdr.plot, mdr.maps, mdr.fitting, mdr.curve_maps, mdr.fit_maps, mdr.distributed,
+                   mdr.instruments):
         tests += finder.find(module, globs={"mdr": mdr, "np": np, "math": math})
     for cls in (mdr.Material, mdr.ConvertedMaterial, mdr.Indenter):
         tests += finder.find(cls, cls.__name__, module=False, globs={"mdr": mdr, "np": np, "math": math})

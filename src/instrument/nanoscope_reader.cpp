@@ -1,0 +1,270 @@
+#include "instrument/nanoscope_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "instrument/text_file.hpp"
+#include "mdr/error.hpp"
+
+namespace mdr::instrument {
+
+namespace {
+
+constexpr std::string_view force_file_start = "\\*Force file list";
+constexpr std::string_view header_end = "\\*File list end";
+
+/// `\key`, as the header writes it (built by appending: GCC 12 warns falsely on `"\\" + std::string`).
+std::string header_key(std::string_view key) {
+    std::string text = "\\";
+    text += key;
+    return text;
+}
+
+/// One `\*Name` section of the header: its `\Key: value` lines in order.
+struct Section {
+    std::string name;
+    std::vector<std::pair<std::string, std::string>> entries;
+
+    const std::string* find(std::string_view key) const {
+        for (const auto& [entry_key, value] : entries) {
+            if (entry_key == key) return &value;
+        }
+        return nullptr;
+    }
+};
+
+/// The header, cut into its sections; `file` names the file in errors.
+struct Header {
+    std::vector<Section> sections;
+    std::string file;
+
+    const Section& section(std::string_view name) const {
+        for (const Section& candidate : sections) {
+            if (candidate.name == name) return candidate;
+        }
+        throw InvalidInput(file, header_key(std::string("*").append(name)),
+                           "a NanoScope force file must have this header section");
+    }
+    const std::string& value(const Section& in, std::string_view key) const {
+        if (const std::string* found = in.find(key)) return *found;
+        throw InvalidInput(file, header_key(key), "the header section \\*" + in.name + " must state it");
+    }
+    double number(const Section& in, std::string_view key) const {
+        const std::string& text = value(in, key);
+        return parse_number(text.substr(0, text.find(' ')), file, 0, header_key(key));
+    }
+};
+
+Header parse_header(std::string_view text, const std::string& file) {
+    const std::size_t end = text.find(header_end);
+    if (end == std::string_view::npos) {
+        throw InvalidInput(file, "(header)", "the header must end with \\*File list end (truncated?)");
+    }
+    Header header{{}, file};
+    for (const TextLine& line : split_lines(text.substr(0, end))) {
+        std::string_view entry = line.text;
+        if (entry.substr(0, 2) == "\\*") {
+            header.sections.push_back({latin1_to_utf8(entry.substr(2)), {}});
+            continue;
+        }
+        // `\Key: value`; a key may hold colons itself (`\@4:Z scale: V ...`), so the separator is ": ".
+        std::size_t colon = entry.find(": ");
+        if (colon == std::string_view::npos && !entry.empty() && entry.back() == ':') colon = entry.size() - 1;
+        if (entry.empty() || entry.front() != '\\' || colon == std::string_view::npos || header.sections.empty()) {
+            continue;  // a continuation of free text (\Text:, \Note:)
+        }
+        std::string_view value = entry.substr(colon + 1);
+        while (!value.empty() && value.front() == ' ') value.remove_prefix(1);
+        while (!value.empty() && value.back() == ' ') value.remove_suffix(1);
+        std::string_view key = entry.substr(1, colon - 1);
+        while (!key.empty() && (key.back() == ' ' || key.back() == '\t')) key.remove_suffix(1);
+        header.sections.back().entries.emplace_back(latin1_to_utf8(key),
+                                                    latin1_to_utf8(value));
+    }
+    return header;
+}
+
+/// A scaled header value, `V [Sens. Name] (q V/LSB) h V`: the sensitivity's name (empty if none), the volts per
+/// stored integer q and the hard value h (NanoScope User Guide, "Header file parameters").
+struct ScaledValue {
+    std::string sensitivity;
+    double volts_per_lsb = 0.0;
+    double hard_value = 0.0;
+};
+
+ScaledValue parse_scaled(const Header& header, const Section& in, std::string_view key) {
+    const std::string& text = header.value(in, key);
+    const std::string what = header_key(key);
+    ScaledValue result;
+    const std::size_t open_bracket = text.find('[');
+    const std::size_t close_bracket = text.find(']');
+    if (open_bracket != std::string::npos && close_bracket != std::string::npos && close_bracket > open_bracket) {
+        result.sensitivity = text.substr(open_bracket + 1, close_bracket - open_bracket - 1);
+    }
+    const std::size_t open = text.find('(');
+    const std::size_t close = text.find(')');
+    if (open == std::string::npos || close == std::string::npos || close < open ||
+        text.find(" V/LSB", open) != close - 6) {
+        throw InvalidInput(header.file, what + " = " + text, "must read 'V [Sens. Name] (q V/LSB) h V'");
+    }
+    result.volts_per_lsb = parse_number(std::string_view(text).substr(open + 1, close - open - 7), header.file, 0,
+                                        what + " V/LSB");
+    std::string_view hard = std::string_view(text).substr(close + 1);
+    while (!hard.empty() && hard.front() == ' ') hard.remove_prefix(1);
+    result.hard_value = parse_number(hard.substr(0, hard.find(' ')), header.file, 0, what);
+    return result;
+}
+
+/// `@Sens. Name: V s nm/V` (in the scanner or scan list), in nm/V (a sensitivity stated without a unit is in nm/V).
+double sensitivity_nm_per_volt(const Header& header, const std::string& name) {
+    const std::string key = "@" + name;
+    const auto holds = [&](const Section& section) { return section.find(key) != nullptr; };
+    const auto section = std::find_if(header.sections.begin(), header.sections.end(), holds);
+    if (section == header.sections.end()) {
+        throw InvalidInput(header.file, header_key(key), "the header must state the sensitivity it names");
+    }
+    const std::string& text = *section->find(key);
+    const auto fields = split_fields(text, ' ');
+    std::vector<std::string_view> words;
+    std::copy_if(fields.begin(), fields.end(), std::back_inserter(words), [](auto word) { return !word.empty(); });
+    if (words.size() < 2 || words.size() > 3 || words[0] != "V" || (words.size() == 3 && words[2] != "nm/V")) {
+        throw InvalidInput(header.file, header_key(key) + " = " + text, "must read 'V s nm/V'");
+    }
+    const double value = parse_number(words[1], header.file, 0, header_key(key));
+    if (!(value > 0.0)) throw InvalidInput(header.file, header_key(key) + " = " + text, "must be > 0");
+    return value;
+}
+
+double positive(const Header& header, const Section& in, std::string_view key) {
+    const double value = header.number(in, key);
+    if (!(value > 0.0) || !std::isfinite(value)) {
+        throw InvalidInput(header.file, header_key(key) + " = " + header.value(in, key), "must be > 0");
+    }
+    return value;
+}
+
+/// The `*Ciao force image list` of the deflection channel.
+const Section& deflection_channel(const Header& header) {
+    for (const Section& section : header.sections) {
+        if (section.name != "Ciao force image list") continue;
+        const std::string* data = section.find("@4:Image Data");
+        if (data != nullptr && data->find("Deflection") != std::string::npos) return section;
+    }
+    throw InvalidInput(header.file, "\\@4:Image Data",
+                       "no \\*Ciao force image list holds a deflection channel (\"Deflection Error\")");
+}
+
+}  // namespace
+
+bool looks_like_nanoscope_force(std::string_view head) {
+    return head.substr(0, force_file_start.size()) == force_file_start;
+}
+
+NanoscopeSource::NanoscopeSource(const std::filesystem::path& path, const ReadOptions& options) {
+    const std::string file = path.string();
+    const std::string bytes = read_whole_file(path);
+    if (!looks_like_nanoscope_force(bytes)) {
+        throw InvalidInput(file, "(first line)", "must be \\*Force file list (a NanoScope force file)");
+    }
+    const Header header = parse_header(bytes, file);
+    refuse_calibration(options, file);
+    const Section& scan = header.section("Ciao scan list");
+    const std::string& mode = header.value(scan, "Operating mode");
+    if (mode != "Force") {
+        throw InvalidInput(file, "\\Operating mode: " + mode, "only single force curves (Force) are read so far");
+    }
+    const Section& ramp = header.section("Ciao force list");
+    for (const std::string_view delay : {"Reverse delay", "Hold Time"}) {
+        if (const std::string* value = ramp.find(delay); value != nullptr && header.number(ramp, delay) != 0.0) {
+            throw InvalidInput(file, header_key(delay) + ": " + *value,
+                               "a pause between extend and retract is not read so far (must be 0)");
+        }
+    }
+    const Section& channel = deflection_channel(header);
+
+    // Samples: `Samps/line: extend retract`; equal lengths only, since which count is which is not documented.
+    const std::string& samples_text = header.value(channel, "Samps/line");
+    const auto counts = split_fields(samples_text, ' ');
+    const double extend_count = parse_number(counts[0], file, 0, "\\Samps/line");
+    const double retract_count =
+        counts.size() > 1 ? parse_number(counts[1], file, 0, "\\Samps/line") : extend_count;
+    if (counts.size() > 2 || extend_count != retract_count || !(extend_count >= 2.0) || extend_count > 1e8 ||
+        extend_count != std::floor(extend_count)) {
+        throw InvalidInput(file, "\\Samps/line: " + samples_text,
+                           "must be two equal whole numbers >= 2 (extend and retract samples)");
+    }
+    const auto per_segment = static_cast<std::size_t>(extend_count);
+
+    // The stored integers: `Data length` / samples bytes each. NanoScope 9 writes 4 bytes although `Bytes/pixel`
+    // says 2; the length, which the file's size checks, decides.
+    const double offset = header.number(channel, "Data offset");
+    const double length = header.number(channel, "Data length");
+    if (!(offset >= 0.0) || !(length >= 0.0) || offset + length > static_cast<double>(bytes.size()) ||
+        offset != std::floor(offset) || length != std::floor(length)) {
+        throw InvalidInput(file, "\\Data offset: " + header.value(channel, "Data offset") + ", \\Data length: " +
+                                     header.value(channel, "Data length"),
+                           "must lie within the file's " + std::to_string(bytes.size()) + " bytes (truncated?)");
+    }
+    const auto data_bytes = static_cast<std::size_t>(length);
+    const std::size_t bytes_per_sample = data_bytes / (2 * per_segment);
+    if ((bytes_per_sample != 2 && bytes_per_sample != 4) || bytes_per_sample * 2 * per_segment != data_bytes) {
+        throw InvalidInput(file, "\\Data length: " + header.value(channel, "Data length"),
+                           "must be 2 or 4 bytes times the " + std::to_string(2 * per_segment) + " samples");
+    }
+
+    const ScaledValue scale = parse_scaled(header, channel, "@4:Z scale");
+    const double deflection_sensitivity = sensitivity_nm_per_volt(header, scale.sensitivity) * 1e-9;  // m/V
+    const double spring_constant = positive(header, channel, "Spring Constant");
+    const ScaledValue ramp_size = parse_scaled(header, channel, "@4:Ramp Size");
+    const double ramp_height = ramp_size.hard_value * sensitivity_nm_per_volt(header, ramp_size.sensitivity) * 1e-9;
+    if (!(ramp_height > 0.0)) {
+        throw InvalidInput(file, "\\@4:Ramp Size: " + header.value(channel, "@4:Ramp Size"), "must be > 0");
+    }
+    const double extend_duration = ramp_size.hard_value / positive(header, ramp, "Forward vel.");
+    const double retract_duration = ramp_size.hard_value / positive(header, ramp, "Reverse vel.");
+
+    const auto sample = [&](std::size_t index) {
+        const std::size_t at = static_cast<std::size_t>(offset) + index * bytes_per_sample;
+        std::uint32_t raw = 0;
+        for (std::size_t byte = bytes_per_sample; byte-- > 0;) {
+            raw = (raw << 8) | static_cast<unsigned char>(bytes[at + byte]);
+        }
+        if (bytes_per_sample == 2) return static_cast<double>(static_cast<std::int16_t>(raw));
+        return static_cast<double>(static_cast<std::int32_t>(raw));
+    };
+
+    Curve& curve = curve_;
+    curve.source = file;
+    curve.spring_constant = spring_constant;
+    curve.sensitivity = deflection_sensitivity;
+    curve.height_channel = "Z ramp (@4:Ramp Size x @" + ramp_size.sensitivity + ")";
+    curve.segment_names = {"extend", "retract"};
+    const double step = ramp_height / static_cast<double>(per_segment);
+    for (std::size_t i = 0; i < 2 * per_segment; ++i) {
+        const bool extend = i < per_segment;
+        // Extend: time order is the stored order reversed; each sample at the start of its step of the ramp.
+        const std::size_t stored = extend ? per_segment - 1 - i : i;
+        const std::size_t in_segment = extend ? i : i - per_segment;
+        const double fraction = static_cast<double>(in_segment) / static_cast<double>(per_segment);
+        curve.time.push_back(extend ? fraction * extend_duration : extend_duration + fraction * retract_duration);
+        curve.height.push_back(extend ? ramp_height - static_cast<double>(in_segment) * step
+                                      : static_cast<double>(in_segment) * step);
+        curve.deflection.push_back(sample(stored) * scale.volts_per_lsb * deflection_sensitivity);
+        curve.force.push_back(curve.deflection.back() * spring_constant);
+        curve.segment.push_back(extend ? 0 : 1);
+    }
+    for (const Section& section : header.sections) {
+        for (const auto& [key, value] : section.entries) curve.metadata.emplace(section.name + "/" + key, value);
+    }
+}
+
+Curve NanoscopeSource::read(std::size_t) {
+    return curve_;
+}
+
+}  // namespace mdr::instrument
