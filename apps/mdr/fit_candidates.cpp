@@ -10,6 +10,13 @@
 
 namespace mdr::cli {
 
+void print_flags(const fit::FitResult& result) {
+    for (const auto& flag : result.flags) fmt::print("  flag: {}\n", flag);
+    for (const auto& curve : result.curves) {
+        for (const auto& flag : curve.flags) fmt::print("  flag ({}): {}\n", curve.name, flag);
+    }
+}
+
 bool run_model_choice(const io::FitCase& fit_case, const std::vector<fit::Curve>& curves,
                       const io::ResultDirectory& directory) {
     const auto choice = fit::fit_candidates(fit_case, curves);
@@ -39,6 +46,7 @@ bool run_model_choice(const io::FitCase& fit_case, const std::vector<fit::Curve>
     for (const auto& entry : choice.fits[choice.preferred].result.undetermined) {
         fmt::print("  undetermined ({}): {}: {}\n", choice.fits[choice.preferred].name, entry.name, entry.reason);
     }
+    print_flags(choice.fits[choice.preferred].result);
     fmt::print("  {:.3f} s of fitting; results in {}/ ({})\n", seconds, directory.shown(),
                fit_case.model_choice.candidates.empty() ? "fit.json, fitted.toml, curves.csv, spectrum.csv"
                                                         : "models.csv, ranking.json, one folder per model");

@@ -4,10 +4,14 @@
 #include <vector>
 
 #include "mdr/fit/curve.hpp"
+#include "mdr/fit/fit.hpp"
 #include "mdr/io/fit_case.hpp"
 #include "mdr/io/result_directory.hpp"
 
 namespace mdr::cli {
+
+/// Prints a fit's flags and each curve's (fit::FitResult::flags, fit::CurveFit::flags), one console line each.
+void print_flags(const fit::FitResult& result);
 
 /// Fits the candidates of `fit_case` to `curves`, writes them into `directory` (io::write_model_choice) and prints
 /// the ranking. Returns true when the preferred candidate's fit converged (the others' status is in the

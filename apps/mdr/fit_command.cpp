@@ -55,6 +55,7 @@ void add_fit_command(CLI::App& app, int& exit_code) {
             for (const auto& entry : result.undetermined) {
                 fmt::print("  undetermined: {}: {}\n", entry.name, entry.reason);
             }
+            print_flags(result);
             fmt::print("  residual RMS {:.4g}, noise {:.4g} (ratio {:.3g}); {} iterations, {} model runs, {:.3f} s\n",
                        result.rms_residual, result.noise, result.rms_residual / result.noise, result.iterations,
                        result.evaluations, result.wall_seconds);

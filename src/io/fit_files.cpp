@@ -81,6 +81,11 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
         correlation.push_back({std::move(row)});
     }
     for (const auto& entry : result.undetermined) undetermined.emplace_back(entry.name, Document{entry.reason});
+    const auto flag_list = [](const std::vector<std::string>& flags) {
+        Document::List list;
+        for (const auto& flag : flags) list.push_back({flag});
+        return Document{std::move(list)};
+    };
     Document::List curves;
     for (const auto& curve : result.curves) {
         Document::Table entry{{"name", {curve.name}},
@@ -97,6 +102,7 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
         }
         entry.emplace_back("noise", number_or_null(curve.noise));
         entry.emplace_back("rms_residual", number_or_null(curve.rms_residual));
+        entry.emplace_back("flags", flag_list(curve.flags));
         curves.push_back({std::move(entry)});
     }
     return {Document::Table{
@@ -107,6 +113,7 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
         {"intervals_95", {std::move(intervals)}},
         {"correlation", {std::move(correlation)}},
         {"undetermined", {std::move(undetermined)}},
+        {"flags", flag_list(result.flags)},
         {"curves", {std::move(curves)}},
         {"rms_residual", number_or_null(result.rms_residual)},
         {"noise", number_or_null(result.noise)},

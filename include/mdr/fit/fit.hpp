@@ -120,6 +120,9 @@ struct CurveFit {
     /// Rebound data only: the quantity compared (`fitted` is then meaningless); nullopt for a measured curve.
     std::optional<ReboundQuantity> rebound{};
     double mass = 0.0;              ///< rebound data only: the impactor's mass [kg]
+    /// This curve's warnings, one line each (fit.json `curves[i].flags`): what a user must know before trusting
+    /// its numbers, e.g. a contact point outside the record.
+    std::vector<std::string> flags{};
 };
 
 /// A function of the fitted material on a grid, with its 95 % confidence band (first order: the delta method with
@@ -158,6 +161,9 @@ struct FitResult {
     std::vector<double> upper_95;            ///< see lower_95
     std::vector<std::vector<double>> correlation;  ///< correlation matrix of the free parameters
     std::vector<Undetermined> undetermined;  ///< parameters the data cannot determine
+    /// The fit's warnings, one line each (fit.json `flags`), e.g. a model that cannot follow the data; each curve's
+    /// own are in CurveFit::flags.
+    std::vector<std::string> flags;
     std::vector<CurveFit> curves;            ///< per curve
     double rms_residual = 0.0;               ///< RMS of model - measured over all curves [N or m]
     double noise = 0.0;                      ///< RMS of the curves' noise estimates, weighted by their points
