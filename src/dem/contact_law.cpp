@@ -189,6 +189,16 @@ void ContactLaw::advance(std::span<double> state, double overlap, PlanarVector d
     end(state);
 }
 
+SpatialVector ContactLaw::tangential_force(std::span<const double> state, const SpatialVector& normal) const {
+    const SpatialVector axis{state[frame_offset], state[frame_offset + 1], state[frame_offset + 2]};
+    const double handedness = state[handedness_offset];
+    const SpatialVector turned = cross(normal, axis);
+    const PlanarVector force = tangential_force(state);
+    SpatialVector result{};
+    for (std::size_t i = 0; i < 3; ++i) result[i] = force[0] * axis[i] + force[1] * handedness * turned[i];
+    return result;
+}
+
 SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
                                           const SpatialVector& increment) {
     begin(state);

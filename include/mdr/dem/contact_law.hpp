@@ -110,6 +110,9 @@ public:
     PlanarVector tangential_force(std::span<const double> state) const {
         return {state[tangential_offset_], state[tangential_offset_ + 1]};
     }
+    /// Tangential force [N] on the second body stored in a contact's state, as a vector for the contact's unit
+    /// `normal` (that of its last advance_spatial); zero before the first.
+    SpatialVector tangential_force(std::span<const double> state, const SpatialVector& normal) const;
     /// Overlap [m] stored in a contact's state.
     double overlap(std::span<const double> state) const { return state[normal_offset]; }
     /// Tangential displacement [m] stored in a contact's state.
