@@ -222,9 +222,13 @@ void PairMdrVisco::init_style()
   if (!comm->ghost_velocity) error->all(FLERR, "pair mdr/visco needs ghost velocities: comm_modify vel yes");
   build_laws();
 
+#ifdef MDR_LAMMPS_ADD_REQUEST    // LAMMPS from 2022 on (dem/lammps/CMakeLists.txt finds out)
+  neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
+#else
   int irequest = neighbor->request(this, instance_me);
   neighbor->requests[irequest]->size = 1;
   neighbor->requests[irequest]->history = 1;
+#endif
 
   if (fix_history == nullptr) {
     fix_history = dynamic_cast<FixNeighHistory *>(modify->replace_fix(

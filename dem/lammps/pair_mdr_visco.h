@@ -32,7 +32,9 @@ class PairMdrVisco : public Pair {
   double init_one(int, int) override;
   void write_restart(FILE *) override;
   void read_restart(FILE *) override;
-  void transfer_history(double *, double *) override;
+  // LAMMPS before 2023 calls the first, later ones the second (they pass the two atom types)
+  virtual void transfer_history(double *, double *);
+  virtual void transfer_history(double *source, double *target, int, int) { transfer_history(source, target); }
   double memory_usage() override;
 
  private:
