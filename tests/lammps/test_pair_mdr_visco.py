@@ -24,7 +24,7 @@ MATERIALS = {
     1: {"G_inf": 1.0e6, "terms": [(3.0e6, 1.0e-3)]},
     2: {"G_inf": 2.0e6, "terms": [(4.0e6, 3.0e-4), (1.0e6, 1.0e-2)]},
 }
-ELEMENTS, HALF_WIDTH = 40, 0.25  # the law's N and L / R
+ELEMENTS, HALF_WIDTH = 40, 0.3  # the law's N and L / R (a / R = 0.2 at the largest overlap here)
 
 
 def pair_coeffs(friction):
@@ -49,10 +49,11 @@ def run_lammps(script, tmp_path, ranks=1, name="in.lmp"):
     return [line.split()[1:] for line in log.splitlines() if line.startswith("RESULT")]
 
 
-def two_spheres(radii, densities, velocities, spins=(0.0, 0.0), friction=0.0, time_step=1e-7, steps=40000,
+def two_spheres(radii, densities, velocities, spins=(0.0, 0.0), friction=0.0, time_step=1e-7, steps=100000,
                 processors=""):
-    """Sphere 1 at the origin, sphere 2 on +x just out of contact; velocities (vx, vy) each; spins about z."""
-    (r1, r2), gap = radii, 1e-9
+    """Sphere 1 left of x = 0, sphere 2 right of it (on two ranks with `processors 2 1 1`, one on each), touching;
+    velocities (vx, vy) each; spins about z."""
+    (r1, r2), gap = radii, 0.0  # touching at t = 0: the first step of the law starts at overlap 0, as mdr run
     return f"""
 units si
 atom_style sphere
@@ -60,10 +61,10 @@ atom_modify map array
 boundary f f f
 newton on
 {processors}
-region box block -0.1 0.1 -0.1 0.1 -0.1 0.1
+region box block -0.1 0.1 -0.1 0.1 -0.1 0.1 units box
 create_box 2 box
-create_atoms 1 single 0 0 0
-create_atoms 2 single {r1 + r2 + gap} 0 0
+create_atoms 1 single {-r1 - gap / 2} 0 0 units box
+create_atoms 2 single {r2 + gap / 2} 0 0 units box
 set atom 1 diameter {2 * r1} density {densities[0]}
 set atom 2 diameter {2 * r2} density {densities[1]}
 velocity all set 0 0 0
@@ -119,7 +120,7 @@ def masses():
 
 @pytest.mark.parametrize("ranks", [1, 2])
 def test_two_spheres_restitution_is_mdr_runs(tmp_path, ranks):
-    velocities = ((0.3, 0.0), (-0.2, 0.0))
+    velocities = ((0.1, 0.0), (-0.1, 0.0))
     processors = "processors 2 1 1" if ranks == 2 else ""
     (a1, a2, *_), = run_lammps(two_spheres(RADII, DENSITIES, velocities, processors=processors), tmp_path, ranks)
     restitution = (float(a2) - float(a1)) / (velocities[0][0] - velocities[1][0])
@@ -128,3 +129,114 @@ def test_two_spheres_restitution_is_mdr_runs(tmp_path, ranks):
     summary = mdr_run(tmp_path, radius, m1 * m2 / (m1 + m2), velocities[0][0] - velocities[1][0])
     assert 0.3 < summary["restitution"] < 0.99
     assert restitution == pytest.approx(summary["restitution"], abs=1e-6)
+
+
+def test_oblique_collision_with_friction_and_spin_is_mdr_runs(tmp_path):
+    # Sphere 1 slides along +y and spins about z against sphere 2 (n = +x): the contact points' relative velocity
+    # is v_c = (v1y + R1 w1) - (v2y - R2 w2). The equivalent rigid sphere of `mdr run` has R = R_eff, the reduced
+    # mass, and R^2 / I = R1^2 / I1 + R2^2 / I2 (test_dem_contact_law.cpp). The normal turns by about
+    # v_c T / (R1 + R2) = 3e-3 rad over the contact in LAMMPS and not in `mdr run`: agreement to 1e-2.
+    friction = 0.3
+    velocities, spins = ((0.1, 0.05), (-0.1, -0.02)), (4.0, -2.0)
+    result, = run_lammps(two_spheres(RADII, DENSITIES, velocities, spins, friction), tmp_path)
+    a1, a2, b1, b2, w1, w2 = map(float, result)
+    m1, m2 = masses()
+    i1, i2 = (0.4 * m * r * r for m, r in zip((m1, m2), RADII))
+    r1, r2 = RADII
+    slip0 = (velocities[0][1] + r1 * spins[0]) - (velocities[1][1] - r2 * spins[1])
+    slip1 = (b1 + r1 * w1) - (b2 - r2 * w2)
+    radius = r1 * r2 / (r1 + r2)
+    inertia = radius * radius / (r1 * r1 / i1 + r2 * r2 / i2)
+    mass = m1 * m2 / (m1 + m2)
+    # mdr run's contact point moves at v_t - R w: a spin of 0 and v_t = slip0 give the same contact point velocity
+    summary = mdr_run(tmp_path, radius, mass, velocities[0][0] - velocities[1][0],
+                      {"velocity": slip0, "spin": 0.0, "friction": friction, "inertia": inertia})
+    assert (a2 - a1) / (velocities[0][0] - velocities[1][0]) == pytest.approx(summary["restitution"], abs=1e-2)
+    assert -slip1 / slip0 == pytest.approx(summary["tangential_restitution"], abs=1e-2)
+    # momentum and angular momentum about the contact line are conserved by the pair forces
+    assert m1 * b1 + m2 * b2 == pytest.approx(m1 * velocities[0][1] + m2 * velocities[1][1], abs=1e-12)
+
+
+def test_restart_mid_contact_continues_the_run(tmp_path):
+    velocities = ((0.1, 0.05), (-0.1, 0.0))
+    script = two_spheres(RADII, DENSITIES, velocities, (4.0, 0.0), 0.3, steps=4000)
+    script = script.replace("run 4000\n", "run 4000\nwrite_restart mid.restart\nrun 76000\n")
+    through, = run_lammps(script, tmp_path, name="through.lmp")
+    # the restart is written at 0.4 ms, inside the contact (about 1 ms long)
+    resumed_script = (f"read_restart mid.restart\ncomm_modify vel yes cutoff 0.05\nneighbor 0.002 bin\n"
+                      f"neigh_modify delay 0 every 1 check yes\nfix move all nve/sphere\ntimestep 1e-7\nrun 76000\n"
+                      + script[script.index("variable a1"):])
+    resumed, = run_lammps(resumed_script, tmp_path, name="resumed.lmp")
+    for a, b in zip(through, resumed):
+        assert float(b) == pytest.approx(float(a), rel=1e-12, abs=1e-15)
+
+
+def packing(processors=""):
+    """216 spheres (types 1 and 2 alternating) dropped onto a fixed layer, periodic in x and y, under gravity."""
+    return f"""
+units si
+atom_style sphere
+atom_modify map array
+boundary p p f
+newton on
+{processors}
+lattice sc 0.0105
+region box block 0 6 0 6 -0.5 12 units lattice
+create_box 2 box
+region floor block 0 6 0 6 -0.1 0.1 units lattice
+region cloud block 0 6 0 6 1.9 7.9 units lattice
+create_atoms 2 region floor
+create_atoms 1 region cloud
+set type 1 diameter 0.01 density 1100
+set type 2 diameter 0.01 density 1300
+group floor region floor
+group mobile subtract all floor
+set group mobile type/fraction 2 0.5 4321
+velocity mobile create 1e-4 87287 loop geom
+velocity floor set 0 0 0
+pair_style mdr/visco
+{pair_coeffs(0.3).replace("G_inf 1000000.0", "G_inf 1e8").replace("G_inf 2000000.0", "G_inf 2e8")}
+comm_modify vel yes
+neighbor 0.001 bin
+neigh_modify delay 0 every 1 check yes
+fix move mobile nve/sphere
+fix fall mobile gravity 9.81 vector 0 0 -1
+fix hold floor setforce 0 0 0
+timestep 2e-6
+variable height atom mass*9.81*z
+compute potential mobile reduce sum v_height
+compute spin mobile erotate/sphere
+compute motion mobile ke
+variable energy equal c_motion+c_spin+c_potential
+thermo_style custom step v_energy c_motion
+thermo_modify format float %.15g
+thermo 500
+run 20000
+variable z equal xcm(mobile,z)
+print "RESULT ${{energy}} ${{z}}"
+"""
+
+
+def energies(tmp_path, name, ranks):
+    log = (tmp_path / f"log.{name}.{ranks}").read_text().splitlines()
+    start = next(i for i, line in enumerate(log) if line.split()[:2] == ["Step", "v_energy"])
+    values = []
+    for line in log[start + 1:]:
+        fields = line.split()
+        if not fields or not fields[0].isdigit():
+            break
+        values.append(float(fields[1]))
+    return values
+
+
+def test_packing_settles_alike_on_one_and_two_ranks_and_only_loses_energy(tmp_path):
+    one, = run_lammps(packing(), tmp_path, 1, name="packing.lmp")
+    two, = run_lammps(packing("processors 2 1 1"), tmp_path, 2, name="packing.lmp")
+    # the same physics; the order of the force sums differs between decompositions (round-off only)
+    for a, b in zip(one, two):
+        assert float(b) == pytest.approx(float(a), rel=1e-8)
+    # the contacts are passive: their stored energy is never negative, so kinetic plus gravitational energy never
+    # exceeds its start, and the spheres have fallen
+    series = energies(tmp_path, "packing.lmp", 1)
+    assert max(series) <= series[0] * (1 + 1e-9) + 1e-12
+    assert series[-1] < series[0]
