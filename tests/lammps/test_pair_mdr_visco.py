@@ -172,7 +172,8 @@ def test_restart_mid_contact_continues_the_run(tmp_path):
 
 
 def packing(processors=""):
-    """216 spheres (types 1 and 2 alternating) dropped onto a fixed layer, periodic in x and y, under gravity."""
+    """252 spheres (types 1 and 2 at random; 7 layers) dropped from 0.5 mm onto a fixed layer, periodic in x and y,
+    under gravity, for 0.08 s (the lowest layer lands after 0.01 s)."""
     return f"""
 units si
 atom_style sphere
@@ -184,7 +185,7 @@ lattice sc 0.0105
 region box block 0 6 0 6 -0.5 12 units lattice
 create_box 2 box
 region floor block 0 6 0 6 -0.1 0.1 units lattice
-region cloud block 0 6 0 6 1.9 7.9 units lattice
+region cloud block 0 6 0 6 0.9 7.9 units lattice
 create_atoms 2 region floor
 create_atoms 1 region cloud
 set type 1 diameter 0.01 density 1100
@@ -192,8 +193,8 @@ set type 2 diameter 0.01 density 1300
 group floor region floor
 group mobile subtract all floor
 set group mobile type/fraction 2 0.5 4321
-velocity mobile create 1e-4 87287 loop geom
-velocity floor set 0 0 0
+velocity all set 0 0 0
+displace_atoms mobile random 0.0004 0.0004 0 87287 units box
 pair_style mdr/visco
 {pair_coeffs(0.3).replace("G_inf 1000000.0", "G_inf 1e8").replace("G_inf 2000000.0", "G_inf 2e8")}
 comm_modify vel yes
@@ -210,8 +211,8 @@ compute motion mobile ke
 variable energy equal c_motion+c_spin+c_potential
 thermo_style custom step v_energy c_motion
 thermo_modify format float %.15g
-thermo 500
-run 20000
+thermo 1000
+run 40000
 variable z equal xcm(mobile,z)
 print "RESULT ${{energy}} ${{z}}"
 """
