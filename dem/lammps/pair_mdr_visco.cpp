@@ -306,9 +306,13 @@ void PairMdrVisco::compute(int eflag, int vflag)
         }
         normal_force = contact.normal_force(state);
       } catch (const mdr::InvalidInput &e) {
-        error->one(FLERR, "pair mdr/visco: contact of atoms {} and {} (overlap {} of R = {}): {} = {}: {}{}",
-                   tag[i], tag[j], (radsum - r) / scale, scale, e.key(), e.value(), e.rule(),
-                   e.key() == "half_width" ? " (pair_coeff half_width, relative to R)" : "");
+        const double relative = (radsum - r) / scale;
+        if (e.key() == "half_width")
+          error->one(FLERR,
+                     "pair mdr/visco: atoms {} and {} overlap by d/R = {:.4g} (R = {:.4g}): beyond the law's "
+                     "half_width {} of types {} {}; give pair_coeff ... half_width >= sqrt(d/R) = {:.3g}",
+                     tag[i], tag[j], relative, scale, e.value(), type[i], type[j], std::sqrt(relative));
+        error->one(FLERR, "pair mdr/visco: atoms {} and {}: {}", tag[i], tag[j], e.what());
       }
       const double area = scale * scale;
       double fj[3], tj[3];

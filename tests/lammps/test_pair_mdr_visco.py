@@ -27,9 +27,9 @@ MATERIALS = {
 ELEMENTS, HALF_WIDTH = 40, 0.3  # the law's N and L / R (a / R = 0.2 at the largest overlap here)
 
 
-def pair_coeffs(friction):
+def pair_coeffs(friction, materials=MATERIALS):
     lines = []
-    for kind, material in MATERIALS.items():
+    for kind, material in materials.items():
         terms = " ".join(f"term {g} {tau}" for g, tau in material["terms"])
         lines.append(f"pair_coeff {kind} {kind} G_inf {material['G_inf']} {terms} friction {friction} "
                      f"elements {ELEMENTS} half_width {HALF_WIDTH}")
@@ -37,7 +37,8 @@ def pair_coeffs(friction):
 
 
 def run_lammps(script, tmp_path, ranks=1, name="in.lmp"):
-    """Runs a LAMMPS input on `ranks` MPI ranks; returns the lines it printed that start with RESULT."""
+    """Runs a LAMMPS input on `ranks` MPI ranks; returns the values of the last line it printed that starts with
+    RESULT (the log also echoes the commands)."""
     path = tmp_path / name
     path.write_text(f"plugin load {PLUGIN}\n" + script)
     command = [LMP, "-in", str(path), "-log", str(tmp_path / f"log.{name}.{ranks}"), "-screen", "none"]
@@ -46,11 +47,11 @@ def run_lammps(script, tmp_path, ranks=1, name="in.lmp"):
     done = subprocess.run(command, cwd=tmp_path, capture_output=True, text=True, timeout=600)
     log = (tmp_path / f"log.{name}.{ranks}").read_text() if (tmp_path / f"log.{name}.{ranks}").exists() else ""
     assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:] + log[-3000:]
-    return [line.split()[1:] for line in log.splitlines() if line.startswith("RESULT")]
+    return [line.split()[1:] for line in log.splitlines() if line.startswith("RESULT") and "$" not in line][-1]
 
 
 def two_spheres(radii, densities, velocities, spins=(0.0, 0.0), friction=0.0, time_step=1e-7, steps=100000,
-                processors=""):
+                processors="", report_at=None, materials=MATERIALS):
     """Sphere 1 left of x = 0, sphere 2 right of it (on two ranks with `processors 2 1 1`, one on each), touching;
     velocities (vx, vy) each; spins about z."""
     (r1, r2), gap = radii, 0.0  # touching at t = 0: the first step of the law starts at overlap 0, as mdr run
@@ -71,25 +72,28 @@ velocity all set 0 0 0
 set atom 1 vx {velocities[0][0]} vy {velocities[0][1]} omega 0 0 {spins[0]}
 set atom 2 vx {velocities[1][0]} vy {velocities[1][1]} omega 0 0 {spins[1]}
 pair_style mdr/visco
-{pair_coeffs(friction)}
+{pair_coeffs(friction, materials)}
 comm_modify vel yes cutoff 0.05
 neighbor 0.002 bin
 neigh_modify delay 0 every 1 check yes
 fix move all nve/sphere
 timestep {time_step}
-run {steps}
+compute spin all property/atom omegaz
 variable a1 equal vx[1]
 variable a2 equal vx[2]
 variable b1 equal vy[1]
 variable b2 equal vy[2]
-variable w1 equal wz[1]
-variable w2 equal wz[2]
-print "RESULT ${{a1}} ${{a2}} ${{b1}} ${{b2}} ${{w1}} ${{w2}}"
+variable w1 equal c_spin[1]
+variable w2 equal c_spin[2]
+fix result all print {report_at or steps} "RESULT ${{a1}} ${{a2}} ${{b1}} ${{b2}} ${{w1}} ${{w2}}"
+run {steps}
 """
 
 
 def mdr_run(tmp_path, radius, mass, velocity, tangential=None):
-    """`mdr run`'s impact of the equivalent rigid sphere on material 1 with material 2 as the indenter's."""
+    """`mdr run`'s impact of the equivalent rigid sphere: on material 1 with material 2 as the indenter's; for an
+    oblique impact (which `mdr run` does for a rigid sphere only) both spheres are of material 1 and the half-space
+    has its moduli halved (J1 + J1 = 2 J1: G / 2)."""
     def material(table, m):
         terms = ", ".join(f"[{g}, {tau}]" for g, tau in m["terms"])
         return f"[{table}]\nmodel = \"prony\"\nG_inf = {m['G_inf']}\nterms = [{terms}]\n"
@@ -101,7 +105,12 @@ def mdr_run(tmp_path, radius, mass, velocity, tangential=None):
         inertia = f"moment_of_inertia = {tangential['inertia']}\n"
     else:
         inertia = ""
-    case = (material("material", MATERIALS[1]) + material("indenter.material", MATERIALS[2]) +
+    if tangential:
+        halved = {"G_inf": MATERIALS[1]["G_inf"] / 2, "terms": [(g / 2, tau) for g, tau in MATERIALS[1]["terms"]]}
+        bodies = material("material", halved)
+    else:
+        bodies = material("material", MATERIALS[1]) + material("indenter.material", MATERIALS[2])
+    case = (bodies +
             f"[indenter]\nshape = \"sphere\"\nR = {radius}\nmass = {mass}\n{inertia}"
             f"[load]\ncontrol = \"impact\"\nvelocity = {velocity}\n{oblique}"
             f"[numerics]\nelements = {ELEMENTS}\nhalf_width = {HALF_WIDTH * radius}\ntime_step = 1e-8\n")
@@ -122,7 +131,7 @@ def masses():
 def test_two_spheres_restitution_is_mdr_runs(tmp_path, ranks):
     velocities = ((0.1, 0.0), (-0.1, 0.0))
     processors = "processors 2 1 1" if ranks == 2 else ""
-    (a1, a2, *_), = run_lammps(two_spheres(RADII, DENSITIES, velocities, processors=processors), tmp_path, ranks)
+    a1, a2, *_ = run_lammps(two_spheres(RADII, DENSITIES, velocities, processors=processors), tmp_path, ranks)
     restitution = (float(a2) - float(a1)) / (velocities[0][0] - velocities[1][0])
     m1, m2 = masses()
     radius = RADII[0] * RADII[1] / sum(RADII)
@@ -132,13 +141,14 @@ def test_two_spheres_restitution_is_mdr_runs(tmp_path, ranks):
 
 
 def test_oblique_collision_with_friction_and_spin_is_mdr_runs(tmp_path):
-    # Sphere 1 slides along +y and spins about z against sphere 2 (n = +x): the contact points' relative velocity
+    # Sphere 1 slides along +y and spins about z against sphere 2 (n = +x), both of material 1: the contact points' relative velocity
     # is v_c = (v1y + R1 w1) - (v2y - R2 w2). The equivalent rigid sphere of `mdr run` has R = R_eff, the reduced
     # mass, and R^2 / I = R1^2 / I1 + R2^2 / I2 (test_dem_contact_law.cpp). The normal turns by about
     # v_c T / (R1 + R2) = 3e-3 rad over the contact in LAMMPS and not in `mdr run`: agreement to 1e-2.
     friction = 0.3
     velocities, spins = ((0.1, 0.05), (-0.1, -0.02)), (4.0, -2.0)
-    result, = run_lammps(two_spheres(RADII, DENSITIES, velocities, spins, friction), tmp_path)
+    alike = {1: MATERIALS[1], 2: MATERIALS[1]}
+    result = run_lammps(two_spheres(RADII, DENSITIES, velocities, spins, friction, materials=alike), tmp_path)
     a1, a2, b1, b2, w1, w2 = map(float, result)
     m1, m2 = masses()
     i1, i2 = (0.4 * m * r * r for m, r in zip((m1, m2), RADII))
@@ -159,14 +169,14 @@ def test_oblique_collision_with_friction_and_spin_is_mdr_runs(tmp_path):
 
 def test_restart_mid_contact_continues_the_run(tmp_path):
     velocities = ((0.1, 0.05), (-0.1, 0.0))
-    script = two_spheres(RADII, DENSITIES, velocities, (4.0, 0.0), 0.3, steps=4000)
+    script = two_spheres(RADII, DENSITIES, velocities, (4.0, 0.0), 0.3, steps=4000, report_at=80000)
     script = script.replace("run 4000\n", "run 4000\nwrite_restart mid.restart\nrun 76000\n")
-    through, = run_lammps(script, tmp_path, name="through.lmp")
+    through = run_lammps(script, tmp_path, name="through.lmp")
     # the restart is written at 0.4 ms, inside the contact (about 1 ms long)
-    resumed_script = (f"read_restart mid.restart\ncomm_modify vel yes cutoff 0.05\nneighbor 0.002 bin\n"
-                      f"neigh_modify delay 0 every 1 check yes\nfix move all nve/sphere\ntimestep 1e-7\nrun 76000\n"
-                      + script[script.index("variable a1"):])
-    resumed, = run_lammps(resumed_script, tmp_path, name="resumed.lmp")
+    resumed_script = ("read_restart mid.restart\ncomm_modify vel yes cutoff 0.05\nneighbor 0.002 bin\n"
+                      "neigh_modify delay 0 every 1 check yes\nfix move all nve/sphere\ntimestep 1e-7\n"
+                      + script[script.index("compute spin"):script.index("run 4000")] + "run 76000\n")
+    resumed = run_lammps(resumed_script, tmp_path, name="resumed.lmp")
     for a, b in zip(through, resumed):
         assert float(b) == pytest.approx(float(a), rel=1e-12, abs=1e-15)
 
@@ -194,7 +204,7 @@ group floor region floor
 group mobile subtract all floor
 set group mobile type/fraction 2 0.5 4321
 velocity all set 0 0 0
-displace_atoms mobile random 0.0004 0.0004 0 87287 units box
+displace_atoms mobile random 0.0002 0.0002 0 87287 units box
 pair_style mdr/visco
 {pair_coeffs(0.3).replace("G_inf 1000000.0", "G_inf 1e8").replace("G_inf 2000000.0", "G_inf 2e8")}
 comm_modify vel yes
@@ -231,8 +241,8 @@ def energies(tmp_path, name, ranks):
 
 
 def test_packing_settles_alike_on_one_and_two_ranks_and_only_loses_energy(tmp_path):
-    one, = run_lammps(packing(), tmp_path, 1, name="packing.lmp")
-    two, = run_lammps(packing("processors 2 1 1"), tmp_path, 2, name="packing.lmp")
+    one = run_lammps(packing(), tmp_path, 1, name="packing.lmp")
+    two = run_lammps(packing("processors 2 1 1"), tmp_path, 2, name="packing.lmp")
     # the same physics; the order of the force sums differs between decompositions (round-off only)
     for a, b in zip(one, two):
         assert float(b) == pytest.approx(float(a), rel=1e-8)
