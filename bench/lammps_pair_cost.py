@@ -44,7 +44,7 @@ LAWS = {
         "pair_style granular\npair_coeff * * hertz/material 3e6 0.5 0.49 tangential mindlin NULL 1.0 0.3 "
         "damping tsuji\n"),
     f"mdr/visco, N = {ELEMENTS}, M = {TERMS}": (
-        f"plugin load {PLUGIN}\npair_style mdr/visco\npair_coeff 1 1 G_inf 1e6 "
+        "pair_style mdr/visco\npair_coeff 1 1 G_inf 1e6 "
         + " ".join(f"term 1e6 {1e-4 * 10 ** k}" for k in range(TERMS))
         + f" friction 0.3 elements {ELEMENTS} half_width 0.2\n"),
 }
@@ -53,7 +53,7 @@ LAWS = {
 def run(law):
     with tempfile.TemporaryDirectory() as folder:
         path = Path(folder) / "in.lmp"
-        path.write_text(law + LATTICE + f"run {STEPS}\n")
+        path.write_text(f"plugin load {PLUGIN}\n" + LATTICE + law + f"run {STEPS}\n")
         subprocess.run([LMP, "-in", str(path), "-log", str(Path(folder) / "log"), "-screen", "none"], check=True,
                        cwd=folder)
         log = (Path(folder) / "log").read_text()

@@ -144,7 +144,8 @@ def test_oblique_collision_with_friction_and_spin_is_mdr_runs(tmp_path):
     # Sphere 1 slides along +y and spins about z against sphere 2 (n = +x), both of material 1: the contact points' relative velocity
     # is v_c = (v1y + R1 w1) - (v2y - R2 w2). The equivalent rigid sphere of `mdr run` has R = R_eff, the reduced
     # mass, and R^2 / I = R1^2 / I1 + R2^2 / I2 (test_dem_contact_law.cpp). The normal turns by about
-    # v_c T / (R1 + R2) = 3e-3 rad over the contact in LAMMPS and not in `mdr run`: agreement to 1e-2.
+    # v_c T / (R1 + R2) = 3e-3 rad over the contact in LAMMPS and not in `mdr run`: agreement to 3e-3 (observed:
+    # 1.0e-3 in e, 1.7e-3 in e_t; the head-on collision agrees to 1e-9).
     friction = 0.3
     velocities, spins = ((0.1, 0.05), (-0.1, -0.02)), (4.0, -2.0)
     alike = {1: MATERIALS[1], 2: MATERIALS[1]}
@@ -161,8 +162,8 @@ def test_oblique_collision_with_friction_and_spin_is_mdr_runs(tmp_path):
     # mdr run's contact point moves at v_t - R w: a spin of 0 and v_t = slip0 give the same contact point velocity
     summary = mdr_run(tmp_path, radius, mass, velocities[0][0] - velocities[1][0],
                       {"velocity": slip0, "spin": 0.0, "friction": friction, "inertia": inertia})
-    assert (a2 - a1) / (velocities[0][0] - velocities[1][0]) == pytest.approx(summary["restitution"], abs=1e-2)
-    assert -slip1 / slip0 == pytest.approx(summary["tangential_restitution"], abs=1e-2)
+    assert (a2 - a1) / (velocities[0][0] - velocities[1][0]) == pytest.approx(summary["restitution"], abs=3e-3)
+    assert -slip1 / slip0 == pytest.approx(summary["tangential_restitution"], abs=3e-3)
     # momentum and angular momentum about the contact line are conserved by the pair forces
     assert m1 * b1 + m2 * b2 == pytest.approx(m1 * velocities[0][1] + m2 * velocities[1][1], abs=1e-12)
 
