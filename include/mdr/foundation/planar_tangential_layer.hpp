@@ -49,10 +49,11 @@ public:
     /// Total tangential force [N] after the last step (eq. 46, both halves).
     PlanarVector total_force() const { return total_force_; }
     /// Number of elements.
-    std::size_t size() const { return displacement_.size() / 2; }
+    std::size_t size() const { return count_; }
 
     /// Doubles of the state that persists between steps for `count` elements and `branches` relaxation branches:
-    /// 3 + count (2 branches + 4) (force, touched elements; u_i, t_i, h_{k,i}, two components each).
+    /// 3 + count (2 branches + 4) (force, touched elements; u_i, t_i, h_{k,i}, two components each, component by
+    /// component).
     static std::size_t state_size(std::size_t count, std::size_t branches) { return 3 + count * (2 * branches + 4); }
     /// Offset in the state of the number of touched elements (an integer in [0, size()]).
     static constexpr std::size_t touched_offset = 2;
@@ -63,14 +64,17 @@ public:
     void load_state(std::span<const double> in);
 
 private:
-    // Element i's components are interleaved: [2 i] and [2 i + 1]; memory branch-major, memory_[k * 2 n + 2 i + c].
+    // Structure of arrays: component c of element i at [c * n + i]; memory branch-major, memory_[k * 2 n + c n + i].
     rheology::Rheology material_;  // a copy: the caller's material may be a temporary
     double per_load_;              ///< mu / (8/3): the friction limit [Pa] per unit line load [N/m]
     double spacing_;
+    std::size_t count_;
     std::vector<double> displacement_;  ///< u_i
     std::vector<double> stress_;        ///< t_i at the end of the last step
     std::vector<double> memory_;        ///< h_{k,i}
     std::vector<double> relaxed_;       ///< G_inf u_i + sum_k G_k E_k h_{k,i} for the prepared step
+    std::vector<double> increment_;     ///< du_i of the step being taken
+    std::vector<double> contact_mask_;  ///< 1 for an element in contact in the step being taken, else 0
     std::vector<double> share_;         ///< part of the step's increment an element takes (1 - entry fraction)
     std::vector<std::size_t> entered_;  ///< the elements whose share_ the prepared step set
     StepCoefficients step_;
