@@ -252,3 +252,21 @@ def test_packing_settles_alike_on_one_and_two_ranks_and_only_loses_energy(tmp_pa
     series = energies(tmp_path, "packing.lmp", 1)
     assert max(series) <= series[0] * (1 + 1e-9) + 1e-12
     assert series[-1] < series[0]
+
+
+@pytest.mark.parametrize("coefficients, message", [
+    ("G_inf 1e6 friction -0.1", "friction = -0.1: must be >= 0"),
+    ("G_inf -1e6 friction 0.3", "G_inf = -1000000: must be >= 0"),
+    ("G_inf 1e6 term 3e6 0 friction 0.3", "terms[0].tau = 0: must be > 0"),
+    ("G_inf 1e6 friction 0.3 elements 2.5", "elements = 2.5: must be a whole number in [1, 1e6]"),
+    ("G_inf 1e6", "friction is required"),
+])
+def test_bad_coefficients_stop_with_one_line_naming_the_key(tmp_path, coefficients, message):
+    script = two_spheres(RADII, DENSITIES, ((0.1, 0.0), (-0.1, 0.0)), steps=10)
+    script = script.replace(pair_coeffs(0.0), f"pair_coeff * * {coefficients}")
+    (tmp_path / "in.lmp").write_text(f"plugin load {PLUGIN}\n" + script)
+    done = subprocess.run([LMP, "-in", "in.lmp", "-log", "log", "-screen", "none"], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode != 0
+    errors = [line for line in (tmp_path / "log").read_text().splitlines() if line.startswith("ERROR")]
+    assert len(errors) == 1 and message in errors[0], errors
