@@ -147,6 +147,7 @@ void ContactLaw::begin(std::span<const double> state) {
 double ContactLaw::normal_trial(double overlap) const { return foundation_.trial_force(overlap_, overlap); }
 
 void ContactLaw::advance_normal(double overlap) {
+    require_finite("overlap", overlap);
     try {
         foundation_.advance(overlap_, overlap);
     } catch (const InvalidInput& error) {
@@ -168,6 +169,8 @@ PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
 }
 
 void ContactLaw::advance_tangential(PlanarVector displacement) {
+    require_finite("displacement", displacement[0]);
+    require_finite("displacement", displacement[1]);
     layer_.advance({displacement[0] - displacement_[0], displacement[1] - displacement_[1]}, loads(),
                    foundation_.contact_flags().first(foundation_.touched()));
     displacement_ = displacement;

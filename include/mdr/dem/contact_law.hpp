@@ -76,12 +76,13 @@ public:
     /// Total normal force [N] if the step ended at `overlap` [m]; the state is not changed.
     double normal_trial(double overlap) const;
     /// Advances the normal problem to `overlap` [m] over the step. Throws mdr::InvalidInput (key `half_width`)
-    /// when the contact would grow beyond the half-width.
+    /// when the contact would grow beyond the half-width, (key `overlap`) for an overlap that is not finite.
     void advance_normal(double overlap);
     /// Tangential force [N] if the step ended at tangential displacement `displacement` [m] (after
     /// advance_normal); the state is not changed.
     PlanarVector tangential_trial(PlanarVector displacement) const;
-    /// Advances the tangential problem to `displacement` [m] (after advance_normal).
+    /// Advances the tangential problem to `displacement` [m] (after advance_normal); throws mdr::InvalidInput (key
+    /// `displacement`) unless it is finite.
     void advance_tangential(PlanarVector displacement);
     /// Writes the workspace back into the contact's state.
     void end(std::span<double> state) const;

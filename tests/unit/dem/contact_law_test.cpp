@@ -152,6 +152,8 @@ TEST(DemContactLaw, MessagesNameTheLawsParameters) {
     law.initialise(state);
     EXPECT_EQ(thrown_key([&] { law.advance(state, 1e-3, {0.0, 0.0}); }), "half_width");
     EXPECT_EQ(thrown_key([&] { law.set_time_step(-1.0); }), "time_step");
+    EXPECT_EQ(thrown_key([&] { law.advance(state, std::nan(""), {0.0, 0.0}); }), "overlap");
+    EXPECT_EQ(thrown_key([&] { law.advance(state, 1e-6, {0.0, std::nan("")}); }), "displacement");
     const auto material = rheology::Rheology::standard(1e6, 3e6, 1e-3);
     EXPECT_EQ(thrown_key([&] { ContactLaw(material, 0.01, 0.3, std::size_t{1} << 40, 1e-3, 1e-6); }), "elements");
 }
