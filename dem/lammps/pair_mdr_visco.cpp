@@ -235,6 +235,14 @@ void PairMdrVisco::init_style()
         dummy_fix, std::string(history_fix) + " all NEIGH_HISTORY " + std::to_string(size_history), 1));
     fix_history->pair = this;
   }
+  // the history fix reserves pages of `neigh_modify page` contacts up front: say so when that is large
+  const double page_bytes = static_cast<double>(neighbor->pgsize) * size_history * sizeof(double);
+  if (comm->me == 0 && page_bytes > 100e6)
+    error->warning(FLERR,
+                   "pair mdr/visco: each contact's history is {} doubles, and a history page of neigh_modify page "
+                   "{} contacts reserves {:.0f} MB per rank; set neigh_modify one and page to what the contacts need "
+                   "(docs/dem.md)",
+                   size_history, neighbor->pgsize, page_bytes / 1e6);
   const int ifix = modify->find_fix(history_fix);
   if (ifix < 0) error->all(FLERR, "pair mdr/visco: its history fix {} is gone", history_fix);
   fix_history = dynamic_cast<FixNeighHistory *>(modify->fix[ifix]);
