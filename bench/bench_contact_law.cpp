@@ -35,8 +35,8 @@ void contact_law(benchmark::State& state) {
     for (auto _ : state) {
         law.initialise(contact);
         for (int n = 1; n < steps_per_contact; ++n) {
-            law.advance(contact, overlap_at(n), displacement_at(n));
-            sum += law.normal_force(contact) + law.tangential_force(contact);
+            law.advance(contact, overlap_at(n), {displacement_at(n), 0.0});
+            sum += law.normal_force(contact) + law.tangential_force(contact)[0];
         }
     }
     benchmark::DoNotOptimize(sum);

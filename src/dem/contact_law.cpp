@@ -1,48 +1,143 @@
 #include "mdr/dem/contact_law.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 #include "mdr/error.hpp"
 
 namespace mdr::dem {
 namespace {
 
-// The equivalent sphere, built before the workspace that reads it.
+// The equivalent sphere, built before the workspace that reads it; the Foundation's messages name the case file's
+// keys, this law's its own parameters.
 foundation::Foundation sphere_foundation(const rheology::Rheology& material, double radius, std::size_t elements,
                                          double half_width) {
     require_positive("radius", radius);
     require_positive("half_width", half_width);
     require_positive("elements", static_cast<double>(elements));
     const auto sphere = profile::make_sphere(radius);
-    return foundation::Foundation(material, *sphere, half_width / static_cast<double>(elements), elements);
+    try {
+        return foundation::Foundation(material, *sphere, half_width / static_cast<double>(elements), elements);
+    } catch (const InvalidInput& error) {
+        throw InvalidInput("elements", error.value(), error.rule());
+    }
 }
+
+double dot(const SpatialVector& a, const SpatialVector& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+SpatialVector cross(const SpatialVector& a, const SpatialVector& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// `vector` less its part along the unit `normal`.
+SpatialVector in_plane(const SpatialVector& vector, const SpatialVector& normal) {
+    const double along = dot(vector, normal);
+    return {vector[0] - along * normal[0], vector[1] - along * normal[1], vector[2] - along * normal[2]};
+}
+
+// A unit vector normal to the unit `normal`: its cross product with the axis it is least aligned with.
+SpatialVector any_normal_to(const SpatialVector& normal) {
+    const auto axis = static_cast<std::size_t>(
+        std::min_element(normal.begin(), normal.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }) -
+        normal.begin());
+    SpatialVector unit{0.0, 0.0, 0.0};
+    unit[axis] = 1.0;
+    const auto result = cross(normal, unit);
+    const double length = std::sqrt(dot(result, result));
+    return {result[0] / length, result[1] / length, result[2] / length};
+}
+
+std::string entry(std::size_t index) { return "state[" + std::to_string(index) + "]"; }
 
 }  // namespace
 
 std::size_t ContactLaw::state_size(std::size_t elements, std::size_t branches) {
-    return 1 + foundation::Foundation::state_size(elements, branches) +
-           foundation::TangentialLayer::state_size(elements, branches);
+    return normal_offset + foundation::Foundation::state_size(elements, branches) +
+           foundation::PlanarTangentialLayer::state_size(elements, branches);
 }
 
 ContactLaw::ContactLaw(const rheology::Rheology& material, double radius, double friction, std::size_t elements,
                        double half_width, double time_step)
     : foundation_(sphere_foundation(material, radius, elements, half_width)),
       layer_(material, friction, half_width / static_cast<double>(elements), elements),
+      material_(material),
       loads_(elements, 0.0),
-      tangential_offset_(normal_offset + foundation::Foundation::state_size(elements, material.terms().size())),
-      state_size_(state_size(elements, material.terms().size())) {
+      branches_(material.terms().size()),
+      tangential_offset_(normal_offset + foundation::Foundation::state_size(elements, branches_)),
+      state_size_(state_size(elements, branches_)) {
     require_non_negative("friction", friction);
-    require_positive("time_step", time_step);
-    foundation::fill_step_coefficients(material, time_step, coefficients_);
+    set_time_step(time_step);
     foundation_.reserve_events();
+}
+
+void ContactLaw::set_time_step(double time_step) {
+    if (time_step > 0.0 && time_step == coefficients_.time_step) return;  // every step of a DEM code: cheap
+    require_positive("time_step", time_step);
+    foundation::fill_step_coefficients(material_, time_step, coefficients_);
 }
 
 void ContactLaw::initialise(std::span<double> state) const {
     std::fill(state.begin(), state.begin() + static_cast<std::ptrdiff_t>(state_size_), 0.0);
 }
 
+void ContactLaw::mirror(std::span<double> state) {
+    // e1 -> -e1 and handedness -> -handedness with the normal reversed give e2 -> -e2 as well: the force on the
+    // new second body (the old first) is the opposite, with the same components.
+    for (std::size_t i = frame_offset; i <= handedness_offset; ++i) state[i] = -state[i];
+}
+
+std::size_t ContactLaw::count_at(std::span<const double> state, std::size_t offset) const {
+    const double count = state[offset];
+    if (!(count >= 0.0 && count <= static_cast<double>(loads_.size()) && count == std::floor(count))) {
+        throw InvalidInput(entry(offset), format_value(count),
+                           "a contact state's element count must be a whole number in [0, " +
+                               std::to_string(loads_.size()) + "] (a corrupted or foreign state)");
+    }
+    return static_cast<std::size_t>(count);
+}
+
+void ContactLaw::check(std::span<const double> state) const {
+    if (state.size() < state_size_) {
+        throw InvalidInput("state", std::to_string(state.size()) + " doubles",
+                           "this law's contact state holds " + std::to_string(state_size_) + " doubles");
+    }
+    for (std::size_t i = 0; i < state_size_; ++i) {
+        if (!std::isfinite(state[i])) {
+            throw InvalidInput(entry(i), format_value(state[i]), "a contact state holds finite numbers");
+        }
+    }
+    const std::size_t n = loads_.size();
+    const std::size_t active = count_at(state, normal_offset + 2);
+    count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
+    for (std::size_t i = 0; i < active; ++i) {
+        const std::size_t flag = normal_offset + 3 + 2 * n + i;
+        if (state[flag] != 0.0 && state[flag] != 1.0) {
+            throw InvalidInput(entry(flag), format_value(state[flag]), "a contact flag must be 0 or 1");
+        }
+    }
+    const double handedness = state[handedness_offset];
+    const SpatialVector axis{state[frame_offset], state[frame_offset + 1], state[frame_offset + 2]};
+    const double length = std::sqrt(dot(axis, axis));
+    const bool valid = handedness == 0.0 ? length == 0.0
+                                         : (std::abs(handedness) == 1.0 && std::abs(length - 1.0) <= 1e-9);
+    if (!valid) {
+        throw InvalidInput(entry(handedness_offset), format_value(handedness),
+                           "the contact frame is a unit axis (here of length " + format_value(length) +
+                               ") with handedness 1 or -1, or all zero before the first step");
+    }
+}
+
 void ContactLaw::begin(std::span<const double> state) {
-    displacement_ = state[0];
+    if (state.size() < state_size_) {
+        throw InvalidInput("state", std::to_string(state.size()) + " doubles",
+                           "this law's contact state holds " + std::to_string(state_size_) + " doubles");
+    }
+    count_at(state, normal_offset + 2);  // the two element counts decide where the loads below read and write
+    count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
+    displacement_ = {state[0], state[1]};
+    frame_ = {state[frame_offset], state[frame_offset + 1], state[frame_offset + 2]};
+    handedness_ = state[handedness_offset];
     overlap_ = state[normal_offset];
     foundation_.load_state(state.subspan(normal_offset));
     layer_.load_state(state.subspan(tangential_offset_));
@@ -52,7 +147,14 @@ void ContactLaw::begin(std::span<const double> state) {
 double ContactLaw::normal_trial(double overlap) const { return foundation_.trial_force(overlap_, overlap); }
 
 void ContactLaw::advance_normal(double overlap) {
-    foundation_.advance(overlap_, overlap);
+    require_finite("overlap", overlap);
+    try {
+        foundation_.advance(overlap_, overlap);
+    } catch (const InvalidInput& error) {
+        throw InvalidInput("half_width", format_value(foundation_.half_width()),
+                           "the contact grows beyond the law's half-width at overlap " + format_value(overlap) +
+                               "; give a larger half-width (at least sqrt(R d) for the largest overlap d)");
+    }
     foundation_.line_loads(loads_);
     layer_.begin_step(coefficients_, foundation_.entries());
 }
@@ -61,27 +163,69 @@ std::span<const double> ContactLaw::loads() const {
     return std::span<const double>(loads_).first(foundation_.touched());
 }
 
-double ContactLaw::tangential_trial(double displacement) const {
-    return layer_.trial_force(displacement - displacement_, loads(),
+PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
+    return layer_.trial_force({displacement[0] - displacement_[0], displacement[1] - displacement_[1]}, loads(),
                               foundation_.contact_flags().first(foundation_.touched()));
 }
 
-void ContactLaw::advance_tangential(double displacement) {
-    layer_.advance(displacement - displacement_, loads(), foundation_.contact_flags().first(foundation_.touched()));
+void ContactLaw::advance_tangential(PlanarVector displacement) {
+    require_finite("displacement", displacement[0]);
+    require_finite("displacement", displacement[1]);
+    layer_.advance({displacement[0] - displacement_[0], displacement[1] - displacement_[1]}, loads(),
+                   foundation_.contact_flags().first(foundation_.touched()));
     displacement_ = displacement;
 }
 
 void ContactLaw::end(std::span<double> state) const {
-    state[0] = displacement_;
+    state[0] = displacement_[0];
+    state[1] = displacement_[1];
+    for (std::size_t i = 0; i < 3; ++i) state[frame_offset + i] = frame_[i];
+    state[handedness_offset] = handedness_;
     foundation_.save_state(state.subspan(normal_offset));
     layer_.save_state(state.subspan(tangential_offset_));
 }
 
-void ContactLaw::advance(std::span<double> state, double overlap, double displacement) {
+void ContactLaw::advance(std::span<double> state, double overlap, PlanarVector displacement) {
     begin(state);
     advance_normal(overlap);
     advance_tangential(displacement);
     end(state);
+}
+
+SpatialVector ContactLaw::tangential_force(std::span<const double> state, const SpatialVector& normal) const {
+    const SpatialVector axis{state[frame_offset], state[frame_offset + 1], state[frame_offset + 2]};
+    const double handedness = state[handedness_offset];
+    const SpatialVector turned = cross(normal, axis);
+    const PlanarVector force = tangential_force(state);
+    SpatialVector result{};
+    for (std::size_t i = 0; i < 3; ++i) result[i] = force[0] * axis[i] + force[1] * handedness * turned[i];
+    return result;
+}
+
+SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
+                                          const SpatialVector& increment) {
+    begin(state);
+    const SpatialVector slip = in_plane(increment, normal);
+    // The frame turns with the normal: its axis projected into the new tangent plane and rescaled (LAMMPS's
+    // granular history does the same to its tangential vector). At first touch, or should the normal have turned
+    // by a right angle within a step, the axis starts afresh.
+    SpatialVector axis = handedness_ == 0.0 ? slip : in_plane(frame_, normal);
+    double length = std::sqrt(dot(axis, axis));
+    const double scale = handedness_ == 0.0 ? std::sqrt(dot(increment, increment)) : 1.0;
+    if (!(length > 1e-6 * scale)) {
+        axis = any_normal_to(normal);
+        length = 1.0;
+    }
+    frame_ = {axis[0] / length, axis[1] / length, axis[2] / length};
+    if (handedness_ == 0.0) handedness_ = 1.0;
+    const SpatialVector turned = cross(normal, frame_);
+    const SpatialVector second{handedness_ * turned[0], handedness_ * turned[1], handedness_ * turned[2]};
+    advance_normal(overlap);
+    advance_tangential({displacement_[0] + dot(slip, frame_), displacement_[1] + dot(slip, second)});
+    end(state);
+    const PlanarVector force = layer_.total_force();
+    return {force[0] * frame_[0] + force[1] * second[0], force[0] * frame_[1] + force[1] * second[1],
+            force[0] * frame_[2] + force[1] * second[2]};
 }
 
 }  // namespace mdr::dem

@@ -103,11 +103,13 @@ Outcome collide(Sphere a, Sphere b, double half_width, double time_step) {
         const double tangential_spring = 4.0 * tangential_mass / (time_step * time_step);
         const double tangential_anchor = displacement + slip() * time_step;
         const double new_displacement = monotone_solve(
-            [&](double u) { return law.tangential_trial(u) + tangential_spring * (u - tangential_anchor) + tangential; },
+            [&](double u) {
+                return law.tangential_trial({u, 0.0})[0] + tangential_spring * (u - tangential_anchor) + tangential;
+            },
             tangential_anchor, 1e-3 * std::abs(slip0) * time_step);
-        law.advance_tangential(new_displacement);
+        law.advance_tangential({new_displacement, 0.0});
         law.end(state);
-        const double new_tangential = law.tangential_force(state);
+        const double new_tangential = law.tangential_force(state)[0];
         EXPECT_EQ(law.normal_force(state), new_force);
         kick(0.5 * (force + new_force) * time_step, 0.5 * (tangential + new_tangential) * time_step);
         overlap = new_overlap;
@@ -168,9 +170,9 @@ time_step = {}
     std::vector<double> state(law.state_size());
     law.initialise(state);
     for (std::size_t n = 1; n + 1 < result.time.size(); ++n) {
-        law.advance(state, result.depth[n], result.tangential_displacement[n]);
+        law.advance(state, result.depth[n], {result.tangential_displacement[n], 0.0});
         ASSERT_NEAR(law.normal_force(state), result.force[n], 1e-13 * result.force[n]) << "step " << n;
-        ASSERT_NEAR(law.tangential_force(state), result.tangential_force[n],
+        ASSERT_NEAR(law.tangential_force(state)[0], result.tangential_force[n],
                     1e-12 * result.impact->oblique->max_tangential_force) << "step " << n;
     }
 

@@ -1,72 +1,105 @@
 #pragma once
 /// \file
 /// The MDR contact of two viscoelastic spheres as a contact law for time-stepping (DEM) codes: the state of each
-/// contact lives in the caller's memory; the law steps it with the library's own Foundation and TangentialLayer.
+/// contact lives in the caller's memory; the law steps it with the library's own Foundation and a
+/// PlanarTangentialLayer (the tangential displacement a vector in the contact's tangent plane).
 
+#include <array>
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "mdr/foundation/foundation.hpp"
+#include "mdr/foundation/planar_tangential_layer.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
-#include "mdr/foundation/tangential_layer.hpp"
-#include "mdr/profile/profile.hpp"
 #include "mdr/rheology/rheology.hpp"
 
 namespace mdr::dem {
 
-/// The contact law of one kind of contact (two sphere types, one time step). Sphere-sphere contact maps onto a rigid
-/// sphere of the equivalent radius R = R1 R2 / (R1 + R2) on a half-space with the combined creep function
-/// J = J1 + J2 (eq. 8; both bodies incompressible). The law owns a workspace — one Foundation (section 5) and one
-/// TangentialLayer (section 6) of N elements on the half-width L — and no contact's state: a contact's state is
-/// state_size() doubles in the caller's memory (a pair style's per-contact history, say), zeroed by initialise()
-/// at first touch. A step of one contact:
+/// A tangential vector in the contact frame: components along its two axes [m] or [N].
+using PlanarVector = foundation::PlanarVector;
+/// A vector in the caller's three-dimensional frame.
+using SpatialVector = std::array<double, 3>;
+
+/// The contact law of one kind of contact (two sphere types). Sphere-sphere contact maps onto a rigid sphere of the
+/// equivalent radius R = R1 R2 / (R1 + R2) on a half-space with the combined creep function J = J1 + J2 (eq. 8;
+/// both bodies incompressible). The law owns a workspace — one Foundation (section 5) and one
+/// PlanarTangentialLayer (section 6) of N elements on the half-width L — and no contact's state: a contact's state
+/// is state_size() doubles in the caller's memory (a pair style's per-contact history, say), zeroed by
+/// initialise() at first touch. A step of one contact:
 ///
-///     law.begin(state);                      // the contact's state into the workspace
+///     law.begin(state);                      // the contact's state into the workspace (its header checked)
 ///     law.normal_trial(overlap);             // optional: F_N for a trial overlap (an implicit integrator's solve)
 ///     law.advance_normal(overlap);           // the new normal overlap (eq. 13-22)
-///     law.tangential_trial(displacement);    // optional: F_x for a trial tangential displacement
+///     law.tangential_trial(displacement);    // optional: the tangential force for a trial displacement
 ///     law.advance_tangential(displacement);  // the new tangential displacement of the contact point (eq. 41-51)
 ///     law.end(state);                        // the workspace back into the state
 ///
-/// or law.advance(state, overlap, displacement) for the four calls without trials. Between begin and end the
-/// overlap and the displacement go linearly in time over the step (the elements' updates are exact for that); a
-/// dashpot sees the secant rate. Nothing allocates after construction. One law per thread (the workspace is its).
+/// or law.advance(state, overlap, displacement) for the four calls without trials, or advance_spatial for a code
+/// that works with three-dimensional vectors (the contact frame then lives in the state and turns with the
+/// normal). Between begin and end the overlap and the displacement go linearly in time over the step (the
+/// elements' updates are exact for that); a dashpot sees the secant rate. The time step may change between steps
+/// (set_time_step). Nothing allocates after construction. One law per thread (the workspace is its).
+///
+/// The tangential displacement is that of the first body's contact point relative to the second's; the tangential
+/// force is the force on the second body (the first feels its opposite); both are components in the contact frame.
 class ContactLaw {
 public:
     /// `material` the combined rheology, `radius` R [m] the equivalent radius, `friction` mu >= 0, `elements` N on
     /// the half-width `half_width` L [m] (it must cover the largest contact radius, sqrt(R d_max) for a sphere),
-    /// `time_step` dt [s] > 0 of every step. Throws mdr::InvalidInput for values out of range.
+    /// `time_step` dt [s] > 0 of the first step. Throws mdr::InvalidInput naming these parameters.
     ContactLaw(const rheology::Rheology& material, double radius, double friction, std::size_t elements,
                double half_width, double time_step);
 
-    /// Doubles of one contact's state for N elements and M relaxation branches: 6 + N (2 M + 7).
+    /// Doubles of one contact's state for N elements and M relaxation branches: 12 + N (3 M + 7).
     static std::size_t state_size(std::size_t elements, std::size_t branches);
     /// state_size for this law's N and M.
     std::size_t state_size() const { return state_size_; }
     /// Zeroes a contact's state at first touch (state_size() doubles).
     void initialise(std::span<double> state) const;
+    /// Throws mdr::InvalidInput (key `state[i]`) unless `state` is a state this law could have written: state_size()
+    /// doubles, all finite, element counts within N, contact flags 0 or 1, a unit frame axis with handedness +-1
+    /// (or all zero before the first advance_spatial). For states read back from a file (a restart).
+    void check(std::span<const double> state) const;
+    /// Turns a contact's state into the same contact seen with the two bodies swapped (a code that stores a
+    /// contact with either body first): the frame's axes and the normal reverse, so every component stays.
+    static void mirror(std::span<double> state);
 
-    /// Loads a contact's state into the workspace and prepares its step.
+    /// Sets the length [s] > 0 of the following steps (cheap when unchanged). Throws mdr::InvalidInput.
+    void set_time_step(double time_step);
+    /// The length [s] of the next step.
+    double time_step() const { return coefficients_.time_step; }
+
+    /// Loads a contact's state into the workspace and prepares its step. Throws mdr::InvalidInput when the
+    /// state's sizes are not this law's (a corrupted state); check() inspects every value.
     void begin(std::span<const double> state);
     /// Total normal force [N] if the step ended at `overlap` [m]; the state is not changed.
     double normal_trial(double overlap) const;
-    /// Advances the normal problem to `overlap` [m] over the step.
+    /// Advances the normal problem to `overlap` [m] over the step. Throws mdr::InvalidInput (key `half_width`)
+    /// when the contact would grow beyond the half-width, (key `overlap`) for an overlap that is not finite.
     void advance_normal(double overlap);
-    /// Total tangential force [N] if the step ended at tangential displacement `displacement` [m] of the contact
-    /// point (after advance_normal); the state is not changed.
-    double tangential_trial(double displacement) const;
-    /// Advances the tangential problem to `displacement` [m] (after advance_normal).
-    void advance_tangential(double displacement);
+    /// Tangential force [N] if the step ended at tangential displacement `displacement` [m] (after
+    /// advance_normal); the state is not changed.
+    PlanarVector tangential_trial(PlanarVector displacement) const;
+    /// Advances the tangential problem to `displacement` [m] (after advance_normal); throws mdr::InvalidInput (key
+    /// `displacement`) unless it is finite.
+    void advance_tangential(PlanarVector displacement);
     /// Writes the workspace back into the contact's state.
     void end(std::span<double> state) const;
     /// begin, advance_normal, advance_tangential, end.
-    void advance(std::span<double> state, double overlap, double displacement);
+    void advance(std::span<double> state, double overlap, PlanarVector displacement);
+    /// One step for a code with three-dimensional vectors: `normal` the unit normal from the first body to the
+    /// second at the end of the step, `increment` [m] the displacement of the first body's contact point relative
+    /// to the second's over the step (its normal part is ignored). The contact frame, kept in the state, first
+    /// turns into the new tangent plane (its axis projected and rescaled, as LAMMPS's granular history); at first
+    /// touch its axis is the increment's direction. Returns the tangential force [N] on the second body.
+    SpatialVector advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
+                                  const SpatialVector& increment);
 
     /// Normal force F_N [N] (eq. 21) of the workspace after the last advance_normal.
     double normal_force() const { return foundation_.total_force(); }
-    /// Tangential force F_x [N] (eq. 46) of the workspace after the last advance_tangential: the force on the
-    /// second body along the displacement; the first feels -F_x.
-    double tangential_force() const { return layer_.total_force(); }
+    /// Tangential force [N] (eq. 46) of the workspace after the last advance_tangential.
+    PlanarVector tangential_force() const { return layer_.total_force(); }
     /// Where inside the last normal step (0..1) the last element to leave contact left; 0 when none left.
     double latest_exit() const { return foundation_.latest_exit(); }
     /// Number of elements in normal contact after the last advance_normal (0: the contact has ended).
@@ -75,23 +108,38 @@ public:
     /// Normal force [N] stored in a contact's state (after end()).
     double normal_force(std::span<const double> state) const { return state[normal_offset + 1]; }
     /// Tangential force [N] stored in a contact's state.
-    double tangential_force(std::span<const double> state) const { return state[tangential_offset_]; }
-    /// Overlap [m] and tangential displacement [m] stored in a contact's state.
+    PlanarVector tangential_force(std::span<const double> state) const {
+        return {state[tangential_offset_], state[tangential_offset_ + 1]};
+    }
+    /// Tangential force [N] on the second body stored in a contact's state, as a vector for the contact's unit
+    /// `normal` (that of its last advance_spatial); zero before the first.
+    SpatialVector tangential_force(std::span<const double> state, const SpatialVector& normal) const;
+    /// Overlap [m] stored in a contact's state.
     double overlap(std::span<const double> state) const { return state[normal_offset]; }
-    double displacement(std::span<const double> state) const { return state[0]; }
+    /// Tangential displacement [m] stored in a contact's state.
+    PlanarVector displacement(std::span<const double> state) const { return {state[0], state[1]}; }
 
 private:
-    static constexpr std::size_t normal_offset = 1;  ///< state[0] holds the tangential displacement
+    // The state: [0, 2) the tangential displacement, [2, 5) the frame's first axis, [5] its handedness (e2 =
+    // handedness normal x e1; 0 before the first advance_spatial), then the Foundation's and the layer's states.
+    static constexpr std::size_t frame_offset = 2;
+    static constexpr std::size_t handedness_offset = 5;
+    static constexpr std::size_t normal_offset = 6;
     std::span<const double> loads() const;
+    std::size_t count_at(std::span<const double> state, std::size_t offset) const;
 
     foundation::Foundation foundation_;
-    foundation::TangentialLayer layer_;
+    foundation::PlanarTangentialLayer layer_;
     foundation::StepCoefficients coefficients_;
+    rheology::Rheology material_;
     std::vector<double> loads_;  ///< q_z,i of the last normal step
+    std::size_t branches_;
     std::size_t tangential_offset_;
     std::size_t state_size_;
-    double displacement_ = 0.0;  ///< tangential displacement at the start of the step
-    double overlap_ = 0.0;       ///< overlap at the start of the step
+    PlanarVector displacement_{0.0, 0.0};  ///< tangential displacement at the start of the step
+    SpatialVector frame_{0.0, 0.0, 0.0};   ///< the frame's first axis
+    double handedness_ = 0.0;
+    double overlap_ = 0.0;  ///< overlap at the start of the step
 };
 
 }  // namespace mdr::dem

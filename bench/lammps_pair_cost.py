@@ -1,0 +1,72 @@
+"""Cost per contact-step of the LAMMPS pair style mdr/visco against LAMMPS's `granular hertz/material` with a damping
+model, in one run on the same machine: a periodic simple-cubic lattice of 8000 spheres, each pressed into its six
+neighbours (24000 contacts, all alive every step), with random velocities but no integrator, so that every contact
+is stepped with a sliding tangential increment and the contact set never changes. Pair time from LAMMPS's timing
+breakdown over steps x contacts; memory per rank from its log.
+
+    LMP=.../lmp MDR_LAMMPS_PLUGIN=.../mdrviscoplugin.so python3 bench/lammps_pair_cost.py [elements] [terms]
+"""
+
+import os
+import re
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+LMP, PLUGIN = os.environ["LMP"], os.environ["MDR_LAMMPS_PLUGIN"]
+ELEMENTS = int(sys.argv[1]) if len(sys.argv) > 1 else 20
+TERMS = int(sys.argv[2]) if len(sys.argv) > 2 else 1
+STEPS, SIDE = 200, 20
+
+LATTICE = f"""
+units si
+atom_style sphere
+boundary p p p
+newton on
+lattice sc 0.00995
+region box block 0 {SIDE} 0 {SIDE} 0 {SIDE} units lattice
+create_box 1 box
+create_atoms 1 box
+set type 1 diameter 0.01 density 1100
+velocity all create 1e-6 4928 loop geom
+comm_modify vel yes
+neighbor 0.0005 bin
+neigh_modify one 50 page 5000
+timestep 1e-6
+compute touching all contact/atom
+compute contacts all reduce sum c_touching
+thermo_style custom step c_contacts
+"""
+
+LAWS = {
+    "granular hertz/material, damping tsuji, tangential mindlin": (
+        "pair_style granular\npair_coeff * * hertz/material 3e6 0.5 0.49 tangential mindlin NULL 1.0 0.3 "
+        "damping tsuji\n"),
+    f"mdr/visco, N = {ELEMENTS}, M = {TERMS}": (
+        "pair_style mdr/visco\npair_coeff 1 1 G_inf 1e6 "
+        + " ".join(f"term 1e6 {1e-4 * 10 ** k}" for k in range(TERMS))
+        + f" friction 0.3 elements {ELEMENTS} half_width 0.2\n"),
+}
+
+
+def run(law):
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "in.lmp"
+        path.write_text(f"plugin load {PLUGIN}\n" + LATTICE + law + f"run {STEPS}\n")
+        subprocess.run([LMP, "-in", str(path), "-log", str(Path(folder) / "log"), "-screen", "none"], check=True,
+                       cwd=folder)
+        log = (Path(folder) / "log").read_text()
+    pair = float(re.search(r"^Pair\s*\|\s*[\d.e+-]+\s*\|\s*([\d.e+-]+)", log, re.M).group(1))
+    contacts = float(re.findall(r"^\s*\d+\s+([\d.e+-]+)\s*$", log, re.M)[-1]) / 2
+    memory = re.search(r"Per MPI rank memory allocation \(min/avg/max\) = [\d.]+ \| ([\d.]+)", log).group(1)
+    return pair / (STEPS * contacts), contacts, float(memory)
+
+
+results = {name: run(law) for name, law in LAWS.items()}
+base = results[next(iter(LAWS))][0]
+state = 12 + ELEMENTS * (3 * TERMS + 7)
+print(f"{'law':62s} {'ns/contact-step':>16s} {'ratio':>6s} {'contacts':>9s} {'MB/rank':>8s}")
+for name, (cost, contacts, memory) in results.items():
+    print(f"{name:62s} {cost * 1e9:16.1f} {cost / base:6.2f} {contacts:9.0f} {memory:8.1f}")
+print(f"mdr/visco history per contact: {state} doubles = {state * 8} bytes (12 + N (3M + 7))")

@@ -1,0 +1,86 @@
+#pragma once
+/// \file
+/// The tangential degrees of freedom of the MDR foundation's elements in the plane of the contact: two components
+/// per element with local, isotropic Coulomb friction (handbook section 6, eq. 41-51, with the element's force a
+/// vector in the tangent plane).
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "mdr/foundation/foundation.hpp"
+#include "mdr/foundation/step_coefficients.hpp"
+#include "mdr/rheology/rheology.hpp"
+
+namespace mdr::foundation {
+
+/// A vector in the tangent plane of a contact [m] or [N]: components along the contact frame's two axes.
+using PlanarVector = std::array<double, 2>;
+
+/// Tangential elements beside a normal Foundation, at x_i = (i + 1/2) dx, each with a displacement vector u_i in
+/// the tangent plane. Element i has the material's rheology in each direction, stiffness k_x(t) = (8/3) G(t) dx
+/// (eq. 11, 41-43); the element "stress" t_i = G_inf u_i + eta u_i' + sum_k G_k h_k,i [Pa] (one memory vector per
+/// relaxation branch, exact exponential update of step_coefficients.hpp) gives F_i = (8/3) dx t_i.
+///
+/// Rule of a step in which the indenter moves by du (a vector, eq. 50 with the friction limit a circle): an element
+/// in normal contact at the end of the step first sticks, t_i = relaxed_i + k du; if then |t_i| > mu q_z,i / (8/3)
+/// it slips, t_i = that limit along its trial, u_i solved from it. An element entering contact takes the part of du
+/// after its entry (as TangentialLayer); out of contact an element is force-free and relaxes. For a motion along
+/// one fixed direction this is TangentialLayer's rule operation for operation (the same forces to round-off); for
+/// a motion that turns, each element keeps its own force direction (Mindlin-Deresiewicz's memory of the path).
+class PlanarTangentialLayer {
+public:
+    /// `count` elements of width `spacing` [m] of material `material` (copied), friction coefficient `friction` (mu).
+    PlanarTangentialLayer(const rheology::Rheology& material, double friction, double spacing, std::size_t count);
+
+    /// Prepares a step of the given coefficients from the current state, with the elements that enter normal
+    /// contact inside it (Foundation::entries after its step).
+    void begin_step(const StepCoefficients& coefficients, std::span<const Entry> entries = {});
+    /// Total tangential force [N] (eq. 46, both halves) the layer would carry after the prepared step with the
+    /// indenter moving by `increment` [m]; `normal_line_loads` q_z,i [N/m] and `contact` as for
+    /// TangentialLayer::trial_force. The state is not changed.
+    PlanarVector trial_force(PlanarVector increment, std::span<const double> normal_line_loads,
+                             std::span<const std::uint8_t> contact) const;
+    /// Advances the state over the prepared step (arguments as for trial_force).
+    void advance(PlanarVector increment, std::span<const double> normal_line_loads,
+                 std::span<const std::uint8_t> contact);
+    /// Total tangential force [N] after the last step (eq. 46, both halves).
+    PlanarVector total_force() const { return total_force_; }
+    /// Number of elements.
+    std::size_t size() const { return count_; }
+
+    /// Doubles of the state that persists between steps for `count` elements and `branches` relaxation branches:
+    /// 3 + count (2 branches + 4) (force, touched elements; u_i, t_i, h_{k,i}, two components each, component by
+    /// component).
+    static std::size_t state_size(std::size_t count, std::size_t branches) { return 3 + count * (2 * branches + 4); }
+    /// Offset in the state of the number of touched elements (an integer in [0, size()]).
+    static constexpr std::size_t touched_offset = 2;
+    /// Writes the persistent state into `out`; the untouched elements are left as they are there.
+    void save_state(std::span<double> out) const;
+    /// Replaces the state with one written by save_state (or zeros) by a layer of the same size and material; the
+    /// caller has checked the touched count. Call begin_step after it.
+    void load_state(std::span<const double> in);
+
+private:
+    // Structure of arrays: component c of element i at [c * n + i]; memory branch-major, memory_[k * 2 n + c n + i].
+    rheology::Rheology material_;  // a copy: the caller's material may be a temporary
+    double per_load_;              ///< mu / (8/3): the friction limit [Pa] per unit line load [N/m]
+    double spacing_;
+    std::size_t count_;
+    std::vector<double> displacement_;  ///< u_i
+    std::vector<double> stress_;        ///< t_i at the end of the last step
+    std::vector<double> memory_;        ///< h_{k,i}
+    std::vector<double> relaxed_;       ///< G_inf u_i + sum_k G_k E_k h_{k,i} for the prepared step
+    std::vector<double> increment_;     ///< du_i of the step being taken
+    std::vector<double> contact_mask_;  ///< 1 for an element in contact in the step being taken, else 0
+    std::vector<double> share_;         ///< part of the step's increment an element takes (1 - entry fraction)
+    std::vector<std::size_t> entered_;  ///< the elements whose share_ the prepared step set
+    StepCoefficients step_;
+    std::size_t touched_ = 0;           ///< elements [touched_, n) have never been in contact: u = h = 0
+    std::size_t high_water_ = 0;        ///< the largest touched_ any loaded or stepped state had
+    PlanarVector total_force_{0.0, 0.0};
+};
+
+}  // namespace mdr::foundation

@@ -1,0 +1,151 @@
+#include "mdr/foundation/planar_tangential_layer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "branch_sums.hpp"
+
+namespace mdr::foundation {
+namespace {
+
+constexpr double tangential_stiffness_factor = 8.0 / 3.0;  // k_x = (8/3) G dx, eq. (11), (41)
+
+}  // namespace
+
+PlanarTangentialLayer::PlanarTangentialLayer(const rheology::Rheology& material, double friction, double spacing,
+                                             std::size_t count)
+    : material_(material),
+      per_load_(friction / tangential_stiffness_factor),
+      spacing_(spacing),
+      count_(count),
+      displacement_(2 * count, 0.0),
+      stress_(2 * count, 0.0),
+      memory_(2 * count * material.terms().size(), 0.0),
+      relaxed_(2 * count, 0.0),
+      increment_(2 * count, 0.0),
+      contact_mask_(count, 0.0),
+      share_(count, 1.0) {
+    entered_.reserve(count);
+}
+
+void PlanarTangentialLayer::begin_step(const StepCoefficients& coefficients, std::span<const Entry> entries) {
+    step_ = coefficients;
+    for (const std::size_t i : entered_) share_[i] = 1.0;
+    entered_.clear();
+    for (const Entry& entry : entries) {
+        share_[entry.element] = 1.0 - entry.fraction;
+        entered_.push_back(entry.element);
+    }
+    for (std::size_t c = 0; c < 2; ++c) {
+        relaxed_sums(material_, step_, displacement_.data() + c * count_, memory_.data() + c * count_, 2 * count_,
+                     touched_, relaxed_.data() + c * count_);
+    }
+}
+
+PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, std::span<const double> normal_line_loads,
+                                                std::span<const std::uint8_t> contact) const {
+    const std::size_t n = count_;
+    double sum_x = 0.0, sum_y = 0.0;
+    for (std::size_t i = 0; i < contact.size(); ++i) {
+        if (!contact[i]) continue;
+        const double bound = per_load_ * std::max(normal_line_loads[i], 0.0);  // eq. (50), a circle
+        const double trial_x = relaxed_[i] + step_.stiffness * (increment[0] * share_[i]);
+        const double trial_y = relaxed_[n + i] + step_.stiffness * (increment[1] * share_[i]);
+        const double magnitude = std::sqrt(trial_x * trial_x + trial_y * trial_y);
+        const double scale = magnitude <= bound ? 1.0 : bound / magnitude;
+        sum_x += trial_x * scale;
+        sum_y += trial_y * scale;
+    }
+    const double factor = 2.0 * tangential_stiffness_factor * spacing_;
+    return {factor * sum_x, factor * sum_y};
+}
+
+__attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::advance(
+    PlanarVector increment, std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact) {
+    touched_ = std::max(touched_, contact.size());
+    high_water_ = std::max(high_water_, touched_);
+    const std::size_t n = count_, count = touched_;
+    const auto& terms = material_.terms();
+    double* __restrict mask = contact_mask_.data();
+    // As TangentialLayer: the loads and flags cover every element ever touched (count = contact.size()).
+    for (std::size_t i = 0; i < count; ++i) mask[i] = contact[i] != 0 ? 1.0 : 0.0;
+    const double* __restrict q = normal_line_loads.data();
+    const double* __restrict relaxed_x = relaxed_.data();
+    const double* __restrict relaxed_y = relaxed_.data() + n;
+    const double* __restrict share = share_.data();
+    double* __restrict u_x = displacement_.data();
+    double* __restrict u_y = displacement_.data() + n;
+    double* __restrict t_x = stress_.data();
+    double* __restrict t_y = stress_.data() + n;
+    double* __restrict du_x = increment_.data();
+    double* __restrict du_y = increment_.data() + n;
+    const double stiffness = step_.stiffness, compliance = 1.0 / step_.stiffness, per_load = per_load_;
+    // Eq. (50) with vectors, one branch-free pass (selects, so that it vectorises with -fno-trapping-math): an
+    // element in contact sticks while its trial stays inside the friction circle and slips along its trial
+    // otherwise; out of contact it is force-free.
+    for (std::size_t i = 0; i < count; ++i) {
+        const double in = mask[i];
+        const double bound = in * per_load * std::max(q[i], 0.0);
+        const double moved_x = increment[0] * share[i], moved_y = increment[1] * share[i];
+        const double trial_x = relaxed_x[i] + stiffness * moved_x;
+        const double trial_y = relaxed_y[i] + stiffness * moved_y;
+        const double magnitude = std::sqrt(trial_x * trial_x + trial_y * trial_y);
+        const bool sticks = in != 0.0 && magnitude <= bound;
+        const double scale = sticks ? 1.0 : (in != 0.0 ? bound / magnitude : 0.0);
+        const double stress_x = trial_x * scale, stress_y = trial_y * scale;
+        du_x[i] = sticks ? moved_x : (stress_x - relaxed_x[i]) * compliance;
+        du_y[i] = sticks ? moved_y : (stress_y - relaxed_y[i]) * compliance;
+        u_x[i] += du_x[i];
+        u_y[i] += du_y[i];
+        t_x[i] = stress_x;
+        t_y[i] = stress_y;
+    }
+    double sum_x = 0.0, sum_y = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        sum_x += t_x[i];
+        sum_y += t_y[i];
+    }
+    for (std::size_t k = 0; k < terms.size(); ++k) {  // h <- E h + B du (step_coefficients.hpp)
+        const double decay = step_.decay[k], gain = step_.gain[k];
+        double* __restrict h = memory_.data() + 2 * k * n;
+        for (std::size_t i = 0; i < count; ++i) h[i] = decay * h[i] + gain * du_x[i];
+        for (std::size_t i = 0; i < count; ++i) h[n + i] = decay * h[n + i] + gain * du_y[i];
+    }
+    const double factor = 2.0 * tangential_stiffness_factor * spacing_;
+    total_force_ = {factor * sum_x, factor * sum_y};
+}
+
+void PlanarTangentialLayer::save_state(std::span<double> out) const {
+    const std::size_t n = count_;
+    out[0] = total_force_[0];
+    out[1] = total_force_[1];
+    out[touched_offset] = static_cast<double>(touched_);
+    double* base = out.data() + 3;
+    const std::size_t blocks = 4 + 2 * material_.terms().size();  // u_x, u_y, t_x, t_y, then h_x, h_y per branch
+    for (std::size_t b = 0; b < blocks; ++b) {
+        const double* from = b < 2 ? displacement_.data() + b * n
+                                    : (b < 4 ? stress_.data() + (b - 2) * n : memory_.data() + (b - 4) * n);
+        std::copy_n(from, touched_, base + b * n);
+    }
+}
+
+void PlanarTangentialLayer::load_state(std::span<const double> in) {
+    const std::size_t n = count_;
+    total_force_ = {in[0], in[1]};
+    const auto touched = static_cast<std::size_t>(in[touched_offset]);
+    const double* base = in.data() + 3;
+    const std::size_t blocks = 4 + 2 * material_.terms().size();
+    for (std::size_t b = 0; b < blocks; ++b) {
+        double* to = b < 2 ? displacement_.data() + b * n
+                           : (b < 4 ? stress_.data() + (b - 2) * n : memory_.data() + (b - 4) * n);
+        std::copy_n(base + b * n, touched, to);
+        std::fill(to + touched, to + std::max(touched, high_water_), 0.0);  // zeros beyond the loaded elements
+    }
+    for (std::size_t c = 0; c < 2; ++c) {
+        std::fill(relaxed_.data() + c * n + touched, relaxed_.data() + c * n + std::max(touched, high_water_), 0.0);
+    }
+    touched_ = touched;
+    high_water_ = std::max(high_water_, touched_);
+}
+
+}  // namespace mdr::foundation
