@@ -2,13 +2,17 @@
 /// \file
 /// The exception type for bad input (with a helper that formats its message), and the one for a stop on request.
 
+#include <cstddef>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace mdr {
 
 /// Thrown for every non-physical or malformed input. The message has the form
-/// `key = value: rule`, e.g. `material.tau1 = 0: must be > 0`.
+/// `key = value: rule`, e.g. `material.tau1 = 0: must be > 0`, on one line: the key and the value are shown by
+/// message_text (escaped, cut to 60 characters), the rule escaped; key(), value() and rule() are as given.
 class InvalidInput : public std::invalid_argument {
 public:
     /// Builds the message from the offending key, its value as text and the violated rule.
@@ -36,6 +40,17 @@ class Interrupted : public std::runtime_error {
 public:
     Interrupted() : std::runtime_error("interrupted; no result was written") {}
 };
+
+/// A text from the input as a message shows it, on one line: control characters, the C1 controls, line and
+/// paragraph separators, bidirectional overrides and bytes that are not UTF-8 escaped (`\n`, `\r`, `\t`,
+/// `\x1b`, `\xc2\x9b`; a backslash stays as it is), and a text that would show longer than `limit` characters
+/// cut to exactly `limit`, ending in `... (N bytes)` with N its length. Showing a shown text changes nothing.
+std::string message_text(std::string_view text, std::size_t limit = 60);
+
+/// message_text without the cut: escapes only.
+inline std::string message_line(std::string_view text) {
+    return message_text(text, std::numeric_limits<std::size_t>::max());
+}
 
 /// Formats a double for an error message: shortest representation that round-trips.
 std::string format_value(double value);
