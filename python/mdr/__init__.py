@@ -296,7 +296,21 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
                "errors": [row[1] for row in batch.outputs]}
         batch.outputs = []
     summaries = raw["summaries"]
-    columns = next((list(s) for s in summaries if s), [])
+    # The union of the rows' keys, as sweep.csv has it: a key new to the list goes after the one before it in the
+    # first row that has it (rows of one summary layout keep its order, whatever the order of the rows).
+    columns: list = []
+    known: set = set()
+    for summary in summaries:
+        if not summary or known.issuperset(summary):
+            continue
+        known.update(summary)
+        position = 0
+        for key in summary or {}:
+            if key in columns:
+                position = columns.index(key) + 1
+            else:
+                columns.insert(position, key)
+                position += 1
     table = SweepTable()
     table.batch = batch
     points = np.asarray(raw["points"], dtype=float).reshape(len(summaries), len(specs))

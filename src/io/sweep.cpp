@@ -15,12 +15,14 @@
 #include <sstream>
 #include <system_error>
 #include <thread>
+#include <unordered_set>
 
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/step_observer.hpp"
 #include "mdr/drivers/work_estimate.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
+#include "mdr/io/csv_field.hpp"
 #include "mdr/io/case_template.hpp"
 #include "mdr/io/summary.hpp"
 
@@ -290,20 +292,37 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
     return rows;
 }
 
+namespace {
+
+// The numeric summary keys of all rows, each once: a key is put after the one before it in the first row that has
+// it, so rows whose keys follow one order (a summary's) give that order whatever the order of the rows.
+std::vector<std::string> numeric_columns(const std::vector<SweepRow>& rows) {
+    std::vector<std::string> columns;
+    std::unordered_set<std::string> known;
+    for (const auto& row : rows) {
+        const bool all_known = std::all_of(row.summary.begin(), row.summary.end(), [&](const SummaryEntry& entry) {
+            return known.contains(entry.key) || !number_in(entry.value);
+        });
+        if (all_known) continue;
+        auto position = columns.begin();
+        for (const auto& [key, value] : row.summary) {
+            if (!number_in(value)) continue;
+            const auto found = std::find(columns.begin(), columns.end(), key);
+            position = found != columns.end() ? found + 1 : columns.insert(position, key) + 1;
+            known.insert(key);
+        }
+    }
+    return columns;
+}
+
+}  // namespace
+
 void write_sweep_csv(const std::filesystem::path& directory, const std::vector<SweepAxis>& axes,
                      const std::vector<SweepRow>& rows) {
-    // The numeric summary keys, in the order of the first run that succeeded.
-    std::vector<std::string> columns;
-    for (const auto& row : rows) {
-        if (row.summary.empty()) continue;
-        for (const auto& [key, value] : row.summary) {
-            if (number_in(value)) columns.push_back(key);
-        }
-        break;
-    }
+    const std::vector<std::string> columns = numeric_columns(rows);
     auto out = fmt::output_file((directory / "sweep.csv").string());
     std::string header;
-    for (const auto& axis : axes) header += axis.key + ",";
+    for (const auto& axis : axes) header += csv_field(axis.key) + ",";
     for (const auto& column : columns) header += column + ",";
     out.print("{}error\n", header);
     for (const auto& row : rows) {
@@ -318,11 +337,7 @@ void write_sweep_csv(const std::filesystem::path& directory, const std::vector<S
                 out.print("nan,");
             }
         }
-        std::string error = row.error;
-        for (char& c : error) {
-            if (c == '"') c = '\'';
-        }
-        out.print("{}\n", error.empty() ? "" : "\"" + error + "\"");
+        out.print("{}\n", row.error.empty() ? "" : csv_quoted(row.error));
     }
     out.close();
 }
