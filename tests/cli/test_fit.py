@@ -113,6 +113,31 @@ def plotted_figures(out):
     return sorted(pathlib.Path(p).name for p in plotted.stdout.split())
 
 
+@pytest.mark.parametrize("name", ['cell,1', 'a "quoted" name', "two\nlines", "plain"])
+def test_curve_names_read_back_as_one_field(run_mdr, fit_case, workdir, name):
+    """curves.csv is RFC 4180 CSV whatever the curve's name (issue 23): read with the csv module (and with
+    mdr.plot.read_csv where the package is built), every row has the header's 5 fields and the name as given. A
+    plain name is written as it is."""
+    case = fit_case().read_text(encoding="utf-8").replace('file = "curve.csv"', f"file = \"curve.csv\"\nname = {json.dumps(name)}")
+    (workdir / "case.toml").write_text(case, encoding="utf-8")
+    result = run_mdr("fit", workdir / "case.toml", "--out", workdir / "out", timeout=300)
+    assert result.returncode == 0, result.stderr
+    with open(workdir / "out" / "curves.csv", newline="", encoding="utf-8") as handle:
+        rows = list(csv.reader(handle))
+    assert rows[0] == ["curve", "t", "measured", "model", "residual"]
+    assert len(rows) == 301 and all(len(row) == 5 and row[0] == name for row in rows[1:])
+    if name == "plain":
+        assert (workdir / "out" / "curves.csv").read_text(encoding="utf-8").splitlines()[1].startswith("plain,")
+    package = pathlib.Path(os.environ.get("MDR_PYTHONPATH", "/nonexistent"))
+    if (package / "mdr").is_dir():
+        script = ("import sys, mdr.plot; c = mdr.plot.read_csv(sys.argv[1]); "
+                  "print(len(c['curve']), set(c['curve'].tolist()) == {sys.argv[2]}, c['residual'].dtype.kind)")
+        read = subprocess.run([sys.executable, "-c", script, str(workdir / "out" / "curves.csv"), name],
+                              capture_output=True, text=True, timeout=120,
+                              env=dict(os.environ, PYTHONPATH=str(package), MPLBACKEND="Agg"))
+        assert read.stdout.split() == ["300", "True", "f"], read.stderr
+
+
 @pytest.mark.parametrize("extra, fragments", [
     ('bounds = { "material.G" = [1.0e6, 1.0e3] }', ["fit.bounds.material.G", "lower bound"]),
     ('bounds = { "material.G" = [1.0e6, 1.0e7] }', ["material.G = 50000", "within its bounds"]),
