@@ -1,8 +1,12 @@
 #include "mdr/error.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <fmt/format.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -92,6 +96,23 @@ InvalidInput::InvalidInput(std::string key, std::string value, std::string rule)
 
 InvalidInput InvalidInput::with_prefix(const std::string& prefix) const {
     return InvalidInput(prefix + key_, value_, rule_);
+}
+
+std::string unreadable_reason(const std::filesystem::path& path) {
+    std::error_code error;
+    const auto status = std::filesystem::status(path, error);
+    if (std::filesystem::is_directory(status)) return "is a directory";
+    if (!error) {
+        errno = 0;
+        if (std::FILE* file = std::fopen(path.c_str(), "rb")) {
+            std::fclose(file);
+            return "cannot be opened";
+        }
+        error = std::error_code(errno, std::generic_category());
+    }
+    std::string reason = error ? error.message() : "cannot be opened";
+    if (!reason.empty()) reason.front() = static_cast<char>(std::tolower(static_cast<unsigned char>(reason.front())));
+    return reason;
 }
 
 std::string format_value(double value) { return fmt::format("{}", value); }

@@ -3,6 +3,7 @@
 /// The exception type for bad input (with a helper that formats its message), and the one for a stop on request.
 
 #include <cstddef>
+#include <filesystem>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -51,6 +52,10 @@ std::string message_text(std::string_view text, std::size_t limit = 60);
 inline std::string message_line(std::string_view text) {
     return message_text(text, std::numeric_limits<std::size_t>::max());
 }
+
+/// Why `path` cannot be opened for reading, in the words of the system (`no such file or directory`, `too many
+/// levels of symbolic links`, `permission denied`, `is a directory`), for a message `cannot be read (...)`.
+std::string unreadable_reason(const std::filesystem::path& path);
 
 /// Formats a double for an error message: shortest representation that round-trips.
 std::string format_value(double value);

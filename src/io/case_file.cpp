@@ -281,7 +281,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
 
 drivers::ContactCase load_case(const std::filesystem::path& path) {
     std::ifstream file(path);
-    if (!file) throw InvalidInput("case", path.string(), "cannot be read (no such file, or no permission)");
+    if (!file) throw InvalidInput("case", path.string(), "cannot be read (" + unreadable_reason(path) + ")");
     std::ostringstream text;
     text << file.rdbuf();
     return parse_case(text.str(), path.string());
@@ -346,7 +346,7 @@ std::string describe(const drivers::ContactCase& contact_case) {
                                                                            unit_names(units)));
     }
     return fmt::format("{}{} on {} half-space{} (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
-                       contact_case.title.empty() ? "" : "\"" + contact_case.title + "\": ",
+                       contact_case.title.empty() ? "" : "\"" + message_line(contact_case.title) + "\": ",
                        contact_case.indenter->describe(), rheology, model, material.instantaneous_modulus(),
                        units.pressure, material.equilibrium_modulus(), units.pressure, material.terms().size(), load,
                        contact_case.units == "SI" ? "" : fmt::format(" [units {}]", units.name));

@@ -118,7 +118,8 @@ def test_curve_names_read_back_as_one_field(run_mdr, fit_case, workdir, name):
     """curves.csv is RFC 4180 CSV whatever the curve's name (issue 23): read with the csv module (and with
     mdr.plot.read_csv where the package is built), every row has the header's 5 fields and the name as given. A
     plain name is written as it is."""
-    case = fit_case().read_text(encoding="utf-8").replace('file = "curve.csv"', f"file = \"curve.csv\"\nname = {json.dumps(name)}")
+    case = fit_case().read_text(encoding="utf-8").replace('file = "curve.csv"',
+                                                          f'file = "curve.csv"\nname = {json.dumps(name)}')
     (workdir / "case.toml").write_text(case, encoding="utf-8")
     result = run_mdr("fit", workdir / "case.toml", "--out", workdir / "out", timeout=300)
     assert result.returncode == 0, result.stderr
