@@ -59,33 +59,34 @@ std::string escaped(unsigned char byte) {
 }  // namespace
 
 std::string message_text(std::string_view text, std::size_t limit) {
+    struct Piece {  // one character, or the escape of one byte
+        std::size_t start;       // in `shown`
+        std::size_t characters;  // as shown
+    };
     std::string shown;
-    std::vector<std::pair<std::size_t, std::size_t>> ends;  // (characters, bytes) shown after each piece
-    std::size_t characters = 0;
+    std::vector<Piece> pieces;
+    std::size_t total = 0;
     for (std::size_t i = 0; i < text.size();) {
-        if (const std::size_t length = printable_length(text, i)) {
-            shown.append(text.substr(i, length));
-            characters += 1;
-            i += length;
-        } else {
-            const std::string escape = escaped(static_cast<unsigned char>(text[i]));
-            shown += escape;
-            characters += escape.size();
-            i += 1;
-        }
-        if (characters > limit) {
-            const std::string suffix = fmt::format("... ({} bytes)", text.size());
-            const std::size_t room = limit > suffix.size() ? limit - suffix.size() : 0;
-            std::size_t kept = 0;
-            for (const auto& [count, bytes] : ends) {
-                if (count <= room) kept = bytes;
-            }
-            shown.resize(kept);
-            return shown += suffix;
-        }
-        ends.emplace_back(characters, shown.size());
+        const std::size_t length = printable_length(text, i);
+        const std::string piece = length > 0 ? std::string(text.substr(i, length))
+                                             : escaped(static_cast<unsigned char>(text[i]));
+        pieces.push_back({shown.size(), length > 0 ? 1 : piece.size()});
+        total += pieces.back().characters;
+        shown += piece;
+        i += length > 0 ? length : 1;
     }
-    return shown;
+    if (total <= limit) return shown;
+    // Too long: the head and the tail (a file's name, the last digits) around "...", then the length.
+    const std::string suffix = fmt::format(" ({} bytes)", text.size());
+    const std::size_t room = limit > suffix.size() + 3 ? limit - suffix.size() - 3 : 0;
+    std::size_t head = 0, used = 0;
+    while (head < pieces.size() && used + pieces[head].characters <= room / 2) used += pieces[head++].characters;
+    std::size_t tail = pieces.size();
+    while (tail > head && used + pieces[tail - 1].characters <= room) used += pieces[--tail].characters;
+    std::string result = shown.substr(0, pieces[head].start);
+    result += "...";
+    if (tail < pieces.size()) result += shown.substr(pieces[tail].start);
+    return result += suffix;
 }
 
 InvalidInput::InvalidInput(std::string key, std::string value, std::string rule)

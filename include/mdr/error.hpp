@@ -45,7 +45,8 @@ public:
 /// A text from the input as a message shows it, on one line: control characters, the C1 controls, line and
 /// paragraph separators, bidirectional overrides and bytes that are not UTF-8 escaped (`\n`, `\r`, `\t`,
 /// `\x1b`, `\xc2\x9b`; a backslash stays as it is), and a text that would show longer than `limit` characters
-/// cut to exactly `limit`, ending in `... (N bytes)` with N its length. Showing a shown text changes nothing.
+/// cut to at most `limit`: its head and its tail (a file's name) around `...`, then ` (N bytes)`, N its length.
+/// Showing a shown text changes nothing.
 std::string message_text(std::string_view text, std::size_t limit = 60);
 
 /// message_text without the cut: escapes only.

@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <cstdlib>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <numeric>
@@ -36,16 +38,21 @@ std::optional<double> number_in(const SummaryValue& value) {
     return std::nullopt;
 }
 
+// A value of `--vary`: the nearest double to a decimal or hexadecimal number (strtod; a subnormal one too), refused
+// when it is not a number, overflows to infinity or underflows to 0 from a number that is not 0.
 double parse_number(const std::string& text, const std::string& spec) {
-    std::size_t used = 0;
-    double value = 0.0;
-    try {
-        value = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
+    const auto refuse = [&](const std::string& rule) {
+        throw InvalidInput("--vary", spec, "'" + message_text(text) + "' " + rule);
+    };
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(text.c_str(), &end);  // skips leading blanks, as std::stod did
+    if (text.empty() || end != text.c_str() + text.size() || std::isnan(value)) refuse("is not a finite number");
+    if (std::isinf(value)) {
+        refuse(errno == ERANGE ? "overflows: it is beyond the largest double (about 1.8e308)" : "is not finite");
     }
-    if (used == 0 || used != text.size() || !std::isfinite(value)) {
-        throw InvalidInput("--vary", spec, "'" + text + "' is not a finite number");
+    if (errno == ERANGE && value == 0.0) {
+        refuse("underflows to 0: it is below the smallest positive double (about 4.9e-324); write 0 if that is meant");
     }
     return value;
 }

@@ -169,6 +169,38 @@ def test_bad_data(run_mdr, fit_case, workdir, edit, fragments):
     assert_bad_input(run_mdr("fit", path, "--out", workdir / "out"), "fit.data[0].", *fragments)
 
 
+def message_of_data(run_mdr, fit_case, workdir, data: bytes, file="curve.csv"):
+    """The one error line of a fit whose curve file holds `data` (the case names `file`)."""
+    path = fit_case()
+    path.write_text(path.read_text().replace('file = "curve.csv"', f"file = {json.dumps(file)}"))
+    (workdir / "curve.csv").write_bytes(data)
+    result = run_mdr("fit", path, "--out", workdir / "out")
+    assert len(result.stderr_lines) == 1 and result.returncode == 2, result.stderr
+    assert result.stdout == "" and not (workdir / "out").exists()
+    return result.stderr_lines[0]
+
+
+def test_values_from_a_curve_file_are_echoed_escaped_and_short(run_mdr, fit_case, workdir):
+    """Issue 23: a cell with a terminal escape is shown escaped; a file with CR line ends (one line to the reader) or
+    with a long first line is never echoed whole: at most 6 escaped names of at most 60 characters, then the count;
+    a file that is not the expected CSV (a system file, say) shows no more than its first 60 characters."""
+    cell = message_of_data(run_mdr, fit_case, workdir, b"t,depth_um,force_uN\n0,1,2\n0.1,2,\x1b[2J3\n")
+    assert "\x1b" not in cell and '.force = \\x1b[2J3: in curve.csv, line 3, column "force_uN"' in cell
+    rows = "".join(f"{i},{i},{i}\r" for i in range(300))  # one line of 301 * 2 commas: 603 fields
+    cr = message_of_data(run_mdr, fit_case, workdir, ("t,depth_um,force_uN\r" + rows).encode())
+    assert "its columns: t, depth_um, force_uN\\r0, 0, 0\\r1, 1, ... (603 in all)" in cr and len(cr) < 300
+    secret = "root:x:0:0:root:/root:/bin/bash" * 10
+    system = message_of_data(run_mdr, fit_case, workdir, (secret + "\nsecond line\n").encode())
+    assert secret not in system and "second line" not in system and "(310 bytes)" in system and len(system) < 200
+
+
+def test_a_symbolic_link_loop_is_told_as_such(run_mdr, fit_case, workdir):
+    """Issue 23: the system's reason, not "no such file"."""
+    (workdir / "loop.csv").symlink_to("loop.csv")
+    line = message_of_data(run_mdr, fit_case, workdir, b"t\n", file="loop.csv")
+    assert "loop.csv" in line and "too many levels of symbolic links" in line
+
+
 def test_a_curve_that_never_makes_contact(run_mdr, fit_case, workdir):
     path = fit_case('fitted = "depth"\ncontact_point = "fixed"\nbaseline = "fixed"')
     with open(workdir / "curve.csv", "w", newline="", encoding="utf-8") as handle:

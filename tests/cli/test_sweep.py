@@ -85,6 +85,9 @@ def test_failed_points_keep_their_message_and_the_others_run(run_mdr, case_file,
     ("material.tau1=0:1:3:log", ["log grid", "> 0"]),
     ("material.tau1=1:2:0", ["COUNT", "integer"]),
     ("material.tau1=1:x:3", ["'x'", "not a finite number"]),
+    # issue 23: strtod's underflow and overflow are told as such, not "not a finite number"
+    ("material.tau1=1e-400,1", ["'1e-400'", "underflows to 0"]),
+    ("material.tau1=1e400,1", ["'1e400'", "overflows"]),
     ("material.tau1", ["KEY=START:STOP:COUNT"]),
 ])
 def test_bad_sweep_input(run_mdr, case_file, workdir, spec, fragments):

@@ -27,16 +27,20 @@ TEST(MessageText, EscapesControlCharactersAndTerminalSequences) {
 TEST(MessageText, CutsLongTextsToTheLimitWithTheirLength) {
     const std::string number(100000, '1');
     const std::string shown = message_text(number);
-    EXPECT_EQ(shown, std::string(60 - 18, '1') + "... (100000 bytes)");  // the suffix takes 18 of the 60
+    // " (100000 bytes)" and "..." take 18 of the 60: 21 characters of the head, 21 of the tail.
+    EXPECT_EQ(shown, std::string(21, '1') + "..." + std::string(21, '1') + " (100000 bytes)");
     EXPECT_EQ(shown.size(), 60u);
     EXPECT_EQ(message_text(std::string(60, 'x')), std::string(60, 'x'));  // at the limit: whole
     // Escapes count as what they show; never cut inside one, nor inside a UTF-8 character.
     const std::string escapes = message_text(std::string(100, '\x1b'));
-    std::string eleven;  // 45 characters of room beside the 15 of the suffix: 11 whole escapes of 4
-    for (int i = 0; i < 11; ++i) eleven += "\\x1b";
-    EXPECT_EQ(escapes, eleven + "... (100 bytes)");
+    std::string five, six;  // 45 characters of room: 5 whole escapes of 4 in half of it, 6 in the rest
+    for (int i = 0; i < 5; ++i) five += "\\x1b";
+    six = five + "\\x1b";
+    EXPECT_EQ(escapes, five + "..." + six + " (100 bytes)");
     const std::string umlauts = message_text("\xc3\xb6" + std::string(200, 'a'));
     EXPECT_EQ(umlauts.substr(0, 2), "\xc3\xb6");
+    const std::string path = "/home/someone/a/long/path/to/the/measurements/of/the/day/cell_0012.csv";
+    EXPECT_EQ(message_text(path), "/home/someone/a/long/pa...f/the/day/cell_0012.csv (70 bytes)");  // 23 + 23
     for (const std::string& text : {shown, escapes, umlauts}) EXPECT_EQ(message_text(text), text);  // idempotent
 }
 
@@ -46,7 +50,7 @@ TEST(MessageText, InvalidInputIsOneShortLine) {
     EXPECT_EQ(error.value(), "\"maxwell\n\x1b[2Jboom\"");  // as given, for callers that rethrow it
     const InvalidInput huge("material.tau1", std::string(100000, '9'), "must be finite");
     EXPECT_EQ(std::string(huge.what()),
-              "material.tau1 = " + std::string(42, '9') + "... (100000 bytes): must be finite");
+              "material.tau1 = " + std::string(21, '9') + "..." + std::string(21, '9') + " (100000 bytes): must be finite");
 }
 
 TEST(MessageText, UnreadableFilesSayWhy) {
