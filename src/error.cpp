@@ -1,10 +1,10 @@
 #include "mdr/error.hpp"
 
-#include <cctype>
-#include <cmath>
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <system_error>
 #include <utility>
@@ -17,7 +17,9 @@ namespace {
 // character, a C1 control (U+0080 to U+009F), U+2028, U+2029, a bidirectional override or isolate (U+202A to
 // U+202E, U+2066 to U+2069), or a byte that does not start a well-formed sequence.
 std::size_t printable_length(std::string_view text, std::size_t i) {
-    const auto byte = [&](std::size_t k) { return i + k < text.size() ? static_cast<unsigned char>(text[i + k]) : 0u; };
+    const auto byte = [&](std::size_t k) -> unsigned {
+        return i + k < text.size() ? static_cast<unsigned char>(text[i + k]) : 0u;
+    };
     const unsigned lead = byte(0);
     if (lead < 0x80) return lead >= 0x20 && lead != 0x7f ? 1 : 0;
     const auto continuation = [&](std::size_t k) { return (byte(k) & 0xC0u) == 0x80u; };

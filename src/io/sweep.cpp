@@ -24,8 +24,8 @@
 #include "mdr/drivers/work_estimate.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
-#include "mdr/io/csv_field.hpp"
 #include "mdr/io/case_template.hpp"
+#include "mdr/io/csv_field.hpp"
 #include "mdr/io/summary.hpp"
 
 namespace mdr::io {
@@ -49,7 +49,8 @@ double parse_number(const std::string& text, const std::string& spec) {
     const double value = std::strtod(text.c_str(), &end);  // skips leading blanks, as std::stod did
     if (text.empty() || end != text.c_str() + text.size() || std::isnan(value)) refuse("is not a finite number");
     if (std::isinf(value)) {
-        refuse(errno == ERANGE ? "overflows: it is beyond the largest double (about 1.8e308)" : "is not finite");
+        refuse(errno == ERANGE ? "overflows: it is beyond the largest double (about 1.8e308)"
+                               : "is not a finite number");
     }
     if (errno == ERANGE && value == 0.0) {
         refuse("underflows to 0: it is below the smallest positive double (about 4.9e-324); write 0 if that is meant");

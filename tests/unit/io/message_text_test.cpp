@@ -50,7 +50,8 @@ TEST(MessageText, InvalidInputIsOneShortLine) {
     EXPECT_EQ(error.value(), "\"maxwell\n\x1b[2Jboom\"");  // as given, for callers that rethrow it
     const InvalidInput huge("material.tau1", std::string(100000, '9'), "must be finite");
     EXPECT_EQ(std::string(huge.what()),
-              "material.tau1 = " + std::string(21, '9') + "..." + std::string(21, '9') + " (100000 bytes): must be finite");
+              "material.tau1 = " + std::string(21, '9') + "..." + std::string(21, '9') +
+                  " (100000 bytes): must be finite");
 }
 
 TEST(MessageText, UnreadableFilesSayWhy) {
