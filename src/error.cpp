@@ -118,6 +118,10 @@ std::string unreadable_reason(const std::filesystem::path& path) {
     return reason;
 }
 
+InvalidInput unreadable_file(const std::string& key, const std::filesystem::path& path) {
+    return InvalidInput(key, path.string(), "cannot be read (" + unreadable_reason(path) + ")");
+}
+
 std::string format_value(double value) { return fmt::format("{}", value); }
 
 void require_finite(const std::string& key, double value) {

@@ -58,6 +58,9 @@ inline std::string message_line(std::string_view text) {
 /// levels of symbolic links`, `permission denied`, `is a directory`), for a message `cannot be read (...)`.
 std::string unreadable_reason(const std::filesystem::path& path);
 
+/// The error for a file that cannot be read: `key = PATH: cannot be read (unreadable_reason)`.
+InvalidInput unreadable_file(const std::string& key, const std::filesystem::path& path);
+
 /// Formats a double for an error message: shortest representation that round-trips.
 std::string format_value(double value);
 

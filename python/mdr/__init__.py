@@ -84,8 +84,8 @@ def _case_text(case: CaseLike) -> tuple[str, str]:
             with open(path, encoding="utf-8") as handle:
                 return handle.read(), path
         except OSError:
-            # The same line as the command line's (src/io/case_file.cpp, load_case).
-            raise InvalidInput(f"case = {path}: cannot be read (no such file, or no permission)") from None
+            pass
+        _mdr._unreadable_case(path)  # raises the command line's line (mdr::unreadable_file), without the OSError
     raise TypeError(f"case: expected a path or a dict, got {type(case).__name__}")
 
 

@@ -281,7 +281,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
 
 drivers::ContactCase load_case(const std::filesystem::path& path) {
     std::ifstream file(path);
-    if (!file) throw InvalidInput("case", path.string(), "cannot be read (" + unreadable_reason(path) + ")");
+    if (!file) throw unreadable_file("case", path);
     std::ostringstream text;
     text << file.rdbuf();
     return parse_case(text.str(), path.string());
