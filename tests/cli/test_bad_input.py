@@ -192,6 +192,8 @@ BAD_CASES = [
     # issue 23: a value is echoed on one line, control characters escaped (a newline, a terminal escape)
     ("model-with-control-characters", case_text(material='[material]\nmodel = "max\\nwell\\u001b[2J"\n'),
      ["material.model = \"max\\nwell\\x1b[2J\"", "unknown model"]),
+    ("model-with-a-nul", case_text(material='[material]\nmodel = "max\\u0000well"\n'),
+     ["material.model = \"max\\x00well\"", "unknown model"]),
     # numerics
     ("elements-zero", case_text(numerics="[numerics]\nelements = 0\n"),
      ["numerics.elements", "= 0", "integer >= 1"]),
