@@ -192,6 +192,9 @@ BAD_CASES = [
     # issue 23: a value is echoed on one line, control characters escaped (a newline, a terminal escape)
     ("model-with-control-characters", case_text(material='[material]\nmodel = "max\\nwell\\u001b[2J"\n'),
      ["material.model = \"max\\nwell\\x1b[2J\"", "unknown model"]),
+    # issue 23: toml++ reads 1e-400 as 0; the key is named with what was written, not "= 0: must be > 0"
+    ("underflow-to-zero", case_text(extra="[output]\nsnapshots = [1e-400]\n"),
+     ["output.snapshots[0] = 1e-400", "underflows to 0"]),
     ("model-with-a-nul", case_text(material='[material]\nmodel = "max\\u0000well"\n'),
      ["material.model = \"max\\x00well\"", "unknown model"]),
     # numerics
