@@ -21,7 +21,8 @@ int guarded(const std::function<void()>& body) {
         std::fprintf(stderr, "mdr: error: %s\n", error.what());
         return 2;
     } catch (const std::exception& error) {
-        std::fprintf(stderr, "mdr: error: %s\n", error.what());
+        // Other errors may quote the input (a parser's excerpt, a path): one line, escaped like InvalidInput's.
+        std::fprintf(stderr, "mdr: error: %s\n", message_line(error.what()).c_str());
         return 1;
     }
 }
@@ -43,7 +44,7 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
         if (error.get_exit_code() == 0) return app.exit(error);  // --help, --version
-        std::fprintf(stderr, "mdr: error: %s (see mdr --help)\n", error.what());
+        std::fprintf(stderr, "mdr: error: %s (see mdr --help)\n", mdr::message_line(error.what()).c_str());
         return 2;
     }
     return exit_code;

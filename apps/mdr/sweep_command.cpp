@@ -84,7 +84,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
         exit_code = guarded([&] {
             const io::ResultDirectory directory(*out, "--out", {*case_path});
             std::ifstream file(*case_path);
-            if (!file) throw InvalidInput("case", *case_path, "cannot be read (no such file, or no permission)");
+            if (!file) throw unreadable_file("case", *case_path);
             std::ostringstream text;
             text << file.rdbuf();
             std::vector<io::SweepAxis> axes;

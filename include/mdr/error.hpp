@@ -2,13 +2,18 @@
 /// \file
 /// The exception type for bad input (with a helper that formats its message), and the one for a stop on request.
 
+#include <cstddef>
+#include <filesystem>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace mdr {
 
 /// Thrown for every non-physical or malformed input. The message has the form
-/// `key = value: rule`, e.g. `material.tau1 = 0: must be > 0`.
+/// `key = value: rule`, e.g. `material.tau1 = 0: must be > 0`, on one line: the key and the value are shown by
+/// message_text (escaped, cut to 60 characters), the rule escaped; key(), value() and rule() are as given.
 class InvalidInput : public std::invalid_argument {
 public:
     /// Builds the message from the offending key, its value as text and the violated rule.
@@ -36,6 +41,25 @@ class Interrupted : public std::runtime_error {
 public:
     Interrupted() : std::runtime_error("interrupted; no result was written") {}
 };
+
+/// A text from the input as a message shows it, on one line: control characters, the C1 controls, line and
+/// paragraph separators, bidirectional overrides and bytes that are not UTF-8 escaped (`\n`, `\r`, `\t`,
+/// `\x1b`, `\xc2\x9b`; a backslash stays as it is), and a text that would show longer than `limit` characters
+/// cut to at most `limit`: its head and its tail (a file's name) around `...`, then ` (N bytes)`, N its length.
+/// Showing a shown text changes nothing.
+std::string message_text(std::string_view text, std::size_t limit = 60);
+
+/// message_text without the cut: escapes only.
+inline std::string message_line(std::string_view text) {
+    return message_text(text, std::numeric_limits<std::size_t>::max());
+}
+
+/// Why `path` cannot be opened for reading, in the words of the system (`no such file or directory`, `too many
+/// levels of symbolic links`, `permission denied`, `is a directory`), for a message `cannot be read (...)`.
+std::string unreadable_reason(const std::filesystem::path& path);
+
+/// The error for a file that cannot be read: `key = PATH: cannot be read (unreadable_reason)`.
+InvalidInput unreadable_file(const std::string& key, const std::filesystem::path& path);
 
 /// Formats a double for an error message: shortest representation that round-trips.
 std::string format_value(double value);

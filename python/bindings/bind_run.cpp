@@ -7,6 +7,7 @@
 #include "bindings.hpp"
 #include "summary_dict.hpp"
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/summary.hpp"
 #include "mdr/io/units.hpp"
@@ -89,6 +90,10 @@ void bind_run(py::module_& module) {
         [](const std::string& text, const std::string& source) { return io::check(io::parse_case(text, source)); },
         py::arg("toml_text"), py::arg("source") = "case",
         "Validates a case given as TOML text; returns its description.");
+    module.def(
+        "_unreadable_case",
+        [](const std::string& path) { throw unreadable_file("case", path); },
+        py::arg("path"), "Raises the command line's error for a case file that cannot be read (mdr/error.hpp).");
     module.def(
         "_unit_system",
         [](const std::string& name) {

@@ -87,8 +87,8 @@ def _case_text(case: CaseLike) -> tuple[str, str]:
             with open(path, encoding="utf-8") as handle:
                 return handle.read(), path
         except OSError:
-            # The same line as the command line's (src/io/case_file.cpp, load_case).
-            raise InvalidInput(f"case = {path}: cannot be read (no such file, or no permission)") from None
+            pass
+        _mdr._unreadable_case(path)  # raises the command line's line (mdr::unreadable_file), without the OSError
     raise TypeError(f"case: expected a path or a dict, got {type(case).__name__}")
 
 
@@ -254,8 +254,8 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
     Returns
     -------
     SweepTable
-        The table of sweep.csv as a dict of numpy arrays: the varied keys, every numeric key of summary.json (nan
-        where a point failed) and ``error`` (the failure message, "" where the point ran); ``.batch`` tells how a
+        The table of sweep.csv as a dict of numpy arrays: the varied keys, every numeric key of any point's
+        summary.json (the union; nan where a point failed or lacks the key) and ``error`` (the failure message, "" where the point ran); ``.batch`` tells how a
         scheduled sweep ran (None for a local one).
 
     Raises
@@ -301,7 +301,21 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
                "errors": [row[1] for row in batch.outputs]}
         batch.outputs = []
     summaries = raw["summaries"]
-    columns = next((list(s) for s in summaries if s), [])
+    # The union of the rows' keys, as sweep.csv has it: a key new to the list goes after the one before it in the
+    # first row that has it (rows of one summary layout keep its order, whatever the order of the rows).
+    columns: list = []
+    known: set = set()
+    for summary in summaries:
+        if not summary or known.issuperset(summary):
+            continue
+        known.update(summary)
+        position = 0
+        for key in summary or {}:
+            if key in columns:
+                position = columns.index(key) + 1
+            else:
+                columns.insert(position, key)
+                position += 1
     table = SweepTable()
     table.batch = batch
     table.threads = threads

@@ -144,11 +144,14 @@ def fit(case: CaseLike, data: Mapping[str, Any] | Sequence[Mapping[str, Any]] | 
         text, source, directory = to_toml(case), "case", os.getcwd()
     elif isinstance(case, (str, os.PathLike)):
         source = os.fspath(case)
+        text = None
         try:
             with open(source, encoding="utf-8") as handle:
                 text = handle.read()
         except OSError:
-            raise _mdr.InvalidInput(f"case = {source}: cannot be read (no such file, or no permission)") from None
+            pass
+        if text is None:
+            _mdr._unreadable_case(source)  # raises the command line's line (mdr::unreadable_file)
         directory = os.path.dirname(os.path.abspath(source))
     else:
         raise TypeError(f"case: expected a path or a dict, got {type(case).__name__}")

@@ -43,7 +43,13 @@ def read_csv(path: str) -> dict[str, np.ndarray]:
     -------
     dict of str to numpy.ndarray
         One array per column, keyed by the header's names: float arrays, or string arrays for columns that are
-        not numeric (the ``error`` column of sweep.csv).
+        not numeric (the ``error`` column of sweep.csv). Quoted fields (RFC 4180) may hold commas, quotes and line
+        breaks.
+
+    Raises
+    ------
+    ValueError
+        For an empty file, or a row with another number of fields than the header.
 
     Examples
     --------
@@ -51,7 +57,12 @@ def read_csv(path: str) -> dict[str, np.ndarray]:
     >>> history["F"].max()                                   # doctest: +SKIP
     """
     with open(path, newline="", encoding="utf-8") as handle:
-        rows = list(csv.reader(handle))
+        reader = csv.reader(handle)  # RFC 4180: a quoted field may hold commas, quotes and line breaks
+        rows = []
+        for row in reader:
+            if rows and len(row) != len(rows[0]):
+                raise ValueError(f"{path}, line {reader.line_num}: {len(row)} fields; the header has {len(rows[0])}")
+            rows.append(row)
     if not rows:
         raise ValueError(f"{path}: empty file")
     header = rows[0]

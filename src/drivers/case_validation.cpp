@@ -206,6 +206,11 @@ void validate_times(const ContactCase& contact_case) {
     }
     for (std::size_t i = 0; i < contact_case.snapshots.size(); ++i) {
         const double t = contact_case.snapshots[i];
+        if (std::fpclassify(t) == FP_SUBNORMAL) {
+            throw InvalidInput(fmt::format("output.snapshots[{}]", i), format_value(t),
+                               "is subnormal (below about 2.2e-308 in size); a snapshot time must be 0 or a normal "
+                               "number within the simulated time");
+        }
         if (!(t >= start && t <= contact_case.end_time)) {
             throw InvalidInput(fmt::format("output.snapshots[{}]", i), format_value(t),
                                fmt::format("must lie within the simulated time [{}, {}]", start,

@@ -16,9 +16,15 @@ namespace fs = std::filesystem;
 
 std::string in_quotes(std::string_view text) { return "\"" + std::string(text) + "\""; }
 
-std::string joined(const std::vector<std::string>& names) {
+// A name from the file or the case inside a rule: quoted, escaped and shortened (message_text).
+std::string shown(std::string_view text) { return in_quotes(message_text(text)); }
+
+// Names from the file for a message: at most the first `count` of them, each escaped and shortened
+// (message_text), then how many there are in all. A file's content is never echoed beyond this.
+std::string joined(const std::vector<std::string>& names, std::size_t count = 6) {
     std::string text;
-    for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+    for (std::size_t i = 0; i < names.size() && i < count; ++i) text += (i == 0 ? "" : ", ") + message_text(names[i]);
+    if (names.size() > count) text += ", ... (" + std::to_string(names.size()) + " in all)";
     return text;
 }
 
@@ -48,7 +54,9 @@ void split(std::string_view line, std::vector<std::string_view>& fields) {
 std::string file_text(const fs::path& file) {
     std::error_code error;
     const auto status = fs::status(file, error);
-    if (!fs::exists(status)) throw InvalidInput("file", in_quotes(file.string()), "no such file");
+    if (!fs::exists(status)) {
+        throw InvalidInput("file", in_quotes(file.string()), "cannot be read (" + unreadable_reason(file) + ")");
+    }
     if (!fs::is_regular_file(status)) throw InvalidInput("file", in_quotes(file.string()), "is not a regular file");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw InvalidInput("file", in_quotes(file.string()), "cannot be opened");
@@ -93,7 +101,7 @@ bool parse_finite(std::string_view field, double& value) {
 CsvColumns read_csv_columns(const fs::path& file, const std::vector<CsvColumn>& columns,
                             const std::string& segment_column, const std::vector<std::string>& segments) {
     const std::string text = file_text(file);
-    const std::string file_name = file.filename().string();
+    const std::string file_name = message_text(file.filename().string());
     Lines lines(text);
     std::string_view line;
     std::size_t line_number = 0;
@@ -149,7 +157,7 @@ CsvColumns read_csv_columns(const fs::path& file, const std::vector<CsvColumn>& 
             if (!parse_finite(field, value)) {
                 throw InvalidInput(columns[k].key, field.empty() ? "(empty)" : std::string(field),
                                    "in " + file_name + ", line " + std::to_string(line_number) + ", column " +
-                                       in_quotes(columns[k].name) + ": must be a finite number");
+                                       shown(columns[k].name) + ": must be a finite number");
             }
             result.values[k].push_back(value);
         }
@@ -158,8 +166,9 @@ CsvColumns read_csv_columns(const fs::path& file, const std::vector<CsvColumn>& 
     for (std::size_t s = 0; s < segments.size(); ++s) {
         if (selected[s] == 0) {
             throw InvalidInput("segments", in_quotes(segments[s]),
-                               "no row of " + file_name + " is in this segment (column " + in_quotes(segment_column) +
-                                   "); segments present: " + (present.empty() ? "none" : joined(present)));
+                               "no row of " + file_name + " is in this segment (column " + shown(segment_column) +
+                                   "); segments present: " +
+                                   (present.empty() ? "none" : joined(present, present.size())));
         }
     }
     return result;

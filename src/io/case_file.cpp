@@ -142,14 +142,58 @@ drivers::ObliqueImpactLoad read_oblique(TableReader& load, TableReader& indenter
 
 }  // namespace
 
+namespace {
+
+// The text of the number that begins at `where` (line and column from 1, as toml++ counts them).
+std::string_view number_text(std::string_view text, const toml::source_position& where) {
+    std::size_t start = 0;
+    for (toml::source_index line = 1; line < where.line && start != std::string_view::npos; ++line) {
+        start = text.find('\n', start);
+        if (start != std::string_view::npos) ++start;
+    }
+    if (start == std::string_view::npos || where.column < 1) return {};
+    start += where.column - 1;
+    if (start >= text.size()) return {};
+    const std::size_t end = text.find_first_not_of("0123456789eE+-._", start);
+    return text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
+}
+
+// toml++ reads a float below the smallest positive double (1e-400) as 0 without a word; refused here, naming the
+// key, from the number's text (0.0 or 0e5 stay 0).
+void refuse_underflows(const toml::node& node, const std::string& key, std::string_view text) {
+    if (const auto* table = node.as_table()) {
+        for (const auto& [name, value] : *table) {
+            refuse_underflows(value, key.empty() ? std::string(name.str()) : fmt::format("{}.{}", key, name.str()),
+                              text);
+        }
+    } else if (const auto* array = node.as_array()) {
+        for (std::size_t i = 0; i < array->size(); ++i) {
+            refuse_underflows((*array)[i], fmt::format("{}[{}]", key, i), text);
+        }
+    } else if (const auto* floating = node.as_floating_point(); floating != nullptr && floating->get() == 0.0) {
+        const std::string_view number = number_text(text, node.source().begin);
+        const std::string_view mantissa = number.substr(0, number.find_first_of("eE"));
+        if (mantissa.find_first_of("123456789") != std::string_view::npos) {
+            throw InvalidInput(key, std::string(number),
+                               "underflows to 0: it is below the smallest positive double (about 4.9e-324); write "
+                               "0 if that is meant");
+        }
+    }
+}
+
+}  // namespace
+
 toml::table parse_toml(std::string_view toml_text, const std::string& source) {
+    toml::table table;
     try {
-        return toml::parse(toml_text, source);
+        table = toml::parse(toml_text, source);
     } catch (const toml::parse_error& error) {
         const auto& where = error.source().begin;
         throw InvalidInput(source, fmt::format("line {}, column {}", where.line, where.column),
                            fmt::format("malformed TOML: {}", error.description()));
     }
+    refuse_underflows(table, "", toml_text);
+    return table;
 }
 
 drivers::ContactCase parse_case(std::string_view toml_text, const std::string& source) {
@@ -281,7 +325,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
 
 drivers::ContactCase load_case(const std::filesystem::path& path) {
     std::ifstream file(path);
-    if (!file) throw InvalidInput("case", path.string(), "cannot be read (no such file, or no permission)");
+    if (!file) throw unreadable_file("case", path);
     std::ostringstream text;
     text << file.rdbuf();
     return parse_case(text.str(), path.string());
@@ -346,7 +390,7 @@ std::string describe(const drivers::ContactCase& contact_case) {
                                                                            unit_names(units)));
     }
     return fmt::format("{}{} on {} half-space{} (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
-                       contact_case.title.empty() ? "" : "\"" + contact_case.title + "\": ",
+                       contact_case.title.empty() ? "" : fmt::format("\"{}\": ", message_line(contact_case.title)),
                        contact_case.indenter->describe(), rheology, model, material.instantaneous_modulus(),
                        units.pressure, material.equilibrium_modulus(), units.pressure, material.terms().size(), load,
                        contact_case.units == "SI" ? "" : fmt::format(" [units {}]", units.name));

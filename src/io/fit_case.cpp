@@ -153,7 +153,7 @@ FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
 
 FitCase load_fit_case(const std::filesystem::path& path) {
     std::ifstream file(path);
-    if (!file) throw InvalidInput("case", path.string(), "cannot be read (no such file, or no permission)");
+    if (!file) throw unreadable_file("case", path);
     std::ostringstream text;
     text << file.rdbuf();
     return parse_fit_case(text.str(), path.string(), path.parent_path());

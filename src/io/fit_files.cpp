@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mdr/io/csv_field.hpp"
+
 namespace mdr::io {
 
 namespace {
@@ -143,7 +145,7 @@ void write_fit_result(const std::filesystem::path& directory, const FitCase& fit
     csv.print("curve,t,measured,model,residual\n");
     for (const auto& curve : result.curves) {
         // Rebound data: one row per impact, named NAME:restitution or NAME:contact_time, t holding the speed v0.
-        const std::string name = curve.rebound ? curve.name + ":" + quantity_name(curve) : curve.name;
+        const std::string name = csv_field(curve.rebound ? curve.name + ":" + quantity_name(curve) : curve.name);
         for (std::size_t i = 0; i < curve.time.size(); ++i) {
             csv.print("{},{},{},{},{}\n", name, curve.time[i], curve.measured[i], curve.model[i],
                       curve.model[i] - curve.measured[i]);

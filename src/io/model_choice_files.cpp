@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "mdr/io/csv_field.hpp"
 #include "mdr/io/fit_files.hpp"
 
 namespace mdr::io {
@@ -79,9 +80,9 @@ void write_model_choice(const std::filesystem::path& directory, const FitCase& f
     for (std::size_t i = 0; i < choice.fits.size(); ++i) {
         const auto& fitted = choice.fits[i];
         const auto& result = fitted.result;
-        csv.print("{},{},{},{},{},{},{},{},{},{},{},{}\n", i + 1, fitted.name, result.free_count, result.rms_residual,
-                  ratio(result), result.aic, result.bic, fitted.delta_aic, fitted.delta_bic, result.converged,
-                  result.undetermined.size(), result.wall_seconds);
+        csv.print("{},{},{},{},{},{},{},{},{},{},{},{}\n", i + 1, csv_field(fitted.name), result.free_count,
+                  result.rms_residual, ratio(result), result.aic, result.bic, fitted.delta_aic, fitted.delta_bic,
+                  result.converged, result.undetermined.size(), result.wall_seconds);
         std::filesystem::create_directory(directory / fitted.name);
         write_candidate(directory / fitted.name, fitted);
     }

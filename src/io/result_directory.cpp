@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cerrno>
 #include <charconv>
+#include <cstdio>
 #include <fstream>
 #include <optional>
 #include <set>
@@ -48,8 +49,16 @@ fs::path resolved(const fs::path& path) {
     return error ? normalised(path) : canonical;
 }
 
-// The names listed in a directory's manifest; nullopt when it has none.
+// A regular file, told by lstat: a symbolic link, even to a regular file, is not one.
+bool is_regular_file_itself(const fs::path& path) {
+    std::error_code ignored;
+    return fs::is_regular_file(fs::symlink_status(path, ignored));
+}
+
+// The paths listed in a directory's manifest (relative, `/`-separated: `prony2/fit.json` for a file in a folder
+// mdr wrote); nullopt when it has none or its manifest is not a regular file of its own.
 std::optional<std::set<std::string>> read_manifest(const fs::path& directory) {
+    if (!is_regular_file_itself(directory / manifest_file_name)) return std::nullopt;
     std::ifstream file(directory / manifest_file_name);
     if (!file) return std::nullopt;
     std::set<std::string> names;
@@ -66,21 +75,38 @@ void write_manifest(const fs::path& directory, const std::vector<std::string>& n
     if (!file.flush()) throw std::system_error(errno, std::generic_category(), "cannot write the manifest");
 }
 
-// True when the entry `name` of a result directory is what mdr wrote there: a regular file the manifest lists, or a
-// folder it lists (a candidate's, mdr fit) holding only regular files that it lists as `name/file`.
-bool is_listed(const fs::path& path, const std::string& name, const std::set<std::string>& listed) {
-    std::error_code error;
-    const auto status = fs::symlink_status(path, error);
-    if (error || !listed.contains(name)) return false;
-    if (fs::is_regular_file(status)) return true;
-    if (!fs::is_directory(status)) return false;
-    for (fs::directory_iterator it(path, error), end; !error && it != end; it.increment(error)) {
-        const auto inner = fs::symlink_status(it->path(), error);
-        if (error || !fs::is_regular_file(inner) || !listed.contains(name + "/" + it->path().filename().string())) {
-            return false;
-        }
+// True when `name` is a folder that mdr wrote: some listed path lies below it.
+bool holds_listed(const std::set<std::string>& listed, const std::string& name) {
+    const std::string prefix = name + "/";
+    const auto next = listed.lower_bound(prefix);
+    return next != listed.end() && next->starts_with(prefix);
+}
+
+// The first entry below `directory` that is not mdr's: anything but the manifest, the regular files it lists and
+// the folders that hold them (symbolic links are never followed). Empty when there is none.
+std::string first_foreign_entry(const fs::path& directory, const std::set<std::string>& listed,
+                                std::error_code& error) {
+    for (fs::recursive_directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
+        const std::string name = it->path().lexically_relative(directory).generic_string();
+        if (name == manifest_file_name) continue;
+        const auto status = it->symlink_status(error);
+        if (error) break;
+        const bool mine = fs::is_regular_file(status) ? listed.contains(name)
+                                                      : fs::is_directory(status) && holds_listed(listed, name);
+        if (!mine) return name;
     }
-    return !error;
+    return {};
+}
+
+// The regular files below `directory` (relative, `/`-separated, sorted), the manifest left out.
+std::vector<std::string> written_files(const fs::path& directory) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::recursive_directory_iterator(directory)) {
+        const std::string name = entry.path().lexically_relative(directory).generic_string();
+        if (name != manifest_file_name && fs::is_regular_file(entry.symlink_status())) names.push_back(name);
+    }
+    std::sort(names.begin(), names.end());
+    return names;
 }
 
 bool process_alive(pid_t pid) { return kill(pid, 0) == 0 || errno == EPERM; }
@@ -96,9 +122,43 @@ bool is_stale_temporary(const fs::directory_entry& entry, const std::string& nam
         const auto [end, error] = std::from_chars(first, file.data() + file.size(), pid);
         if (error != std::errc() || end == first || pid <= 0 || pid == getpid() || process_alive(pid)) return false;
         std::error_code ignored;
-        return entry.is_directory(ignored) && !entry.is_symlink(ignored) && read_manifest(entry.path()).has_value();
+        return fs::is_directory(entry.symlink_status(ignored)) && read_manifest(entry.path()).has_value();
     }
     return false;
+}
+
+// The path of a manifest entry below `directory`, when every step to it is a real folder and it is a regular
+// file; nullopt for anything else (`..`, an absolute path, a link on the way).
+std::optional<fs::path> listed_file(const fs::path& directory, const std::string& entry) {
+    const fs::path relative = fs::path(entry).lexically_normal();
+    if (relative.empty() || relative.is_absolute() || *relative.begin() == "..") return std::nullopt;
+    fs::path path = directory;
+    std::error_code ignored;
+    for (auto part = relative.begin(); part != relative.end(); ++part) {
+        if (path != directory && !fs::is_directory(fs::symlink_status(path, ignored))) return std::nullopt;
+        path /= *part;
+    }
+    return is_regular_file_itself(path) ? std::optional<fs::path>(path) : std::nullopt;
+}
+
+// Removes what a killed run wrote into `directory`: the regular files its manifest lists, the manifest, then the
+// folders that are empty. Anything else stays, and so does the directory, with a warning on stderr.
+void remove_stale_temporary(const fs::path& directory) {
+    std::error_code ignored;
+    const auto listed = read_manifest(directory);
+    for (const auto& entry : listed.value_or(std::set<std::string>{})) {
+        if (const auto file = listed_file(directory, entry)) fs::remove(*file, ignored);
+    }
+    fs::remove(directory / manifest_file_name, ignored);
+    std::vector<fs::path> folders;  // deepest last: removed in reverse
+    for (fs::recursive_directory_iterator it(directory, ignored), end; !ignored && it != end; it.increment(ignored)) {
+        if (fs::is_directory(it->symlink_status(ignored))) folders.push_back(it->path());
+    }
+    for (auto folder = folders.rbegin(); folder != folders.rend(); ++folder) fs::remove(*folder, ignored);
+    if (!fs::remove(directory, ignored)) {
+        fmt::print(stderr, "mdr: warning: left {} of a killed run in place: it holds files mdr did not list\n",
+                   message_line(directory.string()));
+    }
 }
 
 void remove_stale_temporaries(const fs::path& parent, const std::string& name) {
@@ -107,7 +167,7 @@ void remove_stale_temporaries(const fs::path& parent, const std::string& name) {
     for (fs::directory_iterator it(parent, error), end; !error && it != end; it.increment(error)) {
         if (is_stale_temporary(*it, name)) stale.push_back(it->path());
     }
-    for (const auto& path : stale) fs::remove_all(path, error);
+    for (const auto& path : stale) remove_stale_temporary(path);
 }
 
 }  // namespace
@@ -150,20 +210,22 @@ void ResultDirectory::check() const {
         refuse("is an existing file or device; mdr writes only new directories or result directories it wrote "
                "itself");
     }
+    const auto mark = fs::symlink_status(target_ / manifest_file_name, error);
+    if (fs::exists(mark) && !fs::is_regular_file(mark)) {
+        refuse("holds " + std::string(manifest_file_name) + ", which is not a regular file (mdr marks its result "
+               "directories with a file it wrote); name a new directory or remove it yourself");
+    }
     const auto listed = read_manifest(target_);
     if (!listed) {
         refuse("is a directory that mdr did not write (it has no " + std::string(manifest_file_name) +
                "); name a new directory");
     }
-    for (fs::directory_iterator it(target_, error), end; it != end; it.increment(error)) {
-        if (error) break;
-        const std::string name = it->path().filename().string();
-        if (name == manifest_file_name) continue;
-        if (!is_listed(it->path(), name, *listed)) {
-            refuse("holds " + name + ", which mdr did not write; name a new directory or remove it yourself");
-        }
-    }
+    const std::string foreign = first_foreign_entry(target_, *listed, error);
     if (error) refuse("cannot be read (" + error.message() + ")");
+    if (!foreign.empty()) {
+        refuse("holds " + message_text(foreign) + ", which mdr did not write; name a new directory or remove it "
+               "yourself");
+    }
 }
 
 void ResultDirectory::write(const std::function<void(const fs::path&)>& write_files,
@@ -183,18 +245,7 @@ void ResultDirectory::write(const std::function<void(const fs::path&)>& write_fi
         write_manifest(temporary, {});  // marks it as mdr's before anything else is written
         write_files(temporary);
         if (interrupted && interrupted()) throw Interrupted();
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(temporary)) {
-            const std::string entry_name = entry.path().filename().string();
-            if (entry_name == manifest_file_name) continue;
-            names.push_back(entry_name);
-            if (!entry.is_directory()) continue;
-            for (const auto& inner : fs::directory_iterator(entry.path())) {
-                names.push_back(entry_name + "/" + inner.path().filename().string());
-            }
-        }
-        std::sort(names.begin(), names.end());
-        write_manifest(temporary, names);
+        write_manifest(temporary, written_files(temporary));
         check();
         if (fs::exists(fs::symlink_status(target_))) {
             fs::rename(target_, old);

@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <cstdlib>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <numeric>
@@ -15,6 +17,7 @@
 #include <sstream>
 #include <system_error>
 #include <thread>
+#include <unordered_set>
 
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/step_observer.hpp"
@@ -22,6 +25,7 @@
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/case_template.hpp"
+#include "mdr/io/csv_field.hpp"
 #include "mdr/io/summary.hpp"
 
 namespace mdr::io {
@@ -34,16 +38,22 @@ std::optional<double> number_in(const SummaryValue& value) {
     return std::nullopt;
 }
 
+// A value of `--vary`: the nearest double to a decimal or hexadecimal number (strtod; a subnormal one too), refused
+// when it is not a number, overflows to infinity or underflows to 0 from a number that is not 0.
 double parse_number(const std::string& text, const std::string& spec) {
-    std::size_t used = 0;
-    double value = 0.0;
-    try {
-        value = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
+    const auto refuse = [&](const std::string& rule) {
+        throw InvalidInput("--vary", spec, "'" + message_text(text) + "' " + rule);
+    };
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(text.c_str(), &end);  // skips leading blanks, as std::stod did
+    if (text.empty() || end != text.c_str() + text.size() || std::isnan(value)) refuse("is not a finite number");
+    if (std::isinf(value)) {
+        refuse(errno == ERANGE ? "overflows: it is beyond the largest double (about 1.8e308)"
+                               : "is not a finite number");
     }
-    if (used == 0 || used != text.size() || !std::isfinite(value)) {
-        throw InvalidInput("--vary", spec, "'" + text + "' is not a finite number");
+    if (errno == ERANGE && value == 0.0) {
+        refuse("underflows to 0: it is below the smallest positive double (about 4.9e-324); write 0 if that is meant");
     }
     return value;
 }
@@ -290,20 +300,37 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
     return rows;
 }
 
+namespace {
+
+// The numeric summary keys of all rows, each once: a key is put after the one before it in the first row that has
+// it, so rows whose keys follow one order (a summary's) give that order whatever the order of the rows.
+std::vector<std::string> numeric_columns(const std::vector<SweepRow>& rows) {
+    std::vector<std::string> columns;
+    std::unordered_set<std::string> known;
+    for (const auto& row : rows) {
+        const bool all_known = std::all_of(row.summary.begin(), row.summary.end(), [&](const SummaryEntry& entry) {
+            return known.contains(entry.key) || !number_in(entry.value);
+        });
+        if (all_known) continue;
+        auto position = columns.begin();
+        for (const auto& [key, value] : row.summary) {
+            if (!number_in(value)) continue;
+            const auto found = std::find(columns.begin(), columns.end(), key);
+            position = found != columns.end() ? found + 1 : columns.insert(position, key) + 1;
+            known.insert(key);
+        }
+    }
+    return columns;
+}
+
+}  // namespace
+
 void write_sweep_csv(const std::filesystem::path& directory, const std::vector<SweepAxis>& axes,
                      const std::vector<SweepRow>& rows) {
-    // The numeric summary keys, in the order of the first run that succeeded.
-    std::vector<std::string> columns;
-    for (const auto& row : rows) {
-        if (row.summary.empty()) continue;
-        for (const auto& [key, value] : row.summary) {
-            if (number_in(value)) columns.push_back(key);
-        }
-        break;
-    }
+    const std::vector<std::string> columns = numeric_columns(rows);
     auto out = fmt::output_file((directory / "sweep.csv").string());
     std::string header;
-    for (const auto& axis : axes) header += axis.key + ",";
+    for (const auto& axis : axes) header += csv_field(axis.key) + ",";
     for (const auto& column : columns) header += column + ",";
     out.print("{}error\n", header);
     for (const auto& row : rows) {
@@ -318,11 +345,7 @@ void write_sweep_csv(const std::filesystem::path& directory, const std::vector<S
                 out.print("nan,");
             }
         }
-        std::string error = row.error;
-        for (char& c : error) {
-            if (c == '"') c = '\'';
-        }
-        out.print("{}\n", error.empty() ? "" : "\"" + error + "\"");
+        out.print("{}\n", row.error.empty() ? "" : csv_quoted(row.error));
     }
     out.close();
 }

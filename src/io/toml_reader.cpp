@@ -10,7 +10,7 @@
 namespace mdr::io {
 namespace {
 
-// A value as an error message prints it: one short line; a table or an array of tables as `[...]`.
+// A value as an error message prints it: one short line (message_text); a table or an array of tables as `[...]`.
 std::string node_text(const toml::node& node) {
     if (node.is_table() || node.is_array_of_tables()) return "[...]";
     std::string text;
@@ -21,10 +21,7 @@ std::string node_text(const toml::node& node) {
         node.visit([&out](const auto& value) { out << value; });
         text = out.str();
     }
-    for (char& c : text) {
-        if (c == '\n') c = ' ';
-    }
-    return text.size() > 60 ? text.substr(0, 57) + "..." : text;
+    return message_text(text);
 }
 
 double as_number(const toml::node& node, const std::string& key) {

@@ -309,7 +309,7 @@ void MaterialTable::validate() const {
 
 MaterialTable read_material_table(const std::filesystem::path& path) {
     std::ifstream file(path);
-    if (!file) throw InvalidInput("file", path.string(), "cannot be read (no such file, or no permission)");
+    if (!file) throw unreadable_file("file", path);
     std::string line;
     std::getline(file, line);
     std::map<std::string, std::size_t> column;

@@ -186,6 +186,17 @@ BAD_CASES = [
      ["output.snapshots[1]", "= 2", "within the simulated time"]),
     ("snapshot-before-start", case_text(extra="[output]\nsnapshots = [-0.5]\n"),
      ["output.snapshots[0]", "-0.5", "within the simulated time"]),
+    # issue 23: a subnormal snapshot time is refused at validation, naming the key (it ran into "not finite")
+    ("snapshot-subnormal", case_text(extra="[output]\nsnapshots = [5e-324]\n"),
+     ["output.snapshots[0]", "5e-324", "is subnormal", "normal number"]),
+    # issue 23: a value is echoed on one line, control characters escaped (a newline, a terminal escape)
+    ("model-with-control-characters", case_text(material='[material]\nmodel = "max\\nwell\\u001b[2J"\n'),
+     ["material.model = \"max\\nwell\\x1b[2J\"", "unknown model"]),
+    # issue 23: toml++ reads 1e-400 as 0; the key is named with what was written, not "= 0: must be > 0"
+    ("underflow-to-zero", case_text(extra="[output]\nsnapshots = [1e-400]\n"),
+     ["output.snapshots[0] = 1e-400", "underflows to 0"]),
+    ("model-with-a-nul", case_text(material='[material]\nmodel = "max\\u0000well"\n'),
+     ["material.model = \"max\\x00well\"", "unknown model"]),
     # numerics
     ("elements-zero", case_text(numerics="[numerics]\nelements = 0\n"),
      ["numerics.elements", "= 0", "integer >= 1"]),

@@ -113,6 +113,32 @@ def plotted_figures(out):
     return sorted(pathlib.Path(p).name for p in plotted.stdout.split())
 
 
+@pytest.mark.parametrize("name", ['cell,1', 'a "quoted" name', "two\nlines", "plain"])
+def test_curve_names_read_back_as_one_field(run_mdr, fit_case, workdir, name):
+    """curves.csv is RFC 4180 CSV whatever the curve's name (issue 23): read with the csv module (and with
+    mdr.plot.read_csv where the package is built), every row has the header's 5 fields and the name as given. A
+    plain name is written as it is."""
+    case = fit_case().read_text(encoding="utf-8").replace('file = "curve.csv"',
+                                                          f'file = "curve.csv"\nname = {json.dumps(name)}')
+    (workdir / "case.toml").write_text(case, encoding="utf-8")
+    result = run_mdr("fit", workdir / "case.toml", "--out", workdir / "out", timeout=300)
+    assert result.returncode == 0, result.stderr
+    with open(workdir / "out" / "curves.csv", newline="", encoding="utf-8") as handle:
+        rows = list(csv.reader(handle))
+    assert rows[0] == ["curve", "t", "measured", "model", "residual"]
+    assert len(rows) == 301 and all(len(row) == 5 and row[0] == name for row in rows[1:])
+    if name == "plain":
+        assert (workdir / "out" / "curves.csv").read_text(encoding="utf-8").splitlines()[1].startswith("plain,")
+    package = pathlib.Path(os.environ.get("MDR_PYTHONPATH", "/nonexistent"))
+    if (package / "mdr").is_dir():
+        script = ("import sys, mdr.plot; c = mdr.plot.read_csv(sys.argv[1]); "
+                  "print(len(c['curve']), set(c['curve'].tolist()) == {sys.argv[2]}, c['residual'].dtype.kind)")
+        read = subprocess.run([sys.executable, "-c", script, str(workdir / "out" / "curves.csv"), name],
+                              capture_output=True, text=True, timeout=120,
+                              env=dict(os.environ, PYTHONPATH=str(package), MPLBACKEND="Agg"))
+        assert read.stdout.split() == ["300", "True", "f"], read.stderr
+
+
 @pytest.mark.parametrize("extra, fragments", [
     ('bounds = { "material.G" = [1.0e6, 1.0e3] }', ["fit.bounds.material.G", "lower bound"]),
     ('bounds = { "material.G" = [1.0e6, 1.0e7] }', ["material.G = 50000", "within its bounds"]),
@@ -141,6 +167,38 @@ def test_bad_data(run_mdr, fit_case, workdir, edit, fragments):
     with open(workdir / "curve.csv", "w", newline="", encoding="utf-8") as handle:
         csv.writer(handle).writerows(rows)
     assert_bad_input(run_mdr("fit", path, "--out", workdir / "out"), "fit.data[0].", *fragments)
+
+
+def message_of_data(run_mdr, fit_case, workdir, data: bytes, file="curve.csv"):
+    """The one error line of a fit whose curve file holds `data` (the case names `file`)."""
+    path = fit_case()
+    path.write_text(path.read_text().replace('file = "curve.csv"', f"file = {json.dumps(file)}"))
+    (workdir / "curve.csv").write_bytes(data)
+    result = run_mdr("fit", path, "--out", workdir / "out")
+    assert len(result.stderr_lines) == 1 and result.returncode == 2, result.stderr
+    assert result.stdout == "" and not (workdir / "out").exists()
+    return result.stderr_lines[0]
+
+
+def test_values_from_a_curve_file_are_echoed_escaped_and_short(run_mdr, fit_case, workdir):
+    """Issue 23: a cell with a terminal escape is shown escaped; a file with CR line ends (one line to the reader) or
+    with a long first line is never echoed whole: at most 6 escaped names of at most 60 characters, then the count;
+    a file that is not the expected CSV (a system file, say) shows no more than its first 60 characters."""
+    cell = message_of_data(run_mdr, fit_case, workdir, b"t,depth_um,force_uN\n0,1,2\n0.1,2,\x1b[2J3\n")
+    assert "\x1b" not in cell and '.force = \\x1b[2J3: in curve.csv, line 3, column "force_uN"' in cell
+    rows = "".join(f"{i},{i},{i}\r" for i in range(300))  # one line of 301 * 2 commas: 603 fields
+    cr = message_of_data(run_mdr, fit_case, workdir, ("t,depth_um,force_uN\r" + rows).encode())
+    assert "its columns: t, depth_um, force_uN\\r0, 0, 0\\r1, 1, ... (603 in all)" in cr and len(cr) < 300
+    secret = "root:x:0:0:root:/root:/bin/bash" * 10
+    system = message_of_data(run_mdr, fit_case, workdir, (secret + "\nsecond line\n").encode())
+    assert secret not in system and "second line" not in system and "(310 bytes)" in system and len(system) < 200
+
+
+def test_a_symbolic_link_loop_is_told_as_such(run_mdr, fit_case, workdir):
+    """Issue 23: the system's reason, not "no such file"."""
+    (workdir / "loop.csv").symlink_to("loop.csv")
+    line = message_of_data(run_mdr, fit_case, workdir, b"t\n", file="loop.csv")
+    assert "loop.csv" in line and "too many levels of symbolic links" in line
 
 
 def test_a_curve_that_never_makes_contact(run_mdr, fit_case, workdir):

@@ -58,6 +58,16 @@ def test_candidates_are_ranked_and_written_in_folders(run_mdr, case, workdir):
         assert {"fit.json", "fitted.toml", "curves.csv"} <= {p.name for p in (out / name).iterdir()}
     elastic = json.loads((out / "elastic" / "fit.json").read_text())
     assert elastic["parameters"]["material.G"] == pytest.approx(G_TRUE, rel=2e-2)
+    # The folders are mdr's (listed file by file in .mdr-result): a re-run may replace them (issue 23), but not a
+    # file the user put into one.
+    manifest = (out / ".mdr-result").read_text(encoding="utf-8").splitlines()[1:]
+    assert "elastic/fit.json" in manifest and "standard/curves.csv" in manifest
+    again = run_mdr("fit", workdir / "case.toml", "--out", out, timeout=300)
+    assert again.returncode == 0, again.stderr
+    (out / "standard" / "notes.txt").write_text("mine\n", encoding="utf-8")
+    refused = run_mdr("fit", workdir / "case.toml", "--out", out, timeout=300)
+    assert refused.returncode == 2 and "holds standard/notes.txt, which mdr did not write" in refused.stderr
+    assert (out / "standard" / "notes.txt").read_text(encoding="utf-8") == "mine\n"
 
 
 def test_a_spectrum_alone_writes_one_fit_and_its_moduli(run_mdr, case, workdir):

@@ -92,6 +92,22 @@ def result_with_subdirectory(scratch, mdr_binary):
     return "res", ["holds figures", "did not write"]
 
 
+def manifest_folder(scratch):
+    """A folder named like mdr's mark, holding a file of the user's: not mdr's mark (issue 23)."""
+    (scratch / "work" / "res" / ".mdr-result").mkdir(parents=True)
+    (scratch / "work" / "res" / ".mdr-result" / "thesis.tex").write_text("chapter 1\n", encoding="utf-8")
+    return "res", ["holds .mdr-result, which is not a regular file"]
+
+
+def manifest_link(scratch):
+    """A link named like mdr's mark, to a list of the user's files: never followed (issue 23)."""
+    (scratch / "work" / "res").mkdir()
+    (scratch / "work" / "res" / "thesis.tex").write_text("chapter 1\n", encoding="utf-8")
+    (scratch / "list.txt").write_text("# mdr result directory\nthesis.tex\n", encoding="utf-8")
+    (scratch / "work" / "res" / ".mdr-result").symlink_to(scratch / "list.txt")
+    return "res", ["holds .mdr-result, which is not a regular file"]
+
+
 def link_to_result(scratch, mdr_binary):
     assert mdr_in(mdr_binary, scratch / "work", "run", "../case.toml", "--out", "res").returncode == 0
     (scratch / "work" / "link").symlink_to("res")
@@ -118,6 +134,8 @@ REFUSALS = [
     ("result-with-a-foreign-file", result_with_foreign_file),
     ("result-with-a-subdirectory", result_with_subdirectory),
     ("symbolic-link", link_to_result),
+    ("manifest-folder", lambda s, b: manifest_folder(s)),
+    ("manifest-link", lambda s, b: manifest_link(s)),
     ("empty", lambda s, b: ("", ["must name a directory"])),
 ]
 
@@ -194,7 +212,7 @@ def test_temporaries_of_killed_runs_are_removed_and_nothing_else(mdr_binary, scr
     work = scratch / "work"
     stale = work / f".res.mdr-partial-{dead_pid()}-0"
     stale.mkdir()
-    (stale / ".mdr-result").write_text("# mdr result directory\n", encoding="utf-8")
+    (stale / ".mdr-result").write_text("# mdr result directory\nhistory.csv\n", encoding="utf-8")
     (stale / "history.csv").write_text("t,d,F,a\n", encoding="utf-8")
     running = work / f".res.mdr-partial-{os.getpid()}-0"  # its process still runs: not stale
     running.mkdir()
@@ -202,10 +220,19 @@ def test_temporaries_of_killed_runs_are_removed_and_nothing_else(mdr_binary, scr
     unmarked = work / f".res.mdr-partial-{dead_pid()}-1"  # no manifest: not recognised as mdr's
     unmarked.mkdir()
     (unmarked / "precious.txt").write_text("x\n", encoding="utf-8")
+    # Stale, but holding a file its manifest does not list (nor the ../ path it does): only the listed file goes.
+    mixed = work / f".res.mdr-partial-{dead_pid()}-2"
+    mixed.mkdir()
+    (mixed / ".mdr-result").write_text("# mdr result directory\nhistory.csv\n../sentinel.txt\n", encoding="utf-8")
+    (mixed / "history.csv").write_text("t,d,F,a\n", encoding="utf-8")
+    (mixed / "thesis.tex").write_text("chapter 1\n", encoding="utf-8")
     completed = mdr_in(mdr_binary, work, "run", "../case.toml", "--out", "res")
     assert completed.returncode == 0, completed.stderr
     assert not stale.exists()
     assert running.exists() and (unmarked / "precious.txt").read_text(encoding="utf-8") == "x\n"
+    assert sorted(p.name for p in mixed.iterdir()) == ["thesis.tex"]
+    assert (work / "sentinel.txt").read_text(encoding="utf-8") == "keep me\n"
+    assert f"left {mixed}" in completed.stderr
 
 
 @pytest.mark.parametrize("signal_number", [signal.SIGINT, signal.SIGTERM])

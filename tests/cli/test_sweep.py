@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import csv
+import json
 import os
 import resource
 import subprocess
@@ -84,6 +85,9 @@ def test_failed_points_keep_their_message_and_the_others_run(run_mdr, case_file,
     ("material.tau1=0:1:3:log", ["log grid", "> 0"]),
     ("material.tau1=1:2:0", ["COUNT", "integer"]),
     ("material.tau1=1:x:3", ["'x'", "not a finite number"]),
+    # issue 23: strtod's underflow and overflow are told as such, not "not a finite number"
+    ("material.tau1=1e-400,1", ["'1e-400'", "underflows to 0"]),
+    ("material.tau1=1e400,1", ["'1e400'", "overflows"]),
     ("material.tau1", ["KEY=START:STOP:COUNT"]),
 ])
 def test_bad_sweep_input(run_mdr, case_file, workdir, spec, fragments):
@@ -145,3 +149,43 @@ def test_dotted_keys_reach_array_elements(run_mdr, case_file, workdir):
     assert [float(row["max_depth"]) for row in rows] == pytest.approx([0.5e-4, 1.0e-4], rel=1e-12)
     # Hertz-like growth d^1.5 within the viscoelastic spread: the force more than doubles.
     assert float(rows[1]["max_force"]) > 2.5 * float(rows[0]["max_force"])
+
+
+HARMONIC_CASE = """
+[material]
+model = "standard"
+G_inf = 1.0e6
+G1 = 2.0e6
+tau1 = 0.01
+[indenter]
+shape = "sphere"
+R = 0.01
+[load]
+control = "displacement"
+history = [[0.0, 0.0], [1.0, 1.0e-4], [3.0, 1.0e-4]]
+harmonic = { amplitude = 1.0e-7, frequency = 5.0, start = 1.0, end = 3.0 }
+[numerics]
+elements = 50
+time_step = 0.005
+"""
+
+
+@pytest.mark.parametrize("frequencies", ["0.4,5", "5,0.4"])
+def test_columns_are_the_union_of_the_rows_keys(run_mdr, workdir, frequencies):
+    """At 0.4 Hz the 2 s of oscillation hold no full cycle, so that summary lacks the dynamic stiffness; at 5 Hz it
+    has it. Whatever the order of the points, sweep.csv has every numeric key of either summary (issue 23), with
+    `nan` where a point lacks one. Expected: the union of the numeric keys of `mdr run`'s summary.json per point."""
+    (workdir / "h.toml").write_text(HARMONIC_CASE, encoding="utf-8")
+    expected = set()
+    for frequency in ("0.4", "5"):
+        case = HARMONIC_CASE.replace("frequency = 5.0", f"frequency = {frequency}")
+        (workdir / f"h{frequency}.toml").write_text(case, encoding="utf-8")
+        assert run_mdr("run", f"h{frequency}.toml", "--out", f"run{frequency}").returncode == 0
+        summary = json.loads((workdir / f"run{frequency}" / "summary.json").read_text(encoding="utf-8"))
+        expected |= {k for k, v in summary.items() if isinstance(v, (int, float)) and not isinstance(v, bool)}
+    result = run_mdr("sweep", "h.toml", "--vary", f"load.harmonic.frequency={frequencies}", "--out", "out")
+    assert result.returncode == 0, result.stderr
+    rows = {row["load.harmonic.frequency"]: row for row in read_rows(workdir / "out" / "sweep.csv")}
+    assert set(next(iter(rows.values()))) == expected | {"load.harmonic.frequency", "error"}
+    assert "storage_stiffness" in expected and float(rows["5"]["storage_stiffness"]) > 0.0
+    assert rows["0.4"]["storage_stiffness"] == "nan"

@@ -280,3 +280,24 @@ def test_docstring_examples_hold(monkeypatch, tmp_path):
         plt.close("all")
     assert examples > 60
     assert runner.failures == 0, f"{runner.failures} failing docstring examples (see the output above)"
+
+
+@pytest.mark.parametrize("frequencies", [[0.4, 5.0], [5.0, 0.4]])
+def test_sweep_columns_are_the_union_of_the_rows_keys(frequencies):
+    """At 0.4 Hz the 2 s of oscillation hold no full cycle (no dynamic stiffness in the summary), at 5 Hz they do:
+    the table has the keys of both (issue 23), nan where a row lacks one, whatever the order of the rows; expected:
+    the numeric keys of mdr.run's summaries at each frequency."""
+    case = {"material": {"model": "standard", "G_inf": 1e6, "G1": 2e6, "tau1": 0.01},
+            "indenter": {"shape": "sphere", "R": 0.01},
+            "load": {"control": "displacement", "history": [[0.0, 0.0], [1.0, 1e-4], [3.0, 1e-4]],
+                     "harmonic": {"amplitude": 1e-7, "frequency": 5.0, "start": 1.0, "end": 3.0}},
+            "numerics": {"elements": 50, "time_step": 0.005}}
+    expected = set()
+    for frequency in frequencies:
+        load = dict(case["load"], harmonic=dict(case["load"]["harmonic"], frequency=frequency))
+        summary = mdr.run(dict(case, load=load)).summary
+        expected |= {k for k, v in summary.items() if isinstance(v, (int, float)) and not isinstance(v, bool)}
+    table = mdr.sweep(case, {"load.harmonic.frequency": frequencies})
+    assert set(table) == expected | {"load.harmonic.frequency", "error"}
+    fast = frequencies.index(5.0)
+    assert table["storage_stiffness"][fast] > 0.0 and np.isnan(table["storage_stiffness"][1 - fast])

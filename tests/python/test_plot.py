@@ -138,3 +138,15 @@ def test_sweep_png_plots_the_chosen_column(mdr_binary, package_env, tmp_path):
                                        "max_force, max_depth, max_radius")
     with pytest.raises(ValueError, match="column = error"):
         mdr.plot.plot_directory(str(out), column="error")
+
+
+def test_read_csv_takes_quoted_fields_and_refuses_ragged_rows(tmp_path):
+    """RFC 4180 (issue 23): a quoted name with a comma, a doubled quote and a line break is one field; a row with
+    more fields than the header (an unquoted comma) is an error naming the line, never shifted columns."""
+    path = tmp_path / "curves.csv"
+    path.write_text('curve,t\n"cell,1",0.5\n"say ""hi""\nthere",1.5\n', encoding="utf-8")
+    table = mdr.plot.read_csv(str(path))
+    assert table["curve"].tolist() == ["cell,1", 'say "hi"\nthere'] and table["t"].tolist() == [0.5, 1.5]
+    path.write_text("curve,t\ncell,1,0.5\n", encoding="utf-8")
+    with pytest.raises(ValueError, match="line 2: 3 fields; the header has 2"):
+        mdr.plot.read_csv(str(path))

@@ -12,21 +12,24 @@
 
 namespace mdr::io {
 
-/// The file that marks a directory as a result directory of mdr. It lists, one name a line after a comment line,
-/// every file that mdr (or `python3 -m mdr plot`, which appends its figures) wrote into the directory.
+/// The file that marks a directory as a result directory of mdr: a regular file (never a link or a folder). It
+/// lists, one path a line after a comment line, every file that mdr (or `python3 -m mdr plot`, which appends its
+/// figures) wrote into the directory; a file in a folder mdr wrote as `folder/name`.
 inline constexpr std::string_view manifest_file_name = ".mdr-result";
 
 /// A result directory, checked when it is named and written atomically at the end.
 ///
-/// The temporary directory is `.NAME.mdr-partial-PID` beside it. It is removed on every error and on
-/// interruption; those of killed runs (their process gone) are recognised by their manifest and removed by the
-/// next write beside them.
+/// The temporary directory is `.NAME.mdr-partial-PID-N` beside it. It is removed on every error and on
+/// interruption; those of killed runs (their process gone) are recognised by their manifest, and the next write
+/// beside them removes the regular files the manifest lists, then the folders left empty; anything else stays
+/// (with a warning on stderr).
 class ResultDirectory {
 public:
     /// Checks that `directory` may be written. `key` names it in messages (`--out`); `inputs` are the files the
     /// command reads, whose directories must not be replaced. Throws mdr::InvalidInput (`--out = DIR: rule`) for
     /// an empty path, an existing file, device or symbolic link, a directory that is not a result directory of mdr
-    /// (no manifest, or an entry the manifest does not list), the working directory, an input's directory or a
+    /// (no manifest, a manifest that is not a regular file, or an entry that is not a regular file the manifest
+    /// lists nor a folder holding one; links are never followed), the working directory, an input's directory or a
     /// parent of any of them, or a path below an existing file.
     ResultDirectory(const std::filesystem::path& directory, std::string key,
                     std::vector<std::filesystem::path> inputs = {});

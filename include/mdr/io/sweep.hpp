@@ -67,8 +67,9 @@ std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& s
                                 const std::vector<SweepAxis>& axes, unsigned jobs,
                                 const std::function<void(std::size_t, std::size_t)>& progress);
 
-/// Writes sweep.csv into `directory`: the varied keys (named as given), then every numeric key of summary.json
-/// (in its order), then `error` (empty for rows that succeeded; their numeric fields are then `nan`).
+/// Writes sweep.csv into `directory`: the varied keys (named as given), then every numeric key of any row's
+/// summary.json (the union, in the summaries' order; `nan` where a row lacks one), then `error` (empty for rows
+/// that succeeded; a failed row's numeric fields are `nan`). Text fields are quoted by RFC 4180 (csv_field).
 void write_sweep_csv(const std::filesystem::path& directory, const std::vector<SweepAxis>& axes,
                      const std::vector<SweepRow>& rows);
 

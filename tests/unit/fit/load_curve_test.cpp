@@ -134,7 +134,8 @@ TEST_F(LoadCurveTest, OneColumnMayServeTwoKeys) {
 
 TEST_F(LoadCurveTest, RefusesMissingOrUnreadableFile) {
     const fs::path missing = scratch_ / "missing.csv";
-    EXPECT_EQ(message(plain(missing)), "file = \"" + missing.string() + "\": no such file");
+    EXPECT_EQ(message(plain(missing)),
+              "file = \"" + missing.string() + "\": cannot be read (no such file or directory)");
     EXPECT_EQ(message(plain(scratch_)), "file = \"" + scratch_.string() + "\": is not a regular file");
     const fs::path empty = write("empty.csv", "\n# only a comment\n");
     EXPECT_EQ(message(plain(empty)), "file = \"" + empty.string() + "\": has no header line");

@@ -4,6 +4,7 @@
 #include "mdr/io/result_directory.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <fstream>
@@ -108,6 +109,67 @@ TEST_F(ResultDirectoryTest, ChecksAgainBeforeReplacing) {
     EXPECT_THROW(directory.write(write_result), InvalidInput);
     EXPECT_EQ(read_text(scratch_ / "res" / "added-meanwhile.txt"), "x");
     EXPECT_EQ(entries(scratch_), (std::set<std::string>{"notes.txt", "res"}));
+}
+
+// Rule: mdr's mark is a regular file it wrote; a folder or a link named .mdr-result is the user's (issue 23).
+TEST_F(ResultDirectoryTest, RefusesAManifestThatIsNotARegularFile) {
+    fs::create_directories(scratch_ / "res" / ".mdr-result");
+    write_text(scratch_ / "res" / ".mdr-result" / "thesis.tex", "chapter 1\n");
+    expect_refused(scratch_ / "res", "holds .mdr-result, which is not a regular file");
+    EXPECT_EQ(read_text(scratch_ / "res" / ".mdr-result" / "thesis.tex"), "chapter 1\n");
+
+    fs::create_directories(scratch_ / "linked");
+    write_text(scratch_ / "linked" / "notes.txt", "mine\n");
+    write_text(scratch_ / "list", "# a list\nnotes.txt\n");
+    fs::create_symlink(scratch_ / "list", scratch_ / "linked" / ".mdr-result");
+    expect_refused(scratch_ / "linked", "holds .mdr-result, which is not a regular file");
+    EXPECT_EQ(read_text(scratch_ / "linked" / "notes.txt"), "mine\n");
+}
+
+// A folder mdr wrote (one per candidate model of a fit) is listed file by file and may be replaced; a file or a
+// folder of the user's inside it may not.
+TEST_F(ResultDirectoryTest, ReplacesTheFoldersItWroteButNotWhatWasAddedToThem) {
+    const auto write_folders = [](const fs::path& d) {
+        write_text(d / "models.csv", "rank\n");
+        fs::create_directory(d / "prony2");
+        write_text(d / "prony2" / "fit.json", "{}\n");
+    };
+    ResultDirectory(scratch_ / "res", "--out").write(write_folders);
+    const std::string manifest = read_text(scratch_ / "res" / ".mdr-result");
+    EXPECT_EQ(manifest.substr(manifest.find('\n')), "\nmodels.csv\nprony2/fit.json\n");
+    ResultDirectory(scratch_ / "res", "--out").write(write_folders);
+    write_text(scratch_ / "res" / "prony2" / "mine.txt", "x");
+    expect_refused(scratch_ / "res", "holds prony2/mine.txt, which mdr did not write");
+    fs::remove(scratch_ / "res" / "prony2" / "mine.txt");
+    fs::create_directory(scratch_ / "res" / "prony2" / "figures");
+    expect_refused(scratch_ / "res", "holds prony2/figures, which mdr did not write");
+}
+
+pid_t dead_pid() {
+    const pid_t child = fork();
+    if (child == 0) _exit(0);
+    waitpid(child, nullptr, 0);
+    return child;
+}
+
+// A killed run's temporary directory: only the regular files its manifest lists go, then the folders left empty;
+// a file of the user's stays, and so does the directory. A listed path outside it is never followed.
+TEST_F(ResultDirectoryTest, CleansOnlyWhatAKilledRunListed) {
+    const fs::path stale = scratch_ / (".res.mdr-partial-" + std::to_string(dead_pid()) + "-1");
+    fs::create_directories(stale / "prony2");
+    write_text(stale / ".mdr-result", "# mdr\nhistory.csv\nprony2/fit.json\n../notes.txt\n");
+    write_text(stale / "history.csv", "t\n");
+    write_text(stale / "prony2" / "fit.json", "{}\n");
+    write_text(stale / "precious.txt", "x\n");
+    const fs::path clean = scratch_ / (".res.mdr-old-" + std::to_string(dead_pid()) + "-1");
+    fs::create_directories(clean / "elastic");
+    write_text(clean / ".mdr-result", "# mdr\nelastic/fit.json\n");
+    write_text(clean / "elastic" / "fit.json", "{}\n");
+    ResultDirectory(scratch_ / "res", "--out").write(write_result);
+    EXPECT_EQ(entries(stale), (std::set<std::string>{"precious.txt"}));
+    EXPECT_EQ(read_text(stale / "precious.txt"), "x\n");
+    EXPECT_EQ(read_text(scratch_ / "notes.txt"), "the user's notes\n");
+    EXPECT_FALSE(fs::exists(clean));
 }
 
 }  // namespace
