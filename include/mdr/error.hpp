@@ -12,8 +12,12 @@
 namespace mdr {
 
 /// Thrown for every non-physical or malformed input. The message has the form
-/// `key = value: rule`, e.g. `material.tau1 = 0: must be > 0`, on one line: the key and the value are shown by
-/// message_text (escaped, cut to 60 characters), the rule escaped; key(), value() and rule() are as given.
+/// `key = value: rule`, e.g. `material.tau1 = 0: must be > 0`, on one line: the value is shown by message_text
+/// (escaped, cut to 60 characters), the key (a dotted name or a file's path, which must stay whole) escaped and cut
+/// only past key_text_limit, the rule escaped; key(), value() and rule() are as given.
+/// The longest key an InvalidInput message shows whole (PATH_MAX on Linux): a file's path is never cut.
+inline constexpr std::size_t key_text_limit = 4096;
+
 class InvalidInput : public std::invalid_argument {
 public:
     /// Builds the message from the offending key, its value as text and the violated rule.
