@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -145,6 +146,31 @@ bool CurveCost::Evaluate(double const* const* parameters, double* residuals, dou
     return evaluate_with(ForwardModel::elements, parameters, residuals, jacobians) == Outcome::done;
 }
 
+CurveCost::Outcome CurveCost::base_residuals(const std::vector<double>& shared, const std::vector<double>& nuisance,
+                                             ForwardModel forward, double* residuals, ModelValues& run) const {
+    const std::size_t n = prepared_.used.size();
+    std::optional<LastRun>& last_run = last_runs_[forward == ForwardModel::continuum ? 0 : 1];
+    {
+        const std::lock_guard lock(last_run_mutex_);
+        if (last_run && last_run->shared == shared && last_run->nuisance == nuisance) {
+            if (last_run->outcome == Outcome::done) {
+                std::copy(last_run->residuals.begin(), last_run->residuals.end(), residuals);
+                run = last_run->run;
+            }
+            return last_run->outcome;
+        }
+    }
+    const Outcome outcome = residuals_at(shared.data(), nuisance.data(), forward, residuals, &run);
+    LastRun last{shared, nuisance, outcome, {}, {}};
+    if (outcome == Outcome::done) {
+        last.residuals.assign(residuals, residuals + n);
+        last.run = run;
+    }
+    const std::lock_guard lock(last_run_mutex_);
+    last_run = std::move(last);
+    return outcome;
+}
+
 CurveCost::Outcome CurveCost::evaluate_with(ForwardModel forward, double const* const* parameters, double* residuals,
                                             double** jacobians) const {
     const std::size_t k = problem_.parameters.size();
@@ -154,8 +180,7 @@ CurveCost::Outcome CurveCost::evaluate_with(ForwardModel forward, double const* 
     std::vector<double> nuisance(m);
     if (m > 0) nuisance.assign(parameters[1], parameters[1] + m);
     ModelValues run;
-    if (const Outcome outcome = residuals_at(shared.data(), nuisance.data(), forward, residuals, &run);
-        outcome != Outcome::done) {
+    if (const Outcome outcome = base_residuals(shared, nuisance, forward, residuals, run); outcome != Outcome::done) {
         return outcome;
     }
     if (jacobians == nullptr) return Outcome::done;

@@ -4,7 +4,9 @@
 
 #include <ceres/dynamic_cost_function.h>
 
+#include <array>
 #include <atomic>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -60,6 +62,19 @@ private:
                                                          const std::vector<double>& values, std::size_t j) const;
     Outcome evaluate_with(ForwardModel forward, double const* const* parameters, double* residuals,
                           double** jacobians) const;
+    /// residuals_at for the point of an evaluation, kept: Ceres asks for the same point more than once (its projected
+    /// line search tries a point, then evaluates it as the candidate; once it accepts it, it asks for the Jacobian
+    /// there), and the same parameters give the same run.
+    Outcome base_residuals(const std::vector<double>& shared, const std::vector<double>& nuisance,
+                           ForwardModel forward, double* residuals, ModelValues& run) const;
+
+    /// The last base run of one forward model: its parameters, outcome, residuals and run.
+    struct LastRun {
+        std::vector<double> shared, nuisance;
+        Outcome outcome = Outcome::failed;
+        std::vector<double> residuals;
+        ModelValues run;
+    };
 
     const FitProblem& problem_;
     const ParameterScales& scales_;
@@ -68,6 +83,8 @@ private:
     std::size_t elements_;
     std::atomic<std::size_t>& evaluations_;
     std::atomic<std::size_t>& element_evaluations_;
+    mutable std::mutex last_run_mutex_;
+    mutable std::array<std::optional<LastRun>, 2> last_runs_;  ///< per ForwardModel (continuum, elements)
 };
 
 }  // namespace mdr::fit
