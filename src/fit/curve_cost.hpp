@@ -62,9 +62,8 @@ private:
                                                          const std::vector<double>& values, std::size_t j) const;
     Outcome evaluate_with(ForwardModel forward, double const* const* parameters, double* residuals,
                           double** jacobians) const;
-    /// residuals_at for the point of an evaluation, kept: Ceres asks for the same point more than once (its projected
-    /// line search tries a point, then evaluates it as the candidate; once it accepts it, it asks for the Jacobian
-    /// there), and the same parameters give the same run.
+    /// residuals_at for the point of an evaluation, kept: Ceres asks for the same point more than once (it evaluates
+    /// a candidate and, once it accepts it, asks for the Jacobian there), and the same parameters give the same run.
     Outcome base_residuals(const std::vector<double>& shared, const std::vector<double>& nuisance,
                            ForwardModel forward, double* residuals, ModelValues& run) const;
 
