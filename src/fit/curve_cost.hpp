@@ -60,6 +60,18 @@ private:
     /// affine maps of moduli parameters, times the coordinate's derivative. No model run.
     std::optional<std::vector<double>> modulus_direction(const drivers::ContactCase& base, const double* shared,
                                                          const std::vector<double>& values, std::size_t j) const;
+    /// Euler's identity for a depth-driven run of the element model: scaling every modulus (and the dashpot) scales
+    /// every element's force and leaves each contact and separation where it is, so sum_b G_b dF/dG_b = F. Where each
+    /// branch with a modulus has a parameter that moves it alone, the column of the largest modulus's parameter
+    /// follows from the run's force and the other columns: column = gain (F / noise - sum of others' gain x column).
+    struct EulerColumn {
+        std::size_t parameter;                                ///< the column it gives
+        double gain;                                          ///< direction_j* / G_b*
+        std::vector<std::pair<std::size_t, double>> others;   ///< (parameter, G_b / direction_j) of the other branches
+    };
+    /// The EulerColumn of the case at `values` (`base`), nullopt where the identity does not give one.
+    std::optional<EulerColumn> euler_column(const drivers::ContactCase& base, const double* shared,
+                                            const std::vector<double>& values) const;
     Outcome evaluate_with(ForwardModel forward, double const* const* parameters, double* residuals,
                           double** jacobians) const;
     /// residuals_at for the point of an evaluation, kept: Ceres asks for the same point more than once (it evaluates
