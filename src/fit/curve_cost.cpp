@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -137,12 +138,67 @@ std::optional<std::vector<double>> CurveCost::modulus_direction(const drivers::C
     }
 }
 
+std::optional<CurveCost::EulerColumn> CurveCost::euler_column(const drivers::ContactCase& base, const double* shared,
+                                                             const std::vector<double>& values) const {
+    if (base.material.viscosity() != 0.0) return std::nullopt;  // eta delta(t) would scale too
+    const auto moduli = branch_moduli(base.material);
+    // The parameter of each branch: a direction that moves that branch's modulus alone.
+    std::vector<std::optional<std::pair<std::size_t, double>>> owner(moduli.size());
+    for (std::size_t j = 0; j < problem_.parameters.size(); ++j) {
+        const auto direction = modulus_direction(base, shared, values, j);
+        if (!direction) continue;
+        std::size_t moved = 0, branch = 0;
+        for (std::size_t b = 0; b < direction->size(); ++b) {
+            if ((*direction)[b] != 0.0) ++moved, branch = b;
+        }
+        if (moved == 1 && !owner[branch]) owner[branch] = std::pair{j, (*direction)[branch]};
+    }
+    std::optional<std::size_t> largest;
+    for (std::size_t b = 0; b < moduli.size(); ++b) {
+        if (moduli[b] == 0.0) continue;
+        if (!owner[b]) return std::nullopt;  // a branch whose dF/dG_b no column gives
+        if (!largest || std::abs(moduli[b]) > std::abs(moduli[*largest])) largest = b;
+    }
+    if (!largest) return std::nullopt;
+    // Column j = direction_j dF/dG_b(j) / noise, so G_b dF/dG_b / noise = (G_b / direction_j) column j.
+    EulerColumn euler{owner[*largest]->first, owner[*largest]->second / moduli[*largest], {}};
+    for (std::size_t b = 0; b < moduli.size(); ++b) {
+        if (b != *largest && moduli[b] != 0.0) euler.others.emplace_back(owner[b]->first, moduli[b] / owner[b]->second);
+    }
+    return euler;
+}
+
 bool CurveCost::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
     if (prepared_.fitted == Fitted::force) {  // a depth-driven curve: the continuum model where it applies
         const Outcome outcome = evaluate_with(ForwardModel::continuum, parameters, residuals, jacobians);
         if (outcome != Outcome::outside_model) return outcome == Outcome::done;
     }
     return evaluate_with(ForwardModel::elements, parameters, residuals, jacobians) == Outcome::done;
+}
+
+CurveCost::Outcome CurveCost::base_residuals(const std::vector<double>& shared, const std::vector<double>& nuisance,
+                                             ForwardModel forward, double* residuals, ModelValues& run) const {
+    const std::size_t n = prepared_.used.size();
+    std::optional<LastRun>& last_run = last_runs_[forward == ForwardModel::continuum ? 0 : 1];
+    {
+        const std::lock_guard lock(last_run_mutex_);
+        if (last_run && last_run->shared == shared && last_run->nuisance == nuisance) {
+            if (last_run->outcome == Outcome::done) {
+                std::copy(last_run->residuals.begin(), last_run->residuals.end(), residuals);
+                run = last_run->run;
+            }
+            return last_run->outcome;
+        }
+    }
+    const Outcome outcome = residuals_at(shared.data(), nuisance.data(), forward, residuals, &run);
+    LastRun last{shared, nuisance, outcome, {}, {}};
+    if (outcome == Outcome::done) {
+        last.residuals.assign(residuals, residuals + n);
+        last.run = run;
+    }
+    const std::lock_guard lock(last_run_mutex_);
+    last_run = std::move(last);
+    return outcome;
 }
 
 CurveCost::Outcome CurveCost::evaluate_with(ForwardModel forward, double const* const* parameters, double* residuals,
@@ -154,8 +210,7 @@ CurveCost::Outcome CurveCost::evaluate_with(ForwardModel forward, double const* 
     std::vector<double> nuisance(m);
     if (m > 0) nuisance.assign(parameters[1], parameters[1] + m);
     ModelValues run;
-    if (const Outcome outcome = residuals_at(shared.data(), nuisance.data(), forward, residuals, &run);
-        outcome != Outcome::done) {
+    if (const Outcome outcome = base_residuals(shared, nuisance, forward, residuals, run); outcome != Outcome::done) {
         return outcome;
     }
     if (jacobians == nullptr) return Outcome::done;
@@ -173,12 +228,18 @@ CurveCost::Outcome CurveCost::evaluate_with(ForwardModel forward, double const* 
         return Outcome::done;
     };
     if (jacobians[0] != nullptr) {
-        // Parameters that only scale moduli: their columns from the run's own derivatives (the continuum model).
+        // Parameters that only scale moduli: their columns from the run's own derivatives (the continuum model), or
+        // one of them from Euler's identity (depth-driven element runs).
         const auto values = scales_.values(shared.data());
+        const bool homogeneous = forward == ForwardModel::elements && prepared_.fitted == Fitted::force;
         std::optional<drivers::ContactCase> base;
-        if (!run.modulus_derivatives.empty()) base = problem_.model(values);
+        if (!run.modulus_derivatives.empty() || homogeneous) base = problem_.model(values);
+        const auto euler = homogeneous ? euler_column(*base, shared.data(), values) : std::nullopt;
         for (std::size_t j = 0; j < k; ++j) {
-            const auto direction = base ? modulus_direction(*base, shared.data(), values, j) : std::nullopt;
+            if (euler && j == euler->parameter) continue;
+            const auto direction = !run.modulus_derivatives.empty()
+                                       ? modulus_direction(*base, shared.data(), values, j)
+                                       : std::nullopt;
             if (direction) {
                 for (std::size_t i = 0; i < n; ++i) {
                     double derivative = 0.0;
@@ -190,6 +251,15 @@ CurveCost::Outcome CurveCost::evaluate_with(ForwardModel forward, double const* 
             } else if (const Outcome outcome = difference(shared[j], jacobians[0], k, j, scales_.upper[j]);
                        outcome != Outcome::done) {
                 return outcome;
+            }
+        }
+        if (euler) {
+            // dF/dG_b* = (F - sum_{b != b*} G_b dF/dG_b) / G_b*, each other modulus's dF/dG_b from its column.
+            const double baseline_now = baseline(nuisance.data());
+            for (std::size_t i = 0; i < n; ++i) {
+                double rest = (run.values[i] - baseline_now) / prepared_.noise;
+                for (const auto& [j, gain] : euler->others) rest -= gain * jacobians[0][i * k + j];
+                jacobians[0][i * k + euler->parameter] = rest * euler->gain;
             }
         }
     }

@@ -4,7 +4,9 @@
 
 #include <ceres/dynamic_cost_function.h>
 
+#include <array>
 #include <atomic>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,8 +60,32 @@ private:
     /// affine maps of moduli parameters, times the coordinate's derivative. No model run.
     std::optional<std::vector<double>> modulus_direction(const drivers::ContactCase& base, const double* shared,
                                                          const std::vector<double>& values, std::size_t j) const;
+    /// Euler's identity for a depth-driven run of the element model: scaling every modulus (and the dashpot) scales
+    /// every element's force and leaves each contact and separation where it is, so sum_b G_b dF/dG_b = F. Where each
+    /// branch with a modulus has a parameter that moves it alone, the column of the largest modulus's parameter
+    /// follows from the run's force and the other columns: column = gain (F / noise - sum of others' gain x column).
+    struct EulerColumn {
+        std::size_t parameter;                                ///< the column it gives
+        double gain;                                          ///< direction_j* / G_b*
+        std::vector<std::pair<std::size_t, double>> others;   ///< (parameter, G_b / direction_j) of the other branches
+    };
+    /// The EulerColumn of the case at `values` (`base`), nullopt where the identity does not give one.
+    std::optional<EulerColumn> euler_column(const drivers::ContactCase& base, const double* shared,
+                                            const std::vector<double>& values) const;
     Outcome evaluate_with(ForwardModel forward, double const* const* parameters, double* residuals,
                           double** jacobians) const;
+    /// residuals_at for the point of an evaluation, kept: Ceres asks for the same point more than once (it evaluates
+    /// a candidate and, once it accepts it, asks for the Jacobian there), and the same parameters give the same run.
+    Outcome base_residuals(const std::vector<double>& shared, const std::vector<double>& nuisance,
+                           ForwardModel forward, double* residuals, ModelValues& run) const;
+
+    /// The last base run of one forward model: its parameters, outcome, residuals and run.
+    struct LastRun {
+        std::vector<double> shared, nuisance;
+        Outcome outcome = Outcome::failed;
+        std::vector<double> residuals;
+        ModelValues run;
+    };
 
     const FitProblem& problem_;
     const ParameterScales& scales_;
@@ -68,6 +94,8 @@ private:
     std::size_t elements_;
     std::atomic<std::size_t>& evaluations_;
     std::atomic<std::size_t>& element_evaluations_;
+    mutable std::mutex last_run_mutex_;
+    mutable std::array<std::optional<LastRun>, 2> last_runs_;  ///< per ForwardModel (continuum, elements)
 };
 
 }  // namespace mdr::fit

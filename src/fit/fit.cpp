@@ -244,6 +244,11 @@ FitResult fit(const FitProblem& problem) {
     options.parameter_tolerance = 1e-12;
     options.gradient_tolerance = 1e-14;
     options.num_threads = 1;
+    // Ceres' projected line search along a bounded step, with interpolation from values only: the default, cubic,
+    // evaluated the Jacobian at every trial point, one model run per column, and doubled the runs of a fit
+    // (docs/performance.md, "Real curves"). Without the search an undetermined fit wandered along its valley instead
+    // of ending on a bound (tests/python/test_fit_documents.py, "undetermined").
+    options.line_search_interpolation_type = ceres::QUADRATIC;
     options.logging_type = ceres::SILENT;
     StatisticalConvergence statistical_convergence;
     options.callbacks.push_back(&statistical_convergence);
