@@ -350,8 +350,9 @@ def material_functions(functions: Mapping[str, np.ndarray], axes=None, units: Un
     _band(axes, functions, "t", "G", "C0")
     if "G_model" in functions:  # a model or data standing as a series: both, side by side
         axes.loglog(functions["t"], functions["G_model"], color="k", ls=":", label="G(t), model or data")
-    axes.set(xlabel=f"time t [{names['time']}]", ylabel=f"relaxation G [{names['pressure']}]",
-             title="Material functions")
+    ratio = _young_ratio(units)
+    axes.set(xlabel=f"time t [{names['time']}]", ylabel=f"relaxation G [{names['pressure']}]"
+             + (f"\n(Young's E(t) = {ratio:.4g} G(t))" if ratio else ""), title="Material functions")
     right = axes.twinx()
     right.loglog(functions["t"], functions["J"], color="C1", label="J(t)")
     _band(right, functions, "t", "J", "C1")
@@ -371,8 +372,41 @@ def _band(axes, table: Mapping[str, np.ndarray], x: str, name: str, color: str) 
                       label=f"{name}: 95 % band")
 
 
+def _fitted_quantities(units: Units) -> dict[str, str]:
+    """What each curve of a fit's summary dict (fit.json) fitted: ``{name: "force" or "depth"}`` ({} without)."""
+    if not isinstance(units, Mapping):
+        return {}
+    return {str(c["name"]): str(c.get("fitted", "force")) for c in units.get("curves", ()) if c.get("kind") != "rebound"}
+
+
+def _quantity_label(quantities: set[str], names: Mapping[str, str], prefix: str = "") -> str:
+    """``force F [nN]``, ``depth d [µm]``, or both when the curves fitted either: an axis label with its unit."""
+    labels = {"force": f"{prefix}force [{names['force']}]", "depth": f"{prefix}depth [{names['length']}]"}
+    return " or ".join(labels[q] for q in ("force", "depth") if q in (quantities or {"force", "depth"}))
+
+
+def _moduli_title(summary: Units, names: Mapping[str, str]) -> str:
+    """``G_inf = 0.0154 kPa (E = 0.0462 kPa)`` for each modulus with a Young's modulus in fit.json, else ""."""
+    if not isinstance(summary, Mapping) or not summary.get("young_moduli"):
+        return ""
+    parameters = summary.get("parameters", {})
+    return ", ".join(f"{key.split('.')[-1]} = {parameters[key]:.4g} (E = {young:.4g}) {names['pressure']}"
+                     for key, young in summary["young_moduli"].items() if key in parameters and young is not None)
+
+
+def _young_ratio(summary: Units) -> Optional[float]:
+    """E / G = 2 (1 + nu) of a fit's summary dict (from its ``young_moduli``), None without them."""
+    if not isinstance(summary, Mapping):
+        return None
+    parameters = summary.get("parameters", {})
+    for key, young in (summary.get("young_moduli") or {}).items():
+        if young is not None and parameters.get(key):
+            return young / parameters[key]
+    return None
+
+
 def fit_curves(curves: Mapping[str, np.ndarray], axes=None, units: Units = "SI"):
-    """Measured and fitted curves over time, with the residuals below.
+    """Measured and fitted curves over time, with the residuals (model - measured, with their unit) below.
 
     Parameters
     ----------
@@ -382,7 +416,8 @@ def fit_curves(curves: Mapping[str, np.ndarray], axes=None, units: Units = "SI")
     axes : sequence of two matplotlib.axes.Axes, optional
         Where to draw (data above, residuals below); a new figure by default.
     units : str or dict, optional
-        The unit system's name, or the fit's summary dict (fit.json; default "SI").
+        The unit system's name, or the fit's summary dict (fit.json; default "SI"): with it the axes name the
+        fitted quantity (force or depth) and the title the fitted moduli with their Young's moduli E.
 
     Returns
     -------
@@ -399,17 +434,67 @@ def fit_curves(curves: Mapping[str, np.ndarray], axes=None, units: Units = "SI")
     if axes is None:
         _, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 5.5), height_ratios=[3, 1.3])
     top, bottom = axes
-    for i, name in enumerate(dict.fromkeys(curves["curve"])):
+    curve_names = list(dict.fromkeys(curves["curve"]))
+    for i, name in enumerate(curve_names):
         rows = curves["curve"] == name
         top.plot(curves["t"][rows], curves["measured"][rows], ".", ms=2, color=f"C{i}", label=f"{name}: measured")
         top.plot(curves["t"][rows], curves["model"][rows], "-", lw=1, color="k" if i == 0 else f"C{i}",
                  label=f"{name}: model")
         bottom.plot(curves["t"][rows], curves["residual"][rows], ".", ms=2, color=f"C{i}")
-    top.set(ylabel=f"force [{names['force']}] or depth [{names['length']}]", title="Fit: data and model")
-    bottom.set(xlabel=f"time t [{names['time']}]", ylabel="model - measured")
+    fitted = _fitted_quantities(units)
+    quantities = {fitted[name] for name in curve_names if name in fitted}
+    moduli = _moduli_title(units, names)
+    top.set(ylabel=_quantity_label(quantities, names), title="Fit: data and model" + (f"\n{moduli}" if moduli else ""))
+    bottom.set(xlabel=f"time t [{names['time']}]", ylabel="model - measured\n" + _quantity_label(quantities, names))
     bottom.axhline(0.0, color="k", lw=0.5)
     top.legend(loc="best", fontsize=8)
     return top
+
+
+def force_indentation(curves: Mapping[str, np.ndarray], summary: Mapping[str, Any], axes=None):
+    """Force over indentation (depth below the fitted contact point) of each measured curve of a fit, measured and
+    model, with the contact point marked: where the contact region of a long record is visible.
+
+    Parameters
+    ----------
+    curves : dict of str to numpy.ndarray
+        curves.csv of ``mdr fit``, with its ``drive`` column (the depth below the contact point of a force-fitted
+        curve, the force above the baseline of a depth-fitted one).
+    summary : dict
+        fit.json of the same fit (each curve's ``fitted``, ``contact_point``, ``baseline``; ``units``).
+    axes : matplotlib.axes.Axes, optional
+        Where to draw; a new figure by default.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Examples
+    --------
+    >>> mdr.plot.force_indentation(mdr.plot.read_csv("out/curves.csv"), json.load(open("out/fit.json")))  # doctest: +SKIP
+    """
+    names = _unit_names(summary)
+    axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
+    for i, entry in enumerate(c for c in summary["curves"] if c.get("kind") != "rebound"):
+        rows = curves["curve"] == entry["name"]
+        baseline = entry["baseline"] or 0.0
+        if entry.get("fitted", "force") == "force":
+            x_measured = x_model = curves["drive"][rows]
+            y_measured, y_model = curves["measured"][rows], curves["model"][rows]
+        else:
+            contact = entry["contact_point"] or 0.0
+            x_measured, x_model = curves["measured"][rows] - contact, curves["model"][rows] - contact
+            y_measured = y_model = curves["drive"][rows] + baseline
+        axes.plot(x_measured, y_measured, ".", ms=2, color=f"C{i}", label=f"{entry['name']}: measured")
+        axes.plot(x_model, y_model, "-", lw=1, color="k" if i == 0 else f"C{i}", label=f"{entry['name']}: model")
+        axes.plot([0.0], [baseline], "o", mfc="none", ms=9, color="C3",
+                  label="contact point" if i == 0 else None)
+    axes.axvline(0.0, color="C3", lw=0.7, ls="--")
+    moduli = _moduli_title(summary, names)
+    axes.set(xlabel=f"indentation d - contact point [{names['length']}]", ylabel=f"force F [{names['force']}]",
+             title="Force-indentation" + (f"\n{moduli}" if moduli else ""))
+    axes.legend(loc="best", fontsize=8)
+    return axes
 
 
 _REBOUND_QUANTITIES = {"restitution": "restitution e", "contact_time": "contact time T [m{time}]"}
