@@ -672,9 +672,10 @@ def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
 
     Of ``mdr run``: force_depth, force_time, contact_radius, with tangential loading tangential_loop, with
     profiles pressure (and shear_stress); of ``mdr material``: material, dynamic; of ``mdr fit``: fit_curves,
-    material, dynamic (with 95 % bands); of ``mdr sweep``: sweep. The
-    figures are added to the directory's manifest, so that mdr may still replace the directory; a file of the
-    same name that mdr did not write is never overwritten.
+    force_indentation (the contact point marked), material, dynamic (with 95 % bands); of ``mdr sweep``: sweep.
+    A directory of ``mdr fit`` with candidates (one folder per model) or ``--each`` (one folder per file) gets the
+    figures of each folder, in the folder. The figures are added to the directory's manifest, so that mdr may
+    still replace the directory; a file of the same name that mdr did not write is never overwritten.
 
     Parameters
     ----------
@@ -701,7 +702,29 @@ def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
     ['out/demo/force_depth.png', 'out/demo/force_time.png', 'out/demo/contact_radius.png', 'out/demo/pressure.png']
     """
     listed = _listed_files(directory)
+    written: list[str] = []
+    try:
+        _plot_files(directory, listed, column, written)
+        if not written:  # a fit's candidates or --each: one result folder per model or file
+            for name in sorted(os.listdir(directory)):
+                folder = os.path.join(directory, name)
+                if os.path.isdir(folder) and not os.path.islink(folder) and \
+                        os.path.exists(os.path.join(folder, "curves.csv")):
+                    inner = None if listed is None else {e[len(name) + 1:] for e in listed if e.startswith(name + "/")}
+                    _plot_files(folder, inner, column, written)
+    finally:
+        if listed is not None and written:
+            names = [os.path.relpath(p, directory).replace(os.sep, "/") for p in written]
+            with open(os.path.join(directory, MANIFEST), "a", encoding="utf-8") as handle:
+                handle.writelines(name + "\n" for name in names if name not in listed)
+    if not written:
+        raise ValueError(f"{directory}: no history.csv, curves.csv, functions.csv or sweep.csv, nor folders of "
+                         "fit results (not a result directory of mdr)")
+    return written
 
+
+def _plot_files(directory: str, listed: Optional[set[str]], column: Optional[str], written: list[str]) -> None:
+    """The figures of the result files in `directory` (not its folders), appended to `written` as drawn."""
     def path(name):
         return os.path.join(directory, name)
 
@@ -711,48 +734,40 @@ def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
             raise ValueError(f"{target}: exists and was not written by mdr; not overwritten")
         return target
 
-    written = []
-    try:
-        if os.path.exists(path("history.csv")):
-            history = read_csv(path("history.csv"))
-            units = _summary(directory)
-            written.append(save(force_depth(history, units=units, control=units.get("control")),
-                                figure("force_depth")))
-            for name, draw in (("force_time", force_time), ("contact_radius", contact_radius)):
-                written.append(save(draw(history, units=units), figure(name)))
-            if "Fx" in history:
-                written.append(save(tangential_loop(history, units=units), figure("tangential_loop")))
-            if os.path.exists(path("profiles.csv")):
-                profiles = read_csv(path("profiles.csv"))
-                written.append(save(pressure_profiles(profiles, units=units), figure("pressure")))
-                if "tau" in profiles:
-                    written.append(save(shear_stress_profiles(profiles, units=units), figure("shear_stress")))
-        if os.path.exists(path("curves.csv")):
-            curves = read_csv(path("curves.csv"))
-            rebound = _rebound_rows(curves)
-            if not rebound.all():
-                written.append(save(fit_curves(_rows(curves, ~rebound), units=_summary(directory)),
-                                    figure("fit_curves")))
-            if rebound.any():
-                written.append(save(fit_rebounds(curves, units=_summary(directory)), figure("fit_rebounds")))
-        if os.path.exists(path("functions.csv")):
-            functions = read_csv(path("functions.csv"))
-            written.append(save(material_functions(functions, units=_summary(directory)), figure("material")))
-        if os.path.exists(path("dynamic.csv")):
-            dynamic = read_csv(path("dynamic.csv"))
-            written.append(save(dynamic_moduli(dynamic, units=_summary(directory)), figure("dynamic")))
-        if os.path.exists(path("sweep.csv")):
-            sweep = read_csv(path("sweep.csv"))
-            value = column or ("restitution" if "restitution" in sweep else "max_force")
-            written.append(save(sweep_map(sweep, value), figure("sweep")))
-    finally:
-        if listed is not None and written:
-            with open(os.path.join(directory, MANIFEST), "a", encoding="utf-8") as handle:
-                handle.writelines(os.path.basename(p) + "\n" for p in written if os.path.basename(p) not in listed)
-    if not written:
-        raise ValueError(f"{directory}: no history.csv, curves.csv, functions.csv or sweep.csv (not a result "
-                         "directory of mdr)")
-    return written
+    if os.path.exists(path("history.csv")):
+        history = read_csv(path("history.csv"))
+        units = _summary(directory)
+        written.append(save(force_depth(history, units=units, control=units.get("control")),
+                            figure("force_depth")))
+        for name, draw in (("force_time", force_time), ("contact_radius", contact_radius)):
+            written.append(save(draw(history, units=units), figure(name)))
+        if "Fx" in history:
+            written.append(save(tangential_loop(history, units=units), figure("tangential_loop")))
+        if os.path.exists(path("profiles.csv")):
+            profiles = read_csv(path("profiles.csv"))
+            written.append(save(pressure_profiles(profiles, units=units), figure("pressure")))
+            if "tau" in profiles:
+                written.append(save(shear_stress_profiles(profiles, units=units), figure("shear_stress")))
+    if os.path.exists(path("curves.csv")):
+        curves = read_csv(path("curves.csv"))
+        summary = _summary(directory)
+        rebound = _rebound_rows(curves)
+        if not rebound.all():
+            written.append(save(fit_curves(_rows(curves, ~rebound), units=summary), figure("fit_curves")))
+            if "drive" in curves and summary.get("curves"):
+                written.append(save(force_indentation(curves, summary), figure("force_indentation")))
+        if rebound.any():
+            written.append(save(fit_rebounds(curves, units=summary), figure("fit_rebounds")))
+    if os.path.exists(path("functions.csv")):
+        functions = read_csv(path("functions.csv"))
+        written.append(save(material_functions(functions, units=_summary(directory)), figure("material")))
+    if os.path.exists(path("dynamic.csv")):
+        dynamic = read_csv(path("dynamic.csv"))
+        written.append(save(dynamic_moduli(dynamic, units=_summary(directory)), figure("dynamic")))
+    if os.path.exists(path("sweep.csv")):
+        sweep = read_csv(path("sweep.csv"))
+        value = column or ("restitution" if "restitution" in sweep else "max_force")
+        written.append(save(sweep_map(sweep, value), figure("sweep")))
 
 
 def save(axes, path: str) -> str:
