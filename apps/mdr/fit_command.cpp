@@ -11,6 +11,7 @@
 #include "fit_each.hpp"
 #include "fit_preparation.hpp"
 #include "interrupt.hpp"
+#include "mdr/fit/plausibility.hpp"
 #include "mdr/io/fit_files.hpp"
 #include "mdr/io/result_directory.hpp"
 #include "setup_progress.hpp"
@@ -52,7 +53,8 @@ void add_fit_command(CLI::App& app, int& exit_code) {
                 converged = run_model_choice(fit_case, problem.curves, directory, progress);
                 return;
             }
-            const auto result = fit::fit(problem);
+            auto result = fit::fit(problem);
+            fit::add_plausibility_flags(problem, io::unit_system(fit_case.units), result);
             progress.finish();
             directory.write([&](const std::filesystem::path& files) { io::write_fit_result(files, fit_case, result); },
                             received_signal);

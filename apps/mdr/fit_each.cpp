@@ -11,6 +11,7 @@
 #include "fit_preparation.hpp"
 #include "interrupt.hpp"
 #include "mdr/error.hpp"
+#include "mdr/fit/plausibility.hpp"
 #include "mdr/io/csv_field.hpp"
 #include "mdr/io/fit_files.hpp"
 
@@ -71,7 +72,10 @@ bool run_each(const io::FitCase& fit_case, const std::vector<std::string>& files
         prepared.push_back(prepare_fit(case_for(fit_case, file)));
     }
     std::vector<fit::FitResult> results;
-    for (const auto& one : prepared) results.push_back(fit::fit(one.problem));
+    for (const auto& one : prepared) {
+        results.push_back(fit::fit(one.problem));
+        fit::add_plausibility_flags(one.problem, io::unit_system(fit_case.units), results.back());
+    }
     progress.finish();
     directory.write(
         [&](const std::filesystem::path& folder) {

@@ -7,6 +7,7 @@
 #include "mdr/error.hpp"
 #include "mdr/fit/candidates.hpp"
 #include "mdr/fit/fit_case_run.hpp"
+#include "mdr/fit/plausibility.hpp"
 #include "mdr/io/fit_files.hpp"
 #include "mdr/io/model_choice_files.hpp"
 #include "mdr/io/units.hpp"
@@ -124,6 +125,7 @@ py::dict fit_toml_case(const std::string& toml_text, const std::string& source, 
     const auto problem = fit::make_problem(fit_case, std::move(loaded), std::move(loaded_rebounds));
     fit::FitResult result;
     solve([&] { result = fit::fit(problem); });
+    fit::add_plausibility_flags(problem, io::unit_system(fit_case.units), result);
     return fit_output(fit_case, result);
 }
 
