@@ -190,3 +190,51 @@ def test_each_fits_one_material_per_file(run_mdr, workdir):
     (workdir / "two.toml").write_text(two + f'spring_constant = {K_CASE}\nunits = {{ spring_constant = "nN/um" }}\n')
     assert_bad_input(run_mdr("fit", workdir / "two.toml", "--each", "cell-a.csv", "--out", workdir / "new"),
                      "--each", "exactly one [[fit.data]]")
+
+
+def fit_flags(run_mdr, workdir, case_text):
+    import json
+    (workdir / "case.toml").write_text(case_text)
+    result = run_mdr("fit", workdir / "case.toml", "--out", workdir / "out", timeout=300)
+    assert result.returncode in (0, 1), result.stderr
+    summary = json.loads((workdir / "out" / "fit.json").read_text())
+    return summary["flags"], summary["curves"][0]["flags"], result.stdout
+
+
+DEPTH_CASE = AFM_CASE.replace('piezo = "piezo"\ndeflection = "defl"', 'depth = "d"\nforce = "F"').replace(
+    "afm.csv", "hertz.csv")
+
+
+def test_lengths_in_another_unit_than_the_case_are_flagged(run_mdr, workdir):
+    """The issue's trap: a um-nN-s case whose file holds metres and leaves out units.length reads 4e-6 m as 4e-6 um,
+    1e-6 of the tip's radius: flagged on the curve, naming the key to set."""
+    write_hertz_curve(workdir / "hertz.csv")
+    with open(workdir / "hertz.csv", newline="", encoding="utf-8") as handle:
+        header, *rows = list(csv.reader(handle))
+    with open(workdir / "hertz.csv", "w", newline="", encoding="utf-8") as handle:
+        csv.writer(handle).writerows([header, *[[t, float(d) * 1e-6, f] for t, d, f in rows]])
+    _, curve_flags, stdout = fit_flags(run_mdr, workdir, DEPTH_CASE.format(data="", fit=""))
+    assert len(curve_flags) == 1 and "below 0.0001 of the sphere's R = 5 µm" in curve_flags[0]
+    assert "units.length" in curve_flags[0] and "flag (hertz)" in stdout
+    # The same file with its unit stated: no flag, the true modulus.
+    _, curve_flags, _ = fit_flags(run_mdr, workdir, DEPTH_CASE.format(data='units = { length = "m" }', fit=""))
+    assert curve_flags == []
+
+
+def test_an_indentation_beyond_the_sphere_radius_is_flagged(run_mdr, workdir):
+    write_hertz_curve(workdir / "hertz.csv")   # 3 um deep on R = 5 um: plausible
+    _, curve_flags, _ = fit_flags(run_mdr, workdir, DEPTH_CASE.format(data="", fit=""))
+    assert curve_flags == []
+    case = DEPTH_CASE.format(data="", fit="").replace("R = 5.0", "R = 2.0").replace("G = 0.05", "G = 0.1")
+    _, curve_flags, _ = fit_flags(run_mdr, workdir, case)
+    assert len(curve_flags) == 1 and "exceeds the sphere's R = 2 µm" in curve_flags[0]
+
+
+def test_a_modulus_outside_the_moduli_of_materials_is_flagged(run_mdr, workdir):
+    """0.2 kPa read in an SI case is 0.2 Pa: below the softest gels (1 Pa)."""
+    write_hertz_curve(workdir / "hertz.csv")
+    case = DEPTH_CASE.format(data="", fit="").replace('units = "um-nN-s"', "")
+    flags, _, _ = fit_flags(run_mdr, workdir, case)
+    assert len(flags) == 1 and "(0.2 to 0.2 Pa)" in flags[0] and "1 Pa to 1e+12 Pa" in flags[0]
+    flags, _, _ = fit_flags(run_mdr, workdir, DEPTH_CASE.format(data="", fit=""))
+    assert flags == []
