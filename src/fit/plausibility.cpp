@@ -9,14 +9,19 @@
 namespace mdr::fit {
 namespace {
 
-// The largest indentation of a measured curve below its contact point, in the case's length unit.
+// The largest indentation of a measured curve, in the case's length unit: from the contact point, or from the
+// record's first depth when the fitted contact lies before it (a contact off the data must not hide a record whose
+// whole depth span is a micrometre's millionth).
 double largest_indentation(const CurveFit& curve) {
-    double largest = -std::numeric_limits<double>::infinity();
     const bool force_fitted = curve.fitted == Fitted::force;
+    double least = std::numeric_limits<double>::infinity();
+    double greatest = -least;
     for (std::size_t i = 0; i < curve.measured.size() && i < curve.drive.size(); ++i) {
-        largest = std::max(largest, force_fitted ? curve.drive[i] : curve.measured[i] - curve.contact_depth);
+        const double depth = force_fitted ? curve.drive[i] + curve.contact_depth : curve.measured[i];
+        least = std::min(least, depth);
+        greatest = std::max(greatest, depth);
     }
-    return largest;
+    return greatest - std::max(curve.contact_depth, least);
 }
 
 void add_depth_flags(double radius, const io::UnitSystem& system, FitResult& result) {

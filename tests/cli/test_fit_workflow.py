@@ -182,13 +182,13 @@ def test_each_fits_one_material_per_file(run_mdr, workdir):
         assert summary["curves"][0]["contact_point"] == pytest.approx(contact, abs=0.05)
     # Bad input in any file: refused before the first fit, nothing written.
     (workdir / "bad.csv").write_text("t,piezo\n0,1\n")
-    assert_bad_input(run_mdr("fit", path, "--each", "cell-a.csv", "bad.csv", "--out", workdir / "new"),
+    assert_bad_input(run_mdr("fit", path, "--each", "cell-a.csv", "bad.csv", "--out", workdir / "new", out=workdir / "new"),
                      "bad.csv", "defl")
-    assert_bad_input(run_mdr("fit", path, "--each", "cell-a.csv", "sub/cell-a.csv", "--out", workdir / "new"),
+    assert_bad_input(run_mdr("fit", path, "--each", "cell-a.csv", "sub/cell-a.csv", "--out", workdir / "new", out=workdir / "new"),
                      "--each = sub/cell-a.csv", "cell-a")
     two = path.read_text() + '\n[[fit.data]]\nfile = "afm.csv"\ntime = "t"\npiezo = "piezo"\ndeflection = "defl"\n'
     (workdir / "two.toml").write_text(two + f'spring_constant = {K_CASE}\nunits = {{ spring_constant = "nN/um" }}\n')
-    assert_bad_input(run_mdr("fit", workdir / "two.toml", "--each", "cell-a.csv", "--out", workdir / "new"),
+    assert_bad_input(run_mdr("fit", workdir / "two.toml", "--each", "cell-a.csv", "--out", workdir / "new", out=workdir / "new"),
                      "--each", "exactly one [[fit.data]]")
 
 
