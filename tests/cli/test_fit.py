@@ -97,7 +97,7 @@ def test_recovers_the_modulus_and_writes_the_result_directory(run_mdr, fit_case,
     assert list(functions[0]) == ["t", "G", "G_lower", "G_upper", "J", "J_lower", "J_upper"]
     assert float(functions[0]["G_upper"]) - float(functions[0]["G"]) == pytest.approx(1.96 * error, rel=1e-4)
     assert (out / "dynamic.csv").exists()
-    assert plotted_figures(out) in (None, ["dynamic.png", "fit_curves.png", "material.png"])
+    assert plotted_figures(out) in (None, ["dynamic.png", "fit_curves.png", "force_indentation.png", "material.png"])
 
 
 def plotted_figures(out):
