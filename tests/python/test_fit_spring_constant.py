@@ -60,3 +60,16 @@ def test_a_case_file_and_the_arrays_agree():
         from_file = mdr.fit(case)
     from_arrays = mdr.fit(CASE, data=[curve | {"spring_constant": K, "units": {"spring_constant": "N/m"}}])
     assert from_file.parameters["material.G"] == pytest.approx(from_arrays.parameters["material.G"], rel=1e-9)
+
+
+def test_lengths_in_metres_in_a_micrometre_case_are_flagged():
+    """The plausibility rule of the command line holds for mdr.fit: a um-nN-s case given depths in metres (1e-6 of
+    the sphere's radius) gets a curve flag naming units.length; the same arrays in micrometres none."""
+    t = np.linspace(0.0, 1.0, 300)
+    depth = -1.0 + 4.0 * t
+    force = 16.0 / 3.0 * G * np.sqrt(RADIUS) * np.maximum(depth, 0.0) ** 1.5
+    flagged = mdr.fit(CASE, data=[{"time": t, "depth": depth * 1e-6, "force": force}])
+    (flag,) = flagged.summary["curves"][0]["flags"]
+    assert "below 0.0001 of the sphere's R = 5 µm" in flag and "units.length" in flag
+    plain = mdr.fit(CASE, data=[{"time": t, "depth": depth + 1.0, "force": force}])
+    assert plain.summary["curves"][0]["flags"] == []
