@@ -238,3 +238,21 @@ def test_a_modulus_outside_the_moduli_of_materials_is_flagged(run_mdr, workdir):
     assert len(flags) == 1 and "(0.2 to 0.2 Pa)" in flags[0] and "1 Pa to 1e+12 Pa" in flags[0]
     flags, _, _ = fit_flags(run_mdr, workdir, DEPTH_CASE.format(data="", fit=""))
     assert flags == []
+
+
+def test_several_curve_tables_share_one_material(run_mdr, workdir):
+    """Two [[fit.data]] tables (two cells of the same material, contacts 1 and 1.5 um into their records): one G,
+    each curve its own contact point."""
+    import json
+    write_afm_curve(workdir / "afm.csv", contact=1.0, seed=3)
+    write_afm_curve(workdir / "second.csv", contact=1.5, seed=4)
+    data = f'spring_constant = {K_CASE}\nunits = {{ spring_constant = "nN/um" }}'
+    text = AFM_CASE.format(data=data, fit="")
+    text += ('\n[[fit.data]]\nfile = "second.csv"\ntime = "t"\npiezo = "piezo"\ndeflection = "defl"\n' + data + "\n")
+    (workdir / "case.toml").write_text(text)
+    result = run_mdr("fit", workdir / "case.toml", "--out", workdir / "out", timeout=300)
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((workdir / "out" / "fit.json").read_text())
+    assert summary["parameters"]["material.G"] == pytest.approx(G_TRUE, rel=0.02)
+    contacts = [curve["contact_point"] for curve in summary["curves"]]
+    assert contacts == [pytest.approx(1.0, abs=0.05), pytest.approx(1.5, abs=0.05)]
