@@ -126,11 +126,12 @@ TEST(FitDataReader, UnitsConvertToTheCasesSystem) {
 }
 
 TEST(FitDataReader, ASpringConstantStatesItsUnitWhereTheCasesIsNotNewtonPerMetre) {
-    // 0.019 reads as N/m to an AFM user and as nN/um to a um-nN-s case: refused bare there, accepted bare in SI
-    // (and in mm-N-s? N/mm is not N/m: refused too).
+    // 0.019 reads as N/m to an AFM user and as nN/um to a um-nN-s case: refused bare there and in mm-N-s (N/mm),
+    // accepted bare where the case's force / length is N/m: SI, and nm-nN-s (nN/nm = N/m).
     const std::string bare = "file = \"c.csv\"\ntime = \"t\"\nspring_constant = 0.019\n";
     EXPECT_DOUBLE_EQ(read(bare, "/cases", "SI").spring_constant_unit, 1.0);
-    for (const std::string system : {"um-nN-s", "mm-N-s", "nm-nN-s"}) {
+    EXPECT_DOUBLE_EQ(read(bare, "/cases", "nm-nN-s").spring_constant_unit, 1.0);
+    for (const std::string system : {"um-nN-s", "mm-N-s"}) {
         try {
             read(bare, "/cases", system);
             ADD_FAILURE() << system << ": a bare spring constant was taken";
