@@ -103,11 +103,12 @@ def fit(case: CaseLike, data: Mapping[str, Any] | Sequence[Mapping[str, Any]] | 
         float64; bool, complex, text and 2-D arrays are refused naming the key), float64 arrays without a copy:
         each a dict with ``time``, ``depth`` (positive into the body) and ``force``, and optionally
         ``name``; or, for a raw AFM curve, ``piezo`` and ``deflection`` (lengths, both larger = farther from the
-        sample) with ``spring_constant`` instead of
-        ``depth`` and ``force`` (force = k x deflection, depth = fall of piezo + deflection from the first row,
-        as the case file's AFM columns); the spring constant is in N/m in an SI (or nm-nN-s) case, and where the
-        case's force / length is not N/m must state its unit like a case file's ``units.spring_constant``: ``"units": {"spring_constant": "N/m"}`` (or
-        ``"nN/um"``, ...), since a bare 0.019 reads as N/m to an AFM user and as nN/µm to the case. ``fitted`` (``"force"`` or ``"depth"``) sets what that curve fits when
+        sample) with ``spring_constant`` instead of ``depth`` and ``force`` (force = k x deflection, depth = fall of
+        piezo + deflection from the first row, as the case file's AFM columns); the spring constant is in N/m in an
+        SI (or nm-nN-s) case, and where the case's force / length is not N/m must state its unit like a case file's
+        ``units.spring_constant``: ``"units": {"spring_constant": "N/m"}`` (or ``"nN/um"``, ...), since a bare
+        0.019 reads as N/m to an AFM user and as nN/µm to the case. ``fitted`` (``"force"`` or ``"depth"``) sets
+        what that curve fits when
         it differs from ``fit.fitted``: a creep curve beside an indentation curve, one material for both.
         Rebound data (one impact of the case's indenter per approach speed, the same material) are a dict with
         ``"kind": "rebound"``, ``velocity`` (approach speeds v0) and ``restitution`` (e in [0, 1]), and

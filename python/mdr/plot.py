@@ -376,7 +376,8 @@ def _fitted_quantities(units: Units) -> dict[str, str]:
     """What each curve of a fit's summary dict (fit.json) fitted: ``{name: "force" or "depth"}`` ({} without)."""
     if not isinstance(units, Mapping):
         return {}
-    return {str(c["name"]): str(c.get("fitted", "force")) for c in units.get("curves", ()) if c.get("kind") != "rebound"}
+    return {str(c["name"]): str(c.get("fitted", "force")) for c in units.get("curves", ())
+            if c.get("kind") != "rebound"}
 
 
 def _quantity_label(quantities: set[str], names: Mapping[str, str], prefix: str = "") -> str:
@@ -471,7 +472,8 @@ def force_indentation(curves: Mapping[str, np.ndarray], summary: Mapping[str, An
 
     Examples
     --------
-    >>> mdr.plot.force_indentation(mdr.plot.read_csv("out/curves.csv"), json.load(open("out/fit.json")))  # doctest: +SKIP
+    >>> summary = json.load(open("out/fit.json"))  # doctest: +SKIP
+    >>> axes = mdr.plot.force_indentation(mdr.plot.read_csv("out/curves.csv"), summary)  # doctest: +SKIP
     """
     names = _unit_names(summary)
     axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()

@@ -57,7 +57,8 @@ void add_modulus_flag(const io::UnitSystem& system, FitResult& result) {
         result.flags.push_back(fmt::format(
             "the fitted G(t) spans {:.3g} to {:.3g} {} ({:.3g} to {:.3g} Pa) over the data's window, outside the "
             "moduli of materials ({:g} Pa to {:g} Pa): are the data's units those of the case?",
-            least, greatest, system.pressure, least * pascal, greatest * pascal, least_modulus_pa, greatest_modulus_pa));
+            least, greatest, system.pressure, least * pascal, greatest * pascal, least_modulus_pa,
+            greatest_modulus_pa));
     }
 }
 

@@ -42,7 +42,8 @@ double spring_constant_unit(std::string_view unit, const UnitSystem& system, con
         throw InvalidInput(key, value_text,
                            fmt::format("a spring constant in a {} case must state its unit: {} = \"N/m\" (as "
                                        "cantilevers are quoted) or \"{}/{}\" (the case's force / length)",
-                                       system.name, unit_key, system.force, system.length == "µm" ? "um" : system.length));
+                                       system.name, unit_key, system.force,
+                                       system.length == "µm" ? "um" : system.length));
     }
     const auto slash = unit.find('/');
     if (slash != std::string_view::npos) {

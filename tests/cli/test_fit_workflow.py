@@ -133,7 +133,8 @@ def test_check_validates_a_fit_case_with_its_curves(run_mdr, workdir):
     bad.write_text(bad.read_text().replace('deflection = "defl"', 'deflection = "deflection"'))
     assert_bad_input(run_mdr("check", bad), "deflection", "defl")
     candidates = write_case(workdir, f'spring_constant = {K_CASE}\nunits = {{ spring_constant = "nN/um" }}')
-    candidates.write_text(candidates.read_text().replace('free = ["material.G"]', 'candidates = ["elastic", "standard"]'))
+    text = candidates.read_text().replace('free = ["material.G"]', 'candidates = ["elastic", "standard"]')
+    candidates.write_text(text)
     result = run_mdr("check", candidates)
     assert result.returncode == 0, result.stderr
     assert result.stdout.strip().endswith("; candidates elastic, standard")
@@ -182,13 +183,16 @@ def test_each_fits_one_material_per_file(run_mdr, workdir):
         assert summary["curves"][0]["contact_point"] == pytest.approx(contact, abs=0.05)
     # Bad input in any file: refused before the first fit, nothing written.
     (workdir / "bad.csv").write_text("t,piezo\n0,1\n")
-    assert_bad_input(run_mdr("fit", path, "--each", "cell-a.csv", "bad.csv", "--out", workdir / "new", out=workdir / "new"),
+    assert_bad_input(run_mdr("fit", path, "--each", "cell-a.csv", "bad.csv", "--out", workdir / "new",
+                             out=workdir / "new"),
                      "bad.csv", "defl")
-    assert_bad_input(run_mdr("fit", path, "--each", "cell-a.csv", "sub/cell-a.csv", "--out", workdir / "new", out=workdir / "new"),
+    assert_bad_input(run_mdr("fit", path, "--each", "cell-a.csv", "sub/cell-a.csv", "--out", workdir / "new",
+                             out=workdir / "new"),
                      "--each = sub/cell-a.csv", "cell-a")
     two = path.read_text() + '\n[[fit.data]]\nfile = "afm.csv"\ntime = "t"\npiezo = "piezo"\ndeflection = "defl"\n'
     (workdir / "two.toml").write_text(two + f'spring_constant = {K_CASE}\nunits = {{ spring_constant = "nN/um" }}\n')
-    assert_bad_input(run_mdr("fit", workdir / "two.toml", "--each", "cell-a.csv", "--out", workdir / "new", out=workdir / "new"),
+    assert_bad_input(run_mdr("fit", workdir / "two.toml", "--each", "cell-a.csv", "--out", workdir / "new",
+                             out=workdir / "new"),
                      "--each", "exactly one [[fit.data]]")
 
 
