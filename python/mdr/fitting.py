@@ -243,6 +243,9 @@ def _curve_arrays(curve: Mapping[str, Any], key: str,
         except _mdr.InvalidInput as error:
             raise ValueError(f"{key}.{error}") from None
         return values("time"), depth, force
+    if "units" in curve:  # never ignored: arrays are in the case's units, only a spring constant states its own
+        raise ValueError(f"{key}.units = {curve['units']!r}: the arrays are in the case's units; units states only "
+                         "the spring_constant of a raw AFM curve (piezo, deflection)")
     missing = [name for name in ("time", "depth", "force") if name not in curve]
     if missing:
         raise ValueError(f"{key}.{missing[0]} = (missing): each curve needs time, depth and force (or the raw AFM "

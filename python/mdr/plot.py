@@ -454,7 +454,8 @@ def fit_curves(curves: Mapping[str, np.ndarray], axes=None, units: Units = "SI")
 
 def force_indentation(curves: Mapping[str, np.ndarray], summary: Mapping[str, Any], axes=None):
     """Force over indentation (depth below the fitted contact point) of each measured curve of a fit, measured and
-    model, with the contact point marked: where the contact region of a long record is visible.
+    model, with the contact point marked: the contact region at full width, with at most half its depth of the
+    approach before it (a long approach would leave it a sliver).
 
     Parameters
     ----------
@@ -492,6 +493,9 @@ def force_indentation(curves: Mapping[str, np.ndarray], summary: Mapping[str, An
         axes.plot([0.0], [baseline], "o", mfc="none", ms=9, color="C3",
                   label="contact point" if i == 0 else None)
     axes.axvline(0.0, color="C3", lw=0.7, ls="--")
+    deepest = max((np.nanmax(line.get_xdata()) for line in axes.get_lines() if len(line.get_xdata())), default=0.0)
+    if deepest > 0.0:  # the contact region at full width, half as much of the approach before it
+        axes.set_xlim(left=max(axes.get_xlim()[0], -0.5 * deepest))
     moduli = _moduli_title(summary, names)
     axes.set(xlabel=f"indentation d - contact point [{names['length']}]", ylabel=f"force F [{names['force']}]",
              title="Force-indentation" + (f"\n{moduli}" if moduli else ""))

@@ -136,3 +136,14 @@ def test_python_m_mdr_plot_draws_a_candidates_and_an_each_directory(mdr_binary, 
         assert completed.returncode == 0, completed.stderr
     summary = json.loads((tmp_path / "each" / "b" / "fit.json").read_text())
     assert abs(summary["curves"][0]["contact_point"] - 1.5) < 0.05
+
+
+def test_a_long_approach_leaves_the_contact_region_at_full_width():
+    """A record whose approach is 10x longer than its indentation: the axis shows half the indentation's depth of
+    the approach, not the whole approach (the contact region is no sliver)."""
+    curves, summary = hertz_curves()
+    curves = dict(curves, drive=np.concatenate([np.linspace(-30.0, -1.0, 50), curves["drive"][-51:]]))
+    axes = mdr.plot.force_indentation(curves, summary)
+    left, right = axes.get_xlim()
+    assert left == -1.5 and right >= 3.0   # deepest 3 um
+    plt.close("all")

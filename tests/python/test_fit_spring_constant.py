@@ -41,6 +41,10 @@ def test_a_bare_spring_constant_in_a_non_si_case_is_refused():
         mdr.fit(CASE, data=[curve | {"units": {"spring_constant": "N/cm2"}}])
     with pytest.raises(ValueError, match=r"data\[0\]\.units = .*one key spring_constant"):
         mdr.fit(CASE, data=[curve | {"units": {"length": "m"}}])
+    # Depth and force arrays are in the case's units: a units dict beside them is refused, never ignored.
+    t = curve["time"]
+    with pytest.raises(ValueError, match=r"data\[0\]\.units = \{'length': 'm'\}: the arrays are in the case's units"):
+        mdr.fit(CASE, data=[{"time": t, "depth": t, "force": t, "units": {"length": "m"}}])
 
 
 def test_a_case_file_and_the_arrays_agree():
