@@ -26,7 +26,7 @@ double largest_indentation(const CurveFit& curve) {
 
 void add_depth_flags(double radius, const io::UnitSystem& system, FitResult& result) {
     for (auto& curve : result.curves) {
-        if (curve.rebound || curve.time.empty()) continue;
+        if (curve.rebound || curve.drive.empty()) continue;
         const double depth = largest_indentation(curve);
         if (depth < least_sphere_indentation * radius) {
             curve.flags.push_back(fmt::format(
