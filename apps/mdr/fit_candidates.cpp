@@ -18,8 +18,9 @@ void print_flags(const fit::FitResult& result) {
 }
 
 bool run_model_choice(const io::FitCase& fit_case, const std::vector<fit::Curve>& curves,
-                      const io::ResultDirectory& directory) {
+                      const io::ResultDirectory& directory, FitProgress& progress) {
     const auto choice = fit::fit_candidates(fit_case, curves);
+    progress.finish();
     directory.write([&](const std::filesystem::path& files) { io::write_model_choice(files, fit_case, choice); },
                     received_signal);
     double seconds = 0.0;

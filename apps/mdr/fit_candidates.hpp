@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "fit_progress.hpp"
 #include "mdr/fit/curve.hpp"
 #include "mdr/fit/fit.hpp"
 #include "mdr/io/fit_case.hpp"
@@ -15,8 +16,9 @@ void print_flags(const fit::FitResult& result);
 
 /// Fits the candidates of `fit_case` to `curves`, writes them into `directory` (io::write_model_choice) and prints
 /// the ranking. Returns true when the preferred candidate's fit converged (the others' status is in the
-/// ranking: a term the data do not need often drifts to a bound without converging).
+/// ranking: a term the data do not need often drifts to a bound without converging). `progress` is finished
+/// before the ranking is printed.
 bool run_model_choice(const io::FitCase& fit_case, const std::vector<fit::Curve>& curves,
-                      const io::ResultDirectory& directory);
+                      const io::ResultDirectory& directory, FitProgress& progress);
 
 }  // namespace mdr::cli

@@ -2,10 +2,16 @@
 
 #include <fmt/format.h>
 
+#include <functional>
+#include <string>
+#include <vector>
+
 #include "commands.hpp"
 #include "fit_candidates.hpp"
+#include "fit_each.hpp"
+#include "fit_preparation.hpp"
 #include "interrupt.hpp"
-#include "mdr/fit/fit_case_run.hpp"
+#include "mdr/fit/plausibility.hpp"
 #include "mdr/io/fit_files.hpp"
 #include "mdr/io/result_directory.hpp"
 #include "setup_progress.hpp"
@@ -20,30 +26,36 @@ void add_fit_command(CLI::App& app, int& exit_code) {
     auto out = std::make_shared<std::string>();
     command->add_option("case", *case_path, "The TOML case file with a [fit] table")->required();
     command->add_option("--out,-o", *out, "Result directory (created, or replaced if mdr wrote it)")->required();
-    command->callback([case_path, out, &exit_code] {
+    auto each = std::make_shared<std::vector<std::string>>();
+    command->add_option("--each", *each,
+                        "Curve files fitted one by one in place of the case's one [[fit.data]] file (one material per "
+                        "file): DIR/<stem>/ each, and DIR/each.csv with one row per file");
+    command->callback([case_path, out, each, &exit_code] {
         bool converged = true;
         exit_code = guarded([&] {
-            const io::ResultDirectory directory(*out, "--out", {*case_path});
+            std::vector<std::filesystem::path> inputs{*case_path};
+            inputs.insert(inputs.end(), each->begin(), each->end());
+            const io::ResultDirectory directory(*out, "--out", inputs);
+            FitProgress progress;
             auto [fit_case, problem] = [&] {
                 const SetupProgress preparing;
                 auto read = io::load_fit_case(*case_path);
                 read.settings.check_interrupt = throw_if_interrupted;  // Ctrl-C stops the fit at its next model run
-                auto curves = fit::load_curves(read);
-                fit::require_curves_only_for_model_choice(read, read.rebounds.size());
-                if (!read.model_choice.empty()) {  // candidates: each builds its own problem from the curves
-                    fit::FitProblem curves_only;
-                    curves_only.curves = std::move(curves);
-                    return std::make_pair(std::move(read), std::move(curves_only));
-                }
-                auto built = fit::make_problem(read, std::move(curves), fit::load_rebounds(read));
-                fit::validate(built);
-                return std::make_pair(std::move(read), std::move(built));
+                read.settings.on_iteration = std::ref(progress);
+                if (!each->empty()) return PreparedFit{std::move(read), {}};  // each file is prepared by run_each
+                return prepare_fit(std::move(read));
             }();
-            if (!fit_case.model_choice.empty()) {
-                converged = run_model_choice(fit_case, problem.curves, directory);
+            if (!each->empty()) {
+                converged = run_each(fit_case, *each, directory, progress);
                 return;
             }
-            const auto result = fit::fit(problem);
+            if (!fit_case.model_choice.empty()) {
+                converged = run_model_choice(fit_case, problem.curves, directory, progress);
+                return;
+            }
+            auto result = fit::fit(problem);
+            fit::add_plausibility_flags(problem, io::unit_system(fit_case.units), result);
+            progress.finish();
             directory.write([&](const std::filesystem::path& files) { io::write_fit_result(files, fit_case, result); },
                             received_signal);
             fmt::print("fit of {} parameter(s) to {} curve(s) and {} rebound data set(s), {} points: {}\n",

@@ -7,8 +7,10 @@
 #include "mdr/error.hpp"
 #include "mdr/fit/candidates.hpp"
 #include "mdr/fit/fit_case_run.hpp"
+#include "mdr/fit/plausibility.hpp"
 #include "mdr/io/fit_files.hpp"
 #include "mdr/io/model_choice_files.hpp"
+#include "mdr/io/units.hpp"
 
 namespace py = pybind11;
 
@@ -123,6 +125,7 @@ py::dict fit_toml_case(const std::string& toml_text, const std::string& source, 
     const auto problem = fit::make_problem(fit_case, std::move(loaded), std::move(loaded_rebounds));
     fit::FitResult result;
     solve([&] { result = fit::fit(problem); });
+    fit::add_plausibility_flags(problem, io::unit_system(fit_case.units), result);
     return fit_output(fit_case, result);
 }
 
@@ -139,6 +142,15 @@ void bind_fit(py::module_& module) {
         },
         py::arg("piezo"), py::arg("deflection"), py::arg("spring_constant"),
         "Depth and force of a raw AFM curve (mdr.fit's piezo/deflection arrays).");
+    module.def(
+        "_spring_constant_unit",
+        [](const std::string& unit, const std::string& case_units, const std::string& key, const std::string& value,
+           const std::string& unit_key) {
+            return io::spring_constant_unit(unit, io::unit_system(case_units), key, value, unit_key);
+        },
+        py::arg("unit"), py::arg("case_units"), py::arg("key"), py::arg("value"), py::arg("unit_key"),
+        "One spring-constant unit in the case's force / length (mdr/io/units.hpp: the unit must be stated when "
+        "that is not N/m).");
 }
 
 }  // namespace mdr::python

@@ -103,9 +103,12 @@ def fit(case: CaseLike, data: Mapping[str, Any] | Sequence[Mapping[str, Any]] | 
         float64; bool, complex, text and 2-D arrays are refused naming the key), float64 arrays without a copy:
         each a dict with ``time``, ``depth`` (positive into the body) and ``force``, and optionally
         ``name``; or, for a raw AFM curve, ``piezo`` and ``deflection`` (lengths, both larger = farther from the
-        sample) with ``spring_constant`` (force / length) instead of
-        ``depth`` and ``force`` (force = k x deflection, depth = fall of piezo + deflection from the first row,
-        as the case file's AFM columns). ``fitted`` (``"force"`` or ``"depth"``) sets what that curve fits when
+        sample) with ``spring_constant`` instead of ``depth`` and ``force`` (force = k x deflection, depth = fall of
+        piezo + deflection from the first row, as the case file's AFM columns); the spring constant is in N/m in an
+        SI (or nm-nN-s) case, and where the case's force / length is not N/m must state its unit like a case file's
+        ``units.spring_constant``: ``"units": {"spring_constant": "N/m"}`` (or ``"nN/um"``, ...), since a bare
+        0.019 reads as N/m to an AFM user and as nN/µm to the case. ``fitted`` (``"force"`` or ``"depth"``) sets
+        what that curve fits when
         it differs from ``fit.fitted``: a creep curve beside an indentation curve, one material for both.
         Rebound data (one impact of the case's indenter per approach speed, the same material) are a dict with
         ``"kind": "rebound"``, ``velocity`` (approach speeds v0) and ``restitution`` (e in [0, 1]), and
@@ -156,12 +159,13 @@ def fit(case: CaseLike, data: Mapping[str, Any] | Sequence[Mapping[str, Any]] | 
     else:
         raise TypeError(f"case: expected a path or a dict, got {type(case).__name__}")
     curves, rebounds = [], []
+    case_units = _case_units(case if isinstance(case, Mapping) else text)
     for i, curve in enumerate(_data_list(data)):
         kind = curve.get("kind", "curve")
         if kind == "rebound":
             rebounds.append(_rebound_arrays(curve, i))
         elif kind == "curve":
-            curves.append((str(curve.get("name", f"curve{i}")), *_curve_arrays(curve, f"data[{i}]"),
+            curves.append((str(curve.get("name", f"curve{i}")), *_curve_arrays(curve, f"data[{i}]", case_units),
                            str(curve.get("fitted", ""))))
         else:
             raise ValueError(f"data[{i}].kind = {kind!r}: one of curve, rebound")
@@ -190,7 +194,35 @@ def _data_list(data: Any) -> list[Mapping[str, Any]]:
     return list(data)
 
 
-def _curve_arrays(curve: Mapping[str, Any], key: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _case_units(case: Mapping[str, Any] | str) -> str:
+    """The case's ``units`` (SI when absent; SI too for a text that is not TOML, which the fit itself refuses)."""
+    if not isinstance(case, Mapping):
+        try:
+            case = tomllib.loads(case)
+        except tomllib.TOMLDecodeError:
+            return "SI"
+    return str(case.get("units", "SI"))
+
+
+def _spring_constant(curve: Mapping[str, Any], key: str, case_units: str) -> float:
+    """The spring constant of a raw AFM curve in the case's force / length: its unit stated in ``units`` (needed
+    unless the case's force / length is N/m; the rule of a case file's ``units.spring_constant``)."""
+    value = real_number(curve["spring_constant"], f"{key}.spring_constant")
+    units = curve.get("units", {})
+    if not isinstance(units, Mapping) or any(name != "spring_constant" for name in units):
+        raise ValueError(f"{key}.units = {units!r}: a dict with the one key spring_constant (e.g. \"N/m\")")
+    unit = units.get("spring_constant", "")
+    if not isinstance(unit, str):
+        raise ValueError(f"{key}.units.spring_constant = {unit!r}: must be a string such as \"N/m\"")
+    try:
+        return value * _mdr._spring_constant_unit(unit, case_units, f"{key}.spring_constant", f"{value:g}",
+                                                  f"{key}.units.spring_constant")
+    except _mdr.InvalidInput as error:
+        raise ValueError(str(error)) from None
+
+
+def _curve_arrays(curve: Mapping[str, Any], key: str,
+                  case_units: str = "SI") -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """time, depth and force of one curve of mdr.fit's ``data``: given, or from the raw AFM arrays."""
     def values(name):
         return real_array(curve[name], f"{key}.{name}")
@@ -207,10 +239,13 @@ def _curve_arrays(curve: Mapping[str, Any], key: str) -> tuple[np.ndarray, np.nd
                                  "spring_constant")
         try:
             depth, force = _mdr._afm_depth_and_force(values("piezo"), values("deflection"),
-                                                     real_number(curve["spring_constant"], f"{key}.spring_constant"))
+                                                     _spring_constant(curve, key, case_units))
         except _mdr.InvalidInput as error:
             raise ValueError(f"{key}.{error}") from None
         return values("time"), depth, force
+    if "units" in curve:  # never ignored: arrays are in the case's units, only a spring constant states its own
+        raise ValueError(f"{key}.units = {curve['units']!r}: the arrays are in the case's units; units states only "
+                         "the spring_constant of a raw AFM curve (piezo, deflection)")
     missing = [name for name in ("time", "depth", "force") if name not in curve]
     if missing:
         raise ValueError(f"{key}.{missing[0]} = (missing): each curve needs time, depth and force (or the raw AFM "

@@ -350,8 +350,9 @@ def material_functions(functions: Mapping[str, np.ndarray], axes=None, units: Un
     _band(axes, functions, "t", "G", "C0")
     if "G_model" in functions:  # a model or data standing as a series: both, side by side
         axes.loglog(functions["t"], functions["G_model"], color="k", ls=":", label="G(t), model or data")
-    axes.set(xlabel=f"time t [{names['time']}]", ylabel=f"relaxation G [{names['pressure']}]",
-             title="Material functions")
+    ratio = _young_ratio(units)
+    axes.set(xlabel=f"time t [{names['time']}]", ylabel=f"relaxation G [{names['pressure']}]"
+             + (f"\n(Young's E(t) = {ratio:.4g} G(t))" if ratio else ""), title="Material functions")
     right = axes.twinx()
     right.loglog(functions["t"], functions["J"], color="C1", label="J(t)")
     _band(right, functions, "t", "J", "C1")
@@ -371,8 +372,42 @@ def _band(axes, table: Mapping[str, np.ndarray], x: str, name: str, color: str) 
                       label=f"{name}: 95 % band")
 
 
+def _fitted_quantities(units: Units) -> dict[str, str]:
+    """What each curve of a fit's summary dict (fit.json) fitted: ``{name: "force" or "depth"}`` ({} without)."""
+    if not isinstance(units, Mapping):
+        return {}
+    return {str(c["name"]): str(c.get("fitted", "force")) for c in units.get("curves", ())
+            if c.get("kind") != "rebound"}
+
+
+def _quantity_label(quantities: set[str], names: Mapping[str, str], prefix: str = "") -> str:
+    """``force F [nN]``, ``depth d [µm]``, or both when the curves fitted either: an axis label with its unit."""
+    labels = {"force": f"{prefix}force [{names['force']}]", "depth": f"{prefix}depth [{names['length']}]"}
+    return " or ".join(labels[q] for q in ("force", "depth") if q in (quantities or {"force", "depth"}))
+
+
+def _moduli_title(summary: Units, names: Mapping[str, str]) -> str:
+    """``G_inf = 0.0154 kPa (E = 0.0462 kPa)`` for each modulus with a Young's modulus in fit.json, else ""."""
+    if not isinstance(summary, Mapping) or not summary.get("young_moduli"):
+        return ""
+    parameters = summary.get("parameters", {})
+    return ", ".join(f"{key.split('.')[-1]} = {parameters[key]:.4g} (E = {young:.4g}) {names['pressure']}"
+                     for key, young in summary["young_moduli"].items() if key in parameters and young is not None)
+
+
+def _young_ratio(summary: Units) -> Optional[float]:
+    """E / G = 2 (1 + nu) of a fit's summary dict (from its ``young_moduli``), None without them."""
+    if not isinstance(summary, Mapping):
+        return None
+    parameters = summary.get("parameters", {})
+    for key, young in (summary.get("young_moduli") or {}).items():
+        if young is not None and parameters.get(key):
+            return young / parameters[key]
+    return None
+
+
 def fit_curves(curves: Mapping[str, np.ndarray], axes=None, units: Units = "SI"):
-    """Measured and fitted curves over time, with the residuals below.
+    """Measured and fitted curves over time, with the residuals (model - measured, with their unit) below.
 
     Parameters
     ----------
@@ -382,7 +417,8 @@ def fit_curves(curves: Mapping[str, np.ndarray], axes=None, units: Units = "SI")
     axes : sequence of two matplotlib.axes.Axes, optional
         Where to draw (data above, residuals below); a new figure by default.
     units : str or dict, optional
-        The unit system's name, or the fit's summary dict (fit.json; default "SI").
+        The unit system's name, or the fit's summary dict (fit.json; default "SI"): with it the axes name the
+        fitted quantity (force or depth) and the title the fitted moduli with their Young's moduli E.
 
     Returns
     -------
@@ -399,17 +435,72 @@ def fit_curves(curves: Mapping[str, np.ndarray], axes=None, units: Units = "SI")
     if axes is None:
         _, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 5.5), height_ratios=[3, 1.3])
     top, bottom = axes
-    for i, name in enumerate(dict.fromkeys(curves["curve"])):
+    curve_names = list(dict.fromkeys(curves["curve"]))
+    for i, name in enumerate(curve_names):
         rows = curves["curve"] == name
         top.plot(curves["t"][rows], curves["measured"][rows], ".", ms=2, color=f"C{i}", label=f"{name}: measured")
         top.plot(curves["t"][rows], curves["model"][rows], "-", lw=1, color="k" if i == 0 else f"C{i}",
                  label=f"{name}: model")
         bottom.plot(curves["t"][rows], curves["residual"][rows], ".", ms=2, color=f"C{i}")
-    top.set(ylabel=f"force [{names['force']}] or depth [{names['length']}]", title="Fit: data and model")
-    bottom.set(xlabel=f"time t [{names['time']}]", ylabel="model - measured")
+    fitted = _fitted_quantities(units)
+    quantities = {fitted[name] for name in curve_names if name in fitted}
+    moduli = _moduli_title(units, names)
+    top.set(ylabel=_quantity_label(quantities, names), title="Fit: data and model" + (f"\n{moduli}" if moduli else ""))
+    bottom.set(xlabel=f"time t [{names['time']}]", ylabel="model - measured\n" + _quantity_label(quantities, names))
     bottom.axhline(0.0, color="k", lw=0.5)
     top.legend(loc="best", fontsize=8)
     return top
+
+
+def force_indentation(curves: Mapping[str, np.ndarray], summary: Mapping[str, Any], axes=None):
+    """Force over indentation (depth below the fitted contact point) of each measured curve of a fit, measured and
+    model, with the contact point marked: the contact region at full width, with at most half its depth of the
+    approach before it (a long approach would leave it a sliver).
+
+    Parameters
+    ----------
+    curves : dict of str to numpy.ndarray
+        curves.csv of ``mdr fit``, with its ``drive`` column (the depth below the contact point of a force-fitted
+        curve, the force above the baseline of a depth-fitted one).
+    summary : dict
+        fit.json of the same fit (each curve's ``fitted``, ``contact_point``, ``baseline``; ``units``).
+    axes : matplotlib.axes.Axes, optional
+        Where to draw; a new figure by default.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Examples
+    --------
+    >>> summary = json.load(open("out/fit.json"))  # doctest: +SKIP
+    >>> axes = mdr.plot.force_indentation(mdr.plot.read_csv("out/curves.csv"), summary)  # doctest: +SKIP
+    """
+    names = _unit_names(summary)
+    axes = axes or plt.figure(figsize=(6, 4.5)).add_subplot()
+    for i, entry in enumerate(c for c in summary["curves"] if c.get("kind") != "rebound"):
+        rows = curves["curve"] == entry["name"]
+        baseline = entry["baseline"] or 0.0
+        if entry.get("fitted", "force") == "force":
+            x_measured = x_model = curves["drive"][rows]
+            y_measured, y_model = curves["measured"][rows], curves["model"][rows]
+        else:
+            contact = entry["contact_point"] or 0.0
+            x_measured, x_model = curves["measured"][rows] - contact, curves["model"][rows] - contact
+            y_measured = y_model = curves["drive"][rows] + baseline
+        axes.plot(x_measured, y_measured, ".", ms=2, color=f"C{i}", label=f"{entry['name']}: measured")
+        axes.plot(x_model, y_model, "-", lw=1, color="k" if i == 0 else f"C{i}", label=f"{entry['name']}: model")
+        axes.plot([0.0], [baseline], "o", mfc="none", ms=9, color="C3",
+                  label="contact point" if i == 0 else None)
+    axes.axvline(0.0, color="C3", lw=0.7, ls="--")
+    deepest = max((np.nanmax(line.get_xdata()) for line in axes.get_lines() if len(line.get_xdata())), default=0.0)
+    if deepest > 0.0:  # the contact region at full width, half as much of the approach before it
+        axes.set_xlim(left=max(axes.get_xlim()[0], -0.5 * deepest))
+    moduli = _moduli_title(summary, names)
+    axes.set(xlabel=f"indentation d - contact point [{names['length']}]", ylabel=f"force F [{names['force']}]",
+             title="Force-indentation" + (f"\n{moduli}" if moduli else ""))
+    axes.legend(loc="best", fontsize=8)
+    return axes
 
 
 _REBOUND_QUANTITIES = {"restitution": "restitution e", "contact_time": "contact time T [m{time}]"}
@@ -587,9 +678,10 @@ def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
 
     Of ``mdr run``: force_depth, force_time, contact_radius, with tangential loading tangential_loop, with
     profiles pressure (and shear_stress); of ``mdr material``: material, dynamic; of ``mdr fit``: fit_curves,
-    material, dynamic (with 95 % bands); of ``mdr sweep``: sweep. The
-    figures are added to the directory's manifest, so that mdr may still replace the directory; a file of the
-    same name that mdr did not write is never overwritten.
+    force_indentation (the contact point marked), material, dynamic (with 95 % bands); of ``mdr sweep``: sweep.
+    A directory of ``mdr fit`` with candidates (one folder per model) or ``--each`` (one folder per file) gets the
+    figures of each folder, in the folder. The figures are added to the directory's manifest, so that mdr may
+    still replace the directory; a file of the same name that mdr did not write is never overwritten.
 
     Parameters
     ----------
@@ -616,7 +708,29 @@ def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
     ['out/demo/force_depth.png', 'out/demo/force_time.png', 'out/demo/contact_radius.png', 'out/demo/pressure.png']
     """
     listed = _listed_files(directory)
+    written: list[str] = []
+    try:
+        _plot_files(directory, listed, column, written)
+        if not written:  # a fit's candidates or --each: one result folder per model or file
+            for name in sorted(os.listdir(directory)):
+                folder = os.path.join(directory, name)
+                if os.path.isdir(folder) and not os.path.islink(folder) and \
+                        os.path.exists(os.path.join(folder, "curves.csv")):
+                    inner = None if listed is None else {e[len(name) + 1:] for e in listed if e.startswith(name + "/")}
+                    _plot_files(folder, inner, column, written)
+    finally:
+        if listed is not None and written:
+            names = [os.path.relpath(p, directory).replace(os.sep, "/") for p in written]
+            with open(os.path.join(directory, MANIFEST), "a", encoding="utf-8") as handle:
+                handle.writelines(name + "\n" for name in names if name not in listed)
+    if not written:
+        raise ValueError(f"{directory}: no history.csv, curves.csv, functions.csv or sweep.csv, nor folders of "
+                         "fit results (not a result directory of mdr)")
+    return written
 
+
+def _plot_files(directory: str, listed: Optional[set[str]], column: Optional[str], written: list[str]) -> None:
+    """The figures of the result files in `directory` (not its folders), appended to `written` as drawn."""
     def path(name):
         return os.path.join(directory, name)
 
@@ -626,48 +740,40 @@ def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
             raise ValueError(f"{target}: exists and was not written by mdr; not overwritten")
         return target
 
-    written = []
-    try:
-        if os.path.exists(path("history.csv")):
-            history = read_csv(path("history.csv"))
-            units = _summary(directory)
-            written.append(save(force_depth(history, units=units, control=units.get("control")),
-                                figure("force_depth")))
-            for name, draw in (("force_time", force_time), ("contact_radius", contact_radius)):
-                written.append(save(draw(history, units=units), figure(name)))
-            if "Fx" in history:
-                written.append(save(tangential_loop(history, units=units), figure("tangential_loop")))
-            if os.path.exists(path("profiles.csv")):
-                profiles = read_csv(path("profiles.csv"))
-                written.append(save(pressure_profiles(profiles, units=units), figure("pressure")))
-                if "tau" in profiles:
-                    written.append(save(shear_stress_profiles(profiles, units=units), figure("shear_stress")))
-        if os.path.exists(path("curves.csv")):
-            curves = read_csv(path("curves.csv"))
-            rebound = _rebound_rows(curves)
-            if not rebound.all():
-                written.append(save(fit_curves(_rows(curves, ~rebound), units=_summary(directory)),
-                                    figure("fit_curves")))
-            if rebound.any():
-                written.append(save(fit_rebounds(curves, units=_summary(directory)), figure("fit_rebounds")))
-        if os.path.exists(path("functions.csv")):
-            functions = read_csv(path("functions.csv"))
-            written.append(save(material_functions(functions, units=_summary(directory)), figure("material")))
-        if os.path.exists(path("dynamic.csv")):
-            dynamic = read_csv(path("dynamic.csv"))
-            written.append(save(dynamic_moduli(dynamic, units=_summary(directory)), figure("dynamic")))
-        if os.path.exists(path("sweep.csv")):
-            sweep = read_csv(path("sweep.csv"))
-            value = column or ("restitution" if "restitution" in sweep else "max_force")
-            written.append(save(sweep_map(sweep, value), figure("sweep")))
-    finally:
-        if listed is not None and written:
-            with open(os.path.join(directory, MANIFEST), "a", encoding="utf-8") as handle:
-                handle.writelines(os.path.basename(p) + "\n" for p in written if os.path.basename(p) not in listed)
-    if not written:
-        raise ValueError(f"{directory}: no history.csv, curves.csv, functions.csv or sweep.csv (not a result "
-                         "directory of mdr)")
-    return written
+    if os.path.exists(path("history.csv")):
+        history = read_csv(path("history.csv"))
+        units = _summary(directory)
+        written.append(save(force_depth(history, units=units, control=units.get("control")),
+                            figure("force_depth")))
+        for name, draw in (("force_time", force_time), ("contact_radius", contact_radius)):
+            written.append(save(draw(history, units=units), figure(name)))
+        if "Fx" in history:
+            written.append(save(tangential_loop(history, units=units), figure("tangential_loop")))
+        if os.path.exists(path("profiles.csv")):
+            profiles = read_csv(path("profiles.csv"))
+            written.append(save(pressure_profiles(profiles, units=units), figure("pressure")))
+            if "tau" in profiles:
+                written.append(save(shear_stress_profiles(profiles, units=units), figure("shear_stress")))
+    if os.path.exists(path("curves.csv")):
+        curves = read_csv(path("curves.csv"))
+        summary = _summary(directory)
+        rebound = _rebound_rows(curves)
+        if not rebound.all():
+            written.append(save(fit_curves(_rows(curves, ~rebound), units=summary), figure("fit_curves")))
+            if "drive" in curves and summary.get("curves"):
+                written.append(save(force_indentation(curves, summary), figure("force_indentation")))
+        if rebound.any():
+            written.append(save(fit_rebounds(curves, units=summary), figure("fit_rebounds")))
+    if os.path.exists(path("functions.csv")):
+        functions = read_csv(path("functions.csv"))
+        written.append(save(material_functions(functions, units=_summary(directory)), figure("material")))
+    if os.path.exists(path("dynamic.csv")):
+        dynamic = read_csv(path("dynamic.csv"))
+        written.append(save(dynamic_moduli(dynamic, units=_summary(directory)), figure("dynamic")))
+    if os.path.exists(path("sweep.csv")):
+        sweep = read_csv(path("sweep.csv"))
+        value = column or ("restitution" if "restitution" in sweep else "max_force")
+        written.append(save(sweep_map(sweep, value), figure("sweep")))
 
 
 def save(axes, path: str) -> str:

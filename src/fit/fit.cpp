@@ -14,6 +14,7 @@
 
 #include "curve_cost.hpp"
 #include "fit_diagnostics.hpp"
+#include "iteration_report.hpp"
 #include "material_bands.hpp"
 #include "penalty_cost.hpp"
 #include "rebound_cost.hpp"
@@ -252,6 +253,8 @@ FitResult fit(const FitProblem& problem) {
     options.logging_type = ceres::SILENT;
     StatisticalConvergence statistical_convergence;
     options.callbacks.push_back(&statistical_convergence);
+    IterationReport iteration_report(problem.settings.on_iteration);
+    if (problem.settings.on_iteration) options.callbacks.push_back(&iteration_report);
     ceres::Solver::Summary summary;
     silence_solver_log();
     ceres::Solve(options, &solver_problem, &summary);

@@ -151,12 +151,16 @@ FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
     return fit_case;
 }
 
-FitCase load_fit_case(const std::filesystem::path& path) {
+std::string read_case_text(const std::filesystem::path& path) {
     std::ifstream file(path);
     if (!file) throw unreadable_file("case", path);
     std::ostringstream text;
     text << file.rdbuf();
-    return parse_fit_case(text.str(), path.string(), path.parent_path());
+    return text.str();
+}
+
+FitCase load_fit_case(const std::filesystem::path& path) {
+    return parse_fit_case(read_case_text(path), path.string(), path.parent_path());
 }
 
 fit::ModelBuilder model_builder(const FitCase& fit_case) {

@@ -14,11 +14,7 @@ double read_unit(TableReader& units, const std::string& key, const std::string& 
         return size / system_size;
     }
     const std::string name = units.string(key);
-    static const std::pair<const char*, double> prefixes[] = {{"", 1.0},    {"p", 1e-12}, {"n", 1e-9}, {"u", 1e-6},
-                                                              {"µ", 1e-6}, {"m", 1e-3},  {"c", 1e-2}, {"k", 1e3}};
-    for (const auto& [prefix, size] : prefixes) {
-        if (name == prefix + base) return size / system_size;
-    }
+    if (const auto size = prefixed_unit_size(name, base)) return *size / system_size;
     throw InvalidInput(units.key_path(key), "\"" + name + "\"",
                        "must be a number > 0 (the unit in " + base + ") or " + base +
                            " with an SI prefix: p, n, u or µ, m, c, k (e.g. \"n" + base + "\")");
@@ -54,9 +50,19 @@ fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& 
     source.piezo_column = table.optional_string("piezo").value_or("");
     source.deflection_column = table.optional_string("deflection").value_or("");
     source.spring_constant = table.optional_number("spring_constant");
-    source.spring_constant_unit = system.length_size / system.force_size;  // N/m in the case's force / length
-    if (auto units = table.table("units")) {
-        units->reject_unknown({"time", "length", "force"});
+    auto units = table.table("units");
+    if (source.spring_constant) {
+        const bool stated = units && units->has("spring_constant");
+        const std::string unit_key = table.key_path("units") + ".spring_constant";
+        if (stated && !units->is_string("spring_constant")) {
+            throw InvalidInput(unit_key, units->text("spring_constant"), "must be a string such as \"N/m\"");
+        }
+        source.spring_constant_unit =
+            spring_constant_unit(stated ? units->string("spring_constant") : "", system,
+                                 table.key_path("spring_constant"), table.text("spring_constant"), unit_key);
+    }
+    if (units) {
+        units->reject_unknown({"time", "length", "force", "spring_constant"});
         source.time_unit = read_unit(*units, "time", "s", system.time_size);
         source.length_unit = read_unit(*units, "length", "m", system.length_size);
         source.force_unit = read_unit(*units, "force", "N", system.force_size);

@@ -142,13 +142,13 @@ void write_fit_result(const std::filesystem::path& directory, const FitCase& fit
     json.close();
 
     auto csv = fmt::output_file((directory / "curves.csv").string());
-    csv.print("curve,t,measured,model,residual\n");
+    csv.print("curve,t,measured,model,residual,drive\n");
     for (const auto& curve : result.curves) {
         // Rebound data: one row per impact, named NAME:restitution or NAME:contact_time, t holding the speed v0.
         const std::string name = csv_field(curve.rebound ? curve.name + ":" + quantity_name(curve) : curve.name);
         for (std::size_t i = 0; i < curve.time.size(); ++i) {
-            csv.print("{},{},{},{},{}\n", name, curve.time[i], curve.measured[i], curve.model[i],
-                      curve.model[i] - curve.measured[i]);
+            csv.print("{},{},{},{},{},{}\n", name, curve.time[i], curve.measured[i], curve.model[i],
+                      curve.model[i] - curve.measured[i], i < curve.drive.size() ? curve.drive[i] : NAN);
         }
     }
     csv.close();

@@ -3,6 +3,8 @@
 #include <array>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "mdr/error.hpp"
 
 namespace mdr::io {
@@ -22,6 +24,37 @@ bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')
 }  // namespace
 
 std::span<const UnitSystem> unit_systems() { return systems; }
+
+std::optional<double> prefixed_unit_size(std::string_view name, std::string_view base) {
+    static const std::pair<std::string_view, double> prefixes[] = {{"", 1.0},    {"p", 1e-12}, {"n", 1e-9}, {"u", 1e-6},
+                                                                   {"µ", 1e-6}, {"m", 1e-3},  {"c", 1e-2}, {"k", 1e3}};
+    for (const auto& [prefix, size] : prefixes) {
+        if (name.size() == prefix.size() + base.size() && name.starts_with(prefix) && name.ends_with(base)) return size;
+    }
+    return std::nullopt;
+}
+
+double spring_constant_unit(std::string_view unit, const UnitSystem& system, const std::string& key,
+                            const std::string& value_text, const std::string& unit_key) {
+    const double system_size = system.force_size / system.length_size;  // the case's force / length in N/m
+    if (unit.empty()) {
+        if (system_size == 1.0) return 1.0;
+        throw InvalidInput(key, value_text,
+                           fmt::format("a spring constant in a {} case must state its unit: {} = \"N/m\" (as "
+                                       "cantilevers are quoted) or \"{}/{}\" (the case's force / length)",
+                                       system.name, unit_key, system.force,
+                                       system.length == "µm" ? "um" : system.length));
+    }
+    const auto slash = unit.find('/');
+    if (slash != std::string_view::npos) {
+        const auto force = prefixed_unit_size(unit.substr(0, slash), "N");
+        const auto length = prefixed_unit_size(unit.substr(slash + 1), "m");
+        if (force && length) return *force / *length / system_size;
+    }
+    throw InvalidInput(unit_key, fmt::format("\"{}\"", unit),
+                       "must be a force / length of SI symbols with a prefix (p, n, u or µ, m, c, k): \"N/m\", "
+                       "\"nN/um\", \"pN/nm\"");
+}
 
 std::string UnitSystem::names(std::string_view si_unit) const {
     const std::pair<std::string_view, std::string_view> symbols[] = {

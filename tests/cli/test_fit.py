@@ -84,7 +84,7 @@ def test_recovers_the_modulus_and_writes_the_result_directory(run_mdr, fit_case,
     assert 0.8 < summary["rms_residual"] / NOISE < 1.2
     with open(out / "curves.csv", newline="", encoding="utf-8") as handle:
         rows = list(csv.DictReader(handle))
-    assert list(rows[0]) == ["curve", "t", "measured", "model", "residual"]
+    assert list(rows[0]) == ["curve", "t", "measured", "model", "residual", "drive"]
     assert len(rows) == 300
     # fitted.toml runs as a case of its own: the first curve's history with the fitted modulus.
     again = run_mdr("run", out / "fitted.toml", "--out", workdir / "again")
@@ -97,7 +97,7 @@ def test_recovers_the_modulus_and_writes_the_result_directory(run_mdr, fit_case,
     assert list(functions[0]) == ["t", "G", "G_lower", "G_upper", "J", "J_lower", "J_upper"]
     assert float(functions[0]["G_upper"]) - float(functions[0]["G"]) == pytest.approx(1.96 * error, rel=1e-4)
     assert (out / "dynamic.csv").exists()
-    assert plotted_figures(out) in (None, ["dynamic.png", "fit_curves.png", "material.png"])
+    assert plotted_figures(out) in (None, ["dynamic.png", "fit_curves.png", "force_indentation.png", "material.png"])
 
 
 def plotted_figures(out):
@@ -125,8 +125,8 @@ def test_curve_names_read_back_as_one_field(run_mdr, fit_case, workdir, name):
     assert result.returncode == 0, result.stderr
     with open(workdir / "out" / "curves.csv", newline="", encoding="utf-8") as handle:
         rows = list(csv.reader(handle))
-    assert rows[0] == ["curve", "t", "measured", "model", "residual"]
-    assert len(rows) == 301 and all(len(row) == 5 and row[0] == name for row in rows[1:])
+    assert rows[0] == ["curve", "t", "measured", "model", "residual", "drive"]
+    assert len(rows) == 301 and all(len(row) == 6 and row[0] == name for row in rows[1:])
     if name == "plain":
         assert (workdir / "out" / "curves.csv").read_text(encoding="utf-8").splitlines()[1].startswith("plain,")
     package = pathlib.Path(os.environ.get("MDR_PYTHONPATH", "/nonexistent"))

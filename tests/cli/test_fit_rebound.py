@@ -85,7 +85,7 @@ def test_recovers_a_standard_solid_from_rebounds(run_mdr, rebound_case, workdir)
     assert summary["curves"][0]["mass"] == 0.01 and "contact_point" not in summary["curves"][0]
     with open(out / "curves.csv", newline="", encoding="utf-8") as handle:
         rows = list(csv.DictReader(handle))
-    assert list(rows[0]) == ["curve", "t", "measured", "model", "residual"]
+    assert list(rows[0]) == ["curve", "t", "measured", "model", "residual", "drive"]
     assert [row["curve"] for row in rows] == ["drops:restitution"] * 6 + ["drops:contact_time"] * 6
     assert [float(row["t"]) for row in rows[:6]] == [v0 for v0, _, _ in ORACLE]  # t holds v0
     assert float(rows[6]["measured"]) == pytest.approx(ORACLE[0][2] * 1e-3, rel=1e-15)  # T in seconds

@@ -61,6 +61,9 @@ struct FitSettings {
     /// Called before every model run and within long runs; throws mdr::Interrupted to stop the fit (Ctrl-C of the
     /// command line or of Python). The fit then throws mdr::Interrupted and returns no result.
     std::function<void()> check_interrupt{};
+    /// Called after every Levenberg-Marquardt iteration (0: the start) with its number and chi^2 (the sum of the
+    /// squared residuals in units of each curve's noise): the command line's progress lines.
+    std::function<void(std::size_t iteration, double chi_squared)> on_iteration{};
 };
 
 /// Elements of the element model when neither the fit nor the case sets them: enough that the model's

@@ -41,6 +41,9 @@ struct FitCase {
 FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
                        const std::filesystem::path& case_directory);
 
+/// The text of a case file; mdr::InvalidInput (key `case`) when it cannot be read.
+std::string read_case_text(const std::filesystem::path& path);
+
 /// Reads and parses a fit case file (curves relative to its directory).
 FitCase load_fit_case(const std::filesystem::path& path);
 

@@ -21,8 +21,8 @@ Document fit_document(const fit::FitResult& result, const std::string& units = "
 std::string fit_json(const fit::FitResult& result, const std::string& units = "SI");
 
 /// Writes fit.json, fitted.toml (the case with the fitted values; its load is the case's own, or the first
-/// curve's driving history, the contact point removed) and curves.csv (curve,t,measured,model,residual) into
-/// `directory`.
+/// curve's driving history, the contact point removed) and curves.csv (curve,t,measured,model,residual,drive:
+/// drive is fit::CurveFit::drive, nan for rebound data) into `directory`.
 void write_fit_result(const std::filesystem::path& directory, const FitCase& fit_case, const fit::FitResult& result);
 
 }  // namespace mdr::io

@@ -10,6 +10,7 @@
 /// pressure = force / length^2).
 
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -45,6 +46,19 @@ std::span<const UnitSystem> unit_systems();
 /// How rheology's descriptions print a registry unit in `system` (UnitSystem::names; a rheology::UnitNames);
 /// `system` is one of unit_systems(), which live as long as the program.
 std::function<std::string(const std::string&)> unit_names(const UnitSystem& system);
+
+/// The size in SI of a unit written as an SI prefix (p, n, u or µ, m, c, k, or none) and `base` ("nm" with base
+/// "m": 1e-9); nothing when `name` is not of that form.
+std::optional<double> prefixed_unit_size(std::string_view name, std::string_view base);
+
+/// The size of one spring-constant unit in `system`'s force / length (docs/case-format.md, "Measured curves").
+/// `unit` is a force / length of prefixed SI symbols ("N/m", "nN/um", "pN/nm"); empty means the case's own force /
+/// length, which is refused unless that is N/m: in a case whose force / length is not N/m a spring constant must
+/// state its unit, one rule for case files (`units.spring_constant`) and mdr.fit's arrays (`units`), since a bare
+/// 0.019 reads as N/m to an AFM user and as nN/µm to the case. Throws mdr::InvalidInput: key `key`, value
+/// `value_text` (the spring constant as given) for a missing unit; key `unit_key` for an unknown unit.
+double spring_constant_unit(std::string_view unit, const UnitSystem& system, const std::string& key,
+                            const std::string& value_text, const std::string& unit_key);
 
 /// The system named `name`. Throws mdr::InvalidInput (key `units`) for an unknown name, listing the known ones.
 const UnitSystem& unit_system(std::string_view name);

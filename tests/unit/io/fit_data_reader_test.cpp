@@ -100,16 +100,20 @@ TEST(FitDataReader, UnitsConvertToTheCasesSystem) {
         return read("file = \"c.csv\"\ntime = \"t\"\nspring_constant = 0.02\nunits = " + units + "\n", "/cases",
                     "um-nN-s");
     };
-    const fit::CurveSource named = in_cells("{ time = \"ms\", length = \"nm\", force = \"pN\" }");
+    const fit::CurveSource named =
+        in_cells("{ time = \"ms\", length = \"nm\", force = \"pN\", spring_constant = \"N/m\" }");
     EXPECT_DOUBLE_EQ(named.time_unit, 1e-3);
     EXPECT_DOUBLE_EQ(named.length_unit, 1e-3);
     EXPECT_DOUBLE_EQ(named.force_unit, 1e-3);
     EXPECT_DOUBLE_EQ(named.spring_constant_unit, 1e3);  // 1 N/m = 1e3 nN/um
     EXPECT_EQ(named.spring_constant, 0.02);             // as given, for messages
-    const fit::CurveSource si = in_cells("{ length = \"m\", force = 1.0 }");
+    EXPECT_DOUBLE_EQ(in_cells("{ spring_constant = \"nN/um\" }").spring_constant_unit, 1.0);
+    EXPECT_DOUBLE_EQ(in_cells("{ spring_constant = \"pN/nm\" }").spring_constant_unit, 1.0);  // 1e-12 / 1e-9 N/m
+    EXPECT_DOUBLE_EQ(in_cells("{ spring_constant = \"mN/m\" }").spring_constant_unit, 1.0);   // 1 mN/m = 1 nN/um
+    const fit::CurveSource si = in_cells("{ length = \"m\", force = 1.0, spring_constant = \"N/m\" }");
     EXPECT_DOUBLE_EQ(si.length_unit, 1e6);
     EXPECT_DOUBLE_EQ(si.force_unit, 1e9);
-    EXPECT_EQ(in_cells("{}").length_unit, 1.0);
+    EXPECT_EQ(in_cells("{ spring_constant = \"N/m\" }").length_unit, 1.0);
     const std::string in_um = "file = \"c.csv\"\ntime = \"t\"\nunits = { length = \"um\" }\n";
     EXPECT_EQ(read(in_um, "/cases", "mm-N-s").length_unit, 1e-3);
 
@@ -119,6 +123,35 @@ TEST(FitDataReader, UnitsConvertToTheCasesSystem) {
     const fit::ReboundSource drops = read_rebound_data(reader, "/cases", unit_system("nm-nN-s"));
     EXPECT_DOUBLE_EQ(drops.velocity_unit, 1e6);  // 1 mm/s = 1e6 nm/s
     EXPECT_DOUBLE_EQ(drops.time_unit, 1e-3);
+}
+
+TEST(FitDataReader, ASpringConstantStatesItsUnitWhereTheCasesIsNotNewtonPerMetre) {
+    // 0.019 reads as N/m to an AFM user and as nN/um to a um-nN-s case: refused bare there and in mm-N-s (N/mm),
+    // accepted bare where the case's force / length is N/m: SI, and nm-nN-s (nN/nm = N/m).
+    const std::string bare = "file = \"c.csv\"\ntime = \"t\"\nspring_constant = 0.019\n";
+    EXPECT_DOUBLE_EQ(read(bare, "/cases", "SI").spring_constant_unit, 1.0);
+    EXPECT_DOUBLE_EQ(read(bare, "/cases", "nm-nN-s").spring_constant_unit, 1.0);
+    for (const std::string system : {"um-nN-s", "mm-N-s"}) {
+        try {
+            read(bare, "/cases", system);
+            ADD_FAILURE() << system << ": a bare spring constant was taken";
+        } catch (const InvalidInput& error) {
+            EXPECT_EQ(std::string(error.what()).rfind("fit.data[0].spring_constant = 0.019: a spring constant in a " +
+                                                          system + " case must state its unit: "
+                                                                   "fit.data[0].units.spring_constant = \"N/m\"",
+                                                      0),
+                      0U)
+                << error.what();
+        }
+    }
+    try {
+        read(bare + "units = { spring_constant = \"N/cm2\" }\n", "/cases", "um-nN-s");
+        ADD_FAILURE() << "N/cm2 was taken";
+    } catch (const InvalidInput& error) {
+        EXPECT_NE(std::string(error.what()).find("fit.data[0].units.spring_constant = \"N/cm2\": must be a force"),
+                  std::string::npos)
+            << error.what();
+    }
 }
 
 TEST(FitDataReader, RefusesUnknownKeysAndWrongTypes) {

@@ -1,0 +1,108 @@
+#include "fit_each.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <stdexcept>
+#include <utility>
+
+#include "fit_candidates.hpp"
+#include "fit_preparation.hpp"
+#include "interrupt.hpp"
+#include "mdr/error.hpp"
+#include "mdr/fit/plausibility.hpp"
+#include "mdr/io/csv_field.hpp"
+#include "mdr/io/fit_files.hpp"
+
+namespace mdr::cli {
+namespace {
+
+// The fit case with `file` as its one curve, named by the file's stem.
+io::FitCase case_for(const io::FitCase& fit_case, const std::filesystem::path& file) {
+    io::FitCase one = fit_case;
+    one.data.front().file = std::filesystem::absolute(file);
+    one.data.front().name = file.stem().string();
+    return one;
+}
+
+void require_one_curve_table(const io::FitCase& fit_case) {
+    if (fit_case.data.size() != 1 || !fit_case.rebounds.empty()) {
+        throw InvalidInput("--each", fmt::format("({} curve and {} rebound tables)", fit_case.data.size(),
+                                                 fit_case.rebounds.size()),
+                           "the case must have exactly one [[fit.data]] curve table, whose file each file replaces");
+    }
+    if (!fit_case.model_choice.empty()) {
+        throw InvalidInput("--each", "(with fit.candidates or [fit.spectrum])",
+                           "fits the case's own material per file; choose the model with one file first");
+    }
+}
+
+void write_table(const std::filesystem::path& path, const std::vector<std::string>& stems,
+                 const std::vector<fit::FitResult>& results) {
+    std::ofstream table(path);
+    table << "file";
+    for (const auto& name : results.front().names) table << ',' << name << ',' << name << "_stderr";
+    table << ",status,residual_to_noise\n";
+    for (std::size_t i = 0; i < results.size(); ++i) {
+        const auto& result = results[i];
+        table << io::csv_field(stems[i]);
+        for (std::size_t j = 0; j < result.names.size(); ++j) {
+            table << fmt::format(",{:.17g},{:.17g}", result.values[j], result.standard_errors[j]);
+        }
+        table << ',' << io::csv_field(result.status) << fmt::format(",{:.17g}\n", result.rms_residual / result.noise);
+    }
+    if (!table) throw std::runtime_error("could not write " + path.string());
+}
+
+}  // namespace
+
+bool run_each(const io::FitCase& fit_case, const std::vector<std::string>& files, const io::ResultDirectory& directory,
+              FitProgress& progress) {
+    require_one_curve_table(fit_case);
+    std::vector<PreparedFit> prepared;
+    std::vector<std::string> stems;
+    std::set<std::string> seen;
+    for (const auto& file : files) {
+        const std::string stem = std::filesystem::path(file).stem().string();
+        if (!seen.insert(stem).second) {
+            throw InvalidInput("--each", file, "two files with the stem \"" + stem + "\" would share DIR/" + stem);
+        }
+        stems.push_back(stem);
+        prepared.push_back(prepare_fit(case_for(fit_case, file)));
+    }
+    std::vector<fit::FitResult> results;
+    for (const auto& one : prepared) {
+        results.push_back(fit::fit(one.problem));
+        fit::add_plausibility_flags(one.problem, io::unit_system(fit_case.units), results.back());
+    }
+    progress.finish();
+    directory.write(
+        [&](const std::filesystem::path& folder) {
+            for (std::size_t i = 0; i < results.size(); ++i) {
+                std::filesystem::create_directory(folder / stems[i]);
+                io::write_fit_result(folder / stems[i], prepared[i].fit_case, results[i]);
+            }
+            write_table(folder / "each.csv", stems, results);
+        },
+        received_signal);
+    bool converged = true;
+    fmt::print("{} file(s) fitted alone with the case's [fit]:\n", results.size());
+    for (std::size_t i = 0; i < results.size(); ++i) {
+        const auto& result = results[i];
+        std::string values;
+        for (std::size_t j = 0; j < result.names.size(); ++j) {
+            values += fmt::format("  {} = {:.6g} +- {:.2g}", result.names[j], result.values[j],
+                                  result.standard_errors[j]);
+        }
+        fmt::print("  {}:{}; residual/noise {:.3g}: {}\n", stems[i], values, result.rms_residual / result.noise,
+                   result.status);
+        print_flags(result);
+        converged = converged && result.converged;
+    }
+    fmt::print("  results in {}/ (each.csv, one folder per file)\n", directory.shown());
+    return converged;
+}
+
+}  // namespace mdr::cli

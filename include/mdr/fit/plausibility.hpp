@@ -1,0 +1,25 @@
+#pragma once
+/// \file
+/// Whether a fit's data are plausible for their units and indenter (issue 24: a unit left out reads a file's
+/// metres as micrometres, 1e6 off, and the fit still "converges").
+
+#include "mdr/fit/fit.hpp"
+#include "mdr/io/units.hpp"
+
+namespace mdr::fit {
+
+/// Smallest plausible largest indentation of a curve on a sphere, as a fraction of R: below it the data are most
+/// likely in another length unit than the case's (1e-6 R for metres read as micrometres).
+inline constexpr double least_sphere_indentation = 1e-4;
+/// The plausible range of a material's moduli [Pa], from the softest gels to diamond.
+inline constexpr double least_modulus_pa = 1.0;
+inline constexpr double greatest_modulus_pa = 1e12;
+
+/// Adds to `result` the flags of implausible data (one line each, naming the curve and the numbers): a curve on a
+/// sphere whose largest indentation is below least_sphere_indentation R or above R (the contact radius sqrt(R d)
+/// would pass the sphere's radius: the paraboloid of eq. 30 no longer stands for the sphere), and a fitted
+/// G(t) (over the data's window) outside least_modulus_pa to greatest_modulus_pa, in `system`'s pressure unit.
+/// `problem` is the problem `result` solved.
+void add_plausibility_flags(const FitProblem& problem, const io::UnitSystem& system, FitResult& result);
+
+}  // namespace mdr::fit

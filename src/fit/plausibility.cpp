@@ -1,0 +1,76 @@
+#include "mdr/fit/plausibility.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mdr::fit {
+namespace {
+
+// The largest indentation of a measured curve, in the case's length unit: from the contact point, or from the
+// record's first depth when the fitted contact lies before it (a contact off the data must not hide a record whose
+// whole depth span is a micrometre's millionth).
+double largest_indentation(const CurveFit& curve) {
+    const bool force_fitted = curve.fitted == Fitted::force;
+    double least = std::numeric_limits<double>::infinity();
+    double greatest = -least;
+    for (std::size_t i = 0; i < curve.measured.size() && i < curve.drive.size(); ++i) {
+        const double depth = force_fitted ? curve.drive[i] + curve.contact_depth : curve.measured[i];
+        least = std::min(least, depth);
+        greatest = std::max(greatest, depth);
+    }
+    return greatest - std::max(curve.contact_depth, least);
+}
+
+void add_depth_flags(double radius, const io::UnitSystem& system, FitResult& result) {
+    for (auto& curve : result.curves) {
+        if (curve.rebound || curve.drive.empty()) continue;
+        const double depth = largest_indentation(curve);
+        if (depth < least_sphere_indentation * radius) {
+            curve.flags.push_back(fmt::format(
+                "largest indentation {:.3g} {} is below {:g} of the sphere's R = {:.4g} {}: are the data's lengths in "
+                "the case's unit (units.length of the curve's table)?",
+                depth, system.length, least_sphere_indentation, radius, system.length));
+        } else if (depth > radius) {
+            curve.flags.push_back(fmt::format(
+                "largest indentation {:.3g} {} exceeds the sphere's R = {:.4g} {}: the contact radius would pass the "
+                "sphere's radius, where the sphere is no paraboloid (eq. 30); check the units or the indenter",
+                depth, system.length, radius, system.length));
+        }
+    }
+}
+
+void add_modulus_flag(const io::UnitSystem& system, FitResult& result) {
+    const auto& relaxation = result.material.relaxation.value;
+    double least = std::numeric_limits<double>::infinity();
+    double greatest = 0.0;
+    for (const double value : relaxation) {
+        if (!std::isfinite(value) || value <= 0.0) continue;
+        least = std::min(least, value);
+        greatest = std::max(greatest, value);
+    }
+    if (greatest == 0.0) return;
+    const double pascal = system.force_size / (system.length_size * system.length_size);  // one pressure unit [Pa]
+    if (least * pascal < least_modulus_pa || greatest * pascal > greatest_modulus_pa) {
+        result.flags.push_back(fmt::format(
+            "the fitted G(t) spans {:.3g} to {:.3g} {} ({:.3g} to {:.3g} Pa) over the data's window, outside the "
+            "moduli of materials ({:g} Pa to {:g} Pa): are the data's units those of the case?",
+            least, greatest, system.pressure, least * pascal, greatest * pascal, least_modulus_pa,
+            greatest_modulus_pa));
+    }
+}
+
+}  // namespace
+
+void add_plausibility_flags(const FitProblem& problem, const io::UnitSystem& system, FitResult& result) {
+    if (!result.curves.empty() && problem.model) {
+        const auto model = problem.model(result.values);
+        const auto definition = model.indenter->definition();
+        if (definition.shape == "sphere") add_depth_flags(definition.number("R"), system, result);
+    }
+    add_modulus_flag(system, result);
+}
+
+}  // namespace mdr::fit

@@ -1,0 +1,262 @@
+"""Issue 24, part C: units cannot slip (the spring constant's unit is stated wherever the case's force / length is
+not N/m), `mdr check` validates fit cases, `mdr fit` reports progress, `mdr fit --each` fits one material per
+file. Curves from closed forms (Hertz), never from mdr."""
+
+from __future__ import annotations
+
+import csv
+import math
+import random
+import subprocess
+import time
+
+import pytest
+
+from test_bad_input import assert_bad_input
+
+# Hertz in um-nN-s: G in kPa, R and depths in um, forces in nN; F = (16/3) G sqrt(R) d^1.5 (E* = 4G, nu = 0.5).
+G_TRUE, R, K_N_PER_M = 0.2, 5.0, 0.05   # kPa, um, N/m (= 50 nN/um)
+K_CASE = K_N_PER_M * 1e3                # nN/um
+
+
+def hertz(indentation):
+    return 16.0 / 3.0 * G_TRUE * math.sqrt(R) * max(indentation, 0.0) ** 1.5
+
+
+def write_afm_curve(path, contact=1.0, seed=5, rows=300):
+    """Raw AFM columns in um: the tip height (piezo + deflection) falls by the indentation, the cantilever bends by
+    F / k; contact `contact` um after the first row."""
+    generator = random.Random(seed)
+    with open(path, "w", newline="", encoding="utf-8") as handle:
+        writer = csv.writer(handle)
+        writer.writerow(["t", "piezo", "defl"])
+        for i in range(rows):
+            t = i / (rows - 1)
+            depth = -contact + (contact + 3.0) * t
+            deflection = (hertz(depth) + generator.gauss(0.0, 0.002)) / K_CASE
+            writer.writerow([t, 10.0 - depth - deflection, deflection])
+
+
+def write_hertz_curve(path, contact=1.0, seed=5, rows=300):
+    """depth and force columns (um, nN), contact `contact` um after the first row."""
+    generator = random.Random(seed)
+    with open(path, "w", newline="", encoding="utf-8") as handle:
+        writer = csv.writer(handle)
+        writer.writerow(["t", "d", "F"])
+        for i in range(rows):
+            t = i / (rows - 1)
+            depth = -contact + (contact + 3.0) * t
+            writer.writerow([t, depth + contact, hertz(depth) + generator.gauss(0.0, 0.002)])
+
+
+AFM_CASE = """
+units = "um-nN-s"
+[material]
+model = "elastic"
+G = 0.05
+[indenter]
+shape = "sphere"
+R = 5.0
+[fit]
+free = ["material.G"]
+{fit}
+[[fit.data]]
+file = "afm.csv"
+time = "t"
+piezo = "piezo"
+deflection = "defl"
+{data}
+"""
+
+
+def write_case(workdir, data, fit="", name="case.toml"):
+    path = workdir / name
+    path.write_text(AFM_CASE.format(data=data, fit=fit), encoding="utf-8")
+    return path
+
+
+def fitted_modulus(run_mdr, path, workdir):
+    result = run_mdr("fit", path, "--out", workdir / "out", timeout=300)
+    assert result.returncode == 0, result.stderr
+    import json
+    return json.loads((workdir / "out" / "fit.json").read_text())["parameters"]["material.G"]
+
+
+@pytest.mark.parametrize("data", [
+    f'spring_constant = {K_N_PER_M}\nunits = {{ spring_constant = "N/m" }}',
+    f'spring_constant = {K_CASE}\nunits = {{ spring_constant = "nN/um" }}',
+    f'spring_constant = {K_CASE * 1e3}\nunits = {{ spring_constant = "pN/um" }}',
+])
+def test_a_stated_spring_constant_unit_gives_the_true_modulus(run_mdr, workdir, data):
+    write_afm_curve(workdir / "afm.csv")
+    G = fitted_modulus(run_mdr, write_case(workdir, data), workdir)
+    assert G == pytest.approx(G_TRUE, rel=0.02)
+
+
+def test_a_bare_spring_constant_in_a_non_si_case_is_refused(run_mdr, workdir):
+    """0.05 reads as N/m to an AFM user and as nN/um to a um-nN-s case (1000x apart): the unit must be stated."""
+    write_afm_curve(workdir / "afm.csv")
+    path = write_case(workdir, f"spring_constant = {K_N_PER_M}")
+    assert_bad_input(run_mdr("fit", path, "--out", workdir / "out"), "fit.data[0].spring_constant = 0.05",
+                     "um-nN-s", 'fit.data[0].units.spring_constant = "N/m"', '"nN/um"')
+    path = write_case(workdir, f'spring_constant = {K_N_PER_M}\nunits = {{ spring_constant = "N/cm2" }}')
+    assert_bad_input(run_mdr("fit", path, "--out", workdir / "out"), 'fit.data[0].units.spring_constant = "N/cm2"',
+                     "force / length")
+    path = write_case(workdir, f"spring_constant = {K_N_PER_M}\nunits = {{ spring_constant = 1.0 }}")
+    assert_bad_input(run_mdr("fit", path, "--out", workdir / "out"), "fit.data[0].units.spring_constant = 1",
+                     "string")
+
+
+def test_an_si_case_keeps_its_spring_constant_in_n_per_m(run_mdr, workdir):
+    """SI cases are unchanged: N/m is the case's force / length, no unit needed (the same curve in m and N)."""
+    write_afm_curve(workdir / "afm.csv")
+    with open(workdir / "afm.csv", newline="", encoding="utf-8") as handle:
+        header, *rows = list(csv.reader(handle))
+    with open(workdir / "afm.csv", "w", newline="", encoding="utf-8") as handle:
+        csv.writer(handle).writerows([header, *[[t, float(p) * 1e-6, float(d) * 1e-6] for t, p, d in rows]])
+    text = AFM_CASE.format(data=f"spring_constant = {K_N_PER_M}", fit="").replace('units = "um-nN-s"', "")
+    (workdir / "case.toml").write_text(text.replace("G = 0.05", "G = 50.0").replace("R = 5.0", "R = 5e-6"))
+    assert fitted_modulus(run_mdr, workdir / "case.toml", workdir) == pytest.approx(G_TRUE * 1e3, rel=0.02)
+
+
+def test_check_validates_a_fit_case_with_its_curves(run_mdr, workdir):
+    write_afm_curve(workdir / "afm.csv")
+    path = write_case(workdir, f'spring_constant = {K_CASE}\nunits = {{ spring_constant = "nN/um" }}')
+    result = run_mdr("check", path)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == ("ok: fit case: 1 free parameter(s) (material.G), 1 curve(s) of 300 points, "
+                                     "0 rebound data set(s)")
+    # Its bad input is refused as mdr fit refuses it: a column the file lacks, the spring constant's unit.
+    assert_bad_input(run_mdr("check", write_case(workdir, f"spring_constant = {K_CASE}")),
+                     "fit.data[0].spring_constant")
+    bad = write_case(workdir, f'spring_constant = {K_CASE}\nunits = {{ spring_constant = "nN/um" }}')
+    bad.write_text(bad.read_text().replace('deflection = "defl"', 'deflection = "deflection"'))
+    assert_bad_input(run_mdr("check", bad), "deflection", "defl")
+    candidates = write_case(workdir, f'spring_constant = {K_CASE}\nunits = {{ spring_constant = "nN/um" }}')
+    text = candidates.read_text().replace('free = ["material.G"]', 'candidates = ["elastic", "standard"]')
+    candidates.write_text(text)
+    result = run_mdr("check", candidates)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip().endswith("; candidates elastic, standard")
+
+
+def test_fit_reports_its_iterations_on_stderr(mdr_binary, workdir):
+    """A slow fit (a force-driven curve on many elements) prints "mdr: fit iteration N, chi^2 = X, T s so far" every
+    5 s when stderr is a pipe, like mdr run's progress."""
+    import signal
+    write_hertz_curve(workdir / "hertz.csv")
+    case = AFM_CASE.format(data="", fit='fitted = "depth"\nelements = 100000')
+    case = case.replace('piezo = "piezo"\ndeflection = "defl"', 'depth = "d"\nforce = "F"')
+    (workdir / "case.toml").write_text(case.replace("afm.csv", "hertz.csv"))
+    process = subprocess.Popen([mdr_binary, "fit", "case.toml", "--out", "out"], cwd=workdir,
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    start = time.monotonic()
+    line = process.stderr.readline()
+    elapsed = time.monotonic() - start
+    process.send_signal(signal.SIGINT)
+    process.communicate(timeout=60)
+    assert line.startswith("mdr: fit iteration "), line
+    fields = line.split()
+    assert fields[4] == "chi^2" and float(fields[6].rstrip(",")) > 0.0 and line.rstrip().endswith("s so far")
+    assert 4.5 < elapsed < 30.0
+
+
+def test_each_fits_one_material_per_file(run_mdr, workdir):
+    for name, contact, seed in (("cell-a", 1.0, 1), ("cell-b", 1.5, 2)):
+        write_afm_curve(workdir / f"{name}.csv", contact=contact, seed=seed)
+    write_afm_curve(workdir / "afm.csv")
+    path = write_case(workdir, f'spring_constant = {K_CASE}\nunits = {{ spring_constant = "nN/um" }}')
+    result = run_mdr("fit", path, "--each", "cell-a.csv", "cell-b.csv", "--out", workdir / "out", timeout=300)
+    assert result.returncode == 0, result.stderr
+    with open(workdir / "out" / "each.csv", newline="", encoding="utf-8") as handle:
+        rows = list(csv.DictReader(handle))
+    assert list(rows[0]) == ["file", "material.G", "material.G_stderr", "status", "residual_to_noise"]
+    assert [row["file"] for row in rows] == ["cell-a", "cell-b"]
+    import json
+    for row, contact in zip(rows, (1.0, 1.5)):
+        assert float(row["material.G"]) == pytest.approx(G_TRUE, rel=0.02)
+        assert row["status"] == "converged" and 0.7 < float(row["residual_to_noise"]) < 1.3
+        summary = json.loads((workdir / "out" / row["file"] / "fit.json").read_text())
+        assert summary["parameters"]["material.G"] == float(row["material.G"])
+        assert summary["curves"][0]["name"] == row["file"]
+        # Tip height at the first row is 10 um; contact `contact` um below it: the data's depth of contact.
+        assert summary["curves"][0]["contact_point"] == pytest.approx(contact, abs=0.05)
+    # Bad input in any file: refused before the first fit, nothing written.
+    (workdir / "bad.csv").write_text("t,piezo\n0,1\n")
+    assert_bad_input(run_mdr("fit", path, "--each", "cell-a.csv", "bad.csv", "--out", workdir / "new",
+                             out=workdir / "new"),
+                     "bad.csv", "defl")
+    assert_bad_input(run_mdr("fit", path, "--each", "cell-a.csv", "sub/cell-a.csv", "--out", workdir / "new",
+                             out=workdir / "new"),
+                     "--each = sub/cell-a.csv", "cell-a")
+    two = path.read_text() + '\n[[fit.data]]\nfile = "afm.csv"\ntime = "t"\npiezo = "piezo"\ndeflection = "defl"\n'
+    (workdir / "two.toml").write_text(two + f'spring_constant = {K_CASE}\nunits = {{ spring_constant = "nN/um" }}\n')
+    assert_bad_input(run_mdr("fit", workdir / "two.toml", "--each", "cell-a.csv", "--out", workdir / "new",
+                             out=workdir / "new"),
+                     "--each", "exactly one [[fit.data]]")
+
+
+def fit_flags(run_mdr, workdir, case_text):
+    import json
+    (workdir / "case.toml").write_text(case_text)
+    result = run_mdr("fit", workdir / "case.toml", "--out", workdir / "out", timeout=300)
+    assert result.returncode in (0, 1), result.stderr
+    summary = json.loads((workdir / "out" / "fit.json").read_text())
+    return summary["flags"], summary["curves"][0]["flags"], result.stdout
+
+
+DEPTH_CASE = AFM_CASE.replace('piezo = "piezo"\ndeflection = "defl"', 'depth = "d"\nforce = "F"').replace(
+    "afm.csv", "hertz.csv")
+
+
+def test_lengths_in_another_unit_than_the_case_are_flagged(run_mdr, workdir):
+    """The issue's trap: a um-nN-s case whose file holds metres and leaves out units.length reads 4e-6 m as 4e-6 um,
+    1e-6 of the tip's radius: flagged on the curve, naming the key to set."""
+    write_hertz_curve(workdir / "hertz.csv")
+    with open(workdir / "hertz.csv", newline="", encoding="utf-8") as handle:
+        header, *rows = list(csv.reader(handle))
+    with open(workdir / "hertz.csv", "w", newline="", encoding="utf-8") as handle:
+        csv.writer(handle).writerows([header, *[[t, float(d) * 1e-6, f] for t, d, f in rows]])
+    _, curve_flags, stdout = fit_flags(run_mdr, workdir, DEPTH_CASE.format(data="", fit=""))
+    assert len(curve_flags) == 1 and "below 0.0001 of the sphere's R = 5 µm" in curve_flags[0]
+    assert "units.length" in curve_flags[0] and "flag (hertz)" in stdout
+    # The same file with its unit stated: no flag, the true modulus.
+    _, curve_flags, _ = fit_flags(run_mdr, workdir, DEPTH_CASE.format(data='units = { length = "m" }', fit=""))
+    assert curve_flags == []
+
+
+def test_an_indentation_beyond_the_sphere_radius_is_flagged(run_mdr, workdir):
+    write_hertz_curve(workdir / "hertz.csv")   # 3 um deep on R = 5 um: plausible
+    _, curve_flags, _ = fit_flags(run_mdr, workdir, DEPTH_CASE.format(data="", fit=""))
+    assert curve_flags == []
+    case = DEPTH_CASE.format(data="", fit="").replace("R = 5.0", "R = 2.0").replace("G = 0.05", "G = 0.1")
+    _, curve_flags, _ = fit_flags(run_mdr, workdir, case)
+    assert len(curve_flags) == 1 and "exceeds the sphere's R = 2 µm" in curve_flags[0]
+
+
+def test_a_modulus_outside_the_moduli_of_materials_is_flagged(run_mdr, workdir):
+    """0.2 kPa read in an SI case is 0.2 Pa: below the softest gels (1 Pa)."""
+    write_hertz_curve(workdir / "hertz.csv")
+    case = DEPTH_CASE.format(data="", fit="").replace('units = "um-nN-s"', "")
+    flags, _, _ = fit_flags(run_mdr, workdir, case)
+    assert len(flags) == 1 and "(0.2 to 0.2 Pa)" in flags[0] and "1 Pa to 1e+12 Pa" in flags[0]
+    flags, _, _ = fit_flags(run_mdr, workdir, DEPTH_CASE.format(data="", fit=""))
+    assert flags == []
+
+
+def test_several_curve_tables_share_one_material(run_mdr, workdir):
+    """Two [[fit.data]] tables (two cells of the same material, contacts 1 and 1.5 um into their records): one G,
+    each curve its own contact point."""
+    import json
+    write_afm_curve(workdir / "afm.csv", contact=1.0, seed=3)
+    write_afm_curve(workdir / "second.csv", contact=1.5, seed=4)
+    data = f'spring_constant = {K_CASE}\nunits = {{ spring_constant = "nN/um" }}'
+    text = AFM_CASE.format(data=data, fit="")
+    text += ('\n[[fit.data]]\nfile = "second.csv"\ntime = "t"\npiezo = "piezo"\ndeflection = "defl"\n' + data + "\n")
+    (workdir / "case.toml").write_text(text)
+    result = run_mdr("fit", workdir / "case.toml", "--out", workdir / "out", timeout=300)
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((workdir / "out" / "fit.json").read_text())
+    assert summary["parameters"]["material.G"] == pytest.approx(G_TRUE, rel=0.02)
+    contacts = [curve["contact_point"] for curve in summary["curves"]]
+    assert contacts == [pytest.approx(1.0, abs=0.05), pytest.approx(1.5, abs=0.05)]
