@@ -93,7 +93,8 @@ std::string message_text(std::string_view text, std::size_t limit) {
 }
 
 InvalidInput::InvalidInput(std::string key, std::string value, std::string rule)
-    : std::invalid_argument(message_text(key, key_text_limit) + " = " + message_text(value) + ": " + message_line(rule)),
+    : std::invalid_argument(message_text(key, key_text_limit) + " = " + message_text(value) + ": " +
+                            message_line(rule)),
       key_(std::move(key)),
       value_(std::move(value)),
       rule_(std::move(rule)) {}

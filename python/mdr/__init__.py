@@ -255,8 +255,8 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
     -------
     SweepTable
         The table of sweep.csv as a dict of numpy arrays: the varied keys, every numeric key of any point's
-        summary.json (the union; nan where a point failed or lacks the key) and ``error`` (the failure message, "" where the point ran); ``.batch`` tells how a
-        scheduled sweep ran (None for a local one).
+        summary.json (the union; nan where a point failed or lacks the key) and ``error`` (the failure message, ""
+        where the point ran); ``.batch`` tells how a scheduled sweep ran (None for a local one).
 
     Raises
     ------

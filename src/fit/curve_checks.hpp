@@ -26,8 +26,8 @@ std::string curve_value_rule();
 using RowLocation = std::function<std::string(std::size_t)>;
 
 /// The curve from SI arrays after the checks (equal lengths, at least minimum_curve_rows rows, finite values in the
-/// range of curve_value_in_range, time strictly increasing), with its contact estimates (estimate_contact). `origin` names the whole curve in
-/// messages ("x.csv", "the arrays"). Keys of the errors: `time`, `depth`, `force`.
+/// range of curve_value_in_range, time strictly increasing), with its contact estimates (estimate_contact). `origin`
+/// names the whole curve in messages ("x.csv", "the arrays"). Keys of the errors: `time`, `depth`, `force`.
 Curve checked_curve(std::string name, std::vector<double> time, std::vector<double> depth, std::vector<double> force,
                     const std::string& origin, const RowLocation& where);
 

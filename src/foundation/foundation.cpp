@@ -15,7 +15,8 @@ namespace mdr::foundation {
 void require_element_count(const std::string& key, std::size_t count) {
     if (count < 1 || count > max_elements) {
         throw InvalidInput(key, std::to_string(count),
-                           "must be from 1 to " + std::to_string(max_elements) + " (the state would not fit in memory)");
+                           "must be from 1 to " + std::to_string(max_elements) +
+                               " (the state would not fit in memory)");
     }
 }
 

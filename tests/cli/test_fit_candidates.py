@@ -103,5 +103,6 @@ def test_a_candidates_fit_replaces_its_own_result_directory(run_mdr, case, workd
     assert (workdir / "out" / "elastic" / "fit.json").is_file()
     (workdir / "out" / "elastic" / "notes.txt").write_text("mine", encoding="utf-8")
     refused = run_mdr("fit", path, "--out", workdir / "out", timeout=300)
-    assert refused.returncode == 2 and "holds elastic/notes.txt, which mdr did not write" in refused.stderr, refused.stderr
+    assert refused.returncode == 2, refused.stderr
+    assert "holds elastic/notes.txt, which mdr did not write" in refused.stderr, refused.stderr
     assert (workdir / "out" / "elastic" / "notes.txt").read_text(encoding="utf-8") == "mine"

@@ -133,30 +133,29 @@ inline constexpr std::size_t braking_steps = 20;
 /// Smallest number of steps per history segment.
 inline constexpr std::size_t min_steps_per_segment = 20;
 
-/// Resolves the defaults: the half-width covers the largest contact radius with a 10% margin (displacement
-/// control: the Lee-Radok radius g^-1(max d), an upper bound also under unloading since the free surface never
-/// rises above the undeformed level; force control: the elastic radius at the largest force with the softest
-/// modulus 1/J(t_end - t_start), 25% margin); a flat punch uses its own radius. The time step is the history
-/// duration over default_steps, and at most a fifth of the shortest material time that is longer than that (not
-/// for a series whose times all come from a conversion, MaterialOrigin); under force control a material with a
-/// parallel dashpot (its creep is singular in time after the start and after a fast load change) has its steps
-/// graded from there (grading_ratio = jump_grading_ratio from jump_first_step of the time step, see
-/// fast_change_times and grade_after_changes), so that the step count stays bounded for any record length; a
-/// converted series (its creep changes on every scale from its shortest time) is graded likewise from its
-/// shortest time, and a finite series with a time shorter than the time step from jump_grading_ratio of that
-/// time; a user's time_step is graded by the same rules, scaled to it (a finer step is never worse). Impact: the
-/// time step is the elastic contact time with the instantaneous spring modulus over default_steps (and the material-time rule), the half-width 1.2
-/// times the elastic contact radius with the equilibrium modulus (an upper bound: the viscoelastic body is
-/// stiffer and dissipates); with a parallel dashpot the step is at most the braking time m / (8 eta a) over
-/// braking_steps (an overdamped impact is decided on that scale); an oblique impact whose contact point is
-/// lighter than a solid sphere's (m_t < 2/7 m) has the step scaled by sqrt(m_t / (2/7 m)). A harmonic load (normal
-/// or tangential) caps the default time step at its period over default_steps_per_period. Spring control takes the
-/// smaller of the displacement-control half-width for the largest base displacement (d <= z) and the force-control
-/// one for the force k max z (F <= k z), and grades its steps as force control does; with force pauses the largest z
-/// is bounded by paused_base_peak, each pause's creep by the depth of the force-control bound for the largest force
-/// (at most k max z and the elastic force of the depth max z with G(0+), as the contact grows up to a pause). Throws
-/// mdr::InvalidInput for a problem that breaks a rule (validate) or would exceed its bounds of work or memory
-/// (require_bounded_work).
+/// Resolves the defaults: the half-width covers the largest contact radius with a 10% margin (displacement control: the
+/// Lee-Radok radius g^-1(max d), an upper bound also under unloading since the free surface never rises above the
+/// undeformed level; force control: the elastic radius at the largest force with the softest modulus 1/J(t_end -
+/// t_start), 25% margin); a flat punch uses its own radius. The time step is the history duration over default_steps,
+/// and at most a fifth of the shortest material time that is longer than that (not for a series whose times all come
+/// from a conversion, MaterialOrigin); under force control a material with a parallel dashpot (its creep is singular in
+/// time after the start and after a fast load change) has its steps graded from there (grading_ratio =
+/// jump_grading_ratio from jump_first_step of the time step, see fast_change_times and grade_after_changes), so that
+/// the step count stays bounded for any record length; a converted series (its creep changes on every scale from its
+/// shortest time) is graded likewise from its shortest time, and a finite series with a time shorter than the time step
+/// from jump_grading_ratio of that time; a user's time_step is graded by the same rules, scaled to it (a finer step is
+/// never worse). Impact: the time step is the elastic contact time with the instantaneous spring modulus over
+/// default_steps (and the material-time rule), the half-width 1.2 times the elastic contact radius with the equilibrium
+/// modulus (an upper bound: the viscoelastic body is stiffer and dissipates); with a parallel dashpot the step is at
+/// most the braking time m / (8 eta a) over braking_steps (an overdamped impact is decided on that scale); an oblique
+/// impact whose contact point is lighter than a solid sphere's (m_t < 2/7 m) has the step scaled by sqrt(m_t / (2/7
+/// m)). A harmonic load (normal or tangential) caps the default time step at its period over default_steps_per_period.
+/// Spring control takes the smaller of the displacement-control half-width for the largest base displacement (d <= z)
+/// and the force-control one for the force k max z (F <= k z), and grades its steps as force control does; with force
+/// pauses the largest z is bounded by paused_base_peak, each pause's creep by the depth of the force-control bound for
+/// the largest force (at most k max z and the elastic force of the depth max z with G(0+), as the contact grows up to a
+/// pause). Throws mdr::InvalidInput for a problem that breaks a rule (validate) or would exceed its bounds of work or
+/// memory (require_bounded_work).
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case);
 
 /// Scales of an elastic impact (energy balance m v0^2 / 2 = int F_el dd), used for the impact defaults.
