@@ -141,11 +141,11 @@ def test_two_spheres_restitution_is_mdr_runs(tmp_path, ranks):
 
 
 def test_oblique_collision_with_friction_and_spin_is_mdr_runs(tmp_path):
-    # Sphere 1 slides along +y and spins about z against sphere 2 (n = +x), both of material 1: the contact
-    # points' relative velocity is v_c = (v1y + R1 w1) - (v2y - R2 w2). The equivalent rigid sphere of `mdr run`
-    # has R = R_eff, the reduced mass, and R^2 / I = R1^2 / I1 + R2^2 / I2 (test_dem_contact_law.cpp). The normal
-    # turns by about v_c T / (R1 + R2) = 3e-3 rad over the contact in LAMMPS and not in `mdr run`: agreement to 3e-3 (observed:
-    # 1.0e-3 in e, 1.7e-3 in e_t; the head-on collision agrees to 1e-9).
+    # Sphere 1 slides along +y and spins about z against sphere 2 (n = +x), both of material 1: the contact points'
+    # relative velocity is v_c = (v1y + R1 w1) - (v2y - R2 w2). The equivalent rigid sphere of `mdr run` has R = R_eff,
+    # the reduced mass, and R^2 / I = R1^2 / I1 + R2^2 / I2 (test_dem_contact_law.cpp). The normal turns by about v_c T
+    # / (R1 + R2) = 3e-3 rad over the contact in LAMMPS and not in `mdr run`: agreement to 3e-3 (observed: 1.0e-3 in e,
+    # 1.7e-3 in e_t; the head-on collision agrees to 1e-9).
     friction = 0.3
     velocities, spins = ((0.1, 0.05), (-0.1, -0.02)), (4.0, -2.0)
     alike = {1: MATERIALS[1], 2: MATERIALS[1]}
