@@ -30,9 +30,9 @@ void flag_contact(const FitProblem& problem, const Curve& curve, CurveFit& fitte
                               "row is unknown and the model assumes the material undisturbed until the contact point",
                               contact));
     } else if (bounds[1] - contact <= tolerance) {
-        fitted.flags.push_back(fmt::format("contact point {:.6g} is at its upper bound ({})", contact,
-                                           problem.settings.contact_point_bounds ? "fit.bounds.contact_point upper bound"
-                                                                                 : "the record's deepest depth"));
+        const char* bound =
+            problem.settings.contact_point_bounds ? "fit.bounds.contact_point upper bound" : "the record's deepest depth";
+        fitted.flags.push_back(fmt::format("contact point {:.6g} is at its upper bound ({})", contact, bound));
     }
 }
 
@@ -51,12 +51,20 @@ void flag_baseline(const FitProblem& problem, const Curve& curve, CurveFit& fitt
         }
     }
     if (mode == BaselineMode::line) return;
-    const double tilt = std::abs(curve.baseline_slope) * (curve.time.back() - curve.time.front());
-    if (tilt > baseline_flag_deviations * noise) {
+    // The slope's standard error, noise / sqrt(sum (t - mean t)^2) over the rows before contact: a tilt is flagged
+    // only when the slope is also that many standard errors from 0 (a short pause extrapolated over a long record).
+    double mean_time = 0.0, spread = 0.0;
+    for (std::size_t i = 0; i < curve.baseline_rows; ++i) mean_time += curve.time[i];
+    mean_time /= static_cast<double>(curve.baseline_rows);
+    for (std::size_t i = 0; i < curve.baseline_rows; ++i) spread += std::pow(curve.time[i] - mean_time, 2);
+    const double slope_error = spread > 0.0 ? noise / std::sqrt(spread) : 0.0;
+    const double slope = std::abs(curve.baseline_slope);
+    const double tilt = slope * (curve.time.back() - curve.time.front());
+    if (tilt > baseline_flag_deviations * noise && slope > baseline_flag_deviations * slope_error) {
         fitted.flags.push_back(fmt::format(
-            "the rows before contact tilt by {:.3g} over the record ({:.3g} noise deviations): the baseline is a "
-            "constant; baseline = \"line\" follows the tilt",
-            tilt, tilt / noise));
+            "the rows before contact tilt by {:.3g} over the record ({:.3g} noise deviations; slope {:.3g} +- {:.2g}): "
+            "the baseline is a constant; baseline = \"line\" follows the tilt",
+            tilt, tilt / noise, curve.baseline_slope, slope_error));
     }
 }
 

@@ -81,7 +81,9 @@ fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& 
         const auto pair = [&](const char* key) -> std::optional<std::array<double, 2>> {
             if (!window->has(key)) return std::nullopt;
             const std::vector<double> ends = window->numbers(key);
-            if (ends.size() != 2) throw InvalidInput(window->key_path(key), window->text(key), "must be [lower, upper]");
+            if (ends.size() != 2) {
+                throw InvalidInput(window->key_path(key), window->text(key), "must be [lower, upper]");
+            }
             return std::array<double, 2>{ends[0], ends[1]};
         };
         source.rows.time = pair("time");
