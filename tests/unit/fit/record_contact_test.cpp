@@ -110,12 +110,22 @@ TEST(RecordContact, RecordThatStartsInContactKeepsItsContactInside) {
     EXPECT_TRUE(has_flag(result.curves[0], "is at its lower bound (the record's shallowest depth): the record "
                                            "starts in contact"))
         << flags_of(result.curves[0]);
+
+    // Unbounded (what the fit did before: no bound on the contact) it leaves the record, here for the true 0; a
+    // user who states that assumption opens the bounds and gets the initial indentation as part of the model.
+    FitProblem open = hertz_problem(curve);
+    open.settings.contact_point_bounds = std::array<double, 2>{-1e-5, 1e-5};
+    const FitResult opened = fit(open);
+    EXPECT_NEAR(opened.curves[0].contact_depth, 0.0, 2e-8);
+    EXPECT_NEAR(opened.values[0], modulus, 0.01 * modulus);
+    EXPECT_TRUE(has_flag(opened.curves[0], "outside the record's depths")) << flags_of(opened.curves[0]);
 }
 
-// A short record whose force rises from its first rows has no rows before contact: flagged as starting in
-// contact, and baseline = "line" (which needs those rows) is refused naming the key.
+// A short record whose force rises from its first rows (20 rows) has no rows before contact: flagged as starting
+// in contact, and baseline = "line" (which needs those rows) is refused naming the key.
 TEST(RecordContact, PreContactBaselineRefusesARecordThatStartsInContact) {
-    FitProblem problem = hertz_problem(hertz_record({.start_depth = 1e-6, .end_depth = 1.2e-6}));
+    FitProblem problem = hertz_problem(hertz_record({.start_depth = 1e-6, .end_depth = 1.039e-6}));
+    ASSERT_EQ(problem.curves[0].baseline_rows, 0u) << problem.curves[0].estimate_note;
     const FitResult result = fit(problem);
     EXPECT_TRUE(has_flag(result.curves[0], "starts in contact: the force rises from its first rows"))
         << flags_of(result.curves[0]);
@@ -163,7 +173,7 @@ model = "elastic"
 G = 1000.0
 [indenter]
 shape = "sphere"
-radius = 5e-6
+R = 5e-6
 [fit]
 free = ["material.G"]
 baseline = "line"
