@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <string>
@@ -113,9 +114,9 @@ TEST(RecordContact, RecordThatStartsInContactKeepsItsContactInside) {
 
     // Unbounded (what the fit did before: no bound on the contact) it leaves the record, here for the true 0; a
     // user who states that assumption opens the bounds and gets the initial indentation as part of the model.
-    FitProblem open = hertz_problem(curve);
-    open.settings.contact_point_bounds = std::array<double, 2>{-1e-5, 1e-5};
-    const FitResult opened = fit(open);
+    FitProblem unbounded = hertz_problem(curve);
+    unbounded.settings.contact_point_bounds = std::array<double, 2>{-1e-5, 1e-5};
+    const FitResult opened = fit(unbounded);
     EXPECT_NEAR(opened.curves[0].contact_depth, 0.0, 2e-8);
     EXPECT_NEAR(opened.values[0], modulus, 0.01 * modulus);
     EXPECT_TRUE(has_flag(opened.curves[0], "outside the record's depths")) << flags_of(opened.curves[0]);
