@@ -17,6 +17,16 @@ void flag_contact(const FitProblem& problem, const Curve& curve, CurveFit& fitte
                                            contact, *lowest, *deepest));
         return;
     }
+    if (curve.onset_amplitude > 0.0 && curve.onset_exponent > 0.0 && curve.force_noise > 0.0) {
+        const double noise_depth = std::pow(curve.force_noise / curve.onset_amplitude, 1.0 / curve.onset_exponent);
+        const double distance = std::abs(contact - curve.contact_depth) / noise_depth;
+        if (distance > contact_flag_depths) {
+            fitted.flags.push_back(fmt::format(
+                "contact point {:.6g} is {:.3g} noise-equivalent depths ({:.3g}) from where the force leaves the "
+                "baseline (estimate {:.6g})",
+                contact, distance, noise_depth, curve.contact_depth));
+        }
+    }
     if (problem.settings.contact_point != ContactPointMode::fit) return;
     const auto bounds = problem.settings.contact_point_bounds.value_or(std::array<double, 2>{*lowest, *deepest});
     const double tolerance = 1e-6 * (bounds[1] - bounds[0]);

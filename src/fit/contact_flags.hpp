@@ -12,10 +12,15 @@ namespace mdr::fit {
 /// 0), is flagged.
 inline constexpr double baseline_flag_deviations = 5.0;
 
+/// A contact point more than this many noise-equivalent depths (σ / A)^(1/n) of the curve's onset estimate (the depth
+/// past contact at which the onset force A (d - d_c)^n equals one noise deviation σ) from that estimate is flagged.
+inline constexpr double contact_flag_depths = 10.0;
+
 /// Adds to each curve's CurveFit its Curve::notes (as flags), adhesion and rows left out; and to its flags (one line
 /// each, naming the numbers): a record that starts in contact (its force rises from the first rows: no rows before
 /// contact); a contact point at a bound of the fit (the record's shallowest or deepest depth, or
-/// fit.bounds.contact_point) or outside the record's depths; a baseline more than baseline_flag_deviations noise
+/// fit.bounds.contact_point) or outside the record's depths, or more than contact_flag_depths noise-equivalent depths from the onset
+/// estimate; a baseline more than baseline_flag_deviations noise
 /// deviations from the line through the rows before contact; a tilt of those rows over the record beyond that many
 /// deviations (and standard errors of the slope) where the baseline is a constant. `problem` is the problem as
 /// given (its curves' estimates from estimate_contact), `result` the fit's.

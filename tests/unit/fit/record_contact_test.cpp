@@ -166,6 +166,22 @@ TEST(RecordContact, BaselineFarFromThePreContactRowsIsFlagged) {
     EXPECT_TRUE(has_flag(result.curves[0], "noise deviations")) << flags_of(result.curves[0]);
 }
 
+// A contact point far from where the force leaves the baseline is flagged: the data's zero (contact_point =
+// "fixed") on a record whose contact is at 1 um, some 1e3 noise-equivalent depths (sigma / A)^(2/3) ~ 1 nm away.
+TEST(RecordContact, ContactFarFromTheOnsetIsFlagged) {
+    Curve curve = hertz_record({.start_depth = -2e-6, .end_depth = 3e-6});
+    for (double& depth : curve.depth) depth -= 1e-6;  // the contact now at -1 um in the data's depth
+    curve = make_curve("shifted", curve.time, curve.depth, curve.force);
+    FitProblem problem = hertz_problem(curve);
+    problem.settings.contact_point = ContactPointMode::fixed;
+    const FitResult result = fit(problem);
+    EXPECT_TRUE(has_flag(result.curves[0], "noise-equivalent depths")) << flags_of(result.curves[0]);
+    problem.settings.contact_point = ContactPointMode::fit;
+    const FitResult fitted = fit(problem);
+    EXPECT_NEAR(fitted.curves[0].contact_depth, -1e-6, 2e-8);
+    EXPECT_FALSE(has_flag(fitted.curves[0], "noise-equivalent depths")) << flags_of(fitted.curves[0]);
+}
+
 // The case file's names (spec, third wave): baseline = "constant" | "line", fit.bounds.contact_point.
 TEST(RecordContact, CaseFileKeys) {
     const std::string text = R"(
