@@ -280,7 +280,8 @@ double difference_noise(const std::vector<double>& values, std::size_t begin, st
 void estimate_contact(Curve& curve) {
     const std::size_t rows = curve.time.size();
     curve.force_noise = curve.depth_noise = curve.contact_depth = curve.force_baseline = 0.0;
-    curve.onset_exponent = curve.onset_amplitude = 0.0;
+    curve.onset_exponent = curve.onset_amplitude = curve.baseline_slope = curve.contact_time = 0.0;
+    curve.baseline_rows = 0;
     curve.estimate_note.clear();
     if (rows < 3) {
         curve.estimate_note = "too few rows for estimates";
@@ -356,6 +357,9 @@ void estimate_contact(Curve& curve) {
                                                          (curve.time[contact_row] - curve.time[contact_row - 1]);
     }
     curve.force_baseline = baseline.at(contact_time);
+    curve.contact_time = contact_time;
+    curve.baseline_slope = baseline.slope;
+    curve.baseline_rows = end;
 }
 
 }  // namespace mdr::fit

@@ -6,17 +6,20 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <memory>
 #include <set>
 #include <stdexcept>
 
+#include "contact_flags.hpp"
 #include "curve_cost.hpp"
 #include "fit_diagnostics.hpp"
 #include "iteration_report.hpp"
 #include "material_bands.hpp"
 #include "penalty_cost.hpp"
+#include "pre_contact_baseline.hpp"
 #include "rebound_cost.hpp"
 #include "result_check.hpp"
 #include "statistical_convergence.hpp"
@@ -61,6 +64,19 @@ void validate(const FitProblem& problem) {
             throw InvalidInput(parameter.name, format_value(parameter.start),
                                fmt::format("the start value must lie within its bounds [{}, {}]",
                                            format_value(parameter.lower), format_value(parameter.upper)));
+        }
+    }
+    if (const auto& bounds = problem.settings.contact_point_bounds) {
+        const std::string key = "fit.bounds.contact_point";
+        require_finite(key, (*bounds)[0]);
+        require_finite(key, (*bounds)[1]);
+        if (!((*bounds)[0] < (*bounds)[1])) {
+            throw InvalidInput(key, fmt::format("[{}, {}]", format_value((*bounds)[0]), format_value((*bounds)[1])),
+                               "the lower bound must be below the upper bound");
+        }
+        if (problem.settings.contact_point != ContactPointMode::fit) {
+            throw InvalidInput(key, fmt::format("[{}, {}]", format_value((*bounds)[0]), format_value((*bounds)[1])),
+                               "bounds a fitted contact point only (fit.contact_point = \"fit\")");
         }
     }
     for (const auto& row : problem.penalty) {
@@ -185,10 +201,15 @@ std::string status_of(const ceres::Solver::Summary& summary) {
     }
 }
 
-}  // namespace
+// The bounds of curve c's fitted contact point in the data's depth: FitSettings::contact_point_bounds, else the
+// record's own depths (the contact lies inside the record).
+std::array<double, 2> contact_bounds(const FitProblem& problem, std::size_t c) {
+    if (problem.settings.contact_point_bounds) return *problem.settings.contact_point_bounds;
+    const auto [lowest, deepest] = std::minmax_element(problem.curves[c].depth.begin(), problem.curves[c].depth.end());
+    return {*lowest, *deepest};
+}
 
-FitResult fit(const FitProblem& problem) {
-    validate(problem);
+FitResult solve(const FitProblem& problem) {
     const auto start_time = std::chrono::steady_clock::now();
     const ParameterScales scales = make_scales(problem);
     const std::size_t k = problem.parameters.size();
@@ -206,7 +227,10 @@ FitResult fit(const FitProblem& problem) {
         if (prepared.back().used.empty()) {
             throw InvalidInput(fmt::format("fit.data[{}]", c), curve.name, "the curve never makes contact");
         }
-        if (scales.fit_contact) nuisance[c].push_back(curve.contact_depth / scales.depth[c]);
+        if (scales.fit_contact) {
+            const auto bounds = contact_bounds(problem, c);
+            nuisance[c].push_back(std::clamp(curve.contact_depth, bounds[0], bounds[1]) / scales.depth[c]);
+        }
         if (scales.fit_baseline) nuisance[c].push_back(curve.force_baseline / scales.force[c]);
     }
 
@@ -222,6 +246,11 @@ FitResult fit(const FitProblem& problem) {
         std::vector<double*> blocks{shared.data()};
         if (m > 0) blocks.push_back(nuisance[c].data());
         solver_problem.AddResidualBlock(costs.back().get(), nullptr, blocks);
+        if (scales.fit_contact) {
+            const auto bounds = contact_bounds(problem, c);
+            solver_problem.SetParameterLowerBound(nuisance[c].data(), 0, bounds[0] / scales.depth[c]);
+            solver_problem.SetParameterUpperBound(nuisance[c].data(), 0, bounds[1] / scales.depth[c]);
+        }
         require_fittable(problem.curves[c], *costs.back(), nuisance[c].data(), c);
     }
     std::vector<std::unique_ptr<ReboundCost>> rebounds;
@@ -280,6 +309,15 @@ FitResult fit(const FitProblem& problem) {
     }
     result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
     require_finite_result(result);
+    return result;
+}
+
+}  // namespace
+
+FitResult fit(const FitProblem& problem) {
+    validate(problem);
+    FitResult result = solve(with_pre_contact_baselines(problem));
+    flag_contact_and_baseline(problem, result);
     return result;
 }
 

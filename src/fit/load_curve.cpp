@@ -143,6 +143,7 @@ Curve load_curve(const CurveSource& source) {
                                     return "in " + file_name + ", line " + std::to_string(lines[i]);
                                 });
     curve.fitted = source.fitted;
+    select_rows(curve, source.rows);
     return curve;
 }
 

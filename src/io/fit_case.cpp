@@ -2,8 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <fstream>
+#include <optional>
 #include <sstream>
+#include <string_view>
 
 #include "case_reader.hpp"
 #include "fit_candidates_reader.hpp"
@@ -48,6 +51,7 @@ void check_per_key_tables(const toml::table& fit, const std::vector<std::string>
         }
         if (entries == nullptr) continue;
         for (const auto& [name, node] : *entries) {
+            if (std::string_view(table) == "bounds" && name.str() == "contact_point") continue;  // contact_bounds
             if (std::find(keys.begin(), keys.end(), std::string(name.str())) == keys.end()) {
                 throw InvalidInput(fmt::format("fit.{}.{}", table, name.str()), "", "is not a key of fit.free");
             }
@@ -81,6 +85,17 @@ fit::FreeParameter read_parameter(const toml::table& fit, const CaseTemplate& mo
     return parameter;
 }
 
+// `fit.bounds.contact_point = [lower, upper]`, in the data's depth (the case's length unit): FitSettings.
+std::optional<std::array<double, 2>> contact_bounds(const toml::table& fit) {
+    if (!per_key(fit, "bounds", "contact_point")) return std::nullopt;
+    TableReader bounds(*fit["bounds"].as_table(), "fit.bounds");
+    const std::vector<double> pair = bounds.numbers("contact_point");
+    if (pair.size() != 2) {
+        throw InvalidInput("fit.bounds.contact_point", bounds.text("contact_point"), "must be [lower, upper]");
+    }
+    return std::array<double, 2>{pair[0], pair[1]};
+}
+
 }  // namespace
 
 FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
@@ -99,10 +114,13 @@ FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
     fit_case.settings.contact_point = contact == "fit"        ? fit::ContactPointMode::fit
                                       : contact == "estimate" ? fit::ContactPointMode::estimate
                                                               : fit::ContactPointMode::fixed;
-    const std::string baseline = choice(fit, "baseline", {"fit", "estimate", "fixed"}, "fit");
+    const std::string baseline = choice(fit, "baseline", {"fit", "estimate", "fixed", "constant", "line"}, "fit");
     fit_case.settings.baseline = baseline == "fit"        ? fit::BaselineMode::fit
                                  : baseline == "estimate" ? fit::BaselineMode::estimate
+                                 : baseline == "constant" ? fit::BaselineMode::constant
+                                 : baseline == "line"     ? fit::BaselineMode::line
                                                           : fit::BaselineMode::fixed;
+    fit_case.settings.contact_point_bounds = contact_bounds(fit_table);
     if (auto iterations = fit.optional_count("max_iterations")) fit_case.settings.max_iterations = *iterations;
     fit_case.settings.elements = fit.optional_count("elements");
 

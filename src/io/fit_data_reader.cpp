@@ -1,5 +1,7 @@
 #include "fit_data_reader.hpp"
 
+#include <array>
+#include <optional>
 #include <utility>
 
 #include "mdr/error.hpp"
@@ -39,7 +41,7 @@ fit::Fitted read_fitted(TableReader& table, fit::Fitted fallback) {
 fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory,
                                const UnitSystem& system) {
     table.reject_unknown({"kind", "file", "name", "time", "depth", "force", "piezo", "deflection", "spring_constant",
-                          "units", "segment_column", "segments", "fitted"});
+                          "units", "segment_column", "segments", "fitted", "until", "window"});
     fit::CurveSource source;
     const std::filesystem::path file = table.string("file");
     source.file = file.is_absolute() ? file : case_directory / file;
@@ -76,6 +78,24 @@ fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& 
         }
     }
     if (table.has("fitted")) source.fitted = read_fitted(table, fit::Fitted::force);
+    if (table.has("until")) {
+        const std::string until = choice(table, "until", {"pull_off", "end"}, "pull_off");
+        source.rows.until = until == "pull_off" ? fit::Until::pull_off : fit::Until::end;
+    }
+    if (auto window = table.table("window")) {
+        window->reject_unknown({"time", "depth", "force"});
+        const auto pair = [&](const char* key) -> std::optional<std::array<double, 2>> {
+            if (!window->has(key)) return std::nullopt;
+            const std::vector<double> ends = window->numbers(key);
+            if (ends.size() != 2) {
+                throw InvalidInput(window->key_path(key), window->text(key), "must be [lower, upper]");
+            }
+            return std::array<double, 2>{ends[0], ends[1]};
+        };
+        source.rows.time = pair("time");
+        source.rows.depth = pair("depth");
+        source.rows.force = pair("force");
+    }
     return source;
 }
 

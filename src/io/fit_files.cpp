@@ -101,6 +101,10 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
             entry.emplace_back("contact_point_error", number_or_null(curve.contact_depth_error));
             entry.emplace_back("baseline", number_or_null(curve.baseline));
             entry.emplace_back("baseline_error", number_or_null(curve.baseline_error));
+            entry.emplace_back("rows_left_out", Document{curve.rows_left_out});
+            entry.emplace_back("adhesion", Document{Document::Table{
+                                               {"pull_off_force", number_or_null(curve.adhesion.pull_off_force)},
+                                               {"work", number_or_null(curve.adhesion.work)}}});
         }
         entry.emplace_back("noise", number_or_null(curve.noise));
         entry.emplace_back("rms_residual", number_or_null(curve.rms_residual));

@@ -144,6 +144,10 @@ def test_curve_names_read_back_as_one_field(run_mdr, fit_case, workdir, name):
     ('bounds = { "material.G" = [1.0e6, 1.0e7] }', ["material.G = 50000", "within its bounds"]),
     ('fitted = "stiffness"', ["fit.fitted", "one of force, depth"]),
     ("colour = 1", ["fit.colour", "unknown key"]),
+    ('bounds = { contact_point = [1.0, 0.0] }', ["fit.bounds.contact_point = [1, 0]", "lower bound"]),
+    ('contact_point = "estimate"\nbounds = { contact_point = [0.0, 1.0] }',
+     ["fit.bounds.contact_point = [0, 1]", "a fitted contact point only"]),
+    ('baseline = "tilted"', ["fit.baseline", "constant, line"]),
 ])
 def test_bad_fit_settings(run_mdr, fit_case, workdir, extra, fragments):
     assert_bad_input(run_mdr("fit", fit_case(extra), "--out", workdir / "out"), *fragments)
@@ -277,6 +281,12 @@ def test_data_the_fit_cannot_weigh(run_mdr, fit_case, workdir, edit, fragments):
     (('units = {', 'segment_column = "t"\nsegments = []\nunits = {'),
      ["fit.data[0].segments = []", "at least one segment"]),
     (('length = "um"', 'length = 1e308'), ["fit.data[0].units.length = 1e+308", "line 2", "magnitude"]),
+    (('units = {', 'until = "never"\nunits = {'), ["fit.data[0].until = \"never\"", "one of pull_off, end"]),
+    (('units = {', 'window = { time = [2.0, 1.0] }\nunits = {'),
+     ["fit.data[0].window.time = [2, 1]", "lower end must be below"]),
+    (('units = {', 'window = { speed = [0.0, 1.0] }\nunits = {'), ["fit.data[0].window.speed", "unknown key"]),
+    (('units = {', 'window = { time = [0.0, 1.0e-9] }\nunits = {'),
+     ["fit.data[0].window = 1 rows kept", "at least 10 rows"]),
     (('model = "elastic"\nG = 5.0e4', 'model = "kelvin_voigt"\nG = 5.0e4\neta = 5e-320'),
      ["material.eta = 5e-320", "subnormal"]),
     (('model = "elastic"\nG = 5.0e4', 'model = "standard"\nG_inf = 5.0e4\nG1 = 5e-324\ntau1 = 0.5'),

@@ -4,6 +4,7 @@
 /// receives (time, indentation and force in the case's units, with estimates of noise, contact point and force
 /// baseline). The reader converts a file's units to the case's (io::read_fit_data); arrays are in the case's units.
 
+#include <array>
 #include <filesystem>
 #include <cstddef>
 #include <optional>
@@ -16,6 +17,30 @@ namespace mdr::fit {
 enum class Fitted {
     force,  ///< the measured depth drives the model (displacement control); the force is fitted
     depth,  ///< the measured force drives the model (force control); the depth is fitted
+};
+
+/// Which rows of a curve's retract the fit keeps (`[[fit.data]] until`).
+enum class Until {
+    automatic,  ///< every row, unless the retract is adhesive: then as pull_off, and flagged (the default)
+    pull_off,   ///< the rows before the force first falls below the baseline on the retract (`"pull_off"`)
+    end,        ///< every row, an adhesive retract included (`"end"`: the user asks for it)
+};
+
+/// The rows of a curve that the fit keeps (`[[fit.data]] window` and `until`), in the case's units: a row is kept
+/// when it lies inside every window given and before the cut of `until` (select_rows).
+struct RowSelection {
+    std::optional<std::array<double, 2>> time{};   ///< `window.time = [t0, t1]`
+    std::optional<std::array<double, 2>> depth{};  ///< `window.depth = [d0, d1]`, in the data's depth
+    std::optional<std::array<double, 2>> force{};  ///< `window.force = [F0, F1]`, the measured force
+    Until until = Until::automatic;                ///< see Until
+};
+
+/// The adhesion of a curve's retract (the rows after its deepest row), against the baseline line through the rows
+/// before contact; all 0 when the retract never falls select_rows' adhesion_deviations noise deviations below it.
+struct Adhesion {
+    double pull_off_force = 0.0;  ///< the most negative force relative to the baseline on the retract [N] (<= 0)
+    double work = 0.0;            ///< the area between the baseline and the retract where below it, in the
+                                  ///< force-depth plane (trapezoids) [J]
 };
 
 /// A curve's columns in a CSV file (`[[fit.data]]` of a fit case). Either `depth_column` (indentation, positive
@@ -37,6 +62,7 @@ struct CurveSource {
     std::string segment_column;             ///< column naming each row's segment ("" keeps every row)
     std::vector<std::string> segments;      ///< segments kept (every segment when empty), e.g. {"extend", "pause"}
     std::optional<Fitted> fitted{};         ///< Curve::fitted
+    RowSelection rows{};                    ///< the rows kept (select_rows)
 };
 
 /// A measured curve in the units of its case (the fit's model): SI names below for a case in SI.
@@ -52,9 +78,18 @@ struct Curve {
     double onset_exponent = 0.0;   ///< n of the onset fit F - baseline = A (depth - contact_depth)^n (0 when unknown)
     double onset_amplitude = 0.0;  ///< A of the onset fit [N/m^n] (0 when unknown)
     std::string estimate_note;     ///< "" when the contact estimates are sound, else why they are not
+    /// The rows [0, baseline_rows) before contact that the baseline estimate is fitted to (0 when there is none).
+    std::size_t baseline_rows = 0;
+    double baseline_slope = 0.0;   ///< slope of the baseline line in time [N/s] (0 when unknown)
+    double contact_time = 0.0;     ///< the time the depth passes contact_depth [s]: force_baseline's time
     /// What this curve fits, when it differs from the fit's setting (FitSettings::fitted): a creep curve (depth
     /// fitted) beside a relaxation or an indentation curve (force fitted), one material for both.
     std::optional<Fitted> fitted{};
+    Adhesion adhesion{};            ///< the retract's adhesion, measured on the whole record (select_rows)
+    std::size_t rows_left_out = 0;  ///< rows of the record that select_rows left out
+    /// What reading the curve did that a user must know (select_rows: rows left out and why); the fit adds them to
+    /// CurveFit::flags.
+    std::vector<std::string> notes{};
 };
 
 /// The fewest rows a curve may have (after the segment selection).
@@ -70,6 +105,19 @@ inline constexpr std::size_t minimum_curve_rows = 10;
 /// are those of a `[[fit.data]]` table (`time`, `force`, `segments`, ...): a caller prefixes them
 /// (InvalidInput::with_prefix). Only the used columns of the kept rows are read: other columns may hold anything.
 Curve load_curve(const CurveSource& source);
+
+/// select_rows: a retract whose force falls more than this many noise deviations below the baseline is adhesive.
+inline constexpr double adhesion_deviations = 5.0;
+
+/// Keeps the rows of `curve` (estimated on its whole record) that `selection` selects and estimates it again
+/// (estimate_contact). First the retract (the rows after the first deepest row) is measured for adhesion
+/// (Curve::adhesion) against the baseline line through the rows before contact; then, with Until::pull_off, or
+/// Until::automatic on an adhesive retract, the rows from the first retract row whose force is below that line
+/// on are left out; then the rows outside a window. Curve::rows_left_out counts them; Curve::notes says why, with
+/// the numbers. Throws mdr::InvalidInput (key `window` or `until`) when fewer than minimum_curve_rows rows are
+/// left, or `until = "pull_off"` on a curve with no baseline estimate; a window's lower bound must be below its
+/// upper (key `window.time`, ...).
+void select_rows(Curve& curve, const RowSelection& selection);
 
 /// The depth and force of a raw AFM curve.
 struct DepthAndForce {

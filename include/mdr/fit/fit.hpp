@@ -5,6 +5,7 @@
 /// criteria and the parameters that the data cannot determine named as such. The units in brackets are SI's; every
 /// number is in the case's declared system (`units`, mdr/io/units.hpp), as the model is.
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -41,6 +42,11 @@ enum class BaselineMode {
     fit,       ///< a free parameter per curve (linear), started at the curve's estimate
     estimate,  ///< the curve's estimate (Curve::force_baseline), fixed
     fixed,     ///< zero: the data's force is already baseline-corrected
+    /// The mean force of the rows before contact (Curve::baseline_rows), fixed: the data alone determine it.
+    constant,
+    /// The straight line in time through the rows before contact (Curve::force_baseline, Curve::baseline_slope),
+    /// fixed: a tilted baseline; its tilt is taken off the measured force (CurveFit::measured) before the fit.
+    line,
 };
 
 /// The most Levenberg-Marquardt iterations a fit may ask for (Ceres counts them in an int; a fit that needs more
@@ -52,6 +58,9 @@ struct FitSettings {
     Fitted fitted = Fitted::force;                               ///< see Fitted
     ContactPointMode contact_point = ContactPointMode::fit;      ///< see ContactPointMode
     BaselineMode baseline = BaselineMode::fit;                   ///< see BaselineMode
+    /// Bounds [lower, upper] of a fitted contact point in the data's depth (`fit.bounds.contact_point`), for every
+    /// curve; unset: each curve's own depth range, so that the contact lies inside the record.
+    std::optional<std::array<double, 2>> contact_point_bounds{};
     /// Levenberg-Marquardt iterations at most, from 1 to max_fit_iterations.
     std::size_t max_iterations = 200;
     /// Elements of the element model where it runs (force-driven curves, depth histories outside Ting's class,
@@ -126,6 +135,8 @@ struct CurveFit {
     /// This curve's warnings, one line each (fit.json `curves[i].flags`): what a user must know before trusting
     /// its numbers, e.g. a contact point outside the record.
     std::vector<std::string> flags{};
+    Adhesion adhesion{};            ///< Curve::adhesion (fit.json `curves[i].adhesion`)
+    std::size_t rows_left_out = 0;  ///< Curve::rows_left_out (fit.json `curves[i].rows_left_out`)
 };
 
 /// A function of the fitted material on a grid, with its 95 % confidence band (first order: the delta method with

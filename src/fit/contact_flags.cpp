@@ -1,0 +1,100 @@
+#include "contact_flags.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mdr::fit {
+namespace {
+
+// The contact point against the record's depths and the fit's bounds.
+void flag_contact(const FitProblem& problem, const Curve& curve, CurveFit& fitted) {
+    const auto [lowest, deepest] = std::minmax_element(curve.depth.begin(), curve.depth.end());
+    const double contact = fitted.contact_depth;
+    if (contact < *lowest || contact > *deepest) {
+        fitted.flags.push_back(fmt::format("contact point {:.6g} lies outside the record's depths [{:.6g}, {:.6g}]",
+                                           contact, *lowest, *deepest));
+        return;
+    }
+    if (curve.onset_amplitude > 0.0 && curve.onset_exponent > 0.0 && curve.force_noise > 0.0) {
+        const double noise_depth = std::pow(curve.force_noise / curve.onset_amplitude, 1.0 / curve.onset_exponent);
+        const double distance = std::abs(contact - curve.contact_depth) / noise_depth;
+        if (distance > contact_flag_depths) {
+            fitted.flags.push_back(fmt::format(
+                "contact point {:.6g} is {:.3g} noise-equivalent depths ({:.3g}) from where the force leaves the "
+                "baseline (estimate {:.6g})",
+                contact, distance, noise_depth, curve.contact_depth));
+        }
+    }
+    if (problem.settings.contact_point != ContactPointMode::fit) return;
+    const auto bounds = problem.settings.contact_point_bounds.value_or(std::array<double, 2>{*lowest, *deepest});
+    const double tolerance = 1e-6 * (bounds[1] - bounds[0]);
+    if (contact - bounds[0] <= tolerance) {
+        fitted.flags.push_back(
+            problem.settings.contact_point_bounds
+                ? fmt::format("contact point {:.6g} is at its lower bound (fit.bounds.contact_point lower bound)",
+                              contact)
+                : fmt::format("contact point {:.6g} is at its lower bound (the record's shallowest depth): the record "
+                              "starts in contact (the data push the contact before it); its history before the first "
+                              "row is unknown and the model assumes the material undisturbed until the contact point",
+                              contact));
+    } else if (bounds[1] - contact <= tolerance) {
+        const char* bound =
+            problem.settings.contact_point_bounds ? "fit.bounds.contact_point upper bound" : "the record's deepest depth";
+        fitted.flags.push_back(fmt::format("contact point {:.6g} is at its upper bound ({})", contact, bound));
+    }
+}
+
+// The baseline against the line through the rows before contact (Curve::force_baseline at its contact time).
+void flag_baseline(const FitProblem& problem, const Curve& curve, CurveFit& fitted) {
+    const double noise = curve.force_noise;
+    if (curve.baseline_rows == 0 || !(noise > 0.0)) return;
+    const BaselineMode mode = problem.settings.baseline;
+    if (mode == BaselineMode::fit || mode == BaselineMode::constant || mode == BaselineMode::fixed) {
+        const double offset = std::abs(fitted.baseline - curve.force_baseline) / noise;
+        if (offset > baseline_flag_deviations) {
+            fitted.flags.push_back(fmt::format(
+                "baseline {:.6g} is {:.3g} noise deviations ({:.3g}) from the line through the {} rows before "
+                "contact ({:.6g} at the contact)",
+                fitted.baseline, offset, noise, curve.baseline_rows, curve.force_baseline));
+        }
+    }
+    if (mode == BaselineMode::line) return;
+    // The slope's standard error, noise / sqrt(sum (t - mean t)^2) over the rows before contact: a tilt is flagged
+    // only when the slope is also that many standard errors from 0 (a short pause extrapolated over a long record).
+    double mean_time = 0.0, spread = 0.0;
+    for (std::size_t i = 0; i < curve.baseline_rows; ++i) mean_time += curve.time[i];
+    mean_time /= static_cast<double>(curve.baseline_rows);
+    for (std::size_t i = 0; i < curve.baseline_rows; ++i) spread += std::pow(curve.time[i] - mean_time, 2);
+    const double slope_error = spread > 0.0 ? noise / std::sqrt(spread) : 0.0;
+    const double slope = std::abs(curve.baseline_slope);
+    const double tilt = slope * (curve.time.back() - curve.time.front());
+    if (tilt > baseline_flag_deviations * noise && slope > baseline_flag_deviations * slope_error) {
+        fitted.flags.push_back(fmt::format(
+            "the rows before contact tilt by {:.3g} over the record ({:.3g} noise deviations; slope {:.3g} +- {:.2g}): "
+            "the baseline is a constant; baseline = \"line\" follows the tilt",
+            tilt, tilt / noise, curve.baseline_slope, slope_error));
+    }
+}
+
+}  // namespace
+
+void flag_contact_and_baseline(const FitProblem& problem, FitResult& result) {
+    for (std::size_t c = 0; c < problem.curves.size() && c < result.curves.size(); ++c) {
+        const Curve& curve = problem.curves[c];
+        CurveFit& fitted = result.curves[c];
+        fitted.flags.insert(fitted.flags.end(), curve.notes.begin(), curve.notes.end());
+        fitted.adhesion = curve.adhesion;
+        fitted.rows_left_out = curve.rows_left_out;
+        if (curve.baseline_rows == 0 && curve.estimate_note.rfind("fewer than", 0) == 0) {
+            fitted.flags.push_back(
+                "starts in contact: the force rises from its first rows, so no rows before contact determine the "
+                "baseline and the history before the first row is unknown (" + curve.estimate_note + ")");
+        }
+        flag_contact(problem, curve, fitted);
+        flag_baseline(problem, curve, fitted);
+    }
+}
+
+}  // namespace mdr::fit
