@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include "mdr/numerics/nonnegative_least_squares.hpp"
+#include "mdr/rheology/material_models.hpp"
 
 namespace mdr::fit {
 
@@ -42,11 +43,26 @@ struct Material {
     std::vector<FreeParameter> parameters;
     std::size_t terms = 0;                  // Prony terms with free times (elastic: 0)
     std::vector<double> grid;               // spectrum: the fixed times, one free modulus each
+    const rheology::MaterialModel* model = nullptr;  // a registry model: its required keys, in its order
+    rheology::TimeWindow window{};          // a registry model's conversion window: the data's
     bool spectrum() const { return !grid.empty(); }
 };
 
+// A registry model's parameters of the values (its required keys, in the order of Material::parameters).
+rheology::ModelParameters registry_parameters(const Material& material, const double* values) {
+    rheology::ModelParameters parameters;
+    for (std::size_t j = 0; j < material.parameters.size(); ++j) {
+        parameters.numbers[material.parameters[j].name.substr(std::string("material.").size())] = values[j];
+    }
+    return parameters;
+}
+
 // G(t) = G_inf + sum G_k exp(-t / tau_k) (Table 1) of the values; a spectrum drops its zero moduli.
 rheology::Rheology make_material(const Material& material, const double* values) {
+    if (material.model) {
+        const rheology::ConversionOptions options{.window = material.window};
+        return rheology::build_material(*material.model, registry_parameters(material, values), options).series;
+    }
     if (material.parameters.size() == 1) return rheology::Rheology::elastic(values[0]);
     std::vector<rheology::RelaxationTerm> terms;
     if (material.spectrum()) {
@@ -61,6 +77,13 @@ rheology::Rheology make_material(const Material& material, const double* values)
 
 // The `[material]` body of the values, as make_material builds it.
 std::string material_text(const Material& material, const double* values) {
+    if (material.model) {
+        std::string text = fmt::format("model = \"{}\"\n", material.model->name);
+        for (const auto& [key, value] : registry_parameters(material, values).numbers) {
+            text += fmt::format("{} = {}\n", key, value);
+        }
+        return text;
+    }
     const rheology::Rheology rheology = make_material(material, values);
     if (rheology.terms().empty()) return fmt::format("model = \"elastic\"\nG = {}\n", rheology.equilibrium_modulus());
     std::string terms;
@@ -70,11 +93,14 @@ std::string material_text(const Material& material, const double* values) {
     return fmt::format("model = \"prony\"\nG_inf = {}\nterms = [{}]\n", rheology.equilibrium_modulus(), terms);
 }
 
-Material elastic(double start) { return {"elastic", {{"material.G", start, 1e-6 * start, 1e6 * start, true}}, 0, {}}; }
+Material elastic(double start) {
+    return {"elastic", {{"material.G", start, 1e-6 * start, 1e6 * start, true}}, 0, {}, nullptr, {}};
+}
 
 // N terms: G_inf = G_e / 2, G_k = G_e / N, times evenly spread in log over the window.
 Material prony(const std::string& name, std::size_t terms, double modulus, const Window& window) {
-    Material material{name, {{"material.G_inf", 0.5 * modulus, 1e-6 * modulus, 1e4 * modulus, true}}, terms, {}};
+    Material material{
+        name, {{"material.G_inf", 0.5 * modulus, 1e-6 * modulus, 1e4 * modulus, true}}, terms, {}, nullptr, {}};
     for (std::size_t k = 0; k < terms; ++k) {
         const double x = (static_cast<double>(k) + 0.5) / static_cast<double>(terms);
         const double tau = std::pow(window.shortest, 1.0 - x) * std::pow(window.longest, x);
@@ -87,7 +113,8 @@ Material prony(const std::string& name, std::size_t terms, double modulus, const
 }
 
 Material spectrum(const SpectrumSettings& settings, double modulus, const Window& window) {
-    Material material{"spectrum", {}, 0, spectrum_grid(window.shortest, window.longest, settings.per_decade)};
+    Material material{
+        "spectrum", {}, 0, spectrum_grid(window.shortest, window.longest, settings.per_decade), nullptr, {}};
     if (material.grid.size() > max_spectrum_terms) {
         throw InvalidInput("fit.spectrum.per_decade", format_value(settings.per_decade),
                            fmt::format("gives {} relaxation times between {:.3g} s and {:.3g} s: at most {}",
@@ -101,11 +128,38 @@ Material spectrum(const SpectrumSettings& settings, double modulus, const Window
     return material;
 }
 
+// A registry model (registry_candidate): each required key free, its start and bounds by its unit, from the elastic
+// modulus G_e and the window's middle time T = sqrt(shortest longest): a modulus G_e / 2 in [1e-6, 1e4] G_e; a time
+// T in [1e-2 shortest, 1e2 longest]; a viscosity G_e T and a quasi-property G_e T^(1/2), each in [1e-8, 1e8] times
+// it; an exponent (unit 1, 0 < alpha, beta < 1) 0.5 in [0.01, 0.99]. Optional keys keep their defaults.
+Material registry_material(const rheology::MaterialModel& model, double modulus, const Window& window) {
+    const double middle = std::sqrt(window.shortest * window.longest);
+    Material material{model.name, {}, 0, {}, &model, {window.shortest, window.longest, {}}};
+    for (const auto& parameter : model.parameters) {
+        if (!parameter.required) continue;
+        const std::string key = "material." + parameter.key;
+        if (parameter.unit == "Pa") {
+            material.parameters.push_back({key, 0.5 * modulus, 1e-6 * modulus, 1e4 * modulus, true});
+        } else if (parameter.unit == "s") {
+            material.parameters.push_back({key, middle, 1e-2 * window.shortest, 1e2 * window.longest, true});
+        } else if (parameter.unit == "1") {
+            material.parameters.push_back({key, 0.5, 0.01, 0.99, true});
+        } else {
+            const double start = parameter.unit == "Pa s" ? modulus * middle : modulus * std::sqrt(middle);
+            material.parameters.push_back({key, start, 1e-8 * start, 1e8 * start, true});
+        }
+    }
+    return material;
+}
+
 Material candidate(const std::string& name, const CandidateSettings& settings, double modulus, const Window& window) {
     if (name == "elastic") return elastic(modulus);
     if (name == "standard") return prony(name, 1, modulus, window);
     if (name == "spectrum") return spectrum(settings.spectrum.value_or(SpectrumSettings{}), modulus, window);
-    return prony(name, static_cast<std::size_t>(std::stoul(name.substr(5))), modulus, window);  // "pronyN", read
+    if (name.rfind("prony", 0) == 0) {
+        return prony(name, static_cast<std::size_t>(std::stoul(name.substr(5))), modulus, window);  // "pronyN", read
+    }
+    return registry_material(rheology::material_model(name), modulus, window);  // registry_candidate, read
 }
 
 // The case with an elastic body of modulus `modulus`: the base of every candidate. Refuses a compressible body or a

@@ -35,7 +35,40 @@ void flag(FitResult& result, std::set<std::string>& flagged, const std::string& 
 struct Stacked {
     Eigen::MatrixXd jacobian;
     Eigen::VectorXd residuals;
+    std::vector<Eigen::Index> curve_begin;  // the first row of each measured curve (rebound rows follow them)
 };
+
+// Lag-1 autocorrelation of the residuals r[begin, begin + count) (in time order).
+double lag_one_correlation(const Eigen::VectorXd& r, Eigen::Index begin, Eigen::Index count) {
+    if (count < 3) return 0.0;
+    const double mean = r.segment(begin, count).mean();
+    double lagged = 0.0, squared = 0.0;
+    for (Eigen::Index i = begin; i < begin + count; ++i) {
+        squared += (r[i] - mean) * (r[i] - mean);
+        if (i + 1 < begin + count) lagged += (r[i] - mean) * (r[i + 1] - mean);
+    }
+    return squared > 0.0 ? lagged / squared : 0.0;
+}
+
+// The variance inflation of curve rows whose residuals have lag-1 autocorrelation rho, as for AR(1) errors:
+// n / n_eff = (1 + rho) / (1 - rho) (the sum of the AR(1) autocorrelations rho^|k| over all lags k, which multiplies
+// the variance of a mean of n >> 1 such errors), when rho is
+// beyond chance for white residuals (above 2 / sqrt(n): their rho has standard deviation 1 / sqrt(n)); at most
+// n (n_eff >= 1 point).
+double variance_inflation(double rho, Eigen::Index count) {
+    const auto n = static_cast<double>(count);
+    if (!(rho > 2.0 / std::sqrt(n))) return 1.0;
+    return std::min((1.0 + rho) / (1.0 - std::min(rho, 1.0 - 1e-12)), n);
+}
+
+// A curve the model cannot follow: its residual RMS above misfit_ratio times its noise and above 1e-5 of its
+// largest |value| (the model's own accuracy: the element model's discretisation error is ~1e-6 (1000 / N)^2 of the
+// peak, see default_fit_elements; noise-free data have a noise floor of 1e-12 of it).
+bool is_misfit(const CurveFit& curve) {
+    double largest = 0.0;
+    for (double value : curve.measured) largest = std::max(largest, std::abs(value));
+    return curve.rms_residual > misfit_ratio * curve.noise && curve.rms_residual > 1e-5 * largest;
+}
 
 // One quantity of a rebound data set: measured, model, speeds and noise.
 CurveFit rebound_entry(const ReboundData& data, ReboundQuantity quantity, const std::vector<ImpactValues>& impacts) {
@@ -67,9 +100,10 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
     for (const auto& cost : costs) rows += static_cast<std::size_t>(cost->num_residuals());
     for (const auto& cost : rebounds) rows += static_cast<std::size_t>(cost->num_residuals());
     Stacked stacked{Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(k + m * costs.size())),
-                    Eigen::VectorXd(static_cast<Eigen::Index>(rows))};
+                    Eigen::VectorXd(static_cast<Eigen::Index>(rows)), {}};
     Eigen::Index row = 0;
     for (std::size_t c = 0; c < costs.size(); ++c) {
+        stacked.curve_begin.push_back(row);
         const CurveCost& cost = *costs[c];
         const CurveModel& prepared = cost.prepared();
         const std::size_t n = prepared.used.size();
@@ -128,6 +162,50 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
     return stacked;
 }
 
+// Autocorrelated residuals (a misfit's systematic ones, or correlated noise) carry less information than their
+// count: each curve's rows are weighted by f_c = n_c / n_eff,c (variance_inflation) in the sandwich covariance
+// s^2 (J^T J)^+ J^T F J (J^T J)^+ (F = diag f; the rows of rebound data keep f = 1), which is s^2 (J^T J)^+ when every
+// f = 1 and f s^2 (J^T J)^+ for one curve. Sets each curve's correlation and effective points and the error kind.
+Eigen::MatrixXd honest_covariance(const Stacked& stacked, double variance_scale, const Eigen::MatrixXd& pseudo_inverse,
+                                  FitResult& result) {
+    const auto rows = stacked.residuals.size();
+    Eigen::VectorXd weights = Eigen::VectorXd::Ones(rows);
+    double points = 0.0, effective = 0.0;
+    for (std::size_t c = 0; c < stacked.curve_begin.size(); ++c) {
+        const Eigen::Index begin = stacked.curve_begin[c];
+        CurveFit& curve = result.curves[c];
+        const auto count = static_cast<Eigen::Index>(curve.time.size());
+        curve.residual_correlation = lag_one_correlation(stacked.residuals, begin, count);
+        const double inflation = variance_inflation(curve.residual_correlation, count);
+        curve.effective_points = static_cast<double>(count) / inflation;
+        weights.segment(begin, count).setConstant(inflation);
+        points += static_cast<double>(count);
+        effective += curve.effective_points;
+    }
+    if (effective == points) {
+        result.error_kind = "white noise (chi-square)";
+        return variance_scale * pseudo_inverse;
+    }
+    result.error_kind =
+        fmt::format("inflated for correlated residuals (n_eff = {:.1f} of {:.0f} points)", effective, points);
+    const Eigen::MatrixXd meat = stacked.jacobian.transpose() * weights.asDiagonal() * stacked.jacobian;
+    return variance_scale * pseudo_inverse * meat * pseudo_inverse;
+}
+
+// Flags each curve the model cannot follow (is_misfit), on the curve and on the fit.
+void flag_misfits(FitResult& result) {
+    for (auto& curve : result.curves) {
+        if (curve.rebound || !is_misfit(curve)) continue;
+        const std::string reason = fmt::format(
+            "misfit: residual RMS {:.4g} is {:.3g} x the noise {:.4g} (lag-1 correlation {:.2f}): the model cannot "
+            "follow the data; the errors include the misfit (error_kind)",
+            curve.rms_residual, curve.rms_residual / curve.noise, curve.noise, curve.residual_correlation);
+        curve.flags.push_back(reason);
+        result.flags.push_back(fmt::format("curve '{}': {}", curve.name, reason));
+        result.misfit = true;
+    }
+}
+
 }  // namespace
 
 void describe_uncertainty(const FitProblem& problem, const ParameterScales& scales,
@@ -163,18 +241,22 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
     const double threshold = 1e-8 * (singular.size() > 0 ? singular[0] : 0.0);
     const double dof = std::max(n - static_cast<double>(columns), 1.0);
     const double variance_scale = stacked.residuals.squaredNorm() / dof;
-    Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(columns), static_cast<Eigen::Index>(columns));
+    // (J^T J)^+ on the determined directions
+    const auto size = static_cast<Eigen::Index>(columns);
+    Eigen::MatrixXd pseudo_inverse = Eigen::MatrixXd::Zero(size, size);
     std::vector<bool> undetermined(columns, false);
     for (Eigen::Index s = 0; s < singular.size(); ++s) {
         const Eigen::VectorXd direction = svd.matrixV().col(s);
         if (singular[s] > threshold) {
-            covariance += direction * direction.transpose() * (variance_scale / (singular[s] * singular[s]));
+            pseudo_inverse += direction * direction.transpose() / (singular[s] * singular[s]);
         } else {
             for (std::size_t j = 0; j < columns; ++j) {
                 if (std::abs(direction[static_cast<Eigen::Index>(j)]) > 1e-3) undetermined[j] = true;
             }
         }
     }
+    const Eigen::MatrixXd covariance = honest_covariance(stacked, variance_scale, pseudo_inverse, result);
+    flag_misfits(result);
 
     std::set<std::string> flagged;
     for (std::size_t j = 0; j < k; ++j) {
@@ -202,10 +284,15 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
                                                    : (parameter.upper - parameter.lower) / scales.scale[j];
         const double from_lower = scales.to_internal(j, value) - scales.to_internal(j, parameter.lower);
         const double to_upper = scales.to_internal(j, parameter.upper) - scales.to_internal(j, value);
-        if (std::min(from_lower, to_upper) < 1e-4 * span) {
+        // At a bound: within 1e-4 of the span (internal scale) and, in value, within 1e-3 of the bound's magnitude
+        // or of the standard error (a value 0.0145 away from a lower bound 0 with a span of 1e9 is not at it).
+        const bool lower_nearer = from_lower < to_upper;
+        const double bound = lower_nearer ? parameter.lower : parameter.upper;
+        const double tolerance = 1e-3 * std::max(std::abs(bound), result.standard_errors[j]);
+        if (std::min(from_lower, to_upper) < 1e-4 * span && std::abs(value - bound) <= tolerance) {
             flag(result, flagged, result.names[j],
-                 fmt::format("{} = {:.6g} is at its {} bound: the data push it beyond", result.names[j], value,
-                             from_lower < to_upper ? "lower" : "upper"));
+                 fmt::format("{} = {:.6g} is at its {} bound {:.6g}: the data push it beyond", result.names[j], value,
+                             lower_nearer ? "lower" : "upper", bound));
         }
         if (result.standard_errors[j] > std::abs(value)) {
             flag(result, flagged, result.names[j],

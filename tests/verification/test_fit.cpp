@@ -271,6 +271,29 @@ TEST(Fit, NinetyFivePercentIntervalsCoverTheTruth) {
     }
 }
 
+TEST(Fit, AtABoundOnlyWhenTheValueIsThere) {
+    // G_inf fitted on a linear scale within [0, 1e11]: the true 1e6 is 1e-5 of that span from the lower bound 0, and
+    // was once flagged "at its lower bound" (as a spectrum's G[3] = 0.0145 with bound 0). It is not at it.
+    const reference::PronyMaterial truth{1e6, 0.0, {{2e6, 0.5}}};
+    auto parameters = standard_solid_parameters(1.2e6, 2e6, 0.5);
+    parameters[0].lower = 0.0;
+    parameters[0].upper = 1e11;
+    parameters[0].logarithmic = false;
+    const auto result = fit::fit(noise_free_problem(load_hold_curve(truth, 1.0, 4.0, 201), parameters));
+    expect_relative(result, {1e6, 2e6, 0.5}, 1e-6);
+    for (const auto& entry : result.undetermined) EXPECT_NE(entry.name, "material.G_inf") << entry.reason;
+
+    // A time held at its upper bound (the data want a longer one) is at it, and the message gives the bound.
+    auto held = standard_solid_parameters(1e6, 2e6, 0.2);
+    held[2].upper = 0.3;
+    const auto at_bound = fit::fit(noise_free_problem(load_hold_curve(truth, 1.0, 4.0, 201), held));
+    bool flagged = false;
+    for (const auto& entry : at_bound.undetermined) {
+        flagged |= entry.reason == "material.tau1 = 0.3 is at its upper bound 0.3: the data push it beyond";
+    }
+    EXPECT_TRUE(flagged);
+}
+
 TEST(Fit, TimesTheDataCannotDetermineAreFlagged) {
     // A relaxation time ten times longer than the record: flagged, not reported as a confident number.
     const reference::PronyMaterial slow{1e6, 0.0, {{2e6, 40.0}}};
