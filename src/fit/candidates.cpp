@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "curve_model.hpp"
 #include "mdr/error.hpp"
@@ -112,9 +113,16 @@ Material prony(const std::string& name, std::size_t terms, double modulus, const
     return material;
 }
 
-Material spectrum(const SpectrumSettings& settings, double modulus, const Window& window) {
+// The spectrum on spectrum_grid, with `one_term` (the best one-term fit's relaxation time) added to the grid when it
+// lies within the window and no grid time is within 1e-6 of it: the spectrum then contains that fit.
+Material spectrum(const SpectrumSettings& settings, double modulus, const Window& window, double one_term) {
     Material material{
         "spectrum", {}, 0, spectrum_grid(window.shortest, window.longest, settings.per_decade), nullptr, {}};
+    const auto place = std::lower_bound(material.grid.begin(), material.grid.end(), one_term);
+    const bool near_after = place != material.grid.end() && std::abs(*place / one_term - 1.0) < 1e-6;
+    const bool near_before = place != material.grid.begin() && std::abs(*(place - 1) / one_term - 1.0) < 1e-6;
+    const bool inside = one_term >= material.grid.front() && one_term <= material.grid.back();
+    if (inside && !near_after && !near_before) material.grid.insert(place, one_term);
     if (material.grid.size() > max_spectrum_terms) {
         throw InvalidInput("fit.spectrum.per_decade", format_value(settings.per_decade),
                            fmt::format("gives {} relaxation times between {:.3g} s and {:.3g} s: at most {}",
@@ -152,15 +160,15 @@ Material registry_material(const rheology::MaterialModel& model, double modulus,
     return material;
 }
 
-Material candidate(const std::string& name, const CandidateSettings& settings, double modulus, const Window& window) {
+Material candidate(const std::string& name, double modulus, const Window& window) {
     if (name == "elastic") return elastic(modulus);
     if (name == "standard") return prony(name, 1, modulus, window);
-    if (name == "spectrum") return spectrum(settings.spectrum.value_or(SpectrumSettings{}), modulus, window);
     if (name.rfind("prony", 0) == 0) {
         return prony(name, static_cast<std::size_t>(std::stoul(name.substr(5))), modulus, window);  // "pronyN", read
     }
     return registry_material(rheology::material_model(name), modulus, window);  // registry_candidate, read
 }
+
 
 // The case with an elastic body of modulus `modulus`: the base of every candidate. Refuses a compressible body or a
 // viscoelastic indenter, whose material the candidates would silently drop.
@@ -216,6 +224,35 @@ CandidateFit fit_material(const io::FitCase& base, const Material& material, con
     CandidateFit fitted{material.name, fit(problem), base, material.grid, 0.0, 0.0};
     fitted.fitted_case.model.set_table("material", material_text(material, fitted.result.values.data() + offset));
     return fitted;
+}
+
+// The weighted residual sum of squares of a fit, up to a monotone map: n ln(RSS / n) (AIC without its 2k).
+double log_residual(const FitResult& result) { return result.aic - 2.0 * static_cast<double>(result.free_count); }
+
+// The one-term fit `one` as a start of the spectrum `grid_material` (whose grid holds its time): G_inf and the
+// modulus at the nearest grid time from it, the other moduli 0; its indenter values, contact points and baselines.
+CandidateFit spectrum_from_one_term(const io::FitCase& base, Material grid_material, const CandidateFit& one,
+                                    std::vector<Curve> curves, const std::vector<std::vector<double>>& penalty) {
+    const std::size_t offset = base.parameters.size();
+    const std::vector<double>& values = one.result.values;
+    const auto& grid = grid_material.grid;
+    std::size_t nearest = 0;
+    for (std::size_t j = 1; j < grid.size(); ++j) {
+        const double tau = values[offset + 2];
+        if (std::abs(std::log(grid[j] / tau)) < std::abs(std::log(grid[nearest] / tau))) nearest = j;
+    }
+    auto& parameters = grid_material.parameters;
+    parameters[0].start = std::min(values[offset], parameters[0].upper);
+    for (std::size_t j = 0; j < grid.size(); ++j) {
+        parameters[1 + j].start = j == nearest ? std::min(values[offset + 1], parameters[1 + j].upper) : 0.0;
+    }
+    for (std::size_t c = 0; c < curves.size(); ++c) {
+        const CurveFit& fitted = one.result.curves[c];
+        if (base.settings.contact_point == ContactPointMode::fit) curves[c].contact_depth = fitted.contact_depth;
+        if (base.settings.baseline == BaselineMode::fit) curves[c].force_baseline = fitted.baseline;
+    }
+    const std::vector<double> indenter(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(offset));
+    return fit_material(base, std::move(grid_material), indenter, curves, penalty);
 }
 
 // The smoothing penalty of a spectrum (SpectrumSettings::smoothing): rows w (G_j+1 - G_j) / G_e, w = s sqrt(n).
@@ -350,7 +387,17 @@ ModelChoice fit_candidates(const io::FitCase& fit_case, const std::vector<Curve>
             choice.fits.push_back(reference);
             continue;
         }
-        const Material material = candidate(name, settings, choice.modulus_scale, window);
+        // A spectrum is never worse than the best one-term fit (the standard solid): its grid holds that fit's time,
+        // and when the fit from the linear start ends with larger residuals, it is fitted again from that fit.
+        std::optional<CandidateFit> one_term;
+        if (name == "spectrum") {
+            const Material standard = prony("standard", 1, choice.modulus_scale, window);
+            one_term = fit_material(base, standard, indenter, started_curves, {});
+        }
+        const Material material =
+            one_term ? spectrum(settings.spectrum.value_or(SpectrumSettings{}), choice.modulus_scale, window,
+                                one_term->result.values[offset + 2])
+                     : candidate(name, choice.modulus_scale, window);
         Material started = material;
         const double smoothing = material.spectrum() ? settings.spectrum.value_or(SpectrumSettings{}).smoothing : 0.0;
         const auto penalty = smoothing_penalty(material, offset, smoothing, choice.modulus_scale, curves);
@@ -361,7 +408,12 @@ ModelChoice fit_candidates(const io::FitCase& fit_case, const std::vector<Curve>
             const auto linear = linear_start(base, material, indenter, started_curves, penalty);
             for (std::size_t j = 0; j < linear.size(); ++j) started.parameters[j].start = linear[j];
         }
-        choice.fits.push_back(fit_material(base, started, indenter, started_curves, penalty));
+        CandidateFit fitted = fit_material(base, started, indenter, started_curves, penalty);
+        if (one_term && log_residual(fitted.result) > log_residual(one_term->result)) {
+            CandidateFit again = spectrum_from_one_term(base, material, *one_term, started_curves, penalty);
+            if (log_residual(again.result) < log_residual(fitted.result)) fitted = std::move(again);
+        }
+        choice.fits.push_back(std::move(fitted));
     }
 
     std::stable_sort(choice.fits.begin(), choice.fits.end(),

@@ -46,8 +46,8 @@ fit::CandidateSettings read_candidates(TableReader& fit) {
             const std::string& name = settings.candidates[i];
             if (!known_candidate(name)) {
                 throw InvalidInput(fmt::format("fit.candidates[{}]", i), "\"" + name + "\"",
-                                   fmt::format("one of prony1 ... prony{}, spectrum, {}", fit::max_prony_terms,
-                                               registry_candidate_names()));
+                                   fmt::format("one of {}, prony1 ... prony{}, spectrum", registry_candidate_names(),
+                                               fit::max_prony_terms));
             }
             if (std::find(settings.candidates.begin(), settings.candidates.begin() + static_cast<std::ptrdiff_t>(i),
                           name) != settings.candidates.begin() + static_cast<std::ptrdiff_t>(i)) {
