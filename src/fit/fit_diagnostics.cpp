@@ -16,6 +16,24 @@ namespace mdr::fit {
 namespace {
 
 constexpr double normal_quantile_95 = 1.959963984540054;
+
+// The two-sided 95 % quantile of Student's t with `dof` degrees of freedom: for dof >= 3 the Cornish-Fisher
+// expansion about the normal quantile x (Abramowitz & Stegun 26.7.5, four terms; 3.177 at dof = 3 against the exact
+// 3.182, 2.1604 at 13, exact to 4 digits); below, interpolated in log between the exact 12.706 (1), 4.303 (2), 3.182.
+double student_quantile_95(double dof) {
+    if (dof < 3.0) {
+        const double exact[3] = {12.7062047, 4.30265273, 3.18244631};
+        const double d = std::max(dof, 1.0);
+        const auto i = static_cast<std::size_t>(std::min(d, 2.0)) - 1;
+        return std::exp(std::log(exact[i]) + (d - static_cast<double>(i + 1)) * std::log(exact[i + 1] / exact[i]));
+    }
+    const double x = normal_quantile_95, x2 = x * x;
+    const double g1 = (x2 + 1.0) * x / 4.0;
+    const double g2 = ((5.0 * x2 + 16.0) * x2 + 3.0) * x / 96.0;
+    const double g3 = (((3.0 * x2 + 19.0) * x2 + 17.0) * x2 - 15.0) * x / 384.0;
+    const double g4 = ((((79.0 * x2 + 776.0) * x2 + 1482.0) * x2 - 1920.0) * x2 - 945.0) * x / 92160.0;
+    return x + g1 / dof + g2 / (dof * dof) + g3 / (dof * dof * dof) + g4 / (dof * dof * dof * dof);
+}
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 // A relaxation or retardation time of the case, by its key: tau, tau1, lambda..., or the second value of a Prony
@@ -50,15 +68,23 @@ double lag_one_correlation(const Eigen::VectorXd& r, Eigen::Index begin, Eigen::
     return squared > 0.0 ? lagged / squared : 0.0;
 }
 
-// The variance inflation of curve rows whose residuals have lag-1 autocorrelation rho, as for AR(1) errors:
-// n / n_eff = (1 + rho) / (1 - rho) (the sum of the AR(1) autocorrelations rho^|k| over all lags k, which multiplies
-// the variance of a mean of n >> 1 such errors), when rho is
-// beyond chance for white residuals (above 2 / sqrt(n): their rho has standard deviation 1 / sqrt(n)); at most
-// n (n_eff >= 1 point).
-double variance_inflation(double rho, Eigen::Index count) {
+// The AR(1) coefficient of a curve's errors from the lag-1 autocorrelation rho of its n residuals: 0 (white) unless
+// rho is beyond chance for white residuals (above 2 / sqrt(n): their rho has standard deviation 1 / sqrt(n));
+// else rho plus its bias (1 + 4 rho) / n (Marriott & Pope 1954, Biometrika 41:390, for an estimated mean), below 1.
+double error_correlation(double rho, Eigen::Index count) {
     const auto n = static_cast<double>(count);
-    if (!(rho > 2.0 / std::sqrt(n))) return 1.0;
-    return std::min((1.0 + rho) / (1.0 - std::min(rho, 1.0 - 1e-12)), n);
+    if (!(rho > 2.0 / std::sqrt(n))) return 0.0;
+    return std::min(rho + (1.0 + 4.0 * rho) / n, 1.0 - 1e-9);
+}
+
+// P x for the AR(1) correlation matrix P_ij = phi^|i - j| (in place): a forward and a backward recursion,
+// P x = f + b - x with f_i = x_i + phi f_(i-1), b_i = x_i + phi b_(i+1).
+void apply_correlation(Eigen::Ref<Eigen::VectorXd> x, double phi) {
+    const Eigen::Index m = x.size();
+    Eigen::VectorXd forward = x, backward = x;
+    for (Eigen::Index i = 1; i < m; ++i) forward[i] += phi * forward[i - 1];
+    for (Eigen::Index i = m - 2; i >= 0; --i) backward[i] += phi * backward[i + 1];
+    x = forward + backward - x;
 }
 
 // A curve the model cannot follow: its residual RMS above misfit_ratio times its noise and above 1e-5 of its
@@ -163,22 +189,26 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
 }
 
 // Autocorrelated residuals (a misfit's systematic ones, or correlated noise) carry less information than their
-// count: each curve's rows are weighted by f_c = n_c / n_eff,c (variance_inflation) in the sandwich covariance
-// s^2 (J^T J)^+ J^T F J (J^T J)^+ (F = diag f; the rows of rebound data keep f = 1), which is s^2 (J^T J)^+ when every
-// f = 1 and f s^2 (J^T J)^+ for one curve. Sets each curve's correlation and effective points and the error kind.
+// count. Each curve's errors are taken as AR(1) with coefficient phi (error_correlation), correlation matrix
+// P_ij = phi^|i - j| within the curve (identity for rebound data and white curves), and the covariance of the least-
+// squares estimate is the sandwich s^2 (J^T J)^+ J^T P J (J^T J)^+ (White 1980, Econometrica 48:817, with a known
+// correlation structure; s^2 (J^T J)^+ when every phi = 0). A curve's effective points are
+// n_eff = n (1 - phi) / (1 + phi) (the sum of phi^|k| over all lags multiplies the variance of a mean of n >> 1
+// such errors), at least 1. Sets each curve's correlation and effective points and the error kind.
 Eigen::MatrixXd honest_covariance(const Stacked& stacked, double variance_scale, const Eigen::MatrixXd& pseudo_inverse,
                                   FitResult& result) {
-    const auto rows = stacked.residuals.size();
-    Eigen::VectorXd weights = Eigen::VectorXd::Ones(rows);
+    Eigen::MatrixXd correlated = stacked.jacobian;  // P J
     double points = 0.0, effective = 0.0;
     for (std::size_t c = 0; c < stacked.curve_begin.size(); ++c) {
         const Eigen::Index begin = stacked.curve_begin[c];
         CurveFit& curve = result.curves[c];
         const auto count = static_cast<Eigen::Index>(curve.time.size());
         curve.residual_correlation = lag_one_correlation(stacked.residuals, begin, count);
-        const double inflation = variance_inflation(curve.residual_correlation, count);
-        curve.effective_points = static_cast<double>(count) / inflation;
-        weights.segment(begin, count).setConstant(inflation);
+        const double phi = error_correlation(curve.residual_correlation, count);
+        curve.effective_points = std::max(static_cast<double>(count) * (1.0 - phi) / (1.0 + phi), 1.0);
+        for (Eigen::Index j = 0; phi > 0.0 && j < correlated.cols(); ++j) {
+            apply_correlation(correlated.col(j).segment(begin, count), phi);
+        }
         points += static_cast<double>(count);
         effective += curve.effective_points;
     }
@@ -188,8 +218,13 @@ Eigen::MatrixXd honest_covariance(const Stacked& stacked, double variance_scale,
     }
     result.error_kind =
         fmt::format("inflated for correlated residuals (n_eff = {:.1f} of {:.0f} points)", effective, points);
-    const Eigen::MatrixXd meat = stacked.jacobian.transpose() * weights.asDiagonal() * stacked.jacobian;
-    return variance_scale * pseudo_inverse * meat * pseudo_inverse;
+    const Eigen::MatrixXd meat = stacked.jacobian.transpose() * correlated;
+    // The fit absorbs more of correlated errors than k white degrees of freedom: E[RSS] = sigma^2 (n - tr(H P)),
+    // H = J (J^T J)^+ J^T, so s^2 = RSS / (n - tr((J^T J)^+ J^T P J)) (k when P = I, as variance_scale).
+    const double n = static_cast<double>(stacked.residuals.size());
+    const double absorbed = (pseudo_inverse * meat).trace();
+    const double correlated_scale = stacked.residuals.squaredNorm() / std::max(n - absorbed, 1.0);
+    return std::max(variance_scale, correlated_scale) * pseudo_inverse * meat * pseudo_inverse;
 }
 
 // Flags each curve the model cannot follow (is_misfit), on the curve and on the fit.
@@ -256,6 +291,12 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
         }
     }
     const Eigen::MatrixXd covariance = honest_covariance(stacked, variance_scale, pseudo_inverse, result);
+    // The intervals' quantile: Student's t with the effective points less the free parameters (s^2 is estimated).
+    double effective = n;
+    for (std::size_t c = 0; c < costs.size(); ++c) {
+        effective -= static_cast<double>(result.curves[c].time.size()) - result.curves[c].effective_points;
+    }
+    const double quantile = student_quantile_95(std::max(effective - static_cast<double>(columns), 1.0));
     flag_misfits(result);
 
     std::set<std::string> flagged;
@@ -272,12 +313,12 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
         }
         if (scales.scale[j] == 0.0) {  // logarithmic: sigma is relative
             result.standard_errors.push_back(value * sigma);
-            result.lower_95.push_back(value * std::exp(-normal_quantile_95 * sigma));
-            result.upper_95.push_back(value * std::exp(normal_quantile_95 * sigma));
+            result.lower_95.push_back(value * std::exp(-quantile * sigma));
+            result.upper_95.push_back(value * std::exp(quantile * sigma));
         } else {
             result.standard_errors.push_back(scales.scale[j] * sigma);
-            result.lower_95.push_back(value - normal_quantile_95 * scales.scale[j] * sigma);
-            result.upper_95.push_back(value + normal_quantile_95 * scales.scale[j] * sigma);
+            result.lower_95.push_back(value - quantile * scales.scale[j] * sigma);
+            result.upper_95.push_back(value + quantile * scales.scale[j] * sigma);
         }
         const auto& parameter = problem.parameters[j];
         const double span = scales.scale[j] == 0.0 ? std::log(parameter.upper / parameter.lower)
