@@ -70,11 +70,12 @@ double lag_one_correlation(const Eigen::VectorXd& r, Eigen::Index begin, Eigen::
 
 // The AR(1) coefficient of a curve's errors from the lag-1 autocorrelation rho of its n residuals: 0 (white) unless
 // rho is beyond chance for white residuals (above 2 / sqrt(n): their rho has standard deviation 1 / sqrt(n));
-// else rho plus its bias (1 + 4 rho) / n (Marriott & Pope 1954, Biometrika 41:390, for an estimated mean), below 1.
+// else rho plus its bias (1 + 4 rho) / n (Marriott & Pope 1954, Biometrika 41:390, for an estimated mean), at most
+// (n - 1) / (n + 1) (n_eff >= 1).
 double error_correlation(double rho, Eigen::Index count) {
     const auto n = static_cast<double>(count);
     if (!(rho > 2.0 / std::sqrt(n))) return 0.0;
-    return std::min(rho + (1.0 + 4.0 * rho) / n, 1.0 - 1e-9);
+    return std::min(rho + (1.0 + 4.0 * rho) / n, (n - 1.0) / (n + 1.0));
 }
 
 // P x for the AR(1) correlation matrix P_ij = phi^|i - j| (in place): a forward and a backward recursion,
@@ -87,13 +88,18 @@ void apply_correlation(Eigen::Ref<Eigen::VectorXd> x, double phi) {
     x = forward + backward - x;
 }
 
-// A curve the model cannot follow: its residual RMS above misfit_ratio times its noise and above 1e-5 of its
-// largest |value| (the model's own accuracy: the element model's discretisation error is ~1e-6 (1000 / N)^2 of the
-// peak, see default_fit_elements; noise-free data have a noise floor of 1e-12 of it).
-bool is_misfit(const CurveFit& curve) {
+// A curve's residual RMS is above 1e-5 of its largest |value|, the model's own accuracy (the element model's
+// discretisation error is ~1e-6 (1000 / N)^2 of the peak, see default_fit_elements): below it the residuals are
+// the model's numerics (noise-free data), neither a misfit nor errors to inflate.
+bool above_model_accuracy(const CurveFit& curve) {
     double largest = 0.0;
     for (double value : curve.measured) largest = std::max(largest, std::abs(value));
-    return curve.rms_residual > misfit_ratio * curve.noise && curve.rms_residual > 1e-5 * largest;
+    return curve.rms_residual > 1e-5 * largest;
+}
+
+// A curve the model cannot follow: its residual RMS above misfit_ratio times its noise and the model's accuracy.
+bool is_misfit(const CurveFit& curve) {
+    return curve.rms_residual > misfit_ratio * curve.noise && above_model_accuracy(curve);
 }
 
 // One quantity of a rebound data set: measured, model, speeds and noise.
@@ -204,7 +210,7 @@ Eigen::MatrixXd honest_covariance(const Stacked& stacked, double variance_scale,
         CurveFit& curve = result.curves[c];
         const auto count = static_cast<Eigen::Index>(curve.time.size());
         curve.residual_correlation = lag_one_correlation(stacked.residuals, begin, count);
-        const double phi = error_correlation(curve.residual_correlation, count);
+        const double phi = above_model_accuracy(curve) ? error_correlation(curve.residual_correlation, count) : 0.0;
         curve.effective_points = std::max(static_cast<double>(count) * (1.0 - phi) / (1.0 + phi), 1.0);
         for (Eigen::Index j = 0; phi > 0.0 && j < correlated.cols(); ++j) {
             apply_correlation(correlated.col(j).segment(begin, count), phi);

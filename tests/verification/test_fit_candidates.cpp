@@ -209,7 +209,9 @@ TEST(FitCandidates, EveryRegistryModelOfNumbersIsACandidate) {
     EXPECT_NEAR(maxwell.result.values[1], 0.5, 4.0 * maxwell.result.standard_errors[1]);
     const auto& power_law = named(choice, "power_law");
     EXPECT_EQ(power_law.result.names, (std::vector<std::string>{"material.G0", "material.beta"}));
-    EXPECT_NE(power_law.fitted_case.model.text().find("model = \"power_law\""), std::string::npos);
+    const std::string fitted_text = power_law.fitted_case.model.text();
+    EXPECT_NE(fitted_text.find("model = 'power_law'"), std::string::npos) << fitted_text;
+    EXPECT_NE(fitted_text.find("beta = "), std::string::npos) << fitted_text;
 }
 
 TEST(FitCandidates, BadCandidatesAreRefused) {
