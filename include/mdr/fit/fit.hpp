@@ -171,13 +171,15 @@ struct FitResult {
     /// The model cannot follow the data: a curve's residual RMS is above misfit_ratio times its noise (and above
     /// the model's own accuracy); a flag names the curve. The result is still the best fit.
     bool misfit = false;
-    /// What the standard errors are (fit.json `error_kind`): "chi-square (white residuals)", or, when a curve's
-    /// residuals are autocorrelated, "chi-square, inflated for autocorrelated residuals (n_eff = ... of ...)".
+    /// What the standard errors are (fit.json `error_kind`): "white noise (chi-square)", or, when a curve's residuals
+    /// are autocorrelated (AR(1) sandwich, see describe_uncertainty), "inflated for correlated residuals (n_eff = 16.2
+    /// of 301 points)".
     std::string error_kind;
     std::vector<std::string> names;          ///< the free parameters, in the order of FitProblem::parameters
     std::vector<double> values;              ///< fitted values
     std::vector<double> standard_errors;     ///< one standard deviation, first order (NaN when undetermined)
-    std::vector<double> lower_95;            ///< 95 % confidence interval (on the logarithmic scale where fitted so)
+    /// 95 % confidence interval (Student's t quantile; on the logarithmic scale where fitted so)
+    std::vector<double> lower_95;
     std::vector<double> upper_95;            ///< see lower_95
     std::vector<std::vector<double>> correlation;  ///< correlation matrix of the free parameters
     std::vector<Undetermined> undetermined;  ///< parameters the data cannot determine
