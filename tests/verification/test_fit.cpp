@@ -294,6 +294,41 @@ TEST(Fit, AtABoundOnlyWhenTheValueIsThere) {
     EXPECT_TRUE(flagged);
 }
 
+TEST(Fit, YoungModuliOfTheFittedShearModuli) {
+    // E = 2 (1 + nu) G with nu = 0.5 for every key whose registry unit is Pa: G_inf and the modulus of a Prony term
+    // (terms[0][0]), not its time (terms[0][1]). A compressible body (a bulk part: shear_material set) has none, and
+    // a flag says why.
+    const reference::PronyMaterial truth{1e6, 0.0, {{2e6, 0.5}}};
+    fit::FitProblem problem = noise_free_problem(load_hold_curve(truth, 1.0, 4.0, 201), {});
+    const auto prony_sphere = [](const std::vector<double>& values) {
+        return drivers::ContactCase{.title = "fit model",
+                                    .material = rheology::Rheology::prony(values[0], {{values[1], values[2]}}),
+                                    .indenter = profile::make_sphere(R),
+                                    .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
+                                    .end_time = 1.0};
+    };
+    problem.model = prony_sphere;
+    problem.parameters = {{"material.G_inf", 1.2e6, 1e3, 1e9},
+                          {"material.terms[0][0]", 1.5e6, 1e3, 1e9},
+                          {"material.terms[0][1]", 0.4, 1e-3, 1e3}};
+    const auto result = fit::fit(problem);
+    ASSERT_EQ(result.young_moduli.size(), 2u);
+    EXPECT_EQ(result.young_moduli[0].name, "material.G_inf");
+    EXPECT_EQ(result.young_moduli[1].name, "material.terms[0][0]");
+    EXPECT_NEAR(result.young_moduli[0].value / 3e6, 1.0, 1e-6);
+    EXPECT_NEAR(result.young_moduli[1].value / 6e6, 1.0, 1e-6);
+
+    problem.model = [prony_sphere](const std::vector<double>& values) {
+        auto model = prony_sphere(values);
+        model.shear_material = model.material;  // as a case with a bulk part folds it in
+        return model;
+    };
+    const auto compressible = fit::fit(problem);
+    EXPECT_TRUE(compressible.young_moduli.empty());
+    ASSERT_FALSE(compressible.flags.empty());
+    EXPECT_EQ(compressible.flags.back().rfind("young_moduli: not reported: the body is compressible", 0), 0u);
+}
+
 TEST(Fit, TimesTheDataCannotDetermineAreFlagged) {
     // A relaxation time ten times longer than the record: flagged, not reported as a confident number.
     const reference::PronyMaterial slow{1e6, 0.0, {{2e6, 40.0}}};
