@@ -233,7 +233,7 @@ Eigen::MatrixXd honest_covariance(const Stacked& stacked, double variance_scale,
     return std::max(variance_scale, correlated_scale) * pseudo_inverse * meat * pseudo_inverse;
 }
 
-// Flags each curve the model cannot follow (is_misfit), on the curve and on the fit.
+// Flags each curve the model cannot follow (is_misfit) on the curve (the fit's status says "misfit").
 void flag_misfits(FitResult& result) {
     for (auto& curve : result.curves) {
         if (curve.rebound || !is_misfit(curve)) continue;
@@ -242,7 +242,6 @@ void flag_misfits(FitResult& result) {
             "follow the data; the errors include the misfit (error_kind)",
             curve.rms_residual, curve.rms_residual / curve.noise, curve.noise, curve.residual_correlation);
         curve.flags.push_back(reason);
-        result.flags.push_back(fmt::format("curve '{}': {}", curve.name, reason));
         result.misfit = true;
     }
 }
