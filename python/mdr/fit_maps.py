@@ -77,7 +77,7 @@ def fit_curve(curve: Any, case: Mapping[str, Any], time: Sequence[float] | None 
             raise ValueError(f"curve: an array of shape {array.shape}; must be (nt, 3) time, depth, force, or (nt,) "
                              f"force with time= and depth= given")
     result = fit(case, data=[data])
-    if result.status != "converged":
+    if not result.status.startswith("converged"):  # "converged, misfit" is a result: its flag says so
         raise FitNotConverged(result.status)
     values: dict[str, float] = {}
     for key, value in result.parameters.items():

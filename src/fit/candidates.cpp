@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "curve_model.hpp"
 #include "mdr/error.hpp"
 #include <Eigen/Dense>
 
 #include "mdr/numerics/nonnegative_least_squares.hpp"
+#include "mdr/rheology/material_models.hpp"
 
 namespace mdr::fit {
 
@@ -42,11 +44,26 @@ struct Material {
     std::vector<FreeParameter> parameters;
     std::size_t terms = 0;                  // Prony terms with free times (elastic: 0)
     std::vector<double> grid;               // spectrum: the fixed times, one free modulus each
+    const rheology::MaterialModel* model = nullptr;  // a registry model: its required keys, in its order
+    rheology::TimeWindow window{};          // a registry model's conversion window: the data's
     bool spectrum() const { return !grid.empty(); }
 };
 
+// A registry model's parameters of the values (its required keys, in the order of Material::parameters).
+rheology::ModelParameters registry_parameters(const Material& material, const double* values) {
+    rheology::ModelParameters parameters;
+    for (std::size_t j = 0; j < material.parameters.size(); ++j) {
+        parameters.numbers[material.parameters[j].name.substr(std::string("material.").size())] = values[j];
+    }
+    return parameters;
+}
+
 // G(t) = G_inf + sum G_k exp(-t / tau_k) (Table 1) of the values; a spectrum drops its zero moduli.
 rheology::Rheology make_material(const Material& material, const double* values) {
+    if (material.model) {
+        const rheology::ConversionOptions options{.window = material.window};
+        return rheology::build_material(*material.model, registry_parameters(material, values), options).series;
+    }
     if (material.parameters.size() == 1) return rheology::Rheology::elastic(values[0]);
     std::vector<rheology::RelaxationTerm> terms;
     if (material.spectrum()) {
@@ -61,6 +78,13 @@ rheology::Rheology make_material(const Material& material, const double* values)
 
 // The `[material]` body of the values, as make_material builds it.
 std::string material_text(const Material& material, const double* values) {
+    if (material.model) {
+        std::string text = fmt::format("model = \"{}\"\n", material.model->name);
+        for (const auto& [key, value] : registry_parameters(material, values).numbers) {
+            text += fmt::format("{} = {}\n", key, value);
+        }
+        return text;
+    }
     const rheology::Rheology rheology = make_material(material, values);
     if (rheology.terms().empty()) return fmt::format("model = \"elastic\"\nG = {}\n", rheology.equilibrium_modulus());
     std::string terms;
@@ -70,11 +94,14 @@ std::string material_text(const Material& material, const double* values) {
     return fmt::format("model = \"prony\"\nG_inf = {}\nterms = [{}]\n", rheology.equilibrium_modulus(), terms);
 }
 
-Material elastic(double start) { return {"elastic", {{"material.G", start, 1e-6 * start, 1e6 * start, true}}, 0, {}}; }
+Material elastic(double start) {
+    return {"elastic", {{"material.G", start, 1e-6 * start, 1e6 * start, true}}, 0, {}, nullptr, {}};
+}
 
 // N terms: G_inf = G_e / 2, G_k = G_e / N, times evenly spread in log over the window.
 Material prony(const std::string& name, std::size_t terms, double modulus, const Window& window) {
-    Material material{name, {{"material.G_inf", 0.5 * modulus, 1e-6 * modulus, 1e4 * modulus, true}}, terms, {}};
+    Material material{
+        name, {{"material.G_inf", 0.5 * modulus, 1e-6 * modulus, 1e4 * modulus, true}}, terms, {}, nullptr, {}};
     for (std::size_t k = 0; k < terms; ++k) {
         const double x = (static_cast<double>(k) + 0.5) / static_cast<double>(terms);
         const double tau = std::pow(window.shortest, 1.0 - x) * std::pow(window.longest, x);
@@ -86,8 +113,16 @@ Material prony(const std::string& name, std::size_t terms, double modulus, const
     return material;
 }
 
-Material spectrum(const SpectrumSettings& settings, double modulus, const Window& window) {
-    Material material{"spectrum", {}, 0, spectrum_grid(window.shortest, window.longest, settings.per_decade)};
+// The spectrum on spectrum_grid, with `one_term` (the best one-term fit's relaxation time) added to the grid when it
+// lies within the window and no grid time is within 1e-6 of it: the spectrum then contains that fit.
+Material spectrum(const SpectrumSettings& settings, double modulus, const Window& window, double one_term) {
+    Material material{
+        "spectrum", {}, 0, spectrum_grid(window.shortest, window.longest, settings.per_decade), nullptr, {}};
+    const auto place = std::lower_bound(material.grid.begin(), material.grid.end(), one_term);
+    const bool near_after = place != material.grid.end() && std::abs(*place / one_term - 1.0) < 1e-6;
+    const bool near_before = place != material.grid.begin() && std::abs(*(place - 1) / one_term - 1.0) < 1e-6;
+    const bool inside = one_term >= material.grid.front() && one_term <= material.grid.back();
+    if (inside && !near_after && !near_before) material.grid.insert(place, one_term);
     if (material.grid.size() > max_spectrum_terms) {
         throw InvalidInput("fit.spectrum.per_decade", format_value(settings.per_decade),
                            fmt::format("gives {} relaxation times between {:.3g} s and {:.3g} s: at most {}",
@@ -101,12 +136,39 @@ Material spectrum(const SpectrumSettings& settings, double modulus, const Window
     return material;
 }
 
-Material candidate(const std::string& name, const CandidateSettings& settings, double modulus, const Window& window) {
+// A registry model (registry_candidate): each required key free, its start and bounds by its unit, from the elastic
+// modulus G_e and the window's middle time T = sqrt(shortest longest): a modulus G_e / 2 in [1e-6, 1e4] G_e; a time
+// T in [1e-2 shortest, 1e2 longest]; a viscosity G_e T and a quasi-property G_e T^(1/2), each in [1e-8, 1e8] times
+// it; an exponent (unit 1, 0 < alpha, beta < 1) 0.5 in [0.01, 0.99]. Optional keys keep their defaults.
+Material registry_material(const rheology::MaterialModel& model, double modulus, const Window& window) {
+    const double middle = std::sqrt(window.shortest * window.longest);
+    Material material{model.name, {}, 0, {}, &model, {window.shortest, window.longest, {}}};
+    for (const auto& parameter : model.parameters) {
+        if (!parameter.required) continue;
+        const std::string key = "material." + parameter.key;
+        if (parameter.unit == "Pa") {
+            material.parameters.push_back({key, 0.5 * modulus, 1e-6 * modulus, 1e4 * modulus, true});
+        } else if (parameter.unit == "s") {
+            material.parameters.push_back({key, middle, 1e-2 * window.shortest, 1e2 * window.longest, true});
+        } else if (parameter.unit == "1") {
+            material.parameters.push_back({key, 0.5, 0.01, 0.99, true});
+        } else {
+            const double start = parameter.unit == "Pa s" ? modulus * middle : modulus * std::sqrt(middle);
+            material.parameters.push_back({key, start, 1e-8 * start, 1e8 * start, true});
+        }
+    }
+    return material;
+}
+
+Material candidate(const std::string& name, double modulus, const Window& window) {
     if (name == "elastic") return elastic(modulus);
     if (name == "standard") return prony(name, 1, modulus, window);
-    if (name == "spectrum") return spectrum(settings.spectrum.value_or(SpectrumSettings{}), modulus, window);
-    return prony(name, static_cast<std::size_t>(std::stoul(name.substr(5))), modulus, window);  // "pronyN", read
+    if (name.rfind("prony", 0) == 0) {
+        return prony(name, static_cast<std::size_t>(std::stoul(name.substr(5))), modulus, window);  // "pronyN", read
+    }
+    return registry_material(rheology::material_model(name), modulus, window);  // registry_candidate, read
 }
+
 
 // The case with an elastic body of modulus `modulus`: the base of every candidate. Refuses a compressible body or a
 // viscoelastic indenter, whose material the candidates would silently drop.
@@ -162,6 +224,35 @@ CandidateFit fit_material(const io::FitCase& base, const Material& material, con
     CandidateFit fitted{material.name, fit(problem), base, material.grid, 0.0, 0.0};
     fitted.fitted_case.model.set_table("material", material_text(material, fitted.result.values.data() + offset));
     return fitted;
+}
+
+// The weighted residual sum of squares of a fit, up to a monotone map: n ln(RSS / n) (AIC without its 2k).
+double log_residual(const FitResult& result) { return result.aic - 2.0 * static_cast<double>(result.free_count); }
+
+// The one-term fit `one` as a start of the spectrum `grid_material` (whose grid holds its time): G_inf and the
+// modulus at the nearest grid time from it, the other moduli 0; its indenter values, contact points and baselines.
+CandidateFit spectrum_from_one_term(const io::FitCase& base, Material grid_material, const CandidateFit& one,
+                                    std::vector<Curve> curves, const std::vector<std::vector<double>>& penalty) {
+    const std::size_t offset = base.parameters.size();
+    const std::vector<double>& values = one.result.values;
+    const auto& grid = grid_material.grid;
+    std::size_t nearest = 0;
+    for (std::size_t j = 1; j < grid.size(); ++j) {
+        const double tau = values[offset + 2];
+        if (std::abs(std::log(grid[j] / tau)) < std::abs(std::log(grid[nearest] / tau))) nearest = j;
+    }
+    auto& parameters = grid_material.parameters;
+    parameters[0].start = std::min(values[offset], parameters[0].upper);
+    for (std::size_t j = 0; j < grid.size(); ++j) {
+        parameters[1 + j].start = j == nearest ? std::min(values[offset + 1], parameters[1 + j].upper) : 0.0;
+    }
+    for (std::size_t c = 0; c < curves.size(); ++c) {
+        const CurveFit& fitted = one.result.curves[c];
+        if (base.settings.contact_point == ContactPointMode::fit) curves[c].contact_depth = fitted.contact_depth;
+        if (base.settings.baseline == BaselineMode::fit) curves[c].force_baseline = fitted.baseline;
+    }
+    const std::vector<double> indenter(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(offset));
+    return fit_material(base, std::move(grid_material), indenter, curves, penalty);
 }
 
 // The smoothing penalty of a spectrum (SpectrumSettings::smoothing): rows w (G_j+1 - G_j) / G_e, w = s sqrt(n).
@@ -296,7 +387,17 @@ ModelChoice fit_candidates(const io::FitCase& fit_case, const std::vector<Curve>
             choice.fits.push_back(reference);
             continue;
         }
-        const Material material = candidate(name, settings, choice.modulus_scale, window);
+        // A spectrum is never worse than the best one-term fit (the standard solid): its grid holds that fit's time,
+        // and when the fit from the linear start ends with larger residuals, it is fitted again from that fit.
+        std::optional<CandidateFit> one_term;
+        if (name == "spectrum") {
+            const Material standard = prony("standard", 1, choice.modulus_scale, window);
+            one_term = fit_material(base, standard, indenter, started_curves, {});
+        }
+        const Material material =
+            one_term ? spectrum(settings.spectrum.value_or(SpectrumSettings{}), choice.modulus_scale, window,
+                                one_term->result.values[offset + 2])
+                     : candidate(name, choice.modulus_scale, window);
         Material started = material;
         const double smoothing = material.spectrum() ? settings.spectrum.value_or(SpectrumSettings{}).smoothing : 0.0;
         const auto penalty = smoothing_penalty(material, offset, smoothing, choice.modulus_scale, curves);
@@ -307,7 +408,12 @@ ModelChoice fit_candidates(const io::FitCase& fit_case, const std::vector<Curve>
             const auto linear = linear_start(base, material, indenter, started_curves, penalty);
             for (std::size_t j = 0; j < linear.size(); ++j) started.parameters[j].start = linear[j];
         }
-        choice.fits.push_back(fit_material(base, started, indenter, started_curves, penalty));
+        CandidateFit fitted = fit_material(base, started, indenter, started_curves, penalty);
+        if (one_term && log_residual(fitted.result) > log_residual(one_term->result)) {
+            CandidateFit again = spectrum_from_one_term(base, material, *one_term, started_curves, penalty);
+            if (log_residual(again.result) < log_residual(fitted.result)) fitted = std::move(again);
+        }
+        choice.fits.push_back(std::move(fitted));
     }
 
     std::stable_sort(choice.fits.begin(), choice.fits.end(),

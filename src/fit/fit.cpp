@@ -23,6 +23,7 @@
 #include "rebound_cost.hpp"
 #include "result_check.hpp"
 #include "statistical_convergence.hpp"
+#include "young_moduli.hpp"
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
 
@@ -300,6 +301,8 @@ FitResult solve(const FitProblem& problem) {
         result.values.push_back(scales.to_value(j, shared[j]));
     }
     describe_uncertainty(problem, scales, costs, rebounds, shared, nuisance, result);
+    if (result.converged && result.misfit) result.status = "converged, misfit";
+    describe_young_moduli(problem, result);
     result.evaluations = evaluations;
     result.element_evaluations = element_evaluations;
     try {

@@ -16,6 +16,24 @@ namespace mdr::fit {
 namespace {
 
 constexpr double normal_quantile_95 = 1.959963984540054;
+
+// The two-sided 95 % quantile of Student's t with `dof` degrees of freedom: for dof >= 3 the Cornish-Fisher
+// expansion about the normal quantile x (Abramowitz & Stegun 26.7.5, four terms; 3.177 at dof = 3 against the exact
+// 3.182, 2.1604 at 13, exact to 4 digits); below, interpolated in log between the exact 12.706 (1), 4.303 (2), 3.182.
+double student_quantile_95(double dof) {
+    if (dof < 3.0) {
+        const double exact[3] = {12.7062047, 4.30265273, 3.18244631};
+        const double d = std::max(dof, 1.0);
+        const auto i = static_cast<std::size_t>(std::min(d, 2.0)) - 1;
+        return std::exp(std::log(exact[i]) + (d - static_cast<double>(i + 1)) * std::log(exact[i + 1] / exact[i]));
+    }
+    const double x = normal_quantile_95, x2 = x * x;
+    const double g1 = (x2 + 1.0) * x / 4.0;
+    const double g2 = ((5.0 * x2 + 16.0) * x2 + 3.0) * x / 96.0;
+    const double g3 = (((3.0 * x2 + 19.0) * x2 + 17.0) * x2 - 15.0) * x / 384.0;
+    const double g4 = ((((79.0 * x2 + 776.0) * x2 + 1482.0) * x2 - 1920.0) * x2 - 945.0) * x / 92160.0;
+    return x + g1 / dof + g2 / (dof * dof) + g3 / (dof * dof * dof) + g4 / (dof * dof * dof * dof);
+}
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 // A relaxation or retardation time of the case, by its key: tau, tau1, lambda..., or the second value of a Prony
@@ -35,7 +53,54 @@ void flag(FitResult& result, std::set<std::string>& flagged, const std::string& 
 struct Stacked {
     Eigen::MatrixXd jacobian;
     Eigen::VectorXd residuals;
+    std::vector<Eigen::Index> curve_begin;  // the first row of each measured curve (rebound rows follow them)
 };
+
+// Lag-1 autocorrelation of the residuals r[begin, begin + count) (in time order).
+double lag_one_correlation(const Eigen::VectorXd& r, Eigen::Index begin, Eigen::Index count) {
+    if (count < 3) return 0.0;
+    const double mean = r.segment(begin, count).mean();
+    double lagged = 0.0, squared = 0.0;
+    for (Eigen::Index i = begin; i < begin + count; ++i) {
+        squared += (r[i] - mean) * (r[i] - mean);
+        if (i + 1 < begin + count) lagged += (r[i] - mean) * (r[i + 1] - mean);
+    }
+    return squared > 0.0 ? lagged / squared : 0.0;
+}
+
+// The AR(1) coefficient of a curve's errors from the lag-1 autocorrelation rho of its n residuals: 0 (white) unless
+// rho is beyond chance for white residuals (above 2 / sqrt(n): their rho has standard deviation 1 / sqrt(n));
+// else rho plus its bias (1 + 4 rho) / n (Marriott & Pope 1954, Biometrika 41:390, for an estimated mean), at most
+// (n - 1) / (n + 1) (n_eff >= 1).
+double error_correlation(double rho, Eigen::Index count) {
+    const auto n = static_cast<double>(count);
+    if (!(rho > 2.0 / std::sqrt(n))) return 0.0;
+    return std::min(rho + (1.0 + 4.0 * rho) / n, (n - 1.0) / (n + 1.0));
+}
+
+// P x for the AR(1) correlation matrix P_ij = phi^|i - j| (in place): a forward and a backward recursion,
+// P x = f + b - x with f_i = x_i + phi f_(i-1), b_i = x_i + phi b_(i+1).
+void apply_correlation(Eigen::Ref<Eigen::VectorXd> x, double phi) {
+    const Eigen::Index m = x.size();
+    Eigen::VectorXd forward = x, backward = x;
+    for (Eigen::Index i = 1; i < m; ++i) forward[i] += phi * forward[i - 1];
+    for (Eigen::Index i = m - 2; i >= 0; --i) backward[i] += phi * backward[i + 1];
+    x = forward + backward - x;
+}
+
+// A curve's residual RMS is above 1e-5 of its largest |value|, the model's own accuracy (the element model's
+// discretisation error is ~1e-6 (1000 / N)^2 of the peak, see default_fit_elements): below it the residuals are
+// the model's numerics (noise-free data), neither a misfit nor errors to inflate.
+bool above_model_accuracy(const CurveFit& curve) {
+    double largest = 0.0;
+    for (double value : curve.measured) largest = std::max(largest, std::abs(value));
+    return curve.rms_residual > 1e-5 * largest;
+}
+
+// A curve the model cannot follow: its residual RMS above misfit_ratio times its noise and the model's accuracy.
+bool is_misfit(const CurveFit& curve) {
+    return curve.rms_residual > misfit_ratio * curve.noise && above_model_accuracy(curve);
+}
 
 // One quantity of a rebound data set: measured, model, speeds and noise.
 CurveFit rebound_entry(const ReboundData& data, ReboundQuantity quantity, const std::vector<ImpactValues>& impacts) {
@@ -67,9 +132,10 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
     for (const auto& cost : costs) rows += static_cast<std::size_t>(cost->num_residuals());
     for (const auto& cost : rebounds) rows += static_cast<std::size_t>(cost->num_residuals());
     Stacked stacked{Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(k + m * costs.size())),
-                    Eigen::VectorXd(static_cast<Eigen::Index>(rows))};
+                    Eigen::VectorXd(static_cast<Eigen::Index>(rows)), {}};
     Eigen::Index row = 0;
     for (std::size_t c = 0; c < costs.size(); ++c) {
+        stacked.curve_begin.push_back(row);
         const CurveCost& cost = *costs[c];
         const CurveModel& prepared = cost.prepared();
         const std::size_t n = prepared.used.size();
@@ -128,6 +194,58 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
     return stacked;
 }
 
+// Autocorrelated residuals (a misfit's systematic ones, or correlated noise) carry less information than their
+// count. Each curve's errors are taken as AR(1) with coefficient phi (error_correlation), correlation matrix
+// P_ij = phi^|i - j| within the curve (identity for rebound data and white curves), and the covariance of the least-
+// squares estimate is the sandwich s^2 (J^T J)^+ J^T P J (J^T J)^+ (White 1980, Econometrica 48:817, with a known
+// correlation structure; s^2 (J^T J)^+ when every phi = 0). A curve's effective points are
+// n_eff = n (1 - phi) / (1 + phi) (the sum of phi^|k| over all lags multiplies the variance of a mean of n >> 1
+// such errors), at least 1. Sets each curve's correlation and effective points and the error kind.
+Eigen::MatrixXd honest_covariance(const Stacked& stacked, double variance_scale, const Eigen::MatrixXd& pseudo_inverse,
+                                  FitResult& result) {
+    Eigen::MatrixXd correlated = stacked.jacobian;  // P J
+    double points = 0.0, effective = 0.0;
+    for (std::size_t c = 0; c < stacked.curve_begin.size(); ++c) {
+        const Eigen::Index begin = stacked.curve_begin[c];
+        CurveFit& curve = result.curves[c];
+        const auto count = static_cast<Eigen::Index>(curve.time.size());
+        curve.residual_correlation = lag_one_correlation(stacked.residuals, begin, count);
+        const double phi = above_model_accuracy(curve) ? error_correlation(curve.residual_correlation, count) : 0.0;
+        curve.effective_points = std::max(static_cast<double>(count) * (1.0 - phi) / (1.0 + phi), 1.0);
+        for (Eigen::Index j = 0; phi > 0.0 && j < correlated.cols(); ++j) {
+            apply_correlation(correlated.col(j).segment(begin, count), phi);
+        }
+        points += static_cast<double>(count);
+        effective += curve.effective_points;
+    }
+    if (effective == points) {
+        result.error_kind = "white noise (chi-square)";
+        return variance_scale * pseudo_inverse;
+    }
+    result.error_kind =
+        fmt::format("inflated for correlated residuals (n_eff = {:.1f} of {:.0f} points)", effective, points);
+    const Eigen::MatrixXd meat = stacked.jacobian.transpose() * correlated;
+    // The fit absorbs more of correlated errors than k white degrees of freedom: E[RSS] = sigma^2 (n - tr(H P)),
+    // H = J (J^T J)^+ J^T, so s^2 = RSS / (n - tr((J^T J)^+ J^T P J)) (k when P = I, as variance_scale).
+    const double n = static_cast<double>(stacked.residuals.size());
+    const double absorbed = (pseudo_inverse * meat).trace();
+    const double correlated_scale = stacked.residuals.squaredNorm() / std::max(n - absorbed, 1.0);
+    return std::max(variance_scale, correlated_scale) * pseudo_inverse * meat * pseudo_inverse;
+}
+
+// Flags each curve the model cannot follow (is_misfit) on the curve (the fit's status says "misfit").
+void flag_misfits(FitResult& result) {
+    for (auto& curve : result.curves) {
+        if (curve.rebound || !is_misfit(curve)) continue;
+        const std::string reason = fmt::format(
+            "misfit: residual RMS {:.4g} is {:.3g} x the noise {:.4g} (lag-1 correlation {:.2f}): the model cannot "
+            "follow the data; the errors include the misfit (error_kind)",
+            curve.rms_residual, curve.rms_residual / curve.noise, curve.noise, curve.residual_correlation);
+        curve.flags.push_back(reason);
+        result.misfit = true;
+    }
+}
+
 }  // namespace
 
 void describe_uncertainty(const FitProblem& problem, const ParameterScales& scales,
@@ -163,18 +281,28 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
     const double threshold = 1e-8 * (singular.size() > 0 ? singular[0] : 0.0);
     const double dof = std::max(n - static_cast<double>(columns), 1.0);
     const double variance_scale = stacked.residuals.squaredNorm() / dof;
-    Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(columns), static_cast<Eigen::Index>(columns));
+    // (J^T J)^+ on the determined directions
+    const auto size = static_cast<Eigen::Index>(columns);
+    Eigen::MatrixXd pseudo_inverse = Eigen::MatrixXd::Zero(size, size);
     std::vector<bool> undetermined(columns, false);
     for (Eigen::Index s = 0; s < singular.size(); ++s) {
         const Eigen::VectorXd direction = svd.matrixV().col(s);
         if (singular[s] > threshold) {
-            covariance += direction * direction.transpose() * (variance_scale / (singular[s] * singular[s]));
+            pseudo_inverse += direction * direction.transpose() / (singular[s] * singular[s]);
         } else {
             for (std::size_t j = 0; j < columns; ++j) {
                 if (std::abs(direction[static_cast<Eigen::Index>(j)]) > 1e-3) undetermined[j] = true;
             }
         }
     }
+    const Eigen::MatrixXd covariance = honest_covariance(stacked, variance_scale, pseudo_inverse, result);
+    // The intervals' quantile: Student's t with the effective points less the free parameters (s^2 is estimated).
+    double effective = n;
+    for (std::size_t c = 0; c < costs.size(); ++c) {
+        effective -= static_cast<double>(result.curves[c].time.size()) - result.curves[c].effective_points;
+    }
+    const double quantile = student_quantile_95(std::max(effective - static_cast<double>(columns), 1.0));
+    flag_misfits(result);
 
     std::set<std::string> flagged;
     for (std::size_t j = 0; j < k; ++j) {
@@ -190,22 +318,27 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
         }
         if (scales.scale[j] == 0.0) {  // logarithmic: sigma is relative
             result.standard_errors.push_back(value * sigma);
-            result.lower_95.push_back(value * std::exp(-normal_quantile_95 * sigma));
-            result.upper_95.push_back(value * std::exp(normal_quantile_95 * sigma));
+            result.lower_95.push_back(value * std::exp(-quantile * sigma));
+            result.upper_95.push_back(value * std::exp(quantile * sigma));
         } else {
             result.standard_errors.push_back(scales.scale[j] * sigma);
-            result.lower_95.push_back(value - normal_quantile_95 * scales.scale[j] * sigma);
-            result.upper_95.push_back(value + normal_quantile_95 * scales.scale[j] * sigma);
+            result.lower_95.push_back(value - quantile * scales.scale[j] * sigma);
+            result.upper_95.push_back(value + quantile * scales.scale[j] * sigma);
         }
         const auto& parameter = problem.parameters[j];
         const double span = scales.scale[j] == 0.0 ? std::log(parameter.upper / parameter.lower)
                                                    : (parameter.upper - parameter.lower) / scales.scale[j];
         const double from_lower = scales.to_internal(j, value) - scales.to_internal(j, parameter.lower);
         const double to_upper = scales.to_internal(j, parameter.upper) - scales.to_internal(j, value);
-        if (std::min(from_lower, to_upper) < 1e-4 * span) {
+        // At a bound: within 1e-4 of the span (internal scale) and, in value, within 1e-3 of the bound's magnitude
+        // or of the standard error (a value 0.0145 away from a lower bound 0 with a span of 1e9 is not at it).
+        const bool lower_nearer = from_lower < to_upper;
+        const double bound = lower_nearer ? parameter.lower : parameter.upper;
+        const double tolerance = 1e-3 * std::max(std::abs(bound), result.standard_errors[j]);
+        if (std::min(from_lower, to_upper) < 1e-4 * span && std::abs(value - bound) <= tolerance) {
             flag(result, flagged, result.names[j],
-                 fmt::format("{} = {:.6g} is at its {} bound: the data push it beyond", result.names[j], value,
-                             from_lower < to_upper ? "lower" : "upper"));
+                 fmt::format("{} = {:.6g} is at its {} bound {:.6g}: the data push it beyond", result.names[j], value,
+                             lower_nearer ? "lower" : "upper", bound));
         }
         if (result.standard_errors[j] > std::abs(value)) {
             flag(result, flagged, result.names[j],

@@ -11,7 +11,10 @@ namespace mdr::io {
 namespace {
 
 bool known_candidate(const std::string& name) {
-    if (name == "elastic" || name == "standard" || name == "spectrum") return true;
+    if (name == "spectrum") return true;
+    for (const auto& model : rheology::material_models()) {
+        if (model.name == name) return fit::registry_candidate(model);
+    }
     if (name.size() < 6 || name.rfind("prony", 0) != 0) return false;
     const std::string count = name.substr(5);
     if (!std::all_of(count.begin(), count.end(), [](char c) { return c >= '0' && c <= '9'; }) || count.size() > 2) {
@@ -19,6 +22,15 @@ bool known_candidate(const std::string& name) {
     }
     const std::size_t terms = std::stoul(count);
     return terms >= 1 && terms <= fit::max_prony_terms && count.front() != '0';
+}
+
+// The registry's models that can be candidates, comma-separated, in the registry's order.
+std::string registry_candidate_names() {
+    std::string names;
+    for (const auto& model : rheology::material_models()) {
+        if (fit::registry_candidate(model)) names += (names.empty() ? "" : ", ") + model.name;
+    }
+    return names;
 }
 
 }  // namespace
@@ -34,7 +46,7 @@ fit::CandidateSettings read_candidates(TableReader& fit) {
             const std::string& name = settings.candidates[i];
             if (!known_candidate(name)) {
                 throw InvalidInput(fmt::format("fit.candidates[{}]", i), "\"" + name + "\"",
-                                   fmt::format("one of elastic, standard, prony1 ... prony{}, spectrum",
+                                   fmt::format("one of {}, prony1 ... prony{}, spectrum", registry_candidate_names(),
                                                fit::max_prony_terms));
             }
             if (std::find(settings.candidates.begin(), settings.candidates.begin() + static_cast<std::ptrdiff_t>(i),

@@ -83,6 +83,11 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
         correlation.push_back({std::move(row)});
     }
     for (const auto& entry : result.undetermined) undetermined.emplace_back(entry.name, Document{entry.reason});
+    Document::Table young_moduli, young_errors;
+    for (const auto& young : result.young_moduli) {
+        young_moduli.emplace_back(young.name, number_or_null(young.value));
+        young_errors.emplace_back(young.name, number_or_null(young.standard_error));
+    }
     const auto flag_list = [](const std::vector<std::string>& flags) {
         Document::List list;
         for (const auto& flag : flags) list.push_back({flag});
@@ -108,15 +113,21 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
         }
         entry.emplace_back("noise", number_or_null(curve.noise));
         entry.emplace_back("rms_residual", number_or_null(curve.rms_residual));
+        entry.emplace_back("residual_correlation", number_or_null(curve.residual_correlation));
+        entry.emplace_back("effective_points", number_or_null(curve.effective_points));
         entry.emplace_back("flags", flag_list(curve.flags));
         curves.push_back({std::move(entry)});
     }
     return {Document::Table{
         {"status", {result.status}},
         {"converged", {result.converged}},
+        {"misfit", {result.misfit}},
         {"parameters", {std::move(parameters)}},
         {"standard_errors", {std::move(errors)}},
+        {"error_kind", {result.error_kind}},
         {"intervals_95", {std::move(intervals)}},
+        {"young_moduli", {std::move(young_moduli)}},
+        {"young_moduli_errors", {std::move(young_errors)}},
         {"correlation", {std::move(correlation)}},
         {"undetermined", {std::move(undetermined)}},
         {"flags", flag_list(result.flags)},

@@ -78,6 +78,11 @@ def test_recovers_the_modulus_and_writes_the_result_directory(run_mdr, fit_case,
     assert summary["status"] == "converged"
     G, error = summary["parameters"]["material.G"], summary["standard_errors"]["material.G"]
     assert abs(G - G_TRUE) < 4.0 * error and error < 0.02 * G_TRUE
+    # Young's modulus of the incompressible body, E = 2 (1 + 0.5) G, beside G (fit.json and the console).
+    assert summary["young_moduli"] == {"material.G": pytest.approx(3.0 * G, rel=1e-15)}
+    assert summary["young_moduli_errors"] == {"material.G": pytest.approx(3.0 * error, rel=1e-15)}
+    assert "(E = " in result.stdout and "standard errors: " in result.stdout
+    assert summary["misfit"] is False and summary["error_kind"] == "white noise (chi-square)"
     curve = summary["curves"][0]
     assert abs(curve["contact_point"] - CONTACT) < 4.0 * curve["contact_point_error"] + 2e-8
     assert abs(curve["baseline"] - BASELINE) < 4.0 * curve["baseline_error"]

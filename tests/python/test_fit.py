@@ -119,7 +119,11 @@ def test_raw_afm_arrays_are_the_case_files_afm_columns():
 
 def test_the_real_chiaro_curve_of_the_examples():
     result = mdr.fit(REPO_ROOT / "examples" / "fit" / "chiaro-standard.toml")
-    assert result.status == "converged"
+    # A standard solid cannot follow this real load-unload: residual 5.4 x the noise, lag-1 correlation 0.99. The fit
+    # converges and says so ("converged, misfit", a flag on the curve); its errors are the correlated residuals'.
+    assert result.status == "converged, misfit" and result.summary["converged"] and result.summary["misfit"]
+    assert result.summary["curves"][0]["flags"][0].startswith("misfit: residual RMS")
+    assert result.summary["error_kind"].startswith("inflated for correlated residuals (n_eff = ")
     # Its loading curve does not need a relaxation branch: the fit says so rather than report numbers for it.
     assert set(result.summary["undetermined"]) >= {"material.G1"}
     assert 30.0 < result.parameters["material.G_inf"] < 50.0

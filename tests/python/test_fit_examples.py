@@ -31,7 +31,8 @@ def test_example_fit_case_parses_and_fits(path):
     for data in case["fit"]["data"]:
         data["file"] = str((path.parent / data["file"]).resolve())
     result = mdr.fit(case)
-    assert result.status == "converged" or result.status.startswith("did not converge"), result.status
+    assert result.status in ("converged", "converged, misfit") or result.status.startswith("did not converge"), \
+        result.status
     assert set(result.parameters) == set(case["fit"]["free"])
     assert all(math.isfinite(value) for value in result.parameters.values())
     summary = result.summary

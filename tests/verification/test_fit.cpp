@@ -276,6 +276,64 @@ TEST(Fit, NinetyFivePercentIntervalsCoverTheTruth) {
     }
 }
 
+TEST(Fit, AtABoundOnlyWhenTheValueIsThere) {
+    // G_inf fitted on a linear scale within [0, 1e11]: the true 1e6 is 1e-5 of that span from the lower bound 0, and
+    // was once flagged "at its lower bound" (as a spectrum's G[3] = 0.0145 with bound 0). It is not at it.
+    const reference::PronyMaterial truth{1e6, 0.0, {{2e6, 0.5}}};
+    auto parameters = standard_solid_parameters(1.2e6, 2e6, 0.5);
+    parameters[0].lower = 0.0;
+    parameters[0].upper = 1e11;
+    parameters[0].logarithmic = false;
+    const auto result = fit::fit(noise_free_problem(load_hold_curve(truth, 1.0, 4.0, 201), parameters));
+    expect_relative(result, {1e6, 2e6, 0.5}, 1e-6);
+    for (const auto& entry : result.undetermined) EXPECT_NE(entry.name, "material.G_inf") << entry.reason;
+
+    // A time held at its upper bound (the data want a longer one) is at it, and the message gives the bound.
+    auto held = standard_solid_parameters(1e6, 2e6, 0.2);
+    held[2].upper = 0.3;
+    const auto at_bound = fit::fit(noise_free_problem(load_hold_curve(truth, 1.0, 4.0, 201), held));
+    bool flagged = false;
+    for (const auto& entry : at_bound.undetermined) {
+        flagged |= entry.reason == "material.tau1 = 0.3 is at its upper bound 0.3: the data push it beyond";
+    }
+    EXPECT_TRUE(flagged);
+}
+
+TEST(Fit, YoungModuliOfTheFittedShearModuli) {
+    // E = 2 (1 + nu) G with nu = 0.5 for every key whose registry unit is Pa: G_inf and the modulus of a Prony term
+    // (terms[0][0]), not its time (terms[0][1]). A compressible body (a bulk part: shear_material set) has none, and
+    // a flag says why.
+    const reference::PronyMaterial truth{1e6, 0.0, {{2e6, 0.5}}};
+    fit::FitProblem problem = noise_free_problem(load_hold_curve(truth, 1.0, 4.0, 201), {});
+    const auto prony_sphere = [](const std::vector<double>& values) {
+        return drivers::ContactCase{.title = "fit model",
+                                    .material = rheology::Rheology::prony(values[0], {{values[1], values[2]}}),
+                                    .indenter = profile::make_sphere(R),
+                                    .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
+                                    .end_time = 1.0};
+    };
+    problem.model = prony_sphere;
+    problem.parameters = {{"material.G_inf", 1.2e6, 1e3, 1e9},
+                          {"material.terms[0][0]", 1.5e6, 1e3, 1e9},
+                          {"material.terms[0][1]", 0.4, 1e-3, 1e3}};
+    const auto result = fit::fit(problem);
+    ASSERT_EQ(result.young_moduli.size(), 2u);
+    EXPECT_EQ(result.young_moduli[0].name, "material.G_inf");
+    EXPECT_EQ(result.young_moduli[1].name, "material.terms[0][0]");
+    EXPECT_NEAR(result.young_moduli[0].value / 3e6, 1.0, 1e-6);
+    EXPECT_NEAR(result.young_moduli[1].value / 6e6, 1.0, 1e-6);
+
+    problem.model = [prony_sphere](const std::vector<double>& values) {
+        auto model = prony_sphere(values);
+        model.shear_material = model.material;  // as a case with a bulk part folds it in
+        return model;
+    };
+    const auto compressible = fit::fit(problem);
+    EXPECT_TRUE(compressible.young_moduli.empty());
+    ASSERT_FALSE(compressible.flags.empty());
+    EXPECT_EQ(compressible.flags.back().rfind("young_moduli: not reported: the body is compressible", 0), 0u);
+}
+
 TEST(Fit, TimesTheDataCannotDetermineAreFlagged) {
     // A relaxation time ten times longer than the record: flagged, not reported as a confident number.
     const reference::PronyMaterial slow{1e6, 0.0, {{2e6, 40.0}}};

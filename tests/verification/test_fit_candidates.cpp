@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <ctime>
 #include <cmath>
 #include <random>
@@ -157,6 +158,22 @@ TEST(FitCandidates, SpectrumReproducesTheRelaxationFunction) {
     EXPECT_LT(errors[1], errors[0]);
 }
 
+TEST(FitCandidates, SpectrumIsNeverWorseThanTheOneTermFit) {
+    // A standard solid with its time off the grid (0.37 s; 2 per decade put times at 0.316 and 1 s), force noise
+    // 1e-5 of the peak: on its own grid the spectrum's residuals exceed the standard solid's (the grid cannot hold
+    // exp(-t / 0.37)); its grid now holds the one-term fit's time, and its residuals are at most the standard's.
+    const reference::PronyMaterial truth{1e6, 0.0, {{2e6, 0.37}}};
+    const auto curve = ramp_hold(truth, 5e-7, 5);
+    const auto choice = fit::fit_candidates(candidate_case("candidates = [\"standard\", \"spectrum\"]\n"), {curve});
+    const auto& one = named(choice, "standard");
+    const auto& spectrum = named(choice, "spectrum");
+    ASSERT_TRUE(one.result.converged) << one.result.status;
+    EXPECT_LE(spectrum.result.rms_residual, one.result.rms_residual * (1.0 + 1e-6));
+    const auto& grid = spectrum.relaxation_times;
+    EXPECT_NE(std::find_if(grid.begin(), grid.end(), [&](double tau) { return std::abs(tau / 0.37 - 1.0) < 1e-3; }),
+              grid.end());
+}
+
 TEST(FitCandidates, SmoothingEvensTheSpectrum) {
     const reference::PronyMaterial truth{1e6, 0.0, {{2e6, 0.05}, {1e6, 1.0}}};
     const auto curve = ramp_hold(truth, 5e-6, 1);
@@ -169,6 +186,32 @@ TEST(FitCandidates, SmoothingEvensTheSpectrum) {
                 relaxation_error(b, truth));
     EXPECT_LT(roughness(b), roughness(a));
     EXPECT_GE(b.result.rms_residual, a.result.rms_residual * (1.0 - 1e-9));
+}
+
+TEST(FitCandidates, EveryRegistryModelOfNumbersIsACandidate) {
+    // Once refused ("one of elastic, standard, prony1 ... prony8, spectrum"): power_law, the default model of cell
+    // mechanics, springpots and fractional models. Maxwell data (G(t) = G exp(-t/tau), Lee-Radok quadrature): the
+    // maxwell candidate recovers G and tau within 4 standard errors and has the smallest BIC.
+    EXPECT_NO_THROW(candidate_case("candidates = [\"springpot\", \"fractional_kelvin_voigt\", \"fractional_maxwell\", "
+                                   "\"fractional_standard\", \"viscous\"]\n"));
+    EXPECT_THROW(candidate_case("candidates = [\"prony\"]\n"), InvalidInput);  // its terms are pairs: prony1 ... prony8
+    EXPECT_THROW(candidate_case("candidates = [\"table\"]\n"), InvalidInput);
+    const reference::PronyMaterial truth{0.0, 0.0, {{2e6, 0.5}}};
+    const auto curve = ramp_hold(truth, noise, 21);
+    const auto choice =
+        fit::fit_candidates(candidate_case("candidates = [\"maxwell\", \"power_law\", \"kelvin_voigt\"]\n"), {curve});
+    ASSERT_EQ(choice.fits.size(), 3u);
+    EXPECT_EQ(choice.fits.front().name, "maxwell");
+    const auto& maxwell = named(choice, "maxwell");
+    ASSERT_TRUE(maxwell.result.converged) << maxwell.result.status;
+    ASSERT_EQ(maxwell.result.names, (std::vector<std::string>{"material.G", "material.tau"}));
+    EXPECT_NEAR(maxwell.result.values[0], 2e6, 4.0 * maxwell.result.standard_errors[0]);
+    EXPECT_NEAR(maxwell.result.values[1], 0.5, 4.0 * maxwell.result.standard_errors[1]);
+    const auto& power_law = named(choice, "power_law");
+    EXPECT_EQ(power_law.result.names, (std::vector<std::string>{"material.G0", "material.beta"}));
+    const std::string fitted_text = power_law.fitted_case.model.text();
+    EXPECT_NE(fitted_text.find("model = 'power_law'"), std::string::npos) << fitted_text;
+    EXPECT_NE(fitted_text.find("beta = "), std::string::npos) << fitted_text;
 }
 
 TEST(FitCandidates, BadCandidatesAreRefused) {

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "mdr/rheology/material_models.hpp"
+
 namespace mdr::fit {
 
 /// The spectrum mode: relaxation times fixed on a logarithmic grid over the data's time window, the moduli of
@@ -25,9 +27,23 @@ inline constexpr double max_per_decade = 20.0;
 /// The most terms of a `pronyN` candidate.
 inline constexpr std::size_t max_prony_terms = 8;
 
+/// A model of the material registry (rheology::material_models) can be a candidate of its own name when every key
+/// it requires is a number (not `prony`'s terms or a `table`): power_law, springpot, the fractional models, maxwell,
+/// kelvin_voigt, viscous, and elastic and standard (which keep their own parametrisation, see fit_candidates).
+inline bool registry_candidate(const rheology::MaterialModel& model) {
+    bool any = false;
+    for (const auto& parameter : model.parameters) {
+        if (!parameter.required) continue;
+        if (parameter.kind != rheology::ParameterKind::number) return false;
+        any = true;
+    }
+    return any;
+}
+
 /// The materials a fit case compares, or fits on a grid.
 struct CandidateSettings {
-    /// `fit.candidates`: "elastic", "standard" (one term), "pronyN" (N terms), "spectrum"; empty: one model.
+    /// `fit.candidates`: "elastic", "standard" (one term), "pronyN" (N terms), "spectrum", or the name of a registry
+    /// model (registry_candidate); empty: one model.
     std::vector<std::string> candidates;
     std::optional<SpectrumSettings> spectrum;  ///< `[fit.spectrum]`, or the defaults for a "spectrum" candidate
     /// True when the case fits its own material only (no candidates, no spectrum).

@@ -129,6 +129,11 @@ struct CurveFit {
     double baseline_error = 0.0;    ///< its standard error [N] (0 unless fitted)
     double noise = 0.0;             ///< the measurement noise of the fitted quantity [N or m]
     double rms_residual = 0.0;      ///< RMS of model - measured
+    /// Lag-1 autocorrelation of the residuals (rows in time order); 0 for rebound data.
+    double residual_correlation = 0.0;
+    /// Points that count as independent in the errors (effective sample size, see describe_uncertainty): the
+    /// curve's points when its residuals are white, n (1 - rho) / (1 + rho) when they are autocorrelated.
+    double effective_points = 0.0;
     /// Rebound data only: the quantity compared (`fitted` is then meaningless); nullopt for a measured curve.
     std::optional<ReboundQuantity> rebound{};
     double mass = 0.0;              ///< rebound data only: the impactor's mass [kg]
@@ -164,17 +169,37 @@ struct Undetermined {
     std::string reason;  ///< one line, e.g. "tau1 = 300 s is beyond 10 x the record (30 s)"
 };
 
+/// Young's modulus of a fitted shear modulus: E = 2 (1 + nu) G, nu = 0.5 (the case's body is incompressible), so
+/// E = 3 G and its standard error 3 times G's.
+struct YoungModulus {
+    std::string name;             ///< the fitted shear modulus' key, e.g. `material.G_inf`
+    double value = 0.0;           ///< E [Pa]
+    double standard_error = 0.0;  ///< its standard error [Pa] (NaN when G's is undetermined)
+};
+
 /// The outcome of a fit. A fit that did not converge still has its last values, its status says why.
 struct FitResult {
-    std::string status;                      ///< "converged", or the reason it stopped
-    bool converged = false;                  ///< status == "converged"
+    /// "converged"; "converged, misfit" when the model cannot follow the data (`misfit`); or the reason it stopped.
+    std::string status;
+    bool converged = false;                  ///< the solver converged (status "converged" or "converged, misfit")
+    /// The model cannot follow the data: a curve's residual RMS is above misfit_ratio times its noise (and above
+    /// the model's own accuracy); a flag names the curve. The result is still the best fit.
+    bool misfit = false;
+    /// What the standard errors are (fit.json `error_kind`): "white noise (chi-square)", or, when a curve's residuals
+    /// are autocorrelated (AR(1) sandwich, see describe_uncertainty), "inflated for correlated residuals (n_eff = 16.2
+    /// of 301 points)".
+    std::string error_kind;
     std::vector<std::string> names;          ///< the free parameters, in the order of FitProblem::parameters
     std::vector<double> values;              ///< fitted values
     std::vector<double> standard_errors;     ///< one standard deviation, first order (NaN when undetermined)
-    std::vector<double> lower_95;            ///< 95 % confidence interval (on the logarithmic scale where fitted so)
+    /// 95 % confidence interval (Student's t quantile; on the logarithmic scale where fitted so)
+    std::vector<double> lower_95;
     std::vector<double> upper_95;            ///< see lower_95
     std::vector<std::vector<double>> correlation;  ///< correlation matrix of the free parameters
     std::vector<Undetermined> undetermined;  ///< parameters the data cannot determine
+    /// E for every fitted shear modulus (keys whose registry unit is Pa, see young_moduli), in the order of `names`;
+    /// empty for a compressible body (its nu changes with time), which a flag then says.
+    std::vector<YoungModulus> young_moduli;
     /// The fit's warnings, one line each (fit.json `flags`), e.g. a model that cannot follow the data; each curve's
     /// own are in CurveFit::flags.
     std::vector<std::string> flags;
@@ -195,6 +220,10 @@ struct FitResult {
     double wall_seconds = 0.0;               ///< wall time of the fit
     MaterialBands material;                  ///< the identified material functions with their bands
 };
+
+/// A curve whose residual RMS exceeds this many times its noise is a misfit (FitResult::misfit): with white
+/// noise the ratio is 1 within a few sqrt(2 / n); 2 means a residual variance 4 times the noise's.
+inline constexpr double misfit_ratio = 2.0;
 
 /// What curve `c` of the problem fits: its own Curve::fitted, else FitSettings::fitted.
 Fitted fitted_of(const FitProblem& problem, std::size_t c);
