@@ -151,11 +151,12 @@ TEST_F(FitUnits, DataAreConvertedToTheDeclaredSystem) {
     expect_twin(fit("um-nN-s", kPa,
                     "file = \"nm_pN_ms.csv\"\n" + columns + "units = { time = 1e-3, length = 1e-9, force = 1e-12 }"),
                 si, kPa, "data in nm, pN and ms as sizes in SI");
-    // Raw AFM columns in nm, the spring constant in N/m (0.01 N/m = 10 nN/um).
+    // Raw AFM columns in nm, the spring constant in N/m (0.01 N/m = 10 nN/um), its unit stated as a non-SI case
+    // requires (io::spring_constant_unit).
     write_afm_curve("afm.csv");
     const std::string afm = fmt::format(
         "file = \"afm.csv\"\ntime = \"t_ms\"\npiezo = \"piezo_nm\"\ndeflection = \"deflection_nm\"\n"
-        "spring_constant = {}\nunits = {{ time = \"ms\", length = \"nm\" }}",
+        "spring_constant = {}\nunits = {{ time = \"ms\", length = \"nm\", spring_constant = \"N/m\" }}",
         spring_constant);
     expect_twin(fit("um-nN-s", kPa, afm), si, kPa, "raw AFM columns");
     expect_twin(fit("SI", 1.0, afm), si, 1.0, "raw AFM columns, SI case");
