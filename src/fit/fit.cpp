@@ -35,6 +35,39 @@ std::size_t default_fit_elements(double noise_to_peak) {
                                                static_cast<double>(max_fit_elements)));
 }
 
+namespace {
+
+// The model must be built at the start values and at each bound of each free parameter (the others at their start
+// values): bounds are where the solver may go, so a bound outside the material's rules (tau1 < 0, say) is refused
+// here, naming the bound, and not met mid-solve as a model that cannot be evaluated.
+void require_bounds_within_the_model(const FitProblem& problem) {
+    if (!problem.model) return;
+    std::vector<double> values;
+    for (const auto& parameter : problem.parameters) values.push_back(parameter.start);
+    try {
+        static_cast<void>(problem.model(values));
+    } catch (const InvalidInput& error) {
+        throw InvalidInput(error.key(), error.value(), error.rule() + " (at the start values of fit.free)");
+    }
+    for (std::size_t j = 0; j < problem.parameters.size(); ++j) {
+        const auto& parameter = problem.parameters[j];
+        for (const double bound : {parameter.lower, parameter.upper}) {
+            auto at_bound = values;
+            at_bound[j] = bound;
+            try {
+                static_cast<void>(problem.model(at_bound));
+            } catch (const InvalidInput& error) {
+                throw InvalidInput("fit.bounds." + parameter.name,
+                                   fmt::format("[{}, {}]", format_value(parameter.lower), format_value(parameter.upper)),
+                                   fmt::format("the model cannot be built at the bound {}: {}", format_value(bound),
+                                               error.what()));
+            }
+        }
+    }
+}
+
+}  // namespace
+
 void validate(const FitProblem& problem) {
     if (!problem.model) throw InvalidInput("fit.model", "(missing)", "is required");
     if (problem.parameters.empty()) throw InvalidInput("fit.free", "[]", "name at least one parameter to fit");
@@ -67,6 +100,7 @@ void validate(const FitProblem& problem) {
                                            format_value(parameter.lower), format_value(parameter.upper)));
         }
     }
+    require_bounds_within_the_model(problem);
     if (const auto& bounds = problem.settings.contact_point_bounds) {
         const std::string key = "fit.bounds.contact_point";
         require_finite(key, (*bounds)[0]);
@@ -160,18 +194,11 @@ void require_fittable(const Curve& curve, const CurveCost& cost, const double* n
     }
 }
 
-// A solve that failed before its first step: the model or the residuals at the start values are the cause when they
-// cannot be evaluated there. Throws mdr::InvalidInput naming the key or the curve.
+// A solve that failed before its first step: the residuals at the start values are the cause when they cannot be
+// evaluated there (validate has built the model there). Throws mdr::InvalidInput naming the curve.
 void require_evaluable_start(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
                              const std::vector<std::unique_ptr<ReboundCost>>& rebounds,
                              const std::vector<double>& shared, const std::vector<std::vector<double>>& nuisance) {
-    std::vector<double> start;
-    for (const auto& parameter : problem.parameters) start.push_back(parameter.start);
-    try {
-        static_cast<void>(problem.model(start));
-    } catch (const InvalidInput& error) {
-        throw InvalidInput(error.key(), error.value(), error.rule() + " (at the start values of fit.free)");
-    }
     for (std::size_t c = 0; c < costs.size(); ++c) {
         if (const std::string why = costs[c]->failure_at(shared.data(), nuisance[c].data()); !why.empty()) {
             throw InvalidInput(fmt::format("fit.data[{}]", c), problem.curves[c].name,

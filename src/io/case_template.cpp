@@ -7,6 +7,7 @@
 
 #include "case_reader.hpp"
 #include "mdr/error.hpp"
+#include "toml_reader.hpp"
 
 namespace mdr::io {
 
@@ -62,7 +63,7 @@ bool CaseTemplate::has_number(const std::string& key) const { return tables_->ro
 double CaseTemplate::number(const std::string& key) const {
     const auto node = tables_->root.at_path(key);
     if (!node.is_number()) throw InvalidInput(key, "(missing)", "the case has no number under this key");
-    return node.value<double>().value();
+    return as_number(*node.node(), key);
 }
 
 void CaseTemplate::set_number(const std::string& key, double value) {

@@ -24,6 +24,8 @@ std::string node_text(const toml::node& node) {
     return message_text(text);
 }
 
+}  // namespace
+
 double as_number(const toml::node& node, const std::string& key) {
     if (!node.is_number()) throw InvalidInput(key, node_text(node), "must be a number");
     if (const auto* integer = node.as_integer()) {
@@ -41,8 +43,6 @@ double as_number(const toml::node& node, const std::string& key) {
     require_finite(key, value);
     return value;
 }
-
-}  // namespace
 
 TableReader::TableReader(const toml::table& table, std::string path) : table_(table), path_(std::move(path)) {}
 

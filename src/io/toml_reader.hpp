@@ -9,6 +9,10 @@
 
 namespace mdr::io {
 
+/// The number a node holds (integer or float, finite) for `key`; throws mdr::InvalidInput naming the key for another
+/// type, a non-finite float, or an integer that a double cannot hold exactly.
+double as_number(const toml::node& node, const std::string& key);
+
 /// One table of the case file with its dotted path (e.g. `material`), tracking which keys were read.
 class TableReader {
 public:

@@ -296,6 +296,9 @@ def test_data_the_fit_cannot_weigh(run_mdr, fit_case, workdir, edit, fragments):
      ["material.eta = 5e-320", "subnormal"]),
     (('model = "elastic"\nG = 5.0e4', 'model = "standard"\nG_inf = 5.0e4\nG1 = 5e-324\ntau1 = 0.5'),
      ["material.G1 = 5e-324", "subnormal"]),
+    # A bound where the material cannot be built (once met mid-solve: "the model cannot be evaluated", exit 1).
+    (('[fit]', '[fit]\nbounds = { "material.G" = [-1.0e308, 1.0e6] }'),
+     ["fit.bounds.material.G = [-1e+308, 1000000]", "cannot be built at the bound -1e+308", "must be > 0"]),
 ])
 def test_fit_input_refused_with_its_key(run_mdr, fit_case, workdir, edit, fragments):
     path = fit_case()

@@ -102,6 +102,9 @@ def test_recovers_a_standard_solid_from_rebounds(run_mdr, rebound_case, workdir)
     (lambda rows: rows.__setitem__(3, (0.063, 1.2, 2.7)), ["fit.data[0].restitution = 1.2", "line 4", "[0, 1]"]),
     (lambda rows: rows.__setitem__(4, (0.16, -0.1, 2.2)), ["fit.data[0].restitution = -0.1", "[0, 1]"]),
     (lambda rows: rows.__setitem__(5, (0.4, "nan", 1.8)), ["fit.data[0].restitution", "finite"]),
+    # Once "the model cannot be evaluated at the fitted values", exit 1 without a result (the fit fuzzer's find).
+    (lambda rows: rows.__setitem__(3, (0.063, 0.53, 1e308)),
+     ["fit.data[0].contact_time = 1e+305", "line 4", "from 1e-100 to 1e+100"]),
 ])
 def test_bad_rebound_data(run_mdr, rebound_case, workdir, edit, fragments):
     path = rebound_case()
@@ -116,6 +119,9 @@ def test_bad_rebound_data(run_mdr, rebound_case, workdir, edit, fragments):
     (('restitution = "e"', 'restitution = "e_measured"'), ["fit.data[0].restitution", "no such column", "v0_m_s"]),
     (('velocity = "v0_m_s"\n', ""), ["fit.data[0].velocity", "(missing)"]),
     (("mass = 0.01\n", ""), ["fit.data[0].mass = (missing)", "indenter"]),
+    # Once "bad optional access", exit 1 without a result (the fit fuzzer's find).
+    (("mass = 0.01\n", "mass = 9223372036854775807\n"),
+     ["indenter.mass = 9223372036854775807", "cannot hold exactly"]),
     (("restitution_error = 1.0e-4", "restitution_error = 0.0"), ["fit.data[0].restitution_error = 0", "> 0"]),
     (('contact_time = "T_ms"\n', ""), ["fit.data[0].contact_time_error", "only with contact_time"]),
     (('kind = "rebound"', 'kind = "bounce"'), ["fit.data[0].kind", "one of curve, rebound"]),
