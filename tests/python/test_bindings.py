@@ -434,6 +434,12 @@ def test_every_plot_function_runs_headless(result_directory, file_result, tmp_pa
         "fit_curves": lambda: mdr.plot.fit_curves(
             {"curve": np.array(["a", "a", "b"]), "t": np.array([0.0, 1.0, 0.0]), "measured": np.array([0.0, 1.0, 2.0]),
              "model": np.array([0.0, 1.1, 2.0]), "residual": np.array([0.0, 0.1, 0.0])}),
+        "force_indentation": lambda: mdr.plot.force_indentation(
+            {"curve": np.array(["a", "a", "a"]), "t": np.array([0.0, 1.0, 2.0]),
+             "measured": np.array([0.0, 1.0, 2.0]), "model": np.array([0.0, 1.1, 2.0]),
+             "residual": np.array([0.0, 0.1, 0.0]), "drive": np.array([0.0, 1e-6, 2e-6])},
+            {"units": "SI", "curves": [{"name": "a", "kind": "curve", "fitted": "force", "contact_point": 0.0,
+                                        "baseline": 0.0}]}),
         "fit_rebounds": lambda: mdr.plot.fit_rebounds(
             {"curve": np.array(["a", "d:restitution", "d:restitution", "d:contact_time"]),
              "t": np.array([0.0, 0.1, 1.0, 0.1]), "measured": np.array([1.0, 0.5, 0.6, 2e-3]),
