@@ -1,7 +1,5 @@
 #include "mdr/fit/rebound.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -65,11 +63,11 @@ std::vector<double> uncertainties(const std::vector<double>& given, const std::s
                            "give one value for all impacts or one per impact (" + std::to_string(rows) + ")");
     }
     for (std::size_t i = 0; i < given.size(); ++i) {
-        if (!std::isfinite(given[i]) || !(given[i] > 0.0) || !curve_value_in_range(given[i])) {
-            throw InvalidInput(key, format_value(given[i]),
-                               (given.size() == rows ? where(i) + ": " : std::string()) + "must be a number > 0 of a magnitude from " +
-                                   format_value(smallest_curve_value) + " to " + format_value(largest_curve_value));
+        const std::string row = given.size() == rows ? where(i) + ": " : std::string();
+        if (!std::isfinite(given[i]) || !(given[i] > 0.0)) {
+            throw InvalidInput(key, format_value(given[i]), row + "must be a number > 0");
         }
+        if (!curve_value_in_range(given[i])) throw InvalidInput(key, format_value(given[i]), row + curve_value_rule());
     }
     return given.size() == rows ? given : std::vector<double>(rows, given.front());
 }
@@ -93,20 +91,22 @@ ReboundData checked_rebound(ReboundArrays arrays, const RowLocation& where) {
         throw InvalidInput("mass", "(missing)", "rebound data need the impactor's mass: give mass, or [indenter] mass");
     }
     require_positive("mass", *arrays.mass);
-    // The mass, speeds and contact times within the magnitudes the fit can square and sum, as a curve's values.
-    const std::string range = fmt::format("> 0 of a magnitude from {} to {} (the fit squares and sums the values)",
-                                          format_value(smallest_curve_value), format_value(largest_curve_value));
-    if (!curve_value_in_range(*arrays.mass)) throw InvalidInput("mass", format_value(*arrays.mass), "must be " + range);
+    // The mass, speeds, contact times and their errors within the magnitudes of a curve's values (curve_value_rule).
+    if (!curve_value_in_range(*arrays.mass)) {
+        throw InvalidInput("mass", format_value(*arrays.mass), curve_value_rule());
+    }
     const std::size_t rows = arrays.velocity.size();
     if (rows < minimum_rebound_rows) throw InvalidInput("velocity", "[]", "give at least one impact");
-    const auto positive = [](double value) { return value > 0.0 && curve_value_in_range(value); };
-    const std::string speed_rule = "must be a speed " + range;
-    const std::string time_rule = "must be a time " + range;
-    check_values(arrays.velocity, "velocity", rows, speed_rule.c_str(), positive, where);
+    const auto positive = [](double value) { return value > 0.0; };
+    const auto in_range = [](double value) { return curve_value_in_range(value); };
+    const std::string range = curve_value_rule();
+    check_values(arrays.velocity, "velocity", rows, "must be a speed > 0", positive, where);
+    check_values(arrays.velocity, "velocity", rows, range.c_str(), in_range, where);
     check_values(arrays.restitution, "restitution", rows, "must lie in [0, 1]",
                  [](double value) { return value >= 0.0 && value <= 1.0; }, where);
     if (!arrays.contact_time.empty()) {
-        check_values(arrays.contact_time, "contact_time", rows, time_rule.c_str(), positive, where);
+        check_values(arrays.contact_time, "contact_time", rows, "must be a time > 0", positive, where);
+        check_values(arrays.contact_time, "contact_time", rows, range.c_str(), in_range, where);
     } else if (!arrays.contact_time_error.empty()) {
         throw InvalidInput("contact_time_error", format_value(arrays.contact_time_error.front()),
                            "is used only with contact_time");

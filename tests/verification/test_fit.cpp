@@ -277,11 +277,12 @@ TEST(Fit, NinetyFivePercentIntervalsCoverTheTruth) {
 }
 
 TEST(Fit, AtABoundOnlyWhenTheValueIsThere) {
-    // G_inf fitted on a linear scale within [0, 1e11]: the true 1e6 is 1e-5 of that span from the lower bound 0, and
-    // was once flagged "at its lower bound" (as a spectrum's G[3] = 0.0145 with bound 0). It is not at it.
+    // G_inf fitted on a linear scale within [1, 1e11] (a bound must be where the material can be built: G_inf > 0):
+    // the true 1e6 is 1e-5 of that span from the lower bound, and was once flagged "at its lower bound" (as a
+    // spectrum's G[3] = 0.0145 with bound 0). It is not at it.
     const reference::PronyMaterial truth{1e6, 0.0, {{2e6, 0.5}}};
     auto parameters = standard_solid_parameters(1.2e6, 2e6, 0.5);
-    parameters[0].lower = 0.0;
+    parameters[0].lower = 1.0;
     parameters[0].upper = 1e11;
     parameters[0].logarithmic = false;
     const auto result = fit::fit(noise_free_problem(load_hold_curve(truth, 1.0, 4.0, 201), parameters));
