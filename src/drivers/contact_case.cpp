@@ -200,7 +200,8 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
             // a finite series with a time shorter than the step (the default step skips such times): its exponential
             // creep is resolved from jump_grading_ratio of that time on (test_prony_fast_force_step.cpp).
             resolved.grading_ratio = jump_grading_ratio;
-            resolved.first_graded_step = jump_grading_ratio * material.shortest_time();
+            resolved.first_graded_step =
+                std::max(jump_grading_ratio * material.shortest_time(), finest_graded_step * resolved.time_step);
         }
     }
     const std::optional<HarmonicLoad> harmonics[] = {

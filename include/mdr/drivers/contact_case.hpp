@@ -128,6 +128,10 @@ inline constexpr double jump_grading_ratio = 0.02;
 /// The first step after the start or such a change, as a fraction of the time step (its error is
 /// O((step / tau)^(2/3)) of the creep depth, tau the retardation time).
 inline constexpr double jump_first_step = 1e-6;
+/// The finest first step of the grading after a fast change, as a fraction of the time step: a series time far below
+/// it (tau = 1e-300 s, say) is resolved no further (it has relaxed within that step), so that the graded steps after
+/// each change stay about ln(1e9) / jump_grading_ratio, and the grid of a record with many changes stays bounded.
+inline constexpr double finest_graded_step = 1e-9;
 /// Steps per braking time m / (8 eta a) of an impact on a body with a parallel dashpot (resolve_numerics).
 inline constexpr std::size_t braking_steps = 20;
 /// Smallest number of steps per history segment.
