@@ -181,9 +181,56 @@ void refuse_underflows(const toml::node& node, const std::string& key, std::stri
     }
 }
 
+// TOML allows characters beyond ASCII only in strings, quoted keys and comments; anywhere else they are malformed.
+// Refused here, before toml++ (3.3) reads them: its whitespace test reaches __builtin_unreachable for most of them
+// (U+00A1 to U+0499, say: `model = "standard"é`), undefined behaviour that the fit fuzzer found under UBSan.
+void refuse_non_ascii_outside_strings(std::string_view text, const std::string& source) {
+    std::size_t line = 1;
+    std::size_t line_start = 0;
+    std::size_t i = 0;
+    const auto starts = [&](std::string_view token) { return text.substr(i, token.size()) == token; };
+    // Skips a string whose opening quote(s) `open` start at i; `escapes`: a backslash escapes the next character.
+    const auto skip_string = [&](std::string_view open, bool escapes) {
+        const bool multiline = open.size() == 3;
+        i += open.size();
+        while (i < text.size() && !starts(open)) {
+            if (text[i] == '\n') {
+                if (!multiline) return;
+                ++line;
+                line_start = i + 1;
+            }
+            i += escapes && text[i] == '\\' ? 2 : 1;
+        }
+        i += open.size();
+    };
+    while (i < text.size()) {
+        const char c = text[i];
+        if (c == '\n') {
+            ++line;
+            line_start = ++i;
+        } else if (c == '#') {
+            while (i < text.size() && text[i] != '\n') ++i;
+        } else if (starts("\"\"\"")) {
+            skip_string("\"\"\"", true);
+        } else if (starts("\'\'\'")) {
+            skip_string("\'\'\'", false);
+        } else if (c == '"') {
+            skip_string("\"", true);
+        } else if (c == '\'') {
+            skip_string("\'", false);
+        } else if (static_cast<unsigned char>(c) >= 0x80) {
+            throw InvalidInput(source, fmt::format("line {}, column {}", line, i - line_start + 1),
+                               "malformed TOML: a character beyond ASCII outside a string, quoted key or comment");
+        } else {
+            ++i;
+        }
+    }
+}
+
 }  // namespace
 
 toml::table parse_toml(std::string_view toml_text, const std::string& source) {
+    refuse_non_ascii_outside_strings(toml_text, source);
     toml::table table;
     try {
         table = toml::parse(toml_text, source);
