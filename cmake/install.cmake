@@ -25,8 +25,8 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/mdrConfig.cmake ${CMAKE_CURRENT_BINARY
         DESTINATION ${MDR_INSTALL_CMAKEDIR})
 
 # cpack -G DEB: one package with all of the above under /usr. Depends: the shared libraries that the binary and
-# the extension load, found by dpkg-shlibdeps (libfmt9, libstdc++6, libc6, libzip4 for the
-# extension's instrument readers, ...; Debian's Ceres CMake package links
+# the extension load, found by dpkg-shlibdeps (libfmt9, libstdc++6, libc6, libzip4 and libdeflate0
+# for the extension's instrument readers, ...; Debian's Ceres CMake package links
 # libceres.a, so no libceres3 but Ceres' own shared libraries: glog, CHOLMOD, CXSparse, LAPACK, ATLAS) and the
 # Python the extension was built for. Building against the library: find_package(mdr) needs fmt's CMake files
 # (libfmt-dev, recommended); COMPONENTS fit needs Ceres' (libceres-dev, suggested) (docs/cpp.md).

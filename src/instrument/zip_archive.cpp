@@ -1,6 +1,10 @@
 #include "instrument/zip_archive.hpp"
 
+#include <libdeflate.h>
 #include <zip.h>
+
+#include <cstdio>
+#include <new>
 
 #include "mdr/error.hpp"
 
@@ -16,6 +20,23 @@ std::string libzip_message(int code) {
     return message;
 }
 
+std::string hex32(std::uint32_t value) {
+    char text[11];
+    std::snprintf(text, sizeof text, "0x%08x", value);
+    return text;
+}
+
+/// Whether a member can be inflated whole by libdeflate: deflated, not encrypted, its sizes and CRC-32 stated,
+/// and its compressed size within what deflate can need for its inflated size (stored blocks: 5 bytes of header
+/// per 65 535 bytes, RFC 1951 §3.2.4; a generous bound, so that a corrupted compressed size cannot make a large
+/// allocation). Any other member is read through libzip's stream.
+bool inflates_whole(const struct zip_stat& stat) {
+    constexpr zip_uint64_t needed =
+        ZIP_STAT_SIZE | ZIP_STAT_COMP_SIZE | ZIP_STAT_COMP_METHOD | ZIP_STAT_CRC | ZIP_STAT_ENCRYPTION_METHOD;
+    return (stat.valid & needed) == needed && stat.comp_method == ZIP_CM_DEFLATE &&
+           stat.encryption_method == ZIP_EM_NONE && stat.comp_size <= stat.size + stat.size / 8 + 1024;
+}
+
 }  // namespace
 
 ZipArchive::ZipArchive(const std::filesystem::path& path) : file_(path.string()) {
@@ -28,6 +49,7 @@ ZipArchive::ZipArchive(const std::filesystem::path& path) : file_(path.string())
 
 ZipArchive::~ZipArchive() {
     zip_discard(archive_);
+    libdeflate_free_decompressor(inflater_);
 }
 
 std::vector<std::string> ZipArchive::names() const {
@@ -59,12 +81,19 @@ std::string ZipArchive::read(const std::string& name) {
                                std::to_string(max_member_bytes >> 20) + " MiB per member or " +
                                std::to_string(max_total_bytes >> 30) + " GiB per archive that are read");
     }
-    zip_file_t* member = zip_fopen_index(archive_, static_cast<zip_uint64_t>(index), 0);
+    std::string bytes = inflates_whole(stat) ? inflate_whole(static_cast<zip_uint64_t>(index), name, stat)
+                                             : read_stream(static_cast<zip_uint64_t>(index), name, stat.size);
+    inflated_bytes_ += bytes.size();
+    return bytes;
+}
+
+std::string ZipArchive::read_stream(std::uint64_t index, const std::string& name, std::uint64_t size) {
+    zip_file_t* member = zip_fopen_index(archive_, index, 0);
     if (member == nullptr) {
         throw InvalidInput(file_, name, "cannot be opened: " + std::string(zip_strerror(archive_)));
     }
     // One byte more than stated: a member that inflates to more than its stated size is corrupted.
-    std::string bytes(static_cast<std::size_t>(stat.size) + 1, '\0');
+    std::string bytes(static_cast<std::size_t>(size) + 1, '\0');
     std::uint64_t got = 0;
     while (got < bytes.size()) {
         const zip_int64_t n = zip_fread(member, bytes.data() + got, bytes.size() - got);
@@ -77,13 +106,56 @@ std::string ZipArchive::read(const std::string& name) {
         got += static_cast<std::uint64_t>(n);
     }
     const int closed = zip_fclose(member);
-    if (got != stat.size || closed != 0) {
+    if (got != size || closed != 0) {
         throw InvalidInput(file_, name,
                            "is corrupted: inflates to " + std::to_string(got) + " bytes, the archive states " +
-                               std::to_string(stat.size) + (closed != 0 ? " (" + libzip_message(closed) + ")" : ""));
+                               std::to_string(size) + (closed != 0 ? " (" + libzip_message(closed) + ")" : ""));
     }
     bytes.resize(static_cast<std::size_t>(got));
-    inflated_bytes_ += got;
+    return bytes;
+}
+
+std::string ZipArchive::inflate_whole(std::uint64_t index, const std::string& name, const struct zip_stat& stat) {
+    zip_file_t* member = zip_fopen_index(archive_, index, ZIP_FL_COMPRESSED);
+    if (member == nullptr) {
+        throw InvalidInput(file_, name, "cannot be opened: " + std::string(zip_strerror(archive_)));
+    }
+    std::string deflated(static_cast<std::size_t>(stat.comp_size), '\0');
+    std::uint64_t got = 0;
+    while (got < deflated.size()) {
+        const zip_int64_t n = zip_fread(member, deflated.data() + got, deflated.size() - got);
+        if (n <= 0) break;
+        got += static_cast<std::uint64_t>(n);
+    }
+    const std::string reason = zip_file_strerror(member);
+    zip_fclose(member);
+    if (got != stat.comp_size) {
+        throw InvalidInput(file_, name,
+                           "is truncated: " + std::to_string(got) + " of its " + std::to_string(stat.comp_size) +
+                               " compressed bytes can be read (" + reason + ")");
+    }
+    if (inflater_ == nullptr) inflater_ = libdeflate_alloc_decompressor();
+    if (inflater_ == nullptr) throw std::bad_alloc();
+    std::string bytes(static_cast<std::size_t>(stat.size), '\0');
+    std::size_t inflated = 0;
+    const libdeflate_result result = libdeflate_deflate_decompress(inflater_, deflated.data(), deflated.size(),
+                                                                   bytes.data(), bytes.size(), &inflated);
+    if (result == LIBDEFLATE_INSUFFICIENT_SPACE) {
+        throw InvalidInput(file_, name,
+                           "is corrupted: inflates to more than the " + std::to_string(stat.size) +
+                               " bytes the archive states");
+    }
+    if (result == LIBDEFLATE_SUCCESS && inflated != stat.size) {
+        throw InvalidInput(file_, name,
+                           "is corrupted: inflates to " + std::to_string(inflated) + " bytes, the archive states " +
+                               std::to_string(stat.size));
+    }
+    if (result != LIBDEFLATE_SUCCESS) throw InvalidInput(file_, name, "is corrupted: its deflate stream is invalid");
+    const std::uint32_t crc = libdeflate_crc32(0, bytes.data(), bytes.size());
+    if (crc != stat.crc) {
+        throw InvalidInput(file_, name,
+                           "is corrupted: its CRC-32 is " + hex32(crc) + ", the archive states " + hex32(stat.crc));
+    }
     return bytes;
 }
 

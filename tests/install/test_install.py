@@ -187,8 +187,8 @@ def test_deb(tmp_path: pathlib.Path) -> None:
     assert deb.name == f"mdr_{VERSION}_amd64.deb" or deb.name.startswith(f"mdr_{VERSION}_")
 
     depends = run("dpkg-deb", "-f", deb, "Depends")
-    # libzip: the extension reads instrument files (mdr.read_curves).
-    for package in ["libfmt9", "libstdc++6", "libc6", "libzip", "python3-numpy", "python3-tomli-w", "python3 ("]:
+    # libzip, libdeflate: the extension reads instrument files (mdr.read_curves).
+    for package in ["libfmt9", "libstdc++6", "libc6", "libzip", "libdeflate", "python3-numpy", "python3-tomli-w", "python3 ("]:
         assert package in depends, f"Depends: {depends}"
     assert not FOREIGN.search(depends.replace("python3", "")), depends
     # Building against the package: fmt's CMake files for find_package(mdr), Ceres' for COMPONENTS fit.
