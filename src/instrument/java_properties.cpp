@@ -50,6 +50,7 @@ unsigned hex4(std::string_view text, std::size_t at, const std::string& source) 
 
 /// Resolves the escapes of a key or a value (continuations are already joined).
 std::string unescape(std::string_view text, const std::string& source) {
+    if (text.find('\\') == std::string_view::npos) return std::string(text);
     std::string out;
     out.reserve(text.size());
     for (std::size_t i = 0; i < text.size(); ++i) {
@@ -98,7 +99,10 @@ Properties parse_properties(std::string_view text, const std::string& source) {
     std::size_t at = 0;
     std::string joined;
     const auto next_physical = [&]() {
-        const std::size_t end = text.find_first_of("\r\n", at);
+        // A plain loop: find_first_of calls memchr on its set once per character.
+        std::size_t end = at;
+        while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+        if (end == text.size()) end = std::string_view::npos;
         const std::string_view line = text.substr(at, end == std::string_view::npos ? text.size() - at : end - at);
         at = end == std::string_view::npos ? text.size() : end + 1;
         if (end != std::string_view::npos && text[end] == '\r' && at < text.size() && text[at] == '\n') ++at;

@@ -332,7 +332,9 @@ Curve read_series(ZipArchive& zip, const std::string& root, const Properties& se
             throw header.error("force-segment-header", member, "a curve holds at most 65535 segments");
         }
         const auto segment = static_cast<std::uint16_t>(curve.segment_names.size() - 1);
-        for (std::size_t i = 0; i < points; ++i) curve.time.push_back(start_time + static_cast<double>(i) * step);
+        const std::size_t first = curve.time.size();
+        curve.time.resize(first + points);
+        for (std::size_t i = 0; i < points; ++i) curve.time[first + i] = start_time + static_cast<double>(i) * step;
         curve.segment.insert(curve.segment.end(), points, segment);
         start_time += duration;
     }

@@ -120,7 +120,8 @@ std::string ZipArchive::inflate_whole(std::uint64_t index, const std::string& na
     if (member == nullptr) {
         throw InvalidInput(file_, name, "cannot be opened: " + std::string(zip_strerror(archive_)));
     }
-    std::string deflated(static_cast<std::size_t>(stat.comp_size), '\0');
+    std::string& deflated = deflated_;
+    deflated.resize(static_cast<std::size_t>(stat.comp_size));
     std::uint64_t got = 0;
     while (got < deflated.size()) {
         const zip_int64_t n = zip_fread(member, deflated.data() + got, deflated.size() - got);

@@ -46,6 +46,7 @@ private:
 
     struct zip* archive_ = nullptr;
     struct libdeflate_decompressor* inflater_ = nullptr;  ///< made on the first deflated member
+    std::string deflated_;  ///< the compressed bytes of the member being inflated, kept for the next one
     std::string file_;
     std::uint64_t inflated_bytes_ = 0;
 };
