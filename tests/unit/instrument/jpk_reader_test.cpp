@@ -161,6 +161,25 @@ TEST(JpkReader, QuantitativeImagingPixelsMatchHeaderAndAfmformats) {
     }
 }
 
+TEST(JpkReader, QiSeriesEndingHoldsAMapOrASingleSeriesByItsHeaderType) {
+    // No .jpk-qi-series file is public in a form we can read: afmformats reads the ending with its JPK reader
+    // (CHANGELOG 0.16.1, "support .jpk-qi-series files (by extension)"), its test file being a QI data file
+    // (fmt-jpk-fd_qi-data-2021.04.13.jpk-qi-series). The rule: the top header's `type` decides, a `...-map` holds
+    // its pixels under index/N/, a `...-series` is one curve at the root; either is accepted under this ending.
+    const ScratchFile map("map.jpk-qi-series", slurp(vendor("fmt-jpk-fd_2020.02.07-16.29.05.036.jpk-qi-data")));
+    CurveFile pixels(map.path());
+    ASSERT_EQ(pixels.size(), 4u);
+    const Curve first = pixels.read(0);
+    EXPECT_TRUE(first.in_map);
+    expect_close(first.force[0], -1.269014596090597e-10);  // afmformats test_fmt_jpk_qi.py, as for .jpk-qi-data
+    EXPECT_EQ(pixels.read(3).position.column, 3u);
+    const ScratchFile single("single.jpk-qi-series", slurp(vendor("fmt-jpk-fd_spot3-0192.jpk-force")));
+    const std::vector<Curve> curves = read_curves(single.path());
+    ASSERT_EQ(curves.size(), 1u);
+    EXPECT_FALSE(curves[0].in_map);
+    EXPECT_EQ(curves[0].force.size(), 4000u);  // two segments of num-points = 2000
+}
+
 TEST(JpkReader, ForceMapPixelsSitWhereTheirIndexSaysOnABackAndForthGrid) {
     const auto curves = read_curves(vendor("fmt-jpk-fd_map-data-reference-points.jpk-force-map"));
     ASSERT_EQ(curves.size(), 3u);  // the archive holds index/109, 129 and 416 of the 25 x 25 map
