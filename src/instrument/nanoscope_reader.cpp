@@ -159,6 +159,36 @@ const Section& deflection_channel(const Header& header) {
                        "no \\*Ciao force image list holds a deflection channel (\"Deflection Error\")");
 }
 
+/// A length `\\Key: v unit` or `\\Key: vx vy unit` of the scan list (unit `nm` or `~m`, NanoScope's µm), in m;
+/// `which` picks vx (0) or vy (1), a single value serving both.
+double length_m(const Header& header, const Section& in, std::string_view key, std::size_t which) {
+    const std::string& text = header.value(in, key);
+    const auto fields = split_fields(text, ' ');
+    std::vector<std::string_view> words;
+    std::copy_if(fields.begin(), fields.end(), std::back_inserter(words), [](auto word) { return !word.empty(); });
+    const double unit = words.empty() ? 0.0 : words.back() == "nm" ? 1e-9 : words.back() == "~m" ? 1e-6 : 0.0;
+    if ((words.size() != 2 && words.size() != 3) || unit == 0.0) {
+        throw InvalidInput(header.file, header_key(key) + ": " + text, "must read 'v nm', 'v ~m' or 'vx vy unit'");
+    }
+    return parse_number(words[std::min(which, words.size() - 2)], header.file, 0, header_key(key)) * unit;
+}
+
+/// The grid of a force volume: `per_line` x `per_line` pixels over the scan list's `Scan Size`, centred on its
+/// `X Offset`, `Y Offset`.
+MapGrid force_volume_grid(const Header& header, const Section& scan, std::size_t per_line) {
+    MapGrid grid;
+    grid.columns = per_line;
+    grid.rows = per_line;
+    grid.size_x = length_m(header, scan, "Scan Size", 0);
+    grid.size_y = length_m(header, scan, "Scan Size", 1);
+    if (!(grid.size_x > 0.0) || !(grid.size_y > 0.0) || !std::isfinite(grid.size_x) || !std::isfinite(grid.size_y)) {
+        throw InvalidInput(header.file, "\\Scan Size: " + header.value(scan, "Scan Size"), "must be > 0");
+    }
+    grid.center_x = scan.find("X Offset") != nullptr ? length_m(header, scan, "X Offset", 0) : 0.0;
+    grid.center_y = scan.find("Y Offset") != nullptr ? length_m(header, scan, "Y Offset", 0) : 0.0;
+    return grid;
+}
+
 }  // namespace
 
 bool looks_like_nanoscope_force(std::string_view head) {
@@ -167,7 +197,7 @@ bool looks_like_nanoscope_force(std::string_view head) {
 
 NanoscopeSource::NanoscopeSource(const std::filesystem::path& path, const ReadOptions& options) {
     const std::string file = path.string();
-    const std::string bytes = read_whole_file(path);
+    std::string bytes = read_whole_file(path);
     if (!looks_like_nanoscope_force(bytes)) {
         throw InvalidInput(file, "(first line)", "must be \\*Force file list (a NanoScope force file)");
     }
@@ -175,10 +205,22 @@ NanoscopeSource::NanoscopeSource(const std::filesystem::path& path, const ReadOp
     refuse_calibration(options, file);
     const Section& scan = header.section("Ciao scan list");
     const std::string& mode = header.value(scan, "Operating mode");
-    if (mode != "Force") {
-        throw InvalidInput(file, "\\Operating mode: " + mode, "only single force curves (Force) are read so far");
+    if (mode != "Force" && mode != "Force Volume") {
+        throw InvalidInput(file, "\\Operating mode: " + mode, "must be Force or Force Volume (force curves)");
     }
     const Section& ramp = header.section("Ciao force list");
+    // Force volume: `force/line` curves a line on a square grid, stored one after the other, each as a single
+    // file's curve (the layout jlopezalo/PyFMReader reads: Data length = bytes x 2 x samples x force/line^2).
+    std::size_t per_line = 1;
+    if (mode == "Force Volume") {
+        const double count = header.number(ramp, "force/line");
+        if (!(count >= 1.0) || count > 4096.0 || count != std::floor(count)) {
+            throw InvalidInput(file, "\\force/line: " + header.value(ramp, "force/line"),
+                               "must be a whole number from 1 to 4096 (curves a line of the force volume)");
+        }
+        per_line = static_cast<std::size_t>(count);
+    }
+    const std::size_t curves = per_line * per_line;
     for (const std::string_view delay : {"Reverse delay", "Hold Time"}) {
         if (const std::string* value = ramp.find(delay); value != nullptr && header.number(ramp, delay) != 0.0) {
             throw InvalidInput(file, header_key(delay) + ": " + *value,
@@ -211,10 +253,12 @@ NanoscopeSource::NanoscopeSource(const std::filesystem::path& path, const ReadOp
                            "must lie within the file's " + std::to_string(bytes.size()) + " bytes (truncated?)");
     }
     const auto data_bytes = static_cast<std::size_t>(length);
-    const std::size_t bytes_per_sample = data_bytes / (2 * per_segment);
-    if ((bytes_per_sample != 2 && bytes_per_sample != 4) || bytes_per_sample * 2 * per_segment != data_bytes) {
+    const std::size_t samples = 2 * per_segment * curves;
+    const std::size_t bytes_per_sample = data_bytes / samples;
+    if ((bytes_per_sample != 2 && bytes_per_sample != 4) || bytes_per_sample * samples != data_bytes) {
         throw InvalidInput(file, "\\Data length: " + header.value(channel, "Data length"),
-                           "must be 2 or 4 bytes times the " + std::to_string(2 * per_segment) + " samples");
+                           "must be 2 or 4 bytes times the " + std::to_string(samples) + " samples (" +
+                               std::to_string(curves) + " curves of " + std::to_string(2 * per_segment) + ")");
     }
 
     const ScaledValue scale = parse_scaled(header, channel, "@4:Z scale");
@@ -228,17 +272,7 @@ NanoscopeSource::NanoscopeSource(const std::filesystem::path& path, const ReadOp
     const double extend_duration = ramp_size.hard_value / positive(header, ramp, "Forward vel.");
     const double retract_duration = ramp_size.hard_value / positive(header, ramp, "Reverse vel.");
 
-    const auto sample = [&](std::size_t index) {
-        const std::size_t at = static_cast<std::size_t>(offset) + index * bytes_per_sample;
-        std::uint32_t raw = 0;
-        for (std::size_t byte = bytes_per_sample; byte-- > 0;) {
-            raw = (raw << 8) | static_cast<unsigned char>(bytes[at + byte]);
-        }
-        if (bytes_per_sample == 2) return static_cast<double>(static_cast<std::int16_t>(raw));
-        return static_cast<double>(static_cast<std::int32_t>(raw));
-    };
-
-    Curve& curve = curve_;
+    Curve& curve = shape_;
     curve.source = file;
     curve.spring_constant = spring_constant;
     curve.sensitivity = deflection_sensitivity;
@@ -247,24 +281,61 @@ NanoscopeSource::NanoscopeSource(const std::filesystem::path& path, const ReadOp
     const double step = ramp_height / static_cast<double>(per_segment);
     for (std::size_t i = 0; i < 2 * per_segment; ++i) {
         const bool extend = i < per_segment;
-        // Extend: time order is the stored order reversed; each sample at the start of its step of the ramp.
-        const std::size_t stored = extend ? per_segment - 1 - i : i;
+        // Each sample at the start of its step of the ramp.
         const std::size_t in_segment = extend ? i : i - per_segment;
         const double fraction = static_cast<double>(in_segment) / static_cast<double>(per_segment);
         curve.time.push_back(extend ? fraction * extend_duration : extend_duration + fraction * retract_duration);
         curve.height.push_back(extend ? ramp_height - static_cast<double>(in_segment) * step
                                       : static_cast<double>(in_segment) * step);
-        curve.deflection.push_back(sample(stored) * scale.volts_per_lsb * deflection_sensitivity);
-        curve.force.push_back(curve.deflection.back() * spring_constant);
         curve.segment.push_back(extend ? 0 : 1);
     }
     for (const Section& section : header.sections) {
         for (const auto& [key, value] : section.entries) curve.metadata.emplace(section.name + "/" + key, value);
     }
+    if (curves > 1) {
+        curve.in_map = true;
+        curve.grid = force_volume_grid(header, scan, per_line);
+    }
+    bytes_ = std::move(bytes);
+    data_offset_ = static_cast<std::size_t>(offset);
+    per_segment_ = per_segment;
+    bytes_per_sample_ = bytes_per_sample;
+    curves_ = curves;
+    metres_per_lsb_ = scale.volts_per_lsb * deflection_sensitivity;
 }
 
-Curve NanoscopeSource::read(std::size_t) {
-    return curve_;
+Curve NanoscopeSource::read(std::size_t index) {
+    Curve curve = shape_;
+    const std::size_t first = data_offset_ + index * 2 * per_segment_ * bytes_per_sample_;
+    const auto sample = [&](std::size_t stored) {
+        const std::size_t at = first + stored * bytes_per_sample_;
+        std::uint32_t raw = 0;
+        for (std::size_t byte = bytes_per_sample_; byte-- > 0;) {
+            raw = (raw << 8) | static_cast<unsigned char>(bytes_[at + byte]);
+        }
+        if (bytes_per_sample_ == 2) return static_cast<double>(static_cast<std::int16_t>(raw));
+        return static_cast<double>(static_cast<std::int32_t>(raw));
+    };
+    curve.deflection.resize(2 * per_segment_);
+    curve.force.resize(2 * per_segment_);
+    for (std::size_t i = 0; i < 2 * per_segment_; ++i) {
+        // The extend is stored from the turnaround back to its start: time order is the stored order reversed.
+        const std::size_t stored = i < per_segment_ ? per_segment_ - 1 - i : i;
+        curve.deflection[i] = sample(stored) * metres_per_lsb_;
+        curve.force[i] = curve.deflection[i] * curve.spring_constant;
+    }
+    if (curve.in_map) {
+        const MapGrid& grid = curve.grid;
+        curve.position.index = index;
+        curve.position.column = index % grid.columns;
+        curve.position.row = index / grid.columns;
+        const auto centre_of = [](std::size_t pixel, std::size_t pixels, double size, double centre) {
+            return centre - 0.5 * size + (static_cast<double>(pixel) + 0.5) * size / static_cast<double>(pixels);
+        };
+        curve.position.x = centre_of(curve.position.column, grid.columns, grid.size_x, grid.center_x);
+        curve.position.y = centre_of(curve.position.row, grid.rows, grid.size_y, grid.center_y);
+    }
+    return curve;
 }
 
 }  // namespace mdr::instrument

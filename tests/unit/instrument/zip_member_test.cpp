@@ -26,7 +26,9 @@ std::string vendor_curve() {
 
 std::uint32_t little_endian(const std::string& bytes, std::size_t at, std::size_t width) {
     std::uint32_t value = 0;
-    for (std::size_t i = 0; i < width; ++i) value |= std::uint32_t{static_cast<unsigned char>(bytes[at + i])} << (8 * i);
+    for (std::size_t i = 0; i < width; ++i) {
+        value |= std::uint32_t{static_cast<unsigned char>(bytes[at + i])} << (8 * i);
+    }
     return value;
 }
 
@@ -104,8 +106,8 @@ TEST(ZipMember, MemberInflatingPastItsStatedSizeIsRefused) {
 }
 
 TEST(ZipMember, HugeStatedSizeIsRefusedBeforeAllocating) {
-    // A zip bomb's header: 4000 bytes stated as 4 GiB - 16 (0xffffffff would announce Zip64). Refused by the 256 MiB bound before any allocation (an
-    // allocation of that size would fail under the sanitizers' allocator limit or exhaust memory).
+    // A zip bomb's header: 4000 bytes stated as 4 GiB - 16 (0xffffffff would announce Zip64). Refused by the
+    // 256 MiB bound before any allocation (one of that size would exhaust memory or fail under the sanitizers).
     std::string bytes = vendor_curve();
     put_little_endian(bytes, central_header(bytes) + 24, 0xfffffff0u);
     const std::string message = read_error(bytes, "bomb");

@@ -1,0 +1,106 @@
+// Bruker NanoScope force volume (`Operating mode: Force Volume`). No real force volume file was available: the
+// file here is built from the vendor single curve (20200904_Egel4-Z1.0_00025.spm) by the layout jlopezalo/PyFMReader
+// reads (pyfmreader/nanosc: `force/line` curves a line, a square grid, curve i's extend and retract at Data offset
+// + i x 2 x Samps/line x bytes; Data length = bytes x 2 x Samps/line x force/line^2): force/line 2, and curve k
+// holding the vendor curve's stored integers times k + 1. Checked by hand against the stored integers and the
+// header's scaling (q = 0.000375 V/LSB, DeflSens 27.39 nm/V, Spring Constant 0.1332 N/m) and its Scan Size.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "mdr/error.hpp"
+#include "mdr/instrument/read_curves.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::size_t data_offset = 80960;  // \Data offset of the deflection channel
+constexpr std::size_t curve_bytes = 8192;   // \Data length: 2 x 1024 samples of 4 bytes
+constexpr double metres_per_lsb = 0.000375 * 27.39e-9;
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+std::int32_t stored(const std::string& bytes, std::size_t at) {
+    std::uint32_t raw = 0;
+    for (std::size_t byte = 4; byte-- > 0;) raw = (raw << 8) | static_cast<unsigned char>(bytes[at + byte]);
+    return static_cast<std::int32_t>(raw);
+}
+
+/// The force volume of `per_line` x `per_line` curves with `curves` curves' data, written to a scratch file.
+fs::path force_volume(const std::string& name, const std::string& per_line, std::size_t curves) {
+    std::ifstream stream(fs::path(MDR_VENDOR_DATA) / "20200904_Egel4-Z1.0_00025.spm", std::ios::binary);
+    const std::string vendor{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
+    const std::string end = "\\*File list end\r\n";
+    std::string header = vendor.substr(0, vendor.find(end) + end.size());
+    header = replaced(header, "\\Operating mode: Force\r\n", "\\Operating mode: Force Volume\r\n");
+    header = replaced(header, "\\force/line: 16\r\n", "\\force/line: " + per_line + "\r\n");
+    header = replaced(header, "\\Data length: 8192\r\n",
+                      "\\Data length: " + std::to_string(curves * curve_bytes) + "\r\n");
+    header += '\x1a';
+    header.resize(data_offset, '\0');  // the header's padding up to the data, as in the vendor file
+    std::string data;
+    for (std::size_t k = 0; k < curves; ++k) {
+        for (std::size_t at = data_offset; at < data_offset + curve_bytes; at += 4) {
+            const auto value = static_cast<std::uint32_t>(stored(vendor, at) * static_cast<std::int32_t>(k + 1));
+            for (std::size_t byte = 0; byte < 4; ++byte) data += static_cast<char>((value >> (8 * byte)) & 0xffu);
+        }
+    }
+    const fs::path path = fs::temp_directory_path() / ("mdr_force_volume_" + name + ".spm");
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << header << data;
+    return path;
+}
+
+TEST(NanoscopeForceVolume, CurvesOnTheGridMatchTheStoredIntegersAndTheHeader) {
+    const fs::path path = force_volume("2x2", "2", 4);
+    mdr::instrument::CurveFile file(path);
+    ASSERT_EQ(file.size(), 4u);  // force/line^2
+    for (std::size_t k = 0; k < 4; ++k) {
+        const mdr::instrument::Curve curve = file.read(k);
+        ASSERT_EQ(curve.force.size(), 2048u);
+        const double scale = static_cast<double>(k + 1);
+        // Stored integers of the vendor curve: [0] 4264 (turnaround), [1023] 856 (extend start), [1024] 4204,
+        // [2047] 85 (od -t d4 -j 80960); curve k holds them times k + 1.
+        EXPECT_NEAR(curve.deflection[0], scale * 856 * metres_per_lsb, 1e-20);
+        EXPECT_NEAR(curve.deflection[1023], scale * 4264 * metres_per_lsb, 1e-20);
+        EXPECT_NEAR(curve.deflection[1024], scale * 4204 * metres_per_lsb, 1e-20);
+        EXPECT_NEAR(curve.force[2047], scale * 85 * metres_per_lsb * 0.1332, 1e-22);
+        EXPECT_NEAR(curve.height[0], 3000e-9, 1e-12);  // the ramp as for the single curve
+        // Grid: 2 x 2 pixels over \Scan Size: 2000 nm, centred on \X Offset, \Y Offset: 0 nm.
+        ASSERT_TRUE(curve.in_map);
+        EXPECT_EQ(curve.grid.columns, 2u);
+        EXPECT_EQ(curve.grid.rows, 2u);
+        EXPECT_NEAR(curve.grid.size_x, 2e-6, 1e-18);
+        EXPECT_NEAR(curve.grid.size_y, 2e-6, 1e-18);
+        EXPECT_EQ(curve.position.index, k);
+        EXPECT_EQ(curve.position.column, k % 2);
+        EXPECT_EQ(curve.position.row, k / 2);
+        EXPECT_NEAR(curve.position.x, k % 2 == 0 ? -0.5e-6 : 0.5e-6, 1e-18);
+        EXPECT_NEAR(curve.position.y, k / 2 == 0 ? -0.5e-6 : 0.5e-6, 1e-18);
+    }
+    EXPECT_THROW(file.read(4), mdr::InvalidInput);  // CurveFile: index < size()
+    fs::remove(path);
+}
+
+TEST(NanoscopeForceVolume, DataLengthNotHoldingForceLineSquaredCurvesIsRefused) {
+    const fs::path path = force_volume("short", "3", 4);  // 9 curves stated, 4 stored
+    try {
+        mdr::instrument::read_curves(path);
+        ADD_FAILURE() << "no exception";
+    } catch (const mdr::InvalidInput& error) {
+        EXPECT_EQ(error.key(), path.string());
+        EXPECT_EQ(error.value(), "\\Data length: 32768") << error.what();
+        EXPECT_NE(error.rule().find("9 curves of 2048"), std::string::npos) << error.what();
+    }
+    fs::remove(path);
+}
+
+}  // namespace
