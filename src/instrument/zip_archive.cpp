@@ -123,17 +123,18 @@ std::string ZipArchive::inflate_whole(std::uint64_t index, const std::string& na
     std::string& deflated = deflated_;
     deflated.resize(static_cast<std::size_t>(stat.comp_size));
     std::uint64_t got = 0;
+    std::string reason;
     while (got < deflated.size()) {
         const zip_int64_t n = zip_fread(member, deflated.data() + got, deflated.size() - got);
+        if (n < 0) reason = std::string(" (") + zip_file_strerror(member) + ")";
         if (n <= 0) break;
         got += static_cast<std::uint64_t>(n);
     }
-    const std::string reason = zip_file_strerror(member);
     zip_fclose(member);
     if (got != stat.comp_size) {
         throw InvalidInput(file_, name,
                            "is truncated: " + std::to_string(got) + " of its " + std::to_string(stat.comp_size) +
-                               " compressed bytes can be read (" + reason + ")");
+                               " compressed bytes can be read" + reason);
     }
     if (inflater_ == nullptr) inflater_ = libdeflate_alloc_decompressor();
     if (inflater_ == nullptr) throw std::bad_alloc();
