@@ -209,18 +209,23 @@ NanoscopeSource::NanoscopeSource(const std::filesystem::path& path, const ReadOp
         throw InvalidInput(file, "\\Operating mode: " + mode, "must be Force or Force Volume (force curves)");
     }
     const Section& ramp = header.section("Ciao force list");
-    // Force volume: `force/line` curves a line on a square grid, stored one after the other, each as a single
-    // file's curve (the layout jlopezalo/PyFMReader reads: Data length = bytes x 2 x samples x force/line^2).
-    std::size_t per_line = 1;
-    if (mode == "Force Volume") {
-        const double count = header.number(ramp, "force/line");
+    // Force volume: n x n curves on a square grid, stored one after the other, each as a single file's curve. n is
+    // the force list's `force/line` (jlopezalo/PyFMReader) or the scan list's `Samps/line` (pyMFD, for NanoScope
+    // 7.2): the one whose square the deflection channel's Data length holds (bytes x 2 x samples x n^2).
+    std::vector<std::pair<std::string, std::size_t>> per_line_candidates;  // (the header's words, n)
+    if (mode == "Force") per_line_candidates.emplace_back("Operating mode: Force", 1);
+    for (const auto& [in, key] : {std::pair<const Section*, const char*>{&ramp, "force/line"}, {&scan, "Samps/line"}}) {
+        if (mode == "Force" || in->find(key) == nullptr) continue;
+        const std::string words = header_key(key) + ": " + *in->find(key);
+        const double count = header.number(*in, key);
         if (!(count >= 1.0) || count > 4096.0 || count != std::floor(count)) {
-            throw InvalidInput(file, "\\force/line: " + header.value(ramp, "force/line"),
-                               "must be a whole number from 1 to 4096 (curves a line of the force volume)");
+            throw InvalidInput(file, words, "must be a whole number from 1 to 4096 (curves a line of a force volume)");
         }
-        per_line = static_cast<std::size_t>(count);
+        per_line_candidates.emplace_back(words, static_cast<std::size_t>(count));
     }
-    const std::size_t curves = per_line * per_line;
+    if (per_line_candidates.empty()) {
+        throw InvalidInput(file, "\\force/line", "a force volume must state its curves a line");
+    }
     for (const std::string_view delay : {"Reverse delay", "Hold Time"}) {
         if (const std::string* value = ramp.find(delay); value != nullptr && header.number(ramp, delay) != 0.0) {
             throw InvalidInput(file, header_key(delay) + ": " + *value,
@@ -253,13 +258,25 @@ NanoscopeSource::NanoscopeSource(const std::filesystem::path& path, const ReadOp
                            "must lie within the file's " + std::to_string(bytes.size()) + " bytes (truncated?)");
     }
     const auto data_bytes = static_cast<std::size_t>(length);
-    const std::size_t samples = 2 * per_segment * curves;
-    const std::size_t bytes_per_sample = data_bytes / samples;
-    if ((bytes_per_sample != 2 && bytes_per_sample != 4) || bytes_per_sample * samples != data_bytes) {
-        throw InvalidInput(file, "\\Data length: " + header.value(channel, "Data length"),
-                           "must be 2 or 4 bytes times the " + std::to_string(samples) + " samples (" +
-                               std::to_string(curves) + " curves of " + std::to_string(2 * per_segment) + ")");
+    std::size_t per_line = 0;
+    std::size_t bytes_per_sample = 0;
+    std::string stated;
+    for (const auto& [words, count] : per_line_candidates) {
+        const std::size_t samples = 2 * per_segment * count * count;
+        const std::size_t bytes_each = data_bytes / samples;
+        if ((bytes_each == 2 || bytes_each == 4) && bytes_each * samples == data_bytes) {
+            per_line = count;
+            bytes_per_sample = bytes_each;
+            break;
+        }
+        stated += (stated.empty() ? "" : " or ") + std::to_string(count * count) + " (" + words + ")";
     }
+    if (per_line == 0) {
+        throw InvalidInput(file, "\\Data length: " + header.value(channel, "Data length"),
+                           "must be 2 or 4 bytes times " + std::to_string(2 * per_segment) + " samples times " +
+                               stated + " curves");
+    }
+    const std::size_t curves = per_line * per_line;
 
     const ScaledValue scale = parse_scaled(header, channel, "@4:Z scale");
     const double deflection_sensitivity = sensitivity_nm_per_volt(header, scale.sensitivity) * 1e-9;  // m/V

@@ -36,7 +36,9 @@ std::int32_t stored(const std::string& bytes, std::size_t at) {
 }
 
 /// The force volume of `per_line` x `per_line` curves with `curves` curves' data, written to a scratch file.
-fs::path force_volume(const std::string& name, const std::string& per_line, std::size_t curves) {
+/// `scan_per_line` replaces the scan list's `Samps/line: 256` where not empty.
+fs::path force_volume(const std::string& name, const std::string& per_line, std::size_t curves,
+                      const std::string& scan_per_line = "") {
     std::ifstream stream(fs::path(MDR_VENDOR_DATA) / "20200904_Egel4-Z1.0_00025.spm", std::ios::binary);
     const std::string vendor{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
     const std::string end = "\\*File list end\r\n";
@@ -45,6 +47,9 @@ fs::path force_volume(const std::string& name, const std::string& per_line, std:
     header = replaced(header, "\\force/line: 16\r\n", "\\force/line: " + per_line + "\r\n");
     header = replaced(header, "\\Data length: 8192\r\n",
                       "\\Data length: " + std::to_string(curves * curve_bytes) + "\r\n");
+    if (!scan_per_line.empty()) {
+        header = replaced(header, "\\Samps/line: 256\r\n", "\\Samps/line: " + scan_per_line + "\r\n");
+    }
     header += '\x1a';
     header.resize(data_offset, '\0');  // the header's padding up to the data, as in the vendor file
     std::string data;
@@ -98,8 +103,21 @@ TEST(NanoscopeForceVolume, DataLengthNotHoldingForceLineSquaredCurvesIsRefused) 
     } catch (const mdr::InvalidInput& error) {
         EXPECT_EQ(error.key(), path.string());
         EXPECT_EQ(error.value(), "\\Data length: 32768") << error.what();
-        EXPECT_NE(error.rule().find("9 curves of 2048"), std::string::npos) << error.what();
+        EXPECT_EQ(error.rule(),
+                  "must be 2 or 4 bytes times 2048 samples times 9 (\\force/line: 3) or 65536 (\\Samps/line: 256) "
+                  "curves");
     }
+    fs::remove(path);
+}
+
+TEST(NanoscopeForceVolume, CurvesALineMayBeTheScanListsSampsPerLineWhereTheDataLengthSaysSo) {
+    // pyMFD (NanoScope 7.2) counts the curves a line by the scan list's Samps/line; here force/line 16 would need
+    // 256 curves, the scan list's 2 gives the 4 stored.
+    const fs::path path = force_volume("scan", "16", 4, "2");
+    mdr::instrument::CurveFile file(path);
+    ASSERT_EQ(file.size(), 4u);
+    EXPECT_NEAR(file.read(3).deflection[1023], 4 * 4264 * metres_per_lsb, 1e-20);
+    EXPECT_EQ(file.read(3).position.row, 1u);
     fs::remove(path);
 }
 
