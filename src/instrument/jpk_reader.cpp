@@ -235,19 +235,26 @@ bool lists(const std::string& list, const std::string& name) {
     return false;
 }
 
-/// A channel of a segment: its stored numbers (`raw`) and the encoder's scaling to its base slot.
+/// Where a curve's channels are read into, kept from one channel to the next.
+struct ChannelScratch {
+    std::string bytes;        ///< the member's inflated bytes
+    std::vector<double> raw;  ///< its stored numbers
+};
+
+/// A channel of a segment: its stored numbers (`scratch.raw`) and the encoder's scaling to its base slot.
 Affine read_channel(ZipArchive& zip, const Header& header, const std::string& folder, const std::string& channel,
-                    std::size_t points, std::vector<double>& raw) {
+                    std::size_t points, ChannelScratch& scratch) {
     const Encoding encoding = channel_encoding(header, channel);
     const std::string member = folder + header.text("channel." + channel + ".data.file.name");
-    const std::string bytes = zip.read(member);
+    std::string& bytes = scratch.bytes;
+    zip.read(member, bytes);
     if (bytes.size() % encoding.bytes != 0 || bytes.size() / encoding.bytes != points) {
         throw InvalidInput(zip.file(), member,
                            "holds " + std::to_string(bytes.size()) + " bytes, the segment header states " +
                                std::to_string(points) + " points of " + std::to_string(encoding.bytes) +
                                " bytes (truncated or corrupted)");
     }
-    decode(bytes, encoding, raw);
+    decode(bytes, encoding, scratch.raw);
     return encoding.scaling;
 }
 
@@ -273,7 +280,7 @@ Curve read_series(ZipArchive& zip, const std::string& root, const Properties& se
     if (segments == 0)
         throw series_header.error(type + ".force-segments.count", "(no segments/0/)", "a curve needs a segment");
     double start_time = 0.0;
-    std::vector<double> scratch;
+    ChannelScratch scratch;
     for (std::size_t index = 0; index < segments; ++index) {
         const std::string folder = root + "segments/" + std::to_string(index) + "/";
         const std::string member = folder + "segment-header.properties";
@@ -320,12 +327,12 @@ Curve read_series(ZipArchive& zip, const std::string& root, const Properties& se
             curve.spring_constant = spring_constant;
             curve.sensitivity = sensitivity;
         }
-        std::vector<double>& raw = scratch;
-        const Affine volts = read_channel(zip, header, folder, "vDeflection", points, raw);
+        const std::vector<double>& raw = scratch.raw;
+        const Affine volts = read_channel(zip, header, folder, "vDeflection", points, scratch);
         append_calibrated(curve.force, raw, volts, slot_affine(header, "vDeflection", "force"));
         append_calibrated(curve.deflection, raw, volts, slot_affine(header, "vDeflection", "distance"));
         const std::string& height_slot = header.text("channel." + height + ".conversion-set.conversions.default");
-        const Affine height_encoder = read_channel(zip, header, folder, height, points, raw);
+        const Affine height_encoder = read_channel(zip, header, folder, height, points, scratch);
         append_calibrated(curve.height, raw, height_encoder, slot_affine(header, height, height_slot));
         const double step = duration / static_cast<double>(points);
         if (curve.segment_names.size() > std::numeric_limits<std::uint16_t>::max()) {
@@ -422,6 +429,7 @@ JpkSource::JpkSource(const std::filesystem::path& path, const ReadOptions& optio
         roots_.emplace_back();
         return;
     }
+    top_metadata_.insert(top_.begin(), top_.end());
     std::vector<std::size_t> indices;
     for (const std::string& name : zip.names()) {
         std::size_t index = 0;
@@ -468,8 +476,9 @@ Curve JpkSource::read(std::size_t index) {
     curve.position.y = series_header.number(series_type + ".header.position.y");
     curve.position.index = series_header.count(series_type + ".header.position-index");
     place_on_grid(Header(top_, shared_, zip.file(), "header.properties"), type_, curve);
-    curve.metadata.insert(series.begin(), series.end());
-    curve.metadata.insert(top_.begin(), top_.end());
+    // The map's header, copied whole (a tree copy makes no comparisons), then the curve's own, which wins.
+    curve.metadata = top_metadata_;
+    for (const auto& [key, value] : series) curve.metadata.insert_or_assign(key, value);
     return curve;
 }
 

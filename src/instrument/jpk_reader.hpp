@@ -3,6 +3,7 @@
 /// JPK Instruments force files: `.jpk-force` (one curve), `.jpk-force-map` and `.jpk-qi-data` (maps).
 
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -30,6 +31,7 @@ private:
     std::unique_ptr<ZipArchive> zip_;
     Properties top_;
     Properties shared_;
+    std::map<std::string, std::string> top_metadata_;  ///< a map's header, as each of its curves' metadata starts
     std::string type_;
     std::vector<std::string> roots_;  ///< per curve, its folder in the archive (`""` for a single curve)
 };

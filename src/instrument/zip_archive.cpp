@@ -68,6 +68,12 @@ bool ZipArchive::contains(const std::string& name) const {
 }
 
 std::string ZipArchive::read(const std::string& name) {
+    std::string bytes;
+    read(name, bytes);
+    return bytes;
+}
+
+void ZipArchive::read(const std::string& name, std::string& bytes) {
     const zip_int64_t index = zip_name_locate(archive_, name.c_str(), 0);
     if (index < 0) throw InvalidInput(file_, name, "the archive has no such member");
     zip_stat_t stat;
@@ -81,19 +87,20 @@ std::string ZipArchive::read(const std::string& name) {
                                std::to_string(max_member_bytes >> 20) + " MiB per member or " +
                                std::to_string(max_total_bytes >> 30) + " GiB per archive that are read");
     }
-    std::string bytes = inflates_whole(stat) ? inflate_whole(static_cast<zip_uint64_t>(index), name, stat)
-                                             : read_stream(static_cast<zip_uint64_t>(index), name, stat.size);
+    if (inflates_whole(stat))
+        inflate_whole(static_cast<zip_uint64_t>(index), name, stat, bytes);
+    else
+        read_stream(static_cast<zip_uint64_t>(index), name, stat.size, bytes);
     inflated_bytes_ += bytes.size();
-    return bytes;
 }
 
-std::string ZipArchive::read_stream(std::uint64_t index, const std::string& name, std::uint64_t size) {
+void ZipArchive::read_stream(std::uint64_t index, const std::string& name, std::uint64_t size, std::string& bytes) {
     zip_file_t* member = zip_fopen_index(archive_, index, 0);
     if (member == nullptr) {
         throw InvalidInput(file_, name, "cannot be opened: " + std::string(zip_strerror(archive_)));
     }
     // One byte more than stated: a member that inflates to more than its stated size is corrupted.
-    std::string bytes(static_cast<std::size_t>(size) + 1, '\0');
+    bytes.resize(static_cast<std::size_t>(size) + 1);
     std::uint64_t got = 0;
     while (got < bytes.size()) {
         const zip_int64_t n = zip_fread(member, bytes.data() + got, bytes.size() - got);
@@ -112,10 +119,10 @@ std::string ZipArchive::read_stream(std::uint64_t index, const std::string& name
                                std::to_string(size) + (closed != 0 ? " (" + libzip_message(closed) + ")" : ""));
     }
     bytes.resize(static_cast<std::size_t>(got));
-    return bytes;
 }
 
-std::string ZipArchive::inflate_whole(std::uint64_t index, const std::string& name, const struct zip_stat& stat) {
+void ZipArchive::inflate_whole(std::uint64_t index, const std::string& name, const struct zip_stat& stat,
+                               std::string& bytes) {
     zip_file_t* member = zip_fopen_index(archive_, index, ZIP_FL_COMPRESSED);
     if (member == nullptr) {
         throw InvalidInput(file_, name, "cannot be opened: " + std::string(zip_strerror(archive_)));
@@ -138,7 +145,7 @@ std::string ZipArchive::inflate_whole(std::uint64_t index, const std::string& na
     }
     if (inflater_ == nullptr) inflater_ = libdeflate_alloc_decompressor();
     if (inflater_ == nullptr) throw std::bad_alloc();
-    std::string bytes(static_cast<std::size_t>(stat.size), '\0');
+    bytes.resize(static_cast<std::size_t>(stat.size));
     std::size_t inflated = 0;
     const libdeflate_result result = libdeflate_deflate_decompress(inflater_, deflated.data(), deflated.size(),
                                                                    bytes.data(), bytes.size(), &inflated);
@@ -158,7 +165,6 @@ std::string ZipArchive::inflate_whole(std::uint64_t index, const std::string& na
         throw InvalidInput(file_, name,
                            "is corrupted: its CRC-32 is " + hex32(crc) + ", the archive states " + hex32(stat.crc));
     }
-    return bytes;
 }
 
 }  // namespace mdr::instrument

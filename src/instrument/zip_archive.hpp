@@ -35,14 +35,16 @@ public:
     bool contains(const std::string& name) const;
     /// The member's inflated bytes; throws mdr::InvalidInput if it is missing, too large or corrupted.
     std::string read(const std::string& name);
+    /// The same into `bytes`, whose storage is reused (for members read one after another).
+    void read(const std::string& name, std::string& bytes);
     /// The archive's path as text, for messages.
     const std::string& file() const noexcept { return file_; }
 
 private:
     /// The member at `index` through libzip's stream (which checks its CRC-32), expected `size` bytes long.
-    std::string read_stream(std::uint64_t index, const std::string& name, std::uint64_t size);
+    void read_stream(std::uint64_t index, const std::string& name, std::uint64_t size, std::string& bytes);
     /// The deflated member at `index` inflated by libdeflate, its size and CRC-32 checked against `stat`.
-    std::string inflate_whole(std::uint64_t index, const std::string& name, const struct zip_stat& stat);
+    void inflate_whole(std::uint64_t index, const std::string& name, const struct zip_stat& stat, std::string& bytes);
 
     struct zip* archive_ = nullptr;
     struct libdeflate_decompressor* inflater_ = nullptr;  ///< made on the first deflated member
