@@ -7,6 +7,7 @@
 // element count is the element model's: second order in the element width.
 
 #include "fit/band_model.hpp"
+#include "fit/curve_model.hpp"
 
 #include <gtest/gtest.h>
 
@@ -125,6 +126,37 @@ TEST(BandModel, MeasuredLikeHistoriesAgreeWithTheElementModel) {
         const double all = static_cast<double>(elements) * static_cast<double>(history.time.size());
         std::cout << "trial " << trial << ": noise " << noise << ", element steps " << static_cast<double>(band->element_steps) / all
                   << " of the element model's\n";
+    }
+}
+
+// A fit's element run of a depth-driven curve (run_curve) is the band model, with the drivers' elements: its forces
+// at the curve's points are the drivers' element model's.
+TEST(BandModel, FitsRunTheElementModelAsTheBandModel) {
+    std::mt19937 random(7);
+    const auto material = rheology::Rheology::prony(2e5, {{5e5, 0.05}, {3e5, 0.8}});
+    const std::shared_ptr<const profile::Profile> indenter = profile::make_cone(20.0);
+    const History history = measured_like(random, 1e-5, 3e-4);
+    Curve curve;
+    curve.name = "measured-like";
+    curve.time = history.time;
+    curve.depth = history.depth;
+    curve.force.assign(history.time.size(), 0.0);
+    curve.force_noise = 1e-6;
+    const CurveModel prepared = prepare_curve(curve, Fitted::force, 0.0);
+    drivers::ContactCase model_case{.title = "fit",
+                                    .material = material,
+                                    .indenter = indenter,
+                                    .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
+                                    .end_time = 1.0};
+    const std::size_t elements = 2000;
+    const auto model = run_curve(model_case, prepared, 0.0, 0.0, elements, ForwardModel::elements);
+    ASSERT_TRUE(model.has_value());
+    EXPECT_TRUE(model->band);
+    const auto expected = element_forces(material, indenter, history, elements).first;
+    ASSERT_EQ(model->values.size(), expected.size());
+    const double scale = largest(expected);
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        ASSERT_NEAR(model->values[i], expected[i], 1e-9 * scale) << "t = " << history.time[i];
     }
 }
 
