@@ -32,7 +32,11 @@ public:
     std::optional<double> step(double t0, double t1, double d0, double d1) {
         const double deepest = std::max(d0, d1);
         if (!(deepest <= beyond_)) return std::nullopt;
-        foundation::fill_step_coefficients(material_, t1 - t0, coefficients_);
+        // Measured times are uniform up to round-off: a step within 1e-12 of the last one keeps its coefficients
+        // (their change is below 1e-12 relative).
+        if (!(std::abs(t1 - t0 - coefficients_.time_step) <= 1e-12 * (t1 - t0)) || coefficients_.decay.empty()) {
+            foundation::fill_step_coefficients(material_, t1 - t0, coefficients_);
+        }
         peak_ = std::max(peak_, d1);
         // Below `limit` a folded element stays in contact (band_model.hpp); the margin covers the round-off of its
         // stress, so that the element model's own test (sigma >= 0) cannot disagree.
