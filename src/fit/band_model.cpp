@@ -121,7 +121,9 @@ private:
         const bool split = contact ? !(contact_stress >= 0.0) : !(gap_end <= 0.0);
         if (!split) {
             const double increment = contact ? contact_increment : free_increment;
-            for (std::size_t k = 0; k < branches_; ++k) h[k] = coefficients_.decay[k] * h[k] + coefficients_.gain[k] * increment;
+            for (std::size_t k = 0; k < branches_; ++k) {
+                h[k] = coefficients_.decay[k] * h[k] + coefficients_.gain[k] * increment;
+            }
             w_[i] += increment;
             stress_[i] = contact ? contact_stress : 0.0;
             return stress_[i];

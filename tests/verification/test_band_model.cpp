@@ -86,7 +86,9 @@ std::pair<std::vector<double>, double> element_forces(const rheology::Rheology& 
                                       .end_time = history.time.back()};
     contact_case.numerics.elements = elements;
     double widest = 0.0;
-    for (std::size_t i = 1; i < history.time.size(); ++i) widest = std::max(widest, history.time[i] - history.time[i - 1]);
+    for (std::size_t i = 1; i < history.time.size(); ++i) {
+        widest = std::max(widest, history.time[i] - history.time[i - 1]);
+    }
     contact_case.numerics.time_step = widest;
     contact_case.numerics.min_segment_steps = 1;
     contact_case.numerics.output_every = 1;
@@ -124,8 +126,8 @@ TEST(BandModel, MeasuredLikeHistoriesAgreeWithTheElementModel) {
             ASSERT_NEAR(band->force[i], expected[i], 1e-9 * scale) << "trial " << trial << ", t = " << history.time[i];
         }
         const double all = static_cast<double>(elements) * static_cast<double>(history.time.size());
-        std::cout << "trial " << trial << ": noise " << noise << ", element steps " << static_cast<double>(band->element_steps) / all
-                  << " of the element model's\n";
+        std::cout << "trial " << trial << ": noise " << noise << ", element steps "
+                  << static_cast<double>(band->element_steps) / all << " of the element model's\n";
     }
 }
 
