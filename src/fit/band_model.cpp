@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 
 namespace mdr::fit {
@@ -204,8 +205,13 @@ bool band_model_applies(const rheology::Rheology& material) {
 
 std::optional<BandResponse> band_forces(const rheology::Rheology& material, const profile::Profile& indenter,
                                         double spacing, std::size_t count, const std::vector<double>& time,
-                                        const std::vector<double>& depth) {
+                                        const std::vector<double>& depth,
+                                        const std::function<void()>& check_interrupt) {
     if (!band_model_applies(material) || time.empty() || count == 0) return std::nullopt;
+    // The drivers' Foundation refuses a state this large with its own message (numerics.elements): leave it to them.
+    if (count > foundation::max_elements || count * (material.terms().size() + 9) > foundation::max_elements * 4) {
+        return std::nullopt;
+    }
     BandRun run(material, indenter, spacing, count);
     BandResponse response{std::vector<double>(time.size(), 0.0), 0};
     if (depth.front() > 0.0) {  // a jump at the first time
@@ -214,6 +220,7 @@ std::optional<BandResponse> band_forces(const rheology::Rheology& material, cons
         response.force.front() = *force;
     }
     for (std::size_t i = 1; i < time.size(); ++i) {
+        if (check_interrupt && i % 4096 == 0) check_interrupt();
         const auto force = run.step(time[i - 1], time[i], depth[i - 1], depth[i]);
         if (!force) return std::nullopt;
         response.force[i] = *force;

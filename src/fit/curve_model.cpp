@@ -108,8 +108,8 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     // which the drivers then report).
     if (depth_driven && band_model_applies(model_case.material) && !model_case.indenter->is_flat_punch()) {
         const double spacing = drivers::resolve_numerics(model_case).half_width / static_cast<double>(elements);
-        if (check_interrupt) check_interrupt();
-        if (auto band = band_forces(model_case.material, *model_case.indenter, spacing, elements, times, depths)) {
+        if (auto band = band_forces(model_case.material, *model_case.indenter, spacing, elements, times, depths,
+                                    check_interrupt)) {
             const std::size_t offset = times.size() - curve.time.size();  // the point added before the first
             ModelValues model;
             model.band = true;
