@@ -2,7 +2,8 @@
 """Fits of the shared real relaxation records (examples/data/jpk_sr_cell1-000{1,2,3}.csv: pause, extend, 30 s hold,
 ~10 000 rows) timed beside the classic fit of the same rows (issue 25). mdr: `mdr fit` of a cone (35 degrees) with a
 standard solid or a 3-term Prony series, contact point and baseline fitted; its fit.json gives the wall time, the
-iterations and the model runs per forward model. Classic: scipy least_squares with Lee-Radok for a cone,
+iterations and the model runs per forward model (band: the element runs that ran as the band model). Classic: scipy
+least_squares with Lee-Radok for a cone,
 F = (8 tan(theta) / pi) int G(t - s) d/ds [d(s)^2] ds (exact for d^2 linear per step), on the measured depth
 (`indentation_m`) with the contact point and the baseline fitted, CPU time in this process.
 Usage: bench/real_fits.py [path/to/mdr [results.json]]   (one core each, one fit at a time; results.json: every
@@ -84,7 +85,7 @@ def classic_fit(record: pathlib.Path, model: str) -> tuple[float, int, float]:
 
 
 def main() -> None:
-    print(f"{'record':<22} {'model':<9} {'mdr s':>7} {'iter':>5} {'runs':>5} {'elem':>5} {'status':<14} "
+    print(f"{'record':<22} {'model':<9} {'mdr s':>7} {'iter':>5} {'runs':>5} {'elem':>5} {'band':>5} {'status':<14} "
           f"{'res/noise':>9} {'classic s':>9} {'evals':>6} {'res/noise':>9} {'ratio':>6}")
     results = {}
     with tempfile.TemporaryDirectory() as scratch:
@@ -96,7 +97,8 @@ def main() -> None:
                 results[f"{record.stem}/{model}"] = fit
                 seconds, evaluations, classic_residual = classic_fit(record, model)
                 print(f"{record.stem:<22} {model:<9} {fit['wall_seconds']:7.2f} {fit['iterations']:5d} "
-                      f"{fit['evaluations']:5d} {fit['element_evaluations']:5d} {fit['status']:<14} "
+                      f"{fit['evaluations']:5d} {fit['element_evaluations']:5d} {fit.get('band_evaluations', 0):5d} "
+                      f"{fit['status']:<14} "
                       f"{fit['residual_to_noise']:9.1f} {seconds:9.3f} {evaluations:6d} {classic_residual:9.1f} "
                       f"{fit['wall_seconds'] / seconds:6.0f}", flush=True)
     if len(sys.argv) > 2:

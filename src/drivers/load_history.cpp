@@ -10,19 +10,20 @@ namespace mdr::drivers {
 
 LoadHistory::LoadHistory(std::vector<LoadPoint> points, std::string key) : points_(std::move(points)) {
     if (points_.empty()) throw InvalidInput(key, "[]", "needs at least one point [t, value]");
+    // The key of point i, built only for a message (a measured history has 10^4..10^7 points).
+    const auto item = [&](std::size_t i) { return key + "[" + std::to_string(i) + "]"; };
     for (std::size_t i = 0; i < points_.size(); ++i) {
-        const std::string item = key + "[" + std::to_string(i) + "]";
-        require_finite(item + ".t", points_[i].time);
-        require_finite(item + ".value", points_[i].value);
+        if (!std::isfinite(points_[i].time)) require_finite(item(i) + ".t", points_[i].time);
+        if (!std::isfinite(points_[i].value)) require_finite(item(i) + ".value", points_[i].value);
         if (i > 0 && points_[i].time < points_[i - 1].time) {
-            throw InvalidInput(item + ".t", format_value(points_[i].time),
+            throw InvalidInput(item(i) + ".t", format_value(points_[i].time),
                                "times must not go backwards (previous point is at t = " +
                                    format_value(points_[i - 1].time) + ")");
         }
         // The drivers step along each segment at its rate (value - previous) / (t - previous): a double must hold it.
         if (i > 0 && points_[i].time > points_[i - 1].time &&
             !std::isfinite((points_[i].value - points_[i - 1].value) / (points_[i].time - points_[i - 1].time))) {
-            throw InvalidInput(item + ".value", format_value(points_[i].value),
+            throw InvalidInput(item(i) + ".value", format_value(points_[i].value),
                                "the rate from the previous point (t = " + format_value(points_[i - 1].time) +
                                    ", value = " + format_value(points_[i - 1].value) +
                                    ") is larger than a double can hold");

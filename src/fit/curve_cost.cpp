@@ -23,9 +23,11 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 
 CurveCost::CurveCost(const FitProblem& problem, const ParameterScales& scales, const CurveModel& prepared,
                      std::size_t curve, std::size_t elements, std::atomic<std::size_t>& evaluations,
-                     std::atomic<std::size_t>& element_evaluations)
+                     std::atomic<std::size_t>& element_evaluations,
+                     std::atomic<std::size_t>* band_evaluations)
     : problem_(problem), scales_(scales), prepared_(prepared), curve_(curve), elements_(elements),
-      evaluations_(evaluations), element_evaluations_(element_evaluations) {
+      evaluations_(evaluations), element_evaluations_(element_evaluations),
+      band_evaluations_(band_evaluations) {
     AddParameterBlock(static_cast<int>(problem.parameters.size()));
     if (scales.nuisance_size() > 0) AddParameterBlock(static_cast<int>(scales.nuisance_size()));
     SetNumResiduals(static_cast<int>(prepared.used.size()));
@@ -52,6 +54,7 @@ std::optional<ModelValues> CurveCost::model(const double* shared, const double* 
     if (values) {
         ++evaluations_;
         if (forward == ForwardModel::elements) ++element_evaluations_;
+        if (values->band && band_evaluations_ != nullptr) ++*band_evaluations_;
     }
     return values;
 }

@@ -23,10 +23,12 @@ class CurveCost : public ceres::DynamicCostFunction {
 public:
     /// `prepared` and `scales` must outlive the cost function; `elements` is the default of the element model
     /// (default_fit_elements) when neither the settings nor the case set them; `evaluations` counts the runs and
-    /// `element_evaluations` those of the element model.
+    /// `element_evaluations` those of the element model, `band_evaluations` (when given) those of them that ran as
+    /// the band model (band_model.hpp).
     CurveCost(const FitProblem& problem, const ParameterScales& scales, const CurveModel& prepared, std::size_t curve,
               std::size_t elements, std::atomic<std::size_t>& evaluations,
-              std::atomic<std::size_t>& element_evaluations);
+              std::atomic<std::size_t>& element_evaluations,
+              std::atomic<std::size_t>* band_evaluations = nullptr);
 
     /// Ceres' entry point: forward differences for the shared parameters and the contact point under
     /// displacement control, exact derivatives of the terms that enter linearly (the baseline of a fitted force,
@@ -94,6 +96,7 @@ private:
     std::size_t elements_;
     std::atomic<std::size_t>& evaluations_;
     std::atomic<std::size_t>& element_evaluations_;
+    std::atomic<std::size_t>* band_evaluations_;
     mutable std::mutex last_run_mutex_;
     mutable std::array<std::optional<LastRun>, 2> last_runs_;  ///< per ForwardModel (continuum, elements)
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "band_model.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "ting_model.hpp"
 
@@ -76,6 +77,15 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     }
     // Start one interval early from the undeformed state, so that a first point out of contact is no jump.
     if (points.front().value <= 0.0) points.insert(points.begin(), {curve.time[0] - (curve.time[1] - curve.time[0]), 0.0});
+    std::vector<double> times, depths;  // the driving points, for the band model
+    if (depth_driven) {
+        times.reserve(points.size());
+        depths.reserve(points.size());
+        for (const auto& point : points) {
+            times.push_back(point.time);
+            depths.push_back(point.value);
+        }
+    }
     model_case.control = depth_driven ? drivers::Control::displacement : drivers::Control::force;
     model_case.load.history = drivers::LoadHistory(std::move(points), "load.history");
     model_case.end_time = curve.time.back();
@@ -92,6 +102,21 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     if (depth_driven) {
         model_case.numerics.time_step = widest;
         model_case.numerics.min_segment_steps = 1;
+    }
+    // A depth-driven run with a Prony material: the same elements with those that provably stay in contact summed
+    // (band_model.hpp), the same forces; the drivers where it does not apply (or the contact outgrows the elements,
+    // which the drivers then report).
+    if (depth_driven && band_model_applies(model_case.material) && !model_case.indenter->is_flat_punch()) {
+        const double spacing = drivers::resolve_numerics(model_case).half_width / static_cast<double>(elements);
+        if (auto band = band_forces(model_case.material, *model_case.indenter, spacing, elements, times, depths,
+                                    check_interrupt)) {
+            const std::size_t offset = times.size() - curve.time.size();  // the point added before the first
+            ModelValues model;
+            model.band = true;
+            model.values.reserve(prepared.used.size());
+            for (std::size_t i : prepared.used) model.values.push_back(band->force[i + offset] + baseline);
+            return model;
+        }
     }
     drivers::ProgressObserver progress;
     if (check_interrupt) progress = [&](double) { check_interrupt(); };

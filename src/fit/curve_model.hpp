@@ -37,6 +37,7 @@ struct ModelValues {
     /// d values / dG_b per branch of the material (TingResponse's order) at the used points: from the continuum
     /// model only (empty for the element model).
     std::vector<std::vector<double>> modulus_derivatives{};
+    bool band = false;  ///< the element model ran as the band model (band_model.hpp: the same forces, fewer steps)
 };
 
 /// The model of the fitted quantity at the used points (force plus baseline, or depth plus contact_depth):

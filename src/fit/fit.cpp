@@ -263,14 +263,14 @@ FitResult solve(const FitProblem& problem) {
     }
 
     const std::size_t elements = default_fit_elements(noise_to_peak(scales, prepared));
-    std::atomic<std::size_t> evaluations{0}, element_evaluations{0};
+    std::atomic<std::size_t> evaluations{0}, element_evaluations{0}, band_evaluations{0};
     ceres::Problem::Options problem_options;
     problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     ceres::Problem solver_problem(problem_options);
     std::vector<std::unique_ptr<CurveCost>> costs;
     for (std::size_t c = 0; c < problem.curves.size(); ++c) {
         costs.push_back(std::make_unique<CurveCost>(problem, scales, prepared[c], c, elements, evaluations,
-                                                    element_evaluations));
+                                                    element_evaluations, &band_evaluations));
         std::vector<double*> blocks{shared.data()};
         if (m > 0) blocks.push_back(nuisance[c].data());
         solver_problem.AddResidualBlock(costs.back().get(), nullptr, blocks);
@@ -332,6 +332,7 @@ FitResult solve(const FitProblem& problem) {
     describe_young_moduli(problem, result);
     result.evaluations = evaluations;
     result.element_evaluations = element_evaluations;
+    result.band_evaluations = band_evaluations;
     try {
         result.material = material_bands(problem, result);
     } catch (const std::exception&) {

@@ -142,6 +142,7 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
         {"iterations", {result.iterations}},
         {"evaluations", {result.evaluations}},
         {"element_evaluations", {result.element_evaluations}},
+        {"band_evaluations", {result.band_evaluations}},
         {"wall_seconds", {result.wall_seconds}},
         {"units", {units}},
     }};

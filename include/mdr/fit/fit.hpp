@@ -217,6 +217,10 @@ struct FitResult {
     /// continuum model does not cover (outside Ting's class: a reloading, a dip while loading; a parallel dashpot;
     /// a flat or tabulated indenter). The other runs use that continuum model, which has no discretisation.
     std::size_t element_evaluations = 0;
+    /// Of the element runs, those of depth-driven curves with a Prony material (G_inf > 0, no dashpot): the same
+    /// elements and forces with the elements that provably stay in contact summed instead of stepped (the band
+    /// model, docs/performance.md "Real curves"), a cost of the elements near the contact edge only.
+    std::size_t band_evaluations = 0;
     double wall_seconds = 0.0;               ///< wall time of the fit
     MaterialBands material;                  ///< the identified material functions with their bands
 };

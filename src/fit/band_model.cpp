@@ -1,0 +1,232 @@
+#include "band_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mdr/foundation/foundation.hpp"
+#include "mdr/foundation/step_coefficients.hpp"
+
+namespace mdr::fit {
+
+namespace {
+
+constexpr double force_per_stress = 8.0;  // F = 2 halves x k_z / G = 4 dx (eq. 11, 21): F = 8 dx sum sigma_i
+
+// The foundation's elements for one material (no dashpot): per element w, sigma, contact flag and the branch
+// memories h_k (element-major), stepped with the rules of foundation.cpp (plain step, entry and exit split at the
+// linearly interpolated crossing); the prefix [0, folded) is summed (see band_model.hpp).
+class BandRun {
+public:
+    BandRun(const rheology::Rheology& material, const profile::Profile& indenter, double spacing, std::size_t count)
+        : material_(material), spacing_(spacing), branches_(material.terms().size()), g_(count), w_(count, 0.0),
+          stress_(count, 0.0), contact_(count, 0), h_(count * branches_, 0.0), fold_time_(count, 0.0),
+          running_(branches_, 0.0), folded_memory_(branches_, 0.0), scratch_(branches_, 0.0) {
+        for (std::size_t i = 0; i < count; ++i) g_[i] = indenter.equivalent((static_cast<double>(i) + 0.5) * spacing);
+        beyond_ = indenter.equivalent(spacing * static_cast<double>(count) * (1.0 + 1e-12));
+        double instantaneous = material.equilibrium_modulus();
+        for (const auto& term : material.terms()) instantaneous += term.modulus;
+        ratio_ = instantaneous / material.equilibrium_modulus();
+    }
+
+    // The total force after a step over [t0, t1] with the depth linear from d0 to d1; nullopt when the depth
+    // reaches beyond the last element.
+    std::optional<double> step(double t0, double t1, double d0, double d1) {
+        const double deepest = std::max(d0, d1);
+        if (!(deepest <= beyond_)) return std::nullopt;
+        // Measured times are uniform up to round-off: a step within 1e-12 of the last one keeps its coefficients
+        // (their change is below 1e-12 relative).
+        if (!(std::abs(t1 - t0 - coefficients_.time_step) <= 1e-12 * (t1 - t0)) || coefficients_.decay.empty()) {
+            foundation::fill_step_coefficients(material_, t1 - t0, coefficients_);
+        }
+        peak_ = std::max(peak_, d1);
+        // Below `limit` a folded element stays in contact (band_model.hpp); the margin covers the round-off of its
+        // stress, so that the element model's own test (sigma >= 0) cannot disagree.
+        const double limit = peak_ - ratio_ * (peak_ - d1) - 1e-9 * peak_;
+        while (folded_ > 0 && !(g_[folded_ - 1] <= limit)) unfold(t0, d0);
+        while (touched_ < g_.size() && g_[touched_] < deepest) ++touched_;
+        double sum = 0.0;
+        for (std::size_t i = folded_; i < touched_; ++i) sum += step_element(i, d0, d1);
+        element_steps_ += touched_ - folded_;
+        const double g_inf = material_.equilibrium_modulus();
+        const auto& terms = material_.terms();
+        const double count = static_cast<double>(folded_);
+        double folded_stress = g_inf * (count * d1 - folded_profile_);
+        for (std::size_t k = 0; k < branches_; ++k) {
+            const double gain = coefficients_.gain[k], decay = coefficients_.decay[k];
+            folded_memory_[k] = decay * folded_memory_[k] + gain * count * (d1 - d0);
+            running_[k] = decay * running_[k] + gain * (d1 - d0);
+            folded_stress += terms[k].modulus * folded_memory_[k];
+        }
+        while (folded_ < touched_ && foldable(folded_, d1, limit)) fold(t1);
+        return force_per_stress * spacing_ * (sum + folded_stress);
+    }
+
+    std::size_t element_steps() const { return element_steps_; }
+
+private:
+    // Element i follows the indenter from here on for sure (band_model.hpp): in contact, g <= limit and every
+    // h_k >= d - D.
+    bool foldable(std::size_t i, double depth, double limit) const {
+        if (!contact_[i] || !(g_[i] <= limit) || !(stress_[i] >= 0.0)) return false;
+        for (std::size_t k = 0; k < branches_; ++k) {
+            if (!(h_[i * branches_ + k] >= depth - peak_)) return false;
+        }
+        return true;
+    }
+
+    // Folds element folded_ at time t: its h_k - Q_k is kept (it decays as exp(-(t' - t)/tau_k) from here on).
+    void fold(double time) {
+        const std::size_t i = folded_++;
+        for (std::size_t k = 0; k < branches_; ++k) {
+            folded_memory_[k] += h_[i * branches_ + k];
+            h_[i * branches_ + k] -= running_[k];
+        }
+        folded_profile_ += g_[i];
+        fold_time_[i] = time;
+    }
+
+    // Unfolds the last folded element with its state at time t, depth d (in contact: w = d - g).
+    void unfold(double time, double depth) {
+        const std::size_t i = --folded_;
+        const auto& terms = material_.terms();
+        double stress = material_.equilibrium_modulus() * (depth - g_[i]);
+        for (std::size_t k = 0; k < branches_; ++k) {
+            double& h = h_[i * branches_ + k];
+            h = running_[k] + std::exp(-(time - fold_time_[i]) / terms[k].relaxation_time) * h;
+            folded_memory_[k] -= h;
+            stress += terms[k].modulus * h;
+        }
+        w_[i] = depth - g_[i];
+        stress_[i] = stress;
+        contact_[i] = 1;
+        folded_profile_ -= g_[i];
+        if (folded_ == 0) {  // no drift of the sums' round-off into a later fold
+            std::fill(folded_memory_.begin(), folded_memory_.end(), 0.0);
+            folded_profile_ = 0.0;
+        }
+    }
+
+    // One element's step (foundation.cpp: plain_step, evaluate, split_stress); returns its stress at the end.
+    double step_element(std::size_t i, double d0, double d1) {
+        const auto& terms = material_.terms();
+        const double g_inf = material_.equilibrium_modulus();
+        double* h = h_.data() + i * branches_;
+        double relaxed = g_inf * w_[i];
+        for (std::size_t k = 0; k < branches_; ++k) relaxed += terms[k].modulus * coefficients_.decay[k] * h[k];
+        const double stiffness = coefficients_.stiffness;
+        const bool contact = contact_[i] != 0;
+        const double contact_increment = d1 - g_[i] - w_[i];
+        const double contact_stress = relaxed + stiffness * contact_increment;
+        const double free_increment = -relaxed / stiffness;
+        const double gap_end = contact_increment - free_increment;
+        const bool split = contact ? !(contact_stress >= 0.0) : !(gap_end <= 0.0);
+        if (!split) {
+            const double increment = contact ? contact_increment : free_increment;
+            for (std::size_t k = 0; k < branches_; ++k) {
+                h[k] = coefficients_.decay[k] * h[k] + coefficients_.gain[k] * increment;
+            }
+            w_[i] += increment;
+            stress_[i] = contact ? contact_stress : 0.0;
+            return stress_[i];
+        }
+        const double dt = coefficients_.time_step;
+        double stress = 0.0;
+        if (contact) {  // exit (eq. 20): the force crosses zero inside the step
+            const double before = stress_[i];
+            const double fraction = before > 0.0 ? before / (before - contact_stress) : 0.0;
+            contact_substep(fraction * dt, d0 + fraction * (d1 - d0) - g_[i], i);
+            free_substep(dt - fraction * dt, i);
+        } else {  // entry (eq. 14): the indenter reaches the creeping surface inside the step
+            const double gap_start = std::min(d0 - g_[i] - w_[i], 0.0);
+            const double gap_at_end = d1 - g_[i] - (w_[i] + free_increment);
+            const double fraction = gap_start / (gap_start - gap_at_end);
+            free_substep(fraction * dt, i);
+            stress = std::max(contact_substep(dt - fraction * dt, d1 - g_[i], i), 0.0);
+        }
+        contact_[i] = contact ? 0 : 1;
+        stress_[i] = stress;
+        return stress;
+    }
+
+    double contact_substep(double time_step, double displacement, std::size_t i) {
+        const auto& terms = material_.terms();
+        double* h = h_.data() + i * branches_;
+        const double dw = displacement - w_[i];
+        double stress = material_.equilibrium_modulus() * displacement;
+        for (std::size_t k = 0; k < branches_; ++k) {
+            const double ratio = time_step / terms[k].relaxation_time;
+            h[k] = std::exp(-ratio) * h[k] + foundation::branch_gain(ratio) * dw;
+            stress += terms[k].modulus * h[k];
+        }
+        w_[i] = displacement;
+        return stress;
+    }
+
+    void free_substep(double time_step, std::size_t i) {
+        const auto& terms = material_.terms();
+        double* h = h_.data() + i * branches_;
+        double relaxed = material_.equilibrium_modulus() * w_[i];
+        double stiffness = material_.equilibrium_modulus();
+        for (std::size_t k = 0; k < branches_; ++k) {
+            const double ratio = time_step / terms[k].relaxation_time;
+            scratch_[k] = foundation::branch_gain(ratio);
+            h[k] *= std::exp(-ratio);
+            relaxed += terms[k].modulus * h[k];
+            stiffness += terms[k].modulus * scratch_[k];
+        }
+        const double dw = -relaxed / stiffness;
+        for (std::size_t k = 0; k < branches_; ++k) h[k] += scratch_[k] * dw;
+        w_[i] += dw;
+    }
+
+    const rheology::Rheology& material_;
+    double spacing_;
+    std::size_t branches_;
+    std::vector<double> g_, w_, stress_;
+    std::vector<unsigned char> contact_;
+    std::vector<double> h_;          // h_k of an unfolded element, h_k - Q_k at its fold of a folded one
+    std::vector<double> fold_time_;  // when a folded element was folded
+    std::vector<double> running_;    // Q_k: the memory of an element that followed the indenter from the start
+    std::vector<double> folded_memory_;  // H_k = sum of the folded elements' h_k
+    std::vector<double> scratch_;
+    double folded_profile_ = 0.0;    // sum of the folded elements' g
+    std::size_t folded_ = 0, touched_ = 0, element_steps_ = 0;
+    double peak_ = 0.0, ratio_ = 1.0, beyond_ = 0.0;
+    foundation::StepCoefficients coefficients_;
+};
+
+}  // namespace
+
+bool band_model_applies(const rheology::Rheology& material) {
+    if (material.viscosity() != 0.0 || !(material.equilibrium_modulus() > 0.0)) return false;
+    return std::all_of(material.terms().begin(), material.terms().end(),
+                       [](const auto& term) { return term.modulus >= 0.0 && term.relaxation_time > 0.0; });
+}
+
+std::optional<BandResponse> band_forces(const rheology::Rheology& material, const profile::Profile& indenter,
+                                        double spacing, std::size_t count, const std::vector<double>& time,
+                                        const std::vector<double>& depth,
+                                        const std::function<void()>& check_interrupt) {
+    if (!band_model_applies(material) || time.empty() || count == 0) return std::nullopt;
+    // The drivers' Foundation refuses a state this large with its own message (numerics.elements): leave it to them.
+    if (count > foundation::max_elements || count * (material.terms().size() + 9) > foundation::max_elements * 4) {
+        return std::nullopt;
+    }
+    BandRun run(material, indenter, spacing, count);
+    BandResponse response{std::vector<double>(time.size(), 0.0), 0};
+    if (depth.front() > 0.0) {  // a jump at the first time
+        const auto force = run.step(time.front(), time.front(), 0.0, depth.front());
+        if (!force) return std::nullopt;
+        response.force.front() = *force;
+    }
+    for (std::size_t i = 1; i < time.size(); ++i) {
+        if (check_interrupt && i % 4096 == 0) check_interrupt();
+        const auto force = run.step(time[i - 1], time[i], depth[i - 1], depth[i]);
+        if (!force) return std::nullopt;
+        response.force[i] = *force;
+    }
+    response.element_steps = run.element_steps();
+    return response;
+}
+
+}  // namespace mdr::fit

@@ -1,0 +1,51 @@
+#pragma once
+/// \file
+/// The element foundation of a depth-driven run with the elements that provably stay in contact summed instead of
+/// stepped (internal to mdr_fit): the same elements, the same updates and the same forces as the drivers' element
+/// model (foundation.hpp), at a cost of O(steps x (branches + elements near the contact edge)).
+///
+/// The bound that lets an element be summed (docs/performance.md, "Real curves"): let D(t) be the running maximum
+/// of the depth d(t). An element of MDR profile g in contact has w = d - g (eq. 13) and, per Prony branch k, the
+/// memory h_k(t) = exp(-(t - t0)/tau_k) h_k(t0) + int_t0^t exp(-(t - s)/tau_k) d'(s) ds (eq. 16). Integrating by
+/// parts, h_k(t) >= d(t) - D(t) + exp(-(t - t0)/tau_k) (h_k(t0) - d(t0) + D(t0)), so h_k >= d - D, once true, stays
+/// true while the element is in contact (it holds from the entry on, where h_k = 0 and d = D). Its stress is then
+/// sigma = G_inf (d - g) + sum_k G_k h_k >= G_inf (d - g) - (G(0) - G_inf) (D - d) (G_k >= 0), which is >= 0, so
+/// that the element stays in contact, while g <= L(t) = D - (G(0) / G_inf) (D - d). The elements of a prefix
+/// [0, folded) with g <= L and every h_k >= d - D are "folded": all follow the indenter with the same increment, so
+/// their stresses add up to G_inf (n d - sum g) + sum_k G_k H_k with H_k = sum h_k updated as one element
+/// (h_k <- E_k h_k + B_k dd, step_coefficients.hpp). Each keeps h_k - Q_k, which decays as exp(-t/tau_k), Q_k the
+/// memory of an element that followed the indenter from the undeformed state: when L falls below its g (a deeper
+/// dip), it is unfolded with its exact state and stepped again. The other elements take the foundation's steps,
+/// entry and exit located inside the step as there.
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "mdr/profile/profile.hpp"
+#include "mdr/rheology/rheology.hpp"
+
+namespace mdr::fit {
+
+/// True when the band model covers this material: no parallel dashpot, G_inf > 0 and every Prony modulus >= 0.
+bool band_model_applies(const rheology::Rheology& material);
+
+/// What the band model gives for one depth history.
+struct BandResponse {
+    std::vector<double> force;       ///< F [N] at each time (eq. 21, both halves)
+    std::size_t element_steps = 0;   ///< steps taken by single elements (the folded ones count nothing)
+};
+
+/// The force of the foundation of `count` elements of width `spacing` (x_i = (i + 1/2) spacing, as the drivers'
+/// Foundation) under the depth history through (time[i], depth[i]) (linear between the points, times increasing;
+/// the foundation undeformed before time[0], a first depth > 0 reached by a jump there), incompressible body of
+/// `material`. nullopt when !band_model_applies, when the depth reaches the last element's g, or when the drivers'
+/// Foundation would refuse `count` elements as too many (its message then names the key). `check_interrupt`, when
+/// set, is called every 4096 steps (it may throw mdr::Interrupted).
+std::optional<BandResponse> band_forces(const rheology::Rheology& material, const profile::Profile& indenter,
+                                        double spacing, std::size_t count, const std::vector<double>& time,
+                                        const std::vector<double>& depth,
+                                        const std::function<void()>& check_interrupt = {});
+
+}  // namespace mdr::fit
