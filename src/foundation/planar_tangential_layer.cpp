@@ -24,18 +24,11 @@ PlanarTangentialLayer::PlanarTangentialLayer(const rheology::Rheology& material,
       relaxed_(2 * count, 0.0),
       increment_(2 * count, 0.0),
       contact_mask_(count, 0.0),
-      share_(count, 1.0) {
-    entered_.reserve(count);
-}
+      share_(count) {}
 
 void PlanarTangentialLayer::begin_step(const StepCoefficients& coefficients, std::span<const Entry> entries) {
     step_ = coefficients;
-    for (const std::size_t i : entered_) share_[i] = 1.0;
-    entered_.clear();
-    for (const Entry& entry : entries) {
-        share_[entry.element] = 1.0 - entry.fraction;
-        entered_.push_back(entry.element);
-    }
+    share_.set(entries);
     for (std::size_t c = 0; c < 2; ++c) {
         relaxed_sums(material_, step_, displacement_.data() + c * count_, memory_.data() + c * count_, 2 * count_,
                      touched_, relaxed_.data() + c * count_);

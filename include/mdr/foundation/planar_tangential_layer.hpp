@@ -10,6 +10,7 @@
 #include <span>
 #include <vector>
 
+#include "mdr/foundation/entry_shares.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/rheology/rheology.hpp"
@@ -75,8 +76,7 @@ private:
     std::vector<double> relaxed_;       ///< G_inf u_i + sum_k G_k E_k h_{k,i} for the prepared step
     std::vector<double> increment_;     ///< du_i of the step being taken
     std::vector<double> contact_mask_;  ///< 1 for an element in contact in the step being taken, else 0
-    std::vector<double> share_;         ///< part of the step's increment an element takes (1 - entry fraction)
-    std::vector<std::size_t> entered_;  ///< the elements whose share_ the prepared step set
+    EntryShares share_;                 ///< part of the prepared step's increment each element takes
     StepCoefficients step_;
     std::size_t touched_ = 0;           ///< elements [touched_, n) have never been in contact: u = h = 0
     std::size_t high_water_ = 0;        ///< the largest touched_ any loaded or stepped state had
