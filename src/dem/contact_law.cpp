@@ -182,7 +182,7 @@ void ContactLaw::begin(std::span<const double> state) {
 double ContactLaw::normal_trial(double overlap) const { return foundation_.trial_force(overlap_, overlap); }
 
 void ContactLaw::advance_normal(double overlap) {
-    require_finite("overlap", overlap);
+    if (!std::isfinite(overlap)) require_finite("overlap", overlap);  // the key's string only when it throws
     try {
         foundation_.advance(overlap_, overlap);
     } catch (const InvalidInput& error) {
@@ -205,8 +205,9 @@ PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
 }
 
 void ContactLaw::advance_tangential(PlanarVector displacement) {
-    require_finite("displacement", displacement[0]);
-    require_finite("displacement", displacement[1]);
+    for (const double component : displacement) {
+        if (!std::isfinite(component)) require_finite("displacement", component);
+    }
     layer_.advance({displacement[0] - displacement_[0], displacement[1] - displacement_[1]}, loads(),
                    foundation_.contact_flags().first(foundation_.touched()));
     const PlanarVector end_force = layer_.total_force();

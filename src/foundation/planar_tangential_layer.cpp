@@ -26,7 +26,8 @@ PlanarTangentialLayer::PlanarTangentialLayer(const rheology::Rheology& material,
       contact_mask_(count, 0.0),
       share_(count) {}
 
-void PlanarTangentialLayer::begin_step(const StepCoefficients& coefficients, std::span<const Entry> entries) {
+__attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::begin_step(
+    const StepCoefficients& coefficients, std::span<const Entry> entries) {
     step_ = coefficients;
     share_.set(entries);
     for (std::size_t c = 0; c < 2; ++c) {
