@@ -93,7 +93,7 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
 
 __attribute__((target_clones("avx2", "default"))) void Foundation::begin_step(const StepCoefficients& coefficients,
                                                                                std::optional<double> indenter_rate) {
-    step_ = coefficients;
+    copy_step_coefficients(coefficients, step_);
     indenter_rate_ = indenter_rate;
     const std::size_t n = size();
     const double g_inf = material_.equilibrium_modulus();

@@ -28,7 +28,7 @@ PlanarTangentialLayer::PlanarTangentialLayer(const rheology::Rheology& material,
 
 __attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::begin_step(
     const StepCoefficients& coefficients, std::span<const Entry> entries) {
-    step_ = coefficients;
+    copy_step_coefficients(coefficients, step_);
     share_.set(entries);
     for (std::size_t c = 0; c < 2; ++c) {
         relaxed_sums(material_, step_, displacement_.data() + c * count_, memory_.data() + c * count_, 2 * count_,

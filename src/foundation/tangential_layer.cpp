@@ -50,7 +50,7 @@ TangentialLayer::TangentialLayer(const rheology::Rheology& material, double fric
 
 __attribute__((target_clones("avx2", "default"))) void TangentialLayer::begin_step(const StepCoefficients& coefficients,
                                                                                     std::span<const Entry> entries) {
-    step_ = coefficients;
+    copy_step_coefficients(coefficients, step_);
     share_.set(entries);
     const std::size_t n = displacement_.size();
     relaxed_sums(material_, step_, displacement_.data(), memory_.data(), n, touched_, relaxed_.data());
