@@ -149,12 +149,12 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
         return sum;
     };
     // The Foundation's state: depth, force, count, then w_i, sigma_i, flags, h_k,i; the layer's: force (2), count,
-    // then u_x, u_y, t_x, t_y, and h_x, h_y per branch (foundation.cpp, planar_tangential_layer.cpp).
+    // then u_x, u_y, and h_x, h_y per branch (foundation.cpp, planar_tangential_layer.cpp).
     const double* normal = state.data() + normal_offset;
     const double* tangential = state.data() + tangential_offset_;
     const double normal_sum = spring_sum(normal + 3, normal + 3 + 3 * n, 1, count_at(state, normal_offset + 2));
     const double tangential_sum = spring_sum(
-        tangential + 3, tangential + 3 + 4 * n, 2,
+        tangential + 3, tangential + 3 + 2 * n, 2,
         count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset));
     constexpr double normal_factor = 4.0, tangential_factor = 8.0 / 3.0;  // k = c G dx, eq. (11), (41)
     return foundation_.spacing() * (normal_factor * normal_sum + tangential_factor * tangential_sum);

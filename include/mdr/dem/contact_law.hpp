@@ -51,7 +51,7 @@ public:
     ContactLaw(const rheology::Rheology& material, double radius, double friction, std::size_t elements,
                double half_width, double time_step);
 
-    /// Doubles of one contact's state for N elements and M relaxation branches: 12 + N (3 M + 7).
+    /// Doubles of one contact's state for N elements and M relaxation branches: 12 + N (3 M + 5).
     static std::size_t state_size(std::size_t elements, std::size_t branches);
     /// state_size for this law's N and M.
     std::size_t state_size() const { return state_size_; }
