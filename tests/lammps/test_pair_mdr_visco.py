@@ -260,8 +260,7 @@ def test_packing_settles_alike_on_one_and_two_ranks_and_balances_its_energy(tmp_
     # done on them less what they store) = the initial energy, to the integrator's second-order error (velocity
     # Verlet's kinetic energy differs from the trapezoidal work of the same forces by O(dt^2), not accumulating);
     # the contacts dissipate most of the energy lost, and store the rest
-    # (measured: 4.1e-4 of the energy lost at dt = 2 us; a force applied against the law's increments, or work
-    # that the law does not count, breaks it)
+    # (measured: 4.1e-4 of the energy lost at dt = 2 us; counting only the normal force's work breaks it)
     lost, tolerance = series[0] - series[-1], 2e-3
     for energy, _, stored, work in rows:
         dissipated = work - stored
