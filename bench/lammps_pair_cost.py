@@ -65,8 +65,8 @@ def run(law):
 
 results = {name: run(law) for name, law in LAWS.items()}
 base = results[next(iter(LAWS))][0]
-state = 12 + ELEMENTS * (3 * TERMS + 7)
+state = 12 + ELEMENTS * (3 * TERMS + 5)
 print(f"{'law':62s} {'ns/contact-step':>16s} {'ratio':>6s} {'contacts':>9s} {'MB/rank':>8s}")
 for name, (cost, contacts, memory) in results.items():
     print(f"{name:62s} {cost * 1e9:16.1f} {cost / base:6.2f} {contacts:9.0f} {memory:8.1f}")
-print(f"mdr/visco history per contact: {state} doubles = {state * 8} bytes (12 + N (3M + 7))")
+print(f"mdr/visco history per contact: {state} doubles = {state * 8} bytes (12 + N (3M + 5))")

@@ -53,6 +53,8 @@ PairMdrVisco::PairMdrVisco(LAMMPS *lmp) : Pair(lmp), fix_history(nullptr), size_
   finitecutflag = 1;
   restartinfo = 1;
   beyond_contact = 0;
+  nextra = 2;    // compute pair mdr/visco: [1] the energy stored in the contacts, [2] the work done on them
+  pvector = new double[nextra]{0.0, 0.0};
   nondefault_history_transfer = 1;    // a swapped contact's state is mirrored (transfer_history)
   // a placeholder for the history fix, so that the fixes keep the order of the input script (as pair granular)
   modify->add_fix(std::string(dummy_fix) + " all DUMMY");
@@ -60,6 +62,7 @@ PairMdrVisco::PairMdrVisco(LAMMPS *lmp) : Pair(lmp), fix_history(nullptr), size_
 
 PairMdrVisco::~PairMdrVisco()
 {
+  delete[] pvector;
   if (modify->find_fix(fix_history ? history_fix : dummy_fix) >= 0)
     modify->delete_fix(fix_history ? history_fix : dummy_fix);
   if (allocated) {
@@ -271,6 +274,9 @@ void PairMdrVisco::compute(int eflag, int vflag)
   const double dt = update->dt;
   int **firsttouch = fix_history->firstflag;
   double **firsthistory = fix_history->firstvalue;
+  // the contacts' energy for compute pair (docs/dem.md): a contact computed on two ranks (newton off, j a ghost)
+  // counts half on each
+  double work = 0.0, stored = 0.0;
 
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
@@ -313,6 +319,10 @@ void PairMdrVisco::compute(int eflag, int vflag)
           tangential = contact.tangential_force(state, n);
         }
         normal_force = contact.normal_force(state);
+        const double share = (force->newton_pair || j < nlocal) ? 1.0 : 0.5;
+        const double volume = scale * scale * scale;    // the unit contact's energies are times R^3
+        if (history_update) work += share * volume * contact.step_work();
+        if (eflag_global) stored += share * volume * contact.stored_energy(state);
       } catch (const mdr::InvalidInput &e) {
         const double relative = (radsum - r) / scale;
         if (e.key() == "half_width")
@@ -341,6 +351,8 @@ void PairMdrVisco::compute(int eflag, int vflag)
         ev_tally_xyz(i, j, nlocal, force->newton_pair, 0.0, 0.0, -fj[0], -fj[1], -fj[2], -del[0], -del[1], -del[2]);
     }
   }
+  if (eflag_global) pvector[0] = stored;
+  pvector[1] += work;
 }
 
 void PairMdrVisco::transfer_history(double *source, double *target)

@@ -1,6 +1,7 @@
 /* The exact viscoelastic contact law of mdr (Method of Dimensionality Reduction, Popov & Hess) as a LAMMPS granular
  * pair style, built as a plugin (mdr_visco_plugin.cpp). Each contact's mdr state is the contact's LAMMPS history
- * (fix NEIGH_HISTORY), so it follows atoms across processors and into restart files. See docs/dem.md. */
+ * (fix NEIGH_HISTORY), so it follows atoms across processors and into restart files. `compute pair mdr/visco`
+ * gives the energy stored in the contacts and the work done on them (pvector). See docs/dem.md. */
 
 #ifdef PAIR_CLASS
 // clang-format off

@@ -128,6 +128,38 @@ void ContactLaw::check(std::span<const double> state) const {
     }
 }
 
+double ContactLaw::stored_energy(std::span<const double> state) const {
+    const std::size_t n = loads_.size();
+    const auto& terms = material_.terms();
+    // sum_i (G_inf |w_i|^2 + sum_k G_k |h_k,i|^2) over `count` elements of `components` displacement blocks at
+    // `displacements` and branch blocks at `memories` (component-major within a branch).
+    const auto spring_sum = [&](const double* displacements, const double* memories, std::size_t components,
+                                std::size_t count) {
+        double sum = 0.0;
+        for (std::size_t c = 0; c < components; ++c) {
+            for (std::size_t i = 0; i < count; ++i) {
+                const double w = displacements[c * n + i];
+                sum += material_.equilibrium_modulus() * w * w;
+                for (std::size_t k = 0; k < terms.size(); ++k) {
+                    const double h = memories[(k * components + c) * n + i];
+                    sum += terms[k].modulus * h * h;
+                }
+            }
+        }
+        return sum;
+    };
+    // The Foundation's state: depth, force, count, then w_i, sigma_i, flags, h_k,i; the layer's: force (2), count,
+    // then u_x, u_y, and h_x, h_y per branch (foundation.cpp, planar_tangential_layer.cpp).
+    const double* normal = state.data() + normal_offset;
+    const double* tangential = state.data() + tangential_offset_;
+    const double normal_sum = spring_sum(normal + 3, normal + 3 + 3 * n, 1, count_at(state, normal_offset + 2));
+    const double tangential_sum = spring_sum(
+        tangential + 3, tangential + 3 + 2 * n, 2,
+        count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset));
+    constexpr double normal_factor = 4.0, tangential_factor = 8.0 / 3.0;  // k = c G dx, eq. (11), (41)
+    return foundation_.spacing() * (normal_factor * normal_sum + tangential_factor * tangential_sum);
+}
+
 void ContactLaw::begin(std::span<const double> state) {
     if (state.size() < state_size_) {
         throw InvalidInput("state", std::to_string(state.size()) + " doubles",
@@ -142,12 +174,15 @@ void ContactLaw::begin(std::span<const double> state) {
     foundation_.load_state(state.subspan(normal_offset));
     layer_.load_state(state.subspan(tangential_offset_));
     foundation_.begin_step(coefficients_);
+    start_normal_force_ = foundation_.total_force();
+    start_tangential_force_ = layer_.total_force();
+    normal_work_ = tangential_work_ = 0.0;
 }
 
 double ContactLaw::normal_trial(double overlap) const { return foundation_.trial_force(overlap_, overlap); }
 
 void ContactLaw::advance_normal(double overlap) {
-    require_finite("overlap", overlap);
+    if (!std::isfinite(overlap)) require_finite("overlap", overlap);  // the key's string only when it throws
     try {
         foundation_.advance(overlap_, overlap);
     } catch (const InvalidInput& error) {
@@ -155,6 +190,7 @@ void ContactLaw::advance_normal(double overlap) {
                            "the contact grows beyond the law's half-width at overlap " + format_value(overlap) +
                                "; give a larger half-width (at least sqrt(R d) for the largest overlap d)");
     }
+    normal_work_ = 0.5 * (start_normal_force_ + foundation_.total_force()) * (overlap - overlap_);
     foundation_.line_loads(loads_);
     layer_.begin_step(coefficients_, foundation_.entries());
 }
@@ -169,10 +205,14 @@ PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
 }
 
 void ContactLaw::advance_tangential(PlanarVector displacement) {
-    require_finite("displacement", displacement[0]);
-    require_finite("displacement", displacement[1]);
+    for (const double component : displacement) {
+        if (!std::isfinite(component)) require_finite("displacement", component);
+    }
     layer_.advance({displacement[0] - displacement_[0], displacement[1] - displacement_[1]}, loads(),
                    foundation_.contact_flags().first(foundation_.touched()));
+    const PlanarVector end_force = layer_.total_force();
+    tangential_work_ = 0.5 * ((start_tangential_force_[0] + end_force[0]) * (displacement[0] - displacement_[0]) +
+                              (start_tangential_force_[1] + end_force[1]) * (displacement[1] - displacement_[1]));
     displacement_ = displacement;
 }
 

@@ -109,4 +109,10 @@ double mdr_contact_law_normal_force(const mdr_contact_law* law, const double* st
     return law->law.normal_force(std::span<const double>(state, law->law.state_size()));
 }
 
+double mdr_contact_law_step_work(const mdr_contact_law* law) { return law->law.step_work(); }
+
+double mdr_contact_law_stored_energy(const mdr_contact_law* law, const double* state) {
+    return law->law.stored_energy(std::span<const double>(state, law->law.state_size()));
+}
+
 }  // extern "C"

@@ -6,6 +6,7 @@
 #include <limits>
 #include <new>
 #include <optional>
+#include <type_traits>
 
 #include "branch_sums.hpp"
 #include "mdr/error.hpp"
@@ -92,7 +93,7 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
 
 __attribute__((target_clones("avx2", "default"))) void Foundation::begin_step(const StepCoefficients& coefficients,
                                                                                std::optional<double> indenter_rate) {
-    step_ = coefficients;
+    copy_step_coefficients(coefficients, step_);
     indenter_rate_ = indenter_rate;
     const std::size_t n = size();
     const double g_inf = material_.equilibrium_modulus();
@@ -391,17 +392,23 @@ void Foundation::save_state(std::span<double> out) const {
     out[0] = last_depth_;
     out[1] = total_force_;
     out[2] = static_cast<double>(active_);
-    double* w = out.data() + 3;
-    double* sigma = w + n;
-    double* flag = sigma + n;
-    double* h = flag + n;
-    for (std::size_t i = 0; i < active_; ++i) {
-        w[i] = displacement_[i];
-        sigma[i] = stress_[i];
-        flag[i] = in_contact_[i];
+    // Local restrict pointers: the loops vectorise (the out span could otherwise alias the buffers).
+    double* __restrict w = out.data() + 3;
+    double* __restrict sigma = w + n;
+    double* __restrict flag = sigma + n;
+    double* __restrict h = flag + n;
+    const double* __restrict displacement = displacement_.data();
+    const double* __restrict stress = stress_.data();
+    const std::uint8_t* __restrict contact = in_contact_.data();
+    const double* __restrict memory = memory_.data();
+    const std::size_t active = active_;
+    for (std::size_t i = 0; i < active; ++i) {
+        w[i] = displacement[i];
+        sigma[i] = stress[i];
+        flag[i] = contact[i];
     }
     for (std::size_t k = 0; k < branches; ++k) {
-        for (std::size_t i = 0; i < active_; ++i) h[k * n + i] = memory_[k * n + i];
+        for (std::size_t i = 0; i < active; ++i) h[k * n + i] = memory[k * n + i];
     }
 }
 
@@ -412,25 +419,36 @@ void Foundation::load_state(std::span<const double> in) {
     total_force_ = in[1];
     const std::size_t active = static_cast<std::size_t>(in[2]);
     // Beyond the loaded state's touched elements every buffer must hold zeros (advance() relies on it): clear what
-    // an earlier state left there.
-    for (std::size_t i = active; i < high_water_; ++i) {
-        displacement_[i] = stress_[i] = next_displacement_[i] = next_stress_[i] = increment_[i] = relaxed_[i] = 0.0;
-        event_[i] = 0.0;
-        in_contact_[i] = 0;
-        if (!free_relaxed_.empty()) free_relaxed_[i] = 0.0;
-        for (std::size_t k = 0; k < branches; ++k) memory_[k * n + i] = 0.0;
+    // an earlier state left there, buffer by buffer (each fill one vectorised store run).
+    if (active < high_water_) {
+        const auto clear = [&](auto& buffer, std::size_t offset) {
+            std::fill(buffer.begin() + static_cast<std::ptrdiff_t>(offset + active),
+                      buffer.begin() + static_cast<std::ptrdiff_t>(offset + high_water_),
+                      typename std::decay_t<decltype(buffer)>::value_type{});
+        };
+        for (auto* buffer : {&displacement_, &stress_, &next_displacement_, &next_stress_, &increment_, &relaxed_,
+                             &event_}) {
+            clear(*buffer, 0);
+        }
+        clear(in_contact_, 0);
+        if (!free_relaxed_.empty()) clear(free_relaxed_, 0);
+        for (std::size_t k = 0; k < branches; ++k) clear(memory_, k * n);
     }
-    const double* w = in.data() + 3;
-    const double* sigma = w + n;
-    const double* flag = sigma + n;
-    const double* h = flag + n;
+    const double* __restrict w = in.data() + 3;
+    const double* __restrict sigma = w + n;
+    const double* __restrict flag = sigma + n;
+    const double* __restrict h = flag + n;
+    double* __restrict displacement = displacement_.data();
+    double* __restrict stress = stress_.data();
+    std::uint8_t* __restrict contact = in_contact_.data();
+    double* __restrict memory = memory_.data();
     for (std::size_t i = 0; i < active; ++i) {
-        displacement_[i] = w[i];
-        stress_[i] = sigma[i];
-        in_contact_[i] = flag[i] != 0.0 ? 1 : 0;
+        displacement[i] = w[i];
+        stress[i] = sigma[i];
+        contact[i] = flag[i] != 0.0 ? 1 : 0;
     }
     for (std::size_t k = 0; k < branches; ++k) {
-        for (std::size_t i = 0; i < active; ++i) memory_[k * n + i] = h[k * n + i];
+        for (std::size_t i = 0; i < active; ++i) memory[k * n + i] = h[k * n + i];
     }
     active_ = active;
     high_water_ = std::max(high_water_, active_);

@@ -24,18 +24,12 @@ PlanarTangentialLayer::PlanarTangentialLayer(const rheology::Rheology& material,
       relaxed_(2 * count, 0.0),
       increment_(2 * count, 0.0),
       contact_mask_(count, 0.0),
-      share_(count, 1.0) {
-    entered_.reserve(count);
-}
+      share_(count) {}
 
-void PlanarTangentialLayer::begin_step(const StepCoefficients& coefficients, std::span<const Entry> entries) {
-    step_ = coefficients;
-    for (const std::size_t i : entered_) share_[i] = 1.0;
-    entered_.clear();
-    for (const Entry& entry : entries) {
-        share_[entry.element] = 1.0 - entry.fraction;
-        entered_.push_back(entry.element);
-    }
+__attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::begin_step(
+    const StepCoefficients& coefficients, std::span<const Entry> entries) {
+    copy_step_coefficients(coefficients, step_);
+    share_.set(entries);
     for (std::size_t c = 0; c < 2; ++c) {
         relaxed_sums(material_, step_, displacement_.data() + c * count_, memory_.data() + c * count_, 2 * count_,
                      touched_, relaxed_.data() + c * count_);
@@ -121,10 +115,9 @@ void PlanarTangentialLayer::save_state(std::span<double> out) const {
     out[1] = total_force_[1];
     out[touched_offset] = static_cast<double>(touched_);
     double* base = out.data() + 3;
-    const std::size_t blocks = 4 + 2 * material_.terms().size();  // u_x, u_y, t_x, t_y, then h_x, h_y per branch
+    const std::size_t blocks = 2 + 2 * material_.terms().size();  // u_x, u_y, then h_x, h_y per branch
     for (std::size_t b = 0; b < blocks; ++b) {
-        const double* from = b < 2 ? displacement_.data() + b * n
-                                    : (b < 4 ? stress_.data() + (b - 2) * n : memory_.data() + (b - 4) * n);
+        const double* from = b < 2 ? displacement_.data() + b * n : memory_.data() + (b - 2) * n;
         std::copy_n(from, touched_, base + b * n);
     }
 }
@@ -134,10 +127,9 @@ void PlanarTangentialLayer::load_state(std::span<const double> in) {
     total_force_ = {in[0], in[1]};
     const auto touched = static_cast<std::size_t>(in[touched_offset]);
     const double* base = in.data() + 3;
-    const std::size_t blocks = 4 + 2 * material_.terms().size();
+    const std::size_t blocks = 2 + 2 * material_.terms().size();
     for (std::size_t b = 0; b < blocks; ++b) {
-        double* to = b < 2 ? displacement_.data() + b * n
-                           : (b < 4 ? stress_.data() + (b - 2) * n : memory_.data() + (b - 4) * n);
+        double* to = b < 2 ? displacement_.data() + b * n : memory_.data() + (b - 2) * n;
         std::copy_n(base + b * n, touched, to);
         std::fill(to + touched, to + std::max(touched, high_water_), 0.0);  // zeros beyond the loaded elements
     }

@@ -41,7 +41,7 @@ TangentialLayer::TangentialLayer(const rheology::Rheology& material, double fric
       state_(count, TangentialState::free),
       relaxed_(count, 0.0),
       limit_(count, 0.0),
-      share_(count, 1.0),
+      share_(count),
       increment_(count, 0.0),
       work_(count, 0.0),
       slip_work_(count, 0.0),
@@ -50,13 +50,8 @@ TangentialLayer::TangentialLayer(const rheology::Rheology& material, double fric
 
 __attribute__((target_clones("avx2", "default"))) void TangentialLayer::begin_step(const StepCoefficients& coefficients,
                                                                                     std::span<const Entry> entries) {
-    step_ = coefficients;
-    for (const std::size_t i : entered_) share_[i] = 1.0;
-    entered_.clear();
-    for (const Entry& entry : entries) {
-        share_[entry.element] = 1.0 - entry.fraction;
-        entered_.push_back(entry.element);
-    }
+    copy_step_coefficients(coefficients, step_);
+    share_.set(entries);
     const std::size_t n = displacement_.size();
     relaxed_sums(material_, step_, displacement_.data(), memory_.data(), n, touched_, relaxed_.data());
     const auto& terms = material_.terms();

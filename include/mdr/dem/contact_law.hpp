@@ -51,7 +51,7 @@ public:
     ContactLaw(const rheology::Rheology& material, double radius, double friction, std::size_t elements,
                double half_width, double time_step);
 
-    /// Doubles of one contact's state for N elements and M relaxation branches: 12 + N (3 M + 7).
+    /// Doubles of one contact's state for N elements and M relaxation branches: 12 + N (3 M + 5).
     static std::size_t state_size(std::size_t elements, std::size_t branches);
     /// state_size for this law's N and M.
     std::size_t state_size() const { return state_size_; }
@@ -105,6 +105,17 @@ public:
     /// Number of elements in normal contact after the last advance_normal (0: the contact has ended).
     std::size_t contact_count() const { return foundation_.contact_count(); }
 
+    /// Work [J] the two bodies did on the contact over the last step (after begin, advance_normal and
+    /// advance_tangential): the trapezoidal rule, (F_N0 + F_N1) / 2 (d1 - d0) + (F_t0 + F_t1) / 2 . (u1 - u0), with
+    /// the forces at the step's start and end (second order in the step; advance_spatial's displacement is the
+    /// increment in the frame turned into the new tangent plane).
+    double step_work() const { return normal_work_ + tangential_work_; }
+    /// Elastic energy [J] stored in a contact's state: the springs of its elements (both halves), sum_i 2 c dx
+    /// (G_inf |w_i|^2 + sum_k G_k |h_k,i|^2) / 2 with c = 4 for the normal and 8/3 for the tangential elements (eq.
+    /// 11, 41), h_k,i a branch's spring strain. The work done on a contact (the sum of step_work) less the energy
+    /// stored is what it dissipated: in its dashpots, by friction, and with elements that left contact and relax.
+    double stored_energy(std::span<const double> state) const;
+
     /// Normal force [N] stored in a contact's state (after end()).
     double normal_force(std::span<const double> state) const { return state[normal_offset + 1]; }
     /// Tangential force [N] stored in a contact's state.
@@ -140,6 +151,10 @@ private:
     SpatialVector frame_{0.0, 0.0, 0.0};   ///< the frame's first axis
     double handedness_ = 0.0;
     double overlap_ = 0.0;  ///< overlap at the start of the step
+    double start_normal_force_ = 0.0;           ///< F_N at the start of the step
+    PlanarVector start_tangential_force_{0.0, 0.0};  ///< F_t at the start of the step
+    double normal_work_ = 0.0;      ///< the normal force's work over the step
+    double tangential_work_ = 0.0;  ///< the tangential force's work over the step
 };
 
 }  // namespace mdr::dem

@@ -53,6 +53,10 @@ int mdr_contact_law_check(const mdr_contact_law* law, const double* state, size_
                           size_t message_size);
 /** Normal force [N] stored in a contact's state. */
 double mdr_contact_law_normal_force(const mdr_contact_law* law, const double* state);
+/** Work [J] the bodies did on the contact over the law's last step (the trapezoidal rule on its forces). */
+double mdr_contact_law_step_work(const mdr_contact_law* law);
+/** Elastic energy [J] stored in a contact's state; the summed step work less it is what the contact dissipated. */
+double mdr_contact_law_stored_energy(const mdr_contact_law* law, const double* state);
 
 #ifdef __cplusplus
 }

@@ -10,6 +10,7 @@
 #include <span>
 #include <vector>
 
+#include "mdr/foundation/entry_shares.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/rheology/rheology.hpp"
@@ -52,9 +53,9 @@ public:
     std::size_t size() const { return count_; }
 
     /// Doubles of the state that persists between steps for `count` elements and `branches` relaxation branches:
-    /// 3 + count (2 branches + 4) (force, touched elements; u_i, t_i, h_{k,i}, two components each, component by
-    /// component).
-    static std::size_t state_size(std::size_t count, std::size_t branches) { return 3 + count * (2 * branches + 4); }
+    /// 3 + count (2 branches + 2) (force, touched elements; u_i and h_{k,i}, two components each, component by
+    /// component; the element stresses t_i are recomputed by every step, not kept).
+    static std::size_t state_size(std::size_t count, std::size_t branches) { return 3 + count * (2 * branches + 2); }
     /// Offset in the state of the number of touched elements (an integer in [0, size()]).
     static constexpr std::size_t touched_offset = 2;
     /// Writes the persistent state into `out`; the untouched elements are left as they are there.
@@ -70,13 +71,12 @@ private:
     double spacing_;
     std::size_t count_;
     std::vector<double> displacement_;  ///< u_i
-    std::vector<double> stress_;        ///< t_i at the end of the last step
+    std::vector<double> stress_;        ///< t_i of the step being taken (not part of the state)
     std::vector<double> memory_;        ///< h_{k,i}
     std::vector<double> relaxed_;       ///< G_inf u_i + sum_k G_k E_k h_{k,i} for the prepared step
     std::vector<double> increment_;     ///< du_i of the step being taken
     std::vector<double> contact_mask_;  ///< 1 for an element in contact in the step being taken, else 0
-    std::vector<double> share_;         ///< part of the step's increment an element takes (1 - entry fraction)
-    std::vector<std::size_t> entered_;  ///< the elements whose share_ the prepared step set
+    EntryShares share_;                 ///< part of the prepared step's increment each element takes
     StepCoefficients step_;
     std::size_t touched_ = 0;           ///< elements [touched_, n) have never been in contact: u = h = 0
     std::size_t high_water_ = 0;        ///< the largest touched_ any loaded or stepped state had

@@ -3,6 +3,7 @@
 /// Coefficients of the exact exponential update of the foundation's internal variables over one time step.
 
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "mdr/rheology/rheology.hpp"
@@ -32,5 +33,23 @@ StepCoefficients step_coefficients(const rheology::Rheology& material, double ti
 
 /// Same as step_coefficients, written into `out` without allocating when `out` already has the right size.
 void fill_step_coefficients(const rheology::Rheology& material, double time_step, StepCoefficients& out);
+
+/// Copies `from` into `to`, element by element when their branch counts agree (a foundation's step of a contact
+/// law: no library call per vector), else by assignment (which may allocate).
+inline void copy_step_coefficients(const StepCoefficients& from, StepCoefficients& to) {
+    if (&from == &to) return;
+    to.time_step = from.time_step;
+    to.stiffness = from.stiffness;
+    const std::size_t branches = from.decay.size();
+    if (to.decay.size() != branches || to.gain.size() != branches) {
+        to.decay = from.decay;
+        to.gain = from.gain;
+        return;
+    }
+    for (std::size_t k = 0; k < branches; ++k) {
+        to.decay[k] = from.decay[k];
+        to.gain[k] = from.gain[k];
+    }
+}
 
 }  // namespace mdr::foundation

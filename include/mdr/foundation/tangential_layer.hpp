@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "mdr/foundation/entry_shares.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/rheology/rheology.hpp"
@@ -109,9 +110,7 @@ private:
     std::vector<TangentialState> state_;
     std::vector<double> relaxed_;           ///< G_inf u_i + sum_k G_k E_k h_{k,i} for the prepared step
     std::vector<double> limit_;             ///< mu F_N,i / ((8/3) dx) at the end of the last step [Pa]
-    std::vector<double> share_;             ///< part of the step's increment an element takes: 1 - its entry
-                                            ///< fraction when it enters in the prepared step, else 1
-    std::vector<std::size_t> entered_;      ///< the elements whose share_ the prepared step set
+    EntryShares share_;                     ///< part of the prepared step's increment each element takes
     std::vector<double> increment_;         ///< du_i of the step being taken
     std::vector<double> work_;              ///< int t_i du_i over it [Pa m]: the element's material work / ((8/3) dx)
     std::vector<double> slip_work_;         ///< friction's work on the element over it / ((8/3) dx) [Pa m]

@@ -44,6 +44,8 @@ TEST(DemContactLawC, StepsAsTheCppLaw) {
         const double normal_force = reference.normal_force(expected);
         ASSERT_EQ(mdr_contact_law_normal_force(law, state.data()), normal_force);
         for (std::size_t i = 0; i < 3; ++i) ASSERT_EQ(force[i], normal_force * normal[i] + tangential[i]);
+        ASSERT_EQ(mdr_contact_law_step_work(law), reference.step_work());
+        ASSERT_EQ(mdr_contact_law_stored_energy(law, state.data()), reference.stored_energy(expected));
     }
     EXPECT_EQ(state, expected);
     EXPECT_EQ(mdr_contact_law_check(law, state.data(), state.size(), message, sizeof message), MDR_OK);

@@ -100,7 +100,7 @@ TEST(DemContactLaw, AStepAllocatesNothing) {
 #endif
 
 TEST(DemContactLaw, StateSizeAndBadParameters) {
-    EXPECT_EQ(ContactLaw::state_size(20, 1), 12u + 20u * 10u);  // 12 + N (3 M + 7)
+    EXPECT_EQ(ContactLaw::state_size(20, 1), 12u + 20u * 8u);  // 12 + N (3 M + 5)
     EXPECT_EQ(make_law().state_size(), ContactLaw::state_size(50, 2));
     const auto material = rheology::Rheology::standard(1e6, 3e6, 1e-3);
     EXPECT_THROW(ContactLaw(material, 0.0, 0.3, 20, 1e-3, 1e-6), InvalidInput);
