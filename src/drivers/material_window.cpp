@@ -52,4 +52,25 @@ rheology::TimeWindow material_window(const Load& load, double end_time, const Nu
     return {shortest, duration, std::move(frequencies)};
 }
 
+std::size_t rows_before_window(const LoadHistory& history, const std::vector<double>& time, double shortest) {
+    const auto& points = history.points();
+    std::vector<double> jumps;
+    if (points.front().value != 0.0) jumps.push_back(points.front().time);
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        if (points[i].time == points[i - 1].time && points[i].value != points[i - 1].value) {
+            jumps.push_back(points[i].time);
+        }
+    }
+    std::size_t rows = 0;
+    for (std::size_t i = 0; i < time.size(); ++i) {
+        // The first row at a jump's time is the state before it (exact); the rows from the next on show the series.
+        const bool counted = std::any_of(jumps.begin(), jumps.end(), [&](double jump) {
+            const bool before_jump = time[i] == jump && (i == 0 || time[i - 1] != jump);
+            return time[i] >= jump && time[i] - jump < shortest && !before_jump;
+        });
+        if (counted) ++rows;
+    }
+    return rows;
+}
+
 }  // namespace mdr::drivers

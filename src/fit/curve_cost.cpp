@@ -180,7 +180,8 @@ bool CurveCost::Evaluate(double const* const* parameters, double* residuals, dou
 }
 
 CurveCost::Outcome CurveCost::base_residuals(const std::vector<double>& shared, const std::vector<double>& nuisance,
-                                             ForwardModel forward, double* residuals, ModelValues& run) const {
+                                             ForwardModel forward, double* residuals,
+                                             std::shared_ptr<const ModelValues>& run) const {
     const std::size_t n = prepared_.used.size();
     std::optional<LastRun>& last_run = last_runs_[forward == ForwardModel::continuum ? 0 : 1];
     {
@@ -193,11 +194,12 @@ CurveCost::Outcome CurveCost::base_residuals(const std::vector<double>& shared, 
             return last_run->outcome;
         }
     }
-    const Outcome outcome = residuals_at(shared.data(), nuisance.data(), forward, residuals, &run);
-    LastRun last{shared, nuisance, outcome, {}, {}};
+    auto fresh = std::make_shared<ModelValues>();
+    const Outcome outcome = residuals_at(shared.data(), nuisance.data(), forward, residuals, fresh.get());
+    LastRun last{shared, nuisance, outcome, {}, nullptr};
     if (outcome == Outcome::done) {
         last.residuals.assign(residuals, residuals + n);
-        last.run = run;
+        last.run = run = std::move(fresh);
     }
     const std::lock_guard lock(last_run_mutex_);
     last_run = std::move(last);
@@ -212,7 +214,7 @@ CurveCost::Outcome CurveCost::evaluate_with(ForwardModel forward, double const* 
     std::vector<double> shared(parameters[0], parameters[0] + k);
     std::vector<double> nuisance(m);
     if (m > 0) nuisance.assign(parameters[1], parameters[1] + m);
-    ModelValues run;
+    std::shared_ptr<const ModelValues> run;
     if (const Outcome outcome = base_residuals(shared, nuisance, forward, residuals, run); outcome != Outcome::done) {
         return outcome;
     }
@@ -236,18 +238,18 @@ CurveCost::Outcome CurveCost::evaluate_with(ForwardModel forward, double const* 
         const auto values = scales_.values(shared.data());
         const bool homogeneous = forward == ForwardModel::elements && prepared_.fitted == Fitted::force;
         std::optional<drivers::ContactCase> base;
-        if (!run.modulus_derivatives.empty() || homogeneous) base = problem_.model(values);
+        if (!run->modulus_derivatives.empty() || homogeneous) base = problem_.model(values);
         const auto euler = homogeneous ? euler_column(*base, shared.data(), values) : std::nullopt;
         for (std::size_t j = 0; j < k; ++j) {
             if (euler && j == euler->parameter) continue;
-            const auto direction = !run.modulus_derivatives.empty()
+            const auto direction = !run->modulus_derivatives.empty()
                                        ? modulus_direction(*base, shared.data(), values, j)
                                        : std::nullopt;
             if (direction) {
                 for (std::size_t i = 0; i < n; ++i) {
                     double derivative = 0.0;
                     for (std::size_t b = 0; b < direction->size(); ++b) {
-                        derivative += (*direction)[b] * run.modulus_derivatives[b][i];
+                        derivative += (*direction)[b] * run->modulus_derivatives[b][i];
                     }
                     jacobians[0][i * k + j] = derivative / prepared_.noise;
                 }
@@ -260,7 +262,7 @@ CurveCost::Outcome CurveCost::evaluate_with(ForwardModel forward, double const* 
             // dF/dG_b* = (F - sum_{b != b*} G_b dF/dG_b) / G_b*, each other modulus's dF/dG_b from its column.
             const double baseline_now = baseline(nuisance.data());
             for (std::size_t i = 0; i < n; ++i) {
-                double rest = (run.values[i] - baseline_now) / prepared_.noise;
+                double rest = (run->values[i] - baseline_now) / prepared_.noise;
                 for (const auto& [j, gain] : euler->others) rest -= gain * jacobians[0][i * k + j];
                 jacobians[0][i * k + euler->parameter] = rest * euler->gain;
             }

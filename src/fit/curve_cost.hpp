@@ -6,6 +6,7 @@
 
 #include <array>
 #include <atomic>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -78,15 +79,17 @@ private:
                           double** jacobians) const;
     /// residuals_at for the point of an evaluation, kept: Ceres asks for the same point more than once (it evaluates
     /// a candidate and, once it accepts it, asks for the Jacobian there), and the same parameters give the same run.
+    /// `run` shares the kept run: a run is as long as the curve, and a copy per evaluation was a tenth of a long
+    /// fit's memory.
     Outcome base_residuals(const std::vector<double>& shared, const std::vector<double>& nuisance,
-                           ForwardModel forward, double* residuals, ModelValues& run) const;
+                           ForwardModel forward, double* residuals, std::shared_ptr<const ModelValues>& run) const;
 
     /// The last base run of one forward model: its parameters, outcome, residuals and run.
     struct LastRun {
         std::vector<double> shared, nuisance;
         Outcome outcome = Outcome::failed;
         std::vector<double> residuals;
-        ModelValues run;
+        std::shared_ptr<const ModelValues> run;
     };
 
     const FitProblem& problem_;

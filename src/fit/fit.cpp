@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -296,7 +297,11 @@ FitResult solve(const FitProblem& problem) {
 
     ceres::Solver::Options options;
     options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-    options.linear_solver_type = ceres::DENSE_QR;
+    // The normal equations J^T J (p x p) instead of a QR of J: Ceres' dense QR copies the N x p Jacobian of all the
+    // rows, which was a seventh of a 10^7-row fit's memory (docs/performance.md, "Memory of a fit"). The columns are
+    // scaled to O(1) (ParameterScales) and p is small, so squaring the condition number costs no digits that the
+    // fit's tolerances (1e-12) resolve.
+    options.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
     options.max_num_iterations = static_cast<int>(problem.settings.max_iterations);
     options.function_tolerance = 1e-12;
     options.parameter_tolerance = 1e-12;
@@ -347,7 +352,8 @@ FitResult solve(const FitProblem& problem) {
 
 FitResult fit(const FitProblem& problem) {
     validate(problem);
-    FitResult result = solve(with_pre_contact_baselines(problem));
+    const std::optional<FitProblem> fixed = with_pre_contact_baselines(problem);
+    FitResult result = solve(fixed ? *fixed : problem);
     flag_contact_and_baseline(problem, result);
     return result;
 }

@@ -1,8 +1,8 @@
 #include <algorithm>
 #include <string>
 
-#include "csv_columns.hpp"
 #include "curve_checks.hpp"
+#include "mdr/csv_columns.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/curve.hpp"
 

@@ -6,9 +6,9 @@
 
 namespace mdr::fit {
 
-FitProblem with_pre_contact_baselines(const FitProblem& problem) {
+std::optional<FitProblem> with_pre_contact_baselines(const FitProblem& problem) {
     const BaselineMode mode = problem.settings.baseline;
-    if (mode != BaselineMode::constant && mode != BaselineMode::line) return problem;
+    if (mode != BaselineMode::constant && mode != BaselineMode::line) return std::nullopt;
     FitProblem fixed = problem;
     fixed.settings.baseline = BaselineMode::estimate;
     for (std::size_t c = 0; c < fixed.curves.size(); ++c) {

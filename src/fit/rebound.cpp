@@ -5,8 +5,8 @@
 #include <functional>
 #include <numeric>
 
-#include "csv_columns.hpp"
 #include "curve_checks.hpp"
+#include "mdr/csv_columns.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::fit {

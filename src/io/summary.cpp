@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "mdr/drivers/controls.hpp"
+#include "mdr/drivers/material_window.hpp"
 #include "mdr/drivers/outcomes.hpp"
 
 namespace mdr::io {
@@ -38,6 +39,11 @@ Summary summarize(const drivers::ContactCase& contact_case, const drivers::Inden
     if (const auto& certificate = contact_case.material_origin.certificate) {
         add("material_error", certificate->error);  // the series standing for the model (power law, table)
         add("material_window", std::vector<double>{certificate->window.shortest, certificate->window.longest});
+        if (contact_case.load.history) {
+            const std::size_t rows =
+                drivers::rows_before_window(*contact_case.load.history, result.time, certificate->window.shortest);
+            if (rows > 0) add("material_uncertified_rows", rows);  // after a jump, before the window's start
+        }
         if (!certificate->window.frequencies.empty()) {
             add("material_frequencies", certificate->window.frequencies);  // [rad/s], certified explicitly
         }

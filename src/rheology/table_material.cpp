@@ -4,12 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <map>
 #include <optional>
-#include <sstream>
 
+#include "mdr/csv_columns.hpp"
 #include "mdr/error.hpp"
 #include "mdr/numerics/nonnegative_least_squares.hpp"
 
@@ -308,56 +306,30 @@ void MaterialTable::validate() const {
 }
 
 MaterialTable read_material_table(const std::filesystem::path& path) {
-    std::ifstream file(path);
-    if (!file) throw unreadable_file("file", path);
-    std::string line;
-    std::getline(file, line);
-    std::map<std::string, std::size_t> column;
-    {
-        std::stringstream header(line);
-        std::string name;
-        for (std::size_t i = 0; std::getline(header, name, ','); ++i) {
-            name.erase(0, name.find_first_not_of(" \t\r"));
-            name.erase(name.find_last_not_of(" \t\r") + 1);
-            column[name] = i;
-        }
+    CsvFile file(path);
+    const auto has = [&](const char* name) {
+        return std::find(file.header().begin(), file.header().end(), name) != file.header().end();
+    };
+    if (has("G") && has("J")) {
+        throw InvalidInput("file", path.string(), "has both G and J columns: keep the one to fit");
     }
     MaterialTable table;
     std::vector<std::string> names;
-    if (column.contains("G") && column.contains("J")) {
-        throw InvalidInput("file", path.string(), "has both G and J columns: keep the one to fit");
-    }
-    if (column.contains("t") && column.contains("G")) {
+    if (has("t") && has("G")) {
         table.quantity = TableQuantity::relaxation, names = {"t", "G"};
-    } else if (column.contains("t") && column.contains("J")) {
+    } else if (has("t") && has("J")) {
         table.quantity = TableQuantity::creep, names = {"t", "J"};
-    } else if (column.contains("omega") && column.contains("storage") && column.contains("loss")) {
+    } else if (has("omega") && has("storage") && has("loss")) {
         table.quantity = TableQuantity::dynamic, names = {"omega", "storage", "loss"};
     } else {
         throw InvalidInput("file", path.string(), "needs a header naming t,G or t,J or omega,storage,loss");
     }
-    std::vector<std::vector<double>*> targets{&table.abscissa, &table.values, &table.loss};
-    for (std::size_t row = 2; std::getline(file, line); ++row) {
-        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        std::vector<std::string> cells;
-        std::stringstream stream(line);
-        for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
-        for (std::size_t n = 0; n < names.size(); ++n) {
-            const std::size_t index = column[names[n]];
-            double value = std::numeric_limits<double>::quiet_NaN();
-            std::size_t used = 0;
-            try {
-                if (index < cells.size()) value = std::stod(cells[index], &used);
-            } catch (const std::exception&) {
-                used = 0;
-            }
-            if (used == 0 || !std::isfinite(value)) {
-                throw InvalidInput("file", fmt::format("{} line {}", path.string(), row),
-                                   fmt::format("column {} must hold a finite number", names[n]));
-            }
-            targets[n]->push_back(value);
-        }
-    }
+    std::vector<CsvColumn> columns;
+    for (const std::string& name : names) columns.push_back({name, "file"});
+    CsvColumns read = file.read(columns, "", {});
+    table.abscissa = std::move(read.values[0]);
+    table.values = std::move(read.values[1]);
+    if (table.quantity == TableQuantity::dynamic) table.loss = std::move(read.values[2]);
     return table;
 }
 

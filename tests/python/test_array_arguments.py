@@ -116,3 +116,12 @@ def test_a_long_curve_costs_a_few_times_its_data(package_env):
     data_bytes = 3 * 8 * points
     assert measured["G"] == pytest.approx(1e6, rel=1e-6)
     assert measured["increase_bytes"] < 10 * data_bytes, measured["increase_bytes"] / data_bytes
+
+
+def test_float16_forces_that_underflow_to_zero_are_refused_naming_the_key():
+    # Forces of ~1e-10 N are below float16's smallest subnormal (6e-8): every value becomes 0. Issue 23 found a
+    # RuntimeError ("the model cannot be evaluated") here; the fit must refuse the data as a ValueError naming it.
+    force = (F * 1e-6).astype(np.float16)
+    assert not force.any()
+    with pytest.raises(ValueError, match=r"^fit\.data\[0\]\.force = 0 in every row: .*must differ from 0"):
+        mdr.fit(CASE, data=[{"time": T, "depth": D, "force": force}])

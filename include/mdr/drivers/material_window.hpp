@@ -3,7 +3,9 @@
 /// The lags a problem needs of its material: what a model converted to a Prony series (power law, springpots,
 /// tables) must match, from the first time step to the duration, and the frequencies of its harmonic loads.
 
+#include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/rheology/approximation.hpp"
@@ -21,5 +23,12 @@ namespace mdr::drivers {
 /// is missing or makes the window empty.
 rheology::TimeWindow material_window(const Load& load, double end_time, const NumericsOptions& numerics,
                                      const std::optional<TangentialLoad>& tangential, bool impact);
+
+/// The rows at `time` that follow a jump of `history` (two points at one time, or a first value other than 0) by
+/// less than the window's start `shortest`, the row after the jump at its time included (the first row at that time,
+/// the state before the jump, is exact and not counted): the converted series is not certified
+/// there (a power law's creep J(0+) = 0 where the series' is 1 / G(0) > 0; docs/case-format.md, "Models that are
+/// not a finite Prony series"). 0 without a jump.
+std::size_t rows_before_window(const LoadHistory& history, const std::vector<double>& time, double shortest);
 
 }  // namespace mdr::drivers

@@ -41,7 +41,8 @@ struct MaterialTable {
 inline constexpr double noise_allowance = 0.05;
 
 /// Reads a CSV with a header naming its columns: `t,G`, `t,J` or `omega,storage,loss` (other columns are
-/// ignored; a file with both G and J is ambiguous and refused). Throws mdr::InvalidInput with key `file`.
+/// ignored; a file with both G and J is ambiguous and refused), read by mdr's one CSV reader (mdr::CsvFile: comments,
+/// quotes, a field count per row equal to the header's). Throws mdr::InvalidInput with key `file`.
 MaterialTable read_material_table(const std::filesystem::path& path);
 
 /// The Prony series (for creep data: the creep function J_g + t/eta_f + sum J_j (1 - exp(-t/lambda_j)), then

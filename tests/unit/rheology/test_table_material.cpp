@@ -118,5 +118,33 @@ TEST(TableMaterial, ReadsACsvByItsHeader) {
     EXPECT_THROW(read_material_table(path), InvalidInput);
 }
 
+// The table's file goes through mdr's one CSV reader (mdr::CsvFile), as measured curves do: a byte-order mark,
+// comment lines and quoted names are read as there (before, the table's own parser took the mark and the comment
+// for the header and "t","G" for a row), and a row short of a field is refused with its line and the rule.
+TEST(TableMaterial, ReadsItsFileLikeAMeasuredCurve) {
+    const auto path = std::filesystem::temp_directory_path() / "mdr_table_material_reader_test.csv";
+    {
+        std::ofstream file(path, std::ios::binary);
+        file << "\xEF\xBB\xBF# a master curve\r\n\"t\", \"G\"\r\n1,2\r\n# a note\r\n10,1.5\r\n";
+    }
+    const MaterialTable table = read_material_table(path);
+    EXPECT_EQ(table.quantity, TableQuantity::relaxation);
+    EXPECT_EQ(table.abscissa, (std::vector<double>{1.0, 10.0}));
+    EXPECT_EQ(table.values, (std::vector<double>{2.0, 1.5}));
+    {
+        std::ofstream file(path);
+        file << "t,G\n1,2\n10\n";
+    }
+    try {
+        read_material_table(path);
+        ADD_FAILURE() << "a row short of a field was read";
+    } catch (const InvalidInput& error) {
+        EXPECT_EQ(error.key(), "file");
+        EXPECT_NE(std::string(error.what()).find("line 3 has 1 fields; the header has 2"), std::string::npos)
+            << error.what();
+    }
+    std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace mdr::rheology

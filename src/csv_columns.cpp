@@ -1,15 +1,14 @@
-#include "csv_columns.hpp"
+#include "mdr/csv_columns.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <string_view>
 #include <system_error>
 
 #include "mdr/error.hpp"
 
-namespace mdr::fit {
+namespace mdr {
 namespace {
 
 namespace fs = std::filesystem;
@@ -50,46 +49,6 @@ void split(std::string_view line, std::vector<std::string_view>& fields) {
     }
 }
 
-/// The whole file; refuses what is not a readable regular file.
-std::string file_text(const fs::path& file) {
-    std::error_code error;
-    const auto status = fs::status(file, error);
-    if (!fs::exists(status)) {
-        throw InvalidInput("file", in_quotes(file.string()), "cannot be read (" + unreadable_reason(file) + ")");
-    }
-    if (!fs::is_regular_file(status)) throw InvalidInput("file", in_quotes(file.string()), "is not a regular file");
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InvalidInput("file", in_quotes(file.string()), "cannot be opened");
-    std::string text;
-    text.resize(static_cast<std::size_t>(fs::file_size(file, error)));
-    in.read(text.data(), static_cast<std::streamsize>(text.size()));
-    if (error || !in) throw InvalidInput("file", in_quotes(file.string()), "cannot be read");
-    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // a UTF-8 byte-order mark
-    return text;
-}
-
-/// Walks the lines of a text, skipping empty lines and comments, counting line numbers from 1.
-class Lines {
-public:
-    explicit Lines(std::string_view text) : text_(text) {}
-    bool next(std::string_view& line, std::size_t& number) {
-        while (position_ < text_.size()) {
-            const std::size_t end = std::min(text_.find('\n', position_), text_.size());
-            line = text_.substr(position_, end - position_);
-            position_ = end + 1;
-            number = ++line_;
-            const std::string_view content = trimmed(line);
-            if (!content.empty() && content.front() != '#') return true;
-        }
-        return false;
-    }
-
-private:
-    std::string_view text_;
-    std::size_t position_ = 0;
-    std::size_t line_ = 0;
-};
-
 bool parse_finite(std::string_view field, double& value) {
     if (!field.empty() && field.front() == '+') field.remove_prefix(1);
     const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
@@ -98,18 +57,35 @@ bool parse_finite(std::string_view field, double& value) {
 
 }  // namespace
 
-CsvColumns read_csv_columns(const fs::path& file, const std::vector<CsvColumn>& columns,
-                            const std::string& segment_column, const std::vector<std::string>& segments) {
-    const std::string text = file_text(file);
-    const std::string file_name = message_text(file.filename().string());
-    Lines lines(text);
-    std::string_view line;
-    std::size_t line_number = 0;
-    if (!lines.next(line, line_number)) throw InvalidInput("file", in_quotes(file.string()), "has no header line");
+CsvFile::CsvFile(const fs::path& file) : file_(file) {
+    std::error_code error;
+    const auto status = fs::status(file, error);
+    if (!fs::exists(status)) {
+        throw InvalidInput("file", in_quotes(file.string()), "cannot be read (" + unreadable_reason(file) + ")");
+    }
+    if (!fs::is_regular_file(status)) throw InvalidInput("file", in_quotes(file.string()), "is not a regular file");
+    in_.open(file, std::ios::binary);
+    if (!in_) throw InvalidInput("file", in_quotes(file.string()), "cannot be opened");
+    if (!next_line()) throw InvalidInput("file", in_quotes(file.string()), "has no header line");
     std::vector<std::string_view> fields;
-    split(line, fields);
-    const std::vector<std::string> header(fields.begin(), fields.end());
+    split(line_, fields);
+    header_.assign(fields.begin(), fields.end());
+}
 
+bool CsvFile::next_line() {
+    while (std::getline(in_, line_)) {
+        if (++line_number_ == 1 && line_.rfind("\xEF\xBB\xBF", 0) == 0) line_.erase(0, 3);  // a UTF-8 byte-order mark
+        const std::string_view content = trimmed(line_);
+        if (!content.empty() && content.front() != '#') return true;
+    }
+    if (in_.bad()) throw InvalidInput("file", in_quotes(file_.string()), "cannot be read");
+    return false;
+}
+
+CsvColumns CsvFile::read(const std::vector<CsvColumn>& columns, const std::string& segment_column,
+                         const std::vector<std::string>& segments) {
+    const std::string file_name = message_text(file_.filename().string());
+    const std::vector<std::string>& header = header_;
     const auto column_index = [&](const std::string& name, const std::string& key) {
         const auto first = std::find(header.begin(), header.end(), name);
         if (first == header.end()) {
@@ -130,11 +106,12 @@ CsvColumns read_csv_columns(const fs::path& file, const std::vector<CsvColumn>& 
     std::vector<std::size_t> selected(segments.size(), 0);
     CsvColumns result;
     result.values.resize(columns.size());
-    while (lines.next(line, line_number)) {
-        split(line, fields);
+    std::vector<std::string_view> fields;
+    while (next_line()) {
+        split(line_, fields);
         if (fields.size() != header.size()) {
-            throw InvalidInput("file", in_quotes(file.string()),
-                               "line " + std::to_string(line_number) + " has " + std::to_string(fields.size()) +
+            throw InvalidInput("file", in_quotes(file_.string()),
+                               "line " + std::to_string(line_number_) + " has " + std::to_string(fields.size()) +
                                    " fields; the header has " + std::to_string(header.size()));
         }
         if (select) {
@@ -156,12 +133,12 @@ CsvColumns read_csv_columns(const fs::path& file, const std::vector<CsvColumn>& 
             double value = 0.0;
             if (!parse_finite(field, value)) {
                 throw InvalidInput(columns[k].key, field.empty() ? "(empty)" : std::string(field),
-                                   "in " + file_name + ", line " + std::to_string(line_number) + ", column " +
+                                   "in " + file_name + ", line " + std::to_string(line_number_) + ", column " +
                                        shown(columns[k].name) + ": must be a finite number");
             }
             result.values[k].push_back(value);
         }
-        result.lines.push_back(line_number);
+        result.lines.push_back(line_number_);
     }
     for (std::size_t s = 0; s < segments.size(); ++s) {
         if (selected[s] == 0) {
@@ -174,4 +151,9 @@ CsvColumns read_csv_columns(const fs::path& file, const std::vector<CsvColumn>& 
     return result;
 }
 
-}  // namespace mdr::fit
+CsvColumns read_csv_columns(const fs::path& file, const std::vector<CsvColumn>& columns,
+                            const std::string& segment_column, const std::vector<std::string>& segments) {
+    return CsvFile(file).read(columns, segment_column, segments);
+}
+
+}  // namespace mdr
