@@ -24,7 +24,7 @@ REPO = pathlib.Path(__file__).resolve().parents[2]
 WALL_TIME_FIELDS = {"wall_seconds"}
 # Progress reports on stderr tell the time they were made: `mdr: fit iteration 5, chi^2 = 1e9, 7 s so far`,
 # `mdr sweep: 2/4 runs, 27.8 runs/s, 0 s left`. They are dropped before stderr is compared.
-PROGRESS_LINE = re.compile(r"^mdr.*(s so far|s left)$", re.MULTILINE)
+PROGRESS_LINE = re.compile(r"^mdr.*(?:s so far|s left)\r?(?:\n|$)", re.MULTILINE)
 WALL_TIME_JSON = re.compile(rb'"(' + b"|".join(f.encode() for f in WALL_TIME_FIELDS) + rb')"\s*:\s*[-+0-9.eE]+')
 # Sweeps over the example cases: (case, --vary arguments). The harmonic sweep lists its frequencies in both orders.
 SWEEPS = [
