@@ -3,7 +3,7 @@ BUILD_DIR := build
 PYTHON := /usr/bin/python3
 JOBS ?= $(shell nproc)
 
-.PHONY: deps configure build test sanitize demo bench figures clean
+.PHONY: deps configure build test sanitize demo bench figures compare clean
 
 deps:
 	@scripts/install-deps
@@ -35,6 +35,13 @@ figures: build
 
 bench: build
 	@$(BUILD_DIR)/bin/mdr_bench --benchmark_counters_tabular=true
+
+# Byte identity of every example and fuzz-corpus output against a binary kept from before a change
+# (docs/architecture.md): make compare OLD=/tmp/mdr-old
+compare:
+	@test -n "$(OLD)" || { echo "make compare: give OLD=path/to/the/old/mdr" >&2; exit 2; }
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target mdr
+	@$(PYTHON) tests/support/compare_outputs.py $(OLD) $(BUILD_DIR)/bin/mdr
 
 clean:
 	@rm -rf $(BUILD_DIR) build-dev build-sanitize out

@@ -48,7 +48,7 @@ if(MDR_BUILD_PYTHON)
   # The extension is built for one Python minor version (its file name says which).
   math(EXPR next_minor "${MDR_PYTHON_VERSION_MINOR} + 1")
   set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3 (>= ${MDR_PYTHON_VERSION_MAJOR}.${MDR_PYTHON_VERSION_MINOR}~), \
-python3 (<< ${MDR_PYTHON_VERSION_MAJOR}.${next_minor}~), python3-numpy, python3-tomli-w")
+python3 (<< ${MDR_PYTHON_VERSION_MAJOR}.${next_minor}~), python3-numpy")
   set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libfmt-dev, python3-matplotlib")
   set(CPACK_DEBIAN_PACKAGE_SUGGESTS "libceres-dev, python3-distributed, python3-h5py")  # Dask batches, HDF5 stacks
 endif()

@@ -3,6 +3,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "case_tree.hpp"
 #include "document_object.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/candidates.hpp"
@@ -57,11 +58,11 @@ py::dict fit_output(const io::FitCase& fit_case, const fit::FitResult& result) {
     return out;
 }
 
-// A fit case from TOML text; `curves` (name, t, d, F) and `rebounds`, when either is not empty, replace its
-// [[fit.data]].
-py::dict fit_toml_case(const std::string& toml_text, const std::string& source, const std::string& directory,
-                       const std::vector<CurveArrays>& curves, const std::vector<ReboundArrays>& rebounds) {
-    auto fit_case = io::parse_fit_case(toml_text, source, directory);
+// A fit case from TOML text or a dict tree; `curves` (name, t, d, F) and `rebounds`, when either is not empty,
+// replace its [[fit.data]].
+py::dict fit_case_of(const py::object& case_, const std::string& source, const std::string& directory,
+                     const std::vector<CurveArrays>& curves, const std::vector<ReboundArrays>& rebounds) {
+    auto fit_case = io::parse_fit_case(case_template(case_, source), directory);
     // Ctrl-C (a pending signal) stops the fit at its next model run or progress report with KeyboardInterrupt.
     bool signalled = false;
     fit_case.settings.check_interrupt = [&signalled] {
@@ -132,8 +133,8 @@ py::dict fit_toml_case(const std::string& toml_text, const std::string& source, 
 }  // namespace
 
 void bind_fit(py::module_& module) {
-    module.def("_fit_toml", &fit_toml_case, py::arg("text"), py::arg("source"), py::arg("directory"),
-               py::arg("curves"), py::arg("rebounds"), "Fits a fit case given as TOML text (mdr.fit is the public entry).");
+    module.def("_fit_toml", &fit_case_of, py::arg("case"), py::arg("source"), py::arg("directory"), py::arg("curves"),
+               py::arg("rebounds"), "Fits a fit case given as TOML text or a dict tree (mdr.fit is the public entry).");
     module.def(
         "_afm_depth_and_force",
         [](const InputArray& piezo, const InputArray& deflection, double spring_constant) {

@@ -5,6 +5,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "case_tree.hpp"
 #include "summary_dict.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/error.hpp"
@@ -20,8 +21,8 @@ namespace {
 // Runs with the GIL released; at each report of the driver, Ctrl-C (a pending signal) stops the run with
 // KeyboardInterrupt, and `progress` (None or a callable of the fraction done) is called; an exception it raises
 // stops the run and propagates. `progress` is called with 1.0 once the run is done.
-py::dict run_toml_case(const std::string& toml_text, const std::string& source, const py::object& progress) {
-    const auto contact_case = io::parse_case(toml_text, source);
+py::dict run_case(const py::object& case_, const std::string& source, const py::object& progress) {
+    const auto contact_case = case_template(case_, source).build();
     drivers::IndentationResult result;
     double wall = 0.0;
     {
@@ -82,14 +83,16 @@ py::dict run_toml_case(const std::string& toml_text, const std::string& source, 
 }  // namespace
 
 void bind_run(py::module_& module) {
-    module.def("_run_toml", &run_toml_case, py::arg("toml_text"), py::arg("source") = "case",
-               py::arg("progress") = py::none(),
-               "Runs a case given as TOML text; returns history, profiles and summary (use mdr.run).");
+    module.def("_run_toml", &run_case, py::arg("case"), py::arg("source") = "case", py::arg("progress") = py::none(),
+               "Runs a case given as TOML text or as a dict tree; returns history, profiles and summary "
+               "(use mdr.run).");
     module.def(
         "_check_toml",
-        [](const std::string& text, const std::string& source) { return io::check(io::parse_case(text, source)); },
-        py::arg("toml_text"), py::arg("source") = "case",
-        "Validates a case given as TOML text; returns its description.");
+        [](const py::object& case_, const std::string& source) {
+            return io::check(case_template(case_, source).build());
+        },
+        py::arg("case"), py::arg("source") = "case",
+        "Validates a case given as TOML text or as a dict tree; returns its description.");
     module.def(
         "_unreadable_case",
         [](const std::string& path) { throw unreadable_file("case", path); },

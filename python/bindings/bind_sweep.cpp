@@ -1,9 +1,12 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <string>
 #include <thread>
 
 #include "bindings.hpp"
+#include "case_tree.hpp"
 #include "summary_dict.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/sweep.hpp"
@@ -11,19 +14,41 @@
 namespace py = pybind11;
 
 namespace mdr::python {
+namespace {
+
+// The axes of mdr.sweep: each a `--vary` spec (str) or a (key, values) pair whose numbers come as they are.
+std::vector<io::SweepAxis> sweep_axes(const py::list& specs) {
+    std::vector<io::SweepAxis> axes;
+    for (const auto& spec : specs) {
+        if (py::isinstance<py::str>(spec)) {
+            axes.push_back(io::parse_sweep_axis(spec.cast<std::string>()));
+            continue;
+        }
+        auto axis = spec.cast<std::pair<std::string, std::vector<double>>>();
+        for (const double value : axis.second) {
+            if (!std::isfinite(value)) {
+                throw InvalidInput("vary['" + axis.first + "']", std::to_string(value), "must be finite numbers");
+            }
+        }
+        axes.push_back({std::move(axis.first), std::move(axis.second)});
+    }
+    return axes;
+}
+
+}  // namespace
 
 void bind_sweep(py::module_& module) {
     module.def(
         "_sweep_toml",
-        [](const std::string& toml_text, const std::string& source, const std::vector<std::string>& specs,
-           unsigned jobs, const py::object& progress) {
-            std::vector<io::SweepAxis> axes;
-            for (const auto& spec : specs) axes.push_back(io::parse_sweep_axis(spec));
-            io::validate_sweep(toml_text, source, axes);
+        [](const py::object& case_, const std::string& source, const py::list& specs, unsigned jobs,
+           const py::object& progress) {
+            const auto axes = sweep_axes(specs);
+            const auto model = case_template(case_, source);
+            io::validate_sweep(model, axes);
             std::vector<io::SweepRow> rows;
             {
                 py::gil_scoped_release release;
-                rows = io::run_sweep(toml_text, source, axes, jobs == 0 ? std::thread::hardware_concurrency() : jobs,
+                rows = io::run_sweep(model, axes, jobs == 0 ? std::thread::hardware_concurrency() : jobs,
                                      [&progress](std::size_t done, std::size_t total) {
                                          // Ctrl-C or an exception of `progress` stops the sweep (run_sweep joins
                                          // its threads and rethrows).
@@ -39,28 +64,23 @@ void bind_sweep(py::module_& module) {
                 errors.append(row.error);
             }
             py::dict out;
-            out["keys"] = py::cast(specs);
+            out["keys"] = specs;
             out["points"] = points;
             out["summaries"] = summaries;
             out["errors"] = errors;
             return out;
         },
-        py::arg("toml_text"), py::arg("source"), py::arg("specs"), py::arg("jobs") = 0,
-        py::arg("progress") = py::none(),
-        "Runs a case over the cartesian product of --vary specs (use mdr.sweep).");
+        py::arg("case"), py::arg("source"), py::arg("specs"), py::arg("jobs") = 0, py::arg("progress") = py::none(),
+        "Runs a case (TOML text or a dict tree) over the cartesian product of axes, each a --vary spec or a "
+        "(key, values) pair (use mdr.sweep).");
     module.def(
         "_sweep_size",
-        [](const std::vector<std::string>& specs) {
-            std::vector<io::SweepAxis> axes;
-            for (const auto& spec : specs) axes.push_back(io::parse_sweep_axis(spec));
-            return io::sweep_size(axes);
-        },
-        py::arg("specs"), "The number of grid points of --vary specs (mdr.sweep bounds its threads by it).");
+        [](const py::list& specs) { return io::sweep_size(sweep_axes(specs)); }, py::arg("specs"),
+        "The number of grid points of the axes of _sweep_toml (mdr.sweep bounds its threads by it).");
     module.def(
         "_sweep_grid",
-        [](const std::vector<std::string>& specs) {
-            std::vector<io::SweepAxis> axes;
-            for (const auto& spec : specs) axes.push_back(io::parse_sweep_axis(spec));
+        [](const py::list& specs) {
+            const auto axes = sweep_axes(specs);
             py::list keys;
             for (const auto& axis : axes) keys.append(axis.key);
             const auto points = io::sweep_points(axes);
@@ -71,17 +91,18 @@ void bind_sweep(py::module_& module) {
             }
             return py::make_tuple(keys, array);
         },
-        py::arg("specs"), "The keys and the grid points (rows x keys) of --vary specs, in row order (mdr.sweep).");
+        py::arg("specs"), "The keys and the grid points (rows x keys) of the axes of _sweep_toml, in row order.");
     module.def(
         "_sweep_points",
-        [](const std::string& toml_text, const std::string& source, const std::vector<std::string>& keys,
+        [](const py::object& case_, const std::string& source, const std::vector<std::string>& keys,
            const py::array_t<double, py::array::c_style | py::array::forcecast>& points, unsigned jobs) {
             if (points.ndim() != 2 || static_cast<std::size_t>(points.shape(1)) != keys.size()) {
                 throw InvalidInput("points", "array", "must have one column per key");
             }
             std::vector<io::SweepAxis> axes;
             for (const auto& key : keys) axes.push_back({key, {}});
-            io::validate_sweep(toml_text, source, axes);
+            const auto model = case_template(case_, source);
+            io::validate_sweep(model, axes);
             const auto view = points.unchecked<2>();
             std::vector<std::vector<double>> rows_in(static_cast<std::size_t>(points.shape(0)));
             for (std::size_t r = 0; r < rows_in.size(); ++r) {
@@ -90,7 +111,7 @@ void bind_sweep(py::module_& module) {
             std::vector<io::SweepRow> rows;
             {
                 py::gil_scoped_release release;
-                rows = io::run_sweep_points(toml_text, source, keys, std::move(rows_in), std::max(jobs, 1u), {});
+                rows = io::run_sweep_points(model, keys, std::move(rows_in), std::max(jobs, 1u), {});
             }
             py::list summaries, errors;
             for (const auto& row : rows) {
@@ -99,8 +120,9 @@ void bind_sweep(py::module_& module) {
             }
             return py::make_tuple(summaries, errors);
         },
-        py::arg("toml_text"), py::arg("source"), py::arg("keys"), py::arg("points"), py::arg("jobs") = 1,
-        "Runs a case at the given points (rows x keys); returns (summaries, errors) in row order, a summary a dict "
+        py::arg("case"), py::arg("source"), py::arg("keys"), py::arg("points"), py::arg("jobs") = 1,
+        "Runs a case (TOML text or a dict tree) at the given points (rows x keys); returns (summaries, errors) in "
+        "row order, a summary a dict "
         "({} where the point failed). The rows are those "
         "of _sweep_toml, bit for bit (mdr.distributed runs chunks of a sweep with it).");
 }

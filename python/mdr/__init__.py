@@ -26,7 +26,7 @@ from . import _mdr
 from ._arrays import real_array
 from ._jobs import check_jobs, local_workers
 from ._mdr import ConvertedMaterial, Indenter, InvalidInput, Material
-from ._toml import to_toml
+from ._case_tree import plain_tree
 from .curve_maps import map_curves
 from .fit_maps import fit_map
 from .fitting import FitResult, fit
@@ -78,9 +78,11 @@ class Result:
     description: str = ""
 
 
-def _case_text(case: CaseLike) -> tuple[str, str]:
+def _case_input(case: CaseLike) -> tuple[Union[str, dict[str, Any]], str]:
+    """What the bindings read and the name of the case in messages: a file's TOML text, or a dict as its plain tree
+    (no text)."""
     if isinstance(case, Mapping):
-        return to_toml(case), "case"
+        return plain_tree(case), "case"
     if isinstance(case, (str, os.PathLike)):
         path = os.fspath(case)
         try:
@@ -162,9 +164,9 @@ def run(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[st
     'displacement'
     """
     progress = _callable_or_none(progress)
-    text, source = _case_text(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
+    case_input, source = _case_input(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
                                                   tangential=tangential, output=output, numerics=numerics)))
-    raw = _mdr._run_toml(text, source, progress)
+    raw = _mdr._run_toml(case_input, source, progress)
     return Result(history=dict(raw["history"]), summary=raw["summary"],
                   profiles=dict(raw["profiles"]), description=raw["description"])
 
@@ -198,18 +200,19 @@ def check(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[
     ...           load={"control": "force", "history": [[0.0, 0.0], [1.0, 0.1]]})  # doctest: +ELLIPSIS
     'sphere R = 0.01 on an elastic half-space elastic (G = 1000000 Pa) (G(0+) = 1e+06 Pa, ...), force control, ...'
     """
-    text, source = _case_text(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
+    case_input, source = _case_input(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
                                                   tangential=tangential, output=output, numerics=numerics)))
-    return _mdr._check_toml(text, source)
+    return _mdr._check_toml(case_input, source)
 
 
-def _axis_spec(key: str, values: Any) -> str:
+def _axis_spec(key: str, values: Any) -> Union[str, tuple[str, list[float]]]:
+    """An axis of the bindings: a `--vary` spec for a grid given as text, else the key and its numbers as floats."""
     if isinstance(values, str):
         return f"{key}={values}"
     array = real_array(values, f"vary[{key!r}]")
     if array.size == 0:
         raise ValueError(f"vary[{key!r}]: an empty array; must be a 1-D list of numbers or 'START:STOP:COUNT[:log]'")
-    return f"{key}=" + ",".join(repr(float(v)) for v in array)
+    return key, array.tolist()
 
 
 class SweepTable(dict):
@@ -286,17 +289,17 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
         raise TypeError("vary: expected a non-empty dict {key: values}")
     check_jobs(jobs, scheduler)
     progress = _callable_or_none(progress)
-    text, source = _case_text(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
+    case_input, source = _case_input(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
                                                   tangential=tangential, output=output, numerics=numerics)))
     specs = [_axis_spec(key, values) for key, values in vary.items()]
     batch = threads = None
     if scheduler is None:
         threads = local_workers(jobs, _mdr._sweep_size(specs))
-        raw = _mdr._sweep_toml(text, source, specs, threads, progress)
+        raw = _mdr._sweep_toml(case_input, source, specs, threads, progress)
     else:
         from . import distributed
 
-        _, points, batch = distributed.sweep_rows(text, source, specs, scheduler)
+        _, points, batch = distributed.sweep_rows(case_input, source, specs, scheduler)
         raw = {"points": points, "summaries": [row[0] for row in batch.outputs],
                "errors": [row[1] for row in batch.outputs]}
         batch.outputs = []

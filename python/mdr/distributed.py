@@ -359,13 +359,14 @@ def _each_item(function: Callable[[Any], Any], items: list) -> list[tuple[Any, s
     return outputs
 
 
-def sweep_chunk(case_text: str, source: str, keys: list[str], points: Any) -> list[tuple[dict[str, Any], str]]:
+def sweep_chunk(case: str | dict[str, Any], source: str, keys: list[str],
+                points: Any) -> list[tuple[dict[str, Any], str]]:
     r"""The rows (summary, error) of a sweep at the given points, on one thread (the chunk task of a sweep).
 
     Parameters
     ----------
-    case_text : str
-        The case as TOML text.
+    case : str or dict
+        The case as TOML text (a file's) or as its plain tree of dicts, lists and numbers (what `mdr.sweep` sends).
     source : str
         The case's name in messages (its file name).
     keys : list of str
@@ -392,23 +393,24 @@ def sweep_chunk(case_text: str, source: str, keys: list[str], points: Any) -> li
     >>> [round(summary["max_force"] / rows[0][0]["max_force"], 6) for summary, _ in rows], [e for _, e in rows]
     ([1.0, 4.0], ['', ''])
     """
-    summaries, errors = _mdr._sweep_points(case_text, source, keys, points, 1)
+    summaries, errors = _mdr._sweep_points(case, source, keys, points, 1)
     return list(zip(summaries, errors))
 
 
-def sweep_rows(case_text: str, source: str, specs: list[str], scheduler: Any,
+def sweep_rows(case: str | dict[str, Any], source: str, specs: list[str], scheduler: Any,
                progress: Callable[[int, int], None] | None = None) -> tuple[list[str], Any, MapOutcome]:
     r"""The rows of a sweep run in chunks through a Dask scheduler (`mdr.sweep` with ``scheduler=``), the same rows
     as the local sweep's, bit for bit.
 
     Parameters
     ----------
-    case_text : str
-        The case as TOML text.
+    case : str or dict
+        The case as TOML text (a file's) or as its plain tree of dicts, lists and numbers (what `mdr.sweep` sends).
     source : str
         The case's name in messages (its file name).
-    specs : list of str
-        One axis each, ``"KEY=V1,V2,..."`` or ``"KEY=START:STOP:COUNT[:log]"`` (the last varies fastest).
+    specs : list of str or (str, list of float)
+        One axis each, ``"KEY=V1,V2,..."``, ``"KEY=START:STOP:COUNT[:log]"`` or ``(KEY, [V1, V2, ...])`` (the last
+        varies fastest).
     scheduler : str or distributed.Client or None
         A Dask scheduler address ``"tcp://HOST:PORT"`` or a client; None runs the chunks in local processes.
     progress : callable, optional
@@ -444,7 +446,7 @@ def sweep_rows(case_text: str, source: str, specs: list[str], scheduler: Any,
     ...                                   "tcp://127.0.0.1:8786")      # doctest: +SKIP
     """
     keys, points = _mdr._sweep_grid(specs)
-    _mdr._sweep_points(case_text, source, keys, points[:0], 1)  # validates the case and the keys here, first
-    outcome = ordered_map(functools.partial(sweep_chunk, case_text, source, keys),
+    _mdr._sweep_points(case, source, keys, points[:0], 1)  # validates the case and the keys here, first
+    outcome = ordered_map(functools.partial(sweep_chunk, case, source, keys),
                           lambda start, stop: points[start:stop], len(points), scheduler=scheduler, progress=progress)
     return keys, points, outcome

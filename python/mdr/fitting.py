@@ -11,7 +11,7 @@ import numpy as np
 
 from . import _mdr
 from ._arrays import real_array, real_number
-from ._toml import to_toml
+from ._case_tree import plain_tree
 
 CaseLike = Union[str, os.PathLike, Mapping[str, Any]]
 
@@ -144,7 +144,7 @@ def fit(case: CaseLike, data: Mapping[str, Any] | Sequence[Mapping[str, Any]] | 
     1.0
     """
     if isinstance(case, Mapping):
-        text, source, directory = to_toml(case), "case", os.getcwd()
+        case_input, source, directory = plain_tree(case), "case", os.getcwd()
     elif isinstance(case, (str, os.PathLike)):
         source = os.fspath(case)
         text = None
@@ -155,11 +155,12 @@ def fit(case: CaseLike, data: Mapping[str, Any] | Sequence[Mapping[str, Any]] | 
             pass
         if text is None:
             _mdr._unreadable_case(source)  # raises the command line's line (mdr::unreadable_file)
+        case_input = text
         directory = os.path.dirname(os.path.abspath(source))
     else:
         raise TypeError(f"case: expected a path or a dict, got {type(case).__name__}")
     curves, rebounds = [], []
-    case_units = _case_units(case if isinstance(case, Mapping) else text)
+    case_units = _case_units(case_input)
     for i, curve in enumerate(_data_list(data)):
         kind = curve.get("kind", "curve")
         if kind == "rebound":
@@ -169,7 +170,7 @@ def fit(case: CaseLike, data: Mapping[str, Any] | Sequence[Mapping[str, Any]] | 
                            str(curve.get("fitted", ""))))
         else:
             raise ValueError(f"data[{i}].kind = {kind!r}: one of curve, rebound")
-    raw = _mdr._fit_toml(text, source, directory, curves, rebounds)
+    raw = _mdr._fit_toml(case_input, source, directory, curves, rebounds)
     if "candidates" not in raw:
         return _result(raw)
     candidates = {str(entry["name"]): _result(entry) for entry in raw["candidates"]}

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <tuple>
-#include <string>
 
 #include "exponential_quadrature.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
@@ -340,8 +339,7 @@ private:
 }  // namespace
 
 bool ting_model_applies(const rheology::Rheology& material, const profile::Profile& indenter) {
-    const std::string shape = indenter.definition().shape;
-    return material.viscosity() == 0.0 && (shape == "sphere" || shape == "cone" || shape == "power");
+    return material.viscosity() == 0.0 && indenter.power_law_exponent().has_value();
 }
 
 std::optional<TingResponse> ting_forces(const rheology::Rheology& material, const profile::Profile& indenter,

@@ -26,8 +26,8 @@
 
 namespace mdr::fit {
 
-/// True when the continuum model covers this material and indenter: no parallel dashpot, and a sphere, cone or
-/// power-law profile (closed-form g, contact radius smooth in the depth).
+/// True when the continuum model covers this material and indenter: no parallel dashpot, and a profile whose g is a
+/// power law (Profile::power_law_exponent: closed-form g, contact radius smooth in the depth).
 bool ting_model_applies(const rheology::Rheology& material, const profile::Profile& indenter);
 
 /// What the continuum model gives for one depth history.

@@ -4,6 +4,8 @@
 
 #include <charconv>
 #include <sstream>
+#include <type_traits>
+#include <variant>
 
 #include "case_reader.hpp"
 #include "mdr/error.hpp"
@@ -45,7 +47,39 @@ std::optional<Location> locate(toml::table& root, const std::string& key) {
     return location;
 }
 
+toml::table to_toml(const CaseTable& table);
+toml::array to_toml(const CaseArray& array);
+
+// A scalar as itself; an array or a table converted node by node.
+template <typename Value>
+auto to_toml_value(const Value& value) {
+    if constexpr (std::is_same_v<Value, CaseArray> || std::is_same_v<Value, CaseTable>) {
+        return to_toml(value);
+    } else {
+        return value;
+    }
+}
+
+toml::array to_toml(const CaseArray& array) {
+    toml::array converted;
+    for (const auto& item : array) {
+        std::visit([&converted](const auto& value) { converted.push_back(to_toml_value(value)); }, item.value);
+    }
+    return converted;
+}
+
+toml::table to_toml(const CaseTable& table) {
+    toml::table converted;
+    for (const auto& [key, item] : table) {
+        std::visit([&](const auto& value) { converted.insert_or_assign(key, to_toml_value(value)); }, item.value);
+    }
+    return converted;
+}
+
 }  // namespace
+
+CaseTemplate::CaseTemplate(const CaseTable& root, const std::string& source)
+    : tables_(std::make_unique<Tables>(Tables{to_toml(root), source})) {}
 
 CaseTemplate::CaseTemplate(std::string_view toml_text, const std::string& source)
     : tables_(std::make_unique<Tables>(Tables{parse_toml(toml_text, source), source})) {}

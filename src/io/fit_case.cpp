@@ -100,7 +100,11 @@ std::optional<std::array<double, 2>> contact_bounds(const toml::table& fit) {
 
 FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
                        const std::filesystem::path& case_directory) {
-    CaseTemplate model(toml_text, source);
+    return parse_fit_case(CaseTemplate(toml_text, source), case_directory);
+}
+
+FitCase parse_fit_case(CaseTemplate model, const std::filesystem::path& case_directory) {
+    const std::string source = model.source();
     if (!model.has_table("fit")) throw InvalidInput("fit", "(missing)", "a fit case needs a [fit] table");
     const toml::table fit_table = parse_toml(model.take_table("fit"), source);
     TableReader fit(fit_table, "fit");

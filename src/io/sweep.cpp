@@ -112,8 +112,11 @@ SweepAxis parse_sweep_axis(const std::string& spec) {
 }
 
 void validate_sweep(std::string_view case_text, const std::string& source, const std::vector<SweepAxis>& axes) {
+    validate_sweep(CaseTemplate(case_text, source), axes);
+}
+
+void validate_sweep(const CaseTemplate& model, const std::vector<SweepAxis>& axes) {
     sweep_size(axes);
-    const CaseTemplate model(case_text, source);
     model.build();
     for (const auto& axis : axes) {
         if (!model.has_number(axis.key)) {
@@ -247,13 +250,25 @@ std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& s
                                 const std::function<void(std::size_t, std::size_t)>& progress) {
     std::vector<std::string> keys;
     for (const auto& axis : axes) keys.push_back(axis.key);
-    return run_sweep_points(case_text, source, keys, sweep_points(axes), jobs, progress);
+    return run_sweep_points(CaseTemplate(case_text, source), keys, sweep_points(axes), jobs, progress);
+}
+
+std::vector<SweepRow> run_sweep(const CaseTemplate& model, const std::vector<SweepAxis>& axes, unsigned jobs,
+                                const std::function<void(std::size_t, std::size_t)>& progress) {
+    std::vector<std::string> keys;
+    for (const auto& axis : axes) keys.push_back(axis.key);
+    return run_sweep_points(model, keys, sweep_points(axes), jobs, progress);
 }
 
 std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::string& source,
                                        const std::vector<std::string>& keys, std::vector<std::vector<double>> points,
                                        unsigned jobs, const std::function<void(std::size_t, std::size_t)>& progress) {
-    const CaseTemplate model(case_text, source);
+    return run_sweep_points(CaseTemplate(case_text, source), keys, std::move(points), jobs, progress);
+}
+
+std::vector<SweepRow> run_sweep_points(const CaseTemplate& model, const std::vector<std::string>& keys,
+                                       std::vector<std::vector<double>> points, unsigned jobs,
+                                       const std::function<void(std::size_t, std::size_t)>& progress) {
     const std::size_t total = points.size();
     if (total == 0) return {};
     std::vector<SweepRow> rows(total);

@@ -26,6 +26,7 @@ public:
         // Ten digits: one of the two angles is 90 minus the other, which need not be exact in binary (19.7).
         return fmt::format("cone slope_deg = {:.10g} (half_angle_deg = {:.10g})", slope_deg_, 90.0 - slope_deg_);
     }
+    std::optional<double> power_law_exponent() const override { return 1.0; }
     ProfileDefinition definition() const override { return {"cone", {{"slope_deg", slope_deg_}}}; }
 
 private:

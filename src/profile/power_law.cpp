@@ -30,6 +30,7 @@ public:
         return depth > 0.0 ? std::pow(depth / (kappa_ * coefficient_), 1.0 / exponent_) : 0.0;
     }
     double max_radius() const override { return std::numeric_limits<double>::infinity(); }
+    std::optional<double> power_law_exponent() const override { return exponent_; }
     ProfileDefinition definition() const override { return {"power", {{"c", coefficient_}, {"n", exponent_}}}; }
 
 private:

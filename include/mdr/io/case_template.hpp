@@ -8,10 +8,12 @@
 #include <string_view>
 
 #include "mdr/drivers/contact_case.hpp"
+#include "mdr/io/case_tree.hpp"
 
 namespace mdr::io {
 
-/// A parsed case file. Keys are dotted paths with array indices, as in the case file: `material.tau1`,
+/// A parsed case file (or a case given as a tree). Keys are dotted paths with array indices, as in the case file:
+/// `material.tau1`,
 /// `load.history[1][1]` (the value of the second history point), `material.terms[0][1]` (tau of the first Prony
 /// term). Copies are independent.
 class CaseTemplate {
@@ -19,6 +21,8 @@ public:
     /// Parses TOML text; `source` names it in messages. Throws mdr::InvalidInput for malformed TOML (the case's
     /// rules are checked by build()).
     CaseTemplate(std::string_view toml_text, const std::string& source);
+    /// The case given as a tree of values (case_tree.hpp), without text; `source` names it in messages.
+    CaseTemplate(const CaseTable& root, const std::string& source);
     CaseTemplate(const CaseTemplate& other);
     CaseTemplate& operator=(const CaseTemplate& other);
     CaseTemplate(CaseTemplate&&) noexcept;

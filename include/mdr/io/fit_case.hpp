@@ -40,6 +40,8 @@ struct FitCase {
 /// `fit.candidates` or `[fit.spectrum]`, `free` is optional and may name indenter keys only.
 FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
                        const std::filesystem::path& case_directory);
+/// parse_fit_case of a case already parsed (or given as a tree, case_tree.hpp).
+FitCase parse_fit_case(CaseTemplate model, const std::filesystem::path& case_directory);
 
 /// The text of a case file; mdr::InvalidInput (key `case`) when it cannot be read.
 std::string read_case_text(const std::filesystem::path& path);

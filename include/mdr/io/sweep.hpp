@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "mdr/io/case_template.hpp"
 #include "mdr/io/summary.hpp"
 
 namespace mdr::io {
@@ -42,6 +43,8 @@ std::size_t sweep_size(const std::vector<SweepAxis>& axes);
 /// itself). Throws
 /// mdr::InvalidInput otherwise.
 void validate_sweep(std::string_view case_text, const std::string& source, const std::vector<SweepAxis>& axes);
+/// validate_sweep of a case already parsed (or given as a tree).
+void validate_sweep(const CaseTemplate& model, const std::vector<SweepAxis>& axes);
 
 /// The points of the cartesian product of the axes, in row order (the last axis varying fastest): the value of each
 /// axis at each row. Throws mdr::InvalidInput for a grid above max_sweep_points.
@@ -54,6 +57,10 @@ std::vector<std::vector<double>> sweep_points(const std::vector<SweepAxis>& axes
 std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::string& source,
                                        const std::vector<std::string>& keys, std::vector<std::vector<double>> points,
                                        unsigned jobs, const std::function<void(std::size_t, std::size_t)>& progress);
+/// run_sweep_points of a case already parsed (or given as a tree).
+std::vector<SweepRow> run_sweep_points(const CaseTemplate& model, const std::vector<std::string>& keys,
+                                       std::vector<std::vector<double>> points, unsigned jobs,
+                                       const std::function<void(std::size_t, std::size_t)>& progress);
 
 /// Runs the case at every point of the cartesian product of the axes (the last axis varying fastest) on `jobs`
 /// threads (at most one a point; with more than one, the points are handed out costliest first by
@@ -65,6 +72,9 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
 /// Throws mdr::InvalidInput for a grid above max_sweep_points, std::runtime_error when a thread cannot be started.
 std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& source,
                                 const std::vector<SweepAxis>& axes, unsigned jobs,
+                                const std::function<void(std::size_t, std::size_t)>& progress);
+/// run_sweep of a case already parsed (or given as a tree).
+std::vector<SweepRow> run_sweep(const CaseTemplate& model, const std::vector<SweepAxis>& axes, unsigned jobs,
                                 const std::function<void(std::size_t, std::size_t)>& progress);
 
 /// Writes sweep.csv into `directory`: the varied keys (named as given), then every numeric key of any row's

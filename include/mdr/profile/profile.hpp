@@ -4,6 +4,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,10 @@ public:
     /// True when g has a jump to a rigid wall at max_radius() (a flat punch; a durometer's rod): the contact radius
     /// cannot grow beyond it.
     virtual bool is_flat_punch() const { return false; }
+    /// The exponent n when the MDR profile is exactly a power law g(x) = k |x|^n (sphere 2, eq. 30; cone 1, eq. 25;
+    /// power law n): its contact radius a(d) = (d/k)^(1/n) is then smooth for d > 0, which the continuum (Ting)
+    /// model of depth-driven fits needs. nullopt for any other profile (a flat punch, a table).
+    virtual std::optional<double> power_law_exponent() const { return std::nullopt; }
     /// Short human description, e.g. `sphere R = 0.01`: by default describe_shape(definition()) of the registry.
     virtual std::string describe() const;
     /// The shape and parameters that build this profile again (make_profile).

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -103,6 +104,44 @@ TEST(TingModel, LoadHoldAgreesWithLeeRadok) {
                 ASSERT_NEAR(forces->force[i], expected[i], 1e-9 * peak) << shape.name << ", " << name << ", t = " << time[i];
             }
         }
+    }
+}
+
+// A smooth indenter that is none of the library's shapes (the paraboloid f = r^2/(2R), g = x^2/R of eq. 30 written
+// out here, under its own name) has the continuum path because its type says g is a power law, not because of its
+// name: Ting's triangle as for the sphere.
+class Paraboloid final : public profile::Profile {
+public:
+    explicit Paraboloid(double radius) : radius_(radius) {}
+    double gap(double r) const override { return r * r / (2.0 * radius_); }
+    double equivalent(double x) const override { return x * x / radius_; }
+    double contact_radius(double depth) const override { return std::sqrt(radius_ * std::max(depth, 0.0)); }
+    double max_radius() const override { return std::numeric_limits<double>::infinity(); }
+    std::optional<double> power_law_exponent() const override { return 2.0; }
+    std::string describe() const override { return "paraboloid"; }
+    profile::ProfileDefinition definition() const override { return {"paraboloid", {{"R", radius_}}}; }
+
+private:
+    double radius_;
+};
+
+TEST(TingModel, AnyPowerLawProfileHasTheContinuumPath) {
+    const Paraboloid indenter(1e-3);
+    const auto cases = materials();
+    const auto& [name, material] = cases.front();
+    ASSERT_TRUE(ting_model_applies(library_material(material), indenter)) << name;
+    const double peak_depth = 1e-4;
+    const reference::TingSolution ting(reference::sphere_indenter(1e-3), material, peak_depth, 1.0);
+    std::vector<double> time, depth;
+    for (int i = 0; i <= 200; ++i) {
+        time.push_back(0.01 * i);
+        depth.push_back(time.back() < 1.0 ? peak_depth * time.back() : peak_depth * (2.0 - time.back()));
+    }
+    const auto forces = ting_forces(library_material(material), indenter, time, depth);
+    ASSERT_TRUE(forces.has_value());
+    const double peak = ting.force(1.0);
+    for (std::size_t i = 1; i < time.size(); ++i) {
+        ASSERT_NEAR(forces->force[i], ting.force(time[i]), 1e-9 * peak) << "t = " << time[i];
     }
 }
 

@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <string>
+#include <variant>
+
 #include "mdr/error.hpp"
 
 namespace {
@@ -62,3 +66,34 @@ TEST(CaseTemplate, BuildAppliesTheCaseRules) {
 }
 
 }  // namespace
+
+// The same case given as a tree of values (io::CaseValue, what the Python bindings build from dicts): the same
+// numbers by key, the same text, and the readers' messages naming the same keys.
+TEST(CaseTemplate, ATreeIsTheSameCaseAsItsText) {
+    using mdr::io::CaseArray;
+    using mdr::io::CaseTable;
+    using mdr::io::CaseValue;
+    const auto pair = [](double a, double b) { return CaseValue{CaseArray{{a}, {b}}}; };
+    CaseTable root{
+        {"material", {CaseTable{{"model", {std::string("prony")}},
+                                {"G_inf", {std::int64_t{1000000}}},
+                                {"terms", {CaseArray{pair(2.0e6, 0.1), pair(1.0e6, 1.0)}}}}}},
+        {"indenter", {CaseTable{{"shape", {std::string("sphere")}}, {"R", {0.01}}}}},
+        {"load", {CaseTable{{"control", {std::string("displacement")}},
+                            {"history", {CaseArray{pair(0.0, 0.0), pair(1.0, 1.0e-4)}}}}}},
+        {"fit", {CaseTable{{"free", {CaseArray{{std::string("material.G_inf")}}}}}}},
+    };
+    const mdr::io::CaseTemplate from_tree(root, "tree");
+    const mdr::io::CaseTemplate from_text(case_text, "case");
+    EXPECT_EQ(from_tree.text(), from_text.text());
+    EXPECT_EQ(from_tree.number("material.terms[1][1]"), 1.0);
+    EXPECT_EQ(from_tree.source(), "tree");
+    root.pop_back();                                                // without [fit]: a contact case
+    std::get<CaseTable>(root[0].second.value)[1].second = {-1.0};  // material.G_inf = -1
+    try {
+        mdr::io::CaseTemplate(root, "tree").build();
+        FAIL() << "a negative G_inf was accepted";
+    } catch (const mdr::InvalidInput& error) {
+        EXPECT_EQ(std::string(error.what()).rfind("material.G_inf = -1", 0), 0u) << error.what();
+    }
+}

@@ -1,13 +1,12 @@
-"""Writes a case given as nested dicts as TOML text with tomli-w (Debian python3-tomli-w), so that dict cases go
-through the same reader as files: keys with spaces or dots are quoted, any text is escaped, numpy values and
-`mdr.Material` and `mdr.Indenter` objects become their tables."""
+"""A case given as nested dicts as the plain tree that the bindings read without text (python/bindings/case_tree.*,
+the same readers and messages as a case file): numpy values become Python numbers and lists, `mdr.Material` and
+`mdr.Indenter` objects their tables."""
 
 from __future__ import annotations
 
 from typing import Any, Mapping
 
 import numpy as np
-import tomli_w
 
 from ._mdr import Indenter, Material
 
@@ -57,6 +56,6 @@ def _plain(value: Any, key: str) -> Any:
     raise TypeError(f"{key.rstrip('.')}: unsupported value of type {type(value).__name__}")
 
 
-def to_toml(case: Mapping[str, Any]) -> str:
-    """TOML text for a case given as a nested mapping."""
-    return tomli_w.dumps(_plain(case, ""))
+def plain_tree(case: Mapping[str, Any]) -> dict[str, Any]:
+    """The case given as a nested mapping as dicts, lists, bool, int, float and str only."""
+    return _plain(case, "")
