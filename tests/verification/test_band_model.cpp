@@ -17,6 +17,8 @@
 
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/foundation/foundation.hpp"
+#include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/profile/profile.hpp"
 #include "mdr/rheology/rheology.hpp"
 
@@ -330,6 +332,55 @@ TEST(BandModel, UnloadingAfterARelaxedHoldReleasesExactlyTheElementsBeyondTheBan
     const auto band = band_forces(material, *sphere, spacing, elements, history.time, history.depth);
     ASSERT_TRUE(band.has_value());
     expect_same_forces(history, band->force, expected, 1e-9, 0);
+}
+
+// Why no history makes the band model's guard h_k >= d - D matter (nor its "in contact" and "sigma >= 0"): they
+// follow from g <= L. Every update of the foundation (contact step, free step, and both parts of a split one) is the
+// exact memory of a w linear over the (sub)step, so h_k(t) = int exp(-(t - s)/tau_k) w'(s) ds >= w(t) - max_s<=t w(s)
+// (integration by parts, any history); a free element's w never grows (sigma = 0 after a history of sigma >= 0 and a
+// creep compliance with a decreasing slope, Prony moduli >= 0), so max w <= D - g, and in contact h_k >= d - D.
+// A free element with g <= L would then carry sigma = sum_k G_k (h_k - d + D) + G_inf (L - g) >= 0 at w = d - g:
+// it would touch. Here the drivers' Foundation (every element stepped) is checked for both on the adversarial
+// histories: after every step, w <= D - g for each element touched, and h_k >= d - D for each one in contact.
+TEST(BandModel, TheElementModelNeverLetsASurfaceSinkBelowTheDeepestIndentation) {
+    std::mt19937 random(2512);
+    for (int trial = 0; trial < 40; ++trial) {
+        const auto material = adversarial_material(random);
+        const auto indenter = indenter_of(trial);
+        const History history = adversarial(random, 1e-5);
+        double deepest = 0.0;
+        for (double d : history.depth) deepest = std::max(deepest, d);
+        const std::size_t elements = 400;
+        const double spacing = 1.2 * indenter->contact_radius(deepest) / static_cast<double>(elements);
+        foundation::Foundation model(material, *indenter, spacing, elements);
+        const std::size_t branches = material.terms().size();
+        std::vector<double> state(foundation::Foundation::state_size(elements, branches));
+        foundation::StepCoefficients coefficients;
+        double peak = 0.0;
+        const auto check = [&](double start, double end, double time_step) {
+            foundation::fill_step_coefficients(material, time_step, coefficients);
+            model.begin_step(coefficients);
+            model.advance(start, end);
+            peak = std::max(peak, end);
+            model.save_state(state);
+            const double* w = state.data() + 3;
+            const double* contact = w + 2 * elements;
+            const double* h = w + 3 * elements;
+            const double round_off = 1e-12 * deepest;
+            for (std::size_t i = 0; i < model.touched(); ++i) {
+                const double g = indenter->equivalent((static_cast<double>(i) + 0.5) * spacing);
+                ASSERT_LE(w[i], peak - g + round_off) << "trial " << trial << ", element " << i;
+                for (std::size_t k = 0; k < branches && contact[i] != 0.0; ++k) {
+                    ASSERT_GE(h[k * elements + i], end - peak - round_off) << "trial " << trial << ", element " << i;
+                }
+            }
+        };
+        if (history.depth.front() > 0.0) check(0.0, history.depth.front(), 0.0);
+        for (std::size_t i = 1; i < history.time.size(); ++i) {
+            check(history.depth[i - 1], history.depth[i], history.time[i] - history.time[i - 1]);
+            if (HasFatalFailure()) return;
+        }
+    }
 }
 
 }  // namespace
