@@ -17,6 +17,7 @@
 
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/profile/profile.hpp"
@@ -381,6 +382,42 @@ TEST(BandModel, TheElementModelNeverLetsASurfaceSinkBelowTheDeepestIndentation) 
             if (HasFatalFailure()) return;
         }
     }
+}
+
+// A tabulated profile ends at its last radius r_n (g is +infinity beyond, not a rigid wall): a depth beyond g(r_n)
+// on a foundation of half-width r_n is the drivers' error (key indenter.r), so the band model must hand the run back
+// (nullopt) rather than sum a truncated indenter; below it both agree.
+TEST(BandModel, HandsADepthBeyondATabulatedProfileBackToTheDrivers) {
+    const auto material = rheology::Rheology::prony(1e5, {{3e5, 0.05}});
+    std::vector<double> r, f;
+    for (int i = 0; i <= 20; ++i) {
+        r.push_back(1e-6 * i);
+        f.push_back(r.back() * r.back() / 2e-3);  // a sphere of radius 1 mm, to r = 20 um
+    }
+    const std::shared_ptr<const profile::Profile> table = profile::make_table(r, f);
+    const double edge = table->equivalent(r.back());
+    const std::size_t elements = 500;
+    const double spacing = r.back() / static_cast<double>(elements);
+    const auto history = [&](double peak) {
+        History ramp;
+        for (int i = 0; i <= 100; ++i) {
+            ramp.time.push_back(1e-3 * i);
+            ramp.depth.push_back(peak * (static_cast<double>(i) - 1.0) / 99.0);
+        }
+        return ramp;
+    };
+    const History inside = history(0.99 * edge);
+    const auto [expected, inside_spacing] = element_forces(material, table, inside, elements);
+    const auto band = band_forces(material, *table, inside_spacing, elements, inside.time, inside.depth);
+    ASSERT_TRUE(band.has_value());
+    expect_same_forces(inside, band->force, expected, 1e-9, 0);
+    const History beyond = history(1.01 * edge);
+    EXPECT_FALSE(band_forces(material, *table, spacing, elements, beyond.time, beyond.depth).has_value());
+    foundation::Foundation drivers_model(material, *table, spacing, elements);
+    foundation::StepCoefficients coefficients;
+    foundation::fill_step_coefficients(material, 1e-3, coefficients);
+    drivers_model.begin_step(coefficients);
+    EXPECT_THROW(drivers_model.advance(0.0, 1.01 * edge), InvalidInput);
 }
 
 }  // namespace
