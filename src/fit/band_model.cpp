@@ -22,7 +22,11 @@ public:
           stress_(count, 0.0), contact_(count, 0), h_(count * branches_, 0.0), fold_time_(count, 0.0),
           running_(branches_, 0.0), folded_memory_(branches_, 0.0), scratch_(branches_, 0.0) {
         for (std::size_t i = 0; i < count; ++i) g_[i] = indenter.equivalent((static_cast<double>(i) + 0.5) * spacing);
-        beyond_ = indenter.equivalent(spacing * static_cast<double>(count) * (1.0 + 1e-12));
+        // The deepest depth the drivers' Foundation takes (foundation.cpp): g just beyond the half-width, or at it
+        // where a tabulated profile ends there (g is +infinity beyond, where nothing is known).
+        const double half_width = spacing * static_cast<double>(count);
+        beyond_ = indenter.equivalent(half_width * (1.0 + 1e-12));
+        if (!std::isfinite(beyond_) && !indenter.is_flat_punch()) beyond_ = indenter.equivalent(half_width);
         double instantaneous = material.equilibrium_modulus();
         for (const auto& term : material.terms()) instantaneous += term.modulus;
         ratio_ = instantaneous / material.equilibrium_modulus();

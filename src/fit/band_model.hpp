@@ -40,9 +40,10 @@ struct BandResponse {
 /// The force of the foundation of `count` elements of width `spacing` (x_i = (i + 1/2) spacing, as the drivers'
 /// Foundation) under the depth history through (time[i], depth[i]) (linear between the points, times increasing;
 /// the foundation undeformed before time[0], a first depth > 0 reached by a jump there), incompressible body of
-/// `material`. nullopt when !band_model_applies, when the depth reaches the last element's g, or when the drivers'
-/// Foundation would refuse `count` elements as too many (its message then names the key). `check_interrupt`, when
-/// set, is called every 4096 steps (it may throw mdr::Interrupted).
+/// `material`. nullopt when !band_model_applies, when the depth goes beyond the foundation (the last element's g,
+/// or the end of a tabulated profile at the half-width: the drivers' Foundation then reports it), or when the
+/// drivers' Foundation would refuse `count` elements as too many (its message then names the key).
+/// `check_interrupt`, when set, is called every 4096 steps (it may throw mdr::Interrupted).
 std::optional<BandResponse> band_forces(const rheology::Rheology& material, const profile::Profile& indenter,
                                         double spacing, std::size_t count, const std::vector<double>& time,
                                         const std::vector<double>& depth,

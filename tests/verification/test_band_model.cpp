@@ -17,6 +17,9 @@
 
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/error.hpp"
+#include "mdr/foundation/foundation.hpp"
+#include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/profile/profile.hpp"
 #include "mdr/rheology/rheology.hpp"
 
@@ -72,12 +75,16 @@ rheology::Rheology random_material(std::mt19937& random, int trial) {
     return rheology::Rheology::prony(1e5 * (0.05 + unit(random)), terms);
 }
 
-// The drivers' element model of the history with `elements` elements (the steps are the points, as in run_curve),
-// its forces at the points, and its element width.
+// The drivers' element model of the history with `elements` elements (the steps are the points, as in run_curve:
+// from the undeformed state one interval before a first point out of contact, else a jump at the first point), its
+// forces at the points (after the jump where two points share a time), and its element width.
 std::pair<std::vector<double>, double> element_forces(const rheology::Rheology& material,
                                                       const std::shared_ptr<const profile::Profile>& indenter,
                                                       const History& history, std::size_t elements) {
-    std::vector<drivers::LoadPoint> points{{history.time.front() - (history.time[1] - history.time[0]), 0.0}};
+    std::vector<drivers::LoadPoint> points;
+    if (history.depth.front() <= 0.0) {
+        points.push_back({history.time.front() - (history.time[1] - history.time[0]), 0.0});
+    }
     for (std::size_t i = 0; i < history.time.size(); ++i) points.push_back({history.time[i], history.depth[i]});
     drivers::ContactCase contact_case{.title = "band",
                                       .material = material,
@@ -221,6 +228,196 @@ TEST(BandModel, FitsRunTheElementModelAsTheBandModel) {
     for (std::size_t i = 0; i < expected.size(); ++i) {
         ASSERT_NEAR(model->values[i], expected[i], 1e-9 * scale) << "t = " << history.time[i];
     }
+}
+
+// Adversarial random histories: ramps to new peaks, drawdowns to 5 % to 95 % of the running maximum D, reloadings
+// that end exactly at D, holds of 1 to 300 steps, wiggles of 1e-6 to 1e-2 of D, jumps (two points at one time) up
+// and down, half of them starting in contact (a jump at the first point); materials with G(0)/G_inf from 1 to 1000
+// and more, one to six branches with tau from 1e-2 to 1e4 steps. The band rule g <= L = D - (G(0)/G_inf)(D - d)
+// matters here: with G(0)/G_inf - 1 in place of G(0)/G_inf the forces differ by up to 9e-2 of the peak, while the
+// measured-like histories above still agree.
+History adversarial(std::mt19937& random, double peak) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    History history;
+    const double dt = 1e-3;
+    double t = 0.0, d = unit(random) < 0.5 ? -0.01 * peak : 0.2 * peak, deepest = std::max(d, 0.0);
+    const auto point = [&] {
+        history.time.push_back(t);
+        history.depth.push_back(d);
+        deepest = std::max(deepest, d);
+    };
+    const auto to = [&](double target, std::size_t steps) {
+        const double start = d;
+        for (std::size_t i = 1; i <= steps; ++i) {
+            t += dt;
+            d = i == steps ? target : start + (target - start) * static_cast<double>(i) / static_cast<double>(steps);
+            point();
+        }
+    };
+    point();
+    to(0.3 * peak * (0.5 + unit(random)), 1 + static_cast<std::size_t>(60 * unit(random)));
+    for (int segment = 0; segment < 14; ++segment) {
+        const double kind = unit(random);
+        const auto steps = 1 + static_cast<std::size_t>(std::pow(300.0, unit(random)));
+        if (kind < 0.2) {
+            to(deepest * (0.05 + 0.9 * unit(random)), steps);  // a drawdown
+        } else if (kind < 0.35) {
+            to(deepest, steps);  // back exactly to D
+        } else if (kind < 0.5) {
+            to(std::min(peak, deepest * (1.0 + 0.3 * unit(random))), steps);  // a new peak
+        } else if (kind < 0.65) {
+            to(d, steps);  // a hold
+        } else if (kind < 0.8) {  // a jump
+            d = deepest * (0.5 + 0.5 * unit(random));
+            point();
+            to(d, steps);
+        } else {  // wiggles below D
+            const double size = deepest * std::pow(10.0, -6.0 + 4.0 * unit(random));
+            for (std::size_t i = 0; i < steps; ++i) to(std::min(deepest, d + size * (unit(random) - 0.5)), 1);
+        }
+    }
+    return history;
+}
+
+rheology::Rheology adversarial_material(std::mt19937& random) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<rheology::RelaxationTerm> terms;
+    const int count = 1 + static_cast<int>(6 * unit(random));
+    double transient = 0.0;
+    for (int k = 0; k < count; ++k) {
+        terms.push_back({1e5 * std::pow(10.0, unit(random)), 1e-3 * std::pow(10.0, -2.0 + 6.0 * unit(random))});
+        transient += terms.back().modulus;
+    }
+    return rheology::Rheology::prony(transient * std::pow(10.0, -3.0 * unit(random)), terms);
+}
+
+// Forces at the points, except the first of two points at one time (the drivers record the state after a jump).
+void expect_same_forces(const History& history, const std::vector<double>& band, const std::vector<double>& expected,
+                        double tolerance, int trial) {
+    const double scale = largest(expected);
+    for (std::size_t i = 0; i < history.time.size(); ++i) {
+        if (i + 1 < history.time.size() && history.time[i + 1] == history.time[i]) continue;
+        ASSERT_NEAR(band[i], expected[i], tolerance * scale) << "trial " << trial << ", t = " << history.time[i];
+    }
+}
+
+TEST(BandModel, AdversarialHistoriesAgreeWithTheElementModel) {
+    std::mt19937 random(2511);
+    for (int trial = 0; trial < 60; ++trial) {
+        const auto material = adversarial_material(random);
+        const auto indenter = indenter_of(trial);
+        const History history = adversarial(random, 1e-5);
+        const std::size_t elements = 2000;
+        const auto [expected, spacing] = element_forces(material, indenter, history, elements);
+        const auto band = band_forces(material, *indenter, spacing, elements, history.time, history.depth);
+        ASSERT_TRUE(band.has_value()) << "trial " << trial;
+        expect_same_forces(history, band->force, expected, 1e-9, trial);
+    }
+}
+
+// A fast unloading by delta (one step of tau/20) after a hold of 14 tau at the peak D (the memory relaxed to 1e-6):
+// an element stays in contact while G_inf (D - delta - g) - (G(0) - G_inf) delta >= 0 nearly, i.e. g <= L =
+// D - (G(0)/G_inf) delta (band_model.hpp); those beyond leave contact in the step. G(0)/G_inf = 11: a band rule with
+// G(0)/G_inf - 1 = 10 keeps elements folded that the element model lets go.
+TEST(BandModel, UnloadingAfterARelaxedHoldReleasesExactlyTheElementsBeyondTheBand) {
+    const auto material = rheology::Rheology::prony(1e5, {{1e6, 0.02}});
+    const std::shared_ptr<const profile::Profile> sphere = profile::make_sphere(1e-3);
+    History history;
+    const double peak = 1e-5;
+    for (int i = 0; i <= 400; ++i) {
+        history.time.push_back(1e-3 * i);
+        history.depth.push_back(i == 0 ? -1e-7 : i <= 20 ? peak * i / 20.0 : i <= 300 ? peak : 0.95 * peak);
+    }
+    const std::size_t elements = 2000;
+    const auto [expected, spacing] = element_forces(material, sphere, history, elements);
+    const auto band = band_forces(material, *sphere, spacing, elements, history.time, history.depth);
+    ASSERT_TRUE(band.has_value());
+    expect_same_forces(history, band->force, expected, 1e-9, 0);
+}
+
+// Why no history makes the band model's guard h_k >= d - D matter (nor its "in contact" and "sigma >= 0"): they
+// follow from g <= L. Every update of the foundation (contact step, free step, and both parts of a split one) is the
+// exact memory of a w linear over the (sub)step, so h_k(t) = int exp(-(t - s)/tau_k) w'(s) ds >= w(t) - max_s<=t w(s)
+// (integration by parts, any history); a free element's w never grows (sigma = 0 after a history of sigma >= 0 and a
+// creep compliance with a decreasing slope, Prony moduli >= 0), so max w <= D - g, and in contact h_k >= d - D.
+// A free element with g <= L would then carry sigma = sum_k G_k (h_k - d + D) + G_inf (L - g) >= 0 at w = d - g:
+// it would touch. Here the drivers' Foundation (every element stepped) is checked for both on the adversarial
+// histories: after every step, w <= D - g for each element touched, and h_k >= d - D for each one in contact.
+TEST(BandModel, TheElementModelNeverLetsASurfaceSinkBelowTheDeepestIndentation) {
+    std::mt19937 random(2512);
+    for (int trial = 0; trial < 40; ++trial) {
+        const auto material = adversarial_material(random);
+        const auto indenter = indenter_of(trial);
+        const History history = adversarial(random, 1e-5);
+        double deepest = 0.0;
+        for (double d : history.depth) deepest = std::max(deepest, d);
+        const std::size_t elements = 400;
+        const double spacing = 1.2 * indenter->contact_radius(deepest) / static_cast<double>(elements);
+        foundation::Foundation model(material, *indenter, spacing, elements);
+        const std::size_t branches = material.terms().size();
+        std::vector<double> state(foundation::Foundation::state_size(elements, branches));
+        foundation::StepCoefficients coefficients;
+        double peak = 0.0;
+        const auto check = [&](double start, double end, double time_step) {
+            foundation::fill_step_coefficients(material, time_step, coefficients);
+            model.begin_step(coefficients);
+            model.advance(start, end);
+            peak = std::max(peak, end);
+            model.save_state(state);
+            const double* w = state.data() + 3;
+            const double* contact = w + 2 * elements;
+            const double* h = w + 3 * elements;
+            const double round_off = 1e-12 * deepest;
+            for (std::size_t i = 0; i < model.touched(); ++i) {
+                const double g = indenter->equivalent((static_cast<double>(i) + 0.5) * spacing);
+                ASSERT_LE(w[i], peak - g + round_off) << "trial " << trial << ", element " << i;
+                for (std::size_t k = 0; k < branches && contact[i] != 0.0; ++k) {
+                    ASSERT_GE(h[k * elements + i], end - peak - round_off) << "trial " << trial << ", element " << i;
+                }
+            }
+        };
+        if (history.depth.front() > 0.0) check(0.0, history.depth.front(), 0.0);
+        for (std::size_t i = 1; i < history.time.size(); ++i) {
+            check(history.depth[i - 1], history.depth[i], history.time[i] - history.time[i - 1]);
+            if (HasFatalFailure()) return;
+        }
+    }
+}
+
+// A tabulated profile ends at its last radius r_n (g is +infinity beyond, not a rigid wall): a depth beyond g(r_n)
+// on a foundation of half-width r_n is the drivers' error (key indenter.r), so the band model must hand the run back
+// (nullopt) rather than sum a truncated indenter; below it both agree.
+TEST(BandModel, HandsADepthBeyondATabulatedProfileBackToTheDrivers) {
+    const auto material = rheology::Rheology::prony(1e5, {{3e5, 0.05}});
+    std::vector<double> r, f;
+    for (int i = 0; i <= 20; ++i) {
+        r.push_back(1e-6 * i);
+        f.push_back(r.back() * r.back() / 2e-3);  // a sphere of radius 1 mm, to r = 20 um
+    }
+    const std::shared_ptr<const profile::Profile> table = profile::make_table(r, f);
+    const double edge = table->equivalent(r.back());
+    const std::size_t elements = 500;
+    const double spacing = r.back() / static_cast<double>(elements);
+    const auto history = [&](double peak) {
+        History ramp;
+        for (int i = 0; i <= 100; ++i) {
+            ramp.time.push_back(1e-3 * i);
+            ramp.depth.push_back(peak * (static_cast<double>(i) - 1.0) / 99.0);
+        }
+        return ramp;
+    };
+    const History inside = history(0.99 * edge);
+    const auto [expected, inside_spacing] = element_forces(material, table, inside, elements);
+    const auto band = band_forces(material, *table, inside_spacing, elements, inside.time, inside.depth);
+    ASSERT_TRUE(band.has_value());
+    expect_same_forces(inside, band->force, expected, 1e-9, 0);
+    const History beyond = history(1.01 * edge);
+    EXPECT_FALSE(band_forces(material, *table, spacing, elements, beyond.time, beyond.depth).has_value());
+    foundation::Foundation drivers_model(material, *table, spacing, elements);
+    foundation::StepCoefficients coefficients;
+    foundation::fill_step_coefficients(material, 1e-3, coefficients);
+    drivers_model.begin_step(coefficients);
+    EXPECT_THROW(drivers_model.advance(0.0, 1.01 * edge), InvalidInput);
 }
 
 }  // namespace
