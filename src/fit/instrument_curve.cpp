@@ -123,7 +123,12 @@ Curve load_instrument_curve(const CurveSource& source) {
         raw = file.read(instrument_curve_index(source, file));
     } catch (const InvalidInput& error) {
         if (error.key() == "curve") throw;
-        throw InvalidInput("file", error.key() + ": " + error.value(), error.rule());
+        const std::string ending = source.file.extension().string();
+        const bool may_be_columns = ending == ".csv" || ending == ".txt";
+        throw InvalidInput("file", error.key() + ": " + error.value(),
+                           error.rule() + (may_be_columns ? " (no column is named, so it was read as an instrument "
+                                                            "file; a CSV of columns needs time and depth or piezo)"
+                                                          : ""));
     }
     return instrument_fit_curve(raw, source);
 }

@@ -1,0 +1,88 @@
+"""`[[fit.data]] file = "x.jpk-force"`: a fit case on an instrument file (docs/case-format.md, "Instrument
+files"), checked against the same record's CSV export (examples/data/jpk_sr_cell1-0001.csv, converted from the same
+member cell1-0001.jpk-force of afmformats' 10.1002_btm2.10294_fig5d-cell1.zip by a script of its own, not by mdr:
+examples/data/README.md and the .json sidecar)."""
+
+from __future__ import annotations
+
+import json
+import math
+import pathlib
+
+import pytest
+
+from test_bad_input import assert_bad_input
+
+REPO_ROOT = pathlib.Path(__file__).resolve().parents[2]
+VENDOR = REPO_ROOT / "examples" / "data" / "vendor"
+MAP = VENDOR / "fmt-jpk-fd_map-data-reference-points.jpk-force-map"
+
+MODEL = """
+[material]
+model = "standard"
+G_inf = 300.0
+G1 = 300.0
+tau1 = 1.0
+
+[indenter]
+shape = "cone"
+half_angle_deg = 35.0
+
+[fit]
+free = ["material.G_inf", "material.G1", "material.tau1"]
+bounds = { "material.tau1" = [1.0e-3, 300.0] }
+"""
+
+CSV_DATA = f"""
+[[fit.data]]
+file = "{REPO_ROOT / 'examples' / 'data' / 'jpk_sr_cell1-0001.csv'}"
+time = "t_s"
+piezo = "z_measured_m"
+deflection = "deflection_m"
+spring_constant = 1.0677
+segment_column = "segment_name"
+segments = ["pause", "extend"]
+"""
+
+INSTRUMENT_DATA = f"""
+[[fit.data]]
+file = "{VENDOR / 'cell1-0001.jpk-force'}"
+segments = ["pause", "extend"]
+"""
+
+
+def fit(run_mdr, workdir, text, name):
+    (workdir / f"{name}.toml").write_text(text)
+    result = run_mdr("fit", f"{name}.toml", "--out", name, timeout=300)
+    assert result.returncode == 0, result.stderr
+    return json.loads((workdir / name / "fit.json").read_text())
+
+
+def test_a_jpk_force_file_fits_as_its_csv_export(run_mdr, workdir):
+    from_file = fit(run_mdr, workdir, MODEL + INSTRUMENT_DATA, "instrument")
+    from_csv = fit(run_mdr, workdir, MODEL + CSV_DATA, "csv")
+    # The CSV holds 10 significant digits of the same samples (and k = 1.0677 as the file states it).
+    for key, value in from_csv["parameters"].items():
+        assert math.isclose(from_file["parameters"][key], value, rel_tol=1e-6), key
+    assert from_file["curves"][0]["name"] == "cell1-0001"
+
+
+@pytest.mark.parametrize("data, fragments", [
+    (f'file = "{MAP}"\ncurve = 3\n', ["fit.data[0].curve = 3", "must be < 3"]),
+    (f'file = "{MAP}"\n', ["fit.data[0].curve", "is required", "map of 3 curves"]),
+    (f'file = "{VENDOR / "cell1-0001.jpk-force"}"\nsegments = ["hold"]\n',
+     ["fit.data[0].segments = \"hold\"", "pause, extend, pause, retract"]),
+    (f'file = "{VENDOR / "cell1-0001.jpk-force"}"\nspring_constant = 1.0\n',
+     ["fit.data[0].spring_constant", "stated by the instrument file"]),
+    (f'file = "{VENDOR / "cell1-0001.jpk-force"}"\nunits = {{ length = "nm" }}\n',
+     ["fit.data[0].units", "stated by the instrument file"]),
+    (f'file = "{VENDOR / "fmt-afm-workshop-fd_single_2018-08-01_13.06.09.csv"}"\n',
+     ["fit.data[0].file"]),
+    (f'file = "{REPO_ROOT / "examples" / "data" / "jpk_sr_cell1-0001.csv"}"\ntime = "t_s"\ncurve = 0\n',
+     ["fit.data[0].curve", "instrument file"]),
+])
+def test_instrument_data_refused_with_its_key(run_mdr, workdir, data, fragments):
+    (workdir / "case.toml").write_text(MODEL + "\n[[fit.data]]\n" + data)
+    result = run_mdr("fit", "case.toml", "--out", "out")
+    assert_bad_input(result, *fragments)
+    assert not (workdir / "out").exists()
