@@ -64,7 +64,7 @@ void check_instrument_source(const CurveSource& source) {
     }
 }
 
-Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& source) {
+Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& source, double* tip_height_zero) {
     check_instrument_source(source);
     const std::string file_name = source.file.filename().string();
     if (raw.time.empty()) {
@@ -82,6 +82,7 @@ Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& sour
     }
     // The CSV path's rule for raw AFM columns (load_curve): force = k x deflection, depth from the tip height.
     DepthAndForce converted = afm_depth_and_force(height, deflection, raw.spring_constant);
+    if (tip_height_zero && !height.empty()) *tip_height_zero = (height[0] + deflection[0]) * source.length_unit;
     for (double& depth : converted.depth) depth *= source.length_unit;
     for (double& force : converted.force) force *= source.force_unit;
     std::string origin = file_name;

@@ -86,3 +86,67 @@ def test_instrument_data_refused_with_its_key(run_mdr, workdir, data, fragments)
     result = run_mdr("fit", "case.toml", "--out", "out")
     assert_bad_input(result, *fragments)
     assert not (workdir / "out").exists()
+
+
+MAP_CASE = """
+[material]
+model = "elastic"
+G = 1000.0
+
+[indenter]
+shape = "sphere"
+R = 5.0e-6
+
+[fit]
+free = ["material.G"]
+
+[[fit.data]]
+file = "map.jpk-force-map"   # replaced by --map
+segments = ["extend"]
+"""
+
+
+def read_table(path):
+    import csv
+    with open(path, newline="") as table:
+        return list(csv.DictReader(table))
+
+
+def test_a_map_gives_one_row_per_pixel_and_its_grid(run_mdr, workdir):
+    (workdir / "case.toml").write_text(MAP_CASE.replace('"SI"', '"SI"'))
+    result = run_mdr("fit", "case.toml", "--map", MAP, "--out", "out", timeout=300)
+    assert result.returncode in (0, 1), result.stderr
+    rows = read_table(workdir / "out" / "map.csv")
+    # The archive holds the pixels index/109, 129 and 416 of the 25 x 25 grid (position-index); 129 lies in an odd
+    # row of the meander, so its column counts from the other side: 24 - 129 % 25 = 20.
+    assert [(r["index"], r["column"], r["row"]) for r in rows] == [("0", "9", "4"), ("1", "20", "5"),
+                                                                   ("2", "16", "16")]
+    assert float(rows[0]["x"]) == -0.0012197656250000001  # index/109/header.properties, position.x (m)
+    for row in rows:
+        assert row["status"].startswith("converged"), row
+        assert float(row["material.G"]) > 0 and float(row["material.G_stderr"]) > 0
+        assert math.isclose(float(row["E_material.G"]), 3.0 * float(row["material.G"]), rel_tol=1e-12)  # nu = 0.5
+        assert math.isfinite(float(row["contact_height"]))
+        assert row["failure"] == ""
+    summary = json.loads((workdir / "out" / "map.json").read_text())
+    assert (summary["columns"], summary["rows"], summary["size"]) == (25, 25, [5e-4, 5e-4])  # grid.*length
+    assert summary["pixel_size"] == [2e-5, 2e-5]
+
+
+def test_a_pixel_without_its_data_is_a_failed_row_not_an_abort(run_mdr, workdir):
+    broken = REPO_ROOT / "tests" / "data" / "instrument" / "missing-channel.jpk-force-map"
+    (workdir / "case.toml").write_text(MAP_CASE)
+    result = run_mdr("fit", "case.toml", "--map", broken, "--out", "out", timeout=300)
+    assert result.returncode == 1, result.stderr  # written, but not every pixel converged
+    rows = read_table(workdir / "out" / "map.csv")
+    assert [r["status"] for r in rows][1] == "failed"
+    assert "index/129/segments/1/channels/vDeflection.dat" in rows[1]["failure"]
+    assert rows[0]["status"].startswith("converged") and rows[2]["status"].startswith("converged")
+
+
+def test_a_map_case_with_columns_is_refused(run_mdr, workdir):
+    (workdir / "case.toml").write_text(MAP_CASE.replace('segments = ["extend"]', 'time = "t"\ndepth = "d"\n'
+                                                        'force = "f"'))
+    result = run_mdr("fit", "case.toml", "--map", MAP, "--out", "out")
+    assert_bad_input(result, "--map", "must name no column")
+    assert not (workdir / "out").exists()

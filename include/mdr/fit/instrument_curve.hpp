@@ -16,7 +16,10 @@ namespace mdr::fit {
 /// file's height, deflection and spring constant, converted from SI to the case's units by `source.time_unit`,
 /// `length_unit` and `force_unit`; then checked_curve and select_rows as load_curve. Throws mdr::InvalidInput with the
 /// key `segments` for a segment the curve lacks (listing those it has), `file` for a file that records no time.
-Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& source);
+/// `tip_height_zero`, when given, receives the tip height (height + deflection) of the first kept row in the case's
+/// length unit: the height where the curve's depth is 0, so that a depth d lies at the height zero - d.
+Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& source,
+                           double* tip_height_zero = nullptr);
 
 /// Refuses (mdr::InvalidInput, keys of a `[[fit.data]]` table) what an instrument source must not have: a column
 /// name, a spring constant, a segment column, a segment listed twice.
