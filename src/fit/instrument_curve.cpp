@@ -15,7 +15,10 @@ std::string in_quotes(const std::string& text) { return "\"" + message_text(text
 
 std::string joined(const std::vector<std::string>& names) {
     std::string text;
-    for (const auto& name : names) text += (text.empty() ? "" : ", ") + message_text(name);
+    for (const auto& name : names) {
+        if (!text.empty()) text += ", ";
+        text += message_text(name);
+    }
     return text;
 }
 
@@ -89,7 +92,10 @@ Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& sour
     if (source.curve) origin += ", curve " + std::to_string(*source.curve);
     if (!source.segments.empty()) origin += ", segments " + joined(source.segments);
     std::string name = source.name;
-    if (name.empty()) name = source.file.stem().string() + (source.curve ? "#" + std::to_string(*source.curve) : "");
+    if (name.empty()) {
+        name = source.file.stem().string();
+        if (source.curve) name += '#' + std::to_string(*source.curve);
+    }
     Curve curve = checked_curve(std::move(name), std::move(time), std::move(converted.depth),
                                 std::move(converted.force), origin, [&](std::size_t i) {
                                     return "in " + origin + ", sample " + std::to_string(samples[i]);
