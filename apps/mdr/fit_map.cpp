@@ -28,6 +28,7 @@ void write_summary(const std::filesystem::path& path, const fit::MapLayout& layo
         {"source", source.string()},
         {"units", fit_case.units},
         {"length_unit", std::string(system.length)},
+        {"length_size", system.length_size},
         {"columns", layout.columns},
         {"rows", layout.rows},
         {"size", {layout.size_x, layout.size_y}},

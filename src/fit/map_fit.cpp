@@ -50,6 +50,7 @@ PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path&
     pixel.contact_height = std::numeric_limits<double>::quiet_NaN();
     try {
         const instrument::Curve raw = file.read(index);
+        pixel.placed = true;
         if (raw.in_map) {
             pixel.x = raw.position.x / system.length_size;
             pixel.y = raw.position.y / system.length_size;
@@ -89,9 +90,12 @@ using Row = std::vector<std::pair<std::string, std::string>>;
 std::string number(double value) { return fmt::format("{:.17g}", value); }
 
 Row row_of(const PixelFit& pixel) {
-    Row row{{"index", std::to_string(pixel.index)}, {"column", std::to_string(pixel.column)},
-            {"row", std::to_string(pixel.row)},     {"x", number(pixel.x)},
-            {"y", number(pixel.y)}};
+    const auto placed = [&](std::string text) { return pixel.placed ? text : std::string(); };
+    Row row{{"index", std::to_string(pixel.index)},
+            {"column", placed(std::to_string(pixel.column))},
+            {"row", placed(std::to_string(pixel.row))},
+            {"x", placed(number(pixel.x))},
+            {"y", placed(number(pixel.y))}};
     if (pixel.result) {
         const FitResult& result = *pixel.result;
         for (std::size_t j = 0; j < result.names.size(); ++j) {

@@ -4,6 +4,7 @@ the same columns (both run mdr/fit/map_fit.hpp); a failed pixel is a row with it
 from __future__ import annotations
 
 import csv
+import os
 import math
 import subprocess
 
@@ -53,3 +54,25 @@ def test_a_bad_case_is_refused_naming_the_key():
                                                               "force": "f"}]})
     with pytest.raises(ValueError, match="--map"):
         mdr.fit_map(case, MAP)
+
+
+def test_heat_maps_on_the_physical_grid_with_units_and_failed_pixels(mdr_binary, tmp_path):
+    from mdr.map_figures import map_heat_maps
+
+    (tmp_path / "case.toml").write_text(mdr._toml.to_toml(CASE))
+    subprocess.run([mdr_binary, "fit", "case.toml", "--map", BROKEN, "--out", "out"], cwd=tmp_path,
+                   capture_output=True, timeout=300)
+    figures = dict(map_heat_maps(str(tmp_path / "out")))
+    assert {"material.G", "E_material.G", "contact_height", "residual_to_noise"} <= set(figures)
+    axes, colour_bar = figures["material.G"].axes
+    assert colour_bar.get_ylabel() == "material.G [Pa]"
+    assert figures["contact_height"].axes[1].get_ylabel() == "contact_height [m]"
+    assert axes.get_xlabel() == "x [µm]"
+    # The 25 x 25 grid of 20 µm pixels: pixel (column 9, row 4) at x = -1219.77 µm (its header) puts the grid's
+    # low-x edge at -1219.77 - 9.5 x 20 µm.
+    left, right, _, _ = axes.images[0].get_extent()
+    assert math.isclose(left, -1219.765625 - 190.0) and math.isclose(right - left, 500.0)
+    assert "1 failed" in axes.get_title()  # its curve could not be read: no place, no cross
+    assert np.count_nonzero(np.isfinite(axes.images[0].get_array().filled(np.nan))) == 2
+    written = mdr.plot.plot_directory(str(tmp_path / "out"))
+    assert sorted(os.path.basename(p) for p in written) == sorted(f"map_{name}.png" for name in figures)

@@ -22,6 +22,7 @@ struct PixelFit {
     double y = 0.0;                   ///< see x
     std::size_t column = 0;           ///< pixel along x, 0 at the grid's low-x edge
     std::size_t row = 0;              ///< pixel along y, 0 at the grid's low-y edge
+    bool placed = false;              ///< x, y, column and row are known (false when the curve could not be read)
     std::optional<FitResult> result;  ///< the fit (also one that did not converge); empty when the pixel failed
     /// Tip height at the fitted contact point, in the case's length unit (the topography; larger = farther from
     /// the sample); NaN when the pixel failed.
@@ -52,7 +53,7 @@ PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path&
 /// The raster of `file` (its first curve's grid) in the case's length unit.
 MapLayout map_layout(instrument::CurveFile& file, const io::FitCase& fit_case);
 
-/// Writes map.csv: one row per pixel with `index`, `column`, `row`, `x`, `y`, every free key and `KEY_stderr`,
+/// Writes map.csv: one row per pixel with `index`, `column`, `row`, `x`, `y` (empty when not `placed`), every free key and `KEY_stderr`,
 /// `E_KEY` and `E_KEY_stderr` for every Young modulus, `contact_height`, `residual_to_noise`, `noise`, `status`,
 /// `flags` (joined by "; ") and `failure`; the columns are the union of the rows' keys in first-seen order, a
 /// value a row lacks is empty. Fields quoted by RFC 4180 (io::csv_field); numbers with 17 significant digits.
