@@ -50,7 +50,7 @@ void read_instrument_keys(TableReader& table, const UnitSystem& system, fit::Cur
         throw InvalidInput(table.key_path("segment_column"), table.text("segment_column"),
                            "is for a CSV file: an instrument file names its segments itself (segments = [\"extend\"])");
     }
-    source.curve = table.optional_count("curve");
+    source.curve = table.optional_count("curve", 0);  // the file's first curve is 0
     source.time_unit = 1.0 / system.time_size;
     source.length_unit = 1.0 / system.length_size;
     source.force_unit = 1.0 / system.force_size;

@@ -70,6 +70,7 @@ def test_a_jpk_force_file_fits_as_its_csv_export(run_mdr, workdir):
 @pytest.mark.parametrize("data, fragments", [
     (f'file = "{MAP}"\ncurve = 3\n', ["fit.data[0].curve = 3", "must be < 3"]),
     (f'file = "{MAP}"\n', ["fit.data[0].curve", "is required", "map of 3 curves"]),
+    (f'file = "{MAP}"\ncurve = -1\n', ["fit.data[0].curve = -1", "must be an integer >= 0"]),
     (f'file = "{VENDOR / "cell1-0001.jpk-force"}"\nsegments = ["hold"]\n',
      ["fit.data[0].segments = \"hold\"", "pause, extend, pause, retract"]),
     (f'file = "{VENDOR / "cell1-0001.jpk-force"}"\nspring_constant = 1.0\n',
