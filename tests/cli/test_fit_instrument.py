@@ -151,3 +151,24 @@ def test_a_map_case_with_columns_is_refused(run_mdr, workdir):
     result = run_mdr("fit", "case.toml", "--map", MAP, "--out", "out")
     assert_bad_input(result, "--map", "must name no column")
     assert not (workdir / "out").exists()
+
+
+def test_ctrl_c_stops_a_map_and_leaves_nothing(mdr_binary, workdir):
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    # 64 copies of the vendor map's pixel 109 (scripts/make_instrument_test_files.py), ~0.2 s of fitting each.
+    subprocess.run([sys.executable, REPO_ROOT / "scripts" / "make_instrument_test_files.py", "map", "64",
+                    workdir / "big.jpk-force-map"], check=True, capture_output=True, timeout=120)
+    (workdir / "case.toml").write_text(MAP_CASE)
+    process = subprocess.Popen([mdr_binary, "fit", "case.toml", "--map", "big.jpk-force-map", "--out", "out"],
+                               cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(2.0)
+    assert process.poll() is None, "the map ended before it could be interrupted"
+    process.send_signal(signal.SIGINT)
+    stdout, stderr = process.communicate(timeout=60)
+    assert process.returncode == 128 + signal.SIGINT
+    assert stderr.replace("\r", "\n").splitlines()[-1] == "mdr: interrupted; no result was written"
+    assert not (workdir / "out").exists()
