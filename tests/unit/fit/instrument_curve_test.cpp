@@ -32,16 +32,19 @@ std::string key_of(const CurveSource& source) {
     return "(accepted)";
 }
 
-TEST(InstrumentCurve, RowsEqualTheCsvExportOfTheSameRecord) {
+class InstrumentCurveRecord : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(InstrumentCurveRecord, RowsEqualTheCsvExportOfTheSameRecord) {
+    const std::string record = GetParam();
     CurveSource csv;
-    csv.file = fs::path(MDR_MEASURED_DATA) / "jpk_sr_cell1-0001.csv";
+    csv.file = fs::path(MDR_MEASURED_DATA) / ("jpk_sr_cell1-" + record + ".csv");
     csv.time_column = "t_s";
     csv.piezo_column = "z_measured_m";
     csv.deflection_column = "deflection_m";
     csv.spring_constant = 1.0677;  // the header's value, as the sidecar states it
     csv.segment_column = "segment_name";
     csv.segments = {"pause", "extend"};
-    CurveSource file = instrument_source("cell1-0001.jpk-force");
+    CurveSource file = instrument_source("cell1-" + record + ".jpk-force");
     file.segments = {"pause", "extend"};
     const auto expected = mdr::fit::load_curve(csv);
     const auto actual = mdr::fit::load_curve(file);
@@ -52,8 +55,12 @@ TEST(InstrumentCurve, RowsEqualTheCsvExportOfTheSameRecord) {
         ASSERT_NEAR(actual.depth[i], expected.depth[i], 1e-12) << "row " << i;
         ASSERT_NEAR(actual.force[i], expected.force[i], 1e-7 * std::abs(expected.force[i]) + 1e-18) << "row " << i;
     }
-    EXPECT_EQ(actual.name, "cell1-0001");
+    EXPECT_EQ(actual.name, "cell1-" + record);
 }
+
+// The sidecars jpk_sr_cell1-000N.json name the member cell1-000N.jpk-force of the same zip and commit as
+// examples/data/vendor/README.md names for the vendor files.
+INSTANTIATE_TEST_SUITE_P(InstrumentCurve, InstrumentCurveRecord, ::testing::Values("0001", "0002", "0003"));
 
 TEST(InstrumentCurve, TheCaseUnitsScaleTheSiValues) {
     CurveSource si = instrument_source("cell1-0001.jpk-force");
