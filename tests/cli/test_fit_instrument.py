@@ -172,3 +172,20 @@ def test_ctrl_c_stops_a_map_and_leaves_nothing(mdr_binary, workdir):
     assert process.returncode == 128 + signal.SIGINT
     assert stderr.replace("\r", "\n").splitlines()[-1] == "mdr: interrupted; no result was written"
     assert not (workdir / "out").exists()
+
+
+def test_a_case_in_micrometres_gets_the_files_si_values_converted(run_mdr, workdir):
+    # um-nN-s: lengths in µm, forces in nN, moduli in kPa (nN/µm²). The same map fitted in SI and there must give
+    # the same material and positions, scaled by the units alone.
+    (workdir / "si.toml").write_text(MAP_CASE)
+    micro = MAP_CASE.replace("G = 1000.0", "G = 1.0").replace("R = 5.0e-6", "R = 5.0")
+    (workdir / "um.toml").write_text('units = "um-nN-s"\n' + micro)
+    for name in ("si", "um"):
+        result = run_mdr("fit", f"{name}.toml", "--map", MAP, "--out", name, timeout=300)
+        assert result.returncode == 0, result.stderr
+    si, um = read_table(workdir / "si" / "map.csv"), read_table(workdir / "um" / "map.csv")
+    for a, b in zip(si, um):
+        assert math.isclose(float(b["x"]), float(a["x"]) * 1e6, rel_tol=1e-12)
+        assert math.isclose(float(b["contact_height"]), float(a["contact_height"]) * 1e6, rel_tol=1e-6)
+        assert math.isclose(float(b["material.G"]), float(a["material.G"]) * 1e-3, rel_tol=1e-5)
+    assert json.loads((workdir / "um" / "map.json").read_text())["size"] == pytest.approx([500.0, 500.0], rel=1e-12)
