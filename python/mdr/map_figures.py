@@ -12,8 +12,8 @@ import numpy as np
 
 from . import _mdr
 
-#: The columns of map.csv that are not drawn: the pixel's place, its text and the standard errors (drawn beside
-#: their value would double the figures; they are in map.csv).
+#: The columns of map.csv that are not drawn: the pixel's place and its text. The ``_stderr`` columns are not drawn
+#: either (beside their values they would double the figures; they are in map.csv).
 NOT_DRAWN = ("index", "column", "row", "x", "y", "status", "flags", "failure")
 
 

@@ -109,6 +109,7 @@ inline constexpr std::size_t minimum_curve_rows = 10;
 /// constant > 0), a force column beside the AFM columns, or segments that select no row. The keys of its errors
 /// are those of a `[[fit.data]]` table (`time`, `force`, `segments`, ...): a caller prefixes them
 /// (InvalidInput::with_prefix). Only the used columns of the kept rows are read: other columns may hold anything.
+/// An instrument source (CurveSource::instrument) is read by load_instrument_curve (mdr/fit/instrument_curve.hpp).
 Curve load_curve(const CurveSource& source);
 
 /// select_rows: a retract whose force falls more than this many noise deviations below the baseline is adhesive.

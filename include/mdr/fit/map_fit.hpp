@@ -32,10 +32,10 @@ struct PixelFit {
 
 /// The map's raster in the case's length unit: pixels and edge lengths (all 0 for a file that is not a map).
 struct MapLayout {
-    std::size_t columns = 0;
-    std::size_t rows = 0;
-    double size_x = 0.0;
-    double size_y = 0.0;
+    std::size_t columns = 0;  ///< pixels along x
+    std::size_t rows = 0;     ///< pixels along y
+    double size_x = 0.0;      ///< edge length along x
+    double size_y = 0.0;      ///< edge length along y
 };
 
 /// Refuses (mdr::InvalidInput, key `--map`) a case that cannot fit a map: it must have exactly one `[[fit.data]]`
