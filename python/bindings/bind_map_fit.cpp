@@ -14,6 +14,7 @@
 #include "mdr/error.hpp"
 #include "mdr/fit/map_fit.hpp"
 #include "mdr/instrument/read_curves.hpp"
+#include "mdr/io/units.hpp"
 
 namespace py = pybind11;
 
@@ -21,7 +22,8 @@ namespace mdr::python {
 namespace {
 
 // Fits every curve of `map` with the fit case in `toml_text` and writes map.csv to `table`; returns the grid
-// (columns, rows, size_x, size_y in the case's length unit). `progress(done, total)` after each pixel, if given.
+// (columns, rows, size_x, size_y in the case's length unit) and the case's units (system name, length unit and its
+// size in m). `progress(done, total)` after each pixel, if given.
 py::tuple fit_map_file(const std::string& toml_text, const std::string& source, const std::string& directory,
                        const std::string& map, const std::string& table, const py::object& progress) {
     auto fit_case = io::parse_fit_case(toml_text, source, directory);
@@ -48,7 +50,9 @@ py::tuple fit_map_file(const std::string& toml_text, const std::string& source, 
         if (!progress.is_none()) progress(i + 1, file.size());
     }
     fit::write_map_table(table, pixels);
-    return py::make_tuple(layout.columns, layout.rows, layout.size_x, layout.size_y);
+    const io::UnitSystem& system = io::unit_system(fit_case.units);
+    return py::make_tuple(layout.columns, layout.rows, layout.size_x, layout.size_y, fit_case.units,
+                          std::string(system.length), system.length_size);
 }
 
 }  // namespace

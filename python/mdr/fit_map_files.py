@@ -4,6 +4,7 @@ C++ as ``mdr fit CASE --map FILE --out DIR`` (mdr/fit/map_fit.hpp) and gives the
 from __future__ import annotations
 
 import csv
+import json
 import os
 import pathlib
 import tempfile
@@ -39,6 +40,21 @@ class MapTable:
     columns: dict[str, np.ndarray]
     grid: tuple[int, int]
     size: tuple[float, float]
+    units: str = "SI"
+
+
+def write_summary(path: str | os.PathLike, table: MapTable, source: str, length_unit: str,
+                  length_size: float) -> None:
+    """Writes map.json as ``mdr fit --map`` does: the grid, its size and pixel size in the case's length unit."""
+    columns, rows = table.grid
+    failed = int(np.count_nonzero(table.columns["status"] == "failed")) if "status" in table.columns else 0
+    summary = {"source": source, "units": table.units, "length_unit": length_unit, "length_size": length_size,
+               "columns": columns, "rows": rows, "size": list(table.size),
+               "pixel_size": [table.size[0] / columns if columns else 0.0, table.size[1] / rows if rows else 0.0],
+               "pixels": len(next(iter(table.columns.values()), [])), "failed": failed}
+    with open(path, "w", encoding="utf-8") as handle:
+        json.dump(summary, handle, indent=1)
+        handle.write("\n")
 
 
 def _read_table(path: pathlib.Path) -> dict[str, np.ndarray]:
@@ -56,13 +72,15 @@ def _read_table(path: pathlib.Path) -> dict[str, np.ndarray]:
 
 
 def fit_map_file(case: str | os.PathLike | Mapping[str, Any], path: str | os.PathLike, *,
-                 out: str | os.PathLike | None = None,
+                 out: str | os.PathLike | None = None, figures: bool = True,
                  progress: Callable[[int, int], None] | None = None) -> MapTable:
     """Fits every curve of the instrument file `path` alone with the fit case `case`, as ``mdr fit CASE --map``.
 
     The case's one ``[[fit.data]]`` table names no column (an instrument file's: ``segments``, ``until``,
     ``window``); its ``file`` and ``curve`` are replaced by each curve of `path`. A pixel that fails is a row with
-    ``status`` "failed" and its ``failure``; the map goes on. With `out` (a file path), map.csv is written there.
+    ``status`` "failed" and its ``failure``; the map goes on. With `out` (a directory, created if need be),
+    map.csv and map.json are written there as by the command line, and with `figures` the heat maps
+    (``map_KEY.png``, mdr.map_figures).
 
     Raises
     ------
@@ -77,7 +95,16 @@ def fit_map_file(case: str | os.PathLike | Mapping[str, Any], path: str | os.Pat
             text = handle.read()
         directory = os.path.dirname(os.path.abspath(source))
     with tempfile.TemporaryDirectory() as scratch:
-        table = pathlib.Path(out) if out is not None else pathlib.Path(scratch) / "map.csv"
-        columns, rows, size_x, size_y = _mdr._fit_map_file(text, source, directory, os.path.abspath(path),
-                                                           os.fspath(table), progress)
-        return MapTable(_read_table(table), (columns, rows), (size_x, size_y))
+        folder = pathlib.Path(out) if out is not None else pathlib.Path(scratch)
+        folder.mkdir(parents=True, exist_ok=True)
+        map_file = os.path.abspath(path)
+        columns, rows, size_x, size_y, units, length_unit, length_size = _mdr._fit_map_file(
+            text, source, directory, map_file, os.fspath(folder / "map.csv"), progress)
+        table = MapTable(_read_table(folder / "map.csv"), (columns, rows), (size_x, size_y), units)
+        if out is not None:
+            write_summary(folder / "map.json", table, map_file, length_unit, length_size)
+            if figures:
+                from .map_figures import map_heat_maps
+                for name, figure in map_heat_maps(os.fspath(folder)):
+                    figure.savefig(folder / f"map_{name}.png", dpi=120)
+        return table

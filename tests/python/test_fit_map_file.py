@@ -4,6 +4,7 @@ the same columns (both run mdr/fit/map_fit.hpp); a failed pixel is a row with it
 from __future__ import annotations
 
 import csv
+import json
 import os
 import math
 import subprocess
@@ -39,6 +40,18 @@ def test_the_columns_and_values_of_the_command_lines_map_csv(mdr_binary, tmp_pat
             else:
                 assert value == float(row[name]) or (math.isnan(value) and row[name] in ("", "nan")), name
     assert (tmp_path / "py" / "map.csv").read_text() == (tmp_path / "out" / "map.csv").read_text()
+    python_summary = json.loads((tmp_path / "py" / "map.json").read_text())
+    cli_summary = json.loads((tmp_path / "out" / "map.json").read_text())
+    assert {k: v for k, v in python_summary.items() if k != "source"} == \
+        {k: v for k, v in cli_summary.items() if k != "source"}
+    assert (tmp_path / "py" / "map_material.G.png").exists()
+
+
+def test_arguments_of_stacks_are_refused_with_an_instrument_file():
+    with pytest.raises(ValueError, match="^jobs = 2"):
+        mdr.fit_map(CASE, MAP, jobs=2)
+    with pytest.raises(ValueError, match="^time: not used with an instrument file"):
+        mdr.fit_map(CASE, MAP, time=[0.0, 1.0])
 
 
 def test_a_failed_pixel_is_a_row_with_its_reason():
