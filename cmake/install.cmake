@@ -13,7 +13,10 @@ set(MDR_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/mdr CACHE STRING
 install(TARGETS mdr RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS mdr_core mdr_io EXPORT mdrTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 # mdr::fit links Ceres: its own export set, loaded only for find_package(mdr COMPONENTS fit) (mdrConfig.cmake.in).
-install(TARGETS mdr_fit EXPORT mdrFitTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# It links mdr_instrument (the instrument readers) and through it libzip and libdeflate (Debian: libzip-dev,
+# libdeflate-dev).
+install(TARGETS mdr_fit mdr_instrument mdr_libzip mdr_libdeflate EXPORT mdrFitTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY include/mdr DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")
 install(EXPORT mdrTargets NAMESPACE mdr:: FILE mdrTargets.cmake DESTINATION ${MDR_INSTALL_CMAKEDIR})
 install(EXPORT mdrFitTargets NAMESPACE mdr:: FILE mdrFitTargets.cmake DESTINATION ${MDR_INSTALL_CMAKEDIR})

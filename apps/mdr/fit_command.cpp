@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "fit_candidates.hpp"
 #include "fit_each.hpp"
+#include "fit_map.hpp"
 #include "fit_preparation.hpp"
 #include "interrupt.hpp"
 #include "mdr/fit/plausibility.hpp"
@@ -30,11 +31,17 @@ void add_fit_command(CLI::App& app, int& exit_code) {
     command->add_option("--each", *each,
                         "Curve files fitted one by one in place of the case's one [[fit.data]] file (one material per "
                         "file): DIR/<stem>/ each, and DIR/each.csv with one row per file");
-    command->callback([case_path, out, each, &exit_code] {
+    auto map = std::make_shared<std::string>();
+    command->add_option("--map", *map,
+                        "An instrument map file (.jpk-force-map, ...) whose every curve is fitted alone in place of "
+                        "the case's one [[fit.data]] file: DIR/map.csv with one row per pixel, DIR/map.json")
+        ->excludes("--each");
+    command->callback([case_path, out, each, map, &exit_code] {
         bool converged = true;
         exit_code = guarded([&] {
             std::vector<std::filesystem::path> inputs{*case_path};
             inputs.insert(inputs.end(), each->begin(), each->end());
+            if (!map->empty()) inputs.emplace_back(*map);
             const io::ResultDirectory directory(*out, "--out", inputs);
             FitProgress progress;
             auto [fit_case, problem] = [&] {
@@ -42,9 +49,13 @@ void add_fit_command(CLI::App& app, int& exit_code) {
                 auto read = io::load_fit_case(*case_path);
                 read.settings.check_interrupt = throw_if_interrupted;  // Ctrl-C stops the fit at its next model run
                 read.settings.on_iteration = std::ref(progress);
-                if (!each->empty()) return PreparedFit{std::move(read), {}};  // each file is prepared by run_each
+                if (!each->empty() || !map->empty()) return PreparedFit{std::move(read), {}};  // per file, pixel
                 return prepare_fit(std::move(read));
             }();
+            if (!map->empty()) {
+                converged = run_map(fit_case, *map, directory);
+                return;
+            }
             if (!each->empty()) {
                 converged = run_each(fit_case, *each, directory, progress);
                 return;

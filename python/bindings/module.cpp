@@ -14,6 +14,7 @@ PYBIND11_MODULE(_mdr, module) {
     mdr::python::bind_run(module);
     mdr::python::bind_sweep(module);
     mdr::python::bind_fit(module);
+    mdr::python::bind_map_fit(module);
     mdr::python::bind_result_directory(module);
     mdr::python::bind_instrument(module);
 }

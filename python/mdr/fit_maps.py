@@ -13,6 +13,7 @@ import numpy as np
 
 from ._arrays import real_array
 from .curve_maps import CurveMap, map_curves
+from .fit_map_files import MapTable, fit_map_file, is_instrument_file
 
 #: The channels of a curve, in the order of the last axis of a stack (ny, nx, nt, 3), and the names of its columns.
 CHANNELS = ("time", "depth", "force")
@@ -91,7 +92,7 @@ def fit_curve(curve: Any, case: Mapping[str, Any], time: Sequence[float] | None 
 def fit_map(case: str | os.PathLike | Mapping[str, Any], stack: Any, *, time: Sequence[float] | None = None,
             depth: Sequence[float] | None = None, columns: Mapping[str, str] | None = None, scheduler: Any = None,
             jobs: int | None = None, out: str | os.PathLike | None = None, figures: bool = True,
-            progress: Callable[[int, int], None] | None = None) -> CurveMap:
+            progress: Callable[[int, int], None] | None = None) -> CurveMap | MapTable:
     """Fits every curve of `stack` with the fit case `case`: `mdr.map_curves` with `fit_curve` for every pixel.
 
     A pixel whose fit fails or does not converge is FAILED with the reason; the map goes on. Locally on `jobs`
@@ -103,9 +104,12 @@ def fit_map(case: str | os.PathLike | Mapping[str, Any], stack: Any, *, time: Se
         A fit case (docs/case-format.md, "Fitting"): its ``[fit]`` table is used; its ``[[fit.data]]``, if any, is
         replaced by each pixel's curve.
     stack : array-like, str or os.PathLike
-        What ``mdr.curve_maps.open_stack`` takes: an array (ny, nx, nt) of force [N] with `time` and `depth`, an
-        array (ny, nx, nt, 3) of time, depth and force, an HDF5 file of either, or a directory of curve files with
-        positions.csv whose columns `columns` names.
+        An instrument map file (``.jpk-force-map``, ``.jpk-qi-data``, ...: `mdr.fit_map_files.fit_map_file`, the
+        same C++ as ``mdr fit CASE --map FILE``; returns a `MapTable` with the columns of map.csv; with `out`,
+        map.csv, map.json and with `figures` the heat maps are written there; `time`, `depth`, `columns`,
+        `scheduler` and `jobs` > 1 are refused with it), or what ``mdr.curve_maps.open_stack`` takes: an array
+        (ny, nx, nt) of force [N] with `time` and `depth`, an array (ny, nx, nt, 3) of time, depth and force, an
+        HDF5 file of either, or a directory of curve files with positions.csv whose columns `columns` names.
     time, depth : sequence of float, optional
         The common time [s] and depth [m] of a stack of forces alone.
     columns : dict, optional
@@ -139,6 +143,15 @@ def fit_map(case: str | os.PathLike | Mapping[str, Any], stack: Any, *, time: Se
     >>> fits.status[1, 1] == mdr.curve_maps.FAILED, fits.reasons[1, 1]
     (True, 'InvalidInput: force = nan: at index 20: must be a finite number')
     """
+    if is_instrument_file(stack):
+        given = {"time": time, "depth": depth, "columns": columns, "scheduler": scheduler}
+        for name, value in given.items():
+            if value is not None:
+                raise ValueError(f"{name}: not used with an instrument file ({os.fspath(stack)}), which states its "
+                                 "own channels and is fitted here, one pixel after the other")
+        if jobs not in (None, 1):
+            raise ValueError(f"jobs = {jobs}: an instrument file is fitted on one process (jobs = 1 or None)")
+        return fit_map_file(case, stack, out=out, figures=figures, progress=progress)
     if isinstance(case, (str, os.PathLike)):
         with open(case, "rb") as handle:
             case = tomllib.load(handle)

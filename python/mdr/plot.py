@@ -678,7 +678,8 @@ def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
 
     Of ``mdr run``: force_depth, force_time, contact_radius, with tangential loading tangential_loop, with
     profiles pressure (and shear_stress); of ``mdr material``: material, dynamic; of ``mdr fit``: fit_curves,
-    force_indentation (the contact point marked), material, dynamic (with 95 % bands); of ``mdr sweep``: sweep.
+    force_indentation (the contact point marked), material, dynamic (with 95 % bands); of ``mdr sweep``: sweep;
+    of ``mdr fit --map``: map_KEY, one heat map per output of map.csv (mdr.map_figures).
     A directory of ``mdr fit`` with candidates (one folder per model) or ``--each`` (one folder per file) gets the
     figures of each folder, in the folder. The figures are added to the directory's manifest, so that mdr may
     still replace the directory; a file of the same name that mdr did not write is never overwritten.
@@ -724,8 +725,8 @@ def plot_directory(directory: str, column: Optional[str] = None) -> list[str]:
             with open(os.path.join(directory, MANIFEST), "a", encoding="utf-8") as handle:
                 handle.writelines(name + "\n" for name in names if name not in listed)
     if not written:
-        raise ValueError(f"{directory}: no history.csv, curves.csv, functions.csv or sweep.csv, nor folders of "
-                         "fit results (not a result directory of mdr)")
+        raise ValueError(f"{directory}: no history.csv, curves.csv, functions.csv, sweep.csv or map.csv, nor "
+                         "folders of fit results (not a result directory of mdr)")
     return written
 
 
@@ -770,6 +771,12 @@ def _plot_files(directory: str, listed: Optional[set[str]], column: Optional[str
     if os.path.exists(path("dynamic.csv")):
         dynamic = read_csv(path("dynamic.csv"))
         written.append(save(dynamic_moduli(dynamic, units=_summary(directory)), figure("dynamic")))
+    if os.path.exists(path("map.csv")) and os.path.exists(path("map.json")):
+        from .map_figures import map_heat_maps
+        for name, drawn in map_heat_maps(directory):
+            target = figure("map_" + name)
+            drawn.savefig(target, dpi=120)
+            written.append(target)
     if os.path.exists(path("sweep.csv")):
         sweep = read_csv(path("sweep.csv"))
         value = column or ("restitution" if "restitution" in sweep else "max_force")

@@ -5,6 +5,7 @@
 #include "mdr/csv_columns.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/curve.hpp"
+#include "mdr/fit/instrument_curve.hpp"
 
 namespace mdr::fit {
 namespace {
@@ -99,6 +100,7 @@ DepthAndForce afm_depth_and_force(const std::vector<double>& piezo, const std::v
 }
 
 Curve load_curve(const CurveSource& source) {
+    if (source.instrument) return load_instrument_curve(source);
     check_source(source);
     const bool afm = is_afm(source);
     std::vector<CsvColumn> columns{{source.time_column, "time"}};

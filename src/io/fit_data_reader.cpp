@@ -38,14 +38,26 @@ fit::Fitted read_fitted(TableReader& table, fit::Fitted fallback) {
     return value == "force" ? fit::Fitted::force : fit::Fitted::depth;
 }
 
-fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory,
-                               const UnitSystem& system) {
-    table.reject_unknown({"kind", "file", "name", "time", "depth", "force", "piezo", "deflection", "spring_constant",
-                          "units", "segment_column", "segments", "fitted", "until", "window"});
-    fit::CurveSource source;
-    const std::filesystem::path file = table.string("file");
-    source.file = file.is_absolute() ? file : case_directory / file;
-    source.name = table.optional_string("name").value_or("");
+namespace {
+
+// The keys of a [[fit.data]] table for an instrument file: curve; units and spring constant are the file's.
+void read_instrument_keys(TableReader& table, const UnitSystem& system, fit::CurveSource& source) {
+    const std::string stated = "is stated by the instrument file (its numbers are SI, its spring constant its own)";
+    for (const char* key : {"units", "spring_constant"}) {
+        if (table.has(key)) throw InvalidInput(table.key_path(key), table.text(key), stated);
+    }
+    if (table.has("segment_column")) {
+        throw InvalidInput(table.key_path("segment_column"), table.text("segment_column"),
+                           "is for a CSV file: an instrument file names its segments itself (segments = [\"extend\"])");
+    }
+    source.curve = table.optional_count("curve", 0);  // the file's first curve is 0
+    source.time_unit = 1.0 / system.time_size;
+    source.length_unit = 1.0 / system.length_size;
+    source.force_unit = 1.0 / system.force_size;
+}
+
+// The keys of a [[fit.data]] table for a CSV file: its columns, units and spring constant.
+void read_column_keys(TableReader& table, const UnitSystem& system, fit::CurveSource& source) {
     source.time_column = table.string("time");
     source.depth_column = table.optional_string("depth").value_or("");
     source.force_column = table.optional_string("force").value_or("");
@@ -68,6 +80,30 @@ fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& 
         source.time_unit = read_unit(*units, "time", "s", system.time_size);
         source.length_unit = read_unit(*units, "length", "m", system.length_size);
         source.force_unit = read_unit(*units, "force", "N", system.force_size);
+    }
+}
+
+}  // namespace
+
+fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory,
+                               const UnitSystem& system) {
+    table.reject_unknown({"kind", "file", "name", "time", "depth", "force", "piezo", "deflection", "spring_constant",
+                          "units", "segment_column", "segments", "fitted", "until", "window", "curve"});
+    fit::CurveSource source;
+    const std::filesystem::path file = table.string("file");
+    source.file = file.is_absolute() ? file : case_directory / file;
+    source.name = table.optional_string("name").value_or("");
+    // No column named: an instrument file, whose numbers are SI (docs/case-format.md, "Instrument files").
+    source.instrument = !table.has("time") && !table.has("depth") && !table.has("force") && !table.has("piezo") &&
+                        !table.has("deflection");
+    if (source.instrument) {
+        read_instrument_keys(table, system, source);
+    } else {
+        if (table.has("curve")) {
+            throw InvalidInput(table.key_path("curve"), table.text("curve"),
+                               "is for an instrument file (a CSV file names its columns and holds one curve)");
+        }
+        read_column_keys(table, system, source);
     }
     source.segment_column = table.optional_string("segment_column").value_or("");
     if (table.has("segments")) {

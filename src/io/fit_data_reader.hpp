@@ -15,7 +15,9 @@ namespace mdr::io {
 
 /// The CurveSource of one `[[fit.data]]` table: `file` (relative to `case_directory` unless absolute), the column
 /// keys `time`, `depth`, `force`, `piezo`, `deflection`, `segment_column`, and `spring_constant` (N/m), `units`,
-/// `segments`, `name`; the data's units and the spring constant converted to the case's `system`. Refuses unknown
+/// `segments`, `name`; the data's units and the spring constant converted to the case's `system`. A table that
+/// names no column is an instrument file's (CurveSource::instrument): `curve` (an index >= 0) is read, `units`,
+/// `spring_constant` and `segment_column` are refused (the file states them). Refuses unknown
 /// keys (suggesting the nearest) and values of the wrong type; the rules that relate the keys (one depth source,
 /// the spring constant with the AFM columns, ...) are load_curve's, checked when the curve is loaded.
 fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory,

@@ -65,11 +65,13 @@ std::optional<double> TableReader::optional_number(const std::string& key) {
     return number(key);
 }
 
-std::optional<std::size_t> TableReader::optional_count(const std::string& key) {
+std::optional<std::size_t> TableReader::optional_count(const std::string& key, std::size_t least) {
     if (!has(key)) return std::nullopt;
     const toml::node& n = node(key);
     const double value = as_number(n, key_path(key));
-    if (!n.is_integer() || value < 1.0) throw InvalidInput(key_path(key), node_text(n), "must be an integer >= 1");
+    if (!n.is_integer() || value < static_cast<double>(least)) {
+        throw InvalidInput(key_path(key), node_text(n), "must be an integer >= " + std::to_string(least));
+    }
     return static_cast<std::size_t>(value);
 }
 

@@ -26,8 +26,8 @@ public:
     double number(const std::string& key);
     /// An optional number.
     std::optional<double> optional_number(const std::string& key);
-    /// An optional positive integer.
-    std::optional<std::size_t> optional_count(const std::string& key);
+    /// An optional integer >= `least` (a count: 1; an index: 0).
+    std::optional<std::size_t> optional_count(const std::string& key, std::size_t least = 1);
     /// A required string.
     std::string string(const std::string& key);
     /// An optional string.

@@ -47,7 +47,12 @@ struct Adhesion {
 /// into the body) or the raw AFM pair `piezo_column` + `deflection_column` with `spring_constant` gives the depth;
 /// `force_column` or the deflection times the spring constant gives the force.
 struct CurveSource {
-    std::filesystem::path file;             ///< CSV file with a header row of column names
+    std::filesystem::path file;             ///< CSV file with a header row of column names, or an instrument file
+    /// The file is an AFM instrument file (mdr/instrument/read_curves.hpp: no column is named): time, height,
+    /// deflection, spring constant and segment names come from the file, in SI, converted to the case's units by
+    /// time_unit, length_unit and force_unit (the case's unit per second, metre and newton).
+    bool instrument = false;
+    std::optional<std::size_t> curve{};     ///< instrument file: which curve of a map (`curve = N`)
     std::string name;                       ///< the curve's name ("" gives the file's stem)
     std::string time_column;                ///< time
     std::string depth_column;               ///< indentation, positive into the body ("" when raw AFM columns are used)
@@ -104,6 +109,7 @@ inline constexpr std::size_t minimum_curve_rows = 10;
 /// constant > 0), a force column beside the AFM columns, or segments that select no row. The keys of its errors
 /// are those of a `[[fit.data]]` table (`time`, `force`, `segments`, ...): a caller prefixes them
 /// (InvalidInput::with_prefix). Only the used columns of the kept rows are read: other columns may hold anything.
+/// An instrument source (CurveSource::instrument) is read by load_instrument_curve (mdr/fit/instrument_curve.hpp).
 Curve load_curve(const CurveSource& source);
 
 /// select_rows: a retract whose force falls more than this many noise deviations below the baseline is adhesive.

@@ -1,0 +1,62 @@
+#pragma once
+/// \file
+/// Fits of force maps: every curve of an instrument map file fitted alone with a fit case (`mdr fit CASE --map
+/// FILE`, `mdr.fit_map(case, FILE)`), one row per pixel in map.csv (docs/instrument-to-map.md).
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mdr/fit/fit.hpp"
+#include "mdr/instrument/read_curves.hpp"
+#include "mdr/io/fit_case.hpp"
+
+namespace mdr::fit {
+
+/// One pixel of a map fit: where it is, and its fit or why it has none.
+struct PixelFit {
+    std::size_t index = 0;            ///< the curve's index in the file (CurveFile::read)
+    double x = 0.0;                   ///< position in the case's length unit (0 for a file that is not a map)
+    double y = 0.0;                   ///< see x
+    std::size_t column = 0;           ///< pixel along x, 0 at the grid's low-x edge
+    std::size_t row = 0;              ///< pixel along y, 0 at the grid's low-y edge
+    bool placed = false;              ///< x, y, column and row are known (false when the curve could not be read)
+    std::optional<FitResult> result;  ///< the fit (also one that did not converge); empty when the pixel failed
+    /// Tip height at the fitted contact point, in the case's length unit (the topography; larger = farther from
+    /// the sample); NaN when the pixel failed.
+    double contact_height = 0.0;
+    std::string failure;              ///< why the pixel has no fit (bad data, the reader's message); "" otherwise
+};
+
+/// The map's raster in the case's length unit: pixels and edge lengths (all 0 for a file that is not a map).
+struct MapLayout {
+    std::size_t columns = 0;  ///< pixels along x
+    std::size_t rows = 0;     ///< pixels along y
+    double size_x = 0.0;      ///< edge length along x
+    double size_y = 0.0;      ///< edge length along y
+};
+
+/// Refuses (mdr::InvalidInput, key `--map`) a case that cannot fit a map: it must have exactly one `[[fit.data]]`
+/// curve table, no rebound data and no model choice; the table's `file` is replaced by the map, its `curve` by
+/// each pixel.
+void require_map_case(const io::FitCase& fit_case);
+
+/// Fits curve `index` of `file` alone with `fit_case` (require_map_case): the curve from instrument_fit_curve with
+/// the case's `[[fit.data]]` settings (segments, until, window), then make_problem, validate, fit and the
+/// plausibility flags. Bad data of this pixel (mdr::InvalidInput, a reader's error) gives a PixelFit with its
+/// `failure`; mdr::Interrupted is passed on.
+PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path& path, instrument::CurveFile& file,
+                       std::size_t index);
+
+/// The raster of `file` (its first curve's grid) in the case's length unit.
+MapLayout map_layout(instrument::CurveFile& file, const io::FitCase& fit_case);
+
+/// Writes map.csv: one row per pixel with `index`, `column`, `row`, `x`, `y` (empty when not `placed`), every free key and `KEY_stderr`,
+/// `E_KEY` and `E_KEY_stderr` for every Young modulus, `contact_height`, `residual_to_noise`, `noise`, `status`,
+/// `flags` (joined by "; ") and `failure`; the columns are the union of the rows' keys in first-seen order, a
+/// value a row lacks is empty. Fields quoted by RFC 4180 (io::csv_field); numbers with 17 significant digits.
+void write_map_table(const std::filesystem::path& path, const std::vector<PixelFit>& pixels);
+
+}  // namespace mdr::fit

@@ -1,0 +1,66 @@
+// _mdr._fit_map_file: every curve of an instrument map fitted alone with a fit case, the same C++ as `mdr fit CASE
+// --map FILE` (mdr/fit/map_fit.hpp); mdr.fit_map(case, "x.jpk-force-map") is the public entry.
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <Python.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "mdr/error.hpp"
+#include "mdr/fit/map_fit.hpp"
+#include "mdr/instrument/read_curves.hpp"
+#include "mdr/io/units.hpp"
+
+namespace py = pybind11;
+
+namespace mdr::python {
+namespace {
+
+// Fits every curve of `map` with the fit case in `toml_text` and writes map.csv to `table`; returns the grid
+// (columns, rows, size_x, size_y in the case's length unit) and the case's units (system name, length unit and its
+// size in m). `progress(done, total)` after each pixel, if given.
+py::tuple fit_map_file(const std::string& toml_text, const std::string& source, const std::string& directory,
+                       const std::string& map, const std::string& table, const py::object& progress) {
+    auto fit_case = io::parse_fit_case(toml_text, source, directory);
+    fit::require_map_case(fit_case);
+    bool signalled = false;
+    fit_case.settings.check_interrupt = [&signalled] {
+        py::gil_scoped_acquire acquire;
+        if (PyErr_CheckSignals() != 0) {
+            signalled = true;
+            throw Interrupted();
+        }
+    };
+    instrument::CurveFile file(map);
+    const fit::MapLayout layout = fit::map_layout(file, fit_case);
+    std::vector<fit::PixelFit> pixels;
+    for (std::size_t i = 0; i < file.size(); ++i) {
+        try {
+            py::gil_scoped_release release;
+            pixels.push_back(fit::fit_map_pixel(fit_case, map, file, i));
+        } catch (const Interrupted&) {
+            if (signalled) throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals raised
+            throw;
+        }
+        if (!progress.is_none()) progress(i + 1, file.size());
+    }
+    fit::write_map_table(table, pixels);
+    const io::UnitSystem& system = io::unit_system(fit_case.units);
+    return py::make_tuple(layout.columns, layout.rows, layout.size_x, layout.size_y, fit_case.units,
+                          std::string(system.length), system.length_size);
+}
+
+}  // namespace
+
+void bind_map_fit(py::module_& module) {
+    module.def("_fit_map_file", &fit_map_file, py::arg("text"), py::arg("source"), py::arg("directory"),
+               py::arg("map"), py::arg("table"), py::arg("progress") = py::none(),
+               "Fits every curve of an instrument map and writes map.csv (mdr.fit_map is the public entry).");
+}
+
+}  // namespace mdr::python

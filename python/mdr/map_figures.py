@@ -1,0 +1,95 @@
+"""Heat maps of a map fit's result directory (``mdr fit CASE --map FILE --out DIR``: map.csv and map.json), drawn
+by ``python3 -m mdr plot DIR``: one figure per output on the map's physical grid, axes in µm, colour bars with the
+output's unit, failed pixels hatched."""
+
+from __future__ import annotations
+
+import json
+import os
+from typing import Mapping
+
+import numpy as np
+
+from . import _mdr
+
+#: The columns of map.csv that are not drawn: the pixel's place and its text. The ``_stderr`` columns are not drawn
+#: either (beside their values they would double the figures; they are in map.csv).
+NOT_DRAWN = ("index", "column", "row", "x", "y", "status", "flags", "failure")
+
+
+def output_unit(column: str, names: Mapping[str, str]) -> str:
+    """The unit of a map.csv column in the case's system `names` (mdr._mdr._unit_system): moduli (``G``, ``K``,
+    ``E_`` keys) in pressure, relaxation times (``tau``) in time, viscosities (``eta``) in pressure x time, lengths
+    (``contact_height``, ``thickness``, ``R``) in length, ``noise`` in force; "" for a ratio or a key it cannot
+    tell (an exponent)."""
+    key = column[:-len("_stderr")] if column.endswith("_stderr") else column
+    if key.startswith("E_"):
+        return names["pressure"]
+    last = key.rsplit(".", 1)[-1]
+    if key in ("contact_height",) or last in ("thickness", "R", "radius"):
+        return names["length"]
+    if key == "noise":
+        return names["force"]
+    if last.startswith("tau"):
+        return names["time"]
+    if last.startswith("eta"):
+        return names["viscosity"]
+    if last.startswith(("G", "K")):
+        return names["pressure"]
+    return ""
+
+
+def map_heat_maps(directory: str) -> list[tuple[str, object]]:
+    """The heat maps of the map fit in `directory`: ``[(name, figure)]``, one per drawn column of map.csv (every
+    free key, ``E_`` key, ``contact_height``, ``residual_to_noise``, ``noise``; NOT_DRAWN and ``_stderr`` columns
+    left out). Each pixel is drawn where its ``column`` and ``row`` put it on the grid of map.json; the axes are
+    the positions in µm (the pixel centres taken from map.csv's x, y); a pixel the file lacks is left white, a
+    failed pixel is marked with a red cross where its place is known (a curve that could not be read has none:
+    the title counts every failed pixel)."""
+    from matplotlib.figure import Figure  # no pyplot: no GUI backend, safe in any thread
+    from .plot import read_csv
+
+    table = read_csv(os.path.join(directory, "map.csv"))
+    with open(os.path.join(directory, "map.json"), encoding="utf-8") as handle:
+        summary = json.load(handle)
+    names = _mdr._unit_system(summary.get("units", "SI"))
+    columns, rows = max(int(summary["columns"]), 1), max(int(summary["rows"]), 1)
+    to_um = float(summary.get("length_size", 1.0)) * 1e6
+    pixel_x, pixel_y = (float(p) * to_um for p in summary["pixel_size"])
+    def numbers(values) -> np.ndarray:  # an empty field (a value the pixel lacks) is NaN
+        return np.array([float(v) if str(v) != "" else np.nan for v in values], dtype=float)
+
+    placed = np.isfinite(numbers(table["column"]))  # a pixel whose curve could not be read has no place
+    column_index = np.nan_to_num(numbers(table["column"])).astype(int)[placed]
+    row_index = np.nan_to_num(numbers(table["row"])).astype(int)[placed]
+    x, y = numbers(table["x"])[placed] * to_um, numbers(table["y"])[placed] * to_um
+    # The grid's low corner from the pixels' centres (every pixel gives the same one, up to rounding).
+    x0 = float(np.median(x - column_index * pixel_x)) if pixel_x > 0 else 0.0
+    y0 = float(np.median(y - row_index * pixel_y)) if pixel_y > 0 else 0.0
+    extent = (x0 - pixel_x / 2, x0 + (columns - 0.5) * pixel_x, y0 - pixel_y / 2, y0 + (rows - 0.5) * pixel_y) \
+        if pixel_x > 0 and pixel_y > 0 else None
+    all_failed = np.asarray(table["status"]) == "failed"
+    failed = all_failed[placed]
+    figures = []
+    for name, values in table.items():
+        if name in NOT_DRAWN or name.endswith("_stderr"):
+            continue
+        grid = np.full((rows, columns), np.nan)
+        grid[row_index, column_index] = numbers(values)[placed]
+        figure = Figure(figsize=(5.5, 4.5))
+        axes = figure.add_subplot()
+        image = axes.imshow(np.ma.masked_invalid(grid), origin="lower", interpolation="nearest", cmap="viridis",
+                            extent=extent)
+        unit = output_unit(name, names)
+        figure.colorbar(image, ax=axes, label=f"{name} [{unit}]" if unit else name)
+        if failed.any():
+            fx = x[failed] if extent else column_index[failed]
+            fy = y[failed] if extent else row_index[failed]
+            axes.scatter(fx, fy, marker="x", color="red", s=30, label="failed")
+            axes.legend(loc="upper right", fontsize="small")
+        drawn = np.count_nonzero(np.isfinite(grid))
+        axes.set(xlabel="x [µm]" if extent else "column", ylabel="y [µm]" if extent else "row",
+                 title=f"{name} ({drawn} of {rows * columns} pixels, {int(all_failed.sum())} failed)")
+        figure.tight_layout()
+        figures.append((name, figure))
+    return figures

@@ -1,0 +1,91 @@
+"""mdr.fit_map(case, "map.jpk-force-map"): the same per-pixel outputs as `mdr fit CASE --map FILE`'s map.csv, with
+the same columns (both run mdr/fit/map_fit.hpp); a failed pixel is a row with its reason."""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+import math
+import subprocess
+
+import numpy as np
+import pytest
+
+import mdr
+from conftest import REPO_ROOT
+
+MAP = REPO_ROOT / "examples" / "data" / "vendor" / "fmt-jpk-fd_map-data-reference-points.jpk-force-map"
+BROKEN = REPO_ROOT / "tests" / "data" / "instrument" / "missing-channel.jpk-force-map"
+CASE = {
+    "material": {"model": "elastic", "G": 1000.0},
+    "indenter": {"shape": "sphere", "R": 5.0e-6},
+    "fit": {"free": ["material.G"], "data": [{"file": "map.jpk-force-map", "segments": ["extend"]}]},
+}
+
+
+def test_the_columns_and_values_of_the_command_lines_map_csv(mdr_binary, tmp_path):
+    (tmp_path / "case.toml").write_text(mdr._toml.to_toml(CASE))
+    subprocess.run([mdr_binary, "fit", "case.toml", "--map", MAP, "--out", "out"], cwd=tmp_path, check=True,
+                   capture_output=True, timeout=300)
+    with open(tmp_path / "out" / "map.csv", newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    table = mdr.fit_map(CASE, MAP, out=tmp_path / "py")
+    assert list(table.columns) == list(rows[0].keys())
+    assert table.grid == (25, 25) and table.size == (5e-4, 5e-4)  # grid.ilength, grid.ulength of the header
+    for name, values in table.columns.items():
+        for value, row in zip(values, rows):
+            if isinstance(value, str):
+                assert value == row[name]
+            else:
+                assert value == float(row[name]) or (math.isnan(value) and row[name] in ("", "nan")), name
+    assert (tmp_path / "py" / "map.csv").read_text() == (tmp_path / "out" / "map.csv").read_text()
+    python_summary = json.loads((tmp_path / "py" / "map.json").read_text())
+    cli_summary = json.loads((tmp_path / "out" / "map.json").read_text())
+    assert {k: v for k, v in python_summary.items() if k != "source"} == \
+        {k: v for k, v in cli_summary.items() if k != "source"}
+    assert (tmp_path / "py" / "map_material.G.png").exists()
+
+
+def test_arguments_of_stacks_are_refused_with_an_instrument_file():
+    with pytest.raises(ValueError, match="^jobs = 2"):
+        mdr.fit_map(CASE, MAP, jobs=2)
+    with pytest.raises(ValueError, match="^time: not used with an instrument file"):
+        mdr.fit_map(CASE, MAP, time=[0.0, 1.0])
+
+
+def test_a_failed_pixel_is_a_row_with_its_reason():
+    table = mdr.fit_map(CASE, BROKEN)
+    assert list(table.columns["status"][[0, 2]]) != ["failed", "failed"]
+    assert table.columns["status"][1] == "failed"
+    assert "vDeflection.dat" in table.columns["failure"][1]
+    assert np.isnan(table.columns["material.G"][1])
+
+
+def test_a_bad_case_is_refused_naming_the_key():
+    case = dict(CASE, fit={"free": ["material.G"], "data": [{"file": "x.csv", "time": "t", "depth": "d",
+                                                              "force": "f"}]})
+    with pytest.raises(ValueError, match="--map"):
+        mdr.fit_map(case, MAP)
+
+
+def test_heat_maps_on_the_physical_grid_with_units_and_failed_pixels(mdr_binary, tmp_path):
+    from mdr.map_figures import map_heat_maps
+
+    (tmp_path / "case.toml").write_text(mdr._toml.to_toml(CASE))
+    subprocess.run([mdr_binary, "fit", "case.toml", "--map", BROKEN, "--out", "out"], cwd=tmp_path,
+                   capture_output=True, timeout=300)
+    figures = dict(map_heat_maps(str(tmp_path / "out")))
+    assert {"material.G", "E_material.G", "contact_height", "residual_to_noise"} <= set(figures)
+    axes, colour_bar = figures["material.G"].axes
+    assert colour_bar.get_ylabel() == "material.G [Pa]"
+    assert figures["contact_height"].axes[1].get_ylabel() == "contact_height [m]"
+    assert axes.get_xlabel() == "x [µm]"
+    # The 25 x 25 grid of 20 µm pixels: pixel (column 9, row 4) at x = -1219.77 µm (its header) puts the grid's
+    # low-x edge at -1219.77 - 9.5 x 20 µm.
+    left, right, _, _ = axes.images[0].get_extent()
+    assert math.isclose(left, -1219.765625 - 190.0) and math.isclose(right - left, 500.0)
+    assert "1 failed" in axes.get_title()  # its curve could not be read: no place, no cross
+    assert np.count_nonzero(np.isfinite(axes.images[0].get_array().filled(np.nan))) == 2
+    written = mdr.plot.plot_directory(str(tmp_path / "out"))
+    assert sorted(os.path.basename(p) for p in written) == sorted(f"map_{name}.png" for name in figures)

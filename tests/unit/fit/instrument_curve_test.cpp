@@ -1,0 +1,97 @@
+// A fit's curve from an instrument file (mdr/fit/instrument_curve.hpp) against the CSV export of the same record:
+// examples/data/jpk_sr_cell1-0001.csv was converted from the same member cell1-0001.jpk-force of afmformats'
+// 10.1002_btm2.10294_fig5d-cell1.zip by a script of its own (examples/data/README.md, the .json sidecar), not by mdr.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "mdr/error.hpp"
+#include "mdr/fit/curve.hpp"
+#include "mdr/fit/instrument_curve.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using mdr::fit::CurveSource;
+
+CurveSource instrument_source(const std::string& name) {
+    CurveSource source;
+    source.file = fs::path(MDR_VENDOR_DATA) / name;
+    source.instrument = true;
+    return source;
+}
+
+std::string key_of(const CurveSource& source) {
+    try {
+        mdr::fit::load_curve(source);
+    } catch (const mdr::InvalidInput& error) {
+        return error.key() + " = " + error.value() + ": " + error.rule();
+    }
+    return "(accepted)";
+}
+
+class InstrumentCurveRecord : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(InstrumentCurveRecord, RowsEqualTheCsvExportOfTheSameRecord) {
+    const std::string record = GetParam();
+    CurveSource csv;
+    csv.file = fs::path(MDR_MEASURED_DATA) / ("jpk_sr_cell1-" + record + ".csv");
+    csv.time_column = "t_s";
+    csv.piezo_column = "z_measured_m";
+    csv.deflection_column = "deflection_m";
+    csv.spring_constant = 1.0677;  // the header's value, as the sidecar states it
+    csv.segment_column = "segment_name";
+    csv.segments = {"pause", "extend"};
+    CurveSource file = instrument_source("cell1-" + record + ".jpk-force");
+    file.segments = {"pause", "extend"};
+    const auto expected = mdr::fit::load_curve(csv);
+    const auto actual = mdr::fit::load_curve(file);
+    ASSERT_EQ(actual.time.size(), expected.time.size());
+    for (std::size_t i = 0; i < actual.time.size(); ++i) {
+        // The CSV writes heights to 1e-13 m and deflections to 8 significant digits (the force within 1e-7).
+        ASSERT_NEAR(actual.time[i], expected.time[i], 1e-9 * (1.0 + expected.time[i])) << "row " << i;
+        ASSERT_NEAR(actual.depth[i], expected.depth[i], 1e-12) << "row " << i;
+        ASSERT_NEAR(actual.force[i], expected.force[i], 1e-7 * std::abs(expected.force[i]) + 1e-18) << "row " << i;
+    }
+    EXPECT_EQ(actual.name, "cell1-" + record);
+}
+
+// The sidecars jpk_sr_cell1-000N.json name the member cell1-000N.jpk-force of the same zip and commit as
+// examples/data/vendor/README.md names for the vendor files.
+INSTANTIATE_TEST_SUITE_P(InstrumentCurve, InstrumentCurveRecord, ::testing::Values("0001", "0002", "0003"));
+
+TEST(InstrumentCurve, TheCaseUnitsScaleTheSiValues) {
+    CurveSource si = instrument_source("cell1-0001.jpk-force");
+    CurveSource micro = si;  // um-nN-s: 1e6 um per m, 1e9 nN per N
+    micro.length_unit = 1e6;
+    micro.force_unit = 1e9;
+    const auto a = mdr::fit::load_curve(si);
+    const auto b = mdr::fit::load_curve(micro);
+    ASSERT_EQ(a.depth.size(), b.depth.size());
+    EXPECT_NEAR(b.depth.back(), a.depth.back() * 1e6, 1e-9 * std::abs(b.depth.back()));
+    EXPECT_NEAR(b.force.back(), a.force.back() * 1e9, 1e-9 * std::abs(b.force.back()));
+}
+
+TEST(InstrumentCurve, ACurveOfAMapOutOfRangeIsRefusedNamingTheKey) {
+    CurveSource source = instrument_source("fmt-jpk-fd_map-data-reference-points.jpk-force-map");
+    source.curve = 3;  // the archive holds 3 pixels
+    EXPECT_EQ(key_of(source).rfind("curve = 3: must be < 3", 0), 0u) << key_of(source);
+    source.curve.reset();
+    EXPECT_EQ(key_of(source).rfind("curve = (missing): is required", 0), 0u) << key_of(source);
+    source.curve = 2;
+    EXPECT_EQ(key_of(source), "(accepted)");
+}
+
+TEST(InstrumentCurve, ASegmentTheFileLacksOrASpringConstantIsRefused) {
+    CurveSource source = instrument_source("cell1-0001.jpk-force");
+    source.segments = {"hold"};
+    EXPECT_EQ(key_of(source), "segments = \"hold\": is not a segment of cell1-0001.jpk-force; its segments: pause, "
+                              "extend, pause, retract");
+    source.segments = {};
+    source.spring_constant = 1.0;
+    EXPECT_EQ(key_of(source).rfind("spring_constant = 1: is stated by the instrument file", 0), 0u) << key_of(source);
+}
+
+}  // namespace
