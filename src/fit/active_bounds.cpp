@@ -1,5 +1,7 @@
 #include "active_bounds.hpp"
 
+#include <ceres/ceres.h>
+
 #include <algorithm>
 
 namespace mdr::fit {
@@ -92,6 +94,9 @@ ActiveBoundsSolve solve_with_active_bounds(ceres::Solver::Options options, ceres
     // Each round holds or releases at least one coordinate; a coordinate released after being held is not held
     // again, so the rounds are at most twice the coordinates and one.
     std::vector<bool> released(bounded.size(), false);
+    if (std::any_of(bounded.begin(), bounded.end(), [](const BoundedCoordinate& c) { return c.held; })) {
+        apply_holds(problem, bounded);
+    }
     const std::size_t rounds = 2 * bounded.size() + 1;
     for (std::size_t round = 0; round < rounds; ++round) {
         const int remaining = budget - static_cast<int>(result.iterations);

@@ -3,7 +3,10 @@
 /// A Ceres solve that holds a bounded coordinate on its bound while the cost pushes it outward (internal to
 /// mdr_fit; docs/performance.md, "Real curves": a contact point on the record's bound).
 
-#include <ceres/ceres.h>
+#include <ceres/cost_function.h>
+#include <ceres/iteration_callback.h>
+#include <ceres/problem.h>
+#include <ceres/solver.h>
 
 #include <functional>
 #include <memory>
@@ -18,7 +21,7 @@ struct BoundedCoordinate {
     int index = 0;            ///< the coordinate within it
     double lower = 0.0;       ///< its lower bound
     double upper = 0.0;       ///< its upper bound
-    bool held = false;        ///< held on a bound (its value equals that bound)
+    bool held = false;        ///< held on a bound (its value equals that bound; may be set before the solve)
 };
 
 /// d cost / d coordinate at the current values.
