@@ -143,6 +143,15 @@ TEST(RecordContact, ContactHeldOnItsBoundReachesTheBoundedMinimumInFewIterations
     const double least_squares_modulus = (n * sxf - sx * sf) / (n * sxx - sx * sx);
     EXPECT_NEAR(result.values[0], least_squares_modulus, 1e-6 * least_squares_modulus);
     EXPECT_LE(result.iterations, 15u);
+
+    // The progress numbers go on over the solves (the contact held after the first): 0, 1, ... result.iterations.
+    std::vector<std::size_t> reported;
+    FitProblem reporting = hertz_problem(curve);
+    reporting.settings.on_iteration = [&](std::size_t iteration, double) { reported.push_back(iteration); };
+    const FitResult again = fit(reporting);
+    ASSERT_FALSE(reported.empty());
+    for (std::size_t i = 0; i < reported.size(); ++i) EXPECT_EQ(reported[i], i);
+    EXPECT_EQ(reported.back(), again.iterations);
 }
 
 // A short record whose force rises from its first rows (20 rows) has no rows before contact: flagged as starting
