@@ -218,13 +218,13 @@ void require_evaluable_start(const FitProblem& problem, const std::vector<std::u
     }
 }
 
-std::string status_of(const ceres::Solver::Summary& summary) {
+std::string status_of(const ceres::Solver::Summary& summary, std::size_t iterations) {
     switch (summary.termination_type) {
     case ceres::CONVERGENCE:
     case ceres::USER_SUCCESS:  // StatisticalConvergence
         return "converged";
     case ceres::NO_CONVERGENCE:
-        return fmt::format("did not converge in {} iterations", summary.iterations.size());
+        return fmt::format("did not converge in {} iterations", iterations);
     default:
         return "failed: " + summary.message;
     }
@@ -334,7 +334,7 @@ FitResult solve(const FitProblem& problem) {
     }
 
     FitResult result;
-    result.status = status_of(summary);
+    result.status = status_of(summary, solved.iterations);
     result.converged = summary.termination_type == ceres::CONVERGENCE || summary.termination_type == ceres::USER_SUCCESS;
     result.iterations = solved.iterations;
     for (std::size_t j = 0; j < k; ++j) {

@@ -152,6 +152,14 @@ TEST(RecordContact, ContactHeldOnItsBoundReachesTheBoundedMinimumInFewIterations
     ASSERT_FALSE(reported.empty());
     for (std::size_t i = 0; i < reported.size(); ++i) EXPECT_EQ(reported[i], i);
     EXPECT_EQ(reported.back(), again.iterations);
+
+    // A fit that runs out of iterations says how many it took, the number in `iterations` (it said one more: the
+    // start counted, and only the last solve's).
+    FitProblem short_of_iterations = hertz_problem(curve);
+    short_of_iterations.settings.max_iterations = 5;
+    const FitResult stopped = fit(short_of_iterations);
+    EXPECT_EQ(stopped.iterations, 5u);
+    EXPECT_EQ(stopped.status, "did not converge in 5 iterations");
 }
 
 // A short record whose force rises from its first rows (20 rows) has no rows before contact: flagged as starting
