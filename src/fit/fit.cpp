@@ -14,6 +14,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "active_bounds.hpp"
 #include "contact_flags.hpp"
 #include "curve_cost.hpp"
 #include "fit_diagnostics.hpp"
@@ -218,13 +219,13 @@ void require_evaluable_start(const FitProblem& problem, const std::vector<std::u
     }
 }
 
-std::string status_of(const ceres::Solver::Summary& summary) {
+std::string status_of(const ceres::Solver::Summary& summary, std::size_t iterations) {
     switch (summary.termination_type) {
     case ceres::CONVERGENCE:
     case ceres::USER_SUCCESS:  // StatisticalConvergence
         return "converged";
     case ceres::NO_CONVERGENCE:
-        return fmt::format("did not converge in {} iterations", summary.iterations.size());
+        return fmt::format("did not converge in {} iterations", iterations);
     default:
         return "failed: " + summary.message;
     }
@@ -313,21 +314,34 @@ FitResult solve(const FitProblem& problem) {
     // of ending on a bound (tests/python/test_fit_documents.py, "undetermined").
     options.line_search_interpolation_type = ceres::QUADRATIC;
     options.logging_type = ceres::SILENT;
-    StatisticalConvergence statistical_convergence;
-    options.callbacks.push_back(&statistical_convergence);
     IterationReport iteration_report(problem.settings.on_iteration);
     if (problem.settings.on_iteration) options.callbacks.push_back(&iteration_report);
-    ceres::Solver::Summary summary;
     silence_solver_log();
-    ceres::Solve(options, &solver_problem, &summary);
+    std::vector<BoundedCoordinate> contact_points;
+    if (scales.fit_contact) {
+        for (std::size_t c = 0; c < problem.curves.size(); ++c) {
+            const auto bounds = contact_bounds(problem, c);
+            contact_points.push_back({nuisance[c].data(), static_cast<int>(m), 0, bounds[0] / scales.depth[c],
+                                      bounds[1] / scales.depth[c]});
+        }
+    }
+    const auto contact_gradient = [&](const BoundedCoordinate& coordinate) {
+        std::size_t c = 0;
+        while (nuisance[c].data() != coordinate.block) ++c;
+        return second_block_gradient(*costs[c], shared.data(), coordinate);
+    };
+    const ActiveBoundsSolve solved = solve_with_active_bounds(
+        options, solver_problem, contact_points, contact_gradient,
+        [] { return std::make_unique<StatisticalConvergence>(); });
+    const ceres::Solver::Summary& summary = solved.summary;
     if (summary.termination_type == ceres::FAILURE && summary.num_successful_steps == 0) {
         require_evaluable_start(problem, costs, rebounds, shared, nuisance);
     }
 
     FitResult result;
-    result.status = status_of(summary);
+    result.status = status_of(summary, solved.iterations);
     result.converged = summary.termination_type == ceres::CONVERGENCE || summary.termination_type == ceres::USER_SUCCESS;
-    result.iterations = summary.iterations.empty() ? 0 : summary.iterations.size() - 1;
+    result.iterations = solved.iterations;
     for (std::size_t j = 0; j < k; ++j) {
         result.names.push_back(problem.parameters[j].name);
         result.values.push_back(scales.to_value(j, shared[j]));

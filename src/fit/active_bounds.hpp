@@ -1,0 +1,58 @@
+#pragma once
+/// \file
+/// A Ceres solve that holds a bounded coordinate on its bound while the cost pushes it outward (internal to
+/// mdr_fit; docs/performance.md, "Real curves": a contact point on the record's bound).
+
+#include <ceres/cost_function.h>
+#include <ceres/iteration_callback.h>
+#include <ceres/problem.h>
+#include <ceres/solver.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace mdr::fit {
+
+/// One coordinate of a parameter block with its bounds (in the block's own, scaled, values).
+struct BoundedCoordinate {
+    double* block = nullptr;  ///< the parameter block (registered with the problem)
+    int block_size = 0;       ///< its length
+    int index = 0;            ///< the coordinate within it
+    double lower = 0.0;       ///< its lower bound
+    double upper = 0.0;       ///< its upper bound
+    bool held = false;        ///< held on a bound (its value equals that bound; may be set before the solve)
+};
+
+/// d cost / d coordinate at the current values.
+using CoordinateGradient = std::function<double(const BoundedCoordinate&)>;
+
+/// d (1/2 |r|^2) / d coordinate for a cost of two parameter blocks, `first` and the coordinate's block (one run of
+/// the cost with that block's Jacobian only).
+double second_block_gradient(const ceres::CostFunction& cost, const double* first,
+                             const BoundedCoordinate& coordinate);
+
+/// Builds a callback that keeps state for one solve.
+using FreshCallback = std::function<std::unique_ptr<ceres::IterationCallback>()>;
+
+/// What solve_with_active_bounds did.
+struct ActiveBoundsSolve {
+    ceres::Solver::Summary summary;  ///< the last solve's
+    std::size_t iterations = 0;      ///< all solves' iterations together
+    std::size_t solves = 0;          ///< Ceres solves (1 where no coordinate reached a bound)
+};
+
+/// Solves `problem` with Ceres' bounded Levenberg-Marquardt and an active set for the coordinates in `bounded`.
+/// Ceres projects each step onto the bounds; where the cost pushes a coordinate beyond its bound the step, computed
+/// as if it moved, shrinks the trust region at every iteration and the fit crawls (a contact point on the record's
+/// bound: 65 iterations, gradient fixed at the bound's reaction). A solve therefore ends once a free coordinate has
+/// sat on a bound for `patience` successful steps; it is held there (a Ceres SubsetManifold) and the solve goes on
+/// without it. At the end each held coordinate's gradient is checked (Karush-Kuhn-Tucker: d cost/dx >= 0 on a lower
+/// bound, <= 0 on an upper one); one the cost pulls inward is released and the solve goes on. `options`'
+/// max_num_iterations bounds all solves together; its callbacks serve every solve, and `fresh_callback` builds one
+/// that keeps state per solve (the statistical convergence).
+ActiveBoundsSolve solve_with_active_bounds(ceres::Solver::Options options, ceres::Problem& problem,
+                                           std::vector<BoundedCoordinate>& bounded, const CoordinateGradient& gradient,
+                                           const FreshCallback& fresh_callback);
+
+}  // namespace mdr::fit
