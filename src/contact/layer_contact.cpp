@@ -50,6 +50,7 @@ LayerContact::LayerContact(const Layer& layer, double poisson_ratio, std::shared
       indenter_(std::move(indenter)),
       max_contact_radius_(indenter_->is_flat_punch() ? indenter_->max_radius() : max_contact_radius),
       nodes_(nodes),
+      rule_(numerics::make_gauss_rule(std::max<std::size_t>(nodes, 1))),
       kernel_(layer.interface, poisson_ratio,
               (layer.thickness > 0.0 && std::isfinite(layer.thickness))
                   ? 2.0 * max_contact_radius_ / layer.thickness
@@ -60,7 +61,7 @@ LayerContact::LayerContact(const Layer& layer, double poisson_ratio, std::shared
 LayerContactState LayerContact::at_radius(double contact_radius) const {
     const double a = contact_radius, h = layer_.thickness;
     const std::size_t nodes = std::max(nodes_, 6 * static_cast<std::size_t>(std::ceil(a / h)));
-    const numerics::GaussRule rule = numerics::make_gauss_rule(nodes);
+    const numerics::GaussRule rule = nodes == nodes_ ? rule_ : numerics::make_gauss_rule(nodes);
     std::vector<double> x(nodes), w(nodes);
     for (std::size_t i = 0; i < nodes; ++i) {
         x[i] = a * rule.nodes[i];
@@ -101,13 +102,16 @@ LayerContactState LayerContact::at_depth(double depth, double radius_hint) const
     }
     const double tolerance = 1e-12 * max_contact_radius_;
     if (radius_hint > 0.0 && radius_hint <= max_contact_radius_) {
-        // Secant from the hint: a few solves when the depth changed little since the hint's.
-        double a0 = radius_hint, a1 = std::min(max_contact_radius_, radius_hint * (1.0 + 1e-3));
-        double f0 = at_radius(a0).depth - depth;
+        // Secant from the hint: a few solves when the depth changed little since the hint's. The second point
+        // scales the radius as a sphere's, a ~ sqrt(d).
+        LayerContactState state = at_radius(radius_hint);
+        double a0 = radius_hint, f0 = state.depth - depth;
+        if (std::abs(f0) <= 1e-13 * depth) return state;
+        double a1 = std::min(max_contact_radius_, radius_hint * std::sqrt(depth / state.depth));
         for (int iteration = 0; iteration < 30; ++iteration) {
-            const LayerContactState state = at_radius(a1);
+            state = at_radius(a1);
             const double f1 = state.depth - depth;
-            if (std::abs(a1 - a0) <= tolerance || std::abs(f1) <= 1e-14 * depth) return state;
+            if (std::abs(a1 - a0) <= tolerance || std::abs(f1) <= 1e-13 * depth) return state;
             if (f1 == f0) break;
             const double next = a1 - f1 * (a1 - a0) / (f1 - f0);
             if (!(next > 0.0 && next <= max_contact_radius_)) break;
@@ -130,7 +134,7 @@ LayerContactState LayerContact::at_depth(double depth, double radius_hint) const
         const double a = (lower * f_upper - upper * f_lower) / (f_upper - f_lower);
         best = at_radius(a);
         const double f = best.depth - depth;
-        if (std::abs(f) <= 1e-14 * depth) break;
+        if (std::abs(f) <= 1e-13 * depth) break;
         if (f < 0.0) {
             lower = a;
             f_lower = f;

@@ -95,11 +95,12 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     const auto& terms = material.terms();
     std::vector<double> branches(terms.size(), 0.0);  // h_k = int_0^t exp(-(t - t')/tau_k) dF_el(t')
     double previous_force = 0.0, previous_time = grid.front().time, radius = 0.0;
+    contact::LayerContactState state;
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     std::size_t reported = 0;
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const GridNode& node = grid[i];
-        const contact::LayerContactState state = layer.at_depth(node.value, radius);
+        if (i == 0 || node.value != grid[i - 1].value) state = layer.at_depth(node.value, radius);  // else a hold
         radius = state.contact_radius;
         const double elastic_force = unit_plane_modulus * state.force;
         const double step = node.time - previous_time;

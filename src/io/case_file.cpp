@@ -441,9 +441,14 @@ std::string describe(const drivers::ContactCase& contact_case) {
         model = fmt::format("{} {}", model, rheology::describe_certificate(*origin.certificate, material.terms().size(),
                                                                            unit_names(units)));
     }
-    return fmt::format("{}{} on {} half-space{} (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
+    const std::string body = rheology + (contact_case.layer ? " layer" : " half-space");
+    if (const auto& layer = contact_case.layer) {
+        load = fmt::format("{:.4g} {} thick, {} on a rigid substrate, {}", layer->thickness, units.length,
+                           contact::interface_name(layer->interface), load);
+    }
+    return fmt::format("{}{} on {}{} (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
                        contact_case.title.empty() ? "" : fmt::format("\"{}\": ", message_line(contact_case.title)),
-                       contact_case.indenter->describe(), rheology, model, material.instantaneous_modulus(),
+                       contact_case.indenter->describe(), body, model, material.instantaneous_modulus(),
                        units.pressure, material.equilibrium_modulus(), units.pressure, material.terms().size(), load,
                        contact_case.units == "SI" ? "" : fmt::format(" [units {}]", units.name));
 }

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "mdr/contact/layer.hpp"
+#include "mdr/numerics/gauss_rule.hpp"
 #include "mdr/profile/profile.hpp"
 
 namespace mdr::contact {
@@ -49,6 +50,7 @@ private:
     std::shared_ptr<const profile::Profile> indenter_;
     double max_contact_radius_;
     std::size_t nodes_;
+    numerics::GaussRule rule_;  ///< the rule with nodes_ points
     LayerKernel kernel_;
 };
 
