@@ -71,8 +71,10 @@ LayerContactState LayerContact::at_radius(double contact_radius) const {
     const auto kernel_sum = [&](double xi, double s) { return (kernel_((xi - s) / h) + kernel_((xi + s) / h)) / h; };
     std::vector<double> matrix(nodes * nodes);
     for (std::size_t i = 0; i < nodes; ++i) {
-        for (std::size_t j = 0; j < nodes; ++j) {
-            matrix[i * nodes + j] = (i == j ? 1.0 : 0.0) - w[j] * kernel_sum(x[i], x[j]) / std::numbers::pi;
+        for (std::size_t j = 0; j <= i; ++j) {  // the kernel sum is symmetric in x_i, x_j
+            const double kernel = kernel_sum(x[i], x[j]) / std::numbers::pi;
+            matrix[i * nodes + j] = (i == j ? 1.0 : 0.0) - w[j] * kernel;
+            matrix[j * nodes + i] = (i == j ? 1.0 : 0.0) - w[i] * kernel;
         }
     }
     // Two right-hand sides of eq. L3 with E* = 1: the unit depth (q_d) and the profile (q_g); q = d q_d - q_g.
