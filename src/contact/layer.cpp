@@ -14,7 +14,7 @@ namespace {
 // 1 - L(u) < 4 (1 + u)^2 exp(-2u): below 1e-17 beyond u = 24.
 constexpr double wavenumber_cutoff = 24.0;
 // Table spacing in eta: the Hermite cubic's error, spacing^4 / 384 max|k''''| with max|k''''| <= int u^4 (1 - L),
-// stays below 1e-9 of k(0) (checked against direct quadrature in tests/unit/contact/test_layer.cpp).
+// stays below 1e-9 of k(0) (checked against adaptive quadrature in tests/unit/contact/layer_test.cpp).
 constexpr double table_spacing = 0.02;
 // Gauss points per panel of the quadrature in u; a panel spans at most a quarter period of cos(u max_eta).
 constexpr std::size_t panel_points = 8;
@@ -66,16 +66,17 @@ LayerKernel::LayerKernel(LayerInterface interface, double poisson_ratio, double 
     const auto points = static_cast<std::size_t>(std::ceil(max_eta / spacing_)) + 1;
     values_.assign(points, 0.0);
     slopes_.assign(points, 0.0);
-    for (std::size_t j = 0; j < points; ++j) {
-        const double eta = spacing_ * static_cast<double>(j);
-        double value = 0.0, slope = 0.0;
-        for (std::size_t n = 0; n < nodes.size(); ++n) {
-            const double phase = nodes[n] * eta;
-            value += weighted_defect[n] * std::cos(phase);          // eq. L4
-            slope -= weighted_defect[n] * nodes[n] * std::sin(phase);
+    // cos(u eta_j) and sin(u eta_j) by rotating with exp(i u spacing) from eta = 0 (rounding grows ~j 1e-16).
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+        const double step_cos = std::cos(nodes[n] * spacing_), step_sin = std::sin(nodes[n] * spacing_);
+        double cosine = 1.0, sine = 0.0;
+        for (std::size_t j = 0; j < points; ++j) {
+            values_[j] += weighted_defect[n] * cosine;  // eq. L4
+            slopes_[j] -= weighted_defect[n] * nodes[n] * sine;
+            const double next_cosine = cosine * step_cos - sine * step_sin;
+            sine = sine * step_cos + cosine * step_sin;
+            cosine = next_cosine;
         }
-        values_[j] = value;
-        slopes_[j] = slope;
     }
     max_eta_ = spacing_ * static_cast<double>(points - 1);
 }

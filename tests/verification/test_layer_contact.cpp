@@ -34,7 +34,7 @@ mdr::contact::LayerContactState sphere_on_layer(LayerInterface interface, double
                                                 std::size_t nodes = mdr::contact::default_layer_nodes) {
     const LayerContact contact(Layer{thickness, interface}, poisson_ratio, sphere(),
                                3.0 * chi * thickness, nodes);
-    return contact.at_depth(depth_at(chi));
+    return contact.at_depth(depth_at(chi), chi * thickness);  // the secant from the Hertz radius
 }
 
 TEST(LayerContact, VeryThickLayerIsTheHertzHalfSpace) {
