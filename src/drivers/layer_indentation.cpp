@@ -84,6 +84,7 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     const double largest_radius =
         indenter.is_flat_punch() ? indenter.max_radius()
                                  : layer_radius_margin * indenter.contact_radius(history.max_value());
+    result.numerics.half_width = largest_radius;  // reported: the largest contact radius prepared for
     // The incompressible layer (nu = 0.5), unit shear modulus: E* = 4 G (eq. 21).
     constexpr double unit_plane_modulus = 4.0;
     const contact::LayerContact layer(*contact_case.layer, 0.5, contact_case.indenter,

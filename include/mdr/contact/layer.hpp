@@ -33,7 +33,7 @@ double layer_compliance_defect(LayerInterface interface, double poisson_ratio, d
 
 /// The kernel k(eta) = int_0^inf (1 - L(u)) cos(u eta) du of the layer (K(y) = k(y/h)/h in the Fredholm equation
 /// q(x) - (1/pi) int_0^a [K(x - s) + K(x + s)] q(s) ds = E* (d - g(x)), docs/theory.md eq. L4), tabulated on
-/// [0, max_eta] and interpolated by cubic Hermite polynomials with its exact slope (error ~1e-10 of k(0)).
+/// [0, max_eta] and interpolated by cubic Hermite polynomials with its exact slope (error below 1e-9 of k(0)).
 class LayerKernel {
 public:
     /// Tabulates k on [0, max_eta] (max_eta > 0) for the interface and Poisson ratio.
