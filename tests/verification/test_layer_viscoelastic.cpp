@@ -79,8 +79,9 @@ TEST(LayerViscoelastic, VeryThickLayerIsTheHalfSpaceDriver) {
         ASSERT_EQ(half_space.time[i], thick.time[i]);
         largest = std::max(largest, std::abs(half_space.force[i] - thick.force[i]) / peak);
     }
-    // The half-space driver's own error (midpoint elements, O((dx/a)^2), contact_case.hpp default_elements).
-    EXPECT_LT(largest, 1e-5);
+    // The half-space driver's own error (midpoint elements, O((dx/a)^2), contact_case.hpp default_elements) is
+    // below this at its defaults; the layer's, O(a/h) = 1e-8 here.
+    EXPECT_LT(largest, 1e-6);
 }
 
 }  // namespace
