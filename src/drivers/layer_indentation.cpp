@@ -15,12 +15,21 @@ namespace mdr::drivers {
 namespace {
 
 // The contact radius on a layer exceeds the half-space's at the same depth by at most 3 pi / 4 (a cone on a thin
-// bonded incompressible layer, whose displaced volume stays under the indenter; a sphere: 2, theory.md eq. L7).
+// bonded incompressible layer, whose displaced volume stays under the indenter; a sphere: 2, theory.md eq. L8).
 constexpr double layer_radius_margin = 3.0;
 // Contacts wider than this many thicknesses need too many nodes (6 per thickness) for a run.
 constexpr double max_radius_over_thickness = 100.0;
 // `numerics.elements` on a layer is a number of Gauss nodes, each solve O(n^3).
 constexpr std::size_t max_layer_nodes = 512;
+
+// The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius at
+// the largest depth, within the profile's range (beyond it LayerContact::at_depth refuses the depth).
+double largest_contact_radius(const ContactCase& contact_case) {
+    const auto& indenter = *contact_case.indenter;
+    if (indenter.is_flat_punch()) return indenter.max_radius();
+    return std::min(indenter.max_radius(),
+                    layer_radius_margin * indenter.contact_radius(contact_case.load.history->max_value()));
+}
 
 void refuse(const std::string& key, const std::string& value, const std::string& what) {
     throw InvalidInput(key, value, what + " is not built on a [layer] yet (issue 28)");
@@ -59,11 +68,7 @@ void validate_layer(const ContactCase& contact_case) {
                            "must be <= " + std::to_string(max_layer_nodes) + " on a [layer] (Gauss nodes on the "
                            "contact)");
     }
-    const auto& indenter = *contact_case.indenter;
-    const double largest_radius = indenter.is_flat_punch()
-                                      ? indenter.max_radius()
-                                      : layer_radius_margin * indenter.contact_radius(
-                                                                  contact_case.load.history->max_value());
+    const double largest_radius = largest_contact_radius(contact_case);
     if (!(largest_radius <= max_radius_over_thickness * layer.thickness)) {
         throw InvalidInput("layer.thickness", format_value(layer.thickness),
                            "the contact radius may reach " + format_value(largest_radius) + ", more than " +
@@ -78,12 +83,9 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
     const auto& history = *contact_case.load.history;
-    const auto& indenter = *contact_case.indenter;
     const std::size_t nodes = contact_case.numerics.elements.value_or(contact::default_layer_nodes);
     result.numerics.elements = nodes;
-    const double largest_radius =
-        indenter.is_flat_punch() ? indenter.max_radius()
-                                 : layer_radius_margin * indenter.contact_radius(history.max_value());
+    const double largest_radius = largest_contact_radius(contact_case);
     result.numerics.half_width = largest_radius;  // reported: the largest contact radius prepared for
     // The incompressible layer (nu = 0.5), unit shear modulus: E* = 4 G (eq. 21).
     constexpr double unit_plane_modulus = 4.0;
