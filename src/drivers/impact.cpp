@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/drivers/work_estimate.hpp"
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
@@ -140,8 +141,9 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
 
 IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress,
                            const StepObservers& observers) {
-    auto result = contact_case.control == Control::impact ? run_impact(contact_case, progress, observers)
-                                                          : run_indentation(contact_case, progress, observers);
+    auto result = contact_case.layer                        ? run_layer_indentation(contact_case, progress, observers)
+                  : contact_case.control == Control::impact ? run_impact(contact_case, progress, observers)
+                                                            : run_indentation(contact_case, progress, observers);
     require_finite_result(result);
     return result;
 }

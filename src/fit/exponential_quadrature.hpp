@@ -9,15 +9,12 @@
 #include <functional>
 #include <vector>
 
+#include "mdr/numerics/gauss_rule.hpp"
+
 namespace mdr::fit {
 
-/// The n-point Gauss-Legendre rule on [0, 1]: nodes ascending, weights summing to 1 (Newton on P_n, to round-off).
-struct GaussRule {
-    std::vector<double> nodes;
-    std::vector<double> weights;
-};
-/// The rule with `points` >= 1 nodes.
-GaussRule make_gauss_rule(std::size_t points);
+using numerics::GaussRule;
+using numerics::make_gauss_rule;
 
 /// Product integration with four nodes: y is replaced by its cubic interpolant at the 4-point Gauss-Legendre nodes
 /// of the step and the exponential is integrated exactly, so the error is that of the interpolant alone, whatever

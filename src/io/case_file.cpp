@@ -10,6 +10,7 @@
 
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/controls.hpp"
+#include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/drivers/material_window.hpp"
 #include "mdr/drivers/oblique_sphere.hpp"
 #include "mdr/error.hpp"
@@ -19,6 +20,7 @@
 #include "control_reader.hpp"
 #include "mdr/io/units.hpp"
 #include "indenter_reader.hpp"
+#include "layer_reader.hpp"
 #include "material_reader.hpp"
 #include "shore_reader.hpp"
 #include "toml_reader.hpp"
@@ -249,7 +251,8 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
 
 drivers::ContactCase read_case(const toml::table& root_table) {
     TableReader root(root_table, "");
-    root.reject_unknown({"title", "units", "material", "indenter", "load", "tangential", "output", "numerics"});
+    root.reject_unknown(
+        {"title", "units", "material", "indenter", "load", "tangential", "output", "numerics", "layer"});
     const std::string title = root.optional_string("title").value_or("");
     const std::string units(unit_system(root.optional_string("units").value_or("SI")).name);
 
@@ -366,7 +369,9 @@ drivers::ContactCase read_case(const toml::table& root_table) {
         }
     }
     contact_case.units = units;
+    if (auto layer = root.table("layer")) contact_case.layer = read_layer(*layer);
     drivers::validate(contact_case);
+    drivers::validate_layer(contact_case);
     return contact_case;
 }
 
@@ -436,9 +441,14 @@ std::string describe(const drivers::ContactCase& contact_case) {
         model = fmt::format("{} {}", model, rheology::describe_certificate(*origin.certificate, material.terms().size(),
                                                                            unit_names(units)));
     }
-    return fmt::format("{}{} on {} half-space{} (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
+    const std::string body = rheology + (contact_case.layer ? " layer" : " half-space");
+    if (const auto& layer = contact_case.layer) {
+        load = fmt::format("{:.4g} {} thick, {} on a rigid substrate, {}", layer->thickness, units.length,
+                           contact::interface_name(layer->interface), load);
+    }
+    return fmt::format("{}{} on {}{} (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
                        contact_case.title.empty() ? "" : fmt::format("\"{}\": ", message_line(contact_case.title)),
-                       contact_case.indenter->describe(), rheology, model, material.instantaneous_modulus(),
+                       contact_case.indenter->describe(), body, model, material.instantaneous_modulus(),
                        units.pressure, material.equilibrium_modulus(), units.pressure, material.terms().size(), load,
                        contact_case.units == "SI" ? "" : fmt::format(" [units {}]", units.name));
 }

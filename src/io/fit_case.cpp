@@ -108,6 +108,9 @@ FitCase parse_fit_case(CaseTemplate model, const std::filesystem::path& case_dir
     if (!model.has_table("fit")) throw InvalidInput("fit", "(missing)", "a fit case needs a [fit] table");
     const toml::table fit_table = parse_toml(model.take_table("fit"), source);
     TableReader fit(fit_table, "fit");
+    if (model.has_table("layer")) {
+        throw InvalidInput("layer", "[...]", "a fit on a [layer] is not built yet (issue 28): fit without [layer]");
+    }
     fit.reject_unknown({"free", "bounds", "start", "fitted", "contact_point", "baseline", "max_iterations", "elements", "data",
                         "candidates", "spectrum"});
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "mdr/contact/layer.hpp"
 #include "mdr/drivers/force_pause.hpp"
 #include "mdr/drivers/load.hpp"
 #include "mdr/drivers/shore.hpp"
@@ -110,6 +111,8 @@ struct ContactCase {
     bool tangential_approximate() const { return !tangential_exact && (tangential || oblique); }
     /// The declared unit system (mdr/io/units.hpp): the names printed beside the numbers; nothing is converted.
     std::string units = "SI";
+    /// `[layer]`: a layer of finite thickness on a rigid substrate; absent: the half-space (drivers/layer_indentation.hpp).
+    std::optional<contact::Layer> layer{};
 };
 
 /// Elements on the half-width when `[numerics] elements` is not given. With the half-width 1.1 times the largest

@@ -123,8 +123,8 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
 /// one of its outcomes()), so that no NaN or infinity is ever reported as a result.
 void require_finite_result(const IndentationResult& result);
 
-/// Runs any case: run_impact for control = impact, run_indentation otherwise, with the caller's `observers` after
-/// the standard ones; the result is checked with require_finite_result.
+/// Runs any case: run_layer_indentation for a case with a layer, run_impact for control = impact, run_indentation
+/// otherwise, with the caller's `observers` after the standard ones; the result is checked with require_finite_result.
 IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress = {},
                            const StepObservers& observers = {});
 

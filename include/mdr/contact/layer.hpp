@@ -1,0 +1,53 @@
+#pragma once
+/// \file
+/// An elastic layer of finite thickness on a rigid substrate: its compliance function and the kernel of the MDR's
+/// Fredholm equation (docs/theory.md, "Layers"; Lebedev & Ufliand 1958, Vorovich et al. 1974).
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace mdr::contact {
+
+/// How the layer is held by the rigid substrate (`[layer] interface`).
+enum class LayerInterface {
+    bonded,   ///< no displacement at the interface
+    sliding,  ///< frictionless contact with the substrate: no normal displacement, no shear stress
+};
+
+/// `[layer]` of a case: thickness and interface.
+struct Layer {
+    double thickness = 0.0;                          ///< h [m], > 0
+    LayerInterface interface = LayerInterface::bonded;  ///< bonded or sliding
+};
+
+/// The name of an interface as written in a case ("bonded", "sliding").
+std::string interface_name(LayerInterface interface);
+
+/// One minus the layer's compliance function, 1 - L(u), u = xi h the dimensionless wavenumber: the surface
+/// displacement under an axisymmetric pressure with Hankel transform P(xi) is w(r) = (2/E*) int_0^inf P(xi) L(xi h)
+/// J0(xi r) dxi (L = 1: the half-space). Bonded (kappa = 3 - 4 nu): L = (2 kappa sinh 2u - 4u) / (2 kappa cosh 2u +
+/// 1 + kappa^2 + 4u^2); sliding: L = (cosh 2u - 1) / (sinh 2u + 2u), any nu (docs/theory.md eq. L1, L2). Written
+/// with exp(-2u) so that it neither overflows nor cancels; 0 <= nu <= 0.5.
+double layer_compliance_defect(LayerInterface interface, double poisson_ratio, double u);
+
+/// The kernel k(eta) = int_0^inf (1 - L(u)) cos(u eta) du of the layer (K(y) = k(y/h)/h in the Fredholm equation
+/// q(x) - (1/pi) int_0^a [K(x - s) + K(x + s)] q(s) ds = E* (d - g(x)), docs/theory.md eq. L4), tabulated on
+/// [0, max_eta] and interpolated by cubic Hermite polynomials with its exact slope (error below 1e-9 of k(0)).
+class LayerKernel {
+public:
+    /// Tabulates k on [0, max_eta] (max_eta > 0) for the interface and Poisson ratio.
+    LayerKernel(LayerInterface interface, double poisson_ratio, double max_eta);
+    /// k(eta) for |eta| <= max_eta (k is even).
+    double operator()(double eta) const;
+    /// The largest |eta| tabulated.
+    double max_eta() const { return max_eta_; }
+
+private:
+    double max_eta_;
+    double spacing_;
+    std::vector<double> values_;
+    std::vector<double> slopes_;
+};
+
+}  // namespace mdr::contact

@@ -1,0 +1,57 @@
+#pragma once
+/// \file
+/// The elastic contact of a rigid axisymmetric indenter with a layer on a rigid substrate: the MDR line load q(x)
+/// solves a Fredholm equation of the second kind over the contact (docs/theory.md, "Layers", eq. L3 to L6).
+
+#include <cstddef>
+#include <memory>
+
+#include "mdr/contact/layer.hpp"
+#include "mdr/numerics/gauss_rule.hpp"
+#include "mdr/profile/profile.hpp"
+
+namespace mdr::contact {
+
+/// Gauss-Legendre nodes on the contact [0, a] when `[numerics] elements` is not given: the line load is smooth, and
+/// the force with 48 nodes (6 per thickness beyond a/h = 8) is within 1e-7 of 512 nodes' for a/h up to 9
+/// (tests/verification/test_layer_contact.cpp, ForceConvergesInTheNumberOfNodes).
+inline constexpr std::size_t default_layer_nodes = 48;
+
+/// One elastic equilibrium on the layer with unit plane-strain modulus E* = 1 (force and line load scale with E*).
+struct LayerContactState {
+    double contact_radius = 0.0;  ///< a [m]
+    double depth = 0.0;           ///< d [m]
+    double force = 0.0;           ///< F / E* [m^2] (eq. L5)
+};
+
+/// The elastic layer problem for one indenter: q(x) - (1/pi) int_0^a [K(x - s) + K(x + s)] q(s) ds = E* (d - g(x))
+/// (eq. L3) by the Nystroem method on Gauss-Legendre nodes; F = 2 int_0^a q (eq. L5); a smooth indenter's contact
+/// edge is force-free, q(a) = 0 (eq. L6), a flat punch's is its radius. Valid for contact radii up to
+/// max_contact_radius. h -> infinity gives the half-space's MDR exactly (K = 0).
+class LayerContact {
+public:
+    /// Throws mdr::InvalidInput (key `layer.thickness`) unless h > 0 is finite; `nodes` >= 2.
+    LayerContact(const Layer& layer, double poisson_ratio, std::shared_ptr<const profile::Profile> indenter,
+                 double max_contact_radius, std::size_t nodes = default_layer_nodes);
+
+    /// The equilibrium with contact radius 0 < a <= max_contact_radius (a flat punch: its radius, at depth 1), on
+    /// max(nodes, 6 ceil(a/h)) Gauss-Legendre nodes (the kernel's width is h).
+    LayerContactState at_radius(double contact_radius) const;
+    /// The equilibrium at depth d (d <= 0: no contact): the contact radius solved from depth(a) = d (increasing in
+    /// a) to 1e-12 of max_contact_radius, by the secant method from `radius_hint` (> 0: a nearby solution, such as
+    /// the previous step's) inside a bracket, else by regula falsi on [0, max_contact_radius]. Throws
+    /// mdr::InvalidInput (key `layer`) when the contact would grow beyond max_contact_radius.
+    LayerContactState at_depth(double depth, double radius_hint = 0.0) const;
+    /// The largest contact radius the kernel was tabulated for [m].
+    double max_contact_radius() const { return max_contact_radius_; }
+
+private:
+    Layer layer_;
+    std::shared_ptr<const profile::Profile> indenter_;
+    double max_contact_radius_;
+    std::size_t nodes_;
+    numerics::GaussRule rule_;  ///< the rule with nodes_ points
+    LayerKernel kernel_;
+};
+
+}  // namespace mdr::contact

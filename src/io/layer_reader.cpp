@@ -1,0 +1,20 @@
+#include "layer_reader.hpp"
+
+#include <cmath>
+
+#include "mdr/error.hpp"
+
+namespace mdr::io {
+
+contact::Layer read_layer(TableReader& table) {
+    table.reject_unknown({"thickness", "interface"});
+    const double thickness = table.number("thickness");
+    if (!(thickness > 0.0)) throw InvalidInput(table.key_path("thickness"), table.text("thickness"), "must be > 0");
+    const std::string interface = table.string("interface");
+    if (interface != "bonded" && interface != "sliding") {
+        throw InvalidInput(table.key_path("interface"), table.text("interface"), "must be \"bonded\" or \"sliding\"");
+    }
+    return {thickness, interface == "bonded" ? contact::LayerInterface::bonded : contact::LayerInterface::sliding};
+}
+
+}  // namespace mdr::io

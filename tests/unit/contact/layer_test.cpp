@@ -1,0 +1,59 @@
+// The layer's compliance function and kernel (docs/theory.md eq. L1, L2, L4) against independent numbers: L(u)
+// from a direct numerical solution of the layer's Navier equations in Fourier space (scipy's expm of the 4 x 4
+// first-order system with the surface and interface conditions), k(eta) from scipy.integrate.quad (weight = cos).
+
+#include <gtest/gtest.h>
+
+#include <array>
+
+#include "mdr/contact/layer.hpp"
+
+namespace {
+
+using mdr::contact::LayerInterface;
+using mdr::contact::LayerKernel;
+using mdr::contact::layer_compliance_defect;
+
+TEST(LayerCompliance, MatchesTheNavierSolution) {
+    // L(u) at u = 0.5, 1, 3 from the Navier solution, 6 digits.
+    EXPECT_NEAR(1.0 - layer_compliance_defect(LayerInterface::bonded, 0.3, 0.5), 0.206642, 1e-6);
+    EXPECT_NEAR(1.0 - layer_compliance_defect(LayerInterface::bonded, 0.3, 1.0), 0.415752, 1e-6);
+    EXPECT_NEAR(1.0 - layer_compliance_defect(LayerInterface::bonded, 0.49, 3.0), 0.890557, 1e-6);
+    EXPECT_NEAR(1.0 - layer_compliance_defect(LayerInterface::bonded, 0.0, 0.1), 0.05, 1e-6);
+    for (const double nu : {0.0, 0.3, 0.5}) {  // the sliding layer's L does not depend on nu
+        EXPECT_NEAR(1.0 - layer_compliance_defect(LayerInterface::sliding, nu, 0.5), 0.249669, 1e-6);
+        EXPECT_NEAR(1.0 - layer_compliance_defect(LayerInterface::sliding, nu, 1.0), 0.490895, 1e-6);
+        EXPECT_NEAR(1.0 - layer_compliance_defect(LayerInterface::sliding, nu, 3.0), 0.966312, 1e-6);
+    }
+    // Neither overflow nor cancellation at the ends: 1 - L -> 1 at u = 0, -> 0 far out.
+    EXPECT_DOUBLE_EQ(layer_compliance_defect(LayerInterface::sliding, 0.5, 0.0), 1.0);
+    EXPECT_NEAR(layer_compliance_defect(LayerInterface::sliding, 0.5, 1e-9), 1.0, 1e-8);
+    EXPECT_GE(layer_compliance_defect(LayerInterface::bonded, 0.5, 400.0), 0.0);
+    EXPECT_LT(layer_compliance_defect(LayerInterface::bonded, 0.5, 400.0), 1e-300);
+}
+
+TEST(LayerKernel, MatchesAdaptiveQuadrature) {
+    constexpr std::array<double, 5> eta{0.0, 0.5, 1.37, 3.0, 7.9};
+    struct Case {
+        LayerInterface interface;
+        double poisson_ratio;
+        std::array<double, 5> expected;
+    };
+    const std::array<Case, 3> cases{{
+        {LayerInterface::bonded, 0.5, {1.77021677337, 1.35660031794, 0.284972696745, 0.00649763628629,
+                                       -0.00133068935746}},
+        {LayerInterface::sliding, 0.5, {1.1675768374, 0.98957152699, 0.395187397786, 0.0544425933657,
+                                        0.00800555108032}},
+        {LayerInterface::bonded, 0.3, {1.37685416546, 1.10280608979, 0.334142092551, 0.0438450483788,
+                                       0.00647020497088}},
+    }};
+    for (const auto& [interface, poisson_ratio, expected] : cases) {
+        const LayerKernel kernel(interface, poisson_ratio, 10.0);
+        for (std::size_t i = 0; i < eta.size(); ++i) {
+            EXPECT_NEAR(kernel(eta[i]), expected[i], 1e-9 * expected[0]) << "eta " << eta[i];
+            EXPECT_NEAR(kernel(-eta[i]), expected[i], 1e-9 * expected[0]) << "eta " << -eta[i];
+        }
+    }
+}
+
+}  // namespace

@@ -1,0 +1,55 @@
+// `[layer]` in a case: read, and refused with the key, the value and the rule where not built yet.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "mdr/error.hpp"
+#include "mdr/io/case_file.hpp"
+
+namespace {
+
+std::string with(const std::string& load, const std::string& layer, const std::string& material = "") {
+    return "[material]\nmodel = \"elastic\"\nG = 1.0e3\n" + material + "[indenter]\nshape = \"sphere\"\nR = 1.0e-5\n" +
+           "[load]\n" + load + "[layer]\n" + layer;
+}
+
+const std::string loading = "control = \"displacement\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-6]]\n";
+const std::string bonded = "thickness = 5.0e-6\ninterface = \"bonded\"\n";
+
+std::string refused_key(const std::string& text) {
+    try {
+        mdr::io::parse_case(text);
+    } catch (const mdr::InvalidInput& error) {
+        return error.key();
+    }
+    return "(accepted)";
+}
+
+TEST(LayerReader, ReadsThicknessAndInterface) {
+    const auto contact_case = mdr::io::parse_case(with(loading, "thickness = 5.0e-6\ninterface = \"sliding\"\n"));
+    ASSERT_TRUE(contact_case.layer);
+    EXPECT_EQ(contact_case.layer->thickness, 5e-6);
+    EXPECT_EQ(contact_case.layer->interface, mdr::contact::LayerInterface::sliding);
+    EXPECT_FALSE(mdr::io::parse_case("[material]\nmodel = \"elastic\"\nG = 1.0e3\n[indenter]\nshape = \"sphere\"\n"
+                                     "R = 1.0e-5\n[load]\n" + loading).layer);
+}
+
+TEST(LayerReader, RefusesBadValues) {
+    EXPECT_EQ(refused_key(with(loading, "thickness = 0.0\ninterface = \"bonded\"\n")), "layer.thickness");
+    EXPECT_EQ(refused_key(with(loading, "thickness = 1.0e-6\ninterface = \"glued\"\n")), "layer.interface");
+    EXPECT_EQ(refused_key(with(loading, "thickness = 1.0e-6\n")), "layer.interface");
+    EXPECT_EQ(refused_key(with(loading, bonded + "friction = 0.1\n")), "layer.friction");
+}
+
+TEST(LayerReader, RefusesWhatIsNotBuiltOnALayer) {
+    EXPECT_EQ(refused_key(with("control = \"displacement\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-6], [2.0, 0.0]]\n",
+                               bonded)),
+              "load.history[2]");
+    EXPECT_EQ(refused_key(with("control = \"force\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-6]]\n", bonded)),
+              "load.control");
+    EXPECT_EQ(refused_key(with(loading, bonded, "[material.bulk]\nmodel = \"elastic\"\nK = 3.0e3\n")), "material");
+    EXPECT_EQ(refused_key(with(loading, "thickness = 1.0e-9\ninterface = \"bonded\"\n")), "layer.thickness");
+}
+
+}  // namespace

@@ -1,0 +1,161 @@
+// The elastic layer (docs/theory.md, "Layers") against references that share no code with its Fredholm solver:
+// the Hertz and cone half-space (h -> infinity), the Dimitriadis et al. (2002) series for small depth over
+// thickness, and the thin-layer asymptotics derived from the elasticity of a thin layer (theory.md eq. L8 to L10).
+// Forces are at unit plane-strain modulus E* = 1; chi = sqrt(R d) / h as in Dimitriadis et al.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <utility>
+
+#include "mdr/contact/layer_contact.hpp"
+#include "mdr/profile/profile.hpp"
+
+namespace {
+
+using mdr::contact::Layer;
+using mdr::contact::LayerContact;
+using mdr::contact::LayerInterface;
+
+constexpr double radius = 1e-5;
+constexpr double thickness = 1e-6;
+
+std::shared_ptr<const mdr::profile::Profile> sphere() { return mdr::profile::make_sphere(radius); }
+
+// Hertz: F = (4/3) E* sqrt(R) d^(3/2), a = sqrt(R d).
+double hertz_force(double depth) { return 4.0 / 3.0 * std::sqrt(radius) * std::pow(depth, 1.5); }
+
+// The depth at which a sphere's Hertz contact radius is chi h.
+double depth_at(double chi) { return chi * thickness * chi * thickness / radius; }
+
+mdr::contact::LayerContactState sphere_on_layer(LayerInterface interface, double chi, double poisson_ratio = 0.5,
+                                                std::size_t nodes = mdr::contact::default_layer_nodes) {
+    const LayerContact contact(Layer{thickness, interface}, poisson_ratio, sphere(),
+                               3.0 * chi * thickness, nodes);
+    return contact.at_depth(depth_at(chi), chi * thickness);  // the secant from the Hertz radius
+}
+
+TEST(LayerContact, VeryThickLayerIsTheHertzHalfSpace) {
+    const double depth = 1e-7, a_hertz = std::sqrt(radius * depth);
+    // The layer's first-order effect is (2 k(0) / pi) a / h ~ 1.1 a / h (eq. L7): h = 1e7 a leaves ~1e-7.
+    const LayerContact contact(Layer{1e7 * a_hertz, LayerInterface::bonded}, 0.5, sphere(), 2.0 * a_hertz);
+    const auto state = contact.at_depth(depth);
+    EXPECT_NEAR(state.force / hertz_force(depth), 1.0, 1e-6);
+    EXPECT_NEAR(state.contact_radius / a_hertz, 1.0, 1e-6);
+}
+
+TEST(LayerContact, VeryThickLayerIsTheConeHalfSpace) {
+    // Cone of slope theta: a = 2 d / (pi tan theta), F = E* d a (eq. 24, 25 of the handbook).
+    const double slope = 20.0, depth = 1e-7, tangent = std::tan(slope * std::numbers::pi / 180.0);
+    const double a_cone = 2.0 * depth / (std::numbers::pi * tangent);
+    const LayerContact contact(Layer{1e7 * a_cone, LayerInterface::sliding}, 0.5,
+                               std::shared_ptr<const mdr::profile::Profile>(mdr::profile::make_cone(slope)),
+                               2.0 * a_cone);
+    const auto state = contact.at_depth(depth);
+    EXPECT_NEAR(state.force / (depth * a_cone), 1.0, 1e-6);
+    EXPECT_NEAR(state.contact_radius / a_cone, 1.0, 1e-6);
+}
+
+// Dimitriadis et al., Biophys. J. 82 (2002) 2798, eq. 12: bonded, incompressible.
+double dimitriadis_bonded(double chi) {
+    return 1.0 + 1.133 * chi + 1.283 * chi * chi + 0.769 * std::pow(chi, 3) + 0.0975 * std::pow(chi, 4);
+}
+
+TEST(LayerContact, SmallDepthFirstOrderIsTwoKZeroOverPi) {
+    // F/F_Hertz = 1 + (2 k(0) / pi) chi + O(chi^2) (eq. L7), k(0) = int_0^inf (1 - L(u)) du by adaptive quadrature
+    // in scipy (scipy.integrate.quad of eq. L1, L2): 1.770216773 bonded (nu = 0.5), 1.167576837 sliding.
+    const double chi = 1e-4;
+    for (const auto& [interface, k0] : {std::pair{LayerInterface::bonded, 1.770216773},
+                                        std::pair{LayerInterface::sliding, 1.167576837}}) {
+        const double slope = (sphere_on_layer(interface, chi).force / hertz_force(depth_at(chi)) - 1.0) / chi;
+        // The O(chi^2) term adds (7/6) e^2 / chi ~ 2e-4 to the slope at chi = 1e-4.
+        EXPECT_NEAR(slope, 2.0 * k0 / std::numbers::pi, 3e-4);
+    }
+}
+
+TEST(LayerContact, SmallDepthOnABondedLayerMatchesTheDimitriadisSeries) {
+    // Dimitriadis et al. take the Hertz contact radius a = sqrt(R d); the force-free edge q(a) = 0 (eq. L6) moves
+    // it at first order, which changes the force at second order by (1/6) (c1 chi)^2 ~ 0.2 chi^2 (theory.md,
+    // eq. L7). So the series is met to its first-order coefficient (their alpha_0, a fit in nu, is 0.5% off at
+    // nu = 0.5) and to 0.35 chi^2 beyond: 0.35% at chi = 0.1, 1.4% at chi = 0.2. (Their sliding series has
+    // 0.884 for the first-order coefficient where 2 k(0) / pi = 0.7433: see theory.md, "Layers".)
+    for (const double chi : {0.02, 0.05, 0.1, 0.2}) {
+        const double ratio = sphere_on_layer(LayerInterface::bonded, chi).force / hertz_force(depth_at(chi));
+        EXPECT_NEAR(ratio / dimitriadis_bonded(chi), 1.0, 0.35 * chi * chi) << "chi " << chi;
+    }
+}
+
+TEST(LayerContact, SmallDepthErrorOfTheUniformKernelModelIsThirdOrder) {
+    // With K(y) ~ k(0)/h (eq. L7): F/F_Hertz = y^(3/2), y = 1 + (2/3) e y^(3/2), e = (2 k(0) / pi) chi, exact to
+    // O(chi^2); the rest is O(chi^3): halving chi divides it by ~8. k(0) from scipy as above.
+    for (const auto& [interface, k0] : {std::pair{LayerInterface::bonded, 1.770216773},
+                                        std::pair{LayerInterface::sliding, 1.167576837}}) {
+        const double c1 = 2.0 * k0 / std::numbers::pi;
+        const auto model_error = [&](double chi) {
+            double y = 1.0;
+            for (int i = 0; i < 200; ++i) y = 1.0 + 2.0 / 3.0 * c1 * chi * std::pow(y, 1.5);
+            return sphere_on_layer(interface, chi).force / hertz_force(depth_at(chi)) - std::pow(y, 1.5);
+        };
+        const double coarse = model_error(0.02), fine = model_error(0.01);
+        EXPECT_GT(coarse / fine, 6.5);
+        EXPECT_LT(coarse / fine, 9.5);
+    }
+}
+
+TEST(LayerContact, ThinBondedIncompressibleLayerSqueezesOut) {
+    // Lubrication of a thin incompressible layer, bonded below and shear-free under the indenter (theory.md
+    // eq. L8): p = (3 G / h^3) [d (a^2 - r^2)/4 - (a^4 - r^4)/(32 R)], a^2 = 4 R d, F = 2 pi G R^2 d^3 / h^3,
+    // i.e. F/E* = (pi/2) R^2 d^3 / h^3. Its relative error is O((h/a)^2).
+    const auto ratio = [](double chi) {
+        const double d = depth_at(chi);
+        return sphere_on_layer(LayerInterface::bonded, chi).force /
+               (std::numbers::pi / 2.0 * radius * radius * d * d * d / std::pow(thickness, 3));
+    };
+    const double coarse = ratio(10.0) - 1.0, fine = ratio(20.0) - 1.0;
+    EXPECT_LT(std::abs(fine), 0.015);
+    EXPECT_NEAR(coarse / fine, 4.0, 0.5);
+    const auto state = sphere_on_layer(LayerInterface::bonded, 20.0);
+    EXPECT_NEAR(state.contact_radius / std::sqrt(4.0 * radius * depth_at(20.0)), 1.0, 0.04);
+}
+
+TEST(LayerContact, ThinSlidingAndCompressibleLayersAreWinklerFoundations) {
+    // Long waves in a thin layer (u = xi h -> 0): L ~ u/2 sliding, u (1 - 2 nu) / (2 (1 - nu)^2) bonded: p = k w
+    // with k = E*/h sliding (uniaxial stress), E* (1 - nu)^2 / ((1 - 2 nu) h) bonded (uniaxial strain, theory.md
+    // eq. L9, L10). A sphere on a Winkler bed: a^2 = 2 R d, F = pi k R d^2.
+    const double chi = 20.0, d = depth_at(chi);
+    const auto sliding = sphere_on_layer(LayerInterface::sliding, chi);
+    EXPECT_NEAR(sliding.force / (std::numbers::pi * radius * d * d / thickness), 1.0, 1e-4);
+    // The edge's boundary layer, O(h/a) ~ 0.04 wide, moves the radius by ~0.6% at a/h ~ 28.
+    EXPECT_NEAR(sliding.contact_radius / std::sqrt(2.0 * radius * d), 1.0, 0.01);
+    const double nu = 0.3;
+    const auto bonded = sphere_on_layer(LayerInterface::bonded, chi, nu);
+    const double stiffness = (1.0 - nu) * (1.0 - nu) / ((1.0 - 2.0 * nu) * thickness);
+    EXPECT_NEAR(bonded.force / (std::numbers::pi * stiffness * radius * d * d), 1.0, 0.02);
+}
+
+TEST(LayerContact, ForceConvergesInTheNumberOfNodes) {
+    for (const auto interface : {LayerInterface::bonded, LayerInterface::sliding}) {
+        for (const double chi : {0.5, 2.0, 5.0}) {
+            const double reference = sphere_on_layer(interface, chi, 0.5, 512).force;
+            const double previous = std::abs(sphere_on_layer(interface, chi, 0.5, 16).force / reference - 1.0);
+            const double finer = std::abs(sphere_on_layer(interface, chi, 0.5, 128).force / reference - 1.0);
+            const double standard = std::abs(sphere_on_layer(interface, chi).force / reference - 1.0);
+            EXPECT_LE(finer, previous + 1e-12) << "chi " << chi;
+            EXPECT_LT(standard, 1e-7) << "chi " << chi;
+        }
+    }
+}
+
+TEST(LayerContact, FlatPunchForceIsLinearInDepth) {
+    const auto punch = std::shared_ptr<const mdr::profile::Profile>(mdr::profile::make_flat_punch(thickness));
+    const LayerContact thick(Layer{1e7 * thickness, LayerInterface::bonded}, 0.5, punch, thickness);
+    // Half-space: F = 2 a E* d.
+    EXPECT_NEAR(thick.at_depth(1e-8).force / (2.0 * thickness * 1e-8), 1.0, 1e-6);
+    const LayerContact thin(Layer{thickness, LayerInterface::bonded}, 0.5, punch, thickness);
+    EXPECT_NEAR(thin.at_depth(2e-8).force / thin.at_depth(1e-8).force, 2.0, 1e-12);
+    EXPECT_GT(thin.at_depth(1e-8).force, thick.at_depth(1e-8).force);
+}
+
+}  // namespace
