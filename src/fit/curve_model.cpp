@@ -33,9 +33,8 @@ namespace {
 std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_case, const CurveModel& prepared,
                                             double contact_depth, double baseline) {
     const Curve& curve = *prepared.curve;
-    std::vector<double> depth(curve.depth.size());
-    for (std::size_t i = 0; i < depth.size(); ++i) depth[i] = curve.depth[i] - contact_depth;
-    const auto response = ting_forces(model_case.material, *model_case.indenter, curve.time, depth);
+    // The depth below the contact point, taken in place (no copy of the curve's depth).
+    auto response = ting_forces(model_case.material, *model_case.indenter, curve.time, curve.depth, contact_depth);
     if (!response) return std::nullopt;
     ModelValues model;
     if (prepared.used.size() == response->force.size()) {  // every point (increasing indices): moved, not copied
