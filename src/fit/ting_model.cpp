@@ -392,7 +392,7 @@ bool ting_model_applies(const rheology::Rheology& material, const profile::Profi
 
 std::optional<TingResponse> ting_forces(const rheology::Rheology& material, const profile::Profile& indenter,
                                         const std::vector<double>& time, const std::vector<double>& depth,
-                                        double depth_shift) {
+                                        double depth_shift, bool modulus_derivatives) {
     if (!ting_model_applies(material, indenter) || time.empty()) return std::nullopt;
     // G_inf first (also when 0: its derivative counts), then the terms.
     std::vector<Branch> branches{{material.equilibrium_modulus(), infinity}};
@@ -404,13 +404,15 @@ std::optional<TingResponse> ting_forces(const rheology::Rheology& material, cons
     for (std::size_t i = 1; i < time.size() && loading_end == time.size(); ++i) {
         if (history.depth_at(i - 1) > 0.0 && history.depth_at(i) < history.depth_at(i - 1)) loading_end = i;
     }
-    TingResponse response{std::vector<double>(time.size(), 0.0),
-                          std::vector<std::vector<double>>(branches.size(), std::vector<double>(time.size(), 0.0))};
+    TingResponse response{std::vector<double>(time.size(), 0.0), {}};
+    if (modulus_derivatives) response.modulus_derivatives.assign(branches.size(), std::vector<double>(time.size(), 0.0));
     auto& forces = response.force;
     TingRun run(branches, indenter, history, loading_end < time.size());
     run.reserve(loading_end);
     const auto keep_derivatives = [&](std::size_t i) {
-        for (std::size_t b = 0; b < branches.size(); ++b) response.modulus_derivatives[b][i] = run.modulus_derivatives()[b];
+        for (std::size_t b = 0; b < response.modulus_derivatives.size(); ++b) {
+            response.modulus_derivatives[b][i] = run.modulus_derivatives()[b];
+        }
     };
     enum class Phase { approach, loading, unloading } phase = Phase::approach;
     if (history.depth_at(0) > 0.0) {

@@ -44,9 +44,10 @@ struct TingResponse {
 /// combined material of the case, eq. 8 and 56). A first depth > 0 is reached by a jump at the first time (as the
 /// element model does). The depth is `depth[i] - depth_shift` (the measured depth below a contact point, taken in
 /// place: the history is not copied). nullopt when the history is outside Ting's class or when !ting_model_applies.
-/// Memory: the response, and while the contact grows 2 doubles a step and branch, kept only when it shrinks later.
+/// Without `modulus_derivatives` the response has the force alone. Memory: the response, and while the contact grows
+/// 2 doubles a step and branch, kept only when it shrinks later.
 std::optional<TingResponse> ting_forces(const rheology::Rheology& material, const profile::Profile& indenter,
                                         const std::vector<double>& time, const std::vector<double>& depth,
-                                        double depth_shift = 0.0);
+                                        double depth_shift = 0.0, bool modulus_derivatives = true);
 
 }  // namespace mdr::fit
