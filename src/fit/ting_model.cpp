@@ -405,7 +405,9 @@ std::optional<TingResponse> ting_forces(const rheology::Rheology& material, cons
         if (history.depth_at(i - 1) > 0.0 && history.depth_at(i) < history.depth_at(i - 1)) loading_end = i;
     }
     TingResponse response{std::vector<double>(time.size(), 0.0), {}};
-    if (modulus_derivatives) response.modulus_derivatives.assign(branches.size(), std::vector<double>(time.size(), 0.0));
+    if (modulus_derivatives) {
+        response.modulus_derivatives.assign(branches.size(), std::vector<double>(time.size(), 0.0));
+    }
     auto& forces = response.force;
     TingRun run(branches, indenter, history, loading_end < time.size());
     run.reserve(loading_end);
