@@ -45,12 +45,13 @@ double CurveCost::baseline(const double* nuisance) const {
     return problem_.settings.baseline == BaselineMode::estimate ? curve.force_baseline : 0.0;
 }
 
-std::optional<ModelValues> CurveCost::model(const double* shared, const double* nuisance, ForwardModel forward) const {
+std::optional<ModelValues> CurveCost::model(const double* shared, const double* nuisance, ForwardModel forward,
+                                            bool modulus_derivatives) const {
     if (problem_.settings.check_interrupt) problem_.settings.check_interrupt();
     auto model_case = problem_.model(scales_.values(shared));
     const std::size_t elements = problem_.settings.elements.value_or(model_case.numerics.elements.value_or(elements_));
     auto values = run_curve(std::move(model_case), prepared_, contact_depth(nuisance), baseline(nuisance), elements,
-                            forward, problem_.settings.check_interrupt);
+                            forward, problem_.settings.check_interrupt, modulus_derivatives);
     if (values) {
         ++evaluations_;
         if (forward == ForwardModel::elements) ++element_evaluations_;
@@ -62,7 +63,7 @@ std::optional<ModelValues> CurveCost::model(const double* shared, const double* 
 CurveCost::Outcome CurveCost::residuals_at(const double* shared, const double* nuisance, ForwardModel forward,
                                            double* residuals, ModelValues* run) const {
     try {
-        auto values = model(shared, nuisance, forward);
+        auto values = model(shared, nuisance, forward, run != nullptr);
         if (!values) return Outcome::outside_model;
         const Curve& curve = problem_.curves[curve_];
         const auto& measured = prepared_.fitted == Fitted::force ? curve.force : curve.depth;
@@ -70,7 +71,11 @@ CurveCost::Outcome CurveCost::residuals_at(const double* shared, const double* n
             residuals[i] = (values->values[i] - measured[prepared_.used[i]]) / prepared_.noise;
             if (!std::isfinite(residuals[i])) return Outcome::failed;
         }
-        if (run != nullptr) *run = std::move(*values);
+        if (run != nullptr) {
+            *run = std::move(*values);
+            // The Jacobian reads a run's values only for Euler's identity, i.e. without modulus derivatives.
+            if (!run->modulus_derivatives.empty()) std::vector<double>().swap(run->values);
+        }
         return Outcome::done;
     } catch (const Interrupted&) {
         throw;  // a stop on request ends the fit
@@ -82,8 +87,8 @@ CurveCost::Outcome CurveCost::residuals_at(const double* shared, const double* n
 std::string CurveCost::failure_at(const double* shared, const double* nuisance) const {
     try {
         std::optional<ModelValues> values;
-        if (prepared_.fitted == Fitted::force) values = model(shared, nuisance, ForwardModel::continuum);
-        if (!values) values = model(shared, nuisance, ForwardModel::elements);
+        if (prepared_.fitted == Fitted::force) values = model(shared, nuisance, ForwardModel::continuum, false);
+        if (!values) values = model(shared, nuisance, ForwardModel::elements, false);
         const Curve& curve = problem_.curves[curve_];
         const auto& measured = prepared_.fitted == Fitted::force ? curve.force : curve.depth;
         for (std::size_t i = 0; i < values->values.size(); ++i) {

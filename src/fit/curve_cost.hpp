@@ -52,9 +52,11 @@ private:
     /// What an evaluation with one forward model gave.
     enum class Outcome { done, failed, outside_model };
     /// The model of the fitted quantity at the used points (contact point and baseline included): one forward run;
-    /// nullopt when the continuum model was asked for and does not apply.
-    std::optional<ModelValues> model(const double* shared, const double* nuisance, ForwardModel forward) const;
-    /// Residuals of one run; `run`, when given, keeps the run (its modulus derivatives).
+    /// nullopt when the continuum model was asked for and does not apply; the continuum model's modulus derivatives
+    /// only when asked for.
+    std::optional<ModelValues> model(const double* shared, const double* nuisance, ForwardModel forward,
+                                     bool modulus_derivatives = true) const;
+    /// Residuals of one run; `run`, when given, keeps the run (its modulus derivatives, which only a kept run has).
     Outcome residuals_at(const double* shared, const double* nuisance, ForwardModel forward, double* residuals,
                          ModelValues* run = nullptr) const;
     /// When parameter j changes nothing but the material's moduli near `values` (same relaxation times, dashpot

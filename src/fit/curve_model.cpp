@@ -31,11 +31,11 @@ namespace {
 
 // The continuum model's force at the used points, plus the baseline, and its derivatives; nullopt outside its class.
 std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_case, const CurveModel& prepared,
-                                            double contact_depth, double baseline) {
+                                            double contact_depth, double baseline, bool modulus_derivatives) {
     const Curve& curve = *prepared.curve;
-    std::vector<double> depth(curve.depth.size());
-    for (std::size_t i = 0; i < depth.size(); ++i) depth[i] = curve.depth[i] - contact_depth;
-    const auto response = ting_forces(model_case.material, *model_case.indenter, curve.time, depth);
+    // The depth below the contact point, taken in place (no copy of the curve's depth).
+    auto response = ting_forces(model_case.material, *model_case.indenter, curve.time, curve.depth, contact_depth,
+                                modulus_derivatives);
     if (!response) return std::nullopt;
     ModelValues model;
     if (prepared.used.size() == response->force.size()) {  // every point (increasing indices): moved, not copied
@@ -58,12 +58,13 @@ std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_ca
 
 std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const CurveModel& prepared,
                                      double contact_depth, double baseline, std::size_t elements,
-                                     ForwardModel forward_model, const std::function<void()>& check_interrupt) {
+                                     ForwardModel forward_model, const std::function<void()>& check_interrupt,
+                                     bool modulus_derivatives) {
     const Curve& curve = *prepared.curve;
     const bool depth_driven = prepared.fitted == Fitted::force;
     if (forward_model == ForwardModel::continuum) {
         if (!depth_driven) return std::nullopt;
-        return continuum_forces(model_case, prepared, contact_depth, baseline);
+        return continuum_forces(model_case, prepared, contact_depth, baseline, modulus_derivatives);
     }
     std::vector<drivers::LoadPoint> points;
     points.reserve(curve.time.size() + 1);

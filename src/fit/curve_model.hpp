@@ -46,10 +46,12 @@ struct ModelValues {
 /// with `elements` elements and the curve's own points as time steps (the depth model is the depth below the
 /// contact point); ForwardModel::continuum computes the force of a depth-driven curve exactly (ting_forces) and
 /// gives nullopt where that model does not apply. `check_interrupt`, when set, is called at the drivers' progress
-/// reports (it may throw mdr::Interrupted). Throws what the drivers throw.
+/// reports (it may throw mdr::Interrupted). Without `modulus_derivatives` the continuum model leaves them out (a run
+/// whose values alone are read: half its memory for an elastic material). Throws what the drivers throw.
 std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const CurveModel& prepared,
                                      double contact_depth, double baseline, std::size_t elements,
-                                     ForwardModel forward_model, const std::function<void()>& check_interrupt = {});
+                                     ForwardModel forward_model, const std::function<void()>& check_interrupt = {},
+                                     bool modulus_derivatives = true);
 
 
 }  // namespace mdr::fit

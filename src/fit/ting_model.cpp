@@ -59,115 +59,122 @@ private:
     std::vector<std::array<double, ExponentialRule::points>> weights_;
 };
 
-// The state of the foundation for one history: the loading record (a node per step while the contact radius grows or
-// holds, the first node the instant of first contact) with each branch's running sums
+// The depth history of ting_forces: the caller's points, read in place (a curve may have 10^7 of them), the depth
+// below the contact point taken point by point.
+struct History {
+    const std::vector<double>& time;
+    const std::vector<double>& depth;
+    double depth_shift;
+    double depth_at(std::size_t i) const { return depth[i] - depth_shift; }
+};
+
+// The state of the foundation for one history: the loading nodes (a node per step while the contact radius grows or
+// holds, node 0 the instant of first contact, node k >= 1 the history's point first + k - 1) with each branch's
+// running sums
 //   Q_b(t) = int exp(-(t - s) / tau_b) d'(s) ds,   R_b(t) = int exp(-(t - s) / tau_b) a(s) d'(s) ds
-// from first contact, then the edge t_1 while the contact shrinks.
+// from first contact, then the edge t_1 while the contact shrinks. Only an unloading reads the sums of earlier
+// nodes: they are recorded when one follows (`record`), else only the last node's are kept.
 class TingRun {
 public:
-    TingRun(const std::vector<Branch>& branches, const profile::Profile& indenter)
-        : branches_(branches), indenter_(indenter), factors_(branches), now_q_(branches.size()),
+    TingRun(const std::vector<Branch>& branches, const profile::Profile& indenter, const History& history, bool record)
+        : branches_(branches), indenter_(indenter), history_(history), record_(record), factors_(branches),
+          last_q_(branches.size(), 0.0), last_r_(branches.size(), 0.0), now_q_(branches.size()),
           decay_since_peak_(branches.size()), derivative_(branches.size(), 0.0) {}
 
-    // Room for a record of `steps` steps: the record grows without copies (a curve may have 10^7 points).
+    // Room for a record of `steps` loading steps: the record grows without copies.
     void reserve(std::size_t steps) {
-        const std::size_t n = branches_.size();
-        times_.reserve(steps + 1);
-        depths_.reserve(steps + 1);
-        q_.reserve((steps + 1) * n);
-        r_.reserve((steps + 1) * n);
-        interval_decay_.reserve(steps * n);
+        if (!record_) return;
+        q_.reserve((steps + 1) * branches_.size());
+        r_.reserve((steps + 1) * branches_.size());
     }
 
-    // The first contact at time `start` (depth 0).
-    void touch(double start) {
-        times_.push_back(start);
-        depths_.push_back(0.0);
-        for (std::size_t b = 0; b < branches_.size(); ++b) {
-            q_.push_back(0.0);
-            r_.push_back(0.0);
-        }
+    // The first contact at time `start` (depth 0); the next node is the history's point `next`.
+    void touch(double start, std::size_t next) {
+        start_ = start;
+        first_ = next;
+        nodes_ = 1;
+        keep_sums();
     }
 
-    double last_depth() const { return depths_.back(); }
+    double last_depth() const { return node_depth(nodes_ - 1); }
 
-    // The contact grows or holds to (time, depth), depth >= last_depth(); returns the force (eq. 21).
-    double load(double time, double depth) {
-        const std::size_t k = times_.size() - 1, n = branches_.size();
-        const double span = time - times_[k];
-        const double rate = (depth - depths_[k]) / span;
+    // The contact grows or holds to the history's next point, depth >= last_depth(); returns the force (eq. 21).
+    double load() {
+        const std::size_t k = nodes_ - 1, n = branches_.size();
+        const double time = node_time(k + 1), depth = node_depth(k + 1);
+        const double span = time - node_time(k);
+        const double rate = (depth - node_depth(k)) / span;
         factors_.set(span);
         std::array<double, ExponentialRule::points> radii{};
-        const bool early = early_step(depths_[k], depth - depths_[k]);
+        const double depth_start = node_depth(k);
+        const bool early = early_step(depth_start, depth - depth_start);
         if (rate > 0.0 && !early) {
             for (std::size_t j = 0; j < radii.size(); ++j) {
-                radii[j] = indenter_.contact_radius(depths_[k] + (depth - depths_[k]) * ExponentialRule::nodes()[j]);
+                radii[j] = indenter_.contact_radius(depth_start + (depth - depth_start) * ExponentialRule::nodes()[j]);
             }
         }
-        times_.push_back(time);
-        depths_.push_back(depth);
+        ++nodes_;
+        note_interval_decay([&](std::size_t b) { return factors_.decay(b); });
         double force = 0.0;
         for (std::size_t b = 0; b < n; ++b) {
             const double decay = factors_.decay(b);
             double memory = 0.0;  // int_step exp(-(time - s) / tau) a(s) ds
             if (rate > 0.0) {
                 if (early) {
-                    memory = radius_integral(k, times_[k], time, branches_[b].time);
+                    memory = radius_integral(k, node_time(k), time, branches_[b].time);
                 } else {
                     const auto& w = factors_.weights(b);
                     for (std::size_t j = 0; j < radii.size(); ++j) memory += w[j] * radii[j];
                     memory *= span;
                 }
             }
-            const double q = decay * q_[k * n + b] + rate * factors_.relaxed_span(b);
-            const double r = decay * r_[k * n + b] + rate * memory;
-            q_.push_back(q);
-            r_.push_back(r);
-            interval_decay_.push_back(decay);
-            derivative_[b] = 8.0 * r;  // the contact history does not depend on the moduli while it grows
-            force += branches_[b].modulus * r;
+            last_q_[b] = decay * last_q_[b] + rate * factors_.relaxed_span(b);
+            last_r_[b] = decay * last_r_[b] + rate * memory;
+            derivative_[b] = 8.0 * last_r_[b];  // the contact history does not depend on the moduli while it grows
+            force += branches_[b].modulus * last_r_[b];
         }
+        keep_sums();
         return 8.0 * force;
     }
 
     // A history that starts in contact: the depth jumps from 0 to `depth` at the first contact (the element model's
     // convention for a first point in contact). Every branch takes the whole jump: Q_b = depth and
     // R_b = int_0^depth a(d') dd' (the elastic integral of eq. 21). Returns the force 8 G(0) R.
-    double jump(double depth) {
-        const double time = times_.back();
+    double jump() {
+        const double depth = node_depth(1);
         const double integral = exponential_integral(
             [&](double d) { return indenter_.contact_radius(d); }, 0.0, depth, infinity, true);
-        times_.push_back(time);
-        depths_.push_back(depth);
+        ++nodes_;
+        note_interval_decay([](std::size_t) { return 1.0; });
         double force = 0.0;
         for (std::size_t b = 0; b < branches_.size(); ++b) {
-            q_.push_back(depth);
-            r_.push_back(integral);
-            interval_decay_.push_back(1.0);
+            last_q_[b] = depth;
+            last_r_[b] = integral;
             derivative_[b] = 8.0 * integral;
             force += branches_[b].modulus * integral;
         }
+        keep_sums();
         return 8.0 * force;
     }
 
     // The first step of unloading: the edge sits at the last node; the branches' factors exp(-(t_K - t_k) / tau)
     // relative to the last loading time t_K are taken once.
     void begin_unloading() {
-        const std::size_t n = branches_.size(), last = times_.size() - 1;
-        to_peak_.assign(times_.size() * n, 1.0);
+        const std::size_t n = branches_.size(), last = nodes_ - 1;
+        to_peak_.assign(nodes_ * n, 1.0);
         for (std::size_t k = last; k-- > 0;) {
-            for (std::size_t b = 0; b < n; ++b) to_peak_[k * n + b] = to_peak_[(k + 1) * n + b] * interval_decay_[k * n + b];
+            for (std::size_t b = 0; b < n; ++b) to_peak_[k * n + b] = to_peak_[(k + 1) * n + b] * interval_decay(k, b);
         }
         for (std::size_t b = 0; b < n; ++b) {
-            now_q_[b] = q_[last * n + b];
+            now_q_[b] = last_q_[b];
             decay_since_peak_[b] = 1.0;
         }
-        now_time_ = times_[last];
+        now_time_ = node_time(last);
         edge_interval_ = last - 1;
         edge_offset_ = extent(edge_interval_);
         double scale = 0.0;
         for (const auto& branch : branches_) scale += branch.modulus;
-        tolerance_ = 1e-12 * scale * depths_[last];
+        tolerance_ = 1e-12 * scale * node_depth(last);
     }
 
     // An unloading (or any later) step to (time, depth); nullopt when the edge would move outwards again.
@@ -208,8 +215,37 @@ public:
 private:
     // A loading interval is a step in time (offsets in it are times since its start) or, for a history that starts
     // in contact, the jump at its first instant (length 0; offsets are depths above its start).
-    bool is_jump(std::size_t m) const { return times_[m + 1] == times_[m]; }
-    double extent(std::size_t m) const { return is_jump(m) ? depths_[m + 1] - depths_[m] : times_[m + 1] - times_[m]; }
+    bool is_jump(std::size_t m) const { return node_time(m + 1) == node_time(m); }
+    double extent(std::size_t m) const {
+        return is_jump(m) ? node_depth(m + 1) - node_depth(m) : node_time(m + 1) - node_time(m);
+    }
+
+    double node_time(std::size_t k) const { return k == 0 ? start_ : history_.time[first_ + k - 1]; }
+    double node_depth(std::size_t k) const { return k == 0 ? 0.0 : history_.depth_at(first_ + k - 1); }
+
+    // The last node's sums into the record, when one is kept.
+    void keep_sums() {
+        if (!record_) return;
+        q_.insert(q_.end(), last_q_.begin(), last_q_.end());
+        r_.insert(r_.end(), last_r_.begin(), last_r_.end());
+    }
+    // exp(-(t_{k+1} - t_k) / tau_b) of the interval just loaded, `decay(b)`: kept once per run of equal factors (the
+    // steps of a measured curve share one), the record's intervals from decay_runs_start_[s] on use run s.
+    template <class Decay>
+    void note_interval_decay(Decay decay) {
+        if (!record_) return;
+        const std::size_t n = branches_.size(), interval = nodes_ - 2;
+        bool same = !decay_runs_start_.empty();
+        for (std::size_t b = 0; b < n && same; ++b) same = decay_runs_[decay_runs_.size() - n + b] == decay(b);
+        if (same) return;
+        decay_runs_start_.push_back(interval);
+        for (std::size_t b = 0; b < n; ++b) decay_runs_.push_back(decay(b));
+    }
+    double interval_decay(std::size_t m, std::size_t b) const {
+        const auto run = std::upper_bound(decay_runs_start_.begin(), decay_runs_start_.end(), m) -
+                         decay_runs_start_.begin() - 1;
+        return decay_runs_[static_cast<std::size_t>(run) * branches_.size() + b];
+    }
 
     // Psi(t_k, t) of the element that entered at node k: sum_b G_b (Q_b(t) - exp(-(t - t_k)/tau_b) Q_b(t_k)).
     double node_memory(std::size_t k) const {
@@ -242,12 +278,12 @@ private:
             const double factor = decay_since_peak_[b] * to_peak_[m * n + b];
             return {now_q_[b] - factor * (q_[m * n + b] + u), -factor};
         }
-        const double length = times_[m + 1] - times_[m];
-        const double rate = (depths_[m + 1] - depths_[m]) / length;
+        const double length = node_time(m + 1) - node_time(m);
+        const double rate = (node_depth(m + 1) - node_depth(m)) / length;
         const double tau = branches_[b].time;
         const double to_end = std::exp(-(length - u) / tau);  // exp(-(t_{m+1} - t_1)/tau)
         const double factor = decay_since_peak_[b] * to_peak_[(m + 1) * n + b];
-        const double entered = factor * (interval_decay_[m * n + b] * q_[m * n + b] + rate * to_end * relaxed(u, tau));
+        const double entered = factor * (interval_decay(m, b) * q_[m * n + b] + rate * to_end * relaxed(u, tau));
         return {now_q_[b] - entered, -rate * factor * to_end};
     }
     double edge_memory(std::size_t m, double u) const { return interval_memory(m, u).first; }
@@ -281,12 +317,13 @@ private:
     double edge_force(std::size_t m, double u, bool placed) {
         const std::size_t n = branches_.size();
         const bool jump = is_jump(m);
-        const double length = times_[m + 1] - times_[m];
-        const double rate = jump ? 0.0 : (depths_[m + 1] - depths_[m]) / length;
-        const double edge_depth = jump ? depths_[m] + u : depths_[m] + rate * u;
+        const double length = node_time(m + 1) - node_time(m);
+        const double rate = jump ? 0.0 : (node_depth(m + 1) - node_depth(m)) / length;
+        const double edge_depth = jump ? node_depth(m) + u : node_depth(m) + rate * u;
         // R(t_1) = R_m + int_{d_m}^{d_m + u} a(d') dd' inside a jump.
         const double jump_integral = jump ? exponential_integral([&](double d) { return indenter_.contact_radius(d); },
-                                                                 depths_[m], edge_depth, infinity, depths_[m] <= 0.0)
+                                                                 node_depth(m), edge_depth, infinity,
+                                                                 node_depth(m) <= 0.0)
                                           : 0.0;
         const double edge_radius = placed ? indenter_.contact_radius(edge_depth) : 0.0;
         double force = 0.0;
@@ -298,7 +335,9 @@ private:
                 const double tau = branches_[b].time;
                 const double to_edge = decay_since_peak_[b] * to_peak_[(m + 1) * n + b] * std::exp(-(length - u) / tau);
                 value = decay_since_peak_[b] * to_peak_[m * n + b] * r_[m * n + b];
-                if (rate > 0.0 && u > 0.0) value += to_edge * rate * radius_integral(m, times_[m], times_[m] + u, tau);
+                if (rate > 0.0 && u > 0.0) {
+                    value += to_edge * rate * radius_integral(m, node_time(m), node_time(m) + u, tau);
+                }
             }
             derivative_[b] = 8.0 * (value + (placed ? edge_radius * branch_memory(m, u, b).first : 0.0));
             force += branches_[b].modulus * value;
@@ -308,9 +347,9 @@ private:
 
     // int_{s_a}^{s_b} exp(-(s_b - s)/tau) a(s) ds inside loading interval m (s_a = t_m), a(s) = g^-1(d(s)).
     double radius_integral(std::size_t m, double s_a, double s_b, double tau) const {
-        const double length = times_[m + 1] - times_[m];
-        const double rate = (depths_[m + 1] - depths_[m]) / length;
-        const double depth_start = depths_[m];
+        const double length = node_time(m + 1) - node_time(m);
+        const double rate = (node_depth(m + 1) - node_depth(m)) / length;
+        const double depth_start = node_depth(m);
         const auto radius = [&](double s) { return indenter_.contact_radius(depth_start + rate * (s - s_a)); };
         if (early_step(depth_start, rate * (s_b - s_a))) {
             return exponential_integral(radius, s_a, s_b, tau, depth_start <= 0.0);
@@ -323,9 +362,16 @@ private:
 
     const std::vector<Branch>& branches_;
     const profile::Profile& indenter_;
+    const History& history_;
+    bool record_;
     StepFactors factors_;
-    // The loading record, node-major: q_[k * branches + b].
-    std::vector<double> times_, depths_, q_, r_, interval_decay_, to_peak_;
+    double start_ = 0.0;     // the time of first contact (node 0)
+    std::size_t first_ = 0;  // the history's point of node 1
+    std::size_t nodes_ = 0;
+    std::vector<double> last_q_, last_r_;  // the last node's sums
+    // The loading record, node-major: q_[k * branches + b]; the runs of equal interval decays, run-major.
+    std::vector<double> q_, r_, decay_runs_, to_peak_;
+    std::vector<std::size_t> decay_runs_start_;
     // While unloading: Q_b now, exp(-(t - t_K)/tau_b), the edge's interval and offset in it.
     std::vector<double> now_q_, decay_since_peak_;
     double now_time_ = 0.0;
@@ -343,46 +389,58 @@ bool ting_model_applies(const rheology::Rheology& material, const profile::Profi
 }
 
 std::optional<TingResponse> ting_forces(const rheology::Rheology& material, const profile::Profile& indenter,
-                                        const std::vector<double>& time, const std::vector<double>& depth) {
+                                        const std::vector<double>& time, const std::vector<double>& depth,
+                                        double depth_shift, bool modulus_derivatives) {
     if (!ting_model_applies(material, indenter) || time.empty()) return std::nullopt;
     // G_inf first (also when 0: its derivative counts), then the terms.
     std::vector<Branch> branches{{material.equilibrium_modulus(), infinity}};
     for (const auto& term : material.terms()) branches.push_back({term.modulus, term.relaxation_time});
 
-    TingResponse response{std::vector<double>(time.size(), 0.0),
-                          std::vector<std::vector<double>>(branches.size(), std::vector<double>(time.size(), 0.0))};
+    const History history{time, depth, depth_shift};
+    // The loading ends at the first step in contact whose depth falls: the record is needed (up to there) only then.
+    std::size_t loading_end = time.size();
+    for (std::size_t i = 1; i < time.size() && loading_end == time.size(); ++i) {
+        if (history.depth_at(i - 1) > 0.0 && history.depth_at(i) < history.depth_at(i - 1)) loading_end = i;
+    }
+    TingResponse response{std::vector<double>(time.size(), 0.0), {}};
+    if (modulus_derivatives) {
+        response.modulus_derivatives.assign(branches.size(), std::vector<double>(time.size(), 0.0));
+    }
     auto& forces = response.force;
-    TingRun run(branches, indenter);
-    run.reserve(time.size());
+    TingRun run(branches, indenter, history, loading_end < time.size());
+    run.reserve(loading_end);
     const auto keep_derivatives = [&](std::size_t i) {
-        for (std::size_t b = 0; b < branches.size(); ++b) response.modulus_derivatives[b][i] = run.modulus_derivatives()[b];
+        for (std::size_t b = 0; b < response.modulus_derivatives.size(); ++b) {
+            response.modulus_derivatives[b][i] = run.modulus_derivatives()[b];
+        }
     };
     enum class Phase { approach, loading, unloading } phase = Phase::approach;
-    if (depth.front() > 0.0) {
-        run.touch(time.front());
-        forces.front() = run.jump(depth.front());
+    if (history.depth_at(0) > 0.0) {
+        run.touch(time.front(), 0);
+        forces.front() = run.jump();
         keep_derivatives(0);
         phase = Phase::loading;
     }
     for (std::size_t i = 1; i < time.size(); ++i) {
+        const double depth_now = history.depth_at(i), depth_before = history.depth_at(i - 1);
         if (phase == Phase::approach) {
-            if (depth[i] <= 0.0) continue;
+            if (depth_now <= 0.0) continue;
             // First contact inside this step, where the linear depth crosses 0.
-            double start = time[i - 1] + (time[i] - time[i - 1]) * (-depth[i - 1]) / (depth[i] - depth[i - 1]);
+            double start = time[i - 1] + (time[i] - time[i - 1]) * (-depth_before) / (depth_now - depth_before);
             if (!(start < time[i])) start = time[i - 1];  // a crossing lost in round-off at the step's end
-            run.touch(start);
+            run.touch(start, i);
             phase = Phase::loading;
         }
         if (phase == Phase::loading) {
-            if (depth[i] >= run.last_depth()) {
-                forces[i] = run.load(time[i], depth[i]);
+            if (depth_now >= run.last_depth()) {
+                forces[i] = run.load();
                 keep_derivatives(i);
                 continue;
             }
             run.begin_unloading();
             phase = Phase::unloading;
         }
-        const auto force = run.unload(time[i], depth[i], depth[i - 1]);
+        const auto force = run.unload(time[i], depth_now, depth_before);
         if (!force) return std::nullopt;
         forces[i] = *force;
         keep_derivatives(i);

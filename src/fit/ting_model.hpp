@@ -42,8 +42,12 @@ struct TingResponse {
 /// The force [N] at each time of a depth history through the points (time[i], depth[i]) (linear between them,
 /// times increasing, depth below the contact point: <= 0 out of contact), incompressible body of `material` (the
 /// combined material of the case, eq. 8 and 56). A first depth > 0 is reached by a jump at the first time (as the
-/// element model does). nullopt when the history is outside Ting's class or when !ting_model_applies.
+/// element model does). The depth is `depth[i] - depth_shift` (the measured depth below a contact point, taken in
+/// place: the history is not copied). nullopt when the history is outside Ting's class or when !ting_model_applies.
+/// Without `modulus_derivatives` the response has the force alone. Memory: the response, and while the contact grows
+/// 2 doubles a step and branch, kept only when it shrinks later.
 std::optional<TingResponse> ting_forces(const rheology::Rheology& material, const profile::Profile& indenter,
-                                        const std::vector<double>& time, const std::vector<double>& depth);
+                                        const std::vector<double>& time, const std::vector<double>& depth,
+                                        double depth_shift = 0.0, bool modulus_derivatives = true);
 
 }  // namespace mdr::fit

@@ -245,6 +245,31 @@ TEST(TingModel, RefusesHistoriesOutsideTingsClass) {
     EXPECT_TRUE(ting_forces(material, *sphere, time, load_hold_unload).has_value());
 }
 
+// The measured depth with its contact point taken in place (depth_shift, as the fit passes it to avoid a copy of a
+// long curve) is the run of the shifted depth, bit for bit, and a run without the modulus derivatives gives the same
+// forces: the stated rule of ting_forces, for approach, load, hold and unloading to separation, and a start in contact.
+TEST(TingModel, ShiftedDepthInPlaceIsTheRunOfTheShiftedDepth) {
+    const auto sphere = profile::make_sphere(1e-3);
+    const auto material = rheology::Rheology::prony(1e5, {{2e5, 0.01}, {3e5, 0.3}});
+    const auto time = uniform(-0.1, 3.0, 311);
+    const double contact = 3e-5;
+    for (const double start : {0.0, 2e-5}) {  // the first point out of contact, or in contact
+        std::vector<double> measured, shifted;
+        for (double t : time) {
+            measured.push_back(contact + start + (t < 1.0 ? 1e-4 * t : t < 1.5 ? 1e-4 : 1e-4 * (2.5 - t)));
+            shifted.push_back(measured.back() - contact);
+        }
+        const auto reference = ting_forces(material, *sphere, time, shifted);
+        const auto in_place = ting_forces(material, *sphere, time, measured, contact);
+        const auto force_alone = ting_forces(material, *sphere, time, measured, contact, false);
+        ASSERT_TRUE(reference && in_place && force_alone);
+        EXPECT_EQ(in_place->force, reference->force);
+        EXPECT_EQ(in_place->modulus_derivatives, reference->modulus_derivatives);
+        EXPECT_EQ(force_alone->force, reference->force);
+        EXPECT_TRUE(force_alone->modulus_derivatives.empty());
+    }
+}
+
 // A history that starts in contact jumps to its first depth at its first time, as the element model's history does:
 // load-hold-unload from 20 % of the peak depth, against the drivers' element model at 1000 and 4000 elements, whose
 // error falls as N^-2 towards the continuum.
