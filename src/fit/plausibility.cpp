@@ -65,7 +65,8 @@ void add_modulus_flag(const io::UnitSystem& system, FitResult& result) {
 }
 
 // A start or fitted value of a shear-modulus key (is_shear_modulus; a spectrum's moduli, which may be 0 or tiny
-// by design, aside) outside least_modulus_pa to greatest_modulus_pa: one flag naming the key.
+// by design, aside) outside least_modulus_pa to greatest_modulus_pa: one flag naming the key. A fitted value that the
+// data do not determine (FitResult::undetermined, e.g. a term driven to its bound) is reported there instead.
 void add_modulus_key_flags(const FitProblem& problem, const io::UnitSystem& system, FitResult& result) {
     const double pascal = system.force_size / (system.length_size * system.length_size);  // one pressure unit [Pa]
     auto implausible = [&](double value) {
@@ -74,8 +75,11 @@ void add_modulus_key_flags(const FitProblem& problem, const io::UnitSystem& syst
     for (std::size_t j = 0; j < result.names.size() && j < problem.parameters.size(); ++j) {
         const std::string& name = result.names[j];
         if (!is_shear_modulus(name) || name.rfind("spectrum.", 0) == 0) continue;
+        const bool undetermined = std::any_of(result.undetermined.begin(), result.undetermined.end(),
+                                              [&](const Undetermined& entry) { return entry.name == name; });
+        const double fitted = undetermined ? 0.0 : result.values[j];  // 0: not checked
         const std::pair<const char*, double> checked[2] = {{"start value", problem.parameters[j].start},
-                                                           {"fitted value", result.values[j]}};
+                                                           {"fitted value", fitted}};
         for (const auto& [which, value] : checked) {
             if (!implausible(value)) continue;
             result.flags.push_back(fmt::format(

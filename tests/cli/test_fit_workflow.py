@@ -257,9 +257,13 @@ def test_each_candidates_modulus_is_checked(run_mdr, workdir):
     (workdir / "case.toml").write_text(case)
     result = run_mdr("fit", workdir / "case.toml", "--out", workdir / "out", timeout=300)
     assert result.returncode in (0, 1), result.stderr
-    for model, key in (("elastic", "material.G"), ("standard", "material.G_inf")):
+    for model in ("elastic", "standard"):
         flags = json.loads((workdir / "out" / model / "fit.json").read_text())["flags"]
-        assert any(flag.startswith(f"{key}: the fitted value ") and "1 Pa to 1e+12 Pa" in flag for flag in flags), flags
+        assert any(flag.startswith("the fitted G(t) spans 0.2 to 0.2 Pa") for flag in flags), flags
+    # The elastic G is determined: its key is named (the standard solid's G1 and tau1 are undetermined on Hertz data,
+    # and an undetermined value is reported as such, not as a unit error).
+    flags = json.loads((workdir / "out" / "elastic" / "fit.json").read_text())["flags"]
+    assert any(flag.startswith("material.G: the fitted value 0.2") for flag in flags), flags
 
 
 def test_several_curve_tables_share_one_material(run_mdr, workdir):

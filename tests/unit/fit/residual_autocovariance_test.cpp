@@ -60,7 +60,8 @@ TEST(ResidualAutocovariance, BandedProductIsTheToeplitzMatrixTimesTheColumns) {
         }
     }
     const Eigen::MatrixXd columns = Eigen::MatrixXd::Random(n, 3);
-    EXPECT_LT((apply_autocovariance(autocovariance, columns) - dense * columns).norm(), 1e-12 * (dense * columns).norm());
+    const Eigen::MatrixXd expected = dense * columns;
+    EXPECT_LT((apply_autocovariance(autocovariance, columns) - expected).norm(), 1e-12 * expected.norm());
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(dense);
     EXPECT_GE(eigen.eigenvalues().minCoeff(), -1e-12 * eigen.eigenvalues().maxCoeff());
 }
