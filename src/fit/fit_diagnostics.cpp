@@ -183,9 +183,8 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
 // count. The errors are those of a moving-block bootstrap over each curve's residuals, linearised: refitting
 // model + resampled residuals moves the parameters by (J^T J)^+ J^T r*, and blocks of b rows keep the residuals'
 // autocovariance gamma(l) for lags below b (Künsch 1989, Ann. Stat. 17:1217), so the covariance is the sandwich
-// (J^T J)^+ J^T C J (J^T J)^+ with C_ij = gamma(|i - j|) (1 - |i - j| / b) for |i - j| < b within a curve
-// (residual_autocovariance: AR(1) gamma, b = 4 x the first zero crossing of the residuals' autocorrelation) and
-// s^2 I for rebound data and white curves (White 1980,
+// (J^T J)^+ J^T C J (J^T J)^+ with C_ij = gamma(|i - j|) for |i - j| < b within a curve (residual_autocovariance;
+// b is the first zero crossing of the autocorrelation) and s^2 I for rebound data and white curves (White 1980,
 // Econometrica 48:817). Unlike an AR(1) model of the errors, whose coefficient goes to 1 for a smooth misfit and
 // then counts the whole record as one point, the blocks end where the residual changes sign. The fit absorbs more
 // of correlated errors than k white degrees of freedom: E[RSS] = n gamma(0) (1 - tr(H R) / n) with R = C / gamma(0)
@@ -206,13 +205,10 @@ Eigen::MatrixXd honest_covariance(const Stacked& stacked, double variance_scale,
         points += static_cast<double>(count);
         if (above_model_accuracy(curve) && correlated(curve.residual_correlation, count)) {
             const auto autocovariance = residual_autocovariance(stacked.residuals.segment(begin, count));
-            for (Eigen::Index j = 0; j < stacked.jacobian.cols(); ++j) {  // the other curves' columns are 0 here
-                const auto column = stacked.jacobian.col(j).segment(begin, count);
-                if (column.isZero(0.0)) continue;
-                covariance_times_jacobian.col(j).segment(begin, count) = apply_autocovariance(autocovariance, column);
-                correlation_times_jacobian.col(j).segment(begin, count) =
-                    covariance_times_jacobian.col(j).segment(begin, count) / autocovariance.gamma[0];
-            }
+            const auto rows = stacked.jacobian.middleRows(begin, count);
+            covariance_times_jacobian.middleRows(begin, count) = apply_autocovariance(autocovariance, rows);
+            correlation_times_jacobian.middleRows(begin, count) =
+                covariance_times_jacobian.middleRows(begin, count) / autocovariance.gamma[0];
             curve.effective_points = autocovariance.effective_points;
             longest_block = std::max(longest_block, autocovariance.block_length);
         }
