@@ -10,7 +10,6 @@
 #include <stdexcept>
 
 #include "data_window.hpp"
-#include "residual_autocovariance.hpp"
 
 namespace mdr::fit {
 
@@ -69,9 +68,25 @@ double lag_one_correlation(const Eigen::VectorXd& r, Eigen::Index begin, Eigen::
     return squared > 0.0 ? lagged / squared : 0.0;
 }
 
-// A curve's residuals are correlated when their lag-1 autocorrelation rho is beyond chance for white residuals
-// (above 2 / sqrt(n): white residuals' rho has standard deviation 1 / sqrt(n)).
-bool correlated(double rho, Eigen::Index count) { return rho > 2.0 / std::sqrt(static_cast<double>(count)); }
+// The AR(1) coefficient of a curve's errors from the lag-1 autocorrelation rho of its n residuals: 0 (white) unless
+// rho is beyond chance for white residuals (above 2 / sqrt(n): their rho has standard deviation 1 / sqrt(n));
+// else rho plus its bias (1 + 4 rho) / n (Marriott & Pope 1954, Biometrika 41:390, for an estimated mean), at most
+// (n - 1) / (n + 1) (n_eff >= 1).
+double error_correlation(double rho, Eigen::Index count) {
+    const auto n = static_cast<double>(count);
+    if (!(rho > 2.0 / std::sqrt(n))) return 0.0;
+    return std::min(rho + (1.0 + 4.0 * rho) / n, (n - 1.0) / (n + 1.0));
+}
+
+// P x for the AR(1) correlation matrix P_ij = phi^|i - j| (in place): a forward and a backward recursion,
+// P x = f + b - x with f_i = x_i + phi f_(i-1), b_i = x_i + phi b_(i+1).
+void apply_correlation(Eigen::Ref<Eigen::VectorXd> x, double phi) {
+    const Eigen::Index m = x.size();
+    Eigen::VectorXd forward = x, backward = x;
+    for (Eigen::Index i = 1; i < m; ++i) forward[i] += phi * forward[i - 1];
+    for (Eigen::Index i = m - 2; i >= 0; --i) backward[i] += phi * backward[i + 1];
+    x = forward + backward - x;
+}
 
 // A curve's residual RMS is above 1e-5 of its largest |value|, the model's own accuracy (the element model's
 // discretisation error is ~1e-6 (1000 / N)^2 of the peak, see default_fit_elements): below it the residuals are
@@ -180,52 +195,42 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
 }
 
 // Autocorrelated residuals (a misfit's systematic ones, or correlated noise) carry less information than their
-// count. The errors are those of a moving-block bootstrap over each curve's residuals, linearised: refitting
-// model + resampled residuals moves the parameters by (J^T J)^+ J^T r*, and blocks of b rows keep the residuals'
-// autocovariance gamma(l) for lags below b (Künsch 1989, Ann. Stat. 17:1217), so the covariance is the sandwich
-// (J^T J)^+ J^T C J (J^T J)^+ with C_ij = gamma(|i - j|) for |i - j| < b within a curve (residual_autocovariance;
-// b is the first zero crossing of the autocorrelation) and s^2 I for rebound data and white curves (White 1980,
-// Econometrica 48:817). Unlike an AR(1) model of the errors, whose coefficient goes to 1 for a smooth misfit and
-// then counts the whole record as one point, the blocks end where the residual changes sign. The fit absorbs more
-// of correlated errors than k white degrees of freedom: E[RSS] = n gamma(0) (1 - tr(H R) / n) with R = C / gamma(0)
-// and H = J (J^T J)^+ J^T, so C is scaled by n / (n - tr(H R)). Sets each curve's lag-1 correlation, effective
-// points and the error kind.
+// count. Each curve's errors are taken as AR(1) with coefficient phi (error_correlation), correlation matrix
+// P_ij = phi^|i - j| within the curve (identity for rebound data and white curves), and the covariance of the least-
+// squares estimate is the sandwich s^2 (J^T J)^+ J^T P J (J^T J)^+ (White 1980, Econometrica 48:817, with a known
+// correlation structure; s^2 (J^T J)^+ when every phi = 0). A curve's effective points are
+// n_eff = n (1 - phi) / (1 + phi) (the sum of phi^|k| over all lags multiplies the variance of a mean of n >> 1
+// such errors), at least 1. Sets each curve's correlation and effective points and the error kind.
 Eigen::MatrixXd honest_covariance(const Stacked& stacked, double variance_scale, const Eigen::MatrixXd& pseudo_inverse,
                                   FitResult& result) {
-    Eigen::MatrixXd covariance_times_jacobian = variance_scale * stacked.jacobian;  // C J
-    Eigen::MatrixXd correlation_times_jacobian = stacked.jacobian;                   // R J
+    Eigen::MatrixXd correlated = stacked.jacobian;  // P J
     double points = 0.0, effective = 0.0;
-    Eigen::Index longest_block = 1;
     for (std::size_t c = 0; c < stacked.curve_begin.size(); ++c) {
         const Eigen::Index begin = stacked.curve_begin[c];
         CurveFit& curve = result.curves[c];
         const auto count = static_cast<Eigen::Index>(curve.time.size());
         curve.residual_correlation = lag_one_correlation(stacked.residuals, begin, count);
-        curve.effective_points = static_cast<double>(count);
-        points += static_cast<double>(count);
-        if (above_model_accuracy(curve) && correlated(curve.residual_correlation, count)) {
-            const auto autocovariance = residual_autocovariance(stacked.residuals.segment(begin, count));
-            const auto rows = stacked.jacobian.middleRows(begin, count);
-            covariance_times_jacobian.middleRows(begin, count) = apply_autocovariance(autocovariance, rows);
-            correlation_times_jacobian.middleRows(begin, count) =
-                covariance_times_jacobian.middleRows(begin, count) / autocovariance.gamma[0];
-            curve.effective_points = autocovariance.effective_points;
-            longest_block = std::max(longest_block, autocovariance.block_length);
+        const double phi = above_model_accuracy(curve) ? error_correlation(curve.residual_correlation, count) : 0.0;
+        curve.effective_points = std::max(static_cast<double>(count) * (1.0 - phi) / (1.0 + phi), 1.0);
+        for (Eigen::Index j = 0; phi > 0.0 && j < correlated.cols(); ++j) {
+            apply_correlation(correlated.col(j).segment(begin, count), phi);
         }
+        points += static_cast<double>(count);
         effective += curve.effective_points;
     }
     if (effective == points) {
         result.error_kind = "white noise (chi-square)";
         return variance_scale * pseudo_inverse;
     }
-    result.error_kind = fmt::format(
-        "inflated for correlated residuals (n_eff = {:.1f} of {:.0f} points; block bootstrap, blocks of {} rows)",
-        effective, points, longest_block);
+    result.error_kind =
+        fmt::format("inflated for correlated residuals (n_eff = {:.1f} of {:.0f} points)", effective, points);
+    const Eigen::MatrixXd meat = stacked.jacobian.transpose() * correlated;
+    // The fit absorbs more of correlated errors than k white degrees of freedom: E[RSS] = sigma^2 (n - tr(H P)),
+    // H = J (J^T J)^+ J^T, so s^2 = RSS / (n - tr((J^T J)^+ J^T P J)) (k when P = I, as variance_scale).
     const double n = static_cast<double>(stacked.residuals.size());
-    const double absorbed = (pseudo_inverse * stacked.jacobian.transpose() * correlation_times_jacobian).trace();
-    const Eigen::MatrixXd meat = stacked.jacobian.transpose() * covariance_times_jacobian;
-    const Eigen::MatrixXd sandwich = pseudo_inverse * meat * pseudo_inverse;
-    return std::max(n / std::max(n - absorbed, 1.0), 1.0) * sandwich;
+    const double absorbed = (pseudo_inverse * meat).trace();
+    const double correlated_scale = stacked.residuals.squaredNorm() / std::max(n - absorbed, 1.0);
+    return std::max(variance_scale, correlated_scale) * pseudo_inverse * meat * pseudo_inverse;
 }
 
 // Flags each curve the model cannot follow (is_misfit) on the curve (the fit's status says "misfit").

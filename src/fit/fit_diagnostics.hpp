@@ -15,8 +15,7 @@ namespace mdr::fit {
 /// Fills the statistics of `result` (values and names already set) at the optimum `shared`, `nuisance` (the curves'
 /// rows, then the rebound data's, one entry of FitResult::curves per quantity): the
 /// covariance s^2 (J^T J)^+ with s^2 = RSS / (n - k) (so that a misjudged noise level does not bias the errors),
-/// replaced for curves whose residuals are autocorrelated by the linearised moving-block bootstrap over their residuals
-/// (residual_autocovariance.hpp; effective points, FitResult::error_kind), the misfit flags,
+/// inflated for curves whose residuals are autocorrelated (effective points, FitResult::error_kind), the misfit flags,
 /// the 95 % intervals (Student's t quantile with the effective points less k degrees of freedom; on the logarithmic
 /// scale for logarithmic parameters), the curves'
 /// data and model, AIC and BIC, and Undetermined entries for: directions the data do not constrain (singular

@@ -69,10 +69,8 @@ void add_correlated_noise(std::vector<double>& values, double sigma, double rho,
 TEST(FitErrorCoverage, CorrelatedNoiseIntervalsCoverTheTruth) {
     // 301 points with AR(1) noise, rho = 0.9 (n_eff ~ 301 x 0.1 / 1.9 ~ 16), sigma 2e-3 (2 % of the peak) stated as
     // the curve's noise. Chi-square errors alone (as before issue 24) are ~4 times too small and cover the truth in
-    // about a third of the realisations (measured: 64, 65, 76 of 200); the linearised block bootstrap with Student's
-    // t covers it in 90-98 % (measured: G_inf 188, G1 177, tau1 188 of 200; an AR(1) sandwich over the whole curve:
-    // 190, 180, 192). G1 falls short by a few: every miss is an estimate above the truth, where the interval on the
-    // logarithmic scale, value x exp(+-t sigma / value), is narrowest (the estimate is about linear in the data).
+    // about a third of the realisations (measured: 65, 65, 76 of 200); the AR(1) sandwich with Student's t covers it
+    // in 90-98 % (measured: G_inf 191, G1 180, tau1 192 of 200).
     const reference::PronyMaterial truth{1e6, 0.0, {{2e6, 0.5}}};
     const std::vector<double> exact{1e6, 2e6, 0.5};
     const fit::Curve clean = clean_curve(truth, 301);
@@ -96,39 +94,11 @@ TEST(FitErrorCoverage, CorrelatedNoiseIntervalsCoverTheTruth) {
         }
     }
     for (std::size_t j = 0; j < 3; ++j) {
-        EXPECT_GE(covered[j], j == 1 ? 172 : 180) << j;  // G1: see the first comment
+        EXPECT_GE(covered[j], 180) << j;
         EXPECT_LE(covered[j], 196) << j;
         EXPECT_LT(chi_square_covered[j], 120) << j;  // measured: see the test's first comment
         std::printf("%s: covered %d of %d (chi-square errors alone: %d)\n", j == 0 ? "G_inf" : j == 1 ? "G1" : "tau1",
                     covered[j], seeds, chi_square_covered[j]);
-    }
-}
-
-TEST(FitErrorCoverage, StronglyCorrelatedNoiseIntervalsCoverTheTruth) {
-    // 1501 points with AR(1) noise, rho = 0.99 (a decorrelation length of ~100 rows: n_eff ~ 1501 x 0.01 / 1.99 ~ 8),
-    // sigma 2e-3 stated as the curve's noise: the noise is a slow drift that the fit partly absorbs. Measured: G_inf
-    // 180, G1 173, tau1 182 of 200 (an AR(1) sandwich over the whole curve: 187, 179, 188; the misses as in
-    // CorrelatedNoiseIntervalsCoverTheTruth).
-    const reference::PronyMaterial truth{1e6, 0.0, {{2e6, 0.5}}};
-    const std::vector<double> exact{1e6, 2e6, 0.5};
-    const fit::Curve clean = clean_curve(truth, 1501);
-    std::vector<int> covered(3, 0);
-    constexpr int seeds = 200;
-    for (int seed = 0; seed < seeds; ++seed) {
-        std::mt19937_64 random(static_cast<unsigned>(seed) + 4000u);
-        fit::Curve curve = clean;
-        add_correlated_noise(curve.force, 2e-3, 0.99, random);
-        curve.force_noise = 2e-3;
-        const auto result = fit::fit(standard_solid_problem(curve));
-        ASSERT_TRUE(result.converged) << result.status;
-        for (std::size_t j = 0; j < 3; ++j) {
-            covered[j] += result.lower_95[j] <= exact[j] && exact[j] <= result.upper_95[j];
-        }
-    }
-    for (std::size_t j = 0; j < 3; ++j) {
-        std::printf("rho 0.99: %s covered %d of %d\n", j == 0 ? "G_inf" : j == 1 ? "G1" : "tau1", covered[j], seeds);
-        EXPECT_GE(covered[j], j == 1 ? 170 : 176) << j;  // 88 % at least (a few realisations of margin)
-        EXPECT_LE(covered[j], 196) << j;
     }
 }
 

@@ -132,8 +132,7 @@ struct CurveFit {
     /// Lag-1 autocorrelation of the residuals (rows in time order); 0 for rebound data.
     double residual_correlation = 0.0;
     /// Points that count as independent in the errors (effective sample size, see describe_uncertainty): the
-    /// curve's points when its residuals are white, n over the block bootstrap's window sum when they are
-    /// autocorrelated (about the number of blocks for a smooth misfit).
+    /// curve's points when its residuals are white, n (1 - rho) / (1 + rho) when they are autocorrelated.
     double effective_points = 0.0;
     /// Rebound data only: the quantity compared (`fitted` is then meaningless); nullopt for a measured curve.
     std::optional<ReboundQuantity> rebound{};
@@ -187,8 +186,8 @@ struct FitResult {
     /// the model's own accuracy); a flag names the curve. The result is still the best fit.
     bool misfit = false;
     /// What the standard errors are (fit.json `error_kind`): "white noise (chi-square)", or, when a curve's residuals
-    /// are autocorrelated (linearised moving-block bootstrap, see describe_uncertainty), "inflated for correlated
-    /// residuals (n_eff = 16.2 of 301 points; block bootstrap, blocks of 88 rows)".
+    /// are autocorrelated (AR(1) sandwich, see describe_uncertainty), "inflated for correlated residuals (n_eff = 16.2
+    /// of 301 points)".
     std::string error_kind;
     std::vector<std::string> names;          ///< the free parameters, in the order of FitProblem::parameters
     std::vector<double> values;              ///< fitted values
