@@ -9,6 +9,7 @@
 
 #include "curve_model.hpp"
 #include "mdr/error.hpp"
+#include "mdr/fit/plausibility.hpp"
 #include <Eigen/Dense>
 
 #include "mdr/numerics/nonnegative_least_squares.hpp"
@@ -222,6 +223,7 @@ CandidateFit fit_material(const io::FitCase& base, const Material& material, con
         };
     }
     CandidateFit fitted{material.name, fit(problem), base, material.grid, 0.0, 0.0};
+    add_plausibility_flags(problem, io::unit_system(base.units), fitted.result);
     fitted.fitted_case.model.set_table("material", material_text(material, fitted.result.values.data() + offset));
     return fitted;
 }

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "young_moduli.hpp"
+
 namespace mdr::fit {
 namespace {
 
@@ -62,6 +64,32 @@ void add_modulus_flag(const io::UnitSystem& system, FitResult& result) {
     }
 }
 
+// A start or fitted value of a shear-modulus key (is_shear_modulus; a spectrum's moduli, which may be 0 or tiny
+// by design, aside) outside least_modulus_pa to greatest_modulus_pa: one flag naming the key. A fitted value that the
+// data do not determine (FitResult::undetermined, e.g. a term driven to its bound) is reported there instead.
+void add_modulus_key_flags(const FitProblem& problem, const io::UnitSystem& system, FitResult& result) {
+    const double pascal = system.force_size / (system.length_size * system.length_size);  // one pressure unit [Pa]
+    auto implausible = [&](double value) {
+        return value > 0.0 && (value * pascal < least_modulus_pa || value * pascal > greatest_modulus_pa);
+    };
+    for (std::size_t j = 0; j < result.names.size() && j < problem.parameters.size(); ++j) {
+        const std::string& name = result.names[j];
+        if (!is_shear_modulus(name) || name.rfind("spectrum.", 0) == 0) continue;
+        const bool undetermined = std::any_of(result.undetermined.begin(), result.undetermined.end(),
+                                              [&](const Undetermined& entry) { return entry.name == name; });
+        const double fitted = undetermined ? 0.0 : result.values[j];  // 0: not checked
+        const std::pair<const char*, double> checked[2] = {{"start value", problem.parameters[j].start},
+                                                           {"fitted value", fitted}};
+        for (const auto& [which, value] : checked) {
+            if (!implausible(value)) continue;
+            result.flags.push_back(fmt::format(
+                "{}: the {} {:.4g} {} ({:.3g} Pa) is outside the moduli of materials ({:g} Pa to {:g} Pa): are the "
+                "data's units those of the case?",
+                name, which, value, system.pressure, value * pascal, least_modulus_pa, greatest_modulus_pa));
+        }
+    }
+}
+
 }  // namespace
 
 void add_plausibility_flags(const FitProblem& problem, const io::UnitSystem& system, FitResult& result) {
@@ -71,6 +99,7 @@ void add_plausibility_flags(const FitProblem& problem, const io::UnitSystem& sys
         if (definition.shape == "sphere") add_depth_flags(definition.number("R"), system, result);
     }
     add_modulus_flag(system, result);
+    add_modulus_key_flags(problem, system, result);
 }
 
 }  // namespace mdr::fit

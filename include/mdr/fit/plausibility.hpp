@@ -18,7 +18,8 @@ inline constexpr double greatest_modulus_pa = 1e12;
 /// Adds to `result` the flags of implausible data (one line each, naming the curve and the numbers): a curve on a
 /// sphere whose largest indentation is below least_sphere_indentation R or above R (the contact radius sqrt(R d)
 /// would pass the sphere's radius: the paraboloid of eq. 30 no longer stands for the sphere), and a fitted
-/// G(t) (over the data's window) outside least_modulus_pa to greatest_modulus_pa, in `system`'s pressure unit.
+/// G(t) (over the data's window) outside least_modulus_pa to greatest_modulus_pa, in `system`'s pressure unit, and
+/// each shear-modulus key of fit.free (a spectrum's aside) whose start or fitted value is outside that range.
 /// `problem` is the problem `result` solved.
 void add_plausibility_flags(const FitProblem& problem, const io::UnitSystem& system, FitResult& result);
 
