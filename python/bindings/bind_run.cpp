@@ -6,7 +6,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "case_tree.hpp"
-#include "summary_dict.hpp"
+#include "document_object.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
@@ -61,7 +61,7 @@ py::dict run_case(const py::object& case_, const std::string& source, const py::
     py::dict out;
     out["history"] = history;
     out["profiles"] = profiles;
-    out["summary"] = summary_dict(io::summarize(contact_case, result, wall));
+    out["summary"] = document_object(io::to_document(io::summarize(contact_case, result, wall)));
     out["description"] = io::describe(contact_case);
     return out;
 }
