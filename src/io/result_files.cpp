@@ -1,5 +1,6 @@
 #include "mdr/io/result_files.hpp"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 #include <fmt/os.h>
 
@@ -22,11 +23,15 @@ void write_indentation_result(const fs::path& directory, const drivers::ContactC
     const auto columns = history_columns(result);
     for (std::size_t j = 0; j < columns.size(); ++j) history.print("{}{}", j == 0 ? "" : ",", columns[j].name);
     history.print("\n");
+    fmt::memory_buffer row;
     for (std::size_t i = 0; i < result.time.size(); ++i) {
+        row.clear();
         for (std::size_t j = 0; j < columns.size(); ++j) {
-            history.print("{}{}", j == 0 ? "" : ",", columns[j].value(result, i));
+            if (j > 0) row.push_back(',');
+            fmt::format_to(fmt::appender(row), FMT_COMPILE("{}"), columns[j].value(result, i));
         }
-        history.print("\n");
+        row.push_back('\n');
+        history.print("{}", fmt::string_view(row.data(), row.size()));
     }
     history.close();
 
