@@ -6,10 +6,11 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "case_tree.hpp"
-#include "summary_dict.hpp"
+#include "document_object.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
+#include "mdr/io/history_columns.hpp"
 #include "mdr/io/summary.hpp"
 #include "mdr/io/units.hpp"
 
@@ -37,26 +38,11 @@ py::dict run_case(const py::object& case_, const std::string& source, const py::
     }
     if (!progress.is_none()) progress(1.0);
     py::dict history;
-    history["t"] = to_array(result.time);
-    history["d"] = to_array(result.depth);
-    history["F"] = to_array(result.force);
-    history["a"] = to_array(result.radius);
-    if (!result.velocity.empty()) history["v"] = to_array(result.velocity);
-    if (!result.base.empty()) {
-        std::vector<double> deflection(result.base.size());
-        for (std::size_t i = 0; i < deflection.size(); ++i) deflection[i] = result.base[i] - result.depth[i];
-        history["z"] = to_array(result.base);
-        history["deflection"] = to_array(deflection);
-    }
-    if (!result.shore.empty()) history["shore"] = to_array(result.shore);
-    if (!result.tangential_force.empty()) {
-        history["u"] = to_array(result.tangential_displacement);
-        history["Fx"] = to_array(result.tangential_force);
-        history["c"] = to_array(result.stick_radius);
-    }
-    if (!result.spin.empty()) {
-        history["v_t"] = to_array(result.tangential_velocity);
-        history["omega"] = to_array(result.spin);
+    for (const io::HistoryColumn& column : io::history_columns(result)) {
+        py::array_t<double> values(static_cast<py::ssize_t>(result.time.size()));
+        auto* data = values.mutable_data();
+        for (std::size_t i = 0; i < result.time.size(); ++i) data[i] = column.value(result, i);
+        history[py::str(column.name.data(), column.name.size())] = values;
     }
     py::dict profiles;
     std::vector<double> t, r, p, w, tau;
@@ -75,7 +61,7 @@ py::dict run_case(const py::object& case_, const std::string& source, const py::
     py::dict out;
     out["history"] = history;
     out["profiles"] = profiles;
-    out["summary"] = summary_dict(io::summarize(contact_case, result, wall));
+    out["summary"] = document_object(io::to_document(io::summarize(contact_case, result, wall)));
     out["description"] = io::describe(contact_case);
     return out;
 }

@@ -7,7 +7,7 @@
 
 #include "bindings.hpp"
 #include "case_tree.hpp"
-#include "summary_dict.hpp"
+#include "document_object.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/sweep.hpp"
 
@@ -60,7 +60,7 @@ void bind_sweep(py::module_& module) {
             py::list points, summaries, errors;
             for (const auto& row : rows) {
                 points.append(py::cast(row.point));
-                summaries.append(summary_dict(row.summary));
+                summaries.append(document_object(io::to_document(row.summary)));
                 errors.append(row.error);
             }
             py::dict out;
@@ -115,7 +115,7 @@ void bind_sweep(py::module_& module) {
             }
             py::list summaries, errors;
             for (const auto& row : rows) {
-                summaries.append(summary_dict(row.summary));
+                summaries.append(document_object(io::to_document(row.summary)));
                 errors.append(row.error);
             }
             return py::make_tuple(summaries, errors);

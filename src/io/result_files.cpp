@@ -1,10 +1,12 @@
 #include "mdr/io/result_files.hpp"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 #include <fmt/os.h>
 
 #include <stdexcept>
 
+#include "mdr/io/history_columns.hpp"
 #include "mdr/io/summary.hpp"
 
 namespace mdr::io {
@@ -18,25 +20,18 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
 void write_indentation_result(const fs::path& directory, const drivers::ContactCase& contact_case,
                               const drivers::IndentationResult& result, double wall_seconds) {
     auto history = fmt::output_file((directory / "history.csv").string());
-    const bool with_velocity = !result.velocity.empty();
-    const bool with_tangential = !result.tangential_force.empty();
-    const bool with_base = !result.base.empty();
-    const bool with_spin = !result.spin.empty();
-    const bool with_shore = !result.shore.empty();
-    history.print("t,d,F,a{}{}{}{}{}\n", with_velocity ? ",v" : "", with_base ? ",z,deflection" : "",
-                  with_shore ? ",shore" : "",
-                  with_tangential ? ",u,Fx,c" : "", with_spin ? ",v_t,omega" : "");
+    const auto columns = history_columns(result);
+    for (std::size_t j = 0; j < columns.size(); ++j) history.print("{}{}", j == 0 ? "" : ",", columns[j].name);
+    history.print("\n");
+    fmt::memory_buffer row;
     for (std::size_t i = 0; i < result.time.size(); ++i) {
-        history.print("{},{},{},{}", result.time[i], result.depth[i], result.force[i], result.radius[i]);
-        if (with_velocity) history.print(",{}", result.velocity[i]);
-        if (with_base) history.print(",{},{}", result.base[i], result.base[i] - result.depth[i]);
-        if (with_shore) history.print(",{}", result.shore[i]);
-        if (with_tangential) {
-            history.print(",{},{},{}", result.tangential_displacement[i], result.tangential_force[i],
-                          result.stick_radius[i]);
+        row.clear();
+        for (std::size_t j = 0; j < columns.size(); ++j) {
+            if (j > 0) row.push_back(',');
+            fmt::format_to(fmt::appender(row), FMT_COMPILE("{}"), columns[j].value(result, i));
         }
-        if (with_spin) history.print(",{},{}", result.tangential_velocity[i], result.spin[i]);
-        history.print("\n");
+        row.push_back('\n');
+        history.print("{}", fmt::string_view(row.data(), row.size()));
     }
     history.close();
 
@@ -46,6 +41,7 @@ void write_indentation_result(const fs::path& directory, const drivers::ContactC
 
     if (result.snapshots.empty()) return;
     auto profiles = fmt::output_file((directory / "profiles.csv").string());
+    const bool with_tangential = !result.tangential_force.empty();
     profiles.print("t,r,p,w{}\n", with_tangential ? ",tau" : "");
     for (const auto& snapshot : result.snapshots) {
         for (std::size_t j = 0; j < snapshot.radius.size(); ++j) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <type_traits>
+#include <utility>
 
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/material_window.hpp"
@@ -55,13 +57,26 @@ Summary summarize(const drivers::ContactCase& contact_case, const drivers::Inden
     return summary;
 }
 
-std::string to_json(const Summary& summary) {
-    nlohmann::ordered_json json = nlohmann::ordered_json::object();
+Document to_document(const Summary& summary) {
+    Document::Table table;
     for (const auto& [key, value] : summary) {
-        std::visit([&json, &key = key](const auto& held) { json[key] = held; }, value);
+        auto document = std::visit(
+            [](const auto& held) {
+                if constexpr (std::is_same_v<std::decay_t<decltype(held)>, std::vector<double>>) {
+                    Document::List list;
+                    for (const double number : held) list.push_back(Document{number});
+                    return Document{std::move(list)};
+                } else {
+                    return Document{held};
+                }
+            },
+            value);
+        table.emplace_back(key, std::move(document));
     }
-    return json.dump(2);
+    return Document{std::move(table)};
 }
+
+std::string to_json(const Summary& summary) { return to_json(to_document(summary)); }
 
 Summary summary_from_json(const std::string& json_text) {
     const auto json = nlohmann::ordered_json::parse(json_text);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/io/document.hpp"
 
 namespace mdr::io {
 
@@ -29,8 +30,12 @@ using Summary = std::vector<SummaryEntry>;
 Summary summarize(const drivers::ContactCase& contact_case, const drivers::IndentationResult& result,
                   double wall_seconds);
 
-/// The summary as JSON text (summary.json): numbers with the digits that give back the same double, counts as
-/// integers, flags as booleans.
+/// The summary as a document (mdr/io/document.hpp): a table of its keys in order, a list of numbers as a list. The
+/// one form summary.json (to_json) and Python's summary dict are written from.
+Document to_document(const Summary& summary);
+
+/// The summary as JSON text (summary.json), to_json(to_document(summary)): numbers with the digits that give back
+/// the same double, counts as integers, flags as booleans.
 std::string to_json(const Summary& summary);
 
 /// The summary of JSON text written by to_json (read back exactly: integers are counts). Throws

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/result_files.hpp"
@@ -93,6 +94,20 @@ TEST(Summary, JsonKeepsItsOrder) {
     ASSERT_EQ(json.size(), summary.size());
     std::size_t i = 0;
     for (const auto& [key, value] : json.items()) EXPECT_EQ(key, summary[i++].key);
+}
+
+TEST(Summary, IsADocumentTableOfItsKeysInOrder) {
+    const Summary summary{{"max_force", 2.5}, {"steps", std::size_t{7}}, {"slid_throughout", true},
+                          {"control", std::string("impact")}, {"material_window", std::vector<double>{1e-3, 10.0}}};
+    const Document expected{Document::Table{{"max_force", Document{2.5}},
+                                            {"steps", Document{std::size_t{7}}},
+                                            {"slid_throughout", Document{true}},
+                                            {"control", Document{std::string("impact")}},
+                                            {"material_window", Document{Document::List{Document{1e-3},
+                                                                                        Document{10.0}}}}}};
+    EXPECT_EQ(to_document(summary), expected);
+    EXPECT_EQ(to_json(summary), "{\n  \"max_force\": 2.5,\n  \"steps\": 7,\n  \"slid_throughout\": true,\n"
+                                "  \"control\": \"impact\",\n  \"material_window\": [\n    0.001,\n    10.0\n  ]\n}");
 }
 
 TEST(Summary, RefusesJsonThatIsNoSummary) {
