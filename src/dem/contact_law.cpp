@@ -109,7 +109,20 @@ void ContactLaw::check(std::span<const double> state) const {
     }
     const std::size_t n = loads_.size();
     const std::size_t active = count_at(state, normal_offset + 2);
-    count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
+    const std::size_t touched =
+        count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
+    // The tangential elements are stepped in place (PlanarTangentialLayer::attach), which takes those never touched
+    // to be zero, as initialise() leaves them: u_x, u_y, then h_x, h_y per branch, n each.
+    for (std::size_t block = 0; block < 2 + 2 * branches_; ++block) {
+        for (std::size_t i = touched; i < n; ++i) {
+            const std::size_t index = tangential_offset_ + 3 + block * n + i;
+            if (state[index] != 0.0) {
+                throw InvalidInput(entry(index), format_value(state[index]),
+                                   "a tangential element beyond the " + std::to_string(touched) +
+                                       " touched ones holds zero");
+            }
+        }
+    }
     for (std::size_t i = 0; i < active; ++i) {
         const std::size_t flag = normal_offset + 3 + 2 * n + i;
         if (state[flag] != 0.0 && state[flag] != 1.0) {
@@ -160,7 +173,7 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
     return foundation_.spacing() * (normal_factor * normal_sum + tangential_factor * tangential_sum);
 }
 
-void ContactLaw::begin(std::span<const double> state) {
+void ContactLaw::begin(std::span<double> state) {
     if (state.size() < state_size_) {
         throw InvalidInput("state", std::to_string(state.size()) + " doubles",
                            "this law's contact state holds " + std::to_string(state_size_) + " doubles");
@@ -172,7 +185,7 @@ void ContactLaw::begin(std::span<const double> state) {
     handedness_ = state[handedness_offset];
     overlap_ = state[normal_offset];
     foundation_.load_state(state.subspan(normal_offset));
-    layer_.load_state(state.subspan(tangential_offset_));
+    layer_.attach(state.subspan(tangential_offset_));  // the tangential elements step in place there
     foundation_.begin_step(coefficients_);
     start_normal_force_ = foundation_.total_force();
     start_tangential_force_ = layer_.total_force();
@@ -222,7 +235,6 @@ void ContactLaw::end(std::span<double> state) const {
     for (std::size_t i = 0; i < 3; ++i) state[frame_offset + i] = frame_[i];
     state[handedness_offset] = handedness_;
     foundation_.save_state(state.subspan(normal_offset));
-    layer_.save_state(state.subspan(tangential_offset_));
 }
 
 void ContactLaw::advance(std::span<double> state, double overlap, PlanarVector displacement) {

@@ -70,9 +70,10 @@ public:
     /// The length [s] of the next step.
     double time_step() const { return coefficients_.time_step; }
 
-    /// Loads a contact's state into the workspace and prepares its step. Throws mdr::InvalidInput when the
-    /// state's sizes are not this law's (a corrupted state); check() inspects every value.
-    void begin(std::span<const double> state);
+    /// Loads a contact's state into the workspace and prepares its step; the tangential elements are then stepped
+    /// in place in `state` (advance_tangential writes them there), the rest is written by end(). Throws
+    /// mdr::InvalidInput when the state's sizes are not this law's (a corrupted state); check() inspects every value.
+    void begin(std::span<double> state);
     /// Total normal force [N] if the step ended at `overlap` [m]; the state is not changed.
     double normal_trial(double overlap) const;
     /// Advances the normal problem to `overlap` [m] over the step. Throws mdr::InvalidInput (key `half_width`)
@@ -84,7 +85,7 @@ public:
     /// Advances the tangential problem to `displacement` [m] (after advance_normal); throws mdr::InvalidInput (key
     /// `displacement`) unless it is finite.
     void advance_tangential(PlanarVector displacement);
-    /// Writes the workspace back into the contact's state.
+    /// Writes the workspace (the tangential elements are already there) back into the contact's state.
     void end(std::span<double> state) const;
     /// begin, advance_normal, advance_tangential, end.
     void advance(std::span<double> state, double overlap, PlanarVector displacement);
