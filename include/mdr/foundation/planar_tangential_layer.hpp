@@ -71,6 +71,12 @@ public:
 
 private:
     void adopt_touched(std::size_t touched);  // a loaded state's touched count; relaxed_ zero beyond it
+    // u_i and h_{k,i}: the attached state's, else the layer's own (found per call, so that a copy of the layer
+    // never points into the original's buffers).
+    double* displacements() { return header_ != nullptr ? header_ + 3 : displacement_.data(); }
+    const double* displacements() const { return header_ != nullptr ? header_ + 3 : displacement_.data(); }
+    double* memories() { return header_ != nullptr ? header_ + 3 + 2 * count_ : memory_.data(); }
+    const double* memories() const { return header_ != nullptr ? header_ + 3 + 2 * count_ : memory_.data(); }
 
     // Structure of arrays: component c of element i at [c * n + i]; memory branch-major, memory_[k * 2 n + c n + i].
     rheology::Rheology material_;  // a copy: the caller's material may be a temporary
@@ -80,9 +86,7 @@ private:
     std::vector<double> displacement_;  ///< u_i when no state is attached
     std::vector<double> stress_;        ///< t_i of the step being taken (not part of the state)
     std::vector<double> memory_;        ///< h_{k,i} when no state is attached
-    double* u_;                         ///< u_i: displacement_ or the attached state's
-    double* h_;                         ///< h_{k,i}: memory_ or the attached state's
-    double* header_ = nullptr;          ///< the attached state's force and touched count, else null
+    double* header_ = nullptr;          ///< the attached state (force, touched count, u_i, h_{k,i}), else null
     std::vector<double> relaxed_;       ///< G_inf u_i + sum_k G_k E_k h_{k,i} for the prepared step
     std::vector<double> increment_;     ///< du_i of the step being taken
     std::vector<double> contact_mask_;  ///< 1 for an element in contact in the step being taken, else 0
