@@ -111,18 +111,24 @@ void ContactLaw::check(std::span<const double> state) const {
     const std::size_t active = count_at(state, normal_offset + 2);
     const std::size_t touched =
         count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
-    // The tangential elements are stepped in place (PlanarTangentialLayer::attach), which takes those never touched
-    // to be zero, as initialise() leaves them: u_x, u_y, then h_x, h_y per branch, n each.
-    for (std::size_t block = 0; block < 2 + 2 * branches_; ++block) {
-        for (std::size_t i = touched; i < n; ++i) {
-            const std::size_t index = tangential_offset_ + 3 + block * n + i;
-            if (state[index] != 0.0) {
-                throw InvalidInput(entry(index), format_value(state[index]),
-                                   "a tangential element beyond the " + std::to_string(touched) +
-                                       " touched ones holds zero");
+    // The elements are stepped in place (Foundation::attach, PlanarTangentialLayer::attach), which takes those
+    // never touched to be zero, as initialise() leaves them: `blocks` blocks of n from `offset` (the Foundation's
+    // w, sigma, flags and h per branch; the layer's u_x, u_y and h_x, h_y per branch).
+    const auto require_untouched_zero = [&](std::size_t offset, std::size_t blocks, std::size_t count,
+                                            const char* kind) {
+        for (std::size_t block = 0; block < blocks; ++block) {
+            for (std::size_t i = count; i < n; ++i) {
+                const std::size_t index = offset + block * n + i;
+                if (state[index] != 0.0) {
+                    throw InvalidInput(entry(index), format_value(state[index]),
+                                       std::string("a ") + kind + " element beyond the " + std::to_string(count) +
+                                           " touched ones holds zero");
+                }
             }
         }
-    }
+    };
+    require_untouched_zero(normal_offset + 3, 3 + branches_, active, "normal");
+    require_untouched_zero(tangential_offset_ + 3, 2 + 2 * branches_, touched, "tangential");
     for (std::size_t i = 0; i < active; ++i) {
         const std::size_t flag = normal_offset + 3 + 2 * n + i;
         if (state[flag] != 0.0 && state[flag] != 1.0) {
@@ -184,8 +190,8 @@ void ContactLaw::begin(std::span<double> state) {
     frame_ = {state[frame_offset], state[frame_offset + 1], state[frame_offset + 2]};
     handedness_ = state[handedness_offset];
     overlap_ = state[normal_offset];
-    foundation_.load_state(state.subspan(normal_offset));
-    layer_.attach(state.subspan(tangential_offset_));  // the tangential elements step in place there
+    foundation_.attach(state.subspan(normal_offset));  // the elements step in place there
+    layer_.attach(state.subspan(tangential_offset_));
     foundation_.begin_step(coefficients_);
     start_normal_force_ = foundation_.total_force();
     start_tangential_force_ = layer_.total_force();
@@ -234,7 +240,6 @@ void ContactLaw::end(std::span<double> state) const {
     state[1] = displacement_[1];
     for (std::size_t i = 0; i < 3; ++i) state[frame_offset + i] = frame_[i];
     state[handedness_offset] = handedness_;
-    foundation_.save_state(state.subspan(normal_offset));
 }
 
 void ContactLaw::advance(std::span<double> state, double overlap, PlanarVector displacement) {

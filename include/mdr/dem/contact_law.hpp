@@ -70,8 +70,9 @@ public:
     /// The length [s] of the next step.
     double time_step() const { return coefficients_.time_step; }
 
-    /// Loads a contact's state into the workspace and prepares its step; the tangential elements are then stepped
-    /// in place in `state` (advance_tangential writes them there), the rest is written by end(). Throws
+    /// Takes a contact's state and prepares its step: the elements are then stepped in place in `state`
+    /// (advance_normal and advance_tangential write them there), the tangential displacement and the frame are
+    /// written by end(). Throws
     /// mdr::InvalidInput when the state's sizes are not this law's (a corrupted state); check() inspects every value.
     void begin(std::span<double> state);
     /// Total normal force [N] if the step ended at `overlap` [m]; the state is not changed.
@@ -85,7 +86,7 @@ public:
     /// Advances the tangential problem to `displacement` [m] (after advance_normal); throws mdr::InvalidInput (key
     /// `displacement`) unless it is finite.
     void advance_tangential(PlanarVector displacement);
-    /// Writes the workspace (the tangential elements are already there) back into the contact's state.
+    /// Writes the tangential displacement and the frame into the contact's state (the elements are already there).
     void end(std::span<double> state) const;
     /// begin, advance_normal, advance_tangential, end.
     void advance(std::span<double> state, double overlap, PlanarVector displacement);
