@@ -361,7 +361,8 @@ double Foundation::force_slope() const {
 }
 
 double Foundation::free_gap(std::size_t i) const {
-    return i < size() ? last_depth_ - equivalent_[i] - element_displacements()[i] : -std::numeric_limits<double>::infinity();
+    if (i >= size()) return -std::numeric_limits<double>::infinity();
+    return last_depth_ - equivalent_[i] - element_displacements()[i];
 }
 
 double Foundation::axis_weight() const {
