@@ -26,18 +26,19 @@ using SpatialVector = std::array<double, 3>;
 /// both bodies incompressible). The law owns a workspace — one Foundation (section 5) and one
 /// PlanarTangentialLayer (section 6) of N elements on the half-width L — and no contact's state: a contact's state
 /// is state_size() doubles in the caller's memory (a pair style's per-contact history, say), zeroed by
-/// initialise() at first touch. A step of one contact:
+/// initialise() at first touch; the elements are stepped in place there (no copy into the workspace and back),
+/// the workspace keeps only what a step derives. A step of one contact:
 ///
-///     law.begin(state);                      // the contact's state into the workspace (its header checked)
+///     law.begin(state);                      // attaches the contact's state (its header checked)
 ///     law.normal_trial(overlap);             // optional: F_N for a trial overlap (an implicit integrator's solve)
 ///     law.advance_normal(overlap);           // the new normal overlap (eq. 13-22)
 ///     law.tangential_trial(displacement);    // optional: the tangential force for a trial displacement
 ///     law.advance_tangential(displacement);  // the new tangential displacement of the contact point (eq. 41-51)
-///     law.end(state);                        // the workspace back into the state
+///     law.end(state);                        // the tangential displacement and the frame into the state
 ///
 /// or law.advance(state, overlap, displacement) for the four calls without trials, or advance_spatial for a code
 /// that works with three-dimensional vectors (the contact frame then lives in the state and turns with the
-/// normal). Between begin and end the overlap and the displacement go linearly in time over the step (the
+/// normal). The state must stay in place between begin and end. Between begin and end the overlap and the displacement go linearly in time over the step (the
 /// elements' updates are exact for that); a dashpot sees the secant rate. The time step may change between steps
 /// (set_time_step). Nothing allocates after construction. One law per thread (the workspace is its).
 ///
