@@ -38,9 +38,10 @@ using SpatialVector = std::array<double, 3>;
 ///
 /// or law.advance(state, overlap, displacement) for the four calls without trials, or advance_spatial for a code
 /// that works with three-dimensional vectors (the contact frame then lives in the state and turns with the
-/// normal). The state must stay in place between begin and end. Between begin and end the overlap and the displacement go linearly in time over the step (the
-/// elements' updates are exact for that); a dashpot sees the secant rate. The time step may change between steps
-/// (set_time_step). Nothing allocates after construction. One law per thread (the workspace is its).
+/// normal). The state must stay in place between begin and end. Between begin and end the overlap and the
+/// displacement go linearly in time over the step (the elements' updates are exact for that); a dashpot sees the
+/// secant rate. The time step may change between steps (set_time_step). Nothing allocates after construction. One
+/// law per thread (the workspace is its).
 ///
 /// The tangential displacement is that of the first body's contact point relative to the second's; the tangential
 /// force is the force on the second body (the first feels its opposite); both are components in the contact frame.
