@@ -109,7 +109,26 @@ void ContactLaw::check(std::span<const double> state) const {
     }
     const std::size_t n = loads_.size();
     const std::size_t active = count_at(state, normal_offset + 2);
-    count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
+    const std::size_t touched =
+        count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
+    // The elements are stepped in place (Foundation::attach, PlanarTangentialLayer::attach), which takes those
+    // never touched to be zero, as initialise() leaves them: `blocks` blocks of n from `offset` (the Foundation's
+    // w, sigma, flags and h per branch; the layer's u_x, u_y and h_x, h_y per branch).
+    const auto require_untouched_zero = [&](std::size_t offset, std::size_t blocks, std::size_t count,
+                                            const char* kind) {
+        for (std::size_t block = 0; block < blocks; ++block) {
+            for (std::size_t i = count; i < n; ++i) {
+                const std::size_t index = offset + block * n + i;
+                if (state[index] != 0.0) {
+                    throw InvalidInput(entry(index), format_value(state[index]),
+                                       std::string("a ") + kind + " element beyond the " + std::to_string(count) +
+                                           " touched ones holds zero");
+                }
+            }
+        }
+    };
+    require_untouched_zero(normal_offset + 3, 3 + branches_, active, "normal");
+    require_untouched_zero(tangential_offset_ + 3, 2 + 2 * branches_, touched, "tangential");
     for (std::size_t i = 0; i < active; ++i) {
         const std::size_t flag = normal_offset + 3 + 2 * n + i;
         if (state[flag] != 0.0 && state[flag] != 1.0) {
@@ -160,7 +179,7 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
     return foundation_.spacing() * (normal_factor * normal_sum + tangential_factor * tangential_sum);
 }
 
-void ContactLaw::begin(std::span<const double> state) {
+void ContactLaw::begin(std::span<double> state) {
     if (state.size() < state_size_) {
         throw InvalidInput("state", std::to_string(state.size()) + " doubles",
                            "this law's contact state holds " + std::to_string(state_size_) + " doubles");
@@ -171,8 +190,8 @@ void ContactLaw::begin(std::span<const double> state) {
     frame_ = {state[frame_offset], state[frame_offset + 1], state[frame_offset + 2]};
     handedness_ = state[handedness_offset];
     overlap_ = state[normal_offset];
-    foundation_.load_state(state.subspan(normal_offset));
-    layer_.load_state(state.subspan(tangential_offset_));
+    foundation_.attach(state.subspan(normal_offset));  // the elements step in place there
+    layer_.attach(state.subspan(tangential_offset_));
     foundation_.begin_step(coefficients_);
     start_normal_force_ = foundation_.total_force();
     start_tangential_force_ = layer_.total_force();
@@ -221,8 +240,6 @@ void ContactLaw::end(std::span<double> state) const {
     state[1] = displacement_[1];
     for (std::size_t i = 0; i < 3; ++i) state[frame_offset + i] = frame_[i];
     state[handedness_offset] = handedness_;
-    foundation_.save_state(state.subspan(normal_offset));
-    layer_.save_state(state.subspan(tangential_offset_));
 }
 
 void ContactLaw::advance(std::span<double> state, double overlap, PlanarVector displacement) {

@@ -70,8 +70,8 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
         memory_.assign(count * branches, 0.0);
         in_contact_.assign(count, 0);
         event_.assign(count, 0.0);
-        next_displacement_.assign(count, 0.0);
-        next_stress_.assign(count, 0.0);
+        start_displacement_.assign(count, 0.0);
+        start_stress_.assign(count, 0.0);
         increment_.assign(count, 0.0);
         relaxed_.assign(count, 0.0);
         if (material.viscosity() > 0.0) free_relaxed_.assign(count, 0.0);
@@ -108,15 +108,15 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::begin_step(co
     free_stiffness_ = springs + (dt > 0.0 ? 2.0 * eta / dt : 0.0);
     const auto& terms = material_.terms();
     double* __restrict relaxed = relaxed_.data();
-    const double* __restrict w = displacement_.data();
-    relaxed_sums(material_, step_, w, memory_.data(), n, active_, relaxed);
+    const double* __restrict w = element_displacements();
+    relaxed_sums(material_, step_, w, element_memories(), n, active_, relaxed);
     if (eta == 0.0) return;
     // free_relaxed = relaxed - eta rate0 = relaxed + G_inf w + sum_k G_k h_k.
     double* __restrict free_relaxed = free_relaxed_.data();
     for (std::size_t i = 0; i < active_; ++i) free_relaxed[i] = relaxed[i] + g_inf * w[i];
     for (std::size_t k = 0; k < terms.size(); ++k) {
         const double weight = terms[k].modulus;
-        const double* __restrict h = memory_.data() + k * n;
+        const double* __restrict h = element_memories() + k * n;
         for (std::size_t i = 0; i < active_; ++i) free_relaxed[i] += weight * h[i];
     }
 }
@@ -127,9 +127,10 @@ std::size_t Foundation::reach(double depth) const {
     return i;
 }
 
-Foundation::Outcome Foundation::evaluate(std::size_t i, double depth_start, double depth_end) const {
+Foundation::Outcome Foundation::evaluate(std::size_t i, double w0, double sigma0, double depth_start,
+                                         double depth_end) const {
     const double g = equivalent_[i];
-    const double w = displacement_[i];
+    const double w = w0;
     const bool contact = in_contact_[i] != 0;
     const double relaxed = i < active_ ? relaxed_[i] : 0.0;
     const double free_relaxed = i < active_ ? free_relaxed_of(i) : 0.0;
@@ -143,7 +144,7 @@ Foundation::Outcome Foundation::evaluate(std::size_t i, double depth_start, doub
     outcome.contact = !contact;
     if (contact) {
         // Exit (eq. 20): the force crosses zero inside the step.
-        const double before = stress_[i];
+        const double before = sigma0;
         outcome.fraction = before > 0.0 ? before / (before - plain.stress) : 0.0;
     } else {
         // Entry (eq. 14): the indenter reaches the creeping surface inside the step.
@@ -191,12 +192,13 @@ double Foundation::contact_substep(double time_step, double new_displacement, do
     return stress;
 }
 
-double Foundation::split_stress(std::size_t i, const Outcome& outcome, double depth_start, double depth_end,
-                                double& w, double* h) const {
+double Foundation::split_stress(std::size_t i, double w0, const Outcome& outcome, double depth_start,
+                                double depth_end, double& w, double* h) const {
     const std::size_t n = size();
     const std::size_t branches = material_.terms().size();
-    w = displacement_[i];
-    for (std::size_t k = 0; k < branches; ++k) h[k] = memory_[k * n + i];
+    const double* memory = element_memories();
+    w = w0;
+    for (std::size_t k = 0; k < branches; ++k) h[k] = memory[k * n + i];
     const double first = outcome.fraction * step_.time_step;
     const double second = step_.time_step - first;
     const double g = equivalent_[i];
@@ -216,16 +218,19 @@ double Foundation::split_stress(std::size_t i, const Outcome& outcome, double de
 
 double Foundation::trial_force(double depth_start, double depth_end) const {
     const std::size_t end = std::min(reach(std::max(depth_start, depth_end)), size());
+    const double* displacement = element_displacements();
+    const double* stress = element_stresses();
     double sum = 0.0;
     double w = 0.0;
     for (std::size_t i = 0; i < end; ++i) {
         const bool touched = i < active_;
         const PlainStep plain =
             plain_step(in_contact_[i] != 0, (touched ? relaxed_[i] : 0.0) + contact_offset_,
-                       touched ? free_relaxed_of(i) : 0.0, equivalent_[i], displacement_[i], depth_end,
+                       touched ? free_relaxed_of(i) : 0.0, equivalent_[i], displacement[i], depth_end,
                        contact_stiffness_, free_stiffness_);
-        sum += plain.split ? split_stress(i, evaluate(i, depth_start, depth_end), depth_start, depth_end, w,
-                                          scratch_.data())
+        sum += plain.split ? split_stress(i, displacement[i], evaluate(i, displacement[i], stress[i], depth_start,
+                                                                       depth_end),
+                                          depth_start, depth_end, w, scratch_.data())
                            : plain.stress;
     }
     return 2.0 * normal_stiffness_factor * spacing_ * sum;
@@ -246,34 +251,38 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
     const std::size_t n = size();
     const std::size_t end = reach(deepest);
     const std::size_t branches = material_.terms().size();
-    // One branch-free pass over the elements (it vectorises, with -fno-trapping-math, see CMakeLists.txt) writes
-    // every element's step as if unsplit into the next_* buffers, its increment dw, and event_ = 1 where an entry
-    // or exit splits the step (a double, so that the pass has one element width). The old state stays intact for
-    // the scalar pass over the few split elements (evaluate() reads it; relaxed_ is zero beyond active_, never
-    // written there), then the branch memories take dw, the split elements are overwritten from their saved state,
-    // and the buffers swap. Elements at or beyond `end` are untouched: zero in both buffers.
+    // One branch-free pass over the elements (it vectorises, with -fno-trapping-math, see CMakeLists.txt) steps
+    // every element in place as if unsplit, keeping its start w and sigma in the start_* buffers, its increment dw,
+    // and event_ = 1 where an entry or exit splits the step (a double, so that the pass has one element width).
+    // The scalar pass over the few split elements starts from the kept values (relaxed_ is zero beyond active_,
+    // never written there; the memories are not yet stepped), then the branch memories take dw and the split
+    // elements are overwritten from their saved state. Elements at or beyond `end` are untouched: zero.
     const double contact_stiffness = contact_stiffness_;
     const double free_stiffness = free_stiffness_;
     const double contact_offset = contact_offset_;
     {
         const double* __restrict g = equivalent_.data();
-        const double* __restrict w = displacement_.data();
+        double* __restrict w = element_displacements();
+        double* __restrict sigma = element_stresses();
         const double* __restrict relaxed = relaxed_.data();
         const double* __restrict free_relaxed =
             material_.viscosity() > 0.0 ? free_relaxed_.data() : relaxed_.data();
         const std::uint8_t* __restrict contact = in_contact_.data();
-        double* __restrict next_w = next_displacement_.data();
-        double* __restrict next_sigma = next_stress_.data();
+        double* __restrict start_w = start_displacement_.data();
+        double* __restrict start_sigma = start_stress_.data();
         double* __restrict dw = increment_.data();
         double* __restrict event = event_.data();
         // The range of split elements (they gather at the contact edge), so that the scalar pass scans only it.
         // 32-bit indices (max_elements fits) keep the min/max reductions vectorisable.
         std::int32_t first = static_cast<std::int32_t>(end), last = -1;
         for (std::size_t i = 0; i < end; ++i) {
-            const PlainStep plain = plain_step(contact[i] != 0, relaxed[i] + contact_offset, free_relaxed[i], g[i], w[i],
+            const double w0 = w[i];
+            const PlainStep plain = plain_step(contact[i] != 0, relaxed[i] + contact_offset, free_relaxed[i], g[i], w0,
                                                depth_end, contact_stiffness, free_stiffness);
-            next_w[i] = w[i] + plain.increment;
-            next_sigma[i] = plain.stress;
+            start_w[i] = w0;
+            start_sigma[i] = sigma[i];
+            w[i] = w0 + plain.increment;
+            sigma[i] = plain.stress;
             dw[i] = plain.increment;
             event[i] = plain.split ? 1.0 : 0.0;
             const auto index = static_cast<std::int32_t>(i);
@@ -290,37 +299,40 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
     inner_exit_ = {-1.0, -1.0};
     for (std::size_t i = split_first_; i < split_end_; ++i) {
         if (event_[i] == 0.0) continue;
-        const Outcome outcome = evaluate(i, depth_start, depth_end);
+        const Outcome outcome = evaluate(i, start_displacement_[i], start_stress_[i], depth_start, depth_end);
         if (!outcome.contact) latest_exit_ = std::max(latest_exit_, outcome.fraction);
         if (!outcome.contact && i < inner_exit_.size()) inner_exit_[i] = outcome.fraction;
         double split_w = 0.0;
         const std::size_t offset = split_state_.size();
         split_state_.resize(offset + branches + 2);
         const double stress =
-            split_stress(i, outcome, depth_start, depth_end, split_w, split_state_.data() + offset + 2);
+            split_stress(i, start_displacement_[i], outcome, depth_start, depth_end, split_w,
+                         split_state_.data() + offset + 2);
         split_state_[offset] = split_w;
         split_state_[offset + 1] = stress;
         split_.push_back(i);
         if (outcome.contact) entries_.push_back({i, outcome.fraction});
         in_contact_[i] = outcome.contact ? 1 : 0;
+        if (attached_ != nullptr) attached_[3 + 2 * n + i] = outcome.contact ? 1.0 : 0.0;
     }
     const auto& terms = material_.terms();
     for (std::size_t k = 0; k < terms.size(); ++k) {
         const double decay = step_.decay[k];
         const double gain = step_.gain[k];
-        double* __restrict h = memory_.data() + k * n;
+        double* __restrict h = element_memories() + k * n;
         const double* __restrict dw = increment_.data();
         for (std::size_t i = 0; i < end; ++i) h[i] = decay * h[i] + gain * dw[i];
     }
+    double* displacement = element_displacements();
+    double* stress = element_stresses();
+    double* memory = element_memories();
     for (std::size_t s = 0; s < split_.size(); ++s) {
         const std::size_t i = split_[s];
         const double* state = split_state_.data() + s * (branches + 2);
-        next_displacement_[i] = state[0];
-        next_stress_[i] = state[1];
-        for (std::size_t k = 0; k < branches; ++k) memory_[k * n + i] = state[2 + k];
+        displacement[i] = state[0];
+        stress[i] = state[1];
+        for (std::size_t k = 0; k < branches; ++k) memory[k * n + i] = state[2 + k];
     }
-    displacement_.swap(next_displacement_);
-    stress_.swap(next_stress_);
     active_ = std::max(active_, end);
     high_water_ = std::max(high_water_, active_);
     last_depth_ = depth_end;
@@ -328,11 +340,16 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
     std::array<double, 4> partial{};
     std::size_t i = 0;
     for (; i + 4 <= active_; i += 4) {
-        for (std::size_t lane = 0; lane < 4; ++lane) partial[lane] += stress_[i + lane];
+        for (std::size_t lane = 0; lane < 4; ++lane) partial[lane] += stress[i + lane];
     }
-    for (; i < active_; ++i) partial[0] += stress_[i];
+    for (; i < active_; ++i) partial[0] += stress[i];
     const double sum = (partial[0] + partial[1]) + (partial[2] + partial[3]);
     total_force_ = 2.0 * normal_stiffness_factor * spacing_ * sum;
+    if (attached_ != nullptr) {
+        attached_[0] = last_depth_;
+        attached_[1] = total_force_;
+        attached_[2] = static_cast<double>(active_);
+    }
 }
 
 std::size_t Foundation::contact_count() const {
@@ -344,7 +361,8 @@ double Foundation::force_slope() const {
 }
 
 double Foundation::free_gap(std::size_t i) const {
-    return i < size() ? last_depth_ - equivalent_[i] - displacement_[i] : -std::numeric_limits<double>::infinity();
+    if (i >= size()) return -std::numeric_limits<double>::infinity();
+    return last_depth_ - equivalent_[i] - element_displacements()[i];
 }
 
 double Foundation::axis_weight() const {
@@ -354,7 +372,8 @@ double Foundation::axis_weight() const {
 
 double Foundation::touching_depth() const {
     double lowest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < active_; ++i) lowest = std::min(lowest, equivalent_[i] + displacement_[i]);
+    const double* displacement = element_displacements();
+    for (std::size_t i = 0; i < active_; ++i) lowest = std::min(lowest, equivalent_[i] + displacement[i]);
     if (active_ < 2) return lowest;
     const double at_axis = last_depth_ - (1.0 - axis_weight()) * free_gap(0) - axis_weight() * free_gap(1);
     return std::min(lowest, at_axis);
@@ -381,7 +400,7 @@ double Foundation::contact_radius() const {
     }
     // Otherwise (a free element between two in contact, a flat profile) between the two centres, where the
     // displacement the element could still give up (inside) and the free gap (outside) cross zero.
-    const double inside = stress_[j] / contact_stiffness_;
+    const double inside = element_stresses()[j] / contact_stiffness_;
     const double fraction = inside > 0.0 ? inside / (inside - outside) : 0.0;
     return position(j) + std::clamp(fraction, 0.0, 1.0) * spacing_;
 }
@@ -397,10 +416,10 @@ void Foundation::save_state(std::span<double> out) const {
     double* __restrict sigma = w + n;
     double* __restrict flag = sigma + n;
     double* __restrict h = flag + n;
-    const double* __restrict displacement = displacement_.data();
-    const double* __restrict stress = stress_.data();
+    const double* __restrict displacement = element_displacements();
+    const double* __restrict stress = element_stresses();
     const std::uint8_t* __restrict contact = in_contact_.data();
-    const double* __restrict memory = memory_.data();
+    const double* __restrict memory = element_memories();
     const std::size_t active = active_;
     for (std::size_t i = 0; i < active; ++i) {
         w[i] = displacement[i];
@@ -415,25 +434,11 @@ void Foundation::save_state(std::span<double> out) const {
 void Foundation::load_state(std::span<const double> in) {
     const std::size_t n = size();
     const std::size_t branches = material_.terms().size();
+    attached_ = nullptr;
     last_depth_ = in[0];
     total_force_ = in[1];
     const std::size_t active = static_cast<std::size_t>(in[2]);
-    // Beyond the loaded state's touched elements every buffer must hold zeros (advance() relies on it): clear what
-    // an earlier state left there, buffer by buffer (each fill one vectorised store run).
-    if (active < high_water_) {
-        const auto clear = [&](auto& buffer, std::size_t offset) {
-            std::fill(buffer.begin() + static_cast<std::ptrdiff_t>(offset + active),
-                      buffer.begin() + static_cast<std::ptrdiff_t>(offset + high_water_),
-                      typename std::decay_t<decltype(buffer)>::value_type{});
-        };
-        for (auto* buffer : {&displacement_, &stress_, &next_displacement_, &next_stress_, &increment_, &relaxed_,
-                             &event_}) {
-            clear(*buffer, 0);
-        }
-        clear(in_contact_, 0);
-        if (!free_relaxed_.empty()) clear(free_relaxed_, 0);
-        for (std::size_t k = 0; k < branches; ++k) clear(memory_, k * n);
-    }
+    clear_beyond(active);
     const double* __restrict w = in.data() + 3;
     const double* __restrict sigma = w + n;
     const double* __restrict flag = sigma + n;
@@ -454,6 +459,42 @@ void Foundation::load_state(std::span<const double> in) {
     high_water_ = std::max(high_water_, active_);
 }
 
+void Foundation::attach(std::span<double> state) {
+    const std::size_t n = size();
+    attached_ = nullptr;
+    last_depth_ = state[0];
+    total_force_ = state[1];
+    const std::size_t active = static_cast<std::size_t>(state[2]);
+    clear_beyond(active);
+    const double* __restrict flag = state.data() + 3 + 2 * n;
+    std::uint8_t* __restrict contact = in_contact_.data();
+    for (std::size_t i = 0; i < active; ++i) contact[i] = flag[i] != 0.0 ? 1 : 0;
+    active_ = active;
+    high_water_ = std::max(high_water_, active_);
+    attached_ = state.data();
+}
+
+void Foundation::clear_beyond(std::size_t active) {
+    const std::size_t n = size();
+    const std::size_t branches = material_.terms().size();
+    // Beyond the loaded state's touched elements every buffer must hold zeros (advance() relies on it): clear what
+    // an earlier state left there, buffer by buffer (each fill one vectorised store run).
+    if (active < high_water_) {
+        const auto clear = [&](auto& buffer, std::size_t offset) {
+            std::fill(buffer.begin() + static_cast<std::ptrdiff_t>(offset + active),
+                      buffer.begin() + static_cast<std::ptrdiff_t>(offset + high_water_),
+                      typename std::decay_t<decltype(buffer)>::value_type{});
+        };
+        for (auto* buffer : {&displacement_, &stress_, &start_displacement_, &start_stress_, &increment_, &relaxed_,
+                             &event_}) {
+            clear(*buffer, 0);
+        }
+        clear(in_contact_, 0);
+        if (!free_relaxed_.empty()) clear(free_relaxed_, 0);
+        for (std::size_t k = 0; k < branches; ++k) clear(memory_, k * n);
+    }
+}
+
 void Foundation::reserve_events() {
     split_.reserve(size());
     entries_.reserve(size());
@@ -461,13 +502,13 @@ void Foundation::reserve_events() {
 }
 
 void Foundation::line_loads(std::span<double> out) const {
-    const double* sigma = stress_.data();  // a local pointer: the loop vectorises
+    const double* sigma = element_stresses();  // a local pointer: the loop vectorises
     for (std::size_t i = 0; i < out.size(); ++i) out[i] = normal_stiffness_factor * sigma[i];
 }
 
 std::vector<double> Foundation::line_loads() const {
     std::vector<double> q(size());
-    for (std::size_t i = 0; i < size(); ++i) q[i] = normal_stiffness_factor * stress_[i];
+    for (std::size_t i = 0; i < size(); ++i) q[i] = normal_stiffness_factor * element_stresses()[i];
     return q;
 }
 

@@ -31,7 +31,7 @@ __attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::be
     copy_step_coefficients(coefficients, step_);
     share_.set(entries);
     for (std::size_t c = 0; c < 2; ++c) {
-        relaxed_sums(material_, step_, displacement_.data() + c * count_, memory_.data() + c * count_, 2 * count_,
+        relaxed_sums(material_, step_, displacements() + c * count_, memories() + c * count_, 2 * count_,
                      touched_, relaxed_.data() + c * count_);
     }
 }
@@ -67,8 +67,8 @@ __attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::ad
     const double* __restrict relaxed_x = relaxed_.data();
     const double* __restrict relaxed_y = relaxed_.data() + n;
     const double* __restrict share = share_.data();
-    double* __restrict u_x = displacement_.data();
-    double* __restrict u_y = displacement_.data() + n;
+    double* __restrict u_x = displacements();
+    double* __restrict u_y = u_x + n;
     double* __restrict t_x = stress_.data();
     double* __restrict t_y = stress_.data() + n;
     double* __restrict du_x = increment_.data();
@@ -101,12 +101,17 @@ __attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::ad
     }
     for (std::size_t k = 0; k < terms.size(); ++k) {  // h <- E h + B du (step_coefficients.hpp)
         const double decay = step_.decay[k], gain = step_.gain[k];
-        double* __restrict h = memory_.data() + 2 * k * n;
+        double* __restrict h = memories() + 2 * k * n;
         for (std::size_t i = 0; i < count; ++i) h[i] = decay * h[i] + gain * du_x[i];
         for (std::size_t i = 0; i < count; ++i) h[n + i] = decay * h[n + i] + gain * du_y[i];
     }
     const double factor = 2.0 * tangential_stiffness_factor * spacing_;
     total_force_ = {factor * sum_x, factor * sum_y};
+    if (header_ != nullptr) {
+        header_[0] = total_force_[0];
+        header_[1] = total_force_[1];
+        header_[touched_offset] = static_cast<double>(touched_);
+    }
 }
 
 void PlanarTangentialLayer::save_state(std::span<double> out) const {
@@ -117,13 +122,14 @@ void PlanarTangentialLayer::save_state(std::span<double> out) const {
     double* base = out.data() + 3;
     const std::size_t blocks = 2 + 2 * material_.terms().size();  // u_x, u_y, then h_x, h_y per branch
     for (std::size_t b = 0; b < blocks; ++b) {
-        const double* from = b < 2 ? displacement_.data() + b * n : memory_.data() + (b - 2) * n;
+        const double* from = b < 2 ? displacements() + b * n : memories() + (b - 2) * n;
         std::copy_n(from, touched_, base + b * n);
     }
 }
 
 void PlanarTangentialLayer::load_state(std::span<const double> in) {
     const std::size_t n = count_;
+    header_ = nullptr;
     total_force_ = {in[0], in[1]};
     const auto touched = static_cast<std::size_t>(in[touched_offset]);
     const double* base = in.data() + 3;
@@ -133,6 +139,19 @@ void PlanarTangentialLayer::load_state(std::span<const double> in) {
         std::copy_n(base + b * n, touched, to);
         std::fill(to + touched, to + std::max(touched, high_water_), 0.0);  // zeros beyond the loaded elements
     }
+    adopt_touched(touched);
+}
+
+void PlanarTangentialLayer::attach(std::span<double> state) {
+    // The state's element blocks have the layout of displacement_ and memory_ (u_x, u_y, then h_x, h_y per
+    // branch), and hold zeros beyond its touched elements (initialised so, written only below the touched count).
+    header_ = state.data();
+    total_force_ = {state[0], state[1]};
+    adopt_touched(static_cast<std::size_t>(state[touched_offset]));
+}
+
+void PlanarTangentialLayer::adopt_touched(std::size_t touched) {
+    const std::size_t n = count_;
     for (std::size_t c = 0; c < 2; ++c) {
         std::fill(relaxed_.data() + c * n + touched, relaxed_.data() + c * n + std::max(touched, high_water_), 0.0);
     }

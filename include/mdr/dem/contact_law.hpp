@@ -26,20 +26,22 @@ using SpatialVector = std::array<double, 3>;
 /// both bodies incompressible). The law owns a workspace — one Foundation (section 5) and one
 /// PlanarTangentialLayer (section 6) of N elements on the half-width L — and no contact's state: a contact's state
 /// is state_size() doubles in the caller's memory (a pair style's per-contact history, say), zeroed by
-/// initialise() at first touch. A step of one contact:
+/// initialise() at first touch; the elements are stepped in place there (no copy into the workspace and back),
+/// the workspace keeps only what a step derives. A step of one contact:
 ///
-///     law.begin(state);                      // the contact's state into the workspace (its header checked)
+///     law.begin(state);                      // attaches the contact's state (its header checked)
 ///     law.normal_trial(overlap);             // optional: F_N for a trial overlap (an implicit integrator's solve)
 ///     law.advance_normal(overlap);           // the new normal overlap (eq. 13-22)
 ///     law.tangential_trial(displacement);    // optional: the tangential force for a trial displacement
 ///     law.advance_tangential(displacement);  // the new tangential displacement of the contact point (eq. 41-51)
-///     law.end(state);                        // the workspace back into the state
+///     law.end(state);                        // the tangential displacement and the frame into the state
 ///
 /// or law.advance(state, overlap, displacement) for the four calls without trials, or advance_spatial for a code
 /// that works with three-dimensional vectors (the contact frame then lives in the state and turns with the
-/// normal). Between begin and end the overlap and the displacement go linearly in time over the step (the
-/// elements' updates are exact for that); a dashpot sees the secant rate. The time step may change between steps
-/// (set_time_step). Nothing allocates after construction. One law per thread (the workspace is its).
+/// normal). The state must stay in place between begin and end. Between begin and end the overlap and the
+/// displacement go linearly in time over the step (the elements' updates are exact for that); a dashpot sees the
+/// secant rate. The time step may change between steps (set_time_step). Nothing allocates after construction. One
+/// law per thread (the workspace is its).
 ///
 /// The tangential displacement is that of the first body's contact point relative to the second's; the tangential
 /// force is the force on the second body (the first feels its opposite); both are components in the contact frame.
@@ -70,9 +72,11 @@ public:
     /// The length [s] of the next step.
     double time_step() const { return coefficients_.time_step; }
 
-    /// Loads a contact's state into the workspace and prepares its step. Throws mdr::InvalidInput when the
-    /// state's sizes are not this law's (a corrupted state); check() inspects every value.
-    void begin(std::span<const double> state);
+    /// Takes a contact's state and prepares its step: the elements are then stepped in place in `state`
+    /// (advance_normal and advance_tangential write them there), the tangential displacement and the frame are
+    /// written by end(). Throws
+    /// mdr::InvalidInput when the state's sizes are not this law's (a corrupted state); check() inspects every value.
+    void begin(std::span<double> state);
     /// Total normal force [N] if the step ended at `overlap` [m]; the state is not changed.
     double normal_trial(double overlap) const;
     /// Advances the normal problem to `overlap` [m] over the step. Throws mdr::InvalidInput (key `half_width`)
@@ -84,7 +88,7 @@ public:
     /// Advances the tangential problem to `displacement` [m] (after advance_normal); throws mdr::InvalidInput (key
     /// `displacement`) unless it is finite.
     void advance_tangential(PlanarVector displacement);
-    /// Writes the workspace back into the contact's state.
+    /// Writes the tangential displacement and the frame into the contact's state (the elements are already there).
     void end(std::span<double> state) const;
     /// begin, advance_normal, advance_tangential, end.
     void advance(std::span<double> state, double overlap, PlanarVector displacement);

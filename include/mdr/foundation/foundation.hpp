@@ -108,13 +108,19 @@ public:
     /// Replaces the state with one written by save_state (or zeros: no contact yet) by a foundation of the same
     /// size and material. Call begin_step after it.
     void load_state(std::span<const double> in);
+    /// Steps the state in place in `state` (state_size doubles written by this foundation's steps, save_state or
+    /// zeros; zero beyond the touched elements; the caller has checked the touched count) instead of the
+    /// foundation's own buffers: every advance reads and writes the elements there, and the depth, force, touched
+    /// count and contact flags, until the next attach or load_state. No copy in or out (the contact flags are
+    /// read once). Call begin_step after it; `state` must outlive the steps.
+    void attach(std::span<double> state);
     /// Reserves room for an event at every element, so that no later step allocates.
     void reserve_events();
     /// Line loads q_z,i [N/m] of the first out.size() <= size() elements into `out`, without allocating.
     void line_loads(std::span<double> out) const;
 
     /// Element displacements w_i [m].
-    std::span<const double> displacements() const { return displacement_; }
+    std::span<const double> displacements() const { return {element_displacements(), size()}; }
     /// Line load q_z(x_i) = F_N(x_i)/dx = 4 sigma_i [N/m] (eq. 22).
     std::vector<double> line_loads() const;
     /// MDR profile g(x_i) [m] at the element centres.
@@ -124,9 +130,24 @@ public:
 
 private:
     struct Outcome;
-    Outcome evaluate(std::size_t i, double depth_start, double depth_end) const;
-    double split_stress(std::size_t i, const Outcome& outcome, double depth_start, double depth_end, double& w,
-                        double* h) const;
+    // The step of element i from its displacement w0 and stress sigma0 at the start (the state's before advance
+    // overwrites them in place).
+    Outcome evaluate(std::size_t i, double w0, double sigma0, double depth_start, double depth_end) const;
+    double split_stress(std::size_t i, double w0, const Outcome& outcome, double depth_start, double depth_end,
+                        double& w, double* h) const;
+    void clear_beyond(std::size_t active);
+    // w_i, sigma_i and h_{k,i}: the attached state's, else the foundation's own (found per call, so that a copy
+    // never points into the original's buffers).
+    double* element_displacements() { return attached_ != nullptr ? attached_ + 3 : displacement_.data(); }
+    const double* element_displacements() const {
+        return attached_ != nullptr ? attached_ + 3 : displacement_.data();
+    }
+    double* element_stresses() { return attached_ != nullptr ? attached_ + 3 + size() : stress_.data(); }
+    const double* element_stresses() const { return attached_ != nullptr ? attached_ + 3 + size() : stress_.data(); }
+    double* element_memories() { return attached_ != nullptr ? attached_ + 3 + 3 * size() : memory_.data(); }
+    const double* element_memories() const {
+        return attached_ != nullptr ? attached_ + 3 + 3 * size() : memory_.data();
+    }
     void free_substep(double time_step, double& w, double* h) const;
     double contact_substep(double time_step, double new_displacement, double end_rate, double& w, double* h) const;
     double free_gap(std::size_t i) const;
@@ -136,13 +157,14 @@ private:
     rheology::Rheology material_;  // a copy: the caller's material may be a temporary
     double spacing_;
     std::vector<double> equivalent_;           ///< g(x_i)
-    std::vector<double> displacement_;         ///< w_i
-    std::vector<double> stress_;               ///< sigma_i at the end of the last step
-    std::vector<double> memory_;               ///< h_{k,i}, branch-major: memory_[k * n + i]
+    std::vector<double> displacement_;         ///< w_i when no state is attached
+    std::vector<double> stress_;               ///< sigma_i at the end of the last step, when no state is attached
+    std::vector<double> memory_;               ///< h_{k,i}, branch-major: memory_[k * n + i], when none is attached
+    double* attached_ = nullptr;               ///< the attached state (see attach), else null
     std::vector<std::uint8_t> in_contact_;
     std::vector<double> event_;                ///< 1 where the last step was split by an entry or exit, else 0
-    std::vector<double> next_displacement_;    ///< w_i after the step being taken (swapped in at its end)
-    std::vector<double> next_stress_;          ///< sigma_i after the step being taken (swapped in at its end)
+    std::vector<double> start_displacement_;   ///< w_i at the start of the step being taken
+    std::vector<double> start_stress_;         ///< sigma_i at the start of the step being taken
     std::vector<double> increment_;            ///< dw_i of the step being taken
     std::size_t split_first_ = 0;              ///< the split elements of the step lie in [split_first_, split_end_)
     std::size_t split_end_ = 0;

@@ -63,16 +63,30 @@ public:
     /// Replaces the state with one written by save_state (or zeros) by a layer of the same size and material; the
     /// caller has checked the touched count. Call begin_step after it.
     void load_state(std::span<const double> in);
+    /// Steps the state in place in `state` (state_size doubles written by this layer's steps, save_state or zeros;
+    /// the caller has checked the touched count) instead of the layer's own buffers: the elements' displacements and
+    /// memories are read and written there, and every advance writes the force and the touched count back, until
+    /// the next attach or load_state. No copy in or out. Call begin_step after it; `state` must outlive the steps.
+    void attach(std::span<double> state);
 
 private:
+    void adopt_touched(std::size_t touched);  // a loaded state's touched count; relaxed_ zero beyond it
+    // u_i and h_{k,i}: the attached state's, else the layer's own (found per call, so that a copy of the layer
+    // never points into the original's buffers).
+    double* displacements() { return header_ != nullptr ? header_ + 3 : displacement_.data(); }
+    const double* displacements() const { return header_ != nullptr ? header_ + 3 : displacement_.data(); }
+    double* memories() { return header_ != nullptr ? header_ + 3 + 2 * count_ : memory_.data(); }
+    const double* memories() const { return header_ != nullptr ? header_ + 3 + 2 * count_ : memory_.data(); }
+
     // Structure of arrays: component c of element i at [c * n + i]; memory branch-major, memory_[k * 2 n + c n + i].
     rheology::Rheology material_;  // a copy: the caller's material may be a temporary
     double per_load_;              ///< mu / (8/3): the friction limit [Pa] per unit line load [N/m]
     double spacing_;
     std::size_t count_;
-    std::vector<double> displacement_;  ///< u_i
+    std::vector<double> displacement_;  ///< u_i when no state is attached
     std::vector<double> stress_;        ///< t_i of the step being taken (not part of the state)
-    std::vector<double> memory_;        ///< h_{k,i}
+    std::vector<double> memory_;        ///< h_{k,i} when no state is attached
+    double* header_ = nullptr;          ///< the attached state (force, touched count, u_i, h_{k,i}), else null
     std::vector<double> relaxed_;       ///< G_inf u_i + sum_k G_k E_k h_{k,i} for the prepared step
     std::vector<double> increment_;     ///< du_i of the step being taken
     std::vector<double> contact_mask_;  ///< 1 for an element in contact in the step being taken, else 0

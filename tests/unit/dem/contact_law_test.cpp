@@ -134,6 +134,19 @@ TEST(DemContactLaw, ACorruptedStateRaisesNamingTheEntry) {
         EXPECT_EQ(thrown_key([&] { law.begin(corrupted); }), "state[8]") << bad;
         EXPECT_EQ(thrown_key([&] { law.check(corrupted); }), "state[8]") << bad;
     }
+    // The elements are stepped in place in the state and those never touched are taken as zero: a state
+    // with a value there is not one this law wrote (state_size: 6 + the Foundation's 3 + 50 (2 + 3) doubles, then
+    // the layer's header of 3 and u_x; element 49 was never touched by this collision's contact radius).
+    const std::size_t untouched_u_x = 6 + (3 + 50 * 5) + 3 + 49;
+    ASSERT_EQ(state[6 + (3 + 50 * 5) + 2], state[8]);  // the layer touched what the Foundation did
+    ASSERT_LT(state[8], 49.0);
+    auto stray = state;
+    stray[untouched_u_x] = 1e-9;
+    EXPECT_EQ(thrown_key([&] { law.check(stray); }), "state[" + std::to_string(untouched_u_x) + "]");
+    // The same for the Foundation's elements: w of element 49 at 6 + 3 + 49.
+    auto stray_normal = state;
+    stray_normal[6 + 3 + 49] = 1e-9;
+    EXPECT_EQ(thrown_key([&] { law.check(stray_normal); }), "state[58]");
     auto short_state = state;
     short_state.pop_back();
     EXPECT_EQ(thrown_key([&] { law.begin(short_state); }), "state");
