@@ -87,6 +87,13 @@ void ContactLaw::mirror(std::span<double> state) {
     for (std::size_t i = frame_offset; i <= handedness_offset; ++i) state[i] = -state[i];
 }
 
+void ContactLaw::require_state_size(std::span<const double> state) const {
+    if (state.size() < state_size_) {
+        throw InvalidInput("state", std::to_string(state.size()) + " doubles",
+                           "this law's contact state holds " + std::to_string(state_size_) + " doubles");
+    }
+}
+
 std::size_t ContactLaw::count_at(std::span<const double> state, std::size_t offset) const {
     const double count = state[offset];
     if (!(count >= 0.0 && count <= static_cast<double>(loads_.size()) && count == std::floor(count))) {
@@ -98,10 +105,7 @@ std::size_t ContactLaw::count_at(std::span<const double> state, std::size_t offs
 }
 
 void ContactLaw::check(std::span<const double> state) const {
-    if (state.size() < state_size_) {
-        throw InvalidInput("state", std::to_string(state.size()) + " doubles",
-                           "this law's contact state holds " + std::to_string(state_size_) + " doubles");
-    }
+    require_state_size(state);
     for (std::size_t i = 0; i < state_size_; ++i) {
         if (!std::isfinite(state[i])) {
             throw InvalidInput(entry(i), format_value(state[i]), "a contact state holds finite numbers");
@@ -148,6 +152,7 @@ void ContactLaw::check(std::span<const double> state) const {
 }
 
 double ContactLaw::stored_energy(std::span<const double> state) const {
+    require_state_size(state);
     const std::size_t n = loads_.size();
     const auto& terms = material_.terms();
     // sum_i (G_inf |w_i|^2 + sum_k G_k |h_k,i|^2) over `count` elements of `components` displacement blocks at
@@ -180,10 +185,7 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
 }
 
 void ContactLaw::begin(std::span<double> state) {
-    if (state.size() < state_size_) {
-        throw InvalidInput("state", std::to_string(state.size()) + " doubles",
-                           "this law's contact state holds " + std::to_string(state_size_) + " doubles");
-    }
+    require_state_size(state);
     count_at(state, normal_offset + 2);  // the two element counts decide where the loads below read and write
     count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
     displacement_ = {state[0], state[1]};

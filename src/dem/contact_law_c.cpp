@@ -111,8 +111,10 @@ double mdr_contact_law_normal_force(const mdr_contact_law* law, const double* st
 
 double mdr_contact_law_step_work(const mdr_contact_law* law) { return law->law.step_work(); }
 
-double mdr_contact_law_stored_energy(const mdr_contact_law* law, const double* state) {
-    return law->law.stored_energy(std::span<const double>(state, law->law.state_size()));
+int mdr_contact_law_stored_energy(const mdr_contact_law* law, const double* state, double* energy, char* message,
+                                  std::size_t message_size) {
+    return guarded([&] { *energy = law->law.stored_energy(std::span<const double>(state, law->law.state_size())); },
+                   message, message_size);
 }
 
 }  // extern "C"

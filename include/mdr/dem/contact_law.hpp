@@ -118,6 +118,7 @@ public:
     /// (G_inf |w_i|^2 + sum_k G_k |h_k,i|^2) / 2 with c = 4 for the normal and 8/3 for the tangential elements (eq.
     /// 11, 41), h_k,i a branch's spring strain. The work done on a contact (the sum of step_work) less the energy
     /// stored is what it dissipated: in its dashpots, by friction, and with elements that left contact and relax.
+    /// InvalidInput for a state shorter than state_size() or with a corrupted element count.
     double stored_energy(std::span<const double> state) const;
 
     /// Normal force [N] stored in a contact's state (after end()).
@@ -142,6 +143,7 @@ private:
     static constexpr std::size_t normal_offset = 6;
     std::span<const double> loads() const;
     std::size_t count_at(std::span<const double> state, std::size_t offset) const;
+    void require_state_size(std::span<const double> state) const;
 
     foundation::Foundation foundation_;
     foundation::PlanarTangentialLayer layer_;

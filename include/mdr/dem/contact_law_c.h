@@ -55,8 +55,10 @@ int mdr_contact_law_check(const mdr_contact_law* law, const double* state, size_
 double mdr_contact_law_normal_force(const mdr_contact_law* law, const double* state);
 /** Work [J] the bodies did on the contact over the law's last step (the trapezoidal rule on its forces). */
 double mdr_contact_law_step_work(const mdr_contact_law* law);
-/** Elastic energy [J] stored in a contact's state; the summed step work less it is what the contact dissipated. */
-double mdr_contact_law_stored_energy(const mdr_contact_law* law, const double* state);
+/** Writes the elastic energy [J] stored in a contact's state into `energy`; the summed step work less it is what the
+ *  contact dissipated. MDR_INVALID_INPUT (`energy` unchanged) for a corrupted state. */
+int mdr_contact_law_stored_energy(const mdr_contact_law* law, const double* state, double* energy, char* message,
+                                  size_t message_size);
 
 #ifdef __cplusplus
 }

@@ -45,7 +45,10 @@ TEST(DemContactLawC, StepsAsTheCppLaw) {
         ASSERT_EQ(mdr_contact_law_normal_force(law, state.data()), normal_force);
         for (std::size_t i = 0; i < 3; ++i) ASSERT_EQ(force[i], normal_force * normal[i] + tangential[i]);
         ASSERT_EQ(mdr_contact_law_step_work(law), reference.step_work());
-        ASSERT_EQ(mdr_contact_law_stored_energy(law, state.data()), reference.stored_energy(expected));
+        double energy = -1.0;
+        ASSERT_EQ(mdr_contact_law_stored_energy(law, state.data(), &energy, message, sizeof message), MDR_OK)
+            << message;
+        ASSERT_EQ(energy, reference.stored_energy(expected));
     }
     EXPECT_EQ(state, expected);
     EXPECT_EQ(mdr_contact_law_check(law, state.data(), state.size(), message, sizeof message), MDR_OK);
@@ -80,6 +83,11 @@ TEST(DemContactLawC, BadInputIsACodeAndAMessage) {
     EXPECT_EQ(std::string(message).rfind("state[8] = ", 0), 0u) << message;
     EXPECT_EQ(mdr_contact_law_step(law, state.data(), 2e-6, 1e-5, normal, increment, force, nullptr, 0),
               MDR_INVALID_INPUT);
+    // The stored energy of a corrupted state: a code and a message, not an exception through the C interface.
+    double energy = -1.0;
+    EXPECT_EQ(mdr_contact_law_stored_energy(law, state.data(), &energy, message, sizeof message), MDR_INVALID_INPUT);
+    EXPECT_EQ(std::string(message).rfind("state[8] = ", 0), 0u) << message;
+    EXPECT_EQ(energy, -1.0);
     mdr_contact_law_destroy(law);
 }
 

@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "mdr/dem/contact_law.hpp"
+#include "mdr/error.hpp"
 
 namespace mdr::dem {
 namespace {
@@ -50,6 +53,20 @@ TEST(DemContactLawEnergy, AnElasticContactStoresItsWorkAndGivesItBack) {
     const double unloading = load(law, state, 0.0, 4000);
     EXPECT_NEAR(law.stored_energy(state), 0.0, 1e-12 * expected);
     EXPECT_NEAR(loading + unloading, 0.0, 1e-5 * expected);  // nothing dissipated over the closed cycle
+}
+
+TEST(DemContactLawEnergy, AShortStateIsRefusedNamingItsSize) {
+    ContactLaw law(rheology::Rheology::prony(1e6, {}), radius, 0.3, elements, half_width, 1e-6);
+    std::vector<double> state(law.state_size());
+    law.initialise(state);
+    const std::span<const double> short_state(state.data(), state.size() - 1);
+    try {
+        (void)law.stored_energy(short_state);
+        FAIL() << "a state one double short was read";
+    } catch (const InvalidInput& error) {
+        EXPECT_EQ(std::string(error.what()).rfind("state = " + std::to_string(state.size() - 1) + " doubles", 0), 0u)
+            << error.what();
+    }
 }
 
 TEST(DemContactLawEnergy, AStickingTangentialShiftStoresItsSprings) {
