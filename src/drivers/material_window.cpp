@@ -61,14 +61,17 @@ std::size_t rows_before_window(const LoadHistory& history, const std::vector<dou
             jumps.push_back(points[i].time);
         }
     }
+    // Both lists ascend: walk them together. Of the jumps at or before a row, the latest is the nearest; the first
+    // row at a jump's time is the state before it (exact), so for that row only the jumps strictly before count.
     std::size_t rows = 0;
+    std::size_t at_or_before = 0;  // jumps at times <= time[i]
+    std::size_t before = 0;        // jumps at times < time[i]
     for (std::size_t i = 0; i < time.size(); ++i) {
-        // The first row at a jump's time is the state before it (exact); the rows from the next on show the series.
-        const bool counted = std::any_of(jumps.begin(), jumps.end(), [&](double jump) {
-            const bool before_jump = time[i] == jump && (i == 0 || time[i - 1] != jump);
-            return time[i] >= jump && time[i] - jump < shortest && !before_jump;
-        });
-        if (counted) ++rows;
+        while (at_or_before < jumps.size() && jumps[at_or_before] <= time[i]) ++at_or_before;
+        while (before < jumps.size() && jumps[before] < time[i]) ++before;
+        const bool before_jump = i == 0 || time[i - 1] != time[i];
+        const std::size_t preceding = before_jump ? before : at_or_before;
+        if (preceding > 0 && time[i] - jumps[preceding - 1] < shortest) ++rows;
     }
     return rows;
 }

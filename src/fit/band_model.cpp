@@ -22,11 +22,7 @@ public:
           stress_(count, 0.0), contact_(count, 0), h_(count * branches_, 0.0), fold_time_(count, 0.0),
           running_(branches_, 0.0), folded_memory_(branches_, 0.0), scratch_(branches_, 0.0) {
         for (std::size_t i = 0; i < count; ++i) g_[i] = indenter.equivalent((static_cast<double>(i) + 0.5) * spacing);
-        // The deepest depth the drivers' Foundation takes (foundation.cpp): g just beyond the half-width, or at it
-        // where a tabulated profile ends there (g is +infinity beyond, where nothing is known).
-        const double half_width = spacing * static_cast<double>(count);
-        beyond_ = indenter.equivalent(half_width * (1.0 + 1e-12));
-        if (!std::isfinite(beyond_) && !indenter.is_flat_punch()) beyond_ = indenter.equivalent(half_width);
+        beyond_ = foundation::deepest_depth(indenter, spacing * static_cast<double>(count));
         double instantaneous = material.equilibrium_modulus();
         for (const auto& term : material.terms()) instantaneous += term.modulus;
         ratio_ = instantaneous / material.equilibrium_modulus();
@@ -213,9 +209,7 @@ std::optional<BandResponse> band_forces(const rheology::Rheology& material, cons
                                         const std::function<void()>& check_interrupt) {
     if (!band_model_applies(material) || time.empty() || count == 0) return std::nullopt;
     // The drivers' Foundation refuses a state this large with its own message (numerics.elements): leave it to them.
-    if (count > foundation::max_elements || count * (material.terms().size() + 9) > foundation::max_elements * 4) {
-        return std::nullopt;
-    }
+    if (!foundation::state_fits(count, material.terms().size())) return std::nullopt;
     BandRun run(material, indenter, spacing, count);
     BandResponse response{std::vector<double>(time.size(), 0.0), 0};
     if (depth.front() > 0.0) {  // a jump at the first time

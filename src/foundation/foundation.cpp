@@ -21,6 +21,24 @@ void require_element_count(const std::string& key, std::size_t count) {
     }
 }
 
+bool state_fits(std::size_t count, std::size_t branches) {
+    return count <= max_elements && count * (branches + 9) <= max_elements * 4;
+}
+
+namespace {
+
+// g just beyond the half-width: +infinity beyond a flat punch's radius and beyond a tabulated profile's end.
+double beyond_half_width(const profile::Profile& profile, double half_width) {
+    return profile.equivalent(half_width * (1.0 + 1e-12));
+}
+
+}  // namespace
+
+double deepest_depth(const profile::Profile& profile, double half_width) {
+    const double beyond = beyond_half_width(profile, half_width);
+    return std::isfinite(beyond) || profile.is_flat_punch() ? beyond : profile.equivalent(half_width);
+}
+
 namespace {
 
 constexpr double normal_stiffness_factor = 4.0;  // k_z = 4 G dx, eq. (11)
@@ -59,7 +77,7 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
     : material_(material), spacing_(spacing) {
     require_positive("numerics.elements", static_cast<double>(count));
     const std::size_t branches = material.terms().size();
-    if (count > max_elements || count * (branches + 9) > max_elements * 4) {
+    if (!state_fits(count, branches)) {
         throw InvalidInput("numerics.elements", std::to_string(count),
                            "the foundation state would not fit in memory; use fewer elements");
     }
@@ -83,12 +101,11 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
     }
     for (std::size_t i = 0; i < count; ++i) equivalent_[i] = profile.equivalent(position(i));
     axis_ = profile.equivalent(0.0);
-    beyond_ = profile.equivalent(half_width() * (1.0 + 1e-12));
     // Beyond a tabulated profile nothing is known (not a rigid wall, as beyond a flat punch): the contact must stay
     // inside it.
-    profile_ends_ = !profile.is_flat_punch() && !std::isfinite(beyond_);
+    profile_ends_ = !profile.is_flat_punch() && !std::isfinite(beyond_half_width(profile, half_width()));
     profile_end_ = profile.max_radius();
-    if (profile_ends_) beyond_ = profile.equivalent(half_width());
+    beyond_ = deepest_depth(profile, half_width());
 }
 
 __attribute__((target_clones("avx2", "default"))) void Foundation::begin_step(const StepCoefficients& coefficients,

@@ -28,7 +28,7 @@ rheology::TimeWindow material_window(const Load& load, double end_time, const Nu
 /// less than the window's start `shortest`, the row after the jump at its time included (the first row at that time,
 /// the state before the jump, is exact and not counted): the converted series is not certified
 /// there (a power law's creep J(0+) = 0 where the series' is 1 / G(0) > 0; docs/case-format.md, "Models that are
-/// not a finite Prony series"). 0 without a jump.
+/// not a finite Prony series"). 0 without a jump. `time` ascends (a result's rows); O(rows + jumps).
 std::size_t rows_before_window(const LoadHistory& history, const std::vector<double>& time, double shortest);
 
 }  // namespace mdr::drivers

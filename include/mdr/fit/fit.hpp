@@ -53,6 +53,14 @@ enum class BaselineMode {
 /// has no optimum the data determine).
 inline constexpr std::size_t max_fit_iterations = 1000000;
 
+/// How each Levenberg-Marquardt step's linear least-squares problem is solved.
+enum class LinearSolver {
+    /// The normal equations J^T J (p x p) by Cholesky: the least memory (docs/performance.md, "Memory of a fit").
+    normal_equations,
+    /// A QR of the N x p Jacobian J: the condition number of J, not its square, at the cost of a copy of J.
+    qr,
+};
+
 /// Settings of a fit; the defaults suit a measured curve.
 struct FitSettings {
     Fitted fitted = Fitted::force;                               ///< see Fitted
@@ -67,6 +75,8 @@ struct FitSettings {
     /// see FitResult::element_evaluations), from 1 to foundation::max_elements; unset: the case's
     /// `[numerics] elements` or default_fit_elements.
     std::optional<std::size_t> elements;
+    /// See LinearSolver.
+    LinearSolver linear_solver = LinearSolver::normal_equations;
     /// Called before every model run and within long runs; throws mdr::Interrupted to stop the fit (Ctrl-C of the
     /// command line or of Python). The fit then throws mdr::Interrupted and returns no result.
     std::function<void()> check_interrupt{};

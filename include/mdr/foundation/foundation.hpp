@@ -22,6 +22,16 @@ inline constexpr std::size_t max_elements = std::size_t{1} << 28;
 /// Throws mdr::InvalidInput naming `key` unless 1 <= `count` <= max_elements (`numerics.elements`, `fit.elements`).
 void require_element_count(const std::string& key, std::size_t count);
 
+/// Whether the state of `count` elements with `branches` relaxation branches fits the memory we allow: at most
+/// max_elements elements and count (branches + 9) doubles of state at most 4 max_elements (the drivers' Foundation
+/// and the fit's band model both refuse a larger one).
+bool state_fits(std::size_t count, std::size_t branches);
+
+/// The deepest depth (m) a foundation on the half-width [0, `half_width`] (m) under `profile` takes: the equivalent
+/// profile g just beyond the half-width, or at it where a tabulated profile ends there (g is +infinity beyond, where
+/// nothing is known). A flat punch keeps its rigid wall (+infinity) beyond its radius.
+double deepest_depth(const profile::Profile& profile, double half_width);
+
 /// An element that came into contact inside the last step, and where (eq. 14).
 struct Entry {
     std::size_t element;  ///< its index i

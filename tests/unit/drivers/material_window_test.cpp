@@ -65,5 +65,20 @@ TEST(MaterialWindow, AnInvalidHarmonicIsNamedBeforeItsFrequencyIsUsed) {
     }
 }
 
+TEST(MaterialWindow, RowsBeforeTheWindowFollowAJumpByLessThanItsStart) {
+    // Jumps: t = 0 (a first value other than 0), 2, 5 (twice), 8 and 8.2; none at 7 (a repeated value).
+    const LoadHistory jumps({{0.0, 1.0}, {1.0, 1.0}, {2.0, 1.0}, {2.0, 3.0}, {5.0, 3.0}, {5.0, 2.0}, {5.0, 4.0},
+                             {7.0, 4.0}, {7.0, 4.0}, {8.0, 4.0}, {8.0, 5.0}, {8.2, 5.0}, {8.2, 6.0}, {9.0, 6.0}},
+                            "load.history");
+    const std::vector<double> time{0.0, 0.0, 0.3, 0.6, 1.0, 2.0, 2.0, 2.2, 2.5, 3.0, 4.9, 5.0, 5.0,
+                                   5.0, 5.4, 6.0, 7.0, 7.0, 7.2, 8.0, 8.0, 8.2, 8.2, 8.3, 9.0};
+    // Counted by the rule of rows_before_window with shortest = 0.5: the second rows at 0 and 2 and 0.3, 2.2; the
+    // second and third rows at 5 and 5.4; the second row at 8, both rows at 8.2 (the first is within 0.2 of the jump
+    // at 8) and 8.3. Not counted: each first row at 0, 2, 5, 8 (the state before the jump), 2.5 (not closer than
+    // 0.5), the rows at 7.
+    EXPECT_EQ(rows_before_window(jumps, time, 0.5), 11u);
+    EXPECT_EQ(rows_before_window(history, {0.0, 0.5, 1.0, 1.0, 2.0}, 0.5), 0u);  // no jump
+}
+
 }  // namespace
 }  // namespace mdr::drivers
