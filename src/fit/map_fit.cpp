@@ -1,11 +1,11 @@
 #include "mdr/fit/map_fit.hpp"
 
 #include <fmt/format.h>
-#include <fmt/os.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -143,6 +143,15 @@ Row row_of(const PixelFit& pixel) {
     return row;
 }
 
+/// Writes `text` to `path`, closing the file before checking it: an error of the final flush (a full disk) is
+/// reported too. (fmt::output_file cannot be used: fmt 9 throws again from its destructor after a failed flush.)
+void write_text(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream file(path, std::ios::binary);
+    file << text;
+    file.close();
+    if (!file) throw std::runtime_error("could not write " + path.string());
+}
+
 /// map.csv's columns: place_columns, the fit's columns in the order the first fitted pixel has them (every fitted
 /// pixel has the same: one case), outcome_columns; whichever pixels failed.
 std::vector<std::string> table_columns(const std::vector<Row>& rows) {
@@ -170,19 +179,19 @@ void write_map_table(const std::filesystem::path& path, const std::vector<PixelF
     rows.reserve(pixels.size());
     for (const auto& pixel : pixels) rows.push_back(row_of(pixel));
     const std::vector<std::string> columns = table_columns(rows);
-    auto table = fmt::output_file(path.string());  // throws std::system_error (a std::runtime_error) on failure
-    for (std::size_t c = 0; c < columns.size(); ++c) table.print("{}{}", c ? "," : "", io::csv_field(columns[c]));
-    table.print("\n");
+    std::string table;
+    for (std::size_t c = 0; c < columns.size(); ++c) table += (c ? "," : "") + io::csv_field(columns[c]);
+    table += '\n';
     for (const auto& row : rows) {
         for (std::size_t c = 0; c < columns.size(); ++c) {
-            if (c) table.print(",");
+            if (c) table += ',';
             for (const auto& [name, value] : row) {
-                if (name == columns[c]) table.print("{}", io::csv_field(value));
+                if (name == columns[c]) table += io::csv_field(value);
             }
         }
-        table.print("\n");
+        table += '\n';
     }
-    table.close();
+    write_text(path, table);
 }
 
 void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const std::string& units,
@@ -203,9 +212,7 @@ void write_map_summary(const std::filesystem::path& path, const MapLayout& layou
         {"pixels", pixels.size()},
         {"failed", failed},
     };
-    auto file = fmt::output_file(path.string());
-    file.print("{}\n", summary.dump(1));
-    file.close();
+    write_text(path, summary.dump(1) + "\n");
 }
 
 }  // namespace mdr::fit

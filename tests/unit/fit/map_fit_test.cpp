@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
 
 #include "mdr/fit/map_fit.hpp"
 #include "mdr/instrument/read_curves.hpp"
@@ -42,6 +43,16 @@ segments = ["extend"]
     EXPECT_EQ(curve.time.capacity() + curve.measured.capacity() + curve.model.capacity() + curve.drive.capacity(),
               0u);
     EXPECT_TRUE(std::isfinite(pixel.contact_height));
+}
+
+TEST(MapFit, AWriteErrorOfTheTablesIsReportedNotLost) {
+    // /dev/full takes the open and refuses every write (ENOSPC): a buffered stream checked before its final flush
+    // saw no error; the error must reach the caller, so that the result directory is not put in place.
+    if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+    PixelFit pixel;
+    pixel.failure = "unreadable";
+    EXPECT_THROW(write_map_table("/dev/full", {pixel}), std::runtime_error);
+    EXPECT_THROW(write_map_summary("/dev/full", MapLayout{}, "SI", "map.jpk-force-map", {pixel}), std::runtime_error);
 }
 
 }  // namespace
