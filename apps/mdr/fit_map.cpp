@@ -3,45 +3,15 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <fstream>
-#include <nlohmann/json.hpp>
-#include <stdexcept>
 #include <vector>
 
 #include "interrupt.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/map_fit.hpp"
 #include "mdr/instrument/read_curves.hpp"
-#include "mdr/io/units.hpp"
 #include "progress.hpp"
 
 namespace mdr::cli {
-namespace {
-
-void write_summary(const std::filesystem::path& path, const fit::MapLayout& layout, const io::FitCase& fit_case,
-                   const std::filesystem::path& source, const std::vector<fit::PixelFit>& pixels) {
-    const io::UnitSystem& system = io::unit_system(fit_case.units);
-    std::size_t failed = 0;
-    for (const auto& pixel : pixels) failed += pixel.result ? 0 : 1;
-    const auto pixel_size = [](double size, std::size_t count) { return count ? size / double(count) : 0.0; };
-    const nlohmann::json summary = {
-        {"source", source.string()},
-        {"units", fit_case.units},
-        {"length_unit", std::string(system.length)},
-        {"length_size", system.length_size},
-        {"columns", layout.columns},
-        {"rows", layout.rows},
-        {"size", {layout.size_x, layout.size_y}},
-        {"pixel_size", {pixel_size(layout.size_x, layout.columns), pixel_size(layout.size_y, layout.rows)}},
-        {"pixels", pixels.size()},
-        {"failed", failed},
-    };
-    std::ofstream out(path);
-    out << summary.dump(1) << '\n';
-    if (!out) throw std::runtime_error("could not write " + path.string());
-}
-
-}  // namespace
 
 bool run_map(const io::FitCase& fit_case, const std::string& map, const io::ResultDirectory& directory) {
     fit::require_map_case(fit_case);
@@ -66,7 +36,7 @@ bool run_map(const io::FitCase& fit_case, const std::string& map, const io::Resu
     directory.write(
         [&](const std::filesystem::path& folder) {
             fit::write_map_table(folder / "map.csv", pixels);
-            write_summary(folder / "map.json", layout, fit_case, path, pixels);
+            fit::write_map_summary(folder / "map.json", layout, fit_case.units, path, pixels);
         },
         received_signal);
     std::size_t converged = 0, failed = 0;

@@ -3,30 +3,32 @@
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <Python.h>
 
 #include <cstddef>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "bindings.hpp"
+#include "case_tree.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/map_fit.hpp"
 #include "mdr/instrument/read_curves.hpp"
-#include "mdr/io/units.hpp"
 
 namespace py = pybind11;
 
 namespace mdr::python {
 namespace {
 
-// Fits every curve of `map` with the fit case in `toml_text` and writes map.csv to `table`; returns the grid
-// (columns, rows, size_x, size_y in the case's length unit) and the case's units (system name, length unit and its
-// size in m). `progress(done, total)` after each pixel, if given.
-py::tuple fit_map_file(const std::string& toml_text, const std::string& source, const std::string& directory,
-                       const std::string& map, const std::string& table, const py::object& progress) {
-    auto fit_case = io::parse_fit_case(toml_text, source, directory);
+// Fits every curve of `map` with the fit case `case_` (TOML text or a dict tree, case_tree.hpp) and writes map.csv
+// and map.json into `folder`; returns the grid (columns, rows, size_x, size_y in the case's length unit) and the
+// case's unit system. `progress(done, total)` after each pixel, if given.
+py::tuple fit_map_file(const py::object& case_, const std::string& source, const std::string& directory,
+                       const std::string& map, const std::filesystem::path& folder, const py::object& progress) {
+    auto fit_case = io::parse_fit_case(case_template(case_, source), directory);
     fit::require_map_case(fit_case);
     bool signalled = false;
     fit_case.settings.check_interrupt = [&signalled] {
@@ -49,18 +51,19 @@ py::tuple fit_map_file(const std::string& toml_text, const std::string& source, 
         }
         if (!progress.is_none()) progress(i + 1, file.size());
     }
-    fit::write_map_table(table, pixels);
-    const io::UnitSystem& system = io::unit_system(fit_case.units);
-    return py::make_tuple(layout.columns, layout.rows, layout.size_x, layout.size_y, fit_case.units,
-                          std::string(system.length), system.length_size);
+    fit::write_map_table(folder / "map.csv", pixels);
+    fit::write_map_summary(folder / "map.json", layout, fit_case.units, map, pixels);
+    return py::make_tuple(layout.columns, layout.rows, layout.size_x, layout.size_y, fit_case.units);
 }
 
 }  // namespace
 
 void bind_map_fit(py::module_& module) {
-    module.def("_fit_map_file", &fit_map_file, py::arg("text"), py::arg("source"), py::arg("directory"),
-               py::arg("map"), py::arg("table"), py::arg("progress") = py::none(),
-               "Fits every curve of an instrument map and writes map.csv (mdr.fit_map is the public entry).");
+    module.def("_fit_map_file", &fit_map_file, py::arg("case"), py::arg("source"), py::arg("directory"),
+               py::arg("map"), py::arg("folder"), py::arg("progress") = py::none(),
+               "Fits every curve of an instrument map and writes map.csv and map.json into folder (mdr.fit_map is "
+               "the public entry).");
+    module.attr("_instrument_endings") = instrument::supported_extensions();
 }
 
 }  // namespace mdr::python

@@ -109,7 +109,7 @@ py::object build(const MaterialModel& model, const py::args& args, const py::kwa
 }
 
 // The [material] table of a converted material's model: what a case converts again (mdr.Material objects in a
-// case dict, python/mdr/_toml.py).
+// case dict, python/mdr/_case_tree.py).
 py::dict definition_table(const ConvertedMaterial& material) {
     py::dict table;
     table["model"] = material.model;
@@ -182,7 +182,7 @@ void bind_material_models(py::class_<rheology::Rheology>& material) {
                                    "(float, float) or None: the lags (t_min, t_max) [s] where material_error holds.");
     material.def_property_readonly("_definition", none,
                                    "None: a Material that is its own series stands for itself in a case (its "
-                                   "Prony table, python/mdr/_toml.py).");
+                                   "Prony table, python/mdr/_case_tree.py).");
     material.def_property_readonly("material_frequencies", none,
                                    "list of float or None: the angular frequencies [rad/s] where G^(omega) is "
                                    "certified besides the window.");

@@ -4,9 +4,9 @@ C++ as ``mdr fit CASE --map FILE --out DIR`` (mdr/fit/map_fit.hpp) and gives the
 from __future__ import annotations
 
 import csv
-import json
 import os
 import pathlib
+import shutil
 import tempfile
 from dataclasses import dataclass
 from typing import Any, Callable, Mapping
@@ -14,10 +14,11 @@ from typing import Any, Callable, Mapping
 import numpy as np
 
 from . import _mdr
-from ._toml import to_toml
+from ._case_tree import plain_tree
 
-#: File endings of instrument maps (and single curves) that `fit_map` reads itself (docs/instrument-files.md).
-INSTRUMENT_ENDINGS = (".jpk-force-map", ".jpk-qi-data", ".jpk-qi-series", ".jpk-force", ".spm", ".ibw", ".zip")
+#: File endings of instrument maps (and single curves) that `fit_map` reads itself (docs/instrument-files.md): the
+#: C++ readers' own list (mdr::instrument::supported_extensions).
+INSTRUMENT_ENDINGS = tuple(_mdr._instrument_endings)
 
 #: The columns of map.csv that hold text; every other column is a number.
 TEXT_COLUMNS = ("status", "flags", "failure")
@@ -43,20 +44,6 @@ class MapTable:
     units: str = "SI"
 
 
-def write_summary(path: str | os.PathLike, table: MapTable, source: str, length_unit: str,
-                  length_size: float) -> None:
-    """Writes map.json as ``mdr fit --map`` does: the grid, its size and pixel size in the case's length unit."""
-    columns, rows = table.grid
-    failed = int(np.count_nonzero(table.columns["status"] == "failed")) if "status" in table.columns else 0
-    summary = {"source": source, "units": table.units, "length_unit": length_unit, "length_size": length_size,
-               "columns": columns, "rows": rows, "size": list(table.size),
-               "pixel_size": [table.size[0] / columns if columns else 0.0, table.size[1] / rows if rows else 0.0],
-               "pixels": len(next(iter(table.columns.values()), [])), "failed": failed}
-    with open(path, "w", encoding="utf-8") as handle:
-        json.dump(summary, handle, indent=1)
-        handle.write("\n")
-
-
 def _read_table(path: pathlib.Path) -> dict[str, np.ndarray]:
     with open(path, newline="", encoding="utf-8") as handle:
         rows = list(csv.DictReader(handle))
@@ -78,33 +65,41 @@ def fit_map_file(case: str | os.PathLike | Mapping[str, Any], path: str | os.Pat
 
     The case's one ``[[fit.data]]`` table names no column (an instrument file's: ``segments``, ``until``,
     ``window``); its ``file`` and ``curve`` are replaced by each curve of `path`. A pixel that fails is a row with
-    ``status`` "failed" and its ``failure``; the map goes on. With `out` (a directory, created if need be),
-    map.csv and map.json are written there as by the command line, and with `figures` the heat maps
-    (``map_KEY.png``, mdr.map_figures).
+    ``status`` "failed" and its ``failure``; the map goes on. With `out`, map.csv and map.json are written there as
+    by the command line, and with `figures` the heat maps (``map_KEY.png``, mdr.map_figures); `out` follows the
+    rules of ``--out`` (docs/cli.md): a new directory or one mdr wrote, checked before the fit and written whole
+    or not at all.
 
     Raises
     ------
     ValueError
-        For a bad case or file (the command line's message, ``key = value: rule``).
+        For a bad case or file, or an `out` that is not mdr's (the command line's message, ``key = value: rule``).
     """
     if isinstance(case, Mapping):
-        text, source, directory = to_toml(case), "case", os.getcwd()
+        case_input, source, directory = plain_tree(case), "case", os.getcwd()
+        inputs = []
     else:
         source = os.fspath(case)
         with open(source, encoding="utf-8") as handle:
-            text = handle.read()
+            case_input = handle.read()
         directory = os.path.dirname(os.path.abspath(source))
+        inputs = [source]
+    map_file = os.path.abspath(path)
+    # Checked before the fit: an output folder that is not mdr's is refused, and it is written whole or not at all.
+    result_directory = None if out is None else _mdr._ResultDirectory(os.fspath(out), "out", inputs + [map_file])
     with tempfile.TemporaryDirectory() as scratch:
-        folder = pathlib.Path(out) if out is not None else pathlib.Path(scratch)
-        folder.mkdir(parents=True, exist_ok=True)
-        map_file = os.path.abspath(path)
-        columns, rows, size_x, size_y, units, length_unit, length_size = _mdr._fit_map_file(
-            text, source, directory, map_file, os.fspath(folder / "map.csv"), progress)
+        folder = pathlib.Path(scratch)
+        columns, rows, size_x, size_y, units = _mdr._fit_map_file(case_input, source, directory, map_file,
+                                                                 os.fspath(folder), progress)
         table = MapTable(_read_table(folder / "map.csv"), (columns, rows), (size_x, size_y), units)
-        if out is not None:
-            write_summary(folder / "map.json", table, map_file, length_unit, length_size)
-            if figures:
-                from .map_figures import map_heat_maps
-                for name, figure in map_heat_maps(os.fspath(folder)):
-                    figure.savefig(folder / f"map_{name}.png", dpi=120)
+        if result_directory is not None:
+            def write_files(temporary: str) -> None:
+                for name in ("map.csv", "map.json"):
+                    shutil.copyfile(folder / name, os.path.join(temporary, name))
+                if figures:
+                    from .map_figures import map_heat_maps
+                    for name, figure in map_heat_maps(temporary):
+                        figure.savefig(os.path.join(temporary, f"map_{name}.png"), dpi=120)
+
+            result_directory.write(write_files)
         return table

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <utility>
 
@@ -37,9 +39,17 @@ void require_map_case(const io::FitCase& fit_case) {
 
 MapLayout map_layout(instrument::CurveFile& file, const io::FitCase& fit_case) {
     const double length = io::unit_system(fit_case.units).length_size;
-    const instrument::Curve first = file.read(0);
-    if (!first.in_map) return {};
-    return {first.grid.columns, first.grid.rows, first.grid.size_x / length, first.grid.size_y / length};
+    for (std::size_t index = 0; index < file.size(); ++index) {
+        try {
+            const instrument::Curve curve = file.read(index);
+            if (!curve.in_map) return {};
+            return {curve.grid.columns, curve.grid.rows, curve.grid.size_x / length, curve.grid.size_y / length};
+        } catch (const InvalidInput&) {
+            // An unreadable curve is that pixel's failed row (fit_map_pixel); the next one states the grid.
+        } catch (const std::runtime_error&) {
+        }
+    }
+    return {};
 }
 
 PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path& path, instrument::CurveFile& file,
@@ -71,6 +81,12 @@ PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path&
         add_plausibility_flags(problem, system, result);
         // The depth is measured down from tip_height_zero (afm_depth_and_force): the contact lies that far below.
         pixel.contact_height = tip_height_zero - result.curves.front().contact_depth;
+        // A row needs no data points: release them, so that a map holds a few numbers per pixel, not its curve.
+        for (CurveFit& curve : result.curves) {
+            for (std::vector<double>* points : {&curve.time, &curve.measured, &curve.model, &curve.drive}) {
+                std::vector<double>().swap(*points);
+            }
+        }
         pixel.result = std::move(result);
     } catch (const Interrupted&) {
         throw;
@@ -84,8 +100,12 @@ PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path&
 
 namespace {
 
-/// One row of map.csv: its fields by column name, in the order they were added.
+/// One row of map.csv: its fields by column name.
 using Row = std::vector<std::pair<std::string, std::string>>;
+
+/// The columns every row has before the fit's (where the pixel is) and after them (how its fit went).
+const std::array<std::string, 5> place_columns = {"index", "column", "row", "x", "y"};
+const std::array<std::string, 3> outcome_columns = {"status", "flags", "failure"};
 
 std::string number(double value) { return fmt::format("{:.17g}", value); }
 
@@ -123,30 +143,76 @@ Row row_of(const PixelFit& pixel) {
     return row;
 }
 
+/// Writes `text` to `path`, closing the file before checking it: an error of the final flush (a full disk) is
+/// reported too. (fmt::output_file cannot be used: fmt 9 throws again from its destructor after a failed flush.)
+void write_text(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream file(path, std::ios::binary);
+    file << text;
+    file.close();
+    if (!file) throw std::runtime_error("could not write " + path.string());
+}
+
+/// map.csv's columns: place_columns, the fit's columns in the order the first fitted pixel has them (every fitted
+/// pixel has the same: one case), outcome_columns; whichever pixels failed.
+std::vector<std::string> table_columns(const std::vector<Row>& rows) {
+    std::vector<std::string> columns(place_columns.begin(), place_columns.end());
+    const auto fixed = [](const std::string& name) {
+        return std::find(place_columns.begin(), place_columns.end(), name) != place_columns.end() ||
+               std::find(outcome_columns.begin(), outcome_columns.end(), name) != outcome_columns.end();
+    };
+    for (const auto& row : rows) {
+        for (const auto& field : row) {
+            const std::string& name = field.first;
+            if (!fixed(name) && std::find(columns.begin(), columns.end(), name) == columns.end()) {
+                columns.push_back(name);
+            }
+        }
+    }
+    columns.insert(columns.end(), outcome_columns.begin(), outcome_columns.end());
+    return columns;
+}
+
 }  // namespace
 
 void write_map_table(const std::filesystem::path& path, const std::vector<PixelFit>& pixels) {
     std::vector<Row> rows;
-    std::vector<std::string> columns;
-    for (const auto& pixel : pixels) {
-        rows.push_back(row_of(pixel));
-        for (const auto& [name, value] : rows.back()) {
-            if (std::find(columns.begin(), columns.end(), name) == columns.end()) columns.push_back(name);
-        }
-    }
-    std::ofstream table(path);
-    for (std::size_t c = 0; c < columns.size(); ++c) table << (c ? "," : "") << io::csv_field(columns[c]);
-    table << '\n';
+    rows.reserve(pixels.size());
+    for (const auto& pixel : pixels) rows.push_back(row_of(pixel));
+    const std::vector<std::string> columns = table_columns(rows);
+    std::string table;
+    for (std::size_t c = 0; c < columns.size(); ++c) table += (c ? "," : "") + io::csv_field(columns[c]);
+    table += '\n';
     for (const auto& row : rows) {
         for (std::size_t c = 0; c < columns.size(); ++c) {
-            if (c) table << ',';
+            if (c) table += ',';
             for (const auto& [name, value] : row) {
-                if (name == columns[c]) table << io::csv_field(value);
+                if (name == columns[c]) table += io::csv_field(value);
             }
         }
-        table << '\n';
+        table += '\n';
     }
-    if (!table) throw std::runtime_error("could not write " + path.string());
+    write_text(path, table);
+}
+
+void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const std::string& units,
+                       const std::filesystem::path& source, const std::vector<PixelFit>& pixels) {
+    const io::UnitSystem& system = io::unit_system(units);
+    const auto failed =
+        std::count_if(pixels.begin(), pixels.end(), [](const PixelFit& pixel) { return !pixel.result; });
+    const auto pixel_size = [](double size, std::size_t count) { return count ? size / double(count) : 0.0; };
+    const nlohmann::json summary = {
+        {"source", source.string()},
+        {"units", units},
+        {"length_unit", std::string(system.length)},
+        {"length_size", system.length_size},
+        {"columns", layout.columns},
+        {"rows", layout.rows},
+        {"size", {layout.size_x, layout.size_y}},
+        {"pixel_size", {pixel_size(layout.size_x, layout.columns), pixel_size(layout.size_y, layout.rows)}},
+        {"pixels", pixels.size()},
+        {"failed", failed},
+    };
+    write_text(path, summary.dump(1) + "\n");
 }
 
 }  // namespace mdr::fit

@@ -4,6 +4,7 @@
 #include <zip.h>
 
 #include <cstdio>
+#include <memory>
 #include <new>
 
 #include "mdr/error.hpp"
@@ -36,6 +37,12 @@ bool inflates_whole(const struct zip_stat& stat) {
     return (stat.valid & needed) == needed && stat.comp_method == ZIP_CM_DEFLATE &&
            stat.encryption_method == ZIP_EM_NONE && stat.comp_size <= stat.size + stat.size / 8 + 1024;
 }
+
+/// An open member, closed (zip_fclose) when it goes out of scope; release() it to read zip_fclose's result.
+struct MemberCloser {
+    void operator()(zip_file_t* member) const noexcept { zip_fclose(member); }
+};
+using OpenMember = std::unique_ptr<zip_file_t, MemberCloser>;
 
 }  // namespace
 
@@ -81,21 +88,26 @@ void ZipArchive::read(const std::string& name, std::string& bytes) {
     if (zip_stat_index(archive_, static_cast<zip_uint64_t>(index), 0, &stat) != 0 || !(stat.valid & ZIP_STAT_SIZE)) {
         throw InvalidInput(file_, name, "the member's size cannot be read: " + std::string(zip_strerror(archive_)));
     }
-    if (stat.size > max_member_bytes || inflated_bytes_ + stat.size > max_total_bytes) {
+    if (stat.size > max_member_bytes) {
         throw InvalidInput(file_, name,
                            "inflates to " + std::to_string(stat.size) + " bytes, more than the " +
-                               std::to_string(max_member_bytes >> 20) + " MiB per member or " +
-                               std::to_string(max_total_bytes >> 30) + " GiB per archive that are read");
+                               std::to_string(max_member_bytes >> 20) + " MiB per member that are read");
+    }
+    const bool deflated = (stat.valid & ZIP_STAT_COMP_METHOD) && stat.comp_method == ZIP_CM_DEFLATE;
+    if (deflated && (stat.valid & ZIP_STAT_COMP_SIZE) && stat.size / max_deflate_ratio > stat.comp_size) {
+        throw InvalidInput(file_, name,
+                           "states " + std::to_string(stat.size) + " bytes from " + std::to_string(stat.comp_size) +
+                               " compressed, more than deflate's " + std::to_string(max_deflate_ratio) +
+                               " bytes per compressed byte (RFC 1951)");
     }
     if (inflates_whole(stat))
         inflate_whole(static_cast<zip_uint64_t>(index), name, stat, bytes);
     else
         read_stream(static_cast<zip_uint64_t>(index), name, stat.size, bytes);
-    inflated_bytes_ += bytes.size();
 }
 
 void ZipArchive::read_stream(std::uint64_t index, const std::string& name, std::uint64_t size, std::string& bytes) {
-    zip_file_t* member = zip_fopen_index(archive_, index, 0);
+    OpenMember member(zip_fopen_index(archive_, index, 0));
     if (member == nullptr) {
         throw InvalidInput(file_, name, "cannot be opened: " + std::string(zip_strerror(archive_)));
     }
@@ -103,16 +115,12 @@ void ZipArchive::read_stream(std::uint64_t index, const std::string& name, std::
     bytes.resize(static_cast<std::size_t>(size) + 1);
     std::uint64_t got = 0;
     while (got < bytes.size()) {
-        const zip_int64_t n = zip_fread(member, bytes.data() + got, bytes.size() - got);
-        if (n < 0) {
-            const std::string reason = zip_file_strerror(member);
-            zip_fclose(member);
-            throw InvalidInput(file_, name, "is corrupted: " + reason);
-        }
+        const zip_int64_t n = zip_fread(member.get(), bytes.data() + got, bytes.size() - got);
+        if (n < 0) throw InvalidInput(file_, name, std::string("is corrupted: ") + zip_file_strerror(member.get()));
         if (n == 0) break;
         got += static_cast<std::uint64_t>(n);
     }
-    const int closed = zip_fclose(member);
+    const int closed = zip_fclose(member.release());
     if (got != size || closed != 0) {
         throw InvalidInput(file_, name,
                            "is corrupted: inflates to " + std::to_string(got) + " bytes, the archive states " +
@@ -123,7 +131,7 @@ void ZipArchive::read_stream(std::uint64_t index, const std::string& name, std::
 
 void ZipArchive::inflate_whole(std::uint64_t index, const std::string& name, const struct zip_stat& stat,
                                std::string& bytes) {
-    zip_file_t* member = zip_fopen_index(archive_, index, ZIP_FL_COMPRESSED);
+    OpenMember member(zip_fopen_index(archive_, index, ZIP_FL_COMPRESSED));
     if (member == nullptr) {
         throw InvalidInput(file_, name, "cannot be opened: " + std::string(zip_strerror(archive_)));
     }
@@ -132,12 +140,12 @@ void ZipArchive::inflate_whole(std::uint64_t index, const std::string& name, con
     std::uint64_t got = 0;
     std::string reason;
     while (got < deflated.size()) {
-        const zip_int64_t n = zip_fread(member, deflated.data() + got, deflated.size() - got);
-        if (n < 0) reason = std::string(" (") + zip_file_strerror(member) + ")";
+        const zip_int64_t n = zip_fread(member.get(), deflated.data() + got, deflated.size() - got);
+        if (n < 0) reason = std::string(" (") + zip_file_strerror(member.get()) + ")";
         if (n <= 0) break;
         got += static_cast<std::uint64_t>(n);
     }
-    zip_fclose(member);
+    member.reset();
     if (got != stat.comp_size) {
         throw InvalidInput(file_, name,
                            "is truncated: " + std::to_string(got) + " of its " + std::to_string(stat.comp_size) +

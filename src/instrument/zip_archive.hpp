@@ -14,14 +14,16 @@ struct libdeflate_decompressor;
 namespace mdr::instrument {
 
 /// A zip archive opened for reading. Every failure throws mdr::InvalidInput naming the file, the member and
-/// what is wrong. Inflation is bounded: a member larger than `max_member_bytes`, or more than
-/// `max_total_bytes` inflated from one archive in all, is refused (zip bombs) before anything is allocated.
+/// what is wrong. Inflation is bounded per member, so that a map of any size can be read member after member: a
+/// member that states more than `max_member_bytes`, or a deflated one that states more than deflate can give from
+/// its compressed size (`max_deflate_ratio`), is refused (zip bombs) before anything is allocated.
 /// A deflated member is inflated whole by libdeflate (twice as fast as zlib) and its CRC-32 checked; any other
 /// member (stored, encrypted, sizes not stated) is read through libzip's stream.
 class ZipArchive {
 public:
     static constexpr std::uint64_t max_member_bytes = std::uint64_t{256} << 20;  ///< 256 MiB per member
-    static constexpr std::uint64_t max_total_bytes = std::uint64_t{8} << 30;     ///< 8 GiB per archive
+    /// The most bytes deflate gives per compressed byte: 258 bytes per 2-bit length/distance pair (RFC 1951).
+    static constexpr std::uint64_t max_deflate_ratio = 1032;
 
     /// Opens `path`; throws mdr::InvalidInput if it is not a readable zip archive.
     explicit ZipArchive(const std::filesystem::path& path);
@@ -50,7 +52,6 @@ private:
     struct libdeflate_decompressor* inflater_ = nullptr;  ///< made on the first deflated member
     std::string deflated_;  ///< the compressed bytes of the member being inflated, kept for the next one
     std::string file_;
-    std::uint64_t inflated_bytes_ = 0;
 };
 
 }  // namespace mdr::instrument

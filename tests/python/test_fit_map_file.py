@@ -8,6 +8,7 @@ import json
 import os
 import math
 import subprocess
+import zipfile
 
 import numpy as np
 import pytest
@@ -22,10 +23,27 @@ CASE = {
     "indenter": {"shape": "sphere", "R": 5.0e-6},
     "fit": {"free": ["material.G"], "data": [{"file": "map.jpk-force-map", "segments": ["extend"]}]},
 }
+#: CASE as a case file, for the command line.
+CASE_TOML = """
+[material]
+model = "elastic"
+G = 1000.0
+
+[indenter]
+shape = "sphere"
+R = 5.0e-6
+
+[fit]
+free = ["material.G"]
+
+[[fit.data]]
+file = "map.jpk-force-map"
+segments = ["extend"]
+"""
 
 
 def test_the_columns_and_values_of_the_command_lines_map_csv(mdr_binary, tmp_path):
-    (tmp_path / "case.toml").write_text(mdr._toml.to_toml(CASE))
+    (tmp_path / "case.toml").write_text(CASE_TOML)
     subprocess.run([mdr_binary, "fit", "case.toml", "--map", MAP, "--out", "out"], cwd=tmp_path, check=True,
                    capture_output=True, timeout=300)
     with open(tmp_path / "out" / "map.csv", newline="") as handle:
@@ -72,7 +90,7 @@ def test_a_bad_case_is_refused_naming_the_key():
 def test_heat_maps_on_the_physical_grid_with_units_and_failed_pixels(mdr_binary, tmp_path):
     from mdr.map_figures import map_heat_maps
 
-    (tmp_path / "case.toml").write_text(mdr._toml.to_toml(CASE))
+    (tmp_path / "case.toml").write_text(CASE_TOML)
     subprocess.run([mdr_binary, "fit", "case.toml", "--map", BROKEN, "--out", "out"], cwd=tmp_path,
                    capture_output=True, timeout=300)
     figures = dict(map_heat_maps(str(tmp_path / "out")))
@@ -89,3 +107,35 @@ def test_heat_maps_on_the_physical_grid_with_units_and_failed_pixels(mdr_binary,
     assert np.count_nonzero(np.isfinite(axes.images[0].get_array().filled(np.nan))) == 2
     written = mdr.plot.plot_directory(str(tmp_path / "out"))
     assert sorted(os.path.basename(p) for p in written) == sorted(f"map_{name}.png" for name in figures)
+
+
+def test_out_holding_a_file_mdr_did_not_write_is_refused_and_left_as_it_was(tmp_path):
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "map.csv").write_text("the user's own table\n")
+    with pytest.raises(ValueError, match="^out = "):
+        mdr.fit_map(CASE, MAP, out=out, figures=False)
+    assert sorted(p.name for p in out.iterdir()) == ["map.csv"]
+    assert (out / "map.csv").read_text() == "the user's own table\n"
+    table = mdr.fit_map(CASE, MAP, out=tmp_path / "new", figures=False)  # a new folder is mdr's
+    assert (tmp_path / "new" / "map.csv").exists() and len(table.columns["index"]) == 3
+
+
+def test_an_unreadable_first_curve_is_a_failed_row_and_the_columns_keep_their_order(tmp_path):
+    # The map without pixel 0's (index/109) retract deflection: that curve cannot be read, the others can.
+    first_unreadable = tmp_path / "first-unreadable.jpk-force-map"
+    with zipfile.ZipFile(MAP) as source, zipfile.ZipFile(first_unreadable, "w", zipfile.ZIP_DEFLATED) as copy:
+        for member in source.infolist():
+            if member.filename != "index/109/segments/1/channels/vDeflection.dat":
+                copy.writestr(member, source.read(member.filename))
+    table = mdr.fit_map(CASE, first_unreadable, out=tmp_path / "out", figures=False)
+    assert list(table.columns["status"][:1]) == ["failed"]
+    assert "index/109/segments/1/channels/vDeflection.dat" in table.columns["failure"][0]
+    assert all(status.startswith("converged") for status in table.columns["status"][1:])
+    assert table.grid == (25, 25) and table.size == (5e-4, 5e-4)  # the grid that pixel 1's header states
+    # The rule of docs/instrument-to-map.md: place, the fit's columns, then status, flags, failure.
+    assert list(table.columns) == ["index", "column", "row", "x", "y", "material.G", "material.G_stderr",
+                                   "E_material.G", "E_material.G_stderr", "contact_height", "residual_to_noise",
+                                   "noise", "status", "flags", "failure"]
+    summary = json.loads((tmp_path / "out" / "map.json").read_text())
+    assert (summary["pixels"], summary["failed"], summary["columns"]) == (3, 1, 25)

@@ -111,7 +111,8 @@ struct ContactCase {
     bool tangential_approximate() const { return !tangential_exact && (tangential || oblique); }
     /// The declared unit system (mdr/io/units.hpp): the names printed beside the numbers; nothing is converted.
     std::string units = "SI";
-    /// `[layer]`: a layer of finite thickness on a rigid substrate; absent: the half-space (drivers/layer_indentation.hpp).
+    /// `[layer]`: a layer of finite thickness on a rigid substrate; absent: the half-space
+    /// (drivers/layer_indentation.hpp).
     std::optional<contact::Layer> layer{};
 };
 

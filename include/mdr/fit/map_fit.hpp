@@ -23,7 +23,9 @@ struct PixelFit {
     std::size_t column = 0;           ///< pixel along x, 0 at the grid's low-x edge
     std::size_t row = 0;              ///< pixel along y, 0 at the grid's low-y edge
     bool placed = false;              ///< x, y, column and row are known (false when the curve could not be read)
-    std::optional<FitResult> result;  ///< the fit (also one that did not converge); empty when the pixel failed
+    /// The fit (also one that did not converge) without its data points (the curves' time, measured, model and
+    /// drive are empty: a row needs none); empty when the pixel failed.
+    std::optional<FitResult> result;
     /// Tip height at the fitted contact point, in the case's length unit (the topography; larger = farther from
     /// the sample); NaN when the pixel failed.
     double contact_height = 0.0;
@@ -50,13 +52,21 @@ void require_map_case(const io::FitCase& fit_case);
 PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path& path, instrument::CurveFile& file,
                        std::size_t index);
 
-/// The raster of `file` (its first curve's grid) in the case's length unit.
+/// The raster of `file` in the case's length unit: the grid its first readable curve states (an unreadable curve is
+/// its pixel's failed row, fit_map_pixel); all 0 when no curve can be read or the file is not a map.
 MapLayout map_layout(instrument::CurveFile& file, const io::FitCase& fit_case);
 
-/// Writes map.csv: one row per pixel with `index`, `column`, `row`, `x`, `y` (empty when not `placed`), every free key and `KEY_stderr`,
-/// `E_KEY` and `E_KEY_stderr` for every Young modulus, `contact_height`, `residual_to_noise`, `noise`, `status`,
-/// `flags` (joined by "; ") and `failure`; the columns are the union of the rows' keys in first-seen order, a
-/// value a row lacks is empty. Fields quoted by RFC 4180 (io::csv_field); numbers with 17 significant digits.
+/// Writes map.csv: one row per pixel with `index`, `column`, `row`, `x`, `y` (empty when not `placed`), every free
+/// key and `KEY_stderr`, `E_KEY` and `E_KEY_stderr` for every Young modulus, `contact_height`,
+/// `residual_to_noise`, `noise`, then `status`, `flags` (joined by "; ") and `failure`, in this order whichever
+/// pixels failed; a value a row lacks is empty. Fields quoted by RFC 4180 (io::csv_field); numbers with 17
+/// significant digits. Throws std::runtime_error when the file cannot be written.
 void write_map_table(const std::filesystem::path& path, const std::vector<PixelFit>& pixels);
+
+/// Writes map.json: `source` (the map file), `units`, `length_unit` and `length_size` (m) of the case's unit
+/// system `units`, the grid's `columns` and `rows`, its `size` and `pixel_size` (x, y) in that length unit, the
+/// number of `pixels` and of `failed` ones (no fit). Throws std::runtime_error when the file cannot be written.
+void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const std::string& units,
+                       const std::filesystem::path& source, const std::vector<PixelFit>& pixels);
 
 }  // namespace mdr::fit

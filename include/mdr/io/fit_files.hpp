@@ -14,7 +14,8 @@ namespace mdr::io {
 /// fit.json as a document: status, converged, parameters, standard_errors, intervals_95, correlation,
 /// undetermined, curves (contact point, baseline, noise, RMS residual), rms_residual, noise, residual_to_noise, aic,
 /// bic, points, free_count, iterations, evaluations, element_evaluations, band_evaluations, wall_seconds, and
-/// `units`, the case's declared unit system in which its numbers are (for the figures). NaN (an undetermined error) is null.
+/// `units`, the case's declared unit system in which its numbers are (for the figures). NaN (an undetermined error)
+/// is null.
 Document fit_document(const fit::FitResult& result, const std::string& units = "SI");
 
 /// fit.json: fit_document as JSON text.

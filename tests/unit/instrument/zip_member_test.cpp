@@ -125,4 +125,16 @@ TEST(ZipMember, HugeStatedSizeIsRefusedBeforeAllocating) {
         << message;
 }
 
+TEST(ZipMember, StatedSizeBeyondDeflatesRatioIsRefusedBeforeAllocating) {
+    // 4000 -> 200 MiB, within the 256 MiB per member but 87 000 times its 2403 compressed bytes: deflate gives at
+    // most 1032 bytes per compressed byte (RFC 1951: 258 bytes per 2-bit pair), so the header lies (a zip bomb's).
+    std::string bytes = vendor_curve();
+    put_little_endian(bytes, central_header(bytes) + 24, 200u << 20);
+    const std::string message = read_error(bytes, "ratio");
+    EXPECT_NE(message.find("states 209715200 bytes from 2403 compressed, more than deflate's 1032 bytes per "
+                           "compressed byte"),
+              std::string::npos)
+        << message;
+}
+
 }  // namespace
