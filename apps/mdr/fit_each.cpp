@@ -3,9 +3,7 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <stdexcept>
 #include <utility>
 
 #include "fit_candidates.hpp"
@@ -15,6 +13,7 @@
 #include "mdr/fit/plausibility.hpp"
 #include "mdr/io/csv_field.hpp"
 #include "mdr/io/fit_files.hpp"
+#include "mdr/io/output_file.hpp"
 
 namespace mdr::cli {
 namespace {
@@ -41,19 +40,19 @@ void require_one_curve_table(const io::FitCase& fit_case) {
 
 void write_table(const std::filesystem::path& path, const std::vector<std::string>& stems,
                  const std::vector<fit::FitResult>& results) {
-    std::ofstream table(path);
-    table << "file";
-    for (const auto& name : results.front().names) table << ',' << name << ',' << name << "_stderr";
-    table << ",status,residual_to_noise\n";
+    io::OutputFile table(path);
+    table.print("file");
+    for (const auto& name : results.front().names) table.print(",{0},{0}_stderr", name);
+    table.print(",status,residual_to_noise\n");
     for (std::size_t i = 0; i < results.size(); ++i) {
         const auto& result = results[i];
-        table << io::csv_field(stems[i]);
+        table.print("{}", io::csv_field(stems[i]));
         for (std::size_t j = 0; j < result.names.size(); ++j) {
-            table << fmt::format(",{:.17g},{:.17g}", result.values[j], result.standard_errors[j]);
+            table.print(",{:.17g},{:.17g}", result.values[j], result.standard_errors[j]);
         }
-        table << ',' << io::csv_field(result.status) << fmt::format(",{:.17g}\n", result.rms_residual / result.noise);
+        table.print(",{},{:.17g}\n", io::csv_field(result.status), result.rms_residual / result.noise);
     }
-    if (!table) throw std::runtime_error("could not write " + path.string());
+    table.close();
 }
 
 }  // namespace

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -16,6 +15,7 @@
 #include "mdr/fit/instrument_curve.hpp"
 #include "mdr/fit/plausibility.hpp"
 #include "mdr/io/csv_field.hpp"
+#include "mdr/io/output_file.hpp"
 #include "mdr/io/units.hpp"
 
 namespace mdr::fit {
@@ -143,15 +143,6 @@ Row row_of(const PixelFit& pixel) {
     return row;
 }
 
-/// Writes `text` to `path`, closing the file before checking it: an error of the final flush (a full disk) is
-/// reported too. (fmt::output_file cannot be used: fmt 9 throws again from its destructor after a failed flush.)
-void write_text(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream file(path, std::ios::binary);
-    file << text;
-    file.close();
-    if (!file) throw std::runtime_error("could not write " + path.string());
-}
-
 /// map.csv's columns: place_columns, the fit's columns in the order the first fitted pixel has them (every fitted
 /// pixel has the same: one case), outcome_columns; whichever pixels failed.
 std::vector<std::string> table_columns(const std::vector<Row>& rows) {
@@ -191,7 +182,7 @@ void write_map_table(const std::filesystem::path& path, const std::vector<PixelF
         }
         table += '\n';
     }
-    write_text(path, table);
+    io::write_text_file(path, table);
 }
 
 void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const std::string& units,
@@ -212,7 +203,7 @@ void write_map_summary(const std::filesystem::path& path, const MapLayout& layou
         {"pixels", pixels.size()},
         {"failed", failed},
     };
-    write_text(path, summary.dump(1) + "\n");
+    io::write_text_file(path, summary.dump(1) + "\n");
 }
 
 }  // namespace mdr::fit

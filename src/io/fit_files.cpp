@@ -1,12 +1,12 @@
 #include "mdr/io/fit_files.hpp"
 
 #include <fmt/format.h>
-#include <fmt/os.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "mdr/io/csv_field.hpp"
+#include "mdr/io/output_file.hpp"
 
 namespace mdr::io {
 
@@ -15,7 +15,7 @@ namespace {
 // A table of the material's functions over `x` with their 95 % bands: `x,f,f_lower,f_upper,...`.
 void write_bands(const std::filesystem::path& path, const std::string& x_name, const std::vector<double>& x,
                  const std::vector<std::pair<std::string, fit::MaterialBand>>& bands) {
-    auto file = fmt::output_file(path.string());
+    auto file = OutputFile(path);
     file.print("{}", x_name);
     for (const auto& band : bands) file.print(",{0},{0}_lower,{0}_upper", band.first);
     file.print("\n");
@@ -153,11 +153,11 @@ std::string fit_json(const fit::FitResult& result, const std::string& units) {
 }
 
 void write_fit_result(const std::filesystem::path& directory, const FitCase& fit_case, const fit::FitResult& result) {
-    auto json = fmt::output_file((directory / "fit.json").string());
+    auto json = OutputFile(directory / "fit.json");
     json.print("{}\n", fit_json(result, fit_case.units));
     json.close();
 
-    auto csv = fmt::output_file((directory / "curves.csv").string());
+    auto csv = OutputFile(directory / "curves.csv");
     csv.print("curve,t,measured,model,residual,drive\n");
     for (const auto& curve : result.curves) {
         // Rebound data: one row per impact, named NAME:restitution or NAME:contact_time, t holding the speed v0.
@@ -176,7 +176,7 @@ void write_fit_result(const std::filesystem::path& directory, const FitCase& fit
                     {{"storage", material.storage}, {"loss", material.loss}});
     }
 
-    auto toml = fmt::output_file((directory / "fitted.toml").string());
+    auto toml = OutputFile(directory / "fitted.toml");
     toml.print("# The case with the fitted values of mdr fit (fit.json has their errors).\n{}\n",
                fitted_text(fit_case, result));
     toml.close();

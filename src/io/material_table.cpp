@@ -1,8 +1,8 @@
 #include "mdr/io/material_table.hpp"
 
-#include <fmt/os.h>
-
 #include <cmath>
+
+#include "mdr/io/output_file.hpp"
 
 namespace mdr::io {
 std::vector<double> log_grid(double lower, double upper, std::size_t count) {
@@ -29,7 +29,7 @@ std::vector<double> default_omegas(const rheology::Rheology& material, std::size
 void write_material_tables(const std::filesystem::path& directory, const rheology::Rheology& material,
                            const std::optional<rheology::Rheology>& shear, const std::vector<double>& times,
                            const std::vector<double>& omegas, const rheology::ModelFunctions& model) {
-    auto functions = fmt::output_file((directory / "functions.csv").string());
+    auto functions = OutputFile(directory / "functions.csv");
     functions.print("{}{}\n", shear ? "t,G,J,J_shear" : "t,G,J", model.relaxation ? ",G_model" : "");
     for (double t : times) {
         functions.print("{},{},{}", t, material.relaxation(t), material.creep(t));
@@ -38,7 +38,7 @@ void write_material_tables(const std::filesystem::path& directory, const rheolog
         functions.print("\n");
     }
     functions.close();
-    auto dynamic = fmt::output_file((directory / "dynamic.csv").string());
+    auto dynamic = OutputFile(directory / "dynamic.csv");
     dynamic.print("omega,storage,loss{}\n", model.complex_modulus ? ",storage_model,loss_model" : "");
     for (double omega : omegas) {
         const auto modulus = material.complex_modulus(omega);

@@ -2,11 +2,11 @@
 
 #include <fmt/compile.h>
 #include <fmt/format.h>
-#include <fmt/os.h>
 
 #include <stdexcept>
 
 #include "mdr/io/history_columns.hpp"
+#include "mdr/io/output_file.hpp"
 #include "mdr/io/summary.hpp"
 
 namespace mdr::io {
@@ -19,7 +19,7 @@ std::string summary_json(const drivers::ContactCase& contact_case, const drivers
 
 void write_indentation_result(const fs::path& directory, const drivers::ContactCase& contact_case,
                               const drivers::IndentationResult& result, double wall_seconds) {
-    auto history = fmt::output_file((directory / "history.csv").string());
+    auto history = OutputFile(directory / "history.csv");
     const auto columns = history_columns(result);
     for (std::size_t j = 0; j < columns.size(); ++j) history.print("{}{}", j == 0 ? "" : ",", columns[j].name);
     history.print("\n");
@@ -35,12 +35,12 @@ void write_indentation_result(const fs::path& directory, const drivers::ContactC
     }
     history.close();
 
-    auto summary = fmt::output_file((directory / "summary.json").string());
+    auto summary = OutputFile(directory / "summary.json");
     summary.print("{}\n", summary_json(contact_case, result, wall_seconds));
     summary.close();
 
     if (result.snapshots.empty()) return;
-    auto profiles = fmt::output_file((directory / "profiles.csv").string());
+    auto profiles = OutputFile(directory / "profiles.csv");
     const bool with_tangential = !result.tangential_force.empty();
     profiles.print("t,r,p,w{}\n", with_tangential ? ",tau" : "");
     for (const auto& snapshot : result.snapshots) {

@@ -1,7 +1,6 @@
 #include "mdr/io/sweep.hpp"
 
 #include <fmt/format.h>
-#include <fmt/os.h>
 
 #include <algorithm>
 #include <atomic>
@@ -26,6 +25,7 @@
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/case_template.hpp"
 #include "mdr/io/csv_field.hpp"
+#include "mdr/io/output_file.hpp"
 #include "mdr/io/summary.hpp"
 
 namespace mdr::io {
@@ -343,7 +343,7 @@ std::vector<std::string> numeric_columns(const std::vector<SweepRow>& rows) {
 void write_sweep_csv(const std::filesystem::path& directory, const std::vector<SweepAxis>& axes,
                      const std::vector<SweepRow>& rows) {
     const std::vector<std::string> columns = numeric_columns(rows);
-    auto out = fmt::output_file((directory / "sweep.csv").string());
+    auto out = OutputFile(directory / "sweep.csv");
     std::string header;
     for (const auto& axis : axes) header += csv_field(axis.key) + ",";
     for (const auto& column : columns) header += column + ",";
