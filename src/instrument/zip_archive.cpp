@@ -47,6 +47,9 @@ using OpenMember = std::unique_ptr<zip_file_t, MemberCloser>;
 }  // namespace
 
 ZipArchive::ZipArchive(const std::filesystem::path& path) : file_(path.string()) {
+    std::error_code size_error;
+    archive_bytes_ = std::filesystem::file_size(path, size_error);
+    if (size_error) throw InvalidInput(file_, "(zip archive)", "cannot be read: " + size_error.message());
     int code = 0;
     archive_ = zip_open(file_.c_str(), ZIP_RDONLY, &code);
     if (archive_ == nullptr) {
@@ -92,6 +95,11 @@ void ZipArchive::read(const std::string& name, std::string& bytes) {
         throw InvalidInput(file_, name,
                            "inflates to " + std::to_string(stat.size) + " bytes, more than the " +
                                std::to_string(max_member_bytes >> 20) + " MiB per member that are read");
+    }
+    if ((stat.valid & ZIP_STAT_COMP_SIZE) && stat.comp_size > archive_bytes_) {
+        throw InvalidInput(file_, name,
+                           "states " + std::to_string(stat.comp_size) + " compressed bytes, more than the archive's " +
+                               std::to_string(archive_bytes_) + " (a corrupted or truncated archive)");
     }
     const bool deflated = (stat.valid & ZIP_STAT_COMP_METHOD) && stat.comp_method == ZIP_CM_DEFLATE;
     if (deflated && (stat.valid & ZIP_STAT_COMP_SIZE) && stat.size / max_deflate_ratio > stat.comp_size) {

@@ -16,7 +16,8 @@ namespace mdr::instrument {
 /// A zip archive opened for reading. Every failure throws mdr::InvalidInput naming the file, the member and
 /// what is wrong. Inflation is bounded per member, so that a map of any size can be read member after member: a
 /// member that states more than `max_member_bytes`, or a deflated one that states more than deflate can give from
-/// its compressed size (`max_deflate_ratio`), is refused (zip bombs) before anything is allocated.
+/// its compressed size (`max_deflate_ratio`), or one whose compressed size is more than the archive holds, is
+/// refused (zip bombs, corrupted headers) before anything is allocated.
 /// A deflated member is inflated whole by libdeflate (twice as fast as zlib) and its CRC-32 checked; any other
 /// member (stored, encrypted, sizes not stated) is read through libzip's stream.
 class ZipArchive {
@@ -52,6 +53,7 @@ private:
     struct libdeflate_decompressor* inflater_ = nullptr;  ///< made on the first deflated member
     std::string deflated_;  ///< the compressed bytes of the member being inflated, kept for the next one
     std::string file_;
+    std::uint64_t archive_bytes_ = 0;  ///< the archive file's size: no member's compressed bytes exceed it
 };
 
 }  // namespace mdr::instrument

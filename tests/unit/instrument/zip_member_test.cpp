@@ -137,4 +137,18 @@ TEST(ZipMember, StatedSizeBeyondDeflatesRatioIsRefusedBeforeAllocating) {
         << message;
 }
 
+TEST(ZipMember, CompressedSizeBeyondTheArchiveIsRefusedBeforeAllocating) {
+    // Compressed size (APPNOTE 4.4.8) 2403 -> 200 MiB and the stated size with it: within every per-member bound,
+    // but more than the whole archive holds, so the header is corrupted; refused before 200 MiB are allocated for
+    // the compressed bytes.
+    std::string bytes = vendor_curve();
+    put_little_endian(bytes, central_header(bytes) + 20, 200u << 20);
+    put_little_endian(bytes, central_header(bytes) + 24, 200u << 20);
+    const std::string message = read_error(bytes, "compressed_size");
+    EXPECT_NE(message.find("states 209715200 compressed bytes, more than the archive's " +
+                           std::to_string(bytes.size())),
+              std::string::npos)
+        << message;
+}
+
 }  // namespace
