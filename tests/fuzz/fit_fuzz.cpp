@@ -1,6 +1,6 @@
 // A seeded mutation fuzzer of `mdr fit`: it mutates fit cases and the data files they read (curve and rebound CSV
-// files; any other file a seed holds, such as an instrument file, the same way) and runs each mutant as a user
-// would, `mdr fit case.toml --out out` in a fresh directory, as a child process with a wall-clock and a memory
+// files, text instrument files; binary instrument files, such as a JPK zip, an Igor wave or a NanoScope file, by
+// the byte and field mutations of Mutator::mutate_binary) and runs each mutant as a user would, `mdr fit case.toml --out out` in a fresh directory, as a child process with a wall-clock and a memory
 // limit. Each mutant must satisfy every oracle (docs/case-format.md, "Fitting" and "Bad input"):
 //
 //   crash         no signal ends mdr
@@ -108,7 +108,11 @@ std::vector<Seed> read_corpus(const fs::path& corpus) {
     return seeds;
 }
 
+// Whether a file is binary (an instrument file's bytes, not text): it holds a NUL byte.
+bool is_binary(const std::string& text) { return text.find('\0') != std::string::npos; }
+
 // A seed with one to four mutations (one, half of the time) of its case, of one of its data files, or of both.
+// A binary file gets byte and field mutations three times in four, else a number of its text (a header's) replaced.
 Seed mutate(const std::vector<Seed>& seeds, mdr::fuzz::Mutator& mutator) {
     Seed mutant = seeds[mutator.pick(seeds.size())];
     Files& files = mutant.files;
@@ -123,8 +127,13 @@ Seed mutate(const std::vector<Seed>& seeds, mdr::fuzz::Mutator& mutator) {
     if (target != 0) mutated.push_back(data[mutator.pick(data.size())]);
     for (const auto& name : mutated) {
         const std::size_t mutations = 1 + mutator.pick(most);
+        const bool binary = is_binary(files[name]);
         for (std::size_t m = 0; m < mutations; ++m) {  // a number half of the time: more mutants reach the fit
-            switch (mutator.pick(4)) {
+            if (binary && mutator.pick(4) != 0) {
+                mutator.mutate_binary(files[name]);
+                continue;
+            }
+            switch (binary ? 2 : mutator.pick(4)) {
                 case 0: mutator.mutate(files[name]); break;
                 case 1: mutator.mutate_structure(files[name]); break;
                 default:
@@ -327,7 +336,8 @@ int main(int argc, char** argv) {
     }
     std::vector<std::string> line_pool;
     for (const auto& seed : seeds) {
-        for (const auto& [name, text] : seed.files) {
+        for (const auto& [name, text] : seed.files) {  // the lines of text files: those of binary ones are noise
+            if (is_binary(text)) continue;
             for (auto& line : mdr::fuzz::lines_of(text)) line_pool.push_back(std::move(line));
         }
     }

@@ -3,11 +3,13 @@
 /// The seeded text mutations of the fuzzers in tests/fuzz (case_fuzz.cpp, fit_fuzz.cpp): byte flips, deleted and
 /// duplicated spans, numbers replaced by edge values, lines taken from other corpus files, and, for data files,
 /// the damage of real files: duplicated rows, CR line ends, control and non-UTF-8 bytes, swapped fields, escapes
-/// and separators inside quoted names, truncation.
+/// and separators inside quoted names, truncation; for binary (instrument) files, flipped bits, zeroed spans and
+/// 16- or 32-bit fields of either byte order set to zero or huge values, at random or in a zip archive's headers.
 
 #include <algorithm>
 #include <cctype>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -149,6 +151,33 @@ public:
         }
     }
 
+    /// One mutation of a binary file (an instrument file: a JPK zip, an Igor wave, a NanoScope file): a bit flipped,
+    /// a span zeroed, deleted or duplicated, the file cut short, or a 16- or 32-bit field (little- or big-endian)
+    /// set to 0, 1, a sign bit or all ones; half of the field mutations hit a zip archive's local, central or end
+    /// header (sizes, offsets, counts, name lengths) where the file has one. The zip's CRCs stay as they are, so a
+    /// member's bytes changed must be refused by them.
+    void mutate_binary(std::string& text) {
+        if (text.empty()) text.push_back('\0');
+        switch (pick(6)) {
+            case 0: text[pick(text.size())] ^= static_cast<char>(1U << pick(8)); break;
+            case 1: {  // zero a span
+                const std::size_t at = pick(text.size());
+                std::fill_n(text.begin() + static_cast<std::ptrdiff_t>(at), std::min(text.size() - at, 1 + pick(64)),
+                            '\0');
+                break;
+            }
+            case 2: {  // delete or duplicate a span: the offsets after it move
+                const std::size_t at = pick(text.size());
+                const std::size_t length = 1 + pick(pick(2) == 0 ? 4 : 256);
+                text = pick(2) == 0 ? text.substr(0, at) + text.substr(std::min(text.size(), at + length))
+                                    : text.substr(0, at) + text.substr(at, length) + text.substr(at);
+                break;
+            }
+            case 3: text.resize(pick(text.size() + 1)); break;  // cut short
+            default: set_field(text, pick(2) == 0 ? zip_header_offset(text) : pick(text.size())); break;
+        }
+    }
+
     /// Replaces a value that is a number (not a digit of a name such as `tau1`) by one of `values` (edge_values
     /// for a case, where the others would mostly be a TOML syntax error; either list for a data file).
     void replace_value(std::string& text, const std::vector<std::string>& values) {
@@ -176,6 +205,32 @@ private:
         if (spans.empty()) return;
         const auto [at, length] = spans[pick(spans.size())];
         text = text.substr(0, at) + values[pick(values.size())] + text.substr(at + length);
+    }
+
+    // Sets the 16- or 32-bit field at `at` (either byte order; cut at the text's end) to an edge value.
+    void set_field(std::string& text, std::size_t at) {
+        static constexpr std::uint32_t values[] = {0, 1, 0x7fffffff, 0x80000000, 0xffffffff, 0x10000000, 0xffff};
+        const std::uint32_t value = values[pick(std::size(values))];
+        const std::size_t width = pick(2) == 0 ? 2 : 4;
+        const bool big_endian = pick(2) == 0;
+        for (std::size_t i = 0; i < width && at + i < text.size(); ++i) {
+            const std::size_t shift = 8 * (big_endian ? width - 1 - i : i);
+            text[at + i] = static_cast<char>((value >> shift) & 0xffU);
+        }
+    }
+
+    // An offset inside a zip header (local file "PK\3\4", central directory "PK\1\2", end of central directory
+    // "PK\5\6"): a field after the signature; a random offset when the text has none.
+    std::size_t zip_header_offset(const std::string& text) {
+        std::vector<std::size_t> headers;
+        for (const std::string_view signature : {std::string_view("PK\3\4"), std::string_view("PK\1\2"),
+                                                 std::string_view("PK\5\6")}) {
+            for (std::size_t at = text.find(signature); at != std::string::npos; at = text.find(signature, at + 1)) {
+                headers.push_back(at);
+            }
+        }
+        if (headers.empty()) return pick(text.size());
+        return std::min(text.size() - 1, headers[pick(headers.size())] + 4 + 2 * pick(20));  // fixed part: 46 bytes
     }
 
     static std::vector<std::string> split(const std::string& line, char separator) {
