@@ -1,7 +1,9 @@
 // A seeded mutation fuzzer of `mdr fit`: it mutates fit cases and the data files they read (curve and rebound CSV
 // files, text instrument files; binary instrument files, such as a JPK zip, an Igor wave or a NanoScope file, by
-// the byte and field mutations of Mutator::mutate_binary) and runs each mutant as a user would, `mdr fit case.toml --out out` in a fresh directory, as a child process with a wall-clock and a memory
-// limit. Each mutant must satisfy every oracle (docs/case-format.md, "Fitting" and "Bad input"):
+// the byte and field mutations of Mutator::mutate_binary, and a zip's members unpacked, mutated and packed again)
+// and runs each mutant as a user would, `mdr fit case.toml --out out` in a fresh directory, as a child process with
+// a wall-clock and a memory limit. Each mutant must satisfy every oracle (docs/case-format.md, "Fitting" and
+// "Bad input"):
 //
 //   crash         no signal ends mdr
 //   hang          mdr ends within the time limit (--timeout, 10 s of processor time; killed after 3 times as
@@ -51,6 +53,7 @@
 #include "child_process.hpp"
 #include "mutator.hpp"
 #include "output_checks.hpp"
+#include "zip_members.hpp"
 
 namespace {
 
@@ -111,8 +114,28 @@ std::vector<Seed> read_corpus(const fs::path& corpus) {
 // Whether a file is binary (an instrument file's bytes, not text): it holds a NUL byte.
 bool is_binary(const std::string& text) { return text.find('\0') != std::string::npos; }
 
+// One mutation of a member of the zip archive `archive` (a JPK file), packed again with sizes and CRC-32 that fit
+// it (deflated, or stored a quarter of the time), so that the mutation passes the zip's checks and reaches the
+// reader behind them: a number of a text member (header properties) replaced, or a binary member's bytes mutated.
+// False when `archive` cannot be unpacked (an earlier mutation broke it).
+bool mutate_zip_member(std::string& archive, mdr::fuzz::Mutator& mutator) {
+    auto members = mdr::fuzz::unzip(archive);
+    if (members.empty()) return false;
+    std::string& bytes = members[mutator.pick(members.size())].bytes;
+    if (is_binary(bytes)) {
+        mutator.mutate_binary(bytes);
+    } else if (mutator.pick(4) == 0) {
+        mutator.mutate_structure(bytes);
+    } else {
+        mutator.replace_value(bytes, mutator.pick(2) == 0 ? mdr::fuzz::edge_values : mdr::fuzz::data_edge_values);
+    }
+    archive = mdr::fuzz::zip(members, mutator.pick(4) == 0);
+    return true;
+}
+
 // A seed with one to four mutations (one, half of the time) of its case, of one of its data files, or of both.
-// A binary file gets byte and field mutations three times in four, else a number of its text (a header's) replaced.
+// A zip archive gets a mutation of one of its members half of the time; a binary file otherwise gets byte and field
+// mutations three times in four, else a number of its text (a header's) replaced.
 Seed mutate(const std::vector<Seed>& seeds, mdr::fuzz::Mutator& mutator) {
     Seed mutant = seeds[mutator.pick(seeds.size())];
     Files& files = mutant.files;
@@ -129,6 +152,10 @@ Seed mutate(const std::vector<Seed>& seeds, mdr::fuzz::Mutator& mutator) {
         const std::size_t mutations = 1 + mutator.pick(most);
         const bool binary = is_binary(files[name]);
         for (std::size_t m = 0; m < mutations; ++m) {  // a number half of the time: more mutants reach the fit
+            if (binary && files[name].starts_with("PK\3\4") && mutator.pick(2) == 0 &&
+                mutate_zip_member(files[name], mutator)) {
+                continue;
+            }
             if (binary && mutator.pick(4) != 0) {
                 mutator.mutate_binary(files[name]);
                 continue;
