@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "interrupt.hpp"
+#include "mdr/error.hpp"
 #include "mdr/fit/candidates.hpp"
 #include "mdr/io/model_choice_files.hpp"
 
@@ -13,7 +14,8 @@ namespace mdr::cli {
 void print_flags(const fit::FitResult& result) {
     for (const auto& flag : result.flags) fmt::print("  flag: {}\n", flag);
     for (const auto& curve : result.curves) {
-        for (const auto& flag : curve.flags) fmt::print("  flag ({}): {}\n", curve.name, flag);
+        // The name is the user's text (a TOML escape can hold any control character): shown as a message shows it.
+        for (const auto& flag : curve.flags) fmt::print("  flag ({}): {}\n", message_line(curve.name), flag);
     }
 }
 

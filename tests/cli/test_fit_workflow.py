@@ -226,6 +226,24 @@ def test_lengths_in_another_unit_than_the_case_are_flagged(run_mdr, workdir):
     assert curve_flags == []
 
 
+def test_a_curve_name_with_control_characters_is_shown_escaped_in_the_flag_lines(run_mdr, workdir):
+    """A curve's name is the user's text: a TOML escape puts an ANSI colour sequence (ESC) or a NUL in it. The flag
+    lines on stdout show it as a message shows a text from the input (include/mdr/error.hpp, message_text: `\\x1b`);
+    fit.json keeps it exactly. Found by the fit fuzzer (tests/fuzz/findings/control_byte_in_curve_name_stdout)."""
+    write_hertz_curve(workdir / "hertz.csv")
+    with open(workdir / "hertz.csv", newline="", encoding="utf-8") as handle:
+        header, *rows = list(csv.reader(handle))
+    with open(workdir / "hertz.csv", "w", newline="", encoding="utf-8") as handle:   # metres: the unit flag
+        csv.writer(handle).writerows([header, *[[t, float(d) * 1e-6, f] for t, d, f in rows]])
+    import json
+    (workdir / "case.toml").write_text(DEPTH_CASE.format(data='name = "\\u001b[31mred\\u0000"', fit=""))
+    result = run_mdr("fit", workdir / "case.toml", "--out", workdir / "out", timeout=300)
+    assert result.returncode in (0, 1), result.stderr
+    assert "\x1b" not in result.stdout and "\x00" not in result.stdout
+    assert "flag (\\x1b[31mred\\x00): " in result.stdout
+    assert json.loads((workdir / "out" / "fit.json").read_text())["curves"][0]["name"] == "\x1b[31mred\x00"
+
+
 def test_an_indentation_beyond_the_sphere_radius_is_flagged(run_mdr, workdir):
     write_hertz_curve(workdir / "hertz.csv")   # 3 um deep on R = 5 um: plausible
     _, curve_flags, _ = fit_flags(run_mdr, workdir, DEPTH_CASE.format(data="", fit=""))
