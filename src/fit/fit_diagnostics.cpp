@@ -17,6 +17,22 @@ namespace {
 
 constexpr double normal_quantile_95 = 1.959963984540054;
 
+// The root mean square of `values`, each counted `weights[i]` times (once without weights), scaled by the largest
+// magnitude: no square overflows or underflows, so finite values (up to the largest double) give a finite RMS; a
+// NaN or an infinity stays one.
+double root_mean_square(const std::vector<double>& values, const std::vector<double>& weights = {}) {
+    double largest = 0.0;
+    for (const double value : values) largest = std::max(largest, std::abs(value));
+    if (largest == 0.0 || std::isinf(largest)) return largest;
+    double sum = 0.0, count = 0.0;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        const double weight = weights.empty() ? 1.0 : weights[i];
+        sum += weight * (values[i] / largest) * (values[i] / largest);
+        count += weight;
+    }
+    return largest * std::sqrt(sum / count);
+}
+
 // The two-sided 95 % quantile of Student's t with `dof` degrees of freedom: for dof >= 3 the Cornish-Fisher
 // expansion about the normal quantile x (Abramowitz & Stegun 26.7.5, four terms; 3.177 at dof = 3 against the exact
 // 3.182, 2.1604 at 13, exact to 4 digits); below, interpolated in log between the exact 12.706 (1), 4.303 (2), 3.182.
@@ -112,15 +128,13 @@ CurveFit rebound_entry(const ReboundData& data, ReboundQuantity quantity, const 
     entry.time = data.velocity;
     entry.measured = restitution ? data.restitution : data.contact_time;
     const auto& errors = restitution ? data.restitution_error : data.contact_time_error;
-    double squared = 0.0, noise_squared = 0.0;
+    std::vector<double> differences;
     for (std::size_t i = 0; i < impacts.size(); ++i) {
         entry.model.push_back(restitution ? impacts[i].restitution : impacts[i].contact_time);
-        squared += (entry.model[i] - entry.measured[i]) * (entry.model[i] - entry.measured[i]);
-        noise_squared += errors[i] * errors[i];
+        differences.push_back(entry.model[i] - entry.measured[i]);
     }
-    const auto n = static_cast<double>(impacts.size());
-    entry.rms_residual = std::sqrt(squared / n);
-    entry.noise = std::sqrt(noise_squared / n);  // the RMS of the stated or estimated uncertainties
+    entry.rms_residual = root_mean_square(differences);
+    entry.noise = root_mean_square(errors);  // the RMS of the stated or estimated uncertainties
     return entry;
 }
 
@@ -154,14 +168,14 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
         curve.contact_depth = cost.contact_depth(nuisance[c].data());
         curve.baseline = cost.baseline(nuisance[c].data());
         curve.noise = prepared.noise;
-        double squared = 0.0;
+        std::vector<double> differences;
         for (std::size_t i = 0; i < n; ++i) {
             curve.time.push_back(data.time[prepared.used[i]]);
             curve.measured.push_back(measured[prepared.used[i]]);
             curve.model.push_back(curve.measured[i] + r[i] * prepared.noise);  // r = (model - measured) / noise
             curve.drive.push_back(force_fitted ? data.depth[prepared.used[i]] - curve.contact_depth
                                       : std::max(data.force[prepared.used[i]] - curve.baseline, 0.0));
-            squared += (curve.model[i] - curve.measured[i]) * (curve.model[i] - curve.measured[i]);
+            differences.push_back(curve.model[i] - curve.measured[i]);
             stacked.residuals[row] = r[i];
             for (std::size_t j = 0; j < k; ++j) stacked.jacobian(row, static_cast<Eigen::Index>(j)) = shared_block[i * k + j];
             for (std::size_t j = 0; j < m; ++j) {
@@ -169,7 +183,7 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
             }
             ++row;
         }
-        curve.rms_residual = std::sqrt(squared / static_cast<double>(n));
+        curve.rms_residual = root_mean_square(differences);
         result.curves.push_back(std::move(curve));
     }
     for (const auto& cost : rebounds) {  // their rows have no contact point or baseline: 0 in those columns
@@ -261,18 +275,20 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
     result.free_count = columns;
 
     // Physical residual and noise over all curves; information criteria on the weighted residuals.
-    double squared = 0.0;
-    double noise_squared = 0.0;
+    std::vector<double> rms_residuals, noises, points;
     for (const auto& curve : result.curves) {
-        const auto points = static_cast<double>(curve.time.size());
-        squared += curve.rms_residual * curve.rms_residual * points;
-        noise_squared += curve.noise * curve.noise * points;
+        rms_residuals.push_back(curve.rms_residual);
+        noises.push_back(curve.noise);
+        points.push_back(static_cast<double>(curve.time.size()));
     }
-    result.rms_residual = std::sqrt(squared / n);
-    result.noise = std::sqrt(noise_squared / n);
-    const double weighted = std::max(stacked.residuals.squaredNorm(), std::numeric_limits<double>::min());
-    result.aic = n * std::log(weighted / n) + 2.0 * static_cast<double>(columns);
-    result.bic = n * std::log(weighted / n) + static_cast<double>(columns) * std::log(n);
+    result.rms_residual = root_mean_square(rms_residuals, points);
+    result.noise = root_mean_square(noises, points);
+    // log(RSS / n) from the norm (stableNorm: no overflow of the squares), RSS at least the smallest double.
+    const double log_mean_square =
+        std::max(2.0 * std::log(stacked.residuals.stableNorm()), std::log(std::numeric_limits<double>::min())) -
+        std::log(n);
+    result.aic = n * log_mean_square + 2.0 * static_cast<double>(columns);
+    result.bic = n * log_mean_square + static_cast<double>(columns) * std::log(n);
 
     // Covariance s^2 (J^T J)^+ by the SVD of J: directions with singular values below 1e-8 of the largest are
     // not determined by the data.
