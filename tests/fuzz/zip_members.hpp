@@ -38,6 +38,7 @@ inline std::vector<ZipMember> unzip(const std::string& archive) {
     for (zip_int64_t index = 0; index < count; ++index) {
         const auto at = static_cast<zip_uint64_t>(index);
         zip_stat_t stat;
+        zip_stat_init(&stat);
         zip_file_t* file = zip_stat_index(zip.get(), at, 0, &stat) == 0 ? zip_fopen_index(zip.get(), at, 0) : nullptr;
         if (file == nullptr) return {};
         ZipMember member{stat.name, std::string(static_cast<std::size_t>(stat.size), '\0')};
