@@ -196,8 +196,9 @@ void require_fittable(const Curve& curve, const CurveCost& cost, const double* n
     }
 }
 
-// A solve that failed before its first step: the residuals at the start values are the cause when they cannot be
-// evaluated there (validate has built the model there). Throws mdr::InvalidInput naming the curve.
+// A solve that failed before its first step: the residuals at the start values, or their forward differences
+// (the Jacobian, whose steps reach beside the start values), are the cause when they cannot be evaluated there
+// (validate has built the model there). Throws mdr::InvalidInput naming the curve.
 void require_evaluable_start(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
                              const std::vector<std::unique_ptr<ReboundCost>>& rebounds,
                              const std::vector<double>& shared, const std::vector<std::vector<double>>& nuisance) {
@@ -205,6 +206,17 @@ void require_evaluable_start(const FitProblem& problem, const std::vector<std::u
         if (const std::string why = costs[c]->failure_at(shared.data(), nuisance[c].data()); !why.empty()) {
             throw InvalidInput(fmt::format("fit.data[{}]", c), problem.curves[c].name,
                                "the model cannot be evaluated at the start values: " + why);
+        }
+        const std::size_t n = costs[c]->prepared().used.size();
+        std::vector<double> residuals(n), shared_block(n * shared.size()),
+            nuisance_block(n * std::max<std::size_t>(nuisance[c].size(), 1));
+        const double* parameters[2] = {shared.data(), nuisance[c].data()};
+        double* blocks[2] = {shared_block.data(), nuisance_block.data()};
+        if (!costs[c]->Evaluate(parameters, residuals.data(), blocks)) {
+            throw InvalidInput(fmt::format("fit.data[{}]", c), problem.curves[c].name,
+                               "the model cannot be evaluated beside the start values (a forward-difference step "
+                               "of a fitted parameter): the data or the start values lie outside what double "
+                               "precision can represent in this problem");
         }
     }
     for (const auto& rebound : rebounds) {
