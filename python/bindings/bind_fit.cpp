@@ -4,6 +4,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "case_tree.hpp"
+#include "python_interrupt.hpp"
 #include "document_object.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/candidates.hpp"
@@ -64,23 +65,8 @@ py::dict fit_case_of(const py::object& case_, const std::string& source, const s
                      const std::vector<CurveArrays>& curves, const std::vector<ReboundArrays>& rebounds) {
     auto fit_case = io::parse_fit_case(case_template(case_, source), directory);
     // Ctrl-C (a pending signal) stops the fit at its next model run or progress report with KeyboardInterrupt.
-    bool signalled = false;
-    fit_case.settings.check_interrupt = [&signalled] {
-        py::gil_scoped_acquire acquire;
-        if (PyErr_CheckSignals() != 0) {
-            signalled = true;
-            throw Interrupted();
-        }
-    };
-    const auto solve = [&signalled](const auto& body) {
-        try {
-            py::gil_scoped_release release;
-            body();
-        } catch (const Interrupted&) {
-            if (signalled) throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals raised
-            throw;
-        }
-    };
+    PythonInterrupt interrupt;
+    fit_case.settings.check_interrupt = interrupt.check();
     std::vector<fit::Curve> loaded;
     std::vector<fit::ReboundData> loaded_rebounds;
     if (curves.empty() && rebounds.empty()) {
@@ -110,7 +96,7 @@ py::dict fit_case_of(const py::object& case_, const std::string& source, const s
     fit::require_curves_only_for_model_choice(fit_case, loaded_rebounds.size());
     if (!fit_case.model_choice.empty()) {
         fit::ModelChoice choice;
-        solve([&] { choice = fit::fit_candidates(fit_case, loaded); });
+        interrupt.run([&] { choice = fit::fit_candidates(fit_case, loaded); });
         py::list candidates;
         for (const auto& fitted : choice.fits) {
             py::dict entry = fit_output(fitted.fitted_case, fitted.result);
@@ -125,7 +111,7 @@ py::dict fit_case_of(const py::object& case_, const std::string& source, const s
     }
     const auto problem = fit::make_problem(fit_case, std::move(loaded), std::move(loaded_rebounds));
     fit::FitResult result;
-    solve([&] { result = fit::fit(problem); });
+    interrupt.run([&] { result = fit::fit(problem); });
     fit::add_plausibility_flags(problem, io::unit_system(fit_case.units), result);
     return fit_output(fit_case, result);
 }

@@ -5,7 +5,6 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include <Python.h>
 
 #include <cstddef>
 #include <filesystem>
@@ -14,6 +13,7 @@
 
 #include "bindings.hpp"
 #include "case_tree.hpp"
+#include "python_interrupt.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/map_fit.hpp"
 #include "mdr/instrument/read_curves.hpp"
@@ -30,25 +30,13 @@ py::tuple fit_map_file(const py::object& case_, const std::string& source, const
                        const std::string& map, const std::filesystem::path& folder, const py::object& progress) {
     auto fit_case = io::parse_fit_case(case_template(case_, source), directory);
     fit::require_map_case(fit_case);
-    bool signalled = false;
-    fit_case.settings.check_interrupt = [&signalled] {
-        py::gil_scoped_acquire acquire;
-        if (PyErr_CheckSignals() != 0) {
-            signalled = true;
-            throw Interrupted();
-        }
-    };
+    PythonInterrupt interrupt;
+    fit_case.settings.check_interrupt = interrupt.check();
     instrument::CurveFile file(map);
     const fit::MapLayout layout = fit::map_layout(file, fit_case);
     std::vector<fit::PixelFit> pixels;
     for (std::size_t i = 0; i < file.size(); ++i) {
-        try {
-            py::gil_scoped_release release;
-            pixels.push_back(fit::fit_map_pixel(fit_case, map, file, i));
-        } catch (const Interrupted&) {
-            if (signalled) throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals raised
-            throw;
-        }
+        interrupt.run([&] { pixels.push_back(fit::fit_map_pixel(fit_case, map, file, i)); });
         if (!progress.is_none()) progress(i + 1, file.size());
     }
     fit::write_map_table(folder / "map.csv", pixels);
