@@ -1,7 +1,6 @@
 // `mdr material CASE --out DIR`: tabulates the material functions of a case as `run` uses them.
 
 #include <fmt/format.h>
-#include <fmt/os.h>
 
 #include <algorithm>
 
@@ -10,6 +9,7 @@
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/material_table.hpp"
+#include "mdr/io/output_file.hpp"
 #include "mdr/io/result_directory.hpp"
 #include "mdr/io/units.hpp"
 #include "mdr/rheology/material_models.hpp"
@@ -79,7 +79,7 @@ void add_material_command(CLI::App& app, int& exit_code) {
                 [&](const std::filesystem::path& files) {
                     io::write_material_tables(files, material, contact_case.shear_material, t, w, origin.model);
                     // The declared unit system (mdr/io/units.hpp), which the figures of the tables name.
-                    auto summary = fmt::output_file((files / "summary.json").string());
+                    auto summary = io::OutputFile(files / "summary.json");
                     summary.print("{{\n  \"units\": \"{}\"\n}}\n", contact_case.units);
                     summary.close();
                 },

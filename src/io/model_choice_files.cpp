@@ -1,12 +1,12 @@
 #include "mdr/io/model_choice_files.hpp"
 
 #include <fmt/format.h>
-#include <fmt/os.h>
 
 #include <cmath>
 
 #include "mdr/io/csv_field.hpp"
 #include "mdr/io/fit_files.hpp"
+#include "mdr/io/output_file.hpp"
 
 namespace mdr::io {
 
@@ -18,7 +18,7 @@ double ratio(const fit::FitResult& result) { return result.noise > 0.0 ? result.
 void write_spectrum(const std::filesystem::path& directory, const fit::CandidateFit& spectrum) {
     const auto& result = spectrum.result;
     const std::size_t offset = result.values.size() - spectrum.relaxation_times.size() - 1;
-    auto csv = fmt::output_file((directory / "spectrum.csv").string());
+    auto csv = OutputFile(directory / "spectrum.csv");
     csv.print("term,tau,modulus,standard_error\n");
     csv.print("G_inf,inf,{},{}\n", result.values[offset], result.standard_errors[offset]);
     for (std::size_t j = 0; j < spectrum.relaxation_times.size(); ++j) {
@@ -74,7 +74,7 @@ void write_model_choice(const std::filesystem::path& directory, const FitCase& f
         write_candidate(directory, choice.fits.front());
         return;
     }
-    auto csv = fmt::output_file((directory / "models.csv").string());
+    auto csv = OutputFile(directory / "models.csv");
     csv.print("rank,candidate,free_count,rms_residual,residual_to_noise,aic,bic,delta_aic,delta_bic,converged,"
               "undetermined,wall_seconds\n");
     for (std::size_t i = 0; i < choice.fits.size(); ++i) {
@@ -87,7 +87,7 @@ void write_model_choice(const std::filesystem::path& directory, const FitCase& f
         write_candidate(directory / fitted.name, fitted);
     }
     csv.close();
-    auto json = fmt::output_file((directory / "ranking.json").string());
+    auto json = OutputFile(directory / "ranking.json");
     json.print("{}\n", ranking_json(choice));
     json.close();
 }
