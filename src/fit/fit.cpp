@@ -328,8 +328,12 @@ FitResult solve(const FitProblem& problem) {
     // of ending on a bound (tests/python/test_fit_documents.py, "undetermined").
     options.line_search_interpolation_type = ceres::QUADRATIC;
     options.logging_type = ceres::SILENT;
-    IterationReport iteration_report(problem.settings.on_iteration);
-    if (problem.settings.on_iteration) options.callbacks.push_back(&iteration_report);
+    std::vector<std::size_t> runs_before;  // the runs done by the end of each iteration (FitResult::runs_per_iteration)
+    IterationReport iteration_report([&](std::size_t iteration, double chi_square) {
+        runs_before.push_back(evaluations);
+        if (problem.settings.on_iteration) problem.settings.on_iteration(iteration, chi_square);
+    });
+    options.callbacks.push_back(&iteration_report);
     silence_solver_log();
     std::vector<BoundedCoordinate> contact_points;
     if (scales.fit_contact) {
@@ -366,6 +370,9 @@ FitResult solve(const FitProblem& problem) {
     result.evaluations = evaluations;
     result.element_evaluations = element_evaluations;
     result.band_evaluations = band_evaluations;
+    for (std::size_t i = 0; i < runs_before.size(); ++i) {
+        result.runs_per_iteration.push_back(runs_before[i] - (i == 0 ? 0 : runs_before[i - 1]));
+    }
     try {
         result.material = material_bands(problem, result);
     } catch (const std::exception&) {

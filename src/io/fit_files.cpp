@@ -93,6 +93,8 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
         for (const auto& flag : flags) list.push_back({flag});
         return Document{std::move(list)};
     };
+    Document::List runs_per_iteration;
+    for (const std::size_t runs : result.runs_per_iteration) runs_per_iteration.push_back({runs});
     Document::List curves;
     for (const auto& curve : result.curves) {
         Document::Table entry{{"name", {curve.name}},
@@ -143,6 +145,7 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
         {"evaluations", {result.evaluations}},
         {"element_evaluations", {result.element_evaluations}},
         {"band_evaluations", {result.band_evaluations}},
+        {"runs_per_iteration", {std::move(runs_per_iteration)}},
         {"wall_seconds", {result.wall_seconds}},
         {"units", {units}},
     }};

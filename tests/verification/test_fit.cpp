@@ -101,6 +101,14 @@ TEST(Fit, DepthOutsideTingsClassRunsOnElements) {
     // Jacobian; the start's Jacobian, the check of the start and the Jacobian of the uncertainties add at most 4 each.
     // With the Jacobian at every trial point (Ceres' default, cubic interpolation) it took 77 runs for 7 iterations.
     EXPECT_LE(result.evaluations, 5 * (result.iterations + 3)) << result.iterations << " iterations";
+    // Where the runs went (issue 25): one count per iteration and the start, each of an iteration at most its
+    // trial points and 3 columns (5), all within the fit's runs.
+    ASSERT_EQ(result.runs_per_iteration.size(), result.iterations + 1);
+    std::size_t runs = 0;
+    for (std::size_t i = 1; i < result.runs_per_iteration.size(); ++i) EXPECT_LE(result.runs_per_iteration[i], 5u) << i;
+    for (const std::size_t r : result.runs_per_iteration) runs += r;
+    EXPECT_LE(runs, result.evaluations);
+    EXPECT_GE(runs + 8, result.evaluations);  // after the last iteration: the uncertainties' Jacobian and the bands
 }
 
 TEST(Fit, StandardSolidFromLoadUnloadTing) {

@@ -231,6 +231,9 @@ struct FitResult {
     /// elements and forces with the elements that provably stay in contact summed instead of stepped (the band
     /// model, docs/performance.md "Real curves"), a cost of the elements near the contact edge only.
     std::size_t band_evaluations = 0;
+    /// The forward-model runs of each solver iteration, the start's evaluation first (iteration 0); the runs after
+    /// the last iteration (the Jacobian of the standard errors, the bands) are `evaluations` less their sum.
+    std::vector<std::size_t> runs_per_iteration;
     double wall_seconds = 0.0;               ///< wall time of the fit
     MaterialBands material;                  ///< the identified material functions with their bands
 };
