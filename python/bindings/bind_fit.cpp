@@ -119,7 +119,7 @@ py::dict fit_case_of(const py::object& case_, const std::string& source, const s
 }  // namespace
 
 void bind_fit(py::module_& module) {
-    module.def("_fit_toml", &fit_case_of, py::arg("case"), py::arg("source"), py::arg("directory"), py::arg("curves"),
+    module.def("_fit_case", &fit_case_of, py::arg("case"), py::arg("source"), py::arg("directory"), py::arg("curves"),
                py::arg("rebounds"), "Fits a fit case given as TOML text or a dict tree (mdr.fit is the public entry).");
     module.def(
         "_afm_depth_and_force",

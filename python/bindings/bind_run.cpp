@@ -69,11 +69,11 @@ py::dict run_case(const py::object& case_, const std::string& source, const py::
 }  // namespace
 
 void bind_run(py::module_& module) {
-    module.def("_run_toml", &run_case, py::arg("case"), py::arg("source") = "case", py::arg("progress") = py::none(),
+    module.def("_run_case", &run_case, py::arg("case"), py::arg("source") = "case", py::arg("progress") = py::none(),
                "Runs a case given as TOML text or as a dict tree; returns history, profiles and summary "
                "(use mdr.run).");
     module.def(
-        "_check_toml",
+        "_check_case",
         [](const py::object& case_, const std::string& source) {
             return io::check(case_template(case_, source).build());
         },

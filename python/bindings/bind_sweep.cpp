@@ -39,7 +39,7 @@ std::vector<io::SweepAxis> sweep_axes(const py::list& specs) {
 
 void bind_sweep(py::module_& module) {
     module.def(
-        "_sweep_toml",
+        "_sweep_case",
         [](const py::object& case_, const std::string& source, const py::list& specs, unsigned jobs,
            const py::object& progress) {
             const auto axes = sweep_axes(specs);
@@ -76,7 +76,7 @@ void bind_sweep(py::module_& module) {
     module.def(
         "_sweep_size",
         [](const py::list& specs) { return io::sweep_size(sweep_axes(specs)); }, py::arg("specs"),
-        "The number of grid points of the axes of _sweep_toml (mdr.sweep bounds its threads by it).");
+        "The number of grid points of the axes of _sweep_case (mdr.sweep bounds its threads by it).");
     module.def(
         "_sweep_grid",
         [](const py::list& specs) {
@@ -91,7 +91,7 @@ void bind_sweep(py::module_& module) {
             }
             return py::make_tuple(keys, array);
         },
-        py::arg("specs"), "The keys and the grid points (rows x keys) of the axes of _sweep_toml, in row order.");
+        py::arg("specs"), "The keys and the grid points (rows x keys) of the axes of _sweep_case, in row order.");
     module.def(
         "_sweep_points",
         [](const py::object& case_, const std::string& source, const std::vector<std::string>& keys,
@@ -124,7 +124,7 @@ void bind_sweep(py::module_& module) {
         "Runs a case (TOML text or a dict tree) at the given points (rows x keys); returns (summaries, errors) in "
         "row order, a summary a dict "
         "({} where the point failed). The rows are those "
-        "of _sweep_toml, bit for bit (mdr.distributed runs chunks of a sweep with it).");
+        "of _sweep_case, bit for bit (mdr.distributed runs chunks of a sweep with it).");
 }
 
 }  // namespace mdr::python

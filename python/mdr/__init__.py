@@ -166,7 +166,7 @@ def run(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[st
     progress = _callable_or_none(progress)
     case_input, source = _case_input(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
                                                   tangential=tangential, output=output, numerics=numerics)))
-    raw = _mdr._run_toml(case_input, source, progress)
+    raw = _mdr._run_case(case_input, source, progress)
     return Result(history=dict(raw["history"]), summary=raw["summary"],
                   profiles=dict(raw["profiles"]), description=raw["description"])
 
@@ -202,7 +202,7 @@ def check(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[
     """
     case_input, source = _case_input(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
                                                   tangential=tangential, output=output, numerics=numerics)))
-    return _mdr._check_toml(case_input, source)
+    return _mdr._check_case(case_input, source)
 
 
 def _axis_spec(key: str, values: Any) -> Union[str, tuple[str, list[float]]]:
@@ -295,7 +295,7 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
     batch = threads = None
     if scheduler is None:
         threads = local_workers(jobs, _mdr._sweep_size(specs))
-        raw = _mdr._sweep_toml(case_input, source, specs, threads, progress)
+        raw = _mdr._sweep_case(case_input, source, specs, threads, progress)
     else:
         from . import distributed
 

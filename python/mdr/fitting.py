@@ -170,7 +170,7 @@ def fit(case: CaseLike, data: Mapping[str, Any] | Sequence[Mapping[str, Any]] | 
                            str(curve.get("fitted", ""))))
         else:
             raise ValueError(f"data[{i}].kind = {kind!r}: one of curve, rebound")
-    raw = _mdr._fit_toml(case_input, source, directory, curves, rebounds)
+    raw = _mdr._fit_case(case_input, source, directory, curves, rebounds)
     if "candidates" not in raw:
         return _result(raw)
     candidates = {str(entry["name"]): _result(entry) for entry in raw["candidates"]}

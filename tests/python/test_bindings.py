@@ -258,7 +258,7 @@ def test_non_string_key_is_a_type_error():
 
 def test_low_level_entry_points_reject_wrong_types():
     with pytest.raises(TypeError):
-        mdr._mdr._run_toml(42)
+        mdr._mdr._run_case(42)
     with pytest.raises(TypeError):
         mdr.Material.standard("a", 1.0, 1.0)
     with pytest.raises(TypeError):
