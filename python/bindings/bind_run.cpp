@@ -3,7 +3,6 @@
 
 #include <chrono>
 
-#include "arrays.hpp"
 #include "bindings.hpp"
 #include "case_tree.hpp"
 #include "document_object.hpp"
@@ -11,6 +10,7 @@
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/history_columns.hpp"
+#include "mdr/io/profile_columns.hpp"
 #include "mdr/io/summary.hpp"
 #include "mdr/io/units.hpp"
 
@@ -45,19 +45,15 @@ py::dict run_case(const py::object& case_, const std::string& source, const py::
         history[py::str(column.name.data(), column.name.size())] = values;
     }
     py::dict profiles;
-    std::vector<double> t, r, p, w, tau;
-    for (const auto& snapshot : result.snapshots) {
-        t.insert(t.end(), snapshot.radius.size(), snapshot.time);
-        r.insert(r.end(), snapshot.radius.begin(), snapshot.radius.end());
-        p.insert(p.end(), snapshot.pressure.begin(), snapshot.pressure.end());
-        w.insert(w.end(), snapshot.displacement.begin(), snapshot.displacement.end());
-        tau.insert(tau.end(), snapshot.shear_stress.begin(), snapshot.shear_stress.end());
+    std::size_t profile_rows = 0;
+    for (const auto& snapshot : result.snapshots) profile_rows += snapshot.radius.size();
+    for (const io::ProfileColumn& column : io::profile_columns(result)) {
+        py::array_t<double> values(static_cast<py::ssize_t>(profile_rows));
+        auto* data = values.mutable_data();
+        for (const auto& snapshot : result.snapshots)
+            for (std::size_t j = 0; j < snapshot.radius.size(); ++j) *data++ = column.value(snapshot, j);
+        profiles[py::str(column.name.data(), column.name.size())] = values;
     }
-    profiles["t"] = to_array(t);
-    profiles["r"] = to_array(r);
-    profiles["p"] = to_array(p);
-    profiles["w"] = to_array(w);
-    if (!result.tangential_force.empty()) profiles["tau"] = to_array(tau);
     py::dict out;
     out["history"] = history;
     out["profiles"] = profiles;

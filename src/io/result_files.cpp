@@ -7,6 +7,7 @@
 
 #include "mdr/io/history_columns.hpp"
 #include "mdr/io/output_file.hpp"
+#include "mdr/io/profile_columns.hpp"
 #include "mdr/io/summary.hpp"
 
 namespace mdr::io {
@@ -41,13 +42,13 @@ void write_indentation_result(const fs::path& directory, const drivers::ContactC
 
     if (result.snapshots.empty()) return;
     auto profiles = OutputFile(directory / "profiles.csv");
-    const bool with_tangential = !result.tangential_force.empty();
-    profiles.print("t,r,p,w{}\n", with_tangential ? ",tau" : "");
+    const auto profile = profile_columns(result);
+    for (std::size_t k = 0; k < profile.size(); ++k) profiles.print("{}{}", k == 0 ? "" : ",", profile[k].name);
+    profiles.print("\n");
     for (const auto& snapshot : result.snapshots) {
         for (std::size_t j = 0; j < snapshot.radius.size(); ++j) {
-            profiles.print("{},{},{},{}", snapshot.time, snapshot.radius[j], snapshot.pressure[j],
-                           snapshot.displacement[j]);
-            if (with_tangential) profiles.print(",{}", snapshot.shear_stress[j]);
+            for (std::size_t k = 0; k < profile.size(); ++k)
+                profiles.print("{}{}", k == 0 ? "" : ",", profile[k].value(snapshot, j));
             profiles.print("\n");
         }
     }

@@ -134,6 +134,7 @@ def test_bindings_agree_with_the_command_line_to_the_last_digit(mdr_binary, case
     for name, column in history.items():
         np.testing.assert_array_equal(np.array(column), result.history[name], err_msg=name)
     profiles = read_csv(out / "profiles.csv")
+    assert set(profiles) == set(result.profiles)
     for name, column in profiles.items():
         np.testing.assert_array_equal(np.array(column), result.profiles[name], err_msg=name)
     summary = json.loads((out / "summary.json").read_text())
