@@ -8,7 +8,9 @@
 
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/load_history.hpp"
+#include "layer_receding.hpp"
 #include "mdr/error.hpp"
+#include "mdr/numerics/monotone_root.hpp"
 
 namespace mdr::drivers {
 
@@ -35,6 +37,15 @@ void refuse(const std::string& key, const std::string& value, const std::string&
     throw InvalidInput(key, value, what + " is not built on a [layer] yet (issue 28)");
 }
 
+// A contact that grows again after it shrank (reloading, or the recovering surface reaching the indenter again):
+// Ting's solution (eq. L12) then no longer holds, and the general one is not built.
+[[noreturn]] void refuse_regrowth(double time) {
+    throw InvalidInput("load.history", "[...]",
+                       "the contact on the [layer] would grow again at t = " + format_value(time) +
+                           " s after it shrank (reloading, or the recovering surface touching the indenter again): "
+                           "not built on a [layer] yet (issue 28)");
+}
+
 }  // namespace
 
 void validate_layer(const ContactCase& contact_case) {
@@ -55,13 +66,6 @@ void validate_layer(const ContactCase& contact_case) {
     if (!contact_case.snapshots.empty()) refuse("output.snapshots", "[...]", "a pressure snapshot");
     if (!contact_case.tangential_exact) {
         refuse("material", "(compressible or two bodies)", "a compressible layer or a deformable indenter");
-    }
-    const auto& points = contact_case.load.history->points();
-    for (std::size_t i = 1; i < points.size(); ++i) {
-        if (points[i].value < points[i - 1].value) {
-            refuse("load.history[" + std::to_string(i) + "]", format_value(points[i].value),
-                   "a depth that decreases (unloading: the correspondence principle is not exact then)");
-        }
     }
     if (contact_case.numerics.elements && *contact_case.numerics.elements > max_layer_nodes) {
         throw InvalidInput("numerics.elements", std::to_string(*contact_case.numerics.elements),
@@ -95,30 +99,71 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
                                      result.numerics.min_segment_steps, {});
 
     const auto& material = contact_case.material;
-    const auto& terms = material.terms();
-    std::vector<double> branches(terms.size(), 0.0);  // h_k = int_0^t exp(-(t - t')/tau_k) dF_el(t')
-    double previous_force = 0.0, previous_time = grid.front().time, radius = 0.0;
+    const double largest_depth = history.max_value();
+    // The loading phase (depth non-decreasing): Lee-Radok, F(t) = int_0^t G(t - t') dF_el(t') (eq. L11), the
+    // branches updated exactly with F_el linear over a step. After the first decrease: Ting's receding contact,
+    // a(t) = a_el(d(t1)) with t1 from eq. L12 and F(t) from eq. L13; after the contact is lost, the free surface at
+    // the centre w0 (eq. L14), until the indenter would touch it again (refused: not built yet).
+    LoadingRecord loading(material, grid.front().time);
+    PronyBranches depth_branches(material), force_branches(material);  // of w0 (the centre's depth) and of F_el
+    enum class Phase { approach, growing, receding, lifted_off } phase = Phase::approach;
+    double previous_force = 0.0, previous_time = grid.front().time, radius = 0.0, position = 0.0;
+    double centre = 0.0;  // w0: the depth while in contact, the free surface after the contact is lost
     contact::LayerContactState state;
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     std::size_t reported = 0;
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const GridNode& node = grid[i];
-        if (i == 0 || node.value != grid[i - 1].value) state = layer.at_depth(node.value, radius);  // else a hold
-        radius = state.contact_radius;
-        const double elastic_force = unit_plane_modulus * state.force;
         const double step = node.time - previous_time;
-        const double change = elastic_force - previous_force;
-        // Lee-Radok: G(t) = G_inf + eta delta(t) + sum G_k exp(-t/tau_k); F_el linear over the step.
-        double force = material.equilibrium_modulus() * elastic_force;
-        for (std::size_t k = 0; k < terms.size(); ++k) {
-            const double tau = terms[k].relaxation_time;
-            const double decay = std::exp(-step / tau);
-            const double gain = step > 0.0 ? -std::expm1(-step / tau) * tau / step : 1.0;
-            branches[k] = branches[k] * decay + gain * change;
-            force += terms[k].modulus * branches[k];
+        double force = 0.0;
+        if (phase == Phase::approach && node.value <= 0.0) {  // not touched yet: nothing has happened
+            loading = LoadingRecord(material, node.time);
+        } else if (phase != Phase::lifted_off) {
+            if (phase == Phase::growing && node.value < centre) phase = Phase::receding;
+            if (phase == Phase::approach) phase = Phase::growing;
+            const double change = node.value - centre;
+            const double rate = step > 0.0 ? change / step : 0.0;
+            depth_branches.advance(step, change);
+            centre = node.value;
+            if (phase == Phase::growing) {
+                if (change != 0.0) state = layer.at_depth(node.value, state);  // else a hold
+                const double elastic_force = unit_plane_modulus * state.force;
+                force_branches.advance(step, elastic_force - previous_force);
+                loading.append(node.time, node.value, elastic_force, depth_branches, force_branches);
+                // G(t) = G_inf + eta delta(t) + sum G_k exp(-t/tau_k) in eq. L11.
+                force = material.equilibrium_modulus() * elastic_force + force_branches.weighted_sum() +
+                        (step > 0.0 ? material.viscosity() * (elastic_force - previous_force) / step : 0.0);
+                previous_force = elastic_force;
+                position = static_cast<double>(loading.steps());
+            } else {
+                const double steps = static_cast<double>(loading.steps());
+                const auto residual = [&](double x) {  // non-decreasing in x; continued linearly outside [0, steps]
+                    const double inside = std::clamp(x, 0.0, steps);
+                    return (x - inside) - loading.ting_residual(inside, node.time, node.value, depth_branches, rate);
+                };
+                if (residual(0.0) >= 0.0) {  // int_0^t G dd <= 0: the contact is lost (eq. L12 with t1 at the start)
+                    phase = Phase::lifted_off;
+                    state = {};
+                } else {
+                    const double previous_depth = loading.at(position).depth;
+                    position = numerics::monotone_root(residual, position, residual(position), 1.0,
+                                                       1e-13 * material.relaxation(0.0) * largest_depth, 1e-12, false);
+                    const double effective_depth = loading.at(std::min(position, steps)).depth;
+                    if (position > steps || effective_depth > previous_depth + 1e-9 * largest_depth) {
+                        refuse_regrowth(node.time);
+                    }
+                    state = layer.at_depth(effective_depth, state);
+                    force = loading.force(position, node.time, unit_plane_modulus * state.force);
+                }
+            }
+        } else {
+            // The free centre: int_0^t G(t - t') dw0(t') = 0, w0 linear over the step (eq. L14).
+            const double change = depth_branches.free_change(step, centre);
+            depth_branches.advance(step, change);
+            centre += change;
+            if (node.value > centre + 1e-9 * largest_depth) refuse_regrowth(node.time);
         }
-        if (step > 0.0) force += material.viscosity() * change / step;
-        previous_force = elastic_force;
+        radius = state.contact_radius;
         previous_time = node.time;
         if (i > 0) ++result.steps;
         if (i % every == 0 || i + 1 == grid.size()) {

@@ -43,9 +43,6 @@ TEST(LayerReader, RefusesBadValues) {
 }
 
 TEST(LayerReader, RefusesWhatIsNotBuiltOnALayer) {
-    EXPECT_EQ(refused_key(with("control = \"displacement\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-6], [2.0, 0.0]]\n",
-                               bonded)),
-              "load.history[2]");
     EXPECT_EQ(refused_key(with("control = \"force\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-6]]\n", bonded)),
               "load.control");
     EXPECT_EQ(refused_key(with(loading, bonded, "[material.bulk]\nmodel = \"elastic\"\nK = 3.0e3\n")), "material");
