@@ -9,12 +9,14 @@
 
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/numerics/gauss_rule.hpp"
 
 namespace {
 
-std::string layer_case(const std::string& layer) {
+std::string layer_case(const std::string& layer,
+                       const std::string& history = "[[0.0, 0.0], [1.0, 1.0e-6], [3.0, 1.0e-6]]") {
     return R"(
 [material]
 model = "standard"
@@ -26,8 +28,7 @@ shape = "sphere"
 R = 1.0e-5
 [load]
 control = "displacement"
-history = [[0.0, 0.0], [1.0, 1.0e-6], [3.0, 1.0e-6]]
-)" + layer;
+history = )" + history + "\n" + layer;
 }
 
 TEST(LayerViscoelastic, DriverMatchesTheDirectLeeRadokConvolution) {
@@ -82,6 +83,54 @@ TEST(LayerViscoelastic, VeryThickLayerIsTheHalfSpaceDriver) {
     // The half-space driver's own error (midpoint elements, O((dx/a)^2), contact_case.hpp default_elements) is
     // below this at its defaults; the layer's, O(a/h) = 1e-8 here.
     EXPECT_LT(largest, 1e-6);
+}
+
+TEST(LayerViscoelastic, VeryThickLayerUnloadsAsTheHalfSpaceDriver) {
+    // Ting's receding contact on the layer (theory.md eq. L12, L13) against the half-space driver's elements, which
+    // know nothing of t1: a triangle whose contact is lost at t ~ 1.5 s, before the depth returns to zero.
+    const std::string triangle = "[[0.0, 0.0], [1.0, 1.0e-6], [2.0, 0.0]]";
+    const auto half_space = mdr::drivers::run_case(mdr::io::parse_case(layer_case("", triangle)));
+    const auto thick = mdr::drivers::run_case(
+        mdr::io::parse_case(layer_case("[layer]\nthickness = 1.0e3\ninterface = \"bonded\"\n", triangle)));
+    ASSERT_EQ(half_space.time.size(), thick.time.size());
+    const double peak = *std::max_element(half_space.force.begin(), half_space.force.end());
+    const double widest = *std::max_element(half_space.radius.begin(), half_space.radius.end());
+    double force_error = 0.0, radius_error = 0.0;
+    for (std::size_t i = 0; i < half_space.time.size(); ++i) {
+        force_error = std::max(force_error, std::abs(half_space.force[i] - thick.force[i]) / peak);
+        radius_error = std::max(radius_error, std::abs(half_space.radius[i] - thick.radius[i]) / widest);
+    }
+    EXPECT_EQ(thick.force.back(), 0.0);
+    EXPECT_GT(thick.force[thick.force.size() * 5 / 8], 0.0);  // t = 1.25 s: still in contact
+    // Observed 2.9e-7 and 4.1e-6: the half-space driver's elements (its contact edge located between them).
+    EXPECT_LT(force_error, 1e-6);
+    EXPECT_LT(radius_error, 1e-5);
+}
+
+TEST(LayerViscoelastic, AContactThatWouldGrowAgainIsRefusedNamingTheHistory) {
+    // Outside Ting's solution (one maximum of the contact radius): a reload while in contact, and a held depth
+    // that the surface, recovering after the contact was lost, reaches again. The centre of the layer's surface
+    // recovers as the half-space's (eq. L14), so the refusal comes when the half-space driver touches again.
+    const std::string layer = "[layer]\nthickness = 2.0e-6\ninterface = \"bonded\"\n";
+    const std::string reload = "[[0.0, 0.0], [1.0, 1.0e-6], [1.2, 0.8e-6], [1.4, 1.0e-6]]";
+    const std::string held = "[[0.0, 0.0], [1.0, 1.0e-6], [1.1, 0.2e-6], [5.0, 0.2e-6]]";
+    for (const std::string& history : {reload, held}) {
+        try {
+            mdr::drivers::run_case(mdr::io::parse_case(layer_case(layer, history)));
+            ADD_FAILURE() << history << " was run";
+        } catch (const mdr::InvalidInput& error) {
+            EXPECT_EQ(error.key(), "load.history") << history;
+            const std::string message = error.what();
+            ASSERT_NE(message.find("would grow again at t = "), std::string::npos) << message;
+            if (history != held) continue;
+            const double refused_at = std::stod(message.substr(message.find("at t = ") + 7));
+            const auto half_space = mdr::drivers::run_case(mdr::io::parse_case(layer_case("", held)));
+            std::size_t row = 0;
+            while (half_space.time[row] < 1.1 || half_space.force[row] == 0.0) ++row;  // touches again
+            EXPECT_NEAR(refused_at, half_space.time[row], 1e-9) << "half-space contact again at t = "
+                                                                << half_space.time[row];
+        }
+    }
 }
 
 }  // namespace
