@@ -109,7 +109,7 @@ LayerContactState LayerContact::at_depth(double depth, const LayerContactState& 
         return {unit.contact_radius, depth, depth * unit.force};
     }
     // Depth to 1e-8: the force to ~1.5e-8 (a sphere, F ~ d^1.5), below the default nodes' 1e-7; from a nearby
-    // solution the first regula falsi point usually meets it (three solves).
+    // solution the first regula falsi point often meets it (3.6 solves a step on average in a run).
     const double value_tolerance = 1e-8 * depth;
     if (near.contact_radius > 0.0 && std::abs(near.depth - depth) <= value_tolerance) return near;
     // depth(a) - d is increasing in a with depth(0) = 0; continued linearly outside (0, max_contact_radius] so that
