@@ -8,9 +8,9 @@
 
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/load_history.hpp"
-#include "layer_receding.hpp"
 #include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
+#include "layer_stepping.hpp"
 
 namespace mdr::drivers {
 
@@ -25,12 +25,16 @@ constexpr double max_radius_over_thickness = 100.0;
 constexpr std::size_t max_layer_nodes = 512;
 
 // The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius at
-// the largest depth, within the profile's range (beyond it LayerContact::at_depth refuses the depth).
+// the largest depth (under force control: its bound of the contact radius at the largest force with the softest
+// modulus, the half-width of resolve_numerics; the layer, stiffer, has a smaller contact at the same force), within
+// the profile's range (beyond it LayerContact::at_depth refuses the depth).
 double largest_contact_radius(const ContactCase& contact_case) {
     const auto& indenter = *contact_case.indenter;
     if (indenter.is_flat_punch()) return indenter.max_radius();
-    return std::min(indenter.max_radius(),
-                    layer_radius_margin * indenter.contact_radius(contact_case.load.history->max_value()));
+    const double half_space = contact_case.control == Control::force
+                                  ? resolve_numerics(contact_case).half_width
+                                  : indenter.contact_radius(contact_case.load.history->max_value());
+    return std::min(indenter.max_radius(), layer_radius_margin * half_space);
 }
 
 void refuse(const std::string& key, const std::string& value, const std::string& what) {
@@ -54,12 +58,15 @@ void validate_layer(const ContactCase& contact_case) {
     if (!(layer.thickness > 0.0) || !std::isfinite(layer.thickness)) {
         throw InvalidInput("layer.thickness", format_value(layer.thickness), "must be finite and > 0");
     }
-    if (contact_case.control != Control::displacement) {
+    if (contact_case.control != Control::displacement && contact_case.control != Control::force) {
         const std::string control = contact_case.shore                          ? "shore"
-                                    : contact_case.control == Control::force  ? "force"
                                     : contact_case.control == Control::impact ? "impact"
                                                                               : "spring";
-        refuse("load.control", "\"" + control + "\"", "force, spring, impact and Shore control");
+        refuse("load.control", "\"" + control + "\"", "spring, impact and Shore control");
+    }
+    if (contact_case.control == Control::force && contact_case.material.viscosity() > 0.0) {
+        refuse("material.eta", format_value(contact_case.material.viscosity()),
+               "a parallel dashpot under force control");
     }
     if (contact_case.load.harmonic) refuse("load.harmonic", "[...]", "a harmonic load");
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
@@ -95,82 +102,74 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     constexpr double unit_plane_modulus = 4.0;
     const contact::LayerContact layer(*contact_case.layer, 0.5, contact_case.indenter,
                                       std::max(largest_radius, 1e-300), nodes);
-    const auto grid = make_time_grid(history, contact_case.end_time, result.numerics.time_step,
-                                     result.numerics.min_segment_steps, {});
+    auto grid = make_time_grid(history, contact_case.end_time, result.numerics.time_step,
+                               result.numerics.min_segment_steps, {});
+    if (result.numerics.grading_ratio > 0.0) {  // force control after a fast change, as on the half-space
+        grid = grade_after_changes(grid,
+                                   fast_change_times(history, contact_case.end_time, result.numerics.time_step,
+                                                     result.numerics.min_segment_steps),
+                                   result.numerics.grading_ratio, result.numerics.first_graded_step);
+    }
 
     const auto& material = contact_case.material;
-    const double largest_depth = history.max_value();
-    // The loading phase (depth non-decreasing): Lee-Radok, F(t) = int_0^t G(t - t') dF_el(t') (eq. L11), the
-    // branches updated exactly with F_el linear over a step. After the first decrease: Ting's receding contact,
-    // a(t) = a_el(d(t1)) with t1 from eq. L12 and F(t) from eq. L13; after the contact is lost, the free surface at
-    // the centre w0 (eq. L14), until the indenter would touch it again (refused: not built yet).
-    LoadingRecord loading(material, grid.front().time);
-    PronyBranches depth_branches(material), force_branches(material);  // of w0 (the centre's depth) and of F_el
-    enum class Phase { approach, growing, receding, lifted_off } phase = Phase::approach;
-    double previous_force = 0.0, previous_time = grid.front().time, radius = 0.0, position = 0.0;
-    double centre = 0.0;  // w0: the depth while in contact, the free surface after the contact is lost
-    contact::LayerContactState state;
+    const bool force_control = contact_case.control == Control::force;
+    // The depth's scale: the largest prescribed, or under force control the profile's at the largest radius.
+    const double largest_depth = force_control ? contact_case.indenter->equivalent(largest_radius)
+                                               : history.max_value();
+    LayerStepper stepper(material, layer, unit_plane_modulus, grid.front().time, largest_depth);
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     std::size_t reported = 0;
+    double previous_centre = 0.0;
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const GridNode& node = grid[i];
-        const double step = node.time - previous_time;
-        double force = 0.0;
-        if (phase == Phase::approach && node.value <= 0.0) {  // not touched yet: nothing has happened
-            loading = LoadingRecord(material, node.time);
-        } else if (phase != Phase::lifted_off) {
-            if (phase == Phase::growing && node.value < centre) phase = Phase::receding;
-            if (phase == Phase::approach) phase = Phase::growing;
-            const double change = node.value - centre;
-            const double rate = step > 0.0 ? change / step : 0.0;
-            depth_branches.advance(step, change);
-            centre = node.value;
-            if (phase == Phase::growing) {
-                if (change != 0.0) state = layer.at_depth(node.value, state);  // else a hold
-                const double elastic_force = unit_plane_modulus * state.force;
-                force_branches.advance(step, elastic_force - previous_force);
-                loading.append(node.time, node.value, elastic_force, depth_branches, force_branches);
-                // G(t) = G_inf + eta delta(t) + sum G_k exp(-t/tau_k) in eq. L11.
-                force = material.equilibrium_modulus() * elastic_force + force_branches.weighted_sum() +
-                        (step > 0.0 ? material.viscosity() * (elastic_force - previous_force) / step : 0.0);
-                previous_force = elastic_force;
-                position = static_cast<double>(loading.steps());
-            } else {
-                const double steps = static_cast<double>(loading.steps());
-                const auto residual = [&](double x) {  // non-decreasing in x; continued linearly outside [0, steps]
-                    const double inside = std::clamp(x, 0.0, steps);
-                    return (x - inside) - loading.ting_residual(inside, node.time, node.value, depth_branches, rate);
-                };
-                if (residual(0.0) >= 0.0) {  // int_0^t G dd <= 0: the contact is lost (eq. L12 with t1 at the start)
-                    phase = Phase::lifted_off;
-                    state = {};
-                } else {
-                    const double previous_depth = loading.at(position).depth;
-                    position = numerics::monotone_root(residual, position, residual(position), 1.0,
-                                                       1e-13 * material.relaxation(0.0) * largest_depth, 1e-12, false);
-                    const double effective_depth = loading.at(std::min(position, steps)).depth;
-                    if (position > steps || effective_depth > previous_depth + 1e-9 * largest_depth) {
-                        refuse_regrowth(node.time);
-                    }
-                    state = layer.at_depth(effective_depth, state);
-                    force = loading.force(position, node.time, unit_plane_modulus * state.force);
-                }
+        const LayerStep& now = stepper.current();
+        LayerStep next = now;
+        double depth = node.value;
+        if (!force_control) {
+            next = now.phase == LayerPhase::approach && depth <= 0.0 ? stepper.wait(node.time)
+                   : now.phase <= LayerPhase::growing && depth >= now.centre ? stepper.grow(node.time, depth)
+                   : now.phase != LayerPhase::lifted_off                     ? stepper.recede(node.time, depth)
+                                                                             : stepper.recover(node.time);
+            if (next.phase == LayerPhase::lifted_off && depth > next.centre + 1e-9 * largest_depth) {
+                refuse_regrowth(node.time);  // the indenter reaches the recovering surface
             }
         } else {
-            // The free centre: int_0^t G(t - t') dw0(t') = 0, w0 linear over the step (eq. L14).
-            const double change = depth_branches.free_change(step, centre);
-            depth_branches.advance(step, change);
-            centre += change;
-            if (node.value > centre + 1e-9 * largest_depth) refuse_regrowth(node.time);
+            const double target = std::max(node.value, 0.0);
+            const double tolerance = 1e-10 * history.max_value();
+            const double scale = std::max(std::abs(now.centre - previous_centre), 1e-6 * largest_depth);
+            const auto solve = [&](auto&& trial) {  // the depth at which the step's force is the target
+                const auto residual = [&](double d) { return trial(d).force - target; };
+                return numerics::monotone_root(residual, now.centre, residual(now.centre), scale, tolerance,
+                                               1e-15 * largest_depth, false);
+            };
+            const auto recede = [&] {  // the indenter rides on the free surface once the force is zero
+                return target == 0.0 ? stepper.recover(node.time)
+                                     : stepper.recede(node.time, solve([&](double d) {
+                                           return stepper.recede(node.time, d);
+                                       }));
+            };
+            if (now.phase == LayerPhase::approach && target == 0.0) {
+                next = stepper.wait(node.time);
+            } else if (now.phase == LayerPhase::lifted_off) {
+                if (target > 0.0) refuse_regrowth(node.time);  // the recovering surface would be loaded again
+                next = stepper.recover(node.time);
+            } else if (now.phase == LayerPhase::receding) {
+                next = recede();
+            } else {
+                next = stepper.grow(node.time, solve([&](double d) { return stepper.grow(node.time, d); }));
+                if (now.phase == LayerPhase::growing && next.centre < now.centre) next = recede();
+            }
+            depth = next.centre;
         }
-        radius = state.contact_radius;
-        previous_time = node.time;
+        if (next.grows_again) refuse_regrowth(node.time);
+        previous_centre = now.centre;
+        stepper.commit(next);
         if (i > 0) ++result.steps;
         if (i % every == 0 || i + 1 == grid.size()) {
             result.time.push_back(node.time);
-            result.depth.push_back(node.value);
-            result.force.push_back(force);
-            result.radius.push_back(radius);
+            result.depth.push_back(depth);
+            result.force.push_back(next.force);
+            result.radius.push_back(next.contact.contact_radius);
         }
         const auto percent = static_cast<std::size_t>(100.0 * static_cast<double>(i + 1) /
                                                       static_cast<double>(grid.size()));

@@ -48,8 +48,8 @@ def kernel():
     return CubicSpline(eta, values)
 
 
-def reference(kernel, material, history, cells, times):
-    """F at `times` (the first 0) by the coupled time-stepping described above."""
+def reference(kernel, material, history, cells, times, control="displacement"):
+    """F (or, under force control, d) at `times` (the first 0) by the coupled time-stepping described above."""
     g_inf, eta, terms = material
     dx = WIDTH / cells
     x = (np.arange(cells) + 0.5) * dx
@@ -59,9 +59,18 @@ def reference(kernel, material, history, cells, times):
     target_profile = x * x / R                # g(x) of the sphere (eq. 9)
     moduli = np.array([modulus for modulus, _ in terms])
     taus = np.array([tau for _, tau in terms])
-    depths = np.interp(times, [p[0] for p in history], [p[1] for p in history])
+    loads = np.interp(times, [p[0] for p in history], [p[1] for p in history])
     w1, branches, contact = np.zeros(cells), np.zeros((len(terms), cells)), 0
-    force = np.zeros(len(times))
+    out = np.zeros(len(times))
+
+    def line_load(right_side):  # q on the contact's cells, zero beyond: (I - K) q = right_side there
+        q = np.zeros(cells)
+        if contact:
+            block = factor[:contact, :contact]
+            q[:contact] = solve_triangular(block.T, solve_triangular(block, right_side[:contact], lower=True),
+                                           lower=False)
+        return q
+
     for step in range(1, len(times)):
         dt = times[step] - times[step - 1]
         # Trapezoidal rule for h_k' = -h_k / tau_k + w1': h_k+ = decay_k h_k + gain_k (w1+ - w1).
@@ -69,34 +78,40 @@ def reference(kernel, material, history, cells, times):
         decays = (1.0 - dt / (2.0 * taus)) * gains
         slope = g_inf + moduli @ gains + eta / dt  # Q/4 = slope w1+ + rest
         rest = moduli @ (decays[:, None] * branches - gains[:, None] * w1) - eta * w1 / dt
-        indenter = depths[step] - target_profile
         tried = set()
         while True:
-            q = np.zeros(cells)
-            if contact:
-                block = factor[:contact, :contact]
-                q[:contact] = solve_triangular(block.T, solve_triangular(
-                    block, 4.0 * (slope * indenter[:contact] + rest[:contact]), lower=True), lower=False)
+            if control == "displacement":
+                depth = loads[step]
+            elif contact:  # q is linear in d: F(d) = F(0) + d (F(1) - F(0)) = the prescribed force
+                at_zero = line_load(4.0 * (rest - slope * target_profile))
+                per_depth = line_load(4.0 * slope * np.ones(cells))
+                depth = (loads[step] - 2.0 * dx * at_zero.sum()) / (2.0 * dx * per_depth.sum())
+            else:  # no force: the indenter rests on the free surface's centre
+                depth = -rest[0] / slope
+            indenter = depth - target_profile
+            q = line_load(4.0 * (slope * indenter + rest))
             free = (operator @ q / 4.0 - rest) / slope  # w1 of the cells outside the contact
             tried.add(contact)
             if contact and q[contact - 1] < 0.0 and contact - 1 not in tried:
                 contact -= 1
-            elif contact < cells and free[contact] < indenter[contact] and contact + 1 not in tried:
+            elif contact < cells and (free[contact] < indenter[contact] or (control == "force" and not contact
+                                                                             and loads[step] > 0.0)) \
+                    and contact + 1 not in tried:
                 contact += 1
             else:
                 break
         new_w1 = np.where(np.arange(cells) < contact, indenter, free)
         branches = decays[:, None] * branches + gains[:, None] * (new_w1 - w1)
         w1 = new_w1
-        force[step] = 2.0 * dx * q.sum()
-    return force
+        out[step] = 2.0 * dx * q.sum() if control == "displacement" else depth
+    return out
 
 
-def run_mdr(material, history, **numerics):
+def run_mdr(material, history, control="displacement", **numerics):
     g_inf, eta, terms = material
     case = {"material": {"model": "prony", "G_inf": g_inf, "eta": eta, "terms": [list(t) for t in terms]},
             "indenter": {"shape": "sphere", "R": R},
-            "load": {"control": "displacement", "history": history},
+            "load": {"control": control, "history": history},
             "layer": {"thickness": H, "interface": "bonded"}}
     if numerics:
         case["numerics"] = numerics
@@ -141,3 +156,19 @@ def test_a_reload_after_unloading_is_refused_naming_the_history():
     material, _ = CASES["triangle"]
     with pytest.raises(ValueError, match=r"^load\.history = \[\.\.\.\]: the contact on the \[layer\] would grow again"):
         run_mdr(material, [[0.0, 0.0], [1.0, 1.0e-6], [1.2, 0.8e-6], [1.4, 1.0e-6]])
+
+
+def test_force_control_meets_the_coupled_time_stepping(kernel):
+    # A force triangle, then no force: the contact grows under the rising force and after its peak (creep), recedes,
+    # and the indenter rides on the recovering surface. The reference solves for d in each step (q is linear in d
+    # on a contact set).
+    material, _ = CASES["triangle"]
+    history = [[0.0, 0.0], [1.0, 3.0e-8], [2.0, 0.0], [3.0, 0.0]]
+    result = run_mdr(material, history, "force")
+    times = result.history["t"]
+    largest = np.max(result.history["d"])
+    errors = [float(np.max(np.abs(result.history["d"] - reference(kernel, material, history, cells, times, "force")))
+                    / largest) for cells in (100, 200, 400)]
+    assert errors[-1] < 3e-5, errors
+    orders = [math.log2(coarse / fine) for coarse, fine in zip(errors, errors[1:])]
+    assert min(orders) > 1.7, (errors, orders)
