@@ -135,12 +135,17 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
             }
         } else {
             const double target = std::max(node.value, 0.0);
-            const double tolerance = 1e-10 * history.max_value();
-            const double scale = std::max(std::abs(now.centre - previous_centre), 1e-6 * largest_depth);
+            // The force of a trial depth is exact to ~1.5e-8 (the contact solve's depth to 1e-8): no finer.
+            const double tolerance = 5e-8 * history.max_value();
+            const double change = now.centre - previous_centre;
             const auto solve = [&](auto&& trial) {  // the depth at which the step's force is the target
                 const auto residual = [&](double d) { return trial(d).force - target; };
-                return numerics::monotone_root(residual, now.centre, residual(now.centre), scale, tolerance,
-                                               1e-15 * largest_depth, false);
+                // From the last step's change repeated, bracketed in steps of a tenth of it: the prediction is
+                // second order, so the bracket usually closes at the first step.
+                const double guess = std::max(now.centre + change, 0.0);
+                return numerics::monotone_root(residual, guess, residual(guess),
+                                               std::max(0.1 * std::abs(change), 1e-6 * largest_depth), tolerance,
+                                               1e-12 * largest_depth, false);
             };
             const auto recede = [&] {  // the indenter rides on the free surface once the force is zero
                 return target == 0.0 ? stepper.recover(node.time)

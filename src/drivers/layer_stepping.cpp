@@ -29,7 +29,7 @@ LayerStep LayerStepper::grow(double time, double depth) const {
     next.centre = depth;
     next.centre_branches.advance(step, change);
     if (change != 0.0 || current_.phase == LayerPhase::approach) {
-        next.contact = layer_->at_depth(depth, current_.contact);  // else a hold: the same equilibrium
+        next.contact = hint_ = layer_->at_depth(depth, hint_);  // else a hold: the same equilibrium
     }
     next.elastic_force = unit_modulus_ * next.contact.force;
     const double force_change = next.elastic_force - current_.elastic_force;
@@ -66,7 +66,7 @@ LayerStep LayerStepper::recede(double time, double depth) const {
     next.grows_again = next.position > steps || loading_.at(std::min(next.position, steps)).depth >
                                                     loading_.at(start).depth + 1e-9 * largest_depth_;
     next.position = std::min(next.position, steps);
-    next.contact = layer_->at_depth(loading_.at(next.position).depth, current_.contact);
+    next.contact = hint_ = layer_->at_depth(loading_.at(next.position).depth, hint_);
     next.force = loading_.force(next.position, time, unit_modulus_ * next.contact.force);
     return next;
 }

@@ -60,6 +60,9 @@ private:
     double largest_depth_;
     LoadingRecord loading_;
     LayerStep current_;
+    // The last equilibrium solved, tried or committed: where the next solve starts (the force-controlled driver
+    // tries depths ever closer to its root).
+    mutable contact::LayerContactState hint_;
 };
 
 }  // namespace mdr::drivers
