@@ -113,9 +113,12 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
 
     const auto& material = contact_case.material;
     const bool force_control = contact_case.control == Control::force;
-    // The depth's scale: the largest prescribed, or under force control the profile's at the largest radius.
-    const double largest_depth = force_control ? contact_case.indenter->equivalent(largest_radius)
-                                               : history.max_value();
+    // The depth's scale: the largest prescribed, or under force control the profile's at the largest radius (a
+    // flat punch's profile is flat: its radius then, so that the solves' brackets grow from a non-zero step).
+    const double profile_depth = contact_case.indenter->equivalent(largest_radius);
+    const double largest_depth = !force_control ? history.max_value()
+                                 : profile_depth > 0.0 && std::isfinite(profile_depth) ? profile_depth
+                                                                                       : largest_radius;
     LayerStepper stepper(material, layer, unit_plane_modulus, grid.front().time, largest_depth);
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     std::size_t reported = 0;

@@ -136,6 +136,26 @@ TEST(LayerViscoelastic, VeryThickLayerUnderForceControlIsTheHalfSpaceDriver) {
     EXPECT_EQ(thick.force.back(), 0.0);
 }
 
+TEST(LayerViscoelastic, FlatPunchUnderForceControlOnAVeryThickLayerIsTheHalfSpaceDriver) {
+    // A flat profile gives no depth scale: the depth solves' brackets grew from a zero step, for ever, before they
+    // took the punch's radius. The punch's force is the full convolution F = k int_0^t G dd while in contact (L13
+    // with L12 for a linear F_el), the half-space's.
+    const std::string triangle = "[[0.0, 0.0], [1.0, 3.0e-8], [2.0, 0.0], [3.0, 0.0]]";
+    const auto punch = [&](const std::string& layer) {
+        std::string text = layer_case(layer, triangle, "force");
+        const std::string sphere = "shape = \"sphere\"\nR = 1.0e-5";
+        text.replace(text.find(sphere), sphere.size(), "shape = \"flat\"\na = 2.0e-6");
+        return mdr::drivers::run_case(mdr::io::parse_case(text));
+    };
+    const auto half_space = punch("");
+    const auto thick = punch("[layer]\nthickness = 1.0e3\ninterface = \"bonded\"\n");
+    ASSERT_EQ(half_space.time.size(), thick.time.size());
+    const double deepest = *std::max_element(half_space.depth.begin(), half_space.depth.end());
+    for (std::size_t i = 0; i < half_space.time.size(); ++i) {
+        EXPECT_NEAR(thick.depth[i], half_space.depth[i], 1e-6 * deepest) << "t " << half_space.time[i];  // 2.3e-9
+    }
+}
+
 TEST(LayerViscoelastic, AContactThatWouldGrowAgainIsRefusedNamingTheHistory) {
     // Outside Ting's solution (one maximum of the contact radius): a reload while in contact, and a held depth
     // that the surface, recovering after the contact was lost, reaches again. The centre of the layer's surface
