@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "mdr/contact/stress.hpp"
-#include "monotone_root.hpp"
+#include "mdr/numerics/monotone_root.hpp"
 
 namespace mdr::drivers {
 namespace {
@@ -38,8 +38,8 @@ double solve_depth(const foundation::Foundation& foundation, double depth_start,
         start -= f_start / slope;
         f_start = residual(start);
     }
-    return monotone_root(residual, start, f_start, scale, force_tolerance, 1e-15 * std::max(std::abs(start), scale),
-                         plateau);
+    return numerics::monotone_root(residual, start, f_start, scale, force_tolerance,
+                                   1e-15 * std::max(std::abs(start), scale), plateau);
 }
 
 Snapshot take_snapshot(const foundation::Foundation& foundation, const profile::Profile& indenter, double time) {

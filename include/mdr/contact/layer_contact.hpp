@@ -38,9 +38,11 @@ public:
     /// max(nodes, 6 ceil(a/h)) Gauss-Legendre nodes (the kernel's width is h).
     LayerContactState at_radius(double contact_radius) const;
     /// The equilibrium at depth d (d <= 0: no contact): the contact radius solved from depth(a) = d (increasing in
-    /// a) to 1e-12 of max_contact_radius, by the secant method from `radius_hint` (> 0: a nearby solution, such as
-    /// the previous step's) inside a bracket, else by regula falsi on [0, max_contact_radius]. Throws
-    /// mdr::InvalidInput (key `layer`) when the contact would grow beyond max_contact_radius.
+    /// a; depth to 1e-8 of d) by numerics::monotone_root, bracketed from `near` (a nearby solution, such as the
+    /// previous step's; none: from max_contact_radius / 2). Throws mdr::InvalidInput (key `layer`) when the
+    /// contact would grow beyond max_contact_radius.
+    LayerContactState at_depth(double depth, const LayerContactState& near) const;
+    /// As above, near the solution whose contact radius is `radius_hint` (> 0; else from max_contact_radius / 2).
     LayerContactState at_depth(double depth, double radius_hint = 0.0) const;
     /// The largest contact radius the kernel was tabulated for [m].
     double max_contact_radius() const { return max_contact_radius_; }

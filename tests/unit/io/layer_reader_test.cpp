@@ -43,11 +43,15 @@ TEST(LayerReader, RefusesBadValues) {
 }
 
 TEST(LayerReader, RefusesWhatIsNotBuiltOnALayer) {
-    EXPECT_EQ(refused_key(with("control = \"displacement\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-6], [2.0, 0.0]]\n",
+    EXPECT_EQ(refused_key(with("control = \"spring\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-6]]\nspring_constant = 1.0\n",
                                bonded)),
-              "load.history[2]");
-    EXPECT_EQ(refused_key(with("control = \"force\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-6]]\n", bonded)),
               "load.control");
+    // Force control is built (without a parallel dashpot).
+    const std::string force = "control = \"force\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-9]]\n";
+    EXPECT_EQ(refused_key(with(force, bonded)), "(accepted)");
+    EXPECT_EQ(refused_key("[material]\nmodel = \"kelvin_voigt\"\nG = 1.0e3\neta = 1.0\n[indenter]\nshape = \"sphere\"\n"
+                          "R = 1.0e-5\n[load]\n" + force + "[layer]\n" + bonded),
+              "material.eta");
     EXPECT_EQ(refused_key(with(loading, bonded, "[material.bulk]\nmodel = \"elastic\"\nK = 3.0e3\n")), "material");
     EXPECT_EQ(refused_key(with(loading, "thickness = 1.0e-9\ninterface = \"bonded\"\n")), "layer.thickness");
 }

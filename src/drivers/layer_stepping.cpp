@@ -1,0 +1,96 @@
+#include "layer_stepping.hpp"
+
+#include <algorithm>
+
+#include "mdr/numerics/monotone_root.hpp"
+
+namespace mdr::drivers {
+
+LayerStepper::LayerStepper(const rheology::Rheology& material, const contact::LayerContact& layer,
+                           double unit_modulus, double time, double largest_depth)
+    : material_(&material), layer_(&layer), unit_modulus_(unit_modulus), largest_depth_(largest_depth),
+      loading_(material, time),
+      current_{.time = time,
+               .contact = {},
+               .centre_branches = PronyBranches(material),
+               .force_branches = PronyBranches(material)} {}
+
+LayerStep LayerStepper::wait(double time) const {
+    LayerStep next = current_;
+    next.time = time;
+    return next;
+}
+
+LayerStep LayerStepper::grow(double time, double depth) const {
+    LayerStep next = current_;
+    const double step = time - current_.time, change = depth - current_.centre;
+    next.phase = LayerPhase::growing;
+    next.time = time;
+    next.centre = depth;
+    next.centre_branches.advance(step, change);
+    if (change != 0.0 || current_.phase == LayerPhase::approach) {
+        next.contact = hint_ = layer_->at_depth(depth, hint_);  // else a hold: the same equilibrium
+    }
+    next.elastic_force = unit_modulus_ * next.contact.force;
+    const double force_change = next.elastic_force - current_.elastic_force;
+    next.force_branches.advance(step, force_change);
+    // G(t) = G_inf + eta delta(t) + sum G_k exp(-t/tau_k) in eq. L11, F_el linear over the step.
+    next.force = material_->equilibrium_modulus() * next.elastic_force + next.force_branches.weighted_sum() +
+                 (step > 0.0 ? material_->viscosity() * force_change / step : 0.0);
+    next.position = static_cast<double>(loading_.steps() + 1);
+    return next;
+}
+
+LayerStep LayerStepper::recede(double time, double depth) const {
+    LayerStep next = current_;
+    const double step = time - current_.time, change = depth - current_.centre;
+    const double rate = step > 0.0 ? change / step : 0.0;
+    next.phase = LayerPhase::receding;
+    next.time = time;
+    next.centre = depth;
+    next.centre_branches.advance(step, change);
+    const double steps = static_cast<double>(loading_.steps());
+    const auto residual = [&](double x) {  // non-decreasing in x; continued linearly outside [0, steps]
+        const double inside = std::clamp(x, 0.0, steps);
+        return (x - inside) - loading_.ting_residual(inside, time, depth, next.centre_branches, rate);
+    };
+    if (residual(0.0) >= 0.0) {  // int_0^t G dd <= 0: the contact is lost (eq. L12 with t1 at the start)
+        next.phase = LayerPhase::lifted_off;
+        next.contact = {};
+        next.force = 0.0;
+        return next;
+    }
+    const double start = std::min(current_.position, steps);
+    next.position = numerics::monotone_root(residual, start, residual(start), 1.0,
+                                            1e-13 * material_->relaxation(0.0) * largest_depth_, 1e-12, false);
+    next.grows_again = next.position > steps || loading_.at(std::min(next.position, steps)).depth >
+                                                    loading_.at(start).depth + 1e-9 * largest_depth_;
+    next.position = std::min(next.position, steps);
+    next.contact = hint_ = layer_->at_depth(loading_.at(next.position).depth, hint_);
+    next.force = loading_.force(next.position, time, unit_modulus_ * next.contact.force);
+    return next;
+}
+
+LayerStep LayerStepper::recover(double time) const {
+    LayerStep next = current_;
+    const double step = time - current_.time;
+    // int_0^t G(t - t') dw0(t') = 0, w0 linear over the step (eq. L14).
+    const double change = next.centre_branches.free_change(step, current_.centre);
+    next.phase = LayerPhase::lifted_off;
+    next.time = time;
+    next.centre += change;
+    next.centre_branches.advance(step, change);
+    next.contact = {};
+    next.force = 0.0;
+    return next;
+}
+
+void LayerStepper::commit(const LayerStep& step) {
+    if (step.phase == LayerPhase::approach) loading_ = LoadingRecord(*material_, step.time);
+    if (step.phase == LayerPhase::growing) {
+        loading_.append(step.time, step.centre, step.elastic_force, step.centre_branches, step.force_branches);
+    }
+    current_ = step;
+}
+
+}  // namespace mdr::drivers

@@ -1,0 +1,68 @@
+#pragma once
+// The viscoelastic layer's contact stepped node by node (docs/theory.md, "Layers", eq. L11 to L14): a growing
+// contact (Lee-Radok), a receding one (Ting), the free centre after the contact is lost. A step is tried at any depth
+// without changing the history (the force-controlled driver solves for the depth), then committed.
+
+#include "layer_receding.hpp"
+#include "mdr/contact/layer_contact.hpp"
+#include "mdr/rheology/rheology.hpp"
+
+namespace mdr::drivers {
+
+/// Where a layer's contact stands.
+enum class LayerPhase {
+    approach,    ///< not touched yet: nothing has happened
+    growing,     ///< Lee-Radok (eq. L11)
+    receding,    ///< Ting (eq. L12, L13)
+    lifted_off,  ///< contact lost: the centre of the surface recovers freely (eq. L14)
+};
+
+/// The state after a step (committed) or a step tried.
+struct LayerStep {
+    LayerPhase phase = LayerPhase::approach;
+    double time = 0.0;           ///< t [s]
+    double centre = 0.0;         ///< w0 [m]: the depth while in contact, the free surface after
+    double force = 0.0;          ///< F [N]
+    double elastic_force = 0.0;  ///< F_el at the contact's depth (growing) [N per Pa of shear modulus]
+    double position = 0.0;       ///< loading position of t1 (LoadingRecord); while growing, the last node's
+    bool grows_again = false;    ///< receding: t1 would move forward (outside Ting's solution)
+    contact::LayerContactState contact;  ///< the elastic layer's equilibrium at a(t); none once lifted off
+    PronyBranches centre_branches;       ///< of w0
+    PronyBranches force_branches;        ///< of F_el (loading)
+};
+
+/// A displacement- or force-controlled history on a layer, in steps.
+class LayerStepper {
+public:
+    /// Starts at `time`, untouched; `unit_modulus` is E* / G of the layer (4 incompressible), `largest_depth` [m]
+    /// the scale of the solves' tolerances.
+    LayerStepper(const rheology::Rheology& material, const contact::LayerContact& layer, double unit_modulus,
+                 double time, double largest_depth);
+    /// The committed state.
+    const LayerStep& current() const { return current_; }
+    /// A step to `time` with the indenter at `depth`, the contact growing (Lee-Radok, eq. L11; meaningful for a
+    /// depth >= the current one).
+    LayerStep grow(double time, double depth) const;
+    /// A step to `time` with the indenter at `depth`, the contact receding (Ting, eq. L12, L13): lifted off when
+    /// int_0^t G dd <= 0. Needs a growing phase before.
+    LayerStep recede(double time, double depth) const;
+    /// A step to `time` after the contact was lost: the free centre (eq. L14).
+    LayerStep recover(double time) const;
+    /// A step to `time` before any contact.
+    LayerStep wait(double time) const;
+    /// Makes `step` the current state (a growing one is recorded for Ting's solution).
+    void commit(const LayerStep& step);
+
+private:
+    const rheology::Rheology* material_;
+    const contact::LayerContact* layer_;
+    double unit_modulus_;
+    double largest_depth_;
+    LoadingRecord loading_;
+    LayerStep current_;
+    // The last equilibrium solved, tried or committed: where the next solve starts (the force-controlled driver
+    // tries depths ever closer to its root).
+    mutable contact::LayerContactState hint_;
+};
+
+}  // namespace mdr::drivers
