@@ -38,17 +38,26 @@ LayerElasticForce::LayerElasticForce(const contact::Layer& layer, std::shared_pt
     // with the radius changes the force by its discretisation error).
     const auto fixed_nodes = std::max(nodes, 6 * static_cast<std::size_t>(std::ceil(widest / layer.thickness)));
     const contact::LayerContact solver(layer, 0.5, indenter_, widest, fixed_nodes);
-    const double largest_abscissa = std::log1p(largest_radius_ / layer.thickness);
-    double radius = 0.0;
+    // One solve per node at a given contact radius a (no root finding), the nodes Chebyshev's in log(1 + a/h) up to
+    // the radius at largest_depth; s = the half-space's radius at each node's depth follows a closely, so the nodes
+    // in log(1 + s/h) stay near Chebyshev's and interpolating there is as well conditioned.
+    const double top = std::log1p(solver.at_depth(largest_depth).contact_radius / layer.thickness);
     for (std::size_t j = 0; j < chebyshev_nodes; ++j) {
         const double angle = (2.0 * static_cast<double>(j) + 1.0) * std::numbers::pi / (2.0 * chebyshev_nodes);
-        const double s = layer.thickness * std::expm1(0.5 * largest_abscissa * (1.0 - std::cos(angle)));  // ascending
-        const double depth = indenter_->equivalent(s);  // the half-space's contact radius is s at this depth
-        const contact::LayerContactState state = solver.at_depth(depth, radius);
-        radius = state.contact_radius;
+        const contact::LayerContactState state =
+            solver.at_radius(layer.thickness * std::expm1(0.5 * top * (1.0 - std::cos(angle))));
+        const double s = indenter_->contact_radius(state.depth);
         abscissas_.push_back(std::log1p(s / layer.thickness));
-        values_.push_back(std::log(4.0 * state.force / (depth * s)));
-        weights_.push_back((j % 2 == 0 ? 1.0 : -1.0) * std::sin(angle));
+        values_.push_back(std::log(4.0 * state.force / (state.depth * s)));  // E* = 4 G (eq. 21)
+    }
+    // Barycentric weights 1 / prod_{k != j} (x_j - x_k), each factor scaled by 4 / (the nodes' span): no overflow.
+    const double scale = 4.0 / (abscissas_.back() - abscissas_.front());
+    for (std::size_t j = 0; j < abscissas_.size(); ++j) {
+        double product = 1.0;
+        for (std::size_t k = 0; k < abscissas_.size(); ++k) {
+            if (k != j) product *= scale * (abscissas_[j] - abscissas_[k]);
+        }
+        weights_.push_back(1.0 / product);
     }
 }
 
@@ -65,7 +74,8 @@ double LayerElasticForce::operator()(double depth) const {
         numerator += weight * values_[j];
         denominator += weight;
     }
-    return depth * s * std::exp(numerator / denominator);  // the barycentric formula (Berrut & Trefethen, SIAM Rev. 46, 2004)
+    // The barycentric formula of the second kind (Berrut & Trefethen, SIAM Rev. 46, 2004).
+    return depth * s * std::exp(numerator / denominator);
 }
 
 std::optional<TingResponse> layer_forces(const rheology::Rheology& material, const contact::Layer& layer,

@@ -22,9 +22,9 @@ namespace mdr::fit {
 inline constexpr double layer_dip_tolerance = 1e-3;
 
 /// The elastic force at unit shear modulus (E* = 4, nu = 0.5) of an indenter on an incompressible layer for depths
-/// in [0, largest_depth]: Q(s) = F_el(g(s)) / (g(s) s), s the half-space contact radius at the depth (g(s) = d),
-/// interpolated by the barycentric formula on Chebyshev nodes in s of exact layer solutions (contact::LayerContact;
-/// Q is analytic in s/h and tends to 8n/(n+1) for a power law of degree n). A flat punch: F_el = d F_unit.
+/// in [0, largest_depth]: Q = F_el(d) / (d s), s the half-space contact radius at the depth, log Q interpolated in
+/// log(1 + s/h) through exact layer solutions (contact::LayerContact::at_radius) at Chebyshev nodes of the contact
+/// radius (Q is analytic in s/h and tends to 8n/(n+1) for a power law of degree n). A flat punch: F_el = d F_unit.
 class LayerElasticForce {
 public:
     /// Solves the layer at the Chebyshev nodes with `nodes` Gauss nodes on the contact (LayerContact). Throws
