@@ -33,7 +33,8 @@ TEST(LayerModel, InterpolationMatchesTheLayerSolutionAtEveryDepth) {
         {"sphere bonded", profile::make_sphere(1e-5), {2e-6, contact::LayerInterface::bonded}, 3e-7, 1e-9},
         {"sphere sliding", profile::make_sphere(1e-5), {2e-6, contact::LayerInterface::sliding}, 3e-7, 1e-9},
         {"cone bonded", profile::make_cone_from_half_angle(35.0), {2e-6, contact::LayerInterface::bonded}, 2e-5, 1e-7},
-        {"cone sliding", profile::make_cone_from_half_angle(35.0), {2e-6, contact::LayerInterface::sliding}, 2e-5, 1e-8},
+        {"cone sliding", profile::make_cone_from_half_angle(35.0), {2e-6, contact::LayerInterface::sliding}, 2e-5,
+         1e-8},
         {"thin sphere", profile::make_sphere(1e-5), {4e-7, contact::LayerInterface::bonded}, 1.6e-6, 5e-7},
     };
     for (const auto& setting : settings) {
