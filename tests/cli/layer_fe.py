@@ -128,6 +128,23 @@ class LayerFE:
         reaction = self.matrix @ solution
         return solution, {i: reaction[self.top[i]] for i in prescribed_top}
 
+    def surface_displacement(self, pressure):
+        """u_z of the surface nodes under the surface pressure p(r) (downwards), no indenter: consistent nodal
+        loads int N_a p 2 pi r dr on each element's top edge (3 Gauss points; put a jump of p on a vertex)."""
+        load = np.zeros(self.matrix.shape[0])
+        for er in range(len(self.rv) - 1):
+            r0, r1 = self.rv[er], self.rv[er + 1]
+            for gx, wx in zip(GAUSS_X, GAUSS_W):
+                shape, _ = quadratic(gx)
+                rr = 0.5 * (r0 + r1) + 0.5 * (r1 - r0) * gx
+                for a in range(3):
+                    load[self.top[2 * er + a]] -= wx * 0.5 * (r1 - r0) * shape[a] * pressure(rr) * 2.0 * np.pi * rr
+        size = self.matrix.shape[0]
+        free = np.setdiff1d(np.arange(size), self.fixed)
+        solution = np.zeros(size)
+        solution[free] = spla.spsolve(self.matrix[free][:, free].tocsc(), load[free])
+        return solution[self.top]
+
     def sphere(self, radius, depth, max_iterations=50):
         """Frictionless rigid sphere at depth d: active set on the surface nodes. Returns (force, contact radius)."""
         gap = lambda r: radius - np.sqrt(np.maximum(radius ** 2 - r ** 2, 0.0))  # noqa: E731
