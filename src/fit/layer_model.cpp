@@ -20,6 +20,9 @@ constexpr std::size_t chebyshev_nodes = 40;
 // The layer's contact radius exceeds the half-space's at the same depth by at most 3 pi / 4 (a cone on a thin bonded
 // layer; drivers::run_layer_indentation prepares the same margin).
 constexpr double layer_radius_margin = 3.0;
+// Contacts wider than this many thicknesses need too many Gauss nodes (6 per thickness, each solve O(n^3)): the bound
+// of drivers::validate_layer, which a free thickness near its lower bound would otherwise pass unchecked.
+constexpr double max_radius_over_thickness = 100.0;
 
 }  // namespace
 
@@ -27,13 +30,19 @@ LayerElasticForce::LayerElasticForce(const contact::Layer& layer, std::shared_pt
                                      double largest_depth, std::size_t nodes)
     : indenter_(std::move(indenter)), thickness_(layer.thickness) {
     if (!(largest_depth > 0.0)) return;
-    if (indenter_->is_flat_punch()) {
-        const contact::LayerContact solver(layer, 0.5, indenter_, indenter_->max_radius(), nodes);
-        punch_force_ = 4.0 * solver.at_radius(indenter_->max_radius()).force;  // E* = 4 G (eq. 21)
+    const bool punch = indenter_->is_flat_punch();
+    largest_radius_ = punch ? indenter_->max_radius() : indenter_->contact_radius(largest_depth);
+    const double widest = std::min(indenter_->max_radius(), layer_radius_margin * largest_radius_);
+    if (!(widest <= max_radius_over_thickness * layer.thickness)) {
+        throw InvalidInput("layer.thickness", format_value(layer.thickness),
+                           "the contact radius may reach " + format_value(widest) + ", more than " +
+                               format_value(max_radius_over_thickness) + " thicknesses: not built yet");
+    }
+    if (punch) {
+        const contact::LayerContact solver(layer, 0.5, indenter_, widest, nodes);
+        punch_force_ = 4.0 * solver.at_radius(widest).force;  // E* = 4 G (eq. 21)
         return;
     }
-    largest_radius_ = indenter_->contact_radius(largest_depth);
-    const double widest = std::min(indenter_->max_radius(), layer_radius_margin * largest_radius_);
     // The nodes LayerContact takes for the widest contact, at every radius: Q(s) stays smooth (a count that changes
     // with the radius changes the force by its discretisation error).
     const auto fixed_nodes = std::max(nodes, 6 * static_cast<std::size_t>(std::ceil(widest / layer.thickness)));

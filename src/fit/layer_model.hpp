@@ -27,8 +27,9 @@ inline constexpr double layer_dip_tolerance = 1e-3;
 /// radius (Q is analytic in s/h and tends to 8n/(n+1) for a power law of degree n). A flat punch: F_el = d F_unit.
 class LayerElasticForce {
 public:
-    /// Solves the layer at the Chebyshev nodes with `nodes` Gauss nodes on the contact (LayerContact). Throws
-    /// mdr::InvalidInput (key `layer` or `layer.thickness`) where LayerContact does.
+    /// Solves the layer at the Chebyshev nodes with at least `nodes` Gauss nodes on the contact (LayerContact).
+    /// Throws mdr::InvalidInput (key `layer.thickness`) when the contact may reach more than 100 thicknesses (as
+    /// drivers::validate_layer), and where LayerContact does.
     LayerElasticForce(const contact::Layer& layer, std::shared_ptr<const profile::Profile> indenter,
                       double largest_depth, std::size_t nodes);
     /// F_el(d) / G [m^2] for d <= largest_depth (0 for d <= 0).

@@ -13,6 +13,7 @@
 
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/profile/profile.hpp"
 
@@ -120,6 +121,19 @@ TEST(LayerModel, ADepthThatFallsBeyondTheNoiseIsAnUnloading) {
     before_contact[10] = 0.0;
     EXPECT_FALSE(forces(before_contact, 0.0).has_value());
     EXPECT_TRUE(forces(before_contact, 1.5e-7).has_value());
+}
+
+TEST(LayerModel, AContactOfMoreThanAHundredThicknessesIsRefused) {
+    // A free thickness near a lower bound of start/1e4 would take 6 Gauss nodes per thickness of the contact (here
+    // 18 000, a 2.6 GB matrix): refused at once as drivers::validate_layer refuses it, naming the key.
+    const auto sphere = std::shared_ptr<const profile::Profile>(profile::make_sphere(1e-5));
+    try {
+        const LayerElasticForce elastic({1e-9, contact::LayerInterface::bonded}, sphere, 1e-6, 48);
+        FAIL() << "not refused";
+    } catch (const InvalidInput& error) {
+        EXPECT_EQ(error.key(), "layer.thickness");
+        EXPECT_NE(std::string(error.what()).find("100 thicknesses"), std::string::npos) << error.what();
+    }
 }
 
 }  // namespace
