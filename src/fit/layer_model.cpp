@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/error.hpp"

@@ -17,8 +17,8 @@
 namespace mdr::fit {
 
 /// A depth history may fall below its running maximum by this fraction of its depth range and still count as a
-/// growing contact on a layer: the noise of a measured hold. Lee-Radok's force then differs from the exact (Ting's)
-/// by a term second order in the dip (docs/theory.md, "Fits on a layer"), below ~1e-6 of the force's range.
+/// growing contact on a layer: the noise of a measured hold. Lee-Radok's force then differs from the exact (Ting's,
+/// on the half-space) by a term second order in the dip (docs/theory.md, "Fits on a layer", eq. L11).
 inline constexpr double layer_dip_tolerance = 1e-3;
 
 /// The elastic force at unit shear modulus (E* = 4, nu = 0.5) of an indenter on an incompressible layer for depths
