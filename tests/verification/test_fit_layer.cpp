@@ -113,6 +113,29 @@ TEST(FitLayer, AFixedThicknessIsTheModelsLayer) {
     EXPECT_GT(half_space.values[0] / 1e3, 1.5);  // the bottom effect: the half-space overestimates the modulus
 }
 
+bool has_thickness_flag(const fit::FitResult& result) {
+    for (const auto& flag : result.curves.front().flags) {
+        if (flag.find("the layer's thickness") != std::string::npos) return true;
+    }
+    return false;
+}
+
+TEST(FitLayer, ADepthThatReachesTheThicknessIsFlagged) {
+    // The ramp-hold reaches d = 1.5 um: on a layer of 2 um no flag; fitted with a fixed thickness of 1.2 um, the
+    // curve is flagged (a layer on a rigid substrate cannot be indented through).
+    const auto truth = io::parse_case(layer_case("bonded"));
+    const auto curve = driver_curve(truth);
+    for (const double thickness_fixed : {2e-6, 1.2e-6}) {
+        auto problem = layer_problem(truth, curve, {1e3, 3e3, 0.2, thickness_fixed});
+        problem.parameters.resize(2);
+        const auto base = problem.model;
+        problem.model = [base, thickness_fixed](const std::vector<double>& values) {
+            return base({values[0], values[1], 0.2, thickness_fixed});
+        };
+        EXPECT_EQ(has_thickness_flag(fit::fit(problem)), thickness_fixed < 1.5e-6) << thickness_fixed;
+    }
+}
+
 TEST(FitLayer, WhatIsNotBuiltOnALayerIsRefusedNamingTheKey) {
     const auto truth = io::parse_case(layer_case("bonded"));
     const auto curve = driver_curve(truth);
