@@ -1,4 +1,5 @@
-// Fits on a layer (docs/theory.md, "Fits on a layer"): the thickness and the moduli recovered from curves of the layer
+// Fits on a layer (docs/theory.md, "Fits on a layer"): the thickness and the moduli recovered from the closed form of
+// the uniform-kernel model (eq. L7) at small depth, and from curves of the layer
 // driver (drivers::run_layer_indentation: the layer solved at every step, verified against a direct Lee-Radok
 // quadrature and scipy's layer solution in test_layer_viscoelastic.cpp and test_layer_contact.cpp), not from the
 // fit's own interpolated model; and what a fit on a layer refuses.
@@ -7,12 +8,16 @@
 
 #include <cmath>
 #include <iostream>
+#include <numbers>
 #include <string>
+#include <utility>
 
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/fit.hpp"
 #include "mdr/io/case_file.hpp"
+#include "mdr/profile/profile.hpp"
+#include "mdr/rheology/rheology.hpp"
 
 namespace mdr {
 namespace {
@@ -111,6 +116,54 @@ TEST(FitLayer, AFixedThicknessIsTheModelsLayer) {
     };
     const auto half_space = fit::fit(problem);
     EXPECT_GT(half_space.values[0] / 1e3, 1.5);  // the bottom effect: the half-space overestimates the modulus
+}
+
+// The relative errors of G and h fitted to a 2001-point elastic curve of eq. L7 up to chi_max: F = (16/3) G sqrt(R)
+// d^(3/2) y^(3/2), y = 1 + (2/3) e y^(3/2), e = (2 k(0)/pi) sqrt(R d)/h, k(0) = 1.770216773 (scipy), a model exact to
+// O(chi^2) and independent of mdr's layer solver (test_layer_contact.cpp checks the solver against it).
+std::pair<double, double> uniform_kernel_recovery(double chi_max) {
+    constexpr double G = 1e3, R = 1e-5, h = 1e-5, k0 = 1.770216773;
+    const double largest_depth = chi_max * chi_max * h * h / R;
+    fit::Curve curve;
+    curve.name = "L7";
+    for (std::size_t i = 0; i <= 2000; ++i) {
+        const double d = largest_depth * static_cast<double>(i) / 2000.0;
+        const double e = 2.0 * k0 / std::numbers::pi * std::sqrt(R * d) / h;
+        double y = 1.0;
+        for (int iteration = 0; iteration < 200; ++iteration) y = 1.0 + 2.0 / 3.0 * e * std::pow(y, 1.5);
+        curve.time.push_back(1e-3 * static_cast<double>(i));
+        curve.depth.push_back(d);
+        curve.force.push_back(16.0 / 3.0 * G * std::sqrt(R) * std::pow(d, 1.5) * std::pow(y, 1.5));
+    }
+    fit::FitProblem problem;
+    problem.model = [](const std::vector<double>& values) {
+        auto model = io::parse_case(layer_case("bonded"));
+        model.material = rheology::Rheology::elastic(values[0]);
+        model.indenter = profile::make_sphere(R);
+        model.layer->thickness = values[1];
+        return model;
+    };
+    problem.parameters = {{"material.G", 3e3, 1.0, 1e6}, {"layer.thickness", 3e-6, 1e-7, 1e-3}};
+    problem.curves = {std::move(curve)};
+    problem.settings.contact_point = fit::ContactPointMode::fixed;
+    problem.settings.baseline = fit::BaselineMode::fixed;
+    const auto result = fit::fit(problem);
+    EXPECT_TRUE(result.converged) << result.status;
+    return {result.values[0] / G - 1.0, result.values[1] / h - 1.0};
+}
+
+TEST(FitLayer, ElasticLayerFromTheUniformKernelModelAtSmallDepth) {
+    // The fit of G and h (from 3x and 0.3x off) is off by the data's own model error alone: O(chi^3) in the force, so
+    // O(chi^3) in G and O(chi^2) in h (the bottom effect is O(chi)). Measured: G -8.2e-4, h -1.2 % at chi = 0.1 (an
+    // 11 % bottom effect); -9.5e-5 and -0.30 % at 0.05: ratios 8.7 and 4.1.
+    const auto [g_coarse, h_coarse] = uniform_kernel_recovery(0.1);
+    const auto [g_fine, h_fine] = uniform_kernel_recovery(0.05);
+    EXPECT_LT(std::abs(g_coarse), 1.5e-3);
+    EXPECT_LT(std::abs(h_coarse), 2e-2);
+    EXPECT_GT(g_coarse / g_fine, 6.0);
+    EXPECT_LT(g_coarse / g_fine, 11.0);
+    EXPECT_GT(h_coarse / h_fine, 3.0);
+    EXPECT_LT(h_coarse / h_fine, 5.0);
 }
 
 bool has_thickness_flag(const fit::FitResult& result) {
