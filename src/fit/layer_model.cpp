@@ -14,9 +14,9 @@ namespace mdr::fit {
 namespace {
 
 // Chebyshev nodes of log Q in log(1 + s/h) (the map widens the small contacts, where Q varies on the scale h): the
-// force is within 4e-10 of the layer's own solution for contact radii up to 2 thicknesses, 3e-8 up to 4.5 and 1.5e-7
-// up to ~10, where the layer kernel's cubic Hermite table (C1, 1e-9 of k(0)) sets the floor: 64 nodes give 1.7e-8
-// and 1e-7 (tests/unit/fit/layer_model_test.cpp, InterpolationMatchesTheLayerSolutionAtEveryDepth).
+// force is within 8e-10 of the layer's own solution for half-space contact radii up to 0.9 thicknesses (sphere),
+// 2.6e-8 up to 4.5 (cone) and 8e-8 up to 10 (sphere), where the layer kernel's cubic Hermite table (C1, 1e-9 of k(0))
+// sets the floor (tests/unit/fit/layer_model_test.cpp, InterpolationMatchesTheLayerSolutionAtEveryDepth).
 constexpr std::size_t chebyshev_nodes = 40;
 // The layer's contact radius exceeds the half-space's at the same depth by at most 3 pi / 4 (a cone on a thin bonded
 // layer; drivers::run_layer_indentation prepares the same margin).

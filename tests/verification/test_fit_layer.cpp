@@ -75,8 +75,8 @@ fit::FitProblem layer_problem(const drivers::ContactCase& truth, fit::Curve curv
 }
 
 TEST(FitLayer, ThicknessAndModuliFromARampHold) {
-    // Contact radius up to 1.9 thicknesses (the force 2.4 times the half-space's at the peak). The model's only
-    // difference to the driver is its interpolation (4e-10 here): the values come back to 1e-6.
+    // Half-space contact radius up to 1.9 thicknesses (the layer's: 3.0). The model's only difference to the driver
+    // is its interpolation (below 1e-7 here): the values come back to 1e-6.
     for (const std::string interface : {"bonded", "sliding"}) {
         const auto truth = io::parse_case(layer_case(interface));
         auto curve = driver_curve(truth);
