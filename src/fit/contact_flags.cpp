@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+
+#include "mdr/error.hpp"
 
 namespace mdr::fit {
 namespace {
@@ -78,9 +81,20 @@ void flag_baseline(const FitProblem& problem, const Curve& curve, CurveFit& fitt
     }
 }
 
+// The thickness of the fitted case's layer; nullopt on the half-space (or where the model cannot be built there).
+std::optional<double> fitted_thickness(const FitProblem& problem, const FitResult& result) {
+    try {
+        const auto model = problem.model(result.values);
+        if (model.layer) return model.layer->thickness;
+    } catch (const InvalidInput&) {
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 void flag_contact_and_baseline(const FitProblem& problem, FitResult& result) {
+    const std::optional<double> thickness = fitted_thickness(problem, result);
     for (std::size_t c = 0; c < problem.curves.size() && c < result.curves.size(); ++c) {
         const Curve& curve = problem.curves[c];
         CurveFit& fitted = result.curves[c];
@@ -94,6 +108,16 @@ void flag_contact_and_baseline(const FitProblem& problem, FitResult& result) {
         }
         flag_contact(problem, curve, fitted);
         flag_baseline(problem, curve, fitted);
+        const double deepest = fitted.drive.empty() || fitted.fitted != Fitted::force
+                                   ? 0.0
+                                   : *std::max_element(fitted.drive.begin(), fitted.drive.end());
+        if (thickness && deepest >= *thickness) {
+            fitted.flags.push_back(fmt::format(
+                "the depth below the contact point reaches {:.6g}, not less than the layer's thickness {:.6g}: a "
+                "layer on a rigid substrate cannot be indented that far (the linear layer model only says how stiff "
+                "such a layer would look)",
+                deepest, *thickness));
+        }
     }
 }
 

@@ -22,7 +22,8 @@ inline constexpr double contact_flag_depths = 10.0;
 /// fit.bounds.contact_point) or outside the record's depths, or more than contact_flag_depths noise-equivalent depths from the onset
 /// estimate; a baseline more than baseline_flag_deviations noise
 /// deviations from the line through the rows before contact; a tilt of those rows over the record beyond that many
-/// deviations (and standard errors of the slope) where the baseline is a constant. `problem` is the problem as
+/// deviations (and standard errors of the slope) where the baseline is a constant; on a [layer], a depth below the
+/// contact point that reaches the fitted case's thickness. `problem` is the problem as
 /// given (its curves' estimates from estimate_contact), `result` the fit's.
 void flag_contact_and_baseline(const FitProblem& problem, FitResult& result);
 

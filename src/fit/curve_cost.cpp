@@ -116,6 +116,12 @@ std::vector<double> branch_moduli(const rheology::Rheology& material) {
     return moduli;
 }
 
+// Both cases on the half-space, or on layers of the same thickness and interface.
+bool same_layer(const drivers::ContactCase& a, const drivers::ContactCase& b) {
+    if (!a.layer || !b.layer) return !a.layer && !b.layer;
+    return a.layer->thickness == b.layer->thickness && a.layer->interface == b.layer->interface;
+}
+
 }  // namespace
 
 std::optional<std::vector<double>> CurveCost::modulus_direction(const drivers::ContactCase& base, const double* shared,
@@ -128,7 +134,7 @@ std::optional<std::vector<double>> CurveCost::modulus_direction(const drivers::C
         const auto& a = base.material.terms();
         const auto& b = moved.material.terms();
         if (a.size() != b.size() || base.material.viscosity() != moved.material.viscosity() ||
-            base.indenter->definition() != moved.indenter->definition()) {
+            base.indenter->definition() != moved.indenter->definition() || !same_layer(base, moved)) {
             return std::nullopt;
         }
         for (std::size_t k = 0; k < a.size(); ++k) {

@@ -59,8 +59,8 @@ private:
     /// Residuals of one run; `run`, when given, keeps the run (its modulus derivatives, which only a kept run has).
     Outcome residuals_at(const double* shared, const double* nuisance, ForwardModel forward, double* residuals,
                          ModelValues* run = nullptr) const;
-    /// When parameter j changes nothing but the material's moduli near `values` (same relaxation times, dashpot
-    /// and indenter as `base`, the case at `values`), the derivatives of the moduli with respect to shared
+    /// When parameter j changes nothing but the material's moduli near `values` (same relaxation times, dashpot,
+    /// indenter and layer as `base`, the case at `values`), the derivatives of the moduli with respect to shared
     /// coordinate j (TingResponse's branch order): a difference of the parameter-to-moduli map, exact for the
     /// affine maps of moduli parameters, times the coordinate's derivative. No model run.
     std::optional<std::vector<double>> modulus_direction(const drivers::ContactCase& base, const double* shared,

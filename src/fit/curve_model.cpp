@@ -1,10 +1,15 @@
 #include "curve_model.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
 #include "band_model.hpp"
+#include "layer_model.hpp"
+#include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/error.hpp"
 #include "ting_model.hpp"
 
 namespace mdr::fit {
@@ -54,6 +59,42 @@ std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_ca
     return model;
 }
 
+// The layer model's force at the used points, plus the baseline, and its derivatives (layer_model.hpp). Throws
+// mdr::InvalidInput for what is not built on a layer: a force-driven curve, a compressible body or two bodies, and
+// (the element model, run when the layer model gives nullopt) an unloading.
+std::optional<ModelValues> layer_curve(const drivers::ContactCase& model_case, const CurveModel& prepared,
+                                       double contact_depth, double baseline, ForwardModel forward_model,
+                                       bool modulus_derivatives) {
+    if (prepared.fitted != Fitted::force) {
+        throw InvalidInput("fit.fitted", "\"depth\"",
+                           "must be \"force\" on a [layer]: force control is not built on a layer yet (issue 28)");
+    }
+    if (!model_case.tangential_exact) {
+        throw InvalidInput("material", "(compressible or two bodies)",
+                           "a fit on a [layer] needs an incompressible body and a rigid indenter");
+    }
+    if (forward_model == ForwardModel::elements) {
+        throw InvalidInput("fit.data", prepared.curve->name,
+                           fmt::format("the depth falls below its running maximum by more than {} of its range (an "
+                                       "unloading): not built on a [layer] yet (issue 28); fit the loading and hold",
+                                       format_value(layer_dip_tolerance)));
+    }
+    const Curve& curve = *prepared.curve;
+    const std::size_t nodes = model_case.numerics.elements.value_or(contact::default_layer_nodes);
+    auto response = layer_forces(model_case.material, *model_case.layer, model_case.indenter, curve.time, curve.depth,
+                                 contact_depth, nodes, modulus_derivatives);
+    if (!response) return std::nullopt;
+    ModelValues model;
+    model.values.reserve(prepared.used.size());
+    for (std::size_t i : prepared.used) model.values.push_back(response->force[i] + baseline);
+    for (const auto& derivative : response->modulus_derivatives) {
+        auto& used = model.modulus_derivatives.emplace_back();
+        used.reserve(prepared.used.size());
+        for (std::size_t i : prepared.used) used.push_back(derivative[i]);
+    }
+    return model;
+}
+
 }  // namespace
 
 std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const CurveModel& prepared,
@@ -62,6 +103,9 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
                                      bool modulus_derivatives) {
     const Curve& curve = *prepared.curve;
     const bool depth_driven = prepared.fitted == Fitted::force;
+    if (model_case.layer) {
+        return layer_curve(model_case, prepared, contact_depth, baseline, forward_model, modulus_derivatives);
+    }
     if (forward_model == ForwardModel::continuum) {
         if (!depth_driven) return std::nullopt;
         return continuum_forces(model_case, prepared, contact_depth, baseline, modulus_derivatives);

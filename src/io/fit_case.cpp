@@ -60,8 +60,8 @@ void check_per_key_tables(const toml::table& fit, const std::vector<std::string>
 }
 
 fit::FreeParameter read_parameter(const toml::table& fit, const CaseTemplate& model, const std::string& key) {
-    if (key.rfind("material.", 0) != 0 && key.rfind("indenter.", 0) != 0) {
-        throw InvalidInput("fit.free", key, "must name a number of [material] or [indenter]");
+    if (key.rfind("material.", 0) != 0 && key.rfind("indenter.", 0) != 0 && key != "layer.thickness") {
+        throw InvalidInput("fit.free", key, "must name a number of [material] or [indenter], or layer.thickness");
     }
     if (!model.has_number(key)) throw InvalidInput("fit.free", key, "the case has no number under this key");
     fit::FreeParameter parameter{key, model.number(key), 0.0, 0.0, true};
@@ -108,9 +108,6 @@ FitCase parse_fit_case(CaseTemplate model, const std::filesystem::path& case_dir
     if (!model.has_table("fit")) throw InvalidInput("fit", "(missing)", "a fit case needs a [fit] table");
     const toml::table fit_table = parse_toml(model.take_table("fit"), source);
     TableReader fit(fit_table, "fit");
-    if (model.has_table("layer")) {
-        throw InvalidInput("layer", "[...]", "a fit on a [layer] is not built yet (issue 28): fit without [layer]");
-    }
     fit.reject_unknown({"free", "bounds", "start", "fitted", "contact_point", "baseline", "max_iterations", "elements", "data",
                         "candidates", "spectrum"});
 

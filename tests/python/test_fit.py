@@ -128,3 +128,24 @@ def test_the_real_chiaro_curve_of_the_examples():
     assert set(result.summary["undetermined"]) >= {"material.G1"}
     assert 30.0 < result.parameters["material.G_inf"] < 50.0
     assert result.summary["residual_to_noise"] < 10.0
+
+
+def test_layer_thickness_free_from_a_layer_curve():
+    # A ramp-hold made by mdr.run on a sliding layer (the layer driver); mdr.fit with [layer] and layer.thickness
+    # free (docs/case-format.md, "Fits on a layer") recovers it; an unloading on a layer is a ValueError naming it.
+    truth = {"material": {"model": "standard", "G_inf": 1.0e3, "G1": 3.0e3, "tau1": 0.2},
+             "indenter": {"shape": "sphere", "R": 1.0e-5},
+             "layer": {"thickness": 2.0e-6, "interface": "sliding"}}
+    run = mdr.run({**truth, "load": {"control": "displacement", "history": [[0, 0], [1, 1.5e-6], [3, 1.5e-6]]},
+                   "numerics": {"time_step": 3.0e-3}})
+    curve = {"time": run.history["t"], "depth": run.history["d"], "force": run.history["F"]}
+    case = {**truth, "layer": {"thickness": 5.0e-6, "interface": "sliding"},
+            "fit": {"free": ["material.G_inf", "material.G1", "layer.thickness"],
+                    "contact_point": "fixed", "baseline": "fixed"}}
+    result = mdr.fit(case, data=[curve])
+    assert result.status == "converged"
+    assert result.parameters["layer.thickness"] == pytest.approx(2.0e-6, rel=1e-5)
+    assert result.parameters["material.G_inf"] == pytest.approx(1.0e3, rel=1e-5)
+    unloading = dict(curve, depth=np.minimum(curve["depth"], 1.5e-6 * np.maximum(0.0, 2.0 - curve["time"])))
+    with pytest.raises(ValueError, match="unloading"):
+        mdr.fit(case, data=[unloading])

@@ -1,0 +1,58 @@
+#pragma once
+/// \file
+/// The forward model of depth-driven fits on a `[layer]` (internal to mdr_fit): the incompressible layer's elastic
+/// force at unit shear modulus, F_el(d), interpolated from a few exact solutions, and the force by Lee & Radok,
+/// F(t) = int_0^t G(t - s) dF_el(d(s)) (docs/theory.md, "Layers", "Fits on a layer").
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "mdr/contact/layer.hpp"
+#include "mdr/profile/profile.hpp"
+#include "mdr/rheology/rheology.hpp"
+#include "ting_model.hpp"
+
+namespace mdr::fit {
+
+/// A depth history may fall below its running maximum by this fraction of its depth range and still count as a
+/// growing contact on a layer: the noise of a measured hold. Lee-Radok's force then differs from the exact (Ting's,
+/// on the half-space) by a term second order in the dip (docs/theory.md, "Fits on a layer", eq. L15).
+inline constexpr double layer_dip_tolerance = 1e-3;
+
+/// The elastic force at unit shear modulus (E* = 4, nu = 0.5) of an indenter on an incompressible layer for depths
+/// in [0, largest_depth]: Q = F_el(d) / (d s), s the half-space contact radius at the depth, log Q interpolated in
+/// log(1 + s/h) through exact layer solutions (contact::LayerContact::at_radius) at Chebyshev nodes of the contact
+/// radius (Q is analytic in s/h and tends to 8n/(n+1) for a power law of degree n). A flat punch: F_el = d F_unit.
+class LayerElasticForce {
+public:
+    /// Solves the layer at the Chebyshev nodes with at least `nodes` Gauss nodes on the contact (LayerContact).
+    /// Throws mdr::InvalidInput (key `layer.thickness`) when the contact may reach more than 100 thicknesses (as
+    /// drivers::validate_layer), and where LayerContact does.
+    LayerElasticForce(const contact::Layer& layer, std::shared_ptr<const profile::Profile> indenter,
+                      double largest_depth, std::size_t nodes);
+    /// F_el(d) / G [m^2] for d <= largest_depth (0 for d <= 0).
+    double operator()(double depth) const;
+
+private:
+    std::shared_ptr<const profile::Profile> indenter_;
+    double thickness_;
+    double largest_radius_ = 0.0;  ///< s at largest_depth
+    double punch_force_ = 0.0;     ///< a flat punch's F_el at unit depth
+    std::vector<double> abscissas_, values_, weights_;
+};
+
+/// The force [N] at each time of a depth history through (time[i], depth[i] - depth_shift) on an incompressible
+/// viscoelastic `layer`: F_el at each point, linear in time between points, and each Prony branch of G updated
+/// exactly (F = G_inf F_el + sum G_k h_k + eta dF_el/dt, h_k = int exp(-(t - s)/tau_k) dF_el(s)), as
+/// drivers::run_layer_indentation. Exact (Lee & Radok 1960) while the depth does not fall; a fall below the running
+/// maximum (in contact) by at most layer_dip_tolerance of the depth range is taken as noise; nullopt for a larger
+/// one (an unloading). modulus_derivatives: dF/dG_inf = F_el, dF/dG_k = h_k (left out for a material with a
+/// dashpot).
+std::optional<TingResponse> layer_forces(const rheology::Rheology& material, const contact::Layer& layer,
+                                         const std::shared_ptr<const profile::Profile>& indenter,
+                                         const std::vector<double>& time, const std::vector<double>& depth,
+                                         double depth_shift, std::size_t nodes, bool modulus_derivatives = true);
+
+}  // namespace mdr::fit

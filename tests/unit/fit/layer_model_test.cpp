@@ -1,0 +1,140 @@
+// The forward model of fits on a layer (src/fit/layer_model.*): its interpolated elastic force against the layer's
+// own solution at each depth (contact::LayerContact::at_depth, verified in tests/verification/test_layer_contact.cpp
+// against scipy, Hertz and the thin-layer limits), its forces against the layer driver, and the rule for a depth
+// that falls.
+
+#include "fit/layer_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "mdr/contact/layer_contact.hpp"
+#include "mdr/drivers/indentation.hpp"
+#include "mdr/error.hpp"
+#include "mdr/io/case_file.hpp"
+#include "mdr/profile/profile.hpp"
+
+namespace mdr::fit {
+namespace {
+
+struct Setting {
+    std::string name;
+    std::shared_ptr<const profile::Profile> indenter;
+    contact::Layer layer;
+    double largest_depth;
+    double tolerance;  ///< relative; measured 8.3e-10, 6.2e-11, 2.6e-8, 4.8e-10, 8.3e-8 (the kernel table's floor)
+};
+
+TEST(LayerModel, InterpolationMatchesTheLayerSolutionAtEveryDepth) {
+    // Half-space contact radii up to 0.9 (sphere), 4.5 (cone) and 10 (thin sphere) thicknesses, bonded and sliding.
+    const std::vector<Setting> settings{
+        {"sphere bonded", profile::make_sphere(1e-5), {2e-6, contact::LayerInterface::bonded}, 3e-7, 1e-9},
+        {"sphere sliding", profile::make_sphere(1e-5), {2e-6, contact::LayerInterface::sliding}, 3e-7, 1e-9},
+        {"cone bonded", profile::make_cone_from_half_angle(35.0), {2e-6, contact::LayerInterface::bonded}, 2e-5, 1e-7},
+        {"cone sliding", profile::make_cone_from_half_angle(35.0), {2e-6, contact::LayerInterface::sliding}, 2e-5,
+         1e-8},
+        {"thin sphere", profile::make_sphere(1e-5), {4e-7, contact::LayerInterface::bonded}, 1.6e-6, 5e-7},
+    };
+    for (const auto& setting : settings) {
+        const LayerElasticForce elastic(setting.layer, setting.indenter, setting.largest_depth,
+                                        contact::default_layer_nodes);
+        // The same Gauss nodes as the model takes (6 per thickness of its widest contact, at least 48): the
+        // difference is the interpolation's alone.
+        const double widest = 3.0 * setting.indenter->contact_radius(setting.largest_depth);
+        const auto nodes = std::max<std::size_t>(48, 6 * static_cast<std::size_t>(std::ceil(widest /
+                                                                                             setting.layer.thickness)));
+        const contact::LayerContact exact(setting.layer, 0.5, setting.indenter, widest, nodes);
+        double largest_error = 0.0;
+        for (int i = 1; i <= 41; ++i) {
+            const double depth = setting.largest_depth * std::pow(static_cast<double>(i) / 41.0, 1.7);
+            const double expected = 4.0 * exact.at_depth(depth).force;  // E* = 4 G
+            largest_error = std::max(largest_error, std::abs(elastic(depth) / expected - 1.0));
+        }
+        EXPECT_LT(largest_error, setting.tolerance) << setting.name;
+        EXPECT_EQ(elastic(0.0), 0.0);
+        EXPECT_EQ(elastic(-1e-9), 0.0);
+    }
+}
+
+std::string ramp_hold_case(const std::string& shape) {
+    return R"(
+[material]
+model = "standard"
+G_inf = 1.0e3
+G1 = 3.0e3
+tau1 = 0.2
+[indenter]
+)" + shape + R"(
+[load]
+control = "displacement"
+history = [[0.0, 0.0], [1.0, 1.0e-6], [3.0, 1.0e-6]]
+[layer]
+thickness = 2.0e-6
+interface = "bonded"
+)";
+}
+
+TEST(LayerModel, ForcesAreTheLayerDriversOnItsOwnSteps) {
+    // The same Prony recursion on the same steps; the driver solves the layer at every step (at_depth), the model
+    // interpolates: they agree to the interpolation's error. A depth shift moves the history rigidly.
+    for (const std::string shape : {"shape = \"sphere\"\nR = 1.0e-5", "shape = \"cone\"\nhalf_angle_deg = 35.0"}) {
+        const auto contact_case = io::parse_case(ramp_hold_case(shape));
+        const auto result = drivers::run_case(contact_case);
+        std::vector<double> shifted(result.depth);
+        for (double& value : shifted) value += 1e-7;
+        const auto model = layer_forces(contact_case.material, *contact_case.layer, contact_case.indenter, result.time,
+                                        shifted, 1e-7, contact::default_layer_nodes);
+        ASSERT_TRUE(model.has_value());
+        const double peak = *std::max_element(result.force.begin(), result.force.end());
+        for (std::size_t i = 0; i < result.time.size(); ++i) {
+            ASSERT_NEAR(model->force[i], result.force[i], 1e-8 * peak) << shape << " row " << i;
+            // The force is linear in the moduli: G_inf F_el + G1 h_1.
+            ASSERT_NEAR(1e3 * model->modulus_derivatives[0][i] + 3e3 * model->modulus_derivatives[1][i],
+                        model->force[i], 1e-12 * peak);
+        }
+    }
+}
+
+TEST(LayerModel, ADepthThatFallsBeyondTheNoiseIsAnUnloading) {
+    // Lee-Radok is exact while the contact grows; a fall below the running maximum (in contact) by at most
+    // layer_dip_tolerance of the range is noise, a larger one an unloading (nullopt: not built on a layer).
+    const auto contact_case = io::parse_case(ramp_hold_case("shape = \"sphere\"\nR = 1.0e-5"));
+    std::vector<double> time, depth;
+    for (int i = 0; i <= 100; ++i) {
+        time.push_back(0.01 * i);
+        depth.push_back(1e-8 * std::min(i, 50));
+    }
+    const auto forces = [&](const std::vector<double>& history, double shift) {
+        return layer_forces(contact_case.material, *contact_case.layer, contact_case.indenter, time, history, shift,
+                            contact::default_layer_nodes);
+    };
+    auto noisy = depth;
+    noisy[70] -= 0.9 * layer_dip_tolerance * 5e-7;
+    EXPECT_TRUE(forces(noisy, 0.0).has_value());
+    noisy[70] = depth[70] - 1.1 * layer_dip_tolerance * 5e-7;
+    EXPECT_FALSE(forces(noisy, 0.0).has_value());
+    // Out of contact (below the contact point) a fall is no unloading.
+    auto before_contact = depth;
+    before_contact[10] = 0.0;
+    EXPECT_FALSE(forces(before_contact, 0.0).has_value());
+    EXPECT_TRUE(forces(before_contact, 1.5e-7).has_value());
+}
+
+TEST(LayerModel, AContactOfMoreThanAHundredThicknessesIsRefused) {
+    // A free thickness near a lower bound of start/1e4 would take 6 Gauss nodes per thickness of the contact (here
+    // 18 000, a 2.6 GB matrix): refused at once as drivers::validate_layer refuses it, naming the key.
+    const auto sphere = std::shared_ptr<const profile::Profile>(profile::make_sphere(1e-5));
+    try {
+        const LayerElasticForce elastic({1e-9, contact::LayerInterface::bonded}, sphere, 1e-6, 48);
+        FAIL() << "not refused";
+    } catch (const InvalidInput& error) {
+        EXPECT_EQ(error.key(), "layer.thickness");
+        EXPECT_NE(std::string(error.what()).find("100 thicknesses"), std::string::npos) << error.what();
+    }
+}
+
+}  // namespace
+}  // namespace mdr::fit

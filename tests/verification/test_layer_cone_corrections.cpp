@@ -1,0 +1,58 @@
+// A cone on a bonded incompressible layer at small depth/thickness (docs/theory.md, "Layers", "Cones"): the exact
+// layer solution (contact::LayerContact) against the bottom-effect series of Garcia & Garcia (Biophys. J. 114, 2018)
+// and the first-order coefficient of the uniform-kernel model (eq. L7 for a cone) with k(0) from scipy. (Gavara &
+// Chadwick's series, Nat. Nanotechnol. 7, 2012, as transcribed in docs/theory.md, is not met: see there.)
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include "mdr/contact/layer_contact.hpp"
+#include "mdr/profile/profile.hpp"
+
+namespace {
+
+using mdr::contact::Layer;
+using mdr::contact::LayerContact;
+using mdr::contact::LayerInterface;
+
+constexpr double thickness = 1e-6;
+constexpr double k0_bonded = 1.770216773;  // k(0), bonded, nu = 0.5 (scipy.integrate.quad of eq. L1, L4)
+
+// F / F_cone on the layer at t = tan(theta) d / h, F_cone = (2/pi) E* tan(theta) d^2 (Sneddon), E* = 1.
+double cone_ratio(double half_angle_deg, double t) {
+    const double tangent = std::tan(half_angle_deg * std::numbers::pi / 180.0);
+    const double depth = t * thickness / tangent;
+    const auto cone = std::shared_ptr<const mdr::profile::Profile>(
+        mdr::profile::make_cone_from_half_angle(half_angle_deg));
+    const LayerContact layer(Layer{thickness, LayerInterface::bonded}, 0.5, cone, 3.0 * cone->contact_radius(depth));
+    return layer.at_depth(depth).force / (2.0 / std::numbers::pi * tangent * depth * depth);
+}
+
+// Garcia & Garcia 2018, conical tip, bonded: 1 + 0.721 t + 0.650 t^2 + 0.491 t^3 + 0.225 t^4.
+double garcia_garcia(double t) { return 1.0 + t * (0.721 + t * (0.650 + t * (0.491 + t * 0.225))); }
+
+TEST(LayerCone, FirstOrderIsTheUniformKernelModels) {
+    // With K ~ k(0)/h the depth shifts by c/E* = k(0) F / (pi h E*): F/F_cone = 1 + (4 k(0) / pi^2) t + O(t^2)
+    // = 1 + 0.71746 t. The slope (ratio - 1)/t at t and t/2, extrapolated (Richardson), meets it to 3e-4;
+    // Garcia & Garcia's 0.721 is 0.5 % above (their coefficients are fits to finite-element results).
+    for (const double angle : {20.0, 35.0, 70.0}) {
+        const double slope = (cone_ratio(angle, 0.01) - 1.0) / 0.01, half = (cone_ratio(angle, 0.005) - 1.0) / 0.005;
+        EXPECT_NEAR(2.0 * half - slope, 4.0 * k0_bonded / (std::numbers::pi * std::numbers::pi), 3e-4) << angle;
+    }
+}
+
+TEST(LayerCone, GarciaGarciaSeriesToItsFourthOrder) {
+    // F/F_cone depends on t alone (the same to 1e-12 at 20 and 70 degrees). Garcia & Garcia's four coefficients are
+    // met to 1e-3 of the force for t <= 0.4 (measured: 2e-4 at t = 0.05, 8.5e-4 at 0.2, 1.9e-4 at 0.4; a 40 %
+    // correction there). Their second-order 0.650 against the uniform-kernel model's (5/4) (4 k(0)/pi^2)^2 = 0.643.
+    for (const double t : {0.05, 0.1, 0.2, 0.4}) {
+        const double ratio = cone_ratio(20.0, t);
+        EXPECT_NEAR(cone_ratio(70.0, t), ratio, 1e-12) << t;
+        EXPECT_NEAR(ratio, garcia_garcia(t), 1e-3) << t;
+    }
+}
+
+}  // namespace
