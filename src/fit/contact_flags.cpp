@@ -80,6 +80,17 @@ void flag_baseline(const FitProblem& problem, const Curve& curve, CurveFit& fitt
 
 }  // namespace
 
+std::size_t approach_rows(const Curve& curve) {
+    if (curve.baseline_rows == 0 || curve.depth.empty()) return 0;
+    const double first = *std::min_element(curve.depth.begin(), curve.depth.end());
+    const double rest = first + rest_depth_deviations * curve.depth_noise;
+    std::size_t rows = 0;
+    for (std::size_t i = 0; i < curve.depth.size() && curve.time[i] < curve.contact_time; ++i) {
+        if (curve.depth[i] > rest) ++rows;
+    }
+    return rows;
+}
+
 void flag_contact_and_baseline(const FitProblem& problem, FitResult& result) {
     for (std::size_t c = 0; c < problem.curves.size() && c < result.curves.size(); ++c) {
         const Curve& curve = problem.curves[c];
@@ -91,6 +102,14 @@ void flag_contact_and_baseline(const FitProblem& problem, FitResult& result) {
             fitted.flags.push_back(
                 "starts in contact: the force rises from its first rows, so no rows before contact determine the "
                 "baseline and the history before the first row is unknown (" + curve.estimate_note + ")");
+        }
+        const std::size_t approach = approach_rows(curve);
+        if (curve.baseline_rows > 0 && approach < min_approach_rows) {
+            fitted.flags.push_back(fmt::format(
+                "starts in contact: the force rises with the first rows that move deeper ({} rows before the contact "
+                "move deeper than the record's shallowest depth): the rows before it are at rest, and the model takes "
+                "them as unloaded (no preload at the record's start; a preload's force would be taken for baseline)",
+                approach));
         }
         flag_contact(problem, curve, fitted);
         flag_baseline(problem, curve, fitted);

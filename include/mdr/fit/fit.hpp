@@ -65,7 +65,7 @@ enum class LinearSolver {
 struct FitSettings {
     Fitted fitted = Fitted::force;                               ///< see Fitted
     ContactPointMode contact_point = ContactPointMode::fit;      ///< see ContactPointMode
-    BaselineMode baseline = BaselineMode::fit;                   ///< see BaselineMode
+    BaselineMode baseline = BaselineMode::constant;              ///< see BaselineMode
     /// Bounds [lower, upper] of a fitted contact point in the data's depth (`fit.bounds.contact_point`), for every
     /// curve; unset: each curve's own depth range, so that the contact lies inside the record.
     std::optional<std::array<double, 2>> contact_point_bounds{};
