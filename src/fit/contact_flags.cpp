@@ -4,9 +4,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace mdr::fit {
 namespace {
+
+// (sigma / A)^(1/n) of the curve's onset estimate A (d - d_c)^n and force noise sigma: the depth past contact at
+// which the onset force equals one noise deviation (0 without an onset estimate).
+double noise_equivalent_depth(const Curve& curve) {
+    if (!(curve.onset_amplitude > 0.0 && curve.onset_exponent > 0.0 && curve.force_noise > 0.0)) return 0.0;
+    return std::pow(curve.force_noise / curve.onset_amplitude, 1.0 / curve.onset_exponent);
+}
 
 // The contact point against the record's depths and the fit's bounds.
 void flag_contact(const FitProblem& problem, const Curve& curve, CurveFit& fitted) {
@@ -17,8 +25,7 @@ void flag_contact(const FitProblem& problem, const Curve& curve, CurveFit& fitte
                                            contact, *lowest, *deepest));
         return;
     }
-    if (curve.onset_amplitude > 0.0 && curve.onset_exponent > 0.0 && curve.force_noise > 0.0) {
-        const double noise_depth = std::pow(curve.force_noise / curve.onset_amplitude, 1.0 / curve.onset_exponent);
+    if (const double noise_depth = noise_equivalent_depth(curve); noise_depth > 0.0) {
         const double distance = std::abs(contact - curve.contact_depth) / noise_depth;
         if (distance > contact_flag_depths) {
             fitted.flags.push_back(fmt::format(
@@ -81,14 +88,14 @@ void flag_baseline(const FitProblem& problem, const Curve& curve, CurveFit& fitt
 }  // namespace
 
 std::size_t approach_rows(const Curve& curve) {
-    if (curve.baseline_rows == 0 || curve.depth.empty()) return 0;
-    const double first = *std::min_element(curve.depth.begin(), curve.depth.end());
-    const double rest = first + rest_depth_deviations * curve.depth_noise;
-    std::size_t rows = 0;
-    for (std::size_t i = 0; i < curve.depth.size() && curve.time[i] < curve.contact_time; ++i) {
-        if (curve.depth[i] > rest) ++rows;
-    }
-    return rows;
+    const auto rows = static_cast<std::ptrdiff_t>(std::min(curve.baseline_rows, curve.depth.size()));
+    if (rows == 0) return 0;
+    std::vector<double> depths(curve.depth.begin(), curve.depth.begin() + rows);
+    std::nth_element(depths.begin(), depths.begin() + rows / 2, depths.end());
+    const double rest = depths[static_cast<std::size_t>(rows / 2)] +
+                        std::max(rest_depth_deviations * curve.depth_noise, noise_equivalent_depth(curve));
+    return static_cast<std::size_t>(
+        std::count_if(curve.depth.begin(), curve.depth.begin() + rows, [&](double depth) { return depth > rest; }));
 }
 
 void flag_contact_and_baseline(const FitProblem& problem, FitResult& result) {
@@ -106,10 +113,11 @@ void flag_contact_and_baseline(const FitProblem& problem, FitResult& result) {
         const std::size_t approach = approach_rows(curve);
         if (curve.baseline_rows > 0 && approach < min_approach_rows) {
             fitted.flags.push_back(fmt::format(
-                "starts in contact: the force rises with the first rows that move deeper ({} rows before the contact "
-                "move deeper than the record's shallowest depth): the rows before it are at rest, and the model takes "
-                "them as unloaded (no preload at the record's start; a preload's force would be taken for baseline)",
-                approach));
+                "starts in contact: the force rises with the first rows that move deeper (of the {} rows before the "
+                "contact, {} lie deeper than their median depth beyond the noise): the rows before it are at rest, "
+                "the model takes them as unloaded (no preload at the record's start; a preload's force would be taken "
+                "for baseline)",
+                curve.baseline_rows, approach));
         }
         flag_contact(problem, curve, fitted);
         flag_baseline(problem, curve, fitted);
