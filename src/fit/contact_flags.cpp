@@ -113,11 +113,11 @@ void flag_contact_and_baseline(const FitProblem& problem, FitResult& result) {
         const std::size_t approach = approach_rows(curve);
         if (curve.baseline_rows > 0 && approach < min_approach_rows) {
             fitted.flags.push_back(fmt::format(
-                "starts in contact: the force rises with the first rows that move deeper (of the {} rows before the "
-                "contact, {} lie deeper than their median depth beyond the noise): the rows before it are at rest, "
-                "the model takes them as unloaded (no preload at the record's start; a preload's force would be taken "
-                "for baseline)",
-                curve.baseline_rows, approach));
+                "starts in contact: no approach out of contact is recorded (of the {} rows before the contact, {} lie "
+                "deeper than their median depth beyond the noise; {} needed): the force rises as soon as the depth "
+                "moves, and the model takes the rows before contact as unloaded (no preload at the record's start; a "
+                "preload's force would be taken for baseline)",
+                curve.baseline_rows, approach, min_approach_rows));
         }
         flag_contact(problem, curve, fitted);
         flag_baseline(problem, curve, fitted);

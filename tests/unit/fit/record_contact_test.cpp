@@ -238,7 +238,7 @@ TEST(RecordContact, RecordAtRestThenPressedStartsInContact) {
         return make_curve("rest", std::move(time), std::move(depth), std::move(force));
     };
     const FitResult at_rest = fit(hertz_problem(rest_then_ramp(0.0)));
-    EXPECT_TRUE(has_flag(at_rest.curves[0], "starts in contact: the force rises with the first rows that move deeper"))
+    EXPECT_TRUE(has_flag(at_rest.curves[0], "starts in contact: no approach out of contact is recorded"))
         << flags_of(at_rest.curves[0]);
     EXPECT_NEAR(at_rest.curves[0].baseline, 1e-9, 5.0 * sigma / std::sqrt(400.0));
     EXPECT_NEAR(at_rest.values[0], modulus, 0.01 * modulus);
