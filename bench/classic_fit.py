@@ -45,7 +45,7 @@ def synthetic(material):
 
 def mdr_fit(material, start, free, curve):
     t, d, f = curve
-    case = {"material": start, "indenter": {"shape": "sphere", "R": R}, "fit": {"free": free}}
+    case = {"material": start, "indenter": {"shape": "sphere", "R": R}, "fit": {"free": free, "baseline": "fit"}}
     begin = time.process_time()
     result = mdr.fit(case, data=[{"time": t, "depth": d, "force": f}])
     return (time.process_time() - begin, result.summary["residual_to_noise"], result.summary["evaluations"],

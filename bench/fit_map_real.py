@@ -27,7 +27,7 @@ POINTS = 4000
 CASE = {"material": {"model": "standard", "G_inf": 200.0, "G1": 300.0, "tau1": 1.0},
         "indenter": {"shape": "cone", "half_angle_deg": 35.0},
         "fit": {"free": ["material.G_inf", "material.G1", "material.tau1"],
-                "bounds": {"material.tau1": [1e-3, 300.0]}}}
+                "bounds": {"material.tau1": [1e-3, 300.0]}, "baseline": "fit"}}
 
 
 def resampled(path: pathlib.Path) -> np.ndarray:

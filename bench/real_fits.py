@@ -40,7 +40,7 @@ def mdr_fit(record: pathlib.Path, model: str, folder: pathlib.Path) -> dict:
     material, free, bounds = MODELS[model]
     bounds_toml = ", ".join(f'"{key}" = [{low}, {high}]' for key, (low, high) in bounds.items())
     case = (f"[material]\n{material}\n[indenter]\nshape = \"cone\"\nhalf_angle_deg = 35.0\n\n"
-            f"[fit]\nfree = {json.dumps(free)}\nbounds = {{ {bounds_toml} }}\n\n"
+            f"[fit]\nbaseline = \"fit\"\nfree = {json.dumps(free)}\nbounds = {{ {bounds_toml} }}\n\n"
             f"[[fit.data]]\nfile = \"{record}\"\ntime = \"t_s\"\npiezo = \"z_measured_m\"\n"
             "deflection = \"deflection_m\"\nspring_constant = 1.0677\nsegment_column = \"segment\"\n"
             "segments = [\"0\", \"1\", \"2\"]\n")

@@ -9,6 +9,7 @@
 
 #include "curve_model.hpp"
 #include "mdr/error.hpp"
+#include "pre_contact_baseline.hpp"
 #include "mdr/fit/plausibility.hpp"
 #include <Eigen/Dense>
 
@@ -302,7 +303,7 @@ std::vector<double> linear_start(const io::FitCase& base, const Material& materi
     for (const auto& curve : curves) {
         const bool fixed_contact = base.settings.contact_point == ContactPointMode::fixed;
         const double contact = fixed_contact ? 0.0 : curve.contact_depth;
-        const double baseline = base.settings.baseline == BaselineMode::fixed ? 0.0 : curve.force_baseline;
+        const double baseline = held_baseline(base.settings, curve);
         const CurveModel prepared = prepare_curve(curve, Fitted::force, baseline);
         const auto n = static_cast<Eigen::Index>(prepared.used.size());
         Eigen::MatrixXd A(n, columns);

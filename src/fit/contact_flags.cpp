@@ -5,11 +5,19 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include "mdr/error.hpp"
 
 namespace mdr::fit {
 namespace {
+
+// (sigma / A)^(1/n) of the curve's onset estimate A (d - d_c)^n and force noise sigma: the depth past contact at
+// which the onset force equals one noise deviation (0 without an onset estimate).
+double noise_equivalent_depth(const Curve& curve) {
+    if (!(curve.onset_amplitude > 0.0 && curve.onset_exponent > 0.0 && curve.force_noise > 0.0)) return 0.0;
+    return std::pow(curve.force_noise / curve.onset_amplitude, 1.0 / curve.onset_exponent);
+}
 
 // The contact point against the record's depths and the fit's bounds.
 void flag_contact(const FitProblem& problem, const Curve& curve, CurveFit& fitted) {
@@ -20,8 +28,7 @@ void flag_contact(const FitProblem& problem, const Curve& curve, CurveFit& fitte
                                            contact, *lowest, *deepest));
         return;
     }
-    if (curve.onset_amplitude > 0.0 && curve.onset_exponent > 0.0 && curve.force_noise > 0.0) {
-        const double noise_depth = std::pow(curve.force_noise / curve.onset_amplitude, 1.0 / curve.onset_exponent);
+    if (const double noise_depth = noise_equivalent_depth(curve); noise_depth > 0.0) {
         const double distance = std::abs(contact - curve.contact_depth) / noise_depth;
         if (distance > contact_flag_depths) {
             fitted.flags.push_back(fmt::format(
@@ -93,6 +100,17 @@ std::optional<double> fitted_thickness(const FitProblem& problem, const FitResul
 
 }  // namespace
 
+std::size_t approach_rows(const Curve& curve) {
+    const auto rows = static_cast<std::ptrdiff_t>(std::min(curve.baseline_rows, curve.depth.size()));
+    if (rows == 0) return 0;
+    std::vector<double> depths(curve.depth.begin(), curve.depth.begin() + rows);
+    std::nth_element(depths.begin(), depths.begin() + rows / 2, depths.end());
+    const double rest = depths[static_cast<std::size_t>(rows / 2)] +
+                        std::max(rest_depth_deviations * curve.depth_noise, noise_equivalent_depth(curve));
+    return static_cast<std::size_t>(
+        std::count_if(curve.depth.begin(), curve.depth.begin() + rows, [&](double depth) { return depth > rest; }));
+}
+
 void flag_contact_and_baseline(const FitProblem& problem, FitResult& result) {
     const std::optional<double> thickness = fitted_thickness(problem, result);
     for (std::size_t c = 0; c < problem.curves.size() && c < result.curves.size(); ++c) {
@@ -105,6 +123,15 @@ void flag_contact_and_baseline(const FitProblem& problem, FitResult& result) {
             fitted.flags.push_back(
                 "starts in contact: the force rises from its first rows, so no rows before contact determine the "
                 "baseline and the history before the first row is unknown (" + curve.estimate_note + ")");
+        }
+        const std::size_t approach = approach_rows(curve);
+        if (curve.baseline_rows > 0 && approach < min_approach_rows) {
+            fitted.flags.push_back(fmt::format(
+                "starts in contact: no approach out of contact is recorded (of the {} rows before the contact, {} lie "
+                "deeper than their median depth beyond the noise; {} needed): the force rises as soon as the depth "
+                "moves, and the model takes the rows before contact as unloaded (no preload at the record's start; a "
+                "preload's force would be taken for baseline)",
+                curve.baseline_rows, approach, min_approach_rows));
         }
         flag_contact(problem, curve, fitted);
         flag_baseline(problem, curve, fitted);

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "mdr/error.hpp"
+#include "pre_contact_baseline.hpp"
 
 namespace mdr::fit {
 
@@ -27,7 +28,7 @@ CurveCost::CurveCost(const FitProblem& problem, const ParameterScales& scales, c
                      std::atomic<std::size_t>* band_evaluations)
     : problem_(problem), scales_(scales), prepared_(prepared), curve_(curve), elements_(elements),
       evaluations_(evaluations), element_evaluations_(element_evaluations),
-      band_evaluations_(band_evaluations) {
+      band_evaluations_(band_evaluations), held_baseline_(held_baseline(problem.settings, problem.curves[curve])) {
     AddParameterBlock(static_cast<int>(problem.parameters.size()));
     if (scales.nuisance_size() > 0) AddParameterBlock(static_cast<int>(scales.nuisance_size()));
     SetNumResiduals(static_cast<int>(prepared.used.size()));
@@ -41,8 +42,7 @@ double CurveCost::contact_depth(const double* nuisance) const {
 
 double CurveCost::baseline(const double* nuisance) const {
     if (scales_.fit_baseline) return nuisance[scales_.fit_contact ? 1 : 0] * scales_.force[curve_];
-    const Curve& curve = problem_.curves[curve_];
-    return problem_.settings.baseline == BaselineMode::estimate ? curve.force_baseline : 0.0;
+    return held_baseline_;
 }
 
 std::optional<ModelValues> CurveCost::model(const double* shared, const double* nuisance, ForwardModel forward,

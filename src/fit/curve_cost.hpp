@@ -102,6 +102,7 @@ private:
     std::atomic<std::size_t>& evaluations_;
     std::atomic<std::size_t>& element_evaluations_;
     std::atomic<std::size_t>* band_evaluations_;
+    double held_baseline_;  ///< the baseline where it is not fitted (held_baseline)
     mutable std::mutex last_run_mutex_;
     mutable std::array<std::optional<LastRun>, 2> last_runs_;  ///< per ForwardModel (continuum, elements)
 };

@@ -264,7 +264,7 @@ FitResult solve(const FitProblem& problem) {
     prepared.reserve(problem.curves.size());
     for (std::size_t c = 0; c < problem.curves.size(); ++c) {
         const Curve& curve = problem.curves[c];
-        const double baseline = problem.settings.baseline == BaselineMode::fixed ? 0.0 : curve.force_baseline;
+        const double baseline = held_baseline(problem.settings, curve);
         prepared.push_back(prepare_curve(curve, fitted_of(problem, c), baseline));
         if (prepared.back().used.empty()) {
             throw InvalidInput(fmt::format("fit.data[{}]", c), curve.name, "the curve never makes contact");

@@ -2,17 +2,30 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "mdr/error.hpp"
 
 namespace mdr::fit {
 
+double pre_contact_mean(const Curve& curve) {
+    const std::size_t rows = std::min(curve.baseline_rows, curve.force.size());
+    if (rows == 0) return 0.0;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < rows; ++i) sum += curve.force[i];
+    return sum / static_cast<double>(rows);
+}
+
+double held_baseline(const FitSettings& settings, const Curve& curve) {
+    if (settings.baseline == BaselineMode::fixed) return 0.0;
+    return settings.baseline == BaselineMode::constant ? pre_contact_mean(curve) : curve.force_baseline;
+}
+
 std::optional<FitProblem> with_pre_contact_baselines(const FitProblem& problem) {
     const BaselineMode mode = problem.settings.baseline;
     if (mode != BaselineMode::constant && mode != BaselineMode::line) return std::nullopt;
-    FitProblem fixed = problem;
-    fixed.settings.baseline = BaselineMode::estimate;
-    for (std::size_t c = 0; c < fixed.curves.size(); ++c) {
-        Curve& curve = fixed.curves[c];
+    for (std::size_t c = 0; c < problem.curves.size(); ++c) {
+        const Curve& curve = problem.curves[c];
         if (curve.baseline_rows == 0) {
             throw InvalidInput("fit.baseline", mode == BaselineMode::constant ? "\"constant\"" : "\"line\"",
                                fmt::format("fit.data[{}] ({}) has no rows before contact to determine it ({}); "
@@ -20,14 +33,13 @@ std::optional<FitProblem> with_pre_contact_baselines(const FitProblem& problem) 
                                            c, curve.name, curve.estimate_note.empty() ? "no contact estimate"
                                                                                         : curve.estimate_note));
         }
-        if (mode == BaselineMode::constant) {
-            double sum = 0.0;
-            for (std::size_t i = 0; i < curve.baseline_rows; ++i) sum += curve.force[i];
-            curve.force_baseline = sum / static_cast<double>(curve.baseline_rows);
-        } else {
-            for (std::size_t i = 0; i < curve.force.size(); ++i) {
-                curve.force[i] -= curve.baseline_slope * (curve.time[i] - curve.contact_time);
-            }
+    }
+    if (mode == BaselineMode::constant) return std::nullopt;
+    FitProblem fixed = problem;
+    fixed.settings.baseline = BaselineMode::estimate;
+    for (Curve& curve : fixed.curves) {
+        for (std::size_t i = 0; i < curve.force.size(); ++i) {
+            curve.force[i] -= curve.baseline_slope * (curve.time[i] - curve.contact_time);
         }
     }
     return fixed;

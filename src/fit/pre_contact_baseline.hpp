@@ -9,12 +9,21 @@
 
 namespace mdr::fit {
 
-/// `problem` with each curve's baseline taken from its rows before contact (Curve::baseline_rows) and fixed
-/// (BaselineMode::estimate): for BaselineMode::constant their mean force; for BaselineMode::line the estimate's
-/// straight line in time, whose tilt slope (t - contact_time) is taken off every row's force so that the line's
-/// value at the contact time is the constant baseline left. Any other mode returns nullopt: `problem` stands as it
-/// is, and is not copied (its curves may hold 10^7 rows). Throws mdr::InvalidInput (key `fit.baseline`) for a curve
-/// with no rows before contact (it starts in contact): its baseline cannot come from the data.
+/// The mean force of the curve's rows before contact, [0, Curve::baseline_rows) (0 when there are none): the
+/// baseline of BaselineMode::constant.
+double pre_contact_mean(const Curve& curve);
+
+/// The baseline a fit holds fixed for `curve` under `settings` (unused where it is fitted, BaselineMode::fit, except
+/// as its start): 0 for BaselineMode::fixed, pre_contact_mean for BaselineMode::constant, else the estimate's
+/// Curve::force_baseline (for BaselineMode::line, after with_pre_contact_baselines, the line's value at the contact).
+double held_baseline(const FitSettings& settings, const Curve& curve);
+
+/// Checks that every curve has rows before contact where the baseline comes from them (BaselineMode::constant or
+/// line): throws mdr::InvalidInput (key `fit.baseline`) for a curve without (it starts in contact, or has no
+/// contact estimate): its baseline cannot come from the data. For BaselineMode::line returns `problem` with each
+/// curve's tilt, the estimate's slope (t - contact_time), taken off every row's force and the baseline then held at
+/// the line's value at the contact (BaselineMode::estimate). Any other mode returns nullopt: `problem` stands as it
+/// is, and is not copied (its curves may hold 10^7 rows).
 std::optional<FitProblem> with_pre_contact_baselines(const FitProblem& problem);
 
 }  // namespace mdr::fit

@@ -118,7 +118,7 @@ FitCase parse_fit_case(CaseTemplate model, const std::filesystem::path& case_dir
     fit_case.settings.contact_point = contact == "fit"        ? fit::ContactPointMode::fit
                                       : contact == "estimate" ? fit::ContactPointMode::estimate
                                                               : fit::ContactPointMode::fixed;
-    const std::string baseline = choice(fit, "baseline", {"fit", "estimate", "fixed", "constant", "line"}, "fit");
+    const std::string baseline = choice(fit, "baseline", {"fit", "estimate", "fixed", "constant", "line"}, "constant");
     fit_case.settings.baseline = baseline == "fit"        ? fit::BaselineMode::fit
                                  : baseline == "estimate" ? fit::BaselineMode::estimate
                                  : baseline == "constant" ? fit::BaselineMode::constant

@@ -85,7 +85,9 @@ def test_recovers_the_modulus_and_writes_the_result_directory(run_mdr, fit_case,
     assert summary["misfit"] is False and summary["error_kind"] == "white noise (chi-square)"
     curve = summary["curves"][0]
     assert abs(curve["contact_point"] - CONTACT) < 4.0 * curve["contact_point_error"] + 2e-8
-    assert abs(curve["baseline"] - BASELINE) < 4.0 * curve["baseline_error"]
+    # The baseline is the mean of the rows before contact (the default "constant"; 66 rows before the contact, at
+    # least 50 of them before the estimate's), not fitted: within 4 NOISE / sqrt(50) of the truth, no error.
+    assert abs(curve["baseline"] - BASELINE) < 4.0 * NOISE / math.sqrt(50) and curve["baseline_error"] == 0.0
     assert 0.8 < summary["rms_residual"] / NOISE < 1.2
     with open(out / "curves.csv", newline="", encoding="utf-8") as handle:
         rows = list(csv.DictReader(handle))
@@ -268,9 +270,18 @@ def set_value(row, column, value):
     (lambda rows: [[t, d, 0.0] for t, d, _ in rows], ["fit.data[0].force = 0 in every row", "noise"]),
 ])
 def test_data_the_fit_cannot_weigh(run_mdr, fit_case, workdir, edit, fragments):
-    path = fit_case()
+    # A fitted baseline: the default ("constant") would refuse the force that is 0 in every row first, for having no
+    # rows before contact (test_zero_force_has_no_rows_before_contact).
+    path = fit_case('baseline = "fit"')
     rewrite_curve(workdir, edit)
     assert_bad_input(run_mdr("fit", path, "--out", workdir / "out"), *fragments)
+
+
+def test_zero_force_has_no_rows_before_contact(run_mdr, fit_case, workdir):
+    path = fit_case()
+    rewrite_curve(workdir, lambda rows: [[t, d, 0.0] for t, d, _ in rows])
+    assert_bad_input(run_mdr("fit", path, "--out", workdir / "out"), 'fit.baseline = "constant"',
+                     "has no rows before contact", 'baseline = "fit"')
 
 
 # Settings and values the fit cannot run with (once exit 0 or 1 with a wrong status, a raw glog line, "bad optional
@@ -323,7 +334,8 @@ def test_a_spring_constant_the_fit_cannot_weigh(run_mdr, fit_case, workdir, spri
 
 
 def test_a_depth_driven_curve_that_never_makes_contact(run_mdr, fit_case, workdir):
-    """All depths negative with the contact point fixed at the data's zero: the docs promise a refusal."""
-    path = fit_case('contact_point = "fixed"')
+    """All depths negative with the contact point fixed at the data's zero: the docs promise a refusal. (A fitted
+    baseline: the default "constant" would refuse the curve first, for having no contact estimate.)"""
+    path = fit_case('contact_point = "fixed"\nbaseline = "fit"')
     rewrite_curve(workdir, lambda rows: [[t, -1.0 - 1e-3 * i, f] for i, (t, _, f) in enumerate(rows)])
     assert_bad_input(run_mdr("fit", path, "--out", workdir / "out"), "fit.data[0]", "never makes contact")

@@ -86,6 +86,22 @@ def test_bad_input_is_a_value_error_with_the_command_line_message():
         mdr.fit(case, data=[{"time": t, "depth": t}])
 
 
+def test_a_curve_without_rows_before_contact_is_refused_by_the_default_baseline():
+    # A Hertz curve (closed form, G = 2 kPa, R = 5 um) that starts 1 um deep: its force rises from the first row, so
+    # no rows determine the baseline. The default (baseline = "constant") refuses it naming the key; before, the
+    # default fitted the baseline without a word. A fitted baseline is the caller's explicit choice.
+    radius, t = 5.0e-6, np.arange(20) * 1.0e-3
+    depth = 1.0e-6 + 2.0e-6 * t
+    force = 16.0 / 3.0 * 2.0e3 * np.sqrt(radius) * depth ** 1.5 + 1.0e-9
+    case = {"material": {"model": "elastic", "G": 1.0e3}, "indenter": {"shape": "sphere", "R": radius},
+            "fit": {"free": ["material.G"]}}
+    data = [{"time": t, "depth": depth, "force": force}]
+    with pytest.raises(ValueError, match='^fit.baseline = "constant": fit.data\\[0\\] .*has no rows before contact'):
+        mdr.fit(case, data=data)
+    fitted = mdr.fit({**case, "fit": {"free": ["material.G"], "baseline": "fit"}}, data=data)
+    assert any(flag.startswith("starts in contact") for flag in fitted.summary["curves"][0]["flags"])
+
+
 def test_raw_afm_arrays_are_the_case_files_afm_columns():
     # A Hertz curve (G = 20 kPa, R = 5 um) seen by a cantilever of k = 0.05 N/m: the tip height falls by the depth
     # and the cantilever bends by F / k. Given as piezo and deflection, mdr.fit converts them as the case file's AFM

@@ -39,10 +39,13 @@ enum class ContactPointMode {
 
 /// How each curve's force baseline (the force reading without contact) is found.
 enum class BaselineMode {
-    fit,       ///< a free parameter per curve (linear), started at the curve's estimate
+    /// A free parameter per curve (linear), started at the curve's estimate: an opt-in (`baseline = "fit"`), since
+    /// a free baseline can absorb what the model cannot follow (docs/case-format.md, "Contact, baseline, ...").
+    fit,
     estimate,  ///< the curve's estimate (Curve::force_baseline), fixed
     fixed,     ///< zero: the data's force is already baseline-corrected
-    /// The mean force of the rows before contact (Curve::baseline_rows), fixed: the data alone determine it.
+    /// The mean force of the rows before contact (Curve::baseline_rows), fixed: the data alone determine it. The
+    /// default; a curve without rows before contact is refused (mdr::InvalidInput, key `fit.baseline`).
     constant,
     /// The straight line in time through the rows before contact (Curve::force_baseline, Curve::baseline_slope),
     /// fixed: a tilted baseline; its tilt is taken off the measured force (CurveFit::measured) before the fit.
@@ -65,7 +68,7 @@ enum class LinearSolver {
 struct FitSettings {
     Fitted fitted = Fitted::force;                               ///< see Fitted
     ContactPointMode contact_point = ContactPointMode::fit;      ///< see ContactPointMode
-    BaselineMode baseline = BaselineMode::fit;                   ///< see BaselineMode
+    BaselineMode baseline = BaselineMode::constant;              ///< see BaselineMode
     /// Bounds [lower, upper] of a fitted contact point in the data's depth (`fit.bounds.contact_point`), for every
     /// curve; unset: each curve's own depth range, so that the contact lies inside the record.
     std::optional<std::array<double, 2>> contact_point_bounds{};

@@ -61,6 +61,12 @@ FitProblem hertz_problem(const Curve& curve) {
     return problem;
 }
 
+// The problem with each curve's baseline a free parameter (`baseline = "fit"`, not the default).
+FitProblem fitted_baseline(FitProblem problem) {
+    problem.settings.baseline = BaselineMode::fit;
+    return problem;
+}
+
 bool has_flag(const CurveFit& curve, const std::string& part) {
     return std::any_of(curve.flags.begin(), curve.flags.end(),
                        [&](const std::string& flag) { return flag.find(part) != std::string::npos; });
@@ -105,7 +111,7 @@ TEST(RecordContact, ConstantBaselineIsThePreContactMean) {
 // start in contact and the contact at its bound are flagged.
 TEST(RecordContact, RecordThatStartsInContactKeepsItsContactInside) {
     const Curve curve = hertz_record({.start_depth = 1e-6, .end_depth = 3e-6});
-    const FitResult result = fit(hertz_problem(curve));
+    const FitResult result = fit(fitted_baseline(hertz_problem(curve)));
     EXPECT_GE(result.curves[0].contact_depth, curve.depth.front());
     EXPECT_LE(result.curves[0].contact_depth, curve.depth.back());
     EXPECT_TRUE(has_flag(result.curves[0], "is at its lower bound (the record's shallowest depth): the record "
@@ -114,7 +120,7 @@ TEST(RecordContact, RecordThatStartsInContactKeepsItsContactInside) {
 
     // Unbounded (what the fit did before: no bound on the contact) it leaves the record, here for the true 0; a
     // user who states that assumption opens the bounds and gets the initial indentation as part of the model.
-    FitProblem unbounded = hertz_problem(curve);
+    FitProblem unbounded = fitted_baseline(hertz_problem(curve));
     unbounded.settings.contact_point_bounds = std::array<double, 2>{-1e-5, 1e-5};
     const FitResult opened = fit(unbounded);
     EXPECT_NEAR(opened.curves[0].contact_depth, 0.0, 2e-8);
@@ -128,7 +134,7 @@ TEST(RecordContact, RecordThatStartsInContactKeepsItsContactInside) {
 // along the bound (the trust region shrinking at each iteration, 40-70 iterations on real records).
 TEST(RecordContact, ContactHeldOnItsBoundReachesTheBoundedMinimumInFewIterations) {
     const Curve curve = hertz_record({.start_depth = 1e-6, .end_depth = 3e-6});
-    const FitResult result = fit(hertz_problem(curve));
+    const FitResult result = fit(fitted_baseline(hertz_problem(curve)));
     ASSERT_TRUE(result.converged) << result.status;
     EXPECT_EQ(result.curves[0].contact_depth, curve.depth.front());
     double sx = 0.0, sxx = 0.0, sf = 0.0, sxf = 0.0;
@@ -146,7 +152,7 @@ TEST(RecordContact, ContactHeldOnItsBoundReachesTheBoundedMinimumInFewIterations
 
     // The progress numbers go on over the solves (the contact held after the first): 0, 1, ... result.iterations.
     std::vector<std::size_t> reported;
-    FitProblem reporting = hertz_problem(curve);
+    FitProblem reporting = fitted_baseline(hertz_problem(curve));
     reporting.settings.on_iteration = [&](std::size_t iteration, double) { reported.push_back(iteration); };
     const FitResult again = fit(reporting);
     ASSERT_FALSE(reported.empty());
@@ -155,29 +161,91 @@ TEST(RecordContact, ContactHeldOnItsBoundReachesTheBoundedMinimumInFewIterations
 
     // A fit that runs out of iterations says how many it took, the number in `iterations` (it said one more: the
     // start counted, and only the last solve's).
-    FitProblem short_of_iterations = hertz_problem(curve);
+    FitProblem short_of_iterations = fitted_baseline(hertz_problem(curve));
     short_of_iterations.settings.max_iterations = 5;
     const FitResult stopped = fit(short_of_iterations);
     EXPECT_EQ(stopped.iterations, 5u);
     EXPECT_EQ(stopped.status, "did not converge in 5 iterations");
 }
 
-// A short record whose force rises from its first rows (20 rows) has no rows before contact: flagged as starting
-// in contact, and baseline = "line" (which needs those rows) is refused naming the key.
+// A short record whose force rises from its first rows (20 rows) has no rows before contact: with a fitted baseline
+// it is flagged as starting in contact, and the default baseline ("constant") and "line", which need those rows,
+// are refused naming the key: no silent fall back to a fitted baseline (before the default was "fit" and the
+// record was fitted with its baseline free).
 TEST(RecordContact, PreContactBaselineRefusesARecordThatStartsInContact) {
     FitProblem problem = hertz_problem(hertz_record({.start_depth = 1e-6, .end_depth = 1.039e-6}));
     ASSERT_EQ(problem.curves[0].baseline_rows, 0u) << problem.curves[0].estimate_note;
-    const FitResult result = fit(problem);
+    const FitResult result = fit(fitted_baseline(problem));
     EXPECT_TRUE(has_flag(result.curves[0], "starts in contact: the force rises from its first rows"))
         << flags_of(result.curves[0]);
-    problem.settings.baseline = BaselineMode::line;
-    try {
-        fit(problem);
-        ADD_FAILURE() << "no error";
-    } catch (const InvalidInput& error) {
-        EXPECT_EQ(error.key(), "fit.baseline");
-        EXPECT_NE(std::string(error.what()).find("has no rows before contact"), std::string::npos) << error.what();
+    ASSERT_EQ(problem.settings.baseline, BaselineMode::constant);  // the default
+    for (const BaselineMode mode : {BaselineMode::constant, BaselineMode::line}) {
+        problem.settings.baseline = mode;
+        try {
+            fit(problem);
+            ADD_FAILURE() << "no error";
+        } catch (const InvalidInput& error) {
+            EXPECT_EQ(error.key(), "fit.baseline");
+            EXPECT_NE(std::string(error.what()).find("has no rows before contact"), std::string::npos)
+                << error.what();
+        }
     }
+}
+
+// The baseline belongs to the rows before contact by default (spec, third wave: `baseline = "constant" | "line"`),
+// in C++ and in a case file that leaves it out: a fitted baseline is an opt-in.
+TEST(RecordContact, DefaultBaselineIsThePreContactConstant) {
+    EXPECT_EQ(FitSettings{}.baseline, BaselineMode::constant);
+    const std::string text = R"(
+[material]
+model = "elastic"
+G = 1000.0
+[indenter]
+shape = "sphere"
+R = 5e-6
+[fit]
+free = ["material.G"]
+)";
+    EXPECT_EQ(io::parse_fit_case(text, "test.toml", ".").settings.baseline, BaselineMode::constant);
+
+    // A baseline offset by 50 sigma from the rows before contact in the rise only: the default stays at the rows'
+    // mean (b0 within a few sigma / sqrt(rows)), where a fitted baseline would follow the rise.
+    Curve curve = hertz_record({});
+    for (std::size_t i = 0; i < curve.depth.size(); ++i) curve.force[i] += curve.depth[i] > 0.0 ? 50.0 * sigma : 0.0;
+    curve = make_curve("offset", curve.time, curve.depth, curve.force);
+    const FitResult result = fit(hertz_problem(curve));
+    EXPECT_NEAR(result.curves[0].baseline, 1e-9, 5.0 * sigma / std::sqrt(1000.0));
+    EXPECT_EQ(result.curves[0].baseline_error, 0.0);
+}
+
+// A record at rest and then pressed deeper (a pause at constant height, then a ramp; the JPK relaxations): the
+// force rises with the first row that moves deeper. It starts in contact (there is no approach out of contact) and
+// is flagged so; the baseline is the rest rows' mean, which takes them as unloaded. With the true contact at the
+// rest depth (no preload) G is recovered; an approach of 1 um before the contact is no start in contact.
+TEST(RecordContact, RecordAtRestThenPressedStartsInContact) {
+    const auto rest_then_ramp = [](double rest_depth) {
+        std::mt19937_64 random(11);
+        std::normal_distribution<double> normal(0.0, 1.0);
+        std::vector<double> time, depth, force;
+        for (std::size_t i = 0; i < 3000; ++i) {
+            const double t = static_cast<double>(i) * step;
+            const double d = rest_depth + (i < 500 ? 0.0 : speed * (t - 500.0 * step));
+            time.push_back(t);
+            depth.push_back(d);
+            const double hertz = d > 0.0 ? 16.0 / 3.0 * modulus * std::sqrt(radius) * std::pow(d, 1.5) : 0.0;
+            force.push_back(hertz + 1e-9 + sigma * normal(random));
+        }
+        return make_curve("rest", std::move(time), std::move(depth), std::move(force));
+    };
+    const FitResult at_rest = fit(hertz_problem(rest_then_ramp(0.0)));
+    EXPECT_TRUE(has_flag(at_rest.curves[0], "starts in contact: no approach out of contact is recorded"))
+        << flags_of(at_rest.curves[0]);
+    EXPECT_NEAR(at_rest.curves[0].baseline, 1e-9, 5.0 * sigma / std::sqrt(400.0));
+    EXPECT_NEAR(at_rest.values[0], modulus, 0.01 * modulus);
+
+    const FitResult approached = fit(hertz_problem(rest_then_ramp(-1e-6)));
+    EXPECT_FALSE(has_flag(approached.curves[0], "starts in contact")) << flags_of(approached.curves[0]);
+    EXPECT_NEAR(approached.values[0], modulus, 0.01 * modulus);
 }
 
 // fit.bounds.contact_point is honoured: a true contact at 0 with bounds [0.5, 1.5] um ends at the lower bound, flagged.
