@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "monotone_root.hpp"
+#include "mdr/drivers/monotone_root.hpp"
 #include "tangential_stepping.hpp"
 
 namespace mdr::drivers {

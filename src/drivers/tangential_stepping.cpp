@@ -6,7 +6,7 @@
 
 #include "mdr/contact/stress.hpp"
 #include "mdr/error.hpp"
-#include "monotone_root.hpp"
+#include "mdr/drivers/monotone_root.hpp"
 
 namespace mdr::drivers {
 namespace {

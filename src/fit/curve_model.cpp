@@ -119,6 +119,25 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
             return model;
         }
     }
+    // A force-driven run with a Prony material: the band model on the drivers' own time grid, the depth solved at
+    // each step as they solve it (band_depths), the same depths.
+    if (!depth_driven && band_model_applies(model_case.material) && !model_case.indenter->is_flat_punch()) {
+        const auto numerics = drivers::resolve_numerics(model_case);
+        const auto nodes = drivers::indentation_grid(model_case, numerics);
+        const double spacing = numerics.half_width / static_cast<double>(elements);
+        if (auto band = band_depths(model_case.material, *model_case.indenter, spacing, elements, nodes,
+                                    check_interrupt)) {
+            ModelValues model;
+            model.band = true;
+            model.values.reserve(prepared.used.size());
+            std::size_t node = 0;
+            for (std::size_t i : prepared.used) {  // the last node of a measured time, as the drivers' rows below
+                while (node + 1 < nodes.size() && nodes[node + 1].time <= curve.time[i]) ++node;
+                model.values.push_back(band->depth[node] + contact_depth);
+            }
+            return model;
+        }
+    }
     drivers::ProgressObserver progress;
     if (check_interrupt) progress = [&](double) { check_interrupt(); };
     const auto result = drivers::run_case(model_case, progress);

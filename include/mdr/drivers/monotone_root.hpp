@@ -1,6 +1,8 @@
 #pragma once
-// The root finder the drivers share: a continuous, non-decreasing (piecewise-smooth) function of one variable,
-// such as the foundation's force over the depth or the tangential layer's force over the tangential increment.
+/// \file
+/// The root finder the drivers (and the fit's band model) share: a continuous, non-decreasing (piecewise-smooth)
+/// function of one variable, such as the foundation's force over the depth or the tangential layer's force over the
+/// tangential increment.
 
 #include <algorithm>
 #include <cmath>
