@@ -67,7 +67,7 @@ public:
         return force_per_stress * spacing_ * (sum + folded_stress);
     }
 
-    // The force step(t0, d0, d1) would give, without changing the state (the drivers' Foundation::trial_force): the
+    // The force step(t0, t1, d0, d1) would give, without changing the state (the drivers' Foundation::trial_force): the
     // folded elements beyond the band of d1 are unfolded in a copy, the others stepped in a copy.
     double force(double t0, double d0, double d1) const {
         const double limit = band_limit(std::max(peak_, d1), d1);
