@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "mdr/drivers/monotone_root.hpp"
+#include "mdr/numerics/monotone_root.hpp"
 #include "tangential_stepping.hpp"
 
 namespace mdr::drivers {
@@ -42,7 +42,8 @@ double ObliqueStepper::solve_increment(double spring, double anchor, double time
         start -= f_start / slope;
         f_start = residual(start);
     }
-    return monotone_root(residual, start, f_start, scale, tolerance, 1e-15 * std::max(std::abs(start), scale), false);
+    return numerics::monotone_root(residual, start, f_start, scale, tolerance, 1e-15 * std::max(std::abs(start), scale),
+                                   false);
 }
 
 std::span<const double> ObliqueStepper::normal_line_loads() {

@@ -6,7 +6,7 @@
 
 #include "mdr/contact/stress.hpp"
 #include "mdr/error.hpp"
-#include "mdr/drivers/monotone_root.hpp"
+#include "mdr/numerics/monotone_root.hpp"
 
 namespace mdr::drivers {
 namespace {
@@ -33,8 +33,8 @@ double TangentialStepper::solve_increment(double target, std::span<const double>
     const auto residual = [&](double increment) { return layer_.trial_force(increment, q, contact) - target; };
     const double tolerance = 1e-13 * std::max(std::abs(target), layer_.sliding_force(q, contact));
     double step = std::max({std::abs(last_increment_), std::abs(displacement_) * 1e-6, 1e-12 * foundation_.half_width()});
-    return monotone_root(residual, last_increment_, residual(last_increment_), step, tolerance,
-                         1e-15 * std::max(std::abs(last_increment_), step), false);
+    return numerics::monotone_root(residual, last_increment_, residual(last_increment_), step, tolerance,
+                                   1e-15 * std::max(std::abs(last_increment_), step), false);
 }
 
 void TangentialStepper::step(const foundation::StepCoefficients& coefficients, double time_start, double time_end) {

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mdr/drivers/monotone_root.hpp"
+#include "mdr/numerics/monotone_root.hpp"
 
 namespace mdr::drivers {
 
@@ -14,7 +14,7 @@ namespace mdr::drivers {
 /// force for a depth going linearly from the step's start to d and `slope` is dF/dd while no element enters or
 /// leaves contact. F is continuous and non-decreasing, so after up to four Newton corrections with `slope` (exact
 /// while the contact set does not change, so it usually ends after one) the root is bracketed from there in steps of
-/// `scale` and found by Illinois regula falsi (monotone_root) to 1e-13 of the target. With no spring and target 0
+/// `scale` and found by Illinois regula falsi (numerics::monotone_root) to 1e-13 of the target. With no spring and target 0
 /// the force has a plateau: the largest depth without force is returned.
 template <typename Force>
 double solve_force_balance(const Force& force, double slope, double guess, double scale, double target, double spring,
@@ -30,8 +30,8 @@ double solve_force_balance(const Force& force, double slope, double guess, doubl
         start -= f_start / newton_slope;
         f_start = residual(start);
     }
-    return monotone_root(residual, start, f_start, scale, force_tolerance, 1e-15 * std::max(std::abs(start), scale),
-                         plateau);
+    return numerics::monotone_root(residual, start, f_start, scale, force_tolerance,
+                                   1e-15 * std::max(std::abs(start), scale), plateau);
 }
 
 }  // namespace mdr::drivers

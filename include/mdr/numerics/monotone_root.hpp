@@ -1,14 +1,14 @@
 #pragma once
 /// \file
-/// The root finder the drivers (and the fit's band model) share: a continuous, non-decreasing (piecewise-smooth)
-/// function of one variable, such as the foundation's force over the depth or the tangential layer's force over the
-/// tangential increment.
+/// The root finder the drivers and the layer contact share: a continuous, non-decreasing (piecewise-smooth) function
+/// of one variable, such as the foundation's force over the depth, the tangential layer's force over the tangential
+/// increment or a layer's depth over its contact radius.
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace mdr::drivers {
+namespace mdr::numerics {
 
 /// The x with f(x) = 0, from `start` (f(start) = f_start): the bracket f(lower) <= 0 < f(upper) is grown from
 /// `start` in doubling steps of `step`, then narrowed by Illinois regula falsi (exact on a linear piece) until
@@ -64,4 +64,4 @@ double monotone_root(const Function& f, double start, double f_start, double ste
     return plateau ? lower : lower - f_lower * (upper - lower) / (f_upper - f_lower);
 }
 
-}  // namespace mdr::drivers
+}  // namespace mdr::numerics
