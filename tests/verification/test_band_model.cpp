@@ -482,7 +482,7 @@ drivers::ContactCase force_case(const rheology::Rheology& material,
 }
 
 // The element model's and the band model's depths at the points with a force > 0 (the last row of each time);
-// their largest difference relative to the peak depth.
+// their largest difference relative to the peak depth. Prints the band model's share of the element steps.
 double force_driven_difference(const drivers::ContactCase& contact_case, const History& history) {
     const auto numerics = drivers::resolve_numerics(contact_case);
     const auto nodes = drivers::indentation_grid(contact_case, numerics);
@@ -502,6 +502,8 @@ double force_driven_difference(const drivers::ContactCase& contact_case, const H
         difference = std::max(difference, std::abs(band->depth[row] - result.depth[row]));
         deepest = std::max(deepest, std::abs(result.depth[row]));
     }
+    const double all = static_cast<double>(elements) * static_cast<double>(nodes.size());
+    std::cout << "element steps " << static_cast<double>(band->element_steps) / all << " of the element model's; ";
     return difference / deepest;
 }
 
