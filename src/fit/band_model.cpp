@@ -68,29 +68,25 @@ public:
     }
 
     // The force step(t0, t1, d0, d1) would give, without changing the state (the drivers' Foundation::trial_force): the
-    // folded elements beyond the band of d1 are unfolded in a copy, the others stepped in a copy.
+    // folded elements beyond the band of d1 are unfolded in a copy, the others' stresses taken without stepping them.
     double force(double t0, double d0, double d1) const {
         const double limit = band_limit(std::max(peak_, d1), d1);
         std::copy(folded_memory_.begin(), folded_memory_.end(), trial_memory_.begin());
         double profile = folded_profile_;
         std::size_t folded = folded_;
         double sum = 0.0;
-        const auto step_copy = [&](std::size_t i, double w, double stress, unsigned char contact, const double* h) {
-            std::copy(h, h + branches_, trial_element_.begin());
-            return step_element(g_[i], d0, d1, w, stress, contact, trial_element_.data());
-        };
         while (folded > 0 && !(g_[folded - 1] <= limit)) {
             const std::size_t i = --folded;
             const double stress = unfolded_state(i, t0, d0, trial_unfolded_.data());
             for (std::size_t k = 0; k < branches_; ++k) trial_memory_[k] -= trial_unfolded_[k];
             profile -= g_[i];
-            sum += step_copy(i, d0 - g_[i], stress, 1, trial_unfolded_.data());
+            sum += trial_stress(g_[i], d0, d1, d0 - g_[i], stress, 1, trial_unfolded_.data());
         }
         const double deepest = std::max(d0, d1);
         std::size_t touched = touched_;
         while (touched < g_.size() && g_[touched] < deepest) ++touched;
         for (std::size_t i = folded_; i < touched; ++i) {
-            sum += step_copy(i, w_[i], stress_[i], contact_[i], h_.data() + i * branches_);
+            sum += trial_stress(g_[i], d0, d1, w_[i], stress_[i], contact_[i], h_.data() + i * branches_);
         }
         // With none folded the sums are 0, not their round-off (a force of 0 must be 0: the plateau of the solve).
         if (folded == 0) return force_per_stress * spacing_ * sum;
@@ -170,28 +166,49 @@ private:
         }
     }
 
-    // One element's step over the prepared step (foundation.cpp: plain_step, evaluate, split_stress) from its state
-    // w, stress, contact flag and memories h, updated in place; returns its stress at the end.
-    double step_element(double g, double d0, double d1, double& w, double& stress_end, unsigned char& contact_flag,
-                        double* h) const {
+    // An element's step over the prepared step as if no entry or exit split it (foundation.cpp: plain_step).
+    struct PlainStep {
+        double increment;        // dw
+        double stress;           // sigma at the end
+        bool split;              // an exit or entry happens inside the step
+        double contact_stress;   // sigma at the end if it stayed in contact
+        double free_increment;   // dw if it were force-free
+    };
+    PlainStep plain_step(double g, double d1, double w, bool contact, const double* h) const {
         const auto& terms = material_.terms();
-        const double g_inf = material_.equilibrium_modulus();
-        double relaxed = g_inf * w;
+        double relaxed = material_.equilibrium_modulus() * w;
         for (std::size_t k = 0; k < branches_; ++k) relaxed += terms[k].modulus * coefficients_.decay[k] * h[k];
         const double stiffness = coefficients_.stiffness;
-        const bool contact = contact_flag != 0;
         const double contact_increment = d1 - g - w;
         const double contact_stress = relaxed + stiffness * contact_increment;
         const double free_increment = -relaxed / stiffness;
         const double gap_end = contact_increment - free_increment;
-        const bool split = contact ? !(contact_stress >= 0.0) : !(gap_end <= 0.0);
-        if (!split) {
-            const double increment = contact ? contact_increment : free_increment;
+        return {contact ? contact_increment : free_increment, contact ? contact_stress : 0.0,
+                contact ? !(contact_stress >= 0.0) : !(gap_end <= 0.0), contact_stress, free_increment};
+    }
+
+    // The stress step_element would give, without changing the element (its memories are copied only for a split).
+    double trial_stress(double g, double d0, double d1, double w, double stress, unsigned char contact,
+                        const double* h) const {
+        const PlainStep plain = plain_step(g, d1, w, contact != 0, h);
+        if (!plain.split) return plain.stress;
+        std::copy(h, h + branches_, trial_element_.begin());
+        return step_element(g, d0, d1, w, stress, contact, trial_element_.data());
+    }
+
+    // One element's step over the prepared step (foundation.cpp: plain_step, evaluate, split_stress) from its state
+    // w, stress, contact flag and memories h, updated in place; returns its stress at the end.
+    double step_element(double g, double d0, double d1, double& w, double& stress_end, unsigned char& contact_flag,
+                        double* h) const {
+        const bool contact = contact_flag != 0;
+        const PlainStep plain = plain_step(g, d1, w, contact, h);
+        const double contact_stress = plain.contact_stress, free_increment = plain.free_increment;
+        if (!plain.split) {
             for (std::size_t k = 0; k < branches_; ++k) {
-                h[k] = coefficients_.decay[k] * h[k] + coefficients_.gain[k] * increment;
+                h[k] = coefficients_.decay[k] * h[k] + coefficients_.gain[k] * plain.increment;
             }
-            w += increment;
-            stress_end = contact ? contact_stress : 0.0;
+            w += plain.increment;
+            stress_end = plain.stress;
             return stress_end;
         }
         const double dt = coefficients_.time_step;
