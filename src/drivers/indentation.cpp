@@ -37,25 +37,13 @@ std::optional<double> next_rate(const foundation::Foundation& foundation, std::o
 
 }  // namespace
 
-IndentationResult run_indentation(const ContactCase& contact_case, const ProgressObserver& progress,
-                                  const StepObservers& extra_observers) {
-    IndentationResult result;
-    result.numerics = resolve_numerics(contact_case);
-    const auto& numerics = result.numerics;
-    const auto& material = contact_case.material;
-    const auto& indenter = *contact_case.indenter;
-    foundation::Foundation foundation(material, indenter,
-                                      numerics.half_width / static_cast<double>(numerics.elements), numerics.elements);
+std::vector<GridNode> indentation_grid(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
     std::vector<double> cuts = contact_case.snapshots;
-    std::optional<TangentialStepper> tangential;
     if (contact_case.tangential) {
-        tangential.emplace(*contact_case.tangential, material, foundation, contact_case.end_time);
         const auto breakpoints = contact_case.tangential->load.breakpoints();
         cuts.insert(cuts.end(), breakpoints.begin(), breakpoints.end());
     }
-    std::optional<CycleMeasure> cycle;
     if (const auto& harmonic = contact_case.load.harmonic) {
-        cycle.emplace(*harmonic, contact_case.end_time);
         const auto breakpoints = harmonic->breakpoints();
         cuts.insert(cuts.end(), breakpoints.begin(), breakpoints.end());
         if (const auto last = harmonic->last_full_cycle(contact_case.end_time)) {
@@ -68,11 +56,7 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
             if (time <= contact_case.end_time) cuts.push_back(time);  // each reading on a node of its own
         }
     }
-    std::optional<PausedBase> paused;
-    if (!contact_case.force_pauses.empty()) {
-        paused.emplace(contact_case.force_pauses, *contact_case.spring_constant);
-        for (const ForcePause& pause : contact_case.force_pauses) cuts.insert(cuts.end(), {pause.start, pause.end});
-    }
+    for (const ForcePause& pause : contact_case.force_pauses) cuts.insert(cuts.end(), {pause.start, pause.end});
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
     auto nodes = make_time_grid(*contact_case.load.history, contact_case.end_time, numerics.time_step,
@@ -89,6 +73,29 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
     if (const auto& harmonic = contact_case.load.harmonic) {
         for (auto& node : nodes) node.value += harmonic->value(node.time);
     }
+    return nodes;
+}
+
+IndentationResult run_indentation(const ContactCase& contact_case, const ProgressObserver& progress,
+                                  const StepObservers& extra_observers) {
+    IndentationResult result;
+    result.numerics = resolve_numerics(contact_case);
+    const auto& numerics = result.numerics;
+    const auto& material = contact_case.material;
+    const auto& indenter = *contact_case.indenter;
+    foundation::Foundation foundation(material, indenter,
+                                      numerics.half_width / static_cast<double>(numerics.elements), numerics.elements);
+    std::optional<TangentialStepper> tangential;
+    if (contact_case.tangential) {
+        tangential.emplace(*contact_case.tangential, material, foundation, contact_case.end_time);
+    }
+    std::optional<CycleMeasure> cycle;
+    if (const auto& harmonic = contact_case.load.harmonic) cycle.emplace(*harmonic, contact_case.end_time);
+    const auto& shore = contact_case.shore;
+    std::optional<PausedBase> paused;
+    if (!contact_case.force_pauses.empty()) paused.emplace(contact_case.force_pauses, *contact_case.spring_constant);
+    const auto nodes = indentation_grid(contact_case, numerics);
+    const bool spring = contact_case.control == Control::spring;
     CoefficientCache cache(material);
     const bool has_dashpot = material.viscosity() > 0.0;
     const double depth_scale = std::isfinite(indenter.equivalent(numerics.half_width))

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "mdr/contact/stress.hpp"
-#include "mdr/numerics/monotone_root.hpp"
+#include "mdr/drivers/depth_solve.hpp"
 
 namespace mdr::drivers {
 namespace {
@@ -23,23 +23,8 @@ const foundation::StepCoefficients& CoefficientCache::get(double time_step) {
 
 double solve_depth(const foundation::Foundation& foundation, double depth_start, double guess, double scale,
                    double target, double spring, double anchor) {
-    const auto residual = [&](double depth) {
-        return foundation.trial_force(depth_start, depth) + spring * (depth - anchor) - target;
-    };
-    const bool plateau = spring == 0.0 && target == 0.0;
-    const double force_tolerance = 1e-13 * std::max(std::abs(target), spring * scale);
-    double start = guess;
-    double f_start = residual(start);
-    // Newton with the slope of the current contact set: exact while no element enters or leaves, so it usually
-    // ends after one correction. Otherwise the bracket below takes over from where it got to.
-    const double slope = foundation.force_slope() + spring;
-    for (int newton = 0; newton < 4 && !plateau && slope > 0.0; ++newton) {
-        if (std::abs(f_start) <= force_tolerance) return start;
-        start -= f_start / slope;
-        f_start = residual(start);
-    }
-    return numerics::monotone_root(residual, start, f_start, scale, force_tolerance,
-                                   1e-15 * std::max(std::abs(start), scale), plateau);
+    return solve_force_balance([&](double depth) { return foundation.trial_force(depth_start, depth); },
+                               foundation.force_slope(), guess, scale, target, spring, anchor);
 }
 
 Snapshot take_snapshot(const foundation::Foundation& foundation, const profile::Profile& indenter, double time) {

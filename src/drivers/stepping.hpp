@@ -23,9 +23,8 @@ private:
 
 /// The depth d at the end of the prepared step with F(d) + spring (d - anchor) = target, F the foundation's
 /// force for a depth going linearly from `depth_start` to d (eq. 19 solved on the foundation itself; the spring
-/// term carries the inertia of an impact). F is continuous and non-decreasing, so the root is bracketed from
-/// `guess` in steps of `scale` and found by Illinois regula falsi to 1e-13. With no spring and target 0 the
-/// force has a plateau: the largest depth without force is returned.
+/// term carries the inertia of an impact), by solve_force_balance (depth_solve.hpp) from `guess` in steps of
+/// `scale`.
 double solve_depth(const foundation::Foundation& foundation, double depth_start, double guess, double scale,
                    double target, double spring, double anchor);
 

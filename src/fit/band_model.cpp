@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mdr/drivers/depth_solve.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 
@@ -20,7 +21,8 @@ public:
     BandRun(const rheology::Rheology& material, const profile::Profile& indenter, double spacing, std::size_t count)
         : material_(material), spacing_(spacing), branches_(material.terms().size()), g_(count), w_(count, 0.0),
           stress_(count, 0.0), contact_(count, 0), h_(count * branches_, 0.0), fold_time_(count, 0.0),
-          running_(branches_, 0.0), folded_memory_(branches_, 0.0), scratch_(branches_, 0.0) {
+          running_(branches_, 0.0), folded_memory_(branches_, 0.0), scratch_(branches_, 0.0),
+          trial_memory_(branches_, 0.0), trial_element_(branches_, 0.0), trial_unfolded_(branches_, 0.0) {
         for (std::size_t i = 0; i < count; ++i) g_[i] = indenter.equivalent((static_cast<double>(i) + 0.5) * spacing);
         beyond_ = foundation::deepest_depth(indenter, spacing * static_cast<double>(count));
         double instantaneous = material.equilibrium_modulus();
@@ -28,24 +30,28 @@ public:
         ratio_ = instantaneous / material.equilibrium_modulus();
     }
 
-    // The total force after a step over [t0, t1] with the depth linear from d0 to d1; nullopt when the depth
-    // reaches beyond the last element.
+    // Prepares a step of length `time_step` (call before force and step).
+    void prepare(double time_step) {
+        // Measured times are uniform up to round-off: a step within 1e-12 of the last one keeps its coefficients
+        // (their change is below 1e-12 relative).
+        if (!(std::abs(time_step - coefficients_.time_step) <= 1e-12 * time_step) || coefficients_.decay.empty()) {
+            foundation::fill_step_coefficients(material_, time_step, coefficients_);
+        }
+    }
+
+    // The total force after the prepared step over [t0, t1] with the depth linear from d0 to d1; nullopt when the
+    // depth reaches beyond the last element.
     std::optional<double> step(double t0, double t1, double d0, double d1) {
         const double deepest = std::max(d0, d1);
         if (!(deepest <= beyond_)) return std::nullopt;
-        // Measured times are uniform up to round-off: a step within 1e-12 of the last one keeps its coefficients
-        // (their change is below 1e-12 relative).
-        if (!(std::abs(t1 - t0 - coefficients_.time_step) <= 1e-12 * (t1 - t0)) || coefficients_.decay.empty()) {
-            foundation::fill_step_coefficients(material_, t1 - t0, coefficients_);
-        }
         peak_ = std::max(peak_, d1);
-        // Below `limit` a folded element stays in contact (band_model.hpp); the margin covers the round-off of its
-        // stress, so that the element model's own test (sigma >= 0) cannot disagree.
-        const double limit = peak_ - ratio_ * (peak_ - d1) - 1e-9 * peak_;
+        const double limit = band_limit(peak_, d1);
         while (folded_ > 0 && !(g_[folded_ - 1] <= limit)) unfold(t0, d0);
         while (touched_ < g_.size() && g_[touched_] < deepest) ++touched_;
         double sum = 0.0;
-        for (std::size_t i = folded_; i < touched_; ++i) sum += step_element(i, d0, d1);
+        for (std::size_t i = folded_; i < touched_; ++i) {
+            sum += step_element(g_[i], d0, d1, w_[i], stress_[i], contact_[i], h_.data() + i * branches_);
+        }
         element_steps_ += touched_ - folded_;
         const double g_inf = material_.equilibrium_modulus();
         const auto& terms = material_.terms();
@@ -61,9 +67,56 @@ public:
         return force_per_stress * spacing_ * (sum + folded_stress);
     }
 
+    // The force step(t0, t1, d0, d1) would give, without changing the state (the drivers' Foundation::trial_force): the
+    // folded elements beyond the band of d1 are unfolded in a copy, the others' stresses taken without stepping them.
+    double force(double t0, double d0, double d1) const {
+        const double limit = band_limit(std::max(peak_, d1), d1);
+        std::copy(folded_memory_.begin(), folded_memory_.end(), trial_memory_.begin());
+        double profile = folded_profile_;
+        std::size_t folded = folded_;
+        double sum = 0.0;
+        while (folded > 0 && !(g_[folded - 1] <= limit)) {
+            const std::size_t i = --folded;
+            const double stress = unfolded_state(i, t0, d0, trial_unfolded_.data());
+            for (std::size_t k = 0; k < branches_; ++k) trial_memory_[k] -= trial_unfolded_[k];
+            profile -= g_[i];
+            sum += trial_stress(g_[i], d0, d1, d0 - g_[i], stress, 1, trial_unfolded_.data());
+        }
+        const double deepest = std::max(d0, d1);
+        std::size_t touched = touched_;
+        while (touched < g_.size() && g_[touched] < deepest) ++touched;
+        for (std::size_t i = folded_; i < touched; ++i) {
+            sum += trial_stress(g_[i], d0, d1, w_[i], stress_[i], contact_[i], h_.data() + i * branches_);
+        }
+        // With none folded the sums are 0, not their round-off (a force of 0 must be 0: the plateau of the solve).
+        if (folded == 0) return force_per_stress * spacing_ * sum;
+        const auto& terms = material_.terms();
+        const double count = static_cast<double>(folded);
+        double folded_stress = material_.equilibrium_modulus() * (count * d1 - profile);
+        for (std::size_t k = 0; k < branches_; ++k) {
+            const double memory = coefficients_.decay[k] * trial_memory_[k] + coefficients_.gain[k] * count * (d1 - d0);
+            folded_stress += terms[k].modulus * memory;
+        }
+        return force_per_stress * spacing_ * (sum + folded_stress);
+    }
+
+    // dF/dd of the prepared step while no element enters or leaves contact (Foundation::force_slope).
+    double force_slope() const {
+        std::size_t contacts = folded_;
+        for (std::size_t i = folded_; i < touched_; ++i) contacts += contact_[i];
+        return force_per_stress * spacing_ * coefficients_.stiffness * static_cast<double>(contacts);
+    }
+
+    // The largest depth any element can take: the last element's g (or the end of a tabulated profile).
+    double beyond() const { return beyond_; }
+
     std::size_t element_steps() const { return element_steps_; }
 
 private:
+    // Below this g a folded element stays in contact at depth d with the running maximum `peak` (band_model.hpp); the
+    // margin covers the round-off of its stress, so that the element model's own test (sigma >= 0) cannot disagree.
+    double band_limit(double peak, double depth) const { return peak - ratio_ * (peak - depth) - 1e-9 * peak; }
+
     // Element i follows the indenter from here on for sure (band_model.hpp): in contact, g <= limit and every
     // h_k >= d - D.
     bool foldable(std::size_t i, double depth, double limit) const {
@@ -85,19 +138,26 @@ private:
         fold_time_[i] = time;
     }
 
-    // Unfolds the last folded element with its state at time t, depth d (in contact: w = d - g).
-    void unfold(double time, double depth) {
-        const std::size_t i = --folded_;
+    // The state of folded element i at time t, depth d (in contact: w = d - g): its memories into `memory`, its
+    // stress returned.
+    double unfolded_state(std::size_t i, double time, double depth, double* memory) const {
         const auto& terms = material_.terms();
         double stress = material_.equilibrium_modulus() * (depth - g_[i]);
         for (std::size_t k = 0; k < branches_; ++k) {
-            double& h = h_[i * branches_ + k];
-            h = running_[k] + std::exp(-(time - fold_time_[i]) / terms[k].relaxation_time) * h;
-            folded_memory_[k] -= h;
-            stress += terms[k].modulus * h;
+            memory[k] = running_[k] + std::exp(-(time - fold_time_[i]) / terms[k].relaxation_time) *
+                                          h_[i * branches_ + k];
+            stress += terms[k].modulus * memory[k];
         }
+        return stress;
+    }
+
+    // Unfolds the last folded element with its state at time t, depth d.
+    void unfold(double time, double depth) {
+        const std::size_t i = --folded_;
+        double* h = h_.data() + i * branches_;
+        stress_[i] = unfolded_state(i, time, depth, h);  // in place: each h_k is read before it is written
+        for (std::size_t k = 0; k < branches_; ++k) folded_memory_[k] -= h[k];
         w_[i] = depth - g_[i];
-        stress_[i] = stress;
         contact_[i] = 1;
         folded_profile_ -= g_[i];
         if (folded_ == 0) {  // no drift of the sums' round-off into a later fold
@@ -106,66 +166,86 @@ private:
         }
     }
 
-    // One element's step (foundation.cpp: plain_step, evaluate, split_stress); returns its stress at the end.
-    double step_element(std::size_t i, double d0, double d1) {
+    // An element's step over the prepared step as if no entry or exit split it (foundation.cpp: plain_step).
+    struct PlainStep {
+        double increment;        // dw
+        double stress;           // sigma at the end
+        bool split;              // an exit or entry happens inside the step
+        double contact_stress;   // sigma at the end if it stayed in contact
+        double free_increment;   // dw if it were force-free
+    };
+    PlainStep plain_step(double g, double d1, double w, bool contact, const double* h) const {
         const auto& terms = material_.terms();
-        const double g_inf = material_.equilibrium_modulus();
-        double* h = h_.data() + i * branches_;
-        double relaxed = g_inf * w_[i];
+        double relaxed = material_.equilibrium_modulus() * w;
         for (std::size_t k = 0; k < branches_; ++k) relaxed += terms[k].modulus * coefficients_.decay[k] * h[k];
         const double stiffness = coefficients_.stiffness;
-        const bool contact = contact_[i] != 0;
-        const double contact_increment = d1 - g_[i] - w_[i];
+        const double contact_increment = d1 - g - w;
         const double contact_stress = relaxed + stiffness * contact_increment;
         const double free_increment = -relaxed / stiffness;
         const double gap_end = contact_increment - free_increment;
-        const bool split = contact ? !(contact_stress >= 0.0) : !(gap_end <= 0.0);
-        if (!split) {
-            const double increment = contact ? contact_increment : free_increment;
+        return {contact ? contact_increment : free_increment, contact ? contact_stress : 0.0,
+                contact ? !(contact_stress >= 0.0) : !(gap_end <= 0.0), contact_stress, free_increment};
+    }
+
+    // The stress step_element would give, without changing the element (its memories are copied only for a split).
+    double trial_stress(double g, double d0, double d1, double w, double stress, unsigned char contact,
+                        const double* h) const {
+        const PlainStep plain = plain_step(g, d1, w, contact != 0, h);
+        if (!plain.split) return plain.stress;
+        std::copy(h, h + branches_, trial_element_.begin());
+        return step_element(g, d0, d1, w, stress, contact, trial_element_.data());
+    }
+
+    // One element's step over the prepared step (foundation.cpp: plain_step, evaluate, split_stress) from its state
+    // w, stress, contact flag and memories h, updated in place; returns its stress at the end.
+    double step_element(double g, double d0, double d1, double& w, double& stress_end, unsigned char& contact_flag,
+                        double* h) const {
+        const bool contact = contact_flag != 0;
+        const PlainStep plain = plain_step(g, d1, w, contact, h);
+        const double contact_stress = plain.contact_stress, free_increment = plain.free_increment;
+        if (!plain.split) {
             for (std::size_t k = 0; k < branches_; ++k) {
-                h[k] = coefficients_.decay[k] * h[k] + coefficients_.gain[k] * increment;
+                h[k] = coefficients_.decay[k] * h[k] + coefficients_.gain[k] * plain.increment;
             }
-            w_[i] += increment;
-            stress_[i] = contact ? contact_stress : 0.0;
-            return stress_[i];
+            w += plain.increment;
+            stress_end = plain.stress;
+            return stress_end;
         }
         const double dt = coefficients_.time_step;
         double stress = 0.0;
         if (contact) {  // exit (eq. 20): the force crosses zero inside the step
-            const double before = stress_[i];
+            const double before = stress_end;
             const double fraction = before > 0.0 ? before / (before - contact_stress) : 0.0;
-            contact_substep(fraction * dt, d0 + fraction * (d1 - d0) - g_[i], i);
-            free_substep(dt - fraction * dt, i);
+            contact_substep(fraction * dt, d0 + fraction * (d1 - d0) - g, w, h);
+            free_substep(dt - fraction * dt, w, h);
         } else {  // entry (eq. 14): the indenter reaches the creeping surface inside the step
-            const double gap_start = std::min(d0 - g_[i] - w_[i], 0.0);
-            const double gap_at_end = d1 - g_[i] - (w_[i] + free_increment);
+            const double gap_start = std::min(d0 - g - w, 0.0);
+            const double gap_at_end = d1 - g - (w + free_increment);
             const double fraction = gap_start / (gap_start - gap_at_end);
-            free_substep(fraction * dt, i);
-            stress = std::max(contact_substep(dt - fraction * dt, d1 - g_[i], i), 0.0);
+            free_substep(fraction * dt, w, h);
+            stress = std::max(contact_substep(dt - fraction * dt, d1 - g, w, h), 0.0);
         }
-        contact_[i] = contact ? 0 : 1;
-        stress_[i] = stress;
+        contact_flag = contact ? 0 : 1;
+        stress_end = stress;
         return stress;
     }
 
-    double contact_substep(double time_step, double displacement, std::size_t i) {
+    double contact_substep(double time_step, double displacement, double& w, double* h) const {
         const auto& terms = material_.terms();
-        double* h = h_.data() + i * branches_;
-        const double dw = displacement - w_[i];
+        const double dw = displacement - w;
         double stress = material_.equilibrium_modulus() * displacement;
         for (std::size_t k = 0; k < branches_; ++k) {
             const double ratio = time_step / terms[k].relaxation_time;
             h[k] = std::exp(-ratio) * h[k] + foundation::branch_gain(ratio) * dw;
             stress += terms[k].modulus * h[k];
         }
-        w_[i] = displacement;
+        w = displacement;
         return stress;
     }
 
-    void free_substep(double time_step, std::size_t i) {
+    void free_substep(double time_step, double& w, double* h) const {
         const auto& terms = material_.terms();
-        double* h = h_.data() + i * branches_;
-        double relaxed = material_.equilibrium_modulus() * w_[i];
+        double relaxed = material_.equilibrium_modulus() * w;
         double stiffness = material_.equilibrium_modulus();
         for (std::size_t k = 0; k < branches_; ++k) {
             const double ratio = time_step / terms[k].relaxation_time;
@@ -176,7 +256,7 @@ private:
         }
         const double dw = -relaxed / stiffness;
         for (std::size_t k = 0; k < branches_; ++k) h[k] += scratch_[k] * dw;
-        w_[i] += dw;
+        w += dw;
     }
 
     const rheology::Rheology& material_;
@@ -188,7 +268,10 @@ private:
     std::vector<double> fold_time_;  // when a folded element was folded
     std::vector<double> running_;    // Q_k: the memory of an element that followed the indenter from the start
     std::vector<double> folded_memory_;  // H_k = sum of the folded elements' h_k
-    std::vector<double> scratch_;
+    mutable std::vector<double> scratch_;        // a free sub-step's gains B_k
+    mutable std::vector<double> trial_memory_;   // force(): the folded elements' H_k after the trial's unfolds
+    mutable std::vector<double> trial_element_;  // force(): one element's h_k, stepped in a copy
+    mutable std::vector<double> trial_unfolded_; // force(): an unfolded element's h_k
     double folded_profile_ = 0.0;    // sum of the folded elements' g
     std::size_t folded_ = 0, touched_ = 0, element_steps_ = 0;
     double peak_ = 0.0, ratio_ = 1.0, beyond_ = 0.0;
@@ -213,15 +296,44 @@ std::optional<BandResponse> band_forces(const rheology::Rheology& material, cons
     BandRun run(material, indenter, spacing, count);
     BandResponse response{std::vector<double>(time.size(), 0.0), 0};
     if (depth.front() > 0.0) {  // a jump at the first time
+        run.prepare(0.0);
         const auto force = run.step(time.front(), time.front(), 0.0, depth.front());
         if (!force) return std::nullopt;
         response.force.front() = *force;
     }
     for (std::size_t i = 1; i < time.size(); ++i) {
         if (check_interrupt && i % 4096 == 0) check_interrupt();
+        run.prepare(time[i] - time[i - 1]);
         const auto force = run.step(time[i - 1], time[i], depth[i - 1], depth[i]);
         if (!force) return std::nullopt;
         response.force[i] = *force;
+    }
+    response.element_steps = run.element_steps();
+    return response;
+}
+
+std::optional<BandCreep> band_depths(const rheology::Rheology& material, const profile::Profile& indenter,
+                                     double spacing, std::size_t count, const std::vector<drivers::GridNode>& nodes,
+                                     const std::function<void()>& check_interrupt) {
+    if (!band_model_applies(material) || nodes.empty() || count == 0) return std::nullopt;
+    if (!foundation::state_fits(count, material.terms().size())) return std::nullopt;
+    BandRun run(material, indenter, spacing, count);
+    BandCreep response{std::vector<double>(nodes.size(), 0.0), 0};
+    // The drivers' force-controlled step (indentation.cpp): F(d) = max(F_n, 0) solved from the extrapolated guess.
+    double depth = 0.0, previous = 0.0;
+    for (std::size_t n = 1; n < nodes.size(); ++n) {
+        if (check_interrupt && n % 4096 == 0) check_interrupt();
+        const double t0 = nodes[n - 1].time, t1 = nodes[n].time;
+        run.prepare(t1 - t0);
+        const double guess = depth + (depth - previous);
+        const double scale = std::max(std::abs(depth - previous), 1e-6 * run.beyond());
+        const double solved = drivers::solve_force_balance([&](double d) { return run.force(t0, depth, d); },
+                                                           run.force_slope(), guess, scale,
+                                                           std::max(nodes[n].value, 0.0), 0.0, 0.0);
+        if (!run.step(t0, t1, depth, solved)) return std::nullopt;
+        previous = depth;
+        depth = solved;
+        response.depth[n] = depth;
     }
     response.element_steps = run.element_steps();
     return response;

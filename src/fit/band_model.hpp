@@ -17,12 +17,17 @@
 /// memory of an element that followed the indenter from the undeformed state: when L falls below its g (a deeper
 /// dip), it is unfolded with its exact state and stepped again. The other elements take the foundation's steps,
 /// entry and exit located inside the step as there.
+///
+/// Under force control (band_depths) each step's depth is solved as the drivers solve it (solve_force_balance on the
+/// force of a trial step): a trial depth below the band of a folded element unfolds it in a copy, so that every
+/// trial force is the element model's.
 
 #include <cstddef>
 #include <functional>
 #include <optional>
 #include <vector>
 
+#include "mdr/drivers/load_history.hpp"
 #include "mdr/profile/profile.hpp"
 #include "mdr/rheology/rheology.hpp"
 
@@ -48,5 +53,21 @@ std::optional<BandResponse> band_forces(const rheology::Rheology& material, cons
                                         double spacing, std::size_t count, const std::vector<double>& time,
                                         const std::vector<double>& depth,
                                         const std::function<void()>& check_interrupt = {});
+
+/// What the band model gives for one force history.
+struct BandCreep {
+    std::vector<double> depth;       ///< d [m] at each node (where the force is 0: the deepest depth without force)
+    std::size_t element_steps = 0;   ///< steps taken by single elements (the folded ones count nothing)
+};
+
+/// The depth of the foundation of band_forces under force control along `nodes` (indentation_grid of a
+/// force-controlled case: the force max(value, 0) at each node, linear in time between nodes, the first node the
+/// undeformed state): the drivers' run_indentation step by step, each depth solved to 1e-13 of the force from the
+/// same extrapolated guess. Where the force is 0 the drivers show the touching depth instead (a tip riding on the
+/// recovering surface); the depths at nodes with a force > 0 are theirs. nullopt where band_forces gives nullopt
+/// (the drivers then run or report it). May throw what the drivers' depth solve throws.
+std::optional<BandCreep> band_depths(const rheology::Rheology& material, const profile::Profile& indenter,
+                                     double spacing, std::size_t count, const std::vector<drivers::GridNode>& nodes,
+                                     const std::function<void()>& check_interrupt = {});
 
 }  // namespace mdr::fit

@@ -151,7 +151,9 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     // A depth-driven run with a Prony material: the same elements with those that provably stay in contact summed
     // (band_model.hpp), the same forces; the drivers where it does not apply (or the contact outgrows the elements,
     // which the drivers then report).
-    if (depth_driven && band_model_applies(model_case.material) && !model_case.indenter->is_flat_punch()) {
+    const bool band_runs = band_model_applies(model_case.material) && !model_case.indenter->is_flat_punch() &&
+                           !model_case.layer;  // the band model is the half-space's foundation
+    if (depth_driven && band_runs) {
         const double spacing = drivers::resolve_numerics(model_case).half_width / static_cast<double>(elements);
         if (auto band = band_forces(model_case.material, *model_case.indenter, spacing, elements, times, depths,
                                     check_interrupt)) {
@@ -160,6 +162,25 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
             model.band = true;
             model.values.reserve(prepared.used.size());
             for (std::size_t i : prepared.used) model.values.push_back(band->force[i + offset] + baseline);
+            return model;
+        }
+    }
+    // A force-driven run with a Prony material: the band model on the drivers' own time grid, the depth solved at
+    // each step as they solve it (band_depths), the same depths.
+    if (!depth_driven && band_runs) {
+        const auto numerics = drivers::resolve_numerics(model_case);
+        const auto nodes = drivers::indentation_grid(model_case, numerics);
+        const double spacing = numerics.half_width / static_cast<double>(elements);
+        if (auto band = band_depths(model_case.material, *model_case.indenter, spacing, elements, nodes,
+                                    check_interrupt)) {
+            ModelValues model;
+            model.band = true;
+            model.values.reserve(prepared.used.size());
+            std::size_t node = 0;
+            for (std::size_t i : prepared.used) {  // the last node of a measured time, as the drivers' rows below
+                while (node + 1 < nodes.size() && nodes[node + 1].time <= curve.time[i]) ++node;
+                model.values.push_back(band->depth[node] + contact_depth);
+            }
             return model;
         }
     }

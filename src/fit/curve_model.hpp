@@ -37,14 +37,15 @@ struct ModelValues {
     /// d values / dG_b per branch of the material (TingResponse's order) at the used points: from the continuum
     /// model only (empty for the element model).
     std::vector<std::vector<double>> modulus_derivatives{};
-    bool band = false;  ///< the element model ran as the band model (band_model.hpp: the same forces, fewer steps)
+    /// the element model ran as the band model (band_model.hpp: the same forces or depths, fewer element steps)
+    bool band = false;
 };
 
 /// The model of the fitted quantity at the used points (force plus baseline, or depth plus contact_depth):
 /// `model_case` with its load replaced by the curve's history (depth minus contact_depth under displacement
 /// control; force minus baseline, and 0 below it, under force control). ForwardModel::elements runs the drivers
 /// with `elements` elements and the curve's own points as time steps (the depth model is the depth below the
-/// contact point); ForwardModel::continuum computes the force of a depth-driven curve exactly (ting_forces) and
+/// contact point), as the band model where it applies (band_forces, band_depths: the same values); ForwardModel::continuum computes the force of a depth-driven curve exactly (ting_forces) and
 /// gives nullopt where that model does not apply. `check_interrupt`, when set, is called at the drivers' progress
 /// reports (it may throw mdr::Interrupted). Without `modulus_derivatives` the continuum model leaves them out (a run
 /// whose values alone are read: half its memory for an elastic material). Throws what the drivers throw.

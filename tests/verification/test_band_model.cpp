@@ -5,6 +5,11 @@
 // random Prony materials and shapes. With the same elements the two are the same sums in another order: they agree
 // to 1e-9 of the peak force (round-off; 1e-6 is the fits' requirement). The band model's own convergence in the
 // element count is the element model's: second order in the element width.
+//
+// Under force control (band_depths, the fits' force-driven runs) the same: random measured-like force histories
+// (noise that makes the force dip, pauses, partial and full unloading, reloading) against the drivers' element model
+// on the drivers' own time grid, each depth solved to 1e-13 of the force by both: the depths agree to 1e-9 of the
+// peak depth (the fits' requirement is 1e-6).
 
 #include "fit/band_model.hpp"
 #include "fit/curve_model.hpp"
@@ -17,6 +22,7 @@
 
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/drivers/load_history.hpp"
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
@@ -418,6 +424,168 @@ TEST(BandModel, HandsADepthBeyondATabulatedProfileBackToTheDrivers) {
     foundation::fill_step_coefficients(material, 1e-3, coefficients);
     drivers_model.begin_step(coefficients);
     EXPECT_THROW(drivers_model.advance(0.0, 1.01 * edge), InvalidInput);
+}
+
+// A measured-like force history: an approach at zero force with noise (clipped to 0 by the model: no contact), a
+// ramp with a pause at constant force, a hold (creep), a partial unloading, a reloading past the peak, a full
+// unloading to 0 held (the surface recovers), a reloading and a hold; AR(1) noise (correlation 0.7) of `noise` times
+// the peak on every point, so the force dips in about a third of the steps.
+History force_like(std::mt19937& random, double peak, double noise) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    History history;  // depth holds the force here
+    const double dt = 1e-3 * (0.5 + unit(random));
+    double t = 0.0, smooth = 0.0, correlated = 0.0;
+    const auto add = [&](std::size_t steps, double change) {
+        for (std::size_t i = 0; i < steps; ++i) {
+            smooth += change / static_cast<double>(steps);
+            correlated = 0.7 * correlated + std::sqrt(1.0 - 0.49) * noise * peak * normal(random);
+            history.time.push_back(t);
+            history.depth.push_back(smooth + correlated);
+            t += dt;
+        }
+    };
+    add(40, 0.0);
+    add(100 + static_cast<std::size_t>(100 * unit(random)), 0.5 * peak);
+    add(60, 0.0);
+    add(100, 0.5 * peak);
+    add(300, 0.0);
+    add(80, -0.5 * peak * unit(random));
+    add(80, 0.3 * peak);
+    add(100, 0.0);
+    smooth = peak * (1.0 + 0.3 * unit(random));
+    add(60, -smooth);
+    add(150, 0.0);
+    add(80, 0.8 * peak);
+    add(150, 0.0);
+    return history;
+}
+
+// A fit's force-driven model case of `history` (as run_curve builds it: the force above 0, from the undeformed state
+// one interval before the first point, the fit's elements).
+drivers::ContactCase force_case(const rheology::Rheology& material,
+                                const std::shared_ptr<const profile::Profile>& indenter, const History& history,
+                                std::size_t elements) {
+    std::vector<drivers::LoadPoint> points{{history.time.front() - (history.time[1] - history.time[0]), 0.0}};
+    for (std::size_t i = 0; i < history.time.size(); ++i) {
+        points.push_back({history.time[i], std::max(history.depth[i], 0.0)});
+    }
+    drivers::ContactCase contact_case{.title = "band creep",
+                                      .material = material,
+                                      .indenter = indenter,
+                                      .control = drivers::Control::force,
+                                      .load = {.history = drivers::LoadHistory(std::move(points), "load.history")},
+                                      .end_time = history.time.back()};
+    contact_case.numerics.elements = elements;
+    contact_case.numerics.output_every = 1;
+    return contact_case;
+}
+
+// The element model's and the band model's depths at the points with a force > 0 (the last row of each time);
+// their largest difference relative to the peak depth. Prints the band model's share of the element steps.
+double force_driven_difference(const drivers::ContactCase& contact_case, const History& history) {
+    const auto numerics = drivers::resolve_numerics(contact_case);
+    const auto nodes = drivers::indentation_grid(contact_case, numerics);
+    const std::size_t elements = numerics.elements;
+    const auto band = band_depths(contact_case.material, *contact_case.indenter,
+                                  numerics.half_width / static_cast<double>(elements), elements, nodes);
+    EXPECT_TRUE(band.has_value());
+    if (!band) return 1.0;
+    const auto result = drivers::run_case(contact_case);
+    EXPECT_EQ(result.time.size(), nodes.size());
+    double difference = 0.0, deepest = 0.0;
+    std::size_t row = 0;
+    for (std::size_t i = 0; i < history.time.size(); ++i) {
+        if (!(history.depth[i] > 0.0)) continue;
+        while (row + 1 < result.time.size() && result.time[row + 1] <= history.time[i]) ++row;
+        EXPECT_EQ(nodes[row].time, result.time[row]);
+        difference = std::max(difference, std::abs(band->depth[row] - result.depth[row]));
+        deepest = std::max(deepest, std::abs(result.depth[row]));
+    }
+    const double all = static_cast<double>(elements) * static_cast<double>(nodes.size());
+    std::cout << "element steps " << static_cast<double>(band->element_steps) / all << " of the element model's; ";
+    return difference / deepest;
+}
+
+TEST(BandModel, MeasuredLikeForceHistoriesAgreeWithTheElementModel) {
+    std::mt19937 random(2525);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int trial = 0; trial < 9; ++trial) {
+        const auto material = random_material(random, trial);
+        const auto indenter = indenter_of(trial);
+        const double noise = std::pow(10.0, -4.0 + 1.5 * unit(random));
+        const History history = force_like(random, 1e-4, noise);
+        const double difference = force_driven_difference(force_case(material, indenter, history, 2000), history);
+        EXPECT_LT(difference, 1e-9) << "trial " << trial;
+        std::cout << "trial " << trial << ": noise " << noise << ", depths agree to " << difference << " of the peak\n";
+    }
+}
+
+// The adversarial materials above (G(0)/G_inf from 1 to 1000 and more, relaxation times from 1e-5 to 10 s, shorter
+// than the step: the drivers' graded grid) under the measured-like force histories.
+TEST(BandModel, AdversarialMaterialsUnderForceAgreeWithTheElementModel) {
+    std::mt19937 random(2526);
+    for (int trial = 0; trial < 12; ++trial) {
+        const auto material = adversarial_material(random);
+        const auto indenter = indenter_of(trial);
+        const History history = force_like(random, 1e-3, 1e-3);
+        const double difference = force_driven_difference(force_case(material, indenter, history, 1000), history);
+        EXPECT_LT(difference, 1e-9) << "trial " << trial;
+        std::cout << "trial " << trial << ": " << material.terms().size() << " branches, " << difference << "\n";
+    }
+}
+
+// A fit's force-driven element run (run_curve, fitted = "depth") is the band model, with the drivers' elements and
+// time grid: its depths at the curve's points in contact are the drivers' element model's.
+TEST(BandModel, FitsRunForceDrivenCurvesAsTheBandModel) {
+    std::mt19937 random(11);
+    const auto material = rheology::Rheology::prony(2e3, {{4e3, 0.05}, {3e3, 0.8}});
+    const std::shared_ptr<const profile::Profile> indenter = profile::make_sphere(5e-6);
+    const History history = force_like(random, 5e-9, 3e-4);
+    Curve curve;
+    curve.name = "measured-like creep";
+    curve.time = history.time;
+    curve.force = history.depth;
+    curve.depth.assign(history.time.size(), 0.0);
+    curve.force_noise = 3e-4 * 5e-9;
+    curve.depth_noise = 1e-9;
+    const CurveModel prepared = prepare_curve(curve, Fitted::depth, 0.0);
+    drivers::ContactCase model_case{.title = "fit",
+                                    .material = material,
+                                    .indenter = indenter,
+                                    .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
+                                    .end_time = 1.0};
+    const std::size_t elements = 1000;
+    const double contact_depth = 1e-8;
+    const auto model = run_curve(model_case, prepared, contact_depth, 0.0, elements, ForwardModel::elements);
+    ASSERT_TRUE(model.has_value());
+    EXPECT_TRUE(model->band);
+    const auto expected = drivers::run_case(force_case(material, indenter, history, elements));
+    ASSERT_EQ(model->values.size(), prepared.used.size());
+    ASSERT_GT(prepared.used.size(), history.time.size() / 2);
+    double deepest = 0.0;
+    for (double d : expected.depth) deepest = std::max(deepest, d);
+    std::size_t row = 0;
+    for (std::size_t j = 0; j < prepared.used.size(); ++j) {
+        const double t = history.time[prepared.used[j]];
+        while (row + 1 < expected.time.size() && expected.time[row + 1] <= t) ++row;
+        ASSERT_NEAR(model->values[j], expected.depth[row] + contact_depth, 1e-9 * deepest) << "t = " << t;
+    }
+}
+
+// A force whose contact outgrows a given half-width: the band model hands the run back (nullopt), and the drivers
+// report it (key numerics.half_width).
+TEST(BandModel, HandsAForceDrivenContactBeyondTheFoundationBackToTheDrivers) {
+    std::mt19937 random(12);
+    const auto material = rheology::Rheology::prony(1e5, {{3e5, 0.05}});
+    const std::shared_ptr<const profile::Profile> sphere = profile::make_sphere(1e-3);
+    const History history = force_like(random, 1e-3, 1e-4);
+    auto contact_case = force_case(material, sphere, history, 500);
+    contact_case.numerics.half_width = 0.5 * drivers::resolve_numerics(contact_case).half_width;
+    const auto numerics = drivers::resolve_numerics(contact_case);
+    const auto nodes = drivers::indentation_grid(contact_case, numerics);
+    EXPECT_FALSE(band_depths(material, *sphere, numerics.half_width / 500.0, 500, nodes).has_value());
+    EXPECT_THROW(drivers::run_case(contact_case), InvalidInput);
 }
 
 }  // namespace

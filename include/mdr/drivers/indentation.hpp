@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/load_history.hpp"
 #include "mdr/drivers/step_observer.hpp"
 
 namespace mdr::drivers {
@@ -103,6 +104,11 @@ struct IndentationResult {
 /// Called each time another hundredth of the run is done, with the fraction done (0..1, StepState::fraction); it may
 /// throw to abandon the run.
 using ProgressObserver = std::function<void(double fraction)>;
+
+/// The time grid run_indentation steps a displacement-, force- or spring-controlled case along, with `numerics`
+/// its resolve_numerics: make_time_grid with a node at every snapshot, tangential and harmonic breakpoint, Shore
+/// reading and force pause, graded after fast load changes (grade_after_changes), the harmonic part added.
+std::vector<GridNode> indentation_grid(const ContactCase& contact_case, const ResolvedNumerics& numerics);
 
 /// Runs a displacement-, force- or spring-controlled case, with its tangential loading when it has one (after each
 /// normal step the tangential layer takes the step's tangential increment). The state after every step goes to the
