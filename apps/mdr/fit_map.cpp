@@ -18,8 +18,6 @@ namespace mdr::cli {
 bool run_map(const io::FitCase& fit_case, const std::string& map, const io::ResultDirectory& directory,
              unsigned jobs) {
     fit::require_map_case(fit_case);
-    io::FitCase quiet = fit_case;
-    quiet.settings.on_iteration = nullptr;  // the map reports pixels, not the iterations of each
     const std::filesystem::path path = std::filesystem::absolute(map);
     instrument::CurveFile file = [&] {
         try {
@@ -32,7 +30,7 @@ bool run_map(const io::FitCase& fit_case, const std::string& map, const io::Resu
     const unsigned threads = parallel::local_threads(jobs, file.size());
     ProgressReporter progress;
     const std::vector<fit::PixelFit> pixels =
-        fit::fit_map_pixels(quiet, path, file.size(), threads, [&](std::size_t done, std::size_t total) {
+        fit::fit_map_pixels(fit_case, path, file.size(), threads, [&](std::size_t done, std::size_t total) {
             progress(double(done) / double(total));
         });
     progress.finish();

@@ -119,6 +119,7 @@ std::vector<PixelFit> fit_map_pixels(const io::FitCase& fit_case, const std::fil
             if (!own.fit_case) {
                 own.file.emplace(path, read_options(fit_case.data.front()));
                 own.fit_case = fit_case;
+                own.fit_case->settings.on_iteration = nullptr;  // a map reports pixels, not the iterations of each
                 own.fit_case->settings.check_interrupt = [&stop, check = fit_case.settings.check_interrupt] {
                     if (stop) throw Interrupted();
                     if (check) check();

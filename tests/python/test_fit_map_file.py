@@ -76,7 +76,7 @@ def test_jobs_that_are_no_number_of_threads_are_refused_naming_jobs(jobs):
         mdr.fit_map(CASE, MAP, jobs=jobs)
 
 
-@pytest.mark.filterwarnings("ignore:jobs = 3: more than the")
+@pytest.mark.filterwarnings("ignore:jobs = 3. more than the:RuntimeWarning")
 def test_pixels_on_threads_give_the_bytes_of_one_thread_in_the_files_order(mdr_binary, tmp_path):
     # The 3 pixels fit to different G (and the broken map's middle one fails): a row in another's place would show.
     for name, source in (("map", MAP), ("broken", BROKEN)):

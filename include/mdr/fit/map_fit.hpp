@@ -58,7 +58,8 @@ PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path&
 /// that they share nothing mutable; the pixels are returned in the file's order, the same whatever `threads`.
 /// `progress(done, total)` is called on the calling thread at least every 0.2 s and at the end; it may stop the map
 /// by throwing (mdr::Interrupted for Ctrl-C), which every fit sees at its next model run. The case's own
-/// `settings.check_interrupt`, if any, is called from the threads and must be safe there.
+/// `settings.check_interrupt`, if any, is called from the threads and must be safe there; its `on_iteration` is
+/// not called (the map reports pixels).
 std::vector<PixelFit> fit_map_pixels(const io::FitCase& fit_case, const std::filesystem::path& path,
                                      std::size_t count, unsigned threads,
                                      const std::function<void(std::size_t, std::size_t)>& progress);
