@@ -14,7 +14,8 @@ for jobs in "$@"; do
     out="$work/out-$jobs"
     rm -rf "$out"
     start=$(date +%s%N)
-    "$mdr" fit "$root/examples/fit/jpk-map-hertz.toml" --map "$map" --out "$out" --jobs "$jobs" >"$work/log-$jobs" || true
+    "$mdr" fit "$root/examples/fit/jpk-map-hertz.toml" --map "$map" --out "$out" --jobs "$jobs" \
+        >"$work/log-$jobs" || true
     end=$(date +%s%N)
     echo "jobs $jobs: $(( (end - start) / 1000000 )) ms wall; $(head -1 "$work/log-$jobs")"
     if [ -z "$first" ]; then
