@@ -31,7 +31,7 @@ bool run_map(const io::FitCase& fit_case, const std::string& map, const io::Resu
     ProgressReporter progress;
     const std::vector<fit::PixelFit> pixels =
         fit::fit_map_pixels(fit_case, path, file.size(), threads, [&](std::size_t done, std::size_t total) {
-            progress(double(done) / double(total));
+            progress(total ? double(done) / double(total) : 1.0);
         });
     progress.finish();
     directory.write(
