@@ -12,6 +12,7 @@
 #include "fit_map.hpp"
 #include "fit_preparation.hpp"
 #include "interrupt.hpp"
+#include "jobs_option.hpp"
 #include "mdr/fit/plausibility.hpp"
 #include "mdr/io/fit_files.hpp"
 #include "mdr/io/result_directory.hpp"
@@ -32,13 +33,19 @@ void add_fit_command(CLI::App& app, int& exit_code) {
                         "Curve files fitted one by one in place of the case's one [[fit.data]] file (one material per "
                         "file): DIR/<stem>/ each, and DIR/each.csv with one row per file");
     auto map = std::make_shared<std::string>();
-    command->add_option("--map", *map,
+    auto* map_option = command->add_option("--map", *map,
                         "An instrument map file (.jpk-force-map, ...) whose every curve is fitted alone in place of "
                         "the case's one [[fit.data]] file: DIR/map.csv with one row per pixel, DIR/map.json")
         ->excludes("--each");
-    command->callback([case_path, out, each, map, &exit_code] {
+    auto jobs = std::make_shared<std::string>();
+    auto* jobs_option = command
+        ->add_option("--jobs,-j", *jobs,
+                     "Threads fitting the pixels of --map (default: every core; at most the cores and the pixels)")
+        ->needs(map_option);
+    command->callback([case_path, out, each, map, jobs, jobs_option, &exit_code] {
         bool converged = true;
         exit_code = guarded([&] {
+            const unsigned threads_asked = jobs_option->count() ? parse_jobs(*jobs) : 0;  // 0: every core
             std::vector<std::filesystem::path> inputs{*case_path};
             inputs.insert(inputs.end(), each->begin(), each->end());
             if (!map->empty()) inputs.emplace_back(*map);
@@ -53,7 +60,7 @@ void add_fit_command(CLI::App& app, int& exit_code) {
                 return prepare_fit(std::move(read));
             }();
             if (!map->empty()) {
-                converged = run_map(fit_case, *map, directory);
+                converged = run_map(fit_case, *map, directory, threads_asked);
                 return;
             }
             if (!each->empty()) {

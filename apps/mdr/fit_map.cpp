@@ -7,36 +7,37 @@
 
 #include "interrupt.hpp"
 #include "mdr/error.hpp"
+#include "mdr/fit/instrument_curve.hpp"
 #include "mdr/fit/map_fit.hpp"
 #include "mdr/instrument/read_curves.hpp"
+#include "mdr/parallel/run_on_threads.hpp"
 #include "progress.hpp"
 
 namespace mdr::cli {
 
-bool run_map(const io::FitCase& fit_case, const std::string& map, const io::ResultDirectory& directory) {
+bool run_map(const io::FitCase& fit_case, const std::string& map, const io::ResultDirectory& directory,
+             unsigned jobs) {
     fit::require_map_case(fit_case);
-    io::FitCase quiet = fit_case;
-    quiet.settings.on_iteration = nullptr;  // the map reports pixels, not the iterations of each
     const std::filesystem::path path = std::filesystem::absolute(map);
     instrument::CurveFile file = [&] {
         try {
-            return instrument::CurveFile(path);
+            return instrument::CurveFile(path, fit::read_options(fit_case.data.front()));
         } catch (const InvalidInput& error) {
             throw InvalidInput("--map", error.key() + ": " + error.value(), error.rule());
         }
     }();
     const fit::MapLayout layout = fit::map_layout(file, fit_case);
-    std::vector<fit::PixelFit> pixels;
+    const unsigned threads = parallel::local_threads(jobs, file.size());
     ProgressReporter progress;
-    for (std::size_t i = 0; i < file.size(); ++i) {
-        pixels.push_back(fit::fit_map_pixel(quiet, path, file, i));
-        progress(double(i + 1) / double(file.size()));
-    }
+    const std::vector<fit::PixelFit> pixels =
+        fit::fit_map_pixels(fit_case, path, file.size(), threads, [&](std::size_t done, std::size_t total) {
+            progress(total ? double(done) / double(total) : 1.0);
+        });
     progress.finish();
     directory.write(
         [&](const std::filesystem::path& folder) {
-            fit::write_map_table(folder / "map.csv", pixels);
-            fit::write_map_summary(folder / "map.json", layout, fit_case.units, path, pixels);
+            fit::write_map_table(folder / "map.csv", pixels, fit_case);
+            fit::write_map_summary(folder / "map.json", layout, fit_case, path, pixels);
         },
         received_signal);
     std::size_t converged = 0, failed = 0;
@@ -44,8 +45,10 @@ bool run_map(const io::FitCase& fit_case, const std::string& map, const io::Resu
         if (!pixel.result) ++failed;
         else if (pixel.result->converged) ++converged;
     }
-    fmt::print("map of {} pixel(s) ({} x {}) fitted alone with the case's [fit]: {} converged, {} not, {} failed\n",
-               pixels.size(), layout.columns, layout.rows, converged, pixels.size() - converged - failed, failed);
+    fmt::print("map of {} pixel(s) ({} x {}) fitted alone with the case's [fit]: {} converged, {} not, {} failed ({} "
+               "thread(s))\n",
+               pixels.size(), layout.columns, layout.rows, converged, pixels.size() - converged - failed, failed,
+               threads);
     for (const auto& pixel : pixels) {
         if (!pixel.result) fmt::print("  pixel {}: {}\n", pixel.index, pixel.failure);
     }

@@ -9,9 +9,11 @@
 
 namespace mdr::cli {
 
-/// Fits every curve of `map` with `fit_case` (fit::require_map_case), with progress on stderr and Ctrl-C as for
-/// sweeps, writes map.csv and map.json into `directory` and prints a summary. A pixel that fails is a row with its
-/// reason. Returns true when every pixel's fit converged.
-bool run_map(const io::FitCase& fit_case, const std::string& map, const io::ResultDirectory& directory);
+/// Fits every curve of `map` with `fit_case` (fit::require_map_case) on parallel::local_threads(jobs, curves)
+/// threads (`jobs` 0: every core), with progress on stderr and Ctrl-C as for sweeps, writes map.csv and map.json
+/// into `directory` and prints a summary. A pixel that fails is a row with its reason. Returns true when every
+/// pixel's fit converged.
+bool run_map(const io::FitCase& fit_case, const std::string& map, const io::ResultDirectory& directory,
+             unsigned jobs);
 
 }  // namespace mdr::cli

@@ -1,5 +1,6 @@
 #include "interrupt.hpp"
 
+#include <atomic>
 #include <csignal>
 
 #include "mdr/error.hpp"
@@ -7,7 +8,10 @@
 namespace mdr::cli {
 namespace {
 
-volatile std::sig_atomic_t received = 0;
+// Atomic, not only volatile: the threads of a map read it (throw_if_interrupted as a fit's check_interrupt) while
+// the handler may write it; lock-free, so that the handler may touch it.
+std::atomic<int> received{0};
+static_assert(std::atomic<int>::is_always_lock_free);
 
 extern "C" void on_signal(int signal_number) {
     if (received != 0) {  // the second request: stop now, the next run removes what is left

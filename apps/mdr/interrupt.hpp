@@ -10,7 +10,7 @@ void install_interrupt_handlers();
 /// The signal received (SIGINT or SIGTERM), or 0 while none was.
 int received_signal();
 
-/// Throws mdr::Interrupted once a signal was received.
+/// Throws mdr::Interrupted once a signal was received; safe on any thread.
 void throw_if_interrupted();
 
 }  // namespace mdr::cli

@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "interrupt.hpp"
+#include "jobs_option.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/result_directory.hpp"
 #include "mdr/io/sweep.hpp"
@@ -65,7 +66,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
     auto case_path = std::make_shared<std::string>();
     auto out = std::make_shared<std::string>();
     auto specs = std::make_shared<std::vector<std::string>>();
-    auto jobs = std::make_shared<unsigned>(std::max(1u, std::thread::hardware_concurrency()));
+    auto jobs = std::make_shared<std::string>();
     command->add_option("case", *case_path, "The TOML case file")->required();
     command->add_option("--vary", *specs,
                         "KEY=START:STOP:COUNT[:log] or KEY=v1,v2,... (dotted key, e.g. material.tau1); several make "
@@ -73,7 +74,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
         ->required();
     command->add_option("--out,-o", *out, "Result directory (created, or replaced if mdr wrote it)")->required();
     auto* jobs_option =
-        command->add_option("--jobs,-j", *jobs, "Parallel runs (default: all cores)")->check(CLI::PositiveNumber);
+        command->add_option("--jobs,-j", *jobs, "Parallel runs (default: all cores)");
     auto scheduler = std::make_shared<std::string>();
     command
         ->add_option("--scheduler", *scheduler,
@@ -82,6 +83,8 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
         ->excludes(jobs_option);
     command->callback([=, &exit_code] {
         exit_code = guarded([&] {
+            const unsigned threads =
+                jobs_option->count() ? parse_jobs(*jobs) : std::max(1u, std::thread::hardware_concurrency());
             const io::ResultDirectory directory(*out, "--out", {*case_path});
             std::ifstream file(*case_path);
             if (!file) throw unreadable_file("case", *case_path);
@@ -93,7 +96,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
             SweepProgress progress;
             ScheduledSweepInfo batch;
             const auto rows = scheduler->empty()
-                                  ? io::run_sweep(text.str(), *case_path, axes, *jobs, std::ref(progress))
+                                  ? io::run_sweep(text.str(), *case_path, axes, threads, std::ref(progress))
                                   : run_scheduled_sweep(text.str(), *case_path, *specs, axes, *scheduler,
                                                         std::ref(progress), batch);
             directory.write(
@@ -105,7 +108,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
             std::size_t failed = 0;
             for (const auto& row : rows) failed += row.error.empty() ? 0 : 1;
             if (scheduler->empty()) {
-                fmt::print("{} runs on {} jobs written to {}/sweep.csv\n", rows.size(), *jobs, *out);
+                fmt::print("{} runs on {} jobs written to {}/sweep.csv\n", rows.size(), threads, *out);
             } else {
                 fmt::print("{} runs on {} ({} workers, {} tasks, {} retried) written to {}/sweep.csv\n", rows.size(),
                            batch.scheduler, batch.workers, batch.tasks, batch.retried, *out);

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "case_tree.hpp"
 #include "python_interrupt.hpp"
 #include "mdr/error.hpp"
+#include "mdr/fit/instrument_curve.hpp"
 #include "mdr/fit/map_fit.hpp"
 #include "mdr/instrument/read_curves.hpp"
 
@@ -23,24 +25,32 @@ namespace py = pybind11;
 namespace mdr::python {
 namespace {
 
-// Fits every curve of `map` with the fit case `case_` (TOML text or a dict tree, case_tree.hpp) and writes map.csv
-// and map.json into `folder`; returns the grid (columns, rows, size_x, size_y in the case's length unit) and the
-// case's unit system. `progress(done, total)` after each pixel, if given.
+// Fits every curve of `map` with the fit case `case_` (TOML text or a dict tree, case_tree.hpp) on
+// `workers(curves)` threads (mdr._jobs.local_workers) and writes map.csv and map.json into `folder`; returns the
+// grid (columns, rows, size_x, size_y in the case's length unit) and the case's unit system.
+// `progress(done, total)` at least every 0.2 s, if given; Ctrl-C is seen there, on this thread, which holds the GIL
+// only then.
 py::tuple fit_map_file(const py::object& case_, const std::string& source, const std::string& directory,
-                       const std::string& map, const std::filesystem::path& folder, const py::object& progress) {
+                       const std::string& map, const std::filesystem::path& folder, const py::object& workers,
+                       const py::object& progress) {
     auto fit_case = io::parse_fit_case(case_template(case_, source), directory);
     fit::require_map_case(fit_case);
-    PythonInterrupt interrupt;
-    fit_case.settings.check_interrupt = interrupt.check();
-    instrument::CurveFile file(map);
+    instrument::CurveFile file(map, fit::read_options(fit_case.data.front()));
     const fit::MapLayout layout = fit::map_layout(file, fit_case);
+    const auto threads = workers(file.size()).cast<unsigned>();
     std::vector<fit::PixelFit> pixels;
-    for (std::size_t i = 0; i < file.size(); ++i) {
-        interrupt.run([&] { pixels.push_back(fit::fit_map_pixel(fit_case, map, file, i)); });
-        if (!progress.is_none()) progress(i + 1, file.size());
-    }
-    fit::write_map_table(folder / "map.csv", pixels);
-    fit::write_map_summary(folder / "map.json", layout, fit_case.units, map, pixels);
+    PythonInterrupt interrupt;
+    const auto check = interrupt.check();
+    interrupt.run([&] {
+        pixels = fit::fit_map_pixels(fit_case, map, file.size(), threads, [&](std::size_t done, std::size_t total) {
+            check();
+            if (progress.is_none()) return;
+            const py::gil_scoped_acquire acquire;
+            progress(done, total);
+        });
+    });
+    fit::write_map_table(folder / "map.csv", pixels, fit_case);
+    fit::write_map_summary(folder / "map.json", layout, fit_case, map, pixels);
     return py::make_tuple(layout.columns, layout.rows, layout.size_x, layout.size_y, fit_case.units);
 }
 
@@ -48,7 +58,8 @@ py::tuple fit_map_file(const py::object& case_, const std::string& source, const
 
 void bind_map_fit(py::module_& module) {
     module.def("_fit_map_file", &fit_map_file, py::arg("case"), py::arg("source"), py::arg("directory"),
-               py::arg("map"), py::arg("folder"), py::arg("progress") = py::none(),
+               py::arg("map"), py::arg("folder"), py::arg("workers"),
+               py::arg("progress") = py::none(),
                "Fits every curve of an instrument map and writes map.csv and map.json into folder (mdr.fit_map is "
                "the public entry).");
     module.attr("_instrument_endings") = instrument::supported_extensions();

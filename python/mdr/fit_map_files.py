@@ -15,6 +15,7 @@ import numpy as np
 
 from . import _mdr
 from ._case_tree import plain_tree
+from ._jobs import check_jobs, local_workers
 
 #: File endings of instrument maps (and single curves) that `fit_map` reads itself (docs/instrument-files.md): the
 #: C++ readers' own list (mdr::instrument::supported_extensions).
@@ -59,13 +60,15 @@ def _read_table(path: pathlib.Path) -> dict[str, np.ndarray]:
 
 
 def fit_map_file(case: str | os.PathLike | Mapping[str, Any], path: str | os.PathLike, *,
-                 out: str | os.PathLike | None = None, figures: bool = True,
+                 jobs: int | None = None, out: str | os.PathLike | None = None, figures: bool = True,
                  progress: Callable[[int, int], None] | None = None) -> MapTable:
     """Fits every curve of the instrument file `path` alone with the fit case `case`, as ``mdr fit CASE --map``.
 
     The case's one ``[[fit.data]]`` table names no column (an instrument file's: ``segments``, ``until``,
     ``window``); its ``file`` and ``curve`` are replaced by each curve of `path`. A pixel that fails is a row with
-    ``status`` "failed" and its ``failure``; the map goes on. With `out`, map.csv and map.json are written there as
+    ``status`` "failed" and its ``failure``; the map goes on. The pixels are fitted on min(`jobs`, cores, curves)
+    threads (`jobs` None: every core; mdr._jobs.local_workers), the rows the same bit for bit whatever `jobs`;
+    ``progress(done, total)`` is called at least every 0.2 s. With `out`, map.csv and map.json are written there as
     by the command line, and with `figures` the heat maps (``map_KEY.png``, mdr.map_figures); `out` follows the
     rules of ``--out`` (docs/cli.md): a new directory or one mdr wrote, checked before the fit and written whole
     or not at all.
@@ -73,8 +76,10 @@ def fit_map_file(case: str | os.PathLike | Mapping[str, Any], path: str | os.Pat
     Raises
     ------
     ValueError
-        For a bad case or file, or an `out` that is not mdr's (the command line's message, ``key = value: rule``).
+        For a bad case or file, `jobs` not an integer >= 1, or an `out` that is not mdr's (the command line's
+        message, ``key = value: rule``).
     """
+    check_jobs(jobs)
     if isinstance(case, Mapping):
         case_input, source, directory = plain_tree(case), "case", os.getcwd()
         inputs = []
@@ -90,7 +95,8 @@ def fit_map_file(case: str | os.PathLike | Mapping[str, Any], path: str | os.Pat
     with tempfile.TemporaryDirectory() as scratch:
         folder = pathlib.Path(scratch)
         columns, rows, size_x, size_y, units = _mdr._fit_map_file(case_input, source, directory, map_file,
-                                                                 os.fspath(folder), progress)
+                                                                 os.fspath(folder),
+                                                                 lambda curves: local_workers(jobs, curves), progress)
         table = MapTable(_read_table(folder / "map.csv"), (columns, rows), (size_x, size_y), units)
         if result_directory is not None:
             def write_files(temporary: str) -> None:

@@ -106,10 +106,11 @@ def fit_map(case: str | os.PathLike | Mapping[str, Any], stack: Any, *, time: Se
     stack : array-like, str or os.PathLike
         An instrument map file (``.jpk-force-map``, ``.jpk-qi-data``, ...: `mdr.fit_map_files.fit_map_file`, the
         same C++ as ``mdr fit CASE --map FILE``; returns a `MapTable` with the columns of map.csv; with `out`,
-        map.csv, map.json and with `figures` the heat maps are written there; `time`, `depth`, `columns`,
-        `scheduler` and `jobs` > 1 are refused with it), or what ``mdr.curve_maps.open_stack`` takes: an array
-        (ny, nx, nt) of force [N] with `time` and `depth`, an array (ny, nx, nt, 3) of time, depth and force, an
-        HDF5 file of either, or a directory of curve files with positions.csv whose columns `columns` names.
+        map.csv, map.json and with `figures` the heat maps are written there; its pixels are fitted on `jobs`
+        threads; `time`, `depth`, `columns` and `scheduler` are refused with it), or what
+        ``mdr.curve_maps.open_stack`` takes: an array (ny, nx, nt) of force [N] with `time` and `depth`, an array
+        (ny, nx, nt, 3) of time, depth and force, an HDF5 file of either, or a directory of curve files with
+        positions.csv whose columns `columns` names.
     time, depth : sequence of float, optional
         The common time [s] and depth [m] of a stack of forces alone.
     columns : dict, optional
@@ -148,10 +149,8 @@ def fit_map(case: str | os.PathLike | Mapping[str, Any], stack: Any, *, time: Se
         for name, value in given.items():
             if value is not None:
                 raise ValueError(f"{name}: not used with an instrument file ({os.fspath(stack)}), which states its "
-                                 "own channels and is fitted here, one pixel after the other")
-        if jobs not in (None, 1):
-            raise ValueError(f"jobs = {jobs}: an instrument file is fitted on one process (jobs = 1 or None)")
-        return fit_map_file(case, stack, out=out, figures=figures, progress=progress)
+                                 "own channels and is fitted here, on local threads")
+        return fit_map_file(case, stack, jobs=jobs, out=out, figures=figures, progress=progress)
     if isinstance(case, (str, os.PathLike)):
         with open(case, "rb") as handle:
             case = tomllib.load(handle)

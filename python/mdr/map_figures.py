@@ -1,42 +1,18 @@
 """Heat maps of a map fit's result directory (``mdr fit CASE --map FILE --out DIR``: map.csv and map.json), drawn
 by ``python3 -m mdr plot DIR``: one figure per output on the map's physical grid, axes in µm, colour bars with the
-output's unit, failed pixels hatched."""
+output's unit (map.json's ``column_units``, which the C++ takes from the registry that defines each key), failed
+pixels hatched."""
 
 from __future__ import annotations
 
 import json
 import os
-from typing import Mapping
 
 import numpy as np
-
-from . import _mdr
 
 #: The columns of map.csv that are not drawn: the pixel's place and its text. The ``_stderr`` columns are not drawn
 #: either (beside their values they would double the figures; they are in map.csv).
 NOT_DRAWN = ("index", "column", "row", "x", "y", "status", "flags", "failure")
-
-
-def output_unit(column: str, names: Mapping[str, str]) -> str:
-    """The unit of a map.csv column in the case's system `names` (mdr._mdr._unit_system): moduli (``G``, ``K``,
-    ``E_`` keys) in pressure, relaxation times (``tau``) in time, viscosities (``eta``) in pressure x time, lengths
-    (``contact_height``, ``thickness``, ``R``) in length, ``noise`` in force; "" for a ratio or a key it cannot
-    tell (an exponent)."""
-    key = column[:-len("_stderr")] if column.endswith("_stderr") else column
-    if key.startswith("E_"):
-        return names["pressure"]
-    last = key.rsplit(".", 1)[-1]
-    if key in ("contact_height",) or last in ("thickness", "R", "radius"):
-        return names["length"]
-    if key == "noise":
-        return names["force"]
-    if last.startswith("tau"):
-        return names["time"]
-    if last.startswith("eta"):
-        return names["viscosity"]
-    if last.startswith(("G", "K")):
-        return names["pressure"]
-    return ""
 
 
 def map_heat_maps(directory: str) -> list[tuple[str, object]]:
@@ -52,7 +28,7 @@ def map_heat_maps(directory: str) -> list[tuple[str, object]]:
     table = read_csv(os.path.join(directory, "map.csv"))
     with open(os.path.join(directory, "map.json"), encoding="utf-8") as handle:
         summary = json.load(handle)
-    names = _mdr._unit_system(summary.get("units", "SI"))
+    units = summary.get("column_units", {})
     columns, rows = max(int(summary["columns"]), 1), max(int(summary["rows"]), 1)
     to_um = float(summary.get("length_size", 1.0)) * 1e6
     pixel_x, pixel_y = (float(p) * to_um for p in summary["pixel_size"])
@@ -80,8 +56,8 @@ def map_heat_maps(directory: str) -> list[tuple[str, object]]:
         axes = figure.add_subplot()
         image = axes.imshow(np.ma.masked_invalid(grid), origin="lower", interpolation="nearest", cmap="viridis",
                             extent=extent)
-        unit = output_unit(name, names)
-        figure.colorbar(image, ax=axes, label=f"{name} [{unit}]" if unit else name)
+        unit = units.get(name, "")  # "1": a ratio or an exponent, drawn without a unit
+        figure.colorbar(image, ax=axes, label=f"{name} [{unit}]" if unit not in ("", "1") else name)
         if failed.any():
             fx = x[failed] if extent else column_index[failed]
             fy = y[failed] if extent else row_index[failed]

@@ -41,6 +41,10 @@ std::vector<bool> kept_segments(const instrument::Curve& raw, const std::vector<
 
 }  // namespace
 
+instrument::ReadOptions read_options(const CurveSource& source) {
+    return {source.spring_constant.value_or(0.0), source.sensitivity.value_or(0.0)};
+}
+
 void check_instrument_source(const CurveSource& source) {
     const std::pair<const char*, const std::string*> columns[] = {{"time", &source.time_column},
                                                                   {"depth", &source.depth_column},
@@ -52,10 +56,6 @@ void check_instrument_source(const CurveSource& source) {
         if (!column->empty()) {
             throw InvalidInput(key, in_quotes(*column), "is for a CSV file: an instrument file names its own data");
         }
-    }
-    if (source.spring_constant) {
-        throw InvalidInput("spring_constant", format_value(*source.spring_constant),
-                           "is stated by the instrument file (its own calibration)");
     }
     require_positive("units.time", source.time_unit);
     require_positive("units.length", source.length_unit);
@@ -71,7 +71,9 @@ Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& sour
     check_instrument_source(source);
     const std::string file_name = source.file.filename().string();
     if (raw.time.empty()) {
-        throw InvalidInput("file", in_quotes(file_name), "records no time, and a fit needs each row's time");
+        throw InvalidInput("file", in_quotes(file_name),
+                           "records no time (no time channel, and its header states no ramp rate or sampling rate): "
+                           "a viscoelastic fit needs each row's time");
     }
     const std::vector<bool> kept = kept_segments(raw, source.segments, file_name);
     std::vector<std::size_t> samples;  // the file's sample of each kept row
@@ -126,10 +128,10 @@ Curve load_instrument_curve(const CurveSource& source) {
     check_instrument_source(source);
     instrument::Curve raw;
     try {
-        instrument::CurveFile file(source.file);
+        instrument::CurveFile file(source.file, read_options(source));
         raw = file.read(instrument_curve_index(source, file));
     } catch (const InvalidInput& error) {
-        if (error.key() == "curve") throw;
+        if (error.key() == "curve" || error.key() == "spring_constant" || error.key() == "sensitivity") throw;
         const std::string ending = source.file.extension().string();
         const bool may_be_columns = ending == ".csv" || ending == ".txt";
         throw InvalidInput("file", error.key() + ": " + error.value(),

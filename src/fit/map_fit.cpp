@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -15,8 +16,10 @@
 #include "mdr/fit/instrument_curve.hpp"
 #include "mdr/fit/plausibility.hpp"
 #include "mdr/io/csv_field.hpp"
+#include "mdr/io/free_key_units.hpp"
 #include "mdr/io/output_file.hpp"
 #include "mdr/io/units.hpp"
+#include "mdr/parallel/run_on_threads.hpp"
 
 namespace mdr::fit {
 
@@ -98,10 +101,49 @@ PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path&
     return pixel;
 }
 
+std::vector<PixelFit> fit_map_pixels(const io::FitCase& fit_case, const std::filesystem::path& path,
+                                     std::size_t count, unsigned threads,
+                                     const std::function<void(std::size_t, std::size_t)>& progress) {
+    /// What one thread works with: its own reader (a CurveFile is not shared: its archive and inflater are state)
+    /// and its own case, whose check_interrupt also ends the fit once the map is stopped.
+    struct Worker {
+        std::optional<instrument::CurveFile> file;
+        std::optional<io::FitCase> fit_case;
+    };
+    std::vector<PixelFit> pixels(count);
+    std::vector<Worker> workers(std::max<std::size_t>(1, std::min<std::size_t>(threads, count)));
+    parallel::run_on_threads(
+        count, threads,
+        [&](std::size_t index, unsigned worker, const std::atomic<bool>& stop) {
+            Worker& own = workers[worker];
+            if (!own.fit_case) {
+                own.file.emplace(path, read_options(fit_case.data.front()));
+                own.fit_case = fit_case;
+                own.fit_case->settings.on_iteration = nullptr;  // a map reports pixels, not the iterations of each
+                own.fit_case->settings.check_interrupt = [&stop, check = fit_case.settings.check_interrupt] {
+                    if (stop) throw Interrupted();
+                    if (check) check();
+                };
+            }
+            pixels[index] = fit_map_pixel(*own.fit_case, path, *own.file, index);
+        },
+        [&](std::size_t done) {
+            if (progress) progress(done, count);
+        });
+    return pixels;
+}
+
 namespace {
 
-/// One row of map.csv: its fields by column name.
-using Row = std::vector<std::pair<std::string, std::string>>;
+/// One field of a row of map.csv: its column, its text and the column's unit in SI symbols (a registry's "Pa",
+/// "s", "1" for a ratio; "" for no quantity), written in the case's system by write_map_summary.
+struct Field {
+    std::string name;
+    std::string value;
+    std::string unit;
+};
+/// One row of map.csv.
+using Row = std::vector<Field>;
 
 /// The columns every row has before the fit's (where the pixel is) and after them (how its fit went).
 const std::array<std::string, 5> place_columns = {"index", "column", "row", "x", "y"};
@@ -109,75 +151,85 @@ const std::array<std::string, 3> outcome_columns = {"status", "flags", "failure"
 
 std::string number(double value) { return fmt::format("{:.17g}", value); }
 
-Row row_of(const PixelFit& pixel) {
+/// The row of `pixel`; `key_unit` gives the unit of a free key (io::free_key_unit of the case).
+Row row_of(const PixelFit& pixel, const std::function<std::string(const std::string&)>& key_unit) {
     const auto placed = [&](std::string text) { return pixel.placed ? text : std::string(); };
-    Row row{{"index", std::to_string(pixel.index)},
-            {"column", placed(std::to_string(pixel.column))},
-            {"row", placed(std::to_string(pixel.row))},
-            {"x", placed(number(pixel.x))},
-            {"y", placed(number(pixel.y))}};
+    Row row{{"index", std::to_string(pixel.index), ""},
+            {"column", placed(std::to_string(pixel.column)), ""},
+            {"row", placed(std::to_string(pixel.row)), ""},
+            {"x", placed(number(pixel.x)), "m"},
+            {"y", placed(number(pixel.y)), "m"}};
     if (pixel.result) {
         const FitResult& result = *pixel.result;
         for (std::size_t j = 0; j < result.names.size(); ++j) {
-            row.emplace_back(result.names[j], number(result.values[j]));
-            row.emplace_back(result.names[j] + "_stderr", number(result.standard_errors[j]));
+            const std::string unit = key_unit(result.names[j]);
+            row.push_back({result.names[j], number(result.values[j]), unit});
+            row.push_back({result.names[j] + "_stderr", number(result.standard_errors[j]), unit});
         }
         for (const auto& young : result.young_moduli) {
-            row.emplace_back("E_" + young.name, number(young.value));
-            row.emplace_back("E_" + young.name + "_stderr", number(young.standard_error));
+            const std::string unit = key_unit(young.name);
+            row.push_back({"E_" + young.name, number(young.value), unit});
+            row.push_back({"E_" + young.name + "_stderr", number(young.standard_error), unit});
         }
-        row.emplace_back("contact_height", number(pixel.contact_height));
-        row.emplace_back("residual_to_noise", number(result.rms_residual / result.noise));
-        row.emplace_back("noise", number(result.noise));
-        row.emplace_back("status", result.status);
+        const bool force = result.curves.empty() || result.curves.front().fitted == Fitted::force;
+        row.push_back({"contact_height", number(pixel.contact_height), "m"});
+        row.push_back({"residual_to_noise", number(result.rms_residual / result.noise), "1"});
+        row.push_back({"noise", number(result.noise), force ? "N" : "m"});
+        row.push_back({"status", result.status, ""});
         std::string flags;
         for (const auto& flag : result.flags) flags += (flags.empty() ? "" : "; ") + flag;
         for (const auto& curve : result.curves) {
             for (const auto& flag : curve.flags) flags += (flags.empty() ? "" : "; ") + flag;
         }
-        row.emplace_back("flags", flags);
+        row.push_back({"flags", flags, ""});
     } else {
-        row.emplace_back("status", "failed");
+        row.push_back({"status", "failed", ""});
     }
-    row.emplace_back("failure", pixel.failure);
+    row.push_back({"failure", pixel.failure, ""});
     return row;
 }
 
-/// map.csv's columns: place_columns, the fit's columns in the order the first fitted pixel has them (every fitted
-/// pixel has the same: one case), outcome_columns; whichever pixels failed.
-std::vector<std::string> table_columns(const std::vector<Row>& rows) {
-    std::vector<std::string> columns(place_columns.begin(), place_columns.end());
-    const auto fixed = [](const std::string& name) {
-        return std::find(place_columns.begin(), place_columns.end(), name) != place_columns.end() ||
-               std::find(outcome_columns.begin(), outcome_columns.end(), name) != outcome_columns.end();
+std::vector<Row> rows_of(const std::vector<PixelFit>& pixels, const io::FitCase& fit_case) {
+    const auto key_unit = [&](const std::string& key) { return io::free_key_unit(fit_case.model, key); };
+    std::vector<Row> rows;
+    rows.reserve(pixels.size());
+    for (const auto& pixel : pixels) rows.push_back(row_of(pixel, key_unit));
+    return rows;
+}
+
+/// map.csv's columns with their units: place_columns, the fit's columns in the order the first fitted pixel has
+/// them (every fitted pixel has the same: one case), outcome_columns; whichever pixels failed.
+std::vector<std::pair<std::string, std::string>> table_columns(const std::vector<Row>& rows) {
+    std::vector<std::pair<std::string, std::string>> columns;
+    const auto known = [&](const std::string& name) {
+        return std::any_of(columns.begin(), columns.end(), [&](const auto& column) { return column.first == name; });
+    };
+    const auto outcome = [](const std::string& name) {
+        return std::find(outcome_columns.begin(), outcome_columns.end(), name) != outcome_columns.end();
     };
     for (const auto& row : rows) {
         for (const auto& field : row) {
-            const std::string& name = field.first;
-            if (!fixed(name) && std::find(columns.begin(), columns.end(), name) == columns.end()) {
-                columns.push_back(name);
-            }
+            if (!outcome(field.name) && !known(field.name)) columns.emplace_back(field.name, field.unit);
         }
     }
-    columns.insert(columns.end(), outcome_columns.begin(), outcome_columns.end());
+    for (const auto& name : outcome_columns) columns.emplace_back(name, "");
     return columns;
 }
 
 }  // namespace
 
-void write_map_table(const std::filesystem::path& path, const std::vector<PixelFit>& pixels) {
-    std::vector<Row> rows;
-    rows.reserve(pixels.size());
-    for (const auto& pixel : pixels) rows.push_back(row_of(pixel));
-    const std::vector<std::string> columns = table_columns(rows);
+void write_map_table(const std::filesystem::path& path, const std::vector<PixelFit>& pixels,
+                     const io::FitCase& fit_case) {
+    const std::vector<Row> rows = rows_of(pixels, fit_case);
+    const auto columns = table_columns(rows);
     std::string table;
-    for (std::size_t c = 0; c < columns.size(); ++c) table += (c ? "," : "") + io::csv_field(columns[c]);
+    for (std::size_t c = 0; c < columns.size(); ++c) table += (c ? "," : "") + io::csv_field(columns[c].first);
     table += '\n';
     for (const auto& row : rows) {
         for (std::size_t c = 0; c < columns.size(); ++c) {
             if (c) table += ',';
-            for (const auto& [name, value] : row) {
-                if (name == columns[c]) table += io::csv_field(value);
+            for (const auto& field : row) {
+                if (field.name == columns[c].first) table += io::csv_field(field.value);
             }
         }
         table += '\n';
@@ -185,9 +237,14 @@ void write_map_table(const std::filesystem::path& path, const std::vector<PixelF
     io::write_text_file(path, table);
 }
 
-void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const std::string& units,
+void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const io::FitCase& fit_case,
                        const std::filesystem::path& source, const std::vector<PixelFit>& pixels) {
+    const std::string& units = fit_case.units;
     const io::UnitSystem& system = io::unit_system(units);
+    nlohmann::json column_units = nlohmann::json::object();
+    for (const auto& [name, unit] : table_columns(rows_of(pixels, fit_case))) {
+        column_units[name] = unit.empty() || unit == "1" ? unit : system.names(unit);
+    }
     const auto failed =
         std::count_if(pixels.begin(), pixels.end(), [](const PixelFit& pixel) { return !pixel.result; });
     const auto pixel_size = [](double size, std::size_t count) { return count ? size / double(count) : 0.0; };
@@ -202,6 +259,7 @@ void write_map_summary(const std::filesystem::path& path, const MapLayout& layou
         {"pixel_size", {pixel_size(layout.size_x, layout.columns), pixel_size(layout.size_y, layout.rows)}},
         {"pixels", pixels.size()},
         {"failed", failed},
+        {"column_units", column_units},
     };
     io::write_text_file(path, summary.dump(1) + "\n");
 }

@@ -9,11 +9,12 @@ namespace mdr::instrument {
 void require_calibration(const ReadOptions& options, const std::string& file, const std::string& signal_unit,
                          const std::string& sensitivity_unit) {
     if (!(options.spring_constant > 0.0) || !std::isfinite(options.spring_constant)) {
-        throw InvalidInput("spring_constant", format_value(options.spring_constant),
+        throw InvalidInput("spring_constant",
+                           options.spring_constant == 0.0 ? "(missing)" : format_value(options.spring_constant),
                            file + " records no spring constant: give one > 0 (N/m)");
     }
     if (!(options.sensitivity > 0.0) || !std::isfinite(options.sensitivity)) {
-        throw InvalidInput("sensitivity", format_value(options.sensitivity),
+        throw InvalidInput("sensitivity", options.sensitivity == 0.0 ? "(missing)" : format_value(options.sensitivity),
                            file + " records deflection in " + signal_unit + ": give the sensitivity > 0 (" +
                                sensitivity_unit + ")");
     }

@@ -100,6 +100,11 @@ double CaseTemplate::number(const std::string& key) const {
     return as_number(*node.node(), key);
 }
 
+std::optional<std::string> CaseTemplate::string_at(const std::string& key) const {
+    if (const auto text = tables_->root.at_path(key).value<std::string>()) return *text;
+    return std::nullopt;
+}
+
 void CaseTemplate::set_number(const std::string& key, double value) {
     if (!has_number(key)) throw InvalidInput(key, "(missing)", "the case has no number under this key");
     const auto location = locate(tables_->root, key);

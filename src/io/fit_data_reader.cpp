@@ -40,12 +40,19 @@ fit::Fitted read_fitted(TableReader& table, fit::Fitted fallback) {
 
 namespace {
 
-// The keys of a [[fit.data]] table for an instrument file: curve; units and spring constant are the file's.
+// The keys of a [[fit.data]] table for an instrument file: curve, and the calibration of a file that records none
+// (spring_constant in N/m, sensitivity in m/V, as instrument::ReadOptions; the reader refuses them for a file that
+// states its own); units are the file's.
 void read_instrument_keys(TableReader& table, const UnitSystem& system, fit::CurveSource& source) {
-    const std::string stated = "is stated by the instrument file (its numbers are SI, its spring constant its own)";
-    for (const char* key : {"units", "spring_constant"}) {
-        if (table.has(key)) throw InvalidInput(table.key_path(key), table.text(key), stated);
+    if (table.has("units")) {
+        throw InvalidInput(table.key_path("units"), table.text("units"),
+                           "is stated by the instrument file (its numbers are SI; spring_constant in N/m, "
+                           "sensitivity in m/V)");
     }
+    source.spring_constant = table.optional_number("spring_constant");
+    source.sensitivity = table.optional_number("sensitivity");
+    if (source.spring_constant) require_positive(table.key_path("spring_constant"), *source.spring_constant);
+    if (source.sensitivity) require_positive(table.key_path("sensitivity"), *source.sensitivity);
     if (table.has("segment_column")) {
         throw InvalidInput(table.key_path("segment_column"), table.text("segment_column"),
                            "is for a CSV file: an instrument file names its segments itself (segments = [\"extend\"])");
@@ -88,7 +95,8 @@ void read_column_keys(TableReader& table, const UnitSystem& system, fit::CurveSo
 fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory,
                                const UnitSystem& system) {
     table.reject_unknown({"kind", "file", "name", "time", "depth", "force", "piezo", "deflection", "spring_constant",
-                          "units", "segment_column", "segments", "fitted", "until", "window", "curve"});
+                          "units", "segment_column", "segments", "fitted", "until", "window", "curve",
+                          "sensitivity"});
     fit::CurveSource source;
     const std::filesystem::path file = table.string("file");
     source.file = file.is_absolute() ? file : case_directory / file;
@@ -102,6 +110,11 @@ fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& 
         if (table.has("curve")) {
             throw InvalidInput(table.key_path("curve"), table.text("curve"),
                                "is for an instrument file (a CSV file names its columns and holds one curve)");
+        }
+        if (table.has("sensitivity")) {
+            throw InvalidInput(table.key_path("sensitivity"), table.text("sensitivity"),
+                               "is for an instrument file that records its deflection in volts or amperes (a CSV "
+                               "file's deflection column is a length)");
         }
         read_column_keys(table, system, source);
     }

@@ -7,15 +7,11 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstdlib>
-#include <mutex>
 #include <nlohmann/json.hpp>
 #include <numeric>
 #include <optional>
 #include <sstream>
-#include <system_error>
-#include <thread>
 #include <unordered_set>
 
 #include "mdr/drivers/indentation.hpp"
@@ -27,6 +23,7 @@
 #include "mdr/io/csv_field.hpp"
 #include "mdr/io/output_file.hpp"
 #include "mdr/io/summary.hpp"
+#include "mdr/parallel/run_on_threads.hpp"
 
 namespace mdr::io {
 namespace {
@@ -139,32 +136,6 @@ std::size_t sweep_size(const std::vector<SweepAxis>& axes) {
 
 namespace {
 
-// The threads of a sweep: stopped and joined on every way out, so that no exception leaves a joinable thread.
-class Workers {
-public:
-    explicit Workers(std::atomic<bool>& stop) : stop_(stop) {}
-    Workers(const Workers&) = delete;
-    Workers& operator=(const Workers&) = delete;
-    ~Workers() {
-        stop_ = true;
-        for (auto& thread : threads_) thread.join();
-    }
-    void start(unsigned count, const std::function<void()>& work) {
-        for (unsigned j = 0; j < count; ++j) {
-            try {
-                threads_.emplace_back(work);
-            } catch (const std::system_error& error) {
-                throw std::runtime_error(fmt::format("--jobs = {}: could not start thread {} ({}); use fewer jobs",
-                                                     count, j + 1, error.code().message()));
-            }
-        }
-    }
-
-private:
-    std::atomic<bool>& stop_;
-    std::vector<std::thread> threads_;
-};
-
 // Ends a run of the sweep when the sweep is being stopped (interrupted or failed), checked at every step.
 class StopWhenAsked : public drivers::StepObserver {
 public:
@@ -176,21 +147,6 @@ private:
     const std::atomic<bool>& stop_;
 };
 
-// Waits until `done` (guarded by `mutex`, signalled by `finished`) reaches `total`, calling `report(done)` every
-// 0.2 s and at the end (also when all ended before the first wait), outside the lock: the caller sees progress and
-// can stop the work by throwing, also while a long piece of it runs.
-void report_until_done(std::mutex& mutex, std::condition_variable& finished, const std::size_t& done,
-                       std::size_t total, const std::function<void(std::size_t)>& report) {
-    std::unique_lock lock(mutex);
-    do {
-        finished.wait_for(lock, std::chrono::milliseconds(200), [&] { return done == total; });
-        const std::size_t reported = done;
-        lock.unlock();
-        report(reported);
-        lock.lock();
-    } while (done < total);
-}
-
 // The order in which `threads` (> 1) threads take the rows: the costliest first (drivers::estimate_work, steps x
 // elements; a point that cannot be built costs 0, its run fails at once), ties in grid order, so that a parallel
 // sweep does not end waiting on a large point started last. The estimates are spread over the threads too, while
@@ -199,31 +155,20 @@ std::vector<std::size_t> costliest_first(const CaseTemplate& model, const std::v
                                          const std::vector<SweepRow>& rows, unsigned threads,
                                          const std::function<void(std::size_t, std::size_t)>& progress) {
     std::vector<double> costs(rows.size(), 0.0);
-    std::atomic<std::size_t> next{0};
-    std::size_t estimated = 0;
-    std::mutex mutex;
-    std::condition_variable finished;
-    {
-        std::atomic<bool> ended{false};
-        Workers estimators(ended);
-        estimators.start(threads, [&] {
-            for (std::size_t r = next++; r < rows.size() && !ended; r = next++) {
-                try {
-                    const auto contact_case = case_at(model, keys, rows[r].point);
-                    const auto numerics = drivers::resolve_numerics(contact_case);
-                    costs[r] = drivers::estimate_work(contact_case, numerics).element_steps;
-                } catch (const std::exception&) {
-                    costs[r] = 0.0;
-                }
-                const std::lock_guard lock(mutex);
-                ++estimated;
-                finished.notify_one();
+    parallel::run_on_threads(
+        rows.size(), threads,
+        [&](std::size_t r, unsigned, const std::atomic<bool>&) {
+            try {
+                const auto contact_case = case_at(model, keys, rows[r].point);
+                const auto numerics = drivers::resolve_numerics(contact_case);
+                costs[r] = drivers::estimate_work(contact_case, numerics).element_steps;
+            } catch (const std::exception&) {
+                costs[r] = 0.0;
             }
-        });
-        report_until_done(mutex, finished, estimated, rows.size(), [&](std::size_t) {
+        },
+        [&](std::size_t) {
             if (progress) progress(0, rows.size());  // no point has run yet
         });
-    }  // joined (also when progress throws: the Workers end the estimates)
     std::vector<std::size_t> order(rows.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return costs[a] > costs[b]; });
@@ -282,36 +227,25 @@ std::vector<SweepRow> run_sweep_points(const CaseTemplate& model, const std::vec
     std::vector<std::size_t> order(total);
     std::iota(order.begin(), order.end(), std::size_t{0});
     if (threads > 1) order = costliest_first(model, keys, rows, threads, progress);
-    std::atomic<bool> stop{false};
-    std::atomic<std::size_t> next{0};
-    std::size_t done = 0;
-    std::mutex mutex;
-    std::condition_variable finished;
-    StopWhenAsked stop_observer(stop);
-    const drivers::StepObservers observers{&stop_observer};
-    const auto work = [&] {
-        for (std::size_t n = next++; n < total && !stop; n = next++) {
+    parallel::run_on_threads(
+        total, threads,
+        [&](std::size_t n, unsigned, const std::atomic<bool>& stop) {
             SweepRow& row = rows[order[n]];
+            StopWhenAsked stop_observer(stop);
             try {
                 const auto contact_case = case_at(model, keys, row.point);
                 const auto start = std::chrono::steady_clock::now();
-                const auto result = drivers::run_case(contact_case, {}, observers);
+                const auto result = drivers::run_case(contact_case, {}, {&stop_observer});
                 if (result.stopped) return;  // interrupted: the row stays empty, the sweep is abandoned
                 const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 row.summary = summarize(contact_case, result, wall);
             } catch (const std::exception& error) {
                 row.error = error.what();
             }
-            const std::lock_guard lock(mutex);
-            ++done;
-            finished.notify_one();
-        }
-    };
-    Workers workers(stop);
-    workers.start(threads, work);
-    report_until_done(mutex, finished, done, total, [&](std::size_t reported) {
-        if (progress) progress(reported, total);
-    });
+        },
+        [&](std::size_t reported) {
+            if (progress) progress(reported, total);
+        });
     return rows;
 }
 

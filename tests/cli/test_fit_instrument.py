@@ -74,11 +74,21 @@ def test_a_jpk_force_file_fits_as_its_csv_export(run_mdr, workdir):
     (f'file = "{VENDOR / "cell1-0001.jpk-force"}"\nsegments = ["hold"]\n',
      ["fit.data[0].segments = \"hold\"", "pause, extend, pause, retract"]),
     (f'file = "{VENDOR / "cell1-0001.jpk-force"}"\nspring_constant = 1.0\n',
-     ["fit.data[0].spring_constant", "stated by the instrument file"]),
+     ["fit.data[0].spring_constant = 1:", "states its own spring constant"]),
     (f'file = "{VENDOR / "cell1-0001.jpk-force"}"\nunits = {{ length = "nm" }}\n',
      ["fit.data[0].units", "stated by the instrument file"]),
     (f'file = "{VENDOR / "fmt-afm-workshop-fd_single_2018-08-01_13.06.09.csv"}"\n',
-     ["fit.data[0].file"]),
+     ["fit.data[0].spring_constant = (missing):", "records no spring constant"]),
+    (f'file = "{VENDOR / "fmt-afm-workshop-fd_single_2018-08-01_13.06.09.csv"}"\nspring_constant = 0.1\n'
+     'sensitivity = 50e-9\n',
+     ["fit.data[0].file = \"fmt-afm-workshop-fd_single_2018-08-01_13.06.09.csv\":", "records no time",
+      "a viscoelastic fit needs each row's time"]),
+    (f'file = "{VENDOR / "fmt-ntmdt-txt-fd_2015_01_17_gel4-0,1_mQ_adh_6B_Curve_DFL_Height_51.txt"}"\n'
+     'spring_constant = 0.055\nsensitivity = 61.0\n', ["fit.data[0].file", "records no time"]),
+    (f'file = "{VENDOR / "cell1-0001.jpk-force"}"\nsensitivity = 0.0\n',
+     ["fit.data[0].sensitivity = 0:", "must be > 0"]),
+    (f'file = "{REPO_ROOT / "examples" / "data" / "jpk_sr_cell1-0001.csv"}"\ntime = "t_s"\nsensitivity = 1e-7\n',
+     ["fit.data[0].sensitivity =", "is for an instrument file"]),
     (f'file = "{REPO_ROOT / "examples" / "data" / "jpk_sr_cell1-0001.csv"}"\ntime = "t_s"\ncurve = 0\n',
      ["fit.data[0].curve", "instrument file"]),
 ])

@@ -66,10 +66,77 @@ def test_the_columns_and_values_of_the_command_lines_map_csv(mdr_binary, tmp_pat
 
 
 def test_arguments_of_stacks_are_refused_with_an_instrument_file():
-    with pytest.raises(ValueError, match="^jobs = 2"):
-        mdr.fit_map(CASE, MAP, jobs=2)
     with pytest.raises(ValueError, match="^time: not used with an instrument file"):
         mdr.fit_map(CASE, MAP, time=[0.0, 1.0])
+
+
+@pytest.mark.parametrize("jobs", [0, -1, 1.5, True, "2"])
+def test_jobs_that_are_no_number_of_threads_are_refused_naming_jobs(jobs):
+    with pytest.raises(ValueError, match=r"^jobs = .*: must be an integer >= 1"):
+        mdr.fit_map(CASE, MAP, jobs=jobs)
+
+
+@pytest.mark.filterwarnings("ignore:jobs = 3. more than the:RuntimeWarning")
+def test_pixels_on_threads_give_the_bytes_of_one_thread_in_the_files_order(mdr_binary, tmp_path):
+    # The 3 pixels fit to different G (and the broken map's middle one fails): a row in another's place would show.
+    for name, source in (("map", MAP), ("broken", BROKEN)):
+        tables = []
+        for jobs in (1, 3):
+            mdr.fit_map(CASE, source, jobs=jobs, out=tmp_path / f"py-{name}-{jobs}", figures=False)
+            tables.append((tmp_path / f"py-{name}-{jobs}" / "map.csv").read_bytes())
+        (tmp_path / "case.toml").write_text(CASE_TOML)
+        for jobs in ("1", "3"):
+            completed = subprocess.run([mdr_binary, "fit", "case.toml", "--map", source, "--out", f"cli-{name}-{jobs}",
+                                        "--jobs", jobs], cwd=tmp_path, capture_output=True, text=True, timeout=300)
+            assert completed.returncode in (0, 1), completed.stderr
+            threads = min(int(jobs), len(os.sched_getaffinity(0)))  # and at most the 3 pixels
+            assert completed.stdout.splitlines()[0].endswith(f"({threads} thread(s))"), completed.stdout
+            tables.append((tmp_path / f"cli-{name}-{jobs}" / "map.csv").read_bytes())
+        assert all(table == tables[0] for table in tables), name
+        rows = list(csv.DictReader(tables[0].decode().splitlines()))
+        assert [row["index"] for row in rows] == ["0", "1", "2"]
+        if name == "map":
+            assert len({row["material.G"] for row in rows}) == 3
+
+
+@pytest.mark.parametrize("jobs", ["0", "-2", "two", ""])
+def test_the_command_line_refuses_jobs_that_are_no_number_of_threads(mdr_binary, tmp_path, jobs):
+    (tmp_path / "case.toml").write_text(CASE_TOML)
+    completed = subprocess.run([mdr_binary, "fit", "case.toml", "--map", MAP, "--out", "out", "--jobs", jobs],
+                               cwd=tmp_path, capture_output=True, text=True, timeout=60)
+    assert completed.returncode == 2
+    assert completed.stderr.splitlines() == [f"mdr: error: --jobs = {jobs}: must be a whole number >= 1 (threads)"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["case.toml"]
+
+
+def test_colour_bar_units_come_from_the_registry_of_the_cases_model(tmp_path):
+    # A Prony series: terms[0][0] is a modulus (Pa) and terms[0][1] a relaxation time (s), as the model's registry
+    # row states ("Pa, s"); a rule on key names gave the time no unit. power_law's beta is an exponent: no unit.
+    from mdr.map_figures import map_heat_maps
+
+    prony = {"material": {"model": "prony", "G_inf": 500.0, "terms": [[500.0, 0.1]]},
+             "indenter": {"shape": "sphere", "R": 5.0e-6},
+             "fit": {"free": ["material.G_inf", "material.terms[0][0]", "material.terms[0][1]"],
+                     "data": [{"file": "map.jpk-force-map", "segments": ["extend"]}]}}
+    mdr.fit_map(prony, MAP, out=tmp_path / "prony", figures=False, jobs=1)
+    units = json.loads((tmp_path / "prony" / "map.json").read_text())["column_units"]
+    assert units["material.terms[0][1]"] == units["material.terms[0][1]_stderr"] == "s"
+    assert units["material.terms[0][0]"] == units["E_material.terms[0][0]"] == units["material.G_inf"] == "Pa"
+    assert (units["x"], units["contact_height"], units["noise"], units["residual_to_noise"]) == ("m", "m", "N", "1")
+    labels = {name: figure.axes[1].get_ylabel() for name, figure in map_heat_maps(str(tmp_path / "prony"))}
+    assert labels["material.terms[0][1]"] == "material.terms[0][1] [s]"
+    assert labels["residual_to_noise"] == "residual_to_noise"
+
+    with_units = dict(prony, units="um-nN-s", material={"model": "power_law", "G0": 1.0, "beta": 0.2},
+                      indenter={"shape": "sphere", "R": 5.0},
+                      fit={"free": ["material.G0", "material.beta"], "bounds": {"material.beta": [0.05, 0.95]},
+                           "data": prony["fit"]["data"]})
+    mdr.fit_map(with_units, MAP, out=tmp_path / "power", figures=False, jobs=1)
+    units = json.loads((tmp_path / "power" / "map.json").read_text())["column_units"]
+    assert (units["material.G0"], units["material.beta"], units["contact_height"], units["noise"]) == \
+        ("kPa", "1", "µm", "nN")
+    labels = {name: figure.axes[1].get_ylabel() for name, figure in map_heat_maps(str(tmp_path / "power"))}
+    assert labels["material.G0"] == "material.G0 [kPa]" and labels["material.beta"] == "material.beta"
 
 
 def test_a_failed_pixel_is_a_row_with_its_reason():

@@ -58,3 +58,22 @@ def test_ctrl_c_stops_a_fit():
                     "contact_point": "fixed", "baseline": "fixed"}}
     delay = interrupted_after(0.5, lambda: mdr.fit(case, data=[{"time": t, "depth": depth, "force": force}]))
     assert delay < 5.0
+
+
+def test_ctrl_c_stops_an_instrument_map_on_threads(tmp_path):
+    # 256 copies of the vendor JPK map's pixel 109 (scripts/make_instrument_test_files.py; ~30 ms of fitting each),
+    # fitted on 2 threads: the calling thread sees Ctrl-C at its next progress report (0.2 s) and the threads stop at
+    # their next model run.
+    import subprocess
+    import sys
+
+    from conftest import REPO_ROOT
+
+    big = tmp_path / "big.jpk-force-map"
+    subprocess.run([sys.executable, REPO_ROOT / "scripts" / "make_instrument_test_files.py", "map", "256", big],
+                   check=True, capture_output=True, timeout=120)
+    case = {"material": {"model": "elastic", "G": 1000.0}, "indenter": {"shape": "sphere", "R": 5.0e-6},
+            "fit": {"free": ["material.G"], "data": [{"file": "map.jpk-force-map", "segments": ["extend"]}]}}
+    delay = interrupted_after(0.5, lambda: mdr.fit_map(case, big, jobs=2, out=tmp_path / "out"))
+    assert delay < 5.0
+    assert not (tmp_path / "out").exists()

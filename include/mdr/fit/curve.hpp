@@ -59,7 +59,12 @@ struct CurveSource {
     std::string force_column;               ///< force on the indenter, positive in compression ("" for raw AFM)
     std::string piezo_column;               ///< AFM: height of the cantilever base, larger = farther from the sample
     std::string deflection_column;          ///< AFM: cantilever deflection, positive = bent away from the sample
-    std::optional<double> spring_constant;  ///< AFM: cantilever spring constant, in units of spring_constant_unit
+    /// AFM: cantilever spring constant, in units of spring_constant_unit (an instrument file: N/m, for a file that
+    /// records none)
+    std::optional<double> spring_constant;
+    /// Instrument file that records the deflection signal uncalibrated: deflection per volt (AFM Workshop) or per
+    /// ampere (NT-MDT), m/V or m/A (instrument::ReadOptions::sensitivity)
+    std::optional<double> sensitivity;
     double spring_constant_unit = 1.0;      ///< the curve's force / length per unit of spring_constant
     double time_unit = 1.0;                 ///< the curve's time units per unit of the time column
     double length_unit = 1.0;               ///< the curve's length units per unit of the depth, piezo and deflection

@@ -22,15 +22,21 @@ Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& sour
                            double* tip_height_zero = nullptr);
 
 /// Refuses (mdr::InvalidInput, keys of a `[[fit.data]]` table) what an instrument source must not have: a column
-/// name, a spring constant, a segment column, a segment listed twice.
+/// name, a segment column, a segment listed twice.
 void check_instrument_source(const CurveSource& source);
+
+/// What `source` states for a file that records no calibration: its `spring_constant` (N/m) and `sensitivity`
+/// (m/V or m/A), 0 where not given. The reader refuses them for a file that states its own, and a missing one for a
+/// file that needs it, naming the key (docs/instrument-files.md).
+instrument::ReadOptions read_options(const CurveSource& source);
 
 /// The index of the curve `source` names in `file` (which holds `source.file`): `source.curve`, which must be <
 /// file.size(), or 0 for a file of one curve. Throws mdr::InvalidInput with the key `curve` otherwise.
 std::size_t instrument_curve_index(const CurveSource& source, const instrument::CurveFile& file);
 
-/// load_curve for an instrument source: opens the file, reads the curve instrument_curve_index names and returns
-/// instrument_fit_curve of it. The instrument readers' errors keep their rule under the key `file`.
+/// load_curve for an instrument source: opens the file with read_options, reads the curve instrument_curve_index
+/// names and returns instrument_fit_curve of it. The instrument readers' errors keep their rule under the key
+/// `file`, but for a missing or refused `spring_constant` or `sensitivity`, which keep their key.
 Curve load_instrument_curve(const CurveSource& source);
 
 }  // namespace mdr::fit

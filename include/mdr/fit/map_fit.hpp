@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,6 +53,17 @@ void require_map_case(const io::FitCase& fit_case);
 PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path& path, instrument::CurveFile& file,
                        std::size_t index);
 
+/// Fits the curves 0 to `count` - 1 of the instrument file at `path` (`count` its size) with fit_map_pixel on
+/// `threads` threads (at most one a curve), each with its own opening of the file and its own copy of the case, so
+/// that they share nothing mutable; the pixels are returned in the file's order, the same whatever `threads`.
+/// `progress(done, total)` is called on the calling thread at least every 0.2 s and at the end; it may stop the map
+/// by throwing (mdr::Interrupted for Ctrl-C), which every fit sees at its next model run. The case's own
+/// `settings.check_interrupt`, if any, is called from the threads and must be safe there; its `on_iteration` is
+/// not called (the map reports pixels).
+std::vector<PixelFit> fit_map_pixels(const io::FitCase& fit_case, const std::filesystem::path& path,
+                                     std::size_t count, unsigned threads,
+                                     const std::function<void(std::size_t, std::size_t)>& progress);
+
 /// The raster of `file` in the case's length unit: the grid its first readable curve states (an unreadable curve is
 /// its pixel's failed row, fit_map_pixel); all 0 when no curve can be read or the file is not a map.
 MapLayout map_layout(instrument::CurveFile& file, const io::FitCase& fit_case);
@@ -61,12 +73,16 @@ MapLayout map_layout(instrument::CurveFile& file, const io::FitCase& fit_case);
 /// `residual_to_noise`, `noise`, then `status`, `flags` (joined by "; ") and `failure`, in this order whichever
 /// pixels failed; a value a row lacks is empty. Fields quoted by RFC 4180 (io::csv_field); numbers with 17
 /// significant digits. Throws std::runtime_error when the file cannot be written.
-void write_map_table(const std::filesystem::path& path, const std::vector<PixelFit>& pixels);
+void write_map_table(const std::filesystem::path& path, const std::vector<PixelFit>& pixels,
+                     const io::FitCase& fit_case);
 
 /// Writes map.json: `source` (the map file), `units`, `length_unit` and `length_size` (m) of the case's unit
-/// system `units`, the grid's `columns` and `rows`, its `size` and `pixel_size` (x, y) in that length unit, the
-/// number of `pixels` and of `failed` ones (no fit). Throws std::runtime_error when the file cannot be written.
-void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const std::string& units,
+/// system, the grid's `columns` and `rows`, its `size` and `pixel_size` (x, y) in that length unit, the number of
+/// `pixels` and of `failed` ones (no fit), and `column_units`: the unit of every column of map.csv in the case's
+/// system, that of a free key (and of its `_stderr` and `E_` columns) from the registry that defines it
+/// (io::free_key_unit), "1" for a ratio or an exponent, "" for a column that is no quantity. Throws
+/// std::runtime_error when the file cannot be written.
+void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const io::FitCase& fit_case,
                        const std::filesystem::path& source, const std::vector<PixelFit>& pixels);
 
 }  // namespace mdr::fit

@@ -4,6 +4,7 @@
 /// drivers::ContactCase without going through text again: what sweeps and fits vary.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -36,6 +37,8 @@ public:
     /// Sets the number at `key` (an integer becomes a floating-point value). Throws mdr::InvalidInput (key `key`)
     /// when the case has no number there.
     void set_number(const std::string& key, double value);
+    /// The string at `key` (`material.model`), or nothing when the case has no string there.
+    std::optional<std::string> string_at(const std::string& key) const;
     /// True when the case has the top-level table `name`.
     bool has_table(const std::string& name) const;
     /// Removes the top-level table `name` (and returns its TOML text, "" when absent), e.g. `fit` from a fit case.

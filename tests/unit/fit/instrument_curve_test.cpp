@@ -84,14 +84,38 @@ TEST(InstrumentCurve, ACurveOfAMapOutOfRangeIsRefusedNamingTheKey) {
     EXPECT_EQ(key_of(source), "(accepted)");
 }
 
-TEST(InstrumentCurve, ASegmentTheFileLacksOrASpringConstantIsRefused) {
+TEST(InstrumentCurve, ASegmentTheFileLacksOrASecondSpringConstantIsRefused) {
     CurveSource source = instrument_source("cell1-0001.jpk-force");
     source.segments = {"hold"};
     EXPECT_EQ(key_of(source), "segments = \"hold\": is not a segment of cell1-0001.jpk-force; its segments: pause, "
                               "extend, pause, retract");
     source.segments = {};
-    source.spring_constant = 1.0;
-    EXPECT_EQ(key_of(source).rfind("spring_constant = 1: is stated by the instrument file", 0), 0u) << key_of(source);
+    source.spring_constant = 1.0;  // the file states 1.0677 N/m (its header): a second one is refused, not preferred
+    EXPECT_EQ(key_of(source), "spring_constant = 1: " + source.file.string() +
+                                  " states its own spring constant: give one only for files that lack it");
+}
+
+TEST(InstrumentCurve, AFileWithoutCalibrationTakesTheCasesAndAFileWithoutTimeIsRefusedNamingIt) {
+    // The AFM Workshop export records Z-Sense and the photodiode signal T-B in volts, nothing else (its header: date,
+    // time of day, mode, point, X, Y): no spring constant, no sensitivity, no time and no ramp rate.
+    CurveSource source = instrument_source("fmt-afm-workshop-fd_single_2018-08-01_13.06.09.csv");
+    EXPECT_EQ(key_of(source).rfind("spring_constant = (missing): " + source.file.string() +
+                                       " records no spring constant: give one > 0 (N/m)",
+                                   0),
+              0u)
+        << key_of(source);
+    source.spring_constant = 0.1;
+    EXPECT_EQ(key_of(source).rfind("sensitivity = (missing): ", 0), 0u) << key_of(source);
+    source.sensitivity = 50e-9;
+    EXPECT_EQ(key_of(source), "file = \"fmt-afm-workshop-fd_single_2018-08-01_13.06.09.csv\": records no time (no "
+                              "time channel, and its header states no ramp rate or sampling rate): a viscoelastic fit "
+                              "needs each row's time");
+    // NT-MDT Nova's text export has no header at all: three columns, height and the DFL signal in nA.
+    CurveSource nova = instrument_source("fmt-ntmdt-txt-fd_2015_01_17_gel4-0,1_mQ_adh_6B_Curve_DFL_Height_51.txt");
+    EXPECT_EQ(key_of(nova).rfind("spring_constant = (missing): ", 0), 0u) << key_of(nova);
+    nova.spring_constant = 0.055;
+    nova.sensitivity = 61.0;
+    EXPECT_NE(key_of(nova).find("records no time"), std::string::npos) << key_of(nova);
 }
 
 }  // namespace

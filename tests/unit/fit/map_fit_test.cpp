@@ -5,7 +5,9 @@
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
+#include <vector>
 
+#include "mdr/error.hpp"
 #include "mdr/fit/map_fit.hpp"
 #include "mdr/instrument/read_curves.hpp"
 #include "mdr/io/fit_case.hpp"
@@ -13,8 +15,7 @@
 namespace mdr::fit {
 namespace {
 
-TEST(MapFit, APixelKeepsItsFitButNotItsDataPoints) {
-    const char* text = R"(
+const char* const map_case = R"(
 [material]
 model = "elastic"
 G = 1000.0
@@ -30,10 +31,14 @@ free = ["material.G"]
 file = "map.jpk-force-map"
 segments = ["extend"]
 )";
-    const io::FitCase fit_case = io::parse_fit_case(text, "map.toml", ".");
+
+const std::filesystem::path vendor_map =
+    std::filesystem::path(MDR_VENDOR_DATA) / "fmt-jpk-fd_map-data-reference-points.jpk-force-map";
+
+TEST(MapFit, APixelKeepsItsFitButNotItsDataPoints) {
+    const io::FitCase fit_case = io::parse_fit_case(map_case, "map.toml", ".");
     require_map_case(fit_case);
-    const std::filesystem::path map =
-        std::filesystem::path(MDR_VENDOR_DATA) / "fmt-jpk-fd_map-data-reference-points.jpk-force-map";
+    const std::filesystem::path& map = vendor_map;
     instrument::CurveFile file(map);
     const PixelFit pixel = fit_map_pixel(fit_case, map, file, 0);
     ASSERT_TRUE(pixel.result.has_value()) << pixel.failure;
@@ -51,8 +56,38 @@ TEST(MapFit, AWriteErrorOfTheTablesIsReportedNotLost) {
     if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
     PixelFit pixel;
     pixel.failure = "unreadable";
-    EXPECT_THROW(write_map_table("/dev/full", {pixel}), std::runtime_error);
-    EXPECT_THROW(write_map_summary("/dev/full", MapLayout{}, "SI", "map.jpk-force-map", {pixel}), std::runtime_error);
+    const io::FitCase fit_case = io::parse_fit_case(map_case, "map.toml", ".");
+    EXPECT_THROW(write_map_table("/dev/full", {pixel}, fit_case), std::runtime_error);
+    EXPECT_THROW(write_map_summary("/dev/full", MapLayout{}, fit_case, "map.jpk-force-map", {pixel}),
+                 std::runtime_error);
+}
+
+TEST(MapFit, PixelsFittedOnThreadsAreThoseOfOneThreadInTheFilesOrder) {
+    // The rule of fit_map_pixels: whatever the threads, pixel i is curve i's fit, bit for bit. The 3 pixels of the
+    // vendor map differ (their fitted G differ), so a pixel put in another's place would show.
+    const io::FitCase fit_case = io::parse_fit_case(map_case, "map.toml", ".");
+    std::size_t reports = 0;
+    const auto count = [&](std::size_t, std::size_t) { ++reports; };
+    const std::vector<PixelFit> alone = fit_map_pixels(fit_case, vendor_map, 3, 1, count);
+    const std::vector<PixelFit> parallel = fit_map_pixels(fit_case, vendor_map, 3, 3, count);
+    EXPECT_GE(reports, 2u);
+    ASSERT_EQ(alone.size(), 3u);
+    ASSERT_EQ(parallel.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(parallel[i].index, i);
+        ASSERT_TRUE(alone[i].result && parallel[i].result) << alone[i].failure << parallel[i].failure;
+        EXPECT_EQ(parallel[i].result->values, alone[i].result->values);
+        EXPECT_EQ(parallel[i].result->standard_errors, alone[i].result->standard_errors);
+        EXPECT_EQ(parallel[i].contact_height, alone[i].contact_height);
+        EXPECT_EQ(parallel[i].x, alone[i].x);
+    }
+    EXPECT_NE(alone[0].result->values, alone[1].result->values);
+}
+
+TEST(MapFit, AMapStoppedByItsProgressEndsWithTheProgresssException) {
+    const io::FitCase fit_case = io::parse_fit_case(map_case, "map.toml", ".");
+    EXPECT_THROW(fit_map_pixels(fit_case, vendor_map, 3, 2, [](std::size_t, std::size_t) { throw Interrupted(); }),
+                 Interrupted);
 }
 
 }  // namespace
