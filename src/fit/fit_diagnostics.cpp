@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "data_window.hpp"
+#include "curve_rows_cost.hpp"
 #include "jacobian_summary.hpp"
 
 namespace mdr::fit {
@@ -144,14 +145,15 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
         const CurveCost& cost = *costs[c];
         const CurveModel& prepared = cost.prepared();
         const std::size_t n = prepared.used.size();
-        std::vector<double> shared_block(n * k), nuisance_block(n * std::max<std::size_t>(m, 1));
         CurveFit curve;
         curve.model.resize(n);  // the weighted residuals r = (model - measured) / noise first, then the model
         const double* parameters[2] = {shared.data(), nuisance[c].data()};
-        double* blocks[2] = {shared_block.data(), nuisance_block.data()};
-        if (!cost.Evaluate(parameters, curve.model.data(), blocks)) {
-            throw std::runtime_error("the model cannot be evaluated at the fitted values");
-        }
+        const auto evaluate = [&](std::size_t begin, std::size_t end, double* residuals, double** jacobians) {
+            if (!cost.evaluate_rows(parameters, begin, end, residuals, jacobians, true)) {
+                throw std::runtime_error("the model cannot be evaluated at the fitted values");
+            }
+        };
+        evaluate(0, n, curve.model.data(), nullptr);  // the residuals: one run (the solver's last)
         const Eigen::Map<const Eigen::VectorXd> residuals(curve.model.data(), static_cast<Eigen::Index>(n));
         curve.residual_correlation = lag_one_correlation(residuals);
         summary.add_residuals(residuals);
@@ -180,16 +182,26 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
                                ? error_correlation(curve.residual_correlation, static_cast<Eigen::Index>(n))
                                : 0.0;
         curve.effective_points = std::max(static_cast<double>(n) * (1.0 - phi) / (1.0 + phi), 1.0);
-        summary.add_rows(
-            static_cast<Eigen::Index>(n),
-            [&](Eigen::Index i, Eigen::Ref<Eigen::RowVectorXd> row) {
-                const auto r = static_cast<std::size_t>(i);
-                for (std::size_t j = 0; j < k; ++j) row[static_cast<Eigen::Index>(j)] = shared_block[r * k + j];
-                for (std::size_t j = 0; j < m; ++j) {
-                    row[static_cast<Eigen::Index>(k + c * m + j)] = nuisance_block[r * m + j];
-                }
-            },
-            phi);
+        // The Jacobian in the solver's row blocks (the cost keeps its columns until the last block).
+        const std::size_t block = std::min(n, solver_block_rows);
+        std::vector<double> block_residuals(block), shared_block(block * k),
+            nuisance_block(block * std::max<std::size_t>(m, 1));
+        double* blocks[2] = {shared_block.data(), nuisance_block.data()};
+        summary.start_curve(phi);
+        for (std::size_t begin = 0; begin < n; begin += block) {
+            const std::size_t end = std::min(begin + block, n);
+            evaluate(begin, end, block_residuals.data(), blocks);
+            summary.add_rows(static_cast<Eigen::Index>(end - begin),
+                             [&](Eigen::Index i, Eigen::Ref<Eigen::RowVectorXd> row) {
+                                 const auto r = static_cast<std::size_t>(i);
+                                 for (std::size_t j = 0; j < k; ++j) {
+                                     row[static_cast<Eigen::Index>(j)] = shared_block[r * k + j];
+                                 }
+                                 for (std::size_t j = 0; j < m; ++j) {
+                                     row[static_cast<Eigen::Index>(k + c * m + j)] = nuisance_block[r * m + j];
+                                 }
+                             });
+        }
         result.curves.push_back(std::move(curve));
     }
     for (const auto& cost : rebounds) {  // their rows have no contact point or baseline: 0 in those columns
@@ -201,14 +213,12 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
             throw std::runtime_error("the model cannot be evaluated at the fitted values");
         }
         summary.add_residuals(Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(n)));
-        summary.add_rows(
-            static_cast<Eigen::Index>(n),
-            [&](Eigen::Index i, Eigen::Ref<Eigen::RowVectorXd> row) {
-                for (std::size_t j = 0; j < k; ++j) {
-                    row[static_cast<Eigen::Index>(j)] = shared_block[static_cast<std::size_t>(i) * k + j];
-                }
-            },
-            0.0);
+        summary.start_curve(0.0);
+        summary.add_rows(static_cast<Eigen::Index>(n), [&](Eigen::Index i, Eigen::Ref<Eigen::RowVectorXd> row) {
+            for (std::size_t j = 0; j < k; ++j) {
+                row[static_cast<Eigen::Index>(j)] = shared_block[static_cast<std::size_t>(i) * k + j];
+            }
+        });
         const auto impacts = cost->impacts(shared.data());
         result.curves.push_back(rebound_entry(cost->data(), ReboundQuantity::restitution, impacts));
         if (!cost->data().contact_time.empty()) {

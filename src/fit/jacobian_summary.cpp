@@ -7,7 +7,12 @@ namespace mdr::fit {
 
 JacobianSummary::JacobianSummary(Eigen::Index columns)
     : stack_(RowMajorMatrix::Zero(columns + block_rows, columns)),
-      correlated_gram_(Eigen::MatrixXd::Zero(columns, columns)) {}
+      correlated_gram_(Eigen::MatrixXd::Zero(columns, columns)), forward_(Eigen::RowVectorXd::Zero(columns)) {}
+
+void JacobianSummary::start_curve(double phi) {
+    phi_ = phi;
+    forward_.setZero();
+}
 
 void JacobianSummary::fold() const {
     if (waiting_ == 0) return;
@@ -19,10 +24,9 @@ void JacobianSummary::fold() const {
     waiting_ = 0;
 }
 
-void JacobianSummary::add_rows(Eigen::Index rows, const RowOf& row_of, double phi) {
+void JacobianSummary::add_rows(Eigen::Index rows, const RowOf& row_of) {
     const Eigen::Index p = stack_.cols();
     RowMajorMatrix forward(block_rows, p);  // F_i = J_i + phi F_(i-1) for the rows of one block
-    Eigen::RowVectorXd previous = Eigen::RowVectorXd::Zero(p);
     Eigen::MatrixXd lower = Eigen::MatrixXd::Zero(p, p), gram = Eigen::MatrixXd::Zero(p, p);
     for (Eigen::Index begin = 0; begin < rows;) {
         if (waiting_ == block_rows) fold();
@@ -31,12 +35,12 @@ void JacobianSummary::add_rows(Eigen::Index rows, const RowOf& row_of, double ph
         for (Eigen::Index i = 0; i < count; ++i) {
             row_of(begin + i, block.row(i));
             if (i == 0) {
-                forward.row(i) = block.row(i) + phi * previous;
+                forward.row(i) = block.row(i) + phi_ * forward_;
             } else {
-                forward.row(i) = block.row(i) + phi * forward.row(i - 1);
+                forward.row(i) = block.row(i) + phi_ * forward.row(i - 1);
             }
         }
-        previous = forward.row(count - 1);
+        forward_ = forward.row(count - 1);
         lower.noalias() += block.transpose() * forward.topRows(count);
         gram.noalias() += block.transpose() * block;
         waiting_ += count;

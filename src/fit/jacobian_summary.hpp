@@ -9,7 +9,7 @@
 
 namespace mdr::fit {
 
-/// The p x p summary of J and r, fed one curve (or one rebound data set) at a time:
+/// The p x p summary of J and r, fed one curve (or one rebound data set) after the other, in row blocks:
 /// - the triangular factor R of J = Q R, updated by Householder QR of [R; next rows] (the tall-skinny QR,
 ///   Demmel et al. 2012, SIAM J. Sci. Comput. 34:A206): R's singular values and right singular vectors are J's,
 ///   with the backward stability of a QR of J itself (a JacobiSVD of a tall J does the same QR first);
@@ -25,9 +25,11 @@ public:
     /// Writes row i of J (all columns) into `row`, zero on entry.
     using RowOf = std::function<void(Eigen::Index i, Eigen::Ref<Eigen::RowVectorXd> row)>;
 
-    /// Adds one curve's `rows` rows of J (`row_of`), its errors correlated with coefficient `phi` (0: independent)
-    /// within these rows.
-    void add_rows(Eigen::Index rows, const RowOf& row_of, double phi);
+    /// Starts the rows of a curve (or rebound data set) whose errors are correlated with coefficient `phi`
+    /// (0: independent) within it.
+    void start_curve(double phi);
+    /// Adds the curve's next `rows` rows of J (`row_of`).
+    void add_rows(Eigen::Index rows, const RowOf& row_of);
     /// Adds residuals to r.
     void add_residuals(const Eigen::Ref<const Eigen::VectorXd>& residuals);
 
@@ -49,6 +51,8 @@ private:
     mutable RowMajorMatrix stack_;                  ///< R in its top rows, then up to block_rows rows waiting
     mutable Eigen::Index waiting_ = 0;               ///< the rows waiting below R
     Eigen::MatrixXd correlated_gram_;
+    double phi_ = 0.0;                ///< the current curve's
+    Eigen::RowVectorXd forward_;      ///< F_i of the current curve's last row
     double scale_ = 0.0, scaled_squares_ = 0.0;
     Eigen::Index rows_ = 0;
 };
