@@ -22,7 +22,7 @@ Eigen::MatrixXd tall_matrix(Eigen::Index rows, Eigen::Index columns, unsigned se
     for (Eigen::Index i = 0; i < rows; ++i) {
         for (Eigen::Index j = 0; j < columns; ++j) matrix(i, j) = normal(random) * std::pow(10.0, static_cast<double>(j));
     }
-    matrix.col(columns - 1) = matrix.col(0) + 1e-6 * matrix.col(columns - 1) / std::pow(10.0, columns - 1.0);
+    matrix.col(columns - 1) = matrix.col(0) + 1e-6 * matrix.col(columns - 1) / std::pow(10.0, static_cast<double>(columns - 1));
     return matrix;
 }
 
