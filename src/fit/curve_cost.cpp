@@ -203,6 +203,9 @@ CurveCost::Outcome CurveCost::base_residuals(const std::vector<double>& shared, 
             }
             return last_run->outcome;
         }
+        // Only the last point is kept: its run and residuals go before the new ones are made, not after (two runs
+        // and their residuals were the peak of a long fit's memory, at each candidate of the solver).
+        last_run.reset();
     }
     auto fresh = std::make_shared<ModelValues>();
     auto fresh_residuals = std::make_shared<std::vector<double>>(prepared_.used.size());
