@@ -191,7 +191,8 @@ bool CurveCost::evaluate_rows(double const* const* parameters, std::size_t begin
 }
 
 CurveCost::Outcome CurveCost::base_residuals(const std::vector<double>& shared, const std::vector<double>& nuisance,
-                                             ForwardModel forward, std::shared_ptr<const std::vector<double>>& residuals,
+                                             ForwardModel forward,
+                                             std::shared_ptr<const std::vector<double>>& residuals,
                                              std::shared_ptr<const ModelValues>& run) const {
     std::optional<LastRun>& last_run = last_runs_[forward == ForwardModel::continuum ? 0 : 1];
     {

@@ -20,9 +20,12 @@ Eigen::MatrixXd tall_matrix(Eigen::Index rows, Eigen::Index columns, unsigned se
     std::normal_distribution<double> normal;
     Eigen::MatrixXd matrix(rows, columns);
     for (Eigen::Index i = 0; i < rows; ++i) {
-        for (Eigen::Index j = 0; j < columns; ++j) matrix(i, j) = normal(random) * std::pow(10.0, static_cast<double>(j));
+        for (Eigen::Index j = 0; j < columns; ++j) {
+            matrix(i, j) = normal(random) * std::pow(10.0, static_cast<double>(j));
+        }
     }
-    matrix.col(columns - 1) = matrix.col(0) + 1e-6 * matrix.col(columns - 1) / std::pow(10.0, static_cast<double>(columns - 1));
+    const double last_scale = std::pow(10.0, static_cast<double>(columns - 1));
+    matrix.col(columns - 1) = matrix.col(0) + 1e-6 * matrix.col(columns - 1) / last_scale;
     return matrix;
 }
 
