@@ -61,21 +61,24 @@ std::optional<ModelValues> CurveCost::model(const double* shared, const double* 
 }
 
 CurveCost::Outcome CurveCost::residuals_at(const double* shared, const double* nuisance, ForwardModel forward,
-                                           double* residuals, ModelValues* run) const {
+                                           std::vector<double>& residuals, ModelValues* run) const {
     try {
         auto values = model(shared, nuisance, forward, run != nullptr);
         if (!values) return Outcome::outside_model;
         const Curve& curve = problem_.curves[curve_];
         const auto& measured = prepared_.fitted == Fitted::force ? curve.force : curve.depth;
-        for (std::size_t i = 0; i < values->values.size(); ++i) {
-            residuals[i] = (values->values[i] - measured[prepared_.used[i]]) / prepared_.noise;
+        // The Jacobian reads a kept run's values only for Euler's identity, i.e. without modulus derivatives.
+        if (run == nullptr || !values->modulus_derivatives.empty()) {
+            residuals = std::move(values->values);
+            std::vector<double>().swap(values->values);  // empty whatever the move left
+        } else {
+            residuals = values->values;
+        }
+        for (std::size_t i = 0; i < residuals.size(); ++i) {
+            residuals[i] = (residuals[i] - measured[prepared_.used[i]]) / prepared_.noise;
             if (!std::isfinite(residuals[i])) return Outcome::failed;
         }
-        if (run != nullptr) {
-            *run = std::move(*values);
-            // The Jacobian reads a run's values only for Euler's identity, i.e. without modulus derivatives.
-            if (!run->modulus_derivatives.empty()) std::vector<double>().swap(run->values);
-        }
+        if (run != nullptr) *run = std::move(*values);
         return Outcome::done;
     } catch (const Interrupted&) {
         throw;  // a stop on request ends the fit
@@ -209,8 +212,8 @@ CurveCost::Outcome CurveCost::base_residuals(const std::vector<double>& shared, 
         last_run.reset();
     }
     auto fresh = std::make_shared<ModelValues>();
-    auto fresh_residuals = std::make_shared<std::vector<double>>(prepared_.used.size());
-    const Outcome outcome = residuals_at(shared.data(), nuisance.data(), forward, fresh_residuals->data(), fresh.get());
+    auto fresh_residuals = std::make_shared<std::vector<double>>();
+    const Outcome outcome = residuals_at(shared.data(), nuisance.data(), forward, *fresh_residuals, fresh.get());
     LastRun last{shared, nuisance, outcome, nullptr, nullptr};
     if (outcome == Outcome::done) {
         last.residuals = residuals = std::move(fresh_residuals);
@@ -232,8 +235,8 @@ CurveCost::Outcome CurveCost::fill_columns(JacobianColumns& columns, const std::
         const double saved = u;
         const double step = one_sided_step(u, difference_step, upper);
         u += step;
-        std::vector<double> shifted(n);
-        const Outcome outcome = residuals_at(shared.data(), nuisance.data(), columns.forward, shifted.data());
+        std::vector<double> shifted;
+        const Outcome outcome = residuals_at(shared.data(), nuisance.data(), columns.forward, shifted);
         u = saved;
         if (outcome != Outcome::done) return outcome;
         for (std::size_t i = 0; i < n; ++i) shifted[i] = (shifted[i] - residuals[i]) / step;

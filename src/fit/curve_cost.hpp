@@ -63,9 +63,11 @@ private:
     /// only when asked for.
     std::optional<ModelValues> model(const double* shared, const double* nuisance, ForwardModel forward,
                                      bool modulus_derivatives = true) const;
-    /// Residuals of one run; `run`, when given, keeps the run (its modulus derivatives, which only a kept run has).
-    Outcome residuals_at(const double* shared, const double* nuisance, ForwardModel forward, double* residuals,
-                         ModelValues* run = nullptr) const;
+    /// Residuals of one run into `residuals` (made in the run's own values where nothing reads them after: one
+    /// vector as long as the curve, not two); `run`, when given, keeps the run (its modulus derivatives, which only a
+    /// kept run has).
+    Outcome residuals_at(const double* shared, const double* nuisance, ForwardModel forward,
+                         std::vector<double>& residuals, ModelValues* run = nullptr) const;
     /// When parameter j changes nothing but the material's moduli near `values` (same relaxation times, dashpot
     /// and indenter as `base`, the case at `values`), the derivatives of the moduli with respect to shared
     /// coordinate j (TingResponse's branch order): a difference of the parameter-to-moduli map, exact for the
