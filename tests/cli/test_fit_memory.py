@@ -60,8 +60,9 @@ def test_a_long_curve_costs_a_few_times_its_data(mdr_binary, workdir):
     assert fitted["parameters"]["material.G"] == pytest.approx(G, rel=1e-4)
     # 12.0 x at first (288 MB), 10.5 x with one copy of the curves and no QR copy (252 MB), 8.5 x with the continuum
     # model reading the curve in place and leaving out what no one reads (203 MB), 4.7 x with the diagnostics
-    # summarising the Jacobian block by block, Ceres given the curve in row blocks and one model run kept (114 MB), 4.4 x
-    # with a run's residuals made in its own force vector (107 MB), of which ~0.5 x is the binary and its libraries.
+    # summarising the Jacobian block by block, Ceres given the curve in row blocks and one model run kept (114 MB),
+    # 4.4 x with a run's residuals made in its own force vector (107 MB), of which ~0.5 x is the binary and its
+    # libraries.
     # The bound keeps 15 % above the last and fails 8.5 x (main before this) and 6.7 x (the diagnostics' cut alone).
     data_bytes = 3 * 8 * ROWS
     assert peak_bytes < 5.1 * data_bytes, f"peak {peak_bytes / 1e6:.0f} MB = {peak_bytes / data_bytes:.1f} x the data"
