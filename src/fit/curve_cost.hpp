@@ -106,6 +106,7 @@ private:
         std::vector<Column> columns;
         std::size_t rows_written = 0;            ///< rows handed out (kept columns are released after all n)
     };
+    /// evaluate_rows with one forward model.
     Outcome evaluate_with(ForwardModel forward, double const* const* parameters, std::size_t begin, std::size_t end,
                           double* residuals, double** jacobians, bool keep) const;
     /// Fills `columns` (point, forward model and blocks set) from the base run's residuals: the model runs of the
