@@ -61,21 +61,24 @@ std::optional<ModelValues> CurveCost::model(const double* shared, const double* 
 }
 
 CurveCost::Outcome CurveCost::residuals_at(const double* shared, const double* nuisance, ForwardModel forward,
-                                           double* residuals, ModelValues* run) const {
+                                           std::vector<double>& residuals, ModelValues* run) const {
     try {
         auto values = model(shared, nuisance, forward, run != nullptr);
         if (!values) return Outcome::outside_model;
         const Curve& curve = problem_.curves[curve_];
         const auto& measured = prepared_.fitted == Fitted::force ? curve.force : curve.depth;
-        for (std::size_t i = 0; i < values->values.size(); ++i) {
-            residuals[i] = (values->values[i] - measured[prepared_.used[i]]) / prepared_.noise;
+        // The Jacobian reads a kept run's values only for Euler's identity, i.e. without modulus derivatives.
+        if (run == nullptr || !values->modulus_derivatives.empty()) {
+            residuals = std::move(values->values);
+            std::vector<double>().swap(values->values);  // empty whatever the move left
+        } else {
+            residuals = values->values;
+        }
+        for (std::size_t i = 0; i < residuals.size(); ++i) {
+            residuals[i] = (residuals[i] - measured[prepared_.used[i]]) / prepared_.noise;
             if (!std::isfinite(residuals[i])) return Outcome::failed;
         }
-        if (run != nullptr) {
-            *run = std::move(*values);
-            // The Jacobian reads a run's values only for Euler's identity, i.e. without modulus derivatives.
-            if (!run->modulus_derivatives.empty()) std::vector<double>().swap(run->values);
-        }
+        if (run != nullptr) *run = std::move(*values);
         return Outcome::done;
     } catch (const Interrupted&) {
         throw;  // a stop on request ends the fit
@@ -183,33 +186,43 @@ std::optional<CurveCost::EulerColumn> CurveCost::euler_column(const drivers::Con
 }
 
 bool CurveCost::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
+    return evaluate_rows(parameters, 0, prepared_.used.size(), residuals, jacobians, false);
+}
+
+bool CurveCost::evaluate_rows(double const* const* parameters, std::size_t begin, std::size_t end, double* residuals,
+                              double** jacobians, bool keep) const {
     if (prepared_.fitted == Fitted::force) {  // a depth-driven curve: the continuum model where it applies
-        const Outcome outcome = evaluate_with(ForwardModel::continuum, parameters, residuals, jacobians);
+        const Outcome outcome =
+            evaluate_with(ForwardModel::continuum, parameters, begin, end, residuals, jacobians, keep);
         if (outcome != Outcome::outside_model) return outcome == Outcome::done;
     }
-    return evaluate_with(ForwardModel::elements, parameters, residuals, jacobians) == Outcome::done;
+    return evaluate_with(ForwardModel::elements, parameters, begin, end, residuals, jacobians, keep) == Outcome::done;
 }
 
 CurveCost::Outcome CurveCost::base_residuals(const std::vector<double>& shared, const std::vector<double>& nuisance,
-                                             ForwardModel forward, double* residuals,
+                                             ForwardModel forward,
+                                             std::shared_ptr<const std::vector<double>>& residuals,
                                              std::shared_ptr<const ModelValues>& run) const {
-    const std::size_t n = prepared_.used.size();
     std::optional<LastRun>& last_run = last_runs_[forward == ForwardModel::continuum ? 0 : 1];
     {
         const std::lock_guard lock(last_run_mutex_);
         if (last_run && last_run->shared == shared && last_run->nuisance == nuisance) {
             if (last_run->outcome == Outcome::done) {
-                std::copy(last_run->residuals.begin(), last_run->residuals.end(), residuals);
+                residuals = last_run->residuals;
                 run = last_run->run;
             }
             return last_run->outcome;
         }
+        // Only the last point is kept: its run and residuals go before the new ones are made, not after (two runs
+        // and their residuals were the peak of a long fit's memory, at each candidate of the solver).
+        last_run.reset();
     }
     auto fresh = std::make_shared<ModelValues>();
-    const Outcome outcome = residuals_at(shared.data(), nuisance.data(), forward, residuals, fresh.get());
-    LastRun last{shared, nuisance, outcome, {}, nullptr};
+    auto fresh_residuals = std::make_shared<std::vector<double>>();
+    const Outcome outcome = residuals_at(shared.data(), nuisance.data(), forward, *fresh_residuals, fresh.get());
+    LastRun last{shared, nuisance, outcome, nullptr, nullptr};
     if (outcome == Outcome::done) {
-        last.residuals.assign(residuals, residuals + n);
+        last.residuals = residuals = std::move(fresh_residuals);
         last.run = run = std::move(fresh);
     }
     const std::lock_guard lock(last_run_mutex_);
@@ -217,88 +230,156 @@ CurveCost::Outcome CurveCost::base_residuals(const std::vector<double>& shared, 
     return outcome;
 }
 
-CurveCost::Outcome CurveCost::evaluate_with(ForwardModel forward, double const* const* parameters, double* residuals,
-                                            double** jacobians) const {
+CurveCost::Outcome CurveCost::fill_columns(JacobianColumns& columns, const std::vector<double>& residuals) const {
     const std::size_t k = problem_.parameters.size();
     const std::size_t m = scales_.nuisance_size();
     const std::size_t n = prepared_.used.size();
-    std::vector<double> shared(parameters[0], parameters[0] + k);
-    std::vector<double> nuisance(m);
-    if (m > 0) nuisance.assign(parameters[1], parameters[1] + m);
-    std::shared_ptr<const ModelValues> run;
-    if (const Outcome outcome = base_residuals(shared, nuisance, forward, residuals, run); outcome != Outcome::done) {
-        return outcome;
-    }
-    if (jacobians == nullptr) return Outcome::done;
-
-    std::vector<double> shifted(n);
-    // Column c of block `block` by a forward difference in coordinate `u`.
-    const auto difference = [&](double& u, double* block, std::size_t columns, std::size_t c, double upper) {
+    std::vector<double> shared = columns.shared, nuisance = columns.nuisance;  // moved one coordinate at a time
+    columns.columns.resize(k + m);
+    // A column by a forward difference in coordinate `u`.
+    const auto difference = [&](double& u, double upper, Column& column) {
         const double saved = u;
         const double step = one_sided_step(u, difference_step, upper);
         u += step;
-        const Outcome outcome = residuals_at(shared.data(), nuisance.data(), forward, shifted.data());
+        std::vector<double> shifted;
+        const Outcome outcome = residuals_at(shared.data(), nuisance.data(), columns.forward, shifted);
         u = saved;
         if (outcome != Outcome::done) return outcome;
-        for (std::size_t i = 0; i < n; ++i) block[i * columns + c] = (shifted[i] - residuals[i]) / step;
+        for (std::size_t i = 0; i < n; ++i) shifted[i] = (shifted[i] - residuals[i]) / step;
+        column = {Column::Kind::difference, std::move(shifted), 0.0};
         return Outcome::done;
     };
-    if (jacobians[0] != nullptr) {
+    if (columns.shared_block) {
         // Parameters that only scale moduli: their columns from the run's own derivatives (the continuum model), or
         // one of them from Euler's identity (depth-driven element runs).
+        const ModelValues& run = *columns.run;
         const auto values = scales_.values(shared.data());
-        const bool homogeneous = forward == ForwardModel::elements && prepared_.fitted == Fitted::force;
+        const bool homogeneous = columns.forward == ForwardModel::elements && prepared_.fitted == Fitted::force;
         std::optional<drivers::ContactCase> base;
-        if (!run->modulus_derivatives.empty() || homogeneous) base = problem_.model(values);
-        const auto euler = homogeneous ? euler_column(*base, shared.data(), values) : std::nullopt;
+        if (!run.modulus_derivatives.empty() || homogeneous) base = problem_.model(values);
+        columns.euler = homogeneous ? euler_column(*base, shared.data(), values) : std::nullopt;
         for (std::size_t j = 0; j < k; ++j) {
-            if (euler && j == euler->parameter) continue;
-            const auto direction = !run->modulus_derivatives.empty()
-                                       ? modulus_direction(*base, shared.data(), values, j)
-                                       : std::nullopt;
+            if (columns.euler && j == columns.euler->parameter) {
+                columns.columns[j].kind = Column::Kind::euler;
+                continue;
+            }
+            auto direction = !run.modulus_derivatives.empty() ? modulus_direction(*base, shared.data(), values, j)
+                                                               : std::nullopt;
             if (direction) {
-                for (std::size_t i = 0; i < n; ++i) {
-                    double derivative = 0.0;
-                    for (std::size_t b = 0; b < direction->size(); ++b) {
-                        derivative += (*direction)[b] * run->modulus_derivatives[b][i];
-                    }
-                    jacobians[0][i * k + j] = derivative / prepared_.noise;
-                }
-            } else if (const Outcome outcome = difference(shared[j], jacobians[0], k, j, scales_.upper[j]);
+                columns.columns[j] = {Column::Kind::modulus, std::move(*direction), 0.0};
+            } else if (const Outcome outcome = difference(shared[j], scales_.upper[j], columns.columns[j]);
                        outcome != Outcome::done) {
                 return outcome;
             }
         }
-        if (euler) {
-            // dF/dG_b* = (F - sum_{b != b*} G_b dF/dG_b) / G_b*, each other modulus's dF/dG_b from its column.
-            const double baseline_now = baseline(nuisance.data());
-            for (std::size_t i = 0; i < n; ++i) {
-                double rest = (run->values[i] - baseline_now) / prepared_.noise;
-                for (const auto& [j, gain] : euler->others) rest -= gain * jacobians[0][i * k + j];
-                jacobians[0][i * k + euler->parameter] = rest * euler->gain;
-            }
-        }
+        if (columns.euler) columns.baseline = baseline(nuisance.data());
     }
-    if (m > 0 && jacobians[1] != nullptr) {
+    if (columns.nuisance_block) {
         const bool force_fitted = prepared_.fitted == Fitted::force;
         std::size_t c = 0;
         if (scales_.fit_contact) {
-            if (force_fitted) {
-                if (const Outcome outcome = difference(nuisance[0], jacobians[1], m, c, infinity); outcome != Outcome::done) {
-                    return outcome;
-                }
-            } else {  // the fitted depth is the model's depth plus the contact point: exact
-                for (std::size_t i = 0; i < n; ++i) jacobians[1][i * m + c] = scales_.depth[curve_] / prepared_.noise;
+            if (!force_fitted) {  // the fitted depth is the model's depth plus the contact point: exact
+                columns.columns[k + c] = {Column::Kind::constant, {}, scales_.depth[curve_] / prepared_.noise};
+            } else if (const Outcome outcome = difference(nuisance[c], infinity, columns.columns[k + c]);
+                       outcome != Outcome::done) {
+                return outcome;
             }
             ++c;
         }
         if (scales_.fit_baseline) {
             if (force_fitted) {  // the fitted force is the model's force plus the baseline: exact
-                for (std::size_t i = 0; i < n; ++i) jacobians[1][i * m + c] = scales_.force[curve_] / prepared_.noise;
-            } else if (const Outcome outcome = difference(nuisance[c], jacobians[1], m, c, infinity); outcome != Outcome::done) {
+                columns.columns[k + c] = {Column::Kind::constant, {}, scales_.force[curve_] / prepared_.noise};
+            } else if (const Outcome outcome = difference(nuisance[c], infinity, columns.columns[k + c]);
+                       outcome != Outcome::done) {
                 return outcome;
             }
         }
+    }
+    return Outcome::done;
+}
+
+void CurveCost::write_rows(const JacobianColumns& columns, std::size_t begin, std::size_t end,
+                           double** jacobians) const {
+    const std::size_t k = problem_.parameters.size();
+    const std::size_t m = scales_.nuisance_size();
+    const ModelValues& run = *columns.run;
+    for (std::size_t i = begin; i < end; ++i) {
+        if (jacobians[0] != nullptr) {
+            double* row = jacobians[0] + (i - begin) * k;
+            for (std::size_t j = 0; j < k; ++j) {
+                const Column& column = columns.columns[j];
+                if (column.kind == Column::Kind::difference) {
+                    row[j] = column.values[i];
+                } else if (column.kind == Column::Kind::modulus) {
+                    double derivative = 0.0;
+                    for (std::size_t b = 0; b < column.values.size(); ++b) {
+                        derivative += column.values[b] * run.modulus_derivatives[b][i];
+                    }
+                    row[j] = derivative / prepared_.noise;
+                }
+            }
+            if (const auto& euler = columns.euler) {
+                // dF/dG_b* = (F - sum_{b != b*} G_b dF/dG_b) / G_b*, each other modulus's dF/dG_b from its column.
+                double rest = (run.values[i] - columns.baseline) / prepared_.noise;
+                for (const auto& [j, gain] : euler->others) rest -= gain * row[j];
+                row[euler->parameter] = rest * euler->gain;
+            }
+        }
+        if (m > 0 && jacobians[1] != nullptr) {
+            double* row = jacobians[1] + (i - begin) * m;
+            for (std::size_t c = 0; c < m; ++c) {
+                const Column& column = columns.columns[k + c];
+                row[c] = column.kind == Column::Kind::difference ? column.values[i] : column.constant;
+            }
+        }
+    }
+}
+
+CurveCost::Outcome CurveCost::evaluate_with(ForwardModel forward, double const* const* parameters, std::size_t begin,
+                                            std::size_t end, double* residuals, double** jacobians, bool keep) const {
+    const std::size_t k = problem_.parameters.size();
+    const std::size_t m = scales_.nuisance_size();
+    std::vector<double> shared(parameters[0], parameters[0] + k);
+    std::vector<double> nuisance(m);
+    if (m > 0) nuisance.assign(parameters[1], parameters[1] + m);
+    std::shared_ptr<const std::vector<double>> base;
+    std::shared_ptr<const ModelValues> run;
+    if (const Outcome outcome = base_residuals(shared, nuisance, forward, base, run); outcome != Outcome::done) {
+        return outcome;
+    }
+    std::copy(base->begin() + static_cast<std::ptrdiff_t>(begin), base->begin() + static_cast<std::ptrdiff_t>(end),
+              residuals);
+    if (jacobians == nullptr) return Outcome::done;
+    const bool shared_block = jacobians[0] != nullptr;
+    const bool nuisance_block = m > 0 && jacobians[1] != nullptr;
+    if (!shared_block && !nuisance_block) return Outcome::done;
+
+    std::shared_ptr<JacobianColumns> columns;
+    if (keep) {
+        const std::lock_guard lock(last_run_mutex_);
+        const auto& kept = kept_columns_;
+        if (kept && kept->forward == forward && kept->shared == shared && kept->nuisance == nuisance &&
+            kept->run == run && (kept->shared_block || !shared_block) && (kept->nuisance_block || !nuisance_block)) {
+            columns = kept;
+        } else {
+            kept_columns_.reset();  // its difference runs go before the new ones are made
+        }
+    }
+    if (!columns) {
+        columns = std::make_shared<JacobianColumns>();
+        columns->shared = shared;
+        columns->nuisance = nuisance;
+        columns->forward = forward;
+        columns->shared_block = shared_block;
+        columns->nuisance_block = nuisance_block;
+        columns->run = run;
+        if (const Outcome outcome = fill_columns(*columns, *base); outcome != Outcome::done) return outcome;
+    }
+    write_rows(*columns, begin, end, jacobians);
+    if (keep) {
+        const std::lock_guard lock(last_run_mutex_);
+        columns->rows_written += end - begin;
+        kept_columns_ = columns->rows_written < prepared_.used.size() ? columns : nullptr;
     }
     return Outcome::done;
 }

@@ -38,6 +38,13 @@ public:
     /// false when the model cannot be run at these values.
     bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
 
+    /// Evaluate for the rows [begin, end) of the curve: their residuals and Jacobian rows (row-major, end - begin rows
+    /// a block). `keep` keeps the Jacobian's columns at these parameters until each row has been asked for once (the
+    /// curve presented to the solver in row blocks, CurveRowsCost: one set of model runs per Jacobian, and no
+    /// N x p scratch in the solver); without it they are computed for this call only.
+    bool evaluate_rows(double const* const* parameters, std::size_t begin, std::size_t end, double* residuals,
+                       double** jacobians, bool keep) const;
+
     /// Why the model of this curve or its residuals cannot be evaluated at these values, "" when they can: the
     /// model's error, or the first point whose residual is not finite (its time, model and measured value).
     std::string failure_at(const double* shared, const double* nuisance) const;
@@ -56,9 +63,11 @@ private:
     /// only when asked for.
     std::optional<ModelValues> model(const double* shared, const double* nuisance, ForwardModel forward,
                                      bool modulus_derivatives = true) const;
-    /// Residuals of one run; `run`, when given, keeps the run (its modulus derivatives, which only a kept run has).
-    Outcome residuals_at(const double* shared, const double* nuisance, ForwardModel forward, double* residuals,
-                         ModelValues* run = nullptr) const;
+    /// Residuals of one run into `residuals` (made in the run's own values where nothing reads them after: one
+    /// vector as long as the curve, not two); `run`, when given, keeps the run (its modulus derivatives, which only a
+    /// kept run has).
+    Outcome residuals_at(const double* shared, const double* nuisance, ForwardModel forward,
+                         std::vector<double>& residuals, ModelValues* run = nullptr) const;
     /// When parameter j changes nothing but the material's moduli near `values` (same relaxation times, dashpot,
     /// indenter and layer as `base`, the case at `values`), the derivatives of the moduli with respect to shared
     /// coordinate j (TingResponse's branch order): a difference of the parameter-to-moduli map, exact for the
@@ -77,20 +86,47 @@ private:
     /// The EulerColumn of the case at `values` (`base`), nullopt where the identity does not give one.
     std::optional<EulerColumn> euler_column(const drivers::ContactCase& base, const double* shared,
                                             const std::vector<double>& values) const;
-    Outcome evaluate_with(ForwardModel forward, double const* const* parameters, double* residuals,
-                          double** jacobians) const;
+    /// How one Jacobian column is had at a point, row by row: its forward difference (`values`), the kept run's
+    /// modulus derivatives along the direction `values` (modulus_direction), Euler's identity (EulerColumn), or a
+    /// constant (a term that enters linearly: the baseline of a fitted force, the contact point of a fitted depth).
+    struct Column {
+        enum class Kind { difference, modulus, euler, constant } kind = Kind::constant;
+        std::vector<double> values{};
+        double constant = 0.0;
+    };
+    /// The Jacobian's columns at one point: the shared block's k, then the nuisance block's m (each block's only when
+    /// it was asked for).
+    struct JacobianColumns {
+        std::vector<double> shared, nuisance;
+        ForwardModel forward = ForwardModel::continuum;
+        bool shared_block = false, nuisance_block = false;
+        std::shared_ptr<const ModelValues> run;  ///< the base run (modulus derivatives; values for Euler's identity)
+        std::optional<EulerColumn> euler;
+        double baseline = 0.0;                   ///< the baseline at the point (Euler's identity)
+        std::vector<Column> columns;
+        std::size_t rows_written = 0;            ///< rows handed out (kept columns are released after all n)
+    };
+    /// evaluate_rows with one forward model.
+    Outcome evaluate_with(ForwardModel forward, double const* const* parameters, std::size_t begin, std::size_t end,
+                          double* residuals, double** jacobians, bool keep) const;
+    /// Fills `columns` (point, forward model and blocks set) from the base run's residuals: the model runs of the
+    /// forward differences.
+    Outcome fill_columns(JacobianColumns& columns, const std::vector<double>& residuals) const;
+    /// Rows [begin, end) of the blocks asked for in `jacobians`, from `columns`.
+    void write_rows(const JacobianColumns& columns, std::size_t begin, std::size_t end, double** jacobians) const;
     /// residuals_at for the point of an evaluation, kept: Ceres asks for the same point more than once (it evaluates
     /// a candidate and, once it accepts it, asks for the Jacobian there), and the same parameters give the same run.
-    /// `run` shares the kept run: a run is as long as the curve, and a copy per evaluation was a tenth of a long
-    /// fit's memory.
+    /// `residuals` and `run` share the kept ones: a run is as long as the curve, and a copy per evaluation was a tenth
+    /// of a long fit's memory.
     Outcome base_residuals(const std::vector<double>& shared, const std::vector<double>& nuisance,
-                           ForwardModel forward, double* residuals, std::shared_ptr<const ModelValues>& run) const;
+                           ForwardModel forward, std::shared_ptr<const std::vector<double>>& residuals,
+                           std::shared_ptr<const ModelValues>& run) const;
 
     /// The last base run of one forward model: its parameters, outcome, residuals and run.
     struct LastRun {
         std::vector<double> shared, nuisance;
         Outcome outcome = Outcome::failed;
-        std::vector<double> residuals;
+        std::shared_ptr<const std::vector<double>> residuals;
         std::shared_ptr<const ModelValues> run;
     };
 
@@ -105,6 +141,7 @@ private:
     double held_baseline_;  ///< the baseline where it is not fitted (held_baseline)
     mutable std::mutex last_run_mutex_;
     mutable std::array<std::optional<LastRun>, 2> last_runs_;  ///< per ForwardModel (continuum, elements)
+    mutable std::shared_ptr<JacobianColumns> kept_columns_;    ///< evaluate_rows' with `keep`
 };
 
 }  // namespace mdr::fit

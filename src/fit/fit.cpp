@@ -17,6 +17,7 @@
 #include "active_bounds.hpp"
 #include "contact_flags.hpp"
 #include "curve_cost.hpp"
+#include "curve_rows_cost.hpp"
 #include "fit_diagnostics.hpp"
 #include "iteration_report.hpp"
 #include "material_bands.hpp"
@@ -282,12 +283,18 @@ FitResult solve(const FitProblem& problem) {
     problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     ceres::Problem solver_problem(problem_options);
     std::vector<std::unique_ptr<CurveCost>> costs;
+    std::vector<std::unique_ptr<CurveRowsCost>> row_blocks;
     for (std::size_t c = 0; c < problem.curves.size(); ++c) {
         costs.push_back(std::make_unique<CurveCost>(problem, scales, prepared[c], c, elements, evaluations,
                                                     element_evaluations, &band_evaluations));
         std::vector<double*> blocks{shared.data()};
         if (m > 0) blocks.push_back(nuisance[c].data());
-        solver_problem.AddResidualBlock(costs.back().get(), nullptr, blocks);
+        const std::size_t rows = prepared[c].used.size();
+        for (std::size_t begin = 0; begin < rows; begin += solver_block_rows) {
+            row_blocks.push_back(
+                std::make_unique<CurveRowsCost>(*costs.back(), begin, std::min(begin + solver_block_rows, rows)));
+            solver_problem.AddResidualBlock(row_blocks.back().get(), nullptr, blocks);
+        }
         if (scales.fit_contact) {
             const auto bounds = contact_bounds(problem, c);
             solver_problem.SetParameterLowerBound(nuisance[c].data(), 0, bounds[0] / scales.depth[c]);

@@ -10,6 +10,8 @@
 #include <stdexcept>
 
 #include "data_window.hpp"
+#include "curve_rows_cost.hpp"
+#include "jacobian_summary.hpp"
 
 namespace mdr::fit {
 
@@ -17,20 +19,27 @@ namespace {
 
 constexpr double normal_quantile_95 = 1.959963984540054;
 
-// The root mean square of `values`, each counted `weights[i]` times (once without weights), scaled by the largest
-// magnitude: no square overflows or underflows, so finite values (up to the largest double) give a finite RMS; a
-// NaN or an infinity stays one.
-double root_mean_square(const std::vector<double>& values, const std::vector<double>& weights = {}) {
+// The root mean square of value(i) for i < count, each counted weight(i) times, scaled by the largest magnitude: no
+// square overflows or underflows, so finite values (up to the largest double) give a finite RMS; a NaN or an infinity
+// stays one.
+template <class Value, class Weight>
+double root_mean_square(std::size_t count, const Value& value, const Weight& weight) {
     double largest = 0.0;
-    for (const double value : values) largest = std::max(largest, std::abs(value));
+    for (std::size_t i = 0; i < count; ++i) largest = std::max(largest, std::abs(value(i)));
     if (largest == 0.0 || std::isinf(largest)) return largest;
-    double sum = 0.0, count = 0.0;
-    for (std::size_t i = 0; i < values.size(); ++i) {
-        const double weight = weights.empty() ? 1.0 : weights[i];
-        sum += weight * (values[i] / largest) * (values[i] / largest);
-        count += weight;
+    double sum = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        sum += weight(i) * (value(i) / largest) * (value(i) / largest);
+        total += weight(i);
     }
-    return largest * std::sqrt(sum / count);
+    return largest * std::sqrt(sum / total);
+}
+
+// The root mean square of `values`, each counted `weights[i]` times (once without weights).
+double root_mean_square(const std::vector<double>& values, const std::vector<double>& weights = {}) {
+    return root_mean_square(
+        values.size(), [&](std::size_t i) { return values[i]; },
+        [&](std::size_t i) { return weights.empty() ? 1.0 : weights[i]; });
 }
 
 // The two-sided 95 % quantile of Student's t with `dof` degrees of freedom: for dof >= 3 the Cornish-Fisher
@@ -65,21 +74,15 @@ void flag(FitResult& result, std::set<std::string>& flagged, const std::string& 
     if (flagged.insert(name).second) result.undetermined.push_back({name, reason});
 }
 
-// Curves' data, model and residual, and the stacked weighted residuals and Jacobian.
-struct Stacked {
-    Eigen::MatrixXd jacobian;
-    Eigen::VectorXd residuals;
-    std::vector<Eigen::Index> curve_begin;  // the first row of each measured curve (rebound rows follow them)
-};
-
-// Lag-1 autocorrelation of the residuals r[begin, begin + count) (in time order).
-double lag_one_correlation(const Eigen::VectorXd& r, Eigen::Index begin, Eigen::Index count) {
+// Lag-1 autocorrelation of a curve's residuals r (in time order).
+double lag_one_correlation(const Eigen::Ref<const Eigen::VectorXd>& r) {
+    const Eigen::Index count = r.size();
     if (count < 3) return 0.0;
-    const double mean = r.segment(begin, count).mean();
+    const double mean = r.mean();
     double lagged = 0.0, squared = 0.0;
-    for (Eigen::Index i = begin; i < begin + count; ++i) {
+    for (Eigen::Index i = 0; i < count; ++i) {
         squared += (r[i] - mean) * (r[i] - mean);
-        if (i + 1 < begin + count) lagged += (r[i] - mean) * (r[i + 1] - mean);
+        if (i + 1 < count) lagged += (r[i] - mean) * (r[i + 1] - mean);
     }
     return squared > 0.0 ? lagged / squared : 0.0;
 }
@@ -92,16 +95,6 @@ double error_correlation(double rho, Eigen::Index count) {
     const auto n = static_cast<double>(count);
     if (!(rho > 2.0 / std::sqrt(n))) return 0.0;
     return std::min(rho + (1.0 + 4.0 * rho) / n, (n - 1.0) / (n + 1.0));
-}
-
-// P x for the AR(1) correlation matrix P_ij = phi^|i - j| (in place): a forward and a backward recursion,
-// P x = f + b - x with f_i = x_i + phi f_(i-1), b_i = x_i + phi b_(i+1).
-void apply_correlation(Eigen::Ref<Eigen::VectorXd> x, double phi) {
-    const Eigen::Index m = x.size();
-    Eigen::VectorXd forward = x, backward = x;
-    for (Eigen::Index i = 1; i < m; ++i) forward[i] += phi * forward[i - 1];
-    for (Eigen::Index i = m - 2; i >= 0; --i) backward[i] += phi * backward[i + 1];
-    x = forward + backward - x;
 }
 
 // A curve's residual RMS is above 1e-5 of its largest |value|, the model's own accuracy (the element model's
@@ -138,52 +131,77 @@ CurveFit rebound_entry(const ReboundData& data, ReboundQuantity quantity, const 
     return entry;
 }
 
-Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
-                     const std::vector<std::unique_ptr<ReboundCost>>& rebounds, const std::vector<double>& shared,
-                     const std::vector<std::vector<double>>& nuisance, std::size_t m, FitResult& result) {
+// Fills result.curves (data, model, residual RMS, lag-1 correlation and effective points of each measured curve;
+// the rebound data's entries) and gathers the summary of the weighted Jacobian and residuals at the optimum, one
+// curve at a time: no N x p copy of the Jacobian (docs/performance.md, "Memory of a fit"). A curve's errors are
+// taken as AR(1) with coefficient phi (error_correlation) within the curve; rebound data as independent.
+JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
+                                 const std::vector<std::unique_ptr<ReboundCost>>& rebounds,
+                                 const std::vector<double>& shared, const std::vector<std::vector<double>>& nuisance,
+                                 std::size_t m, FitResult& result) {
     const std::size_t k = shared.size();
-    std::size_t rows = 0;
-    for (const auto& cost : costs) rows += static_cast<std::size_t>(cost->num_residuals());
-    for (const auto& cost : rebounds) rows += static_cast<std::size_t>(cost->num_residuals());
-    Stacked stacked{Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(k + m * costs.size())),
-                    Eigen::VectorXd(static_cast<Eigen::Index>(rows)), {}};
-    Eigen::Index row = 0;
+    JacobianSummary summary(static_cast<Eigen::Index>(k + m * costs.size()));
     for (std::size_t c = 0; c < costs.size(); ++c) {
-        stacked.curve_begin.push_back(row);
         const CurveCost& cost = *costs[c];
         const CurveModel& prepared = cost.prepared();
         const std::size_t n = prepared.used.size();
-        std::vector<double> r(n), shared_block(n * k), nuisance_block(n * std::max<std::size_t>(m, 1));
+        CurveFit curve;
+        curve.model.resize(n);  // the weighted residuals r = (model - measured) / noise first, then the model
         const double* parameters[2] = {shared.data(), nuisance[c].data()};
-        double* blocks[2] = {shared_block.data(), nuisance_block.data()};
-        if (!cost.Evaluate(parameters, r.data(), blocks)) {
-            throw std::runtime_error("the model cannot be evaluated at the fitted values");
-        }
+        const auto evaluate = [&](std::size_t begin, std::size_t end, double* residuals, double** jacobians) {
+            if (!cost.evaluate_rows(parameters, begin, end, residuals, jacobians, true)) {
+                throw std::runtime_error("the model cannot be evaluated at the fitted values");
+            }
+        };
+        evaluate(0, n, curve.model.data(), nullptr);  // the residuals: one run (the solver's last)
+        const Eigen::Map<const Eigen::VectorXd> residuals(curve.model.data(), static_cast<Eigen::Index>(n));
+        curve.residual_correlation = lag_one_correlation(residuals);
+        summary.add_residuals(residuals);
         const Curve& data = problem.curves[c];
         const bool force_fitted = prepared.fitted == Fitted::force;
         const auto& measured = force_fitted ? data.force : data.depth;
-        CurveFit curve;
         curve.name = data.name;
         curve.fitted = prepared.fitted;
         curve.contact_depth = cost.contact_depth(nuisance[c].data());
         curve.baseline = cost.baseline(nuisance[c].data());
         curve.noise = prepared.noise;
-        std::vector<double> differences;
+        curve.time.reserve(n);
+        curve.measured.reserve(n);
+        curve.drive.reserve(n);
         for (std::size_t i = 0; i < n; ++i) {
-            curve.time.push_back(data.time[prepared.used[i]]);
-            curve.measured.push_back(measured[prepared.used[i]]);
-            curve.model.push_back(curve.measured[i] + r[i] * prepared.noise);  // r = (model - measured) / noise
-            curve.drive.push_back(force_fitted ? data.depth[prepared.used[i]] - curve.contact_depth
-                                      : std::max(data.force[prepared.used[i]] - curve.baseline, 0.0));
-            differences.push_back(curve.model[i] - curve.measured[i]);
-            stacked.residuals[row] = r[i];
-            for (std::size_t j = 0; j < k; ++j) stacked.jacobian(row, static_cast<Eigen::Index>(j)) = shared_block[i * k + j];
-            for (std::size_t j = 0; j < m; ++j) {
-                stacked.jacobian(row, static_cast<Eigen::Index>(k + c * m + j)) = nuisance_block[i * m + j];
-            }
-            ++row;
+            const std::size_t row = prepared.used[i];
+            curve.time.push_back(data.time[row]);
+            curve.measured.push_back(measured[row]);
+            curve.model[i] = curve.measured[i] + curve.model[i] * prepared.noise;
+            curve.drive.push_back(force_fitted ? data.depth[row] - curve.contact_depth
+                                               : std::max(data.force[row] - curve.baseline, 0.0));
         }
-        curve.rms_residual = root_mean_square(differences);
+        curve.rms_residual = root_mean_square(
+            n, [&](std::size_t i) { return curve.model[i] - curve.measured[i]; }, [](std::size_t) { return 1.0; });
+        const double phi = above_model_accuracy(curve)
+                               ? error_correlation(curve.residual_correlation, static_cast<Eigen::Index>(n))
+                               : 0.0;
+        curve.effective_points = std::max(static_cast<double>(n) * (1.0 - phi) / (1.0 + phi), 1.0);
+        // The Jacobian in the solver's row blocks (the cost keeps its columns until the last block).
+        const std::size_t block = std::min(n, solver_block_rows);
+        std::vector<double> block_residuals(block), shared_block(block * k),
+            nuisance_block(block * std::max<std::size_t>(m, 1));
+        double* blocks[2] = {shared_block.data(), nuisance_block.data()};
+        summary.start_curve(phi);
+        for (std::size_t begin = 0; begin < n; begin += block) {
+            const std::size_t end = std::min(begin + block, n);
+            evaluate(begin, end, block_residuals.data(), blocks);
+            summary.add_rows(static_cast<Eigen::Index>(end - begin),
+                             [&](Eigen::Index i, Eigen::Ref<Eigen::RowVectorXd> row) {
+                                 const auto r = static_cast<std::size_t>(i);
+                                 for (std::size_t j = 0; j < k; ++j) {
+                                     row[static_cast<Eigen::Index>(j)] = shared_block[r * k + j];
+                                 }
+                                 for (std::size_t j = 0; j < m; ++j) {
+                                     row[static_cast<Eigen::Index>(k + c * m + j)] = nuisance_block[r * m + j];
+                                 }
+                             });
+        }
         result.curves.push_back(std::move(curve));
     }
     for (const auto& cost : rebounds) {  // their rows have no contact point or baseline: 0 in those columns
@@ -194,43 +212,34 @@ Stacked stack_curves(const FitProblem& problem, const std::vector<std::unique_pt
         if (!cost->Evaluate(parameters, r.data(), blocks)) {
             throw std::runtime_error("the model cannot be evaluated at the fitted values");
         }
-        for (std::size_t i = 0; i < n; ++i) {
-            stacked.residuals[row] = r[i];
-            for (std::size_t j = 0; j < k; ++j) stacked.jacobian(row, static_cast<Eigen::Index>(j)) = shared_block[i * k + j];
-            ++row;
-        }
+        summary.add_residuals(Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(n)));
+        summary.start_curve(0.0);
+        summary.add_rows(static_cast<Eigen::Index>(n), [&](Eigen::Index i, Eigen::Ref<Eigen::RowVectorXd> row) {
+            for (std::size_t j = 0; j < k; ++j) {
+                row[static_cast<Eigen::Index>(j)] = shared_block[static_cast<std::size_t>(i) * k + j];
+            }
+        });
         const auto impacts = cost->impacts(shared.data());
         result.curves.push_back(rebound_entry(cost->data(), ReboundQuantity::restitution, impacts));
         if (!cost->data().contact_time.empty()) {
             result.curves.push_back(rebound_entry(cost->data(), ReboundQuantity::contact_time, impacts));
         }
     }
-    return stacked;
+    return summary;
 }
 
 // Autocorrelated residuals (a misfit's systematic ones, or correlated noise) carry less information than their
-// count. Each curve's errors are taken as AR(1) with coefficient phi (error_correlation), correlation matrix
-// P_ij = phi^|i - j| within the curve (identity for rebound data and white curves), and the covariance of the least-
-// squares estimate is the sandwich s^2 (J^T J)^+ J^T P J (J^T J)^+ (White 1980, Econometrica 48:817, with a known
-// correlation structure; s^2 (J^T J)^+ when every phi = 0). A curve's effective points are
-// n_eff = n (1 - phi) / (1 + phi) (the sum of phi^|k| over all lags multiplies the variance of a mean of n >> 1
-// such errors), at least 1. Sets each curve's correlation and effective points and the error kind.
-Eigen::MatrixXd honest_covariance(const Stacked& stacked, double variance_scale, const Eigen::MatrixXd& pseudo_inverse,
-                                  FitResult& result) {
-    Eigen::MatrixXd correlated = stacked.jacobian;  // P J
+// count. With each curve's errors AR(1) (summarise_curves), correlation matrix P_ij = phi^|i - j| within the curve
+// (identity for rebound data and white curves), the covariance of the least-squares estimate is the sandwich
+// s^2 (J^T J)^+ J^T P J (J^T J)^+ (White 1980, Econometrica 48:817, with a known correlation structure;
+// s^2 (J^T J)^+ when every phi = 0). A curve's effective points are n_eff = n (1 - phi) / (1 + phi) (the sum of
+// phi^|k| over all lags multiplies the variance of a mean of n >> 1 such errors), at least 1. Sets the error kind.
+Eigen::MatrixXd honest_covariance(const JacobianSummary& summary, double variance_scale,
+                                  const Eigen::MatrixXd& pseudo_inverse, std::size_t curves, FitResult& result) {
     double points = 0.0, effective = 0.0;
-    for (std::size_t c = 0; c < stacked.curve_begin.size(); ++c) {
-        const Eigen::Index begin = stacked.curve_begin[c];
-        CurveFit& curve = result.curves[c];
-        const auto count = static_cast<Eigen::Index>(curve.time.size());
-        curve.residual_correlation = lag_one_correlation(stacked.residuals, begin, count);
-        const double phi = above_model_accuracy(curve) ? error_correlation(curve.residual_correlation, count) : 0.0;
-        curve.effective_points = std::max(static_cast<double>(count) * (1.0 - phi) / (1.0 + phi), 1.0);
-        for (Eigen::Index j = 0; phi > 0.0 && j < correlated.cols(); ++j) {
-            apply_correlation(correlated.col(j).segment(begin, count), phi);
-        }
-        points += static_cast<double>(count);
-        effective += curve.effective_points;
+    for (std::size_t c = 0; c < curves; ++c) {
+        points += static_cast<double>(result.curves[c].time.size());
+        effective += result.curves[c].effective_points;
     }
     if (effective == points) {
         result.error_kind = "white noise (chi-square)";
@@ -238,12 +247,13 @@ Eigen::MatrixXd honest_covariance(const Stacked& stacked, double variance_scale,
     }
     result.error_kind =
         fmt::format("inflated for correlated residuals (n_eff = {:.1f} of {:.0f} points)", effective, points);
-    const Eigen::MatrixXd meat = stacked.jacobian.transpose() * correlated;
+    const Eigen::MatrixXd& meat = summary.correlated_gram();
     // The fit absorbs more of correlated errors than k white degrees of freedom: E[RSS] = sigma^2 (n - tr(H P)),
     // H = J (J^T J)^+ J^T, so s^2 = RSS / (n - tr((J^T J)^+ J^T P J)) (k when P = I, as variance_scale).
-    const double n = static_cast<double>(stacked.residuals.size());
+    const auto n = static_cast<double>(summary.rows());
     const double absorbed = (pseudo_inverse * meat).trace();
-    const double correlated_scale = stacked.residuals.squaredNorm() / std::max(n - absorbed, 1.0);
+    const double norm = summary.residual_norm();
+    const double correlated_scale = norm * norm / std::max(n - absorbed, 1.0);
     return std::max(variance_scale, correlated_scale) * pseudo_inverse * meat * pseudo_inverse;
 }
 
@@ -268,10 +278,10 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
                           const std::vector<std::vector<double>>& nuisance, FitResult& result) {
     const std::size_t k = shared.size();
     const std::size_t m = scales.nuisance_size();
-    const Stacked stacked = stack_curves(problem, costs, rebounds, shared, nuisance, m, result);
-    const auto n = static_cast<double>(stacked.residuals.size());
-    const auto columns = static_cast<std::size_t>(stacked.jacobian.cols());
-    result.points = static_cast<std::size_t>(stacked.residuals.size());
+    const JacobianSummary summary = summarise_curves(problem, costs, rebounds, shared, nuisance, m, result);
+    const auto n = static_cast<double>(summary.rows());
+    const auto columns = k + m * costs.size();
+    result.points = static_cast<std::size_t>(summary.rows());
     result.free_count = columns;
 
     // Physical residual and noise over all curves; information criteria on the weighted residuals.
@@ -283,20 +293,21 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
     }
     result.rms_residual = root_mean_square(rms_residuals, points);
     result.noise = root_mean_square(noises, points);
-    // log(RSS / n) from the norm (stableNorm: no overflow of the squares), RSS at least the smallest double.
+    // log(RSS / n) from the norm (no overflow of the squares), RSS at least the smallest double.
+    const double residual_norm = summary.residual_norm();
     const double log_mean_square =
-        std::max(2.0 * std::log(stacked.residuals.stableNorm()), std::log(std::numeric_limits<double>::min())) -
+        std::max(2.0 * std::log(residual_norm), std::log(std::numeric_limits<double>::min())) -
         std::log(n);
     result.aic = n * log_mean_square + 2.0 * static_cast<double>(columns);
     result.bic = n * log_mean_square + static_cast<double>(columns) * std::log(n);
 
-    // Covariance s^2 (J^T J)^+ by the SVD of J: directions with singular values below 1e-8 of the largest are
-    // not determined by the data.
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(stacked.jacobian, Eigen::ComputeThinV);
+    // Covariance s^2 (J^T J)^+ by the SVD of J, i.e. of R in J = Q R: directions with singular values below 1e-8 of
+    // the largest are not determined by the data.
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(summary.triangular(), Eigen::ComputeFullV);
     const Eigen::VectorXd& singular = svd.singularValues();
     const double threshold = 1e-8 * (singular.size() > 0 ? singular[0] : 0.0);
     const double dof = std::max(n - static_cast<double>(columns), 1.0);
-    const double variance_scale = stacked.residuals.squaredNorm() / dof;
+    const double variance_scale = residual_norm * residual_norm / dof;
     // (J^T J)^+ on the determined directions
     const auto size = static_cast<Eigen::Index>(columns);
     Eigen::MatrixXd pseudo_inverse = Eigen::MatrixXd::Zero(size, size);
@@ -311,7 +322,7 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
             }
         }
     }
-    const Eigen::MatrixXd covariance = honest_covariance(stacked, variance_scale, pseudo_inverse, result);
+    const Eigen::MatrixXd covariance = honest_covariance(summary, variance_scale, pseudo_inverse, costs.size(), result);
     // The intervals' quantile: Student's t with the effective points less the free parameters (s^2 is estimated).
     double effective = n;
     for (std::size_t c = 0; c < costs.size(); ++c) {

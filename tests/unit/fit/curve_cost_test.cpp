@@ -1,14 +1,17 @@
 // The Jacobian of a curve's residuals: columns of moduli parameters from the continuum model's own derivatives
 // (dF/dG_b with the parameter-to-moduli map), the others by forward differences, against central differences of
 // the residuals themselves, on a load-hold-unload of a standard solid (the edge moves with the moduli on unloading);
-// and that a point evaluated twice (Ceres' candidate, then its Jacobian there) runs the model once.
+// and that a point evaluated twice (Ceres' candidate, then its Jacobian there) runs the model once; and that the curve
+// given to the solver in row blocks (CurveRowsCost) gives the whole curve's residuals and Jacobian with its runs.
 
 #include "fit/curve_cost.hpp"
+#include "fit/curve_rows_cost.hpp"
 
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <cmath>
+#include <memory>
 
 #include "mdr/profile/profile.hpp"
 
@@ -136,6 +139,47 @@ TEST(CurveCost, EulerColumnOfDepthDrivenElementRuns) {
             ASSERT_NEAR(jacobian[i * 3 + j], (r_up[i] - r_down[i]) / (2.0 * h), 1e-5 * largest)
                 << "column " << j << ", row " << i;
         }
+    }
+}
+
+// A long curve goes to Ceres in row blocks (issue 23, memory of a large fit): the blocks' residuals and Jacobian rows
+// are the whole curve's, bit for bit, and the Jacobian costs the runs of the whole curve's (not one set per block).
+TEST(CurveRowsCost, BlocksGiveTheWholeCurvesRowsWithItsRuns) {
+    for (const double dip : {0.0, 2e-7}) {  // the continuum model's derivative columns; the elements' Euler column
+        const FitProblem problem = load_hold_unload(dip);
+        const ParameterScales scales = make_scales(problem);
+        const CurveModel prepared = prepare_curve(problem.curves[0], Fitted::force, 0.0);
+        std::vector<double> u;
+        for (std::size_t j = 0; j < 3; ++j) u.push_back(scales.to_internal(j, problem.parameters[j].start));
+        const double* parameters[1] = {u.data()};
+        const std::size_t n = prepared.used.size();
+
+        std::atomic<std::size_t> whole_runs{0}, whole_element_runs{0};
+        const CurveCost whole(problem, scales, prepared, 0, 500, whole_runs, whole_element_runs);
+        std::vector<double> residuals(n), jacobian(n * 3);
+        double* whole_blocks[1] = {jacobian.data()};
+        ASSERT_TRUE(whole.Evaluate(parameters, residuals.data(), whole_blocks));
+
+        std::atomic<std::size_t> runs{0}, element_runs{0};
+        const CurveCost curve(problem, scales, prepared, 0, 500, runs, element_runs);
+        const std::size_t rows = 64;  // blocks of 64 rows and a shorter last one
+        ASSERT_GT(n, 2 * rows);
+        std::vector<std::unique_ptr<CurveRowsCost>> blocks;
+        for (std::size_t begin = 0; begin < n; begin += rows) {
+            blocks.push_back(std::make_unique<CurveRowsCost>(curve, begin, std::min(begin + rows, n)));
+        }
+        std::vector<double> block_residuals(n), block_jacobian(n * 3);
+        for (std::size_t b = 0; b < blocks.size(); ++b) {  // a candidate's residuals, then the Jacobian there
+            ASSERT_TRUE(blocks[b]->Evaluate(parameters, block_residuals.data() + b * rows, nullptr));
+        }
+        for (std::size_t b = 0; b < blocks.size(); ++b) {
+            double* rows_jacobian[1] = {block_jacobian.data() + b * rows * 3};
+            ASSERT_TRUE(blocks[b]->Evaluate(parameters, block_residuals.data() + b * rows, rows_jacobian));
+        }
+        EXPECT_EQ(block_residuals, residuals) << "dip " << dip;
+        EXPECT_EQ(block_jacobian, jacobian) << "dip " << dip;
+        EXPECT_EQ(runs, whole_runs) << "dip " << dip;
+        EXPECT_EQ(element_runs, whole_element_runs) << "dip " << dip;
     }
 }
 
