@@ -62,22 +62,23 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
             cuts.insert(cuts.end(), {last->first, last->second});  // the measured cycle on uniform steps
         }
     }
-    const auto& shore = contact_case.shore;
+    const SpringControl* spring_control = contact_case.spring();
+    const ShoreTest* shore = contact_case.shore();
     if (shore) {
         for (const double time : shore_reading_times) {
             if (time <= contact_case.end_time) cuts.push_back(time);  // each reading on a node of its own
         }
     }
     std::optional<PausedBase> paused;
-    if (!contact_case.force_pauses.empty()) {
-        paused.emplace(contact_case.force_pauses, *contact_case.spring_constant);
-        for (const ForcePause& pause : contact_case.force_pauses) cuts.insert(cuts.end(), {pause.start, pause.end});
+    if (spring_control && !spring_control->force_pauses.empty()) {
+        paused.emplace(spring_control->force_pauses, spring_control->spring_constant);
+        for (const ForcePause& pause : spring_control->force_pauses) cuts.insert(cuts.end(), {pause.start, pause.end});
     }
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
     auto nodes = make_time_grid(*contact_case.load.history, contact_case.end_time, numerics.time_step,
                                 numerics.min_segment_steps, cuts);
-    const bool spring = contact_case.control == Control::spring;
+    const bool spring = spring_control != nullptr;
     if (spring && !shore && nodes.size() > 1 && nodes[1].time == nodes[0].time) {
         nodes.erase(nodes.begin());  // the base starts where it is (z <= 0, validated): no jump from z = 0
     }
@@ -124,10 +125,12 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
     // Force or spring control with a parallel dashpot: the indenter's rate dd/dt at the current node, so that the
     // dashpot sees the trapezoidal rate (second order, see Foundation::begin_step). Unknown (the secant rate is
     // used for one step) while nothing is in contact: the rate is then not tied to the force.
-    const bool trapezoidal = has_dashpot && contact_case.control != Control::displacement;
-    const double stiffness = spring ? *contact_case.spring_constant : 0.0;
+    const bool displacement = std::holds_alternative<DisplacementControl>(contact_case.control);
+    const bool force_control = std::holds_alternative<ForceControl>(contact_case.control);
+    const bool trapezoidal = has_dashpot && !displacement;
+    const double stiffness = spring ? spring_control->spring_constant : 0.0;
     std::optional<double> rate = trapezoidal ? std::optional<double>(0.0) : std::nullopt;
-    const bool sine_rate = has_dashpot && contact_case.control == Control::displacement && contact_case.load.harmonic;
+    const bool sine_rate = has_dashpot && displacement && contact_case.load.harmonic;
     double last_force = 0.0;
 
     for (std::size_t n = 1; n <= last_node && !stopped; ++n) {
@@ -135,18 +138,16 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
         // Force control: the sine's round-off at a zero of the validated (>= 0) prescribed force is no pull.
         // Spring control: the base, the history shifted by the pauses passed (PausedBase); a pause holds the force.
         const bool holding = paused && paused->holding(nodes[n - 1].time, nodes[n].time);
-        const double target = contact_case.control == Control::force ? std::max(nodes[n].value, 0.0)
-                              : paused                               ? paused->base(nodes[n].value)
-                                                                     : nodes[n].value;
+        const double target = force_control ? std::max(nodes[n].value, 0.0)
+                              : paused      ? paused->base(nodes[n].value)
+                                            : nodes[n].value;
         double base = target;
         double force = 0.0;
         if (time_step == 0.0 && has_dashpot) {
             // A jump against a dashpot: the dashpot takes the force at once and the depth does not move (spring
             // control has no jumps after the start).
             // (Under spring control only a Shore test has a jump, at the foot's landing: the spring's force.)
-            force = contact_case.control == Control::force ? target
-                    : spring                               ? stiffness * (target - depth)
-                                                           : foundation.total_force();
+            force = force_control ? target : spring ? stiffness * (target - depth) : foundation.total_force();
             if (rate) rate = jumped_rate(foundation, material.viscosity(), *rate, force - last_force);
             shown_depth = depth;
         } else {
@@ -162,7 +163,7 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
             }
             foundation.begin_step(cache.get(time_step), rate);
             double new_depth = target;
-            if (contact_case.control != Control::displacement) {
+            if (!displacement) {
                 // Force control: F(d) = target. Spring control: F(d) = k (z - d), i.e. F(d) + k d = k z. A force
                 // pause: F(d) = the force held, as under force control (eq. 19).
                 const double guess = depth + (depth - previous_depth);
@@ -180,7 +181,7 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
             force = foundation.total_force();
             // Riding on the recovering surface without force: the depth shown is where the surface touches,
             // located between the centres (the foundation keeps stepping from its own depth).
-            shown_depth = contact_case.control == Control::force && target == 0.0
+            shown_depth = force_control && target == 0.0
                               ? std::min(depth, foundation.touching_depth())
                               : depth;
             if (holding) base = paused->base_in_pause(depth);  // the feedback's base: z = d + F / k

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mdr/contact/layer_contact.hpp"
+#include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/error.hpp"
 
@@ -43,12 +44,9 @@ void validate_layer(const ContactCase& contact_case) {
     if (!(layer.thickness > 0.0) || !std::isfinite(layer.thickness)) {
         throw InvalidInput("layer.thickness", format_value(layer.thickness), "must be finite and > 0");
     }
-    if (contact_case.control != Control::displacement) {
-        const std::string control = contact_case.shore                          ? "shore"
-                                    : contact_case.control == Control::force  ? "force"
-                                    : contact_case.control == Control::impact ? "impact"
-                                                                              : "spring";
-        refuse("load.control", "\"" + control + "\"", "force, spring, impact and Shore control");
+    if (!std::holds_alternative<DisplacementControl>(contact_case.control)) {
+        refuse("load.control", "\"" + control_kind(contact_case.control).name + "\"",
+               "force, spring, impact and Shore control");
     }
     if (contact_case.load.harmonic) refuse("load.harmonic", "[...]", "a harmonic load");
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
