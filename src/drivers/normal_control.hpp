@@ -80,9 +80,11 @@ public:
 class SpringStepping : public HistoryControl {
 public:
     static constexpr bool solves_depth = true;
-    explicit SpringStepping(const SpringControl& control) : control_(control) {
-        if (!control.force_pauses.empty()) paused_.emplace(control.force_pauses, control.spring_constant);
-    }
+    explicit SpringStepping(const SpringControl& control)
+        : control_(control),
+          paused_(control.force_pauses.empty()
+                      ? std::nullopt
+                      : std::make_optional<PausedBase>(control.force_pauses, control.spring_constant)) {}
     /// z is a column of its own, except in a Shore test (its reading is).
     bool base_column() const { return !control_.shore; }
     /// Each Shore reading and each pause's ends on a node of its own.
