@@ -23,8 +23,8 @@ struct DepthGuess {
     double scale = 0.0;  ///< |d0 - d_previous|, at least a small fraction of the depth scale
 };
 
-/// Common defaults: no z column, no grid cuts or extra observers, the grid as made, the indenter starting at the surface, the
-/// depth shown as stepped and the prescribed value as the load, nothing to do at a settled node.
+/// Common defaults: no z column, no grid cuts or extra observers, the grid as made, the indenter starting at the
+/// surface, the depth shown as stepped and the prescribed value as the load, nothing to do at a settled node.
 class HistoryControl {
 public:
     bool base_column() const { return false; }  ///< z is a column of the result
