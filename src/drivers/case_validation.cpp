@@ -14,21 +14,14 @@
 namespace mdr::drivers {
 namespace {
 
-void validate_history(const ContactCase& contact_case) {
+// Force control: no pull, a history force >= 0.
+void validate_force_history(const ContactCase& contact_case) {
     const auto& points = contact_case.load.history->points();
-    if (contact_case.control == Control::force) {
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            if (points[i].value < 0.0) {
-                throw InvalidInput(fmt::format("load.history[{}].F", i), format_value(points[i].value),
-                                   "must be >= 0 in force control (the contact cannot pull)");
-            }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (points[i].value < 0.0) {
+            throw InvalidInput(fmt::format("load.history[{}].F", i), format_value(points[i].value),
+                               "must be >= 0 in force control (the contact cannot pull)");
         }
-    }
-    if (contact_case.control == Control::displacement && contact_case.material.viscosity() > 0.0 &&
-        contact_case.load.history->has_jump()) {
-        throw InvalidInput(
-            "load.history", "[...]",
-            "a jump in depth needs an infinite force with a dashpot (eta > 0); give the jump a duration");
     }
 }
 
@@ -41,12 +34,10 @@ double history_minimum(const LoadHistory& history, double from, double to) {
     return lowest;
 }
 
+// The rules of a normal harmonic under any control that takes one.
 void validate_harmonic(const ContactCase& contact_case) {
     if (!contact_case.load.harmonic) return;
     const HarmonicLoad& harmonic = *contact_case.load.harmonic;
-    if (contact_case.control == Control::impact) {
-        throw InvalidInput("load.harmonic", "{...}", "not with control = \"impact\"");
-    }
     validate(harmonic, "load.harmonic.");
     require_positive("load.harmonic.amplitude", harmonic.amplitude);
     const double start = contact_case.load.history->start_time();
@@ -55,38 +46,31 @@ void validate_harmonic(const ContactCase& contact_case) {
                            "must not be before the first history time " + format_value(start) +
                                " (the harmonic is added to the history)");
     }
-    if (contact_case.control == Control::force) {
-        const double lowest = history_minimum(*contact_case.load.history, harmonic.start, harmonic.end);
-        if (harmonic.amplitude > lowest) {
-            throw InvalidInput("load.harmonic.amplitude", format_value(harmonic.amplitude),
-                               "must not exceed the smallest force of the history during the harmonic, " +
-                                   format_value(lowest) + " (the force would pull; the contact cannot)");
-        }
-        // After its end the harmonic holds its end value (0 after whole cycles, up to the sine's round-off).
-        const double held = harmonic.value(harmonic.end);
-        const double after = history_minimum(*contact_case.load.history, harmonic.end,
-                                             std::max(harmonic.end, contact_case.load.history->end_time()));
-        if (held + after < -1e-9 * harmonic.amplitude) {
-            throw InvalidInput("load.harmonic.end", format_value(harmonic.end),
-                               "the harmonic holds " + format_value(held) + " after its end, and with the history's " +
-                                   format_value(after) + " there the force would pull (end after whole cycles)");
-        }
+}
+
+// Force control: the harmonic must not make the force pull, during it or after it.
+void validate_force_harmonic(const ContactCase& contact_case) {
+    if (!contact_case.load.harmonic) return;
+    const HarmonicLoad& harmonic = *contact_case.load.harmonic;
+    const double lowest = history_minimum(*contact_case.load.history, harmonic.start, harmonic.end);
+    if (harmonic.amplitude > lowest) {
+        throw InvalidInput("load.harmonic.amplitude", format_value(harmonic.amplitude),
+                           "must not exceed the smallest force of the history during the harmonic, " +
+                               format_value(lowest) + " (the force would pull; the contact cannot)");
+    }
+    // After its end the harmonic holds its end value (0 after whole cycles, up to the sine's round-off).
+    const double held = harmonic.value(harmonic.end);
+    const double after = history_minimum(*contact_case.load.history, harmonic.end,
+                                         std::max(harmonic.end, contact_case.load.history->end_time()));
+    if (held + after < -1e-9 * harmonic.amplitude) {
+        throw InvalidInput("load.harmonic.end", format_value(harmonic.end),
+                           "the harmonic holds " + format_value(held) + " after its end, and with the history's " +
+                               format_value(after) + " there the force would pull (end after whole cycles)");
     }
 }
 
-void validate_spring(const ContactCase& contact_case) {
-    if (contact_case.control != Control::spring) {
-        if (contact_case.spring_constant) {
-            throw InvalidInput("load.spring_constant", format_value(*contact_case.spring_constant),
-                               "only with control = \"spring\"");
-        }
-        return;
-    }
-    if (!contact_case.spring_constant) {
-        throw InvalidInput("load.spring_constant", "(missing)", "is required with control = \"spring\"");
-    }
-    require_positive("load.spring_constant", *contact_case.spring_constant);
-    if (contact_case.shore) return;  // the durometer's own spring and base (validate_shore)
+// The base history of a plain spring: it starts at or above the surface and does not jump.
+void validate_base_history(const ContactCase& contact_case) {
     const auto& points = contact_case.load.history->points();
     if (points.front().value > 0.0) {
         throw InvalidInput("load.history[0].z", format_value(points.front().value),
@@ -102,11 +86,10 @@ void validate_spring(const ContactCase& contact_case) {
 }
 
 // A Shore test is spring control with the durometer's spring and the base history of shore_base_history.
-void validate_shore(const ContactCase& contact_case) {
-    const auto& shore = contact_case.shore;
-    if (!shore) return;
-    require_positive("load.duration", shore->duration);
-    if (contact_case.control != Control::spring || contact_case.spring_constant != shore->instrument.spring_rate) {
+void validate_shore(const ContactCase& contact_case, const SpringControl& spring) {
+    const ShoreTest& shore = *spring.shore;
+    require_positive("load.duration", shore.duration);
+    if (spring.spring_constant != shore.instrument.spring_rate) {
         throw InvalidInput("load.control", "\"shore\"",
                            "a Shore test is spring control with the durometer's own spring (no spring_constant)");
     }
@@ -116,11 +99,11 @@ void validate_shore(const ContactCase& contact_case) {
 
 // Constant-force pauses (ForcePause): spring control only, in time order and apart, inside the simulated time after
 // the history's first point, and not during a harmonic.
-void validate_force_pauses(const ContactCase& contact_case) {
-    const auto& pauses = contact_case.force_pauses;
+void validate_force_pauses(const ContactCase& contact_case, const std::vector<ForcePause>& pauses) {
     if (pauses.empty()) return;
-    if (contact_case.control != Control::spring || contact_case.shore) {
-        throw InvalidInput("load.force_pauses", "[...]", "only with control = \"spring\" (the feedback moves the base)");
+    if (contact_case.shore()) {
+        throw InvalidInput("load.force_pauses", "[...]",
+                           "only with control = \"spring\" (the feedback moves the base)");
     }
     const double first = contact_case.load.history->start_time();
     for (std::size_t i = 0; i < pauses.size(); ++i) {
@@ -150,17 +133,9 @@ void validate_force_pauses(const ContactCase& contact_case) {
     }
 }
 
-void validate_impact(const ContactCase& contact_case) {
-    if (contact_case.control != Control::impact) {
-        if (contact_case.impact) {
-            throw InvalidInput("load.velocity", format_value(contact_case.impact->velocity),
-                               "only with control = \"impact\"");
-        }
-        return;
-    }
-    if (!contact_case.impact) throw InvalidInput("load.velocity", "(missing)", "is required for an impact");
-    require_positive("load.velocity", contact_case.impact->velocity);
-    require_positive("indenter.mass", contact_case.impact->mass);
+void validate_impact(const ContactCase& contact_case, const ImpactControl& impact) {
+    require_positive("load.velocity", impact.velocity);
+    require_positive("indenter.mass", impact.mass);
     if (contact_case.tangential) {
         throw InvalidInput("tangential", "[...]",
                            "a tangential load history is not for an impact; an oblique impact takes only "
@@ -169,12 +144,8 @@ void validate_impact(const ContactCase& contact_case) {
 }
 
 void validate_oblique(const ContactCase& contact_case) {
-    const auto& oblique = contact_case.oblique;
+    const ObliqueImpactLoad* oblique = contact_case.oblique();
     if (!oblique) return;
-    if (contact_case.control != Control::impact) {
-        throw InvalidInput("load.tangential_velocity", format_value(oblique->tangential_velocity),
-                           "only with control = \"impact\" (an oblique impact)");
-    }
     require_non_negative("tangential.friction", oblique->friction);
     require_finite("load.tangential_velocity", oblique->tangential_velocity);
     require_finite("load.spin", oblique->spin);
@@ -196,7 +167,7 @@ void validate_oblique(const ContactCase& contact_case) {
 
 void validate_times(const ContactCase& contact_case) {
     const double start = contact_case.load.history->start_time();
-    const bool impact = contact_case.control == Control::impact;
+    const bool impact = contact_case.impact() != nullptr;
     // A history of jumps only (all points at one time) may end where it starts: no step has a length.
     const bool instant = contact_case.load.history->end_time() == start && contact_case.end_time == start;
     if (!(contact_case.end_time > start || instant) || (!impact && !std::isfinite(contact_case.end_time))) {
@@ -227,6 +198,39 @@ void validate_numerics(const NumericsOptions& numerics) {
     if (numerics.max_element_steps) require_positive("numerics.max_element_steps", *numerics.max_element_steps);
     if (numerics.max_memory) require_positive("numerics.max_memory", *numerics.max_memory);
 }
+
+// Each control's own rules, in the order the checks of a case have always run (those before the times).
+struct ControlRules {
+    const ContactCase& contact_case;
+
+    void operator()(const DisplacementControl&) const {
+        if (contact_case.material.viscosity() > 0.0 && contact_case.load.history->has_jump()) {
+            throw InvalidInput(
+                "load.history", "[...]",
+                "a jump in depth needs an infinite force with a dashpot (eta > 0); give the jump a duration");
+        }
+        validate_harmonic(contact_case);
+    }
+    void operator()(const ForceControl&) const {
+        validate_force_history(contact_case);
+        validate_harmonic(contact_case);
+        validate_force_harmonic(contact_case);
+    }
+    void operator()(const SpringControl& spring) const {
+        validate_harmonic(contact_case);
+        require_positive("load.spring_constant", spring.spring_constant);
+        if (spring.shore) {
+            validate_shore(contact_case, spring);
+        } else {
+            validate_base_history(contact_case);
+        }
+    }
+    void operator()(const ImpactControl& impact) const {
+        validate_impact(contact_case, impact);
+        validate_oblique(contact_case);
+        if (contact_case.load.harmonic) throw InvalidInput("load.harmonic", "{...}", "not with control = \"impact\"");
+    }
+};
 
 }  // namespace
 
@@ -268,14 +272,9 @@ void validate(const ContactCase& contact_case) {
     if (!contact_case.load.history) {
         throw InvalidInput("load.history", "(missing)", "is required (under control = \"impact\" the point (0, 0))");
     }
-    validate_impact(contact_case);
-    validate_oblique(contact_case);
-    validate_history(contact_case);
-    validate_harmonic(contact_case);
-    validate_spring(contact_case);
-    validate_shore(contact_case);
+    std::visit(ControlRules{contact_case}, contact_case.control);
     validate_times(contact_case);
-    validate_force_pauses(contact_case);
+    if (const SpringControl* spring = contact_case.spring()) validate_force_pauses(contact_case, spring->force_pauses);
     if (contact_case.tangential) validate(*contact_case.tangential);
     validate_numerics(contact_case.numerics);
 }

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace mdr::drivers {
@@ -114,11 +115,10 @@ namespace {
 
 // Impact: the time step from the elastic impact with the stiffest spring modulus, the foundation from the one
 // with the softest modulus (G_inf; for a fluid 1/J at ten stiff impact times), which bounds the depth.
-ResolvedNumerics resolve_impact_numerics(const ContactCase& contact_case) {
+ResolvedNumerics resolve_impact_numerics(const ContactCase& contact_case, const ImpactControl& impact) {
     const auto& numerics = contact_case.numerics;
     const auto& material = contact_case.material;
     const auto& indenter = *contact_case.indenter;
-    const auto& impact = *contact_case.impact;
     double spring_modulus = material.equilibrium_modulus();
     for (const auto& term : material.terms()) spring_modulus += term.modulus;
     if (!(spring_modulus > 0.0)) spring_modulus = material.viscosity() / std::max(material.shortest_time(), 1e-300);
@@ -139,7 +139,7 @@ ResolvedNumerics resolve_impact_numerics(const ContactCase& contact_case) {
         const double braking_time = impact.mass / (8.0 * material.viscosity() * soft.radius);
         step = std::min(step, braking_time / static_cast<double>(braking_steps));
     }
-    if (contact_case.oblique) {
+    if (impact.oblique) {
         // The contact point's motion has the effective mass m_t, 1/m_t = 1/m + R^2/I (2/7 m for a solid sphere, for
         // which the normal steps resolve it): a lighter m_t oscillates faster, as sqrt(m_t).
         const auto [radius, inertia] = oblique_sphere(contact_case);
@@ -156,7 +156,41 @@ ResolvedNumerics resolve_impact_numerics(const ContactCase& contact_case) {
     return resolved;
 }
 
-// Displacement or force control: see resolve_numerics.
+// The largest contact radius [m] of a history-driven control, 0 when there is none (see resolve_numerics):
+// `force_bound` the force-control bound for a force, `peak` the history's largest value with the harmonic's.
+struct ContactRadiusBound {
+    const ContactCase& contact_case;
+    double peak;
+    std::function<double(double)> force_bound;
+
+    double operator()(const DisplacementControl&) const { return 1.1 * contact_case.indenter->contact_radius(peak); }
+    double operator()(const ForceControl&) const { return force_bound(peak); }
+    double operator()(const SpringControl& spring) const {  // d <= z and F <= k z
+        const auto& indenter = *contact_case.indenter;
+        const double k = spring.spring_constant;
+        double base = peak;
+        double force = k * peak;
+        if (!spring.force_pauses.empty()) {
+            // The force at a depth d <= z is at most the elastic one with G(0+) (the contact only grows up to a
+            // pause); each pause shifts the later base by its creep, at most the depth of that force's bound.
+            const double modulus = contact_case.material.instantaneous_modulus();
+            const auto at_most = [&](double z) {
+                return std::isfinite(modulus)
+                           ? std::min(k * z, elastic_force(indenter, modulus, indenter.contact_radius(z)))
+                           : k * z;
+            };
+            const double creep = indenter.equivalent(std::min(force_bound(at_most(peak)), indenter.max_radius()));
+            base = paused_base_peak(*contact_case.load.history, spring.force_pauses, peak, creep);
+            force = std::isfinite(base) ? at_most(base) : force;
+        }
+        // (An infinite bound: the force bound reaches the indenter's edge, which is then the half-width.)
+        return std::isfinite(base) ? std::min(1.1 * indenter.contact_radius(base), force_bound(force))
+                                   : indenter.max_radius();
+    }
+    double operator()(const ImpactControl&) const { return 0.0; }  // resolve_impact_numerics
+};
+
+// Displacement, force or spring control: see resolve_numerics.
 ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
     const auto& numerics = contact_case.numerics;
     const auto& indenter = *contact_case.indenter;
@@ -185,7 +219,7 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
     }
     // Under force or spring control the creep after the start and after a fast load change is taken on steps graded
     // from there, scaled to the time step, the user's too (a finer step is never worse than the default):
-    if (contact_case.control != Control::displacement && duration > 0.0) {
+    if (!std::holds_alternative<DisplacementControl>(contact_case.control) && duration > 0.0) {
         if (material.viscosity() > 0.0) {
             // a parallel dashpot: the trapezoidal rate is second order, and the creep, singular in time there, is
             // graded from a small fraction of the step;
@@ -224,32 +258,7 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
             const double softest = 1.0 / contact_case.material.creep(std::max(duration, 0.0));
             return 1.25 * elastic_radius(indenter, softest, force);
         };
-        double radius = 0.0;
-        if (contact_case.control == Control::displacement) {
-            radius = 1.1 * indenter.contact_radius(peak);
-        } else if (contact_case.control == Control::force) {
-            radius = force_bound(peak);
-        } else {  // spring: d <= z and F <= k z
-            const double k = *contact_case.spring_constant;
-            double base = peak;
-            double force = k * peak;
-            if (!contact_case.force_pauses.empty()) {
-                // The force at a depth d <= z is at most the elastic one with G(0+) (the contact only grows up to a
-                // pause); each pause shifts the later base by its creep, at most the depth of that force's bound.
-                const double modulus = contact_case.material.instantaneous_modulus();
-                const auto at_most = [&](double z) {
-                    return std::isfinite(modulus)
-                               ? std::min(k * z, elastic_force(indenter, modulus, indenter.contact_radius(z)))
-                               : k * z;
-                };
-                const double creep = indenter.equivalent(std::min(force_bound(at_most(peak)), indenter.max_radius()));
-                base = paused_base_peak(*contact_case.load.history, contact_case.force_pauses, peak, creep);
-                force = std::isfinite(base) ? at_most(base) : force;
-            }
-            // (An infinite bound: the force bound reaches the indenter's edge, which is then the half-width.)
-            radius = std::isfinite(base) ? std::min(1.1 * indenter.contact_radius(base), force_bound(force))
-                                         : indenter.max_radius();
-        }
+        double radius = std::visit(ContactRadiusBound{contact_case, peak, force_bound}, contact_case.control);
         if (!(radius > 0.0)) radius = std::isfinite(indenter.max_radius()) ? indenter.max_radius() : 1.0;
         resolved.half_width = std::min(radius, indenter.max_radius());
     }
@@ -260,9 +269,9 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
 
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case) {
     validate(contact_case);
-    const ResolvedNumerics resolved = contact_case.control == Control::impact
-                                          ? resolve_impact_numerics(contact_case)
-                                          : resolve_indentation_numerics(contact_case);
+    const ImpactControl* impact = contact_case.impact();
+    const ResolvedNumerics resolved =
+        impact ? resolve_impact_numerics(contact_case, *impact) : resolve_indentation_numerics(contact_case);
     require_bounded_work(contact_case, resolved);
     return resolved;
 }

@@ -23,12 +23,12 @@ ControlKey end() { return {"end", "s", "the last time simulated (default: the en
 
 std::vector<ControlKind> rows() {
     return {
-        {Control::displacement, "displacement", "the history prescribes the depth d(t); the force follows (eq. 16)",
+        {"displacement", "the history prescribes the depth d(t); the force follows (eq. 16)",
          "d", {history("s, m", "d"), harmonic("m"), end()}, {}},
-        {Control::force, "force",
+        {"force",
          "the history prescribes the force F(t) >= 0; the depth is solved for at each step (eq. 19)", "F",
          {history("s, N", "F"), harmonic("N"), end()}, {}},
-        {Control::impact, "impact",
+        {"impact",
          "a rigid indenter of mass m meets the surface at speed v0 at t = 0 and moves by m d'' = -F (eq. 37) until it "
          "leaves",
          "",
@@ -36,7 +36,7 @@ std::vector<ControlKind> rows() {
           {"end", "s", "the latest end (default: from the contact time's scales)"},
           oblique_impact_keys()[0], oblique_impact_keys()[1], oblique_impact_keys()[2]},
          {"indenter.mass"}},
-        {Control::spring, "spring",
+        {"spring",
          "the history prescribes the base z(t) of a spring k in series with the massless indenter: F = k (z - d)", "z",
          {history("s, m", "z"),
           {"spring_constant", "N/m", "the spring's stiffness k > 0", true},
@@ -44,8 +44,7 @@ std::vector<ControlKind> rows() {
           {"force_pauses", "s", "[[start, end], ...]: the instrument's feedback holds the force over each"},
           end()},
          {}},
-        // After "spring": control_kind(Control::spring) is the plain spring.
-        {Control::spring, "shore",
+        {"shore",
          "a Shore A or D durometer (ASTM D2240, ISO 48-4): the standard's indenter pushed through its calibrated spring "
          "(spring control with a constant base); the reading H = 100 - d / 0.025 mm over time",
          "",
@@ -124,11 +123,14 @@ const ControlKind& control_named(const std::string& name) {
     throw InvalidInput("control", "\"" + name + "\"", "unknown control; one of " + names);
 }
 
-const ControlKind& control_kind(Control control) {
-    for (const ControlKind& kind : controls()) {
-        if (kind.control == control) return kind;
-    }
-    throw InvalidInput("control", std::to_string(static_cast<int>(control)), "is not a control of the table");
+const ControlKind& control_kind(const LoadControl& control) {
+    struct Name {
+        const char* operator()(const DisplacementControl&) const { return "displacement"; }
+        const char* operator()(const ForceControl&) const { return "force"; }
+        const char* operator()(const SpringControl& spring) const { return spring.shore ? "shore" : "spring"; }
+        const char* operator()(const ImpactControl&) const { return "impact"; }
+    };
+    return control_named(std::visit(Name{}, control));
 }
 
 }  // namespace mdr::drivers

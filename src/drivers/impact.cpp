@@ -24,14 +24,15 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
     result.numerics = resolve_numerics(contact_case);
     const auto& numerics = result.numerics;
     const auto& indenter = *contact_case.indenter;
-    const double mass = contact_case.impact->mass;
-    const double approach = contact_case.impact->velocity;
+    const ImpactControl& impact = std::get<ImpactControl>(contact_case.control);
+    const double mass = impact.mass;
+    const double approach = impact.velocity;
     foundation::Foundation foundation(contact_case.material, indenter,
                                       numerics.half_width / static_cast<double>(numerics.elements), numerics.elements);
     CoefficientCache cache(contact_case.material);
     std::optional<ObliqueStepper> oblique;
-    if (contact_case.oblique) {
-        oblique.emplace(*contact_case.oblique, oblique_sphere(contact_case), mass, contact_case.material, foundation);
+    if (impact.oblique) {
+        oblique.emplace(*impact.oblique, oblique_sphere(contact_case), mass, contact_case.material, foundation);
     }
 
     double time = 0.0, depth = 0.0, velocity = approach, force = 0.0;
@@ -141,9 +142,9 @@ IndentationResult run_impact(const ContactCase& contact_case, const ProgressObse
 
 IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress,
                            const StepObservers& observers) {
-    auto result = contact_case.layer                        ? run_layer_indentation(contact_case, progress, observers)
-                  : contact_case.control == Control::impact ? run_impact(contact_case, progress, observers)
-                                                            : run_indentation(contact_case, progress, observers);
+    auto result = contact_case.layer    ? run_layer_indentation(contact_case, progress, observers)
+                  : contact_case.impact() ? run_impact(contact_case, progress, observers)
+                                          : run_indentation(contact_case, progress, observers);
     require_finite_result(result);
     return result;
 }

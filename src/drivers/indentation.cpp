@@ -9,7 +9,7 @@
 #include "mdr/foundation/foundation.hpp"
 #include "cycle_measure.hpp"
 #include "observer_list.hpp"
-#include "paused_base.hpp"
+#include "normal_control.hpp"
 #include "recorders.hpp"
 #include "stepping.hpp"
 #include "tangential_stepping.hpp"
@@ -37,7 +37,13 @@ std::optional<double> next_rate(const foundation::Foundation& foundation, std::o
 
 }  // namespace
 
-std::vector<GridNode> indentation_grid(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
+namespace {
+
+// The time grid of a history-driven control: the history's points, the cuts of the snapshots, the tangential load,
+// the harmonic and the control, graded after fast changes, with the harmonic added to the history's values.
+template <class Control>
+std::vector<GridNode> history_grid(const ContactCase& contact_case, const ResolvedNumerics& numerics,
+                                   const Control& control) {
     std::vector<double> cuts = contact_case.snapshots;
     if (contact_case.tangential) {
         const auto breakpoints = contact_case.tangential->load.breakpoints();
@@ -50,21 +56,12 @@ std::vector<GridNode> indentation_grid(const ContactCase& contact_case, const Re
             cuts.insert(cuts.end(), {last->first, last->second});  // the measured cycle on uniform steps
         }
     }
-    const auto& shore = contact_case.shore;
-    if (shore) {
-        for (const double time : shore_reading_times) {
-            if (time <= contact_case.end_time) cuts.push_back(time);  // each reading on a node of its own
-        }
-    }
-    for (const ForcePause& pause : contact_case.force_pauses) cuts.insert(cuts.end(), {pause.start, pause.end});
+    control.add_cuts(cuts, contact_case.end_time);
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
     auto nodes = make_time_grid(*contact_case.load.history, contact_case.end_time, numerics.time_step,
                                 numerics.min_segment_steps, cuts);
-    const bool spring = contact_case.control == Control::spring;
-    if (spring && !shore && nodes.size() > 1 && nodes[1].time == nodes[0].time) {
-        nodes.erase(nodes.begin());  // the base starts where it is (z <= 0, validated): no jump from z = 0
-    }
+    control.shape_grid(nodes);
     if (numerics.grading_ratio > 0.0) {
         const auto changes = fast_change_times(*contact_case.load.history, contact_case.end_time, numerics.time_step,
                                                min_steps_per_segment);
@@ -76,8 +73,12 @@ std::vector<GridNode> indentation_grid(const ContactCase& contact_case, const Re
     return nodes;
 }
 
-IndentationResult run_indentation(const ContactCase& contact_case, const ProgressObserver& progress,
-                                  const StepObservers& extra_observers) {
+// The one loop of a history-driven control (normal_control.hpp): the grid (the history's points, the cuts of the
+// snapshots, the tangential load, the harmonic and the control), then each step (the control's depth, the
+// tangential layer's step), then the observers.
+template <class Control>
+IndentationResult run_history(const ContactCase& contact_case, Control& control, const ProgressObserver& progress,
+                              const StepObservers& extra_observers) {
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
     const auto& numerics = result.numerics;
@@ -91,11 +92,7 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
     }
     std::optional<CycleMeasure> cycle;
     if (const auto& harmonic = contact_case.load.harmonic) cycle.emplace(*harmonic, contact_case.end_time);
-    const auto& shore = contact_case.shore;
-    std::optional<PausedBase> paused;
-    if (!contact_case.force_pauses.empty()) paused.emplace(contact_case.force_pauses, *contact_case.spring_constant);
-    const auto nodes = indentation_grid(contact_case, numerics);
-    const bool spring = contact_case.control == Control::spring;
+    const auto nodes = history_grid(contact_case, numerics, control);
     CoefficientCache cache(material);
     const bool has_dashpot = material.viscosity() > 0.0;
     const double depth_scale = std::isfinite(indenter.equivalent(numerics.half_width))
@@ -104,10 +101,9 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
 
     // The standard observers fill the result; the caller's follow them.
     ObserverList observers(numerics.output_every);
-    RowRecorder rows(result, {.velocity = false, .base = spring && !shore});
+    RowRecorder rows(result, {.velocity = false, .base = control.base_column()});
     observers.add(rows);
-    std::optional<ShoreRecorder> shore_readings;
-    if (shore) observers.add(shore_readings.emplace(shore->instrument, result));
+    control.add_observers(observers, result);
     std::optional<TangentialColumns<TangentialStepper>> tangential_columns;
     if (tangential) observers.add(tangential_columns.emplace(*tangential, result));
     SnapshotRecorder::ShearStress shear_stress;
@@ -119,8 +115,7 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
     if (progress) observers.add(progress_report.emplace(progress));
     observers.add(extra_observers);
 
-    // Spring control: the massless indenter rests on the unloaded spring, d = z, until it touches the surface.
-    double depth = spring ? nodes.front().value : 0.0;
+    double depth = control.start_depth(nodes.front());
     const std::size_t last_node = nodes.size() - 1;
     StepState state{.time = nodes.front().time, .depth = depth, .load = nodes.front().value,
                     .last = last_node == 0, .foundation = &foundation};
@@ -128,37 +123,28 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
 
     double previous_depth = depth;
     double shown_depth = depth;
-    // Force or spring control with a parallel dashpot: the indenter's rate dd/dt at the current node, so that the
-    // dashpot sees the trapezoidal rate (second order, see Foundation::begin_step). Unknown (the secant rate is
-    // used for one step) while nothing is in contact: the rate is then not tied to the force.
-    const bool trapezoidal = has_dashpot && contact_case.control != Control::displacement;
-    const double stiffness = spring ? *contact_case.spring_constant : 0.0;
+    // A control that solves for the depth, with a parallel dashpot: the indenter's rate dd/dt at the current node,
+    // so that the dashpot sees the trapezoidal rate (second order, see Foundation::begin_step). Unknown (the secant
+    // rate is used for one step) while nothing is in contact: the rate is then not tied to the force.
+    const bool trapezoidal = has_dashpot && Control::solves_depth;
     std::optional<double> rate = trapezoidal ? std::optional<double>(0.0) : std::nullopt;
-    const bool sine_rate = has_dashpot && contact_case.control == Control::displacement && contact_case.load.harmonic;
+    const bool sine_rate = has_dashpot && !Control::solves_depth && contact_case.load.harmonic;
     double last_force = 0.0;
 
     for (std::size_t n = 1; n <= last_node && !stopped; ++n) {
         const double time_step = nodes[n].time - nodes[n - 1].time;
-        // Force control: the sine's round-off at a zero of the validated (>= 0) prescribed force is no pull.
-        // Spring control: the base, the history shifted by the pauses passed (PausedBase); a pause holds the force.
-        const bool holding = paused && paused->holding(nodes[n - 1].time, nodes[n].time);
-        const double target = contact_case.control == Control::force ? std::max(nodes[n].value, 0.0)
-                              : paused                               ? paused->base(nodes[n].value)
-                                                                     : nodes[n].value;
-        double base = target;
+        control.begin_step(nodes[n - 1].time, nodes[n].time);
+        const double target = control.target(nodes[n].value);
+        double load = target;
         double force = 0.0;
         if (time_step == 0.0 && has_dashpot) {
-            // A jump against a dashpot: the dashpot takes the force at once and the depth does not move (spring
-            // control has no jumps after the start).
-            // (Under spring control only a Shore test has a jump, at the foot's landing: the spring's force.)
-            force = contact_case.control == Control::force ? target
-                    : spring                               ? stiffness * (target - depth)
-                                                           : foundation.total_force();
+            // A jump against a dashpot: the dashpot takes the force at once and the depth does not move.
+            force = control.jump_force(target, depth, foundation);
             if (rate) rate = jumped_rate(foundation, material.viscosity(), *rate, force - last_force);
             shown_depth = depth;
         } else {
             if (sine_rate) {
-                // Displacement control under a harmonic with a dashpot: the depth is not linear inside a step, and
+                // A prescribed depth under a harmonic with a dashpot: the depth is not linear inside a step, and
                 // the secant rate would be first order at the nodes. The dashpot takes the trapezoidal rate from the
                 // prescribed rate at the step's start, the history's slope plus the sine's rate (second order).
                 const auto& harmonic = *contact_case.load.harmonic;
@@ -168,35 +154,23 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
                 rate = history_change / time_step + harmonic.rate(t0);
             }
             foundation.begin_step(cache.get(time_step), rate);
-            double new_depth = target;
-            if (contact_case.control != Control::displacement) {
-                // Force control: F(d) = target. Spring control: F(d) = k (z - d), i.e. F(d) + k d = k z. A force
-                // pause: F(d) = the force held, as under force control (eq. 19).
-                const double guess = depth + (depth - previous_depth);
-                const double scale = std::max(std::abs(depth - previous_depth), 1e-6 * depth_scale);
-                const double right_side = holding ? paused->held_force() : spring ? stiffness * target : target;
-                new_depth = solve_depth(foundation, depth, guess, scale, right_side, holding ? 0.0 : stiffness, 0.0);
-                // A durometer's indenter stops at its full extension (reading 0): the stop takes the rest.
-                if (shore) new_depth = std::min(new_depth, shore->instrument.full_extension());
-            }
+            const DepthGuess start{.guess = depth + (depth - previous_depth),
+                                   .scale = std::max(std::abs(depth - previous_depth), 1e-6 * depth_scale)};
+            const double new_depth = control.step_depth(foundation, depth, start, target);
             foundation.advance(depth, new_depth);
             if (trapezoidal) rate = next_rate(foundation, rate, depth, new_depth, time_step);
             if (tangential) tangential->step(cache.get(time_step), nodes[n - 1].time, nodes[n].time);
             previous_depth = depth;
             depth = new_depth;
             force = foundation.total_force();
-            // Riding on the recovering surface without force: the depth shown is where the surface touches,
-            // located between the centres (the foundation keeps stepping from its own depth).
-            shown_depth = contact_case.control == Control::force && target == 0.0
-                              ? std::min(depth, foundation.touching_depth())
-                              : depth;
-            if (holding) base = paused->base_in_pause(depth);  // the feedback's base: z = d + F / k
+            shown_depth = control.shown_depth(depth, target, foundation);
+            load = control.shown_load(target, depth);
         }
         last_force = force;
         ++result.steps;
         const bool settled = n == last_node || nodes[n + 1].time != nodes[n].time;
-        if (paused && settled) paused->passed(nodes[n].time, force, depth, nodes[n].value);
-        state = {.step = n, .time = nodes[n].time, .depth = shown_depth, .force = force, .load = base,
+        if (settled) control.settled(nodes[n].time, force, depth, nodes[n].value);
+        state = {.step = n, .time = nodes[n].time, .depth = shown_depth, .force = force, .load = load,
                  .fraction = static_cast<double>(n) / static_cast<double>(last_node), .settled = settled,
                  .last = n == last_node, .foundation = &foundation};
         stopped = observers.notify(state);
@@ -206,6 +180,59 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
     if (tangential) result.tangential = tangential->outcome();
     if (cycle) result.harmonic = cycle->outcome();
     return result;
+}
+
+// The stepping of each history-driven control; an impact is run_impact's.
+struct HistoryRun {
+    const ContactCase& contact_case;
+    const ProgressObserver& progress;
+    const StepObservers& observers;
+
+    IndentationResult operator()(const DisplacementControl&) const {
+        DisplacementStepping stepping;
+        return run_history(contact_case, stepping, progress, observers);
+    }
+    IndentationResult operator()(const ForceControl&) const {
+        ForceStepping stepping;
+        return run_history(contact_case, stepping, progress, observers);
+    }
+    IndentationResult operator()(const SpringControl& spring) const {
+        SpringStepping stepping(spring);
+        return run_history(contact_case, stepping, progress, observers);
+    }
+    IndentationResult operator()(const ImpactControl&) const {
+        throw InvalidInput("load.control", "\"impact\"", "is run by run_impact, not run_indentation");
+    }
+};
+
+// The grid of each history-driven control (indentation_grid); an impact has no history grid.
+struct HistoryGrid {
+    const ContactCase& contact_case;
+    const ResolvedNumerics& numerics;
+
+    std::vector<GridNode> operator()(const DisplacementControl&) const {
+        return history_grid(contact_case, numerics, DisplacementStepping{});
+    }
+    std::vector<GridNode> operator()(const ForceControl&) const {
+        return history_grid(contact_case, numerics, ForceStepping{});
+    }
+    std::vector<GridNode> operator()(const SpringControl& spring) const {
+        return history_grid(contact_case, numerics, SpringStepping(spring));
+    }
+    std::vector<GridNode> operator()(const ImpactControl&) const {
+        throw InvalidInput("load.control", "\"impact\"", "has no history grid (run_impact steps it)");
+    }
+};
+
+}  // namespace
+
+std::vector<GridNode> indentation_grid(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
+    return std::visit(HistoryGrid{contact_case, numerics}, contact_case.control);
+}
+
+IndentationResult run_indentation(const ContactCase& contact_case, const ProgressObserver& progress,
+                                  const StepObservers& extra_observers) {
+    return std::visit(HistoryRun{contact_case, progress, extra_observers}, contact_case.control);
 }
 
 }  // namespace mdr::drivers

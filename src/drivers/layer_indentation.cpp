@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mdr/contact/layer_contact.hpp"
+#include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
@@ -31,7 +32,7 @@ constexpr std::size_t max_layer_nodes = 512;
 double largest_contact_radius(const ContactCase& contact_case) {
     const auto& indenter = *contact_case.indenter;
     if (indenter.is_flat_punch()) return indenter.max_radius();
-    const double half_space = contact_case.control == Control::force
+    const double half_space = std::holds_alternative<ForceControl>(contact_case.control)
                                   ? resolve_numerics(contact_case).half_width
                                   : indenter.contact_radius(contact_case.load.history->max_value());
     return std::min(indenter.max_radius(), layer_radius_margin * half_space);
@@ -58,13 +59,13 @@ void validate_layer(const ContactCase& contact_case) {
     if (!(layer.thickness > 0.0) || !std::isfinite(layer.thickness)) {
         throw InvalidInput("layer.thickness", format_value(layer.thickness), "must be finite and > 0");
     }
-    if (contact_case.control != Control::displacement && contact_case.control != Control::force) {
-        const std::string control = contact_case.shore                          ? "shore"
-                                    : contact_case.control == Control::impact ? "impact"
-                                                                              : "spring";
-        refuse("load.control", "\"" + control + "\"", "spring, impact and Shore control");
+    const bool displacement = std::holds_alternative<DisplacementControl>(contact_case.control);
+    const bool force = std::holds_alternative<ForceControl>(contact_case.control);
+    if (!displacement && !force) {
+        refuse("load.control", "\"" + control_kind(contact_case.control).name + "\"",
+               "spring, impact and Shore control");
     }
-    if (contact_case.control == Control::force && contact_case.material.viscosity() > 0.0) {
+    if (force && contact_case.material.viscosity() > 0.0) {
         refuse("material.eta", format_value(contact_case.material.viscosity()),
                "a parallel dashpot under force control");
     }
@@ -112,7 +113,7 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     }
 
     const auto& material = contact_case.material;
-    const bool force_control = contact_case.control == Control::force;
+    const bool force_control = std::holds_alternative<ForceControl>(contact_case.control);
     // The depth's scale: the largest prescribed, or under force control the profile's at the largest radius (a
     // flat punch's profile is flat: its radius then, so that the solves' brackets grow from a non-zero step).
     const double profile_depth = contact_case.indenter->equivalent(largest_radius);

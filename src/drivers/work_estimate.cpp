@@ -42,7 +42,7 @@ double indentation_steps(const ContactCase& contact_case, const ResolvedNumerics
 
 WorkEstimate estimate_work(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
     WorkEstimate estimate;
-    const bool impact = contact_case.control == Control::impact;
+    const bool impact = contact_case.impact() != nullptr;
     estimate.steps = impact ? numerics.time_limit / numerics.time_step +
                                   static_cast<double>(contact_case.snapshots.size())
                             : indentation_steps(contact_case, numerics);
@@ -60,9 +60,9 @@ WorkEstimate estimate_work(const ContactCase& contact_case, const ResolvedNumeri
 
 void require_bounded_work(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
     const double start = contact_case.load.history->start_time();
-    const bool impact = contact_case.control == Control::impact;
+    const bool impact = contact_case.impact() != nullptr;
     if (impact && !(std::isfinite(numerics.time_limit) && numerics.time_step > 0.0)) {
-        throw InvalidInput("load.velocity", format_value(contact_case.impact->velocity),
+        throw InvalidInput("load.velocity", format_value(contact_case.impact()->velocity),
                            fmt::format("the impact's time scales are not representable (time step {:.4g} s, contact "
                                        "time limit {:.4g} s); give load.end and numerics.time_step",
                                        numerics.time_step, numerics.time_limit));

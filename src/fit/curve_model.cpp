@@ -131,15 +131,13 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
             depths.push_back(point.value);
         }
     }
-    model_case.control = depth_driven ? drivers::Control::displacement : drivers::Control::force;
+    model_case.control = depth_driven ? drivers::LoadControl(drivers::DisplacementControl{})
+                                      : drivers::LoadControl(drivers::ForceControl{});
     model_case.load.history = drivers::LoadHistory(std::move(points), "load.history");
     model_case.end_time = curve.time.back();
     model_case.snapshots.clear();
     model_case.tangential.reset();
     model_case.load.harmonic.reset();
-    model_case.spring_constant.reset();
-    model_case.impact.reset();
-    model_case.oblique.reset();
     model_case.numerics.elements = elements;
     model_case.numerics.output_every = 1;
     // Under displacement control each element's update is exact for a depth linear in time (eq. 16, 18): the

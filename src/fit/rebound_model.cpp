@@ -8,16 +8,12 @@ namespace mdr::fit {
 
 ImpactValues run_rebound(drivers::ContactCase model_case, double mass, double velocity, std::size_t elements,
                          const std::function<void()>& check_interrupt) {
-    model_case.control = drivers::Control::impact;
-    model_case.impact = drivers::ImpactLoad{mass, velocity};
+    model_case.control = drivers::ImpactControl{.mass = mass, .velocity = velocity};
     model_case.load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
     model_case.end_time = std::numeric_limits<double>::infinity();
     model_case.snapshots.clear();
     model_case.tangential.reset();
     model_case.load.harmonic.reset();
-    model_case.spring_constant.reset();
-    model_case.oblique.reset();
-    model_case.shore.reset();
     model_case.numerics.time_step.reset();
     model_case.numerics.half_width.reset();
     model_case.numerics.elements = elements;

@@ -116,7 +116,7 @@ bool is_oblique(const TableReader& load) {
 // The tangential part of an impact: `[load] tangential_velocity` (or `incidence_deg`) and `spin`, `[indenter]
 // moment_of_inertia` (optional: drivers::oblique_sphere) and `[tangential] friction`.
 drivers::ObliqueImpactLoad read_oblique(TableReader& load, TableReader& indenter,
-                                        std::optional<TableReader>& tangential, const drivers::ImpactLoad& impact) {
+                                        std::optional<TableReader>& tangential, const drivers::ImpactControl& impact) {
     if (!tangential || !tangential->has("friction")) {
         throw InvalidInput("tangential.friction", "(missing)", "is required for an oblique impact");
     }
@@ -229,6 +229,27 @@ void refuse_non_ascii_outside_strings(std::string_view text, const std::string& 
     }
 }
 
+// The control of `[load]` as its row names it: an impact as read (with its oblique part), a spring with its
+// pauses or the durometer, or a history-driven control without data of its own.
+// `spring_constant` is read where messages have always met it, before the history.
+drivers::LoadControl read_load_control(TableReader& load, const drivers::ControlKind& kind,
+                                       const std::optional<drivers::ImpactControl>& impact,
+                                       const std::optional<ShoreLoad>& shore, std::optional<double> spring_constant) {
+    if (impact) return *impact;
+    if (shore) {
+        return drivers::SpringControl{.spring_constant = shore->test.instrument.spring_rate, .shore = shore->test};
+    }
+    if (kind.name == "force") return drivers::ForceControl{};
+    if (kind.name == "displacement") return drivers::DisplacementControl{};
+    drivers::SpringControl spring{.spring_constant = spring_constant.value_or(0.0)};
+    if (load.has("force_pauses")) {
+        for (const auto& [start, end] : load.pairs("force_pauses", "start", "end")) {
+            spring.force_pauses.push_back({start, end});
+        }
+    }
+    return spring;
+}
+
 }  // namespace
 
 toml::table parse_toml(std::string_view toml_text, const std::string& source) {
@@ -267,7 +288,6 @@ drivers::ContactCase read_case(const toml::table& root_table) {
                            "a harmonic is added to a base history: give one, e.g. [[0.0, 0.0], [1.0, d0]]");
     }
     require_control_keys(*load, control_kind);
-    const drivers::Control control = control_kind.control;
     const std::optional<ShoreLoad> shore =
         control_kind.name == "shore" ? std::optional(read_shore(*load, unit_system(units))) : std::nullopt;
     const toml::table no_indenter;  // a durometer brings the standard's indenter: its [indenter] stays empty
@@ -292,17 +312,16 @@ drivers::ContactCase read_case(const toml::table& root_table) {
         table->reject_unknown(drivers::harmonic_key_names());
         normal_load.harmonic = read_harmonic(*table);
     }
-    const std::optional<double> spring_constant =
-        shore ? shore->test.instrument.spring_rate : load->optional_number("spring_constant");
-    std::optional<drivers::ImpactLoad> impact;
-    if (control == drivers::Control::impact) {
+    const std::optional<double> spring_constant = load->optional_number("spring_constant");
+    std::optional<drivers::ImpactControl> impact;
+    if (control_kind.name == "impact") {
         const double velocity = load->number("velocity");
         for (const auto& key : control_kind.other_keys) {  // indenter.mass
             if (!indenter_table->has(key.substr(key.find('.') + 1))) {
                 throw InvalidInput(key, "(missing)", "is required for an impact");
             }
         }
-        impact = drivers::ImpactLoad{indenter_table->number("mass"), velocity};
+        impact = drivers::ImpactControl{.mass = indenter_table->number("mass"), .velocity = velocity};
         normal_load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
     } else {
         normal_load.history =
@@ -312,11 +331,10 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     if (auto end = load->optional_number("end")) end_time = *end;
 
     std::optional<drivers::TangentialLoad> tangential;
-    std::optional<drivers::ObliqueImpactLoad> oblique;
     auto tangential_table = root.table("tangential");
     const bool oblique_keys = is_oblique(*load) || indenter_table->has("moment_of_inertia");
     if (impact && (tangential_table || oblique_keys)) {
-        oblique = read_oblique(*load, *indenter_table, tangential_table, *impact);
+        impact->oblique = read_oblique(*load, *indenter_table, tangential_table, *impact);
     } else if (oblique_keys) {  // the oblique keys of [load] are the impact's (read_control)
         throw InvalidInput("indenter.moment_of_inertia", indenter_table->text("moment_of_inertia"),
                            "only with control = \"impact\" (an oblique impact)");
@@ -357,18 +375,19 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     rheology::ContactMaterial contact =
         rheology::contact_material(build_body(half_space_spec, window, directory, system), second);
 
-    drivers::ContactCase contact_case{title,    std::move(contact.material),  std::move(indenter), control,
-                                      std::move(normal_load), end_time, std::move(snapshots), numerics,
-                                      std::move(contact.shear_material), impact, std::move(tangential),
-                                      contact.tangential_exact, oblique, std::move(contact.origin)};
-    contact_case.spring_constant = spring_constant;
-    if (shore) contact_case.shore = shore->test;
-    if (load->has("force_pauses")) {
-        for (const auto& [start, end] : load->pairs("force_pauses", "start", "end")) {
-            contact_case.force_pauses.push_back({start, end});
-        }
-    }
-    contact_case.units = units;
+    drivers::ContactCase contact_case{.title = title,
+                                      .material = std::move(contact.material),
+                                      .indenter = std::move(indenter),
+                                      .control = read_load_control(*load, control_kind, impact, shore, spring_constant),
+                                      .load = std::move(normal_load),
+                                      .end_time = end_time,
+                                      .snapshots = std::move(snapshots),
+                                      .numerics = numerics,
+                                      .shear_material = std::move(contact.shear_material),
+                                      .tangential = std::move(tangential),
+                                      .tangential_exact = contact.tangential_exact,
+                                      .material_origin = std::move(contact.origin),
+                                      .units = units};
     if (auto layer = root.table("layer")) contact_case.layer = read_layer(*layer);
     drivers::validate(contact_case);
     drivers::validate_layer(contact_case);
@@ -394,16 +413,16 @@ std::string describe(const drivers::ContactCase& contact_case) {
     const std::string rheology =
         material.terms().empty() && material.viscosity() == 0.0 ? "an elastic" : "a viscoelastic";
     std::string load;
-    if (contact_case.impact) {
-        load = fmt::format("impact of m = {:.4g} {} at v0 = {:.4g} {}", contact_case.impact->mass, units.mass,
-                           contact_case.impact->velocity, units.velocity());
-        if (const auto& oblique = contact_case.oblique) {
+    if (const drivers::ImpactControl* impact = contact_case.impact()) {
+        load = fmt::format("impact of m = {:.4g} {} at v0 = {:.4g} {}", impact->mass, units.mass, impact->velocity,
+                           units.velocity());
+        if (const drivers::ObliqueImpactLoad* oblique = contact_case.oblique()) {
             load += fmt::format(", oblique: v_t0 = {:.4g} {}, omega0 = {:.4g} rad/s, I = {:.4g} {} {}^2, mu = {:.4g}",
                                 oblique->tangential_velocity, units.velocity(), oblique->spin,
                                 drivers::oblique_sphere(contact_case).moment_of_inertia, units.mass, units.length,
                                 oblique->friction);
         }
-    } else if (const auto& shore = contact_case.shore) {
+    } else if (const drivers::ShoreTest* shore = contact_case.shore()) {
         const auto& instrument = shore->instrument;
         load = fmt::format("Shore {} durometer (spring force {:.4g} {} at reading 100, falling {:.4g} {}/{}; one point "
                            "= {:.4g} {}), the foot resting from t = 0 to {:.4g} {}",
@@ -415,15 +434,16 @@ std::string describe(const drivers::ContactCase& contact_case) {
                            drivers::control_kind(contact_case.control).name,
                            contact_case.load.history->points().size(), contact_case.load.history->start_time(),
                            contact_case.end_time, units.time);
-        if (contact_case.spring_constant) {
-            load += fmt::format(" (spring k = {:.4g} {}/{})", *contact_case.spring_constant, units.force, units.length);
+        const drivers::SpringControl* spring = contact_case.spring();
+        if (spring) {
+            load += fmt::format(" (spring k = {:.4g} {}/{})", spring->spring_constant, units.force, units.length);
         }
         if (const auto& harmonic = contact_case.load.harmonic) {
             load += fmt::format(", harmonic of amplitude {:.4g} at {:.4g} 1/{} over t = {:.4g} .. {:.4g} {}",
                                 harmonic->amplitude, harmonic->frequency, units.time, harmonic->start, harmonic->end,
                                 units.time);
         }
-        for (const auto& pause : contact_case.force_pauses) {
+        for (const auto& pause : spring ? spring->force_pauses : std::vector<drivers::ForcePause>{}) {
             load += fmt::format(", force held from t = {:.4g} to {:.4g} {}", pause.start, pause.end, units.time);
         }
     }

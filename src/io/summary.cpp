@@ -33,7 +33,7 @@ Summary summarize(const drivers::ContactCase& contact_case, const drivers::Inden
     add("steps", result.steps);
     add("elements", result.numerics.elements);
     add("wall_seconds", wall_seconds);
-    add("control", contact_case.shore ? std::string("shore") : drivers::control_kind(contact_case.control).name);
+    add("control", drivers::control_kind(contact_case.control).name);
     add("time_step", result.numerics.time_step);
     add("half_width", result.numerics.half_width);
     add("final_force", result.force.empty() ? 0.0 : result.force.back());

@@ -473,7 +473,7 @@ drivers::ContactCase force_case(const rheology::Rheology& material,
     drivers::ContactCase contact_case{.title = "band creep",
                                       .material = material,
                                       .indenter = indenter,
-                                      .control = drivers::Control::force,
+                                      .control = drivers::ForceControl{},
                                       .load = {.history = drivers::LoadHistory(std::move(points), "load.history")},
                                       .end_time = history.time.back()};
     contact_case.numerics.elements = elements;

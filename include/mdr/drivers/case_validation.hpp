@@ -22,17 +22,18 @@ void validate(const HarmonicLoad& harmonic, const std::string& prefix);
 /// [0, 90).
 double incidence_velocity(double velocity, double incidence_deg);
 
-/// Checks a contact problem: an indenter and a load history; for an impact a mass and an approach speed > 0 and
-/// no tangential load; for an oblique impact friction >= 0, finite tangential velocity and spin, a sphere, a
-/// positive moment of inertia when one is given, one incompressible body (tangential_exact);
-/// under force control no negative force; under displacement control no jump against a dashpot; an end after the
-/// first history time (finite unless an impact); snapshots within the simulated time; positive numerics. A normal
-/// harmonic (not with an impact): amplitude > 0, starting no earlier than the history, and under force control
-/// no larger than the smallest history force during it. Spring control: a spring constant > 0 (and none with
-/// another control), a base history starting at or above the surface (z <= 0) without jumps; force pauses (spring
-/// control only) in time order and apart, each starting after the history's first time, ending after its start and
-/// by the end, and not overlapping a harmonic. A Shore test: a duration > 0, spring control with the durometer's
-/// spring, no harmonic and no tangential load. Called by resolve_numerics, so every driver runs only valid problems.
+/// Checks a contact problem: an indenter and a load history, then the rules of its control type (LoadControl, one
+/// overload per type in case_validation.cpp; a value of another control cannot be written): for an impact a mass and an
+/// approach speed > 0 and no tangential load; for an oblique impact friction >= 0, finite tangential velocity and spin,
+/// a sphere, a positive moment of inertia when one is given, one incompressible body (tangential_exact); under force
+/// control no negative force; under displacement control no jump against a dashpot; an end after the first history time
+/// (finite unless an impact); snapshots within the simulated time; positive numerics. A normal harmonic (not with an
+/// impact): amplitude > 0, starting no earlier than the history, and under force control no larger than the smallest
+/// history force during it. Spring control: a spring constant > 0, a base history starting at or above the surface (z
+/// <= 0) without jumps; force pauses (a spring without durometer) in time order and apart, each starting after the
+/// history's first time, ending after its start and by the end, and not overlapping a harmonic. A Shore test: a
+/// duration > 0, spring control with the durometer's spring, no harmonic and no tangential load. Called by
+/// resolve_numerics, so every driver runs only valid problems.
 void validate(const ContactCase& contact_case);
 
 }  // namespace mdr::drivers

@@ -9,42 +9,14 @@
 #include <vector>
 
 #include "mdr/contact/layer.hpp"
-#include "mdr/drivers/force_pause.hpp"
 #include "mdr/drivers/load.hpp"
-#include "mdr/drivers/shore.hpp"
+#include "mdr/drivers/load_control.hpp"
 #include "mdr/drivers/tangential_load.hpp"
 #include "mdr/profile/profile.hpp"
 #include "mdr/rheology/approximation.hpp"
 #include "mdr/rheology/rheology.hpp"
 
 namespace mdr::drivers {
-
-/// How the normal load is prescribed.
-enum class Control {
-    displacement,  ///< depth history d(t)
-    force,         ///< force history F(t) >= 0; the depth is solved for each step
-    impact,        ///< a rigid indenter of given mass and approach speed hits the surface at t = 0 (eq. 37)
-    spring,        ///< a base displacement history z(t) acts on the massless rigid indenter through a linear
-                   ///< spring k: F = k (z - d), the spring unloaded at first contact; d is solved for each step
-};
-
-/// The flight of the indenter in an impact.
-struct ImpactLoad {
-    double mass;      ///< m [kg] of the rigid indenter
-    double velocity;  ///< approach speed v0 [m/s] > 0 at first contact, t = 0
-};
-
-/// The tangential part of an oblique impact of a rigid sphere (`[load] tangential_velocity`, `spin`,
-/// `[indenter] moment_of_inertia`, `[tangential] friction`). The contact point, R below the centre, slides along x
-/// at v_t - R omega.
-struct ObliqueImpactLoad {
-    double friction = 0.0;             ///< mu >= 0 (local Coulomb friction, eq. 48-50)
-    double tangential_velocity = 0.0;  ///< v_t0 [m/s] of the centre along x at first contact
-    double spin = 0.0;                 ///< omega0 [rad/s] at first contact
-    /// I [kg m^2] about the centre; absent: a solid sphere's 2/5 m R^2 (oblique_sphere). The lever R is the
-    /// indenter's: an oblique impact needs a sphere (drivers::validate).
-    std::optional<double> moment_of_inertia{};
-};
 
 /// User choices of `[numerics]`; every field optional, defaults come from the problem's scales.
 struct NumericsOptions {
@@ -82,33 +54,38 @@ struct ContactCase {
     std::string title;                                  ///< free text
     rheology::Rheology material;                        ///< combined material (eq. 8)
     std::shared_ptr<const profile::Profile> indenter;   ///< the gap f(r)
-    Control control = Control::displacement;            ///< what the load prescribes
-    /// The history of (t, d), (t, F) or (t, z) points, required (with control = impact the single point (0, 0)),
+    LoadControl control = DisplacementControl{};        ///< what the load prescribes, with its own data
+    /// The history of (t, d), (t, F) or (t, z) points, required (with an impact the single point (0, 0)),
     /// and `load.harmonic`, a harmonic part added to it, whose last full cycle is measured (HarmonicOutcome).
     Load load;
     double end_time = 0.0;                              ///< last time simulated [s]
     std::vector<double> snapshots{};                    ///< times of pressure profiles [s]
     NumericsOptions numerics{};                         ///< `[numerics]`
     std::optional<rheology::Rheology> shear_material{}; ///< the shear part alone, when a bulk part was folded in
-    std::optional<ImpactLoad> impact{};                 ///< with control = impact (end_time is then the latest end
-                                                        ///< allowed)
     std::optional<TangentialLoad> tangential{};         ///< `[tangential]`, superimposed tangential loading
     /// False when `material` is a compressible body's or two bodies' (rheology::contact_material sets it): the MDR
     /// then maps the normal problem only exactly (section 7).
     bool tangential_exact = true;
-    std::optional<ObliqueImpactLoad> oblique{};         ///< with control = impact: its tangential part
     /// The model behind `material` (its description; for a model converted to a series, the certificate).
     rheology::MaterialOrigin material_origin{};
-    std::optional<double> spring_constant{};            ///< k [N/m] of the spring, with control = spring
-    /// A Shore durometer test (control = spring with the durometer's spring and base history, a step at t = 0
-    /// and a stop at the full extension); the readings are measured (IndentationResult::shore).
-    std::optional<ShoreTest> shore{};
-    /// `load.force_pauses`, with control = spring: the instrument's feedback holds the force over each (ForcePause).
-    std::vector<ForcePause> force_pauses{};
 
     /// True when tangential loading (or an oblique impact) meets a material that is not tangential_exact: the
     /// tangential result is then an approximation.
-    bool tangential_approximate() const { return !tangential_exact && (tangential || oblique); }
+    bool tangential_approximate() const { return !tangential_exact && (tangential || oblique()); }
+    /// The impact's control, or none under another control.
+    const ImpactControl* impact() const { return std::get_if<ImpactControl>(&control); }
+    /// The spring's control (with its pauses or durometer), or none under another control.
+    const SpringControl* spring() const { return std::get_if<SpringControl>(&control); }
+    /// The Shore test of a spring control, or none.
+    const ShoreTest* shore() const {
+        const SpringControl* spring_control = spring();
+        return spring_control && spring_control->shore ? &*spring_control->shore : nullptr;
+    }
+    /// The oblique part of an impact, or none.
+    const ObliqueImpactLoad* oblique() const {
+        const ImpactControl* impact_control = impact();
+        return impact_control && impact_control->oblique ? &*impact_control->oblique : nullptr;
+    }
     /// The declared unit system (mdr/io/units.hpp): the names printed beside the numbers; nothing is converted.
     std::string units = "SI";
     /// `[layer]`: a layer of finite thickness on a rigid substrate; absent: the half-space

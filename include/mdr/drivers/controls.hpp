@@ -4,12 +4,13 @@
 /// keys each takes, with units. The case reader (which `[load]` keys exist, which control takes each, which are
 /// required), its error messages, the description of a case, summary.json and the control table of
 /// docs/case-format.md take them from here: a control's new key is a new entry of its row (and the code that reads
-/// it). What a control does lives in the drivers (indentation.cpp, impact.cpp); its rules in drivers::validate.
+/// it). A control's data is its type in LoadControl (load_control.hpp), its rules drivers::validate's overload for
+/// that type, its steps a stepping class (src/drivers/normal_control.hpp; impact.cpp for an impact).
 
 #include <string>
 #include <vector>
 
-#include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/load_control.hpp"
 #include "mdr/drivers/tangential_load.hpp"
 
 namespace mdr::drivers {
@@ -25,7 +26,6 @@ struct ControlKey {
 
 /// One row of the table.
 struct ControlKind {
-    Control control = Control::displacement;
     std::string name;                     ///< `load.control = "name"`, and summary.json's `control`
     std::string documentation;            ///< one line
     std::string column;                   ///< the history's value column as messages name it (d, F, z); "" without
@@ -58,8 +58,8 @@ std::vector<std::string> load_keys();
 /// The row named `name`; throws mdr::InvalidInput(`control`, "name", "unknown control; one of ...").
 const ControlKind& control_named(const std::string& name);
 
-/// The row of `control`.
-const ControlKind& control_kind(Control control);
+/// The row of `control`: a spring control with a durometer is the row "shore".
+const ControlKind& control_kind(const LoadControl& control);
 
 /// One row of the table of tangential controls (`[tangential] control`).
 struct TangentialControlKind {

@@ -20,7 +20,7 @@ ContactCase creep_test() {
     ContactCase contact_case{.title = "creep test",
                              .material = rheology::Rheology::standard(1e6, 2e6, 0.1),
                              .indenter = profile::make_sphere(0.01),
-                             .control = Control::force,
+                             .control = ForceControl{},
                              .load = {.history = LoadHistory({{0.0, 0.0}, {0.1, 0.5}, {1.0, 0.5}}, "load.history")},
                              .end_time = 1.0};
     contact_case.numerics.elements = 100;
@@ -68,11 +68,12 @@ ContactCase oblique_impact(std::shared_ptr<const profile::Profile> indenter) {
     ContactCase contact_case{.title = "oblique impact",
                              .material = rheology::Rheology::standard(1e6, 2e6, 1e-3),
                              .indenter = std::move(indenter),
-                             .control = Control::impact,
+                             .control = ImpactControl{.mass = 0.03,
+                                                      .velocity = 0.1,
+                                                      .oblique = ObliqueImpactLoad{.friction = 0.3,
+                                                                                   .tangential_velocity = 0.05}},
                              .load = {.history = LoadHistory({{0.0, 0.0}}, "load.history")},
                              .end_time = std::numeric_limits<double>::infinity()};
-    contact_case.impact = ImpactLoad{0.03, 0.1};
-    contact_case.oblique = ObliqueImpactLoad{.friction = 0.3, .tangential_velocity = 0.05};
     contact_case.numerics.elements = 100;
     return contact_case;
 }
@@ -83,9 +84,10 @@ TEST(CaseValidation, AnObliqueImpactTakesItsLeverFromTheSphereAndRefusesOtherSha
     EXPECT_DOUBLE_EQ(oblique_sphere(contact_case).radius, 0.01);
     EXPECT_DOUBLE_EQ(oblique_sphere(contact_case).moment_of_inertia, 0.4 * 0.03 * 0.01 * 0.01);  // a solid sphere
     EXPECT_GT(run_case(contact_case).impact->oblique->impulse_ratio, 0.0);
-    contact_case.oblique->moment_of_inertia = 2e-6;
+    auto& oblique = *std::get<ImpactControl>(contact_case.control).oblique;
+    oblique.moment_of_inertia = 2e-6;
     EXPECT_DOUBLE_EQ(oblique_sphere(contact_case).moment_of_inertia, 2e-6);
-    contact_case.oblique->moment_of_inertia = 0.0;
+    oblique.moment_of_inertia = 0.0;
     EXPECT_EQ(key_of([&] { validate(contact_case); }), "indenter.moment_of_inertia");
     EXPECT_EQ(key_of([&] { validate(oblique_impact(profile::make_cone(10.0))); }), "indenter.shape");
     auto compressible = oblique_impact(profile::make_sphere(0.01));
@@ -104,13 +106,10 @@ TEST(CaseValidation, EveryRuleNamesItsKey) {
     expect_key("numerics.time_step", [](ContactCase& c) { c.numerics.time_step = -1.0; });
     expect_key("numerics.elements", [](ContactCase& c) { c.numerics.elements = 0; });
     expect_key("numerics.output_every", [](ContactCase& c) { c.numerics.output_every = 0; });
-    expect_key("load.velocity", [](ContactCase& c) { c.control = Control::impact; });
-    expect_key("indenter.mass", [](ContactCase& c) {
-        c.control = Control::impact;
-        c.impact = ImpactLoad{0.0, 1.0};
-    });
+    expect_key("load.velocity", [](ContactCase& c) { c.control = ImpactControl{}; });
+    expect_key("indenter.mass", [](ContactCase& c) { c.control = ImpactControl{.mass = 0.0, .velocity = 1.0}; });
     expect_key("load.history", [](ContactCase& c) {
-        c.control = Control::displacement;
+        c.control = DisplacementControl{};
         c.material = rheology::Rheology::kelvin_voigt(1e6, 1e3);
         c.load.history = LoadHistory({{0.0, 1e-5}, {1.0, 1e-5}}, "load.history");
     });

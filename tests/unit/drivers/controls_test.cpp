@@ -1,5 +1,5 @@
-// The registry of controls (drivers/controls.hpp): a row per Control found by name and by value (plus the Shore
-// durometer, a spring control of its own), and the names that the reader's messages, the description and
+// The registry of controls (drivers/controls.hpp): a row per control type found by name and by value (plus the
+// Shore durometer, a spring control with its own row), and the names that the reader's messages, the description and
 // summary.json print come from it.
 
 #include "mdr/drivers/controls.hpp"
@@ -13,23 +13,25 @@
 
 namespace {
 
-using mdr::drivers::Control;
+using mdr::drivers::LoadControl;
 
 TEST(ControlRegistry, ARowPerControlFoundByNameAndByValue) {
+    using namespace mdr::drivers;
     std::set<std::string> names;
-    for (const Control control : {Control::displacement, Control::force, Control::impact, Control::spring}) {
-        const auto& kind = mdr::drivers::control_kind(control);
-        EXPECT_EQ(kind.control, control);
-        EXPECT_EQ(&mdr::drivers::control_named(kind.name), &kind);
+    for (const LoadControl& control : {LoadControl(DisplacementControl{}), LoadControl(ForceControl{}),
+                                       LoadControl(ImpactControl{}), LoadControl(SpringControl{})}) {
+        const auto& kind = control_kind(control);
+        EXPECT_EQ(&control_named(kind.name), &kind);
         EXPECT_FALSE(kind.documentation.empty()) << kind.name;
         EXPECT_FALSE(kind.keys.empty()) << kind.name;
         names.insert(kind.name);
     }
     EXPECT_EQ(names.size() + 1, mdr::drivers::controls().size());
-    EXPECT_EQ(mdr::drivers::control_kind(Control::force).column, "F");
-    // The durometer: found by name, a spring control; by value, Control::spring is the plain spring.
-    EXPECT_EQ(mdr::drivers::control_named("shore").control, Control::spring);
-    EXPECT_EQ(mdr::drivers::control_kind(Control::spring).name, "spring");
+    EXPECT_EQ(control_kind(ForceControl{}).column, "F");
+    // The durometer: a spring control with a Shore test, found by value as the row "shore"; a plain spring is "spring".
+    SpringControl durometer{.shore = make_shore_test(ShoreScale::D, 15.0)};
+    EXPECT_EQ(control_kind(durometer).name, "shore");
+    EXPECT_EQ(control_kind(SpringControl{}).name, "spring");
 }
 
 TEST(ControlRegistry, UnknownControlListsTheTable) {

@@ -1,9 +1,10 @@
-// The rules of constant-force pauses (ContactCase::force_pauses), checked by the library on a ContactCase built in
+// The rules of constant-force pauses (SpringControl::force_pauses), checked by the library on a ContactCase built in
 // C++, and a pause that starts without contact, refused by the driver with the pause's key.
 
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/indentation.hpp"
@@ -18,14 +19,16 @@ ContactCase pause_test() {
     ContactCase contact_case{.title = "force pause test",
                              .material = rheology::Rheology::standard(1e6, 2e6, 1.0),
                              .indenter = profile::make_sphere(0.01),
-                             .control = Control::spring,
+                             .control = SpringControl{.spring_constant = 2e4, .force_pauses = {{1.0, 4.0}}},
                              .load = {.history = LoadHistory({{0.0, 0.0}, {1.0, 1e-4}, {4.0, 1e-4}, {5.0, -5e-5}},
                                                     "load.history")},
                              .end_time = 5.0};
-    contact_case.spring_constant = 2e4;
-    contact_case.force_pauses = {{1.0, 4.0}};
     contact_case.numerics.elements = 200;
     return contact_case;
+}
+
+std::vector<ForcePause>& pauses_of(ContactCase& contact_case) {
+    return std::get<SpringControl>(contact_case.control).force_pauses;
 }
 
 std::string key_of(const ContactCase& contact_case) {
@@ -57,15 +60,16 @@ TEST(ForcePauseValidation, EveryRuleNamesThePause) {
         change(contact_case);
         EXPECT_EQ(key_of(contact_case), key);
     };
+    // (Pauses under another control cannot be written: they are SpringControl's.) A durometer holds no pause:
     expect_key("load.force_pauses", [](ContactCase& c) {
-        c.control = Control::displacement;
-        c.spring_constant.reset();
+        const ShoreTest shore = make_shore_test(ShoreScale::A, 5.0);
+        c.control = SpringControl{shore.instrument.spring_rate, {{1.0, 4.0}}, shore};
     });
-    expect_key("load.force_pauses[0]", [](ContactCase& c) { c.force_pauses = {{0.0, 4.0}}; });
-    expect_key("load.force_pauses[0]", [](ContactCase& c) { c.force_pauses = {{2.0, 2.0}}; });
-    expect_key("load.force_pauses[0]", [](ContactCase& c) { c.force_pauses = {{1.0, 5.5}}; });
-    expect_key("load.force_pauses[1]", [](ContactCase& c) { c.force_pauses = {{1.0, 2.0}, {2.0, 3.0}}; });
-    expect_key("load.force_pauses[1]", [](ContactCase& c) { c.force_pauses = {{3.0, 4.0}, {1.0, 2.0}}; });
+    expect_key("load.force_pauses[0]", [](ContactCase& c) { pauses_of(c) = {{0.0, 4.0}}; });
+    expect_key("load.force_pauses[0]", [](ContactCase& c) { pauses_of(c) = {{2.0, 2.0}}; });
+    expect_key("load.force_pauses[0]", [](ContactCase& c) { pauses_of(c) = {{1.0, 5.5}}; });
+    expect_key("load.force_pauses[1]", [](ContactCase& c) { pauses_of(c) = {{1.0, 2.0}, {2.0, 3.0}}; });
+    expect_key("load.force_pauses[1]", [](ContactCase& c) { pauses_of(c) = {{3.0, 4.0}, {1.0, 2.0}}; });
     expect_key("load.force_pauses[0]", [](ContactCase& c) { c.load.harmonic = HarmonicLoad{1e-6, 2.0, 3.9, 4.5}; });
     expect_key("", [](ContactCase& c) { c.load.harmonic = HarmonicLoad{1e-6, 2.0, 4.0, 5.0}; });  // after the pause
 }
@@ -74,7 +78,7 @@ TEST(ForcePauseValidation, APauseWithoutContactStopsTheRunNamingIt) {
     auto contact_case = pause_test();
     contact_case.load.history = LoadHistory({{0.0, -1e-4}, {1.0, 1e-4}, {4.0, 1e-4}}, "load.history");
     contact_case.end_time = 4.0;
-    contact_case.force_pauses = {{0.25, 4.0}};  // z = -5e-5 there: above the surface
+    pauses_of(contact_case) = {{0.25, 4.0}};  // z = -5e-5 there: above the surface
     EXPECT_EQ(key_of(contact_case), "");
     try {
         run_case(contact_case);

@@ -24,7 +24,7 @@ ContactCase creep_with_jumps() {
         .title = "creep with jumps",
         .material = rheology::Rheology::kelvin_voigt(1e6, 1e3),
         .indenter = profile::make_sphere(0.01),
-        .control = Control::force,
+        .control = ForceControl{},
         .load = {.history =
                      LoadHistory({{0.0, 0.0}, {0.0, 0.5}, {0.05, 0.5}, {0.05, 0.2}, {0.1, 0.2}}, "load.history")},
         .end_time = 0.1,
@@ -39,10 +39,9 @@ ContactCase impact() {
     ContactCase contact_case{.title = "impact",
                              .material = rheology::Rheology::standard(1e6, 4e6, 1e-3),
                              .indenter = profile::make_sphere(0.01),
-                             .control = Control::impact,
+                             .control = ImpactControl{.mass = 0.01, .velocity = 0.5},
                              .load = {.history = LoadHistory({{0.0, 0.0}}, "load.history")},
-                             .end_time = 0.1,
-                             .impact = ImpactLoad{.mass = 0.01, .velocity = 0.5}};
+                             .end_time = 0.1};
     contact_case.numerics.elements = 100;
     contact_case.numerics.output_every = 1;  // every state a row: the deepest one among them
     return contact_case;

@@ -38,7 +38,7 @@ TEST(ControlKeys, EveryRowsKeyIsALoadKeyAndControlComesFirst) {
             EXPECT_FALSE(entry.documentation.empty()) << kind.name << "." << entry.key;
         }
     }
-    EXPECT_EQ(mdr::drivers::control_kind(mdr::drivers::Control::impact).key_named("history"), nullptr);
+    EXPECT_EQ(mdr::drivers::control_named("impact").key_named("history"), nullptr);
 }
 
 TEST(ControlKeys, AKeyOfOtherControlsNamesThem) {

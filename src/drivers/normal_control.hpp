@@ -1,0 +1,141 @@
+#pragma once
+// What each history-driven control does in the one loop of run_indentation (indentation.cpp): its grid cuts and
+// grid, its starting depth, the depth at the end of a step, the force of a jump, the depth and load shown, and its
+// own observers. One class per control type of LoadControl (load_control.hpp); the loop is a template over them.
+
+#include <algorithm>
+#include <optional>
+#include <vector>
+
+#include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/load_history.hpp"
+#include "mdr/foundation/foundation.hpp"
+#include "observer_list.hpp"
+#include "paused_base.hpp"
+#include "recorders.hpp"
+#include "stepping.hpp"
+
+namespace mdr::drivers {
+
+/// Where the depth solve of a step starts: the extrapolated guess and the scale of its bracket.
+struct DepthGuess {
+    double guess = 0.0;  ///< d0 + (d0 - d_previous)
+    double scale = 0.0;  ///< |d0 - d_previous|, at least a small fraction of the depth scale
+};
+
+/// Common defaults: no z column, no grid cuts or extra observers, the grid as made, the indenter starting at the
+/// surface, the depth shown as stepped and the prescribed value as the load, nothing to do at a settled node.
+class HistoryControl {
+public:
+    bool base_column() const { return false; }  ///< z is a column of the result
+    void add_cuts(std::vector<double>& /*cuts*/, double /*end_time*/) const {}
+    void shape_grid(std::vector<GridNode>& /*nodes*/) const {}
+    double start_depth(const GridNode& /*first*/) const { return 0.0; }
+    void add_observers(ObserverList& /*observers*/, IndentationResult& /*result*/) {}
+    void begin_step(double /*from*/, double /*to*/) {}
+    double shown_depth(double depth, double /*target*/, const foundation::Foundation& /*foundation*/) const {
+        return depth;
+    }
+    double shown_load(double target, double /*depth*/) const { return target; }
+    void settled(double /*time*/, double /*force*/, double /*depth*/, double /*history_value*/) {}
+};
+
+/// The history prescribes the depth (eq. 16): each step goes to it.
+class DisplacementStepping : public HistoryControl {
+public:
+    static constexpr bool solves_depth = false;  ///< the depth is given; no trapezoidal rate of its own
+    double target(double history_value) const { return history_value; }
+    double jump_force(double /*target*/, double /*depth*/, const foundation::Foundation& foundation) const {
+        return foundation.total_force();
+    }
+    double step_depth(const foundation::Foundation& /*foundation*/, double /*depth*/, const DepthGuess& /*start*/,
+                      double target) const {
+        return target;
+    }
+};
+
+/// The history prescribes the force F >= 0 (eq. 19): each step solves F(d) = target on the foundation.
+class ForceStepping : public HistoryControl {
+public:
+    static constexpr bool solves_depth = true;
+    /// The sine's round-off at a zero of the validated (>= 0) prescribed force is no pull.
+    double target(double history_value) const { return std::max(history_value, 0.0); }
+    /// A jump against a dashpot: the dashpot takes the prescribed force at once.
+    double jump_force(double target, double /*depth*/, const foundation::Foundation& /*foundation*/) const {
+        return target;
+    }
+    double step_depth(const foundation::Foundation& foundation, double depth, const DepthGuess& start,
+                      double target) const {
+        return solve_depth(foundation, depth, start.guess, start.scale, target, 0.0, 0.0);
+    }
+    /// Riding on the recovering surface without force: the depth shown is where the surface touches, located
+    /// between the centres (the foundation keeps stepping from its own depth).
+    double shown_depth(double depth, double target, const foundation::Foundation& foundation) const {
+        return target == 0.0 ? std::min(depth, foundation.touching_depth()) : depth;
+    }
+};
+
+/// The history prescribes the base z of a spring k: each step solves F(d) + k d = k z; a force pause (PausedBase)
+/// holds the force instead, F(d) = the force held; a durometer's indenter stops at its full extension.
+class SpringStepping : public HistoryControl {
+public:
+    static constexpr bool solves_depth = true;
+    explicit SpringStepping(const SpringControl& control)
+        : control_(control),
+          paused_(control.force_pauses.empty()
+                      ? std::nullopt
+                      : std::make_optional<PausedBase>(control.force_pauses, control.spring_constant)) {}
+    /// z is a column of its own, except in a Shore test (its reading is).
+    bool base_column() const { return !control_.shore; }
+    /// Each Shore reading and each pause's ends on a node of its own.
+    void add_cuts(std::vector<double>& cuts, double end_time) const {
+        if (control_.shore) {
+            for (const double time : shore_reading_times) {
+                if (time <= end_time) cuts.push_back(time);
+            }
+        }
+        for (const ForcePause& pause : control_.force_pauses) cuts.insert(cuts.end(), {pause.start, pause.end});
+    }
+    /// The base starts where it is (z <= 0, validated): no jump from z = 0. A Shore test keeps its step at t = 0,
+    /// the foot's landing.
+    void shape_grid(std::vector<GridNode>& nodes) const {
+        if (!control_.shore && nodes.size() > 1 && nodes[1].time == nodes[0].time) nodes.erase(nodes.begin());
+    }
+    /// The massless indenter rests on the unloaded spring, d = z, until it touches the surface.
+    double start_depth(const GridNode& first) const { return first.value; }
+    void add_observers(ObserverList& observers, IndentationResult& result) {
+        if (control_.shore) observers.add(shore_readings_.emplace(control_.shore->instrument, result));
+    }
+    void begin_step(double from, double to) { holding_ = paused_ && paused_->holding(from, to); }
+    /// The base: the history shifted by the pauses passed (PausedBase).
+    double target(double history_value) const { return paused_ ? paused_->base(history_value) : history_value; }
+    /// A jump against a dashpot (only a Shore test has one, at the foot's landing): the spring's force.
+    double jump_force(double target, double depth, const foundation::Foundation& /*foundation*/) const {
+        return control_.spring_constant * (target - depth);
+    }
+    double step_depth(const foundation::Foundation& foundation, double depth, const DepthGuess& start,
+                      double target) const {
+        const double k = control_.spring_constant;
+        const double depth_end = holding_ ? solve_depth(foundation, depth, start.guess, start.scale,
+                                                        paused_->held_force(), 0.0, 0.0)
+                                          : solve_depth(foundation, depth, start.guess, start.scale, k * target, k,
+                                                        0.0);
+        // A durometer's indenter stops at its full extension (reading 0): the stop takes the rest.
+        return control_.shore ? std::min(depth_end, control_.shore->instrument.full_extension()) : depth_end;
+    }
+    /// In a pause the feedback's base: z = d + F / k.
+    double shown_load(double target, double depth) const {
+        return holding_ ? paused_->base_in_pause(depth) : target;
+    }
+    void settled(double time, double force, double depth, double history_value) {
+        if (paused_) paused_->passed(time, force, depth, history_value);
+    }
+
+private:
+    const SpringControl& control_;
+    std::optional<PausedBase> paused_;
+    bool holding_ = false;
+    std::optional<ShoreRecorder> shore_readings_;
+};
+
+}  // namespace mdr::drivers
