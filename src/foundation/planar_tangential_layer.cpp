@@ -10,6 +10,37 @@ namespace {
 
 constexpr double tangential_stiffness_factor = 8.0 / 3.0;  // k_x = (8/3) G dx, eq. (11), (41)
 
+// Eq. (50) with vectors over `count` elements, one branch-free pass (selects, so that it vectorises with
+// -fno-trapping-math and -fno-math-errno): an element in contact (mask 1) sticks while its trial stays inside the
+// friction circle of radius per_load q_i and slips along its trial otherwise; out of contact (mask 0) it is
+// force-free. Writes the new stress t and increment du and adds du to u. A free function of restrict pointers:
+// inside the member function GCC 12 leaves this loop scalar.
+__attribute__((target_clones("avx2", "default"))) void stick_or_slip(
+    std::size_t count, PlanarVector increment, double stiffness, double per_load, const double* __restrict mask,
+    const double* __restrict q, const double* __restrict share, const double* __restrict relaxed_x,
+    const double* __restrict relaxed_y, double* __restrict u_x, double* __restrict u_y, double* __restrict t_x,
+    double* __restrict t_y, double* __restrict du_x, double* __restrict du_y) {
+    const double compliance = 1.0 / stiffness;
+    const double along_x = increment[0], along_y = increment[1];
+    for (std::size_t i = 0; i < count; ++i) {
+        const double in = mask[i];
+        const double bound = in * per_load * std::max(q[i], 0.0);
+        const double moved_x = along_x * share[i], moved_y = along_y * share[i];
+        const double trial_x = relaxed_x[i] + stiffness * moved_x;
+        const double trial_y = relaxed_y[i] + stiffness * moved_y;
+        const double magnitude = std::sqrt(trial_x * trial_x + trial_y * trial_y);
+        const bool sticks = in != 0.0 && magnitude <= bound;
+        const double scale = sticks ? 1.0 : (in != 0.0 ? bound / magnitude : 0.0);
+        const double stress_x = trial_x * scale, stress_y = trial_y * scale;
+        du_x[i] = sticks ? moved_x : (stress_x - relaxed_x[i]) * compliance;
+        du_y[i] = sticks ? moved_y : (stress_y - relaxed_y[i]) * compliance;
+        u_x[i] += du_x[i];
+        u_y[i] += du_y[i];
+        t_x[i] = stress_x;
+        t_y[i] = stress_y;
+    }
+}
+
 }  // namespace
 
 PlanarTangentialLayer::PlanarTangentialLayer(const rheology::Rheology& material, double friction, double spacing,
@@ -30,10 +61,9 @@ __attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::be
     const StepCoefficients& coefficients, std::span<const Entry> entries) {
     copy_step_coefficients(coefficients, step_);
     share_.set(entries);
-    for (std::size_t c = 0; c < 2; ++c) {
-        relaxed_sums(material_, step_, displacements() + c * count_, memories() + c * count_, 2 * count_,
-                     touched_, relaxed_.data() + c * count_);
-    }
+    // Both components in one pass over [0, n + touched): the x block's elements in [touched, n) hold zeros (never
+    // touched), so their sums are the zeros relaxed_ must hold there; one pass costs half the loop overhead of two.
+    relaxed_sums(material_, step_, displacements(), memories(), 2 * count_, count_ + touched_, relaxed_.data());
 }
 
 PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, std::span<const double> normal_line_loads,
@@ -63,37 +93,14 @@ __attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::ad
     double* __restrict mask = contact_mask_.data();
     // As TangentialLayer: the loads and flags cover every element ever touched (count = contact.size()).
     for (std::size_t i = 0; i < count; ++i) mask[i] = contact[i] != 0 ? 1.0 : 0.0;
-    const double* __restrict q = normal_line_loads.data();
-    const double* __restrict relaxed_x = relaxed_.data();
-    const double* __restrict relaxed_y = relaxed_.data() + n;
-    const double* __restrict share = share_.data();
-    double* __restrict u_x = displacements();
-    double* __restrict u_y = u_x + n;
-    double* __restrict t_x = stress_.data();
-    double* __restrict t_y = stress_.data() + n;
-    double* __restrict du_x = increment_.data();
-    double* __restrict du_y = increment_.data() + n;
-    const double stiffness = step_.stiffness, compliance = 1.0 / step_.stiffness, per_load = per_load_;
-    // Eq. (50) with vectors, one branch-free pass (selects, so that it vectorises with -fno-trapping-math): an
-    // element in contact sticks while its trial stays inside the friction circle and slips along its trial
-    // otherwise; out of contact it is force-free.
-    for (std::size_t i = 0; i < count; ++i) {
-        const double in = mask[i];
-        const double bound = in * per_load * std::max(q[i], 0.0);
-        const double moved_x = increment[0] * share[i], moved_y = increment[1] * share[i];
-        const double trial_x = relaxed_x[i] + stiffness * moved_x;
-        const double trial_y = relaxed_y[i] + stiffness * moved_y;
-        const double magnitude = std::sqrt(trial_x * trial_x + trial_y * trial_y);
-        const bool sticks = in != 0.0 && magnitude <= bound;
-        const double scale = sticks ? 1.0 : (in != 0.0 ? bound / magnitude : 0.0);
-        const double stress_x = trial_x * scale, stress_y = trial_y * scale;
-        du_x[i] = sticks ? moved_x : (stress_x - relaxed_x[i]) * compliance;
-        du_y[i] = sticks ? moved_y : (stress_y - relaxed_y[i]) * compliance;
-        u_x[i] += du_x[i];
-        u_y[i] += du_y[i];
-        t_x[i] = stress_x;
-        t_y[i] = stress_y;
-    }
+    double* u = displacements();
+    const double* t_x = stress_.data();
+    const double* t_y = stress_.data() + n;
+    const double* du_x = increment_.data();
+    const double* du_y = increment_.data() + n;
+    stick_or_slip(count, increment, step_.stiffness, per_load_, mask, normal_line_loads.data(), share_.data(),
+                  relaxed_.data(), relaxed_.data() + n, u, u + n, stress_.data(), stress_.data() + n,
+                  increment_.data(), increment_.data() + n);
     double sum_x = 0.0, sum_y = 0.0;
     for (std::size_t i = 0; i < count; ++i) {
         sum_x += t_x[i];
