@@ -63,6 +63,7 @@ ContactLaw::ContactLaw(const rheology::Rheology& material, double radius, double
       layer_(material, friction, half_width / static_cast<double>(elements), elements),
       material_(material),
       loads_(elements, 0.0),
+      friction_(friction),
       branches_(material.terms().size()),
       tangential_offset_(normal_offset + foundation::Foundation::state_size(elements, branches_)),
       state_size_(state_size(elements, branches_)) {
@@ -198,6 +199,7 @@ void ContactLaw::begin(std::span<double> state) {
     foundation_.attach(state.subspan(normal_offset));  // the elements step in place there
     layer_.attach(state.subspan(tangential_offset_));
     foundation_.begin_step(coefficients_);
+    tangential_idle_ = friction_ == 0.0 && layer_.touched() == 0;
     start_normal_force_ = foundation_.total_force();
     start_tangential_force_ = layer_.total_force();
     normal_work_ = tangential_work_ = 0.0;
@@ -215,8 +217,17 @@ void ContactLaw::advance_normal(double overlap) {
                                "; give a larger half-width (at least sqrt(R d) for the largest overlap d)");
     }
     normal_work_ = 0.5 * (start_normal_force_ + foundation_.total_force()) * (overlap - overlap_);
+    if (tangential_idle_) return;
     foundation_.line_loads(loads_);
     layer_.begin_step(coefficients_, foundation_.entries());
+}
+
+// Whether a tangential step with this increment leaves every element as it is, unloaded: none was ever touched (u =
+// h = 0) and either the contact has no friction (eq. 50: the friction circle is a point, so an element's stress
+// stays zero and, starting unloaded, so do u and h) or the step moves the elements by nothing (a stuck element's
+// stress is relaxed + k du = 0, a free one's zero). Head-on collisions and frictionless contacts skip the layer.
+bool ContactLaw::tangential_at_rest(PlanarVector increment) const {
+    return tangential_idle_ || (layer_.touched() == 0 && increment[0] == 0.0 && increment[1] == 0.0);
 }
 
 std::span<const double> ContactLaw::loads() const {
@@ -224,7 +235,9 @@ std::span<const double> ContactLaw::loads() const {
 }
 
 PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
-    return layer_.trial_force({displacement[0] - displacement_[0], displacement[1] - displacement_[1]}, loads(),
+    const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};
+    if (tangential_at_rest(increment)) return {0.0, 0.0};
+    return layer_.trial_force(increment, loads(),
                               foundation_.contact_flags().first(foundation_.touched()));
 }
 
@@ -232,11 +245,16 @@ void ContactLaw::advance_tangential(PlanarVector displacement) {
     for (const double component : displacement) {
         if (!std::isfinite(component)) require_finite("displacement", component);
     }
-    layer_.advance({displacement[0] - displacement_[0], displacement[1] - displacement_[1]}, loads(),
-                   foundation_.contact_flags().first(foundation_.touched()));
+    const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};
+    if (tangential_at_rest(increment)) {  // the layer's state stays zero (its force too, as begin found it)
+        tangential_work_ = 0.0;
+        displacement_ = displacement;
+        return;
+    }
+    layer_.advance(increment, loads(), foundation_.contact_flags().first(foundation_.touched()));
     const PlanarVector end_force = layer_.total_force();
-    tangential_work_ = 0.5 * ((start_tangential_force_[0] + end_force[0]) * (displacement[0] - displacement_[0]) +
-                              (start_tangential_force_[1] + end_force[1]) * (displacement[1] - displacement_[1]));
+    tangential_work_ = 0.5 * ((start_tangential_force_[0] + end_force[0]) * increment[0] +
+                              (start_tangential_force_[1] + end_force[1]) * increment[1]);
     displacement_ = displacement;
 }
 

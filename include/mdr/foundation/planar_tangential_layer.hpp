@@ -51,6 +51,8 @@ public:
     PlanarVector total_force() const { return total_force_; }
     /// Number of elements.
     std::size_t size() const { return count_; }
+    /// Elements [0, touched()) have been in normal contact during a step; the others have u = h = 0.
+    std::size_t touched() const { return touched_; }
 
     /// Doubles of the state that persists between steps for `count` elements and `branches` relaxation branches:
     /// 3 + count (2 branches + 2) (force, touched elements; u_i and h_{k,i}, two components each, component by
