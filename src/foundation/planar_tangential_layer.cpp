@@ -54,7 +54,6 @@ PlanarTangentialLayer::PlanarTangentialLayer(const rheology::Rheology& material,
       memory_(2 * count * material.terms().size(), 0.0),
       relaxed_(2 * count, 0.0),
       increment_(2 * count, 0.0),
-      contact_mask_(count, 0.0),
       share_(count) {}
 
 __attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::begin_step(
@@ -67,11 +66,11 @@ __attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::be
 }
 
 PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, std::span<const double> normal_line_loads,
-                                                std::span<const std::uint8_t> contact) const {
+                                                std::span<const double> contact) const {
     const std::size_t n = count_;
     double sum_x = 0.0, sum_y = 0.0;
     for (std::size_t i = 0; i < contact.size(); ++i) {
-        if (!contact[i]) continue;
+        if (contact[i] == 0.0) continue;
         const double bound = per_load_ * std::max(normal_line_loads[i], 0.0);  // eq. (50), a circle
         const double trial_x = relaxed_[i] + step_.stiffness * (increment[0] * share_[i]);
         const double trial_y = relaxed_[n + i] + step_.stiffness * (increment[1] * share_[i]);
@@ -85,20 +84,19 @@ PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, std::spa
 }
 
 __attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::advance(
-    PlanarVector increment, std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact) {
+    PlanarVector increment, std::span<const double> normal_line_loads, std::span<const double> contact) {
     touched_ = std::max(touched_, contact.size());
     high_water_ = std::max(high_water_, touched_);
     const std::size_t n = count_, count = touched_;
     const auto& terms = material_.terms();
-    double* __restrict mask = contact_mask_.data();
-    // As TangentialLayer: the loads and flags cover every element ever touched (count = contact.size()).
-    for (std::size_t i = 0; i < count; ++i) mask[i] = contact[i] != 0 ? 1.0 : 0.0;
+    // As TangentialLayer: the loads and flags cover every element ever touched (count = contact.size()); the flags
+    // are the mask of the stick-or-slip pass (1 or 0).
     double* u = displacements();
     const double* t_x = stress_.data();
     const double* t_y = stress_.data() + n;
     const double* du_x = increment_.data();
     const double* du_y = increment_.data() + n;
-    stick_or_slip(count, increment, step_.stiffness, per_load_, mask, normal_line_loads.data(), share_.data(),
+    stick_or_slip(count, increment, step_.stiffness, per_load_, contact.data(), normal_line_loads.data(), share_.data(),
                   relaxed_.data(), relaxed_.data() + n, u, u + n, stress_.data(), stress_.data() + n,
                   increment_.data(), increment_.data() + n);
     double sum_x = 0.0, sum_y = 0.0;
