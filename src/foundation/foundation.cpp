@@ -268,10 +268,12 @@ double Foundation::trial_force(double depth_start, double depth_end) const {
             plain_step(flags[i] != 0.0, (touched ? relaxed_[i] : 0.0) + contact_offset_,
                        touched ? free_relaxed_of(i) : 0.0, equivalent_[i], displacement[i], depth_end,
                        contact_stiffness_, free_stiffness_);
-        sum += plain.split != 0.0 ? split_stress(i, displacement[i], evaluate(i, displacement[i], stress[i], depth_start,
-                                                                       depth_end),
-                                          depth_start, depth_end, w, scratch_.data())
-                           : plain.stress;
+        if (plain.split == 0.0) {
+            sum += plain.stress;
+            continue;
+        }
+        const Outcome outcome = evaluate(i, displacement[i], stress[i], depth_start, depth_end);
+        sum += split_stress(i, displacement[i], outcome, depth_start, depth_end, w, scratch_.data());
     }
     return 2.0 * normal_stiffness_factor * spacing_ * sum;
 }
