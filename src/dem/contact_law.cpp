@@ -265,8 +265,15 @@ void ContactLaw::end(std::span<double> state) const {
     state[handedness_offset] = handedness_;
 }
 
+// The one-call steps know the tangential increment before the normal step: a layer that will stay at rest then needs
+// no preparation either (its line loads and relaxed sums in advance_normal).
+void ContactLaw::skip_resting_layer(PlanarVector displacement) {
+    tangential_idle_ = tangential_at_rest({displacement[0] - displacement_[0], displacement[1] - displacement_[1]});
+}
+
 void ContactLaw::advance(std::span<double> state, double overlap, PlanarVector displacement) {
     begin(state);
+    skip_resting_layer(displacement);
     advance_normal(overlap);
     advance_tangential(displacement);
     end(state);
@@ -300,8 +307,10 @@ SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overla
     if (handedness_ == 0.0) handedness_ = 1.0;
     const SpatialVector turned = cross(normal, frame_);
     const SpatialVector second{handedness_ * turned[0], handedness_ * turned[1], handedness_ * turned[2]};
+    const PlanarVector displacement{displacement_[0] + dot(slip, frame_), displacement_[1] + dot(slip, second)};
+    skip_resting_layer(displacement);
     advance_normal(overlap);
-    advance_tangential({displacement_[0] + dot(slip, frame_), displacement_[1] + dot(slip, second)});
+    advance_tangential(displacement);
     end(state);
     const PlanarVector force = layer_.total_force();
     return {force[0] * frame_[0] + force[1] * second[0], force[0] * frame_[1] + force[1] * second[1],

@@ -145,6 +145,7 @@ private:
     std::span<const double> loads() const;
     std::size_t count_at(std::span<const double> state, std::size_t offset) const;
     bool tangential_at_rest(PlanarVector increment) const;
+    void skip_resting_layer(PlanarVector displacement);
     void require_state_size(std::span<const double> state) const;
 
     foundation::Foundation foundation_;
@@ -153,7 +154,7 @@ private:
     rheology::Rheology material_;
     std::vector<double> loads_;  ///< q_z,i of the last normal step
     double friction_;
-    bool tangential_idle_ = false;  ///< no friction and no tangential element ever touched: nothing to step
+    bool tangential_idle_ = false;  ///< the layer stays at rest this step (tangential_at_rest): nothing to step
     std::size_t branches_;
     std::size_t tangential_offset_;
     std::size_t state_size_;
