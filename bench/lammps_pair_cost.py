@@ -4,7 +4,11 @@ neighbours (24000 contacts, all alive every step), with random velocities but no
 is stepped with a sliding tangential increment and the contact set never changes. Pair time from LAMMPS's timing
 breakdown over steps x contacts; memory per rank from its log.
 
-    LMP=.../lmp MDR_LAMMPS_PLUGIN=.../mdrviscoplugin.so python3 bench/lammps_pair_cost.py [elements] [terms]
+    LMP=.../lmp MDR_LAMMPS_PLUGIN=.../mdrviscoplugin.so python3 bench/lammps_pair_cost.py [N] [M] [--callgrind]
+
+--callgrind counts instructions instead (valgrind's callgrind, deterministic, so comparable on a loaded host): the
+pair styles' compute functions, inclusive, on an 8^3 lattice (1536 contacts) over 50 steps (51 computes with the
+setup's), per contact-step.
 """
 
 import os
@@ -15,9 +19,11 @@ import tempfile
 from pathlib import Path
 
 LMP, PLUGIN = os.environ["LMP"], os.environ["MDR_LAMMPS_PLUGIN"]
-ELEMENTS = int(sys.argv[1]) if len(sys.argv) > 1 else 20
-TERMS = int(sys.argv[2]) if len(sys.argv) > 2 else 1
-STEPS, SIDE = 200, 20
+CALLGRIND = "--callgrind" in sys.argv
+ARGS = [a for a in sys.argv[1:] if a != "--callgrind"]
+ELEMENTS = int(ARGS[0]) if len(ARGS) > 0 else 20
+TERMS = int(ARGS[1]) if len(ARGS) > 1 else 1
+STEPS, SIDE = (50, 8) if CALLGRIND else (200, 20)
 
 LATTICE = f"""
 units si
@@ -39,6 +45,7 @@ compute contacts all reduce sum c_touching
 thermo_style custom step c_contacts
 """
 
+COMPUTES = {"granular": "*PairGranular::compute*", "mdr/visco": "*PairMdrVisco::compute*"}
 LAWS = {
     "granular hertz/material, damping tsuji, tangential mindlin": (
         "pair_style granular\npair_coeff * * hertz/material 3e6 0.5 0.49 tangential mindlin NULL 1.0 0.3 "
@@ -54,19 +61,31 @@ def run(law):
     with tempfile.TemporaryDirectory() as folder:
         path = Path(folder) / "in.lmp"
         path.write_text(f"plugin load {PLUGIN}\n" + LATTICE + law + f"run {STEPS}\n")
-        subprocess.run([LMP, "-in", str(path), "-log", str(Path(folder) / "log"), "-screen", "none"], check=True,
-                       cwd=folder)
+        command = [LMP, "-in", str(path), "-log", str(Path(folder) / "log"), "-screen", "none"]
+        counts = Path(folder) / "callgrind.out"
+        if CALLGRIND:
+            style = law.split()[1]
+            command = ["valgrind", "--tool=callgrind", f"--callgrind-out-file={counts}",
+                       f"--toggle-collect={COMPUTES[style]}"] + command
+        subprocess.run(command, check=True, cwd=folder, stderr=subprocess.DEVNULL if CALLGRIND else None)
         log = (Path(folder) / "log").read_text()
-    pair = float(re.search(r"^Pair\s*\|\s*[\d.e+-]+\s*\|\s*([\d.e+-]+)", log, re.M).group(1))
+        if CALLGRIND:
+            totals = re.search(r"^totals: (\d+)", counts.read_text(), re.M) or re.search(
+                r"^summary: (\d+)", counts.read_text(), re.M)
+            instructions = float(totals.group(1))
     contacts = float(re.findall(r"^\s*\d+\s+([\d.e+-]+)\s*$", log, re.M)[-1]) / 2
     memory = re.search(r"Per MPI rank memory allocation \(min/avg/max\) = [\d.]+ \| ([\d.]+)", log).group(1)
+    if CALLGRIND:
+        return instructions / ((STEPS + 1) * contacts), contacts, float(memory)
+    pair = float(re.search(r"^Pair\s*\|\s*[\d.e+-]+\s*\|\s*([\d.e+-]+)", log, re.M).group(1))
     return pair / (STEPS * contacts), contacts, float(memory)
 
 
 results = {name: run(law) for name, law in LAWS.items()}
 base = results[next(iter(LAWS))][0]
 state = 12 + ELEMENTS * (3 * TERMS + 5)
-print(f"{'law':62s} {'ns/contact-step':>16s} {'ratio':>6s} {'contacts':>9s} {'MB/rank':>8s}")
+unit, scale = ("instructions", 1.0) if CALLGRIND else ("ns", 1e9)
+print(f"{'law':62s} {unit + '/contact-step':>24s} {'ratio':>6s} {'contacts':>9s} {'MB/rank':>8s}")
 for name, (cost, contacts, memory) in results.items():
-    print(f"{name:62s} {cost * 1e9:16.1f} {cost / base:6.2f} {contacts:9.0f} {memory:8.1f}")
+    print(f"{name:62s} {cost * scale:24.1f} {cost / base:6.2f} {contacts:9.0f} {memory:8.1f}")
 print(f"mdr/visco history per contact: {state} doubles = {state * 8} bytes (12 + N (3M + 5))")

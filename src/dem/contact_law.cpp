@@ -63,6 +63,7 @@ ContactLaw::ContactLaw(const rheology::Rheology& material, double radius, double
       layer_(material, friction, half_width / static_cast<double>(elements), elements),
       material_(material),
       loads_(elements, 0.0),
+      friction_(friction),
       branches_(material.terms().size()),
       tangential_offset_(normal_offset + foundation::Foundation::state_size(elements, branches_)),
       state_size_(state_size(elements, branches_)) {
@@ -96,7 +97,10 @@ void ContactLaw::require_state_size(std::span<const double> state) const {
 
 std::size_t ContactLaw::count_at(std::span<const double> state, std::size_t offset) const {
     const double count = state[offset];
-    if (!(count >= 0.0 && count <= static_cast<double>(loads_.size()) && count == std::floor(count))) {
+    // A whole number in range: its conversion back is exact (no call of floor, which is not inlined for x86-64's
+    // baseline instruction set; this runs twice a step).
+    if (!(count >= 0.0 && count <= static_cast<double>(loads_.size()) &&
+          static_cast<double>(static_cast<std::size_t>(count)) == count)) {
         throw InvalidInput(entry(offset), format_value(count),
                            "a contact state's element count must be a whole number in [0, " +
                                std::to_string(loads_.size()) + "] (a corrupted or foreign state)");
@@ -195,6 +199,7 @@ void ContactLaw::begin(std::span<double> state) {
     foundation_.attach(state.subspan(normal_offset));  // the elements step in place there
     layer_.attach(state.subspan(tangential_offset_));
     foundation_.begin_step(coefficients_);
+    tangential_idle_ = friction_ == 0.0 && layer_.touched() == 0;
     start_normal_force_ = foundation_.total_force();
     start_tangential_force_ = layer_.total_force();
     normal_work_ = tangential_work_ = 0.0;
@@ -212,8 +217,17 @@ void ContactLaw::advance_normal(double overlap) {
                                "; give a larger half-width (at least sqrt(R d) for the largest overlap d)");
     }
     normal_work_ = 0.5 * (start_normal_force_ + foundation_.total_force()) * (overlap - overlap_);
+    if (tangential_idle_) return;
     foundation_.line_loads(loads_);
     layer_.begin_step(coefficients_, foundation_.entries());
+}
+
+// Whether a tangential step with this increment leaves every element as it is, unloaded: none was ever touched (u =
+// h = 0) and either the contact has no friction (eq. 50: the friction circle is a point, so an element's stress
+// stays zero and, starting unloaded, so do u and h) or the step moves the elements by nothing (a stuck element's
+// stress is relaxed + k du = 0, a free one's zero). Head-on collisions and frictionless contacts skip the layer.
+bool ContactLaw::tangential_at_rest(PlanarVector increment) const {
+    return tangential_idle_ || (layer_.touched() == 0 && increment[0] == 0.0 && increment[1] == 0.0);
 }
 
 std::span<const double> ContactLaw::loads() const {
@@ -221,7 +235,9 @@ std::span<const double> ContactLaw::loads() const {
 }
 
 PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
-    return layer_.trial_force({displacement[0] - displacement_[0], displacement[1] - displacement_[1]}, loads(),
+    const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};
+    if (tangential_at_rest(increment)) return {0.0, 0.0};
+    return layer_.trial_force(increment, loads(),
                               foundation_.contact_flags().first(foundation_.touched()));
 }
 
@@ -229,11 +245,16 @@ void ContactLaw::advance_tangential(PlanarVector displacement) {
     for (const double component : displacement) {
         if (!std::isfinite(component)) require_finite("displacement", component);
     }
-    layer_.advance({displacement[0] - displacement_[0], displacement[1] - displacement_[1]}, loads(),
-                   foundation_.contact_flags().first(foundation_.touched()));
+    const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};
+    if (tangential_at_rest(increment)) {  // the layer's state stays zero (its force too, as begin found it)
+        tangential_work_ = 0.0;
+        displacement_ = displacement;
+        return;
+    }
+    layer_.advance(increment, loads(), foundation_.contact_flags().first(foundation_.touched()));
     const PlanarVector end_force = layer_.total_force();
-    tangential_work_ = 0.5 * ((start_tangential_force_[0] + end_force[0]) * (displacement[0] - displacement_[0]) +
-                              (start_tangential_force_[1] + end_force[1]) * (displacement[1] - displacement_[1]));
+    tangential_work_ = 0.5 * ((start_tangential_force_[0] + end_force[0]) * increment[0] +
+                              (start_tangential_force_[1] + end_force[1]) * increment[1]);
     displacement_ = displacement;
 }
 
@@ -244,8 +265,15 @@ void ContactLaw::end(std::span<double> state) const {
     state[handedness_offset] = handedness_;
 }
 
+// The one-call steps know the tangential increment before the normal step: a layer that will stay at rest then needs
+// no preparation either (its line loads and relaxed sums in advance_normal).
+void ContactLaw::skip_resting_layer(PlanarVector displacement) {
+    tangential_idle_ = tangential_at_rest({displacement[0] - displacement_[0], displacement[1] - displacement_[1]});
+}
+
 void ContactLaw::advance(std::span<double> state, double overlap, PlanarVector displacement) {
     begin(state);
+    skip_resting_layer(displacement);
     advance_normal(overlap);
     advance_tangential(displacement);
     end(state);
@@ -279,8 +307,10 @@ SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overla
     if (handedness_ == 0.0) handedness_ = 1.0;
     const SpatialVector turned = cross(normal, frame_);
     const SpatialVector second{handedness_ * turned[0], handedness_ * turned[1], handedness_ * turned[2]};
+    const PlanarVector displacement{displacement_[0] + dot(slip, frame_), displacement_[1] + dot(slip, second)};
+    skip_resting_layer(displacement);
     advance_normal(overlap);
-    advance_tangential({displacement_[0] + dot(slip, frame_), displacement_[1] + dot(slip, second)});
+    advance_tangential(displacement);
     end(state);
     const PlanarVector force = layer_.total_force();
     return {force[0] * frame_[0] + force[1] * second[0], force[0] * frame_[1] + force[1] * second[1],

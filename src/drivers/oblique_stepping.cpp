@@ -23,7 +23,7 @@ ObliqueStepper::ObliqueStepper(const ObliqueImpactLoad& load, const ObliqueSpher
       spin_(load.spin) {}
 
 double ObliqueStepper::solve_increment(double spring, double anchor, double time_step, std::span<const double> q,
-                                       std::span<const std::uint8_t> contact) const {
+                                       std::span<const double> contact) const {
     const auto residual = [&](double increment) {
         return layer_.trial_force(increment, q, contact) + spring * (increment - anchor) + force_;
     };

@@ -44,7 +44,7 @@ public:
 
 private:
     double solve_increment(double spring, double anchor, double time_step, std::span<const double> q,
-                           std::span<const std::uint8_t> contact) const;
+                           std::span<const double> contact) const;
     void take_impulse(double impulse);
     /// The foundation's line loads q_z,i [N/m] of the elements it has touched, into loads_ (no allocation).
     std::span<const double> normal_line_loads();

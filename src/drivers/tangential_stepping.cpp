@@ -27,7 +27,7 @@ TangentialStepper::TangentialStepper(const TangentialLoad& load, const rheology:
 }
 
 double TangentialStepper::solve_increment(double target, std::span<const double> q,
-                                          std::span<const std::uint8_t> contact) const {
+                                          std::span<const double> contact) const {
     // F_x(du) is continuous, piecewise linear and non-decreasing (each element clamps its force to +-mu F_N):
     // the shared bracket and Illinois regula falsi from the last increment (exact on a linear piece).
     const auto residual = [&](double increment) { return layer_.trial_force(increment, q, contact) - target; };

@@ -36,7 +36,7 @@ public:
 
 private:
     double solve_increment(double target, std::span<const double> normal_line_loads,
-                           std::span<const std::uint8_t> contact) const;
+                           std::span<const double> contact) const;
 
     const TangentialLoad& load_;
     const foundation::Foundation& foundation_;

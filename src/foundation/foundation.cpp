@@ -50,7 +50,8 @@ constexpr double normal_stiffness_factor = 4.0;  // k_z = 4 G dx, eq. (11)
 struct PlainStep {
     double increment;  ///< dw
     double stress;     ///< sigma at the end of the step
-    bool split;        ///< an exit or entry happens inside the step
+    double split;      ///< 1 when an exit or entry happens inside the step, else 0 (a double: with a bool member
+                       ///< GCC 12 does not vectorise the loop over it)
 };
 
 inline PlainStep plain_step(bool contact, double contact_relaxed, double free_relaxed, double g, double w,
@@ -60,7 +61,28 @@ inline PlainStep plain_step(bool contact, double contact_relaxed, double free_re
     const double free_increment = -free_relaxed / free_stiffness;
     const double gap_end = contact_increment - free_increment;  // indenter below the free surface when > 0
     return {contact ? contact_increment : free_increment, contact ? contact_stress : 0.0,
-            contact ? !(contact_stress >= 0.0) : !(gap_end <= 0.0)};
+            contact ? (contact_stress >= 0.0 ? 0.0 : 1.0) : (gap_end <= 0.0 ? 0.0 : 1.0)};
+}
+
+// Foundation::advance's branch-free pass over elements [0, end): steps every element in place as if unsplit (w,
+// sigma), keeping its start w and sigma, its increment dw, and event = 1 where an entry or exit splits the step. A
+// free function of restrict pointers: inside the member function GCC 12 leaves this loop scalar.
+__attribute__((target_clones("avx2", "default"))) void plain_pass(
+    std::size_t end, double depth_end, double contact_offset, double contact_stiffness, double free_stiffness,
+    const double* __restrict g, const double* __restrict contact, const double* __restrict relaxed,
+    const double* __restrict free_relaxed, double* __restrict w, double* __restrict sigma,
+    double* __restrict start_w, double* __restrict start_sigma, double* __restrict dw, double* __restrict event) {
+    for (std::size_t i = 0; i < end; ++i) {
+        const double w0 = w[i];
+        const PlainStep plain = plain_step(contact[i] != 0.0, relaxed[i] + contact_offset, free_relaxed[i], g[i], w0,
+                                           depth_end, contact_stiffness, free_stiffness);
+        start_w[i] = w0;
+        start_sigma[i] = sigma[i];
+        w[i] = w0 + plain.increment;
+        sigma[i] = plain.stress;
+        dw[i] = plain.increment;
+        event[i] = plain.split;
+    }
 }
 
 }  // namespace
@@ -86,7 +108,7 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
         displacement_.assign(count, 0.0);
         stress_.assign(count, 0.0);
         memory_.assign(count * branches, 0.0);
-        in_contact_.assign(count, 0);
+        flags_.assign(count, 0.0);
         event_.assign(count, 0.0);
         start_displacement_.assign(count, 0.0);
         start_stress_.assign(count, 0.0);
@@ -148,7 +170,7 @@ Foundation::Outcome Foundation::evaluate(std::size_t i, double w0, double sigma0
                                          double depth_end) const {
     const double g = equivalent_[i];
     const double w = w0;
-    const bool contact = in_contact_[i] != 0;
+    const bool contact = element_flags()[i] != 0.0;
     const double relaxed = i < active_ ? relaxed_[i] : 0.0;
     const double free_relaxed = i < active_ ? free_relaxed_of(i) : 0.0;
     const PlainStep plain = plain_step(contact, relaxed + contact_offset_, free_relaxed, g, w, depth_end,
@@ -156,7 +178,7 @@ Foundation::Outcome Foundation::evaluate(std::size_t i, double w0, double sigma0
     Outcome outcome;
     outcome.contact = contact;
     outcome.stress = plain.stress;
-    if (!plain.split) return outcome;
+    if (plain.split == 0.0) return outcome;
     outcome.split = true;
     outcome.contact = !contact;
     if (contact) {
@@ -237,18 +259,21 @@ double Foundation::trial_force(double depth_start, double depth_end) const {
     const std::size_t end = std::min(reach(std::max(depth_start, depth_end)), size());
     const double* displacement = element_displacements();
     const double* stress = element_stresses();
+    const double* flags = element_flags();
     double sum = 0.0;
     double w = 0.0;
     for (std::size_t i = 0; i < end; ++i) {
         const bool touched = i < active_;
         const PlainStep plain =
-            plain_step(in_contact_[i] != 0, (touched ? relaxed_[i] : 0.0) + contact_offset_,
+            plain_step(flags[i] != 0.0, (touched ? relaxed_[i] : 0.0) + contact_offset_,
                        touched ? free_relaxed_of(i) : 0.0, equivalent_[i], displacement[i], depth_end,
                        contact_stiffness_, free_stiffness_);
-        sum += plain.split ? split_stress(i, displacement[i], evaluate(i, displacement[i], stress[i], depth_start,
-                                                                       depth_end),
-                                          depth_start, depth_end, w, scratch_.data())
-                           : plain.stress;
+        if (plain.split == 0.0) {
+            sum += plain.stress;
+            continue;
+        }
+        const Outcome outcome = evaluate(i, displacement[i], stress[i], depth_start, depth_end);
+        sum += split_stress(i, displacement[i], outcome, depth_start, depth_end, w, scratch_.data());
     }
     return 2.0 * normal_stiffness_factor * spacing_ * sum;
 }
@@ -268,43 +293,25 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
     const std::size_t n = size();
     const std::size_t end = reach(deepest);
     const std::size_t branches = material_.terms().size();
-    // One branch-free pass over the elements (it vectorises, with -fno-trapping-math, see CMakeLists.txt) steps
-    // every element in place as if unsplit, keeping its start w and sigma in the start_* buffers, its increment dw,
-    // and event_ = 1 where an entry or exit splits the step (a double, so that the pass has one element width).
+    // One branch-free pass over the elements (plain_pass; it vectorises, see CMakeLists.txt) steps every element in
+    // place as if unsplit, keeping its start w and sigma in the start_* buffers, its increment dw, and event_ = 1
+    // where an entry or exit splits the step (flags and events doubles, so that the pass has one element width).
     // The scalar pass over the few split elements starts from the kept values (relaxed_ is zero beyond active_,
     // never written there; the memories are not yet stepped), then the branch memories take dw and the split
     // elements are overwritten from their saved state. Elements at or beyond `end` are untouched: zero.
-    const double contact_stiffness = contact_stiffness_;
-    const double free_stiffness = free_stiffness_;
-    const double contact_offset = contact_offset_;
+    const double* free_relaxed = material_.viscosity() > 0.0 ? free_relaxed_.data() : relaxed_.data();
+    plain_pass(end, depth_end, contact_offset_, contact_stiffness_, free_stiffness_, equivalent_.data(),
+               element_flags(), relaxed_.data(), free_relaxed, element_displacements(), element_stresses(),
+               start_displacement_.data(), start_stress_.data(), increment_.data(), event_.data());
     {
-        const double* __restrict g = equivalent_.data();
-        double* __restrict w = element_displacements();
-        double* __restrict sigma = element_stresses();
-        const double* __restrict relaxed = relaxed_.data();
-        const double* __restrict free_relaxed =
-            material_.viscosity() > 0.0 ? free_relaxed_.data() : relaxed_.data();
-        const std::uint8_t* __restrict contact = in_contact_.data();
-        double* __restrict start_w = start_displacement_.data();
-        double* __restrict start_sigma = start_stress_.data();
-        double* __restrict dw = increment_.data();
-        double* __restrict event = event_.data();
-        // The range of split elements (they gather at the contact edge), so that the scalar pass scans only it.
-        // 32-bit indices (max_elements fits) keep the min/max reductions vectorisable.
+        // The range of split elements (they gather at the contact edge), so that the scalar pass scans only it
+        // (a pass of its own: with these reductions in it, plain_pass would not vectorise).
+        const double* __restrict event = event_.data();
         std::int32_t first = static_cast<std::int32_t>(end), last = -1;
         for (std::size_t i = 0; i < end; ++i) {
-            const double w0 = w[i];
-            const PlainStep plain = plain_step(contact[i] != 0, relaxed[i] + contact_offset, free_relaxed[i], g[i], w0,
-                                               depth_end, contact_stiffness, free_stiffness);
-            start_w[i] = w0;
-            start_sigma[i] = sigma[i];
-            w[i] = w0 + plain.increment;
-            sigma[i] = plain.stress;
-            dw[i] = plain.increment;
-            event[i] = plain.split ? 1.0 : 0.0;
             const auto index = static_cast<std::int32_t>(i);
-            first = std::min(first, plain.split ? index : first);
-            last = std::max(last, plain.split ? index : last);
+            first = std::min(first, event[i] != 0.0 ? index : first);
+            last = std::max(last, event[i] != 0.0 ? index : last);
         }
         split_first_ = static_cast<std::size_t>(first);
         split_end_ = static_cast<std::size_t>(last + 1);
@@ -329,8 +336,7 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
         split_state_[offset + 1] = stress;
         split_.push_back(i);
         if (outcome.contact) entries_.push_back({i, outcome.fraction});
-        in_contact_[i] = outcome.contact ? 1 : 0;
-        if (attached_ != nullptr) attached_[3 + 2 * n + i] = outcome.contact ? 1.0 : 0.0;
+        element_flags()[i] = outcome.contact ? 1.0 : 0.0;
     }
     const auto& terms = material_.terms();
     for (std::size_t k = 0; k < terms.size(); ++k) {
@@ -370,7 +376,8 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
 }
 
 std::size_t Foundation::contact_count() const {
-    return static_cast<std::size_t>(std::count(in_contact_.begin(), in_contact_.begin() + static_cast<std::ptrdiff_t>(active_), 1));
+    const double* flags = element_flags();
+    return static_cast<std::size_t>(std::count(flags, flags + active_, 1.0));
 }
 
 double Foundation::force_slope() const {
@@ -397,8 +404,9 @@ double Foundation::touching_depth() const {
 }
 
 double Foundation::contact_radius() const {
+    const double* flags = element_flags();
     std::size_t outer = active_;
-    while (outer > 0 && !in_contact_[outer - 1]) --outer;
+    while (outer > 0 && flags[outer - 1] == 0.0) --outer;
     if (outer == 0) return 0.0;
     const std::size_t j = outer - 1;
     if (j + 1 >= size() || !std::isfinite(equivalent_[j + 1])) return position(j) + 0.5 * spacing_;
@@ -407,7 +415,7 @@ double Foundation::contact_radius() const {
     // The free gap d - g - w vanishes at the edge and is linear in g beyond it (exactly d - g where the surface
     // was never touched; (d' - w')(t - t_exit) where it left contact): extrapolated in g from the two free
     // neighbours, the edge is where it reaches zero, and x is interpolated linearly in g between the centres.
-    if (j + 2 < size() && std::isfinite(equivalent_[j + 2]) && !in_contact_[j + 2] && g_out > g_in) {
+    if (j + 2 < size() && std::isfinite(equivalent_[j + 2]) && flags[j + 2] == 0.0 && g_out > g_in) {
         const double further = free_gap(j + 2);
         const double rise = equivalent_[j + 2] - g_out;
         if (further < outside && rise > 0.0) {
@@ -435,7 +443,7 @@ void Foundation::save_state(std::span<double> out) const {
     double* __restrict h = flag + n;
     const double* __restrict displacement = element_displacements();
     const double* __restrict stress = element_stresses();
-    const std::uint8_t* __restrict contact = in_contact_.data();
+    const double* __restrict contact = element_flags();
     const double* __restrict memory = element_memories();
     const std::size_t active = active_;
     for (std::size_t i = 0; i < active; ++i) {
@@ -462,12 +470,12 @@ void Foundation::load_state(std::span<const double> in) {
     const double* __restrict h = flag + n;
     double* __restrict displacement = displacement_.data();
     double* __restrict stress = stress_.data();
-    std::uint8_t* __restrict contact = in_contact_.data();
+    double* __restrict contact = flags_.data();
     double* __restrict memory = memory_.data();
     for (std::size_t i = 0; i < active; ++i) {
         displacement[i] = w[i];
         stress[i] = sigma[i];
-        contact[i] = flag[i] != 0.0 ? 1 : 0;
+        contact[i] = flag[i] != 0.0 ? 1.0 : 0.0;
     }
     for (std::size_t k = 0; k < branches; ++k) {
         for (std::size_t i = 0; i < active; ++i) memory[k * n + i] = h[k * n + i];
@@ -477,15 +485,11 @@ void Foundation::load_state(std::span<const double> in) {
 }
 
 void Foundation::attach(std::span<double> state) {
-    const std::size_t n = size();
     attached_ = nullptr;
     last_depth_ = state[0];
     total_force_ = state[1];
     const std::size_t active = static_cast<std::size_t>(state[2]);
     clear_beyond(active);
-    const double* __restrict flag = state.data() + 3 + 2 * n;
-    std::uint8_t* __restrict contact = in_contact_.data();
-    for (std::size_t i = 0; i < active; ++i) contact[i] = flag[i] != 0.0 ? 1 : 0;
     active_ = active;
     high_water_ = std::max(high_water_, active_);
     attached_ = state.data();
@@ -503,10 +507,9 @@ void Foundation::clear_beyond(std::size_t active) {
                       typename std::decay_t<decltype(buffer)>::value_type{});
         };
         for (auto* buffer : {&displacement_, &stress_, &start_displacement_, &start_stress_, &increment_, &relaxed_,
-                             &event_}) {
+                             &event_, &flags_}) {
             clear(*buffer, 0);
         }
-        clear(in_contact_, 0);
         if (!free_relaxed_.empty()) clear(free_relaxed_, 0);
         for (std::size_t k = 0; k < branches; ++k) clear(memory_, k * n);
     }

@@ -10,77 +10,22 @@ namespace {
 
 constexpr double tangential_stiffness_factor = 8.0 / 3.0;  // k_x = (8/3) G dx, eq. (11), (41)
 
-}  // namespace
-
-PlanarTangentialLayer::PlanarTangentialLayer(const rheology::Rheology& material, double friction, double spacing,
-                                             std::size_t count)
-    : material_(material),
-      per_load_(friction / tangential_stiffness_factor),
-      spacing_(spacing),
-      count_(count),
-      displacement_(2 * count, 0.0),
-      stress_(2 * count, 0.0),
-      memory_(2 * count * material.terms().size(), 0.0),
-      relaxed_(2 * count, 0.0),
-      increment_(2 * count, 0.0),
-      contact_mask_(count, 0.0),
-      share_(count) {}
-
-__attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::begin_step(
-    const StepCoefficients& coefficients, std::span<const Entry> entries) {
-    copy_step_coefficients(coefficients, step_);
-    share_.set(entries);
-    for (std::size_t c = 0; c < 2; ++c) {
-        relaxed_sums(material_, step_, displacements() + c * count_, memories() + c * count_, 2 * count_,
-                     touched_, relaxed_.data() + c * count_);
-    }
-}
-
-PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, std::span<const double> normal_line_loads,
-                                                std::span<const std::uint8_t> contact) const {
-    const std::size_t n = count_;
-    double sum_x = 0.0, sum_y = 0.0;
-    for (std::size_t i = 0; i < contact.size(); ++i) {
-        if (!contact[i]) continue;
-        const double bound = per_load_ * std::max(normal_line_loads[i], 0.0);  // eq. (50), a circle
-        const double trial_x = relaxed_[i] + step_.stiffness * (increment[0] * share_[i]);
-        const double trial_y = relaxed_[n + i] + step_.stiffness * (increment[1] * share_[i]);
-        const double magnitude = std::sqrt(trial_x * trial_x + trial_y * trial_y);
-        const double scale = magnitude <= bound ? 1.0 : bound / magnitude;
-        sum_x += trial_x * scale;
-        sum_y += trial_y * scale;
-    }
-    const double factor = 2.0 * tangential_stiffness_factor * spacing_;
-    return {factor * sum_x, factor * sum_y};
-}
-
-__attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::advance(
-    PlanarVector increment, std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact) {
-    touched_ = std::max(touched_, contact.size());
-    high_water_ = std::max(high_water_, touched_);
-    const std::size_t n = count_, count = touched_;
-    const auto& terms = material_.terms();
-    double* __restrict mask = contact_mask_.data();
-    // As TangentialLayer: the loads and flags cover every element ever touched (count = contact.size()).
-    for (std::size_t i = 0; i < count; ++i) mask[i] = contact[i] != 0 ? 1.0 : 0.0;
-    const double* __restrict q = normal_line_loads.data();
-    const double* __restrict relaxed_x = relaxed_.data();
-    const double* __restrict relaxed_y = relaxed_.data() + n;
-    const double* __restrict share = share_.data();
-    double* __restrict u_x = displacements();
-    double* __restrict u_y = u_x + n;
-    double* __restrict t_x = stress_.data();
-    double* __restrict t_y = stress_.data() + n;
-    double* __restrict du_x = increment_.data();
-    double* __restrict du_y = increment_.data() + n;
-    const double stiffness = step_.stiffness, compliance = 1.0 / step_.stiffness, per_load = per_load_;
-    // Eq. (50) with vectors, one branch-free pass (selects, so that it vectorises with -fno-trapping-math): an
-    // element in contact sticks while its trial stays inside the friction circle and slips along its trial
-    // otherwise; out of contact it is force-free.
+// Eq. (50) with vectors over `count` elements, one branch-free pass (selects, so that it vectorises with
+// -fno-trapping-math and -fno-math-errno): an element in contact (mask 1) sticks while its trial stays inside the
+// friction circle of radius per_load q_i and slips along its trial otherwise; out of contact (mask 0) it is
+// force-free. Writes the new stress t and increment du and adds du to u. A free function of restrict pointers:
+// inside the member function GCC 12 leaves this loop scalar.
+__attribute__((target_clones("avx2", "default"))) void stick_or_slip(
+    std::size_t count, PlanarVector increment, double stiffness, double per_load, const double* __restrict mask,
+    const double* __restrict q, const double* __restrict share, const double* __restrict relaxed_x,
+    const double* __restrict relaxed_y, double* __restrict u_x, double* __restrict u_y, double* __restrict t_x,
+    double* __restrict t_y, double* __restrict du_x, double* __restrict du_y) {
+    const double compliance = 1.0 / stiffness;
+    const double along_x = increment[0], along_y = increment[1];
     for (std::size_t i = 0; i < count; ++i) {
         const double in = mask[i];
         const double bound = in * per_load * std::max(q[i], 0.0);
-        const double moved_x = increment[0] * share[i], moved_y = increment[1] * share[i];
+        const double moved_x = along_x * share[i], moved_y = along_y * share[i];
         const double trial_x = relaxed_x[i] + stiffness * moved_x;
         const double trial_y = relaxed_y[i] + stiffness * moved_y;
         const double magnitude = std::sqrt(trial_x * trial_x + trial_y * trial_y);
@@ -94,6 +39,66 @@ __attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::ad
         t_x[i] = stress_x;
         t_y[i] = stress_y;
     }
+}
+
+}  // namespace
+
+PlanarTangentialLayer::PlanarTangentialLayer(const rheology::Rheology& material, double friction, double spacing,
+                                             std::size_t count)
+    : material_(material),
+      per_load_(friction / tangential_stiffness_factor),
+      spacing_(spacing),
+      count_(count),
+      displacement_(2 * count, 0.0),
+      stress_(2 * count, 0.0),
+      memory_(2 * count * material.terms().size(), 0.0),
+      relaxed_(2 * count, 0.0),
+      increment_(2 * count, 0.0),
+      share_(count) {}
+
+__attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::begin_step(
+    const StepCoefficients& coefficients, std::span<const Entry> entries) {
+    copy_step_coefficients(coefficients, step_);
+    share_.set(entries);
+    // Both components in one pass over [0, n + touched): the x block's elements in [touched, n) hold zeros (never
+    // touched), so their sums are the zeros relaxed_ must hold there; one pass costs half the loop overhead of two.
+    relaxed_sums(material_, step_, displacements(), memories(), 2 * count_, count_ + touched_, relaxed_.data());
+}
+
+PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, std::span<const double> normal_line_loads,
+                                                std::span<const double> contact) const {
+    const std::size_t n = count_;
+    double sum_x = 0.0, sum_y = 0.0;
+    for (std::size_t i = 0; i < contact.size(); ++i) {
+        if (contact[i] == 0.0) continue;
+        const double bound = per_load_ * std::max(normal_line_loads[i], 0.0);  // eq. (50), a circle
+        const double trial_x = relaxed_[i] + step_.stiffness * (increment[0] * share_[i]);
+        const double trial_y = relaxed_[n + i] + step_.stiffness * (increment[1] * share_[i]);
+        const double magnitude = std::sqrt(trial_x * trial_x + trial_y * trial_y);
+        const double scale = magnitude <= bound ? 1.0 : bound / magnitude;
+        sum_x += trial_x * scale;
+        sum_y += trial_y * scale;
+    }
+    const double factor = 2.0 * tangential_stiffness_factor * spacing_;
+    return {factor * sum_x, factor * sum_y};
+}
+
+__attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::advance(
+    PlanarVector increment, std::span<const double> normal_line_loads, std::span<const double> contact) {
+    touched_ = std::max(touched_, contact.size());
+    high_water_ = std::max(high_water_, touched_);
+    const std::size_t n = count_, count = touched_;
+    const auto& terms = material_.terms();
+    // As TangentialLayer: the loads and flags cover every element ever touched (count = contact.size()); the flags
+    // are the mask of the stick-or-slip pass (1 or 0).
+    double* u = displacements();
+    const double* t_x = stress_.data();
+    const double* t_y = stress_.data() + n;
+    const double* du_x = increment_.data();
+    const double* du_y = increment_.data() + n;
+    stick_or_slip(count, increment, step_.stiffness, per_load_, contact.data(), normal_line_loads.data(), share_.data(),
+                  relaxed_.data(), relaxed_.data() + n, u, u + n, stress_.data(), stress_.data() + n,
+                  increment_.data(), increment_.data() + n);
     double sum_x = 0.0, sum_y = 0.0;
     for (std::size_t i = 0; i < count; ++i) {
         sum_x += t_x[i];

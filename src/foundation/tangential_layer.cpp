@@ -68,7 +68,7 @@ inline double TangentialLayer::limit(double normal_line_load) const {
 }
 
 __attribute__((target_clones("avx2", "default"))) double TangentialLayer::trial_force(
-    double increment, std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact) const {
+    double increment, std::span<const double> normal_line_loads, std::span<const double> contact) const {
     // advance()'s stress, branch-free: the stick trial clamped to the friction limit in contact, to a limit of 0
     // (so to 0) outside. In blocks on the stack: the contact flags as doubles first, so that the element loop has one
     // element width, then the stresses, so that their sum vectorises (GCC does not vectorise a reduction whose terms
@@ -81,8 +81,8 @@ __attribute__((target_clones("avx2", "default"))) double TangentialLayer::trial_
     const std::size_t count = contact.size();
     for (std::size_t start = 0; start < count; start += block) {
         const std::size_t length = std::min(block, count - start);
-        const std::uint8_t* flags = contact.data() + start;
-        for (std::size_t j = 0; j < length; ++j) in[j] = flags[j] ? 1.0 : 0.0;
+        const double* flags = contact.data() + start;
+        for (std::size_t j = 0; j < length; ++j) in[j] = flags[j] != 0.0 ? 1.0 : 0.0;
         const double* relaxed = relaxed_.data() + start;
         const double* share = share_.data() + start;
         const double* q = normal_line_loads.data() + start;
@@ -97,20 +97,20 @@ __attribute__((target_clones("avx2", "default"))) double TangentialLayer::trial_
 }
 
 double TangentialLayer::sliding_force(std::span<const double> normal_line_loads,
-                                      std::span<const std::uint8_t> contact) const {
+                                      std::span<const double> contact) const {
     double sum = 0.0;
     for (std::size_t i = 0; i < contact.size(); ++i) {
-        if (contact[i]) sum += limit(normal_line_loads[i]);
+        if (contact[i] != 0.0) sum += limit(normal_line_loads[i]);
     }
     return 2.0 * tangential_stiffness_factor * spacing_ * sum;
 }
 
 double TangentialLayer::sliding_increment(double direction, std::span<const double> normal_line_loads,
-                                          std::span<const std::uint8_t> contact) const {
+                                          std::span<const double> contact) const {
     double increment = 0.0;
     bool any = false;
     for (std::size_t i = 0; i < contact.size(); ++i) {
-        if (!contact[i] || share_[i] == 0.0) continue;
+        if (contact[i] == 0.0 || share_[i] == 0.0) continue;
         const double reach = (direction * limit(normal_line_loads[i]) - relaxed_[i]) / (step_.stiffness * share_[i]);
         increment = any ? (direction > 0.0 ? std::max(increment, reach) : std::min(increment, reach)) : reach;
         any = true;
@@ -119,7 +119,7 @@ double TangentialLayer::sliding_increment(double direction, std::span<const doub
 }
 
 __attribute__((target_clones("avx2", "default"))) void TangentialLayer::advance(
-    double increment, std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact) {
+    double increment, std::span<const double> normal_line_loads, std::span<const double> contact) {
     const std::size_t n = displacement_.size();
     touched_ = std::max(touched_, contact.size());
     high_water_ = std::max(high_water_, touched_);
@@ -132,7 +132,7 @@ __attribute__((target_clones("avx2", "default"))) void TangentialLayer::advance(
     // The contact flags as doubles, so that the element pass below has one element width: GCC vectorises it four
     // elements to a register (with the bytes in it, 32 elements at a time, spilling registers).
     double* __restrict mask = contact_mask_.data();
-    for (std::size_t i = 0; i < count; ++i) mask[i] = contact[i] ? 1.0 : 0.0;
+    for (std::size_t i = 0; i < count; ++i) mask[i] = contact[i] != 0.0 ? 1.0 : 0.0;
     // One branch-free pass (it vectorises, with -fno-trapping-math, see CMakeLists.txt) takes every element's step
     // (eq. 50): in contact it first sticks, u_i += share du (an element entering moves only after its entry); when
     // then |t| exceeds the friction limit it slips, t = the limit with the sign of its trial, u_i solved from it;

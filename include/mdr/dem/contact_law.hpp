@@ -86,7 +86,8 @@ public:
     /// advance_normal); the state is not changed.
     PlanarVector tangential_trial(PlanarVector displacement) const;
     /// Advances the tangential problem to `displacement` [m] (after advance_normal); throws mdr::InvalidInput (key
-    /// `displacement`) unless it is finite.
+    /// `displacement`) unless it is finite. A layer never touched stays at rest, unstepped, while the law has no
+    /// friction or the displacement does not change (a frictionless or head-on contact: its force is zero).
     void advance_tangential(PlanarVector displacement);
     /// Writes the tangential displacement and the frame into the contact's state (the elements are already there).
     void end(std::span<double> state) const;
@@ -143,6 +144,8 @@ private:
     static constexpr std::size_t normal_offset = 6;
     std::span<const double> loads() const;
     std::size_t count_at(std::span<const double> state, std::size_t offset) const;
+    bool tangential_at_rest(PlanarVector increment) const;
+    void skip_resting_layer(PlanarVector displacement);
     void require_state_size(std::span<const double> state) const;
 
     foundation::Foundation foundation_;
@@ -150,6 +153,8 @@ private:
     foundation::StepCoefficients coefficients_;
     rheology::Rheology material_;
     std::vector<double> loads_;  ///< q_z,i of the last normal step
+    double friction_;
+    bool tangential_idle_ = false;  ///< the layer stays at rest this step (tangential_at_rest): nothing to step
     std::size_t branches_;
     std::size_t tangential_offset_;
     std::size_t state_size_;

@@ -121,8 +121,8 @@ public:
     /// Steps the state in place in `state` (state_size doubles written by this foundation's steps, save_state or
     /// zeros; zero beyond the touched elements; the caller has checked the touched count) instead of the
     /// foundation's own buffers: every advance reads and writes the elements there, and the depth, force, touched
-    /// count and contact flags, until the next attach or load_state. No copy in or out (the contact flags are
-    /// read once). Call begin_step after it; `state` must outlive the steps.
+    /// count and contact flags (0 or 1), until the next attach or load_state. No copy in or out. Call begin_step
+    /// after it; `state` must outlive the steps.
     void attach(std::span<double> state);
     /// Reserves room for an event at every element, so that no later step allocates.
     void reserve_events();
@@ -135,8 +135,9 @@ public:
     std::vector<double> line_loads() const;
     /// MDR profile g(x_i) [m] at the element centres.
     std::span<const double> equivalent_profile() const { return equivalent_; }
-    /// Contact flags (1 in contact).
-    std::span<const std::uint8_t> contact_flags() const { return in_contact_; }
+    /// Contact flags: 1 in contact, else 0 (doubles, as the state holds them, so that the element passes that read
+    /// them have one element width and vectorise).
+    std::span<const double> contact_flags() const { return {element_flags(), size()}; }
 
 private:
     struct Outcome;
@@ -158,6 +159,8 @@ private:
     const double* element_memories() const {
         return attached_ != nullptr ? attached_ + 3 + 3 * size() : memory_.data();
     }
+    double* element_flags() { return attached_ != nullptr ? attached_ + 3 + 2 * size() : flags_.data(); }
+    const double* element_flags() const { return attached_ != nullptr ? attached_ + 3 + 2 * size() : flags_.data(); }
     void free_substep(double time_step, double& w, double* h) const;
     double contact_substep(double time_step, double new_displacement, double end_rate, double& w, double* h) const;
     double free_gap(std::size_t i) const;
@@ -171,7 +174,7 @@ private:
     std::vector<double> stress_;               ///< sigma_i at the end of the last step, when no state is attached
     std::vector<double> memory_;               ///< h_{k,i}, branch-major: memory_[k * n + i], when none is attached
     double* attached_ = nullptr;               ///< the attached state (see attach), else null
-    std::vector<std::uint8_t> in_contact_;
+    std::vector<double> flags_;                ///< contact flags when no state is attached
     std::vector<double> event_;                ///< 1 where the last step was split by an entry or exit, else 0
     std::vector<double> start_displacement_;   ///< w_i at the start of the step being taken
     std::vector<double> start_stress_;         ///< sigma_i at the start of the step being taken

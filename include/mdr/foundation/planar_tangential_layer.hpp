@@ -43,14 +43,16 @@ public:
     /// indenter moving by `increment` [m]; `normal_line_loads` q_z,i [N/m] and `contact` as for
     /// TangentialLayer::trial_force. The state is not changed.
     PlanarVector trial_force(PlanarVector increment, std::span<const double> normal_line_loads,
-                             std::span<const std::uint8_t> contact) const;
+                             std::span<const double> contact) const;
     /// Advances the state over the prepared step (arguments as for trial_force).
     void advance(PlanarVector increment, std::span<const double> normal_line_loads,
-                 std::span<const std::uint8_t> contact);
+                 std::span<const double> contact);
     /// Total tangential force [N] after the last step (eq. 46, both halves).
     PlanarVector total_force() const { return total_force_; }
     /// Number of elements.
     std::size_t size() const { return count_; }
+    /// Elements [0, touched()) have been in normal contact during a step; the others have u = h = 0.
+    std::size_t touched() const { return touched_; }
 
     /// Doubles of the state that persists between steps for `count` elements and `branches` relaxation branches:
     /// 3 + count (2 branches + 2) (force, touched elements; u_i and h_{k,i}, two components each, component by
@@ -89,7 +91,6 @@ private:
     double* header_ = nullptr;          ///< the attached state (force, touched count, u_i, h_{k,i}), else null
     std::vector<double> relaxed_;       ///< G_inf u_i + sum_k G_k E_k h_{k,i} for the prepared step
     std::vector<double> increment_;     ///< du_i of the step being taken
-    std::vector<double> contact_mask_;  ///< 1 for an element in contact in the step being taken, else 0
     EntryShares share_;                 ///< part of the prepared step's increment each element takes
     StepCoefficients step_;
     std::size_t touched_ = 0;           ///< elements [touched_, n) have never been in contact: u = h = 0

@@ -52,13 +52,13 @@ public:
     /// on are out of contact (pass at least the elements the foundation has ever touched, and never fewer than
     /// before). The state is not changed.
     double trial_force(double increment, std::span<const double> normal_line_loads,
-                       std::span<const std::uint8_t> contact) const;
+                       std::span<const double> contact) const;
     /// The largest |F_x| [N] the contact can carry at the end of the prepared step: mu F_N (gross sliding beyond).
-    double sliding_force(std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact) const;
+    double sliding_force(std::span<const double> normal_line_loads, std::span<const double> contact) const;
     /// The smallest increment [m] in the direction `direction` (+1 or -1) that puts every element in contact at its
     /// friction limit (the onset of gross sliding) in the prepared step; 0 when nothing is in contact.
     double sliding_increment(double direction, std::span<const double> normal_line_loads,
-                             std::span<const std::uint8_t> contact) const;
+                             std::span<const double> contact) const;
     /// Number of elements.
     std::size_t size() const { return displacement_.size(); }
     /// Doubles of the state that persists between steps (saved by save_state) for `count` elements and `branches`
@@ -71,7 +71,7 @@ public:
     /// begin_step after it.
     void load_state(std::span<const double> in);
     /// Advances the state over the prepared step (arguments as for trial_force).
-    void advance(double increment, std::span<const double> normal_line_loads, std::span<const std::uint8_t> contact);
+    void advance(double increment, std::span<const double> normal_line_loads, std::span<const double> contact);
 
     /// Total tangential force F_x [N] after the last step (eq. 46, both halves).
     double total_force() const { return total_force_; }

@@ -80,6 +80,35 @@ TEST(DemContactLaw, ContactsSharingALawStepAsIfAlone) {
     EXPECT_GT(most_tangential, 0.0);
 }
 
+// Eq. (50) with a friction circle of radius mu q_z = 0, or a step that moves no element: an unloaded tangential
+// layer stays unloaded, and the law leaves it as it is (it skips the layer's pass; the state's layer then still
+// counts no touched element, where a stepped layer counts those the Foundation touched).
+TEST(DemContactLaw, AFrictionlessOrHeadOnContactLeavesItsTangentialElementsUnloaded) {
+    const auto material = rheology::Rheology::prony(1e6, {{3e6, 1e-3}, {1e6, 3e-5}});
+    ContactLaw frictionless(material, 0.005, 0.0, 50, 1e-3, 2e-6), rough(material, 0.005, 0.3, 50, 1e-3, 2e-6);
+    std::vector<double> sliding(frictionless.state_size()), head_on(rough.state_size());
+    frictionless.initialise(sliding);
+    rough.initialise(head_on);
+    const std::size_t layer_touched = 6 + (3 + 50 * 5) + 2;  // the Foundation's state, then the layer's force (2)
+    for (int n = 1; n < 600; ++n) {
+        frictionless.advance(sliding, overlap_at(n, 1.0), {displacement_at(n, 1.0), displacement_at(n, 0.5)});
+        rough.advance(head_on, overlap_at(n, 1.0), {0.0, 0.0});
+        ASSERT_EQ(frictionless.tangential_force(sliding), (PlanarVector{0.0, 0.0})) << "step " << n;
+        ASSERT_EQ(rough.tangential_force(head_on), (PlanarVector{0.0, 0.0})) << "step " << n;
+        // The normal problem does not see the tangential one (eq. 13-22 do not involve it).
+        ASSERT_EQ(frictionless.normal_force(sliding), rough.normal_force(head_on)) << "step " << n;
+        ASSERT_EQ(sliding[layer_touched], 0.0) << "step " << n;
+        ASSERT_EQ(head_on[layer_touched], 0.0) << "step " << n;
+        ASSERT_EQ(frictionless.step_work(), rough.step_work()) << "step " << n;
+    }
+    EXPECT_GT(sliding[8], 10.0);  // the contact grew over more than ten elements
+    EXPECT_NO_THROW(frictionless.check(sliding));
+    // Once the head-on contact slides, its layer steps the elements the Foundation touched.
+    rough.advance(head_on, overlap_at(300, 1.0), {1e-7, 0.0});
+    EXPECT_EQ(head_on[layer_touched], head_on[8]);
+    EXPECT_NE(rough.tangential_force(head_on)[0], 0.0);
+}
+
 #if MDR_COUNTS_ALLOCATIONS
 TEST(DemContactLaw, AStepAllocatesNothing) {
     auto law = make_law();
