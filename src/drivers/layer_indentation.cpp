@@ -25,9 +25,10 @@ constexpr double max_radius_over_thickness = 100.0;
 constexpr std::size_t max_layer_nodes = 512;
 
 // The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius at
-// the largest depth (under force control: its bound of the contact radius at the largest force with the softest
-// modulus, the half-width of resolve_numerics; the layer, stiffer, has a smaller contact at the same force), within
-// the profile's range (beyond it LayerContact::at_depth refuses the depth).
+// the largest depth (under spring control the largest base, as d <= z while F >= 0; under force control: its bound
+// of the contact radius at the largest force with the softest modulus, the half-width of resolve_numerics; the layer,
+// stiffer, has a smaller contact at the same force), within the profile's range (beyond it LayerContact::at_depth
+// refuses the depth).
 double largest_contact_radius(const ContactCase& contact_case) {
     const auto& indenter = *contact_case.indenter;
     if (indenter.is_flat_punch()) return indenter.max_radius();
@@ -58,16 +59,14 @@ void validate_layer(const ContactCase& contact_case) {
     if (!(layer.thickness > 0.0) || !std::isfinite(layer.thickness)) {
         throw InvalidInput("layer.thickness", format_value(layer.thickness), "must be finite and > 0");
     }
-    if (contact_case.control != Control::displacement && contact_case.control != Control::force) {
-        const std::string control = contact_case.shore                          ? "shore"
-                                    : contact_case.control == Control::impact ? "impact"
-                                                                              : "spring";
-        refuse("load.control", "\"" + control + "\"", "spring, impact and Shore control");
+    if (contact_case.shore || contact_case.control == Control::impact) {
+        refuse("load.control", contact_case.shore ? "\"shore\"" : "\"impact\"", "impact and Shore control");
     }
-    if (contact_case.control == Control::force && contact_case.material.viscosity() > 0.0) {
+    if (contact_case.control != Control::displacement && contact_case.material.viscosity() > 0.0) {
         refuse("material.eta", format_value(contact_case.material.viscosity()),
-               "a parallel dashpot under force control");
+               "a parallel dashpot under force or spring control");
     }
+    if (!contact_case.force_pauses.empty()) refuse("load.force_pauses", "[...]", "a force pause");
     if (contact_case.load.harmonic) refuse("load.harmonic", "[...]", "a harmonic load");
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
     if (!contact_case.snapshots.empty()) refuse("output.snapshots", "[...]", "a pressure snapshot");
@@ -113,12 +112,22 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
 
     const auto& material = contact_case.material;
     const bool force_control = contact_case.control == Control::force;
-    // The depth's scale: the largest prescribed, or under force control the profile's at the largest radius (a
-    // flat punch's profile is flat: its radius then, so that the solves' brackets grow from a non-zero step).
+    const bool spring = contact_case.control == Control::spring;
+    // Spring control: F = k (z - d), i.e. F(d) + k d = k z; force control: F(d) = the force (k = 0).
+    const double stiffness = spring ? *contact_case.spring_constant : 0.0;
+    if (spring && grid.size() > 1 && grid[1].time == grid[0].time) {
+        grid.erase(grid.begin());  // the base starts where it is (z <= 0, validated): no jump from z = 0
+    }
+    // The depth's scale: the largest prescribed (under spring control the base's: d <= z while F >= 0), or under
+    // force control the profile's at the largest radius (a flat punch's profile is flat: its radius then, so that the
+    // solves' brackets grow from a non-zero step).
     const double profile_depth = contact_case.indenter->equivalent(largest_radius);
-    const double largest_depth = !force_control ? history.max_value()
+    const double largest_depth = !force_control ? std::max(history.max_value(), 0.0)
                                  : profile_depth > 0.0 && std::isfinite(profile_depth) ? profile_depth
                                                                                        : largest_radius;
+    // The force of a trial depth is exact to ~1.5e-8 (the contact solve's depth to 1e-8): the depth solves' force
+    // tolerance is no finer than 5e-8 of the largest force (under spring control at most k max z).
+    const double force_tolerance = 5e-8 * (spring ? stiffness * largest_depth : history.max_value());
     LayerStepper stepper(material, layer, unit_plane_modulus, grid.front().time, largest_depth);
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     std::size_t reported = 0;
@@ -128,7 +137,7 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
         const LayerStep& now = stepper.current();
         LayerStep next = now;
         double depth = node.value;
-        if (!force_control) {
+        if (contact_case.control == Control::displacement) {
             next = now.phase == LayerPhase::approach && depth <= 0.0 ? stepper.wait(node.time)
                    : now.phase <= LayerPhase::growing && depth >= now.centre ? stepper.grow(node.time, depth)
                    : now.phase != LayerPhase::lifted_off                     ? stepper.recede(node.time, depth)
@@ -137,37 +146,41 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
                 refuse_regrowth(node.time);  // the indenter reaches the recovering surface
             }
         } else {
-            const double target = std::max(node.value, 0.0);
-            // The force of a trial depth is exact to ~1.5e-8 (the contact solve's depth to 1e-8): no finer.
-            const double tolerance = 5e-8 * history.max_value();
+            // The base z (spring), or the force (its round-off below zero is no pull).
+            const double target = spring ? node.value : std::max(node.value, 0.0);
+            const double right_side = spring ? stiffness * target : target;
             const double change = now.centre - previous_centre;
-            const auto solve = [&](auto&& trial) {  // the depth at which the step's force is the target
-                const auto residual = [&](double d) { return trial(d).force - target; };
+            const auto solve = [&](auto&& trial) {  // the depth at which F(d) + k d = the right side
+                const auto residual = [&](double d) { return trial(d).force + stiffness * d - right_side; };
                 // From the last step's change repeated, bracketed in steps of a tenth of it: the prediction is
                 // second order, so the bracket usually closes at the first step.
                 const double guess = std::max(now.centre + change, 0.0);
                 return numerics::monotone_root(residual, guess, residual(guess),
-                                               std::max(0.1 * std::abs(change), 1e-6 * largest_depth), tolerance,
-                                               1e-12 * largest_depth, false);
+                                               std::max(0.1 * std::abs(change), 1e-6 * largest_depth),
+                                               force_tolerance, 1e-12 * largest_depth, false);
             };
-            const auto recede = [&] {  // the indenter rides on the free surface once the force is zero
-                return target == 0.0 ? stepper.recover(node.time)
-                                     : stepper.recede(node.time, solve([&](double d) {
-                                           return stepper.recede(node.time, d);
-                                       }));
+            const auto recede = [&] {  // under zero force the indenter rides on the free surface
+                return stiffness == 0.0 && target == 0.0 ? stepper.recover(node.time)
+                                                         : stepper.recede(node.time, solve([&](double d) {
+                                                               return stepper.recede(node.time, d);
+                                                           }));
             };
-            if (now.phase == LayerPhase::approach && target == 0.0) {
+            if (now.phase == LayerPhase::approach && right_side <= 0.0) {  // the surface not reached: F = 0
                 next = stepper.wait(node.time);
             } else if (now.phase == LayerPhase::lifted_off) {
-                if (target > 0.0) refuse_regrowth(node.time);  // the recovering surface would be loaded again
                 next = stepper.recover(node.time);
+                // The recovering surface would be loaded again: a force, or the spring's indenter reaching it.
+                if (right_side - stiffness * next.centre > stiffness * 1e-9 * largest_depth) {
+                    refuse_regrowth(node.time);
+                }
             } else if (now.phase == LayerPhase::receding) {
                 next = recede();
             } else {
                 next = stepper.grow(node.time, solve([&](double d) { return stepper.grow(node.time, d); }));
                 if (now.phase == LayerPhase::growing && next.centre < now.centre) next = recede();
             }
-            depth = next.centre;
+            // Without force the spring's indenter hangs at the base, apart from the surface.
+            depth = spring && next.force == 0.0 ? target : next.centre;
         }
         if (next.grows_again) refuse_regrowth(node.time);
         previous_centre = now.centre;
@@ -178,6 +191,7 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
             result.depth.push_back(depth);
             result.force.push_back(next.force);
             result.radius.push_back(next.contact.contact_radius);
+            if (spring) result.base.push_back(node.value);
         }
         const auto percent = static_cast<std::size_t>(100.0 * static_cast<double>(i + 1) /
                                                       static_cast<double>(grid.size()));

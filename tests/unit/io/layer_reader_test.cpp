@@ -43,9 +43,13 @@ TEST(LayerReader, RefusesBadValues) {
 }
 
 TEST(LayerReader, RefusesWhatIsNotBuiltOnALayer) {
-    EXPECT_EQ(refused_key(with("control = \"spring\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-6]]\nspring_constant = 1.0\n",
-                               bonded)),
-              "load.control");
+    // Spring control is built (without a parallel dashpot or a force pause).
+    const std::string spring = "control = \"spring\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-6]]\nspring_constant = 1.0\n";
+    EXPECT_EQ(refused_key(with(spring, bonded)), "(accepted)");
+    EXPECT_EQ(refused_key(with(spring + "force_pauses = [[0.2, 0.4]]\n", bonded)), "load.force_pauses");
+    EXPECT_EQ(refused_key("[material]\nmodel = \"kelvin_voigt\"\nG = 1.0e3\neta = 1.0\n[indenter]\nshape = \"sphere\"\n"
+                          "R = 1.0e-5\n[load]\n" + spring + "[layer]\n" + bonded),
+              "material.eta");
     // Force control is built (without a parallel dashpot).
     const std::string force = "control = \"force\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-9]]\n";
     EXPECT_EQ(refused_key(with(force, bonded)), "(accepted)");
