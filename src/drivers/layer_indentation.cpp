@@ -10,6 +10,7 @@
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
+#include "layer_impact.hpp"
 #include "layer_stepping.hpp"
 
 namespace mdr::drivers {
@@ -25,13 +26,17 @@ constexpr double max_radius_over_thickness = 100.0;
 constexpr std::size_t max_layer_nodes = 512;
 
 // The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius at
-// the largest depth (under spring control the largest base, as d <= z while F >= 0; under force control: its bound
+// the largest depth (under spring control the largest base, as d <= z while F >= 0; under force control and in an
+// impact: its bound
 // of the contact radius at the largest force with the softest modulus, the half-width of resolve_numerics; the layer,
 // stiffer, has a smaller contact at the same force), within the profile's range (beyond it LayerContact::at_depth
 // refuses the depth).
 double largest_contact_radius(const ContactCase& contact_case) {
     const auto& indenter = *contact_case.indenter;
     if (indenter.is_flat_punch()) return indenter.max_radius();
+    if (contact_case.control == Control::impact) {  // the margin on the half-space's bound (at the softest modulus)
+        return std::min(indenter.max_radius(), layer_radius_margin * resolve_numerics(contact_case).half_width);
+    }
     const double half_space = contact_case.control == Control::force
                                   ? resolve_numerics(contact_case).half_width
                                   : indenter.contact_radius(contact_case.load.history->max_value());
@@ -59,12 +64,11 @@ void validate_layer(const ContactCase& contact_case) {
     if (!(layer.thickness > 0.0) || !std::isfinite(layer.thickness)) {
         throw InvalidInput("layer.thickness", format_value(layer.thickness), "must be finite and > 0");
     }
-    if (contact_case.shore || contact_case.control == Control::impact) {
-        refuse("load.control", contact_case.shore ? "\"shore\"" : "\"impact\"", "impact and Shore control");
-    }
+    if (contact_case.shore) refuse("load.control", "\"shore\"", "Shore control");
+    if (contact_case.oblique) refuse("load.tangential_velocity", "[...]", "an oblique impact");
     if (contact_case.control != Control::displacement && contact_case.material.viscosity() > 0.0) {
         refuse("material.eta", format_value(contact_case.material.viscosity()),
-               "a parallel dashpot under force or spring control");
+               "a parallel dashpot under force or spring control or in an impact");
     }
     if (!contact_case.force_pauses.empty()) refuse("load.force_pauses", "[...]", "a force pause");
     if (contact_case.load.harmonic) refuse("load.harmonic", "[...]", "a harmonic load");
@@ -92,7 +96,6 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     if (!observers.empty()) refuse("layer", "[...]", "a run with step observers (a sweep's measures)");
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
-    const auto& history = *contact_case.load.history;
     const std::size_t nodes = contact_case.numerics.elements.value_or(contact::default_layer_nodes);
     result.numerics.elements = nodes;
     const double largest_radius = largest_contact_radius(contact_case);
@@ -101,6 +104,16 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     constexpr double unit_plane_modulus = 4.0;
     const contact::LayerContact layer(*contact_case.layer, 0.5, contact_case.indenter,
                                       std::max(largest_radius, 1e-300), nodes);
+    const double profile_depth = contact_case.indenter->equivalent(largest_radius);
+    // The depth's scale under force control and in an impact: the profile's at the largest radius (a flat punch's
+    // profile is flat: its radius then, so that the solves' brackets grow from a non-zero step).
+    const double solved_depth_scale = profile_depth > 0.0 && std::isfinite(profile_depth) ? profile_depth
+                                                                                           : largest_radius;
+    if (contact_case.control == Control::impact) {
+        return run_layer_impact(contact_case, layer, unit_plane_modulus, solved_depth_scale, result.numerics,
+                                progress);
+    }
+    const auto& history = *contact_case.load.history;
     auto grid = make_time_grid(history, contact_case.end_time, result.numerics.time_step,
                                result.numerics.min_segment_steps, {});
     if (result.numerics.grading_ratio > 0.0) {  // force control after a fast change, as on the half-space
@@ -118,13 +131,8 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     if (spring && grid.size() > 1 && grid[1].time == grid[0].time) {
         grid.erase(grid.begin());  // the base starts where it is (z <= 0, validated): no jump from z = 0
     }
-    // The depth's scale: the largest prescribed (under spring control the base's: d <= z while F >= 0), or under
-    // force control the profile's at the largest radius (a flat punch's profile is flat: its radius then, so that the
-    // solves' brackets grow from a non-zero step).
-    const double profile_depth = contact_case.indenter->equivalent(largest_radius);
-    const double largest_depth = !force_control ? std::max(history.max_value(), 0.0)
-                                 : profile_depth > 0.0 && std::isfinite(profile_depth) ? profile_depth
-                                                                                       : largest_radius;
+    // The depth's scale: the largest prescribed (under spring control the base's: d <= z while F >= 0).
+    const double largest_depth = force_control ? solved_depth_scale : std::max(history.max_value(), 0.0);
     // The force of a trial depth is exact to ~1.5e-8 (the contact solve's depth to 1e-8): the depth solves' force
     // tolerance is no finer than 5e-8 of the largest force (under spring control at most k max z).
     const double force_tolerance = 5e-8 * (spring ? stiffness * largest_depth : history.max_value());
