@@ -160,10 +160,19 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
             const double change = now.centre - previous_centre;
             const auto solve = [&](auto&& trial) {  // the depth at which F(d) + k d = the right side
                 const auto residual = [&](double d) { return trial(d).force + stiffness * d - right_side; };
-                // From the last step's change repeated, bracketed in steps of a tenth of it: the prediction is
-                // second order, so the bracket usually closes at the first step.
-                const double guess = std::max(now.centre + change, 0.0);
-                return numerics::monotone_root(residual, guess, residual(guess),
+                // From the last step's change repeated (second order), corrected by Newton with a growing step's
+                // slope (dF/dd of eq. L11: one correction usually meets the tolerance), then bracketed in steps of
+                // a tenth of the change where that is not enough (a receding step: no slope).
+                double start = std::max(now.centre + change, 0.0);
+                LayerStep tried = trial(start);
+                double value = tried.force + stiffness * start - right_side;
+                for (int newton = 0; newton < 2 && tried.force_slope > 0.0 && std::abs(value) > force_tolerance;
+                     ++newton) {
+                    start = std::max(start - value / (tried.force_slope + stiffness), 0.0);
+                    tried = trial(start);
+                    value = tried.force + stiffness * start - right_side;
+                }
+                return numerics::monotone_root(residual, start, value,
                                                std::max(0.1 * std::abs(change), 1e-6 * largest_depth),
                                                force_tolerance, 1e-12 * largest_depth, false);
             };

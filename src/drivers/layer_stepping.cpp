@@ -18,6 +18,7 @@ LayerStepper::LayerStepper(const rheology::Rheology& material, const contact::La
 LayerStep LayerStepper::wait(double time) const {
     LayerStep next = current_;
     next.time = time;
+    next.force_slope = 0.0;
     return next;
 }
 
@@ -37,6 +38,7 @@ LayerStep LayerStepper::grow(double time, double depth) const {
     // G(t) = G_inf + eta delta(t) + sum G_k exp(-t/tau_k) in eq. L11, F_el linear over the step.
     next.force = material_->equilibrium_modulus() * next.elastic_force + next.force_branches.weighted_sum() +
                  (step > 0.0 ? material_->viscosity() * force_change / step : 0.0);
+    next.force_slope = next.force_branches.step_modulus(step) * unit_modulus_ * next.contact.stiffness;
     next.position = static_cast<double>(loading_.steps() + 1);
     return next;
 }
@@ -46,6 +48,7 @@ LayerStep LayerStepper::recede(double time, double depth) const {
     const double step = time - current_.time, change = depth - current_.centre;
     const double rate = step > 0.0 ? change / step : 0.0;
     next.phase = LayerPhase::receding;
+    next.force_slope = 0.0;
     next.time = time;
     next.centre = depth;
     next.centre_branches.advance(step, change);
@@ -77,6 +80,7 @@ LayerStep LayerStepper::recover(double time) const {
     // int_0^t G(t - t') dw0(t') = 0, w0 linear over the step (eq. L14).
     const double change = next.centre_branches.free_change(step, current_.centre);
     next.phase = LayerPhase::lifted_off;
+    next.force_slope = 0.0;
     next.time = time;
     next.centre += change;
     next.centre_branches.advance(step, change);

@@ -24,6 +24,7 @@ struct LayerStep {
     double centre = 0.0;         ///< w0 [m]: the depth while in contact, the free surface after
     double force = 0.0;          ///< F [N]
     double elastic_force = 0.0;  ///< F_el at the contact's depth (growing) [N per Pa of shear modulus]
+    double force_slope = 0.0;    ///< dF/dd [N/m] of a growing step tried at this depth (eq. L11); 0 otherwise
     double position = 0.0;       ///< loading position of t1 (LoadingRecord); while growing, the last node's
     bool grows_again = false;    ///< receding: t1 would move forward (outside Ting's solution)
     contact::LayerContactState contact;  ///< the elastic layer's equilibrium at a(t); none once lifted off
