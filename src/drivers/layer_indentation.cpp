@@ -137,6 +137,7 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     // tolerance is no finer than 5e-8 of the largest force (under spring control at most k max z).
     const double force_tolerance = 5e-8 * (spring ? stiffness * largest_depth : history.max_value());
     LayerStepper stepper(material, layer, unit_plane_modulus, grid.front().time, largest_depth);
+    const bool by_radius = !contact_case.indenter->is_flat_punch();
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     std::size_t reported = 0;
     double previous_centre = 0.0;
@@ -193,7 +194,10 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
             } else if (now.phase == LayerPhase::receding) {
                 next = recede();
             } else {
-                next = stepper.grow(node.time, solve([&](double d) { return stepper.grow(node.time, d); }));
+                // Over the contact radius (one elastic solve a trial); a flat punch's is fixed: over the depth.
+                const auto grow = [&](double d) { return stepper.grow(node.time, d); };
+                next = by_radius ? stepper.grow_to(node.time, stiffness, right_side, force_tolerance)
+                                 : stepper.grow(node.time, solve(grow));
                 if (now.phase == LayerPhase::growing && next.centre < now.centre) next = recede();
             }
             // Without force the spring's indenter hangs at the base, apart from the surface.

@@ -44,6 +44,12 @@ public:
     /// A step to `time` with the indenter at `depth`, the contact growing (Lee-Radok, eq. L11; meaningful for a
     /// depth >= the current one).
     LayerStep grow(double time, double depth) const;
+    /// The growing step to `time` (eq. L11) at which F + k d = `right_side` [N] with k = `stiffness` [N/m] (force
+    /// control: k = 0; spring control; an impact's trapezoidal rule), solved over the contact radius to
+    /// `force_tolerance` [N]: one elastic solve a trial (at_radius), none for the depth. A contact of zero radius
+    /// where the force at no contact already exceeds the right side (then the contact cannot grow). Not for a flat
+    /// punch (its radius is fixed). Throws mdr::InvalidInput (key `layer`) beyond the layer's largest radius.
+    LayerStep grow_to(double time, double stiffness, double right_side, double force_tolerance) const;
     /// A step to `time` with the indenter at `depth`, the contact receding (Ting, eq. L12, L13): lifted off when
     /// int_0^t G dd <= 0. Needs a growing phase before.
     LayerStep recede(double time, double depth) const;
@@ -55,12 +61,16 @@ public:
     void commit(const LayerStep& step);
 
 private:
+    // The growing step with the elastic equilibrium `contact` at `depth` (< 0: the contact's own depth).
+    LayerStep grow_with(double time, const contact::LayerContactState& contact, double depth) const;
+
     const rheology::Rheology* material_;
     const contact::LayerContact* layer_;
     double unit_modulus_;
     double largest_depth_;
     LoadingRecord loading_;
     LayerStep current_;
+    double previous_radius_ = 0.0;  // the contact radius of the state before the current one
     // The last equilibrium solved, tried or committed: where the next solve starts (the force-controlled driver
     // tries depths ever closer to its root).
     mutable contact::LayerContactState hint_;
