@@ -71,7 +71,10 @@ void validate_layer(const ContactCase& contact_case) {
                "a parallel dashpot under force or spring control or in an impact");
     }
     if (!contact_case.force_pauses.empty()) refuse("load.force_pauses", "[...]", "a force pause");
-    if (contact_case.load.harmonic) refuse("load.harmonic", "[...]", "a harmonic load");
+    if (contact_case.load.harmonic) {  // docs/theory.md, "Layers": the general case of Ting (1968)
+        refuse("load.harmonic", "[...]",
+               "a harmonic load (its contact grows again after it shrank, outside Ting's 1966 solution)");
+    }
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
     if (!contact_case.snapshots.empty()) refuse("output.snapshots", "[...]", "a pressure snapshot");
     if (!contact_case.tangential_exact) {
