@@ -54,6 +54,9 @@ IndentationResult run_layer_impact(const ContactCase& contact_case, const contac
         const auto recede = [&] {
             return stepper.recede(next_time, solve([&](double d) { return stepper.recede(next_time, d); }));
         };
+        // Over the depth in both phases, not over the radius (LayerStepper::grow_to): the going in and the coming out
+        // then solve the contact alike (depth to 1e-8), and their work errors cancel. An elastic layer's 1 - e was
+        // 1.4e-10 at 0.5 us, second order; with the going in exact by grow_to, 1.5e-9 (the coming out's alone).
         LayerStep next = now.phase == LayerPhase::receding
                              ? recede()
                              : stepper.grow(next_time, solve([&](double d) { return stepper.grow(next_time, d); }));
