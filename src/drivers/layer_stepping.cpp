@@ -34,15 +34,16 @@ LayerStep LayerStepper::grow_to(double time, double stiffness, double right_side
     const double largest_radius = layer_->max_contact_radius();
     LayerStep last = current_;
     const auto residual = [&](double radius) {
-        if (radius > largest_radius) {
-            throw InvalidInput("layer", "contact radius " + format_value(radius),
+        const double inside = std::clamp(radius, 0.0, largest_radius);
+        last = grow_with(time, inside > 0.0 ? layer_->at_radius(inside) : contact::LayerContactState{}, -1.0);
+        const double value = last.force + stiffness * last.centre - right_side;
+        if (radius > largest_radius && value <= 0.0) {
+            throw InvalidInput("layer", "force " + format_value(last.force),
                                "the contact radius would exceed " + format_value(largest_radius) +
                                    ", the largest the layer was prepared for");
         }
-        last = grow_with(time, radius > 0.0 ? layer_->at_radius(radius) : contact::LayerContactState{}, -1.0);
-        const double value = last.force + stiffness * last.centre - right_side;
-        // Continued linearly below a = 0 (no contact), increasing, so that the root finder may bracket it.
-        return radius >= 0.0 ? value : value + radius / largest_radius * std::max(std::abs(value), force_tolerance);
+        // Continued linearly outside [0, largest radius], increasing, so that the root finder may bracket it.
+        return value + (radius - inside) / largest_radius * std::max(std::abs(value), force_tolerance);
     };
     // From the last change of the radius repeated, bracketed in steps of a tenth of it.
     const double radius = current_.contact.contact_radius, change = radius - previous_radius_;
@@ -50,7 +51,7 @@ LayerStep LayerStepper::grow_to(double time, double stiffness, double right_side
     const double root = numerics::monotone_root(residual, start, residual(start),
                                                 std::max(0.1 * std::abs(change), 1e-6 * largest_radius),
                                                 force_tolerance, 1e-12 * largest_radius, false);
-    if (last.contact.contact_radius != std::max(root, 0.0)) residual(root);
+    if (last.contact.contact_radius != std::clamp(root, 0.0, largest_radius)) residual(root);
     if (last.contact.contact_radius > 0.0) hint_ = last.contact;
     return last;
 }
