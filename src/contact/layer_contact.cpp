@@ -92,9 +92,9 @@ LayerContactState LayerContact::at_radius(double contact_radius) const {
         force_depth += 2.0 * w[j] * unit_depth[j];  // eq. L5
         force_profile += 2.0 * w[j] * profile[j];
     }
-    if (indenter_->is_flat_punch()) return {a, 1.0, force_depth};
+    if (indenter_->is_flat_punch()) return {a, 1.0, force_depth, force_depth};
     const double depth = edge_profile / edge_depth;  // q(a) = 0 (eq. L6)
-    return {a, depth, depth * force_depth - force_profile};
+    return {a, depth, depth * force_depth - force_profile, force_depth};
 }
 
 LayerContactState LayerContact::at_depth(double depth, double radius_hint) const {
@@ -106,7 +106,7 @@ LayerContactState LayerContact::at_depth(double depth, const LayerContactState& 
     if (!(depth > 0.0)) return {};
     if (indenter_->is_flat_punch()) {
         const LayerContactState unit = at_radius(max_contact_radius_);
-        return {unit.contact_radius, depth, depth * unit.force};
+        return {unit.contact_radius, depth, depth * unit.force, unit.force};
     }
     // Depth to 1e-8: the force to ~1.5e-8 (a sphere, F ~ d^1.5), below the default nodes' 1e-7; from a nearby
     // solution the first regula falsi point often meets it (3.6 solves a step on average in a run).

@@ -11,6 +11,7 @@
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
+#include "layer_impact.hpp"
 #include "layer_stepping.hpp"
 
 namespace mdr::drivers {
@@ -26,12 +27,17 @@ constexpr double max_radius_over_thickness = 100.0;
 constexpr std::size_t max_layer_nodes = 512;
 
 // The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius at
-// the largest depth (under force control: its bound of the contact radius at the largest force with the softest
-// modulus, the half-width of resolve_numerics; the layer, stiffer, has a smaller contact at the same force), within
-// the profile's range (beyond it LayerContact::at_depth refuses the depth).
+// the largest depth (under spring control the largest base, as d <= z while F >= 0; under force control and in an
+// impact: its bound
+// of the contact radius at the largest force with the softest modulus, the half-width of resolve_numerics; the layer,
+// stiffer, has a smaller contact at the same force), within the profile's range (beyond it LayerContact::at_depth
+// refuses the depth).
 double largest_contact_radius(const ContactCase& contact_case) {
     const auto& indenter = *contact_case.indenter;
     if (indenter.is_flat_punch()) return indenter.max_radius();
+    if (contact_case.impact()) {  // the margin on the half-space's bound (at the softest modulus)
+        return std::min(indenter.max_radius(), layer_radius_margin * resolve_numerics(contact_case).half_width);
+    }
     const double half_space = std::holds_alternative<ForceControl>(contact_case.control)
                                   ? resolve_numerics(contact_case).half_width
                                   : indenter.contact_radius(contact_case.load.history->max_value());
@@ -59,17 +65,17 @@ void validate_layer(const ContactCase& contact_case) {
     if (!(layer.thickness > 0.0) || !std::isfinite(layer.thickness)) {
         throw InvalidInput("layer.thickness", format_value(layer.thickness), "must be finite and > 0");
     }
-    const bool displacement = std::holds_alternative<DisplacementControl>(contact_case.control);
-    const bool force = std::holds_alternative<ForceControl>(contact_case.control);
-    if (!displacement && !force) {
-        refuse("load.control", "\"" + control_kind(contact_case.control).name + "\"",
-               "spring, impact and Shore control");
-    }
-    if (force && contact_case.material.viscosity() > 0.0) {
+    if (contact_case.shore()) refuse("load.control", "\"shore\"", "Shore control");
+    if (contact_case.oblique()) refuse("load.tangential_velocity", "[...]", "an oblique impact");
+    if (!std::holds_alternative<DisplacementControl>(contact_case.control) && contact_case.material.viscosity() > 0.0) {
         refuse("material.eta", format_value(contact_case.material.viscosity()),
-               "a parallel dashpot under force control");
+               "a parallel dashpot under force or spring control or in an impact");
     }
-    if (contact_case.load.harmonic) refuse("load.harmonic", "[...]", "a harmonic load");
+    if (contact_case.spring() && !contact_case.spring()->force_pauses.empty()) refuse("load.force_pauses", "[...]", "a force pause");
+    if (contact_case.load.harmonic) {  // docs/theory.md, "Layers": the general case of Ting (1968)
+        refuse("load.harmonic", "[...]",
+               "a harmonic load (its contact grows again after it shrank, outside Ting's 1966 solution)");
+    }
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
     if (!contact_case.snapshots.empty()) refuse("output.snapshots", "[...]", "a pressure snapshot");
     if (!contact_case.tangential_exact) {
@@ -94,7 +100,6 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     if (!observers.empty()) refuse("layer", "[...]", "a run with step observers (a sweep's measures)");
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
-    const auto& history = *contact_case.load.history;
     const std::size_t nodes = contact_case.numerics.elements.value_or(contact::default_layer_nodes);
     result.numerics.elements = nodes;
     const double largest_radius = largest_contact_radius(contact_case);
@@ -103,6 +108,16 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     constexpr double unit_plane_modulus = 4.0;
     const contact::LayerContact layer(*contact_case.layer, 0.5, contact_case.indenter,
                                       std::max(largest_radius, 1e-300), nodes);
+    const double profile_depth = contact_case.indenter->equivalent(largest_radius);
+    // The depth's scale under force control and in an impact: the profile's at the largest radius (a flat punch's
+    // profile is flat: its radius then, so that the solves' brackets grow from a non-zero step).
+    const double solved_depth_scale = profile_depth > 0.0 && std::isfinite(profile_depth) ? profile_depth
+                                                                                           : largest_radius;
+    if (contact_case.impact()) {
+        return run_layer_impact(contact_case, layer, unit_plane_modulus, solved_depth_scale, result.numerics,
+                                progress);
+    }
+    const auto& history = *contact_case.load.history;
     auto grid = make_time_grid(history, contact_case.end_time, result.numerics.time_step,
                                result.numerics.min_segment_steps, {});
     if (result.numerics.grading_ratio > 0.0) {  // force control after a fast change, as on the half-space
@@ -114,13 +129,19 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
 
     const auto& material = contact_case.material;
     const bool force_control = std::holds_alternative<ForceControl>(contact_case.control);
-    // The depth's scale: the largest prescribed, or under force control the profile's at the largest radius (a
-    // flat punch's profile is flat: its radius then, so that the solves' brackets grow from a non-zero step).
-    const double profile_depth = contact_case.indenter->equivalent(largest_radius);
-    const double largest_depth = !force_control ? history.max_value()
-                                 : profile_depth > 0.0 && std::isfinite(profile_depth) ? profile_depth
-                                                                                       : largest_radius;
+    const bool spring = contact_case.spring() != nullptr;
+    // Spring control: F = k (z - d), i.e. F(d) + k d = k z; force control: F(d) = the force (k = 0).
+    const double stiffness = spring ? contact_case.spring()->spring_constant : 0.0;
+    if (spring && grid.size() > 1 && grid[1].time == grid[0].time) {
+        grid.erase(grid.begin());  // the base starts where it is (z <= 0, validated): no jump from z = 0
+    }
+    // The depth's scale: the largest prescribed (under spring control the base's: d <= z while F >= 0).
+    const double largest_depth = force_control ? solved_depth_scale : std::max(history.max_value(), 0.0);
+    // The force of a trial depth is exact to ~1.5e-8 (the contact solve's depth to 1e-8): the depth solves' force
+    // tolerance is no finer than 5e-8 of the largest force (under spring control at most k max z).
+    const double force_tolerance = 5e-8 * (spring ? stiffness * largest_depth : history.max_value());
     LayerStepper stepper(material, layer, unit_plane_modulus, grid.front().time, largest_depth);
+    const bool by_radius = !contact_case.indenter->is_flat_punch();
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     std::size_t reported = 0;
     double previous_centre = 0.0;
@@ -129,7 +150,7 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
         const LayerStep& now = stepper.current();
         LayerStep next = now;
         double depth = node.value;
-        if (!force_control) {
+        if (std::holds_alternative<DisplacementControl>(contact_case.control)) {
             next = now.phase == LayerPhase::approach && depth <= 0.0 ? stepper.wait(node.time)
                    : now.phase <= LayerPhase::growing && depth >= now.centre ? stepper.grow(node.time, depth)
                    : now.phase != LayerPhase::lifted_off                     ? stepper.recede(node.time, depth)
@@ -138,37 +159,53 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
                 refuse_regrowth(node.time);  // the indenter reaches the recovering surface
             }
         } else {
-            const double target = std::max(node.value, 0.0);
-            // The force of a trial depth is exact to ~1.5e-8 (the contact solve's depth to 1e-8): no finer.
-            const double tolerance = 5e-8 * history.max_value();
+            // The base z (spring), or the force (its round-off below zero is no pull).
+            const double target = spring ? node.value : std::max(node.value, 0.0);
+            const double right_side = spring ? stiffness * target : target;
             const double change = now.centre - previous_centre;
-            const auto solve = [&](auto&& trial) {  // the depth at which the step's force is the target
-                const auto residual = [&](double d) { return trial(d).force - target; };
-                // From the last step's change repeated, bracketed in steps of a tenth of it: the prediction is
-                // second order, so the bracket usually closes at the first step.
-                const double guess = std::max(now.centre + change, 0.0);
-                return numerics::monotone_root(residual, guess, residual(guess),
-                                               std::max(0.1 * std::abs(change), 1e-6 * largest_depth), tolerance,
-                                               1e-12 * largest_depth, false);
+            const auto solve = [&](auto&& trial) {  // the depth at which F(d) + k d = the right side
+                const auto residual = [&](double d) { return trial(d).force + stiffness * d - right_side; };
+                // From the last step's change repeated (second order), corrected by Newton with a growing step's
+                // slope (dF/dd of eq. L11: one correction usually meets the tolerance), then bracketed in steps of
+                // a tenth of the change where that is not enough (a receding step: no slope).
+                double start = std::max(now.centre + change, 0.0);
+                LayerStep tried = trial(start);
+                double value = tried.force + stiffness * start - right_side;
+                for (int newton = 0; newton < 2 && tried.force_slope > 0.0 && std::abs(value) > force_tolerance;
+                     ++newton) {
+                    start = std::max(start - value / (tried.force_slope + stiffness), 0.0);
+                    tried = trial(start);
+                    value = tried.force + stiffness * start - right_side;
+                }
+                return numerics::monotone_root(residual, start, value,
+                                               std::max(0.1 * std::abs(change), 1e-6 * largest_depth),
+                                               force_tolerance, 1e-12 * largest_depth, false);
             };
-            const auto recede = [&] {  // the indenter rides on the free surface once the force is zero
-                return target == 0.0 ? stepper.recover(node.time)
-                                     : stepper.recede(node.time, solve([&](double d) {
-                                           return stepper.recede(node.time, d);
-                                       }));
+            const auto recede = [&] {  // under zero force the indenter rides on the free surface
+                return stiffness == 0.0 && target == 0.0 ? stepper.recover(node.time)
+                                                         : stepper.recede(node.time, solve([&](double d) {
+                                                               return stepper.recede(node.time, d);
+                                                           }));
             };
-            if (now.phase == LayerPhase::approach && target == 0.0) {
+            if (now.phase == LayerPhase::approach && right_side <= 0.0) {  // the surface not reached: F = 0
                 next = stepper.wait(node.time);
             } else if (now.phase == LayerPhase::lifted_off) {
-                if (target > 0.0) refuse_regrowth(node.time);  // the recovering surface would be loaded again
                 next = stepper.recover(node.time);
+                // The recovering surface would be loaded again: a force, or the spring's indenter reaching it.
+                if (right_side - stiffness * next.centre > stiffness * 1e-9 * largest_depth) {
+                    refuse_regrowth(node.time);
+                }
             } else if (now.phase == LayerPhase::receding) {
                 next = recede();
             } else {
-                next = stepper.grow(node.time, solve([&](double d) { return stepper.grow(node.time, d); }));
+                // Over the contact radius (one elastic solve a trial); a flat punch's is fixed: over the depth.
+                const auto grow = [&](double d) { return stepper.grow(node.time, d); };
+                next = by_radius ? stepper.grow_to(node.time, stiffness, right_side, force_tolerance)
+                                 : stepper.grow(node.time, solve(grow));
                 if (now.phase == LayerPhase::growing && next.centre < now.centre) next = recede();
             }
-            depth = next.centre;
+            // Without force the spring's indenter hangs at the base, apart from the surface.
+            depth = spring && next.force == 0.0 ? target : next.centre;
         }
         if (next.grows_again) refuse_regrowth(node.time);
         previous_centre = now.centre;
@@ -179,6 +216,7 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
             result.depth.push_back(depth);
             result.force.push_back(next.force);
             result.radius.push_back(next.contact.contact_radius);
+            if (spring) result.base.push_back(node.value);
         }
         const auto percent = static_cast<std::size_t>(100.0 * static_cast<double>(i + 1) /
                                                       static_cast<double>(grid.size()));

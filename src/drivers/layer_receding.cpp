@@ -28,14 +28,17 @@ double PronyBranches::free_change(double step, double signal) const {
     if (!(step > 0.0)) return 0.0;
     // G_inf (s + c) + sum_k G_k (exp(-step/tau_k) h_k + gain_k c) + eta c / step = 0 for the change c.
     double stress = material_->equilibrium_modulus() * signal;
-    double stiffness = material_->equilibrium_modulus() + material_->viscosity() / step;
     const auto& terms = material_->terms();
     for (std::size_t k = 0; k < terms.size(); ++k) {
-        const double tau = terms[k].relaxation_time;
-        stress += terms[k].modulus * std::exp(-step / tau) * values_[k];
-        stiffness += terms[k].modulus * linear_gain(step, tau);
+        stress += terms[k].modulus * std::exp(-step / terms[k].relaxation_time) * values_[k];
     }
-    return -stress / stiffness;
+    return -stress / step_modulus(step);
+}
+
+double PronyBranches::step_modulus(double step) const {
+    double modulus = material_->equilibrium_modulus() + (step > 0.0 ? material_->viscosity() / step : 0.0);
+    for (const auto& term : material_->terms()) modulus += term.modulus * linear_gain(step, term.relaxation_time);
+    return modulus;
 }
 
 double PronyBranches::weighted_sum() const {

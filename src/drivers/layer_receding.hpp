@@ -21,6 +21,9 @@ public:
     /// The change of the signal over `step` [s], linear over it, after which G_inf s + sum_k G_k h_k + eta ds/dt
     /// is zero (a free surface with the history of these branches and the value `signal` now; 0 when step = 0).
     double free_change(double step, double signal) const;
+    /// G_inf + sum_k G_k (tau_k / step) (1 - exp(-step/tau_k)) + eta / step: the change of G_inf s + sum_k G_k h_k
+    /// + eta ds/dt over `step` [s] per change of the signal, linear over it (the dashpot's part only when step > 0).
+    double step_modulus(double step) const;
     /// sum_k G_k h_k(t).
     double weighted_sum() const;
     /// The branches h_k.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
 
 namespace mdr::drivers {
@@ -18,25 +19,59 @@ LayerStepper::LayerStepper(const rheology::Rheology& material, const contact::La
 LayerStep LayerStepper::wait(double time) const {
     LayerStep next = current_;
     next.time = time;
+    next.force_slope = 0.0;
     return next;
 }
 
 LayerStep LayerStepper::grow(double time, double depth) const {
+    if (depth == current_.centre && current_.phase != LayerPhase::approach) {
+        return grow_with(time, current_.contact, depth);  // a hold: the same equilibrium
+    }
+    return grow_with(time, hint_ = layer_->at_depth(depth, hint_), depth);
+}
+
+LayerStep LayerStepper::grow_to(double time, double stiffness, double right_side, double force_tolerance) const {
+    const double largest_radius = layer_->max_contact_radius();
+    LayerStep last = current_;
+    const auto residual = [&](double radius) {
+        const double inside = std::clamp(radius, 0.0, largest_radius);
+        last = grow_with(time, inside > 0.0 ? layer_->at_radius(inside) : contact::LayerContactState{}, -1.0);
+        const double value = last.force + stiffness * last.centre - right_side;
+        if (radius > largest_radius && value <= 0.0) {
+            throw InvalidInput("layer", "force " + format_value(last.force),
+                               "the contact radius would exceed " + format_value(largest_radius) +
+                                   ", the largest the layer was prepared for");
+        }
+        // Continued linearly outside [0, largest radius], increasing, so that the root finder may bracket it.
+        return value + (radius - inside) / largest_radius * std::max(std::abs(value), force_tolerance);
+    };
+    // From the last change of the radius repeated, bracketed in steps of a tenth of it.
+    const double radius = current_.contact.contact_radius, change = radius - previous_radius_;
+    const double start = radius + change;
+    const double root = numerics::monotone_root(residual, start, residual(start),
+                                                std::max(0.1 * std::abs(change), 1e-6 * largest_radius),
+                                                force_tolerance, 1e-12 * largest_radius, false);
+    if (last.contact.contact_radius != std::clamp(root, 0.0, largest_radius)) residual(root);
+    if (last.contact.contact_radius > 0.0) hint_ = last.contact;
+    return last;
+}
+
+LayerStep LayerStepper::grow_with(double time, const contact::LayerContactState& contact, double depth) const {
     LayerStep next = current_;
+    if (depth < 0.0) depth = contact.depth;
     const double step = time - current_.time, change = depth - current_.centre;
     next.phase = LayerPhase::growing;
     next.time = time;
     next.centre = depth;
     next.centre_branches.advance(step, change);
-    if (change != 0.0 || current_.phase == LayerPhase::approach) {
-        next.contact = hint_ = layer_->at_depth(depth, hint_);  // else a hold: the same equilibrium
-    }
+    next.contact = contact;
     next.elastic_force = unit_modulus_ * next.contact.force;
     const double force_change = next.elastic_force - current_.elastic_force;
     next.force_branches.advance(step, force_change);
     // G(t) = G_inf + eta delta(t) + sum G_k exp(-t/tau_k) in eq. L11, F_el linear over the step.
     next.force = material_->equilibrium_modulus() * next.elastic_force + next.force_branches.weighted_sum() +
                  (step > 0.0 ? material_->viscosity() * force_change / step : 0.0);
+    next.force_slope = next.force_branches.step_modulus(step) * unit_modulus_ * next.contact.stiffness;
     next.position = static_cast<double>(loading_.steps() + 1);
     return next;
 }
@@ -46,6 +81,7 @@ LayerStep LayerStepper::recede(double time, double depth) const {
     const double step = time - current_.time, change = depth - current_.centre;
     const double rate = step > 0.0 ? change / step : 0.0;
     next.phase = LayerPhase::receding;
+    next.force_slope = 0.0;
     next.time = time;
     next.centre = depth;
     next.centre_branches.advance(step, change);
@@ -77,6 +113,7 @@ LayerStep LayerStepper::recover(double time) const {
     // int_0^t G(t - t') dw0(t') = 0, w0 linear over the step (eq. L14).
     const double change = next.centre_branches.free_change(step, current_.centre);
     next.phase = LayerPhase::lifted_off;
+    next.force_slope = 0.0;
     next.time = time;
     next.centre += change;
     next.centre_branches.advance(step, change);
@@ -87,6 +124,7 @@ LayerStep LayerStepper::recover(double time) const {
 
 void LayerStepper::commit(const LayerStep& step) {
     if (step.phase == LayerPhase::approach) loading_ = LoadingRecord(*material_, step.time);
+    previous_radius_ = current_.contact.contact_radius;
     if (step.phase == LayerPhase::growing) {
         loading_.append(step.time, step.centre, step.elastic_force, step.centre_branches, step.force_branches);
     }

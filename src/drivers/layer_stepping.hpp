@@ -24,6 +24,7 @@ struct LayerStep {
     double centre = 0.0;         ///< w0 [m]: the depth while in contact, the free surface after
     double force = 0.0;          ///< F [N]
     double elastic_force = 0.0;  ///< F_el at the contact's depth (growing) [N per Pa of shear modulus]
+    double force_slope = 0.0;    ///< dF/dd [N/m] of a growing step tried at this depth (eq. L11); 0 otherwise
     double position = 0.0;       ///< loading position of t1 (LoadingRecord); while growing, the last node's
     bool grows_again = false;    ///< receding: t1 would move forward (outside Ting's solution)
     contact::LayerContactState contact;  ///< the elastic layer's equilibrium at a(t); none once lifted off
@@ -43,6 +44,12 @@ public:
     /// A step to `time` with the indenter at `depth`, the contact growing (Lee-Radok, eq. L11; meaningful for a
     /// depth >= the current one).
     LayerStep grow(double time, double depth) const;
+    /// The growing step to `time` (eq. L11) at which F + k d = `right_side` [N] with k = `stiffness` [N/m] (force
+    /// control: k = 0; spring control; an impact's trapezoidal rule), solved over the contact radius to
+    /// `force_tolerance` [N]: one elastic solve a trial (at_radius), none for the depth. A contact of zero radius
+    /// where the force at no contact already exceeds the right side (then the contact cannot grow). Not for a flat
+    /// punch (its radius is fixed). Throws mdr::InvalidInput (key `layer`) beyond the layer's largest radius.
+    LayerStep grow_to(double time, double stiffness, double right_side, double force_tolerance) const;
     /// A step to `time` with the indenter at `depth`, the contact receding (Ting, eq. L12, L13): lifted off when
     /// int_0^t G dd <= 0. Needs a growing phase before.
     LayerStep recede(double time, double depth) const;
@@ -54,12 +61,16 @@ public:
     void commit(const LayerStep& step);
 
 private:
+    // The growing step with the elastic equilibrium `contact` at `depth` (< 0: the contact's own depth).
+    LayerStep grow_with(double time, const contact::LayerContactState& contact, double depth) const;
+
     const rheology::Rheology* material_;
     const contact::LayerContact* layer_;
     double unit_modulus_;
     double largest_depth_;
     LoadingRecord loading_;
     LayerStep current_;
+    double previous_radius_ = 0.0;  // the contact radius of the state before the current one
     // The last equilibrium solved, tried or committed: where the next solve starts (the force-controlled driver
     // tries depths ever closer to its root).
     mutable contact::LayerContactState hint_;

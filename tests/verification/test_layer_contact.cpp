@@ -148,6 +148,19 @@ TEST(LayerContact, ForceConvergesInTheNumberOfNodes) {
     }
 }
 
+TEST(LayerContact, StiffnessIsTheForcesDerivativeInDepth) {
+    // dF/dd = 2 int q_d at the contact (the force-free edge moves F at second order): against a central difference
+    // of the force at depths solved by radius, on a thick, a medium and a thin bonded layer (a/h = 0.1, 1, 4).
+    for (const double chi : {0.1, 1.0, 4.0}) {
+        const LayerContact contact(Layer{thickness, LayerInterface::bonded}, 0.5, sphere(), 6.0 * chi * thickness);
+        const auto state = contact.at_radius(chi * thickness);
+        const auto below = contact.at_radius(chi * thickness * (1.0 - 1e-4));
+        const auto above = contact.at_radius(chi * thickness * (1.0 + 1e-4));
+        const double difference = (above.force - below.force) / (above.depth - below.depth);
+        EXPECT_NEAR(state.stiffness / difference, 1.0, 1e-6) << "chi " << chi;  // the difference's O(1e-8)
+    }
+}
+
 TEST(LayerContact, FlatPunchForceIsLinearInDepth) {
     const auto punch = std::shared_ptr<const mdr::profile::Profile>(mdr::profile::make_flat_punch(thickness));
     const LayerContact thick(Layer{1e7 * thickness, LayerInterface::bonded}, 0.5, punch, thickness);

@@ -136,6 +136,34 @@ TEST(LayerViscoelastic, VeryThickLayerUnderForceControlIsTheHalfSpaceDriver) {
     EXPECT_EQ(thick.force.back(), 0.0);
 }
 
+TEST(LayerViscoelastic, VeryThickLayerUnderSpringControlIsTheHalfSpaceDriver) {
+    // The AFM set-up: the base z rises to 2 um and falls below the surface through a cantilever of 0.05 N/m (about
+    // the contact's own stiffness at the peak); the indenter presses in, the contact grows, recedes, the indenter
+    // lifts off and hangs at the base (d = z) while the surface recovers. The layer's F(d) + k d = k z solved each
+    // step against the half-space driver's.
+    const std::string base = "[[0.0, 0.0], [1.0, 2.0e-6], [2.0, -0.5e-6], [3.0, -0.5e-6]]\nspring_constant = 0.05";
+    const auto half_space = mdr::drivers::run_case(mdr::io::parse_case(layer_case("", base, "spring")));
+    const auto thick = mdr::drivers::run_case(mdr::io::parse_case(
+        layer_case("[layer]\nthickness = 1.0e3\ninterface = \"bonded\"\n", base, "spring")));
+    ASSERT_EQ(half_space.time.size(), thick.time.size());
+    ASSERT_EQ(thick.base.size(), thick.time.size());
+    const double deepest = *std::max_element(half_space.depth.begin(), half_space.depth.end());
+    const double peak = *std::max_element(half_space.force.begin(), half_space.force.end());
+    double depth_error = 0.0, force_error = 0.0;
+    for (std::size_t i = 0; i < half_space.time.size(); ++i) {
+        depth_error = std::max(depth_error, std::abs(half_space.depth[i] - thick.depth[i]) / deepest);
+        force_error = std::max(force_error, std::abs(half_space.force[i] - thick.force[i]) / peak);
+        EXPECT_EQ(thick.base[i], half_space.base[i]);
+        // F = k (z - d) (the spring's law) on every row.
+        EXPECT_NEAR(thick.force[i], 0.05 * (thick.base[i] - thick.depth[i]), 1e-6 * peak) << "t " << thick.time[i];
+    }
+    // Observed 3.0e-7 and 4.6e-7: the half-space driver's elements.
+    EXPECT_LT(depth_error, 1e-6);
+    EXPECT_LT(force_error, 1e-6);
+    EXPECT_EQ(thick.force.back(), 0.0);  // lifted off
+    EXPECT_EQ(thick.depth.back(), -0.5e-6);  // hanging at the base
+}
+
 TEST(LayerViscoelastic, FlatPunchUnderForceControlOnAVeryThickLayerIsTheHalfSpaceDriver) {
     // A flat profile gives no depth scale: the depth solves' brackets grew from a zero step, for ever, before they
     // took the punch's radius. The punch's force is the full convolution F = k int_0^t G dd while in contact (L13

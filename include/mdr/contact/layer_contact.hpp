@@ -22,6 +22,8 @@ struct LayerContactState {
     double contact_radius = 0.0;  ///< a [m]
     double depth = 0.0;           ///< d [m]
     double force = 0.0;           ///< F / E* [m^2] (eq. L5)
+    double stiffness = 0.0;       ///< dF/dd / E* [m]: 2 int_0^a q_d, the unit depth's force at this contact (eq. L5;
+                                  ///< the force-free edge's move changes F only at second order, eq. L6)
 };
 
 /// The elastic layer problem for one indenter: q(x) - (1/pi) int_0^a [K(x - s) + K(x + s)] q(s) ds = E* (d - g(x))

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Indentation of a viscoelastic layer on a rigid substrate (`[layer]`): displacement or force control,
-/// incompressible layer, a contact that grows and then recedes (docs/theory.md, "Layers").
+/// Indentation of a viscoelastic layer on a rigid substrate (`[layer]`): displacement, force or spring control,
+/// impact, incompressible layer, a contact that grows and then recedes (docs/theory.md, "Layers").
 
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/indentation.hpp"
@@ -9,23 +9,25 @@
 namespace mdr::drivers {
 
 /// Throws mdr::InvalidInput (key `layer` or the offending key, its value and the rule) for a case with a `[layer]`
-/// that needs what is not built on a layer yet: spring, impact or Shore control, a parallel dashpot under force
-/// control, a harmonic part, tangential loading, snapshots, a compressible layer or a deformable indenter. Does
-/// nothing for a case without a layer.
+/// that needs what is not built on a layer yet: Shore control, an oblique impact, a parallel dashpot under force or
+/// spring control or in an impact, a force pause, a harmonic part, tangential loading, snapshots, a compressible
+/// layer or a deformable indenter. Does nothing for a case without a layer.
 void validate_layer(const ContactCase& contact_case);
 
-/// Runs a displacement- or force-controlled case on its layer: the elastic layer's force F_el(d) at unit shear
-/// modulus (contact::LayerContact, E* = 4 for an incompressible layer) on the time grid of the half-space driver.
-/// While the contact grows, F(t) = int_0^t G(t - t') dF_el(t') and a(t) = a_el(d(t)) (Lee & Radok 1960; eq. L11);
-/// once it recedes, Ting's solution (Ting 1966; eq. L12, L13): a(t) = a_el(d(t1)) with int_{t1}^t G(t - t') dd = 0
-/// and F(t) = int_0^t1 G(t - t') dF_el(t'), exact as the incompressible layer's kernel does not depend on the
-/// modulus; each Prony branch is updated exactly for F_el and d linear over a step (LayerStepper). Once the
+/// Runs a displacement-, force- or spring-controlled case on its layer: the elastic layer's force F_el(d) at unit
+/// shear modulus (contact::LayerContact, E* = 4 for an incompressible layer) on the time grid of the half-space
+/// driver. While the contact grows, F(t) = int_0^t G(t - t') dF_el(t') and a(t) = a_el(d(t)) (Lee & Radok 1960; eq.
+/// L11); once it recedes, Ting's solution (Ting 1966; eq. L12, L13): a(t) = a_el(d(t1)) with int_{t1}^t G(t - t')
+/// dd = 0 and F(t) = int_0^t1 G(t - t') dF_el(t'), exact as the incompressible layer's kernel does not depend on
+/// the modulus; each Prony branch is updated exactly for F_el and d linear over a step (LayerStepper). Once the
 /// contact is lost (t1 = the start) the force is zero and the free surface at the centre recovers (eq. L14); under
-/// force control the indenter rides on it. Force control solves the depth of each step by numerics::monotone_root
-/// (the force increases with it in either phase). `numerics.elements` is the least number of Gauss nodes over the
-/// contact (default contact::default_layer_nodes). Throws as validate_layer; for step observers (not built on a
-/// layer yet); and, naming `load.history`, when the contact would grow again after it shrank (a reload, creep
-/// under a held force, or the indenter reaching the recovering surface: outside Ting's solution, not built yet).
+/// force control the indenter rides on it, under spring control it hangs at the base z. Force control solves the
+/// depth of each step by numerics::monotone_root (the force increases with it in either phase), spring control
+/// likewise F(d) + k d = k z (F = k (z - d)). An impact runs run_layer_impact (src/drivers/layer_impact.hpp).
+/// `numerics.elements` is the least number of Gauss nodes over the contact (default contact::default_layer_nodes).
+/// Throws as validate_layer; for step observers (not built on a layer yet); and, naming `load.history`, when the
+/// contact would grow again after it shrank (a reload, creep under a held force, or the indenter or the spring's
+/// base reaching the recovering surface: outside Ting's solution, not built yet).
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {},
                                         const StepObservers& observers = {});
 

@@ -43,17 +43,41 @@ TEST(LayerReader, RefusesBadValues) {
 }
 
 TEST(LayerReader, RefusesWhatIsNotBuiltOnALayer) {
-    EXPECT_EQ(refused_key(with("control = \"spring\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-6]]\nspring_constant = 1.0\n",
-                               bonded)),
-              "load.control");
+    // Spring control is built (without a parallel dashpot or a force pause).
+    const std::string spring = "control = \"spring\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-6]]\nspring_constant = 1.0\n";
+    EXPECT_EQ(refused_key(with(spring, bonded)), "(accepted)");
+    EXPECT_EQ(refused_key(with(spring + "force_pauses = [[0.2, 0.4]]\n", bonded)), "load.force_pauses");
+    EXPECT_EQ(refused_key("[material]\nmodel = \"kelvin_voigt\"\nG = 1.0e3\neta = 1.0\n[indenter]\nshape = \"sphere\"\n"
+                          "R = 1.0e-5\n[load]\n" + spring + "[layer]\n" + bonded),
+              "material.eta");
     // Force control is built (without a parallel dashpot).
     const std::string force = "control = \"force\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-9]]\n";
     EXPECT_EQ(refused_key(with(force, bonded)), "(accepted)");
     EXPECT_EQ(refused_key("[material]\nmodel = \"kelvin_voigt\"\nG = 1.0e3\neta = 1.0\n[indenter]\nshape = \"sphere\"\n"
                           "R = 1.0e-5\n[load]\n" + force + "[layer]\n" + bonded),
               "material.eta");
+    // An impact is built (not an oblique one, nor with a parallel dashpot).
+    const auto impact = [](const std::string& load, const std::string& material) {
+        return "[material]\n" + material + "[indenter]\nshape = \"sphere\"\nR = 1.0e-2\nmass = 1.0e-2\n[load]\n"
+               "control = \"impact\"\nvelocity = 0.1\n" + load +
+               "[layer]\nthickness = 1.0e-3\ninterface = \"bonded\"\n";
+    };
+    EXPECT_EQ(refused_key(impact("", "model = \"elastic\"\nG = 1.0e6\n")), "(accepted)");
+    EXPECT_EQ(refused_key(impact("tangential_velocity = 0.05\n[tangential]\nfriction = 0.3\n",
+                                 "model = \"elastic\"\nG = 1.0e6\n")),
+              "load.tangential_velocity");
+    EXPECT_EQ(refused_key(impact("", "model = \"kelvin_voigt\"\nG = 1.0e6\neta = 1.0\n")), "material.eta");
     EXPECT_EQ(refused_key(with(loading, bonded, "[material.bulk]\nmodel = \"elastic\"\nK = 3.0e3\n")), "material");
     EXPECT_EQ(refused_key(with(loading, "thickness = 1.0e-9\ninterface = \"bonded\"\n")), "layer.thickness");
+    // A harmonic load: refused naming the key and why.
+    try {
+        const std::string harmonic = "harmonic = { amplitude = 1.0e-8, frequency = 10.0, start = 0.2, end = 1.0 }\n";
+        mdr::io::parse_case(with(loading + harmonic, bonded));
+        ADD_FAILURE() << "accepted";
+    } catch (const mdr::InvalidInput& error) {
+        EXPECT_EQ(error.key(), "load.harmonic");
+        EXPECT_NE(std::string(error.what()).find("grows again after it shrank"), std::string::npos) << error.what();
+    }
 }
 
 }  // namespace
