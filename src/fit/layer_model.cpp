@@ -6,7 +6,6 @@
 #include <utility>
 
 #include "mdr/contact/layer_contact.hpp"
-#include "mdr/error.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 
 namespace mdr::fit {
@@ -18,12 +17,6 @@ namespace {
 // 2.6e-8 up to 4.5 (cone) and 8e-8 up to 10 (sphere), where the layer kernel's cubic Hermite table (C1, 1e-9 of k(0))
 // sets the floor (tests/unit/fit/layer_model_test.cpp, InterpolationMatchesTheLayerSolutionAtEveryDepth).
 constexpr std::size_t chebyshev_nodes = 40;
-// The layer's contact radius exceeds the half-space's at the same depth by at most 3 pi / 4 (a cone on a thin bonded
-// layer; drivers::run_layer_indentation prepares the same margin).
-constexpr double layer_radius_margin = 3.0;
-// Contacts wider than this many thicknesses need too many Gauss nodes (6 per thickness, each solve O(n^3)): the bound
-// of drivers::validate_layer, which a free thickness near its lower bound would otherwise pass unchecked.
-constexpr double max_radius_over_thickness = 100.0;
 
 }  // namespace
 
@@ -33,12 +26,8 @@ LayerElasticForce::LayerElasticForce(const contact::Layer& layer, std::shared_pt
     if (!(largest_depth > 0.0)) return;
     const bool punch = indenter_->is_flat_punch();
     largest_radius_ = punch ? indenter_->max_radius() : indenter_->contact_radius(largest_depth);
-    const double widest = std::min(indenter_->max_radius(), layer_radius_margin * largest_radius_);
-    if (!(widest <= max_radius_over_thickness * layer.thickness)) {
-        throw InvalidInput("layer.thickness", format_value(layer.thickness),
-                           "the contact radius may reach " + format_value(widest) + ", more than " +
-                               format_value(max_radius_over_thickness) + " thicknesses: not built yet");
-    }
+    const double widest = std::min(indenter_->max_radius(), contact::layer_radius_margin * largest_radius_);
+    contact::check_layer_contact_radius(layer, widest);
     if (punch) {
         const contact::LayerContact solver(layer, 0.5, indenter_, widest, nodes);
         punch_force_ = 4.0 * solver.at_radius(widest).force;  // E* = 4 G (eq. 21)
