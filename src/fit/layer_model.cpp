@@ -6,7 +6,8 @@
 #include <utility>
 
 #include "mdr/contact/layer_contact.hpp"
-#include "mdr/foundation/step_coefficients.hpp"
+#include "mdr/numerics/monotone_root.hpp"
+#include "../drivers/layer_stepping.hpp"
 
 namespace mdr::fit {
 
@@ -83,37 +84,88 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
                                          double depth_shift, std::size_t nodes, bool modulus_derivatives) {
     if (time.empty()) return std::nullopt;
     const auto [lowest, deepest] = std::minmax_element(depth.begin(), depth.end());
-    const double allowed_dip = layer_dip_tolerance * (*deepest - *lowest);
-    double running_maximum = depth.front();
-    for (double value : depth) {
-        running_maximum = std::max(running_maximum, value);
-        if (running_maximum > depth_shift && running_maximum - value > allowed_dip) return std::nullopt;
-    }
-    const LayerElasticForce elastic(layer, indenter, *deepest - depth_shift, nodes);
+    const double noise = layer_dip_tolerance * (*deepest - *lowest);
+    const double largest_depth = *deepest - depth_shift;
+    const LayerElasticForce elastic(layer, indenter, largest_depth, nodes);
 
     const auto& terms = material.terms();
-    const bool derivatives = modulus_derivatives && material.viscosity() == 0.0;
     TingResponse response;
     response.force.resize(time.size());
-    if (derivatives) response.modulus_derivatives.assign(terms.size() + 1, std::vector<double>(time.size()));
-    std::vector<double> branches(terms.size(), 0.0);  // h_k
-    double previous_force = 0.0;
+    if (modulus_derivatives && material.viscosity() == 0.0) {
+        response.modulus_derivatives.assign(terms.size() + 1, std::vector<double>(time.size(), 0.0));
+    }
+    // The phases and the record of drivers::LayerStepper (eq. L11 to L14), on the interpolated F_el.
+    drivers::PronyBranches centre_branches(material);  // of w0: the depth in contact, the free surface after
+    drivers::PronyBranches force_branches(material);   // of F_el at the last loading node
+    drivers::LoadingRecord loading(material, time.front());
+    drivers::LayerPhase phase = drivers::LayerPhase::approach;
+    double centre = 0.0, node_time = time.front(), node_force = 0.0, position = 0.0;
+    double peak = 0.0, lowest_since_peak = 0.0;  // the depth at the last loading node, and the least since
     for (std::size_t i = 0; i < time.size(); ++i) {
-        const double elastic_force = elastic(depth[i] - depth_shift);
-        const double step = i == 0 ? 0.0 : time[i] - time[i - 1];
-        const double change = elastic_force - previous_force;
-        double force = material.equilibrium_modulus() * elastic_force;
-        for (std::size_t k = 0; k < terms.size(); ++k) {
-            const double ratio = step / terms[k].relaxation_time;
-            // F_el linear over the step: the exact update of a Prony branch (eq. 16, 18).
-            branches[k] = branches[k] * std::exp(-ratio) + foundation::branch_gain(ratio) * change;
-            force += terms[k].modulus * branches[k];
-            if (derivatives) response.modulus_derivatives[k + 1][i] = branches[k];
+        const double now = time[i], indented = depth[i] - depth_shift;
+        const double step = i == 0 ? 0.0 : now - time[i - 1];
+        if (phase == drivers::LayerPhase::approach && indented <= 0.0) {
+            loading = drivers::LoadingRecord(material, now);
+            node_time = now;
+            continue;
         }
-        if (step > 0.0) force += material.viscosity() * change / step;
-        if (derivatives) response.modulus_derivatives[0][i] = elastic_force;
+        if (phase == drivers::LayerPhase::lifted_off) {  // the free surface recovers (eq. L14)
+            const double change = centre_branches.free_change(step, centre);
+            centre += change;
+            centre_branches.advance(step, change);
+            if (indented > centre + 1e-9 * largest_depth) return std::nullopt;  // contact again
+            continue;
+        }
+        lowest_since_peak = std::min(lowest_since_peak, indented);
+        // A contact that grows again after it shrank by more than the noise is outside Ting's solution (as the driver).
+        if (peak - lowest_since_peak > noise && indented > lowest_since_peak + noise) return std::nullopt;
+        const double change = indented - centre;
+        centre = indented;
+        centre_branches.advance(step, change);
+        const double steps = static_cast<double>(loading.steps());
+        const auto residual = [&](double x) {  // int_{t1}^t G dd, t1 at loading position x (eq. L12), as the driver's
+            const double inside = std::clamp(x, 0.0, steps);
+            return (x - inside) -
+                   loading.ting_residual(inside, now, indented, centre_branches, step > 0.0 ? change / step : 0.0);
+        };
+        if (phase == drivers::LayerPhase::receding || (phase == drivers::LayerPhase::growing && indented < peak)) {
+            if (residual(0.0) >= 0.0) {  // int_0^t G dd <= 0: the contact is lost
+                phase = drivers::LayerPhase::lifted_off;
+                continue;
+            }
+            const double start = std::min(position, steps);
+            const double root = numerics::monotone_root(residual, start, residual(start), 1.0,
+                                                        1e-13 * material.relaxation(0.0) * largest_depth, 1e-12,
+                                                        false);
+            if (root <= steps) {  // the contact recedes (or, within the noise, grows back below the last node)
+                phase = drivers::LayerPhase::receding;
+                position = root;
+                const double point_depth = loading.at(position).depth;
+                const double point_force = elastic(point_depth);
+                response.force[i] = loading.force(position, now, point_force);  // eq. L13
+                // The edge moves with the moduli (eq. L12): the derivatives are left out (the caller differentiates).
+                response.modulus_derivatives.clear();
+                continue;
+            }
+        }
+        // The contact grows (Lee-Radok, eq. L11): a loading node; F_el linear in time since the last one.
+        phase = drivers::LayerPhase::growing;
+        const double elastic_force = elastic(indented);
+        force_branches.advance(now - node_time, elastic_force - node_force);
+        double force = material.equilibrium_modulus() * elastic_force + force_branches.weighted_sum();
+        if (now > node_time) force += material.viscosity() * (elastic_force - node_force) / (now - node_time);
         response.force[i] = force;
-        previous_force = elastic_force;
+        if (!response.modulus_derivatives.empty()) {  // the force is linear in the moduli
+            response.modulus_derivatives[0][i] = elastic_force;
+            for (std::size_t k = 0; k < terms.size(); ++k) {
+                response.modulus_derivatives[k + 1][i] = force_branches.values()[k];
+            }
+        }
+        loading.append(now, indented, elastic_force, centre_branches, force_branches);
+        position = static_cast<double>(loading.steps());
+        node_time = now;
+        node_force = elastic_force;
+        peak = lowest_since_peak = indented;
     }
     return response;
 }

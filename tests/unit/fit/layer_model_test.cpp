@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <string>
 
 #include "mdr/contact/layer_contact.hpp"
@@ -95,6 +96,51 @@ TEST(LayerModel, ForcesAreTheLayerDriversOnItsOwnSteps) {
             ASSERT_NEAR(1e3 * model->modulus_derivatives[0][i] + 3e3 * model->modulus_derivatives[1][i],
                         model->force[i], 1e-12 * peak);
         }
+    }
+}
+
+std::string load_unload_case(const std::string& shape) {
+    return R"(
+[material]
+model = "standard"
+G_inf = 1.0e3
+G1 = 3.0e3
+tau1 = 0.2
+[indenter]
+)" + shape + R"(
+[load]
+control = "displacement"
+history = [[0.0, 0.0], [1.0, 1.0e-6], [1.5, 1.0e-6], [2.0, 0.6e-6], [3.0, 0.0], [3.5, 0.0]]
+[layer]
+thickness = 2.0e-6
+interface = "bonded"
+)";
+}
+
+TEST(LayerModel, UnloadingIsTheLayerDriversRecedingContact) {
+    // Loading, hold, unloading at two rates past the loss of contact, a hold off contact: the driver solves Ting's
+    // receding contact (eq. L12, L13) with the layer solved at every step, the model with the interpolated F_el on
+    // the same record code; they agree to the interpolation's error. The force vanishes once contact is lost.
+    for (const std::string shape : {"shape = \"sphere\"\nR = 1.0e-5", "shape = \"cone\"\nhalf_angle_deg = 35.0"}) {
+        const auto contact_case = io::parse_case(load_unload_case(shape));
+        const auto result = drivers::run_case(contact_case);
+        const auto model = layer_forces(contact_case.material, *contact_case.layer, contact_case.indenter, result.time,
+                                        result.depth, 0.0, contact::default_layer_nodes);
+        ASSERT_TRUE(model.has_value()) << shape;
+        EXPECT_TRUE(model->modulus_derivatives.empty());  // the edge moves with the moduli
+        const double peak = *std::max_element(result.force.begin(), result.force.end());
+        double largest_error = 0.0;
+        bool lifted_off = false;
+        for (std::size_t i = 0; i < result.time.size(); ++i) {
+            largest_error = std::max(largest_error, std::abs(model->force[i] - result.force[i]) / peak);
+            if (result.time[i] > 2.0 && result.force[i] == 0.0) {
+                lifted_off = true;
+                EXPECT_EQ(model->force[i], 0.0) << shape << " row " << i;
+            }
+        }
+        EXPECT_TRUE(lifted_off) << shape;
+        EXPECT_LT(largest_error, 5e-8) << shape;
+        std::cout << shape << ": largest error " << largest_error << " of the peak\n";
     }
 }
 
