@@ -16,9 +16,10 @@
 
 namespace mdr::fit {
 
-/// A depth history may fall below its running maximum by this fraction of its depth range and still count as a
-/// growing contact on a layer: the noise of a measured hold. Lee-Radok's force then differs from the exact (Ting's,
-/// on the half-space) by a term second order in the dip (docs/theory.md, "Fits on a layer", eq. L15).
+/// A depth history on a layer may rise again by this fraction of its depth range after falling by at most as much
+/// (the noise of a measured hold): the contact then grows back (t1 of eq. L12 moves forward, or a new loading node),
+/// an approximation whose error is of the order of the dip. A rise by more after a fall by more is a contact that
+/// grows again after it shrank, outside Ting's solution (docs/theory.md, "Fits on a layer", eq. L15).
 inline constexpr double layer_dip_tolerance = 1e-3;
 
 /// The elastic force at unit shear modulus (E* = 4, nu = 0.5) of an indenter on an incompressible layer for depths
@@ -44,12 +45,14 @@ private:
 };
 
 /// The force [N] at each time of a depth history through (time[i], depth[i] - depth_shift) on an incompressible
-/// viscoelastic `layer`: F_el at each point, linear in time between points, and each Prony branch of G updated
-/// exactly (F = G_inf F_el + sum G_k h_k + eta dF_el/dt, h_k = int exp(-(t - s)/tau_k) dF_el(s)), as
-/// drivers::run_layer_indentation. Exact (Lee & Radok 1960) while the depth does not fall; a fall below the running
-/// maximum (in contact) by at most layer_dip_tolerance of the depth range is taken as noise; nullopt for a larger
-/// one (an unloading). modulus_derivatives: dF/dG_inf = F_el, dF/dG_k = h_k (left out for a material with a
-/// dashpot).
+/// viscoelastic `layer`, F_el interpolated (LayerElasticForce) and linear in time between points, as
+/// drivers::run_layer_indentation on the same record (drivers::LoadingRecord): while the depth grows, Lee-Radok
+/// (eq. L11, each Prony branch updated exactly); while it falls, Ting's receding contact (t1 from
+/// int_{t1}^t G dd = 0, F = int_0^{t1} G dF_el, eq. L12, L13); zero once int_0^t G dd <= 0, the free surface
+/// recovering (eq. L14). nullopt where the contact would grow again after it shrank (layer_dip_tolerance) or the
+/// indenter reaches the recovering surface. modulus_derivatives: dF/dG_inf = F_el, dF/dG_k = h_k while the contact
+/// has only grown; left out for a history with a receding contact (whose edge moves with the moduli) and for a
+/// material with a dashpot.
 std::optional<TingResponse> layer_forces(const rheology::Rheology& material, const contact::Layer& layer,
                                          const std::shared_ptr<const profile::Profile>& indenter,
                                          const std::vector<double>& time, const std::vector<double>& depth,

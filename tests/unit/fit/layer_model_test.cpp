@@ -144,9 +144,10 @@ TEST(LayerModel, UnloadingIsTheLayerDriversRecedingContact) {
     }
 }
 
-TEST(LayerModel, ADepthThatFallsBeyondTheNoiseIsAnUnloading) {
-    // Lee-Radok is exact while the contact grows; a fall below the running maximum (in contact) by at most
-    // layer_dip_tolerance of the range is noise, a larger one an unloading (nullopt: not built on a layer).
+TEST(LayerModel, ADepthThatRisesAgainAfterFallingBeyondTheNoiseIsRefused) {
+    // A fall of the depth is Ting's receding contact; a rise after a fall, each by at most layer_dip_tolerance of
+    // the range, is noise; a rise by more after a fall by more is a contact that grows again (nullopt: not built on
+    // a layer, as in the driver).
     const auto contact_case = io::parse_case(ramp_hold_case("shape = \"sphere\"\nR = 1.0e-5"));
     std::vector<double> time, depth;
     for (int i = 0; i <= 100; ++i) {
@@ -162,6 +163,10 @@ TEST(LayerModel, ADepthThatFallsBeyondTheNoiseIsAnUnloading) {
     EXPECT_TRUE(forces(noisy, 0.0).has_value());
     noisy[70] = depth[70] - 1.1 * layer_dip_tolerance * 5e-7;
     EXPECT_FALSE(forces(noisy, 0.0).has_value());
+    // The same fall at the end: an unloading, modelled.
+    noisy = depth;
+    noisy[100] -= 1.1 * layer_dip_tolerance * 5e-7;
+    EXPECT_TRUE(forces(noisy, 0.0).has_value());
     // Out of contact (below the contact point) a fall is no unloading.
     auto before_contact = depth;
     before_contact[10] = 0.0;
