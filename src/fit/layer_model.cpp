@@ -100,7 +100,8 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
     drivers::LoadingRecord loading(material, time.front());
     drivers::LayerPhase phase = drivers::LayerPhase::approach;
     double centre = 0.0, node_time = time.front(), node_force = 0.0, position = 0.0;
-    double peak = 0.0, lowest_since_peak = 0.0;  // the depth at the last loading node, and the least since
+    // The depth at the last loading node, the least depth since and the least depth of the contact's edge, d(t1).
+    double peak = 0.0, lowest_since_peak = 0.0, lowest_edge = 0.0;
     for (std::size_t i = 0; i < time.size(); ++i) {
         const double now = time[i], indented = depth[i] - depth_shift;
         const double step = i == 0 ? 0.0 : now - time[i - 1];
@@ -117,8 +118,11 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
             continue;
         }
         lowest_since_peak = std::min(lowest_since_peak, indented);
-        // A contact that grows again after it shrank by more than the noise is outside Ting's solution (as the driver).
-        if (peak - lowest_since_peak > noise && indented > lowest_since_peak + noise) return std::nullopt;
+        // A contact that grows again after it shrank is outside Ting's solution (as the driver): the depth rising by
+        // more than the noise, or the edge moving out (t1 forward: a hold after an unloading), after the depth fell
+        // by more.
+        const bool shrank = peak - lowest_since_peak > noise;
+        if (shrank && indented > lowest_since_peak + noise) return std::nullopt;
         const double change = indented - centre;
         centre = indented;
         centre_branches.advance(step, change);
@@ -141,6 +145,8 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
                 phase = drivers::LayerPhase::receding;
                 position = root;
                 const double point_depth = loading.at(position).depth;
+                lowest_edge = std::min(lowest_edge, point_depth);
+                if (shrank && point_depth > lowest_edge + noise) return std::nullopt;
                 const double point_force = elastic(point_depth);
                 response.force[i] = loading.force(position, now, point_force);  // eq. L13
                 // The edge moves with the moduli (eq. L12): the derivatives are left out (the caller differentiates).
@@ -165,7 +171,7 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
         position = static_cast<double>(loading.steps());
         node_time = now;
         node_force = elastic_force;
-        peak = lowest_since_peak = indented;
+        peak = lowest_since_peak = lowest_edge = indented;
     }
     return response;
 }

@@ -144,6 +144,27 @@ TEST(LayerModel, UnloadingIsTheLayerDriversRecedingContact) {
     }
 }
 
+TEST(LayerModel, AHoldAfterAnUnloadingIsRefusedAsInTheDriver) {
+    // The depth holds after falling by 40 %: the relaxing layer pushes the contact's edge out again (t1 of eq. L12
+    // moves forward), which the driver refuses (load.history) and the model gives as nullopt.
+    auto text = load_unload_case("shape = \"sphere\"\nR = 1.0e-5");
+    const std::string unload = "[2.0, 0.6e-6], [3.0, 0.0]";
+    text.replace(text.find(unload), unload.size(), "[2.0, 0.6e-6], [3.0, 0.6e-6]");
+    const auto contact_case = io::parse_case(text);
+    EXPECT_THROW(static_cast<void>(drivers::run_case(contact_case)), InvalidInput);
+    std::vector<double> time, depth;
+    for (int i = 0; i <= 300; ++i) {
+        time.push_back(0.01 * i);
+        depth.push_back(i <= 100 ? 1e-8 * i : i <= 150 ? 1e-6 : i <= 200 ? 1e-6 - 8e-9 * (i - 150) : 0.6e-6);
+    }
+    EXPECT_FALSE(layer_forces(contact_case.material, *contact_case.layer, contact_case.indenter, time, depth, 0.0,
+                              contact::default_layer_nodes).has_value());
+    depth.resize(201);
+    time.resize(201);
+    EXPECT_TRUE(layer_forces(contact_case.material, *contact_case.layer, contact_case.indenter, time, depth, 0.0,
+                             contact::default_layer_nodes).has_value());
+}
+
 TEST(LayerModel, ADepthThatRisesAgainAfterFallingBeyondTheNoiseIsRefused) {
     // A fall of the depth is Ting's receding contact; a rise after a fall, each by at most layer_dip_tolerance of
     // the range, is noise; a rise by more after a fall by more is a contact that grows again (nullopt: not built on
