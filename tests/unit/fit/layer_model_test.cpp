@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <string>
 
 #include "mdr/contact/layer_contact.hpp"
@@ -48,11 +47,15 @@ TEST(LayerModel, InterpolationMatchesTheLayerSolutionAtEveryDepth) {
         const auto nodes = std::max<std::size_t>(48, 6 * static_cast<std::size_t>(std::ceil(widest /
                                                                                              setting.layer.thickness)));
         const contact::LayerContact exact(setting.layer, 0.5, setting.indenter, widest, nodes);
+        // Exact solutions at given contact radii (at_radius, no root finding: at_depth meets the depth to 1e-8 only,
+        // the force to ~1.5e-8), at 41 radii up to the largest depth's.
+        const double largest_radius = exact.at_depth(setting.largest_depth).contact_radius;
         double largest_error = 0.0;
         for (int i = 1; i <= 41; ++i) {
-            const double depth = setting.largest_depth * std::pow(static_cast<double>(i) / 41.0, 1.7);
-            const double expected = 4.0 * exact.at_depth(depth).force;  // E* = 4 G
-            largest_error = std::max(largest_error, std::abs(elastic(depth) / expected - 1.0));
+            const auto state = exact.at_radius(largest_radius * std::pow(static_cast<double>(i) / 41.0, 0.85));
+            if (state.depth > setting.largest_depth) continue;
+            const double expected = 4.0 * state.force;  // E* = 4 G
+            largest_error = std::max(largest_error, std::abs(elastic(state.depth) / expected - 1.0));
         }
         EXPECT_LT(largest_error, setting.tolerance) << setting.name;
         EXPECT_EQ(elastic(0.0), 0.0);
@@ -91,7 +94,8 @@ TEST(LayerModel, ForcesAreTheLayerDriversOnItsOwnSteps) {
         ASSERT_TRUE(model.has_value());
         const double peak = *std::max_element(result.force.begin(), result.force.end());
         for (std::size_t i = 0; i < result.time.size(); ++i) {
-            ASSERT_NEAR(model->force[i], result.force[i], 1e-8 * peak) << shape << " row " << i;
+            // 3e-8: the driver's at_depth meets the depth to 1e-8, its force to ~1.5e-8 (observed 1.9e-8).
+            ASSERT_NEAR(model->force[i], result.force[i], 3e-8 * peak) << shape << " row " << i;
             // The force is linear in the moduli: G_inf F_el + G1 h_1.
             ASSERT_NEAR(1e3 * model->modulus_derivatives[0][i] + 3e3 * model->modulus_derivatives[1][i],
                         model->force[i], 1e-12 * peak);
@@ -120,7 +124,8 @@ interface = "bonded"
 TEST(LayerModel, UnloadingIsTheLayerDriversRecedingContact) {
     // Loading, hold, unloading at two rates past the loss of contact, a hold off contact: the driver solves Ting's
     // receding contact (eq. L12, L13) with the layer solved at every step, the model with the interpolated F_el on
-    // the same record code; they agree to the interpolation's error. The force vanishes once contact is lost.
+    // the same record code; they agree to the driver's contact solve (depth to 1e-8: force ~1.5e-8) and the
+    // interpolation's error. The force vanishes once contact is lost.
     for (const std::string shape : {"shape = \"sphere\"\nR = 1.0e-5", "shape = \"cone\"\nhalf_angle_deg = 35.0"}) {
         const auto contact_case = io::parse_case(load_unload_case(shape));
         const auto result = drivers::run_case(contact_case);
@@ -139,8 +144,7 @@ TEST(LayerModel, UnloadingIsTheLayerDriversRecedingContact) {
             }
         }
         EXPECT_TRUE(lifted_off) << shape;
-        EXPECT_LT(largest_error, 5e-8) << shape;
-        std::cout << shape << ": largest error " << largest_error << " of the peak\n";
+        EXPECT_LT(largest_error, 5e-8) << shape;  // observed 2.7e-8 (sphere), 1.1e-10 (cone)
     }
 }
 
