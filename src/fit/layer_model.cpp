@@ -149,8 +149,27 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
                 if (shrank && point_depth > lowest_edge + noise) return std::nullopt;
                 const double point_force = elastic(point_depth);
                 response.force[i] = loading.force(position, now, point_force);  // eq. L13
-                // The edge moves with the moduli (eq. L12): the derivatives are left out (the caller differentiates).
-                response.modulus_derivatives.clear();
+                if (!response.modulus_derivatives.empty()) {
+                    // dF/dG_b = dF/dG_b at fixed t1 + weight dR/dG_b, R the residual of eq. L12: t1 moves with the
+                    // moduli by -(dR/dG_b) / (dR/dt1), dR/dt1 = -G(t - t1) d'(t1), and dF/dt1 = [G_inf F_el'(d1) +
+                    // (G(t - t1) - G_inf) (the record's F_el over d on t1's step)] d'(t1) (eq. L13: F_el(t1) exact,
+                    // the branches on F_el linear in time over the record's steps).
+                    const double node = std::min(std::floor(position), steps - 1.0);
+                    const double below = loading.at(node).depth, above = loading.at(node + 1.0).depth;
+                    const double secant = above > below ? (elastic(above) - elastic(below)) / (above - below) : 0.0;
+                    const double nudge = 1e-6 * point_depth;  // F_el is analytic in d: a central difference
+                    const double tangent =
+                        (elastic(point_depth + nudge) - elastic(point_depth - nudge)) / (2.0 * nudge);
+                    const double relaxed = material.relaxation(now - loading.at(position).time);
+                    const double equilibrium = material.equilibrium_modulus();
+                    const double weight = (equilibrium * tangent + (relaxed - equilibrium) * secant) / relaxed;
+                    response.modulus_derivatives[0][i] = point_force + weight * (indented - point_depth);
+                    for (std::size_t k = 0; k < terms.size(); ++k) {
+                        response.modulus_derivatives[k + 1][i] =
+                            loading.force_term(k, position, now) +
+                            weight * (centre_branches.values()[k] - loading.depth_term(k, position, now));
+                    }
+                }
                 continue;
             }
         }

@@ -50,9 +50,9 @@ private:
 /// (eq. L11, each Prony branch updated exactly); while it falls, Ting's receding contact (t1 from
 /// int_{t1}^t G dd = 0, F = int_0^{t1} G dF_el, eq. L12, L13); zero once int_0^t G dd <= 0, the free surface
 /// recovering (eq. L14). nullopt where the contact would grow again after it shrank (layer_dip_tolerance) or the
-/// indenter reaches the recovering surface. modulus_derivatives: dF/dG_inf = F_el, dF/dG_k = h_k while the contact
-/// has only grown; left out for a history with a receding contact (whose edge moves with the moduli) and for a
-/// material with a dashpot.
+/// indenter reaches the recovering surface. modulus_derivatives (left out for a material with a dashpot): dF/dG_inf =
+/// F_el, dF/dG_k = h_k while the contact grows; while it recedes those at fixed t1 plus the motion of t1 with the
+/// moduli (through the residual of eq. L12); zero after the loss of contact.
 std::optional<TingResponse> layer_forces(const rheology::Rheology& material, const contact::Layer& layer,
                                          const std::shared_ptr<const profile::Profile>& indenter,
                                          const std::vector<double>& time, const std::vector<double>& depth,
