@@ -96,18 +96,17 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
     }
     // The phases and the record of drivers::LayerStepper (eq. L11 to L14), on the interpolated F_el.
     drivers::PronyBranches centre_branches(material);  // of w0: the depth in contact, the free surface after
-    drivers::PronyBranches force_branches(material);   // of F_el at the last loading node
+    drivers::PronyBranches force_branches(material);   // of F_el (Lee-Radok, the noise included)
     drivers::LoadingRecord loading(material, time.front());
     drivers::LayerPhase phase = drivers::LayerPhase::approach;
-    double centre = 0.0, node_time = time.front(), node_force = 0.0, position = 0.0;
-    // The depth at the last loading node, the least depth since and the least depth of the contact's edge, d(t1).
+    double centre = 0.0, previous_force = 0.0, position = 0.0;
+    // The depth at the last loading node (the running maximum), the least depth since and the least d(t1).
     double peak = 0.0, lowest_since_peak = 0.0, lowest_edge = 0.0;
     for (std::size_t i = 0; i < time.size(); ++i) {
         const double now = time[i], indented = depth[i] - depth_shift;
         const double step = i == 0 ? 0.0 : now - time[i - 1];
         if (phase == drivers::LayerPhase::approach && indented <= 0.0) {
             loading = drivers::LoadingRecord(material, now);
-            node_time = now;
             continue;
         }
         if (phase == drivers::LayerPhase::lifted_off) {  // the free surface recovers (eq. L14)
@@ -126,71 +125,70 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
         const double change = indented - centre;
         centre = indented;
         centre_branches.advance(step, change);
-        const double steps = static_cast<double>(loading.steps());
-        const auto residual = [&](double x) {  // int_{t1}^t G dd, t1 at loading position x (eq. L12), as the driver's
-            const double inside = std::clamp(x, 0.0, steps);
-            return (x - inside) -
-                   loading.ting_residual(inside, now, indented, centre_branches, step > 0.0 ? change / step : 0.0);
-        };
-        if (phase == drivers::LayerPhase::receding || (phase == drivers::LayerPhase::growing && indented < peak)) {
+        if (phase == drivers::LayerPhase::receding || shrank) {  // Ting (eq. L12, L13)
+            const double steps = static_cast<double>(loading.steps());
+            const auto residual = [&](double x) {  // int_{t1}^t G dd, t1 at loading position x (eq. L12)
+                const double inside = std::clamp(x, 0.0, steps);
+                return (x - inside) -
+                       loading.ting_residual(inside, now, indented, centre_branches, step > 0.0 ? change / step : 0.0);
+            };
             if (residual(0.0) >= 0.0) {  // int_0^t G dd <= 0: the contact is lost
                 phase = drivers::LayerPhase::lifted_off;
                 continue;
             }
+            phase = drivers::LayerPhase::receding;
             const double start = std::min(position, steps);
-            const double root = numerics::monotone_root(residual, start, residual(start), 1.0,
+            position = std::min(numerics::monotone_root(residual, start, residual(start), 1.0,
                                                         1e-13 * material.relaxation(0.0) * largest_depth, 1e-12,
-                                                        false);
-            if (root <= steps) {  // the contact recedes (or, within the noise, grows back below the last node)
-                phase = drivers::LayerPhase::receding;
-                position = root;
-                const double point_depth = loading.at(position).depth;
-                lowest_edge = std::min(lowest_edge, point_depth);
-                if (shrank && point_depth > lowest_edge + noise) return std::nullopt;
-                const double point_force = elastic(point_depth);
-                response.force[i] = loading.force(position, now, point_force);  // eq. L13
-                if (!response.modulus_derivatives.empty()) {
-                    // dF/dG_b = dF/dG_b at fixed t1 + weight dR/dG_b, R the residual of eq. L12: t1 moves with the
-                    // moduli by -(dR/dG_b) / (dR/dt1), dR/dt1 = -G(t - t1) d'(t1), and dF/dt1 = [G_inf F_el'(d1) +
-                    // (G(t - t1) - G_inf) (the record's F_el over d on t1's step)] d'(t1) (eq. L13: F_el(t1) exact,
-                    // the branches on F_el linear in time over the record's steps).
-                    const double node = std::min(std::floor(position), steps - 1.0);
-                    const double below = loading.at(node).depth, above = loading.at(node + 1.0).depth;
-                    const double secant = above > below ? (elastic(above) - elastic(below)) / (above - below) : 0.0;
-                    const double nudge = 1e-6 * point_depth;  // F_el is analytic in d: a central difference
-                    const double tangent =
-                        (elastic(point_depth + nudge) - elastic(point_depth - nudge)) / (2.0 * nudge);
-                    const double relaxed = material.relaxation(now - loading.at(position).time);
-                    const double equilibrium = material.equilibrium_modulus();
-                    const double weight = (equilibrium * tangent + (relaxed - equilibrium) * secant) / relaxed;
-                    response.modulus_derivatives[0][i] = point_force + weight * (indented - point_depth);
-                    for (std::size_t k = 0; k < terms.size(); ++k) {
-                        response.modulus_derivatives[k + 1][i] =
-                            loading.force_term(k, position, now) +
-                            weight * (centre_branches.values()[k] - loading.depth_term(k, position, now));
-                    }
+                                                        false),
+                                steps);
+            const double point_depth = loading.at(position).depth;
+            lowest_edge = std::min(lowest_edge, point_depth);
+            if (point_depth > lowest_edge + noise) return std::nullopt;
+            const double point_force = elastic(point_depth);
+            response.force[i] = loading.force(position, now, point_force);  // eq. L13
+            if (!response.modulus_derivatives.empty()) {
+                // dF/dG_b = dF/dG_b at fixed t1 + weight dR/dG_b, R the residual of eq. L12: t1 moves with the
+                // moduli by -(dR/dG_b) / (dR/dt1), dR/dt1 = -G(t - t1) d'(t1), and dF/dt1 = [G_inf F_el'(d1) +
+                // (G(t - t1) - G_inf) (the record's F_el over d on t1's step)] d'(t1) (eq. L13: F_el(t1) exact,
+                // the branches on F_el linear in time over the record's steps).
+                const double node = std::min(std::floor(position), steps - 1.0);
+                const double below = loading.at(node).depth, above = loading.at(node + 1.0).depth;
+                const double secant = above > below ? (elastic(above) - elastic(below)) / (above - below) : 0.0;
+                const double nudge = 1e-6 * point_depth;  // F_el is analytic in d: a central difference
+                const double tangent = (elastic(point_depth + nudge) - elastic(point_depth - nudge)) / (2.0 * nudge);
+                const double relaxed = material.relaxation(now - loading.at(position).time);
+                const double equilibrium = material.equilibrium_modulus();
+                const double weight = (equilibrium * tangent + (relaxed - equilibrium) * secant) / relaxed;
+                response.modulus_derivatives[0][i] = point_force + weight * (indented - point_depth);
+                for (std::size_t k = 0; k < terms.size(); ++k) {
+                    response.modulus_derivatives[k + 1][i] =
+                        loading.force_term(k, position, now) +
+                        weight * (centre_branches.values()[k] - loading.depth_term(k, position, now));
                 }
-                continue;
             }
+            continue;
         }
-        // The contact grows (Lee-Radok, eq. L11): a loading node; F_el linear in time since the last one.
+        // The contact grows, or the depth dips within the noise below its running maximum: Lee-Radok (eq. L11), F_el
+        // linear over each step; a new running maximum is a loading node of Ting's record.
         phase = drivers::LayerPhase::growing;
         const double elastic_force = elastic(indented);
-        force_branches.advance(now - node_time, elastic_force - node_force);
+        force_branches.advance(step, elastic_force - previous_force);
         double force = material.equilibrium_modulus() * elastic_force + force_branches.weighted_sum();
-        if (now > node_time) force += material.viscosity() * (elastic_force - node_force) / (now - node_time);
+        if (step > 0.0) force += material.viscosity() * (elastic_force - previous_force) / step;
         response.force[i] = force;
+        previous_force = elastic_force;
         if (!response.modulus_derivatives.empty()) {  // the force is linear in the moduli
             response.modulus_derivatives[0][i] = elastic_force;
             for (std::size_t k = 0; k < terms.size(); ++k) {
                 response.modulus_derivatives[k + 1][i] = force_branches.values()[k];
             }
         }
-        loading.append(now, indented, elastic_force, centre_branches, force_branches);
-        position = static_cast<double>(loading.steps());
-        node_time = now;
-        node_force = elastic_force;
-        peak = lowest_since_peak = lowest_edge = indented;
+        if (indented >= peak) {
+            loading.append(now, indented, elastic_force, centre_branches, force_branches);
+            position = static_cast<double>(loading.steps());
+            peak = lowest_since_peak = lowest_edge = indented;
+        }
     }
     return response;
 }

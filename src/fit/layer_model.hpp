@@ -16,10 +16,10 @@
 
 namespace mdr::fit {
 
-/// A depth history on a layer may rise again by this fraction of its depth range after falling by at most as much
-/// (the noise of a measured hold): the contact then grows back (t1 of eq. L12 moves forward, or a new loading node),
-/// an approximation whose error is of the order of the dip. A rise by more after a fall by more is a contact that
-/// grows again after it shrank, outside Ting's solution (docs/theory.md, "Fits on a layer", eq. L15).
+/// A depth on a layer that dips below its running maximum by at most this fraction of its range (in contact) is noise
+/// and keeps Lee-Radok: on the half-space its difference from Ting's exact force is second order in the dip
+/// (docs/theory.md, "Fits on a layer", eq. L15). A larger fall is Ting's receding contact; a rise by more than this
+/// after it, or the contact's edge moving out by more, is a contact that grows again after it shrank (refused).
 inline constexpr double layer_dip_tolerance = 1e-3;
 
 /// The elastic force at unit shear modulus (E* = 4, nu = 0.5) of an indenter on an incompressible layer for depths
@@ -46,13 +46,13 @@ private:
 
 /// The force [N] at each time of a depth history through (time[i], depth[i] - depth_shift) on an incompressible
 /// viscoelastic `layer`, F_el interpolated (LayerElasticForce) and linear in time between points, as
-/// drivers::run_layer_indentation on the same record (drivers::LoadingRecord): while the depth grows, Lee-Radok
-/// (eq. L11, each Prony branch updated exactly); while it falls, Ting's receding contact (t1 from
-/// int_{t1}^t G dd = 0, F = int_0^{t1} G dF_el, eq. L12, L13); zero once int_0^t G dd <= 0, the free surface
-/// recovering (eq. L14). nullopt where the contact would grow again after it shrank (layer_dip_tolerance) or the
-/// indenter reaches the recovering surface. modulus_derivatives (left out for a material with a dashpot): dF/dG_inf =
-/// F_el, dF/dG_k = h_k while the contact grows; while it recedes those at fixed t1 plus the motion of t1 with the
-/// moduli (through the residual of eq. L12); zero after the loss of contact.
+/// drivers::run_layer_indentation on the same record (drivers::LoadingRecord): while the depth grows (or dips within
+/// layer_dip_tolerance), Lee-Radok (eq. L11, each Prony branch updated exactly); once it falls further, Ting's
+/// receding contact (t1 from int_{t1}^t G dd = 0, F = int_0^{t1} G dF_el, eq. L12, L13); zero once int_0^t G dd <= 0,
+/// the free surface recovering (eq. L14). nullopt where the contact would grow again after it shrank or the indenter
+/// reaches the recovering surface. modulus_derivatives (left out for a material with a dashpot): dF/dG_inf = F_el,
+/// dF/dG_k = h_k under Lee-Radok; under Ting those at fixed t1 plus the motion of t1 with the moduli (through the
+/// residual of eq. L12); zero after the loss of contact.
 std::optional<TingResponse> layer_forces(const rheology::Rheology& material, const contact::Layer& layer,
                                          const std::shared_ptr<const profile::Profile>& indenter,
                                          const std::vector<double>& time, const std::vector<double>& depth,
