@@ -102,6 +102,56 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
     double centre = 0.0, previous_force = 0.0, position = 0.0;
     // The depth at the last loading node (the running maximum), the least depth since and the least d(t1).
     double peak = 0.0, lowest_since_peak = 0.0, lowest_edge = 0.0;
+    // Ting's force (eq. L13) at `row`, time `now`, depth `indented` with its branches and rate there, t1 solved from
+    // eq. L12 starting at loading position `edge` (updated): false (and zero force) where int_0^t G dd <= 0.
+    const auto ting = [&](std::size_t row, double now, double indented, const drivers::PronyBranches& branches,
+                          double rate, double& edge) {
+        const double steps = static_cast<double>(loading.steps());
+        const auto residual = [&](double x) {  // int_{t1}^t G dd, t1 at loading position x (eq. L12)
+            const double inside = std::clamp(x, 0.0, steps);
+            return (x - inside) - loading.ting_residual(inside, now, indented, branches, rate);
+        };
+        if (residual(0.0) >= 0.0) {
+            response.force[row] = 0.0;
+            for (auto& derivative : response.modulus_derivatives) derivative[row] = 0.0;
+            return false;
+        }
+        const double start = std::min(edge, steps);
+        edge = std::min(numerics::monotone_root(residual, start, residual(start), 1.0,
+                                                1e-13 * material.relaxation(0.0) * largest_depth, 1e-12, false),
+                        steps);
+        const double point_depth = loading.at(edge).depth;
+        const double point_force = elastic(point_depth);
+        response.force[row] = loading.force(edge, now, point_force);  // eq. L13
+        if (!response.modulus_derivatives.empty()) {
+            // dF/dG_b = dF/dG_b at fixed t1 + weight dR/dG_b, R the residual of eq. L12: t1 moves with the moduli by
+            // -(dR/dG_b) / (dR/dt1), dR/dt1 = -G(t - t1) d'(t1), and dF/dt1 = [G_inf F_el'(d1) + (G(t - t1) - G_inf)
+            // (the record's F_el over d on t1's step)] d'(t1) (eq. L13: F_el(t1) exact, the branches on F_el linear
+            // in time over the record's steps).
+            const double node = std::min(std::floor(edge), steps - 1.0);
+            const double below = loading.at(node).depth, above = loading.at(node + 1.0).depth;
+            const double secant = above > below ? (elastic(above) - elastic(below)) / (above - below) : 0.0;
+            const double nudge = 1e-6 * point_depth;  // F_el is analytic in d: a central difference
+            const double tangent = (elastic(point_depth + nudge) - elastic(point_depth - nudge)) / (2.0 * nudge);
+            const double relaxed = material.relaxation(now - loading.at(edge).time);
+            const double equilibrium = material.equilibrium_modulus();
+            const double weight = (equilibrium * tangent + (relaxed - equilibrium) * secant) / relaxed;
+            response.modulus_derivatives[0][row] = point_force + weight * (indented - point_depth);
+            for (std::size_t k = 0; k < material.terms().size(); ++k) {
+                response.modulus_derivatives[k + 1][row] =
+                    loading.force_term(k, edge, now) +
+                    weight * (branches.values()[k] - loading.depth_term(k, edge, now));
+            }
+        }
+        return true;
+    };
+    // The dips within the noise since the last loading node (Lee-Radok so far).
+    struct Dip {
+        std::size_t row;
+        double time, depth, rate;
+        drivers::PronyBranches branches;
+    };
+    std::vector<Dip> dips;
     for (std::size_t i = 0; i < time.size(); ++i) {
         const double now = time[i], indented = depth[i] - depth_shift;
         const double step = i == 0 ? 0.0 : now - time[i - 1];
@@ -125,48 +175,25 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
         const double change = indented - centre;
         centre = indented;
         centre_branches.advance(step, change);
+        const double rate = step > 0.0 ? change / step : 0.0;
         if (phase == drivers::LayerPhase::receding || shrank) {  // Ting (eq. L12, L13)
-            const double steps = static_cast<double>(loading.steps());
-            const auto residual = [&](double x) {  // int_{t1}^t G dd, t1 at loading position x (eq. L12)
-                const double inside = std::clamp(x, 0.0, steps);
-                return (x - inside) -
-                       loading.ting_residual(inside, now, indented, centre_branches, step > 0.0 ? change / step : 0.0);
-            };
-            if (residual(0.0) >= 0.0) {  // int_0^t G dd <= 0: the contact is lost
+            if (phase == drivers::LayerPhase::growing) {
+                // The first fall beyond the noise: the contact has receded since the last loading node, through the
+                // dips taken as noise until now (exact for a clean unloading sampled finer than the noise).
+                double edge = static_cast<double>(loading.steps());
+                for (const auto& dip : dips) ting(dip.row, dip.time, dip.depth, dip.branches, dip.rate, edge);
+                position = edge;
+                lowest_edge = loading.at(position).depth;
+            }
+            dips.clear();
+            if (!ting(i, now, indented, centre_branches, rate, position)) {  // int_0^t G dd <= 0: contact lost
                 phase = drivers::LayerPhase::lifted_off;
                 continue;
             }
             phase = drivers::LayerPhase::receding;
-            const double start = std::min(position, steps);
-            position = std::min(numerics::monotone_root(residual, start, residual(start), 1.0,
-                                                        1e-13 * material.relaxation(0.0) * largest_depth, 1e-12,
-                                                        false),
-                                steps);
             const double point_depth = loading.at(position).depth;
             lowest_edge = std::min(lowest_edge, point_depth);
             if (point_depth > lowest_edge + noise) return std::nullopt;
-            const double point_force = elastic(point_depth);
-            response.force[i] = loading.force(position, now, point_force);  // eq. L13
-            if (!response.modulus_derivatives.empty()) {
-                // dF/dG_b = dF/dG_b at fixed t1 + weight dR/dG_b, R the residual of eq. L12: t1 moves with the
-                // moduli by -(dR/dG_b) / (dR/dt1), dR/dt1 = -G(t - t1) d'(t1), and dF/dt1 = [G_inf F_el'(d1) +
-                // (G(t - t1) - G_inf) (the record's F_el over d on t1's step)] d'(t1) (eq. L13: F_el(t1) exact,
-                // the branches on F_el linear in time over the record's steps).
-                const double node = std::min(std::floor(position), steps - 1.0);
-                const double below = loading.at(node).depth, above = loading.at(node + 1.0).depth;
-                const double secant = above > below ? (elastic(above) - elastic(below)) / (above - below) : 0.0;
-                const double nudge = 1e-6 * point_depth;  // F_el is analytic in d: a central difference
-                const double tangent = (elastic(point_depth + nudge) - elastic(point_depth - nudge)) / (2.0 * nudge);
-                const double relaxed = material.relaxation(now - loading.at(position).time);
-                const double equilibrium = material.equilibrium_modulus();
-                const double weight = (equilibrium * tangent + (relaxed - equilibrium) * secant) / relaxed;
-                response.modulus_derivatives[0][i] = point_force + weight * (indented - point_depth);
-                for (std::size_t k = 0; k < terms.size(); ++k) {
-                    response.modulus_derivatives[k + 1][i] =
-                        loading.force_term(k, position, now) +
-                        weight * (centre_branches.values()[k] - loading.depth_term(k, position, now));
-                }
-            }
             continue;
         }
         // The contact grows, or the depth dips within the noise below its running maximum: Lee-Radok (eq. L11), F_el
@@ -188,6 +215,9 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
             loading.append(now, indented, elastic_force, centre_branches, force_branches);
             position = static_cast<double>(loading.steps());
             peak = lowest_since_peak = lowest_edge = indented;
+            dips.clear();
+        } else {
+            dips.push_back({i, now, indented, rate, centre_branches});
         }
     }
     return response;
