@@ -18,8 +18,9 @@ namespace mdr::fit {
 
 /// A depth on a layer that dips below its running maximum by at most this fraction of its range (in contact) is noise
 /// and keeps Lee-Radok: on the half-space its difference from Ting's exact force is second order in the dip
-/// (docs/theory.md, "Fits on a layer", eq. L15). A larger fall is Ting's receding contact; a rise by more than this
-/// after it, or the contact's edge moving out by more, is a contact that grows again after it shrank (refused).
+/// (docs/theory.md, "Fits on a layer", eq. L15). A larger fall is Ting's receding contact, from the last running
+/// maximum on (the dips before it recomputed); a rise by more than this after it, or the contact's edge moving out by
+/// more, is a contact that grows again after it shrank (refused).
 inline constexpr double layer_dip_tolerance = 1e-3;
 
 /// The elastic force at unit shear modulus (E* = 4, nu = 0.5) of an indenter on an incompressible layer for depths
