@@ -45,6 +45,14 @@ void solve_two(std::vector<double>& a, std::vector<double>& b1, std::vector<doub
 
 }  // namespace
 
+void check_layer_contact_radius(const Layer& layer, double largest_radius) {
+    if (!(largest_radius <= max_layer_radius_over_thickness * layer.thickness)) {
+        throw InvalidInput("layer.thickness", format_value(layer.thickness),
+                           "the contact radius may reach " + format_value(largest_radius) + ", more than " +
+                               format_value(max_layer_radius_over_thickness) + " thicknesses: not built yet");
+    }
+}
+
 LayerContact::LayerContact(const Layer& layer, double poisson_ratio, std::shared_ptr<const profile::Profile> indenter,
                            double max_contact_radius, std::size_t nodes)
     : layer_(layer),

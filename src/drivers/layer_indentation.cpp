@@ -18,11 +18,6 @@ namespace mdr::drivers {
 
 namespace {
 
-// The contact radius on a layer exceeds the half-space's at the same depth by at most 3 pi / 4 (a cone on a thin
-// bonded incompressible layer, whose displaced volume stays under the indenter; a sphere: 2, theory.md eq. L8).
-constexpr double layer_radius_margin = 3.0;
-// Contacts wider than this many thicknesses need too many nodes (6 per thickness) for a run.
-constexpr double max_radius_over_thickness = 100.0;
 // `numerics.elements` on a layer is a number of Gauss nodes, each solve O(n^3).
 constexpr std::size_t max_layer_nodes = 512;
 
@@ -41,7 +36,7 @@ double largest_contact_radius(const ContactCase& contact_case) {
     const double half_space = std::holds_alternative<ForceControl>(contact_case.control)
                                   ? resolve_numerics(contact_case).half_width
                                   : indenter.contact_radius(contact_case.load.history->max_value());
-    return std::min(indenter.max_radius(), layer_radius_margin * half_space);
+    return std::min(indenter.max_radius(), contact::layer_radius_margin * half_space);
 }
 
 void refuse(const std::string& key, const std::string& value, const std::string& what) {
@@ -87,11 +82,7 @@ void validate_layer(const ContactCase& contact_case) {
                            "contact)");
     }
     const double largest_radius = largest_contact_radius(contact_case);
-    if (!(largest_radius <= max_radius_over_thickness * layer.thickness)) {
-        throw InvalidInput("layer.thickness", format_value(layer.thickness),
-                           "the contact radius may reach " + format_value(largest_radius) + ", more than " +
-                               format_value(max_radius_over_thickness) + " thicknesses: not built yet");
-    }
+    contact::check_layer_contact_radius(layer, largest_radius);
 }
 
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress,

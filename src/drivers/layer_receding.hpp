@@ -63,6 +63,15 @@ public:
     /// `elastic_force` (the G_inf part).
     double force(double position, double now, double elastic_force) const;
 
+    /// exp(-(now - t1)/tau_k) H_k(t1), H_k the elastic force's branch k: eq. L13's term of G_k.
+    double force_term(std::size_t k, double position, double now) const {
+        return decayed_branch(force_branches_, force_, k, position, now);
+    }
+    /// exp(-(now - t1)/tau_k) h_k(t1), h_k the depth's branch k: eq. L12's term of G_k at t1.
+    double depth_term(std::size_t k, double position, double now) const {
+        return decayed_branch(depth_branches_, depth_, k, position, now);
+    }
+
 private:
     // exp(-(now - t1)/tau_k) h_k(t1) for the branches `record` (per node) of the signal `signal` (per node).
     double decayed_branch(const std::vector<double>& record, const std::vector<double>& signal, std::size_t k,

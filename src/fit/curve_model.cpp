@@ -61,7 +61,7 @@ std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_ca
 
 // The layer model's force at the used points, plus the baseline, and its derivatives (layer_model.hpp). Throws
 // mdr::InvalidInput for what is not built on a layer: a force-driven curve, a compressible body or two bodies, and
-// (the element model, run when the layer model gives nullopt) an unloading.
+// (the element model, run when the layer model gives nullopt) a contact that grows again after it shrank.
 std::optional<ModelValues> layer_curve(const drivers::ContactCase& model_case, const CurveModel& prepared,
                                        double contact_depth, double baseline, ForwardModel forward_model,
                                        bool modulus_derivatives) {
@@ -75,8 +75,10 @@ std::optional<ModelValues> layer_curve(const drivers::ContactCase& model_case, c
     }
     if (forward_model == ForwardModel::elements) {
         throw InvalidInput("fit.data", prepared.curve->name,
-                           fmt::format("the depth falls below its running maximum by more than {} of its range (an "
-                                       "unloading): not built on a [layer] yet (issue 28); fit the loading and hold",
+                           fmt::format("the contact on the [layer] would grow again after it shrank (the depth "
+                                       "rises by more than {} of its range after falling by more, or the indenter "
+                                       "touches the recovering surface again): not built on a [layer] yet (issue "
+                                       "28); fit up to the end of the first unloading",
                                        format_value(layer_dip_tolerance)));
     }
     const Curve& curve = *prepared.curve;

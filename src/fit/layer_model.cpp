@@ -6,8 +6,8 @@
 #include <utility>
 
 #include "mdr/contact/layer_contact.hpp"
-#include "mdr/error.hpp"
-#include "mdr/foundation/step_coefficients.hpp"
+#include "mdr/numerics/monotone_root.hpp"
+#include "../drivers/layer_stepping.hpp"
 
 namespace mdr::fit {
 
@@ -18,12 +18,6 @@ namespace {
 // 2.6e-8 up to 4.5 (cone) and 8e-8 up to 10 (sphere), where the layer kernel's cubic Hermite table (C1, 1e-9 of k(0))
 // sets the floor (tests/unit/fit/layer_model_test.cpp, InterpolationMatchesTheLayerSolutionAtEveryDepth).
 constexpr std::size_t chebyshev_nodes = 40;
-// The layer's contact radius exceeds the half-space's at the same depth by at most 3 pi / 4 (a cone on a thin bonded
-// layer; drivers::run_layer_indentation prepares the same margin).
-constexpr double layer_radius_margin = 3.0;
-// Contacts wider than this many thicknesses need too many Gauss nodes (6 per thickness, each solve O(n^3)): the bound
-// of drivers::validate_layer, which a free thickness near its lower bound would otherwise pass unchecked.
-constexpr double max_radius_over_thickness = 100.0;
 
 }  // namespace
 
@@ -33,12 +27,8 @@ LayerElasticForce::LayerElasticForce(const contact::Layer& layer, std::shared_pt
     if (!(largest_depth > 0.0)) return;
     const bool punch = indenter_->is_flat_punch();
     largest_radius_ = punch ? indenter_->max_radius() : indenter_->contact_radius(largest_depth);
-    const double widest = std::min(indenter_->max_radius(), layer_radius_margin * largest_radius_);
-    if (!(widest <= max_radius_over_thickness * layer.thickness)) {
-        throw InvalidInput("layer.thickness", format_value(layer.thickness),
-                           "the contact radius may reach " + format_value(widest) + ", more than " +
-                               format_value(max_radius_over_thickness) + " thicknesses: not built yet");
-    }
+    const double widest = std::min(indenter_->max_radius(), contact::layer_radius_margin * largest_radius_);
+    contact::check_layer_contact_radius(layer, widest);
     if (punch) {
         const contact::LayerContact solver(layer, 0.5, indenter_, widest, nodes);
         punch_force_ = 4.0 * solver.at_radius(widest).force;  // E* = 4 G (eq. 21)
@@ -94,37 +84,141 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
                                          double depth_shift, std::size_t nodes, bool modulus_derivatives) {
     if (time.empty()) return std::nullopt;
     const auto [lowest, deepest] = std::minmax_element(depth.begin(), depth.end());
-    const double allowed_dip = layer_dip_tolerance * (*deepest - *lowest);
-    double running_maximum = depth.front();
-    for (double value : depth) {
-        running_maximum = std::max(running_maximum, value);
-        if (running_maximum > depth_shift && running_maximum - value > allowed_dip) return std::nullopt;
-    }
-    const LayerElasticForce elastic(layer, indenter, *deepest - depth_shift, nodes);
+    const double noise = layer_dip_tolerance * (*deepest - *lowest);
+    const double largest_depth = *deepest - depth_shift;
+    const LayerElasticForce elastic(layer, indenter, largest_depth, nodes);
 
     const auto& terms = material.terms();
-    const bool derivatives = modulus_derivatives && material.viscosity() == 0.0;
     TingResponse response;
     response.force.resize(time.size());
-    if (derivatives) response.modulus_derivatives.assign(terms.size() + 1, std::vector<double>(time.size()));
-    std::vector<double> branches(terms.size(), 0.0);  // h_k
-    double previous_force = 0.0;
-    for (std::size_t i = 0; i < time.size(); ++i) {
-        const double elastic_force = elastic(depth[i] - depth_shift);
-        const double step = i == 0 ? 0.0 : time[i] - time[i - 1];
-        const double change = elastic_force - previous_force;
-        double force = material.equilibrium_modulus() * elastic_force;
-        for (std::size_t k = 0; k < terms.size(); ++k) {
-            const double ratio = step / terms[k].relaxation_time;
-            // F_el linear over the step: the exact update of a Prony branch (eq. 16, 18).
-            branches[k] = branches[k] * std::exp(-ratio) + foundation::branch_gain(ratio) * change;
-            force += terms[k].modulus * branches[k];
-            if (derivatives) response.modulus_derivatives[k + 1][i] = branches[k];
+    if (modulus_derivatives && material.viscosity() == 0.0) {
+        response.modulus_derivatives.assign(terms.size() + 1, std::vector<double>(time.size(), 0.0));
+    }
+    // The phases and the record of drivers::LayerStepper (eq. L11 to L14), on the interpolated F_el.
+    drivers::PronyBranches centre_branches(material);  // of w0: the depth in contact, the free surface after
+    drivers::PronyBranches force_branches(material);   // of F_el (Lee-Radok, the noise included)
+    drivers::LoadingRecord loading(material, time.front());
+    drivers::LayerPhase phase = drivers::LayerPhase::approach;
+    double centre = 0.0, previous_force = 0.0, position = 0.0;
+    // The depth at the last loading node (the running maximum), the least depth since and the least d(t1).
+    double peak = 0.0, lowest_since_peak = 0.0, lowest_edge = 0.0;
+    // Ting's force (eq. L13) at `row`, time `now`, depth `indented` with its branches and rate there, t1 solved from
+    // eq. L12 starting at loading position `edge` (updated): false (and zero force) where int_0^t G dd <= 0.
+    const auto ting = [&](std::size_t row, double now, double indented, const drivers::PronyBranches& branches,
+                          double rate, double& edge) {
+        const double steps = static_cast<double>(loading.steps());
+        const auto residual = [&](double x) {  // int_{t1}^t G dd, t1 at loading position x (eq. L12)
+            const double inside = std::clamp(x, 0.0, steps);
+            return (x - inside) - loading.ting_residual(inside, now, indented, branches, rate);
+        };
+        if (residual(0.0) >= 0.0) {
+            response.force[row] = 0.0;
+            for (auto& derivative : response.modulus_derivatives) derivative[row] = 0.0;
+            return false;
         }
-        if (step > 0.0) force += material.viscosity() * change / step;
-        if (derivatives) response.modulus_derivatives[0][i] = elastic_force;
+        const double start = std::min(edge, steps);
+        edge = std::min(numerics::monotone_root(residual, start, residual(start), 1.0,
+                                                1e-13 * material.relaxation(0.0) * largest_depth, 1e-12, false),
+                        steps);
+        const double point_depth = loading.at(edge).depth;
+        const double point_force = elastic(point_depth);
+        response.force[row] = loading.force(edge, now, point_force);  // eq. L13
+        if (!response.modulus_derivatives.empty()) {
+            // dF/dG_b = dF/dG_b at fixed t1 + weight dR/dG_b, R the residual of eq. L12: t1 moves with the moduli by
+            // -(dR/dG_b) / (dR/dt1), dR/dt1 = -G(t - t1) d'(t1), and dF/dt1 = [G_inf F_el'(d1) + (G(t - t1) - G_inf)
+            // (the record's F_el over d on t1's step)] d'(t1) (eq. L13: F_el(t1) exact, the branches on F_el linear
+            // in time over the record's steps).
+            const double node = std::min(std::floor(edge), steps - 1.0);
+            const double below = loading.at(node).depth, above = loading.at(node + 1.0).depth;
+            const double secant = above > below ? (elastic(above) - elastic(below)) / (above - below) : 0.0;
+            const double nudge = 1e-6 * point_depth;  // F_el is analytic in d: a central difference
+            const double tangent = (elastic(point_depth + nudge) - elastic(point_depth - nudge)) / (2.0 * nudge);
+            const double relaxed = material.relaxation(now - loading.at(edge).time);
+            const double equilibrium = material.equilibrium_modulus();
+            const double weight = (equilibrium * tangent + (relaxed - equilibrium) * secant) / relaxed;
+            response.modulus_derivatives[0][row] = point_force + weight * (indented - point_depth);
+            for (std::size_t k = 0; k < material.terms().size(); ++k) {
+                response.modulus_derivatives[k + 1][row] =
+                    loading.force_term(k, edge, now) +
+                    weight * (branches.values()[k] - loading.depth_term(k, edge, now));
+            }
+        }
+        return true;
+    };
+    // The dips within the noise since the last loading node (Lee-Radok so far).
+    struct Dip {
+        std::size_t row;
+        double time, depth, rate;
+        drivers::PronyBranches branches;
+    };
+    std::vector<Dip> dips;
+    for (std::size_t i = 0; i < time.size(); ++i) {
+        const double now = time[i], indented = depth[i] - depth_shift;
+        const double step = i == 0 ? 0.0 : now - time[i - 1];
+        if (phase == drivers::LayerPhase::approach && indented <= 0.0) {
+            loading = drivers::LoadingRecord(material, now);
+            continue;
+        }
+        if (phase == drivers::LayerPhase::lifted_off) {  // the free surface recovers (eq. L14)
+            const double change = centre_branches.free_change(step, centre);
+            centre += change;
+            centre_branches.advance(step, change);
+            if (indented > centre + 1e-9 * largest_depth) return std::nullopt;  // contact again
+            continue;
+        }
+        lowest_since_peak = std::min(lowest_since_peak, indented);
+        // A contact that grows again after it shrank is outside Ting's solution (as the driver): the depth rising by
+        // more than the noise, or the edge moving out (t1 forward: a hold after an unloading), after the depth fell
+        // by more.
+        const bool shrank = peak - lowest_since_peak > noise;
+        if (shrank && indented > lowest_since_peak + noise) return std::nullopt;
+        const double change = indented - centre;
+        centre = indented;
+        centre_branches.advance(step, change);
+        const double rate = step > 0.0 ? change / step : 0.0;
+        if (phase == drivers::LayerPhase::receding || shrank) {  // Ting (eq. L12, L13)
+            if (phase == drivers::LayerPhase::growing) {
+                // The first fall beyond the noise: the contact has receded since the last loading node, through the
+                // dips taken as noise until now (exact for a clean unloading sampled finer than the noise).
+                double edge = static_cast<double>(loading.steps());
+                for (const auto& dip : dips) ting(dip.row, dip.time, dip.depth, dip.branches, dip.rate, edge);
+                position = edge;
+                lowest_edge = loading.at(position).depth;
+            }
+            dips.clear();
+            if (!ting(i, now, indented, centre_branches, rate, position)) {  // int_0^t G dd <= 0: contact lost
+                phase = drivers::LayerPhase::lifted_off;
+                continue;
+            }
+            phase = drivers::LayerPhase::receding;
+            const double point_depth = loading.at(position).depth;
+            lowest_edge = std::min(lowest_edge, point_depth);
+            if (point_depth > lowest_edge + noise) return std::nullopt;
+            continue;
+        }
+        // The contact grows, or the depth dips within the noise below its running maximum: Lee-Radok (eq. L11), F_el
+        // linear over each step; a new running maximum is a loading node of Ting's record.
+        phase = drivers::LayerPhase::growing;
+        const double elastic_force = elastic(indented);
+        force_branches.advance(step, elastic_force - previous_force);
+        double force = material.equilibrium_modulus() * elastic_force + force_branches.weighted_sum();
+        if (step > 0.0) force += material.viscosity() * (elastic_force - previous_force) / step;
         response.force[i] = force;
         previous_force = elastic_force;
+        if (!response.modulus_derivatives.empty()) {  // the force is linear in the moduli
+            response.modulus_derivatives[0][i] = elastic_force;
+            for (std::size_t k = 0; k < terms.size(); ++k) {
+                response.modulus_derivatives[k + 1][i] = force_branches.values()[k];
+            }
+        }
+        if (indented >= peak) {
+            loading.append(now, indented, elastic_force, centre_branches, force_branches);
+            position = static_cast<double>(loading.steps());
+            peak = lowest_since_peak = lowest_edge = indented;
+            dips.clear();
+        } else {
+            dips.push_back({i, now, indented, rate, centre_branches});
+        }
     }
     return response;
 }

@@ -16,9 +16,11 @@
 
 namespace mdr::fit {
 
-/// A depth history may fall below its running maximum by this fraction of its depth range and still count as a
-/// growing contact on a layer: the noise of a measured hold. Lee-Radok's force then differs from the exact (Ting's,
-/// on the half-space) by a term second order in the dip (docs/theory.md, "Fits on a layer", eq. L15).
+/// A depth on a layer that dips below its running maximum by at most this fraction of its range (in contact) is noise
+/// and keeps Lee-Radok: on the half-space its difference from Ting's exact force is second order in the dip
+/// (docs/theory.md, "Fits on a layer", eq. L15). A larger fall is Ting's receding contact, from the last running
+/// maximum on (the dips before it recomputed); a rise by more than this after it, or the contact's edge moving out by
+/// more, is a contact that grows again after it shrank (refused).
 inline constexpr double layer_dip_tolerance = 1e-3;
 
 /// The elastic force at unit shear modulus (E* = 4, nu = 0.5) of an indenter on an incompressible layer for depths
@@ -44,12 +46,14 @@ private:
 };
 
 /// The force [N] at each time of a depth history through (time[i], depth[i] - depth_shift) on an incompressible
-/// viscoelastic `layer`: F_el at each point, linear in time between points, and each Prony branch of G updated
-/// exactly (F = G_inf F_el + sum G_k h_k + eta dF_el/dt, h_k = int exp(-(t - s)/tau_k) dF_el(s)), as
-/// drivers::run_layer_indentation. Exact (Lee & Radok 1960) while the depth does not fall; a fall below the running
-/// maximum (in contact) by at most layer_dip_tolerance of the depth range is taken as noise; nullopt for a larger
-/// one (an unloading). modulus_derivatives: dF/dG_inf = F_el, dF/dG_k = h_k (left out for a material with a
-/// dashpot).
+/// viscoelastic `layer`, F_el interpolated (LayerElasticForce) and linear in time between points, as
+/// drivers::run_layer_indentation on the same record (drivers::LoadingRecord): while the depth grows (or dips within
+/// layer_dip_tolerance), Lee-Radok (eq. L11, each Prony branch updated exactly); once it falls further, Ting's
+/// receding contact (t1 from int_{t1}^t G dd = 0, F = int_0^{t1} G dF_el, eq. L12, L13); zero once int_0^t G dd <= 0,
+/// the free surface recovering (eq. L14). nullopt where the contact would grow again after it shrank or the indenter
+/// reaches the recovering surface. modulus_derivatives (left out for a material with a dashpot): dF/dG_inf = F_el,
+/// dF/dG_k = h_k under Lee-Radok; under Ting those at fixed t1 plus the motion of t1 with the moduli (through the
+/// residual of eq. L12); zero after the loss of contact.
 std::optional<TingResponse> layer_forces(const rheology::Rheology& material, const contact::Layer& layer,
                                          const std::shared_ptr<const profile::Profile>& indenter,
                                          const std::vector<double>& time, const std::vector<double>& depth,

@@ -87,10 +87,14 @@ def test_what_a_fit_on_a_layer_refuses(run_mdr, workdir, layer_data, free, extra
     assert_bad_input(run_mdr("fit", case, "--out", workdir / "out", out=workdir / "out"), *fragments)
 
 
-def test_an_unloading_is_refused(run_mdr, workdir):
-    # The half-space model makes a load-unload; on a layer the fit refuses its unloading.
-    text = MATERIAL.split("[layer]")[0].format(**TRUTH) + LOAD.replace("[3.0, 1.5e-6]", "[3.0, 0.5e-6]")
+def test_a_reload_after_an_unloading_is_refused(run_mdr, workdir):
+    # The half-space model makes a load-unload-reload; on a layer the fit models the unloading (Ting's receding
+    # contact) and refuses the contact growing again after it shrank, as the driver does.
+    text = MATERIAL.split("[layer]")[0].format(**TRUTH) + LOAD.replace("[3.0, 1.5e-6]",
+                                                                       "[2.0, 0.5e-6], [3.0, 1.5e-6]")
     (workdir / "truth.toml").write_text(text, encoding="utf-8")
     assert run_mdr("run", "truth.toml", "--out", workdir / "data").returncode == 0
     case = write_fit(workdir, ["material.G_inf"])
-    assert_bad_input(run_mdr("fit", case, "--out", workdir / "out", out=workdir / "out"), "fit.data[0]", "unloading")
+    with case.open("a", encoding="utf-8") as file:  # the reload stays in the data (by default cut at the pull-off)
+        file.write('until = "end"\n')
+    assert_bad_input(run_mdr("fit", case, "--out", workdir / "out", out=workdir / "out"), "fit.data[0]", "grow again")

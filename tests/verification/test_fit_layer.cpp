@@ -200,14 +200,15 @@ TEST(FitLayer, WhatIsNotBuiltOnALayerIsRefusedNamingTheKey) {
         }
         return std::string("(no error)");
     };
-    // An unloading: the depth falls back by half its range.
+    // An unloading to half the range, then a hold: the contact would grow again (Ting's t1 moves forward) after it
+    // shrank.
     auto unloading = curve;
     for (std::size_t i = unloading.time.size() / 2; i < unloading.time.size(); ++i) {
         unloading.depth[i] = 0.5 * unloading.depth[i];
     }
     EXPECT_NE(message(layer_problem(truth, unloading, {1e3, 3e3, 0.2, thickness})).find("fit.data"),
               std::string::npos);
-    EXPECT_NE(message(layer_problem(truth, unloading, {1e3, 3e3, 0.2, thickness})).find("unloading"),
+    EXPECT_NE(message(layer_problem(truth, unloading, {1e3, 3e3, 0.2, thickness})).find("grow again"),
               std::string::npos);
     // A force-driven curve (the depth fitted): force control is not built on a layer.
     auto force_driven = layer_problem(truth, curve, {1e3, 3e3, 0.2, thickness});

@@ -17,6 +17,19 @@ namespace mdr::contact {
 /// (tests/verification/test_layer_contact.cpp, ForceConvergesInTheNumberOfNodes).
 inline constexpr std::size_t default_layer_nodes = 48;
 
+/// The contact radius on a layer exceeds the half-space's at the same depth by at most 3 pi / 4 (a cone on a thin
+/// bonded incompressible layer, whose displaced volume stays under the indenter; a sphere: 2, docs/theory.md eq.
+/// L8): the margin by which a run or a fit prepares the widest contact beyond the half-space's radius.
+inline constexpr double layer_radius_margin = 3.0;
+
+/// Contacts wider than this many thicknesses are refused (key `layer.thickness`): they need too many Gauss nodes
+/// (6 per thickness, each solve O(n^3)).
+inline constexpr double max_layer_radius_over_thickness = 100.0;
+
+/// Throws mdr::InvalidInput (key `layer.thickness`) unless `largest_radius` [m], the widest contact a run or a fit
+/// prepares, is at most max_layer_radius_over_thickness times the layer's thickness.
+void check_layer_contact_radius(const Layer& layer, double largest_radius);
+
 /// One elastic equilibrium on the layer with unit plane-strain modulus E* = 1 (force and line load scale with E*).
 struct LayerContactState {
     double contact_radius = 0.0;  ///< a [m]
