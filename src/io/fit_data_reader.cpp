@@ -88,7 +88,7 @@ void read_column_keys(TableReader& table, const UnitSystem& system, fit::CurveSo
 fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory,
                                const UnitSystem& system) {
     table.reject_unknown({"kind", "file", "name", "time", "depth", "force", "piezo", "deflection", "spring_constant",
-                          "units", "segment_column", "segments", "fitted", "until", "window", "curve"});
+                          "units", "segment_column", "segments", "fitted", "until", "window", "curve", "start"});
     fit::CurveSource source;
     const std::filesystem::path file = table.string("file");
     source.file = file.is_absolute() ? file : case_directory / file;
@@ -114,6 +114,9 @@ fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& 
         }
     }
     if (table.has("fitted")) source.fitted = read_fitted(table, fit::Fitted::force);
+    if (table.has("start")) {
+        source.preloaded = choice(table, "start", {"at_rest", "preloaded"}, "at_rest") == "preloaded";
+    }
     if (table.has("until")) {
         const std::string until = choice(table, "until", {"pull_off", "end"}, "pull_off");
         source.rows.until = until == "pull_off" ? fit::Until::pull_off : fit::Until::end;
