@@ -105,11 +105,13 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     const bool depth_driven = prepared.fitted == Fitted::force;
     if (curve.preloaded && !depth_driven) {
         throw InvalidInput("fit.data.start", "\"preloaded\"",
-                           "needs a depth-driven curve (fitted = \"force\"): a preload under force control is not built");
+                           "needs a depth-driven curve (fitted = \"force\"): a preload under force control is not "
+                           "built");
     }
     if (model_case.layer) {
         if (curve.preloaded) {
-            throw InvalidInput("fit.data.start", "\"preloaded\"", "is not built on a [layer] (its model starts unloaded)");
+            throw InvalidInput("fit.data.start", "\"preloaded\"",
+                               "is not built on a [layer] (its model starts unloaded)");
         }
         return layer_curve(model_case, prepared, contact_depth, baseline, forward_model, modulus_derivatives);
     }
