@@ -111,5 +111,37 @@ TEST(Preload, BandModelConvergesOnThePreloadedIntegral) {
     EXPECT_LT(errors[1], 0.35 * errors[0]);  // second order: a quarter of the error at half the spacing
 }
 
+// A depth that dips (a noisy hold: the contact shrinks and grows again, outside the continuum model): the preloaded
+// start equals the foundation brought physically to that state, pressed from undeformed to d_0 and held 100 tau1
+// (every branch relaxed to exp(-100)), run from rest; its force less G_inf F_el(d_0) at the record's first time.
+TEST(Preload, BandModelStartIsTheRelaxedFoundation) {
+    const auto cone = profile::make_cone(10.0);
+    Record record = ramp_and_hold(100, true);
+    for (std::size_t i = 0; i < record.depth.size(); ++i) {
+        record.depth[i] -= 0.2 * preload * std::abs(std::sin(0.37 * static_cast<double>(i)));
+    }
+    Record history;
+    const double settle = 100.0 * tau1;
+    for (std::size_t i = 0; i <= 200; ++i) {
+        history.time.push_back(-settle - 1.0 + static_cast<double>(i) / 200.0);
+        history.depth.push_back(preload * static_cast<double>(i) / 200.0);
+    }
+    history.time.insert(history.time.end(), record.time.begin(), record.time.end());
+    history.depth.insert(history.depth.end(), record.depth.begin(), record.depth.end());
+    const double radius = 2.0 * (preload + speed * ramp_end) / (std::numbers::pi * std::tan(slope));
+    const std::size_t count = 400;
+    const double spacing = 1.1 * radius / static_cast<double>(count);
+    const auto preloaded = band_forces(material, *cone, spacing, count, record.time, record.depth, {}, true);
+    const auto relaxed = band_forces(material, *cone, spacing, count, history.time, history.depth, {}, false);
+    ASSERT_TRUE(preloaded && relaxed);
+    const std::size_t first = history.time.size() - record.time.size();
+    const double preload_force = relaxed->force[first];
+    EXPECT_NEAR(preload_force, G_inf * elastic_force(record.depth.front()), 1e-3 * preload_force);
+    const double peak = preloaded_force(ramp_end);
+    for (std::size_t i = 0; i < record.time.size(); ++i) {
+        EXPECT_NEAR(preloaded->force[i], relaxed->force[first + i] - preload_force, 1e-9 * peak) << "row " << i;
+    }
+}
+
 }  // namespace
 }  // namespace mdr::fit
