@@ -117,3 +117,20 @@ def test_bad_preload_input_is_refused(run_mdr, workdir, start, extra, fragments)
     text = CASE.format(start=start).replace("[fit]\n", "[fit]\n" + extra)
     (workdir / "case.toml").write_text(text, encoding="utf-8")
     assert_bad_input(run_mdr("fit", workdir / "case.toml", "--out", workdir / "out"), *fragments)
+
+
+def test_a_preload_the_band_model_cannot_run_is_refused(run_mdr, workdir):
+    # A Maxwell material (G_inf = 0) and a depth that dips once (outside the continuum model): the drivers' elements
+    # start unloaded, so the preloaded curve is refused naming the key and the rule.
+    write_record(workdir / "record.csv")
+    lines = (workdir / "record.csv").read_text(encoding="utf-8").splitlines()
+    row = lines[300].split(",")
+    row[1] = repr(float(row[1]) - 1e-8)
+    lines[300] = ",".join(row)
+    (workdir / "record.csv").write_text("\n".join(lines) + "\n", encoding="utf-8")
+    text = (CASE.format(start="preloaded").replace('model = "standard"', 'model = "maxwell"')
+            .replace("G_inf = 5.0e3\n", "").replace("G1 = 1.0e4", "G = 1.0e4").replace("tau1 = 0.1", "tau = 0.1")
+            .replace('["material.G_inf", "material.G1", "material.tau1"]', '["material.G", "material.tau"]'))
+    (workdir / "case.toml").write_text(text, encoding="utf-8")
+    assert_bad_input(run_mdr("fit", workdir / "case.toml", "--out", workdir / "out"),
+                     'fit.data.start = "preloaded"', "needs the band model")
