@@ -125,6 +125,11 @@ void validate(const FitProblem& problem) {
                                "needs fit.contact_point = \"fit\" (the preload depth d_0 = first depth - contact point "
                                "is fitted)");
         }
+        if (fitted_of(problem, c) != Fitted::force) {
+            throw InvalidInput(key, "\"preloaded\"",
+                               "needs a depth-driven curve (fitted = \"force\"): a preload under force control is "
+                               "not built");
+        }
         const auto& bounds = problem.settings.contact_point_bounds;
         if (bounds && !((*bounds)[0] < curve.depth.front())) {
             throw InvalidInput("fit.bounds.contact_point", format_value((*bounds)[0]),

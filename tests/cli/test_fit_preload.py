@@ -111,6 +111,9 @@ def test_the_at_rest_model_cannot_follow_a_preloaded_record(run_mdr, workdir):
     ("loaded", "", ("fit.data[0].start = \"loaded\"", "one of at_rest, preloaded")),
     ("preloaded", "contact_point = \"estimate\"\n",
      ("start = \"preloaded\"", "needs fit.contact_point = \"fit\"")),
+    ("preloaded", "fitted = \"depth\"\n", ("fit.data[0].start = \"preloaded\"", "needs a depth-driven curve")),
+    ("preloaded", "bounds = { contact_point = [4.0e-6, 6.0e-6] }\n",
+     ("fit.bounds.contact_point = 4e-06", "must be below the first depth 3e-06")),
 ])
 def test_bad_preload_input_is_refused(run_mdr, workdir, start, extra, fragments):
     write_record(workdir / "record.csv")
