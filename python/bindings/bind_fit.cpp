@@ -19,9 +19,10 @@ namespace py = pybind11;
 namespace mdr::python {
 namespace {
 
-/// name, time, depth, force, fitted ("" for the fit's setting, else "force" or "depth"); numpy arrays come in
-/// without a copy (mdr.fit checks them, python/mdr/_arrays.py) and are copied once, into the curve.
-using CurveArrays = std::tuple<std::string, InputArray, InputArray, InputArray, std::string>;
+/// name, time, depth, force, fitted ("" for the fit's setting, else "force" or "depth"), start ("" or "at_rest",
+/// "preloaded": Curve::preloaded); numpy arrays come in without a copy (mdr.fit checks them, python/mdr/_arrays.py)
+/// and are copied once, into the curve.
+using CurveArrays = std::tuple<std::string, InputArray, InputArray, InputArray, std::string, std::string>;
 
 /// index in mdr.fit's data, name, mass (None: the case's indenter.mass), velocity, restitution, contact_time,
 /// restitution_error, contact_time_error (each error list empty, one value or one per impact).
@@ -84,12 +85,17 @@ py::dict fit_case_of(const py::object& case_, const std::string& source, const s
             }
         }
         for (std::size_t i = 0; i < curves.size(); ++i) {
-            const auto& [name, time, depth, force, fitted] = curves[i];
+            const auto& [name, time, depth, force, fitted, start] = curves[i];
             loaded.push_back(fit::make_curve(name, to_vector(time), to_vector(depth), to_vector(force)));
             if (fitted == "force") loaded.back().fitted = fit::Fitted::force;
             else if (fitted == "depth") loaded.back().fitted = fit::Fitted::depth;
             else if (!fitted.empty()) {
                 throw InvalidInput("data[" + std::to_string(i) + "].fitted", "\"" + fitted + "\"", "one of force, depth");
+            }
+            if (start == "preloaded") loaded.back().preloaded = true;
+            else if (!start.empty() && start != "at_rest") {
+                throw InvalidInput("data[" + std::to_string(i) + "].start", "\"" + start + "\"",
+                                   "one of at_rest, preloaded");
             }
         }
     }

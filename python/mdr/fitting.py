@@ -110,6 +110,8 @@ def fit(case: CaseLike, data: Mapping[str, Any] | Sequence[Mapping[str, Any]] | 
         0.019 reads as N/m to an AFM user and as nN/µm to the case. ``fitted`` (``"force"`` or ``"depth"``) sets
         what that curve fits when
         it differs from ``fit.fitted``: a creep curve beside an indentation curve, one material for both.
+        ``start`` (``"at_rest"``, the default, or ``"preloaded"``) is the state at the first row, as a case file's
+        ``[[fit.data]] start`` (docs/case-format.md): ``"preloaded"`` fits a relaxed preload depth d_0.
         Rebound data (one impact of the case's indenter per approach speed, the same material) are a dict with
         ``"kind": "rebound"``, ``velocity`` (approach speeds v0) and ``restitution`` (e in [0, 1]), and
         optionally ``contact_time`` (T), ``restitution_error`` and ``contact_time_error`` (standard
@@ -167,7 +169,7 @@ def fit(case: CaseLike, data: Mapping[str, Any] | Sequence[Mapping[str, Any]] | 
             rebounds.append(_rebound_arrays(curve, i))
         elif kind == "curve":
             curves.append((str(curve.get("name", f"curve{i}")), *_curve_arrays(curve, f"data[{i}]", case_units),
-                           str(curve.get("fitted", ""))))
+                           str(curve.get("fitted", "")), str(curve.get("start", ""))))
         else:
             raise ValueError(f"data[{i}].kind = {kind!r}: one of curve, rebound")
     raw = _mdr._fit_case(case_input, source, directory, curves, rebounds)

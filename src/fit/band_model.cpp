@@ -112,6 +112,21 @@ public:
 
     std::size_t element_steps() const { return element_steps_; }
 
+    // The foundation at rest under the depth `depth` > 0 (band_model.hpp: a relaxed preload): every element with
+    // g < depth in contact at w = d - g with every branch relaxed (h_k = 0), the peak at that depth. Returns the
+    // force, G_inf times the foundation's elastic force at that depth.
+    double rest_under(double depth) {
+        peak_ = depth;
+        double stress = 0.0;
+        while (touched_ < g_.size() && g_[touched_] < depth) {
+            w_[touched_] = depth - g_[touched_];
+            stress_[touched_] = material_.equilibrium_modulus() * w_[touched_];
+            contact_[touched_] = 1;
+            stress += stress_[touched_++];
+        }
+        return force_per_stress * spacing_ * stress;
+    }
+
 private:
     // Below this g a folded element stays in contact at depth d with the running maximum `peak` (band_model.hpp); the
     // margin covers the round-off of its stress, so that the element model's own test (sigma >= 0) cannot disagree.
@@ -289,13 +304,19 @@ bool band_model_applies(const rheology::Rheology& material) {
 std::optional<BandResponse> band_forces(const rheology::Rheology& material, const profile::Profile& indenter,
                                         double spacing, std::size_t count, const std::vector<double>& time,
                                         const std::vector<double>& depth,
-                                        const std::function<void()>& check_interrupt) {
+                                        const std::function<void()>& check_interrupt, bool preloaded) {
     if (!band_model_applies(material) || time.empty() || count == 0) return std::nullopt;
     // The drivers' Foundation refuses a state this large with its own message (numerics.elements): leave it to them.
     if (!foundation::state_fits(count, material.terms().size())) return std::nullopt;
     BandRun run(material, indenter, spacing, count);
     BandResponse response{std::vector<double>(time.size(), 0.0), 0};
-    if (depth.front() > 0.0) {  // a jump at the first time
+    double preload_force = 0.0;
+    if (depth.front() > 0.0 && preloaded) {
+        if (!(depth.front() <= foundation::deepest_depth(indenter, spacing * static_cast<double>(count)))) {
+            return std::nullopt;
+        }
+        preload_force = run.rest_under(depth.front());
+    } else if (depth.front() > 0.0) {  // a jump at the first time
         run.prepare(0.0);
         const auto force = run.step(time.front(), time.front(), 0.0, depth.front());
         if (!force) return std::nullopt;
@@ -306,7 +327,7 @@ std::optional<BandResponse> band_forces(const rheology::Rheology& material, cons
         run.prepare(time[i] - time[i - 1]);
         const auto force = run.step(time[i - 1], time[i], depth[i - 1], depth[i]);
         if (!force) return std::nullopt;
-        response.force[i] = *force;
+        response.force[i] = *force - preload_force;
     }
     response.element_steps = run.element_steps();
     return response;

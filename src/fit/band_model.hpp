@@ -49,10 +49,16 @@ struct BandResponse {
 /// or the end of a tabulated profile at the half-width: the drivers' Foundation then reports it), or when the
 /// drivers' Foundation would refuse `count` elements as too many (its message then names the key).
 /// `check_interrupt`, when set, is called every 4096 steps (it may throw mdr::Interrupted).
+///
+/// `preloaded`: a first depth d_0 = depth[0] > 0 is a relaxed preload instead of a jump (docs/theory.md §4d): the
+/// foundation has rested under d_0 long enough for every branch to relax, so each element with g < d_0 starts in
+/// contact at w = d_0 - g with h_k = 0 (stress G_inf w), and the force returned is the change since time[0],
+/// F(t) - G_inf F_el(d_0) = int_{t_0}^t G(t - s) dF_el(d(s)) while the contact grows (Lee-Radok, eq. 21), and the
+/// foundation's own force less its preload once it shrinks. The band bound holds from the start (h_k = 0 = d_0 - D).
 std::optional<BandResponse> band_forces(const rheology::Rheology& material, const profile::Profile& indenter,
                                         double spacing, std::size_t count, const std::vector<double>& time,
                                         const std::vector<double>& depth,
-                                        const std::function<void()>& check_interrupt = {});
+                                        const std::function<void()>& check_interrupt = {}, bool preloaded = false);
 
 /// What the band model gives for one force history.
 struct BandCreep {

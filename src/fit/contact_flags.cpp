@@ -19,8 +19,32 @@ double noise_equivalent_depth(const Curve& curve) {
     return std::pow(curve.force_noise / curve.onset_amplitude, 1.0 / curve.onset_exponent);
 }
 
+// A preloaded curve's preload depth d_0 (its contact at or before its first row by design) against its bounds.
+void flag_preload(const FitProblem& problem, const Curve& curve, CurveFit& fitted) {
+    const double preload = curve.depth.front() - fitted.contact_depth;
+    fitted.preload_depth = preload;
+    fitted.preload_depth_error = fitted.contact_depth_error;
+    const auto [lowest, deepest] = std::minmax_element(curve.depth.begin(), curve.depth.end());
+    const double range = *deepest - *lowest;
+    if (!(preload > 1e-6 * range)) {
+        fitted.flags.push_back(fmt::format("preload depth d_0 = {:.6g} is at its lower bound 0: the data show no "
+                                           "preload (start = \"at_rest\" is the same model)", preload));
+    } else if (problem.settings.contact_point_bounds
+                   ? fitted.contact_depth - (*problem.settings.contact_point_bounds)[0] <= 1e-6 * range
+                   : preload >= range * (1.0 - 1e-6)) {
+        fitted.flags.push_back(fmt::format("preload depth d_0 = {:.6g} is at its upper bound ({}): the data push it "
+                                           "beyond", preload, problem.settings.contact_point_bounds
+                                               ? "fit.bounds.contact_point lower bound"
+                                               : "the record's depth range"));
+    }
+}
+
 // The contact point against the record's depths and the fit's bounds.
 void flag_contact(const FitProblem& problem, const Curve& curve, CurveFit& fitted) {
+    if (curve.preloaded) {
+        flag_preload(problem, curve, fitted);
+        return;
+    }
     const auto [lowest, deepest] = std::minmax_element(curve.depth.begin(), curve.depth.end());
     const double contact = fitted.contact_depth;
     if (contact < *lowest || contact > *deepest) {
@@ -129,9 +153,13 @@ void flag_contact_and_baseline(const FitProblem& problem, FitResult& result) {
             fitted.flags.push_back(fmt::format(
                 "starts in contact: no approach out of contact is recorded (of the {} rows before the contact, {} lie "
                 "deeper than their median depth beyond the noise; {} needed): the force rises as soon as the depth "
-                "moves, and the model takes the rows before contact as unloaded (no preload at the record's start; a "
-                "preload's force would be taken for baseline)",
-                curve.baseline_rows, approach, min_approach_rows));
+                "moves, {}",
+                curve.baseline_rows, approach, min_approach_rows,
+                curve.preloaded ? "modelled as a relaxed preload (start = \"preloaded\": the rows at rest hold the "
+                                  "baseline plus the preload's force)"
+                                : "and the model takes the rows before contact as unloaded (no preload at the "
+                                  "record's start; a preload's force would be taken for baseline; start = "
+                                  "\"preloaded\" models one)"));
         }
         flag_contact(problem, curve, fitted);
         flag_baseline(problem, curve, fitted);

@@ -40,7 +40,7 @@ std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_ca
     const Curve& curve = *prepared.curve;
     // The depth below the contact point, taken in place (no copy of the curve's depth).
     auto response = ting_forces(model_case.material, *model_case.indenter, curve.time, curve.depth, contact_depth,
-                                modulus_derivatives);
+                                modulus_derivatives, curve.preloaded);
     if (!response) return std::nullopt;
     ModelValues model;
     if (prepared.used.size() == response->force.size()) {  // every point (increasing indices): moved, not copied
@@ -105,7 +105,16 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
                                      bool modulus_derivatives) {
     const Curve& curve = *prepared.curve;
     const bool depth_driven = prepared.fitted == Fitted::force;
+    if (curve.preloaded && !depth_driven) {
+        throw InvalidInput("fit.data.start", "\"preloaded\"",
+                           "needs a depth-driven curve (fitted = \"force\"): a preload under force control is not "
+                           "built");
+    }
     if (model_case.layer) {
+        if (curve.preloaded) {
+            throw InvalidInput("fit.data.start", "\"preloaded\"",
+                               "is not built on a [layer] (its model starts unloaded)");
+        }
         return layer_curve(model_case, prepared, contact_depth, baseline, forward_model, modulus_derivatives);
     }
     if (forward_model == ForwardModel::continuum) {
@@ -156,7 +165,7 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     if (depth_driven && band_runs) {
         const double spacing = drivers::resolve_numerics(model_case).half_width / static_cast<double>(elements);
         if (auto band = band_forces(model_case.material, *model_case.indenter, spacing, elements, times, depths,
-                                    check_interrupt)) {
+                                    check_interrupt, curve.preloaded)) {
             const std::size_t offset = times.size() - curve.time.size();  // the point added before the first
             ModelValues model;
             model.band = true;
@@ -183,6 +192,11 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
             }
             return model;
         }
+    }
+    if (curve.preloaded && depths.front() > 0.0) {
+        throw InvalidInput("fit.data.start", "\"preloaded\"",
+                           "needs the band model (G_inf > 0, Prony moduli >= 0, no dashpot, no flat punch): the "
+                           "drivers' elements start unloaded");
     }
     drivers::ProgressObserver progress;
     if (check_interrupt) progress = [&](double) { check_interrupt(); };

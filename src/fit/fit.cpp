@@ -117,6 +117,28 @@ void validate(const FitProblem& problem) {
                                "bounds a fitted contact point only (fit.contact_point = \"fit\")");
         }
     }
+    for (std::size_t c = 0; c < problem.curves.size(); ++c) {
+        const Curve& curve = problem.curves[c];
+        if (!curve.preloaded) continue;
+        const std::string key = fmt::format("fit.data[{}].start", c);
+        if (problem.settings.contact_point != ContactPointMode::fit) {
+            throw InvalidInput(key, "\"preloaded\"",
+                               "needs fit.contact_point = \"fit\" (the preload depth d_0 = first depth - contact point "
+                               "is fitted)");
+        }
+        if (fitted_of(problem, c) != Fitted::force) {
+            throw InvalidInput(key, "\"preloaded\"",
+                               "needs a depth-driven curve (fitted = \"force\"): a preload under force control is "
+                               "not built");
+        }
+        const auto& bounds = problem.settings.contact_point_bounds;
+        if (bounds && !((*bounds)[0] < curve.depth.front())) {
+            throw InvalidInput("fit.bounds.contact_point", format_value((*bounds)[0]),
+                               fmt::format("the lower bound must be below the first depth {} of the preloaded curve {} "
+                                           "(d_0 = first depth - contact point >= 0)",
+                                           format_value(curve.depth.front()), curve.name));
+        }
+    }
     for (const auto& row : problem.penalty) {
         if (row.size() != problem.parameters.size()) {
             throw std::invalid_argument("mdr::fit: a penalty row must have one entry per free parameter");
@@ -245,10 +267,18 @@ std::string status_of(const ceres::Solver::Summary& summary, std::size_t iterati
 }
 
 // The bounds of curve c's fitted contact point in the data's depth: FitSettings::contact_point_bounds, else the
-// record's own depths (the contact lies inside the record).
+// record's own depths (the contact lies inside the record). A preloaded curve (Curve::preloaded) has its contact at
+// or before its first row (d_0 = depth[0] - contact >= 0) and by default a preload no deeper than the record's own
+// depth range.
 std::array<double, 2> contact_bounds(const FitProblem& problem, std::size_t c) {
+    const auto& depth = problem.curves[c].depth;
+    const auto [lowest, deepest] = std::minmax_element(depth.begin(), depth.end());
+    if (problem.curves[c].preloaded) {
+        const auto bounds = problem.settings.contact_point_bounds.value_or(
+            std::array<double, 2>{depth.front() - (*deepest - *lowest), depth.front()});
+        return {bounds[0], std::min(bounds[1], depth.front())};
+    }
     if (problem.settings.contact_point_bounds) return *problem.settings.contact_point_bounds;
-    const auto [lowest, deepest] = std::minmax_element(problem.curves[c].depth.begin(), problem.curves[c].depth.end());
     return {*lowest, *deepest};
 }
 
@@ -272,7 +302,10 @@ FitResult solve(const FitProblem& problem) {
         }
         if (scales.fit_contact) {
             const auto bounds = contact_bounds(problem, c);
-            nuisance[c].push_back(std::clamp(curve.contact_depth, bounds[0], bounds[1]) / scales.depth[c]);
+            double start = std::clamp(curve.contact_depth, bounds[0], bounds[1]);
+            // A preload starts off its bound d_0 = 0 (its estimate is the first row's depth or deeper).
+            if (curve.preloaded) start = std::min(start, bounds[1] - 0.1 * (bounds[1] - bounds[0]));
+            nuisance[c].push_back(start / scales.depth[c]);
         }
         if (scales.fit_baseline) nuisance[c].push_back(curve.force_baseline / scales.force[c]);
     }

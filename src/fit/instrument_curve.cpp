@@ -103,6 +103,7 @@ Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& sour
                                     return "in " + origin + ", sample " + std::to_string(samples[i]);
                                 });
     curve.fitted = source.fitted;
+    curve.preloaded = source.preloaded;
     select_rows(curve, source.rows);
     return curve;
 }

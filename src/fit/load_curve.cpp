@@ -145,6 +145,7 @@ Curve load_curve(const CurveSource& source) {
                                     return "in " + file_name + ", line " + std::to_string(lines[i]);
                                 });
     curve.fitted = source.fitted;
+    curve.preloaded = source.preloaded;
     select_rows(curve, source.rows);
     return curve;
 }

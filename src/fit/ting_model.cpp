@@ -382,6 +382,23 @@ private:
     std::vector<double> derivative_;  // dF/dG_b of the last step
 };
 
+// A relaxed preload instead of the jump at time[0] (ting_model.hpp): while the contact grows the force is linear in
+// the history (Lee-Radok, eq. 21), so the jump's part G(t - t_0) F_el(d_0) is taken off, F_el(d_0) = 8 R_0 (eq. 21's
+// elastic integral) read from the jump's derivative dF/dG_b = 8 R_0 at time[0]; and from each dF/dG_b its part,
+// 8 R_0 exp(-(t - t_0) / tau_b). Drops the derivatives unless `keep_derivatives`.
+void remove_jump(const std::vector<Branch>& branches, const std::vector<double>& time, TingResponse& response,
+                 bool keep_derivatives) {
+    const double elastic_force = response.modulus_derivatives[0][0];
+    for (std::size_t b = 0; b < branches.size(); ++b) {
+        for (std::size_t i = 0; i < time.size(); ++i) {
+            const double part = elastic_force * std::exp(-(time[i] - time.front()) / branches[b].time);
+            response.force[i] -= branches[b].modulus * part;
+            response.modulus_derivatives[b][i] -= part;
+        }
+    }
+    if (!keep_derivatives) response.modulus_derivatives.clear();
+}
+
 }  // namespace
 
 bool ting_model_applies(const rheology::Rheology& material, const profile::Profile& indenter) {
@@ -390,7 +407,7 @@ bool ting_model_applies(const rheology::Rheology& material, const profile::Profi
 
 std::optional<TingResponse> ting_forces(const rheology::Rheology& material, const profile::Profile& indenter,
                                         const std::vector<double>& time, const std::vector<double>& depth,
-                                        double depth_shift, bool modulus_derivatives) {
+                                        double depth_shift, bool modulus_derivatives, bool preloaded) {
     if (!ting_model_applies(material, indenter) || time.empty()) return std::nullopt;
     // G_inf first (also when 0: its derivative counts), then the terms.
     std::vector<Branch> branches{{material.equilibrium_modulus(), infinity}};
@@ -402,8 +419,10 @@ std::optional<TingResponse> ting_forces(const rheology::Rheology& material, cons
     for (std::size_t i = 1; i < time.size() && loading_end == time.size(); ++i) {
         if (history.depth_at(i - 1) > 0.0 && history.depth_at(i) < history.depth_at(i - 1)) loading_end = i;
     }
+    const bool preload = preloaded && history.depth_at(0) > 0.0;
+    if (preload && loading_end < time.size()) return std::nullopt;  // superposition holds while the contact grows
     TingResponse response{std::vector<double>(time.size(), 0.0), {}};
-    if (modulus_derivatives) {
+    if (modulus_derivatives || preload) {
         response.modulus_derivatives.assign(branches.size(), std::vector<double>(time.size(), 0.0));
     }
     auto& forces = response.force;
@@ -445,6 +464,7 @@ std::optional<TingResponse> ting_forces(const rheology::Rheology& material, cons
         forces[i] = *force;
         keep_derivatives(i);
     }
+    if (preload) remove_jump(branches, time, response, modulus_derivatives);
     return response;
 }
 

@@ -46,8 +46,14 @@ struct TingResponse {
 /// place: the history is not copied). nullopt when the history is outside Ting's class or when !ting_model_applies.
 /// Without `modulus_derivatives` the response has the force alone. Memory: the response, and while the contact grows
 /// 2 doubles a step and branch, kept only when it shrinks later.
+///
+/// `preloaded`: a first depth d_0 > 0 is a relaxed preload instead of a jump (docs/theory.md §4d: every branch
+/// relaxed under d_0 at time[0]); the force is then the change since time[0], F(t) - G_inf F_el(d_0) =
+/// int_{t_0}^t G(t - s) dF_el(d(s)), and nullopt once the depth falls (the contact would shrink: band_model.hpp
+/// covers that history).
 std::optional<TingResponse> ting_forces(const rheology::Rheology& material, const profile::Profile& indenter,
                                         const std::vector<double>& time, const std::vector<double>& depth,
-                                        double depth_shift = 0.0, bool modulus_derivatives = true);
+                                        double depth_shift = 0.0, bool modulus_derivatives = true,
+                                        bool preloaded = false);
 
 }  // namespace mdr::fit

@@ -96,7 +96,7 @@ fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& 
                                const UnitSystem& system) {
     table.reject_unknown({"kind", "file", "name", "time", "depth", "force", "piezo", "deflection", "spring_constant",
                           "units", "segment_column", "segments", "fitted", "until", "window", "curve",
-                          "sensitivity"});
+                          "sensitivity", "start"});
     fit::CurveSource source;
     const std::filesystem::path file = table.string("file");
     source.file = file.is_absolute() ? file : case_directory / file;
@@ -127,6 +127,9 @@ fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& 
         }
     }
     if (table.has("fitted")) source.fitted = read_fitted(table, fit::Fitted::force);
+    if (table.has("start")) {
+        source.preloaded = choice(table, "start", {"at_rest", "preloaded"}, "at_rest") == "preloaded";
+    }
     if (table.has("until")) {
         const std::string until = choice(table, "until", {"pull_off", "end"}, "pull_off");
         source.rows.until = until == "pull_off" ? fit::Until::pull_off : fit::Until::end;

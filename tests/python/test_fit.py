@@ -165,3 +165,34 @@ def test_layer_thickness_free_from_a_layer_curve():
     reloading = dict(curve, depth=np.minimum(curve["depth"], 1.5e-6 * np.abs(2.0 - curve["time"])))
     with pytest.raises(ValueError, match="grow again"):
         mdr.fit(case, data=[reloading])
+
+
+def test_a_preloaded_record_given_as_arrays():
+    # A sphere at rest under a relaxed preload d_0, then pressed deeper and held (a standard solid): the preloaded
+    # Lee-Radok integral F(t) - G_inf F_el(d_0) = int_0^t G(t - s) 8 sqrt(R d) d'(s) ds by scipy quadrature.
+    from scipy import integrate
+    G_inf, G1, tau1, preload, deepest, contact, level = 1.0e4, 2.0e4, 0.3, 2.0e-6, 8.0e-6, 1.0e-6, 3.0e-5
+    t = np.arange(-0.5, 4.0 + 1e-9, 0.01)
+    indentation = preload + (deepest - preload) * np.clip(t, 0.0, 1.0)
+
+    def change(time):
+        if time <= 0.0:
+            return 0.0
+        return integrate.quad(lambda s: (G_inf + G1 * np.exp(-(time - s) / tau1)) * 8.0 *
+                              np.sqrt(R * (preload + (deepest - preload) * s)) * (deepest - preload),
+                              0.0, min(time, 1.0), epsabs=0.0, epsrel=1e-11, limit=200)[0]
+
+    generator = np.random.default_rng(7)
+    force = level + np.array([change(time) for time in t]) + generator.normal(0.0, 5.0e-8, t.size)
+    case = {"material": {"model": "standard", "G_inf": 5.0e3, "G1": 1.0e4, "tau1": 0.1},
+            "indenter": {"shape": "sphere", "R": R},
+            "fit": {"free": ["material.G_inf", "material.G1", "material.tau1"]}}
+    data = {"time": t, "depth": contact + indentation, "force": force, "start": "preloaded"}
+    result = mdr.fit(case, data=[data])
+    curve = result.summary["curves"][0]
+    assert curve["start"] == "preloaded"
+    assert abs(curve["preload_depth"] - preload) < 4.0 * curve["preload_depth_error"]
+    for key, truth in (("material.G_inf", G_inf), ("material.G1", G1), ("material.tau1", tau1)):
+        assert abs(result.parameters[key] - truth) < 4.0 * result.standard_errors[key], key
+    with pytest.raises(ValueError, match="data\\[0\\].start = \"loaded\": one of at_rest, preloaded"):
+        mdr.fit(case, data=[dict(data, start="loaded")])

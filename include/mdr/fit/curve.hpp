@@ -73,6 +73,7 @@ struct CurveSource {
     std::vector<std::string> segments;      ///< segments kept (every segment when empty), e.g. {"extend", "pause"}
     std::optional<Fitted> fitted{};         ///< Curve::fitted
     RowSelection rows{};                    ///< the rows kept (select_rows)
+    bool preloaded = false;                 ///< Curve::preloaded (`start = "preloaded"`)
 };
 
 /// A measured curve in the units of its case (the fit's model): SI names below for a case in SI.
@@ -95,6 +96,11 @@ struct Curve {
     /// What this curve fits, when it differs from the fit's setting (FitSettings::fitted): a creep curve (depth
     /// fitted) beside a relaxation or an indentation curve (force fitted), one material for both.
     std::optional<Fitted> fitted{};
+    /// The state at the record's first row (`[[fit.data]] start`): false (`"at_rest"`) an unloaded material, at
+    /// rest until the depth passes the contact point; true (`"preloaded"`) a material at rest under the preload depth
+    /// d_0 = depth[0] - contact point >= 0, every relaxation branch relaxed, the force of its first rows the
+    /// baseline plus G_inf F_el(d_0) (docs/theory.md §4d).
+    bool preloaded = false;
     Adhesion adhesion{};            ///< the retract's adhesion, measured on the whole record (select_rows)
     std::size_t rows_left_out = 0;  ///< rows of the record that select_rows left out
     /// What reading the curve did that a user must know (select_rows: rows left out and why); the fit adds them to

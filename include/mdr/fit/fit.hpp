@@ -138,6 +138,10 @@ struct CurveFit {
                                     ///< the baseline [N] (0 below it)
     double contact_depth = 0.0;     ///< the contact point used [m]
     double contact_depth_error = 0.0;  ///< its standard error [m] (0 unless fitted)
+    /// The preload depth d_0 = first depth - contact point [m] of a curve with `start = "preloaded"` (Curve::preloaded;
+    /// fit.json `curves[i].preload_depth`), nullopt for one that starts at rest.
+    std::optional<double> preload_depth{};
+    double preload_depth_error = 0.0;  ///< its standard error [m] (the contact point's)
     double baseline = 0.0;          ///< the force baseline used [N]
     double baseline_error = 0.0;    ///< its standard error [N] (0 unless fitted)
     double noise = 0.0;             ///< the measurement noise of the fitted quantity [N or m]
