@@ -141,7 +141,8 @@ Material spectrum(const SpectrumSettings& settings, double modulus, const Window
 // A registry model (registry_candidate): each required key free, its start and bounds by its unit, from the elastic
 // modulus G_e and the window's middle time T = sqrt(shortest longest): a modulus G_e / 2 in [1e-6, 1e4] G_e; a time
 // T in [1e-2 shortest, 1e2 longest]; a viscosity G_e T and a quasi-property G_e T^(1/2), each in [1e-8, 1e8] times
-// it; an exponent (unit 1, 0 < alpha, beta < 1) 0.5 in [0.01, 0.99]. Optional keys keep their defaults.
+// it; a key of a bounded domain (0, L) (ModelParameter::upper_limit: an exponent alpha, beta < 1) L/2 in
+// [0.01, 0.99] L. Optional keys keep their defaults.
 Material registry_material(const rheology::MaterialModel& model, double modulus, const Window& window) {
     const double middle = std::sqrt(window.shortest * window.longest);
     Material material{model.name, {}, 0, {}, &model, {window.shortest, window.longest, {}}};
@@ -152,8 +153,9 @@ Material registry_material(const rheology::MaterialModel& model, double modulus,
             material.parameters.push_back({key, 0.5 * modulus, 1e-6 * modulus, 1e4 * modulus, true});
         } else if (parameter.unit == "s") {
             material.parameters.push_back({key, middle, 1e-2 * window.shortest, 1e2 * window.longest, true});
-        } else if (parameter.unit == "1") {
-            material.parameters.push_back({key, 0.5, 0.01, 0.99, true});
+        } else if (std::isfinite(parameter.upper_limit)) {
+            const double limit = parameter.upper_limit;
+            material.parameters.push_back({key, 0.5 * limit, 0.01 * limit, 0.99 * limit, true});
         } else {
             const double start = parameter.unit == "Pa s" ? modulus * middle : modulus * std::sqrt(middle);
             material.parameters.push_back({key, start, 1e-8 * start, 1e8 * start, true});

@@ -95,8 +95,7 @@ void add_modulus_key_flags(const FitProblem& problem, const io::UnitSystem& syst
 void add_plausibility_flags(const FitProblem& problem, const io::UnitSystem& system, FitResult& result) {
     if (!result.curves.empty() && problem.model) {
         const auto model = problem.model(result.values);
-        const auto definition = model.indenter->definition();
-        if (definition.shape == "sphere") add_depth_flags(definition.number("R"), system, result);
+        if (const auto radius = model.indenter->tip_radius()) add_depth_flags(*radius, system, result);
     }
     add_modulus_flag(system, result);
     add_modulus_key_flags(problem, system, result);

@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -12,6 +14,7 @@
 #include "fit_candidates_reader.hpp"
 #include "fit_data_reader.hpp"
 #include "mdr/error.hpp"
+#include "mdr/io/free_key_units.hpp"
 #include "mdr/io/units.hpp"
 #include "toml_reader.hpp"
 
@@ -76,8 +79,13 @@ fit::FreeParameter read_parameter(const toml::table& fit, const CaseTemplate& mo
         parameter.upper = pair[1];
         parameter.logarithmic = parameter.lower > 0.0 && parameter.start > 0.0;
     } else if (parameter.start > 0.0) {
+        // Four decades either side of the start, within the key's physical domain (0, limit) of its registry row:
+        // the lower bound keeps 1e-4 of the start's distance to 0, the upper 1e-4 of its distance to a finite limit
+        // (an exponent 0.2 of a power law: [2e-5, 0.99992], not [2e-5, 2000]).
+        const double limit = io::free_key_upper_limit(model, key);
         parameter.lower = parameter.start * 1e-4;
         parameter.upper = parameter.start * 1e4;
+        if (std::isfinite(limit)) parameter.upper = std::min(parameter.upper, limit - (limit - parameter.start) * 1e-4);
     } else {
         throw InvalidInput("fit.bounds." + key, "(missing)",
                            fmt::format("is required: the start value {} is not > 0", format_value(parameter.start)));

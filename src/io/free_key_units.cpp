@@ -1,6 +1,7 @@
 #include "mdr/io/free_key_units.hpp"
 
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -42,31 +43,50 @@ std::string pair_unit(const std::string& unit, std::size_t j) {
     return unit.substr(start, unit.find(", ", start) - start);
 }
 
-std::string material_key_unit(const std::string& model_name, const KeyParts& parts, bool bulk) {
+// A free key's row: in rheology::material_models() or in profile::shapes() (at most one is set).
+struct RegistryEntry {
+    const rheology::ModelParameter* material = nullptr;
+    const profile::ShapeParameter* shape = nullptr;
+};
+
+const rheology::ModelParameter* material_parameter(const std::string& model_name, const KeyParts& parts, bool bulk) {
     std::string name = parts.name;
     if (bulk && !name.empty() && name[0] == 'K') name[0] = 'G';  // a bulk table writes K for the leading G
     const rheology::MaterialModel* model = nullptr;
     try {
         model = &rheology::material_model(model_name);
     } catch (const InvalidInput&) {
-        return "";
+        return nullptr;
     }
     for (const auto& parameter : model->parameters) {
-        if (parameter.key != name) continue;
-        if (parameter.kind != rheology::ParameterKind::pairs) return parameter.unit;
-        return parts.indices.size() == 2 ? pair_unit(parameter.unit, parts.indices[1]) : "";
+        if (parameter.key == name) return &parameter;
     }
-    return "";
+    return nullptr;
 }
 
-std::string shape_key_unit(const std::string& shape_name, const KeyParts& parts) {
+const profile::ShapeParameter* shape_parameter(const std::string& shape_name, const KeyParts& parts) {
     for (const auto& shape : profile::shapes()) {
         if (shape.name != shape_name) continue;
         for (const auto& parameter : shape.parameters) {
-            if (parameter.key == parts.name) return parameter.unit;
+            if (parameter.key == parts.name) return &parameter;
         }
     }
-    return "";
+    return nullptr;
+}
+
+// The row that defines the key `parts` of `model` (neither: no registry defines it).
+RegistryEntry registry_entry(const CaseTemplate& model, const KeyParts& parts) {
+    if (const auto model_name = model.string_at(parts.table + ".model")) {
+        const std::string bulk_suffix = ".bulk";
+        const bool bulk = parts.table.size() > bulk_suffix.size() &&
+                          parts.table.compare(parts.table.size() - bulk_suffix.size(), bulk_suffix.size(),
+                                              bulk_suffix) == 0;
+        return {material_parameter(*model_name, parts, bulk), nullptr};
+    }
+    if (parts.table == "indenter") {
+        if (const auto shape = model.string_at("indenter.shape")) return {nullptr, shape_parameter(*shape, parts)};
+    }
+    return {};
 }
 
 }  // namespace
@@ -74,17 +94,19 @@ std::string shape_key_unit(const std::string& shape_name, const KeyParts& parts)
 std::string free_key_unit(const CaseTemplate& model, const std::string& key) {
     const auto parts = split_key(key);
     if (!parts) return "";
-    if (const auto model_name = model.string_at(parts->table + ".model")) {
-        const std::string bulk_suffix = ".bulk";
-        const bool bulk = parts->table.size() > bulk_suffix.size() &&
-                          parts->table.compare(parts->table.size() - bulk_suffix.size(), bulk_suffix.size(),
-                                               bulk_suffix) == 0;
-        return material_key_unit(*model_name, *parts, bulk);
-    }
-    if (parts->table == "indenter") {
-        if (const auto shape = model.string_at("indenter.shape")) return shape_key_unit(*shape, *parts);
-    }
-    return "";
+    const RegistryEntry entry = registry_entry(model, *parts);
+    if (entry.shape != nullptr) return entry.shape->unit;
+    if (entry.material == nullptr) return "";
+    if (entry.material->kind != rheology::ParameterKind::pairs) return entry.material->unit;
+    return parts->indices.size() == 2 ? pair_unit(entry.material->unit, parts->indices[1]) : "";
+}
+
+double free_key_upper_limit(const CaseTemplate& model, const std::string& key) {
+    const auto parts = split_key(key);
+    const RegistryEntry entry = parts ? registry_entry(model, *parts) : RegistryEntry{};
+    if (entry.shape != nullptr) return entry.shape->upper_limit;
+    if (entry.material != nullptr) return entry.material->upper_limit;
+    return std::numeric_limits<double>::infinity();
 }
 
 }  // namespace mdr::io

@@ -17,6 +17,7 @@ public:
     double contact_radius(double depth) const override { return depth > 0.0 ? std::sqrt(radius_ * depth) : 0.0; }
     double max_radius() const override { return std::numeric_limits<double>::infinity(); }
     std::optional<double> power_law_exponent() const override { return 2.0; }
+    std::optional<double> tip_radius() const override { return radius_; }
     ProfileDefinition definition() const override { return {"sphere", {{"R", radius_}}}; }
 
 private:

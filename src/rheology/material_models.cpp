@@ -45,7 +45,7 @@ ModelMaterial build_power_law(const ModelParameters& p, const ConversionOptions&
 ModelParameter quasi_property() {
     return {"c", Kind::number, "Pa s^alpha", "springpot quasi-property (stress = c d^alpha strain / dt^alpha)"};
 }
-ModelParameter order() { return {"alpha", Kind::number, "1", "springpot order, 0 < alpha < 1"}; }
+ModelParameter order() { return {"alpha", Kind::number, "1", "springpot order, 0 < alpha < 1", true, 0.0, {}, 1.0}; }
 
 ModelMaterial fractional(FractionalModel model, const ConversionOptions& options) {
     model.validate();
@@ -119,7 +119,8 @@ std::vector<MaterialModel> rows() {
              return exact(Rheology(p.number("G_inf"), p.number("eta"), relaxation_terms(p)));
          }},
         {"power_law", "G(t) = G0 (t/t0)^(-beta): power-law rheology of cells and soft tissue, as a certified Prony series",
-         {modulus("G0", "modulus at t = t0"), {"beta", Kind::number, "1", "exponent, 0 < beta < 1"},
+         {modulus("G0", "modulus at t = t0"),
+          {"beta", Kind::number, "1", "exponent, 0 < beta < 1", true, 0.0, {}, 1.0},
           {"t0", Kind::number, "s", "reference time", false, 1.0}},
          true, build_power_law},
         {"springpot", "G(t) = c t^(-alpha) / Gamma(1 - alpha): a springpot (Scott Blair), as a certified Prony series",

@@ -74,6 +74,23 @@ def test_power_law_modulus_and_exponent_from_the_lee_radok_closed_form():
     assert result.parameters["material.beta"] == pytest.approx(beta, rel=1e-4)
 
 
+def test_power_law_is_fitted_within_its_physical_domain_without_bounds():
+    # The same closed form (Lee-Radok, eq. 6, for G(t) = G0 (t/t0)^(-beta), t0 = 1 s, d = v t), numpy's, with no
+    # fit.bounds: the default bounds of beta keep to 0 < beta < 1. Before, they reached 1e4 times the start (2000)
+    # and the fit failed.
+    from math import gamma, sqrt
+    G0, beta, v = 2.0e3, 0.35, 2.0e-6
+    t = np.linspace(0.0, 2.0, 201)
+    F = 16.0 * sqrt(R) / 3.0 * G0 * v ** 1.5 * gamma(2.5) * gamma(1.0 - beta) / gamma(2.5 - beta) * t ** (1.5 - beta)
+    case = {"material": {"model": "power_law", "G0": 1.0e3, "beta": 0.2}, "indenter": {"shape": "sphere", "R": R},
+            "fit": {"free": ["material.G0", "material.beta"], "contact_point": "fixed", "baseline": "fixed"}}
+    result = mdr.fit(case, data=[{"time": t, "depth": v * t, "force": F}])
+    assert result.status == "converged"
+    # To the series' certificate (1e-4 of G), as above.
+    assert result.parameters["material.G0"] == pytest.approx(G0, rel=1e-4)
+    assert result.parameters["material.beta"] == pytest.approx(beta, rel=1e-4)
+
+
 def test_bad_input_is_a_value_error_with_the_command_line_message():
     case = {"material": {"model": "elastic", "G": 1.0e6}, "indenter": {"shape": "sphere", "R": R},
             "fit": {"free": ["material.G"], "bounds": {"material.G": [1.0e7, 1.0e8]}}}

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// The unit of a fit's free key, from the registry that defines the key: the one source of the units beside fitted
-/// values (map.json's `column_units`, the colour bars of the heat maps).
+/// The unit and physical domain of a fit's free key, from the registry that defines the key: the one source of the
+/// units beside fitted values (map.json's `column_units`, the colour bars of the heat maps) and of the domain that
+/// bounds a fit by default.
 
 #include <string>
 
@@ -16,5 +17,10 @@ namespace mdr::io {
 /// for a key of `[indenter]` the unit of its shape's row in profile::shapes(). "" when no registry defines the
 /// key (a model's extra key such as the elastic bulk modulus `K`).
 std::string free_key_unit(const CaseTemplate& model, const std::string& key);
+
+/// The open upper end of the physical domain (0, limit) of the number at `key` of `model`, from the same registry
+/// row as free_key_unit: 1 for an exponent or a springpot order, 90 for a cone's angle; infinity for a modulus,
+/// time, viscosity or length, and for a key no registry defines.
+double free_key_upper_limit(const CaseTemplate& model, const std::string& key);
 
 }  // namespace mdr::io

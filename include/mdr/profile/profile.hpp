@@ -52,6 +52,10 @@ public:
     /// power law n): its contact radius a(d) = (d/k)^(1/n) is then smooth for d > 0, which the continuum (Ting)
     /// model of depth-driven fits needs. nullopt for any other profile (a flat punch, a table).
     virtual std::optional<double> power_law_exponent() const { return std::nullopt; }
+    /// The radius R [m] of a spherical tip, parabolic near its apex (g = x^2/R, eq. 30): the depth that makes sense
+    /// for it lies between a small fraction of R and R (a fit's depth flags, fit/plausibility.cpp). nullopt for a
+    /// tip without one (a cone, a flat punch, a power law, a table).
+    virtual std::optional<double> tip_radius() const { return std::nullopt; }
     /// Short human description, e.g. `sphere R = 0.01`: by default describe_shape(definition()) of the registry.
     virtual std::string describe() const;
     /// The shape and parameters that build this profile again (make_profile).

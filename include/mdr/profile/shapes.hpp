@@ -4,6 +4,7 @@
 /// reader, its error messages, the description of a profile, the Python factories of mdr.Indenter, the stubs and the
 /// shape table of docs/case-format.md all come from it; adding a shape is one row (shapes.cpp) plus its factory.
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,6 +29,9 @@ struct ShapeParameter {
     bool required = true;       ///< false: optional (a text then takes default_text)
     std::string default_text{};    ///< for an optional text
     std::string alternative_to{};  ///< given instead of that key: exactly one of the two (a keyword in Python)
+    /// The open upper end of a number's physical domain (0, upper_limit): 90 for a cone's angles, infinity for a
+    /// length. A fit's default bounds stay inside it (io::free_key_upper_limit).
+    double upper_limit = std::numeric_limits<double>::infinity();
 };
 
 /// One row of the table.

@@ -5,6 +5,7 @@
 /// docs/case-format.md all come from it; adding a model is one row (material_models.cpp) plus its factory.
 
 #include <functional>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -33,6 +34,9 @@ struct ModelParameter {
     bool required = true;       ///< false: optional (a number then takes default_value)
     double default_value = 0.0; ///< for an optional number
     std::pair<std::string, std::string> pair_names{};  ///< for pairs: the names of the two values
+    /// The open upper end of a number's physical domain: 1 for an exponent or order (0 < beta < 1), infinity for a
+    /// modulus, time or viscosity (> 0 only). A fit's default bounds stay inside it (io::free_key_upper_limit).
+    double upper_limit = std::numeric_limits<double>::infinity();
 };
 
 /// The values a case or a caller gave, by key (shear naming).

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 namespace mdr::io {
 namespace {
 
@@ -66,6 +68,31 @@ R = 1e-5
 )");
     EXPECT_EQ(free_key_unit(model, "material.K"), "");
     EXPECT_EQ(free_key_unit(model, "material.G"), "Pa");
+}
+
+// free_key_upper_limit: the open upper end of each key's physical domain, as the handbook states it: a power law's
+// beta and a springpot's alpha in (0, 1), a cone's angles in (0, 90) degrees, moduli, times and lengths > 0 only.
+TEST(FreeKeyUpperLimit, ExponentsAndAnglesAreBoundedMostKeysAreNot) {
+    const auto model = case_of(R"(
+[material]
+model = "power_law"
+G0 = 1000.0
+beta = 0.2
+[indenter]
+shape = "cone"
+half_angle_deg = 35.0
+[indenter.material]
+model = "springpot"
+c = 10.0
+alpha = 0.3
+)");
+    const double unbounded = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(free_key_upper_limit(model, "material.beta"), 1.0);
+    EXPECT_EQ(free_key_upper_limit(model, "indenter.material.alpha"), 1.0);
+    EXPECT_EQ(free_key_upper_limit(model, "indenter.half_angle_deg"), 90.0);
+    EXPECT_EQ(free_key_upper_limit(model, "material.G0"), unbounded);
+    EXPECT_EQ(free_key_upper_limit(model, "indenter.material.c"), unbounded);
+    EXPECT_EQ(free_key_upper_limit(model, "material.K"), unbounded);  // no registry defines it
 }
 
 }  // namespace

@@ -145,6 +145,14 @@ TEST(FlatPunch, RigidWallBeyondItsRadius) {
     EXPECT_EQ(punch->contact_radius(-1.0), 0.0);
 }
 
+// The tip radius of eq. 30 (g = x^2/R): a sphere has one, its R; a cone (eq. 25, g linear in |x|) and a flat punch
+// have none.
+TEST(AnalyticProfiles, OnlyASphereHasATipRadius) {
+    EXPECT_EQ(mdr::profile::make_sphere(0.01)->tip_radius(), 0.01);
+    EXPECT_FALSE(mdr::profile::make_cone(30.0)->tip_radius().has_value());
+    EXPECT_FALSE(mdr::profile::make_flat_punch(0.001)->tip_radius().has_value());
+}
+
 TEST(AnalyticProfiles, Describe) {
     EXPECT_EQ(mdr::profile::make_sphere(0.01)->describe(), "sphere R = 0.01");
     EXPECT_EQ(mdr::profile::make_cone(30.0)->describe(), "cone slope_deg = 30 (half_angle_deg = 60)");

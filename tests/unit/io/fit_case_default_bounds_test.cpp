@@ -1,0 +1,51 @@
+// The default bounds of a free key without fit.bounds (parse_fit_case): four decades either side of its start,
+// within its physical domain. The expectations are the rule stated in src/io/fit_case.cpp and the domains of the
+// handbook (a power law's 0 < beta < 1, a cone's 0 < angle < 90 degrees, a modulus > 0).
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "mdr/io/fit_case.hpp"
+
+namespace mdr::io {
+namespace {
+
+const fit::FreeParameter& parameter(const FitCase& fit_case, const std::string& key) {
+    for (const auto& free : fit_case.parameters) {
+        if (free.name == key) return free;
+    }
+    throw std::logic_error("no free key " + key);
+}
+
+TEST(FitCaseDefaultBounds, StayWithinThePhysicalDomainOfEachKey) {
+    const FitCase fit_case = parse_fit_case(R"(
+[material]
+model = "power_law"
+G0 = 1000.0
+beta = 0.2
+[indenter]
+shape = "cone"
+half_angle_deg = 35.0
+[fit]
+free = ["material.G0", "material.beta", "indenter.half_angle_deg"]
+[[fit.data]]
+file = "curve.csv"
+time = "t"
+depth = "d"
+force = "F"
+)",
+                                            "case.toml", ".");
+    const auto& modulus = parameter(fit_case, "material.G0");
+    EXPECT_DOUBLE_EQ(modulus.lower, 0.1);  // 1e-4 G0
+    EXPECT_DOUBLE_EQ(modulus.upper, 1e7);  // 1e4 G0: no upper end to its domain
+    const auto& exponent = parameter(fit_case, "material.beta");
+    EXPECT_DOUBLE_EQ(exponent.lower, 2e-5);              // 1e-4 of beta's distance to 0
+    EXPECT_DOUBLE_EQ(exponent.upper, 1.0 - 0.8 * 1e-4);  // 1e-4 of its distance to 1 (before: 2000)
+    const auto& angle = parameter(fit_case, "indenter.half_angle_deg");
+    EXPECT_DOUBLE_EQ(angle.lower, 35.0e-4);
+    EXPECT_DOUBLE_EQ(angle.upper, 90.0 - 55.0 * 1e-4);  // before: 3.5e5 degrees
+}
+
+}  // namespace
+}  // namespace mdr::io
