@@ -31,7 +31,7 @@ double largest_contact_radius(const ContactCase& contact_case) {
     const auto& indenter = *contact_case.indenter;
     if (indenter.is_flat_punch()) return indenter.max_radius();
     if (contact_case.impact()) {  // the margin on the half-space's bound (at the softest modulus)
-        return std::min(indenter.max_radius(), layer_radius_margin * resolve_numerics(contact_case).half_width);
+        return std::min(indenter.max_radius(), contact::layer_radius_margin * resolve_numerics(contact_case).half_width);
     }
     const double half_space = std::holds_alternative<ForceControl>(contact_case.control)
                                   ? resolve_numerics(contact_case).half_width

@@ -141,12 +141,14 @@ def test_check_validates_a_fit_case_with_its_curves(run_mdr, workdir):
 
 
 def test_fit_reports_its_iterations_on_stderr(mdr_binary, workdir):
-    """A slow fit (a force-driven curve on many elements) prints "mdr: fit iteration N, chi^2 = X, T s so far" every
-    5 s when stderr is a pipe, like mdr run's progress."""
+    """A slow fit (a force-driven curve of a material with a dashpot on many elements: no band model, every run on
+    the elements) prints "mdr: fit iteration N, chi^2 = X, T s so far" every 5 s when stderr is a pipe, like mdr
+    run's progress."""
     import signal
     write_hertz_curve(workdir / "hertz.csv")
     case = AFM_CASE.format(data="", fit='fitted = "depth"\nelements = 100000')
     case = case.replace('piezo = "piezo"\ndeflection = "defl"', 'depth = "d"\nforce = "F"')
+    case = case.replace('model = "elastic"\nG = 0.05', 'model = "kelvin_voigt"\nG = 0.05\neta = 1e-4')
     (workdir / "case.toml").write_text(case.replace("afm.csv", "hertz.csv"))
     process = subprocess.Popen([mdr_binary, "fit", "case.toml", "--out", "out"], cwd=workdir,
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
