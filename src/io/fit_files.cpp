@@ -107,10 +107,10 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
             entry.emplace_back("contact_point", number_or_null(curve.contact_depth));
             entry.emplace_back("contact_point_error", number_or_null(curve.contact_depth_error));
             entry.emplace_back("start", Document{std::string(curve.preload_depth ? "preloaded" : "at_rest")});
-            entry.emplace_back("preload_depth",
-                               curve.preload_depth ? number_or_null(*curve.preload_depth) : Document{});
-            entry.emplace_back("preload_depth_error",
-                               curve.preload_depth ? number_or_null(curve.preload_depth_error) : Document{});
+            if (curve.preload_depth) {  // only a preloaded start has d_0 (no null in a result: docs/case-format.md)
+                entry.emplace_back("preload_depth", number_or_null(*curve.preload_depth));
+                entry.emplace_back("preload_depth_error", number_or_null(curve.preload_depth_error));
+            }
             entry.emplace_back("baseline", number_or_null(curve.baseline));
             entry.emplace_back("baseline_error", number_or_null(curve.baseline_error));
             entry.emplace_back("rows_left_out", Document{curve.rows_left_out});

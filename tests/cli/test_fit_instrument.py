@@ -169,10 +169,16 @@ def test_ctrl_c_stops_a_map_and_leaves_nothing(mdr_binary, workdir):
     import sys
     import time
 
-    # 64 copies of the vendor map's pixel 109 (scripts/make_instrument_test_files.py), ~0.2 s of fitting each.
+    # 64 copies of the vendor map's pixel 109 (scripts/make_instrument_test_files.py), fitted with a standard solid
+    # on 20 000 elements: ~0.25 s of fitting each (10 s for the map on 2 threads here), where the elastic MAP_CASE
+    # takes ~20 ms a pixel and could end before the interrupt.
     subprocess.run([sys.executable, REPO_ROOT / "scripts" / "make_instrument_test_files.py", "map", "64",
                     workdir / "big.jpk-force-map"], check=True, capture_output=True, timeout=120)
-    (workdir / "case.toml").write_text(MAP_CASE)
+    slow_case = MAP_CASE.replace('model = "elastic"\nG = 1000.0', 'model = "standard"\nG_inf = 1000.0\nG1 = 1000.0\n'
+                                 'tau1 = 0.01').replace('free = ["material.G"]', 'free = ["material.G_inf", '
+                                                        '"material.G1", "material.tau1"]\nelements = 20000')
+    assert slow_case.count("20000") == 1 and "standard" in slow_case
+    (workdir / "case.toml").write_text(slow_case)
     process = subprocess.Popen([mdr_binary, "fit", "case.toml", "--map", "big.jpk-force-map", "--out", "out"],
                                cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     time.sleep(2.0)
