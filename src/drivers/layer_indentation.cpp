@@ -21,21 +21,17 @@ namespace {
 // `numerics.elements` on a layer is a number of Gauss nodes, each solve O(n^3).
 constexpr std::size_t max_layer_nodes = 512;
 
-// The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius at
-// the largest depth (under spring control the largest base, as d <= z while F >= 0; under force control and in an
-// impact: its bound
-// of the contact radius at the largest force with the softest modulus, the half-width of resolve_numerics; the layer,
-// stiffer, has a smaller contact at the same force), within the profile's range (beyond it LayerContact::at_depth
-// refuses the depth).
+// The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius
+// (under displacement control at the largest depth; under spring control at the largest base, as d <= z while
+// F >= 0; under force control and in an impact its bound at the largest force with the softest modulus, the
+// half-width of resolve_numerics: the layer, stiffer, has a smaller contact at the same force), within the profile's
+// range (beyond it LayerContact::at_depth refuses the depth).
 double largest_contact_radius(const ContactCase& contact_case) {
     const auto& indenter = *contact_case.indenter;
     if (indenter.is_flat_punch()) return indenter.max_radius();
-    if (contact_case.impact()) {  // the margin on the half-space's bound (at the softest modulus)
-        return std::min(indenter.max_radius(), layer_radius_margin * resolve_numerics(contact_case).half_width);
-    }
-    const double half_space = std::holds_alternative<ForceControl>(contact_case.control)
-                                  ? resolve_numerics(contact_case).half_width
-                                  : indenter.contact_radius(contact_case.load.history->max_value());
+    const bool bounded_by_force = contact_case.impact() || std::holds_alternative<ForceControl>(contact_case.control);
+    const double half_space = bounded_by_force ? resolve_numerics(contact_case).half_width
+                                               : indenter.contact_radius(contact_case.load.history->max_value());
     return std::min(indenter.max_radius(), contact::layer_radius_margin * half_space);
 }
 
@@ -66,7 +62,9 @@ void validate_layer(const ContactCase& contact_case) {
         refuse("material.eta", format_value(contact_case.material.viscosity()),
                "a parallel dashpot under force or spring control or in an impact");
     }
-    if (contact_case.spring() && !contact_case.spring()->force_pauses.empty()) refuse("load.force_pauses", "[...]", "a force pause");
+    if (contact_case.spring() && !contact_case.spring()->force_pauses.empty()) {
+        refuse("load.force_pauses", "[...]", "a force pause");
+    }
     if (contact_case.load.harmonic) {  // docs/theory.md, "Layers": the general case of Ting (1968)
         refuse("load.harmonic", "[...]",
                "a harmonic load (its contact grows again after it shrank, outside Ting's 1966 solution)");
