@@ -8,6 +8,7 @@
 
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/controls.hpp"
+#include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
@@ -107,23 +108,15 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
                                 progress);
     }
     const auto& history = *contact_case.load.history;
-    auto grid = make_time_grid(history, contact_case.end_time, result.numerics.time_step,
-                               result.numerics.min_segment_steps, {});
-    if (result.numerics.grading_ratio > 0.0) {  // force control after a fast change, as on the half-space
-        grid = grade_after_changes(grid,
-                                   fast_change_times(history, contact_case.end_time, result.numerics.time_step,
-                                                     result.numerics.min_segment_steps),
-                                   result.numerics.grading_ratio, result.numerics.first_graded_step);
-    }
+    // The half-space's grid (no cut of its own: snapshots, a tangential load, a harmonic and force pauses are refused
+    // on a layer): under force or spring control graded after the same fast changes, a spring's base from where it is.
+    const auto grid = indentation_grid(contact_case, result.numerics);
 
     const auto& material = contact_case.material;
     const bool force_control = std::holds_alternative<ForceControl>(contact_case.control);
     const bool spring = contact_case.spring() != nullptr;
     // Spring control: F = k (z - d), i.e. F(d) + k d = k z; force control: F(d) = the force (k = 0).
     const double stiffness = spring ? contact_case.spring()->spring_constant : 0.0;
-    if (spring && grid.size() > 1 && grid[1].time == grid[0].time) {
-        grid.erase(grid.begin());  // the base starts where it is (z <= 0, validated): no jump from z = 0
-    }
     // The depth's scale: the largest prescribed (under spring control the base's: d <= z while F >= 0).
     const double largest_depth = force_control ? solved_depth_scale : std::max(history.max_value(), 0.0);
     // The force of a trial depth is exact to ~1.5e-8 (the contact solve's depth to 1e-8): the depth solves' force
