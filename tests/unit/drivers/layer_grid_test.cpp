@@ -15,7 +15,8 @@ namespace {
 TEST(LayerGrid, ForceControlStepsTheHalfSpacesGrid) {
     // A dense force history (400 segments: resolve_numerics' min_segment_steps 5, not 20) rising slowly, with one
     // change of 1/6 of the largest force inside 1e-5 s (shorter than a step): fast by the half-space's rule
-    // (fast_change_times with min_steps_per_segment = 20: a change above 1/20 of the largest), and so graded after.
+    // (fast_change_times with min_steps_per_segment = 20: a change above 1/20 of the largest), and so graded after
+    // (tau1 below the step: the creep is graded).
     std::string history = "[0.0, 0.0]";
     for (int i = 1; i <= 400; ++i) {
         const double t = 0.0025 * i;
@@ -24,7 +25,8 @@ TEST(LayerGrid, ForceControlStepsTheHalfSpacesGrid) {
         if (i == 200) history += fmt::format(", [{:.17g}, {:.17g}]", t + 1e-5, 0.01 * t + 0.002);
     }
     const auto contact_case = mdr::io::parse_case(
-        "[material]\nmodel = \"standard\"\nG_inf = 1e6\nG1 = 1e6\ntau1 = 1e-5\n[indenter]\nshape = \"sphere\"\nR = 0.01\n"
+        "[material]\nmodel = \"standard\"\nG_inf = 1e6\nG1 = 1e6\ntau1 = 1e-5\n"
+        "[indenter]\nshape = \"sphere\"\nR = 0.01\n"
         "[layer]\nthickness = 1e-3\ninterface = \"bonded\"\n"
         "[load]\ncontrol = \"force\"\nhistory = [" + history + "]\n");
     const auto numerics = mdr::drivers::resolve_numerics(contact_case);
