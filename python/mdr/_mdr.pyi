@@ -140,7 +140,7 @@ class _ResultDirectory:
     @property
     def shown(self) -> str: ...
 def _fit_case(case: str | dict[str, Any], source: str, directory: str,
-              curves: Sequence[tuple[str, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike, str]],
+              curves: Sequence[tuple[str, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike, str, str]],
               rebounds: Sequence[tuple[int, str, float | None, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike,
                                        npt.ArrayLike, npt.ArrayLike]]) -> dict[str, Any]: ...
 def _afm_depth_and_force(piezo: npt.ArrayLike, deflection: npt.ArrayLike,

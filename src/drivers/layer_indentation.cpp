@@ -8,6 +8,7 @@
 
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/controls.hpp"
+#include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
@@ -21,21 +22,17 @@ namespace {
 // `numerics.elements` on a layer is a number of Gauss nodes, each solve O(n^3).
 constexpr std::size_t max_layer_nodes = 512;
 
-// The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius at
-// the largest depth (under spring control the largest base, as d <= z while F >= 0; under force control and in an
-// impact: its bound
-// of the contact radius at the largest force with the softest modulus, the half-width of resolve_numerics; the layer,
-// stiffer, has a smaller contact at the same force), within the profile's range (beyond it LayerContact::at_depth
-// refuses the depth).
+// The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius
+// (under displacement control at the largest depth; under spring control at the largest base, as d <= z while
+// F >= 0; under force control and in an impact its bound at the largest force with the softest modulus, the
+// half-width of resolve_numerics: the layer, stiffer, has a smaller contact at the same force), within the profile's
+// range (beyond it LayerContact::at_depth refuses the depth).
 double largest_contact_radius(const ContactCase& contact_case) {
     const auto& indenter = *contact_case.indenter;
     if (indenter.is_flat_punch()) return indenter.max_radius();
-    if (contact_case.impact()) {  // the margin on the half-space's bound (at the softest modulus)
-        return std::min(indenter.max_radius(), contact::layer_radius_margin * resolve_numerics(contact_case).half_width);
-    }
-    const double half_space = std::holds_alternative<ForceControl>(contact_case.control)
-                                  ? resolve_numerics(contact_case).half_width
-                                  : indenter.contact_radius(contact_case.load.history->max_value());
+    const bool bounded_by_force = contact_case.impact() || std::holds_alternative<ForceControl>(contact_case.control);
+    const double half_space = bounded_by_force ? resolve_numerics(contact_case).half_width
+                                               : indenter.contact_radius(contact_case.load.history->max_value());
     return std::min(indenter.max_radius(), contact::layer_radius_margin * half_space);
 }
 
@@ -66,7 +63,9 @@ void validate_layer(const ContactCase& contact_case) {
         refuse("material.eta", format_value(contact_case.material.viscosity()),
                "a parallel dashpot under force or spring control or in an impact");
     }
-    if (contact_case.spring() && !contact_case.spring()->force_pauses.empty()) refuse("load.force_pauses", "[...]", "a force pause");
+    if (contact_case.spring() && !contact_case.spring()->force_pauses.empty()) {
+        refuse("load.force_pauses", "[...]", "a force pause");
+    }
     if (contact_case.load.harmonic) {  // docs/theory.md, "Layers": the general case of Ting (1968)
         refuse("load.harmonic", "[...]",
                "a harmonic load (its contact grows again after it shrank, outside Ting's 1966 solution)");
@@ -109,23 +108,15 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
                                 progress);
     }
     const auto& history = *contact_case.load.history;
-    auto grid = make_time_grid(history, contact_case.end_time, result.numerics.time_step,
-                               result.numerics.min_segment_steps, {});
-    if (result.numerics.grading_ratio > 0.0) {  // force control after a fast change, as on the half-space
-        grid = grade_after_changes(grid,
-                                   fast_change_times(history, contact_case.end_time, result.numerics.time_step,
-                                                     result.numerics.min_segment_steps),
-                                   result.numerics.grading_ratio, result.numerics.first_graded_step);
-    }
+    // The half-space's grid (no cut of its own: snapshots, a tangential load, a harmonic and force pauses are refused
+    // on a layer): under force or spring control graded after the same fast changes, a spring's base from where it is.
+    const auto grid = indentation_grid(contact_case, result.numerics);
 
     const auto& material = contact_case.material;
     const bool force_control = std::holds_alternative<ForceControl>(contact_case.control);
     const bool spring = contact_case.spring() != nullptr;
     // Spring control: F = k (z - d), i.e. F(d) + k d = k z; force control: F(d) = the force (k = 0).
     const double stiffness = spring ? contact_case.spring()->spring_constant : 0.0;
-    if (spring && grid.size() > 1 && grid[1].time == grid[0].time) {
-        grid.erase(grid.begin());  // the base starts where it is (z <= 0, validated): no jump from z = 0
-    }
     // The depth's scale: the largest prescribed (under spring control the base's: d <= z while F >= 0).
     const double largest_depth = force_control ? solved_depth_scale : std::max(history.max_value(), 0.0);
     // The force of a trial depth is exact to ~1.5e-8 (the contact solve's depth to 1e-8): the depth solves' force

@@ -67,7 +67,8 @@ std::optional<ModelValues> layer_curve(const drivers::ContactCase& model_case, c
                                        bool modulus_derivatives) {
     if (prepared.fitted != Fitted::force) {
         throw InvalidInput("fit.fitted", "\"depth\"",
-                           "must be \"force\" on a [layer]: force control is not built on a layer yet (issue 28)");
+                           "must be \"force\" on a [layer]: the layer's fit model is driven by the measured "
+                           "depth; a force-driven fit (the depth fitted) is not built on a layer yet (issue 28)");
     }
     if (!model_case.tangential_exact) {
         throw InvalidInput("material", "(compressible or two bodies)",

@@ -80,7 +80,7 @@ def test_thickness_and_moduli_from_a_ramp_hold(run_mdr, workdir, layer_data):
 
 @pytest.mark.parametrize("free, extra, fragments", [
     (["layer.interface"], "", ["fit.free", "layer.interface"]),
-    (["material.G_inf"], 'fitted = "depth"', ["fit.fitted", "force control is not built on a layer"]),
+    (["material.G_inf"], 'fitted = "depth"', ["fit.fitted", "a force-driven fit (the depth fitted) is not built"]),
 ])
 def test_what_a_fit_on_a_layer_refuses(run_mdr, workdir, layer_data, free, extra, fragments):
     case = write_fit(workdir, free, extra)

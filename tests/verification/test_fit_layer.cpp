@@ -210,7 +210,7 @@ TEST(FitLayer, WhatIsNotBuiltOnALayerIsRefusedNamingTheKey) {
               std::string::npos);
     EXPECT_NE(message(layer_problem(truth, unloading, {1e3, 3e3, 0.2, thickness})).find("grow again"),
               std::string::npos);
-    // A force-driven curve (the depth fitted): force control is not built on a layer.
+    // A force-driven curve (the depth fitted): the layer's fit model is depth-driven.
     auto force_driven = layer_problem(truth, curve, {1e3, 3e3, 0.2, thickness});
     force_driven.settings.fitted = fit::Fitted::depth;
     EXPECT_NE(message(force_driven).find("fit.fitted"), std::string::npos) << message(force_driven);

@@ -11,11 +11,11 @@
 namespace mdr::drivers {
 
 /// The depth d at the end of a step with F(d) + spring (d - anchor) = target, where `force`(d) is the foundation's
-/// force for a depth going linearly from the step's start to d and `slope` is dF/dd while no element enters or
-/// leaves contact. F is continuous and non-decreasing, so after up to four Newton corrections with `slope` (exact
-/// while the contact set does not change, so it usually ends after one) the root is bracketed from there in steps of
-/// `scale` and found by Illinois regula falsi (numerics::monotone_root) to 1e-13 of the target. With no spring and target 0
-/// the force has a plateau: the largest depth without force is returned.
+/// force for a depth going linearly from the step's start to d and `slope` is dF/dd while no element enters or leaves
+/// contact. F is continuous and non-decreasing, so after up to four Newton corrections with `slope` (exact while the
+/// contact set does not change, so it usually ends after one) the root is bracketed from there in steps of `scale` and
+/// found by Illinois regula falsi (numerics::monotone_root) to 1e-13 of the target. With no spring and target 0 the
+/// force has a plateau: the largest depth without force is returned.
 template <typename Force>
 double solve_force_balance(const Force& force, double slope, double guess, double scale, double target, double spring,
                            double anchor) {
