@@ -222,7 +222,10 @@ std::string describe_model(const MaterialModel& model, const ModelParameters& pa
         std::string item;
         if (const auto number = parameters.numbers.find(parameter.key); number != parameters.numbers.end()) {
             item = fmt::format("{} = {}", key, format_value(number->second));
-            if (parameter.unit != "1") item += " " + in_system(unit_names, parameter.unit);
+            if (parameter.unit != "1") {  // two appends: GCC 12 warns falsely (-Wrestrict) on " " + string
+                item += ' ';
+                item += in_system(unit_names, parameter.unit);
+            }
         } else if (const auto pairs = parameters.pairs.find(parameter.key); pairs != parameters.pairs.end()) {
             item = fmt::format("{} {}", pairs->second.size(), key);
         } else if (const auto array = parameters.arrays.find(parameter.key); array != parameters.arrays.end()) {
