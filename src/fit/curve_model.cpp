@@ -34,6 +34,20 @@ CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline) {
 
 namespace {
 
+// A forward model's forces at the used points plus the baseline, and its modulus derivatives there.
+ModelValues at_used_points(const std::vector<double>& force, const std::vector<std::vector<double>>& derivatives,
+                           const std::vector<std::size_t>& used, double baseline) {
+    ModelValues model;
+    model.values.reserve(used.size());
+    for (std::size_t i : used) model.values.push_back(force[i] + baseline);
+    for (const auto& derivative : derivatives) {
+        auto& at_used = model.modulus_derivatives.emplace_back();
+        at_used.reserve(used.size());
+        for (std::size_t i : used) at_used.push_back(derivative[i]);
+    }
+    return model;
+}
+
 // The continuum model's force at the used points, plus the baseline, and its derivatives; nullopt outside its class.
 std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_case, const CurveModel& prepared,
                                             double contact_depth, double baseline, bool modulus_derivatives) {
@@ -49,14 +63,7 @@ std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_ca
         model.modulus_derivatives = std::move(response->modulus_derivatives);
         return model;
     }
-    model.values.reserve(prepared.used.size());
-    for (std::size_t i : prepared.used) model.values.push_back(response->force[i] + baseline);
-    for (const auto& derivative : response->modulus_derivatives) {
-        auto& used = model.modulus_derivatives.emplace_back();
-        used.reserve(prepared.used.size());
-        for (std::size_t i : prepared.used) used.push_back(derivative[i]);
-    }
-    return model;
+    return at_used_points(response->force, response->modulus_derivatives, prepared.used, baseline);
 }
 
 // The layer model's force at the used points, plus the baseline, and its derivatives (layer_model.hpp). Throws
@@ -87,15 +94,7 @@ std::optional<ModelValues> layer_curve(const drivers::ContactCase& model_case, c
     auto response = layer_forces(model_case.material, *model_case.layer, model_case.indenter, curve.time, curve.depth,
                                  contact_depth, nodes, modulus_derivatives);
     if (!response) return std::nullopt;
-    ModelValues model;
-    model.values.reserve(prepared.used.size());
-    for (std::size_t i : prepared.used) model.values.push_back(response->force[i] + baseline);
-    for (const auto& derivative : response->modulus_derivatives) {
-        auto& used = model.modulus_derivatives.emplace_back();
-        used.reserve(prepared.used.size());
-        for (std::size_t i : prepared.used) used.push_back(derivative[i]);
-    }
-    return model;
+    return at_used_points(response->force, response->modulus_derivatives, prepared.used, baseline);
 }
 
 }  // namespace
@@ -161,8 +160,8 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     // A depth-driven run with a Prony material: the same elements with those that provably stay in contact summed
     // (band_model.hpp), the same forces; the drivers where it does not apply (or the contact outgrows the elements,
     // which the drivers then report).
-    const bool band_runs = band_model_applies(model_case.material) && !model_case.indenter->is_flat_punch() &&
-                           !model_case.layer;  // the band model is the half-space's foundation
+    // (A layer's curve has returned above: the band model is the half-space's foundation.)
+    const bool band_runs = band_model_applies(model_case.material) && !model_case.indenter->is_flat_punch();
     if (depth_driven && band_runs) {
         const double spacing = drivers::resolve_numerics(model_case).half_width / static_cast<double>(elements);
         if (auto band = band_forces(model_case.material, *model_case.indenter, spacing, elements, times, depths,
