@@ -18,11 +18,12 @@
 #include "mdr/foundation/foundation.hpp"
 #include "case_reader.hpp"
 #include "control_reader.hpp"
+#include "control_readers.hpp"
+#include "history_reader.hpp"
 #include "mdr/io/units.hpp"
 #include "indenter_reader.hpp"
 #include "layer_reader.hpp"
 #include "material_reader.hpp"
-#include "shore_reader.hpp"
 #include "toml_reader.hpp"
 
 namespace mdr::io {
@@ -64,13 +65,7 @@ rheology::Body build_body(const BodySpec& spec, const std::optional<rheology::Ti
     return body;
 }
 
-// The parts of a load (normal or tangential): a table's `history` of (t, column) points, and a harmonic's keys.
-drivers::LoadHistory read_history(TableReader& table, const std::string& column) {
-    std::vector<drivers::LoadPoint> points;
-    for (const auto& [t, value] : table.pairs("history", "t", column.c_str())) points.push_back({t, value});
-    return drivers::LoadHistory(std::move(points), table.key_path("history"));
-}
-
+// The harmonic part of a load (normal or tangential); its history is read_history's.
 drivers::HarmonicLoad read_harmonic(TableReader& table) {
     return drivers::HarmonicLoad{table.number("amplitude"), table.number("frequency"), table.number("start"),
                                  table.number("end")};
@@ -229,27 +224,6 @@ void refuse_non_ascii_outside_strings(std::string_view text, const std::string& 
     }
 }
 
-// The control of `[load]` as its row names it: an impact as read (with its oblique part), a spring with its
-// pauses or the durometer, or a history-driven control without data of its own.
-// `spring_constant` is read where messages have always met it, before the history.
-drivers::LoadControl read_load_control(TableReader& load, const drivers::ControlKind& kind,
-                                       const std::optional<drivers::ImpactControl>& impact,
-                                       const std::optional<ShoreLoad>& shore, std::optional<double> spring_constant) {
-    if (impact) return *impact;
-    if (shore) {
-        return drivers::SpringControl{.spring_constant = shore->test.instrument.spring_rate, .shore = shore->test};
-    }
-    if (kind.name == "force") return drivers::ForceControl{};
-    if (kind.name == "displacement") return drivers::DisplacementControl{};
-    drivers::SpringControl spring{.spring_constant = spring_constant.value_or(0.0)};
-    if (load.has("force_pauses")) {
-        for (const auto& [start, end] : load.pairs("force_pauses", "start", "end")) {
-            spring.force_pauses.push_back({start, end});
-        }
-    }
-    return spring;
-}
-
 }  // namespace
 
 toml::table parse_toml(std::string_view toml_text, const std::string& source) {
@@ -288,16 +262,13 @@ drivers::ContactCase read_case(const toml::table& root_table) {
                            "a harmonic is added to a base history: give one, e.g. [[0.0, 0.0], [1.0, d0]]");
     }
     require_control_keys(*load, control_kind);
-    const std::optional<ShoreLoad> shore =
-        control_kind.name == "shore" ? std::optional(read_shore(*load, unit_system(units))) : std::nullopt;
-    const toml::table no_indenter;  // a durometer brings the standard's indenter: its [indenter] stays empty
+    const std::unique_ptr<ControlReading> control_reading = start_control(control_kind, *load, unit_system(units));
+    const toml::table no_indenter;  // a control that brings its indenter (a durometer) leaves [indenter] empty
     auto indenter_table = root.table("indenter");
-    if (shore && indenter_table) {
-        throw InvalidInput("indenter", "[...]", "not with control = \"shore\": the durometer's indenter is the standard's");
-    }
-    if (shore) indenter_table.emplace(no_indenter, "indenter");
+    auto indenter = control_reading->indenter(indenter_table.has_value());
+    if (indenter) indenter_table.emplace(no_indenter, "indenter");
     if (!indenter_table) throw InvalidInput("indenter", "(missing)", "is required");
-    auto indenter = shore ? shore->indenter : read_indenter(*indenter_table);
+    if (!indenter) indenter = read_indenter(*indenter_table);
     std::optional<BodySpec> second_spec;
     if (auto indenter_material = indenter_table->table("material")) second_spec = read_body(*indenter_material);
 
@@ -312,21 +283,9 @@ drivers::ContactCase read_case(const toml::table& root_table) {
         table->reject_unknown(drivers::harmonic_key_names());
         normal_load.harmonic = read_harmonic(*table);
     }
-    const std::optional<double> spring_constant = load->optional_number("spring_constant");
-    std::optional<drivers::ImpactControl> impact;
-    if (control_kind.name == "impact") {
-        const double velocity = load->number("velocity");
-        for (const auto& key : control_kind.other_keys) {  // indenter.mass
-            if (!indenter_table->has(key.substr(key.find('.') + 1))) {
-                throw InvalidInput(key, "(missing)", "is required for an impact");
-            }
-        }
-        impact = drivers::ImpactControl{.mass = indenter_table->number("mass"), .velocity = velocity};
-        normal_load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
-    } else {
-        normal_load.history =
-            shore ? drivers::shore_base_history(shore->test) : read_history(*load, control_kind.column);
-    }
+    ControlLoad control = control_reading->load(*load, *indenter_table);
+    normal_load.history = std::move(control.history);
+    drivers::ImpactControl* const impact = std::get_if<drivers::ImpactControl>(&control.control);
     double end_time = impact ? std::numeric_limits<double>::infinity() : normal_load.end_time();
     if (auto end = load->optional_number("end")) end_time = *end;
 
@@ -364,7 +323,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     // The bodies, built over the time window of the case when a model is converted to a series.
     std::optional<rheology::TimeWindow> window;
     if (half_space_spec.needs_window() || (second_spec && second_spec->needs_window())) {
-        window = drivers::material_window(normal_load, end_time, numerics, tangential, impact.has_value());
+        window = drivers::material_window(normal_load, end_time, numerics, tangential, impact != nullptr);
     }
     // Files a material names (a table's `file`) are found next to the case file (the parsed table's source).
     const auto& source_path = root_table.source().path;
@@ -374,11 +333,12 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     if (second_spec) second = build_body(*second_spec, window, directory, system);
     rheology::ContactMaterial contact =
         rheology::contact_material(build_body(half_space_spec, window, directory, system), second);
+    control_reading->finish(*load, control.control);
 
     drivers::ContactCase contact_case{.title = title,
                                       .material = std::move(contact.material),
                                       .indenter = std::move(indenter),
-                                      .control = read_load_control(*load, control_kind, impact, shore, spring_constant),
+                                      .control = std::move(control.control),
                                       .load = std::move(normal_load),
                                       .end_time = end_time,
                                       .snapshots = std::move(snapshots),

@@ -3,9 +3,10 @@
 /// The tables of controls (`[load] control`, `[tangential] control`): name, one-line documentation and the `[load]`
 /// keys each takes, with units. The case reader (which `[load]` keys exist, which control takes each, which are
 /// required), its error messages, the description of a case, summary.json and the control table of
-/// docs/case-format.md take them from here: a control's new key is a new entry of its row (and the code that reads
-/// it). A control's data is its type in LoadControl (load_control.hpp), its rules drivers::validate's overload for
-/// that type, its steps a stepping class (src/drivers/normal_control.hpp; impact.cpp for an impact).
+/// docs/case-format.md take them from here: a control's new key is a new entry of its row (and of its reader,
+/// src/io/control_readers.cpp). A control's data is its type in LoadControl (load_control.hpp), its rules
+/// drivers::validate's overload for that type, its steps a stepping class (src/drivers/normal_control.hpp;
+/// impact.cpp for an impact).
 
 #include <string>
 #include <vector>

@@ -50,8 +50,8 @@ struct ImpactControl {
     std::optional<ObliqueImpactLoad> oblique{};  ///< an oblique impact: its tangential part
 };
 
-/// What the load prescribes: one of the controls. Adding a control is one new type here and one row of the
-/// table of controls (controls.hpp).
+/// What the load prescribes: one of the controls. Adding a control is one new type here, one row of the table of
+/// controls (controls.hpp) and its reader's row (src/io/control_readers.cpp).
 using LoadControl = std::variant<DisplacementControl, ForceControl, SpringControl, ImpactControl>;
 
 }  // namespace mdr::drivers

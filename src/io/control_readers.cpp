@@ -1,0 +1,119 @@
+#include "control_readers.hpp"
+
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "mdr/drivers/shore.hpp"
+#include "mdr/error.hpp"
+#include "history_reader.hpp"
+#include "shore_reader.hpp"
+
+namespace mdr::io {
+namespace {
+
+// A control without data of its own: the history prescribes its quantity (displacement, force).
+template <class Control>
+class HistoryReading final : public ControlReading {
+public:
+    HistoryReading(const drivers::ControlKind& kind, TableReader&, const UnitSystem&) : column_(kind.column) {}
+    ControlLoad load(TableReader& load, TableReader&) override { return {Control{}, read_history(load, column_)}; }
+
+private:
+    std::string column_;
+};
+
+// A spring in series with the indenter: its constant (read before the history, where messages have always met
+// it), the base history and, once the rest of the case is read, its force pauses.
+class SpringReading final : public ControlReading {
+public:
+    SpringReading(const drivers::ControlKind& kind, TableReader&, const UnitSystem&) : column_(kind.column) {}
+    ControlLoad load(TableReader& load, TableReader&) override {
+        const double spring_constant = load.optional_number("spring_constant").value_or(0.0);
+        return {drivers::SpringControl{.spring_constant = spring_constant}, read_history(load, column_)};
+    }
+    void finish(TableReader& load, drivers::LoadControl& control) const override {
+        if (!load.has("force_pauses")) return;
+        auto& spring = std::get<drivers::SpringControl>(control);
+        for (const auto& [start, end] : load.pairs("force_pauses", "start", "end")) {
+            spring.force_pauses.push_back({start, end});
+        }
+    }
+
+private:
+    std::string column_;
+};
+
+// An impact (eq. 37): `load.velocity`, the keys it needs in other tables (indenter.mass) and the history (0, 0).
+class ImpactReading final : public ControlReading {
+public:
+    ImpactReading(const drivers::ControlKind& kind, TableReader&, const UnitSystem&) : other_keys_(kind.other_keys) {}
+    ControlLoad load(TableReader& load, TableReader& indenter) override {
+        const double velocity = load.number("velocity");
+        for (const auto& key : other_keys_) {  // indenter.mass
+            if (!indenter.has(key.substr(key.find('.') + 1))) {
+                throw InvalidInput(key, "(missing)", "is required for an impact");
+            }
+        }
+        return {drivers::ImpactControl{.mass = indenter.number("mass"), .velocity = velocity},
+                drivers::LoadHistory({{0.0, 0.0}}, "load.history")};
+    }
+
+private:
+    std::vector<std::string> other_keys_;
+};
+
+// A Shore durometer: its keys are read first (it brings the standard's indenter), then it is a spring control with
+// the durometer's spring and base history.
+class ShoreReading final : public ControlReading {
+public:
+    ShoreReading(const drivers::ControlKind&, TableReader& load, const UnitSystem& units)
+        : shore_(read_shore(load, units)) {}
+    std::shared_ptr<const profile::Profile> indenter(bool has_indenter_table) const override {
+        if (has_indenter_table) {
+            throw InvalidInput("indenter", "[...]",
+                               "not with control = \"shore\": the durometer's indenter is the standard's");
+        }
+        return shore_.indenter;
+    }
+    ControlLoad load(TableReader&, TableReader&) override {
+        return {drivers::SpringControl{.spring_constant = shore_.test.instrument.spring_rate, .shore = shore_.test},
+                drivers::shore_base_history(shore_.test)};
+    }
+
+private:
+    ShoreLoad shore_;
+};
+
+template <class Reading>
+std::unique_ptr<ControlReading> start(const drivers::ControlKind& kind, TableReader& load, const UnitSystem& units) {
+    return std::make_unique<Reading>(kind, load, units);
+}
+
+}  // namespace
+
+std::shared_ptr<const profile::Profile> ControlReading::indenter(bool) const { return nullptr; }
+
+void ControlReading::finish(TableReader&, drivers::LoadControl&) const {}
+
+const std::vector<ControlReader>& control_readers() {
+    static const std::vector<ControlReader> table{
+        {"displacement", start<HistoryReading<drivers::DisplacementControl>>},
+        {"force", start<HistoryReading<drivers::ForceControl>>},
+        {"impact", start<ImpactReading>},
+        {"spring", start<SpringReading>},
+        {"shore", start<ShoreReading>},
+    };
+    return table;
+}
+
+std::unique_ptr<ControlReading> start_control(const drivers::ControlKind& kind, TableReader& load,
+                                              const UnitSystem& units) {
+    for (const ControlReader& reader : control_readers()) {
+        if (reader.name == kind.name) return reader.start(kind, load, units);
+    }
+    throw InvalidInput("load.control", "\"" + kind.name + "\"", "has no reader in the io table of controls");
+}
+
+}  // namespace mdr::io
