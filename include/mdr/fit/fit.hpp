@@ -159,6 +159,9 @@ struct CurveFit {
     std::vector<std::string> flags{};
     Adhesion adhesion{};            ///< Curve::adhesion (fit.json `curves[i].adhesion`)
     std::size_t rows_left_out = 0;  ///< Curve::rows_left_out (fit.json `curves[i].rows_left_out`)
+    /// False for a curve whose file records no time (Curve::file_without_time): `time` holds the rows' index, and
+    /// curves.csv leaves its `t` out (nan).
+    bool time_recorded = true;
 };
 
 /// A function of the fitted material on a grid, with its 95 % confidence band (first order: the delta method with
