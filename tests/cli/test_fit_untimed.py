@@ -110,3 +110,23 @@ def test_a_standard_solid_on_a_file_without_time_is_refused_naming_it(run_mdr, w
     assert_bad_input(result, f'fit.data[0].file = "{AFM_WORKSHOP.name}":', "records no time",
                      "the material depends on time", 'an elastic model (model = "elastic") can be fitted')
     assert not (workdir / "out").exists()
+
+
+AFM_WORKSHOP_MAP = VENDOR / "fmt-afm-workshop-fd_mapping_16_2018-08-01_13.07.zip"
+
+
+def test_an_afm_workshop_map_fits_an_elastic_material_and_refuses_a_standard_solid(run_mdr, workdir):
+    (workdir / "elastic.toml").write_text(case('model = "elastic"\nG = 1000.0', "map.zip", 0.1, 50e-9))
+    result = run_mdr("fit", "elastic.toml", "--map", str(AFM_WORKSHOP_MAP), "--out", "map", timeout=300)
+    assert result.returncode == 0, result.stderr
+    with open(workdir / "map" / "map.csv", newline="", encoding="utf-8") as handle:
+        pixels = list(csv.DictReader(handle))
+    assert len(pixels) == 16
+    assert all("no time recorded: fitted as elastic" in pixel["flags"] for pixel in pixels)
+    # A time-dependent material: refused once, before any pixel, and nothing written.
+    material = 'model = "standard"\nG_inf = 300.0\nG1 = 300.0\ntau1 = 1.0'
+    (workdir / "standard.toml").write_text(case(material, "map.zip", 0.1, 50e-9).replace(
+        'free = ["material.G"]', 'free = ["material.G_inf"]'))
+    result = run_mdr("fit", "standard.toml", "--map", str(AFM_WORKSHOP_MAP), "--out", "map2")
+    assert_bad_input(result, f'fit.data[0].file = "{AFM_WORKSHOP_MAP.name}":', "the material depends on time")
+    assert not (workdir / "map2").exists()

@@ -260,6 +260,11 @@ Fitted fitted_of(const FitProblem& problem, std::size_t c);
 /// fitted quantity is not 0 in every row, and the model and its residuals are finite at the start values.
 void validate(const FitProblem& problem);
 
+/// Part of validate: refuses (mdr::InvalidInput, key `fit.data[i].file`, naming the file) a curve whose file records
+/// no time (Curve::file_without_time) when the model's material at the start values depends on time
+/// (rheology::Rheology::is_time_independent is false): its rows' index is no time such a material can be run on.
+void require_time_where_the_material_needs_it(const FitProblem& problem);
+
 /// Fits the model to the curves. Throws mdr::InvalidInput for a problem that breaks a rule (validate); a fit that
 /// fails to converge returns its status. Throws std::runtime_error when a number of the result that must be finite
 /// is not (the fitted values, the model, the RMS residual and noise, the material's functions): no such result is
