@@ -69,7 +69,6 @@ R = {RADIUS}
 free = ["material.G"]
 contact_point = "fixed"
 baseline = "fit"
-elements = 2000
 
 [[fit.data]]
 file = "{path}"
