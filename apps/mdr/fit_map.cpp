@@ -26,6 +26,7 @@ bool run_map(const io::FitCase& fit_case, const std::string& map, const io::Resu
             throw InvalidInput("--map", error.key() + ": " + error.value(), error.rule());
         }
     }();
+    fit::require_map_time(file, fit_case, path);
     const fit::MapLayout layout = fit::map_layout(file, fit_case);
     const unsigned threads = parallel::local_threads(jobs, file.size());
     ProgressReporter progress;

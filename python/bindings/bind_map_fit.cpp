@@ -36,6 +36,7 @@ py::tuple fit_map_file(const py::object& case_, const std::string& source, const
     auto fit_case = io::parse_fit_case(case_template(case_, source), directory);
     fit::require_map_case(fit_case);
     instrument::CurveFile file(map, fit::read_options(fit_case.data.front()));
+    fit::require_map_time(file, fit_case, map);
     const fit::MapLayout layout = fit::map_layout(file, fit_case);
     const auto threads = workers(file.size()).cast<unsigned>();
     std::vector<fit::PixelFit> pixels;

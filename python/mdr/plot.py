@@ -436,17 +436,22 @@ def fit_curves(curves: Mapping[str, np.ndarray], axes=None, units: Units = "SI")
         _, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 5.5), height_ratios=[3, 1.3])
     top, bottom = axes
     curve_names = list(dict.fromkeys(curves["curve"]))
+    untimed = False
     for i, name in enumerate(curve_names):
         rows = curves["curve"] == name
-        top.plot(curves["t"][rows], curves["measured"][rows], ".", ms=2, color=f"C{i}", label=f"{name}: measured")
-        top.plot(curves["t"][rows], curves["model"][rows], "-", lw=1, color="k" if i == 0 else f"C{i}",
-                 label=f"{name}: model")
-        bottom.plot(curves["t"][rows], curves["residual"][rows], ".", ms=2, color=f"C{i}")
+        # A curve from a file that records no time has t = nan (docs/case-format.md): drawn over its row number.
+        x = curves["t"][rows]
+        if np.all(np.isnan(x)):
+            x, untimed = np.arange(x.size, dtype=float), True
+        top.plot(x, curves["measured"][rows], ".", ms=2, color=f"C{i}", label=f"{name}: measured")
+        top.plot(x, curves["model"][rows], "-", lw=1, color="k" if i == 0 else f"C{i}", label=f"{name}: model")
+        bottom.plot(x, curves["residual"][rows], ".", ms=2, color=f"C{i}")
     fitted = _fitted_quantities(units)
     quantities = {fitted[name] for name in curve_names if name in fitted}
     moduli = _moduli_title(units, names)
     top.set(ylabel=_quantity_label(quantities, names), title="Fit: data and model" + (f"\n{moduli}" if moduli else ""))
-    bottom.set(xlabel=f"time t [{names['time']}]", ylabel="model - measured\n" + _quantity_label(quantities, names))
+    xlabel = f"time t [{names['time']}]" + (", or row number where no time is recorded" if untimed else "")
+    bottom.set(xlabel=xlabel, ylabel="model - measured\n" + _quantity_label(quantities, names))
     bottom.axhline(0.0, color="k", lw=0.5)
     top.legend(loc="best", fontsize=8)
     return top

@@ -143,6 +143,7 @@ void flag_contact_and_baseline(const FitProblem& problem, FitResult& result) {
         fitted.flags.insert(fitted.flags.end(), curve.notes.begin(), curve.notes.end());
         fitted.adhesion = curve.adhesion;
         fitted.rows_left_out = curve.rows_left_out;
+        fitted.time_recorded = curve.file_without_time.empty();
         if (curve.baseline_rows == 0 && curve.estimate_note.rfind("fewer than", 0) == 0) {
             fitted.flags.push_back(
                 "starts in contact: the force rises from its first rows, so no rows before contact determine the "

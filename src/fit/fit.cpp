@@ -104,6 +104,7 @@ void validate(const FitProblem& problem) {
         }
     }
     require_bounds_within_the_model(problem);
+    require_time_where_the_material_needs_it(problem);
     if (const auto& bounds = problem.settings.contact_point_bounds) {
         const std::string key = "fit.bounds.contact_point";
         require_finite(key, (*bounds)[0]);
@@ -171,6 +172,23 @@ void validate(const FitProblem& problem) {
         throw InvalidInput("fit.data", fmt::format("{} points", points),
                            fmt::format("need more points than the {} free parameters", free_count));
     }
+}
+
+// A curve from a file that records no time carries its rows' index as time (Curve::file_without_time): exact for a
+// material whose force follows the depth alone, meaningless for any other, which is refused naming the file.
+void require_time_where_the_material_needs_it(const FitProblem& problem) {
+    const auto untimed = std::find_if(problem.curves.begin(), problem.curves.end(),
+                                      [](const Curve& curve) { return !curve.file_without_time.empty(); });
+    if (untimed == problem.curves.end()) return;
+    std::vector<double> values;
+    for (const auto& parameter : problem.parameters) values.push_back(parameter.start);
+    const drivers::ContactCase model = problem.model(values);
+    if (model.material.is_time_independent()) return;
+    const auto c = static_cast<std::size_t>(untimed - problem.curves.begin());
+    throw InvalidInput(fmt::format("fit.data[{}].file", c), "\"" + message_text(untimed->file_without_time) + "\"",
+                       "records no time (no time channel, and its header states no ramp rate or sampling rate), and "
+                       "the material depends on time (a dashpot or relaxation terms): a viscoelastic fit needs each "
+                       "row's time; an elastic model (model = \"elastic\") can be fitted to this file");
 }
 
 Fitted fitted_of(const FitProblem& problem, std::size_t c) {

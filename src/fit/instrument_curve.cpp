@@ -70,18 +70,21 @@ void check_instrument_source(const CurveSource& source) {
 Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& source, double* tip_height_zero) {
     check_instrument_source(source);
     const std::string file_name = source.file.filename().string();
-    if (raw.time.empty()) {
-        throw InvalidInput("file", in_quotes(file_name),
-                           "records no time (no time channel, and its header states no ramp rate or sampling rate): "
-                           "a viscoelastic fit needs each row's time");
+    const bool has_time = !raw.time.empty();
+    if (!has_time && source.rows.time) {
+        const auto& window = *source.rows.time;
+        throw InvalidInput("window.time", "[" + format_value(window[0]) + ", " + format_value(window[1]) + "]",
+                           "selects by time, which " + file_name + " does not record: select by window.depth or "
+                           "window.force");
     }
     const std::vector<bool> kept = kept_segments(raw, source.segments, file_name);
     std::vector<std::size_t> samples;  // the file's sample of each kept row
     std::vector<double> time, height, deflection;
-    for (std::size_t i = 0; i < raw.time.size(); ++i) {
+    for (std::size_t i = 0; i < raw.height.size(); ++i) {
         if (!kept[raw.segment[i]]) continue;
         samples.push_back(i);
-        time.push_back(raw.time[i] * source.time_unit);
+        // A file without time: the row's index stands in for it (Curve::file_without_time), in file order.
+        time.push_back(has_time ? raw.time[i] * source.time_unit : static_cast<double>(i));
         height.push_back(raw.height[i]);
         deflection.push_back(raw.deflection[i]);
     }
@@ -104,6 +107,10 @@ Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& sour
                                 });
     curve.fitted = source.fitted;
     curve.preloaded = source.preloaded;
+    if (!has_time) {
+        curve.file_without_time = file_name;
+        curve.notes.push_back("no time recorded: fitted as elastic, rows in measurement order (time = row number)");
+    }
     select_rows(curve, source.rows);
     return curve;
 }

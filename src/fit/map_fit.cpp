@@ -55,6 +55,24 @@ MapLayout map_layout(instrument::CurveFile& file, const io::FitCase& fit_case) {
     return {};
 }
 
+void require_map_time(instrument::CurveFile& file, const io::FitCase& fit_case, const std::filesystem::path& path) {
+    for (std::size_t index = 0; index < file.size(); ++index) {
+        try {
+            if (!file.read(index).time.empty()) return;
+        } catch (const InvalidInput&) {
+            continue;  // an unreadable curve is its pixel's failed row (fit_map_pixel)
+        } catch (const std::runtime_error&) {
+            continue;
+        }
+        Curve without_time;  // only its file enters the rule
+        without_time.file_without_time = path.filename().string();
+        std::vector<Curve> curves;
+        curves.push_back(std::move(without_time));
+        require_time_where_the_material_needs_it(make_problem(fit_case, std::move(curves)));
+        return;
+    }
+}
+
 PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path& path, instrument::CurveFile& file,
                        std::size_t index) {
     const io::UnitSystem& system = io::unit_system(fit_case.units);

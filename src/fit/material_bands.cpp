@@ -29,6 +29,11 @@ MaterialBands material_bands(const FitProblem& problem, const FitResult& result)
     const auto [shortest, longest] = data_window(problem, result.values);
     MaterialBands bands;
     constexpr std::size_t count = 121;
+    // A curve without recorded time (Curve::file_without_time) fits a material without time dependence: its G(t)
+    // is G_inf, and a grid over the rows' index would give times no measurement has.
+    const bool any_untimed = std::any_of(problem.curves.begin(), problem.curves.end(),
+                                         [](const Curve& curve) { return !curve.file_without_time.empty(); });
+    if (any_untimed) return bands;
     if (!(longest > shortest) || !std::isfinite(longest / shortest)) return bands;
     bands.times = io::log_grid(shortest, longest, count);
     for (auto t = bands.times.rbegin(); t != bands.times.rend(); ++t) bands.omegas.push_back(1.0 / *t);

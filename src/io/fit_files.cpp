@@ -171,8 +171,8 @@ void write_fit_result(const std::filesystem::path& directory, const FitCase& fit
         // Rebound data: one row per impact, named NAME:restitution or NAME:contact_time, t holding the speed v0.
         const std::string name = csv_field(curve.rebound ? curve.name + ":" + quantity_name(curve) : curve.name);
         for (std::size_t i = 0; i < curve.time.size(); ++i) {
-            csv.print("{},{},{},{},{},{}\n", name, curve.time[i], curve.measured[i], curve.model[i],
-                      curve.model[i] - curve.measured[i], i < curve.drive.size() ? curve.drive[i] : NAN);
+            csv.print("{},{},{},{},{},{}\n", name, curve.time_recorded ? curve.time[i] : NAN, curve.measured[i],
+                      curve.model[i], curve.model[i] - curve.measured[i], i < curve.drive.size() ? curve.drive[i] : NAN);
         }
     }
     csv.close();

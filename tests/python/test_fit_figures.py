@@ -74,6 +74,17 @@ def test_residuals_carry_the_unit_of_the_fitted_quantity():
     plt.close("all")
 
 
+def test_a_curve_without_recorded_time_is_drawn_over_its_row_number():
+    # curves.csv gives t = nan for a file that records no time (docs/case-format.md, "Instrument files").
+    measured = np.array([0.0, 1.0, 4.0, 1.0])
+    curves = {"curve": np.array(["a"] * 4), "t": np.full(4, np.nan), "measured": measured, "model": measured,
+              "residual": np.zeros(4)}
+    top = mdr.plot.fit_curves(curves)
+    np.testing.assert_array_equal(top.lines[0].get_xdata(), [0.0, 1.0, 2.0, 3.0])
+    assert "row number" in top.figure.axes[1].get_xlabel()
+    plt.close(top.figure)
+
+
 def test_the_material_figure_names_young_modulus():
     t = np.logspace(-2, 1, 20)
     functions = {"t": t, "G": 0.2 + 0 * t, "J": 5.0 + 0 * t}

@@ -206,3 +206,14 @@ def test_an_unreadable_first_curve_is_a_failed_row_and_the_columns_keep_their_or
                                    "noise", "status", "flags", "failure"]
     summary = json.loads((tmp_path / "out" / "map.json").read_text())
     assert (summary["pixels"], summary["failed"], summary["columns"]) == (3, 1, 25)
+
+
+def test_a_map_without_time_and_a_time_dependent_material_is_refused_naming_the_file(tmp_path):
+    # An AFM Workshop map records no time: an elastic material is fitted, a standard solid refused before any pixel.
+    workshop = REPO_ROOT / "examples" / "data" / "vendor" / "fmt-afm-workshop-fd_mapping_16_2018-08-01_13.07.zip"
+    data = [{"file": "map.zip", "spring_constant": 0.1, "sensitivity": 50e-9}]
+    case = dict(CASE, material={"model": "standard", "G_inf": 300.0, "G1": 300.0, "tau1": 1.0},
+                fit={"free": ["material.G_inf"], "data": data})
+    with pytest.raises(ValueError, match=r'^fit\.data\[0\]\.file = "fmt-afm-workshop.*the material depends on time'):
+        mdr.fit_map(case, workshop, out=tmp_path / "standard")
+    assert not (tmp_path / "standard").exists()

@@ -106,6 +106,10 @@ struct Curve {
     /// What reading the curve did that a user must know (select_rows: rows left out and why); the fit adds them to
     /// CurveFit::flags.
     std::vector<std::string> notes{};
+    /// The file, when it records no time (an AFM Workshop or NT-MDT Nova export); "" when the time is measured.
+    /// `time` then holds the row's index in the file, in the case's time unit: a made-up monotone time that only a
+    /// material whose force does not depend on time (rheology::Rheology::is_time_independent) may be fitted to.
+    std::string file_without_time;
 };
 
 /// The fewest rows a curve may have (after the segment selection).

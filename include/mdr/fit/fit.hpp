@@ -159,6 +159,9 @@ struct CurveFit {
     std::vector<std::string> flags{};
     Adhesion adhesion{};            ///< Curve::adhesion (fit.json `curves[i].adhesion`)
     std::size_t rows_left_out = 0;  ///< Curve::rows_left_out (fit.json `curves[i].rows_left_out`)
+    /// False for a curve whose file records no time (Curve::file_without_time): `time` holds the rows' index, and
+    /// curves.csv leaves its `t` out (nan).
+    bool time_recorded = true;
 };
 
 /// A function of the fitted material on a grid, with its 95 % confidence band (first order: the delta method with
@@ -256,6 +259,11 @@ Fitted fitted_of(const FitProblem& problem, std::size_t c);
 /// Throws mdr::InvalidInput. fit() checks further what needs the prepared curves: each curve makes contact, its
 /// fitted quantity is not 0 in every row, and the model and its residuals are finite at the start values.
 void validate(const FitProblem& problem);
+
+/// Part of validate: refuses (mdr::InvalidInput, key `fit.data[i].file`, naming the file) a curve whose file records
+/// no time (Curve::file_without_time) when the model's material at the start values depends on time
+/// (rheology::Rheology::is_time_independent is false): its rows' index is no time such a material can be run on.
+void require_time_where_the_material_needs_it(const FitProblem& problem);
 
 /// Fits the model to the curves. Throws mdr::InvalidInput for a problem that breaks a rule (validate); a fit that
 /// fails to converge returns its status. Throws std::runtime_error when a number of the result that must be finite

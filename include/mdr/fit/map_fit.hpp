@@ -64,6 +64,11 @@ std::vector<PixelFit> fit_map_pixels(const io::FitCase& fit_case, const std::fil
                                      std::size_t count, unsigned threads,
                                      const std::function<void(std::size_t, std::size_t)>& progress);
 
+/// Refuses before any pixel is fitted (mdr::InvalidInput, key `fit.data[0].file`, as
+/// require_time_where_the_material_needs_it) a map whose first readable curve records no time (AFM Workshop) when
+/// the case's material depends on time: every pixel would be refused alike.
+void require_map_time(instrument::CurveFile& file, const io::FitCase& fit_case, const std::filesystem::path& path);
+
 /// The raster of `file` in the case's length unit: the grid its first readable curve states (an unreadable curve is
 /// its pixel's failed row, fit_map_pixel); all 0 when no curve can be read or the file is not a map.
 MapLayout map_layout(instrument::CurveFile& file, const io::FitCase& fit_case);

@@ -71,6 +71,9 @@ public:
     double instantaneous_modulus() const;
     /// True when G_inf == 0 (J(t) grows without bound).
     bool is_fluid() const { return equilibrium_modulus_ == 0.0; }
+    /// True when G(t) does not depend on time: no dashpot (eta = 0) and no relaxation term, so G(t) = G_inf and
+    /// the force follows the depth alone, whatever the rate (Table 1, the elastic body).
+    bool is_time_independent() const { return viscosity_ == 0.0 && terms_.empty(); }
 
     /// The regular part of G(t) [Pa] for t >= 0: G_inf + sum G_k exp(-t/tau_k) (the delta term is not included).
     double relaxation(double t) const;

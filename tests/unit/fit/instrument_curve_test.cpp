@@ -3,6 +3,7 @@
 // 10.1002_btm2.10294_fig5d-cell1.zip by a script of its own (examples/data/README.md, the .json sidecar), not by mdr.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -95,7 +96,7 @@ TEST(InstrumentCurve, ASegmentTheFileLacksOrASecondSpringConstantIsRefused) {
                                   " states its own spring constant: give one only for files that lack it");
 }
 
-TEST(InstrumentCurve, AFileWithoutCalibrationTakesTheCasesAndAFileWithoutTimeIsRefusedNamingIt) {
+TEST(InstrumentCurve, AFileWithoutCalibrationTakesTheCasesAndAFileWithoutTimeGetsItsRowIndexAsTime) {
     // The AFM Workshop export records Z-Sense and the photodiode signal T-B in volts, nothing else (its header: date,
     // time of day, mode, point, X, Y): no spring constant, no sensitivity, no time and no ramp rate.
     CurveSource source = instrument_source("fmt-afm-workshop-fd_single_2018-08-01_13.06.09.csv");
@@ -107,15 +108,29 @@ TEST(InstrumentCurve, AFileWithoutCalibrationTakesTheCasesAndAFileWithoutTimeIsR
     source.spring_constant = 0.1;
     EXPECT_EQ(key_of(source).rfind("sensitivity = (missing): ", 0), 0u) << key_of(source);
     source.sensitivity = 50e-9;
-    EXPECT_EQ(key_of(source), "file = \"fmt-afm-workshop-fd_single_2018-08-01_13.06.09.csv\": records no time (no "
-                              "time channel, and its header states no ramp rate or sampling rate): a viscoelastic fit "
-                              "needs each row's time");
+    source.rows.until = mdr::fit::Until::end;
+    // Without time the rows' index in the file stands in for it (0, 1, 2, ...), and the curve names its file so
+    // that a fit of a time-dependent material can refuse it (mdr::fit::validate).
+    const mdr::fit::Curve curve = mdr::fit::load_curve(source);
+    EXPECT_EQ(curve.file_without_time, "fmt-afm-workshop-fd_single_2018-08-01_13.06.09.csv");
+    ASSERT_GE(curve.time.size(), 10u);
+    for (std::size_t i = 0; i < curve.time.size(); ++i) EXPECT_EQ(curve.time[i], static_cast<double>(i)) << i;
+    ASSERT_FALSE(curve.notes.empty());
+    EXPECT_EQ(curve.notes.front(),
+              "no time recorded: fitted as elastic, rows in measurement order (time = row number)");
+    source.rows.time = std::array<double, 2>{0.0, 100.0};
+    EXPECT_EQ(key_of(source), "window.time = [0, 100]: selects by time, which "
+                              "fmt-afm-workshop-fd_single_2018-08-01_13.06.09.csv does not record: select by "
+                              "window.depth or window.force");
     // NT-MDT Nova's text export has no header at all: three columns, height and the DFL signal in nA.
     CurveSource nova = instrument_source("fmt-ntmdt-txt-fd_2015_01_17_gel4-0,1_mQ_adh_6B_Curve_DFL_Height_51.txt");
     EXPECT_EQ(key_of(nova).rfind("spring_constant = (missing): ", 0), 0u) << key_of(nova);
     nova.spring_constant = 0.055;
     nova.sensitivity = 61.0;
-    EXPECT_NE(key_of(nova).find("records no time"), std::string::npos) << key_of(nova);
+    nova.rows.until = mdr::fit::Until::end;
+    const mdr::fit::Curve nova_curve = mdr::fit::load_curve(nova);
+    EXPECT_FALSE(nova_curve.file_without_time.empty());
+    EXPECT_EQ(nova_curve.time.size(), 2000u);  // 1000 rows, each an extend and a retract sample
 }
 
 }  // namespace

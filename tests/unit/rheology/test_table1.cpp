@@ -115,6 +115,16 @@ TEST(Table1, PronyRelaxationIsTheSumOfItsBranches) {
     EXPECT_EQ(material.shortest_time(), 1e-4);
 }
 
+TEST(Table1, OnlyABodyWithoutDashpotOrBranchIsTimeIndependent) {
+    // G(t) constant (Table 1, elastic) exactly when eta = 0 and no term decays; a Prony series of G_inf alone is one.
+    EXPECT_TRUE(Rheology::elastic(1.0e3).is_time_independent());
+    EXPECT_TRUE(Rheology::prony(2.0e3, {}).is_time_independent());
+    EXPECT_FALSE(Rheology::viscous(1.0).is_time_independent());
+    EXPECT_FALSE(Rheology::kelvin_voigt(1.0e3, 1.0).is_time_independent());
+    EXPECT_FALSE(Rheology::maxwell(1.0e3, 1.0).is_time_independent());
+    EXPECT_FALSE(Rheology::standard(1.0e3, 1.0e3, 1.0).is_time_independent());
+}
+
 TEST(Table1, MaterialFunctionsVanishBeforeTimeZero) {
     // Causality: G(t) = J(t) = 0 for t < 0 (exact).
     const Rheology material = Rheology::standard(1.0, 2.0, 3.0);
