@@ -105,11 +105,6 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
                                      bool modulus_derivatives) {
     const Curve& curve = *prepared.curve;
     const bool depth_driven = prepared.fitted == Fitted::force;
-    if (curve.preloaded && !depth_driven) {
-        throw InvalidInput("fit.data.start", "\"preloaded\"",
-                           "needs a depth-driven curve (fitted = \"force\"): a preload under force control is not "
-                           "built");
-    }
     if (model_case.layer) {
         if (curve.preloaded) {
             throw InvalidInput("fit.data.start", "\"preloaded\"",
