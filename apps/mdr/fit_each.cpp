@@ -11,6 +11,8 @@
 #include "interrupt.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/plausibility.hpp"
+#include "mdr/fit/repeat_spread.hpp"
+#include "mdr/io/document.hpp"
 #include "mdr/io/csv_field.hpp"
 #include "mdr/io/fit_files.hpp"
 #include "mdr/io/output_file.hpp"
@@ -55,6 +57,40 @@ void write_table(const std::filesystem::path& path, const std::vector<std::strin
     table.close();
 }
 
+// each.json: the spread of the batch's values against its fits' errors, key by key (fit::spread_of_repeats).
+void write_spread(const std::filesystem::path& path, const fit::RepeatSpread& spread) {
+    io::Document::Table keys;
+    for (const auto& key : spread.keys) {
+        const io::Document::List range{io::number_or_null(key.consistent_low), io::number_or_null(key.consistent_high)};
+        keys.emplace_back(key.name, io::Document{io::Document::Table{
+                                        {"count", io::Document{key.count}},
+                                        {"mean", io::number_or_null(key.mean)},
+                                        {"standard_deviation", io::number_or_null(key.standard_deviation)},
+                                        {"standard_error_of_mean", io::number_or_null(key.standard_error_of_mean)},
+                                        {"typical_error", io::number_or_null(key.typical_error)},
+                                        {"error_to_spread", io::number_or_null(key.error_to_spread)},
+                                        {"consistent_range", io::Document{range}},
+                                    }});
+    }
+    io::Document::List flags;
+    for (const auto& flag : spread.flags) flags.push_back(io::Document{flag});
+    io::OutputFile file(path);
+    file.print("{}\n", io::to_json(io::Document{io::Document::Table{{"spread", io::Document{std::move(keys)}},
+                                                                     {"flags", io::Document{std::move(flags)}}}}));
+    file.close();
+}
+
+void print_spread(const fit::RepeatSpread& spread) {
+    for (const auto& key : spread.keys) {
+        if (key.count < 2) continue;
+        fmt::print("  spread of the {} converged: {} = {:.6g} +- {:.2g} (standard deviation {:.3g}); errors / spread "
+                   "{:.3g} (95 % range of repeats scattering by their errors: {:.3g} to {:.3g})\n",
+                   key.count, key.name, key.mean, key.standard_error_of_mean, key.standard_deviation,
+                   key.error_to_spread, key.consistent_low, key.consistent_high);
+    }
+    for (const auto& flag : spread.flags) fmt::print("  flag (batch): {}\n", flag);
+}
+
 }  // namespace
 
 bool run_each(const io::FitCase& fit_case, const std::vector<std::string>& files, const io::ResultDirectory& directory,
@@ -77,6 +113,7 @@ bool run_each(const io::FitCase& fit_case, const std::vector<std::string>& files
         fit::add_plausibility_flags(one.problem, io::unit_system(fit_case.units), results.back());
     }
     progress.finish();
+    const auto spread = fit::spread_of_repeats(results);
     directory.write(
         [&](const std::filesystem::path& folder) {
             for (std::size_t i = 0; i < results.size(); ++i) {
@@ -84,6 +121,7 @@ bool run_each(const io::FitCase& fit_case, const std::vector<std::string>& files
                 io::write_fit_result(folder / stems[i], prepared[i].fit_case, results[i]);
             }
             write_table(folder / "each.csv", stems, results);
+            write_spread(folder / "each.json", spread);
         },
         received_signal);
     bool converged = true;
@@ -100,7 +138,8 @@ bool run_each(const io::FitCase& fit_case, const std::vector<std::string>& files
         print_flags(result);
         converged = converged && result.converged;
     }
-    fmt::print("  results in {}/ (each.csv, one folder per file)\n", directory.shown());
+    print_spread(spread);
+    fmt::print("  results in {}/ (each.csv, each.json, one folder per file)\n", directory.shown());
     return converged;
 }
 

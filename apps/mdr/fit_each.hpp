@@ -1,7 +1,8 @@
 #pragma once
 // `mdr fit CASE --each A.csv B.csv ... --out DIR`: one material per file, a batch. Each file is fitted alone with
 // the case's [fit] (in place of its one [[fit.data]] file) into DIR/<stem>/, and DIR/each.csv has one row per file:
-// file, every free key and its KEY_stderr, status, residual_to_noise.
+// file, every free key and its KEY_stderr, status, residual_to_noise; DIR/each.json the spread of the values against
+// the fits' errors (fit::spread_of_repeats).
 
 #include <string>
 #include <vector>
