@@ -106,10 +106,6 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     const Curve& curve = *prepared.curve;
     const bool depth_driven = prepared.fitted == Fitted::force;
     if (model_case.layer) {
-        if (curve.preloaded) {
-            throw InvalidInput("fit.data.start", "\"preloaded\"",
-                               "is not built on a [layer] (its model starts unloaded)");
-        }
         return layer_curve(model_case, prepared, contact_depth, baseline, forward_model, modulus_derivatives);
     }
     if (forward_model == ForwardModel::continuum) {

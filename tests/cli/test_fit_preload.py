@@ -122,6 +122,16 @@ def test_bad_preload_input_is_refused(run_mdr, workdir, start, extra, fragments)
     assert_bad_input(run_mdr("fit", workdir / "case.toml", "--out", workdir / "out"), *fragments)
 
 
+def test_a_preload_on_a_layer_is_refused_before_the_fit(run_mdr, workdir):
+    # Checked up front with the other preload rules, naming the curve's index (the layer models start unloaded).
+    write_record(workdir / "record.csv")
+    layer = '[layer]\nthickness = 2.0e-5\ninterface = "bonded"\n\n'
+    text = CASE.format(start="preloaded").replace("[fit]\n", layer + "[fit]\n")
+    (workdir / "case.toml").write_text(text, encoding="utf-8")
+    assert_bad_input(run_mdr("fit", workdir / "case.toml", "--out", workdir / "out"),
+                     'fit.data[0].start = "preloaded"', "not built on a [layer]")
+
+
 def test_a_preload_the_band_model_cannot_run_is_refused(run_mdr, workdir):
     # A Maxwell material (G_inf = 0) and a depth that dips once (outside the continuum model): the drivers' elements
     # start unloaded, so the preloaded curve is refused naming the key and the rule.
