@@ -1,9 +1,11 @@
 // Bruker NanoScope force volume (`Operating mode: Force Volume`). No real force volume file was available: the
-// file here is built from the vendor single curve (20200904_Egel4-Z1.0_00025.spm) by the layout jlopezalo/PyFMReader
-// reads (pyfmreader/nanosc: `force/line` curves a line, a square grid, curve i's extend and retract at Data offset
-// + i x 2 x Samps/line x bytes; Data length = bytes x 2 x Samps/line x force/line^2): force/line 2, and curve k
-// holding the vendor curve's stored integers times k + 1. Checked by hand against the stored integers and the
-// header's scaling (q = 0.000375 V/LSB, DeflSens 27.39 nm/V, Spring Constant 0.1332 N/m) and its Scan Size.
+// file here is built from the vendor single curve (20200904_Egel4-Z1.0_00025.spm) by the layout the public readers
+// agree on (docs/instrument-files.md, "Bruker NanoScope force volume": curve i's extend and retract at Data offset
+// + i x 2 x Samps/line x bytes, line after line), curve k holding the vendor curve's stored integers times k + 1.
+// Checked by hand against the stored integers and the header's scaling (q = 0.000375 V/LSB, DeflSens 27.39 nm/V,
+// Spring Constant 0.1332 N/m) and its Scan Size. The order of the pixels on a raster that is not square, and a
+// raster stated by the force volume image alone, are tested on files of scripts/make_instrument_test_files.py
+// (tests/python/test_instrument.py).
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -95,8 +97,8 @@ TEST(NanoscopeForceVolume, CurvesOnTheGridMatchTheStoredIntegersAndTheHeader) {
     fs::remove(path);
 }
 
-TEST(NanoscopeForceVolume, DataLengthNotHoldingForceLineSquaredCurvesIsRefused) {
-    const fs::path path = force_volume("short", "3", 4);  // 9 curves stated, 4 stored
+TEST(NanoscopeForceVolume, DataLengthHoldingNoRasterTheHeaderStatesIsRefused) {
+    const fs::path path = force_volume("short", "3", 4);  // 768, 9 or 65536 curves stated, 4 stored
     try {
         mdr::instrument::read_curves(path);
         ADD_FAILURE() << "no exception";
@@ -104,8 +106,8 @@ TEST(NanoscopeForceVolume, DataLengthNotHoldingForceLineSquaredCurvesIsRefused) 
         EXPECT_EQ(error.key(), path.string());
         EXPECT_EQ(error.value(), "\\Data length: 32768") << error.what();
         EXPECT_EQ(error.rule(),
-                  "must be 2 or 4 bytes times 2048 samples times 9 (\\force/line: 3) or 65536 (\\Samps/line: 256) "
-                  "curves");
+                  "must be 2 or 4 bytes times 2048 samples times 768 (\\force/line: 3 x \\Lines: 256) or 9 "
+                  "(\\force/line: 3, squared) or 65536 (\\Samps/line: 256 x \\Lines: 256) curves");
     }
     fs::remove(path);
 }
