@@ -173,12 +173,55 @@ double length_m(const Header& header, const Section& in, std::string_view key, s
     return parse_number(words[std::min(which, words.size() - 2)], header.file, 0, header_key(key)) * unit;
 }
 
-/// The grid of a force volume: `per_line` x `per_line` pixels over the scan list's `Scan Size`, centred on its
+/// A raster a force volume's header states: `columns` curves a line (x), `rows` lines (y).
+struct RasterShape {
+    std::string words;  ///< the header's words, for errors
+    std::size_t columns = 0;
+    std::size_t rows = 0;
+};
+
+/// The count `key` of `in` if it is a whole number from 1 to 4096 (curves a line, or lines), else 0.
+std::size_t raster_count(const Header& header, const Section& in, std::string_view key) {
+    const double count = header.number(in, key);
+    return count >= 1.0 && count <= 4096.0 && count == std::floor(count) ? static_cast<std::size_t>(count) : 0;
+}
+
+/// The rasters a force volume's header states, in the order of the sources that read them this way
+/// (docs/instrument-files.md, "Bruker NanoScope force volume"): each `*Ciao image list`'s `Samps/line` x
+/// `Number of lines` (Bruker's own `nanoscope` Python package: a force volume image has one pixel a curve;
+/// PyFMReader and SciFiReaders count the curves so), then `force/line` x the scan list's `Lines` (Gwyddion),
+/// `force/line` squared (PyFMReader), the scan list's `Samps/line` x `Lines` (magic-afm) and `Samps/line` squared
+/// (pyMFD). A raster stated twice is listed once; a count that is not a whole number from 1 to 4096 gives none.
+std::vector<RasterShape> force_volume_shapes(const Header& header, const Section& scan, const Section& ramp) {
+    std::vector<RasterShape> shapes;
+    const auto add = [&](const Section& across, std::string_view per_line, const Section& down,
+                         std::string_view lines) {
+        if (across.find(per_line) == nullptr || down.find(lines) == nullptr) return;
+        const std::size_t columns = raster_count(header, across, per_line);
+        const std::size_t rows = raster_count(header, down, lines);
+        const auto same = [&](const RasterShape& shape) { return shape.columns == columns && shape.rows == rows; };
+        if (std::any_of(shapes.begin(), shapes.end(), same)) return;
+        std::string words = header_key(per_line) + ": " + header.value(across, per_line);
+        words += &across == &down && per_line == lines ? ", squared"
+                                                        : " x " + header_key(lines) + ": " + header.value(down, lines);
+        shapes.push_back({std::move(words), columns, rows});
+    };
+    for (const Section& section : header.sections) {
+        if (section.name == "Ciao image list") add(section, "Samps/line", section, "Number of lines");
+    }
+    add(ramp, "force/line", scan, "Lines");
+    add(ramp, "force/line", ramp, "force/line");
+    add(scan, "Samps/line", scan, "Lines");
+    add(scan, "Samps/line", scan, "Samps/line");
+    return shapes;
+}
+
+/// The grid of a force volume: `columns` x `rows` pixels over the scan list's `Scan Size`, centred on its
 /// `X Offset`, `Y Offset`.
-MapGrid force_volume_grid(const Header& header, const Section& scan, std::size_t per_line) {
+MapGrid force_volume_grid(const Header& header, const Section& scan, std::size_t columns, std::size_t rows) {
     MapGrid grid;
-    grid.columns = per_line;
-    grid.rows = per_line;
+    grid.columns = columns;
+    grid.rows = rows;
     grid.size_x = length_m(header, scan, "Scan Size", 0);
     grid.size_y = length_m(header, scan, "Scan Size", 1);
     if (!(grid.size_x > 0.0) || !(grid.size_y > 0.0) || !std::isfinite(grid.size_x) || !std::isfinite(grid.size_y)) {
@@ -209,21 +252,11 @@ NanoscopeSource::NanoscopeSource(const std::filesystem::path& path, const ReadOp
         throw InvalidInput(file, "\\Operating mode: " + mode, "must be Force or Force Volume (force curves)");
     }
     const Section& ramp = header.section("Ciao force list");
-    // Force volume: n x n curves on a square grid, stored one after the other, each as a single file's curve. n is
-    // the force list's `force/line` (jlopezalo/PyFMReader) or the scan list's `Samps/line` (pyMFD, for NanoScope
-    // 7.2): the one whose square the deflection channel's Data length holds (bytes x 2 x samples x n^2).
-    std::vector<std::pair<std::string, std::size_t>> per_line_candidates;  // (the header's words, n)
-    if (mode == "Force") per_line_candidates.emplace_back("Operating mode: Force", 1);
-    for (const auto& [in, key] : {std::pair<const Section*, const char*>{&ramp, "force/line"}, {&scan, "Samps/line"}}) {
-        if (mode == "Force" || in->find(key) == nullptr) continue;
-        const std::string words = header_key(key) + ": " + *in->find(key);
-        const double count = header.number(*in, key);
-        if (!(count >= 1.0) || count > 4096.0 || count != std::floor(count)) {
-            throw InvalidInput(file, words, "must be a whole number from 1 to 4096 (curves a line of a force volume)");
-        }
-        per_line_candidates.emplace_back(words, static_cast<std::size_t>(count));
-    }
-    if (per_line_candidates.empty()) {
+    // A single curve is a 1 x 1 raster; a force volume's raster is the first its header states whose curves the
+    // deflection channel's Data length holds (bytes x 2 x samples x columns x rows).
+    const std::vector<RasterShape> shapes = mode == "Force" ? std::vector<RasterShape>{{"Operating mode: Force", 1, 1}}
+                                                            : force_volume_shapes(header, scan, ramp);
+    if (shapes.empty()) {
         throw InvalidInput(file, "\\force/line", "a force volume must state its curves a line");
     }
     for (const std::string_view delay : {"Reverse delay", "Hold Time"}) {
@@ -258,25 +291,26 @@ NanoscopeSource::NanoscopeSource(const std::filesystem::path& path, const ReadOp
                            "must lie within the file's " + std::to_string(bytes.size()) + " bytes (truncated?)");
     }
     const auto data_bytes = static_cast<std::size_t>(length);
-    std::size_t per_line = 0;
+    const RasterShape* raster = nullptr;
     std::size_t bytes_per_sample = 0;
     std::string stated;
-    for (const auto& [words, count] : per_line_candidates) {
-        const std::size_t samples = 2 * per_segment * count * count;
-        const std::size_t bytes_each = data_bytes / samples;
+    for (const RasterShape& shape : shapes) {
+        const std::size_t samples = 2 * per_segment * shape.columns * shape.rows;
+        const std::size_t bytes_each = samples == 0 ? 0 : data_bytes / samples;
         if ((bytes_each == 2 || bytes_each == 4) && bytes_each * samples == data_bytes) {
-            per_line = count;
+            raster = &shape;
             bytes_per_sample = bytes_each;
             break;
         }
-        stated += (stated.empty() ? "" : " or ") + std::to_string(count * count) + " (" + words + ")";
+        stated += (stated.empty() ? "" : " or ") + std::to_string(shape.columns * shape.rows) + " (" + shape.words +
+                  ")";
     }
-    if (per_line == 0) {
+    if (raster == nullptr) {
         throw InvalidInput(file, "\\Data length: " + header.value(channel, "Data length"),
                            "must be 2 or 4 bytes times " + std::to_string(2 * per_segment) + " samples times " +
                                stated + " curves");
     }
-    const std::size_t curves = per_line * per_line;
+    const std::size_t curves = raster->columns * raster->rows;
 
     const ScaledValue scale = parse_scaled(header, channel, "@4:Z scale");
     const double deflection_sensitivity = sensitivity_nm_per_volt(header, scale.sensitivity) * 1e-9;  // m/V
@@ -311,7 +345,7 @@ NanoscopeSource::NanoscopeSource(const std::filesystem::path& path, const ReadOp
     }
     if (curves > 1) {
         curve.in_map = true;
-        curve.grid = force_volume_grid(header, scan, per_line);
+        curve.grid = force_volume_grid(header, scan, raster->columns, raster->rows);
     }
     bytes_ = std::move(bytes);
     data_offset_ = static_cast<std::size_t>(offset);
@@ -342,6 +376,10 @@ Curve NanoscopeSource::read(std::size_t index) {
         curve.force[i] = curve.deflection[i] * curve.spring_constant;
     }
     if (curve.in_map) {
+        // Curve i is pixel (i mod columns, i div columns) from the low-x, low-y corner, every line from low x:
+        // Bruker's `nanoscope` package (examples.py, force_volume_example_1) reads curve 0 at the bottom-left pixel
+        // of the force volume image, curve `samples_per_line - 1` at its bottom-right and the last at its top-right
+        // (drawn with origin "lower"); AtomicJ places curve i so. docs/instrument-files.md says what is unverified.
         const MapGrid& grid = curve.grid;
         curve.position.index = index;
         curve.position.column = index % grid.columns;

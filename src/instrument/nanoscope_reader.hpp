@@ -14,9 +14,9 @@ namespace mdr::instrument {
 /// Whether the start of a `.spm` file is a NanoScope force file (`\*Force file list` first).
 bool looks_like_nanoscope_force(std::string_view head);
 
-/// NanoScope force curves: one (`Operating mode: Force`) or a force volume (`Force Volume`: n x n curves on a
-/// square grid over the scan's `Scan Size`, stored one after the other; n is `force/line` or the scan list's
-/// `Samps/line`, whichever the data length holds). The file is read
+/// NanoScope force curves: one (`Operating mode: Force`) or a force volume (`Force Volume`: columns x rows curves
+/// over the scan's `Scan Size`, stored one after the other, line after line from the low-y edge, each line from
+/// low x; the raster is the first the header states whose curves the data length holds). The file is read
 /// whole at open; `read` decodes one curve. The deflection channel (the `*Ciao force image list` whose
 /// `@4:Image Data` names a deflection) holds per curve the extend (stored from the turnaround back to its start)
 /// then the retract; each stored integer times the channel's `@4:Z scale` V/LSB is volts, times

@@ -3,6 +3,10 @@ against the files' header values (the same values the C++ tests in tests/unit/in
 
 from __future__ import annotations
 
+import struct
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 
@@ -49,6 +53,49 @@ def test_nanoscope_curve_has_the_header_values():
     assert curve.sensitivity == pytest.approx(27.39e-9, rel=1e-12)  # \@Sens. DeflSens, nm/V
     assert curve.height[0] == pytest.approx(227.2211 * 13.203e-9, rel=1e-12)  # \@4:Ramp Size x \@Sens. Zsens
     assert curve.force.shape == (2048,)
+
+
+def nanoscope_force_volume(tmp_path, columns, rows):
+    """scripts/make_instrument_test_files.py forcevolume: the vendor curve made a force volume of columns x rows
+    curves, curve k holding the vendor's stored integers times k + 1, by the layout docs/instrument-files.md cites."""
+    path = tmp_path / f"force-volume-{columns}x{rows}.spm"
+    subprocess.run([sys.executable, REPO_ROOT / "scripts" / "make_instrument_test_files.py", "forcevolume",
+                    str(columns), str(rows), path], check=True)
+    return path
+
+
+def test_nanoscope_force_volume_curves_start_at_the_bottom_left_and_run_along_x(tmp_path):
+    # Bruker's own nanoscope package (examples.py, force_volume_example_1, image drawn with origin "lower"): curve 0
+    # is the force volume image's bottom-left pixel, curve samples_per_line - 1 its bottom-right, the last curve its
+    # top-right. A 3 x 2 raster (not square) tells x from y.
+    curves = mdr.read_curves(nanoscope_force_volume(tmp_path, 3, 2))
+    assert len(curves) == 6
+    # \Scan Size: 2000 nm centred on \X Offset, \Y Offset 0: pixel centres at x = -2/3, 0, 2/3 um, y = -1/2, 1/2 um
+    low_x, high_x, low_y, high_y = -2e-6 / 3, 2e-6 / 3, -0.5e-6, 0.5e-6
+    assert curves[0].position == pytest.approx((low_x, low_y), abs=1e-15)
+    assert curves[2].position == pytest.approx((high_x, low_y), abs=1e-15)
+    assert curves[5].position == pytest.approx((high_x, high_y), abs=1e-15)
+    assert [curve.pixel for curve in curves] == [(0, 0), (1, 0), (2, 0), (0, 1), (1, 1), (2, 1)]
+    # Curve k is the k-th stored: its deflection at the turnaround is (k + 1) x the vendor's first stored integer x
+    # \@4:Z scale (0.000375 V/LSB) x \@Sens. DeflSens (27.39 nm/V).
+    turnaround = struct.unpack_from("<i", (VENDOR / "20200904_Egel4-Z1.0_00025.spm").read_bytes(), 80960)[0]
+    for k, curve in enumerate(curves):
+        assert curve.deflection[1023] == pytest.approx((k + 1) * turnaround * 0.000375 * 27.39e-9, rel=1e-12)
+
+
+def test_nanoscope_force_volume_raster_may_come_from_its_image_alone(tmp_path):
+    # Bruker's nanoscope package counts a line's curves by the force volume image's samples per line: with
+    # \force/line 9, the scan list's \Samps/line 5 and \Lines 7 (63, 81, 35 or 25 curves), only the image list's
+    # 3 x 2 holds the 6 curves stored.
+    path = nanoscope_force_volume(tmp_path, 3, 2)
+    data = path.read_bytes()
+    for old, new in ((b"\\force/line: 3\r", b"\\force/line: 9\r"), (b"\\Lines: 2\r", b"\\Lines: 7\r"),
+                     (b"\\Samps/line: 3\r\n\\Lines", b"\\Samps/line: 5\r\n\\Lines")):
+        assert data.count(old) == 1
+        data = data.replace(old, new)
+    path.write_bytes(data)
+    curves = mdr.read_curves(path)
+    assert [curve.pixel for curve in curves] == [(0, 0), (1, 0), (2, 0), (0, 1), (1, 1), (2, 1)]
 
 
 def test_missing_calibration_is_named():

@@ -1,9 +1,11 @@
 // Bruker NanoScope force volume (`Operating mode: Force Volume`). No real force volume file was available: the
-// file here is built from the vendor single curve (20200904_Egel4-Z1.0_00025.spm) by the layout jlopezalo/PyFMReader
-// reads (pyfmreader/nanosc: `force/line` curves a line, a square grid, curve i's extend and retract at Data offset
-// + i x 2 x Samps/line x bytes; Data length = bytes x 2 x Samps/line x force/line^2): force/line 2, and curve k
-// holding the vendor curve's stored integers times k + 1. Checked by hand against the stored integers and the
-// header's scaling (q = 0.000375 V/LSB, DeflSens 27.39 nm/V, Spring Constant 0.1332 N/m) and its Scan Size.
+// file here is built from the vendor single curve (20200904_Egel4-Z1.0_00025.spm) by the layout the public readers
+// agree on (docs/instrument-files.md, "Bruker NanoScope force volume": curve i's extend and retract at Data offset
+// + i x 2 x Samps/line x bytes, line after line), curve k holding the vendor curve's stored integers times k + 1.
+// Checked by hand against the stored integers and the header's scaling (q = 0.000375 V/LSB, DeflSens 27.39 nm/V,
+// Spring Constant 0.1332 N/m) and its Scan Size. The order of the pixels on a raster that is not square, and a
+// raster stated by the force volume image alone, are tested on files of scripts/make_instrument_test_files.py
+// (tests/python/test_instrument.py).
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -35,10 +37,10 @@ std::int32_t stored(const std::string& bytes, std::size_t at) {
     return static_cast<std::int32_t>(raw);
 }
 
-/// The force volume of `per_line` x `per_line` curves with `curves` curves' data, written to a scratch file.
-/// `scan_per_line` replaces the scan list's `Samps/line: 256` where not empty.
+/// The force volume of `force/line: per_line` with `curves` curves' data, written to a scratch file.
+/// `scan_per_line` and `scan_lines` replace the scan list's `Samps/line: 256` and `Lines: 256` where not empty.
 fs::path force_volume(const std::string& name, const std::string& per_line, std::size_t curves,
-                      const std::string& scan_per_line = "") {
+                      const std::string& scan_per_line = "", const std::string& scan_lines = "") {
     std::ifstream stream(fs::path(MDR_VENDOR_DATA) / "20200904_Egel4-Z1.0_00025.spm", std::ios::binary);
     const std::string vendor{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
     const std::string end = "\\*File list end\r\n";
@@ -50,6 +52,7 @@ fs::path force_volume(const std::string& name, const std::string& per_line, std:
     if (!scan_per_line.empty()) {
         header = replaced(header, "\\Samps/line: 256\r\n", "\\Samps/line: " + scan_per_line + "\r\n");
     }
+    if (!scan_lines.empty()) header = replaced(header, "\\Lines: 256\r\n", "\\Lines: " + scan_lines + "\r\n");
     header += '\x1a';
     header.resize(data_offset, '\0');  // the header's padding up to the data, as in the vendor file
     std::string data;
@@ -95,8 +98,8 @@ TEST(NanoscopeForceVolume, CurvesOnTheGridMatchTheStoredIntegersAndTheHeader) {
     fs::remove(path);
 }
 
-TEST(NanoscopeForceVolume, DataLengthNotHoldingForceLineSquaredCurvesIsRefused) {
-    const fs::path path = force_volume("short", "3", 4);  // 9 curves stated, 4 stored
+TEST(NanoscopeForceVolume, DataLengthHoldingNoRasterTheHeaderStatesIsRefused) {
+    const fs::path path = force_volume("short", "3", 4);  // 768, 9 or 65536 curves stated, 4 stored
     try {
         mdr::instrument::read_curves(path);
         ADD_FAILURE() << "no exception";
@@ -104,8 +107,8 @@ TEST(NanoscopeForceVolume, DataLengthNotHoldingForceLineSquaredCurvesIsRefused) 
         EXPECT_EQ(error.key(), path.string());
         EXPECT_EQ(error.value(), "\\Data length: 32768") << error.what();
         EXPECT_EQ(error.rule(),
-                  "must be 2 or 4 bytes times 2048 samples times 9 (\\force/line: 3) or 65536 (\\Samps/line: 256) "
-                  "curves");
+                  "must be 2 or 4 bytes times 2048 samples times 768 (\\force/line: 3 x \\Lines: 256) or 9 "
+                  "(\\force/line: 3, squared) or 65536 (\\Samps/line: 256 x \\Lines: 256) curves");
     }
     fs::remove(path);
 }
@@ -118,6 +121,26 @@ TEST(NanoscopeForceVolume, CurvesALineMayBeTheScanListsSampsPerLineWhereTheDataL
     ASSERT_EQ(file.size(), 4u);
     EXPECT_NEAR(file.read(3).deflection[1023], 4 * 4264 * metres_per_lsb, 1e-20);
     EXPECT_EQ(file.read(3).position.row, 1u);
+    fs::remove(path);
+}
+
+TEST(NanoscopeForceVolume, RasterOfForceLineByTheScanListsLinesStartsAtTheBottomLeft) {
+    // Gwyddion reads force/line curves a line and the scan list's Lines lines: 3 x 2 here (force/line squared
+    // would be 9). Bruker's nanoscope examples: curve 0 at the bottom-left, curve 2 (samples a line - 1) at the
+    // bottom-right, the last at the top-right; pixel centres of Scan Size 2000 nm: x = -2/3, 0, 2/3 um, y = -/+ 0.5 um.
+    const fs::path path = force_volume("3x2", "3", 6, "", "2");
+    mdr::instrument::CurveFile file(path);
+    ASSERT_EQ(file.size(), 6u);
+    const mdr::instrument::Curve first = file.read(0);
+    EXPECT_EQ(first.grid.columns, 3u);
+    EXPECT_EQ(first.grid.rows, 2u);
+    EXPECT_NEAR(first.position.x, -2e-6 / 3, 1e-18);
+    EXPECT_NEAR(first.position.y, -0.5e-6, 1e-18);
+    EXPECT_NEAR(file.read(2).position.x, 2e-6 / 3, 1e-18);
+    EXPECT_NEAR(file.read(2).position.y, -0.5e-6, 1e-18);
+    EXPECT_NEAR(file.read(5).position.x, 2e-6 / 3, 1e-18);
+    EXPECT_NEAR(file.read(5).position.y, 0.5e-6, 1e-18);
+    EXPECT_NEAR(file.read(5).deflection[1023], 6 * 4264 * metres_per_lsb, 1e-20);  // the sixth stored curve
     fs::remove(path);
 }
 
