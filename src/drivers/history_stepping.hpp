@@ -179,13 +179,15 @@ private:
     CoefficientCache cache_;
     std::vector<GridNode> nodes_;
     std::size_t last_node_;
-    double depth_scale_ = 0.0;  ///< the equivalent depth at the half-width: the scale of the first depth solve
+    // g at the half-width (the half-width where g is infinite): a millionth of it is the smallest bracket of a
+    // depth solve.
+    double depth_scale_ = 0.0;
     bool has_dashpot_;
-    // A control that solves for the depth, with a parallel dashpot: the indenter's rate dd/dt at the current node,
-    // so that the dashpot sees the trapezoidal rate (second order, see Foundation::begin_step). Unknown (the secant
-    // rate is used for one step) while nothing is in contact: the rate is then not tied to the force.
-    bool trapezoidal_;
-    bool sine_rate_;
+    bool trapezoidal_;  // a control that solves for the depth, with a parallel dashpot
+    bool sine_rate_;    // a prescribed depth under a harmonic, with a parallel dashpot
+    // The indenter's rate dd/dt at the current node that the dashpot sees (Foundation::begin_step): trapezoidal
+    // (second order) when the control solves for the depth; unknown (the secant rate is used for one step) while
+    // nothing is in contact, as the rate is then not tied to the force.
     std::optional<double> rate_;
     double depth_;
     double previous_depth_;
