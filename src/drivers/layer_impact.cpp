@@ -37,8 +37,8 @@ IndentationResult run_layer_impact(const ContactCase& contact_case, const contac
                                    "): the indenter does not rebound in time; give a later load.end");
         }
         const double next_time = time + step;
-        // Trapezoidal rule for m d'' = -F (eq. 37), as run_impact: F(d1) + (4m/dt^2)(d1 - d0 - v0 dt) = -F0, increasing
-        // in d1 in either phase (the force increases with the depth, theory.md "Layers").
+        // Trapezoidal rule for m d'' = -F (eq. 37), as ImpactStepping: F(d1) + (4m/dt^2)(d1 - d0 - v0 dt) = -F0,
+        // increasing in d1 in either phase (the force increases with the depth, theory.md "Layers").
         const double spring = 4.0 * mass / (step * step);
         const double anchor = depth + velocity * step;
         const auto solve = [&](auto&& trial) {
@@ -72,7 +72,7 @@ IndentationResult run_layer_impact(const ContactCase& contact_case, const contac
         if (next.phase == LayerPhase::lifted_off) {
             // The contact is lost inside the step where int_0^t G dd = 0 (eq. L12 with t1 at the start), the depth
             // linear over the step as in the stepper: the fraction found by bisection of that phase boundary. The
-            // impulse of that part of the step is taken as a linear decay of the force, as run_impact's.
+            // impulse of that part of the step is taken as a linear decay of the force, as ImpactStepping's.
             const double depth_change = next.centre - depth;
             double inside = 0.0, outside = 1.0;
             for (int iteration = 0; iteration < 60 && outside - inside > 1e-13; ++iteration) {

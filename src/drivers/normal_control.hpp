@@ -1,7 +1,8 @@
 #pragma once
-// What each history-driven control does in the one loop of run_indentation (indentation.cpp): its grid cuts and
-// grid, its starting depth, the depth at the end of a step, the force of a jump, the depth and load shown, and its
-// own observers. One class per control type of LoadControl (load_control.hpp); the loop is a template over them.
+// What each history-driven control does in HistoryStepping (history_stepping.hpp), its step in the one loop of
+// run_indentation (indentation.cpp): its grid cuts and grid, its starting depth, the depth at the end of a step, the
+// force of a jump, the depth and load shown, and its own observers. One class per history-driven control type of
+// LoadControl (load_control.hpp); an impact is a stepping class of its own (impact_stepping.hpp).
 
 #include <algorithm>
 #include <optional>

@@ -4,7 +4,6 @@
 
 #include <cstddef>
 #include <functional>
-#include <optional>
 #include <vector>
 
 #include "mdr/drivers/indentation.hpp"
@@ -39,10 +38,6 @@ public:
     SnapshotRecorder(std::vector<double> times, const profile::Profile& indenter, IndentationResult& result,
                      ShearStress shear_stress);
     void observe(const StepState& state) override;
-    /// The earliest time not taken yet (an impact lands its steps on it); none when every snapshot is taken.
-    std::optional<double> next_time() const {
-        return next_ < times_.size() ? std::optional<double>(times_[next_]) : std::nullopt;
-    }
 
 private:
     std::vector<double> times_;  // ascending

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The forward model of rebound data (internal to mdr_fit): one impact of the case's indenter on its material per
-/// approach speed (drivers::run_impact, eq. 37-39).
+/// approach speed (drivers::run_case, eq. 37-39).
 
 #include <cstddef>
 #include <functional>

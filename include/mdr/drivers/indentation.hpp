@@ -108,29 +108,28 @@ using ProgressObserver = std::function<void(double fraction)>;
 /// The time grid run_indentation steps a displacement-, force- or spring-controlled case along, with `numerics`
 /// its resolve_numerics: make_time_grid with a node at every snapshot, tangential and harmonic breakpoint, Shore
 /// reading and force pause, graded after fast load changes (grade_after_changes), the harmonic part added.
+/// Throws mdr::InvalidInput for an impact, which has no history grid.
 std::vector<GridNode> indentation_grid(const ContactCase& contact_case, const ResolvedNumerics& numerics);
 
-/// Runs a displacement-, force- or spring-controlled case, with its tangential loading when it has one (after each
-/// normal step the tangential layer takes the step's tangential increment). The state after every step goes to the
-/// standard observers, which fill the result, then to `observers` (step_observer.hpp). Throws mdr::InvalidInput for
-/// problems found while running (the contact outgrowing the foundation; key `tangential` when the tangential load
-/// changes while no element is in normal contact).
+/// Runs a case on the half-space under any control, each step by the control's stepping class in one loop:
+/// - displacement, force or spring control along the history's grid (indentation_grid), with its tangential
+///   loading when it has one (after each normal step the tangential layer takes the step's tangential increment);
+/// - an impact (control = impact): m d'' = -F_N (eq. 37) with the trapezoidal rule, implicit in the depth and solved
+///   on the foundation each step (second order, no stability limit), with its oblique part, until the last element
+///   has left contact (eq. 39).
+/// The state after every step goes to the standard observers, which fill the result, then to `observers`
+/// (step_observer.hpp). Throws mdr::InvalidInput for problems found while running (the contact outgrowing the
+/// foundation; key `tangential` when the tangential load changes while no element is in normal contact; key
+/// `load.end` when an impact's contact does not end before `end_time`).
 IndentationResult run_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {},
                                   const StepObservers& observers = {});
-
-/// Runs an impact case (control = impact): m d'' = -F_N (eq. 37) with the trapezoidal rule, implicit in the
-/// depth and solved on the foundation each step (second order, no stability limit), until the last element has
-/// left contact (eq. 39). The state after every step goes to the standard observers, then to `observers`. Throws
-/// mdr::InvalidInput when the contact does not end before `end_time`.
-IndentationResult run_impact(const ContactCase& contact_case, const ProgressObserver& progress = {},
-                             const StepObservers& observers = {});
 
 /// Throws std::runtime_error naming the first value of `result` that is not finite (a column at a time, a snapshot,
 /// one of its outcomes()), so that no NaN or infinity is ever reported as a result.
 void require_finite_result(const IndentationResult& result);
 
-/// Runs any case: run_layer_indentation for a case with a layer, run_impact for control = impact, run_indentation
-/// otherwise, with the caller's `observers` after the standard ones; the result is checked with require_finite_result.
+/// Runs any case: run_layer_indentation for a case with a layer, run_indentation otherwise, with the caller's
+/// `observers` after the standard ones; the result is checked with require_finite_result.
 IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress = {},
                            const StepObservers& observers = {});
 

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Measured rebounds for fitting: the coefficient of restitution e (and optionally the contact time T) of impacts
-/// at several approach speeds v0, each an impact of the case's indenter on its material (drivers::run_impact,
+/// at several approach speeds v0, each an impact of the case's indenter on its material (drivers::run_case,
 /// eq. 37-39). Where they come from (a CSV file and its columns, or arrays) and what the fit receives.
 
 #include <cstddef>

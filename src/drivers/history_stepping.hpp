@@ -1,0 +1,200 @@
+#pragma once
+// The stepping class of a history-driven control (displacement, force, spring) in the one loop (control_loop.hpp):
+// its grid (the history's points with the cuts of the snapshots, the tangential load, the harmonic and the control,
+// graded after fast changes), its step (jumps against a dashpot, the trapezoidal rate, the control's depth, the
+// tangential layer's step) and its outcomes (tangential, harmonic). What differs between the three controls is a
+// class of normal_control.hpp.
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/indentation.hpp"
+#include "mdr/drivers/load_history.hpp"
+#include "mdr/foundation/foundation.hpp"
+#include "cycle_measure.hpp"
+#include "normal_control.hpp"
+#include "observer_list.hpp"
+#include "recorders.hpp"
+#include "stepping.hpp"
+#include "tangential_stepping.hpp"
+
+namespace mdr::drivers {
+
+/// The time grid of a history-driven control: the history's points, the cuts of the snapshots, the tangential load,
+/// the harmonic and the control, graded after fast changes, with the harmonic added to the history's values.
+template <class Control>
+std::vector<GridNode> history_grid(const ContactCase& contact_case, const ResolvedNumerics& numerics,
+                                   const Control& control) {
+    std::vector<double> cuts = contact_case.snapshots;
+    if (contact_case.tangential) {
+        const auto breakpoints = contact_case.tangential->load.breakpoints();
+        cuts.insert(cuts.end(), breakpoints.begin(), breakpoints.end());
+    }
+    if (const auto& harmonic = contact_case.load.harmonic) {
+        const auto breakpoints = harmonic->breakpoints();
+        cuts.insert(cuts.end(), breakpoints.begin(), breakpoints.end());
+        if (const auto last = harmonic->last_full_cycle(contact_case.end_time)) {
+            cuts.insert(cuts.end(), {last->first, last->second});  // the measured cycle on uniform steps
+        }
+    }
+    control.add_cuts(cuts, contact_case.end_time);
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    auto nodes = make_time_grid(*contact_case.load.history, contact_case.end_time, numerics.time_step,
+                                numerics.min_segment_steps, cuts);
+    control.shape_grid(nodes);
+    if (numerics.grading_ratio > 0.0) {
+        const auto changes = fast_change_times(*contact_case.load.history, contact_case.end_time, numerics.time_step,
+                                               min_steps_per_segment);
+        nodes = grade_after_changes(nodes, changes, numerics.grading_ratio, numerics.first_graded_step);
+    }
+    if (const auto& harmonic = contact_case.load.harmonic) {
+        for (auto& node : nodes) node.value += harmonic->value(node.time);
+    }
+    return nodes;
+}
+
+/// Steps a history-driven control (`Control`: a class of normal_control.hpp) node by node along history_grid, with
+/// the tangential loading and the harmonic cycle measure of the case; the run ends at the grid's last node.
+template <class Control>
+class HistoryStepping {
+public:
+    /// `contact_case`, `numerics` and `foundation` must outlive the stepping.
+    HistoryStepping(const ContactCase& contact_case, const ResolvedNumerics& numerics,
+                    foundation::Foundation& foundation, Control control)
+        : contact_case_(contact_case),
+          foundation_(foundation),
+          control_(std::move(control)),
+          cache_(contact_case.material),
+          nodes_(history_grid(contact_case, numerics, control_)),
+          last_node_(nodes_.size() - 1),
+          has_dashpot_(contact_case.material.viscosity() > 0.0),
+          trapezoidal_(has_dashpot_ && Control::solves_depth),
+          sine_rate_(has_dashpot_ && !Control::solves_depth && contact_case.load.harmonic),
+          rate_(trapezoidal_ ? std::optional<double>(0.0) : std::nullopt),
+          depth_(control_.start_depth(nodes_.front())),
+          previous_depth_(depth_) {
+        const double equivalent = contact_case.indenter->equivalent(numerics.half_width);
+        depth_scale_ = std::isfinite(equivalent) ? std::max(equivalent, 1e-300) : numerics.half_width;
+        if (contact_case.tangential) {
+            tangential_.emplace(*contact_case.tangential, contact_case.material, foundation, contact_case.end_time);
+        }
+        if (const auto& harmonic = contact_case.load.harmonic) cycle_.emplace(*harmonic, contact_case.end_time);
+    }
+
+    /// t, d, F, a and z when the control has a base column.
+    RowRecorder::Columns columns() const { return {.velocity = false, .base = control_.base_column()}; }
+    /// The control's observers, the tangential columns and the harmonic cycle measure.
+    void add_observers(ObserverList& observers, IndentationResult& result) {
+        control_.add_observers(observers, result);
+        if (tangential_) observers.add(tangential_columns_.emplace(*tangential_, result));
+        if (cycle_) observers.add(*cycle_);
+    }
+    /// The tangential layer's shear stress in snapshots, with tangential loading.
+    SnapshotRecorder::ShearStress shear_stress() {
+        if (!tangential_) return {};
+        return [this](Snapshot& snapshot) { tangential_->add_shear_stress(snapshot); };
+    }
+    /// The state at the grid's first node.
+    StepState first_state() const {
+        return {.time = nodes_.front().time, .depth = depth_, .load = nodes_.front().value, .last = last_node_ == 0,
+                .foundation = &foundation_};
+    }
+
+    /// The step to node `n` (1, 2, ...): the control's depth (a jump against a dashpot keeps it), then the
+    /// tangential layer's step; the last node ends the run.
+    StepState step(std::size_t n) {
+        const double time_step = nodes_[n].time - nodes_[n - 1].time;
+        control_.begin_step(nodes_[n - 1].time, nodes_[n].time);
+        const double target = control_.target(nodes_[n].value);
+        double load = target;
+        double force = 0.0;
+        double shown_depth = depth_;  // a jump keeps it
+        if (time_step == 0.0 && has_dashpot_) {
+            // A jump against a dashpot: the dashpot takes the force at once and the depth does not move.
+            force = control_.jump_force(target, depth_, foundation_);
+            if (rate_) rate_ = jumped_rate(*rate_, force - last_force_);
+        } else {
+            if (sine_rate_) {
+                // A prescribed depth under a harmonic with a dashpot: the depth is not linear inside a step, and
+                // the secant rate would be first order at the nodes. The dashpot takes the trapezoidal rate from the
+                // prescribed rate at the step's start, the history's slope plus the sine's rate (second order).
+                const auto& harmonic = *contact_case_.load.harmonic;
+                const double t0 = nodes_[n - 1].time, t1 = nodes_[n].time;
+                const double history_change =
+                    (nodes_[n].value - harmonic.value(t1)) - (nodes_[n - 1].value - harmonic.value(t0));
+                rate_ = history_change / time_step + harmonic.rate(t0);
+            }
+            foundation_.begin_step(cache_.get(time_step), rate_);
+            const DepthGuess start{.guess = depth_ + (depth_ - previous_depth_),
+                                   .scale = std::max(std::abs(depth_ - previous_depth_), 1e-6 * depth_scale_)};
+            const double new_depth = control_.step_depth(foundation_, depth_, start, target);
+            foundation_.advance(depth_, new_depth);
+            if (trapezoidal_) rate_ = next_rate(depth_, new_depth, time_step);
+            if (tangential_) tangential_->step(cache_.get(time_step), nodes_[n - 1].time, nodes_[n].time);
+            previous_depth_ = depth_;
+            depth_ = new_depth;
+            force = foundation_.total_force();
+            shown_depth = control_.shown_depth(depth_, target, foundation_);
+            load = control_.shown_load(target, depth_);
+        }
+        last_force_ = force;
+        const bool settled = n == last_node_ || nodes_[n + 1].time != nodes_[n].time;
+        if (settled) control_.settled(nodes_[n].time, force, depth_, nodes_[n].value);
+        return {.step = n, .time = nodes_[n].time, .depth = shown_depth, .force = force, .load = load,
+                .fraction = static_cast<double>(n) / static_cast<double>(last_node_), .settled = settled,
+                .last = n == last_node_, .foundation = &foundation_};
+    }
+
+    /// The tangential and harmonic outcomes of the whole run.
+    void add_outcomes(IndentationResult& result) const {
+        if (tangential_) result.tangential = tangential_->outcome();
+        if (cycle_) result.harmonic = cycle_->outcome();
+    }
+
+private:
+    // The indenter's rate after a force jump dF at fixed depth: the dashpots of the n elements in contact take it,
+    // dF = 8 dx eta n d(rate) (eq. 16, 21); unknown without contact.
+    std::optional<double> jumped_rate(double rate, double force_jump) const {
+        const auto contacts = static_cast<double>(foundation_.contact_count());
+        if (contacts == 0.0) return std::nullopt;
+        return rate + force_jump / (8.0 * foundation_.spacing() * contact_case_.material.viscosity() * contacts);
+    }
+    // The rate at the end of a force-controlled step: the trapezoidal 2 dd/dt - rate0, or the secant dd/dt after a
+    // step without a known start rate (what the dashpots saw, so that the next step starts in equilibrium).
+    std::optional<double> next_rate(double depth_start, double depth_end, double time_step) const {
+        if (foundation_.contact_count() == 0) return std::nullopt;
+        const double secant = (depth_end - depth_start) / time_step;
+        return rate_ ? 2.0 * secant - *rate_ : secant;
+    }
+
+    const ContactCase& contact_case_;
+    foundation::Foundation& foundation_;
+    Control control_;
+    CoefficientCache cache_;
+    std::vector<GridNode> nodes_;
+    std::size_t last_node_;
+    // g at the half-width (the half-width where g is infinite): a millionth of it is the smallest bracket of a
+    // depth solve.
+    double depth_scale_ = 0.0;
+    bool has_dashpot_;
+    bool trapezoidal_;  // a control that solves for the depth, with a parallel dashpot
+    bool sine_rate_;    // a prescribed depth under a harmonic, with a parallel dashpot
+    // The indenter's rate dd/dt at the current node that the dashpot sees (Foundation::begin_step): trapezoidal
+    // (second order) when the control solves for the depth; unknown (the secant rate is used for one step) while
+    // nothing is in contact, as the rate is then not tied to the force.
+    std::optional<double> rate_;
+    double depth_;
+    double previous_depth_;
+    double last_force_ = 0.0;
+    std::optional<TangentialStepper> tangential_;
+    std::optional<TangentialColumns<TangentialStepper>> tangential_columns_;
+    std::optional<CycleMeasure> cycle_;
+};
+
+}  // namespace mdr::drivers

@@ -1,0 +1,67 @@
+#pragma once
+// The stepping class of an impact in the one loop (control_loop.hpp): m d'' = -F (eq. 37) on steps of
+// numerics.time_step cut at the snapshot times, with its oblique part, until the last element has left contact
+// (eq. 39), its stop rule; the restitution and the rest of ImpactOutcome are its outcome.
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/indentation.hpp"
+#include "mdr/foundation/foundation.hpp"
+#include "oblique_stepping.hpp"
+#include "observer_list.hpp"
+#include "recorders.hpp"
+#include "stepping.hpp"
+
+namespace mdr::drivers {
+
+/// Steps an impact (ImpactControl) with the trapezoidal rule, implicit in the depth and solved on the foundation
+/// each step (second order, no stability limit), and its oblique part (ObliqueStepper) after each normal step.
+class ImpactStepping {
+public:
+    /// `contact_case`, `numerics` and `foundation` must outlive the stepping; `impact` is the case's control.
+    ImpactStepping(const ContactCase& contact_case, const ResolvedNumerics& numerics,
+                   foundation::Foundation& foundation, const ImpactControl& impact);
+
+    /// t, d, F, a and v.
+    RowRecorder::Columns columns() const { return {.velocity = true, .base = false}; }
+    /// The oblique part's columns.
+    void add_observers(ObserverList& observers, IndentationResult& result);
+    /// The oblique part's shear stress in snapshots.
+    SnapshotRecorder::ShearStress shear_stress();
+    /// The first contact at t = 0, at the approach speed.
+    StepState first_state() const { return state(0, false); }
+    /// Step `n` (1, 2, ...): the next time step, cut at the next snapshot time; the run ends in the step in which the
+    /// contact ends. Throws mdr::InvalidInput when the contact has not ended by numerics.time_limit (key `load.end`)
+    /// or the steps exceed numerics.max_element_steps, std::runtime_error when the restitution lies outside [0, 1].
+    StepState step(std::size_t n);
+    /// The impact's outcome (eq. 39).
+    void add_outcomes(IndentationResult& result) const { result.impact = outcome_; }
+
+private:
+    StepState state(std::size_t step, bool ended) const;
+    /// The step of length `time_step` in which the last element left: the rebound velocity, and the outcome.
+    double end_contact(double time_step);
+
+    const ContactCase& contact_case_;
+    const ResolvedNumerics& numerics_;
+    foundation::Foundation& foundation_;
+    double mass_;      ///< m [kg]
+    double approach_;  ///< v0 [m/s]
+    CoefficientCache cache_;
+    std::vector<double> cuts_;  ///< the snapshot times, ascending: each ends a step
+    std::size_t next_cut_ = 0;
+    std::optional<ObliqueStepper> oblique_;
+    std::optional<TangentialColumns<ObliqueStepper>> oblique_columns_;
+    double time_ = 0.0;
+    double depth_ = 0.0;
+    double velocity_;
+    double force_ = 0.0;
+    std::array<double, 2> inner_exits_{-1.0, -1.0};  ///< when the two innermost elements last left contact
+    std::optional<ImpactOutcome> outcome_;
+};
+
+}  // namespace mdr::drivers
