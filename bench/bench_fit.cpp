@@ -14,8 +14,8 @@
 
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/fit/fit.hpp"
-#include "mdr/fitcase/fit_case_run.hpp"
 #include "mdr/fitcase/fit_case.hpp"
+#include "mdr/fitcase/fit_case_run.hpp"
 
 namespace {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "mdr/fit/fit.hpp"
-#include "mdr/fitcase/fit_case_run.hpp"
 #include "mdr/fitcase/fit_case.hpp"
+#include "mdr/fitcase/fit_case_run.hpp"
 
 namespace {
 

@@ -75,8 +75,9 @@ void add_fit_command(CLI::App& app, int& exit_code) {
             auto result = fit::fit(problem);
             fit::add_plausibility_flags(problem, fitcase::plausibility_units(fit_case), result);
             progress.finish();
-            directory.write([&](const std::filesystem::path& files) { fitcase::write_fit_result(files, fit_case, result); },
-                            received_signal);
+            directory.write(
+                [&](const std::filesystem::path& files) { fitcase::write_fit_result(files, fit_case, result); },
+                received_signal);
             fmt::print("fit of {} parameter(s) to {} curve(s) and {} rebound data set(s), {} points: {}\n",
                        result.names.size(), problem.curves.size(), problem.rebounds.size(), result.points,
                        result.status);

@@ -58,8 +58,8 @@ void write_table(const std::filesystem::path& path, const std::vector<std::strin
 
 }  // namespace
 
-bool run_each(const fitcase::FitCase& fit_case, const std::vector<std::string>& files, const io::ResultDirectory& directory,
-              FitProgress& progress) {
+bool run_each(const fitcase::FitCase& fit_case, const std::vector<std::string>& files,
+              const io::ResultDirectory& directory, FitProgress& progress) {
     require_one_curve_table(fit_case);
     std::vector<PreparedFit> prepared;
     std::vector<std::string> stems;

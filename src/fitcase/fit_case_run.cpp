@@ -13,7 +13,9 @@ std::vector<fit::Curve> load_curves(const FitCase& fit_case) {
         try {
             curves.push_back(fit::load_curve(fit_case.data[i]));
         } catch (const InvalidInput& error) {
-            throw error.with_prefix((i < fit_case.data_keys.size() ? fit_case.data_keys[i] : fmt::format("fit.data[{}]", i)) + ".");
+            const std::string key =
+                i < fit_case.data_keys.size() ? fit_case.data_keys[i] : fmt::format("fit.data[{}]", i);
+            throw error.with_prefix(key + ".");
         }
     }
     return curves;

@@ -12,9 +12,9 @@
 #include <utility>
 
 #include "mdr/error.hpp"
-#include "mdr/fitcase/fit_case_run.hpp"
 #include "mdr/fit/instrument_curve.hpp"
 #include "mdr/fit/plausibility.hpp"
+#include "mdr/fitcase/fit_case_run.hpp"
 #include "mdr/io/csv_field.hpp"
 #include "mdr/io/free_key_units.hpp"
 #include "mdr/io/output_file.hpp"

@@ -63,7 +63,8 @@ TEST(FitCandidates, SecondRelaxationTimeIsWarrantedWhenTheDataHaveOne) {
     const reference::PronyMaterial truth{1e6, 0.0, {{2e6, 0.05}, {1e6, 1.0}}};
     const auto curve = ramp_hold(truth, noise, 11);
     const std::clock_t start = std::clock();
-    const auto choice = fitcase::fit_candidates(candidate_case("candidates = [\"elastic\", \"standard\", \"prony2\"]\n"), {curve});
+    const auto choice =
+        fitcase::fit_candidates(candidate_case("candidates = [\"elastic\", \"standard\", \"prony2\"]\n"), {curve});
     const double seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     ASSERT_EQ(choice.fits.size(), 3u);
     EXPECT_EQ(choice.fits.front().name, "prony2");
@@ -178,7 +179,8 @@ TEST(FitCandidates, SmoothingEvensTheSpectrum) {
     const reference::PronyMaterial truth{1e6, 0.0, {{2e6, 0.05}, {1e6, 1.0}}};
     const auto curve = ramp_hold(truth, 5e-6, 1);
     const auto plain = fitcase::fit_candidates(candidate_case("[fit.spectrum]\nper_decade = 4\n"), {curve});
-    const auto smooth = fitcase::fit_candidates(candidate_case("[fit.spectrum]\nper_decade = 4\nsmoothing = 1\n"), {curve});
+    const auto smooth =
+        fitcase::fit_candidates(candidate_case("[fit.spectrum]\nper_decade = 4\nsmoothing = 1\n"), {curve});
     const auto& a = plain.fits.front();
     const auto& b = smooth.fits.front();
     std::printf("smoothing 1: roughness %.3g -> %.3g, residual/noise %.3f -> %.3f, G(t) within %.2e\n",

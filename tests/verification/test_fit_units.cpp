@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "mdr/fit/fit.hpp"
-#include "mdr/fitcase/fit_case_run.hpp"
 #include "mdr/fitcase/fit_case.hpp"
+#include "mdr/fitcase/fit_case_run.hpp"
 #include "reference/closed_forms.hpp"
 #include "reference/indenter.hpp"
 #include "reference/piecewise_linear.hpp"

@@ -58,11 +58,12 @@ struct CandidateProblem {
 };
 
 /// Fits every candidate of `problem.choice` (a spectrum alone when only `[fit.spectrum]` is given) to `curves`.
-/// The elastic model is fitted first, from `problem.start_modulus`; its modulus G_e sets the start values: N Prony terms start at G_inf = G_e / 2, G_k = G_e / N with bounds
-/// [1e-6, 1e4] G_e, and times spread evenly in log between the finest sampling interval and the longest record
-/// with bounds 1e-2 and 1e2 times those; a spectrum starts at G_inf = G_e / 2 and G_j = G_e / (2 M) for M times,
-/// all with bounds [0, 1e3 G_e]. The indenter's free keys start from the elastic fit. Throws mdr::InvalidInput
-/// as fit() does, and (key `fit.data`) when there is no curve.
+/// The elastic model is fitted first, from `problem.start_modulus`; its modulus G_e sets the start values: N Prony
+/// terms start at G_inf = G_e / 2, G_k = G_e / N with bounds [1e-6, 1e4] G_e, and times spread evenly in log
+/// between the finest sampling interval and the longest record with bounds 1e-2 and 1e2 times those; a spectrum
+/// starts at G_inf = G_e / 2 and G_j = G_e / (2 M) for M times, all with bounds [0, 1e3 G_e]. The indenter's free
+/// keys start from the elastic fit. Throws mdr::InvalidInput as fit() does, and (key `fit.data`) when there is no
+/// curve.
 ModelChoice fit_candidates(const CandidateProblem& problem, const std::vector<Curve>& curves);
 
 }  // namespace mdr::fit

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "mdr/fit/fit.hpp"
-#include "mdr/instrument/read_curves.hpp"
 #include "mdr/fitcase/fit_case.hpp"
+#include "mdr/instrument/read_curves.hpp"
 
 namespace mdr::fitcase {
 
