@@ -26,7 +26,7 @@ struct FitCase {
                                                  ///< `elements`
     std::vector<fit::CurveSource> data;          ///< `[[fit.data]]`, paths relative to the case file's directory
     bool had_load = false;                       ///< the case gave its own `[load]`
-    fit::CandidateSettings model_choice{};       ///< `fit.candidates` and `[fit.spectrum]` (fit::fit_candidates)
+    fit::CandidateSettings model_choice{};       ///< `fit.candidates` and `[fit.spectrum]` (fit_candidates)
     std::vector<fit::ReboundSource> rebounds{};  ///< `[[fit.data]]` with `kind = "rebound"`
     std::vector<std::string> data_keys{};        ///< the table of each of `data` in messages, e.g. `fit.data[2]`
     std::vector<std::string> rebound_keys{};     ///< the table of each of `rebounds`
