@@ -14,8 +14,8 @@
 
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/fit/fit.hpp"
-#include "mdr/fit/fit_case_run.hpp"
-#include "mdr/io/fit_case.hpp"
+#include "mdr/fitcase/fit_case.hpp"
+#include "mdr/fitcase/fit_case_run.hpp"
 
 namespace {
 
@@ -50,7 +50,7 @@ std::string fit_case_text(const std::string& material, const std::string& free) 
 
 // The measured curve: the exact model (2000 elements) at the true material, with noise and baseline.
 mdr::fit::Curve synthetic_curve(const std::string& true_material, std::size_t points) {
-    const auto truth = mdr::io::parse_fit_case(fit_case_text(true_material, "\"material.G_inf\""), "bench", ".");
+    const auto truth = mdr::fitcase::parse_fit_case(fit_case_text(true_material, "\"material.G_inf\""), "bench", ".");
     mdr::drivers::ContactCase model = truth.model.build();
     std::vector<double> time(points), depth(points), force(points);
     std::vector<mdr::drivers::LoadPoint> history{{-1e-3, 0.0}};
@@ -78,9 +78,9 @@ void run_fit(benchmark::State& state, const std::string& true_material, const st
              const std::string& free) {
     const auto points = static_cast<std::size_t>(state.range(0));
     const auto elements = static_cast<std::size_t>(state.range(1));
-    auto fit_case = mdr::io::parse_fit_case(fit_case_text(start_material, free), "bench", ".");
+    auto fit_case = mdr::fitcase::parse_fit_case(fit_case_text(start_material, free), "bench", ".");
     fit_case.settings.elements = elements;
-    const auto problem = mdr::fit::make_problem(fit_case, {synthetic_curve(true_material, points)});
+    const auto problem = mdr::fitcase::make_problem(fit_case, {synthetic_curve(true_material, points)});
     mdr::fit::FitResult result;
     double cpu_seconds = 0.0;
     for (auto _ : state) {

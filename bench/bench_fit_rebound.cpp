@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "mdr/fit/fit.hpp"
-#include "mdr/fit/fit_case_run.hpp"
-#include "mdr/io/fit_case.hpp"
+#include "mdr/fitcase/fit_case.hpp"
+#include "mdr/fitcase/fit_case_run.hpp"
 
 namespace {
 
@@ -38,14 +38,14 @@ free = ["material.G1", "material.tau1"]
 )";
 
 void run_fit(benchmark::State& state, bool with_times) {
-    const auto fit_case = mdr::io::parse_fit_case(fit_case_text, "bench", ".");
+    const auto fit_case = mdr::fitcase::parse_fit_case(fit_case_text, "bench", ".");
     mdr::fit::ReboundArrays arrays{.name = "drops", .mass = 0.01, .velocity = speeds, .restitution = restitution};
     arrays.restitution_error = {0.005};
     if (with_times) {
         arrays.contact_time = contact_time;
         arrays.contact_time_error = {2e-5};
     }
-    const auto problem = mdr::fit::make_problem(fit_case, {}, {mdr::fit::make_rebound(arrays)});
+    const auto problem = mdr::fitcase::make_problem(fit_case, {}, {mdr::fit::make_rebound(arrays)});
     mdr::fit::FitResult result;
     double cpu_seconds = 0.0;
     for (auto _ : state) {

@@ -1,9 +1,10 @@
 # What `cmake --install` and `cpack -G DEB` put where (docs/cpp.md, docs/python.md):
 #   bin/mdr                                  the command line
-#   lib/libmdr_core.a, libmdr_io.a, libmdr_fit.a  the library (static: see docs/cpp.md)
+#   lib/libmdr_core.a, libmdr_io.a, libmdr_fit.a, libmdr_fitcase.a  the library (static: see docs/cpp.md)
 #   include/mdr/...                          the public headers
 #   lib/cmake/mdr/                           the CMake package: find_package(mdr) gives mdr::core and mdr::io
-#                                            (mdrTargets.cmake), COMPONENTS fit adds mdr::fit (mdrFitTargets.cmake)
+#                                            (mdrTargets.cmake), COMPONENTS fit adds mdr::fit and mdr::fitcase
+#                                            (mdrFitTargets.cmake)
 #   lib/python3/dist-packages/mdr/           the Python package (with MDR_BUILD_PYTHON; python/CMakeLists.txt)
 include(CMakePackageConfigHelpers)
 
@@ -14,8 +15,8 @@ install(TARGETS mdr RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS mdr_core mdr_io EXPORT mdrTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 # mdr::fit links Ceres: its own export set, loaded only for find_package(mdr COMPONENTS fit) (mdrConfig.cmake.in).
 # It links mdr_instrument (the instrument readers) and through it libzip and libdeflate (Debian: libzip-dev,
-# libdeflate-dev).
-install(TARGETS mdr_fit mdr_instrument mdr_libzip mdr_libdeflate EXPORT mdrFitTargets
+# libdeflate-dev). mdr::fitcase (fit cases: mdr::io and mdr::fit together) needs what both need, so it is in that set.
+install(TARGETS mdr_fit mdr_fitcase mdr_instrument mdr_libzip mdr_libdeflate EXPORT mdrFitTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY include/mdr DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")
 install(EXPORT mdrTargets NAMESPACE mdr:: FILE mdrTargets.cmake DESTINATION ${MDR_INSTALL_CMAKEDIR})

@@ -45,7 +45,7 @@ void add_check_command(CLI::App& app, int& exit_code) {
             if (is_fit_case(*case_path)) {
                 const auto prepared = [&] {
                     const SetupProgress preparing;
-                    return prepare_fit(io::load_fit_case(*case_path));
+                    return prepare_fit(fitcase::load_fit_case(*case_path));
                 }();
                 fmt::print("ok: {}\n", describe(prepared));
                 return;

@@ -6,8 +6,8 @@
 
 #include "interrupt.hpp"
 #include "mdr/error.hpp"
-#include "mdr/fit/candidates.hpp"
-#include "mdr/io/model_choice_files.hpp"
+#include "mdr/fitcase/model_choice.hpp"
+#include "mdr/fitcase/model_choice_files.hpp"
 
 namespace mdr::cli {
 
@@ -19,11 +19,11 @@ void print_flags(const fit::FitResult& result) {
     }
 }
 
-bool run_model_choice(const io::FitCase& fit_case, const std::vector<fit::Curve>& curves,
+bool run_model_choice(const fitcase::FitCase& fit_case, const std::vector<fit::Curve>& curves,
                       const io::ResultDirectory& directory, FitProgress& progress) {
-    const auto choice = fit::fit_candidates(fit_case, curves);
+    const auto choice = fitcase::fit_candidates(fit_case, curves);
     progress.finish();
-    directory.write([&](const std::filesystem::path& files) { io::write_model_choice(files, fit_case, choice); },
+    directory.write([&](const std::filesystem::path& files) { fitcase::write_model_choice(files, fit_case, choice); },
                     received_signal);
     double seconds = 0.0;
     if (fit_case.model_choice.candidates.empty()) {

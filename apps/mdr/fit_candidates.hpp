@@ -6,7 +6,7 @@
 #include "fit_progress.hpp"
 #include "mdr/fit/curve.hpp"
 #include "mdr/fit/fit.hpp"
-#include "mdr/io/fit_case.hpp"
+#include "mdr/fitcase/fit_case.hpp"
 #include "mdr/io/result_directory.hpp"
 
 namespace mdr::cli {
@@ -14,11 +14,11 @@ namespace mdr::cli {
 /// Prints a fit's flags and each curve's (fit::FitResult::flags, fit::CurveFit::flags), one console line each.
 void print_flags(const fit::FitResult& result);
 
-/// Fits the candidates of `fit_case` to `curves`, writes them into `directory` (io::write_model_choice) and prints
+/// Fits the candidates of `fit_case` to `curves`, writes them into `directory` (fitcase::write_model_choice) and prints
 /// the ranking. Returns true when the preferred candidate's fit converged (the others' status is in the
 /// ranking: a term the data do not need often drifts to a bound without converging). `progress` is finished
 /// before the ranking is printed.
-bool run_model_choice(const io::FitCase& fit_case, const std::vector<fit::Curve>& curves,
+bool run_model_choice(const fitcase::FitCase& fit_case, const std::vector<fit::Curve>& curves,
                       const io::ResultDirectory& directory, FitProgress& progress);
 
 }  // namespace mdr::cli

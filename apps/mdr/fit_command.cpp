@@ -14,7 +14,8 @@
 #include "interrupt.hpp"
 #include "jobs_option.hpp"
 #include "mdr/fit/plausibility.hpp"
-#include "mdr/io/fit_files.hpp"
+#include "mdr/fitcase/fit_case_run.hpp"
+#include "mdr/fitcase/fit_files.hpp"
 #include "mdr/io/result_directory.hpp"
 #include "setup_progress.hpp"
 
@@ -53,7 +54,7 @@ void add_fit_command(CLI::App& app, int& exit_code) {
             FitProgress progress;
             auto [fit_case, problem] = [&] {
                 const SetupProgress preparing;
-                auto read = io::load_fit_case(*case_path);
+                auto read = fitcase::load_fit_case(*case_path);
                 read.settings.check_interrupt = throw_if_interrupted;  // Ctrl-C stops the fit at its next model run
                 read.settings.on_iteration = std::ref(progress);
                 if (!each->empty() || !map->empty()) return PreparedFit{std::move(read), {}};  // per file, pixel
@@ -72,10 +73,11 @@ void add_fit_command(CLI::App& app, int& exit_code) {
                 return;
             }
             auto result = fit::fit(problem);
-            fit::add_plausibility_flags(problem, io::unit_system(fit_case.units), result);
+            fit::add_plausibility_flags(problem, fitcase::plausibility_units(fit_case), result);
             progress.finish();
-            directory.write([&](const std::filesystem::path& files) { io::write_fit_result(files, fit_case, result); },
-                            received_signal);
+            directory.write(
+                [&](const std::filesystem::path& files) { fitcase::write_fit_result(files, fit_case, result); },
+                received_signal);
             fmt::print("fit of {} parameter(s) to {} curve(s) and {} rebound data set(s), {} points: {}\n",
                        result.names.size(), problem.curves.size(), problem.rebounds.size(), result.points,
                        result.status);

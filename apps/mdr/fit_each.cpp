@@ -12,23 +12,24 @@
 #include "mdr/error.hpp"
 #include "mdr/fit/plausibility.hpp"
 #include "mdr/fit/repeat_spread.hpp"
+#include "mdr/fitcase/fit_case_run.hpp"
+#include "mdr/fitcase/fit_files.hpp"
 #include "mdr/io/document.hpp"
 #include "mdr/io/csv_field.hpp"
-#include "mdr/io/fit_files.hpp"
 #include "mdr/io/output_file.hpp"
 
 namespace mdr::cli {
 namespace {
 
 // The fit case with `file` as its one curve, named by the file's stem.
-io::FitCase case_for(const io::FitCase& fit_case, const std::filesystem::path& file) {
-    io::FitCase one = fit_case;
+fitcase::FitCase case_for(const fitcase::FitCase& fit_case, const std::filesystem::path& file) {
+    fitcase::FitCase one = fit_case;
     one.data.front().file = std::filesystem::absolute(file);
     one.data.front().name = file.stem().string();
     return one;
 }
 
-void require_one_curve_table(const io::FitCase& fit_case) {
+void require_one_curve_table(const fitcase::FitCase& fit_case) {
     if (fit_case.data.size() != 1 || !fit_case.rebounds.empty()) {
         throw InvalidInput("--each", fmt::format("({} curve and {} rebound tables)", fit_case.data.size(),
                                                  fit_case.rebounds.size()),
@@ -93,8 +94,8 @@ void print_spread(const fit::RepeatSpread& spread) {
 
 }  // namespace
 
-bool run_each(const io::FitCase& fit_case, const std::vector<std::string>& files, const io::ResultDirectory& directory,
-              FitProgress& progress) {
+bool run_each(const fitcase::FitCase& fit_case, const std::vector<std::string>& files,
+              const io::ResultDirectory& directory, FitProgress& progress) {
     require_one_curve_table(fit_case);
     std::vector<PreparedFit> prepared;
     std::vector<std::string> stems;
@@ -110,7 +111,7 @@ bool run_each(const io::FitCase& fit_case, const std::vector<std::string>& files
     std::vector<fit::FitResult> results;
     for (const auto& one : prepared) {
         results.push_back(fit::fit(one.problem));
-        fit::add_plausibility_flags(one.problem, io::unit_system(fit_case.units), results.back());
+        fit::add_plausibility_flags(one.problem, fitcase::plausibility_units(fit_case), results.back());
     }
     progress.finish();
     const auto spread = fit::spread_of_repeats(results);
@@ -118,7 +119,7 @@ bool run_each(const io::FitCase& fit_case, const std::vector<std::string>& files
         [&](const std::filesystem::path& folder) {
             for (std::size_t i = 0; i < results.size(); ++i) {
                 std::filesystem::create_directory(folder / stems[i]);
-                io::write_fit_result(folder / stems[i], prepared[i].fit_case, results[i]);
+                fitcase::write_fit_result(folder / stems[i], prepared[i].fit_case, results[i]);
             }
             write_table(folder / "each.csv", stems, results);
             write_spread(folder / "each.json", spread);

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "fit_progress.hpp"
-#include "mdr/io/fit_case.hpp"
+#include "mdr/fitcase/fit_case.hpp"
 #include "mdr/io/result_directory.hpp"
 
 namespace mdr::cli {
@@ -16,7 +16,7 @@ namespace mdr::cli {
 /// Fits each of `files` alone with `fit_case` (which must have exactly one curve table `fit.data[0]` and fit its
 /// own material), writes the results into `directory` and prints one line per file. Every file is loaded and
 /// checked before the first fit, so that bad input leaves nothing written. Returns true when every fit converged.
-bool run_each(const io::FitCase& fit_case, const std::vector<std::string>& files, const io::ResultDirectory& directory,
-              FitProgress& progress);
+bool run_each(const fitcase::FitCase& fit_case, const std::vector<std::string>& files,
+              const io::ResultDirectory& directory, FitProgress& progress);
 
 }  // namespace mdr::cli

@@ -8,16 +8,16 @@
 #include "interrupt.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/instrument_curve.hpp"
-#include "mdr/fit/map_fit.hpp"
+#include "mdr/fitcase/map_fit.hpp"
 #include "mdr/instrument/read_curves.hpp"
 #include "mdr/parallel/run_on_threads.hpp"
 #include "progress.hpp"
 
 namespace mdr::cli {
 
-bool run_map(const io::FitCase& fit_case, const std::string& map, const io::ResultDirectory& directory,
+bool run_map(const fitcase::FitCase& fit_case, const std::string& map, const io::ResultDirectory& directory,
              unsigned jobs) {
-    fit::require_map_case(fit_case);
+    fitcase::require_map_case(fit_case);
     const std::filesystem::path path = std::filesystem::absolute(map);
     instrument::CurveFile file = [&] {
         try {
@@ -26,19 +26,19 @@ bool run_map(const io::FitCase& fit_case, const std::string& map, const io::Resu
             throw InvalidInput("--map", error.key() + ": " + error.value(), error.rule());
         }
     }();
-    fit::require_map_time(file, fit_case, path);
-    const fit::MapLayout layout = fit::map_layout(file, fit_case);
+    fitcase::require_map_time(file, fit_case, path);
+    const fitcase::MapLayout layout = fitcase::map_layout(file, fit_case);
     const unsigned threads = parallel::local_threads(jobs, file.size());
     ProgressReporter progress;
-    const std::vector<fit::PixelFit> pixels =
-        fit::fit_map_pixels(fit_case, path, file.size(), threads, [&](std::size_t done, std::size_t total) {
+    const std::vector<fitcase::PixelFit> pixels =
+        fitcase::fit_map_pixels(fit_case, path, file.size(), threads, [&](std::size_t done, std::size_t total) {
             progress(total ? double(done) / double(total) : 1.0);
         });
     progress.finish();
     directory.write(
         [&](const std::filesystem::path& folder) {
-            fit::write_map_table(folder / "map.csv", pixels, fit_case);
-            fit::write_map_summary(folder / "map.json", layout, fit_case, path, pixels);
+            fitcase::write_map_table(folder / "map.csv", pixels, fit_case);
+            fitcase::write_map_summary(folder / "map.json", layout, fit_case, path, pixels);
         },
         received_signal);
     std::size_t converged = 0, failed = 0;

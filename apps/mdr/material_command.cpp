@@ -12,6 +12,7 @@
 #include "mdr/io/output_file.hpp"
 #include "mdr/io/result_directory.hpp"
 #include "mdr/io/units.hpp"
+#include "mdr/numerics/log_grid.hpp"
 #include "mdr/rheology/material_models.hpp"
 #include "setup_progress.hpp"
 
@@ -65,9 +66,9 @@ void add_material_command(CLI::App& app, int& exit_code) {
             auto w = omegas->empty() ? io::default_omegas(material) : parse_list(*omegas, "--omegas");
             if (origin.certificate) {
                 const auto& window = origin.certificate->window;
-                if (times->empty()) t = io::log_grid(window.shortest, window.longest, 121);
+                if (times->empty()) t = numerics::log_grid(window.shortest, window.longest, 121);
                 if (omegas->empty()) {  // the window's 1/t and the frequencies of the case's harmonic loads
-                    w = io::log_grid(1.0 / window.longest, 1.0 / window.shortest, 121);
+                    w = numerics::log_grid(1.0 / window.longest, 1.0 / window.shortest, 121);
                     w.insert(w.end(), window.frequencies.begin(), window.frequencies.end());
                     std::sort(w.begin(), w.end());
                 }

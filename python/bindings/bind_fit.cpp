@@ -7,11 +7,11 @@
 #include "python_interrupt.hpp"
 #include "document_object.hpp"
 #include "mdr/error.hpp"
-#include "mdr/fit/candidates.hpp"
-#include "mdr/fit/fit_case_run.hpp"
 #include "mdr/fit/plausibility.hpp"
-#include "mdr/io/fit_files.hpp"
-#include "mdr/io/model_choice_files.hpp"
+#include "mdr/fitcase/fit_case_run.hpp"
+#include "mdr/fitcase/fit_files.hpp"
+#include "mdr/fitcase/model_choice.hpp"
+#include "mdr/fitcase/model_choice_files.hpp"
 #include "mdr/io/units.hpp"
 
 namespace py = pybind11;
@@ -30,7 +30,7 @@ using ReboundArrays = std::tuple<std::size_t, std::string, std::optional<double>
                                  InputArray, InputArray>;
 
 // fit.json (as a dict), the fitted case and the curves of one fit.
-py::dict fit_output(const io::FitCase& fit_case, const fit::FitResult& result) {
+py::dict fit_output(const fitcase::FitCase& fit_case, const fit::FitResult& result) {
     py::list curve_list;
     for (const auto& curve : result.curves) {
         py::dict entry;
@@ -42,8 +42,8 @@ py::dict fit_output(const io::FitCase& fit_case, const fit::FitResult& result) {
         curve_list.append(entry);
     }
     py::dict out;
-    out["fit"] = document_object(io::fit_document(result, fit_case.units));
-    out["fitted_case"] = io::fitted_case_text(fit_case, result.values, "");
+    out["fit"] = document_object(fitcase::fit_document(result, fit_case.units));
+    out["fitted_case"] = fitcase::fitted_case_text(fit_case, result.values, "");
     out["curves"] = curve_list;
     const auto& bands = result.material;
     py::dict material;
@@ -64,21 +64,21 @@ py::dict fit_output(const io::FitCase& fit_case, const fit::FitResult& result) {
 // replace its [[fit.data]].
 py::dict fit_case_of(const py::object& case_, const std::string& source, const std::string& directory,
                      const std::vector<CurveArrays>& curves, const std::vector<ReboundArrays>& rebounds) {
-    auto fit_case = io::parse_fit_case(case_template(case_, source), directory);
+    auto fit_case = fitcase::parse_fit_case(case_template(case_, source), directory);
     // Ctrl-C (a pending signal) stops the fit at its next model run or progress report with KeyboardInterrupt.
     PythonInterrupt interrupt;
     fit_case.settings.check_interrupt = interrupt.check();
     std::vector<fit::Curve> loaded;
     std::vector<fit::ReboundData> loaded_rebounds;
     if (curves.empty() && rebounds.empty()) {
-        loaded = fit::load_curves(fit_case);
-        loaded_rebounds = fit::load_rebounds(fit_case);
+        loaded = fitcase::load_curves(fit_case);
+        loaded_rebounds = fitcase::load_rebounds(fit_case);
     } else {
         for (const auto& [index, name, mass, velocity, restitution, contact_time, restitution_error,
                           contact_time_error] : rebounds) {
             try {
                 loaded_rebounds.push_back(fit::make_rebound(
-                    {name, mass ? mass : fit::case_mass(fit_case), to_vector(velocity), to_vector(restitution),
+                    {name, mass ? mass : fitcase::case_mass(fit_case), to_vector(velocity), to_vector(restitution),
                      to_vector(contact_time), to_vector(restitution_error), to_vector(contact_time_error)}));
             } catch (const InvalidInput& error) {
                 throw error.with_prefix("data[" + std::to_string(index) + "].");
@@ -99,26 +99,27 @@ py::dict fit_case_of(const py::object& case_, const std::string& source, const s
             }
         }
     }
-    fit::require_curves_only_for_model_choice(fit_case, loaded_rebounds.size());
+    fitcase::require_curves_only_for_model_choice(fit_case, loaded_rebounds.size());
     if (!fit_case.model_choice.empty()) {
         fit::ModelChoice choice;
-        interrupt.run([&] { choice = fit::fit_candidates(fit_case, loaded); });
+        interrupt.run([&] { choice = fitcase::fit_candidates(fit_case, loaded); });
         py::list candidates;
         for (const auto& fitted : choice.fits) {
-            py::dict entry = fit_output(fitted.fitted_case, fitted.result);
+            py::dict entry = fit_output(fitcase::fitted_case(fit_case, fitted), fitted.result);
             entry["name"] = fitted.name;
             entry["relaxation_times"] = to_array(fitted.relaxation_times);
             candidates.append(entry);
         }
-        py::dict out = fit_output(choice.fits[choice.preferred].fitted_case, choice.fits[choice.preferred].result);
-        out["ranking"] = document_object(io::ranking_document(choice));
+        const fit::CandidateFit& preferred = choice.fits[choice.preferred];
+        py::dict out = fit_output(fitcase::fitted_case(fit_case, preferred), preferred.result);
+        out["ranking"] = document_object(fitcase::ranking_document(choice));
         out["candidates"] = candidates;
         return out;
     }
-    const auto problem = fit::make_problem(fit_case, std::move(loaded), std::move(loaded_rebounds));
+    const auto problem = fitcase::make_problem(fit_case, std::move(loaded), std::move(loaded_rebounds));
     fit::FitResult result;
     interrupt.run([&] { result = fit::fit(problem); });
-    fit::add_plausibility_flags(problem, io::unit_system(fit_case.units), result);
+    fit::add_plausibility_flags(problem, fitcase::plausibility_units(fit_case), result);
     return fit_output(fit_case, result);
 }
 

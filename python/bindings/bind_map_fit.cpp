@@ -1,5 +1,5 @@
 // _mdr._fit_map_file: every curve of an instrument map fitted alone with a fit case, the same C++ as `mdr fit CASE
-// --map FILE` (mdr/fit/map_fit.hpp); mdr.fit_map(case, "x.jpk-force-map") is the public entry.
+// --map FILE` (mdr/fitcase/map_fit.hpp); mdr.fit_map(case, "x.jpk-force-map") is the public entry.
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -17,7 +17,7 @@
 #include "python_interrupt.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/instrument_curve.hpp"
-#include "mdr/fit/map_fit.hpp"
+#include "mdr/fitcase/map_fit.hpp"
 #include "mdr/instrument/read_curves.hpp"
 
 namespace py = pybind11;
@@ -33,25 +33,25 @@ namespace {
 py::tuple fit_map_file(const py::object& case_, const std::string& source, const std::string& directory,
                        const std::string& map, const std::filesystem::path& folder, const py::object& workers,
                        const py::object& progress) {
-    auto fit_case = io::parse_fit_case(case_template(case_, source), directory);
-    fit::require_map_case(fit_case);
+    auto fit_case = fitcase::parse_fit_case(case_template(case_, source), directory);
+    fitcase::require_map_case(fit_case);
     instrument::CurveFile file(map, fit::read_options(fit_case.data.front()));
-    fit::require_map_time(file, fit_case, map);
-    const fit::MapLayout layout = fit::map_layout(file, fit_case);
+    fitcase::require_map_time(file, fit_case, map);
+    const fitcase::MapLayout layout = fitcase::map_layout(file, fit_case);
     const auto threads = workers(file.size()).cast<unsigned>();
-    std::vector<fit::PixelFit> pixels;
+    std::vector<fitcase::PixelFit> pixels;
     PythonInterrupt interrupt;
     const auto check = interrupt.check();
     interrupt.run([&] {
-        pixels = fit::fit_map_pixels(fit_case, map, file.size(), threads, [&](std::size_t done, std::size_t total) {
+        pixels = fitcase::fit_map_pixels(fit_case, map, file.size(), threads, [&](std::size_t done, std::size_t total) {
             check();
             if (progress.is_none()) return;
             const py::gil_scoped_acquire acquire;
             progress(done, total);
         });
     });
-    fit::write_map_table(folder / "map.csv", pixels, fit_case);
-    fit::write_map_summary(folder / "map.json", layout, fit_case, map, pixels);
+    fitcase::write_map_table(folder / "map.csv", pixels, fit_case);
+    fitcase::write_map_summary(folder / "map.json", layout, fit_case, map, pixels);
     return py::make_tuple(layout.columns, layout.rows, layout.size_x, layout.size_y, fit_case.units);
 }
 

@@ -47,6 +47,6 @@ void bind_instrument(pybind11::module_& module);
 /// mdr.fit: fit cases from TOML text, curves from files or arrays.
 void bind_fit(pybind11::module_& module);
 
-/// mdr.fit_map of an instrument map file: _mdr._fit_map_file (mdr/fit/map_fit.hpp, as `mdr fit --map`).
+/// mdr.fit_map of an instrument map file: _mdr._fit_map_file (mdr/fitcase/map_fit.hpp, as `mdr fit --map`).
 void bind_map_fit(pybind11::module_& module);
 }  // namespace mdr::python

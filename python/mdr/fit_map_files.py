@@ -1,5 +1,5 @@
 """Fits of instrument map files: `mdr.fit_map(case, "map.jpk-force-map")` fits every curve of the file with the same
-C++ as ``mdr fit CASE --map FILE --out DIR`` (mdr/fit/map_fit.hpp) and gives the rows of its map.csv."""
+C++ as ``mdr fit CASE --map FILE --out DIR`` (mdr/fitcase/map_fit.hpp) and gives the rows of its map.csv."""
 
 from __future__ import annotations
 

@@ -29,7 +29,11 @@ struct Window {
     double longest = 0.0;
 };
 
+// Throws mdr::InvalidInput (key `fit.data`) when there is no curve.
 Window time_window(const std::vector<Curve>& curves) {
+    if (curves.empty()) {
+        throw InvalidInput("fit.data", "(missing)", "give at least one measured curve ([[fit.data]] or arrays)");
+    }
     Window window;
     for (const auto& curve : curves) {
         window.longest = std::max(window.longest, curve.time.back() - curve.time.front());
@@ -173,32 +177,7 @@ Material candidate(const std::string& name, double modulus, const Window& window
     return registry_material(rheology::material_model(name), modulus, window);  // registry_candidate, read
 }
 
-
-// The case with an elastic body of modulus `modulus`: the base of every candidate. Refuses a compressible body or a
-// viscoelastic indenter, whose material the candidates would silently drop.
-io::FitCase base_case(const io::FitCase& fit_case, double modulus) {
-    io::FitCase base = fit_case;
-    if (fit_case.model.build().shear_material) {
-        throw InvalidInput("fit.candidates", "[material] with K or [material.bulk]",
-                           "the candidates replace the shear material: give an incompressible [material]");
-    }
-    base.model.set_table("material", fmt::format("model = \"elastic\"\nG = {}\n", modulus));
-    const auto built = base.model.build();
-    if (!built.material.terms().empty() || built.material.equilibrium_modulus() != modulus) {
-        throw InvalidInput("fit.candidates", "[indenter.material]",
-                           "the candidates replace the body's material: give a rigid indenter");
-    }
-    return base;
-}
-
-// A start modulus from the case's own material: G(0+), or eta / T for a viscous body.
-double case_modulus(const io::FitCase& fit_case, const Window& window) {
-    const auto material = fit_case.model.build().material;
-    const double modulus = material.relaxation(0.0);
-    return modulus > 0.0 ? modulus : material.viscosity() / window.longest;
-}
-
-CandidateFit fit_material(const io::FitCase& base, const Material& material, const std::vector<double>& indenter,
+CandidateFit fit_material(const CandidateProblem& base, const Material& material, const std::vector<double>& indenter,
                           const std::vector<Curve>& curves, const std::vector<std::vector<double>>& penalty) {
     FitProblem problem;
     problem.parameters = base.parameters;  // the indenter's free keys (parse_fit_case allows no others here)
@@ -208,26 +187,15 @@ CandidateFit fit_material(const io::FitCase& base, const Material& material, con
     problem.curves = curves;
     problem.settings = base.settings;
     problem.penalty = penalty;
-    std::vector<std::string> keys;
-    for (std::size_t j = 0; j < offset; ++j) keys.push_back(problem.parameters[j].name);
-    if (keys.empty()) {
-        problem.model = [built = base.model.build(), material](const std::vector<double>& values) {
-            auto model = built;
-            model.material = make_material(material, values.data());
-            return model;
-        };
-    } else {
-        problem.model = [model = base.model, keys, material](const std::vector<double>& values) {
-            io::CaseTemplate copy = model;
-            for (std::size_t j = 0; j < keys.size(); ++j) copy.set_number(keys[j], values[j]);
-            auto built = copy.build();
-            built.material = make_material(material, values.data() + keys.size());
-            return built;
-        };
-    }
-    CandidateFit fitted{material.name, fit(problem), base, material.grid, 0.0, 0.0};
-    add_plausibility_flags(problem, io::unit_system(base.units), fitted.result);
-    fitted.fitted_case.model.set_table("material", material_text(material, fitted.result.values.data() + offset));
+    problem.model = [model = base.model, offset, material](const std::vector<double>& values) {
+        const auto indenter_end = values.begin() + static_cast<std::ptrdiff_t>(offset);
+        auto built = model(std::vector<double>(values.begin(), indenter_end));
+        built.material = make_material(material, values.data() + offset);
+        return built;
+    };
+    CandidateFit fitted{material.name, fit(problem), "", material.grid, 0.0, 0.0};
+    add_plausibility_flags(problem, base.units, fitted.result);
+    fitted.material_table = material_text(material, fitted.result.values.data() + offset);
     return fitted;
 }
 
@@ -236,7 +204,7 @@ double log_residual(const FitResult& result) { return result.aic - 2.0 * static_
 
 // The one-term fit `one` as a start of the spectrum `grid_material` (whose grid holds its time): G_inf and the
 // modulus at the nearest grid time from it, the other moduli 0; its indenter values, contact points and baselines.
-CandidateFit spectrum_from_one_term(const io::FitCase& base, Material grid_material, const CandidateFit& one,
+CandidateFit spectrum_from_one_term(const CandidateProblem& base, Material grid_material, const CandidateFit& one,
                                     std::vector<Curve> curves, const std::vector<std::vector<double>>& penalty) {
     const std::size_t offset = base.parameters.size();
     const std::vector<double>& values = one.result.values;
@@ -283,11 +251,10 @@ std::vector<std::vector<double>> smoothing_penalty(const Material& material, std
 // (G_inf and one unit term per grid time as basis curves, M + 1 forward runs per curve) are the non-negative
 // least-squares solution. With unloading (the contact recedes as the material dictates) or a fitted contact point
 // this is a start close to the optimum, which the Levenberg-Marquardt fit then refines.
-std::vector<double> linear_start(const io::FitCase& base, const Material& material, const std::vector<double>& indenter,
-                                 const std::vector<Curve>& curves, const std::vector<std::vector<double>>& penalty) {
-    io::CaseTemplate model = base.model;
-    for (std::size_t j = 0; j < indenter.size(); ++j) model.set_number(base.parameters[j].name, indenter[j]);
-    const drivers::ContactCase built = model.build();
+std::vector<double> linear_start(const CandidateProblem& base, const Material& material,
+                                 const std::vector<double>& indenter, const std::vector<Curve>& curves,
+                                 const std::vector<std::vector<double>>& penalty) {
+    const drivers::ContactCase built = base.model(indenter);
     const auto columns = static_cast<Eigen::Index>(material.parameters.size());
     std::vector<Eigen::VectorXd> blocks_b;
     std::vector<Eigen::MatrixXd> blocks_A;
@@ -357,16 +324,18 @@ std::vector<double> spectrum_grid(double shortest, double longest, double per_de
     return grid;
 }
 
-ModelChoice fit_candidates(const io::FitCase& fit_case, const std::vector<Curve>& curves) {
-    if (curves.empty()) {
-        throw InvalidInput("fit.data", "(missing)", "give at least one measured curve ([[fit.data]] or arrays)");
-    }
+double candidate_start_modulus(const rheology::Rheology& material, const std::vector<Curve>& curves) {
     const Window window = time_window(curves);
-    const CandidateSettings& settings = fit_case.model_choice;
+    const double modulus = material.relaxation(0.0);
+    return modulus > 0.0 ? modulus : material.viscosity() / window.longest;
+}
+
+ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve>& curves) {
+    const Window window = time_window(curves);
+    const CandidateSettings& settings = base.choice;
     const std::vector<std::string> names = settings.candidates.empty() ? std::vector<std::string>{"spectrum"}
                                                                       : settings.candidates;
-    const double start = case_modulus(fit_case, window);
-    const io::FitCase base = base_case(fit_case, start);
+    const double start = base.start_modulus;
     std::vector<double> indenter;
     for (const auto& parameter : base.parameters) indenter.push_back(parameter.start);
 

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "data_window.hpp"
-#include "mdr/io/material_table.hpp"
+#include "mdr/numerics/log_grid.hpp"
 
 namespace mdr::fit {
 
@@ -35,7 +35,7 @@ MaterialBands material_bands(const FitProblem& problem, const FitResult& result)
                                          [](const Curve& curve) { return !curve.file_without_time.empty(); });
     if (any_untimed) return bands;
     if (!(longest > shortest) || !std::isfinite(longest / shortest)) return bands;
-    bands.times = io::log_grid(shortest, longest, count);
+    bands.times = numerics::log_grid(shortest, longest, count);
     for (auto t = bands.times.rbegin(); t != bands.times.rend(); ++t) bands.omegas.push_back(1.0 / *t);
 
     const auto& values = result.values;

@@ -26,7 +26,7 @@ double largest_indentation(const CurveFit& curve) {
     return greatest - std::max(curve.contact_depth, least);
 }
 
-void add_depth_flags(double radius, const io::UnitSystem& system, FitResult& result) {
+void add_depth_flags(double radius, const PlausibilityUnits& units, FitResult& result) {
     for (auto& curve : result.curves) {
         if (curve.rebound || curve.drive.empty()) continue;
         const double depth = largest_indentation(curve);
@@ -34,17 +34,17 @@ void add_depth_flags(double radius, const io::UnitSystem& system, FitResult& res
             curve.flags.push_back(fmt::format(
                 "largest indentation {:.3g} {} is below {:g} of the sphere's R = {:.4g} {}: are the data's lengths in "
                 "the case's unit (units.length of the curve's table)?",
-                depth, system.length, least_sphere_indentation, radius, system.length));
+                depth, units.length, least_sphere_indentation, radius, units.length));
         } else if (depth > radius) {
             curve.flags.push_back(fmt::format(
                 "largest indentation {:.3g} {} exceeds the sphere's R = {:.4g} {}: the contact radius would pass the "
                 "sphere's radius, where the sphere is no paraboloid (eq. 30); check the units or the indenter",
-                depth, system.length, radius, system.length));
+                depth, units.length, radius, units.length));
         }
     }
 }
 
-void add_modulus_flag(const io::UnitSystem& system, FitResult& result) {
+void add_modulus_flag(const PlausibilityUnits& units, FitResult& result) {
     const auto& relaxation = result.material.relaxation.value;
     double least = std::numeric_limits<double>::infinity();
     double greatest = 0.0;
@@ -54,12 +54,12 @@ void add_modulus_flag(const io::UnitSystem& system, FitResult& result) {
         greatest = std::max(greatest, value);
     }
     if (greatest == 0.0) return;
-    const double pascal = system.force_size / (system.length_size * system.length_size);  // one pressure unit [Pa]
+    const double pascal = units.force_size / (units.length_size * units.length_size);  // one pressure unit [Pa]
     if (least * pascal < least_modulus_pa || greatest * pascal > greatest_modulus_pa) {
         result.flags.push_back(fmt::format(
             "the fitted G(t) spans {:.3g} to {:.3g} {} ({:.3g} to {:.3g} Pa) over the data's window, outside the "
             "moduli of materials ({:g} Pa to {:g} Pa): are the data's units those of the case?",
-            least, greatest, system.pressure, least * pascal, greatest * pascal, least_modulus_pa,
+            least, greatest, units.pressure, least * pascal, greatest * pascal, least_modulus_pa,
             greatest_modulus_pa));
     }
 }
@@ -67,8 +67,8 @@ void add_modulus_flag(const io::UnitSystem& system, FitResult& result) {
 // A start or fitted value of a shear-modulus key (is_shear_modulus; a spectrum's moduli, which may be 0 or tiny
 // by design, aside) outside least_modulus_pa to greatest_modulus_pa: one flag naming the key. A fitted value that the
 // data do not determine (FitResult::undetermined, e.g. a term driven to its bound) is reported there instead.
-void add_modulus_key_flags(const FitProblem& problem, const io::UnitSystem& system, FitResult& result) {
-    const double pascal = system.force_size / (system.length_size * system.length_size);  // one pressure unit [Pa]
+void add_modulus_key_flags(const FitProblem& problem, const PlausibilityUnits& units, FitResult& result) {
+    const double pascal = units.force_size / (units.length_size * units.length_size);  // one pressure unit [Pa]
     auto implausible = [&](double value) {
         return value > 0.0 && (value * pascal < least_modulus_pa || value * pascal > greatest_modulus_pa);
     };
@@ -85,20 +85,20 @@ void add_modulus_key_flags(const FitProblem& problem, const io::UnitSystem& syst
             result.flags.push_back(fmt::format(
                 "{}: the {} {:.4g} {} ({:.3g} Pa) is outside the moduli of materials ({:g} Pa to {:g} Pa): are the "
                 "data's units those of the case?",
-                name, which, value, system.pressure, value * pascal, least_modulus_pa, greatest_modulus_pa));
+                name, which, value, units.pressure, value * pascal, least_modulus_pa, greatest_modulus_pa));
         }
     }
 }
 
 }  // namespace
 
-void add_plausibility_flags(const FitProblem& problem, const io::UnitSystem& system, FitResult& result) {
+void add_plausibility_flags(const FitProblem& problem, const PlausibilityUnits& units, FitResult& result) {
     if (!result.curves.empty() && problem.model) {
         const auto model = problem.model(result.values);
-        if (const auto radius = model.indenter->tip_radius()) add_depth_flags(*radius, system, result);
+        if (const auto radius = model.indenter->tip_radius()) add_depth_flags(*radius, units, result);
     }
-    add_modulus_flag(system, result);
-    add_modulus_key_flags(problem, system, result);
+    add_modulus_flag(units, result);
+    add_modulus_key_flags(problem, units, result);
 }
 
 }  // namespace mdr::fit

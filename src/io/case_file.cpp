@@ -354,12 +354,16 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     return contact_case;
 }
 
-drivers::ContactCase load_case(const std::filesystem::path& path) {
+std::string read_case_text(const std::filesystem::path& path) {
     std::ifstream file(path);
     if (!file) throw unreadable_file("case", path);
     std::ostringstream text;
     text << file.rdbuf();
-    return parse_case(text.str(), path.string());
+    return text.str();
+}
+
+drivers::ContactCase load_case(const std::filesystem::path& path) {
+    return parse_case(read_case_text(path), path.string());
 }
 
 std::string check(const drivers::ContactCase& contact_case) {

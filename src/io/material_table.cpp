@@ -3,14 +3,11 @@
 #include <cmath>
 
 #include "mdr/io/output_file.hpp"
+#include "mdr/numerics/log_grid.hpp"
 
 namespace mdr::io {
-std::vector<double> log_grid(double lower, double upper, std::size_t count) {
-    std::vector<double> grid(count);
-    const double step = std::log(upper / lower) / static_cast<double>(count - 1);
-    for (std::size_t i = 0; i < count; ++i) grid[i] = lower * std::exp(step * static_cast<double>(i));
-    return grid;
-}
+
+using numerics::log_grid;
 
 std::vector<double> default_times(const rheology::Rheology& material, std::size_t count) {
     const double shortest = material.shortest_time();

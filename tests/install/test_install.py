@@ -82,9 +82,10 @@ def test_cmake_package(tmp_path: pathlib.Path) -> None:
     prefix = tmp_path / "prefix"
     run(CMAKE, "--install", BUILD, "--prefix", prefix)
 
-    for path in ["bin/mdr", "lib/libmdr_core.a", "lib/libmdr_io.a", "lib/libmdr_fit.a",
+    for path in ["bin/mdr", "lib/libmdr_core.a", "lib/libmdr_io.a", "lib/libmdr_fit.a", "lib/libmdr_fitcase.a",
                  "include/mdr/rheology/rheology.hpp", "include/mdr/drivers/indentation.hpp",
-                 "include/mdr/fit/fit.hpp", "lib/cmake/mdr/mdrConfig.cmake", "lib/cmake/mdr/mdrConfigVersion.cmake",
+                 "include/mdr/fit/fit.hpp", "include/mdr/fitcase/fit_case.hpp", "lib/cmake/mdr/mdrConfig.cmake",
+                 "lib/cmake/mdr/mdrConfigVersion.cmake",
                  "lib/cmake/mdr/mdrTargets.cmake", "lib/cmake/mdr/mdrFitTargets.cmake",
                  "lib/python3/dist-packages/mdr/__init__.py"]:
         assert (prefix / path).is_file(), f"not installed: {path}"
@@ -199,6 +200,7 @@ def test_deb(tmp_path: pathlib.Path) -> None:
     contents = run("dpkg-deb", "-c", deb)
     listed = {line.split()[-1].removeprefix(".") for line in contents.splitlines()}
     for path in ["/usr/bin/mdr", "/usr/lib/libmdr_core.a", "/usr/lib/libmdr_io.a", "/usr/lib/libmdr_fit.a",
+                 "/usr/lib/libmdr_fitcase.a",
                  "/usr/include/mdr/rheology/rheology.hpp", "/usr/lib/cmake/mdr/mdrConfig.cmake",
                  "/usr/lib/cmake/mdr/mdrConfigVersion.cmake", "/usr/lib/cmake/mdr/mdrFitTargets.cmake",
                  "/usr/lib/python3/dist-packages/mdr/__init__.py", "/usr/lib/python3/dist-packages/mdr/plot.py"]:

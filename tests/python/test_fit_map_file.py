@@ -1,5 +1,5 @@
 """mdr.fit_map(case, "map.jpk-force-map"): the same per-pixel outputs as `mdr fit CASE --map FILE`'s map.csv, with
-the same columns (both run mdr/fit/map_fit.hpp); a failed pixel is a row with its reason."""
+the same columns (both run mdr/fitcase/map_fit.hpp); a failed pixel is a row with its reason."""
 
 from __future__ import annotations
 

@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "mdr/fit/fit.hpp"
-#include "mdr/fit/fit_case_run.hpp"
-#include "mdr/io/fit_case.hpp"
+#include "mdr/fitcase/fit_case.hpp"
+#include "mdr/fitcase/fit_case_run.hpp"
 #include "reference/closed_forms.hpp"
 #include "reference/indenter.hpp"
 #include "reference/piecewise_linear.hpp"
@@ -105,8 +105,8 @@ baseline = "fixed"
 {}
 )",
                                              units, 3e2 / pressure, 5e3 / pressure, slope_deg, data);
-        const io::FitCase fit_case = io::parse_fit_case(text, "twin.toml", scratch_);
-        const fit::FitResult result = fit::fit(fit::make_problem(fit_case, fit::load_curves(fit_case)));
+        const fitcase::FitCase fit_case = fitcase::parse_fit_case(text, "twin.toml", scratch_);
+        const fit::FitResult result = fit::fit(fitcase::make_problem(fit_case, fitcase::load_curves(fit_case)));
         EXPECT_TRUE(result.converged) << units << ": " << result.status;
         return result.values;
     }

@@ -2,23 +2,25 @@
 /// \file
 /// Model choice and the spectrum mode: the candidate materials of a fit case (`fit.candidates`,
 /// `[fit.spectrum]`), each fitted to the same curves with start values from the data's own scales, and ranked by
-/// the Bayesian information criterion.
+/// the Bayesian information criterion. A fit case reaches it through fitcase::fit_candidates.
 
 #include <string>
 #include <vector>
 
+#include "mdr/fit/candidate_settings.hpp"
 #include "mdr/fit/fit.hpp"
-#include "mdr/io/fit_case.hpp"
+#include "mdr/fit/plausibility.hpp"
+#include "mdr/rheology/rheology.hpp"
 
 namespace mdr::fit {
 
 /// One candidate's fit.
 struct CandidateFit {
-    std::string name;          ///< "elastic", "standard", "pronyN" or "spectrum"
+    std::string name;          ///< "elastic", "standard", "pronyN", "spectrum" or a registry model's name
     FitResult result;          ///< its fit: the indenter's free keys first, then the material's
-    /// The case with the fitted material written into `[material]` and the indenter's free keys still free: what
-    /// io::write_fit_result writes as fitted.toml (its parameters are the first entries of result.values).
-    io::FitCase fitted_case;
+    /// The fitted material as the body of a case's `[material]` table (`model = "prony"`, `G_inf`, `terms`; or the
+    /// registry model's name and keys), from which fitcase::fitted_case writes the candidate's fitted.toml.
+    std::string material_table;
     std::vector<double> relaxation_times;  ///< spectrum: the fixed grid [s], ascending (empty otherwise)
     double delta_aic = 0.0;    ///< AIC minus the smallest AIC of the candidates
     double delta_bic = 0.0;    ///< BIC minus the smallest BIC of the candidates
@@ -39,14 +41,29 @@ struct ModelChoice {
 /// interval `shortest` (T = `longest`, the longest record), ascending. At least one time.
 std::vector<double> spectrum_grid(double shortest, double longest, double per_decade);
 
-/// Fits every candidate of `fit_case.model_choice` (a spectrum alone when only `[fit.spectrum]` is given) to
-/// `curves`. The elastic model is fitted first, from the instantaneous modulus of the case's own material; its
-/// modulus G_e sets the start values: N Prony terms start at G_inf = G_e / 2, G_k = G_e / N with bounds
-/// [1e-6, 1e4] G_e, and times spread evenly in log between the finest sampling interval and the longest record
-/// with bounds 1e-2 and 1e2 times those; a spectrum starts at G_inf = G_e / 2 and G_j = G_e / (2 M) for M times,
-/// all with bounds [0, 1e3 G_e]. The indenter's free keys start from the elastic fit. Throws mdr::InvalidInput
-/// as fit() does, and for a case whose `[material]` is compressible or whose indenter is viscoelastic (the
-/// candidates replace the body's shear material).
-ModelChoice fit_candidates(const io::FitCase& fit_case, const std::vector<Curve>& curves);
+/// The start modulus of the model choice: G(0+) of `material` (the case's own), or eta / T for a viscous body, T the
+/// longest record of `curves` [Pa]. Throws mdr::InvalidInput (key `fit.data`) when there is no curve.
+double candidate_start_modulus(const rheology::Rheology& material, const std::vector<Curve>& curves);
+
+/// What the model choice needs of a fit case (fitcase::fit_candidates fills it from one).
+struct CandidateProblem {
+    /// The model for the values of `parameters`: the case with an elastic body of modulus `start_modulus`, whose
+    /// material (drivers::ContactCase::material) each candidate replaces. Its load is replaced by each curve's.
+    ModelBuilder model;
+    std::vector<FreeParameter> parameters;  ///< the indenter's free keys (the candidates add the material's)
+    FitSettings settings;                   ///< see FitSettings
+    CandidateSettings choice;               ///< the candidates, or the spectrum alone
+    double start_modulus = 0.0;             ///< the elastic fit's start (candidate_start_modulus) [Pa]
+    PlausibilityUnits units;                ///< the case's units (add_plausibility_flags of every candidate)
+};
+
+/// Fits every candidate of `problem.choice` (a spectrum alone when only `[fit.spectrum]` is given) to `curves`.
+/// The elastic model is fitted first, from `problem.start_modulus`; its modulus G_e sets the start values: N Prony
+/// terms start at G_inf = G_e / 2, G_k = G_e / N with bounds [1e-6, 1e4] G_e, and times spread evenly in log
+/// between the finest sampling interval and the longest record with bounds 1e-2 and 1e2 times those; a spectrum
+/// starts at G_inf = G_e / 2 and G_j = G_e / (2 M) for M times, all with bounds [0, 1e3 G_e]. The indenter's free
+/// keys start from the elastic fit. Throws mdr::InvalidInput as fit() does, and (key `fit.data`) when there is no
+/// curve.
+ModelChoice fit_candidates(const CandidateProblem& problem, const std::vector<Curve>& curves);
 
 }  // namespace mdr::fit

@@ -3,10 +3,20 @@
 /// Whether a fit's data are plausible for their units and indenter (issue 24: a unit left out reads a file's
 /// metres as micrometres, 1e6 off, and the fit still "converges").
 
+#include <string>
+
 #include "mdr/fit/fit.hpp"
-#include "mdr/io/units.hpp"
 
 namespace mdr::fit {
+
+/// The units of a fit's numbers as the flags need them: the names printed beside the numbers and the sizes in SI
+/// (filled from the case's declared unit system, io::UnitSystem, by fitcase::plausibility_units).
+struct PlausibilityUnits {
+    std::string length = "m";    ///< the name of the length unit, e.g. "um"
+    std::string pressure = "Pa";  ///< the name of the pressure unit (force / length^2), e.g. "kPa"
+    double length_size = 1.0;     ///< one length unit in m
+    double force_size = 1.0;      ///< one force unit in N
+};
 
 /// Smallest plausible largest indentation of a curve on a sphere, as a fraction of R: below it the data are most
 /// likely in another length unit than the case's (1e-6 R for metres read as micrometres).
@@ -18,9 +28,9 @@ inline constexpr double greatest_modulus_pa = 1e12;
 /// Adds to `result` the flags of implausible data (one line each, naming the curve and the numbers): a curve on a
 /// sphere whose largest indentation is below least_sphere_indentation R or above R (the contact radius sqrt(R d)
 /// would pass the sphere's radius: the paraboloid of eq. 30 no longer stands for the sphere), and a fitted
-/// G(t) (over the data's window) outside least_modulus_pa to greatest_modulus_pa, in `system`'s pressure unit, and
+/// G(t) (over the data's window) outside least_modulus_pa to greatest_modulus_pa, in `units`' pressure unit, and
 /// each shear-modulus key of fit.free (a spectrum's aside) whose start or fitted value is outside that range.
 /// `problem` is the problem `result` solved.
-void add_plausibility_flags(const FitProblem& problem, const io::UnitSystem& system, FitResult& result);
+void add_plausibility_flags(const FitProblem& problem, const PlausibilityUnits& units, FitResult& result);
 
 }  // namespace mdr::fit

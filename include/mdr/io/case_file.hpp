@@ -15,6 +15,9 @@ namespace mdr::io {
 /// one suggested), wrong type, missing key, non-physical value, unsupported feature or malformed file.
 drivers::ContactCase parse_case(std::string_view toml_text, const std::string& source = "case");
 
+/// The text of a case file; mdr::InvalidInput (key `case`) when it cannot be read.
+std::string read_case_text(const std::filesystem::path& path);
+
 /// Reads and parses a case file.
 drivers::ContactCase load_case(const std::filesystem::path& path);
 

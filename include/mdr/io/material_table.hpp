@@ -11,8 +11,6 @@
 
 namespace mdr::io {
 
-/// `count` values log-spaced from `lower` to `upper` (both > 0, count >= 2).
-std::vector<double> log_grid(double lower, double upper, std::size_t count);
 /// `count` times log-spaced over the material's time scales: from a hundredth of its shortest time to a hundred
 /// times its longest (1e-3 .. 1e3 s for an elastic body).
 std::vector<double> default_times(const rheology::Rheology& material, std::size_t count = 121);

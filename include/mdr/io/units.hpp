@@ -5,7 +5,7 @@
 /// SI. The case's numbers are not converted: the solver has no physical constants and no absolute tolerances, so a
 /// case in any consistent system gives the results of its SI twin in that system's units
 /// (tests/python/test_units.py runs such twins). What is converted into the case's system are the quantities given
-/// in other units: measured data with their own `units` (fit_data_reader.cpp) and the physical constants of a
+/// in other units: measured data with their own `units` (fitcase/fit_data_reader.cpp) and the physical constants of a
 /// Shore durometer (shore_reader.cpp). Each declared system is consistent (force = mass x length / time^2,
 /// pressure = force / length^2).
 

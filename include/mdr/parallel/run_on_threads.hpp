@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Independent pieces of work on local threads, with progress reported and a stop asked for on the calling thread:
-/// the one loop of `mdr sweep --jobs` (mdr/io/sweep.hpp) and of `mdr fit --map --jobs` (mdr/fit/map_fit.hpp).
+/// the one loop of `mdr sweep --jobs` (mdr/io/sweep.hpp) and of `mdr fit --map --jobs` (mdr/fitcase/map_fit.hpp).
 
 #include <atomic>
 #include <cstddef>

@@ -14,7 +14,7 @@
 
 #include "mdr/error.hpp"
 #include "mdr/fit/fit.hpp"
-#include "mdr/io/fit_case.hpp"
+#include "mdr/fitcase/fit_case.hpp"
 #include "mdr/profile/profile.hpp"
 
 namespace mdr::fit {
@@ -206,7 +206,7 @@ R = 5e-6
 [fit]
 free = ["material.G"]
 )";
-    EXPECT_EQ(io::parse_fit_case(text, "test.toml", ".").settings.baseline, BaselineMode::constant);
+    EXPECT_EQ(fitcase::parse_fit_case(text, "test.toml", ".").settings.baseline, BaselineMode::constant);
 
     // A baseline offset by 50 sigma from the rows before contact in the rise only: the default stays at the rows'
     // mean (b0 within a few sigma / sqrt(rows)), where a fitted baseline would follow the rise.
@@ -304,7 +304,7 @@ free = ["material.G"]
 baseline = "line"
 bounds = { contact_point = [-1e-6, 1e-6] }
 )";
-    const io::FitCase fit_case = io::parse_fit_case(text, "test.toml", ".");
+    const fitcase::FitCase fit_case = fitcase::parse_fit_case(text, "test.toml", ".");
     EXPECT_EQ(fit_case.settings.baseline, BaselineMode::line);
     ASSERT_TRUE(fit_case.settings.contact_point_bounds.has_value());
     EXPECT_EQ((*fit_case.settings.contact_point_bounds)[0], -1e-6);

@@ -6,26 +6,32 @@
 #include <vector>
 
 #include "mdr/fit/fit.hpp"
-#include "mdr/io/fit_case.hpp"
+#include "mdr/fit/plausibility.hpp"
+#include "mdr/fitcase/fit_case.hpp"
 
-namespace mdr::fit {
+namespace mdr::fitcase {
 
 /// The curves of a fit case, loaded and validated; errors name `fit.data[i].KEY`.
-std::vector<Curve> load_curves(const io::FitCase& fit_case);
+std::vector<fit::Curve> load_curves(const FitCase& fit_case);
 
 /// The rebound data of a fit case, loaded and validated (a data set without its own mass takes the case's
 /// `indenter.mass`); errors name `fit.data[i].KEY`.
-std::vector<ReboundData> load_rebounds(const io::FitCase& fit_case);
+std::vector<fit::ReboundData> load_rebounds(const FitCase& fit_case);
 
 /// The case's `indenter.mass`, when it has one (the mass of rebound data that give none).
-std::optional<double> case_mass(const io::FitCase& fit_case);
+std::optional<double> case_mass(const FitCase& fit_case);
 
 /// Throws mdr::InvalidInput (key `fit.candidates`) when a fit case with `fit.candidates` or `[fit.spectrum]` has
 /// rebound data (`rebound_sets` > 0): the model choice fits measured curves only.
-void require_curves_only_for_model_choice(const io::FitCase& fit_case, std::size_t rebound_sets);
+void require_curves_only_for_model_choice(const FitCase& fit_case, std::size_t rebound_sets);
 
 /// The problem of a fit case with its curves and rebound data (from load_curves and load_rebounds, or arrays given
 /// by a caller).
-FitProblem make_problem(const io::FitCase& fit_case, std::vector<Curve> curves, std::vector<ReboundData> rebounds = {});
+fit::FitProblem make_problem(const FitCase& fit_case, std::vector<fit::Curve> curves,
+                             std::vector<fit::ReboundData> rebounds = {});
 
-}  // namespace mdr::fit
+/// The units of the case's declared system (FitCase::units, io::unit_system) as fit::add_plausibility_flags names
+/// and sizes them.
+fit::PlausibilityUnits plausibility_units(const FitCase& fit_case);
+
+}  // namespace mdr::fitcase

@@ -1,21 +1,21 @@
 // read_fit_data: one `[[fit.data]]` table to its CurveSource (paths relative to the case, units by number or name,
 // segments as strings or integers), and its refusals.
 
-#include "io/fit_data_reader.hpp"
+#include "fitcase/fit_data_reader.hpp"
 
 #include <gtest/gtest.h>
 
 #include "mdr/error.hpp"
 #include "mdr/io/units.hpp"
 
-namespace mdr::io {
+namespace mdr::fitcase {
 namespace {
 
 fit::CurveSource read(const std::string& text, const std::filesystem::path& directory = "/cases",
                       const std::string& units = "SI") {
     const toml::table table = toml::parse(text);
-    TableReader reader(table, "fit.data[0]");
-    return read_fit_data(reader, directory, unit_system(units));
+    io::TableReader reader(table, "fit.data[0]");
+    return read_fit_data(reader, directory, io::unit_system(units));
 }
 
 std::string message(const std::string& text) {
@@ -119,8 +119,8 @@ TEST(FitDataReader, UnitsConvertToTheCasesSystem) {
 
     const toml::table table = toml::parse(
         "file = \"d.csv\"\nvelocity = \"v\"\nrestitution = \"e\"\nunits = { velocity = \"mm/s\", time = \"ms\" }\n");
-    TableReader reader(table, "fit.data[1]");
-    const fit::ReboundSource drops = read_rebound_data(reader, "/cases", unit_system("nm-nN-s"));
+    io::TableReader reader(table, "fit.data[1]");
+    const fit::ReboundSource drops = read_rebound_data(reader, "/cases", io::unit_system("nm-nN-s"));
     EXPECT_DOUBLE_EQ(drops.velocity_unit, 1e6);  // 1 mm/s = 1e6 nm/s
     EXPECT_DOUBLE_EQ(drops.time_unit, 1e-3);
 }
@@ -170,4 +170,4 @@ TEST(FitDataReader, RefusesUnknownKeysAndWrongTypes) {
 }
 
 }  // namespace
-}  // namespace mdr::io
+}  // namespace mdr::fitcase

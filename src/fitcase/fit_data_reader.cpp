@@ -1,4 +1,4 @@
-#include "fit_data_reader.hpp"
+#include "fitcase/fit_data_reader.hpp"
 
 #include <array>
 #include <optional>
@@ -6,7 +6,10 @@
 
 #include "mdr/error.hpp"
 
-namespace mdr::io {
+namespace mdr::fitcase {
+
+using io::TableReader;
+using io::UnitSystem;
 
 double read_unit(TableReader& units, const std::string& key, const std::string& base, double system_size) {
     if (!units.has(key)) return 1.0;
@@ -16,7 +19,7 @@ double read_unit(TableReader& units, const std::string& key, const std::string& 
         return size / system_size;
     }
     const std::string name = units.string(key);
-    if (const auto size = prefixed_unit_size(name, base)) return *size / system_size;
+    if (const auto size = io::prefixed_unit_size(name, base)) return *size / system_size;
     throw InvalidInput(units.key_path(key), "\"" + name + "\"",
                        "must be a number > 0 (the unit in " + base + ") or " + base +
                            " with an SI prefix: p, n, u or µ, m, c, k (e.g. \"n" + base + "\")");
@@ -187,4 +190,4 @@ fit::ReboundSource read_rebound_data(TableReader& table, const std::filesystem::
     return source;
 }
 
-}  // namespace mdr::io
+}  // namespace mdr::fitcase

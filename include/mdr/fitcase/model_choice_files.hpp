@@ -7,15 +7,16 @@
 #include <string>
 
 #include "mdr/fit/candidates.hpp"
+#include "mdr/fitcase/fit_case.hpp"
 #include "mdr/io/document.hpp"
 
-namespace mdr::io {
+namespace mdr::fitcase {
 
 /// ranking.json as a document: `criterion` ("bic"), `preferred`, `modulus_scale`, `time_window` [s, s], and
 /// `candidates` in ascending BIC, each with `name`, `status`, `converged`, `free_count`, `rms_residual`, `noise`,
 /// `residual_to_noise`, `aic`, `bic`, `delta_aic`, `delta_bic`, `undetermined` (names), `evaluations`,
 /// `wall_seconds`.
-Document ranking_document(const fit::ModelChoice& choice);
+io::Document ranking_document(const fit::ModelChoice& choice);
 
 /// ranking.json: ranking_document as JSON text.
 std::string ranking_json(const fit::ModelChoice& choice);
@@ -27,4 +28,4 @@ std::string ranking_json(const fit::ModelChoice& choice);
 void write_model_choice(const std::filesystem::path& directory, const FitCase& fit_case,
                         const fit::ModelChoice& choice);
 
-}  // namespace mdr::io
+}  // namespace mdr::fitcase

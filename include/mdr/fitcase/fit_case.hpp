@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Reading a fit case: a case file with a `[fit]` table (docs/case-format.md, "Fitting"). The model is the case
-/// without `[fit]`; `[load]` may be left out, the measured curves supply the history.
+/// without `[fit]`; `[load]` may be left out, the measured curves supply the history. The fit case is where io (the
+/// case file) meets fit (the identification): this layer translates it into the fit's own types.
 
 #include <filesystem>
 #include <string>
@@ -14,18 +15,18 @@
 #include "mdr/fit/rebound.hpp"
 #include "mdr/io/case_template.hpp"
 
-namespace mdr::io {
+namespace mdr::fitcase {
 
 /// A fit case as read: the model, the free parameters with bounds and start values, the settings and where the
 /// measured curves are.
 struct FitCase {
-    CaseTemplate model;                          ///< the case without `[fit]`, with a `[load]` when it had none
+    io::CaseTemplate model;                      ///< the case without `[fit]`, with a `[load]` when it had none
     std::vector<fit::FreeParameter> parameters;  ///< `fit.free`, with `fit.bounds` and `fit.start`
     fit::FitSettings settings;                   ///< `fit.fitted`, `contact_point`, `baseline`, `max_iterations`,
                                                  ///< `elements`
     std::vector<fit::CurveSource> data;          ///< `[[fit.data]]`, paths relative to the case file's directory
     bool had_load = false;                       ///< the case gave its own `[load]`
-    fit::CandidateSettings model_choice{};       ///< `fit.candidates` and `[fit.spectrum]` (fit::fit_candidates)
+    fit::CandidateSettings model_choice{};       ///< `fit.candidates` and `[fit.spectrum]` (fit_candidates)
     std::vector<fit::ReboundSource> rebounds{};  ///< `[[fit.data]]` with `kind = "rebound"`
     std::vector<std::string> data_keys{};        ///< the table of each of `data` in messages, e.g. `fit.data[2]`
     std::vector<std::string> rebound_keys{};     ///< the table of each of `rebounds`
@@ -41,19 +42,17 @@ struct FitCase {
 FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
                        const std::filesystem::path& case_directory);
 /// parse_fit_case of a case already parsed (or given as a tree, case_tree.hpp).
-FitCase parse_fit_case(CaseTemplate model, const std::filesystem::path& case_directory);
-
-/// The text of a case file; mdr::InvalidInput (key `case`) when it cannot be read.
-std::string read_case_text(const std::filesystem::path& path);
+FitCase parse_fit_case(io::CaseTemplate model, const std::filesystem::path& case_directory);
 
 /// Reads and parses a fit case file (curves relative to its directory).
 FitCase load_fit_case(const std::filesystem::path& path);
 
-/// The model as a function of the free values: a copy of the model with each free key set, built.
+/// The model as a function of the free values: a copy of the model with each free key set, built (once, when no key
+/// is free).
 fit::ModelBuilder model_builder(const FitCase& fit_case);
 
 /// The model case with `values` set for the free keys, as TOML text, with `[load]` replaced by `load_body` when
 /// it is not empty (fitted.toml).
 std::string fitted_case_text(const FitCase& fit_case, const std::vector<double>& values, std::string_view load_body);
 
-}  // namespace mdr::io
+}  // namespace mdr::fitcase

@@ -1,4 +1,4 @@
-#include "fit_candidates_reader.hpp"
+#include "fitcase/fit_candidates_reader.hpp"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,9 @@
 
 #include "mdr/error.hpp"
 
-namespace mdr::io {
+namespace mdr::fitcase {
+
+using io::TableReader;
 
 namespace {
 
@@ -88,4 +90,4 @@ void check_candidate_free_keys(const fit::CandidateSettings& settings, const std
     }
 }
 
-}  // namespace mdr::io
+}  // namespace mdr::fitcase

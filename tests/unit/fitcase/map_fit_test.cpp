@@ -1,4 +1,4 @@
-// fit_map_pixel (src/fit/map_fit.cpp): a pixel keeps the numbers of its map.csv row, not its curve's data points,
+// fit_map_pixel (src/fitcase/map_fit.cpp): a pixel keeps the numbers of its map.csv row, not its curve's data points,
 // so that a map of many pixels holds a few numbers per pixel.
 #include <gtest/gtest.h>
 
@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "mdr/error.hpp"
-#include "mdr/fit/map_fit.hpp"
+#include "mdr/fitcase/fit_case.hpp"
+#include "mdr/fitcase/map_fit.hpp"
 #include "mdr/instrument/read_curves.hpp"
-#include "mdr/io/fit_case.hpp"
 
-namespace mdr::fit {
+namespace mdr::fitcase {
 namespace {
 
 const char* const map_case = R"(
@@ -36,7 +36,7 @@ const std::filesystem::path vendor_map =
     std::filesystem::path(MDR_VENDOR_DATA) / "fmt-jpk-fd_map-data-reference-points.jpk-force-map";
 
 TEST(MapFit, APixelKeepsItsFitButNotItsDataPoints) {
-    const io::FitCase fit_case = io::parse_fit_case(map_case, "map.toml", ".");
+    const FitCase fit_case = parse_fit_case(map_case, "map.toml", ".");
     require_map_case(fit_case);
     const std::filesystem::path& map = vendor_map;
     instrument::CurveFile file(map);
@@ -44,7 +44,7 @@ TEST(MapFit, APixelKeepsItsFitButNotItsDataPoints) {
     ASSERT_TRUE(pixel.result.has_value()) << pixel.failure;
     EXPECT_GT(pixel.result->values.at(0), 0.0);
     ASSERT_EQ(pixel.result->curves.size(), 1u);
-    const CurveFit& curve = pixel.result->curves.front();
+    const fit::CurveFit& curve = pixel.result->curves.front();
     EXPECT_EQ(curve.time.capacity() + curve.measured.capacity() + curve.model.capacity() + curve.drive.capacity(),
               0u);
     EXPECT_TRUE(std::isfinite(pixel.contact_height));
@@ -56,7 +56,7 @@ TEST(MapFit, AWriteErrorOfTheTablesIsReportedNotLost) {
     if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
     PixelFit pixel;
     pixel.failure = "unreadable";
-    const io::FitCase fit_case = io::parse_fit_case(map_case, "map.toml", ".");
+    const FitCase fit_case = parse_fit_case(map_case, "map.toml", ".");
     EXPECT_THROW(write_map_table("/dev/full", {pixel}, fit_case), std::runtime_error);
     EXPECT_THROW(write_map_summary("/dev/full", MapLayout{}, fit_case, "map.jpk-force-map", {pixel}),
                  std::runtime_error);
@@ -65,7 +65,7 @@ TEST(MapFit, AWriteErrorOfTheTablesIsReportedNotLost) {
 TEST(MapFit, PixelsFittedOnThreadsAreThoseOfOneThreadInTheFilesOrder) {
     // The rule of fit_map_pixels: whatever the threads, pixel i is curve i's fit, bit for bit. The 3 pixels of the
     // vendor map differ (their fitted G differ), so a pixel put in another's place would show.
-    const io::FitCase fit_case = io::parse_fit_case(map_case, "map.toml", ".");
+    const FitCase fit_case = parse_fit_case(map_case, "map.toml", ".");
     std::size_t reports = 0;
     const auto count = [&](std::size_t, std::size_t) { ++reports; };
     const std::vector<PixelFit> alone = fit_map_pixels(fit_case, vendor_map, 3, 1, count);
@@ -85,10 +85,10 @@ TEST(MapFit, PixelsFittedOnThreadsAreThoseOfOneThreadInTheFilesOrder) {
 }
 
 TEST(MapFit, AMapStoppedByItsProgressEndsWithTheProgresssException) {
-    const io::FitCase fit_case = io::parse_fit_case(map_case, "map.toml", ".");
+    const FitCase fit_case = parse_fit_case(map_case, "map.toml", ".");
     EXPECT_THROW(fit_map_pixels(fit_case, vendor_map, 3, 2, [](std::size_t, std::size_t) { throw Interrupted(); }),
                  Interrupted);
 }
 
 }  // namespace
-}  // namespace mdr::fit
+}  // namespace mdr::fitcase

@@ -1,24 +1,25 @@
-#include "mdr/io/fit_case.hpp"
+#include "mdr/fitcase/fit_case.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <optional>
-#include <sstream>
 #include <string_view>
 
-#include "case_reader.hpp"
-#include "fit_candidates_reader.hpp"
-#include "fit_data_reader.hpp"
+#include "fitcase/fit_candidates_reader.hpp"
+#include "fitcase/fit_data_reader.hpp"
+#include "io/case_reader.hpp"
+#include "io/toml_reader.hpp"
 #include "mdr/error.hpp"
+#include "mdr/io/case_file.hpp"
 #include "mdr/io/free_key_units.hpp"
 #include "mdr/io/units.hpp"
-#include "toml_reader.hpp"
 
-namespace mdr::io {
+namespace mdr::fitcase {
+
+using io::TableReader;
 
 namespace {
 
@@ -62,7 +63,7 @@ void check_per_key_tables(const toml::table& fit, const std::vector<std::string>
     }
 }
 
-fit::FreeParameter read_parameter(const toml::table& fit, const CaseTemplate& model, const std::string& key) {
+fit::FreeParameter read_parameter(const toml::table& fit, const io::CaseTemplate& model, const std::string& key) {
     if (key.rfind("material.", 0) != 0 && key.rfind("indenter.", 0) != 0 && key != "layer.thickness") {
         throw InvalidInput("fit.free", key, "must name a number of [material] or [indenter], or layer.thickness");
     }
@@ -108,13 +109,13 @@ std::optional<std::array<double, 2>> contact_bounds(const toml::table& fit) {
 
 FitCase parse_fit_case(std::string_view toml_text, const std::string& source,
                        const std::filesystem::path& case_directory) {
-    return parse_fit_case(CaseTemplate(toml_text, source), case_directory);
+    return parse_fit_case(io::CaseTemplate(toml_text, source), case_directory);
 }
 
-FitCase parse_fit_case(CaseTemplate model, const std::filesystem::path& case_directory) {
+FitCase parse_fit_case(io::CaseTemplate model, const std::filesystem::path& case_directory) {
     const std::string source = model.source();
     if (!model.has_table("fit")) throw InvalidInput("fit", "(missing)", "a fit case needs a [fit] table");
-    const toml::table fit_table = parse_toml(model.take_table("fit"), source);
+    const toml::table fit_table = io::parse_toml(model.take_table("fit"), source);
     TableReader fit(fit_table, "fit");
     fit.reject_unknown({"free", "bounds", "start", "fitted", "contact_point", "baseline", "max_iterations", "elements", "data",
                         "candidates", "spectrum"});
@@ -141,7 +142,7 @@ FitCase parse_fit_case(CaseTemplate model, const std::filesystem::path& case_dir
     if (fit_case.had_load) {
         const std::string expected = fitted == "force" ? "displacement" : "force";
         const std::string load = fit_case.model.take_table("load");
-        const toml::table load_table = parse_toml(load, source);
+        const toml::table load_table = io::parse_toml(load, source);
         const auto control = load_table["control"].value<std::string>();
         if (control && *control != expected) {
             throw InvalidInput("load.control", "\"" + *control + "\"",
@@ -153,7 +154,7 @@ FitCase parse_fit_case(CaseTemplate model, const std::filesystem::path& case_dir
         fit_case.model.set_table("load", placeholder_load);
     }
     fit_case.units = fit_case.model.build().units;  // the model's own rules; its unit system
-    const UnitSystem& units = unit_system(fit_case.units);
+    const io::UnitSystem& units = io::unit_system(fit_case.units);
 
     const auto keys = free_keys(fit_table, !fit_case.model_choice.empty());
     check_candidate_free_keys(fit_case.model_choice, keys);
@@ -181,33 +182,28 @@ FitCase parse_fit_case(CaseTemplate model, const std::filesystem::path& case_dir
     return fit_case;
 }
 
-std::string read_case_text(const std::filesystem::path& path) {
-    std::ifstream file(path);
-    if (!file) throw unreadable_file("case", path);
-    std::ostringstream text;
-    text << file.rdbuf();
-    return text.str();
-}
-
 FitCase load_fit_case(const std::filesystem::path& path) {
-    return parse_fit_case(read_case_text(path), path.string(), path.parent_path());
+    return parse_fit_case(io::read_case_text(path), path.string(), path.parent_path());
 }
 
 fit::ModelBuilder model_builder(const FitCase& fit_case) {
+    if (fit_case.parameters.empty()) {  // nothing varies (a model choice with no indenter key free): built once
+        return [built = fit_case.model.build()](const std::vector<double>&) { return built; };
+    }
     std::vector<std::string> keys;
     for (const auto& parameter : fit_case.parameters) keys.push_back(parameter.name);
     return [model = fit_case.model, keys](const std::vector<double>& values) {
-        CaseTemplate copy = model;
+        io::CaseTemplate copy = model;
         for (std::size_t j = 0; j < keys.size(); ++j) copy.set_number(keys[j], values[j]);
         return copy.build();
     };
 }
 
 std::string fitted_case_text(const FitCase& fit_case, const std::vector<double>& values, std::string_view load_body) {
-    CaseTemplate copy = fit_case.model;
+    io::CaseTemplate copy = fit_case.model;
     for (std::size_t j = 0; j < fit_case.parameters.size(); ++j) copy.set_number(fit_case.parameters[j].name, values[j]);
     if (!load_body.empty()) copy.set_table("load", load_body);
     return copy.text();
 }
 
-}  // namespace mdr::io
+}  // namespace mdr::fitcase

@@ -1,14 +1,20 @@
-#include "mdr/io/model_choice_files.hpp"
+#include "mdr/fitcase/model_choice_files.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
+#include "mdr/fitcase/fit_files.hpp"
+#include "mdr/fitcase/model_choice.hpp"
 #include "mdr/io/csv_field.hpp"
-#include "mdr/io/fit_files.hpp"
 #include "mdr/io/output_file.hpp"
 
-namespace mdr::io {
+namespace mdr::fitcase {
+
+using io::csv_field;
+using io::Document;
+using io::number_or_null;
+using io::OutputFile;
 
 namespace {
 
@@ -28,8 +34,8 @@ void write_spectrum(const std::filesystem::path& directory, const fit::Candidate
     csv.close();
 }
 
-void write_candidate(const std::filesystem::path& directory, const fit::CandidateFit& fitted) {
-    write_fit_result(directory, fitted.fitted_case, fitted.result);
+void write_candidate(const std::filesystem::path& directory, const FitCase& fit_case, const fit::CandidateFit& fitted) {
+    write_fit_result(directory, fitted_case(fit_case, fitted), fitted.result);
     if (!fitted.relaxation_times.empty()) write_spectrum(directory, fitted);
 }
 
@@ -71,7 +77,7 @@ std::string ranking_json(const fit::ModelChoice& choice) { return to_json(rankin
 void write_model_choice(const std::filesystem::path& directory, const FitCase& fit_case,
                         const fit::ModelChoice& choice) {
     if (fit_case.model_choice.candidates.empty()) {  // a spectrum alone
-        write_candidate(directory, choice.fits.front());
+        write_candidate(directory, fit_case, choice.fits.front());
         return;
     }
     auto csv = OutputFile(directory / "models.csv");
@@ -84,7 +90,7 @@ void write_model_choice(const std::filesystem::path& directory, const FitCase& f
                   result.rms_residual, ratio(result), result.aic, result.bic, fitted.delta_aic, fitted.delta_bic,
                   result.converged, result.undetermined.size(), result.wall_seconds);
         std::filesystem::create_directory(directory / fitted.name);
-        write_candidate(directory / fitted.name, fitted);
+        write_candidate(directory / fitted.name, fit_case, fitted);
     }
     csv.close();
     auto json = OutputFile(directory / "ranking.json");
@@ -92,4 +98,4 @@ void write_model_choice(const std::filesystem::path& directory, const FitCase& f
     json.close();
 }
 
-}  // namespace mdr::io
+}  // namespace mdr::fitcase

@@ -1,14 +1,14 @@
 // The default bounds of a free key without fit.bounds (parse_fit_case): four decades either side of its start,
-// within its physical domain. The expectations are the rule stated in src/io/fit_case.cpp and the domains of the
+// within its physical domain. The expectations are the rule stated in src/fitcase/fit_case.cpp and the domains of the
 // handbook (a power law's 0 < beta < 1, a cone's 0 < angle < 90 degrees, a modulus > 0).
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <string>
 
-#include "mdr/io/fit_case.hpp"
+#include "mdr/fitcase/fit_case.hpp"
 
-namespace mdr::io {
+namespace mdr::fitcase {
 namespace {
 
 const fit::FreeParameter& parameter(const FitCase& fit_case, const std::string& key) {
@@ -48,4 +48,4 @@ force = "F"
 }
 
 }  // namespace
-}  // namespace mdr::io
+}  // namespace mdr::fitcase

@@ -1,4 +1,4 @@
-#include "mdr/io/fit_files.hpp"
+#include "mdr/fitcase/fit_files.hpp"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,12 @@
 #include "mdr/io/csv_field.hpp"
 #include "mdr/io/output_file.hpp"
 
-namespace mdr::io {
+namespace mdr::fitcase {
+
+using io::csv_field;
+using io::Document;
+using io::number_or_null;
+using io::OutputFile;
 
 namespace {
 
@@ -190,4 +195,4 @@ void write_fit_result(const std::filesystem::path& directory, const FitCase& fit
     toml.close();
 }
 
-}  // namespace mdr::io
+}  // namespace mdr::fitcase

@@ -1,4 +1,4 @@
-#include "mdr/fit/map_fit.hpp"
+#include "mdr/fitcase/map_fit.hpp"
 
 #include <fmt/format.h>
 
@@ -12,18 +12,18 @@
 #include <utility>
 
 #include "mdr/error.hpp"
-#include "mdr/fit/fit_case_run.hpp"
 #include "mdr/fit/instrument_curve.hpp"
 #include "mdr/fit/plausibility.hpp"
+#include "mdr/fitcase/fit_case_run.hpp"
 #include "mdr/io/csv_field.hpp"
 #include "mdr/io/free_key_units.hpp"
 #include "mdr/io/output_file.hpp"
 #include "mdr/io/units.hpp"
 #include "mdr/parallel/run_on_threads.hpp"
 
-namespace mdr::fit {
+namespace mdr::fitcase {
 
-void require_map_case(const io::FitCase& fit_case) {
+void require_map_case(const FitCase& fit_case) {
     if (fit_case.data.size() != 1 || !fit_case.rebounds.empty()) {
         throw InvalidInput("--map", fmt::format("({} curve and {} rebound tables)", fit_case.data.size(),
                                                 fit_case.rebounds.size()),
@@ -40,7 +40,7 @@ void require_map_case(const io::FitCase& fit_case) {
     }
 }
 
-MapLayout map_layout(instrument::CurveFile& file, const io::FitCase& fit_case) {
+MapLayout map_layout(instrument::CurveFile& file, const FitCase& fit_case) {
     const double length = io::unit_system(fit_case.units).length_size;
     for (std::size_t index = 0; index < file.size(); ++index) {
         try {
@@ -55,7 +55,7 @@ MapLayout map_layout(instrument::CurveFile& file, const io::FitCase& fit_case) {
     return {};
 }
 
-void require_map_time(instrument::CurveFile& file, const io::FitCase& fit_case, const std::filesystem::path& path) {
+void require_map_time(instrument::CurveFile& file, const FitCase& fit_case, const std::filesystem::path& path) {
     for (std::size_t index = 0; index < file.size(); ++index) {
         try {
             if (!file.read(index).time.empty()) return;
@@ -64,16 +64,16 @@ void require_map_time(instrument::CurveFile& file, const io::FitCase& fit_case, 
         } catch (const std::runtime_error&) {
             continue;
         }
-        Curve without_time;  // only its file enters the rule
+        fit::Curve without_time;  // only its file enters the rule
         without_time.file_without_time = path.filename().string();
-        std::vector<Curve> curves;
+        std::vector<fit::Curve> curves;
         curves.push_back(std::move(without_time));
-        require_time_where_the_material_needs_it(make_problem(fit_case, std::move(curves)));
+        fit::require_time_where_the_material_needs_it(make_problem(fit_case, std::move(curves)));
         return;
     }
 }
 
-PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path& path, instrument::CurveFile& file,
+PixelFit fit_map_pixel(const FitCase& fit_case, const std::filesystem::path& path, instrument::CurveFile& file,
                        std::size_t index) {
     const io::UnitSystem& system = io::unit_system(fit_case.units);
     PixelFit pixel;
@@ -88,22 +88,22 @@ PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path&
             pixel.column = raw.position.column;
             pixel.row = raw.position.row;
         }
-        io::FitCase one = fit_case;
-        CurveSource& source = one.data.front();
+        FitCase one = fit_case;
+        fit::CurveSource& source = one.data.front();
         source.file = path;
         source.instrument = true;
         source.curve = index;
         double tip_height_zero = 0.0;
-        std::vector<Curve> curves;
-        curves.push_back(instrument_fit_curve(raw, source, &tip_height_zero));
-        FitProblem problem = make_problem(one, std::move(curves));
-        validate(problem);
-        FitResult result = fit(problem);
-        add_plausibility_flags(problem, system, result);
+        std::vector<fit::Curve> curves;
+        curves.push_back(fit::instrument_fit_curve(raw, source, &tip_height_zero));
+        fit::FitProblem problem = make_problem(one, std::move(curves));
+        fit::validate(problem);
+        fit::FitResult result = fit::fit(problem);
+        fit::add_plausibility_flags(problem, plausibility_units(fit_case), result);
         // The depth is measured down from tip_height_zero (afm_depth_and_force): the contact lies that far below.
         pixel.contact_height = tip_height_zero - result.curves.front().contact_depth;
         // A row needs no data points: release them, so that a map holds a few numbers per pixel, not its curve.
-        for (CurveFit& curve : result.curves) {
+        for (fit::CurveFit& curve : result.curves) {
             for (std::vector<double>* points : {&curve.time, &curve.measured, &curve.model, &curve.drive}) {
                 std::vector<double>().swap(*points);
             }
@@ -119,14 +119,14 @@ PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path&
     return pixel;
 }
 
-std::vector<PixelFit> fit_map_pixels(const io::FitCase& fit_case, const std::filesystem::path& path,
+std::vector<PixelFit> fit_map_pixels(const FitCase& fit_case, const std::filesystem::path& path,
                                      std::size_t count, unsigned threads,
                                      const std::function<void(std::size_t, std::size_t)>& progress) {
     /// What one thread works with: its own reader (a CurveFile is not shared: its archive and inflater are state)
     /// and its own case, whose check_interrupt also ends the fit once the map is stopped.
     struct Worker {
         std::optional<instrument::CurveFile> file;
-        std::optional<io::FitCase> fit_case;
+        std::optional<FitCase> fit_case;
     };
     std::vector<PixelFit> pixels(count);
     std::vector<Worker> workers(std::max<std::size_t>(1, std::min<std::size_t>(threads, count)));
@@ -135,7 +135,7 @@ std::vector<PixelFit> fit_map_pixels(const io::FitCase& fit_case, const std::fil
         [&](std::size_t index, unsigned worker, const std::atomic<bool>& stop) {
             Worker& own = workers[worker];
             if (!own.fit_case) {
-                own.file.emplace(path, read_options(fit_case.data.front()));
+                own.file.emplace(path, fit::read_options(fit_case.data.front()));
                 own.fit_case = fit_case;
                 own.fit_case->settings.on_iteration = nullptr;  // a map reports pixels, not the iterations of each
                 own.fit_case->settings.check_interrupt = [&stop, check = fit_case.settings.check_interrupt] {
@@ -178,7 +178,7 @@ Row row_of(const PixelFit& pixel, const std::function<std::string(const std::str
             {"x", placed(number(pixel.x)), "m"},
             {"y", placed(number(pixel.y)), "m"}};
     if (pixel.result) {
-        const FitResult& result = *pixel.result;
+        const fit::FitResult& result = *pixel.result;
         for (std::size_t j = 0; j < result.names.size(); ++j) {
             const std::string unit = key_unit(result.names[j]);
             row.push_back({result.names[j], number(result.values[j]), unit});
@@ -189,7 +189,7 @@ Row row_of(const PixelFit& pixel, const std::function<std::string(const std::str
             row.push_back({"E_" + young.name, number(young.value), unit});
             row.push_back({"E_" + young.name + "_stderr", number(young.standard_error), unit});
         }
-        const bool force = result.curves.empty() || result.curves.front().fitted == Fitted::force;
+        const bool force = result.curves.empty() || result.curves.front().fitted == fit::Fitted::force;
         row.push_back({"contact_height", number(pixel.contact_height), "m"});
         row.push_back({"residual_to_noise", number(result.rms_residual / result.noise), "1"});
         row.push_back({"noise", number(result.noise), force ? "N" : "m"});
@@ -207,7 +207,7 @@ Row row_of(const PixelFit& pixel, const std::function<std::string(const std::str
     return row;
 }
 
-std::vector<Row> rows_of(const std::vector<PixelFit>& pixels, const io::FitCase& fit_case) {
+std::vector<Row> rows_of(const std::vector<PixelFit>& pixels, const FitCase& fit_case) {
     const auto key_unit = [&](const std::string& key) { return io::free_key_unit(fit_case.model, key); };
     std::vector<Row> rows;
     rows.reserve(pixels.size());
@@ -237,7 +237,7 @@ std::vector<std::pair<std::string, std::string>> table_columns(const std::vector
 }  // namespace
 
 void write_map_table(const std::filesystem::path& path, const std::vector<PixelFit>& pixels,
-                     const io::FitCase& fit_case) {
+                     const FitCase& fit_case) {
     const std::vector<Row> rows = rows_of(pixels, fit_case);
     const auto columns = table_columns(rows);
     std::string table;
@@ -255,7 +255,7 @@ void write_map_table(const std::filesystem::path& path, const std::vector<PixelF
     io::write_text_file(path, table);
 }
 
-void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const io::FitCase& fit_case,
+void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const FitCase& fit_case,
                        const std::filesystem::path& source, const std::vector<PixelFit>& pixels) {
     const std::string& units = fit_case.units;
     const io::UnitSystem& system = io::unit_system(units);
@@ -282,4 +282,4 @@ void write_map_summary(const std::filesystem::path& path, const MapLayout& layou
     io::write_text_file(path, summary.dump(1) + "\n");
 }
 
-}  // namespace mdr::fit
+}  // namespace mdr::fitcase

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "mdr/fit/fit.hpp"
+#include "mdr/fitcase/fit_case.hpp"
 #include "mdr/instrument/read_curves.hpp"
-#include "mdr/io/fit_case.hpp"
 
-namespace mdr::fit {
+namespace mdr::fitcase {
 
 /// One pixel of a map fit: where it is, and its fit or why it has none.
 struct PixelFit {
@@ -26,7 +26,7 @@ struct PixelFit {
     bool placed = false;              ///< x, y, column and row are known (false when the curve could not be read)
     /// The fit (also one that did not converge) without its data points (the curves' time, measured, model and
     /// drive are empty: a row needs none); empty when the pixel failed.
-    std::optional<FitResult> result;
+    std::optional<fit::FitResult> result;
     /// Tip height at the fitted contact point, in the case's length unit (the topography; larger = farther from
     /// the sample); NaN when the pixel failed.
     double contact_height = 0.0;
@@ -44,13 +44,13 @@ struct MapLayout {
 /// Refuses (mdr::InvalidInput, key `--map`) a case that cannot fit a map: it must have exactly one `[[fit.data]]`
 /// curve table, no rebound data and no model choice; the table's `file` is replaced by the map, its `curve` by
 /// each pixel.
-void require_map_case(const io::FitCase& fit_case);
+void require_map_case(const FitCase& fit_case);
 
 /// Fits curve `index` of `file` alone with `fit_case` (require_map_case): the curve from instrument_fit_curve with
 /// the case's `[[fit.data]]` settings (segments, until, window), then make_problem, validate, fit and the
 /// plausibility flags. Bad data of this pixel (mdr::InvalidInput, a reader's error) gives a PixelFit with its
 /// `failure`; mdr::Interrupted is passed on.
-PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path& path, instrument::CurveFile& file,
+PixelFit fit_map_pixel(const FitCase& fit_case, const std::filesystem::path& path, instrument::CurveFile& file,
                        std::size_t index);
 
 /// Fits the curves 0 to `count` - 1 of the instrument file at `path` (`count` its size) with fit_map_pixel on
@@ -60,18 +60,18 @@ PixelFit fit_map_pixel(const io::FitCase& fit_case, const std::filesystem::path&
 /// by throwing (mdr::Interrupted for Ctrl-C), which every fit sees at its next model run. The case's own
 /// `settings.check_interrupt`, if any, is called from the threads and must be safe there; its `on_iteration` is
 /// not called (the map reports pixels).
-std::vector<PixelFit> fit_map_pixels(const io::FitCase& fit_case, const std::filesystem::path& path,
+std::vector<PixelFit> fit_map_pixels(const FitCase& fit_case, const std::filesystem::path& path,
                                      std::size_t count, unsigned threads,
                                      const std::function<void(std::size_t, std::size_t)>& progress);
 
 /// Refuses before any pixel is fitted (mdr::InvalidInput, key `fit.data[0].file`, as
 /// require_time_where_the_material_needs_it) a map whose first readable curve records no time (AFM Workshop) when
 /// the case's material depends on time: every pixel would be refused alike.
-void require_map_time(instrument::CurveFile& file, const io::FitCase& fit_case, const std::filesystem::path& path);
+void require_map_time(instrument::CurveFile& file, const FitCase& fit_case, const std::filesystem::path& path);
 
 /// The raster of `file` in the case's length unit: the grid its first readable curve states (an unreadable curve is
 /// its pixel's failed row, fit_map_pixel); all 0 when no curve can be read or the file is not a map.
-MapLayout map_layout(instrument::CurveFile& file, const io::FitCase& fit_case);
+MapLayout map_layout(instrument::CurveFile& file, const FitCase& fit_case);
 
 /// Writes map.csv: one row per pixel with `index`, `column`, `row`, `x`, `y` (empty when not `placed`), every free
 /// key and `KEY_stderr`, `E_KEY` and `E_KEY_stderr` for every Young modulus, `contact_height`,
@@ -79,7 +79,7 @@ MapLayout map_layout(instrument::CurveFile& file, const io::FitCase& fit_case);
 /// pixels failed; a value a row lacks is empty. Fields quoted by RFC 4180 (io::csv_field); numbers with 17
 /// significant digits. Throws std::runtime_error when the file cannot be written.
 void write_map_table(const std::filesystem::path& path, const std::vector<PixelFit>& pixels,
-                     const io::FitCase& fit_case);
+                     const FitCase& fit_case);
 
 /// Writes map.json: `source` (the map file), `units`, `length_unit` and `length_size` (m) of the case's unit
 /// system, the grid's `columns` and `rows`, its `size` and `pixel_size` (x, y) in that length unit, the number of
@@ -87,7 +87,7 @@ void write_map_table(const std::filesystem::path& path, const std::vector<PixelF
 /// system, that of a free key (and of its `_stderr` and `E_` columns) from the registry that defines it
 /// (io::free_key_unit), "1" for a ratio or an exponent, "" for a column that is no quantity. Throws
 /// std::runtime_error when the file cannot be written.
-void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const io::FitCase& fit_case,
+void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const FitCase& fit_case,
                        const std::filesystem::path& source, const std::vector<PixelFit>& pixels);
 
-}  // namespace mdr::fit
+}  // namespace mdr::fitcase

@@ -6,17 +6,17 @@
 #include <string>
 
 #include "mdr/fit/fit.hpp"
+#include "mdr/fitcase/fit_case.hpp"
 #include "mdr/io/document.hpp"
-#include "mdr/io/fit_case.hpp"
 
-namespace mdr::io {
+namespace mdr::fitcase {
 
 /// fit.json as a document: status, converged, parameters, standard_errors, intervals_95, correlation,
 /// undetermined, curves (contact point, baseline, noise, RMS residual), rms_residual, noise, residual_to_noise, aic,
 /// bic, points, free_count, iterations, evaluations, element_evaluations, band_evaluations, wall_seconds, and
 /// `units`, the case's declared unit system in which its numbers are (for the figures). NaN (an undetermined error)
 /// is null.
-Document fit_document(const fit::FitResult& result, const std::string& units = "SI");
+io::Document fit_document(const fit::FitResult& result, const std::string& units = "SI");
 
 /// fit.json: fit_document as JSON text.
 std::string fit_json(const fit::FitResult& result, const std::string& units = "SI");
@@ -26,4 +26,4 @@ std::string fit_json(const fit::FitResult& result, const std::string& units = "S
 /// drive is fit::CurveFit::drive, nan for rebound data) into `directory`.
 void write_fit_result(const std::filesystem::path& directory, const FitCase& fit_case, const fit::FitResult& result);
 
-}  // namespace mdr::io
+}  // namespace mdr::fitcase
