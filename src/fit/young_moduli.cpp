@@ -1,5 +1,6 @@
 #include "young_moduli.hpp"
 
+#include "mdr/rheology/compressible.hpp"
 #include "mdr/rheology/material_models.hpp"
 
 namespace mdr::fit {
@@ -31,12 +32,20 @@ void describe_young_moduli(const FitProblem& problem, FitResult& result) {
         if (is_shear_modulus(result.names[j])) moduli.push_back(j);
     }
     if (moduli.empty()) return;
-    if (problem.model(result.values).shear_material) {
-        result.flags.push_back("young_moduli: not reported: the body is compressible (a bulk part), its Poisson ratio "
-                               "changes with time; E = 2 (1 + nu) G needs nu");
-        return;
+    const drivers::ContactCase model = problem.model(result.values);
+    double poisson_ratio = 0.5;  // incompressible
+    if (model.shear_material) {
+        // One compressible body whose K(t)/G(t) is constant has one nu (at the fitted values); else none.
+        const auto constant = model.bulk_material
+                                  ? rheology::constant_poisson_ratio(*model.shear_material, *model.bulk_material)
+                                  : std::nullopt;
+        if (!constant) {
+            result.flags.push_back("young_moduli: not reported: the body is compressible (a bulk part), its Poisson "
+                                   "ratio changes with time; E = 2 (1 + nu) G needs nu");
+            return;
+        }
+        poisson_ratio = *constant;
     }
-    constexpr double poisson_ratio = 0.5;  // incompressible
     for (std::size_t j : moduli) {
         const double factor = 2.0 * (1.0 + poisson_ratio);
         result.young_moduli.push_back({result.names[j], factor * result.values[j], factor * result.standard_errors[j]});

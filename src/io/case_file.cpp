@@ -344,6 +344,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
                                       .snapshots = std::move(snapshots),
                                       .numerics = numerics,
                                       .shear_material = std::move(contact.shear_material),
+                                      .bulk_material = std::move(contact.bulk_material),
                                       .tangential = std::move(tangential),
                                       .tangential_exact = contact.tangential_exact,
                                       .material_origin = std::move(contact.origin),
