@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/indentation.hpp"
@@ -21,14 +22,14 @@ constexpr double radius = 1e-5;
 
 // A case with the given [material] body (shear and bulk parts), a sphere and a depth history.
 std::string compressible_case(const std::string& material, const std::string& layer,
-                              const std::string& history = "[[0.0, 0.0], [1.0, 1.0e-6], [3.0, 1.0e-6]]") {
+                              const std::string& history = "[[0.0, 0.0], [1.0, 1.0e-6], [3.0, 1.0e-6]]",
+                              const std::string& control = "displacement") {
     return "[material]\n" + material + R"(
 [indenter]
 shape = "sphere"
 R = 1.0e-5
 [load]
-control = "displacement"
-history = )" + history + "\n" + layer;
+control = ")" + control + "\"\nhistory = " + history + "\n" + layer;
 }
 
 // G and K elastic: nu = (3K - 2G) / (2 (3K + G)) = 4/14.
@@ -79,6 +80,67 @@ TEST(CompressibleLayer, VeryThickViscoelasticLayerUnloadsAsTheCompressibleHalfSp
     EXPECT_LT(force_error, 1e-6);
 }
 
+// The largest difference between two runs' columns on the same rows, relative to its largest magnitude.
+double largest_difference(const std::vector<double>& reference, const std::vector<double>& other) {
+    double scale = 0.0, largest = 0.0;
+    for (const double value : reference) scale = std::max(scale, std::abs(value));
+    for (std::size_t i = 0; i < reference.size(); ++i) largest = std::max(largest, std::abs(reference[i] - other[i]));
+    return largest / scale;
+}
+
+TEST(CompressibleLayer, VeryThickLayerUnderForceAndSpringControlIsTheCompressibleHalfSpaceDriver) {
+    // As test_layer_viscoelastic.cpp for the incompressible layer: a force triangle then none (growing, receding,
+    // riding on the recovering surface), and a cantilever's base pressed in and withdrawn below the surface.
+    const std::string thick = "[layer]\nthickness = 1.0e3\ninterface = \"bonded\"\n";
+    const std::string force = "[[0.0, 0.0], [1.0, 3.0e-8], [2.0, 0.0], [3.0, 0.0]]";
+    const auto half_space = mdr::drivers::run_case(
+        mdr::io::parse_case(compressible_case(proportional_body, "", force, "force")));
+    const auto layer = mdr::drivers::run_case(
+        mdr::io::parse_case(compressible_case(proportional_body, thick, force, "force")));
+    ASSERT_EQ(half_space.time.size(), layer.time.size());
+    // The half-space driver's own error at its first steps (a contact over few elements), 2.8e-6 incompressible.
+    EXPECT_LT(largest_difference(half_space.depth, layer.depth), 5e-6);
+    const std::string base = "[[0.0, 0.0], [1.0, 2.0e-6], [2.0, -0.5e-6], [3.0, -0.5e-6]]\nspring_constant = 0.05";
+    const auto spring_half_space = mdr::drivers::run_case(
+        mdr::io::parse_case(compressible_case(proportional_body, "", base, "spring")));
+    const auto spring_layer = mdr::drivers::run_case(
+        mdr::io::parse_case(compressible_case(proportional_body, thick, base, "spring")));
+    ASSERT_EQ(spring_half_space.time.size(), spring_layer.time.size());
+    EXPECT_LT(largest_difference(spring_half_space.depth, spring_layer.depth), 1e-6);
+    EXPECT_LT(largest_difference(spring_half_space.force, spring_layer.force), 1e-6);
+}
+
+TEST(CompressibleLayer, VeryThickLayerImpactIsTheCompressibleHalfSpaceImpact) {
+    // A 10 g sphere of radius 1 cm at 0.1 m/s on a standard solid whose bulk relaxation is (10/3) times its shear one.
+    const auto impact = [](const std::string& layer) {
+        return mdr::drivers::run_case(mdr::io::parse_case(R"(
+[material]
+model = "standard"
+G_inf = 1.0e6
+G1 = 1.0e6
+tau1 = 1.0e-4
+[material.bulk]
+model = "standard"
+K_inf = 3.3333333333333335e6
+K1 = 3.3333333333333335e6
+tau1 = 1.0e-4
+[indenter]
+shape = "sphere"
+R = 0.01
+mass = 0.01
+[load]
+control = "impact"
+velocity = 0.1
+)" + layer));
+    };
+    const auto half_space = impact("");
+    const auto layer = impact("[layer]\nthickness = 1.0e3\ninterface = \"sliding\"\n");
+    ASSERT_TRUE(half_space.impact && layer.impact);
+    // As for the incompressible layer (test_layer_impact.cpp): 7.6e-8 and 5.1e-7 there.
+    EXPECT_NEAR(layer.impact->restitution, half_space.impact->restitution, 1e-6);
+    EXPECT_NEAR(layer.impact->contact_time, half_space.impact->contact_time, 1e-6 * half_space.impact->contact_time);
+}
+
 TEST(CompressibleLayer, ElasticLayerHasTheKernelAndModulusOfItsPoissonRatio) {
     // F = E* F_1(d), E* = 2G/(1 - nu) and F_1 the layer's force at unit E* with the kernel of nu (eq. L1, L3).
     const auto contact_case = mdr::io::parse_case(
@@ -93,6 +155,12 @@ TEST(CompressibleLayer, ElasticLayerHasTheKernelAndModulusOfItsPoissonRatio) {
     EXPECT_NEAR(result.radius[row], layer.at_depth(result.depth[row]).contact_radius, 1e-9 * radius);
     // The incompressible kernel is 15 % stiffer here: the kernel's nu matters.
     EXPECT_GT(plane_modulus * incompressible.at_depth(result.depth[row]).force / expected, 1.1);
+    // Under force control the depth solved for a force of that layer (its F(d) met to the solve's 5e-8).
+    const auto forced = mdr::drivers::run_case(mdr::io::parse_case(compressible_case(
+        elastic_body, "[layer]\nthickness = 2.0e-6\ninterface = \"bonded\"\n", "[[0.0, 0.0], [1.0, 1.0e-8]]",
+        "force")));
+    const std::size_t last = forced.time.size() - 1;
+    EXPECT_NEAR(plane_modulus * layer.at_depth(forced.depth[last]).force / forced.force[last], 1.0, 1e-6);
 }
 
 TEST(CompressibleLayer, ProportionalViscoelasticLayerIsLeeRadokWithTheCompressibleModulus) {
