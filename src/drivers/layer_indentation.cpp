@@ -37,7 +37,7 @@ double largest_contact_radius(const ContactCase& contact_case) {
     return std::min(indenter.max_radius(), contact::layer_radius_margin * half_space);
 }
 
-void refuse(const std::string& key, const std::string& value, const std::string& what) {
+[[noreturn]] void refuse(const std::string& key, const std::string& value, const std::string& what) {
     throw InvalidInput(key, value, what + " is not built on a [layer] yet (issue 28)");
 }
 
