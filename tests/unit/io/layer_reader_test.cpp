@@ -35,6 +35,15 @@ TEST(LayerReader, ReadsThicknessAndInterface) {
                                      "R = 1.0e-5\n[load]\n" + loading).layer);
 }
 
+TEST(LayerReader, DescribesACompressibleLayersPoissonRatio) {
+    // K = 2 G: nu = (3K - 2G) / (2 (3K + G)) = 4/14, the ratio that sets the layer's kernel.
+    const auto compressible = mdr::io::parse_case(with(loading, "thickness = 5.0e-6\ninterface = \"bonded\"\n",
+                                                       "K = 2.0e3\n"));
+    EXPECT_NE(mdr::io::describe(compressible).find("bonded on a rigid substrate, nu = 0.2857,"), std::string::npos)
+        << mdr::io::describe(compressible);
+    EXPECT_EQ(mdr::io::describe(mdr::io::parse_case(with(loading, bonded))).find("nu ="), std::string::npos);
+}
+
 TEST(LayerReader, RefusesBadValues) {
     EXPECT_EQ(refused_key(with(loading, "thickness = 0.0\ninterface = \"bonded\"\n")), "layer.thickness");
     EXPECT_EQ(refused_key(with(loading, "thickness = 1.0e-6\ninterface = \"glued\"\n")), "layer.interface");
