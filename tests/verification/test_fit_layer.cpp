@@ -194,7 +194,8 @@ TEST(FitLayer, ADepthThatReachesTheThicknessIsFlagged) {
 TEST(FitLayer, CompressibleElasticLayerAndItsYoungsModulus) {
     // G free beside a fixed elastic K = 2e3: nu = (3K - 2G) / (2 (3K + G)) moves with G, and with it the kernel. The
     // data: F = E* F_1(d) of the elastic layer solved at each depth (contact::LayerContact, E* = 2G/(1 - nu), nu =
-    // 4/14 at G = 1e3), not the fit's interpolated model. The reported E = 2 (1 + nu) G = 9 K G / (3K + G).
+    // 4/14 at G = 1e3), not the fit's interpolated model. The reported E = 2 (1 + nu) G = 9 K G / (3K + G), with its
+    // error through nu's dependence on G.
     constexpr double G = 1e3, K = 2e3, nu = (3.0 * K - 2.0 * G) / (2.0 * (3.0 * K + G)), R = 1e-5;
     const auto text = [](double shear_modulus) {
         char material[128];
@@ -226,6 +227,9 @@ TEST(FitLayer, CompressibleElasticLayerAndItsYoungsModulus) {
     EXPECT_NEAR(result.values[0] / G, 1.0, 1e-6);
     ASSERT_EQ(result.young_moduli.size(), 1u);
     EXPECT_NEAR(result.young_moduli[0].value / (9.0 * K * G / (3.0 * K + G)), 1.0, 1e-6);
+    // Its error through dE/dG = 27 K^2 / (3K + G)^2 (nu moves with G), not 2 (1 + nu) (nu held).
+    const double slope = 27.0 * K * K / ((3.0 * K + G) * (3.0 * K + G));
+    EXPECT_NEAR(result.young_moduli[0].standard_error / (slope * result.standard_errors[0]), 1.0, 1e-4);
 }
 
 TEST(FitLayer, WhatIsNotBuiltOnALayerIsRefusedNamingTheKey) {

@@ -190,7 +190,8 @@ struct Undetermined {
 };
 
 /// Young's modulus of a fitted shear modulus: E = 2 (1 + nu) G, nu = 0.5 for an incompressible body (E = 3 G), the
-/// body's constant nu for a compressible one with K(t)/G(t) constant; its standard error 2 (1 + nu) times G's.
+/// body's constant nu for a compressible one with K(t)/G(t) constant; its standard error 3 times G's, or for a
+/// compressible body propagated through the covariance of the fitted values, with nu's dependence on them.
 struct YoungModulus {
     std::string name;             ///< the fitted shear modulus' key, e.g. `material.G_inf`
     double value = 0.0;           ///< E [Pa]
