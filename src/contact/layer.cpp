@@ -46,8 +46,8 @@ LayerKernel::LayerKernel(LayerInterface interface, double poisson_ratio, double 
     if (!(max_eta > 0.0) || !std::isfinite(max_eta)) {
         throw InvalidInput("layer.max_eta", format_value(max_eta), "must be finite and > 0");
     }
-    if (!(poisson_ratio >= 0.0 && poisson_ratio <= 0.5)) {
-        throw InvalidInput("layer.poisson_ratio", format_value(poisson_ratio), "must be in [0, 0.5]");
+    if (!(poisson_ratio > -1.0 && poisson_ratio <= 0.5)) {  // K > 0 and G > 0
+        throw InvalidInput("layer.poisson_ratio", format_value(poisson_ratio), "must be in (-1, 0.5]");
     }
     const double panel_width = std::min(0.5, 0.25 * 2.0 * 3.141592653589793 / max_eta);
     const auto panels = static_cast<std::size_t>(std::ceil(wavenumber_cutoff / panel_width));

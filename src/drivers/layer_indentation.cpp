@@ -12,6 +12,7 @@
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
+#include "mdr/rheology/compressible.hpp"
 #include "layer_impact.hpp"
 #include "layer_stepping.hpp"
 
@@ -36,7 +37,7 @@ double largest_contact_radius(const ContactCase& contact_case) {
     return std::min(indenter.max_radius(), contact::layer_radius_margin * half_space);
 }
 
-void refuse(const std::string& key, const std::string& value, const std::string& what) {
+[[noreturn]] void refuse(const std::string& key, const std::string& value, const std::string& what) {
     throw InvalidInput(key, value, what + " is not built on a [layer] yet (issue 28)");
 }
 
@@ -50,6 +51,22 @@ void refuse(const std::string& key, const std::string& value, const std::string&
 }
 
 }  // namespace
+
+double layer_poisson_ratio(const ContactCase& contact_case) {
+    if (contact_case.tangential_exact) return 0.5;  // one incompressible body
+    if (!contact_case.bulk_material || !contact_case.shear_material) {
+        refuse("indenter.material", "[...]", "a deformable indenter (two bodies)");
+    }
+    const auto& bulk = *contact_case.bulk_material;
+    if (const auto ratio = rheology::constant_poisson_ratio(*contact_case.shear_material, bulk)) return *ratio;
+    const bool elastic_bulk = bulk.is_time_independent();
+    throw InvalidInput(elastic_bulk ? "material.K" : "material.bulk",
+                       elastic_bulk ? format_value(bulk.equilibrium_modulus()) : "[...]",
+                       "K(t)/G(t) must be constant in time on a [layer]: the layer's kernel depends on the Poisson "
+                       "ratio (docs/theory.md eq. L1) and would change in time, which its solution does not carry; "
+                       "give an elastic G with an elastic K, or a bulk relaxation proportional to the shear one (the "
+                       "same times, the moduli in one ratio)");
+}
 
 void validate_layer(const ContactCase& contact_case) {
     if (!contact_case.layer) return;
@@ -72,9 +89,7 @@ void validate_layer(const ContactCase& contact_case) {
     }
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
     if (!contact_case.snapshots.empty()) refuse("output.snapshots", "[...]", "a pressure snapshot");
-    if (!contact_case.tangential_exact) {
-        refuse("material", "(compressible or two bodies)", "a compressible layer or a deformable indenter");
-    }
+    layer_poisson_ratio(contact_case);
     if (contact_case.numerics.elements && *contact_case.numerics.elements > max_layer_nodes) {
         throw InvalidInput("numerics.elements", std::to_string(*contact_case.numerics.elements),
                            "must be <= " + std::to_string(max_layer_nodes) + " on a [layer] (Gauss nodes on the "
@@ -94,9 +109,10 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     result.numerics.elements = nodes;
     const double largest_radius = largest_contact_radius(contact_case);
     result.numerics.half_width = largest_radius;  // reported: the largest contact radius prepared for
-    // The incompressible layer (nu = 0.5), unit shear modulus: E* = 4 G (eq. 21).
+    // Unit effective shear modulus: E* = 2 G / (1 - nu) = 4 G_eff (eq. 21, 56), the kernel with the body's constant nu
+    // (eq. L1; `material` is G_eff(t) = G(t) / (2 (1 - nu)), so the layer separates as the incompressible one).
     constexpr double unit_plane_modulus = 4.0;
-    const contact::LayerContact layer(*contact_case.layer, 0.5, contact_case.indenter,
+    const contact::LayerContact layer(*contact_case.layer, layer_poisson_ratio(contact_case), contact_case.indenter,
                                       std::max(largest_radius, 1e-300), nodes);
     const double profile_depth = contact_case.indenter->equivalent(largest_radius);
     // The depth's scale under force control and in an impact: the profile's at the largest radius (a flat punch's

@@ -1,7 +1,7 @@
 #pragma once
-// The receding contact on an incompressible viscoelastic layer (docs/theory.md, "Layers", eq. L11 to L13, after
-// Ting 1966): the record of the loading phase, and for a time after it the loading position t1 whose contact radius
-// the receding contact has.
+// The receding contact on a viscoelastic layer of constant Poisson ratio (docs/theory.md, "Layers", eq. L11 to L13,
+// after Ting 1966): the record of the loading phase, and for a time after it the loading position t1 whose contact
+// radius the receding contact has.
 
 #include <cstddef>
 #include <vector>

@@ -35,8 +35,8 @@ struct LayerStep {
 /// A displacement- or force-controlled history on a layer, in steps.
 class LayerStepper {
 public:
-    /// Starts at `time`, untouched; `unit_modulus` is E* / G of the layer (4 incompressible), `largest_depth` [m]
-    /// the scale of the solves' tolerances.
+    /// Starts at `time`, untouched; `unit_modulus` is E* / G of the layer (4, G the effective modulus of eq. 56),
+    /// `largest_depth` [m] the scale of the solves' tolerances.
     LayerStepper(const rheology::Rheology& material, const contact::LayerContact& layer, double unit_modulus,
                  double time, double largest_depth);
     /// The committed state.

@@ -7,6 +7,7 @@
 #include <exception>
 #include <limits>
 
+#include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/error.hpp"
 #include "pre_contact_baseline.hpp"
 
@@ -119,10 +120,12 @@ std::vector<double> branch_moduli(const rheology::Rheology& material) {
     return moduli;
 }
 
-// Both cases on the half-space, or on layers of the same thickness and interface.
+// Both cases on the half-space, or on layers of the same thickness, interface and Poisson ratio (the kernel, eq. L1:
+// a modulus that moves nu moves the elastic force too, not only the branches).
 bool same_layer(const drivers::ContactCase& a, const drivers::ContactCase& b) {
     if (!a.layer || !b.layer) return !a.layer && !b.layer;
-    return a.layer->thickness == b.layer->thickness && a.layer->interface == b.layer->interface;
+    return a.layer->thickness == b.layer->thickness && a.layer->interface == b.layer->interface &&
+           drivers::layer_poisson_ratio(a) == drivers::layer_poisson_ratio(b);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "layer_model.hpp"
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/error.hpp"
 #include "ting_model.hpp"
 
@@ -67,8 +68,9 @@ std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_ca
 }
 
 // The layer model's force at the used points, plus the baseline, and its derivatives (layer_model.hpp). Throws
-// mdr::InvalidInput for what is not built on a layer: a force-driven curve, a compressible body or two bodies, and
-// (the element model, run when the layer model gives nullopt) a contact that grows again after it shrank.
+// mdr::InvalidInput for what is not built on a layer: a force-driven curve, a compressible body whose Poisson ratio
+// changes in time or two bodies (drivers::layer_poisson_ratio), and (the element model, run when the layer model
+// gives nullopt) a contact that grows again after it shrank.
 std::optional<ModelValues> layer_curve(const drivers::ContactCase& model_case, const CurveModel& prepared,
                                        double contact_depth, double baseline, ForwardModel forward_model,
                                        bool modulus_derivatives) {
@@ -76,10 +78,6 @@ std::optional<ModelValues> layer_curve(const drivers::ContactCase& model_case, c
         throw InvalidInput("fit.fitted", "\"depth\"",
                            "must be \"force\" on a [layer]: the layer's fit model is driven by the measured "
                            "depth; a force-driven fit (the depth fitted) is not built on a layer yet (issue 28)");
-    }
-    if (!model_case.tangential_exact) {
-        throw InvalidInput("material", "(compressible or two bodies)",
-                           "a fit on a [layer] needs an incompressible body and a rigid indenter");
     }
     if (forward_model == ForwardModel::elements) {
         throw InvalidInput("fit.data", prepared.curve->name,
@@ -91,8 +89,9 @@ std::optional<ModelValues> layer_curve(const drivers::ContactCase& model_case, c
     }
     const Curve& curve = *prepared.curve;
     const std::size_t nodes = model_case.numerics.elements.value_or(contact::default_layer_nodes);
-    auto response = layer_forces(model_case.material, *model_case.layer, model_case.indenter, curve.time, curve.depth,
-                                 contact_depth, nodes, modulus_derivatives);
+    auto response = layer_forces(model_case.material, *model_case.layer, drivers::layer_poisson_ratio(model_case),
+                                 model_case.indenter, curve.time, curve.depth, contact_depth, nodes,
+                                 modulus_derivatives);
     if (!response) return std::nullopt;
     return at_used_points(response->force, response->modulus_derivatives, prepared.used, baseline);
 }

@@ -21,8 +21,9 @@ constexpr std::size_t chebyshev_nodes = 40;
 
 }  // namespace
 
-LayerElasticForce::LayerElasticForce(const contact::Layer& layer, std::shared_ptr<const profile::Profile> indenter,
-                                     double largest_depth, std::size_t nodes)
+LayerElasticForce::LayerElasticForce(const contact::Layer& layer, double poisson_ratio,
+                                     std::shared_ptr<const profile::Profile> indenter, double largest_depth,
+                                     std::size_t nodes)
     : indenter_(std::move(indenter)), thickness_(layer.thickness) {
     if (!(largest_depth > 0.0)) return;
     const bool punch = indenter_->is_flat_punch();
@@ -30,14 +31,14 @@ LayerElasticForce::LayerElasticForce(const contact::Layer& layer, std::shared_pt
     const double widest = std::min(indenter_->max_radius(), contact::layer_radius_margin * largest_radius_);
     contact::check_layer_contact_radius(layer, widest);
     if (punch) {
-        const contact::LayerContact solver(layer, 0.5, indenter_, widest, nodes);
-        punch_force_ = 4.0 * solver.at_radius(widest).force;  // E* = 4 G (eq. 21)
+        const contact::LayerContact solver(layer, poisson_ratio, indenter_, widest, nodes);
+        punch_force_ = 4.0 * solver.at_radius(widest).force;  // E* = 4 G (eq. 21, 56)
         return;
     }
     // The nodes LayerContact takes for the widest contact, at every radius: Q(s) stays smooth (a count that changes
     // with the radius changes the force by its discretisation error).
     const auto fixed_nodes = std::max(nodes, 6 * static_cast<std::size_t>(std::ceil(widest / layer.thickness)));
-    const contact::LayerContact solver(layer, 0.5, indenter_, widest, fixed_nodes);
+    const contact::LayerContact solver(layer, poisson_ratio, indenter_, widest, fixed_nodes);
     // One solve per node at a given contact radius a (no root finding), the nodes Chebyshev's in log(1 + a/h) up to
     // the radius at largest_depth; s = the half-space's radius at each node's depth follows a closely, so the nodes
     // in log(1 + s/h) stay near Chebyshev's and interpolating there is as well conditioned.
@@ -48,7 +49,7 @@ LayerElasticForce::LayerElasticForce(const contact::Layer& layer, std::shared_pt
             solver.at_radius(layer.thickness * std::expm1(0.5 * top * (1.0 - std::cos(angle))));
         const double s = indenter_->contact_radius(state.depth);
         abscissas_.push_back(std::log1p(s / layer.thickness));
-        values_.push_back(std::log(4.0 * state.force / (state.depth * s)));  // E* = 4 G (eq. 21)
+        values_.push_back(std::log(4.0 * state.force / (state.depth * s)));  // E* = 4 G (eq. 21, 56)
     }
     // Barycentric weights 1 / prod_{k != j} (x_j - x_k), each factor scaled by 4 / (the nodes' span): no overflow.
     const double scale = 4.0 / (abscissas_.back() - abscissas_.front());
@@ -79,6 +80,7 @@ double LayerElasticForce::operator()(double depth) const {
 }
 
 std::optional<TingResponse> layer_forces(const rheology::Rheology& material, const contact::Layer& layer,
+                                         double poisson_ratio,
                                          const std::shared_ptr<const profile::Profile>& indenter,
                                          const std::vector<double>& time, const std::vector<double>& depth,
                                          double depth_shift, std::size_t nodes, bool modulus_derivatives) {
@@ -86,7 +88,7 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
     const auto [lowest, deepest] = std::minmax_element(depth.begin(), depth.end());
     const double noise = layer_dip_tolerance * (*deepest - *lowest);
     const double largest_depth = *deepest - depth_shift;
-    const LayerElasticForce elastic(layer, indenter, largest_depth, nodes);
+    const LayerElasticForce elastic(layer, poisson_ratio, indenter, largest_depth, nodes);
 
     const auto& terms = material.terms();
     TingResponse response;

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The forward model of depth-driven fits on a `[layer]` (internal to mdr_fit): the incompressible layer's elastic
+/// The forward model of depth-driven fits on a `[layer]` (internal to mdr_fit): the layer's elastic
 /// force at unit shear modulus, F_el(d), interpolated from a few exact solutions, and the force by Lee & Radok,
 /// F(t) = int_0^t G(t - s) dF_el(d(s)) (docs/theory.md, "Layers", "Fits on a layer").
 
@@ -23,17 +23,18 @@ namespace mdr::fit {
 /// more, is a contact that grows again after it shrank (refused).
 inline constexpr double layer_dip_tolerance = 1e-3;
 
-/// The elastic force at unit shear modulus (E* = 4, nu = 0.5) of an indenter on an incompressible layer for depths
-/// in [0, largest_depth]: Q = F_el(d) / (d s), s the half-space contact radius at the depth, log Q interpolated in
-/// log(1 + s/h) through exact layer solutions (contact::LayerContact::at_radius) at Chebyshev nodes of the contact
-/// radius (Q is analytic in s/h and tends to 8n/(n+1) for a power law of degree n). A flat punch: F_el = d F_unit.
+/// The elastic force at unit (effective) shear modulus (E* = 4, eq. 21 and 56) of an indenter on a layer of Poisson
+/// ratio nu for depths in [0, largest_depth]: Q = F_el(d) / (d s), s the half-space contact radius at the depth, log Q
+/// interpolated in log(1 + s/h) through exact layer solutions (contact::LayerContact::at_radius) at Chebyshev nodes of
+/// the contact radius (Q is analytic in s/h and tends to 8n/(n+1) for a power law of degree n). A flat punch: F_el = d
+/// F_unit.
 class LayerElasticForce {
 public:
     /// Solves the layer at the Chebyshev nodes with at least `nodes` Gauss nodes on the contact (LayerContact).
     /// Throws mdr::InvalidInput (key `layer.thickness`) when the contact may reach more than 100 thicknesses (as
     /// drivers::validate_layer), and where LayerContact does.
-    LayerElasticForce(const contact::Layer& layer, std::shared_ptr<const profile::Profile> indenter,
-                      double largest_depth, std::size_t nodes);
+    LayerElasticForce(const contact::Layer& layer, double poisson_ratio,
+                      std::shared_ptr<const profile::Profile> indenter, double largest_depth, std::size_t nodes);
     /// F_el(d) / G [m^2] for d <= largest_depth (0 for d <= 0).
     double operator()(double depth) const;
 
@@ -45,17 +46,17 @@ private:
     std::vector<double> abscissas_, values_, weights_;
 };
 
-/// The force [N] at each time of a depth history through (time[i], depth[i] - depth_shift) on an incompressible
-/// viscoelastic `layer`, F_el interpolated (LayerElasticForce) and linear in time between points, as
-/// drivers::run_layer_indentation on the same record (drivers::LoadingRecord): while the depth grows (or dips within
-/// layer_dip_tolerance), Lee-Radok (eq. L11, each Prony branch updated exactly); once it falls further, Ting's
-/// receding contact (t1 from int_{t1}^t G dd = 0, F = int_0^{t1} G dF_el, eq. L12, L13); zero once int_0^t G dd <= 0,
-/// the free surface recovering (eq. L14). nullopt where the contact would grow again after it shrank or the indenter
-/// reaches the recovering surface. modulus_derivatives (left out for a material with a dashpot): dF/dG_inf = F_el,
-/// dF/dG_k = h_k under Lee-Radok; under Ting those at fixed t1 plus the motion of t1 with the moduli (through the
-/// residual of eq. L12); zero after the loss of contact.
+/// The force [N] at each time of a depth history through (time[i], depth[i] - depth_shift) on a viscoelastic `layer` of
+/// constant Poisson ratio (`material` its effective G(t), eq. 56; 0.5: incompressible), F_el interpolated
+/// (LayerElasticForce) and linear in time between points, as drivers::run_layer_indentation on the same record
+/// (drivers::LoadingRecord): while the depth grows (or dips within layer_dip_tolerance), Lee-Radok (eq. L11, each Prony
+/// branch updated exactly); once it falls further, Ting's receding contact (t1 from int_{t1}^t G dd = 0, F = int_0^{t1}
+/// G dF_el, eq. L12, L13); zero once int_0^t G dd <= 0, the free surface recovering (eq. L14). nullopt where the
+/// contact would grow again after it shrank or the indenter reaches the recovering surface. modulus_derivatives (left
+/// out for a material with a dashpot): dF/dG_inf = F_el, dF/dG_k = h_k under Lee-Radok; under Ting those at fixed t1
+/// plus the motion of t1 with the moduli (through the residual of eq. L12); zero after the loss of contact.
 std::optional<TingResponse> layer_forces(const rheology::Rheology& material, const contact::Layer& layer,
-                                         const std::shared_ptr<const profile::Profile>& indenter,
+                                         double poisson_ratio, const std::shared_ptr<const profile::Profile>& indenter,
                                          const std::vector<double>& time, const std::vector<double>& depth,
                                          double depth_shift, std::size_t nodes, bool modulus_derivatives = true);
 

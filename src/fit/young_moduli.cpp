@@ -1,5 +1,13 @@
 #include "young_moduli.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "mdr/rheology/compressible.hpp"
 #include "mdr/rheology/material_models.hpp"
 
 namespace mdr::fit {
@@ -25,21 +33,73 @@ bool is_shear_modulus(const std::string& name) {
     return false;
 }
 
+namespace {
+
+// The body's Poisson ratio when constant in time: 0.5 for an incompressible body, rheology::constant_poisson_ratio for
+// one compressible body (two bodies with a bulk part, or a ratio that changes in time: none).
+std::optional<double> poisson_ratio_of(const drivers::ContactCase& model) {
+    if (!model.shear_material) return 0.5;
+    if (!model.bulk_material) return std::nullopt;
+    return rheology::constant_poisson_ratio(*model.shear_material, *model.bulk_material);
+}
+
+// d nu / d value_k at the fitted values by central differences of the model (a free G beside a fixed K moves nu);
+// NaN where a neighbouring model has no constant nu or cannot be built.
+std::vector<double> poisson_ratio_gradient(const FitProblem& problem, const std::vector<double>& values) {
+    std::vector<double> gradient(values.size(), 0.0);
+    for (std::size_t k = 0; k < values.size(); ++k) {
+        const double step = 1e-6 * std::max(std::abs(values[k]), std::numeric_limits<double>::min());
+        auto above = values, below = values;
+        above[k] += step;
+        below[k] -= step;
+        try {
+            const auto upper = poisson_ratio_of(problem.model(above)), lower = poisson_ratio_of(problem.model(below));
+            gradient[k] = upper && lower ? (*upper - *lower) / (2.0 * step) : std::numeric_limits<double>::quiet_NaN();
+        } catch (const std::exception&) {
+            gradient[k] = std::numeric_limits<double>::quiet_NaN();
+        }
+    }
+    return gradient;
+}
+
+}  // namespace
+
 void describe_young_moduli(const FitProblem& problem, FitResult& result) {
     std::vector<std::size_t> moduli;
     for (std::size_t j = 0; j < result.names.size(); ++j) {
         if (is_shear_modulus(result.names[j])) moduli.push_back(j);
     }
     if (moduli.empty()) return;
-    if (problem.model(result.values).shear_material) {
-        result.flags.push_back("young_moduli: not reported: the body is compressible (a bulk part), its Poisson ratio "
-                               "changes with time; E = 2 (1 + nu) G needs nu");
+    const auto poisson_ratio = poisson_ratio_of(problem.model(result.values));
+    if (!poisson_ratio) {
+        result.flags.push_back("young_moduli: not reported: the body is compressible (a bulk part), its Poisson "
+                               "ratio changes with time; E = 2 (1 + nu) G needs nu");
         return;
     }
-    constexpr double poisson_ratio = 0.5;  // incompressible
+    const double factor = 2.0 * (1.0 + *poisson_ratio);
+    if (*poisson_ratio == 0.5 || result.correlation.size() != result.values.size()) {
+        for (std::size_t j : moduli) {
+            result.young_moduli.push_back({result.names[j], factor * result.values[j],
+                                           factor * result.standard_errors[j]});
+        }
+        return;
+    }
+    // A compressible body: nu may move with the free values (a free G beside a fixed K), so E_j = 2 (1 + nu) G_j has
+    // the gradient 2 (1 + nu) e_j + 2 G_j grad nu, and its error sqrt(g^T C g), C = the covariance of the values.
+    const auto gradient = poisson_ratio_gradient(problem, result.values);
     for (std::size_t j : moduli) {
-        const double factor = 2.0 * (1.0 + poisson_ratio);
-        result.young_moduli.push_back({result.names[j], factor * result.values[j], factor * result.standard_errors[j]});
+        double variance = 0.0;
+        for (std::size_t k = 0; k < result.values.size(); ++k) {
+            const double g_k = (k == j ? factor : 0.0) + 2.0 * result.values[j] * gradient[k];
+            for (std::size_t l = 0; l < result.values.size(); ++l) {
+                const double g_l = (l == j ? factor : 0.0) + 2.0 * result.values[j] * gradient[l];
+                if (g_k == 0.0 || g_l == 0.0) continue;  // a value E does not depend on (its error may be NaN)
+                const double covariance =
+                    result.correlation[k][l] * result.standard_errors[k] * result.standard_errors[l];
+                variance += g_k * g_l * covariance;
+            }
+        }
+        result.young_moduli.push_back({result.names[j], factor * result.values[j], std::sqrt(std::max(variance, 0.0))});
     }
 }
 

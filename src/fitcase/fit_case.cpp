@@ -63,6 +63,22 @@ void check_per_key_tables(const toml::table& fit, const std::vector<std::string>
     }
 }
 
+// On a [layer] a viscoelastic compressible body keeps the constant Poisson ratio its kernel needs (docs/theory.md
+// eq. L16, K(t) = c G(t)) only with its moduli and times as given: a free key of [material] alone would change
+// K(t)/G(t) in time at the first trial value. An elastic G beside an elastic K keeps it for any values.
+void check_layer_poisson_ratio_kept(const drivers::ContactCase& model, const std::vector<std::string>& keys) {
+    if (!model.layer || !model.bulk_material || model.bulk_material->is_time_independent()) return;
+    for (const auto& key : keys) {
+        if (key.rfind("material.", 0) == 0) {
+            throw InvalidInput("fit.free", key,
+                               "cannot be free on a [layer] with a viscoelastic bulk part: the layer needs K(t)/G(t) "
+                               "constant in time (its kernel depends on the Poisson ratio), which one free modulus or "
+                               "time would change; fix the material (layer.thickness may be free), or give an elastic "
+                               "G with K");
+        }
+    }
+}
+
 fit::FreeParameter read_parameter(const toml::table& fit, const io::CaseTemplate& model, const std::string& key) {
     if (key.rfind("material.", 0) != 0 && key.rfind("indenter.", 0) != 0 && key != "layer.thickness") {
         throw InvalidInput("fit.free", key, "must name a number of [material] or [indenter], or layer.thickness");
@@ -153,11 +169,13 @@ FitCase parse_fit_case(io::CaseTemplate model, const std::filesystem::path& case
     } else {
         fit_case.model.set_table("load", placeholder_load);
     }
-    fit_case.units = fit_case.model.build().units;  // the model's own rules; its unit system
+    const drivers::ContactCase built = fit_case.model.build();  // the model's own rules
+    fit_case.units = built.units;                                 // its unit system
     const io::UnitSystem& units = io::unit_system(fit_case.units);
 
     const auto keys = free_keys(fit_table, !fit_case.model_choice.empty());
     check_candidate_free_keys(fit_case.model_choice, keys);
+    check_layer_poisson_ratio_kept(built, keys);
     check_per_key_tables(fit_table, keys);
     for (const auto& key : keys) fit_case.parameters.push_back(read_parameter(fit_table, fit_case.model, key));
 

@@ -344,6 +344,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
                                       .snapshots = std::move(snapshots),
                                       .numerics = numerics,
                                       .shear_material = std::move(contact.shear_material),
+                                      .bulk_material = std::move(contact.bulk_material),
                                       .tangential = std::move(tangential),
                                       .tangential_exact = contact.tangential_exact,
                                       .material_origin = std::move(contact.origin),
@@ -427,8 +428,12 @@ std::string describe(const drivers::ContactCase& contact_case) {
     }
     const std::string body = rheology + (contact_case.layer ? " layer" : " half-space");
     if (const auto& layer = contact_case.layer) {
-        load = fmt::format("{:.4g} {} thick, {} on a rigid substrate, {}", layer->thickness, units.length,
-                           contact::interface_name(layer->interface), load);
+        // A compressible layer's constant Poisson ratio, which sets its kernel (docs/theory.md eq. L16).
+        const std::string poisson = contact_case.bulk_material
+                                        ? fmt::format(", nu = {:.4g}", drivers::layer_poisson_ratio(contact_case))
+                                        : "";
+        load = fmt::format("{:.4g} {} thick, {} on a rigid substrate{}, {}", layer->thickness, units.length,
+                           contact::interface_name(layer->interface), poisson, load);
     }
     return fmt::format("{}{} on {}{} (G(0+) = {:.4g} {}, G(inf) = {:.4g} {}, {} branch(es)), {}{}",
                        contact_case.title.empty() ? "" : fmt::format("\"{}\": ", message_line(contact_case.title)),

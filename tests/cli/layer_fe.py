@@ -1,7 +1,9 @@
-"""An independent finite-element model of the incompressible elastic layer on a rigid substrate (numpy/scipy only,
-no mdr code): axisymmetric Taylor-Hood elements (biquadratic displacement, bilinear continuous pressure: the mixed
-u-p form, exact incompressibility, stable by the inf-sup condition), a frictionless rigid sphere by an active set on
-the surface nodes. Used by test_layer_fe.py to check mdr's layer (docs/theory.md section 4c)."""
+"""An independent finite-element model of the elastic layer on a rigid substrate (numpy/scipy only, no mdr code):
+axisymmetric Taylor-Hood elements (biquadratic displacement, bilinear continuous pressure: the mixed u-p form, exact
+incompressibility at nu = 0.5, stable by the inf-sup condition; for nu < 0.5 the same fields with the pressure's
+own law div u + p / lambda = 0, lambda = 2 G nu / (1 - 2 nu), weakly: a block -M / lambda of the pressure mass matrix
+M, the standard mixed form of the compressible body), a frictionless rigid sphere by an active set on the surface
+nodes. Used by test_layer_fe.py to check mdr's layer (docs/theory.md section 4c)."""
 from __future__ import annotations
 
 import numpy as np
@@ -40,12 +42,23 @@ def graded(length, fine_length, count_fine, count_coarse):
     return np.concatenate([uniform, fine_length + np.cumsum(widths)])
 
 
-class LayerFE:
-    """Taylor-Hood Q9/Q4 (biquadratic displacement, bilinear continuous pressure) for the incompressible layer
-    0 <= z <= h, 0 <= r <= r_max; bottom bonded (u = 0) or sliding (u_z = 0); u = 0 at r_max; u_r = 0 on the axis;
-    the top surface z = h free except where an indenter prescribes u_z."""
+def graded_through(point, spacing, fine_length, length, count_coarse):
+    """Vertices: uniform up to about fine_length with a spacing of at most `spacing` that puts a vertex on `point`
+    (0 < point <= fine_length), then count_coarse geometric ones to `length` (graded)."""
+    step = point / np.ceil(point / spacing)
+    count_fine = int(np.ceil(fine_length / step - 1e-9))
+    return graded(length, count_fine * step, count_fine, count_coarse)
 
-    def __init__(self, r_vertices, z_vertices, interface="bonded", shear_modulus=1.0):
+
+class LayerFE:
+    """Taylor-Hood Q9/Q4 (biquadratic displacement, bilinear continuous pressure) for the layer 0 <= z <= h,
+    0 <= r <= r_max; bottom bonded (u = 0) or sliding (u_z = 0); u = 0 at r_max; u_r = 0 on the axis; the top surface
+    z = h free except where an indenter prescribes u_z. Stress 2 G eps - p I with div u = 0 (nu = 0.5) or
+    div u + p / lambda = 0 (nu < 0.5: sigma = 2 G eps + lambda div u I, the displacement form)."""
+
+    def __init__(self, r_vertices, z_vertices, interface="bonded", shear_modulus=1.0, poisson_ratio=0.5):
+        # 1 / lambda, lambda = 2 G nu / (1 - 2 nu) the Lame constant: 0 for the incompressible layer.
+        compliance = (1.0 - 2.0 * poisson_ratio) / (2.0 * shear_modulus * poisson_ratio) if poisson_ratio < 0.5 else 0.0
         self.rv, self.zv = np.asarray(r_vertices, float), np.asarray(z_vertices, float)
         nr, nz = len(self.rv) - 1, len(self.zv) - 1
         # displacement nodes: vertices and midpoints
@@ -68,6 +81,7 @@ class LayerFE:
                 z0, z1 = self.zv[ez], self.zv[ez + 1]
                 ke = np.zeros((18, 18))
                 be = np.zeros((4, 18))
+                me = np.zeros((4, 4))
                 for gx, wx in zip(GAUSS_X, GAUSS_W):
                     nx, dx = quadratic(gx)
                     lx = linear(gx)
@@ -92,12 +106,14 @@ class LayerFE:
                         div = bm[0] + bm[1] + bm[2]
                         pn = np.outer(lx, ly).ravel()
                         be += -weight * np.outer(pn, div)
+                        me += -weight * compliance * np.outer(pn, pn)
                 unodes = [node(2 * er + a, 2 * ez + b) for a in range(3) for b in range(3)]
                 udofs = np.array([[2 * k, 2 * k + 1] for k in unodes]).ravel()
                 pdofs = 2 * n_u + np.array([pnode(er + a, ez + b) for a in range(2) for b in range(2)])
                 rows.append(np.repeat(udofs, 18)); cols.append(np.tile(udofs, 18)); vals.append(ke.ravel())
                 rows.append(np.repeat(pdofs, 18)); cols.append(np.tile(udofs, 4)); vals.append(be.ravel())
                 rows.append(np.repeat(udofs, 4)); cols.append(np.tile(pdofs, 18)); vals.append(be.T.ravel())
+                rows.append(np.repeat(pdofs, 4)); cols.append(np.tile(pdofs, 4)); vals.append(me.ravel())
         size = 2 * n_u + self.n_p
         self.matrix = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
                                     shape=(size, size))
@@ -144,6 +160,16 @@ class LayerFE:
         solution = np.zeros(size)
         solution[free] = spla.spsolve(self.matrix[free][:, free].tocsc(), load[free])
         return solution[self.top]
+
+    def sphere_at_radius(self, radius, depth, contact_radius):
+        """The force of a frictionless rigid sphere at depth d in contact exactly over the surface nodes r <=
+        contact_radius (a vertex of the mesh): a mixed boundary-value problem with no active set, whose edge lies
+        where it is put. At the force-free edge of the exact solution, dF/da = 0 at fixed d, so a contact radius
+        from another solution, exact to e, changes the force at second order in e."""
+        gap = lambda r: radius - np.sqrt(np.maximum(radius ** 2 - r ** 2, 0.0))  # noqa: E731
+        inside = [i for i in range(self.mr) if self.r[i] <= contact_radius * (1.0 + 1e-12)]
+        _, reactions = self.solve({i: -(depth - gap(self.r[i])) for i in inside})
+        return -sum(reactions.values())
 
     def sphere(self, radius, depth, max_iterations=50):
         """Frictionless rigid sphere at depth d: active set on the surface nodes. Returns (force, contact radius)."""

@@ -7,11 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <numbers>
 #include <string>
 #include <utility>
 
+#include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/fit.hpp"
@@ -187,6 +189,47 @@ TEST(FitLayer, ADepthThatReachesTheThicknessIsFlagged) {
         };
         EXPECT_EQ(has_thickness_flag(fit::fit(problem)), thickness_fixed < 1.5e-6) << thickness_fixed;
     }
+}
+
+TEST(FitLayer, CompressibleElasticLayerAndItsYoungsModulus) {
+    // G free beside a fixed elastic K = 2e3: nu = (3K - 2G) / (2 (3K + G)) moves with G, and with it the kernel. The
+    // data: F = E* F_1(d) of the elastic layer solved at each depth (contact::LayerContact, E* = 2G/(1 - nu), nu =
+    // 4/14 at G = 1e3), not the fit's interpolated model. The reported E = 2 (1 + nu) G = 9 K G / (3K + G), with its
+    // error through nu's dependence on G.
+    constexpr double G = 1e3, K = 2e3, nu = (3.0 * K - 2.0 * G) / (2.0 * (3.0 * K + G)), R = 1e-5;
+    const auto text = [](double shear_modulus) {
+        char material[128];
+        std::snprintf(material, sizeof material, "model = \"elastic\"\nG = %.17g\nK = %.17g\n", shear_modulus, K);
+        return "[material]\n" + std::string(material) +
+               "[indenter]\nshape = \"sphere\"\nR = 1.0e-5\n[load]\ncontrol = \"displacement\"\n"
+               "history = [[0.0, 0.0], [1.0, 1.5e-6]]\n[layer]\nthickness = 2.0e-6\ninterface = \"bonded\"\n";
+    };
+    const contact::LayerContact layer({thickness, contact::LayerInterface::bonded}, nu, profile::make_sphere(R), 1e-5);
+    fit::Curve curve;
+    curve.name = "compressible";
+    double radius = 0.0;
+    for (std::size_t i = 0; i <= 200; ++i) {
+        const double d = 1.5e-6 * static_cast<double>(i) / 200.0;
+        const auto state = layer.at_depth(d, radius);
+        radius = state.contact_radius;
+        curve.time.push_back(5e-3 * static_cast<double>(i));
+        curve.depth.push_back(d);
+        curve.force.push_back(2.0 * G / (1.0 - nu) * state.force);
+    }
+    fit::FitProblem problem;
+    problem.model = [text](const std::vector<double>& values) { return io::parse_case(text(values[0])); };
+    problem.parameters = {{"material.G", 3e3, 1.0, 1e6}};
+    problem.curves = {std::move(curve)};
+    problem.settings.contact_point = fit::ContactPointMode::fixed;
+    problem.settings.baseline = fit::BaselineMode::fixed;
+    const auto result = fit::fit(problem);
+    ASSERT_TRUE(result.converged) << result.status;
+    EXPECT_NEAR(result.values[0] / G, 1.0, 1e-6);
+    ASSERT_EQ(result.young_moduli.size(), 1u);
+    EXPECT_NEAR(result.young_moduli[0].value / (9.0 * K * G / (3.0 * K + G)), 1.0, 1e-6);
+    // Its error through dE/dG = 27 K^2 / (3K + G)^2 (nu moves with G), not 2 (1 + nu) (nu held).
+    const double slope = 27.0 * K * K / ((3.0 * K + G) * (3.0 * K + G));
+    EXPECT_NEAR(result.young_moduli[0].standard_error / (slope * result.standard_errors[0]), 1.0, 1e-4);
 }
 
 TEST(FitLayer, WhatIsNotBuiltOnALayerIsRefusedNamingTheKey) {

@@ -28,7 +28,7 @@ std::string interface_name(LayerInterface interface);
 /// displacement under an axisymmetric pressure with Hankel transform P(xi) is w(r) = (2/E*) int_0^inf P(xi) L(xi h)
 /// J0(xi r) dxi (L = 1: the half-space). Bonded (kappa = 3 - 4 nu): L = (2 kappa sinh 2u - 4u) / (2 kappa cosh 2u +
 /// 1 + kappa^2 + 4u^2); sliding: L = (cosh 2u - 1) / (sinh 2u + 2u), any nu (docs/theory.md eq. L1, L2). Written
-/// with exp(-2u) so that it neither overflows nor cancels; 0 <= nu <= 0.5.
+/// with exp(-2u) so that it neither overflows nor cancels; -1 < nu <= 0.5.
 double layer_compliance_defect(LayerInterface interface, double poisson_ratio, double u);
 
 /// The kernel k(eta) = int_0^inf (1 - L(u)) cos(u eta) du of the layer (K(y) = k(y/h)/h in the Fredholm equation

@@ -62,6 +62,9 @@ struct ContactCase {
     std::vector<double> snapshots{};                    ///< times of pressure profiles [s]
     NumericsOptions numerics{};                         ///< `[numerics]`
     std::optional<rheology::Rheology> shear_material{}; ///< the shear part alone, when a bulk part was folded in
+    /// K(t) of one compressible body (rheology::ContactMaterial::bulk_material); absent for an incompressible body and
+    /// for two bodies. Set with `shear_material` (its G(t)) and `material` (eq. 56 of the two).
+    std::optional<rheology::Rheology> bulk_material{};
     std::optional<TangentialLoad> tangential{};         ///< `[tangential]`, superimposed tangential loading
     /// False when `material` is a compressible body's or two bodies' (rheology::contact_material sets it): the MDR
     /// then maps the normal problem only exactly (section 7).

@@ -1,33 +1,43 @@
 #pragma once
 /// \file
 /// Indentation of a viscoelastic layer on a rigid substrate (`[layer]`): displacement, force or spring control,
-/// impact, incompressible layer, a contact that grows and then recedes (docs/theory.md, "Layers").
+/// impact, an incompressible layer or a compressible one of constant Poisson ratio, a contact that grows and then
+/// recedes (docs/theory.md, "Layers").
 
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/indentation.hpp"
 
 namespace mdr::drivers {
 
+/// The Poisson ratio of the layer's body, on which its kernel depends (docs/theory.md eq. L1): 0.5 for one
+/// incompressible body; for one compressible body whose bulk relaxation is proportional to its shear relaxation
+/// (K(t)/G(t) constant: an elastic G with an elastic K, or the same relaxation times with the moduli in one ratio),
+/// rheology::constant_poisson_ratio. Throws mdr::InvalidInput naming `material.K` (an elastic bulk modulus) or
+/// `material.bulk` when K(t)/G(t) changes in time (the layer's kernel would change in time, and the layer no longer
+/// separates in time and space, eq. L11-L14), and `indenter.material` for a deformable indenter.
+double layer_poisson_ratio(const ContactCase& contact_case);
+
 /// Throws mdr::InvalidInput (key `layer` or the offending key, its value and the rule) for a case with a `[layer]`
 /// that needs what is not built on a layer yet: Shore control, an oblique impact, a parallel dashpot under force or
 /// spring control or in an impact, a force pause, a harmonic part, tangential loading, snapshots, a compressible
-/// layer or a deformable indenter. Does nothing for a case without a layer.
+/// body whose Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio). Does nothing for a case
+/// without a layer.
 void validate_layer(const ContactCase& contact_case);
 
 /// Runs a displacement-, force- or spring-controlled case on its layer: the elastic layer's force F_el(d) at unit
-/// shear modulus (contact::LayerContact, E* = 4 for an incompressible layer) on the time grid of the half-space
-/// driver. While the contact grows, F(t) = int_0^t G(t - t') dF_el(t') and a(t) = a_el(d(t)) (Lee & Radok 1960; eq.
-/// L11); once it recedes, Ting's solution (Ting 1966; eq. L12, L13): a(t) = a_el(d(t1)) with int_{t1}^t G(t - t')
-/// dd = 0 and F(t) = int_0^t1 G(t - t') dF_el(t'), exact as the incompressible layer's kernel does not depend on
-/// the modulus; each Prony branch is updated exactly for F_el and d linear over a step (LayerStepper). Once the
-/// contact is lost (t1 = the start) the force is zero and the free surface at the centre recovers (eq. L14); under
-/// force control the indenter rides on it, under spring control it hangs at the base z. Force control solves the
-/// depth of each step by numerics::monotone_root (the force increases with it in either phase), spring control
-/// likewise F(d) + k d = k z (F = k (z - d)). An impact runs run_layer_impact (src/drivers/layer_impact.hpp).
-/// `numerics.elements` is the least number of Gauss nodes over the contact (default contact::default_layer_nodes).
-/// Throws as validate_layer; for step observers (not built on a layer yet); and, naming `load.history`, when the
-/// contact would grow again after it shrank (a reload, creep under a held force, or the indenter or the spring's
-/// base reaching the recovering surface: outside Ting's solution, not built yet).
+/// effective shear modulus (contact::LayerContact, E* = 4, the kernel of layer_poisson_ratio) on the time grid of the
+/// half-space driver. While the contact grows, F(t) = int_0^t G(t - t') dF_el(t') and a(t) = a_el(d(t)) (Lee & Radok
+/// 1960; eq. L11); once it recedes, Ting's solution (Ting 1966; eq. L12, L13): a(t) = a_el(d(t1)) with
+/// int_{t1}^t G(t - t') dd = 0 and F(t) = int_0^t1 G(t - t') dF_el(t'), exact as the layer's kernel (of a constant
+/// nu) does not change in time; each Prony branch is updated exactly for F_el and d linear over a step
+/// (LayerStepper). Once the contact is lost (t1 = the start) the force is zero and the free surface at the centre
+/// recovers (eq. L14); under force control the indenter rides on it, under spring control it hangs at the base z.
+/// Force control solves the depth of each step by numerics::monotone_root (the force increases with it in either
+/// phase), spring control likewise F(d) + k d = k z (F = k (z - d)). An impact runs run_layer_impact
+/// (src/drivers/layer_impact.hpp). `numerics.elements` is the least number of Gauss nodes over the contact (default
+/// contact::default_layer_nodes). Throws as validate_layer; for step observers (not built on a layer yet); and,
+/// naming `load.history`, when the contact would grow again after it shrank (a reload, creep under a held force, or
+/// the indenter or the spring's base reaching the recovering surface: outside Ting's solution, not built yet).
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {},
                                         const StepObservers& observers = {});
 

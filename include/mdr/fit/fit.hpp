@@ -189,8 +189,9 @@ struct Undetermined {
     std::string reason;  ///< one line, e.g. "tau1 = 300 s is beyond 10 x the record (30 s)"
 };
 
-/// Young's modulus of a fitted shear modulus: E = 2 (1 + nu) G, nu = 0.5 (the case's body is incompressible), so
-/// E = 3 G and its standard error 3 times G's.
+/// Young's modulus of a fitted shear modulus: E = 2 (1 + nu) G, nu = 0.5 for an incompressible body (E = 3 G), the
+/// body's constant nu for a compressible one with K(t)/G(t) constant; its standard error 3 times G's, or for a
+/// compressible body propagated through the covariance of the fitted values, with nu's dependence on them.
 struct YoungModulus {
     std::string name;             ///< the fitted shear modulus' key, e.g. `material.G_inf`
     double value = 0.0;           ///< E [Pa]
@@ -218,7 +219,7 @@ struct FitResult {
     std::vector<std::vector<double>> correlation;  ///< correlation matrix of the free parameters
     std::vector<Undetermined> undetermined;  ///< parameters the data cannot determine
     /// E for every fitted shear modulus (keys whose registry unit is Pa, see young_moduli), in the order of `names`;
-    /// empty for a compressible body (its nu changes with time), which a flag then says.
+    /// empty for a compressible body whose nu changes with time, which a flag then says.
     std::vector<YoungModulus> young_moduli;
     /// The fit's warnings, one line each (fit.json `flags`), e.g. a model that cannot follow the data; each curve's
     /// own are in CurveFit::flags.

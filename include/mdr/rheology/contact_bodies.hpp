@@ -22,6 +22,9 @@ struct ContactMaterial {
     Rheology material;
     /// The shear materials alone (in series for two bodies) when a bulk part was folded into `material`.
     std::optional<Rheology> shear_material;
+    /// The bulk material K(t) of one compressible body (with `shear_material` its G(t)); absent for an incompressible
+    /// body and for two bodies.
+    std::optional<Rheology> bulk_material;
     MaterialOrigin origin;  ///< what `material` stands for
     /// Section 6 maps the tangential problem exactly for one incompressible body under a rigid indenter only; a
     /// compressible body or a second body couples the normal and tangential problems (section 7).

@@ -41,7 +41,7 @@ TEST(LayerModel, InterpolationMatchesTheLayerSolutionAtEveryDepth) {
         {"thin sphere", profile::make_sphere(1e-5), {4e-7, contact::LayerInterface::bonded}, 1.6e-6, 5e-7},
     };
     for (const auto& setting : settings) {
-        const LayerElasticForce elastic(setting.layer, setting.indenter, setting.largest_depth,
+        const LayerElasticForce elastic(setting.layer, 0.5, setting.indenter, setting.largest_depth,
                                         contact::default_layer_nodes);
         // The same Gauss nodes as the model takes (6 per thickness of its widest contact, at least 48): the
         // difference is the interpolation's alone.
@@ -91,8 +91,8 @@ TEST(LayerModel, ForcesAreTheLayerDriversOnItsOwnSteps) {
         const auto result = drivers::run_case(contact_case);
         std::vector<double> shifted(result.depth);
         for (double& value : shifted) value += 1e-7;
-        const auto model = layer_forces(contact_case.material, *contact_case.layer, contact_case.indenter, result.time,
-                                        shifted, 1e-7, contact::default_layer_nodes);
+        const auto model = layer_forces(contact_case.material, *contact_case.layer, 0.5, contact_case.indenter,
+                                        result.time, shifted, 1e-7, contact::default_layer_nodes);
         ASSERT_TRUE(model.has_value());
         const double peak = *std::max_element(result.force.begin(), result.force.end());
         for (std::size_t i = 0; i < result.time.size(); ++i) {
@@ -131,8 +131,8 @@ TEST(LayerModel, UnloadingIsTheLayerDriversRecedingContact) {
     for (const std::string shape : {"shape = \"sphere\"\nR = 1.0e-5", "shape = \"cone\"\nhalf_angle_deg = 35.0"}) {
         const auto contact_case = io::parse_case(load_unload_case(shape));
         const auto result = drivers::run_case(contact_case);
-        const auto model = layer_forces(contact_case.material, *contact_case.layer, contact_case.indenter, result.time,
-                                        result.depth, 0.0, contact::default_layer_nodes);
+        const auto model = layer_forces(contact_case.material, *contact_case.layer, 0.5, contact_case.indenter,
+                                        result.time, result.depth, 0.0, contact::default_layer_nodes);
         ASSERT_TRUE(model.has_value()) << shape;
         const double peak = *std::max_element(result.force.begin(), result.force.end());
         ASSERT_EQ(model->modulus_derivatives.size(), 2U);
@@ -144,8 +144,8 @@ TEST(LayerModel, UnloadingIsTheLayerDriversRecedingContact) {
             const std::string start = "G_inf = 1.0e3\nG1 = 3.0e3";
             text.replace(text.find(start), start.size(), moduli.str());
             const auto material = io::parse_case(text).material;
-            return layer_forces(material, *contact_case.layer, contact_case.indenter, result.time, result.depth, 0.0,
-                                contact::default_layer_nodes)->force;
+            return layer_forces(material, *contact_case.layer, 0.5, contact_case.indenter, result.time, result.depth,
+                                0.0, contact::default_layer_nodes)->force;
         };
         const double h = 1e-4;
         const auto up_inf = with(1e3 * (1 + h), 3e3), down_inf = with(1e3 * (1 - h), 3e3);
@@ -180,7 +180,7 @@ TEST(LayerModel, AnUnloadingSampledFinerThanTheNoiseIsTingsFromItsStart) {
     const auto contact_case = io::parse_case(load_unload_case("shape = \"sphere\"\nR = 1.0e-5",
                                                               "[numerics]\ntime_step = 2.0e-4\n"));
     const auto result = drivers::run_case(contact_case);
-    const auto model = layer_forces(contact_case.material, *contact_case.layer, contact_case.indenter, result.time,
+    const auto model = layer_forces(contact_case.material, *contact_case.layer, 0.5, contact_case.indenter, result.time,
                                     result.depth, 0.0, contact::default_layer_nodes);
     ASSERT_TRUE(model.has_value());
     const double peak = *std::max_element(result.force.begin(), result.force.end());
@@ -202,11 +202,11 @@ TEST(LayerModel, AHoldAfterAnUnloadingIsRefusedAsInTheDriver) {
         time.push_back(0.01 * i);
         depth.push_back(i <= 100 ? 1e-8 * i : i <= 150 ? 1e-6 : i <= 200 ? 1e-6 - 8e-9 * (i - 150) : 0.6e-6);
     }
-    EXPECT_FALSE(layer_forces(contact_case.material, *contact_case.layer, contact_case.indenter, time, depth, 0.0,
+    EXPECT_FALSE(layer_forces(contact_case.material, *contact_case.layer, 0.5, contact_case.indenter, time, depth, 0.0,
                               contact::default_layer_nodes).has_value());
     depth.resize(201);
     time.resize(201);
-    EXPECT_TRUE(layer_forces(contact_case.material, *contact_case.layer, contact_case.indenter, time, depth, 0.0,
+    EXPECT_TRUE(layer_forces(contact_case.material, *contact_case.layer, 0.5, contact_case.indenter, time, depth, 0.0,
                              contact::default_layer_nodes).has_value());
 }
 
@@ -221,8 +221,8 @@ TEST(LayerModel, ADepthThatRisesAgainAfterFallingBeyondTheNoiseIsRefused) {
         depth.push_back(1e-8 * std::min(i, 50));
     }
     const auto forces = [&](const std::vector<double>& history, double shift) {
-        return layer_forces(contact_case.material, *contact_case.layer, contact_case.indenter, time, history, shift,
-                            contact::default_layer_nodes);
+        return layer_forces(contact_case.material, *contact_case.layer, 0.5, contact_case.indenter, time, history,
+                            shift, contact::default_layer_nodes);
     };
     auto noisy = depth;
     noisy[70] -= 0.9 * layer_dip_tolerance * 5e-7;
@@ -254,8 +254,8 @@ TEST(LayerModel, ADipWithinTheNoiseKeepsTheContactOnAStronglyRelaxingMaterial) {
         depth.push_back(i == 0 ? 0.0 : i <= 60 ? 1e-8 : 1e-8 + 4.9e-7 * (i - 61) / 39.0);
     }
     depth[61] = 1e-8 - 0.9 * layer_dip_tolerance * 5e-7;
-    const auto forces = layer_forces(contact_case.material, *contact_case.layer, contact_case.indenter, time, depth,
-                                     0.0, contact::default_layer_nodes);
+    const auto forces = layer_forces(contact_case.material, *contact_case.layer, 0.5, contact_case.indenter, time,
+                                     depth, 0.0, contact::default_layer_nodes);
     ASSERT_TRUE(forces.has_value());
     EXPECT_GT(forces->force[100], 0.0);
 }
@@ -265,7 +265,7 @@ TEST(LayerModel, AContactOfMoreThanAHundredThicknessesIsRefused) {
     // 18 000, a 2.6 GB matrix): refused at once as drivers::validate_layer refuses it, naming the key.
     const auto sphere = std::shared_ptr<const profile::Profile>(profile::make_sphere(1e-5));
     try {
-        const LayerElasticForce elastic({1e-9, contact::LayerInterface::bonded}, sphere, 1e-6, 48);
+        const LayerElasticForce elastic({1e-9, contact::LayerInterface::bonded}, 0.5, sphere, 1e-6, 48);
         FAIL() << "not refused";
     } catch (const InvalidInput& error) {
         EXPECT_EQ(error.key(), "layer.thickness");

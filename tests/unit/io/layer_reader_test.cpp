@@ -35,6 +35,15 @@ TEST(LayerReader, ReadsThicknessAndInterface) {
                                      "R = 1.0e-5\n[load]\n" + loading).layer);
 }
 
+TEST(LayerReader, DescribesACompressibleLayersPoissonRatio) {
+    // K = 2 G: nu = (3K - 2G) / (2 (3K + G)) = 4/14, the ratio that sets the layer's kernel.
+    const auto compressible = mdr::io::parse_case(with(loading, "thickness = 5.0e-6\ninterface = \"bonded\"\n",
+                                                       "K = 2.0e3\n"));
+    EXPECT_NE(mdr::io::describe(compressible).find("bonded on a rigid substrate, nu = 0.2857,"), std::string::npos)
+        << mdr::io::describe(compressible);
+    EXPECT_EQ(mdr::io::describe(mdr::io::parse_case(with(loading, bonded))).find("nu ="), std::string::npos);
+}
+
 TEST(LayerReader, RefusesBadValues) {
     EXPECT_EQ(refused_key(with(loading, "thickness = 0.0\ninterface = \"bonded\"\n")), "layer.thickness");
     EXPECT_EQ(refused_key(with(loading, "thickness = 1.0e-6\ninterface = \"glued\"\n")), "layer.interface");
@@ -67,7 +76,16 @@ TEST(LayerReader, RefusesWhatIsNotBuiltOnALayer) {
                                  "model = \"elastic\"\nG = 1.0e6\n")),
               "load.tangential_velocity");
     EXPECT_EQ(refused_key(impact("", "model = \"kelvin_voigt\"\nG = 1.0e6\neta = 1.0\n")), "material.eta");
-    EXPECT_EQ(refused_key(with(loading, bonded, "[material.bulk]\nmodel = \"elastic\"\nK = 3.0e3\n")), "material");
+    // A compressible body is built where its Poisson ratio is constant in time (an elastic G with an elastic K);
+    // an elastic K beside a relaxing G, or a deformable indenter, is refused.
+    EXPECT_EQ(refused_key(with(loading, bonded, "[material.bulk]\nmodel = \"elastic\"\nK = 3.0e3\n")), "(accepted)");
+    EXPECT_EQ(refused_key("[material]\nmodel = \"standard\"\nG_inf = 1.0e3\nG1 = 1.0e3\ntau1 = 0.1\nK = 3.0e3\n"
+                          "[indenter]\nshape = \"sphere\"\nR = 1.0e-5\n[load]\n" + loading + "[layer]\n" + bonded),
+              "material.K");
+    EXPECT_EQ(refused_key("[material]\nmodel = \"elastic\"\nG = 1.0e3\n[indenter]\nshape = \"sphere\"\nR = 1.0e-5\n"
+                          "[indenter.material]\nmodel = \"elastic\"\nG = 1.0e6\n[load]\n" + loading + "[layer]\n" +
+                          bonded),
+              "indenter.material");
     EXPECT_EQ(refused_key(with(loading, "thickness = 1.0e-9\ninterface = \"bonded\"\n")), "layer.thickness");
     // A harmonic load: refused naming the key and why.
     try {
