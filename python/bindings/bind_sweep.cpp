@@ -60,7 +60,7 @@ void bind_sweep(py::module_& module) {
             py::list points, summaries, errors;
             for (const auto& row : rows) {
                 points.append(py::cast(row.point));
-                summaries.append(document_object(io::to_document(row.summary)));
+                summaries.append(document_object(Document{row.summary}));
                 errors.append(row.error);
             }
             py::dict out;
@@ -115,7 +115,7 @@ void bind_sweep(py::module_& module) {
             }
             py::list summaries, errors;
             for (const auto& row : rows) {
-                summaries.append(document_object(io::to_document(row.summary)));
+                summaries.append(document_object(Document{row.summary}));
                 errors.append(row.error);
             }
             return py::make_tuple(summaries, errors);

@@ -6,7 +6,7 @@ namespace py = pybind11;
 
 namespace mdr::python {
 
-py::object document_object(const io::Document& document) {
+py::object document_object(const Document& document) {
     return std::visit(
         [](const auto& held) -> py::object {
             using Held = std::decay_t<decltype(held)>;
@@ -20,7 +20,7 @@ py::object document_object(const io::Document& document) {
                 return py::float_(held);
             } else if constexpr (std::is_same_v<Held, std::string>) {
                 return py::str(held);
-            } else if constexpr (std::is_same_v<Held, io::Document::List>) {
+            } else if constexpr (std::is_same_v<Held, Document::List>) {
                 py::list list;
                 for (const auto& item : held) list.append(document_object(item));
                 return list;

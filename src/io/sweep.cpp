@@ -29,9 +29,9 @@ namespace mdr::io {
 namespace {
 
 // A summary value that is a number (a count included), as sweep.csv writes it.
-std::optional<double> number_in(const SummaryValue& value) {
-    if (const auto* number = std::get_if<double>(&value)) return *number;
-    if (const auto* count = std::get_if<std::size_t>(&value)) return static_cast<double>(*count);
+std::optional<double> number_in(const Document& value) {
+    if (const auto* number = std::get_if<double>(&value.value)) return *number;
+    if (const auto* count = std::get_if<std::size_t>(&value.value)) return static_cast<double>(*count);
     return std::nullopt;
 }
 
@@ -257,7 +257,7 @@ std::vector<std::string> numeric_columns(const std::vector<SweepRow>& rows) {
     std::vector<std::string> columns;
     std::unordered_set<std::string> known;
     for (const auto& row : rows) {
-        const bool all_known = std::all_of(row.summary.begin(), row.summary.end(), [&](const SummaryEntry& entry) {
+        const bool all_known = std::all_of(row.summary.begin(), row.summary.end(), [&](const Document::Entry& entry) {
             return known.contains(entry.key) || !number_in(entry.value);
         });
         if (all_known) continue;
@@ -286,7 +286,7 @@ void write_sweep_csv(const std::filesystem::path& directory, const std::vector<S
         for (double value : row.point) out.print("{},", value);
         for (const auto& column : columns) {
             const auto entry = std::find_if(row.summary.begin(), row.summary.end(),
-                                            [&column](const SummaryEntry& e) { return e.key == column; });
+                                            [&column](const Document::Entry& e) { return e.key == column; });
             const auto number = entry != row.summary.end() ? number_in(entry->value) : std::nullopt;
             if (number) {
                 out.print("{},", *number);
