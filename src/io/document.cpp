@@ -27,6 +27,6 @@ nlohmann::ordered_json json_of(const Document& document) {
 
 }  // namespace
 
-std::string to_json(const Document& document) { return json_of(document).dump(2); }
+std::string to_json(const Document& document, int indent) { return json_of(document).dump(indent); }
 
 }  // namespace mdr::io
