@@ -249,11 +249,7 @@ std::vector<SweepRow> run_sweep_points(const CaseTemplate& model, const std::vec
     return rows;
 }
 
-namespace {
-
-// The numeric summary keys of all rows, each once: a key is put after the one before it in the first row that has
-// it, so rows whose keys follow one order (a summary's) give that order whatever the order of the rows.
-std::vector<std::string> numeric_columns(const std::vector<SweepRow>& rows) {
+std::vector<std::string> sweep_columns(const std::vector<SweepRow>& rows) {
     std::vector<std::string> columns;
     std::unordered_set<std::string> known;
     for (const auto& row : rows) {
@@ -272,11 +268,9 @@ std::vector<std::string> numeric_columns(const std::vector<SweepRow>& rows) {
     return columns;
 }
 
-}  // namespace
-
 void write_sweep_csv(const std::filesystem::path& directory, const std::vector<SweepAxis>& axes,
                      const std::vector<SweepRow>& rows) {
-    const std::vector<std::string> columns = numeric_columns(rows);
+    const std::vector<std::string> columns = sweep_columns(rows);
     auto out = OutputFile(directory / "sweep.csv");
     std::string header;
     for (const auto& axis : axes) header += csv_field(axis.key) + ",";
