@@ -81,7 +81,8 @@ Summary summary_from_json(const std::string& json_text) {
             summary.push_back({key, Document{value.get<double>()}});
         } else if (value.is_string()) {
             summary.push_back({key, Document{value.get<std::string>()}});
-        } else if (value.is_array() && std::all_of(value.begin(), value.end(), [](const auto& x) { return x.is_number(); })) {
+        } else if (value.is_array() &&
+                   std::all_of(value.begin(), value.end(), [](const auto& x) { return x.is_number(); })) {
             summary.push_back({key, list_of(value.get<std::vector<double>>())});
         } else {
             throw std::runtime_error("summary key " + key + " has a value of no summary type: " + value.dump());
