@@ -9,13 +9,14 @@
 #include "fit_candidates.hpp"
 #include "fit_preparation.hpp"
 #include "interrupt.hpp"
+#include "mdr/document.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/plausibility.hpp"
 #include "mdr/fit/repeat_spread.hpp"
 #include "mdr/fitcase/fit_case_run.hpp"
 #include "mdr/fitcase/fit_files.hpp"
-#include "mdr/io/document.hpp"
 #include "mdr/io/csv_field.hpp"
+#include "mdr/io/document.hpp"
 #include "mdr/io/output_file.hpp"
 
 namespace mdr::cli {
@@ -60,24 +61,24 @@ void write_table(const std::filesystem::path& path, const std::vector<std::strin
 
 // each.json: the spread of the batch's values against its fits' errors, key by key (fit::spread_of_repeats).
 void write_spread(const std::filesystem::path& path, const fit::RepeatSpread& spread) {
-    io::Document::Table keys;
+    Document::Table keys;
     for (const auto& key : spread.keys) {
-        const io::Document::List range{io::number_or_null(key.consistent_low), io::number_or_null(key.consistent_high)};
-        keys.emplace_back(key.name, io::Document{io::Document::Table{
-                                        {"count", io::Document{key.count}},
-                                        {"mean", io::number_or_null(key.mean)},
-                                        {"standard_deviation", io::number_or_null(key.standard_deviation)},
-                                        {"standard_error_of_mean", io::number_or_null(key.standard_error_of_mean)},
-                                        {"typical_error", io::number_or_null(key.typical_error)},
-                                        {"error_to_spread", io::number_or_null(key.error_to_spread)},
-                                        {"consistent_range", io::Document{range}},
+        const Document::List range{number_or_null(key.consistent_low), number_or_null(key.consistent_high)};
+        keys.emplace_back(key.name, Document{Document::Table{
+                                        {"count", Document{key.count}},
+                                        {"mean", number_or_null(key.mean)},
+                                        {"standard_deviation", number_or_null(key.standard_deviation)},
+                                        {"standard_error_of_mean", number_or_null(key.standard_error_of_mean)},
+                                        {"typical_error", number_or_null(key.typical_error)},
+                                        {"error_to_spread", number_or_null(key.error_to_spread)},
+                                        {"consistent_range", Document{range}},
                                     }});
     }
-    io::Document::List flags;
-    for (const auto& flag : spread.flags) flags.push_back(io::Document{flag});
+    Document::List flags;
+    for (const auto& flag : spread.flags) flags.push_back(Document{flag});
     io::OutputFile file(path);
-    file.print("{}\n", io::to_json(io::Document{io::Document::Table{{"spread", io::Document{std::move(keys)}},
-                                                                     {"flags", io::Document{std::move(flags)}}}}));
+    file.print("{}\n", io::to_json(Document{Document::Table{{"spread", Document{std::move(keys)}},
+                                                                     {"flags", Document{std::move(flags)}}}}));
     file.close();
 }
 

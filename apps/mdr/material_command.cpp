@@ -8,6 +8,7 @@
 #include "interrupt.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
+#include "mdr/io/document.hpp"
 #include "mdr/io/material_table.hpp"
 #include "mdr/io/output_file.hpp"
 #include "mdr/io/result_directory.hpp"
@@ -81,7 +82,7 @@ void add_material_command(CLI::App& app, int& exit_code) {
                     io::write_material_tables(files, material, contact_case.shear_material, t, w, origin.model);
                     // The declared unit system (mdr/io/units.hpp), which the figures of the tables name.
                     auto summary = io::OutputFile(files / "summary.json");
-                    summary.print("{{\n  \"units\": \"{}\"\n}}\n", contact_case.units);
+                    summary.print("{}\n", io::to_json(Document{Document::Table{{"units", {contact_case.units}}}}));
                     summary.close();
                 },
                 received_signal);

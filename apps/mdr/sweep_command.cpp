@@ -6,7 +6,6 @@
 
 #include <chrono>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
 
@@ -14,6 +13,7 @@
 #include "interrupt.hpp"
 #include "jobs_option.hpp"
 #include "mdr/error.hpp"
+#include "mdr/io/document.hpp"
 #include "mdr/io/result_directory.hpp"
 #include "mdr/io/sweep.hpp"
 #include "scheduled_sweep.hpp"
@@ -49,12 +49,11 @@ private:
 // scheduler.json: how a scheduled sweep ran, the tasks retried after a worker was lost included.
 void write_scheduler_json(const std::filesystem::path& directory, const ScheduledSweepInfo& batch) {
     std::ofstream file(directory / "scheduler.json");
-    file << nlohmann::ordered_json{{"scheduler", batch.scheduler},
-                                   {"workers", batch.workers},
-                                   {"tasks", batch.tasks},
-                                   {"retried_tasks", batch.retried},
-                                   {"python", batch.python}}
-                .dump(2)
+    file << io::to_json(Document{Document::Table{{"scheduler", {batch.scheduler}},
+                                                 {"workers", {batch.workers}},
+                                                 {"tasks", {batch.tasks}},
+                                                 {"retried_tasks", {batch.retried}},
+                                                 {"python", {batch.python}}}})
          << "\n";
     if (!file) throw std::runtime_error("cannot write scheduler.json");
 }

@@ -57,7 +57,7 @@ py::dict run_case(const py::object& case_, const std::string& source, const py::
     py::dict out;
     out["history"] = history;
     out["profiles"] = profiles;
-    out["summary"] = document_object(io::to_document(io::summarize(contact_case, result, wall)));
+    out["summary"] = document_object(Document{io::summarize(contact_case, result, wall)});
     out["description"] = io::describe(contact_case);
     return out;
 }

@@ -60,7 +60,7 @@ void bind_sweep(py::module_& module) {
             py::list points, summaries, errors;
             for (const auto& row : rows) {
                 points.append(py::cast(row.point));
-                summaries.append(document_object(io::to_document(row.summary)));
+                summaries.append(document_object(Document{row.summary}));
                 errors.append(row.error);
             }
             py::dict out;
@@ -68,11 +68,25 @@ void bind_sweep(py::module_& module) {
             out["points"] = points;
             out["summaries"] = summaries;
             out["errors"] = errors;
+            out["columns"] = io::sweep_columns(rows);
             return out;
         },
         py::arg("case"), py::arg("source"), py::arg("specs"), py::arg("jobs") = 0, py::arg("progress") = py::none(),
         "Runs a case (TOML text or a dict tree) over the cartesian product of axes, each a --vary spec or a "
         "(key, values) pair (use mdr.sweep).");
+    module.def(
+        "_sweep_columns",
+        [](const py::list& summaries) {
+            std::vector<io::SweepRow> rows(summaries.size());
+            for (std::size_t r = 0; r < rows.size(); ++r) {
+                if (!py::isinstance<py::dict>(summaries[r])) throw py::type_error("a sweep row's summary is a dict");
+                rows[r].summary = std::get<Document::Table>(document_of(summaries[r]).value);
+            }
+            return io::sweep_columns(rows);
+        },
+        py::arg("summaries"),
+        "The numeric columns of a sweep's table from its rows' summaries (dicts), as sweep.csv has them "
+        "(mdr.sweep on a scheduler).");
     module.def(
         "_sweep_size",
         [](const py::list& specs) { return io::sweep_size(sweep_axes(specs)); }, py::arg("specs"),
@@ -115,7 +129,7 @@ void bind_sweep(py::module_& module) {
             }
             py::list summaries, errors;
             for (const auto& row : rows) {
-                summaries.append(document_object(io::to_document(row.summary)));
+                summaries.append(document_object(Document{row.summary}));
                 errors.append(row.error);
             }
             return py::make_tuple(summaries, errors);

@@ -1,12 +1,15 @@
 #include "document_object.hpp"
 
+#include <cstddef>
+#include <string>
 #include <type_traits>
+#include <utility>
 
 namespace py = pybind11;
 
 namespace mdr::python {
 
-py::object document_object(const io::Document& document) {
+py::object document_object(const Document& document) {
     return std::visit(
         [](const auto& held) -> py::object {
             using Held = std::decay_t<decltype(held)>;
@@ -20,7 +23,7 @@ py::object document_object(const io::Document& document) {
                 return py::float_(held);
             } else if constexpr (std::is_same_v<Held, std::string>) {
                 return py::str(held);
-            } else if constexpr (std::is_same_v<Held, io::Document::List>) {
+            } else if constexpr (std::is_same_v<Held, Document::List>) {
                 py::list list;
                 for (const auto& item : held) list.append(document_object(item));
                 return list;
@@ -31,6 +34,27 @@ py::object document_object(const io::Document& document) {
             }
         },
         document.value);
+}
+
+Document document_of(const py::handle& object) {
+    if (object.is_none()) return {};
+    if (py::isinstance<py::bool_>(object)) return {object.cast<bool>()};  // before int: a bool is an int in Python
+    if (py::isinstance<py::int_>(object)) return {object.cast<std::size_t>()};
+    if (py::isinstance<py::float_>(object)) return {object.cast<double>()};
+    if (py::isinstance<py::str>(object)) return {object.cast<std::string>()};
+    if (py::isinstance<py::list>(object)) {
+        Document::List list;
+        for (const auto& item : object) list.push_back(document_of(item));
+        return {std::move(list)};
+    }
+    if (py::isinstance<py::dict>(object)) {
+        Document::Table table;
+        for (const auto& [key, item] : object.cast<py::dict>()) {
+            table.push_back({key.cast<std::string>(), document_of(item)});
+        }
+        return {std::move(table)};
+    }
+    throw py::type_error("a result document holds no " + py::str(py::type::of(object)).cast<std::string>());
 }
 
 }  // namespace mdr::python

@@ -257,8 +257,9 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
     Returns
     -------
     SweepTable
-        The table of sweep.csv as a dict of numpy arrays: the varied keys, every numeric key of any point's
-        summary.json (the union; nan where a point failed or lacks the key) and ``error`` (the failure message, ""
+        The table of sweep.csv as a dict of numpy arrays, its columns in its order: the varied keys, every numeric
+        key (a number or a count, not a flag) of any point's summary.json (the union; nan where a point failed or
+        lacks the key) and ``error`` (the failure message, ""
         where the point ran); ``.batch`` tells how a scheduled sweep ran (None for a local one).
 
     Raises
@@ -300,34 +301,18 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
         from . import distributed
 
         _, points, batch = distributed.sweep_rows(case_input, source, specs, scheduler)
-        raw = {"points": points, "summaries": [row[0] for row in batch.outputs],
-               "errors": [row[1] for row in batch.outputs]}
+        summaries = [row[0] for row in batch.outputs]
+        raw = {"points": points, "summaries": summaries, "errors": [row[1] for row in batch.outputs],
+               "columns": _mdr._sweep_columns(summaries)}
         batch.outputs = []
     summaries = raw["summaries"]
-    # The union of the rows' keys, as sweep.csv has it: a key new to the list goes after the one before it in the
-    # first row that has it (rows of one summary layout keep its order, whatever the order of the rows).
-    columns: list = []
-    known: set = set()
-    for summary in summaries:
-        if not summary or known.issuperset(summary):
-            continue
-        known.update(summary)
-        position = 0
-        for key in summary or {}:
-            if key in columns:
-                position = columns.index(key) + 1
-            else:
-                columns.insert(position, key)
-                position += 1
     table = SweepTable()
     table.batch = batch
     table.threads = threads
     points = np.asarray(raw["points"], dtype=float).reshape(len(summaries), len(specs))
     for i, key in enumerate(vary):
         table[key] = points[:, i]
-    for column in columns:
-        values = [s.get(column, math.nan) if s else math.nan for s in summaries]
-        if all(isinstance(v, (int, float)) for v in values):
-            table[column] = np.asarray(values, dtype=float)
+    for column in raw["columns"]:  # the union of the rows' numeric keys, as sweep.csv has it (io::sweep_columns)
+        table[column] = np.asarray([s.get(column, math.nan) for s in summaries], dtype=float)
     table["error"] = np.asarray(raw["errors"], dtype=str)
     return table

@@ -2,12 +2,17 @@
 
 #include <fmt/format.h>
 
+#include <string>
+#include <type_traits>
+#include <utility>
+
 namespace mdr::drivers {
 
-std::vector<Outcome> outcomes(const IndentationResult& result) {
-    std::vector<Outcome> all;
-    const auto add = [&all](std::string name, std::variant<double, bool> value) {
-        all.push_back({std::move(name), value});
+Document::Table outcomes(const IndentationResult& result) {
+    Document::Table all;
+    const auto add = [&all]<typename Held>(std::string name, Held value) {
+        static_assert(std::is_same_v<Held, double> || std::is_same_v<Held, bool>, "an outcome is a number or a flag");
+        all.push_back({std::move(name), Document{value}});
     };
     if (const auto& impact = result.impact) {
         add("restitution", impact->restitution);

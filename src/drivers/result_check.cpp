@@ -49,7 +49,7 @@ void require_finite_result(const IndentationResult& result) {
         }
     }
     for (const auto& [name, value] : outcomes(result)) {
-        if (const double* number = std::get_if<double>(&value)) check_value(name, *number);
+        if (const double* number = std::get_if<double>(&value.value)) check_value(name, *number);
     }
     check_value("time_step", result.numerics.time_step);
     check_value("half_width", result.numerics.half_width);

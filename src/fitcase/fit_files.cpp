@@ -6,13 +6,12 @@
 #include <cmath>
 
 #include "mdr/io/csv_field.hpp"
+#include "mdr/io/document.hpp"
 #include "mdr/io/output_file.hpp"
 
 namespace mdr::fitcase {
 
 using io::csv_field;
-using io::Document;
-using io::number_or_null;
 using io::OutputFile;
 
 namespace {
@@ -162,7 +161,7 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
 }
 
 std::string fit_json(const fit::FitResult& result, const std::string& units) {
-    return to_json(fit_document(result, units));
+    return io::to_json(fit_document(result, units));
 }
 
 void write_fit_result(const std::filesystem::path& directory, const FitCase& fit_case, const fit::FitResult& result) {

@@ -7,15 +7,16 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <utility>
 
 #include "mdr/error.hpp"
 #include "mdr/fit/instrument_curve.hpp"
 #include "mdr/fit/plausibility.hpp"
+#include "mdr/document.hpp"
 #include "mdr/fitcase/fit_case_run.hpp"
 #include "mdr/io/csv_field.hpp"
+#include "mdr/io/document.hpp"
 #include "mdr/io/free_key_units.hpp"
 #include "mdr/io/output_file.hpp"
 #include "mdr/io/units.hpp"
@@ -259,27 +260,30 @@ void write_map_summary(const std::filesystem::path& path, const MapLayout& layou
                        const std::filesystem::path& source, const std::vector<PixelFit>& pixels) {
     const std::string& units = fit_case.units;
     const io::UnitSystem& system = io::unit_system(units);
-    nlohmann::json column_units = nlohmann::json::object();
+    // map.json lists its keys, and the columns of column_units, by name.
+    Document::Table column_units;
     for (const auto& [name, unit] : table_columns(rows_of(pixels, fit_case))) {
-        column_units[name] = unit.empty() || unit == "1" ? unit : system.names(unit);
+        column_units.push_back({name, {unit.empty() || unit == "1" ? unit : system.names(unit)}});
     }
-    const auto failed =
-        std::count_if(pixels.begin(), pixels.end(), [](const PixelFit& pixel) { return !pixel.result; });
+    std::sort(column_units.begin(), column_units.end(), [](const auto& a, const auto& b) { return a.key < b.key; });
+    const auto failed = static_cast<std::size_t>(
+        std::count_if(pixels.begin(), pixels.end(), [](const PixelFit& pixel) { return !pixel.result; }));
     const auto pixel_size = [](double size, std::size_t count) { return count ? size / double(count) : 0.0; };
-    const nlohmann::json summary = {
-        {"source", source.string()},
-        {"units", units},
-        {"length_unit", std::string(system.length)},
-        {"length_size", system.length_size},
-        {"columns", layout.columns},
-        {"rows", layout.rows},
-        {"size", {layout.size_x, layout.size_y}},
-        {"pixel_size", {pixel_size(layout.size_x, layout.columns), pixel_size(layout.size_y, layout.rows)}},
-        {"pixels", pixels.size()},
-        {"failed", failed},
-        {"column_units", column_units},
-    };
-    io::write_text_file(path, summary.dump(1) + "\n");
+    const Document summary{Document::Table{
+        {"column_units", {std::move(column_units)}},
+        {"columns", {layout.columns}},
+        {"failed", {failed}},
+        {"length_size", {system.length_size}},
+        {"length_unit", {std::string(system.length)}},
+        {"pixel_size", {Document::List{{pixel_size(layout.size_x, layout.columns)},
+                                       {pixel_size(layout.size_y, layout.rows)}}}},
+        {"pixels", {pixels.size()}},
+        {"rows", {layout.rows}},
+        {"size", {Document::List{{layout.size_x}, {layout.size_y}}}},
+        {"source", {source.string()}},
+        {"units", {units}},
+    }};
+    io::write_text_file(path, io::to_json(summary, 1) + "\n");
 }
 
 }  // namespace mdr::fitcase

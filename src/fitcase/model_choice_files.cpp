@@ -7,13 +7,12 @@
 #include "mdr/fitcase/fit_files.hpp"
 #include "mdr/fitcase/model_choice.hpp"
 #include "mdr/io/csv_field.hpp"
+#include "mdr/io/document.hpp"
 #include "mdr/io/output_file.hpp"
 
 namespace mdr::fitcase {
 
 using io::csv_field;
-using io::Document;
-using io::number_or_null;
 using io::OutputFile;
 
 namespace {
@@ -72,7 +71,7 @@ Document ranking_document(const fit::ModelChoice& choice) {
     }};
 }
 
-std::string ranking_json(const fit::ModelChoice& choice) { return to_json(ranking_document(choice)); }
+std::string ranking_json(const fit::ModelChoice& choice) { return io::to_json(ranking_document(choice)); }
 
 void write_model_choice(const std::filesystem::path& directory, const FitCase& fit_case,
                         const fit::ModelChoice& choice) {

@@ -1,6 +1,5 @@
 #include "mdr/io/document.hpp"
 
-#include <cmath>
 #include <nlohmann/json.hpp>
 #include <type_traits>
 
@@ -28,8 +27,6 @@ nlohmann::ordered_json json_of(const Document& document) {
 
 }  // namespace
 
-Document number_or_null(double value) { return std::isfinite(value) ? Document{value} : Document{}; }
-
-std::string to_json(const Document& document) { return json_of(document).dump(2); }
+std::string to_json(const Document& document, int indent) { return json_of(document).dump(indent); }
 
 }  // namespace mdr::io

@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 
+#include "mdr/io/document.hpp"
 #include "mdr/io/history_columns.hpp"
 #include "mdr/io/output_file.hpp"
 #include "mdr/io/profile_columns.hpp"
@@ -15,7 +16,7 @@ namespace fs = std::filesystem;
 
 std::string summary_json(const drivers::ContactCase& contact_case, const drivers::IndentationResult& result,
                          double wall_seconds) {
-    return to_json(summarize(contact_case, result, wall_seconds));
+    return to_json(Document{summarize(contact_case, result, wall_seconds)});
 }
 
 void write_indentation_result(const fs::path& directory, const drivers::ContactCase& contact_case,

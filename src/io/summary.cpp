@@ -1,10 +1,13 @@
 #include "mdr/io/summary.hpp"
 
 #include <algorithm>
+#include <cstddef>
 #include <nlohmann/json.hpp>
+#include <iterator>
 #include <stdexcept>
-#include <type_traits>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/material_window.hpp"
@@ -17,13 +20,22 @@ double max_of(const std::vector<double>& values) {
     return values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
 }
 
+// A list of numbers as a document's list. Assigned into null documents: GCC 12 warns of an uninitialised variant
+// when a temporary Document{number} is moved into the list (a false positive that -Werror turns into a failed
+// sanitize build).
+Document list_of(const std::vector<double>& numbers) {
+    Document::List list(numbers.size());
+    for (std::size_t i = 0; i < numbers.size(); ++i) list[i].value = numbers[i];
+    return Document{std::move(list)};
+}
+
 }  // namespace
 
 Summary summarize(const drivers::ContactCase& contact_case, const drivers::IndentationResult& result,
                   double wall_seconds) {
     Summary summary;
-    const auto add = [&summary](std::string key, SummaryValue value) {
-        summary.push_back({std::move(key), std::move(value)});
+    const auto add = [&summary](std::string key, auto value) {
+        summary.push_back({std::move(key), Document{std::move(value)}});
     };
     add("case", contact_case.title);
     add("units", contact_case.units);
@@ -40,48 +52,21 @@ Summary summarize(const drivers::ContactCase& contact_case, const drivers::Inden
     add("final_depth", result.depth.empty() ? 0.0 : result.depth.back());
     if (const auto& certificate = contact_case.material_origin.certificate) {
         add("material_error", certificate->error);  // the series standing for the model (power law, table)
-        add("material_window", std::vector<double>{certificate->window.shortest, certificate->window.longest});
+        add("material_window", list_of({certificate->window.shortest, certificate->window.longest}));
         if (contact_case.load.history) {
             const std::size_t rows =
                 drivers::rows_before_window(*contact_case.load.history, result.time, certificate->window.shortest);
             if (rows > 0) add("material_uncertified_rows", rows);  // after a jump, before the window's start
         }
         if (!certificate->window.frequencies.empty()) {
-            add("material_frequencies", certificate->window.frequencies);  // [rad/s], certified explicitly
+            add("material_frequencies", list_of(certificate->window.frequencies));  // [rad/s], certified explicitly
         }
     }
     if (contact_case.tangential) add("tangential_approximation", contact_case.tangential_approximate());
-    for (auto& [name, value] : drivers::outcomes(result)) {
-        std::visit([&](auto held) { add(std::move(name), held); }, value);
-    }
+    auto outcomes = drivers::outcomes(result);
+    summary.insert(summary.end(), std::make_move_iterator(outcomes.begin()), std::make_move_iterator(outcomes.end()));
     return summary;
 }
-
-Document to_document(const Summary& summary) {
-    Document::Table table;
-    table.reserve(summary.size());
-    for (const auto& [key, value] : summary) {
-        // Assigned into one document by kind (GCC 12 warned of an uninitialised variant when a visitor returned
-        // Documents of two kinds, a false positive that -Werror turns into a failed sanitize build).
-        Document document;
-        std::visit(
-            [&document](const auto& held) {
-                if constexpr (std::is_same_v<std::decay_t<decltype(held)>, std::vector<double>>) {
-                    Document::List list;
-                    list.reserve(held.size());
-                    for (const double number : held) list.push_back(Document{number});
-                    document.value = std::move(list);
-                } else {
-                    document.value = held;
-                }
-            },
-            value);
-        table.emplace_back(key, std::move(document));
-    }
-    return Document{std::move(table)};
-}
-
-std::string to_json(const Summary& summary) { return to_json(to_document(summary)); }
 
 Summary summary_from_json(const std::string& json_text) {
     const auto json = nlohmann::ordered_json::parse(json_text);
@@ -89,15 +74,16 @@ Summary summary_from_json(const std::string& json_text) {
     Summary summary;
     for (const auto& [key, value] : json.items()) {
         if (value.is_boolean()) {
-            summary.push_back({key, value.get<bool>()});
+            summary.push_back({key, Document{value.get<bool>()}});
         } else if (value.is_number_unsigned()) {
-            summary.push_back({key, value.get<std::size_t>()});
+            summary.push_back({key, Document{value.get<std::size_t>()}});
         } else if (value.is_number()) {
-            summary.push_back({key, value.get<double>()});
+            summary.push_back({key, Document{value.get<double>()}});
         } else if (value.is_string()) {
-            summary.push_back({key, value.get<std::string>()});
-        } else if (value.is_array() && std::all_of(value.begin(), value.end(), [](const auto& x) { return x.is_number(); })) {
-            summary.push_back({key, value.get<std::vector<double>>()});
+            summary.push_back({key, Document{value.get<std::string>()}});
+        } else if (value.is_array() &&
+                   std::all_of(value.begin(), value.end(), [](const auto& x) { return x.is_number(); })) {
+            summary.push_back({key, list_of(value.get<std::vector<double>>())});
         } else {
             throw std::runtime_error("summary key " + key + " has a value of no summary type: " + value.dump());
         }

@@ -29,9 +29,9 @@ namespace mdr::io {
 namespace {
 
 // A summary value that is a number (a count included), as sweep.csv writes it.
-std::optional<double> number_in(const SummaryValue& value) {
-    if (const auto* number = std::get_if<double>(&value)) return *number;
-    if (const auto* count = std::get_if<std::size_t>(&value)) return static_cast<double>(*count);
+std::optional<double> number_in(const Document& value) {
+    if (const auto* number = std::get_if<double>(&value.value)) return *number;
+    if (const auto* count = std::get_if<std::size_t>(&value.value)) return static_cast<double>(*count);
     return std::nullopt;
 }
 
@@ -249,15 +249,11 @@ std::vector<SweepRow> run_sweep_points(const CaseTemplate& model, const std::vec
     return rows;
 }
 
-namespace {
-
-// The numeric summary keys of all rows, each once: a key is put after the one before it in the first row that has
-// it, so rows whose keys follow one order (a summary's) give that order whatever the order of the rows.
-std::vector<std::string> numeric_columns(const std::vector<SweepRow>& rows) {
+std::vector<std::string> sweep_columns(const std::vector<SweepRow>& rows) {
     std::vector<std::string> columns;
     std::unordered_set<std::string> known;
     for (const auto& row : rows) {
-        const bool all_known = std::all_of(row.summary.begin(), row.summary.end(), [&](const SummaryEntry& entry) {
+        const bool all_known = std::all_of(row.summary.begin(), row.summary.end(), [&](const Document::Entry& entry) {
             return known.contains(entry.key) || !number_in(entry.value);
         });
         if (all_known) continue;
@@ -272,11 +268,9 @@ std::vector<std::string> numeric_columns(const std::vector<SweepRow>& rows) {
     return columns;
 }
 
-}  // namespace
-
 void write_sweep_csv(const std::filesystem::path& directory, const std::vector<SweepAxis>& axes,
                      const std::vector<SweepRow>& rows) {
-    const std::vector<std::string> columns = numeric_columns(rows);
+    const std::vector<std::string> columns = sweep_columns(rows);
     auto out = OutputFile(directory / "sweep.csv");
     std::string header;
     for (const auto& axis : axes) header += csv_field(axis.key) + ",";
@@ -286,7 +280,7 @@ void write_sweep_csv(const std::filesystem::path& directory, const std::vector<S
         for (double value : row.point) out.print("{},", value);
         for (const auto& column : columns) {
             const auto entry = std::find_if(row.summary.begin(), row.summary.end(),
-                                            [&column](const SummaryEntry& e) { return e.key == column; });
+                                            [&column](const Document::Entry& e) { return e.key == column; });
             const auto number = entry != row.summary.end() ? number_in(entry->value) : std::nullopt;
             if (number) {
                 out.print("{},", *number);

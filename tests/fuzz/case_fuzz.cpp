@@ -67,8 +67,10 @@ void require_finite_output(const mdr::drivers::ContactCase& contact_case,
     }
     for (const auto& entry : mdr::io::summarize(contact_case, result, 0.0)) {
         std::vector<double> numbers;
-        if (const auto* number = std::get_if<double>(&entry.value)) numbers.push_back(*number);
-        if (const auto* list = std::get_if<std::vector<double>>(&entry.value)) numbers = *list;
+        if (const auto* number = std::get_if<double>(&entry.value.value)) numbers.push_back(*number);
+        if (const auto* list = std::get_if<mdr::Document::List>(&entry.value.value)) {
+            for (const auto& item : *list) numbers.push_back(std::get<double>(item.value));
+        }
         for (const double value : numbers) {
             if (!std::isfinite(value)) throw NonFiniteOutput("summary." + entry.key + " = " + std::to_string(value));
         }

@@ -100,3 +100,17 @@ def test_a_sweep_has_the_numbers_of_the_runs_summaries():
         for key, value in run.items():
             if isinstance(value, (int, float)) and key != "wall_seconds":
                 assert table[key][i] == value, key
+
+
+def test_a_sweep_table_has_the_columns_of_sweep_csv(mdr_binary, tmp_path):
+    """One rule for the columns (io::sweep_columns): mdr.sweep's table has sweep.csv's header, in its order. An
+    oblique impact's summary has flags (slid_throughout), which are no column of sweep.csv; mdr.sweep had them."""
+    case = REPO_ROOT / "examples" / "oblique_restitution.toml"
+    vary = ["load.velocity=0.5,1.0"]
+    completed = subprocess.run([mdr_binary, "sweep", str(case), "--vary", *vary, "--out", str(tmp_path / "out")],
+                               capture_output=True, text=True, timeout=120)
+    assert completed.returncode == 0, completed.stderr
+    header = (tmp_path / "out" / "sweep.csv").read_text().splitlines()[0].split(",")
+    table = mdr.sweep(str(case), {"load.velocity": [0.5, 1.0]}, jobs=1)
+    assert "slid_throughout" in mdr.run(str(case)).summary
+    assert list(table) == header

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "mdr/io/case_file.hpp"
+#include "mdr/io/document.hpp"
 #include "mdr/io/result_files.hpp"
 #include "mdr/io/sweep.hpp"
 #include "mdr/rheology/power_law.hpp"
@@ -161,7 +162,7 @@ elements = 1
     ASSERT_EQ(rows.size(), frequencies.size());
     for (std::size_t i = 0; i < rows.size(); ++i) {
         ASSERT_TRUE(rows[i].error.empty()) << rows[i].error;
-        const auto summary = nlohmann::json::parse(io::to_json(rows[i].summary));
+        const auto summary = nlohmann::json::parse(io::to_json(Document{rows[i].summary}));
         const double omega = 2.0 * std::numbers::pi * frequencies[i];
         ASSERT_EQ(summary.at("material_frequencies").size(), 1u);
         EXPECT_DOUBLE_EQ(summary.at("material_frequencies")[0].get<double>(), omega);

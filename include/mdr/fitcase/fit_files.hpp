@@ -7,7 +7,7 @@
 
 #include "mdr/fit/fit.hpp"
 #include "mdr/fitcase/fit_case.hpp"
-#include "mdr/io/document.hpp"
+#include "mdr/document.hpp"
 
 namespace mdr::fitcase {
 
@@ -16,7 +16,7 @@ namespace mdr::fitcase {
 /// bic, points, free_count, iterations, evaluations, element_evaluations, band_evaluations, wall_seconds, and
 /// `units`, the case's declared unit system in which its numbers are (for the figures). NaN (an undetermined error)
 /// is null.
-io::Document fit_document(const fit::FitResult& result, const std::string& units = "SI");
+Document fit_document(const fit::FitResult& result, const std::string& units = "SI");
 
 /// fit.json: fit_document as JSON text.
 std::string fit_json(const fit::FitResult& result, const std::string& units = "SI");

@@ -8,7 +8,7 @@
 
 #include "mdr/fit/candidates.hpp"
 #include "mdr/fitcase/fit_case.hpp"
-#include "mdr/io/document.hpp"
+#include "mdr/document.hpp"
 
 namespace mdr::fitcase {
 
@@ -16,7 +16,7 @@ namespace mdr::fitcase {
 /// `candidates` in ascending BIC, each with `name`, `status`, `converged`, `free_count`, `rms_residual`, `noise`,
 /// `residual_to_noise`, `aic`, `bic`, `delta_aic`, `delta_bic`, `undetermined` (names), `evaluations`,
 /// `wall_seconds`.
-io::Document ranking_document(const fit::ModelChoice& choice);
+Document ranking_document(const fit::ModelChoice& choice);
 
 /// ranking.json: ranking_document as JSON text.
 std::string ranking_json(const fit::ModelChoice& choice);

@@ -77,9 +77,14 @@ std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& s
 std::vector<SweepRow> run_sweep(const CaseTemplate& model, const std::vector<SweepAxis>& axes, unsigned jobs,
                                 const std::function<void(std::size_t, std::size_t)>& progress);
 
-/// Writes sweep.csv into `directory`: the varied keys (named as given), then every numeric key of any row's
-/// summary.json (the union, in the summaries' order; `nan` where a row lacks one), then `error` (empty for rows
-/// that succeeded; a failed row's numeric fields are `nan`). Text fields are quoted by RFC 4180 (csv_field).
+/// The numeric keys (numbers and counts, not flags) of the rows' summaries, each once: a key is put after the one
+/// before it in the first row that has it, so rows whose keys follow one order (a summary's) give that order whatever
+/// the order of the rows. The columns of sweep.csv between the varied keys and `error`, and of mdr.sweep's table.
+std::vector<std::string> sweep_columns(const std::vector<SweepRow>& rows);
+
+/// Writes sweep.csv into `directory`: the varied keys (named as given), then sweep_columns (`nan` where a row lacks
+/// one), then `error` (empty for rows that succeeded; a failed row's numeric fields are `nan`). Text fields are
+/// quoted by RFC 4180 (csv_field).
 void write_sweep_csv(const std::filesystem::path& directory, const std::vector<SweepAxis>& axes,
                      const std::vector<SweepRow>& rows);
 

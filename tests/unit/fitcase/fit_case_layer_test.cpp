@@ -5,9 +5,9 @@
 #include <string>
 
 #include "mdr/error.hpp"
-#include "mdr/io/fit_case.hpp"
+#include "mdr/fitcase/fit_case.hpp"
 
-namespace mdr::io {
+namespace mdr::fitcase {
 namespace {
 
 std::string fit_case_text(const std::string& material, const std::string& free) {
@@ -51,4 +51,4 @@ TEST(FitCaseLayer, AFreeKeyOfAViscoelasticCompressibleBodyIsRefused) {
 }
 
 }  // namespace
-}  // namespace mdr::io
+}  // namespace mdr::fitcase

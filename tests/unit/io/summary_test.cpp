@@ -1,17 +1,21 @@
-// The typed summary of a run (mdr/io/summary.hpp): summary.json is its JSON text, and the text reads back into the
-// same values and types (the sweep rows of `mdr sweep --scheduler` come back that way).
+// The typed summary of a run (mdr/io/summary.hpp), a table of the one result document: summary.json is its JSON
+// text, the text reads back into the same values and types (the sweep rows of `mdr sweep --scheduler` come back that
+// way), and the drivers' outcomes are its last keys as they are.
 
 #include "mdr/io/summary.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cstddef>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "mdr/drivers/outcomes.hpp"
 #include "mdr/io/case_file.hpp"
+#include "mdr/io/document.hpp"
 #include "mdr/io/result_files.hpp"
 
 namespace mdr::io {
@@ -62,7 +66,7 @@ Summary summary_of(const char* toml) {
 template <typename T>
 const T& value_of(const Summary& summary, const std::string& key) {
     for (const auto& entry : summary) {
-        if (entry.key == key) return std::get<T>(entry.value);
+        if (entry.key == key) return std::get<T>(entry.value.value);
     }
     throw std::out_of_range(key);
 }
@@ -70,7 +74,7 @@ const T& value_of(const Summary& summary, const std::string& key) {
 TEST(Summary, ReadsBackFromItsJsonWithTheSameValuesAndTypes) {
     for (const char* toml : {oblique_impact, power_law_harmonic}) {
         const auto summary = summary_of(toml);
-        EXPECT_EQ(summary_from_json(to_json(summary)), summary);
+        EXPECT_EQ(summary_from_json(to_json(Document{summary})), summary);
     }
 }
 
@@ -82,8 +86,10 @@ TEST(Summary, HoldsEachKindOfValue) {
     EXPECT_EQ(value_of<double>(impact, "wall_seconds"), 0.25);
     EXPECT_NO_THROW(value_of<bool>(impact, "slid_throughout"));
     const auto power_law = summary_of(power_law_harmonic);
-    EXPECT_EQ(value_of<std::vector<double>>(power_law, "material_window").size(), 2u);
-    EXPECT_EQ(value_of<std::vector<double>>(power_law, "material_frequencies").size(), 1u);
+    const auto& window = value_of<Document::List>(power_law, "material_window");
+    ASSERT_EQ(window.size(), 2u);
+    EXPECT_TRUE(std::holds_alternative<double>(window[0].value) && std::holds_alternative<double>(window[1].value));
+    EXPECT_EQ(value_of<Document::List>(power_law, "material_frequencies").size(), 1u);
 }
 
 TEST(Summary, JsonKeepsItsOrder) {
@@ -96,18 +102,28 @@ TEST(Summary, JsonKeepsItsOrder) {
     for (const auto& [key, value] : json.items()) EXPECT_EQ(key, summary[i++].key);
 }
 
-TEST(Summary, IsADocumentTableOfItsKeysInOrder) {
-    const Summary summary{{"max_force", 2.5}, {"steps", std::size_t{7}}, {"slid_throughout", true},
-                          {"control", std::string("impact")}, {"material_window", std::vector<double>{1e-3, 10.0}}};
-    const Document expected{Document::Table{{"max_force", Document{2.5}},
-                                            {"steps", Document{std::size_t{7}}},
-                                            {"slid_throughout", Document{true}},
-                                            {"control", Document{std::string("impact")}},
-                                            {"material_window", Document{Document::List{Document{1e-3},
-                                                                                        Document{10.0}}}}}};
-    EXPECT_EQ(to_document(summary), expected);
-    EXPECT_EQ(to_json(summary), "{\n  \"max_force\": 2.5,\n  \"steps\": 7,\n  \"slid_throughout\": true,\n"
-                                "  \"control\": \"impact\",\n  \"material_window\": [\n    0.001,\n    10.0\n  ]\n}");
+TEST(Summary, JsonIsItsTableInOrder) {
+    const Summary summary{{"max_force", {2.5}},
+                          {"steps", {std::size_t{7}}},
+                          {"slid_throughout", {true}},
+                          {"control", {std::string("impact")}},
+                          {"material_window", {Document::List{{1e-3}, {10.0}}}}};
+    EXPECT_EQ(to_json(Document{summary}),
+              "{\n  \"max_force\": 2.5,\n  \"steps\": 7,\n  \"slid_throughout\": true,\n"
+              "  \"control\": \"impact\",\n  \"material_window\": [\n    0.001,\n    10.0\n  ]\n}");
+}
+
+// io extends the drivers' outcomes into the summary: they are its last keys, unchanged and in their order.
+TEST(Summary, EndsWithTheRunsOutcomes) {
+    for (const char* toml : {oblique_impact, power_law_harmonic}) {
+        const auto contact_case = parse_case(toml, "test case");
+        const auto result = drivers::run_case(contact_case);
+        const auto outcomes = drivers::outcomes(result);
+        const auto summary = summarize(contact_case, result, 0.25);
+        ASSERT_FALSE(outcomes.empty());
+        ASSERT_GT(summary.size(), outcomes.size());
+        EXPECT_EQ(Summary(summary.end() - static_cast<std::ptrdiff_t>(outcomes.size()), summary.end()), outcomes);
+    }
 }
 
 TEST(Summary, RefusesJsonThatIsNoSummary) {

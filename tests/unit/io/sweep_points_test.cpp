@@ -32,14 +32,14 @@ time_step = 2.0e-3
 
 // The summary without its measured wall time, every value kept exactly.
 Summary without_wall_time(Summary summary) {
-    std::erase_if(summary, [](const SummaryEntry& entry) { return entry.key == "wall_seconds"; });
+    std::erase_if(summary, [](const Document::Entry& entry) { return entry.key == "wall_seconds"; });
     return summary;
 }
 
 // The number under `key` (-1 when the summary has none).
 double number_at(const Summary& summary, const std::string& key) {
     const auto entry = std::find_if(summary.begin(), summary.end(), [&](const auto& e) { return e.key == key; });
-    return entry == summary.end() ? -1.0 : std::get<double>(entry->value);
+    return entry == summary.end() ? -1.0 : std::get<double>(entry->value.value);
 }
 
 TEST(SweepPoints, AreTheCartesianProductWithTheLastAxisFastest) {

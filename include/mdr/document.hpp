@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// The one shape of a run's results as typed values: a run's outcomes (drivers::outcomes), its summary
+/// (io::summarize, summary.json), fit results (fit.json, ranking.json) and sweep rows are documents. Below every
+/// layer that produces or writes one: io writes it as JSON (mdr/io/document.hpp), the Python module converts it to
+/// dicts and lists directly, with no text in between.
+
+#include <cstddef>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace mdr {
+
+/// One value of a document: null (a number that is not finite), a flag, a count, a number, a text, a list, or a
+/// table of named values in their order.
+struct Document {
+    struct Entry;
+    using List = std::vector<Document>;  ///< a JSON array, a Python list
+    using Table = std::vector<Entry>;    ///< a JSON object, a Python dict (in order)
+    using Value = std::variant<std::nullptr_t, bool, std::size_t, double, std::string, List, Table>;
+
+    Value value = nullptr;  ///< what it holds
+
+    bool operator==(const Document&) const = default;
+};
+
+/// One named value of a table: a summary.json key (`max_force`, `restitution`) or a fit.json key with its value.
+struct Document::Entry {
+    std::string key;  ///< the name, e.g. `max_force`
+    Document value;   ///< its value
+
+    bool operator==(const Entry&) const = default;
+};
+
+/// `value` as a document: a finite number, else null (an undetermined error, a ratio to a zero noise).
+Document number_or_null(double value);
+
+}  // namespace mdr
