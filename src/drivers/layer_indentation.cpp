@@ -13,6 +13,7 @@
 #include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
 #include "layer_impact.hpp"
+#include "layer_regrowing.hpp"
 #include "layer_stepping.hpp"
 
 namespace mdr::drivers {
@@ -23,7 +24,7 @@ namespace {
 constexpr std::size_t max_layer_nodes = 512;
 
 // The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius
-// (under displacement control at the largest depth; under spring control at the largest base, as d <= z while
+// (under displacement control at the largest depth, its harmonic amplitude added; under spring control at the largest base, as d <= z while
 // F >= 0; under force control and in an impact its bound at the largest force with the softest modulus, the
 // half-width of resolve_numerics: the layer, stiffer, has a smaller contact at the same force), within the profile's
 // range (beyond it LayerContact::at_depth refuses the depth).
@@ -31,8 +32,10 @@ double largest_contact_radius(const ContactCase& contact_case) {
     const auto& indenter = *contact_case.indenter;
     if (indenter.is_flat_punch()) return indenter.max_radius();
     const bool bounded_by_force = contact_case.impact() || std::holds_alternative<ForceControl>(contact_case.control);
-    const double half_space = bounded_by_force ? resolve_numerics(contact_case).half_width
-                                               : indenter.contact_radius(contact_case.load.history->max_value());
+    const auto& harmonic = contact_case.load.harmonic;
+    const double largest = contact_case.load.history->max_value() + (harmonic ? std::abs(harmonic->amplitude) : 0.0);
+    const double half_space =
+        bounded_by_force ? resolve_numerics(contact_case).half_width : indenter.contact_radius(largest);
     return std::min(indenter.max_radius(), contact::layer_radius_margin * half_space);
 }
 
@@ -40,9 +43,17 @@ void refuse(const std::string& key, const std::string& value, const std::string&
     throw InvalidInput(key, value, what + " is not built on a [layer] yet (issue 28)");
 }
 
-// A contact that grows again after it shrank (reloading, or the recovering surface reaching the indenter again):
-// Ting's solution (eq. L12) then no longer holds, and the general one is not built.
-[[noreturn]] void refuse_regrowth(double time) {
+// A contact that grows again after it shrank (reloading, or the recovering surface reaching the indenter again) at
+// `time` [s]: Ting's solution (eq. L12) no longer holds. Thrown by the run of Ting's class, caught by
+// run_layer_indentation (displacement control: the run is repeated on LayerCells).
+struct ContactRegrows {
+    double time;
+};
+
+[[noreturn]] void refuse_regrowth(double time) { throw ContactRegrows{time}; }
+
+// Under force or spring control the general case is not built.
+[[noreturn]] void refuse_regrowth_under_force(double time) {
     throw InvalidInput("load.history", "[...]",
                        "the contact on the [layer] would grow again at t = " + format_value(time) +
                            " s after it shrank (reloading, or the recovering surface touching the indenter again): "
@@ -66,9 +77,10 @@ void validate_layer(const ContactCase& contact_case) {
     if (contact_case.spring() && !contact_case.spring()->force_pauses.empty()) {
         refuse("load.force_pauses", "[...]", "a force pause");
     }
-    if (contact_case.load.harmonic) {  // docs/theory.md, "Layers": the general case of Ting (1968)
+    if (contact_case.load.harmonic && !std::holds_alternative<DisplacementControl>(contact_case.control)) {
+        // docs/theory.md, "Layers": Ting's general case (1968) is built under displacement control only
         refuse("load.harmonic", "[...]",
-               "a harmonic load (its contact grows again after it shrank, outside Ting's 1966 solution)");
+               "a harmonic force or base (its contact grows again after it shrank, outside Ting's 1966 solution)");
     }
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
     if (!contact_case.snapshots.empty()) refuse("output.snapshots", "[...]", "a pressure snapshot");
@@ -84,10 +96,11 @@ void validate_layer(const ContactCase& contact_case) {
     contact::check_layer_contact_radius(layer, largest_radius);
 }
 
-IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress,
-                                        const StepObservers& observers) {
-    validate_layer(contact_case);
-    if (!observers.empty()) refuse("layer", "[...]", "a run with step observers (a sweep's measures)");
+namespace {
+
+// A run of Ting's class (one maximum of the contact radius; eq. L11 to L14); throws ContactRegrows where the
+// contact would grow again after it shrank.
+IndentationResult run_one_maximum(const ContactCase& contact_case, const ProgressObserver& progress) {
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
     const std::size_t nodes = contact_case.numerics.elements.value_or(contact::default_layer_nodes);
@@ -208,6 +221,25 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
         }
     }
     return result;
+}
+
+}  // namespace
+
+IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress,
+                                        const StepObservers& observers) {
+    validate_layer(contact_case);
+    if (!observers.empty()) refuse("layer", "[...]", "a run with step observers (a sweep's measures)");
+    const bool displacement = std::holds_alternative<DisplacementControl>(contact_case.control);
+    // A harmonic depth's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19).
+    if (displacement && contact_case.load.harmonic) {
+        return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), progress);
+    }
+    try {
+        return run_one_maximum(contact_case, progress);
+    } catch (const ContactRegrows& regrowth) {
+        if (!displacement) refuse_regrowth_under_force(regrowth.time);
+        return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), progress);
+    }
 }
 
 }  // namespace mdr::drivers

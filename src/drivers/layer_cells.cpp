@@ -1,0 +1,171 @@
+#include "layer_cells.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "mdr/error.hpp"
+
+namespace mdr::drivers {
+
+namespace {
+
+// E* / G of the incompressible layer (eq. 21): Q = 4 int G dw1.
+constexpr double plane_modulus_per_shear = 4.0;
+
+}  // namespace
+
+LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer& layer,
+                       const profile::Profile& indenter, double width, std::size_t cells)
+    : material_(&material),
+      flat_punch_(indenter.is_flat_punch()),
+      spacing_(width / static_cast<double>(cells)),
+      cells_(cells),
+      centre_(cells),
+      profile_(cells),
+      operator_(cells * cells),
+      factor_(cells * cells, 0.0),
+      displacement_(cells, 0.0),
+      branches_(cells * material.terms().size(), 0.0),
+      line_load_(cells, 0.0),
+      relaxed_(cells, 0.0),
+      trial_load_(cells, 0.0),
+      trial_displacement_(cells, 0.0) {
+    if (cells < 2) throw InvalidInput("numerics.elements", std::to_string(cells), "must be >= 2 on a layer");
+    const double h = layer.thickness;
+    const contact::LayerKernel kernel(layer.interface, 0.5, 2.0 * width / h);
+    for (std::size_t i = 0; i < cells; ++i) {
+        centre_[i] = (static_cast<double>(i) + 0.5) * spacing_;
+        profile_[i] = indenter.equivalent(centre_[i]);
+    }
+    // (I - K)_ij = delta_ij - (dx/pi) [K(x_i - x_j) + K(x_i + x_j)], K(y) = k(y/h)/h (eq. L3, L4; midpoint rule).
+    for (std::size_t i = 0; i < cells; ++i) {
+        for (std::size_t j = 0; j <= i; ++j) {
+            const double coupling = spacing_ / std::numbers::pi *
+                                    (kernel((centre_[i] - centre_[j]) / h) + kernel((centre_[i] + centre_[j]) / h)) /
+                                    h;
+            operator_[i * cells + j] = operator_[j * cells + i] = (i == j ? 1.0 : 0.0) - coupling;
+        }
+    }
+    // Cholesky, I - K = L L^T: symmetric, and positive as its symbol L(xi h) > 0 is (eq. L1).
+    for (std::size_t j = 0; j < cells; ++j) {
+        double diagonal = operator_[j * cells + j];
+        for (std::size_t k = 0; k < j; ++k) diagonal -= factor_[j * cells + k] * factor_[j * cells + k];
+        if (!(diagonal > 0.0)) {
+            throw std::runtime_error("the layer's operator I - K is not positive definite on " +
+                                     std::to_string(cells) + " cells");
+        }
+        factor_[j * cells + j] = std::sqrt(diagonal);
+        for (std::size_t i = j + 1; i < cells; ++i) {
+            double value = operator_[i * cells + j];
+            for (std::size_t k = 0; k < j; ++k) value -= factor_[i * cells + k] * factor_[j * cells + k];
+            factor_[i * cells + j] = value / factor_[j * cells + j];
+        }
+    }
+}
+
+void LayerCells::solve(std::size_t contact, double depth) {
+    const double stiffness = coefficients_.stiffness;
+    // Inside: (I - K) q = Q = 4 (stiffness (d - g) + relaxed) on the contact's cells, by the leading block of L.
+    std::fill(trial_load_.begin(), trial_load_.end(), 0.0);
+    for (std::size_t i = 0; i < contact; ++i) {
+        double value = plane_modulus_per_shear * (stiffness * (depth - profile_[i]) + relaxed_[i]);
+        for (std::size_t k = 0; k < i; ++k) value -= factor_[i * cells_ + k] * trial_load_[k];
+        trial_load_[i] = value / factor_[i * cells_ + i];
+    }
+    for (std::size_t i = contact; i-- > 0;) {
+        double value = trial_load_[i];
+        for (std::size_t k = i + 1; k < contact; ++k) value -= factor_[k * cells_ + i] * trial_load_[k];
+        trial_load_[i] = value / factor_[i * cells_ + i];
+    }
+    // Outside q = 0: Q_j = ((I - K) q)_j = 4 (stiffness w1_j + relaxed_j) gives the free surface.
+    for (std::size_t i = 0; i < cells_; ++i) {
+        if (i < contact) {
+            trial_displacement_[i] = depth - profile_[i];
+            continue;
+        }
+        double load = 0.0;
+        for (std::size_t k = 0; k < contact; ++k) load += operator_[i * cells_ + k] * trial_load_[k];
+        trial_displacement_[i] = (load / plane_modulus_per_shear - relaxed_[i]) / stiffness;
+    }
+}
+
+LayerCellState LayerCells::step(double time_step, double depth) {
+    foundation::fill_step_coefficients(*material_, time_step, coefficients_);
+    const auto& terms = material_->terms();
+    const std::size_t branches = terms.size();
+    // Q/4 = G_inf w1 + sum_k G_k (E_k h_k + B_k (w1 - w1_old)) + eta (w1 - w1_old) / dt = stiffness w1 + relaxed
+    // (exact for w1 linear over the step; foundation/step_coefficients.hpp).
+    for (std::size_t i = 0; i < cells_; ++i) {
+        double relaxed = 0.0;
+        for (std::size_t k = 0; k < branches; ++k) {
+            relaxed += terms[k].modulus * (coefficients_.decay[k] * branches_[i * branches + k] -
+                                           coefficients_.gain[k] * displacement_[i]);
+        }
+        // The parallel dashpot's eta (w1 - w1_old) / dt: its eta / dt is in the stiffness.
+        if (time_step > 0.0) relaxed -= material_->viscosity() / time_step * displacement_[i];
+        relaxed_[i] = relaxed;
+    }
+    // Complementarity (Ting 1968; eq. L17): q >= 0 in contact, the free surface not below the indenter outside.
+    // From the last contact set, a cell is dropped while its line load is negative and added while the indenter
+    // would penetrate it, never returning to a set already tried.
+    std::vector<bool> tried(cells_ + 1, false);
+    std::size_t contact = contact_;
+    for (;;) {
+        solve(contact, depth);
+        tried[contact] = true;
+        if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried[contact - 1]) {
+            --contact;
+        } else if (contact < cells_ && trial_displacement_[contact] < depth - profile_[contact] &&
+                   !tried[contact + 1]) {
+            ++contact;
+        } else {
+            break;
+        }
+    }
+    if (contact == cells_ && !flat_punch_) {
+        throw InvalidInput("layer", "depth " + format_value(depth),
+                           "the contact radius would exceed " + format_value(spacing_ * static_cast<double>(cells_)) +
+                               ", the largest the layer was prepared for");
+    }
+    LayerCellState state;
+    state.contact_cells = contact;
+    for (std::size_t i = 0; i < contact; ++i) state.force += 2.0 * spacing_ * trial_load_[i];  // eq. L5
+    if (contact == cells_) {
+        state.contact_radius = spacing_ * static_cast<double>(cells_);
+    } else if (contact > 0) {
+        // q/4 inside and (stiffness) times the gap outside meet with the same slope at the edge (w1 jumps in slope by
+        // q'/E* there): interpolated linearly between the two centres (second order).
+        const double load = trial_load_[contact - 1] / plane_modulus_per_shear;
+        const double gap = coefficients_.stiffness * (trial_displacement_[contact] - (depth - profile_[contact]));
+        state.contact_radius = centre_[contact - 1] + (load + gap > 0.0 ? spacing_ * load / (load + gap) : 0.5 * spacing_);
+    }
+    const std::vector<double> solved_load = trial_load_, solved_displacement = trial_displacement_;
+    if (contact_ > 0 && contact > 0) {
+        state.touching_part = {0.0, 1.0};
+    } else if (contact_ > 0) {  // lost: the innermost cell's q falls from its last value to its value held in contact
+        solve(1, depth);
+        const double before = line_load_[0], after = trial_load_[0];
+        state.touching_part = {0.0, after < 0.0 ? before / (before - after) : 1.0};
+    } else if (contact > 0) {  // regained: the innermost cell's gap closes
+        solve(0, depth);
+        const double before = displacement_[0] - (depth_ - profile_[0]);
+        const double after = trial_displacement_[0] - (depth - profile_[0]);
+        state.touching_part = {after < 0.0 ? before / (before - after) : 0.0, 1.0};
+    }
+    for (std::size_t i = 0; i < cells_; ++i) {
+        const double change = solved_displacement[i] - displacement_[i];
+        for (std::size_t k = 0; k < branches; ++k) {
+            double& branch = branches_[i * branches + k];
+            branch = coefficients_.decay[k] * branch + coefficients_.gain[k] * change;
+        }
+    }
+    displacement_ = solved_displacement;
+    line_load_ = solved_load;
+    contact_ = contact;
+    depth_ = depth;
+    return state;
+}
+
+}  // namespace mdr::drivers
