@@ -27,8 +27,8 @@ void validate_layer(const ContactCase& contact_case);
 /// `numerics.elements` is the least number of Gauss nodes over the contact (default contact::default_layer_nodes).
 /// A displacement-controlled case whose contact would grow again after it shrank (a reload, a held depth that the
 /// recovering surface reaches, a harmonic depth: outside Ting's solution) runs the coupled time-stepping on cells
-/// instead (Ting 1968's general case; eq. L16 to L19, src/drivers/layer_cells.hpp), a history from where the run of
-/// Ting's class found the regrowth, a harmonic from the start; `numerics.elements` is then its number of cells
+/// instead, from the start (Ting 1968's general case; eq. L16 to L19, src/drivers/layer_cells.hpp): a history once
+/// the run of Ting's class finds the regrowth, a harmonic at once; `numerics.elements` is then its number of cells
 /// (default default_layer_cells). Throws as validate_layer; for step observers (not built on a layer yet); naming
 /// `material.eta` for a parallel dashpot with a regrowing contact; and, naming `load.history`, when the contact
 /// would grow again under force or spring control (creep under a held force, a force after the contact was lost,
