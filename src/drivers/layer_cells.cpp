@@ -26,6 +26,7 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
       profile_(cells),
       operator_(cells * cells),
       factor_(cells * cells, 0.0),
+      factor_transposed_(cells * cells, 0.0),
       displacement_(cells, 0.0),
       branches_(cells * material.terms().size(), 0.0),
       line_load_(cells, 0.0),
@@ -63,9 +64,17 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
             factor_[i * cells + j] = value / factor_[j * cells + j];
         }
     }
+    for (std::size_t i = 0; i < cells; ++i) {
+        for (std::size_t j = 0; j <= i; ++j) factor_transposed_[j * cells + i] = factor_[i * cells + j];
+    }
 }
 
-void LayerCells::solve(std::size_t contact, double depth) {
+void LayerCells::solve(std::size_t contact, double depth, std::size_t free_cells) {
+    solve_load(contact, depth);
+    free_surface(contact, depth, free_cells);
+}
+
+void LayerCells::solve_load(std::size_t contact, double depth) {
     const double stiffness = coefficients_.stiffness;
     // Inside: (I - K) q = Q = 4 (stiffness (d - g) + relaxed) on the contact's cells, by the leading block of L.
     std::fill(trial_load_.begin(), trial_load_.end(), 0.0);
@@ -76,11 +85,15 @@ void LayerCells::solve(std::size_t contact, double depth) {
     }
     for (std::size_t i = contact; i-- > 0;) {
         double value = trial_load_[i];
-        for (std::size_t k = i + 1; k < contact; ++k) value -= factor_[k * cells_ + i] * trial_load_[k];
+        for (std::size_t k = i + 1; k < contact; ++k) value -= factor_transposed_[i * cells_ + k] * trial_load_[k];
         trial_load_[i] = value / factor_[i * cells_ + i];
     }
+}
+
+void LayerCells::free_surface(std::size_t contact, double depth, std::size_t free_cells) {
+    const double stiffness = coefficients_.stiffness;
     // Outside q = 0: Q_j = ((I - K) q)_j = 4 (stiffness w1_j + relaxed_j) gives the free surface.
-    for (std::size_t i = 0; i < cells_; ++i) {
+    for (std::size_t i = 0; i < std::min(cells_, contact + free_cells); ++i) {
         if (i < contact) {
             trial_displacement_[i] = depth - profile_[i];
             continue;
@@ -113,7 +126,7 @@ LayerCellState LayerCells::step(double time_step, double depth) {
     std::vector<bool> tried(cells_ + 1, false);
     std::size_t contact = contact_;
     for (;;) {
-        solve(contact, depth);
+        solve(contact, depth, 1);  // the free cell next to the contact decides
         tried[contact] = true;
         if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried[contact - 1]) {
             --contact;
@@ -141,15 +154,16 @@ LayerCellState LayerCells::step(double time_step, double depth) {
         const double gap = coefficients_.stiffness * (trial_displacement_[contact] - (depth - profile_[contact]));
         state.contact_radius = centre_[contact - 1] + (load + gap > 0.0 ? spacing_ * load / (load + gap) : 0.5 * spacing_);
     }
+    free_surface(contact, depth, cells_);  // every free cell's surface, for its branches
     const std::vector<double> solved_load = trial_load_, solved_displacement = trial_displacement_;
     if (contact_ > 0 && contact > 0) {
         state.touching_part = {0.0, 1.0};
     } else if (contact_ > 0) {  // lost: the innermost cell's q falls from its last value to its value held in contact
-        solve(1, depth);
+        solve(1, depth, 0);
         const double before = line_load_[0], after = trial_load_[0];
         state.touching_part = {0.0, after < 0.0 ? before / (before - after) : 1.0};
     } else if (contact > 0) {  // regained: the innermost cell's gap closes
-        solve(0, depth);
+        solve(0, depth, 1);
         const double before = displacement_[0] - (depth_ - profile_[0]);
         const double after = trial_displacement_[0] - (depth - profile_[0]);
         state.touching_part = {after < 0.0 ? before / (before - after) : 0.0, 1.0};

@@ -44,15 +44,20 @@ public:
     LayerCellState step(double time_step, double depth);
 
 private:
-    // q of the contact set [0, contact) for the step's coefficients and depth, and w1 of the free cells beyond.
-    void solve(std::size_t contact, double depth);
+    // q of the contact set [0, contact) for the step's coefficients and depth, and w1 of the first `free_cells`
+    // free cells beyond (O(m^2) for m cells in contact, and O(m) a free cell).
+    void solve(std::size_t contact, double depth, std::size_t free_cells);
+    // The two parts of solve: q on the contact set, then w1 (d - g inside).
+    void solve_load(std::size_t contact, double depth);
+    void free_surface(std::size_t contact, double depth, std::size_t free_cells);
 
     const rheology::Rheology* material_;
     bool flat_punch_;
     double spacing_;
     std::size_t cells_;
     std::vector<double> centre_, profile_;  // x_i, g(x_i)
-    std::vector<double> operator_, factor_; // I - K (midpoint rule) and its Cholesky factor, row-major
+    std::vector<double> operator_, factor_; // I - K (midpoint rule) and its Cholesky factor L, row-major
+    std::vector<double> factor_transposed_; // L^T, row-major (the back substitution reads rows)
     std::vector<double> displacement_;      // w1_i, committed
     std::vector<double> branches_;          // h_ki, per cell its branches together
     std::vector<double> line_load_;         // q_i, committed
