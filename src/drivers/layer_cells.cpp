@@ -152,7 +152,8 @@ LayerCellState LayerCells::step(double time_step, double depth) {
         // q'/E* there): interpolated linearly between the two centres (second order).
         const double load = trial_load_[contact - 1] / plane_modulus_per_shear;
         const double gap = coefficients_.stiffness * (trial_displacement_[contact] - (depth - profile_[contact]));
-        state.contact_radius = centre_[contact - 1] + (load + gap > 0.0 ? spacing_ * load / (load + gap) : 0.5 * spacing_);
+        state.contact_radius =
+            centre_[contact - 1] + (load + gap > 0.0 ? spacing_ * load / (load + gap) : 0.5 * spacing_);
     }
     free_surface(contact, depth, cells_);  // every free cell's surface, for its branches
     const std::vector<double> solved_load = trial_load_, solved_displacement = trial_displacement_;

@@ -20,14 +20,15 @@ namespace mdr::drivers {
 
 namespace {
 
-// `numerics.elements` on a layer is a number of Gauss nodes, each solve O(n^3).
+// `numerics.elements` on a layer is a number of Gauss nodes, each solve O(n^3), or of cells (LayerCells: I - K
+// factored once, O(n^3), each solve O(m^2)).
 constexpr std::size_t max_layer_nodes = 512;
 
 // The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius
-// (under displacement control at the largest depth, its harmonic amplitude added; under spring control at the largest base, as d <= z while
-// F >= 0; under force control and in an impact its bound at the largest force with the softest modulus, the
-// half-width of resolve_numerics: the layer, stiffer, has a smaller contact at the same force), within the profile's
-// range (beyond it LayerContact::at_depth refuses the depth).
+// (under displacement control at the largest depth, its harmonic amplitude added; under spring control at the
+// largest base, as d <= z while F >= 0; under force control and in an impact its bound at the largest force with
+// the softest modulus, the half-width of resolve_numerics: the layer, stiffer, has a smaller contact at the same
+// force), within the profile's range (beyond it LayerContact::at_depth refuses the depth).
 double largest_contact_radius(const ContactCase& contact_case) {
     const auto& indenter = *contact_case.indenter;
     if (indenter.is_flat_punch()) return indenter.max_radius();
@@ -90,7 +91,7 @@ void validate_layer(const ContactCase& contact_case) {
     if (contact_case.numerics.elements && *contact_case.numerics.elements > max_layer_nodes) {
         throw InvalidInput("numerics.elements", std::to_string(*contact_case.numerics.elements),
                            "must be <= " + std::to_string(max_layer_nodes) + " on a [layer] (Gauss nodes on the "
-                           "contact)");
+                           "contact, or cells where it grows again)");
     }
     const double largest_radius = largest_contact_radius(contact_case);
     contact::check_layer_contact_radius(layer, largest_radius);

@@ -10,8 +10,8 @@ namespace mdr::drivers {
 
 /// Throws mdr::InvalidInput (key `layer` or the offending key, its value and the rule) for a case with a `[layer]`
 /// that needs what is not built on a layer yet: Shore control, an oblique impact, a parallel dashpot under force or
-/// spring control or in an impact, a force pause, a harmonic force or base, tangential loading, snapshots, a compressible
-/// layer or a deformable indenter. Does nothing for a case without a layer.
+/// spring control or in an impact, a force pause, a harmonic force or base, tangential loading, snapshots, a
+/// compressible layer or a deformable indenter. Does nothing for a case without a layer.
 void validate_layer(const ContactCase& contact_case);
 
 /// Runs a displacement-, force- or spring-controlled case on its layer: the elastic layer's force F_el(d) at unit
