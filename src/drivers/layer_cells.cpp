@@ -40,6 +40,10 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
         centre_[i] = (static_cast<double>(i) + 0.5) * spacing_;
         profile_[i] = indenter.equivalent(centre_[i]);
     }
+    // lambda = (g(0) - g_0) / (g_1 - g_0): -1/2 for a cone, -1/8 for a sphere (as Foundation::axis_weight); 0 flat.
+    if (profile_[1] != profile_[0]) {
+        axis_weight_ = (indenter.equivalent(0.0) - profile_[0]) / (profile_[1] - profile_[0]);
+    }
     // (I - K)_ij = delta_ij - (dx/pi) [K(x_i - x_j) + K(x_i + x_j)], K(y) = k(y/h)/h (eq. L3, L4; midpoint rule).
     for (std::size_t i = 0; i < cells; ++i) {
         for (std::size_t j = 0; j <= i; ++j) {
@@ -145,30 +149,34 @@ LayerCellState LayerCells::step(double time_step, double depth) {
     LayerCellState state;
     state.contact_cells = contact;
     for (std::size_t i = 0; i < contact; ++i) state.force += 2.0 * spacing_ * trial_load_[i];  // eq. L5
+    free_surface(contact, depth, cells_);  // every free cell's surface, for its branches
+    // q/4 inside and minus the stiffness times the gap outside (E*/4 = the step's stiffness) meet with the same slope
+    // at the edge (w1 jumps in slope by q'/E* there): one C1 function (eq. L19).
+    const auto edge_function = [&](std::size_t i) {
+        return i < contact ? trial_load_[i] / plane_modulus_per_shear
+                           : -coefficients_.stiffness * (trial_displacement_[i] - (depth - profile_[i]));
+    };
     if (contact == cells_) {
         state.contact_radius = spacing_ * static_cast<double>(cells_);
-    } else if (contact > 0) {
-        // q/4 inside and (stiffness) times the gap outside meet with the same slope at the edge (w1 jumps in slope by
-        // q'/E* there): interpolated linearly between the two centres (second order).
-        const double load = trial_load_[contact - 1] / plane_modulus_per_shear;
-        const double gap = coefficients_.stiffness * (trial_displacement_[contact] - (depth - profile_[contact]));
+    } else if (contact > 0) {  // its zero, interpolated linearly between the two centres (second order)
+        const double inside = edge_function(contact - 1), outside = edge_function(contact);
         state.contact_radius =
-            centre_[contact - 1] + (load + gap > 0.0 ? spacing_ * load / (load + gap) : 0.5 * spacing_);
+            centre_[contact - 1] + (inside > outside ? spacing_ * inside / (inside - outside) : 0.5 * spacing_);
     }
-    free_surface(contact, depth, cells_);  // every free cell's surface, for its branches
-    const std::vector<double> solved_load = trial_load_, solved_displacement = trial_displacement_;
-    if (contact_ > 0 && contact > 0) {
+    // The same function at the axis, extrapolated linearly in g from the two innermost cells (q - E*(d - g) is
+    // smooth and even there; g has a cone's kink): the axis touches while it is positive, and a loss or a regain
+    // inside the step is located where it crosses zero, linear over the step (second order).
+    const double axis = edge_function(0) + axis_weight_ * (edge_function(1) - edge_function(0));
+    state.touching = axis > 0.0;
+    if (axis_ > 0.0 && state.touching) {
         state.touching_part = {0.0, 1.0};
-    } else if (contact_ > 0) {  // lost: the innermost cell's q falls from its last value to its value held in contact
-        solve(1, depth, 0);
-        const double before = line_load_[0], after = trial_load_[0];
-        state.touching_part = {0.0, after < 0.0 ? before / (before - after) : 1.0};
-    } else if (contact > 0) {  // regained: the innermost cell's gap closes
-        solve(0, depth, 1);
-        const double before = displacement_[0] - (depth_ - profile_[0]);
-        const double after = trial_displacement_[0] - (depth - profile_[0]);
-        state.touching_part = {after < 0.0 ? before / (before - after) : 0.0, 1.0};
+    } else if (axis_ > 0.0) {
+        state.touching_part = {0.0, axis_ / (axis_ - axis)};
+    } else if (state.touching) {
+        state.touching_part = {axis_ / (axis_ - axis), 1.0};
     }
+    axis_ = axis;
+    const std::vector<double> solved_load = trial_load_, solved_displacement = trial_displacement_;
     for (std::size_t i = 0; i < cells_; ++i) {
         const double change = solved_displacement[i] - displacement_[i];
         for (std::size_t k = 0; k < branches; ++k) {

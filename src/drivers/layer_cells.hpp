@@ -25,8 +25,9 @@ struct LayerCellState {
     double force = 0.0;           ///< F = 2 dx sum q_i [N] (eq. L5, midpoint rule)
     double contact_radius = 0.0;  ///< a [m], located between the outermost cell in contact and its free neighbour
     std::size_t contact_cells = 0;  ///< m: the cells [0, m) are in contact
-    /// The part [first, second] (fractions 0..1) of the last step with any contact: a loss or a regain located
-    /// inside the step by linear interpolation of the innermost cell's line load (loss) or gap (regain).
+    bool touching = false;        ///< the axis in contact (docs/theory.md eq. L19: the edge function at x = 0)
+    /// The part [first, second] (fractions 0..1) of the last step with the axis in contact: a loss or a regain
+    /// located inside the step where the edge function at the axis crosses zero (linear over the step).
     std::pair<double, double> touching_part{0.0, 0.0};
 };
 
@@ -62,6 +63,8 @@ private:
     std::vector<double> branches_;          // h_ki, per cell its branches together
     std::vector<double> line_load_;         // q_i, committed
     std::size_t contact_ = 0;               // committed contact cells
+    double axis_weight_ = 0.0;              // lambda: the axis from the two innermost cells, linear in g
+    double axis_ = 0.0;                     // the committed edge function at the axis (> 0: touching)
     double depth_ = 0.0;                    // committed depth
     // The step being solved: coefficients, the relaxed part of Q/4 per cell, the trial q and w1.
     foundation::StepCoefficients coefficients_;

@@ -41,7 +41,7 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
             result.radius.push_back(state.contact_radius);
         }
         if (cycle) {
-            cycle->record(grid[i].time, grid[i].value, state.force, state.contact_cells > 0, state.touching_part);
+            cycle->record(grid[i].time, grid[i].value, state.force, state.touching, state.touching_part);
         }
         const auto percent = static_cast<std::size_t>(100.0 * static_cast<double>(i + 1) /
                                                       static_cast<double>(grid.size()));
