@@ -109,6 +109,33 @@ void LayerCells::free_surface(std::size_t contact, double depth, std::size_t fre
 }
 
 LayerCellState LayerCells::step(double time_step, double depth) {
+    return advance(time_step, [depth](std::size_t) { return depth; }, false);
+}
+
+LayerCellState LayerCells::step_loaded(double time_step, double right_side, double spring_constant, double base) {
+    // F(d) + k d = right side. On a contact set q is affine in d (eq. L17, L18), so is F = F(0) + d (F(1) - F(0)).
+    // Without contact F = 0: a spring's indenter hangs at its base; under force control it rests on the free
+    // surface at the axis, extrapolated linearly in g (eq. L19's lambda).
+    const auto depth_for = [&](std::size_t contact) {
+        if (contact == 0) {
+            if (spring_constant > 0.0) return base;
+            solve(0, 0.0, 2);
+            const double inner = profile_[0] + trial_displacement_[0], next = profile_[1] + trial_displacement_[1];
+            return inner + axis_weight_ * (next - inner);
+        }
+        solve_load(contact, 0.0);
+        double at_zero = 0.0;
+        for (std::size_t i = 0; i < contact; ++i) at_zero += 2.0 * spacing_ * trial_load_[i];
+        solve_load(contact, 1.0);
+        double at_one = 0.0;
+        for (std::size_t i = 0; i < contact; ++i) at_one += 2.0 * spacing_ * trial_load_[i];
+        return (right_side - at_zero) / (at_one - at_zero + spring_constant);
+    };
+    return advance(time_step, depth_for, spring_constant == 0.0 && right_side > 0.0);
+}
+
+template <class DepthRule>
+LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for, bool needs_contact) {
     foundation::fill_step_coefficients(*material_, time_step, coefficients_);
     const auto& terms = material_->terms();
     const std::size_t branches = terms.size();
@@ -127,14 +154,18 @@ LayerCellState LayerCells::step(double time_step, double depth) {
     // Complementarity (Ting 1968; eq. L17): q >= 0 in contact, the free surface not below the indenter outside.
     // From the last contact set, a cell is dropped while its line load is negative and added while the indenter
     // would penetrate it, never returning to a set already tried.
+    // A force with no contact (`needs_contact`) adds the innermost cell.
     std::vector<bool> tried(cells_ + 1, false);
     std::size_t contact = contact_;
+    double depth = 0.0;
     for (;;) {
+        depth = depth_for(contact);
         solve(contact, depth, 1);  // the free cell next to the contact decides
         tried[contact] = true;
         if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried[contact - 1]) {
             --contact;
-        } else if (contact < cells_ && trial_displacement_[contact] < depth - profile_[contact] &&
+        } else if (contact < cells_ &&
+                   (trial_displacement_[contact] < depth - profile_[contact] || (needs_contact && contact == 0)) &&
                    !tried[contact + 1]) {
             ++contact;
         } else {
@@ -176,6 +207,7 @@ LayerCellState LayerCells::step(double time_step, double depth) {
         state.touching_part = {axis_ / (axis_ - axis), 1.0};
     }
     axis_ = axis;
+    state.depth = depth;
     const std::vector<double> solved_load = trial_load_, solved_displacement = trial_displacement_;
     for (std::size_t i = 0; i < cells_; ++i) {
         const double change = solved_displacement[i] - displacement_[i];

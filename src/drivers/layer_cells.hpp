@@ -22,6 +22,7 @@ inline constexpr std::size_t default_layer_cells = 400;
 
 /// The state after a step of LayerCells.
 struct LayerCellState {
+    double depth = 0.0;           ///< d [m]: prescribed, or solved (force and spring control)
     double force = 0.0;           ///< F = 2 dx sum q_i [N] (eq. L5, midpoint rule)
     double contact_radius = 0.0;  ///< a [m], located between the outermost cell in contact and its free neighbour
     std::size_t contact_cells = 0;  ///< m: the cells [0, m) are in contact
@@ -43,8 +44,15 @@ public:
     /// Steps by `time_step` >= 0 [s] with the depth linear over it to `depth` [m]. Throws mdr::InvalidInput (key
     /// `layer`) when the contact would reach the last cell (a smooth indenter's contact outgrowing the range).
     LayerCellState step(double time_step, double depth);
+    /// Steps by `time_step` >= 0 [s] to the depth at which F(d) + k d = `right_side` [N], k = `spring_constant` >= 0
+    /// [N/m]: force control (k = 0, the force), or spring control (k z, z = `base` [m], where the indenter hangs
+    /// without contact). Under force control at zero force the indenter rests on the free surface at the axis.
+    LayerCellState step_loaded(double time_step, double right_side, double spring_constant, double base);
 
 private:
+    // One step: `depth_for(m)` gives the depth for the contact set [0, m); `needs_contact`: a force without contact.
+    template <class DepthRule>
+    LayerCellState advance(double time_step, const DepthRule& depth_for, bool needs_contact);
     // q of the contact set [0, contact) for the step's coefficients and depth, and w1 of the first `free_cells`
     // free cells beyond (O(m^2) for m cells in contact, and O(m) a free cell).
     void solve(std::size_t contact, double depth, std::size_t free_cells);

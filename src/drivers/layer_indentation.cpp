@@ -44,22 +44,10 @@ void refuse(const std::string& key, const std::string& value, const std::string&
     throw InvalidInput(key, value, what + " is not built on a [layer] yet (issue 28)");
 }
 
-// A contact that grows again after it shrank (reloading, or the recovering surface reaching the indenter again) at
-// `time` [s]: Ting's solution (eq. L12) no longer holds. Thrown by the run of Ting's class, caught by
-// run_layer_indentation (displacement control: the run is repeated on LayerCells).
-struct ContactRegrows {
-    double time;
-};
-
-[[noreturn]] void refuse_regrowth(double time) { throw ContactRegrows{time}; }
-
-// Under force or spring control the general case is not built.
-[[noreturn]] void refuse_regrowth_under_force(double time) {
-    throw InvalidInput("load.history", "[...]",
-                       "the contact on the [layer] would grow again at t = " + format_value(time) +
-                           " s after it shrank (reloading, or the recovering surface touching the indenter again): "
-                           "not built on a [layer] yet (issue 28)");
-}
+// A contact that grows again after it shrank (reloading, or the recovering surface reaching the indenter again):
+// Ting's solution (eq. L12) no longer holds. Thrown by the run of Ting's class, caught by run_layer_indentation,
+// which runs the case again on LayerCells.
+struct ContactRegrows {};
 
 }  // namespace
 
@@ -152,7 +140,7 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
                    : now.phase != LayerPhase::lifted_off                     ? stepper.recede(node.time, depth)
                                                                              : stepper.recover(node.time);
             if (next.phase == LayerPhase::lifted_off && depth > next.centre + 1e-9 * largest_depth) {
-                refuse_regrowth(node.time);  // the indenter reaches the recovering surface
+                throw ContactRegrows{};  // the indenter reaches the recovering surface
             }
         } else {
             // The base z (spring), or the force (its round-off below zero is no pull).
@@ -189,7 +177,7 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
                 next = stepper.recover(node.time);
                 // The recovering surface would be loaded again: a force, or the spring's indenter reaching it.
                 if (right_side - stiffness * next.centre > stiffness * 1e-9 * largest_depth) {
-                    refuse_regrowth(node.time);
+                    throw ContactRegrows{};
                 }
             } else if (now.phase == LayerPhase::receding) {
                 next = recede();
@@ -203,7 +191,7 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
             // Without force the spring's indenter hangs at the base, apart from the surface.
             depth = spring && next.force == 0.0 ? target : next.centre;
         }
-        if (next.grows_again) refuse_regrowth(node.time);
+        if (next.grows_again) throw ContactRegrows{};
         previous_centre = now.centre;
         stepper.commit(next);
         if (i > 0) ++result.steps;
@@ -237,8 +225,7 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     }
     try {
         return run_one_maximum(contact_case, progress);
-    } catch (const ContactRegrows& regrowth) {
-        if (!displacement) refuse_regrowth_under_force(regrowth.time);
+    } catch (const ContactRegrows&) {
         return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), progress);
     }
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <optional>
+#include <variant>
 
 #include "mdr/error.hpp"
 #include "cycle_measure.hpp"
@@ -28,21 +29,28 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
     std::optional<CycleMeasure> cycle;
     if (const auto& harmonic = contact_case.load.harmonic) cycle.emplace(*harmonic, contact_case.end_time);
     const auto grid = indentation_grid(contact_case, result.numerics);
+    const bool displacement = std::holds_alternative<DisplacementControl>(contact_case.control);
+    const SpringControl* spring = contact_case.spring();
+    const double spring_constant = spring ? spring->spring_constant : 0.0;
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     std::size_t reported = 0;
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const double time_step = i == 0 ? 0.0 : grid[i].time - grid[i - 1].time;
-        const LayerCellState state = layer.step(time_step, grid[i].value);
+        const double value = grid[i].value;
+        // A force's round-off below zero is no pull; a spring's right side is k z.
+        const LayerCellState state =
+            displacement ? layer.step(time_step, value)
+                         : layer.step_loaded(time_step, spring ? spring_constant * value : std::max(value, 0.0),
+                                             spring_constant, value);
         if (i > 0) ++result.steps;
         if (i % every == 0 || i + 1 == grid.size()) {
             result.time.push_back(grid[i].time);
-            result.depth.push_back(grid[i].value);
+            result.depth.push_back(state.depth);
             result.force.push_back(state.force);
             result.radius.push_back(state.contact_radius);
+            if (spring) result.base.push_back(value);
         }
-        if (cycle) {
-            cycle->record(grid[i].time, grid[i].value, state.force, state.touching, state.touching_part);
-        }
+        if (cycle) cycle->record(grid[i].time, state.depth, state.force, state.touching, state.touching_part);
         const auto percent = static_cast<std::size_t>(100.0 * static_cast<double>(i + 1) /
                                                       static_cast<double>(grid.size()));
         if (progress && percent > reported) {
