@@ -66,11 +66,6 @@ void validate_layer(const ContactCase& contact_case) {
     if (contact_case.spring() && !contact_case.spring()->force_pauses.empty()) {
         refuse("load.force_pauses", "[...]", "a force pause");
     }
-    if (contact_case.load.harmonic && !std::holds_alternative<DisplacementControl>(contact_case.control)) {
-        // docs/theory.md, "Layers": Ting's general case (1968) is built under displacement control only
-        refuse("load.harmonic", "[...]",
-               "a harmonic force or base (its contact grows again after it shrank, outside Ting's 1966 solution)");
-    }
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
     if (!contact_case.snapshots.empty()) refuse("output.snapshots", "[...]", "a pressure snapshot");
     if (!contact_case.tangential_exact) {
@@ -110,8 +105,8 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
                                 progress);
     }
     const auto& history = *contact_case.load.history;
-    // The half-space's grid (no cut of its own: snapshots, a tangential load, a harmonic and force pauses are refused
-    // on a layer): under force or spring control graded after the same fast changes, a spring's base from where it is.
+    // The half-space's grid (no cut of its own: snapshots, a tangential load and force pauses are refused on a layer,
+    // a harmonic runs on cells): under force or spring control graded after the same fast changes, a spring's base from where it is.
     const auto grid = indentation_grid(contact_case, result.numerics);
 
     const auto& material = contact_case.material;
@@ -218,9 +213,8 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
                                         const StepObservers& observers) {
     validate_layer(contact_case);
     if (!observers.empty()) refuse("layer", "[...]", "a run with step observers (a sweep's measures)");
-    const bool displacement = std::holds_alternative<DisplacementControl>(contact_case.control);
-    // A harmonic depth's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19).
-    if (displacement && contact_case.load.harmonic) {
+    // A harmonic load's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19).
+    if (contact_case.load.harmonic) {
         return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), progress);
     }
     try {

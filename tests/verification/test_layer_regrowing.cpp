@@ -112,6 +112,40 @@ TEST(LayerRegrowing, AThickLayerMeetsTheHalfSpaceOnAReload) {
     expect_second_order(errors);
 }
 
+TEST(LayerRegrowing, AThickLayerMeetsTheHalfSpaceUnderForceAndSpringControl) {
+    // The depth of each step solved on the cells (LayerCells::step_loaded): a force that falls and rises again, a
+    // force after the contact was lost, a harmonic force, and a spring's base withdrawn and brought back.
+    const std::vector<std::string> loads = {
+        "control = \"force\"\nhistory = [[0.0, 0.0], [0.5, 3.0e-8], [0.75, 1.0e-8], [1.25, 3.0e-8], [2.0, 0.0]]\n",
+        "control = \"force\"\nhistory = [[0.0, 0.0], [0.5, 3.0e-8], [1.0, 0.0], [1.5, 0.0], [1.75, 2.0e-8], "
+        "[2.0, 2.0e-8]]\n",
+        "control = \"force\"\nhistory = [[0.0, 0.0], [0.5, 2.0e-8], [3.5, 2.0e-8]]\n"
+        "harmonic = { amplitude = 1.0e-8, frequency = 2.0, start = 0.5, end = 3.5 }\n",
+        "control = \"spring\"\nspring_constant = 0.05\nhistory = [[0.0, 0.0], [0.5, 2.0e-6], [1.0, -0.5e-6], "
+        "[1.25, -0.5e-6], [2.0, 2.0e-6]]\n"};
+    for (const std::string& load : loads) {
+        std::string text = regrowing_case(standard_solid, load, "");
+        text.erase(text.find("control = \"displacement\"\n"), std::string("control = \"displacement\"\n").size());
+        const auto half_space = run(text);
+        // Default numerics: the run of Ting's class on 48 Gauss nodes up to the regrowth, then 400 cells.
+        const auto layer = run(text + "[layer]\nthickness = 1.0e3\ninterface = \"bonded\"\n");
+        ASSERT_EQ(layer.time.size(), half_space.time.size());
+        const double deepest = *std::max_element(half_space.depth.begin(), half_space.depth.end());
+        double largest = 0.0;
+        for (std::size_t i = 0; i < layer.time.size(); ++i) {
+            largest = std::max(largest, std::abs(layer.depth[i] - half_space.depth[i]));
+        }
+        // Observed 2.1e-5, 2.6e-5, 1.9e-5, 1.1e-5 of the largest depth (in this order).
+        EXPECT_LT(largest / deepest, 5e-5) << load;
+        if (half_space.harmonic) {
+            ASSERT_TRUE(layer.harmonic);
+            // Observed k' 7.1e-6, k'' 1.1e-5 of themselves.
+            EXPECT_NEAR(*layer.harmonic->storage_stiffness / *half_space.harmonic->storage_stiffness, 1.0, 3e-5);
+            EXPECT_NEAR(*layer.harmonic->loss_stiffness / *half_space.harmonic->loss_stiffness, 1.0, 3e-5);
+        }
+    }
+}
+
 TEST(LayerRegrowing, AnElasticLayerMeetsTheElasticSolutionAtEveryStep) {
     // No memory: the force at every step is the elastic layer's at that depth, 4 G F_el(d) (eq. L3 to L6, solved
     // on 96 Gauss nodes by LayerContact, within 1e-7), whatever the history.

@@ -184,20 +184,6 @@ TEST(LayerViscoelastic, FlatPunchUnderForceControlOnAVeryThickLayerIsTheHalfSpac
     }
 }
 
-TEST(LayerViscoelastic, AForceThatWouldMakeTheContactGrowAgainIsRefusedNamingTheHistory) {
-    // Under force control the general case (Ting 1968) is not built: a force after the contact was lost.
-    const std::string layer = "[layer]\nthickness = 2.0e-6\ninterface = \"bonded\"\n";
-    const std::string again = "[[0.0, 0.0], [1.0, 3.0e-8], [2.0, 0.0], [3.0, 0.0], [3.5, 1.0e-8]]";
-    try {
-        mdr::drivers::run_case(mdr::io::parse_case(layer_case(layer, again, "force")));
-        ADD_FAILURE() << "was run";
-    } catch (const mdr::InvalidInput& error) {
-        EXPECT_EQ(error.key(), "load.history");
-        const std::string message = error.what();
-        EXPECT_NE(message.find("would grow again at t = "), std::string::npos) << message;
-    }
-}
-
 TEST(LayerViscoelastic, AHeldDepthThatTheRecoveringSurfaceReachesAgainTouchesWhenTheHalfSpaceDoes) {
     // The centre of the layer's surface recovers as the half-space's after the contact is lost (eq. L14), so the
     // contact regrows (on LayerCells, eq. L16 to L19) when the half-space driver's touches again: within one step
