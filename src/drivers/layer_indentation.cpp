@@ -106,7 +106,8 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     }
     const auto& history = *contact_case.load.history;
     // The half-space's grid (no cut of its own: snapshots, a tangential load and force pauses are refused on a layer,
-    // a harmonic runs on cells): under force or spring control graded after the same fast changes, a spring's base from where it is.
+    // a harmonic runs on cells): under force or spring control graded after the same fast changes, a spring's base
+    // from where it is.
     const auto grid = indentation_grid(contact_case, result.numerics);
 
     const auto& material = contact_case.material;

@@ -9,8 +9,8 @@
 namespace mdr::drivers {
 
 /// Runs a displacement-, force- or spring-controlled case with a `[layer]` on LayerCells (under force and spring
-/// control the depth of each step solved from F(d) + k d = the right side, LayerCells::step_loaded): `numerics.elements` cells (default
-/// default_layer_cells) on [0, `largest_radius`] (the widest contact prepared for, [m]), on the half-space driver's
+/// control the depth of each step solved from F(d) + k d = the right side, LayerCells::step_loaded):
+/// `numerics.elements` cells (default default_layer_cells) on [0, `largest_radius`] (the widest contact prepared for, [m]), on the half-space driver's
 /// time grid (its harmonic part added and its last full cycle measured as on the half-space, HarmonicOutcome).
 /// Throws mdr::InvalidInput naming `material.eta` for a parallel dashpot (not built here), and key `layer` when the
 /// contact outgrows the range.
