@@ -44,7 +44,7 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
     if (profile_[1] != profile_[0]) {
         axis_weight_ = (indenter.equivalent(0.0) - profile_[0]) / (profile_[1] - profile_[0]);
     }
-    // (I - K)_ij = delta_ij - (dx/pi) [K(x_i - x_j) + K(x_i + x_j)], K(y) = k(y/h)/h (eq. L3, L4; midpoint rule).
+    // (I - K)_ij = delta_ij - (dx/pi) [K(x_i - x_j) + K(x_i + x_j)], K(y) = k(y/h)/h (eq. L17 from L3, L4; midpoint rule).
     for (std::size_t i = 0; i < cells; ++i) {
         for (std::size_t j = 0; j <= i; ++j) {
             const double coupling = spacing_ / std::numbers::pi *
@@ -115,7 +115,7 @@ LayerCellState LayerCells::step(double time_step, double depth) {
 LayerCellState LayerCells::step_loaded(double time_step, double right_side, double spring_constant, double base) {
     // F(d) + k d = right side. On a contact set q is affine in d (eq. L17, L18), so is F = F(0) + d (F(1) - F(0)).
     // Without contact F = 0: a spring's indenter hangs at its base; under force control it rests on the free
-    // surface at the axis, extrapolated linearly in g (eq. L19's lambda).
+    // surface at the axis, extrapolated linearly in g (the lambda of the axis, below eq. L19).
     const auto depth_for = [&](std::size_t contact) {
         if (contact == 0) {
             if (spring_constant > 0.0) return base;
@@ -140,7 +140,7 @@ LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for,
     const auto& terms = material_->terms();
     const std::size_t branches = terms.size();
     // Q/4 = G_inf w1 + sum_k G_k (E_k h_k + B_k (w1 - w1_old)) + eta (w1 - w1_old) / dt = stiffness w1 + relaxed
-    // (exact for w1 linear over the step; foundation/step_coefficients.hpp).
+    // (eq. L16: exact for w1 linear over the step; foundation/step_coefficients.hpp).
     for (std::size_t i = 0; i < cells_; ++i) {
         double relaxed = 0.0;
         for (std::size_t k = 0; k < branches; ++k) {
@@ -151,7 +151,7 @@ LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for,
         if (time_step > 0.0) relaxed -= material_->viscosity() / time_step * displacement_[i];
         relaxed_[i] = relaxed;
     }
-    // Complementarity (Ting 1968; eq. L17): q >= 0 in contact, the free surface not below the indenter outside.
+    // Complementarity (Ting 1968; eq. L18): q >= 0 in contact, the free surface not below the indenter outside.
     // From the last contact set, a cell is dropped while its line load is negative and added while the indenter
     // would penetrate it, never returning to a set already tried.
     // A force with no contact (`needs_contact`) adds the innermost cell.
@@ -178,7 +178,6 @@ LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for,
                                ", the largest the layer was prepared for");
     }
     LayerCellState state;
-    state.contact_cells = contact;
     for (std::size_t i = 0; i < contact; ++i) state.force += 2.0 * spacing_ * trial_load_[i];  // eq. L5
     free_surface(contact, depth, cells_);  // every free cell's surface, for its branches
     // q/4 inside and minus the stiffness times the gap outside (E*/4 = the step's stiffness) meet with the same slope

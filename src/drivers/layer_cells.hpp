@@ -25,7 +25,6 @@ struct LayerCellState {
     double depth = 0.0;           ///< d [m]: prescribed, or solved (force and spring control)
     double force = 0.0;           ///< F = 2 dx sum q_i [N] (eq. L5, midpoint rule)
     double contact_radius = 0.0;  ///< a [m], located between the outermost cell in contact and its free neighbour
-    std::size_t contact_cells = 0;  ///< m: the cells [0, m) are in contact
     bool touching = false;        ///< the axis in contact (docs/theory.md eq. L19: the edge function at x = 0)
     /// The part [first, second] (fractions 0..1) of the last step with the axis in contact: a loss or a regain
     /// located inside the step where the edge function at the axis crosses zero (linear over the step).
