@@ -256,6 +256,15 @@ def test_a_contact_growing_again_under_force_or_spring_control_meets_the_coupled
     assert min(orders) > 1.6, (errors, orders)
 
 
+def test_a_dashpot_with_a_contact_that_grows_again_is_refused_naming_eta():
+    # Not built: a cell entering the contact would take the dashpot's kick within one step (first order in the cell).
+    material = (1.0e3, 20.0, [(3.0e3, 0.2)])
+    with pytest.raises(ValueError, match=r"^material\.eta = 20: a parallel dashpot with a contact that grows again"):
+        run_mdr(material, HARMONIC_MEAN, harmonic=HARMONIC)
+    with pytest.raises(ValueError, match=r"^material\.eta = 20: a parallel dashpot with a contact that grows again"):
+        run_mdr(material, RELOAD)
+
+
 def test_force_control_meets_the_coupled_time_stepping(kernel):
     # A force triangle, then no force: the contact grows under the rising force and after its peak (creep), recedes,
     # and the indenter rides on the recovering surface. The reference solves for d in each step (q is linear in d
