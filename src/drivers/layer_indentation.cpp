@@ -218,10 +218,19 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     if (contact_case.load.harmonic) {
         return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), progress);
     }
+    // The run again on cells reports no less than the first run reached (each call still lets the caller abandon).
+    double reached = 0.0;
+    ProgressObserver monotone;
+    if (progress) {
+        monotone = [&](double fraction) {
+            reached = std::max(reached, fraction);
+            progress(reached);
+        };
+    }
     try {
-        return run_one_maximum(contact_case, progress);
+        return run_one_maximum(contact_case, monotone);
     } catch (const ContactRegrows&) {
-        return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), progress);
+        return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), monotone);
     }
 }
 

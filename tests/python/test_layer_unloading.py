@@ -256,6 +256,17 @@ def test_a_contact_growing_again_under_force_or_spring_control_meets_the_coupled
     assert min(orders) > 1.6, (errors, orders)
 
 
+def test_the_progress_of_a_run_again_on_cells_never_goes_back():
+    # The run of Ting's class reports up to the reload, then the run on cells from the start: held, not restarted.
+    material, _ = CASES["triangle"]
+    fractions = []
+    mdr.run({"material": {"model": "prony", "G_inf": material[0], "terms": [list(t) for t in material[2]]},
+             "indenter": {"shape": "sphere", "R": R}, "load": {"control": "displacement", "history": RELOAD},
+             "layer": {"thickness": H, "interface": "bonded"}}, progress=fractions.append)
+    assert fractions and fractions[-1] == 1.0
+    assert all(later >= earlier for earlier, later in zip(fractions, fractions[1:])), fractions
+
+
 def test_a_dashpot_with_a_contact_that_grows_again_is_refused_naming_eta():
     # Not built: a cell entering the contact would take the dashpot's kick within one step (first order in the cell).
     material = (1.0e3, 20.0, [(3.0e3, 0.2)])
