@@ -29,7 +29,6 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
       factor_transposed_(cells * cells, 0.0),
       displacement_(cells, 0.0),
       branches_(cells * material.terms().size(), 0.0),
-      line_load_(cells, 0.0),
       relaxed_(cells, 0.0),
       trial_load_(cells, 0.0),
       trial_displacement_(cells, 0.0) {
@@ -207,18 +206,15 @@ LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for,
     }
     axis_ = axis;
     state.depth = depth;
-    const std::vector<double> solved_load = trial_load_, solved_displacement = trial_displacement_;
     for (std::size_t i = 0; i < cells_; ++i) {
-        const double change = solved_displacement[i] - displacement_[i];
+        const double change = trial_displacement_[i] - displacement_[i];
         for (std::size_t k = 0; k < branches; ++k) {
             double& branch = branches_[i * branches + k];
             branch = coefficients_.decay[k] * branch + coefficients_.gain[k] * change;
         }
     }
-    displacement_ = solved_displacement;
-    line_load_ = solved_load;
+    displacement_ = trial_displacement_;
     contact_ = contact;
-    depth_ = depth;
     return state;
 }
 

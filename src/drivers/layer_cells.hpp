@@ -16,8 +16,9 @@
 
 namespace mdr::drivers {
 
-/// Cells on the contact's widest range when `[numerics] elements` is not given: the force is within ~1e-4 of the
-/// peak with the contact over a third of the range (second order in the cell, tests/python/test_layer_regrowing.py).
+/// Cells on the contact's widest range when `[numerics] elements` is not given: the force within ~4e-5 of the peak
+/// with the contact over a third of the range (second order in the cell; tests/verification/test_layer_regrowing.cpp,
+/// tests/python/test_layer_unloading.py).
 inline constexpr std::size_t default_layer_cells = 400;
 
 /// The state after a step of LayerCells.
@@ -68,11 +69,9 @@ private:
     std::vector<double> factor_transposed_; // L^T, row-major (the back substitution reads rows)
     std::vector<double> displacement_;      // w1_i, committed
     std::vector<double> branches_;          // h_ki, per cell its branches together
-    std::vector<double> line_load_;         // q_i, committed
     std::size_t contact_ = 0;               // committed contact cells
     double axis_weight_ = 0.0;              // lambda: the axis from the two innermost cells, linear in g
     double axis_ = 0.0;                     // the committed edge function at the axis (> 0: touching)
-    double depth_ = 0.0;                    // committed depth
     // The step being solved: coefficients, the relaxed part of Q/4 per cell, the trial q and w1.
     foundation::StepCoefficients coefficients_;
     std::vector<double> relaxed_, trial_load_, trial_displacement_;
