@@ -25,14 +25,13 @@ void validate_layer(const ContactCase& contact_case);
 /// depth of each step by numerics::monotone_root (the force increases with it in either phase), spring control
 /// likewise F(d) + k d = k z (F = k (z - d)). An impact runs run_layer_impact (src/drivers/layer_impact.hpp).
 /// `numerics.elements` is the least number of Gauss nodes over the contact (default contact::default_layer_nodes).
-/// A displacement-controlled case whose contact would grow again after it shrank (a reload, a held depth that the
-/// recovering surface reaches, a harmonic depth: outside Ting's solution) runs the coupled time-stepping on cells
-/// instead, from the start (Ting 1968's general case; eq. L16 to L19, src/drivers/layer_cells.hpp): a history once
-/// the run of Ting's class finds the regrowth, a harmonic at once; `numerics.elements` is then its number of cells
-/// (default default_layer_cells). Throws as validate_layer; for step observers (not built on a layer yet); naming
-/// `material.eta` for a parallel dashpot with a regrowing contact; and, naming `load.history`, when the contact
-/// would grow again under force or spring control (creep under a held force, a force after the contact was lost,
-/// the spring's base reaching the recovering surface: not built yet).
+/// A case whose contact would grow again after it shrank (a reload, a held depth that the recovering surface
+/// reaches, creep under a held force, a force after the contact was lost, a spring's base reaching the recovering
+/// surface, a harmonic load: outside Ting's solution) runs the coupled time-stepping on cells instead, from the start
+/// (Ting 1968's general case; eq. L16 to L19, src/drivers/layer_cells.hpp): a history once the run of Ting's class
+/// finds the regrowth (the progress then held at the fraction reached), a harmonic at once; `numerics.elements` is
+/// then its number of cells (default default_layer_cells). Throws as validate_layer; for step observers (not built
+/// on a layer yet); and naming `material.eta` for a parallel dashpot with a regrowing contact.
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {},
                                         const StepObservers& observers = {});
 
