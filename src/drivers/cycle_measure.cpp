@@ -30,11 +30,16 @@ CycleMeasure::CycleMeasure(const HarmonicLoad& harmonic, double simulated_end)
       cycle_(harmonic.last_full_cycle(simulated_end)) {}
 
 void CycleMeasure::observe(const StepState& state) {
-    const double time = state.time;
-    const double depth = state.depth;
-    const double force = state.force;
     const foundation::Foundation& foundation = *state.foundation;
-    const Sample sample{time, depth, force, foundation.contact_count() > 0};
+    const bool touching = foundation.contact_count() > 0;
+    const auto part = last_ ? touching_part_of_step(last_->touching, touching, foundation)
+                            : std::pair<double, double>{0.0, 0.0};
+    record(state.time, state.depth, state.force, touching, part);
+}
+
+void CycleMeasure::record(double time, double depth, double force, bool touching,
+                          std::pair<double, double> touching_part) {
+    const Sample sample{time, depth, force, touching};
     // The cycle's bounds are nodes of the time grid (HarmonicLoad::breakpoints); the steps inside it are uniform.
     if (cycle_ && last_ && last_->time >= cycle_->first && time <= cycle_->second && time >= last_->time) {
         const double step = time - last_->time;
@@ -45,7 +50,7 @@ void CycleMeasure::observe(const StepState& state) {
         // dashpot meeting the surface at a different rate): there it is taken as the step's end value from the
         // entry on, so that the jump's place inside the step is kept (second order; a trapezoid over the whole
         // step would be first order).
-        const auto [first, second] = touching_part_of_step(last_->touching, sample.touching, foundation);
+        const auto [first, second] = touching_part;
         const double t_first = last_->time + first * step, t_second = last_->time + second * step;
         const double force_first = first > 0.0 ? force : last_->force;
         const double force_second = second < 1.0 ? 0.0 : force;

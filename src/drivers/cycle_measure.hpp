@@ -17,6 +17,10 @@ class CycleMeasure final : public StepObserver {
 public:
     CycleMeasure(const HarmonicLoad& harmonic, double simulated_end);
     void observe(const StepState& state) override;
+    /// The state at `time` [s] with its depth [m] and force [N], whether anything touches, and the part [first,
+    /// second] (fractions 0..1) of the step since the last state during which anything touched (a driver without a
+    /// foundation: the layer's cells).
+    void record(double time, double depth, double force, bool touching, std::pair<double, double> touching_part);
     /// The outcome; none when not one full cycle was simulated.
     std::optional<HarmonicOutcome> outcome() const;
 

@@ -14,26 +14,30 @@
 #include "mdr/numerics/monotone_root.hpp"
 #include "mdr/rheology/compressible.hpp"
 #include "layer_impact.hpp"
+#include "layer_regrowing.hpp"
 #include "layer_stepping.hpp"
 
 namespace mdr::drivers {
 
 namespace {
 
-// `numerics.elements` on a layer is a number of Gauss nodes, each solve O(n^3).
+// `numerics.elements` on a layer is a number of Gauss nodes, each solve O(n^3), or of cells (LayerCells: I - K
+// factored once, O(n^3), each solve O(m^2)).
 constexpr std::size_t max_layer_nodes = 512;
 
 // The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius
-// (under displacement control at the largest depth; under spring control at the largest base, as d <= z while
-// F >= 0; under force control and in an impact its bound at the largest force with the softest modulus, the
-// half-width of resolve_numerics: the layer, stiffer, has a smaller contact at the same force), within the profile's
-// range (beyond it LayerContact::at_depth refuses the depth).
+// (under displacement control at the largest depth, its harmonic amplitude added; under spring control at the
+// largest base, as d <= z while F >= 0; under force control and in an impact its bound at the largest force with
+// the softest modulus, the half-width of resolve_numerics: the layer, stiffer, has a smaller contact at the same
+// force), within the profile's range (beyond it LayerContact::at_depth refuses the depth).
 double largest_contact_radius(const ContactCase& contact_case) {
     const auto& indenter = *contact_case.indenter;
     if (indenter.is_flat_punch()) return indenter.max_radius();
     const bool bounded_by_force = contact_case.impact() || std::holds_alternative<ForceControl>(contact_case.control);
-    const double half_space = bounded_by_force ? resolve_numerics(contact_case).half_width
-                                               : indenter.contact_radius(contact_case.load.history->max_value());
+    const auto& harmonic = contact_case.load.harmonic;
+    const double largest = contact_case.load.history->max_value() + (harmonic ? std::abs(harmonic->amplitude) : 0.0);
+    const double half_space =
+        bounded_by_force ? resolve_numerics(contact_case).half_width : indenter.contact_radius(largest);
     return std::min(indenter.max_radius(), contact::layer_radius_margin * half_space);
 }
 
@@ -42,13 +46,9 @@ double largest_contact_radius(const ContactCase& contact_case) {
 }
 
 // A contact that grows again after it shrank (reloading, or the recovering surface reaching the indenter again):
-// Ting's solution (eq. L12) then no longer holds, and the general one is not built.
-[[noreturn]] void refuse_regrowth(double time) {
-    throw InvalidInput("load.history", "[...]",
-                       "the contact on the [layer] would grow again at t = " + format_value(time) +
-                           " s after it shrank (reloading, or the recovering surface touching the indenter again): "
-                           "not built on a [layer] yet (issue 28)");
-}
+// Ting's solution (eq. L12) no longer holds. Thrown by the run of Ting's class, caught by run_layer_indentation,
+// which runs the case again on LayerCells.
+struct ContactRegrows {};
 
 }  // namespace
 
@@ -83,26 +83,23 @@ void validate_layer(const ContactCase& contact_case) {
     if (contact_case.spring() && !contact_case.spring()->force_pauses.empty()) {
         refuse("load.force_pauses", "[...]", "a force pause");
     }
-    if (contact_case.load.harmonic) {  // docs/theory.md, "Layers": the general case of Ting (1968)
-        refuse("load.harmonic", "[...]",
-               "a harmonic load (its contact grows again after it shrank, outside Ting's 1966 solution)");
-    }
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
     if (!contact_case.snapshots.empty()) refuse("output.snapshots", "[...]", "a pressure snapshot");
     layer_poisson_ratio(contact_case);
     if (contact_case.numerics.elements && *contact_case.numerics.elements > max_layer_nodes) {
         throw InvalidInput("numerics.elements", std::to_string(*contact_case.numerics.elements),
                            "must be <= " + std::to_string(max_layer_nodes) + " on a [layer] (Gauss nodes on the "
-                           "contact)");
+                           "contact, or cells where it grows again)");
     }
     const double largest_radius = largest_contact_radius(contact_case);
     contact::check_layer_contact_radius(layer, largest_radius);
 }
 
-IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress,
-                                        const StepObservers& observers) {
-    validate_layer(contact_case);
-    if (!observers.empty()) refuse("layer", "[...]", "a run with step observers (a sweep's measures)");
+namespace {
+
+// A run of Ting's class (one maximum of the contact radius; eq. L11 to L14); throws ContactRegrows where the
+// contact would grow again after it shrank.
+IndentationResult run_one_maximum(const ContactCase& contact_case, const ProgressObserver& progress) {
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
     const std::size_t nodes = contact_case.numerics.elements.value_or(contact::default_layer_nodes);
@@ -124,8 +121,9 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
                                 progress);
     }
     const auto& history = *contact_case.load.history;
-    // The half-space's grid (no cut of its own: snapshots, a tangential load, a harmonic and force pauses are refused
-    // on a layer): under force or spring control graded after the same fast changes, a spring's base from where it is.
+    // The half-space's grid (no cut of its own: snapshots, a tangential load and force pauses are refused on a layer,
+    // a harmonic runs on cells): under force or spring control graded after the same fast changes, a spring's base
+    // from where it is.
     const auto grid = indentation_grid(contact_case, result.numerics);
 
     const auto& material = contact_case.material;
@@ -154,7 +152,7 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
                    : now.phase != LayerPhase::lifted_off                     ? stepper.recede(node.time, depth)
                                                                              : stepper.recover(node.time);
             if (next.phase == LayerPhase::lifted_off && depth > next.centre + 1e-9 * largest_depth) {
-                refuse_regrowth(node.time);  // the indenter reaches the recovering surface
+                throw ContactRegrows{};  // the indenter reaches the recovering surface
             }
         } else {
             // The base z (spring), or the force (its round-off below zero is no pull).
@@ -191,7 +189,7 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
                 next = stepper.recover(node.time);
                 // The recovering surface would be loaded again: a force, or the spring's indenter reaching it.
                 if (right_side - stiffness * next.centre > stiffness * 1e-9 * largest_depth) {
-                    refuse_regrowth(node.time);
+                    throw ContactRegrows{};
                 }
             } else if (now.phase == LayerPhase::receding) {
                 next = recede();
@@ -205,7 +203,7 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
             // Without force the spring's indenter hangs at the base, apart from the surface.
             depth = spring && next.force == 0.0 ? target : next.centre;
         }
-        if (next.grows_again) refuse_regrowth(node.time);
+        if (next.grows_again) throw ContactRegrows{};
         previous_centre = now.centre;
         stepper.commit(next);
         if (i > 0) ++result.steps;
@@ -224,6 +222,32 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
         }
     }
     return result;
+}
+
+}  // namespace
+
+IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress,
+                                        const StepObservers& observers) {
+    validate_layer(contact_case);
+    if (!observers.empty()) refuse("layer", "[...]", "a run with step observers (a sweep's measures)");
+    // A harmonic load's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19).
+    if (contact_case.load.harmonic) {
+        return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), progress);
+    }
+    // The run again on cells reports no less than the first run reached (each call still lets the caller abandon).
+    double reached = 0.0;
+    ProgressObserver monotone;
+    if (progress) {
+        monotone = [&](double fraction) {
+            reached = std::max(reached, fraction);
+            progress(reached);
+        };
+    }
+    try {
+        return run_one_maximum(contact_case, monotone);
+    } catch (const ContactRegrows&) {
+        return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), monotone);
+    }
 }
 
 }  // namespace mdr::drivers

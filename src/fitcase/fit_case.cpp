@@ -64,7 +64,7 @@ void check_per_key_tables(const toml::table& fit, const std::vector<std::string>
 }
 
 // On a [layer] a viscoelastic compressible body keeps the constant Poisson ratio its kernel needs (docs/theory.md
-// eq. L16, K(t) = c G(t)) only with its moduli and times as given: a free key of [material] alone would change
+// eq. L20, K(t) = c G(t)) only with its moduli and times as given: a free key of [material] alone would change
 // K(t)/G(t) in time at the first trial value. An elastic G beside an elastic K keeps it for any values.
 void check_layer_poisson_ratio_kept(const drivers::ContactCase& model, const std::vector<std::string>& keys) {
     if (!model.layer || !model.bulk_material || model.bulk_material->is_time_independent()) return;

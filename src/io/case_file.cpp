@@ -428,7 +428,7 @@ std::string describe(const drivers::ContactCase& contact_case) {
     }
     const std::string body = rheology + (contact_case.layer ? " layer" : " half-space");
     if (const auto& layer = contact_case.layer) {
-        // A compressible layer's constant Poisson ratio, which sets its kernel (docs/theory.md eq. L16).
+        // A compressible layer's constant Poisson ratio, which sets its kernel (docs/theory.md eq. L20).
         const std::string poisson = contact_case.bulk_material
                                         ? fmt::format(", nu = {:.4g}", drivers::layer_poisson_ratio(contact_case))
                                         : "";

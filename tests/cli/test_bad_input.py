@@ -230,7 +230,7 @@ BAD_CASES = [
     ("bulk-viscosity-negative",
      case_text(material=MATERIAL + '[material.bulk]\nmodel = "kelvin_voigt"\nK = 3.0e6\neta = -1.0\n'),
      ["material.bulk.eta", "-1", "must be > 0"]),
-    # a compressible layer needs K(t)/G(t) constant in time (docs/theory.md eq. L16)
+    # a compressible layer needs K(t)/G(t) constant in time (docs/theory.md eq. L20)
     ("layer-elastic-bulk-relaxing-shear",
      case_text(material=MATERIAL + "K = 3.0e6\n", extra='[layer]\nthickness = 1.0e-3\ninterface = "bonded"\n'),
      ["material.K = 3000000", "K(t)/G(t) must be constant in time on a [layer]"]),

@@ -144,7 +144,7 @@ def test_compressible_surface_under_a_pressure_is_the_layers_compliance():
 
 
 def test_compressible_bonded_sphere_converges_to_mdr(run_mdr, workdir):
-    # mdr with K (a constant nu = 0.3: the kernel of eq. L1 with that nu, E* = 2G/(1 - nu), docs/theory.md L16)
+    # mdr with K (a constant nu = 0.3: the kernel of eq. L1 with that nu, E* = 2G/(1 - nu), docs/theory.md L20)
     # against the finite elements with the same nu, in contact over the nodes r <= mdr's radius. Measured:
     # FE/mdr - 1 = -1.6e-4, -6.2e-5, -3.8e-5 at 10, 20, 40 elements per thickness (the same with the mesh to 160 h:
     # no membrane mode on a bonded layer).

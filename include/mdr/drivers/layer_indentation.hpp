@@ -19,9 +19,9 @@ double layer_poisson_ratio(const ContactCase& contact_case);
 
 /// Throws mdr::InvalidInput (key `layer` or the offending key, its value and the rule) for a case with a `[layer]`
 /// that needs what is not built on a layer yet: Shore control, an oblique impact, a parallel dashpot under force or
-/// spring control or in an impact, a force pause, a harmonic part, tangential loading, snapshots, a compressible
-/// body whose Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio). Does nothing for a case
-/// without a layer.
+/// spring control or in an impact, a force pause, a harmonic force or base, tangential loading, snapshots, a
+/// compressible body whose Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio). Does nothing
+/// for a case without a layer.
 void validate_layer(const ContactCase& contact_case);
 
 /// Runs a displacement-, force- or spring-controlled case on its layer: the elastic layer's force F_el(d) at unit
@@ -35,9 +35,14 @@ void validate_layer(const ContactCase& contact_case);
 /// Force control solves the depth of each step by numerics::monotone_root (the force increases with it in either
 /// phase), spring control likewise F(d) + k d = k z (F = k (z - d)). An impact runs run_layer_impact
 /// (src/drivers/layer_impact.hpp). `numerics.elements` is the least number of Gauss nodes over the contact (default
-/// contact::default_layer_nodes). Throws as validate_layer; for step observers (not built on a layer yet); and,
-/// naming `load.history`, when the contact would grow again after it shrank (a reload, creep under a held force, or
-/// the indenter or the spring's base reaching the recovering surface: outside Ting's solution, not built yet).
+/// contact::default_layer_nodes).
+/// A case whose contact would grow again after it shrank (a reload, a held depth that the recovering surface
+/// reaches, creep under a held force, a force after the contact was lost, a spring's base reaching the recovering
+/// surface, a harmonic load: outside Ting's solution) runs the coupled time-stepping on cells instead, from the start
+/// (Ting 1968's general case; eq. L16 to L19, src/drivers/layer_cells.hpp): a history once the run of Ting's class
+/// finds the regrowth (the progress then held at the fraction reached), a harmonic at once; `numerics.elements` is
+/// then its number of cells (default default_layer_cells). Throws as validate_layer; for step observers (not built
+/// on a layer yet); and naming `material.eta` for a parallel dashpot with a regrowing contact.
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {},
                                         const StepObservers& observers = {});
 

@@ -189,14 +189,20 @@ TEST(LayerModel, AnUnloadingSampledFinerThanTheNoiseIsTingsFromItsStart) {
     }
 }
 
-TEST(LayerModel, AHoldAfterAnUnloadingIsRefusedAsInTheDriver) {
+TEST(LayerModel, AHoldAfterAnUnloadingIsRefusedByTheModel) {
     // The depth holds after falling by 40 %: the relaxing layer pushes the contact's edge out again (t1 of eq. L12
-    // moves forward), which the driver refuses (load.history) and the model gives as nullopt.
+    // moves forward). The driver runs it on cells (eq. L16 to L19: the radius grows during the hold); the fit's
+    // model, Ting's class only, gives nullopt.
     auto text = load_unload_case("shape = \"sphere\"\nR = 1.0e-5");
     const std::string unload = "[2.0, 0.6e-6], [3.0, 0.0]";
     text.replace(text.find(unload), unload.size(), "[2.0, 0.6e-6], [3.0, 0.6e-6]");
     const auto contact_case = io::parse_case(text);
-    EXPECT_THROW(static_cast<void>(drivers::run_case(contact_case)), InvalidInput);
+    const auto run = drivers::run_case(contact_case);
+    const auto radius_at = [&](double t) {
+        return run.radius[static_cast<std::size_t>(std::lower_bound(run.time.begin(), run.time.end(), t - 1e-12) -
+                                                   run.time.begin())];
+    };
+    EXPECT_GT(radius_at(3.0), 1.01 * radius_at(2.0));
     std::vector<double> time, depth;
     for (int i = 0; i <= 300; ++i) {
         time.push_back(0.01 * i);

@@ -1,5 +1,5 @@
 // A fit case on a [layer] with a compressible body (parse_fit_case): free keys that would change K(t)/G(t) in time,
-// which the layer's kernel cannot follow (docs/theory.md eq. L16), are refused naming fit.free.
+// which the layer's kernel cannot follow (docs/theory.md eq. L20), are refused naming fit.free.
 #include <gtest/gtest.h>
 
 #include <string>

@@ -1,0 +1,221 @@
+#include "layer_cells.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "mdr/error.hpp"
+
+namespace mdr::drivers {
+
+namespace {
+
+// E* / G of the incompressible layer (eq. 21): Q = 4 int G dw1.
+constexpr double plane_modulus_per_shear = 4.0;
+
+}  // namespace
+
+LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer& layer, double poisson_ratio,
+                       const profile::Profile& indenter, double width, std::size_t cells)
+    : material_(&material),
+      flat_punch_(indenter.is_flat_punch()),
+      spacing_(width / static_cast<double>(cells)),
+      cells_(cells),
+      centre_(cells),
+      profile_(cells),
+      operator_(cells * cells),
+      factor_(cells * cells, 0.0),
+      factor_transposed_(cells * cells, 0.0),
+      displacement_(cells, 0.0),
+      branches_(cells * material.terms().size(), 0.0),
+      relaxed_(cells, 0.0),
+      trial_load_(cells, 0.0),
+      trial_displacement_(cells, 0.0) {
+    if (cells < 2) throw InvalidInput("numerics.elements", std::to_string(cells), "must be >= 2 on a layer");
+    const double h = layer.thickness;
+    const contact::LayerKernel kernel(layer.interface, poisson_ratio, 2.0 * width / h);
+    for (std::size_t i = 0; i < cells; ++i) {
+        centre_[i] = (static_cast<double>(i) + 0.5) * spacing_;
+        profile_[i] = indenter.equivalent(centre_[i]);
+    }
+    // lambda = (g(0) - g_0) / (g_1 - g_0): -1/2 for a cone, -1/8 for a sphere (as Foundation::axis_weight); 0 flat.
+    if (profile_[1] != profile_[0]) {
+        axis_weight_ = (indenter.equivalent(0.0) - profile_[0]) / (profile_[1] - profile_[0]);
+    }
+    // (I - K)_ij = delta_ij - (dx/pi) [K(x_i - x_j) + K(x_i + x_j)], K(y) = k(y/h)/h (eq. L17 from L3, L4; midpoint rule).
+    for (std::size_t i = 0; i < cells; ++i) {
+        for (std::size_t j = 0; j <= i; ++j) {
+            const double coupling = spacing_ / std::numbers::pi *
+                                    (kernel((centre_[i] - centre_[j]) / h) + kernel((centre_[i] + centre_[j]) / h)) /
+                                    h;
+            operator_[i * cells + j] = operator_[j * cells + i] = (i == j ? 1.0 : 0.0) - coupling;
+        }
+    }
+    // Cholesky, I - K = L L^T: symmetric, and positive as its symbol L(xi h) > 0 is (eq. L1).
+    for (std::size_t j = 0; j < cells; ++j) {
+        double diagonal = operator_[j * cells + j];
+        for (std::size_t k = 0; k < j; ++k) diagonal -= factor_[j * cells + k] * factor_[j * cells + k];
+        if (!(diagonal > 0.0)) {
+            throw std::runtime_error("the layer's operator I - K is not positive definite on " +
+                                     std::to_string(cells) + " cells");
+        }
+        factor_[j * cells + j] = std::sqrt(diagonal);
+        for (std::size_t i = j + 1; i < cells; ++i) {
+            double value = operator_[i * cells + j];
+            for (std::size_t k = 0; k < j; ++k) value -= factor_[i * cells + k] * factor_[j * cells + k];
+            factor_[i * cells + j] = value / factor_[j * cells + j];
+        }
+    }
+    for (std::size_t i = 0; i < cells; ++i) {
+        for (std::size_t j = 0; j <= i; ++j) factor_transposed_[j * cells + i] = factor_[i * cells + j];
+    }
+}
+
+void LayerCells::solve(std::size_t contact, double depth, std::size_t free_cells) {
+    solve_load(contact, depth);
+    free_surface(contact, depth, free_cells);
+}
+
+void LayerCells::solve_load(std::size_t contact, double depth) {
+    const double stiffness = coefficients_.stiffness;
+    // Inside: (I - K) q = Q = 4 (stiffness (d - g) + relaxed) on the contact's cells, by the leading block of L.
+    std::fill(trial_load_.begin(), trial_load_.end(), 0.0);
+    for (std::size_t i = 0; i < contact; ++i) {
+        double value = plane_modulus_per_shear * (stiffness * (depth - profile_[i]) + relaxed_[i]);
+        for (std::size_t k = 0; k < i; ++k) value -= factor_[i * cells_ + k] * trial_load_[k];
+        trial_load_[i] = value / factor_[i * cells_ + i];
+    }
+    for (std::size_t i = contact; i-- > 0;) {
+        double value = trial_load_[i];
+        for (std::size_t k = i + 1; k < contact; ++k) value -= factor_transposed_[i * cells_ + k] * trial_load_[k];
+        trial_load_[i] = value / factor_[i * cells_ + i];
+    }
+}
+
+void LayerCells::free_surface(std::size_t contact, double depth, std::size_t free_cells) {
+    const double stiffness = coefficients_.stiffness;
+    // Outside q = 0: Q_j = ((I - K) q)_j = 4 (stiffness w1_j + relaxed_j) gives the free surface.
+    for (std::size_t i = 0; i < std::min(cells_, contact + free_cells); ++i) {
+        if (i < contact) {
+            trial_displacement_[i] = depth - profile_[i];
+            continue;
+        }
+        double load = 0.0;
+        for (std::size_t k = 0; k < contact; ++k) load += operator_[i * cells_ + k] * trial_load_[k];
+        trial_displacement_[i] = (load / plane_modulus_per_shear - relaxed_[i]) / stiffness;
+    }
+}
+
+LayerCellState LayerCells::step(double time_step, double depth) {
+    return advance(time_step, [depth](std::size_t) { return depth; }, false);
+}
+
+LayerCellState LayerCells::step_loaded(double time_step, double right_side, double spring_constant, double base) {
+    // F(d) + k d = right side. On a contact set q is affine in d (eq. L17, L18), so is F = F(0) + d (F(1) - F(0)).
+    // Without contact F = 0: a spring's indenter hangs at its base; under force control it rests on the free
+    // surface at the axis, extrapolated linearly in g (the lambda of the axis, below eq. L19).
+    const auto depth_for = [&](std::size_t contact) {
+        if (contact == 0) {
+            if (spring_constant > 0.0) return base;
+            solve(0, 0.0, 2);
+            const double inner = profile_[0] + trial_displacement_[0], next = profile_[1] + trial_displacement_[1];
+            return inner + axis_weight_ * (next - inner);
+        }
+        solve_load(contact, 0.0);
+        double at_zero = 0.0;
+        for (std::size_t i = 0; i < contact; ++i) at_zero += 2.0 * spacing_ * trial_load_[i];
+        solve_load(contact, 1.0);
+        double at_one = 0.0;
+        for (std::size_t i = 0; i < contact; ++i) at_one += 2.0 * spacing_ * trial_load_[i];
+        return (right_side - at_zero) / (at_one - at_zero + spring_constant);
+    };
+    return advance(time_step, depth_for, spring_constant == 0.0 && right_side > 0.0);
+}
+
+template <class DepthRule>
+LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for, bool needs_contact) {
+    foundation::fill_step_coefficients(*material_, time_step, coefficients_);
+    const auto& terms = material_->terms();
+    const std::size_t branches = terms.size();
+    // Q/4 = G_inf w1 + sum_k G_k (E_k h_k + B_k (w1 - w1_old)) + eta (w1 - w1_old) / dt = stiffness w1 + relaxed
+    // (eq. L16: exact for w1 linear over the step; foundation/step_coefficients.hpp).
+    for (std::size_t i = 0; i < cells_; ++i) {
+        double relaxed = 0.0;
+        for (std::size_t k = 0; k < branches; ++k) {
+            relaxed += terms[k].modulus * (coefficients_.decay[k] * branches_[i * branches + k] -
+                                           coefficients_.gain[k] * displacement_[i]);
+        }
+        // The parallel dashpot's eta (w1 - w1_old) / dt: its eta / dt is in the stiffness.
+        if (time_step > 0.0) relaxed -= material_->viscosity() / time_step * displacement_[i];
+        relaxed_[i] = relaxed;
+    }
+    // Complementarity (Ting 1968; eq. L18): q >= 0 in contact, the free surface not below the indenter outside.
+    // From the last contact set, a cell is dropped while its line load is negative and added while the indenter
+    // would penetrate it, never returning to a set already tried.
+    // A force with no contact (`needs_contact`) adds the innermost cell.
+    std::vector<bool> tried(cells_ + 1, false);
+    std::size_t contact = contact_;
+    double depth = 0.0;
+    for (;;) {
+        depth = depth_for(contact);
+        solve(contact, depth, 1);  // the free cell next to the contact decides
+        tried[contact] = true;
+        if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried[contact - 1]) {
+            --contact;
+        } else if (contact < cells_ &&
+                   (trial_displacement_[contact] < depth - profile_[contact] || (needs_contact && contact == 0)) &&
+                   !tried[contact + 1]) {
+            ++contact;
+        } else {
+            break;
+        }
+    }
+    if (contact == cells_ && !flat_punch_) {
+        throw InvalidInput("layer", "depth " + format_value(depth),
+                           "the contact radius would exceed " + format_value(spacing_ * static_cast<double>(cells_)) +
+                               ", the largest the layer was prepared for");
+    }
+    LayerCellState state;
+    for (std::size_t i = 0; i < contact; ++i) state.force += 2.0 * spacing_ * trial_load_[i];  // eq. L5
+    free_surface(contact, depth, cells_);  // every free cell's surface, for its branches
+    // q/4 inside and minus the stiffness times the gap outside (E*/4 = the step's stiffness) meet with the same slope
+    // at the edge (w1 jumps in slope by q'/E* there): one C1 function (eq. L19).
+    const auto edge_function = [&](std::size_t i) {
+        return i < contact ? trial_load_[i] / plane_modulus_per_shear
+                           : -coefficients_.stiffness * (trial_displacement_[i] - (depth - profile_[i]));
+    };
+    if (contact == cells_) {
+        state.contact_radius = spacing_ * static_cast<double>(cells_);
+    } else if (contact > 0) {  // its zero, interpolated linearly between the two centres (second order)
+        const double inside = edge_function(contact - 1), outside = edge_function(contact);
+        state.contact_radius =
+            centre_[contact - 1] + (inside > outside ? spacing_ * inside / (inside - outside) : 0.5 * spacing_);
+    }
+    // The same function at the axis, extrapolated linearly in g from the two innermost cells (q - E*(d - g) is
+    // smooth and even there; g has a cone's kink): the axis touches while it is positive, and a loss or a regain
+    // inside the step is located where it crosses zero, linear over the step (second order).
+    const double axis = edge_function(0) + axis_weight_ * (edge_function(1) - edge_function(0));
+    state.touching = axis > 0.0;
+    if (axis_ > 0.0 && state.touching) {
+        state.touching_part = {0.0, 1.0};
+    } else if (axis_ > 0.0) {
+        state.touching_part = {0.0, axis_ / (axis_ - axis)};
+    } else if (state.touching) {
+        state.touching_part = {axis_ / (axis_ - axis), 1.0};
+    }
+    axis_ = axis;
+    state.depth = depth;
+    for (std::size_t i = 0; i < cells_; ++i) {
+        const double change = trial_displacement_[i] - displacement_[i];
+        for (std::size_t k = 0; k < branches; ++k) {
+            double& branch = branches_[i * branches + k];
+            branch = coefficients_.decay[k] * branch + coefficients_.gain[k] * change;
+        }
+    }
+    displacement_ = trial_displacement_;
+    contact_ = contact;
+    return state;
+}
+
+}  // namespace mdr::drivers

@@ -1,0 +1,67 @@
+#include "layer_regrowing.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <optional>
+#include <variant>
+
+#include "cycle_measure.hpp"
+#include "layer_cells.hpp"
+#include "mdr/drivers/layer_indentation.hpp"
+#include "mdr/error.hpp"
+
+namespace mdr::drivers {
+
+IndentationResult run_layer_regrowing(const ContactCase& contact_case, double largest_radius,
+                                      const ProgressObserver& progress) {
+    const auto& material = contact_case.material;
+    if (material.viscosity() > 0.0) {
+        // A cell entering the contact takes the dashpot's kick within one step: first order in the cell.
+        throw InvalidInput("material.eta", format_value(material.viscosity()),
+                           "a parallel dashpot with a contact that grows again after it shrank is not built on a "
+                           "[layer] yet (issue 28)");
+    }
+    IndentationResult result;
+    result.numerics = resolve_numerics(contact_case);
+    const std::size_t cells = contact_case.numerics.elements.value_or(default_layer_cells);
+    result.numerics.elements = cells;
+    result.numerics.half_width = largest_radius;  // reported: the cells' range
+    LayerCells layer(material, *contact_case.layer, layer_poisson_ratio(contact_case), *contact_case.indenter,
+                     largest_radius, cells);
+    std::optional<CycleMeasure> cycle;
+    if (const auto& harmonic = contact_case.load.harmonic) cycle.emplace(*harmonic, contact_case.end_time);
+    const auto grid = indentation_grid(contact_case, result.numerics);
+    const bool displacement = std::holds_alternative<DisplacementControl>(contact_case.control);
+    const SpringControl* spring = contact_case.spring();
+    const double spring_constant = spring ? spring->spring_constant : 0.0;
+    const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
+    std::size_t reported = 0;
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const double time_step = i == 0 ? 0.0 : grid[i].time - grid[i - 1].time;
+        const double value = grid[i].value;
+        // A force's round-off below zero is no pull; a spring's right side is k z.
+        const LayerCellState state =
+            displacement ? layer.step(time_step, value)
+                         : layer.step_loaded(time_step, spring ? spring_constant * value : std::max(value, 0.0),
+                                             spring_constant, value);
+        if (i > 0) ++result.steps;
+        if (i % every == 0 || i + 1 == grid.size()) {
+            result.time.push_back(grid[i].time);
+            result.depth.push_back(state.depth);
+            result.force.push_back(state.force);
+            result.radius.push_back(state.contact_radius);
+            if (spring) result.base.push_back(value);
+        }
+        if (cycle) cycle->record(grid[i].time, state.depth, state.force, state.touching, state.touching_part);
+        const auto percent = static_cast<std::size_t>(100.0 * static_cast<double>(i + 1) /
+                                                      static_cast<double>(grid.size()));
+        if (progress && percent > reported) {
+            reported = percent;
+            progress(static_cast<double>(i + 1) / static_cast<double>(grid.size()));
+        }
+    }
+    if (cycle) result.harmonic = cycle->outcome();
+    return result;
+}
+
+}  // namespace mdr::drivers
