@@ -1,4 +1,4 @@
-// A contact on an incompressible viscoelastic layer that grows again after it shrank (docs/theory.md, "Layers", eq.
+// A contact on a viscoelastic layer (incompressible, or of a constant Poisson ratio) that grows again after it shrank (docs/theory.md, "Layers", eq.
 // L16 to L19: the coupled time-stepping on cells): a very thick layer against the half-space driver under a harmonic
 // depth and a reload, and an elastic layer against the elastic layer's solution at every step, with the orders in
 // the cell.
@@ -179,6 +179,41 @@ TEST(LayerRegrowing, AnElasticLayerMeetsTheElasticSolutionAtEveryStep) {
     expect_second_order(errors);
     EXPECT_LT(radius_errors.back(), 2e-4) << radius_errors.front();
     EXPECT_GT(std::log2(radius_errors.front() / radius_errors.back()), 3.0);
+}
+
+TEST(LayerRegrowing, ACompressibleBodyOfConstantPoissonRatioRegrowsAsTheIncompressibleOneWithItsKernel) {
+    // K(t) = c G(t) (eq. L20): the cells take eq. 56's effective material and the kernel of nu = (3c - 2) /
+    // (2 (3c + 1)). An elastic body (c = 3, nu = 0.35) on a thin layer against the elastic layer's solution with that
+    // kernel, E* F_el(d) (LayerContact at nu, 96 Gauss nodes), at every step of the harmonic depth; and a standard
+    // solid with its bulk relaxation proportional (c = 10/3) on a very thick layer against the compressible
+    // half-space driver (eq. 56).
+    const double shear_modulus = 1.0e3, bulk_modulus = 3.0e3, poisson_ratio = 0.35;
+    const auto contact_case = mdr::io::parse_case(regrowing_case(
+        "model = \"elastic\"\nG = 1.0e3\nK = 3.0e3\n", harmonic_load, layer_with_cells(2.0e-6, 400)));
+    ASSERT_NEAR((3.0 * bulk_modulus - 2.0 * shear_modulus) / (2.0 * (3.0 * bulk_modulus + shear_modulus)),
+                poisson_ratio, 1e-15);
+    const auto result = mdr::drivers::run_case(contact_case);
+    const mdr::contact::LayerContact layer(*contact_case.layer, poisson_ratio, contact_case.indenter, 2.0e-5, 96);
+    const double plane_modulus = 2.0 * shear_modulus / (1.0 - poisson_ratio);
+    mdr::contact::LayerContactState exact;
+    double largest = 0.0, peak = 0.0;
+    for (std::size_t i = 0; i < result.time.size(); ++i) {
+        exact = layer.at_depth(result.depth[i], exact);
+        largest = std::max(largest, std::abs(result.force[i] - plane_modulus * exact.force));
+        peak = std::max(peak, plane_modulus * exact.force);
+    }
+    // The incompressible case's error at 400 cells is 2.2e-5 of the peak (above).
+    EXPECT_LT(largest / peak, 5e-5);
+
+    const std::string proportional =
+        standard_solid + "[material.bulk]\nmodel = \"standard\"\nK_inf = 3.3333333333333335e3\nK1 = 1.0e4\ntau1 = 0.2\n";
+    const auto half_space = run(regrowing_case(proportional, harmonic_load, ""));
+    const auto thick = run(regrowing_case(proportional, harmonic_load, layer_with_cells(1.0e3, 400)));
+    ASSERT_TRUE(half_space.harmonic && thick.harmonic);
+    // The incompressible case's error at 400 cells is 2.7e-5 of the peak (AThickLayerMeetsTheHalfSpace...).
+    EXPECT_LT(force_difference(thick, half_space), 5e-5);
+    EXPECT_NEAR(*thick.harmonic->storage_stiffness, *half_space.harmonic->storage_stiffness,
+                1e-4 * *half_space.harmonic->storage_stiffness);
 }
 
 }  // namespace
