@@ -1,5 +1,5 @@
-// A contact on a viscoelastic layer (incompressible, or of a constant Poisson ratio) that grows again after it shrank (docs/theory.md, "Layers", eq.
-// L16 to L19: the coupled time-stepping on cells): a very thick layer against the half-space driver under a harmonic
+// A contact on a viscoelastic layer (incompressible, or of a constant Poisson ratio) that grows again after it shrank
+// (docs/theory.md, "Layers", eq. L16 to L19: the coupled time-stepping on cells): a very thick layer against the half-space driver under a harmonic
 // depth and a reload, and an elastic layer against the elastic layer's solution at every step, with the orders in
 // the cell.
 
@@ -206,7 +206,8 @@ TEST(LayerRegrowing, ACompressibleBodyOfConstantPoissonRatioRegrowsAsTheIncompre
     EXPECT_LT(largest / peak, 5e-5);
 
     const std::string proportional =
-        standard_solid + "[material.bulk]\nmodel = \"standard\"\nK_inf = 3.3333333333333335e3\nK1 = 1.0e4\ntau1 = 0.2\n";
+        standard_solid + "[material.bulk]\nmodel = \"standard\"\nK_inf = 3.3333333333333335e3\nK1 = 1.0e4\n"
+                         "tau1 = 0.2\n";
     const auto half_space = run(regrowing_case(proportional, harmonic_load, ""));
     const auto thick = run(regrowing_case(proportional, harmonic_load, layer_with_cells(1.0e3, 400)));
     ASSERT_TRUE(half_space.harmonic && thick.harmonic);
