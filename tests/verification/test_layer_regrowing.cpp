@@ -1,7 +1,7 @@
 // A contact on a viscoelastic layer (incompressible, or of a constant Poisson ratio) that grows again after it shrank
-// (docs/theory.md, "Layers", eq. L16 to L19: the coupled time-stepping on cells): a very thick layer against the half-space driver under a harmonic
-// depth and a reload, and an elastic layer against the elastic layer's solution at every step, with the orders in
-// the cell.
+// (docs/theory.md, "Layers", eq. L16 to L19: the coupled time-stepping on cells): a very thick layer against the
+// half-space driver under a harmonic depth and a reload, and an elastic layer against the elastic layer's solution at
+// every step, with the orders in the cell.
 
 #include <gtest/gtest.h>
 
