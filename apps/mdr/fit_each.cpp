@@ -9,7 +9,6 @@
 #include "fit_candidates.hpp"
 #include "fit_preparation.hpp"
 #include "interrupt.hpp"
-#include "mdr/document.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/plausibility.hpp"
 #include "mdr/fit/repeat_spread.hpp"
@@ -61,24 +60,8 @@ void write_table(const std::filesystem::path& path, const std::vector<std::strin
 
 // each.json: the spread of the batch's values against its fits' errors, key by key (fit::spread_of_repeats).
 void write_spread(const std::filesystem::path& path, const fit::RepeatSpread& spread) {
-    Document::Table keys;
-    for (const auto& key : spread.keys) {
-        const Document::List range{number_or_null(key.consistent_low), number_or_null(key.consistent_high)};
-        keys.emplace_back(key.name, Document{Document::Table{
-                                        {"count", Document{key.count}},
-                                        {"mean", number_or_null(key.mean)},
-                                        {"standard_deviation", number_or_null(key.standard_deviation)},
-                                        {"standard_error_of_mean", number_or_null(key.standard_error_of_mean)},
-                                        {"typical_error", number_or_null(key.typical_error)},
-                                        {"error_to_spread", number_or_null(key.error_to_spread)},
-                                        {"consistent_range", Document{range}},
-                                    }});
-    }
-    Document::List flags;
-    for (const auto& flag : spread.flags) flags.push_back(Document{flag});
     io::OutputFile file(path);
-    file.print("{}\n", io::to_json(Document{Document::Table{{"spread", Document{std::move(keys)}},
-                                                                     {"flags", Document{std::move(flags)}}}}));
+    file.print("{}\n", io::to_json(fitcase::spread_document(spread)));
     file.close();
 }
 

@@ -129,6 +129,22 @@ void bind_fit(py::module_& module) {
     module.def("_fit_case", &fit_case_of, py::arg("case"), py::arg("source"), py::arg("directory"), py::arg("curves"),
                py::arg("rebounds"), "Fits a fit case given as TOML text or a dict tree (mdr.fit is the public entry).");
     module.def(
+        "_spread_of_repeats",
+        [](const std::vector<std::string>& names, const std::vector<std::vector<double>>& values,
+           const std::vector<std::vector<double>>& standard_errors, const std::vector<bool>& converged) {
+            std::vector<fit::FitResult> fits(values.size());
+            for (std::size_t i = 0; i < fits.size(); ++i) {
+                fits[i].names = names;
+                fits[i].values = values[i];
+                fits[i].standard_errors = standard_errors.at(i);
+                fits[i].converged = converged.at(i);
+            }
+            return document_object(fitcase::spread_document(fit::spread_of_repeats(fits)));
+        },
+        py::arg("names"), py::arg("values"), py::arg("standard_errors"), py::arg("converged"),
+        "each.json's dict for fits with these free keys, one row of values and errors per fit "
+        "(mdr.spread_of_repeats is the public entry).");
+    module.def(
         "_afm_depth_and_force",
         [](const InputArray& piezo, const InputArray& deflection, double spring_constant) {
             auto curve = fit::afm_depth_and_force(to_vector(piezo), to_vector(deflection), spring_constant);

@@ -29,11 +29,11 @@ from ._mdr import ConvertedMaterial, Indenter, InvalidInput, Material
 from ._case_tree import plain_tree
 from .curve_maps import map_curves
 from .fit_maps import fit_map
-from .fitting import FitResult, fit
+from .fitting import FitResult, fit, spread_of_repeats
 from .instruments import Curve, read_curves
 
-__all__ = ["run", "check", "sweep", "SweepTable", "fit", "FitResult", "map_curves", "fit_map", "Material",
-           "ConvertedMaterial", "Indenter", "Result", "InvalidInput", "read_curves", "Curve", "__version__"]
+__all__ = ["run", "check", "sweep", "SweepTable", "fit", "FitResult", "spread_of_repeats", "map_curves", "fit_map",
+           "Material", "ConvertedMaterial", "Indenter", "Result", "InvalidInput", "read_curves", "Curve", "__version__"]
 __version__ = _mdr.__version__
 
 CaseLike = Union[str, os.PathLike, Mapping[str, Any]]

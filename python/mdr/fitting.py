@@ -290,3 +290,40 @@ def _result(raw: Mapping[str, Any]) -> FitResult:
         result.spectrum = {"tau": times, "G_inf": result.parameters["material.G_inf"],
                            "G": np.array([result.parameters[f"spectrum.G[{j}]"] for j in range(times.size)])}
     return result
+
+
+def spread_of_repeats(fits: Sequence[FitResult]) -> dict[str, Any]:
+    """The spread of repeated records fitted one by one, set against the errors their fits report.
+
+    What ``mdr fit CASE --each A B C`` writes to ``each.json`` (docs/case-format.md): for each free key, over the
+    fits that converged, ``count``, ``mean``, ``standard_deviation`` (n - 1), ``standard_error_of_mean``,
+    ``typical_error`` (the median of the fits' standard errors), ``error_to_spread`` and ``consistent_range`` (the
+    95 % range of that ratio when each value scatters by exactly its error); and ``flags``, one line per key outside
+    its range (a misfit the records share, or records that differ by more than their noise).
+
+    Parameters
+    ----------
+    fits : sequence of FitResult
+        Results of :func:`fit` with the same free keys, e.g. one per repeated record of a sample.
+
+    Returns
+    -------
+    dict
+        ``{"spread": {key: {...}}, "flags": [...]}``; NaN values are None.
+    """
+    fits = list(fits)
+    if not fits:
+        raise ValueError("fits = []: give at least one mdr.FitResult")
+    names = None
+    for i, result in enumerate(fits):
+        if not isinstance(result, FitResult):
+            raise ValueError(f"fits[{i}] = {type(result).__name__}: must be an mdr.FitResult (what mdr.fit returns)")
+        if names is None:
+            names = list(result.parameters)
+        elif list(result.parameters) != names:
+            raise ValueError(f"fits[{i}]: its free keys {list(result.parameters)} differ from fits[0]'s {names}: "
+                             "the fits of one batch must fit the same keys")
+    values = [[float(result.parameters[name]) for name in names] for result in fits]
+    errors = [[float(result.standard_errors[name]) for name in names] for result in fits]
+    converged = [bool(result.summary.get("converged", False)) for result in fits]
+    return _mdr._spread_of_repeats(names, values, errors, converged)

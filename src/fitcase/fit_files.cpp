@@ -164,6 +164,25 @@ std::string fit_json(const fit::FitResult& result, const std::string& units) {
     return io::to_json(fit_document(result, units));
 }
 
+Document spread_document(const fit::RepeatSpread& spread) {
+    Document::Table keys;
+    for (const auto& key : spread.keys) {
+        const Document::List range{number_or_null(key.consistent_low), number_or_null(key.consistent_high)};
+        keys.emplace_back(key.name, Document{Document::Table{
+                                        {"count", Document{key.count}},
+                                        {"mean", number_or_null(key.mean)},
+                                        {"standard_deviation", number_or_null(key.standard_deviation)},
+                                        {"standard_error_of_mean", number_or_null(key.standard_error_of_mean)},
+                                        {"typical_error", number_or_null(key.typical_error)},
+                                        {"error_to_spread", number_or_null(key.error_to_spread)},
+                                        {"consistent_range", Document{range}},
+                                    }});
+    }
+    Document::List flags;
+    for (const auto& flag : spread.flags) flags.push_back(Document{flag});
+    return Document{Document::Table{{"spread", Document{std::move(keys)}}, {"flags", Document{std::move(flags)}}}};
+}
+
 void write_fit_result(const std::filesystem::path& directory, const FitCase& fit_case, const fit::FitResult& result) {
     auto json = OutputFile(directory / "fit.json");
     json.print("{}\n", fit_json(result, fit_case.units));

@@ -5,9 +5,10 @@
 #include <filesystem>
 #include <string>
 
-#include "mdr/fit/fit.hpp"
-#include "mdr/fitcase/fit_case.hpp"
 #include "mdr/document.hpp"
+#include "mdr/fit/fit.hpp"
+#include "mdr/fit/repeat_spread.hpp"
+#include "mdr/fitcase/fit_case.hpp"
 
 namespace mdr::fitcase {
 
@@ -20,6 +21,11 @@ Document fit_document(const fit::FitResult& result, const std::string& units = "
 
 /// fit.json: fit_document as JSON text.
 std::string fit_json(const fit::FitResult& result, const std::string& units = "SI");
+
+/// each.json of `mdr fit --each` (and the dict of Python's mdr.spread_of_repeats): `spread`, per free key its
+/// count, mean, standard_deviation, standard_error_of_mean, typical_error, error_to_spread and consistent_range
+/// (fit::KeySpread), and `flags`. NaN is null.
+Document spread_document(const fit::RepeatSpread& spread);
 
 /// Writes fit.json, fitted.toml (the case with the fitted values; its load is the case's own, or the first
 /// curve's driving history, the contact point removed) and curves.csv (curve,t,measured,model,residual,drive:
