@@ -1,14 +1,12 @@
 #include "impact_stepping.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "mdr/drivers/oblique_sphere.hpp"
 #include "mdr/drivers/work_estimate.hpp"
 #include "mdr/error.hpp"
+#include "impact_end.hpp"
 
 namespace mdr::drivers {
 
@@ -80,37 +78,24 @@ StepState ImpactStepping::step(std::size_t n) {
 }
 
 double ImpactStepping::end_contact(double time_step) {
-    // The last element left where its force crossed zero inside the step (located by the foundation); the impulse
-    // of that part of the step is taken as a linear decay.
+    // The last element left where its force crossed zero inside the step (located by the foundation).
     const double fraction = foundation_.latest_exit();
-    const double new_velocity = velocity_ - force_ * fraction * time_step / (2.0 * mass_);
-    ImpactOutcome outcome;
+    ImpactOutcome outcome = impact_outcome({.mass = mass_, .approach = approach_, .time = time_, .time_step = time_step,
+                                            .velocity = velocity_, .force = force_, .fraction = fraction});
     // Where the contact shrinks to the axis, the exit times of the two innermost elements are linear in g near it,
     // so extrapolated there (Foundation::axis_weight) they give the end to O(dx^2), where the innermost element's
     // own exit is only O(dx) for a cone.
-    outcome.contact_time = time_ + fraction * time_step;
     const bool axis_last = foundation_.inner_exit(0) == fraction;  // not an annulus leaving last
     if (axis_last && inner_exits_[1] >= 0.0 && inner_exits_[1] < inner_exits_[0]) {
         outcome.contact_time += foundation_.axis_weight() * (inner_exits_[1] - inner_exits_[0]);
     }
-    outcome.rebound_velocity = -new_velocity;
-    outcome.restitution = -new_velocity / approach_;
-    outcome.dissipated_energy = 0.5 * mass_ * (approach_ * approach_ - new_velocity * new_velocity);
     if (oblique_) {
         oblique_->finish(cache_.get(time_step), time_step, fraction);
         outcome.oblique = oblique_->outcome(outcome, approach_);
         outcome.dissipated_energy += oblique_->kinetic_energy_lost();
     }
-    // A passive body returns at most the energy it was given (e <= 1), and the indenter leaves (e >= 0); beyond
-    // round-off anything else is a failure of the numerics, never a result.
-    if (!(outcome.restitution >= 0.0 && outcome.restitution <= 1.0 + 1e-6)) {
-        throw std::runtime_error(fmt::format(
-            "the impact is not resolved at these numerics: restitution e = {} lies outside [0, 1]; give a smaller "
-            "numerics.time_step (now {:.4g} s) or more numerics.elements",
-            outcome.restitution, time_step));
-    }
     outcome_ = outcome;
-    return new_velocity;
+    return -outcome.rebound_velocity;
 }
 
 }  // namespace mdr::drivers

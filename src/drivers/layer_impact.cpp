@@ -7,6 +7,7 @@
 #include "mdr/drivers/work_estimate.hpp"
 #include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
+#include "impact_end.hpp"
 #include "layer_stepping.hpp"
 
 namespace mdr::drivers {
@@ -71,8 +72,8 @@ IndentationResult run_layer_impact(const ContactCase& contact_case, const contac
         double new_velocity = 2.0 * (next.centre - depth) / step - velocity;
         if (next.phase == LayerPhase::lifted_off) {
             // The contact is lost inside the step where int_0^t G dd = 0 (eq. L12 with t1 at the start), the depth
-            // linear over the step as in the stepper: the fraction found by bisection of that phase boundary. The
-            // impulse of that part of the step is taken as a linear decay of the force, as ImpactStepping's.
+            // linear over the step as in the stepper: the fraction found by bisection of that phase boundary; the
+            // outcome by the half-space's rule (impact_outcome).
             const double depth_change = next.centre - depth;
             double inside = 0.0, outside = 1.0;
             for (int iteration = 0; iteration < 60 && outside - inside > 1e-13; ++iteration) {
@@ -82,13 +83,9 @@ IndentationResult run_layer_impact(const ContactCase& contact_case, const contac
                 (lost ? outside : inside) = middle;
             }
             const double fraction = 0.5 * (inside + outside);
-            new_velocity = velocity - force * fraction * step / (2.0 * mass);
-            ImpactOutcome outcome;
-            outcome.contact_time = time + fraction * step;
-            outcome.rebound_velocity = -new_velocity;
-            outcome.restitution = -new_velocity / approach;
-            outcome.dissipated_energy = 0.5 * mass * (approach * approach - new_velocity * new_velocity);
-            result.impact = outcome;
+            result.impact = impact_outcome({.mass = mass, .approach = approach, .time = time, .time_step = step,
+                                            .velocity = velocity, .force = force, .fraction = fraction});
+            new_velocity = -result.impact->rebound_velocity;
         }
         stepper.commit(next);
         time = next_time;

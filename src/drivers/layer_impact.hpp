@@ -11,8 +11,8 @@ namespace mdr::drivers {
 
 /// Runs the impact of `contact_case` on the elastic layer `layer` (at unit modulus `unit_modulus`, E* / G), whose
 /// `numerics` were resolved by the caller, `largest_depth` [m] the scale of the solves' tolerances; the result's rows
-/// and its impact outcome as ImpactStepping's. Throws mdr::InvalidInput (key `load.end`) when the contact has not ended
-/// by the time limit.
+/// and its impact outcome by ImpactStepping's rule (impact_outcome). Throws mdr::InvalidInput (key `load.end`) when the
+/// contact has not ended by the time limit, std::runtime_error when the restitution lies outside [0, 1].
 IndentationResult run_layer_impact(const ContactCase& contact_case, const contact::LayerContact& layer,
                                    double unit_modulus, double largest_depth, const ResolvedNumerics& numerics,
                                    const ProgressObserver& progress);

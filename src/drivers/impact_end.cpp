@@ -1,0 +1,25 @@
+#include "impact_end.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace mdr::drivers {
+
+ImpactOutcome impact_outcome(const ImpactEnd& end) {
+    const double rebound = -(end.velocity - end.force * end.fraction * end.time_step / (2.0 * end.mass));
+    ImpactOutcome outcome;
+    outcome.contact_time = end.time + end.fraction * end.time_step;
+    outcome.rebound_velocity = rebound;
+    outcome.restitution = rebound / end.approach;
+    outcome.dissipated_energy = 0.5 * end.mass * (end.approach * end.approach - rebound * rebound);
+    if (!(outcome.restitution >= 0.0 && outcome.restitution <= 1.0 + 1e-6)) {
+        throw std::runtime_error(fmt::format(
+            "the impact is not resolved at these numerics: restitution e = {} lies outside [0, 1]; give a smaller "
+            "numerics.time_step (now {:.4g} s) or more numerics.elements",
+            outcome.restitution, end.time_step));
+    }
+    return outcome;
+}
+
+}  // namespace mdr::drivers

@@ -1,0 +1,27 @@
+#pragma once
+// The end of an impact's contact (eq. 39) and its normal outcome: one rule for the half-space (ImpactStepping) and
+// the layer (run_layer_impact).
+
+#include "mdr/drivers/indentation.hpp"
+
+namespace mdr::drivers {
+
+/// The step of an impact in which its last contact was lost.
+struct ImpactEnd {
+    double mass = 0.0;       ///< m [kg]
+    double approach = 0.0;   ///< v0 [m/s], the velocity at first contact
+    double time = 0.0;       ///< when the step began [s]
+    double time_step = 0.0;  ///< the step's length [s]
+    double velocity = 0.0;   ///< v at the step's start [m/s], positive into the surface
+    double force = 0.0;      ///< F at the step's start [N]
+    double fraction = 0.0;   ///< where in the step the last contact was lost, 0..1
+};
+
+/// The normal outcome of the impact that ended in `end`: the impulse of the step's part in contact taken as a linear
+/// decay of the force, v(T) = v - F fraction dt / (2m) (the trapezoidal rule of eq. 37 up to the loss); the contact
+/// time T = time + fraction dt, the rebound velocity -v(T), the restitution e = -v(T)/v0 and the kinetic energy lost
+/// m (v0^2 - v(T)^2)/2 (eq. 39). Throws std::runtime_error when e lies outside [0, 1] beyond round-off: a passive body
+/// returns at most the energy it was given and the indenter leaves, so anything else is a failure of the numerics.
+ImpactOutcome impact_outcome(const ImpactEnd& end);
+
+}  // namespace mdr::drivers
