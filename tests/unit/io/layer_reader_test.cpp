@@ -49,6 +49,10 @@ TEST(LayerReader, RefusesBadValues) {
     EXPECT_EQ(refused_key(with(loading, "thickness = 1.0e-6\ninterface = \"glued\"\n")), "layer.interface");
     EXPECT_EQ(refused_key(with(loading, "thickness = 1.0e-6\n")), "layer.interface");
     EXPECT_EQ(refused_key(with(loading, bonded + "friction = 0.1\n")), "layer.friction");
+    // Gauss nodes on the contact, or cells: from 2 to 512, refused at once (mdr check), as every run on a layer needs.
+    EXPECT_EQ(refused_key(with(loading, bonded + "[numerics]\nelements = 1\n")), "numerics.elements");
+    EXPECT_EQ(refused_key(with(loading, bonded + "[numerics]\nelements = 2\n")), "(accepted)");
+    EXPECT_EQ(refused_key(with(loading, bonded + "[numerics]\nelements = 513\n")), "numerics.elements");
 }
 
 TEST(LayerReader, RefusesWhatIsNotBuiltOnALayer) {
