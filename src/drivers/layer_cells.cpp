@@ -11,7 +11,7 @@ namespace mdr::drivers {
 
 namespace {
 
-// E* / G of the incompressible layer (eq. 21): Q = 4 int G dw1.
+// E* / G (eq. 21; G the effective shear modulus of eq. 56): Q = 4 int G dw1.
 constexpr double plane_modulus_per_shear = 4.0;
 
 }  // namespace
@@ -43,7 +43,8 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
     if (profile_[1] != profile_[0]) {
         axis_weight_ = (indenter.equivalent(0.0) - profile_[0]) / (profile_[1] - profile_[0]);
     }
-    // (I - K)_ij = delta_ij - (dx/pi) [K(x_i - x_j) + K(x_i + x_j)], K(y) = k(y/h)/h (eq. L17 from L3, L4; midpoint rule).
+    // (I - K)_ij = delta_ij - (dx/pi) [K(x_i - x_j) + K(x_i + x_j)], K(y) = k(y/h)/h (eq. L17 from L3, L4; midpoint
+    // rule).
     for (std::size_t i = 0; i < cells; ++i) {
         for (std::size_t j = 0; j <= i; ++j) {
             const double coupling = spacing_ / std::numbers::pi *

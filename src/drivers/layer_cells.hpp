@@ -1,9 +1,9 @@
 #pragma once
-// The coupled time-stepping of an incompressible viscoelastic layer whose contact may grow again after it shrank
-// (docs/theory.md, "Layers", eq. L16 to L19): the MDR line load q and the transformed surface displacement w1 on
-// uniform cells of [0, X], coupled in space by (I - K) q = Q (eq. L3 for any q vanishing beyond the contact) and in
-// time, cell by cell, by Q = 4 int_0^t G(t - t') dw1(x, t'), each Prony branch updated exactly; the contact set by
-// complementarity each step.
+// The coupled time-stepping of a viscoelastic layer of constant Poisson ratio whose contact may grow again after it
+// shrank (docs/theory.md, "Layers", eq. L16 to L19): the MDR line load q and the transformed surface displacement w1
+// on uniform cells of [0, X], coupled in space by (I - K) q = Q (eq. L3 for any q vanishing beyond the contact) and
+// in time, cell by cell, by Q = 4 int_0^t G(t - t') dw1(x, t'), each Prony branch updated exactly (G the effective
+// shear modulus, eq. 56); the contact set by complementarity each step.
 
 #include <cstddef>
 #include <utility>
@@ -32,8 +32,9 @@ struct LayerCellState {
     std::pair<double, double> touching_part{0.0, 0.0};
 };
 
-/// An incompressible layer (E* = 4G) under a rigid axisymmetric indenter at a prescribed depth, any depth history:
-/// the contact may shrink and grow again any number of times (Ting 1968's general case on a layer).
+/// A layer of constant Poisson ratio (E* = 4G, G the effective shear modulus of eq. 56) under a rigid axisymmetric
+/// indenter, any depth history: the contact may shrink and grow again any number of times (Ting 1968's general case
+/// on a layer).
 class LayerCells {
 public:
     /// `cells` (>= 2) uniform cells on [0, width] (width > 0 [m], at least the widest contact; a flat punch: its

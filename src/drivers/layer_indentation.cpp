@@ -83,13 +83,15 @@ void validate_layer(const ContactCase& contact_case) {
     if (contact_case.spring() && !contact_case.spring()->force_pauses.empty()) {
         refuse("load.force_pauses", "[...]", "a force pause");
     }
+    if (contact_case.load.harmonic) refuse_dashpot_on_cells(contact_case);  // a harmonic runs on cells
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
     if (!contact_case.snapshots.empty()) refuse("output.snapshots", "[...]", "a pressure snapshot");
     layer_poisson_ratio(contact_case);
-    if (contact_case.numerics.elements && *contact_case.numerics.elements > max_layer_nodes) {
-        throw InvalidInput("numerics.elements", std::to_string(*contact_case.numerics.elements),
-                           "must be <= " + std::to_string(max_layer_nodes) + " on a [layer] (Gauss nodes on the "
-                           "contact, or cells where it grows again)");
+    const auto& elements = contact_case.numerics.elements;
+    if (elements && (*elements < 2 || *elements > max_layer_nodes)) {  // LayerContact and LayerCells need 2
+        throw InvalidInput("numerics.elements", std::to_string(*elements),
+                           "must be from 2 to " + std::to_string(max_layer_nodes) + " on a [layer] (Gauss nodes on "
+                           "the contact, or cells where it grows again)");
     }
     const double largest_radius = largest_contact_radius(contact_case);
     contact::check_layer_contact_radius(layer, largest_radius);

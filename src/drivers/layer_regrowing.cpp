@@ -12,15 +12,18 @@
 
 namespace mdr::drivers {
 
-IndentationResult run_layer_regrowing(const ContactCase& contact_case, double largest_radius,
-                                      const ProgressObserver& progress) {
-    const auto& material = contact_case.material;
-    if (material.viscosity() > 0.0) {
-        // A cell entering the contact takes the dashpot's kick within one step: first order in the cell.
-        throw InvalidInput("material.eta", format_value(material.viscosity()),
+void refuse_dashpot_on_cells(const ContactCase& contact_case) {
+    if (contact_case.material.viscosity() > 0.0) {
+        throw InvalidInput("material.eta", format_value(contact_case.material.viscosity()),
                            "a parallel dashpot with a contact that grows again after it shrank is not built on a "
                            "[layer] yet (issue 28)");
     }
+}
+
+IndentationResult run_layer_regrowing(const ContactCase& contact_case, double largest_radius,
+                                      const ProgressObserver& progress) {
+    refuse_dashpot_on_cells(contact_case);
+    const auto& material = contact_case.material;
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
     const std::size_t cells = contact_case.numerics.elements.value_or(default_layer_cells);

@@ -1,19 +1,23 @@
 #pragma once
-// A displacement-, force- or spring-controlled run on an incompressible layer whose contact may grow again after it
-// shrank (a reload, a harmonic depth): the coupled time-stepping of LayerCells (docs/theory.md, "Layers", eq. L16 to
-// L19).
+// A displacement-, force- or spring-controlled run on a layer of constant Poisson ratio whose contact may grow again
+// after it shrank (a reload, a harmonic depth): the coupled time-stepping of LayerCells (docs/theory.md, "Layers",
+// eq. L16 to L19).
 
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/indentation.hpp"
 
 namespace mdr::drivers {
 
+/// Throws mdr::InvalidInput naming `material.eta` for a parallel dashpot, which LayerCells does not build (a cell
+/// entering the contact would take the dashpot's kick within one step: first order in the cell).
+void refuse_dashpot_on_cells(const ContactCase& contact_case);
+
 /// Runs a displacement-, force- or spring-controlled case with a `[layer]` on LayerCells (under force and spring
 /// control the depth of each step solved from F(d) + k d = the right side, LayerCells::step_loaded):
-/// `numerics.elements` cells (default default_layer_cells) on [0, `largest_radius`] (the widest contact prepared for, [m]), on the half-space driver's
-/// time grid (its harmonic part added and its last full cycle measured as on the half-space, HarmonicOutcome).
-/// Throws mdr::InvalidInput naming `material.eta` for a parallel dashpot (not built here), and key `layer` when the
-/// contact outgrows the range.
+/// `numerics.elements` cells (default default_layer_cells) on [0, `largest_radius`] (the widest contact prepared for,
+/// [m]), on the half-space driver's time grid (its harmonic part added and its last full cycle measured as on the
+/// half-space, HarmonicOutcome). Throws as refuse_dashpot_on_cells, and naming key `layer` when the contact outgrows
+/// the range.
 IndentationResult run_layer_regrowing(const ContactCase& contact_case, double largest_radius,
                                       const ProgressObserver& progress);
 

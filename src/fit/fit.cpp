@@ -40,9 +40,6 @@ std::size_t default_fit_elements(double noise_to_peak) {
 
 namespace {
 
-// The model must be built at the start values and at each bound of each free parameter (the others at their start
-// values): bounds are where the solver may go, so a bound outside the material's rules (tau1 < 0, say) is refused
-// here, naming the bound, and not met mid-solve as a model that cannot be evaluated.
 // Whether the case of the start values has a [layer] (the thickness may be free, the layer itself is not).
 bool on_a_layer(const FitProblem& problem) {
     std::vector<double> values;
@@ -50,6 +47,9 @@ bool on_a_layer(const FitProblem& problem) {
     return problem.model(values).layer.has_value();
 }
 
+// The model must be built at the start values and at each bound of each free parameter (the others at their start
+// values): bounds are where the solver may go, so a bound outside the material's rules (tau1 < 0, say) is refused
+// here, naming the bound, and not met mid-solve as a model that cannot be evaluated.
 void require_bounds_within_the_model(const FitProblem& problem) {
     if (!problem.model) return;
     std::vector<double> values;

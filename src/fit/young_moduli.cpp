@@ -70,10 +70,16 @@ void describe_young_moduli(const FitProblem& problem, FitResult& result) {
         if (is_shear_modulus(result.names[j])) moduli.push_back(j);
     }
     if (moduli.empty()) return;
-    const auto poisson_ratio = poisson_ratio_of(problem.model(result.values));
+    const auto model = problem.model(result.values);
+    const auto poisson_ratio = poisson_ratio_of(model);
     if (!poisson_ratio) {
-        result.flags.push_back("young_moduli: not reported: the body is compressible (a bulk part), its Poisson "
-                               "ratio changes with time; E = 2 (1 + nu) G needs nu");
+        // One body whose K(t)/G(t) changes, or (no bulk_material) a compressible body against a deformable indenter.
+        result.flags.push_back(model.bulk_material
+                                   ? "young_moduli: not reported: the body is compressible (a bulk part), its Poisson "
+                                     "ratio changes with time; E = 2 (1 + nu) G needs nu"
+                                   : "young_moduli: not reported: the body is compressible (a bulk part) and the "
+                                     "indenter deformable ([indenter.material]): the contact's material is the "
+                                     "pair's; E = 2 (1 + nu) G needs the body's own nu");
         return;
     }
     const double factor = 2.0 * (1.0 + *poisson_ratio);

@@ -199,6 +199,7 @@ std::vector<RasterShape> force_volume_shapes(const Header& header, const Section
         if (across.find(per_line) == nullptr || down.find(lines) == nullptr) return;
         const std::size_t columns = raster_count(header, across, per_line);
         const std::size_t rows = raster_count(header, down, lines);
+        if (columns == 0 || rows == 0) return;
         const auto same = [&](const RasterShape& shape) { return shape.columns == columns && shape.rows == rows; };
         if (std::any_of(shapes.begin(), shapes.end(), same)) return;
         std::string words = header_key(per_line) + ": " + header.value(across, per_line);

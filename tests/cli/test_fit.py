@@ -120,6 +120,23 @@ def plotted_figures(out):
     return sorted(pathlib.Path(p).name for p in plotted.stdout.split())
 
 
+def test_a_compressible_body_against_a_deformable_indenter_reports_no_young_modulus_and_says_why(run_mdr, fit_case,
+                                                                                               workdir):
+    # K = 2 G (nu = 0.2857, constant in time) against an elastic indenter: the contact's material is the pair's, so
+    # E = 2 (1 + nu) G is not reported, and the flag names the deformable indenter, not a Poisson ratio that changes
+    # with time (which this body's does not).
+    path = fit_case()
+    text = path.read_text(encoding="utf-8").replace("G = 5.0e4\n", "G = 5.0e4\nK = 1.0e5\n", 1)
+    path.write_text(text.replace("R = 5.0e-4\n", "R = 5.0e-4\n[indenter.material]\nmodel = \"elastic\"\nG = 1.0e12\n"),
+                    encoding="utf-8")
+    result = run_mdr("fit", path, "--out", workdir / "out", timeout=300)
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((workdir / "out" / "fit.json").read_text())
+    assert summary["young_moduli"] == {}
+    flags = [flag for flag in summary["flags"] if flag.startswith("young_moduli: not reported")]
+    assert len(flags) == 1 and "deformable" in flags[0] and "changes with time" not in flags[0], summary["flags"]
+
+
 @pytest.mark.parametrize("name", ['cell,1', 'a "quoted" name', "two\nlines", "plain"])
 def test_curve_names_read_back_as_one_field(run_mdr, fit_case, workdir, name):
     """curves.csv is RFC 4180 CSV whatever the curve's name (issue 23): read with the csv module (and with

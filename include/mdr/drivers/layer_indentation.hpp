@@ -19,9 +19,9 @@ double layer_poisson_ratio(const ContactCase& contact_case);
 
 /// Throws mdr::InvalidInput (key `layer` or the offending key, its value and the rule) for a case with a `[layer]`
 /// that needs what is not built on a layer yet: Shore control, an oblique impact, a parallel dashpot under force or
-/// spring control or in an impact, a force pause, a harmonic force or base, tangential loading, snapshots, a
-/// compressible body whose Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio). Does nothing
-/// for a case without a layer.
+/// spring control, in an impact or with a harmonic load (which runs on cells), a force pause, tangential loading,
+/// snapshots, a compressible body whose Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio).
+/// Does nothing for a case without a layer.
 void validate_layer(const ContactCase& contact_case);
 
 /// Runs a displacement-, force- or spring-controlled case on its layer: the elastic layer's force F_el(d) at unit

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The one JSON writer of results: a document (mdr/document.hpp) as the text of summary.json, fit.json,
-/// ranking.json, map.json and scheduler.json.
+/// ranking.json, each.json, map.json and scheduler.json.
 
 #include <string>
 

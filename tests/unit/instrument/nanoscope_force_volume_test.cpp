@@ -144,4 +144,19 @@ TEST(NanoscopeForceVolume, RasterOfForceLineByTheScanListsLinesStartsAtTheBottom
     fs::remove(path);
 }
 
+TEST(NanoscopeForceVolume, ACountThatIsNoWholeNumberStatesNoRaster) {
+    // force/line 2.5 states no raster (docs/instrument-files.md: a count is a whole number from 1 to 4096); the
+    // refusal lists only the raster the scan list states, never one of 0 curves.
+    const fs::path path = force_volume("fraction", "2.5", 4);
+    try {
+        mdr::instrument::read_curves(path);
+        ADD_FAILURE() << "no exception";
+    } catch (const mdr::InvalidInput& error) {
+        EXPECT_EQ(error.value(), "\\Data length: 32768") << error.what();
+        EXPECT_EQ(error.rule(), "must be 2 or 4 bytes times 2048 samples times 65536 (\\Samps/line: 256 x \\Lines: "
+                                "256) curves");
+    }
+    fs::remove(path);
+}
+
 }  // namespace

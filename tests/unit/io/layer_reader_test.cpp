@@ -49,6 +49,10 @@ TEST(LayerReader, RefusesBadValues) {
     EXPECT_EQ(refused_key(with(loading, "thickness = 1.0e-6\ninterface = \"glued\"\n")), "layer.interface");
     EXPECT_EQ(refused_key(with(loading, "thickness = 1.0e-6\n")), "layer.interface");
     EXPECT_EQ(refused_key(with(loading, bonded + "friction = 0.1\n")), "layer.friction");
+    // Gauss nodes on the contact, or cells: from 2 to 512, refused at once (mdr check), as every run on a layer needs.
+    EXPECT_EQ(refused_key(with(loading, bonded + "[numerics]\nelements = 1\n")), "numerics.elements");
+    EXPECT_EQ(refused_key(with(loading, bonded + "[numerics]\nelements = 2\n")), "(accepted)");
+    EXPECT_EQ(refused_key(with(loading, bonded + "[numerics]\nelements = 513\n")), "numerics.elements");
 }
 
 TEST(LayerReader, RefusesWhatIsNotBuiltOnALayer) {
@@ -92,6 +96,10 @@ TEST(LayerReader, RefusesWhatIsNotBuiltOnALayer) {
     EXPECT_EQ(refused_key(with(loading + harmonic, bonded)), "(accepted)");
     const std::string forcing = "control = \"force\"\nhistory = [[0.0, 0.0], [1.0, 1.0e-7]]\n";
     EXPECT_EQ(refused_key(with(forcing + harmonic, bonded)), "(accepted)");
+    // A harmonic runs on cells, which build no parallel dashpot: refused at once (mdr check), not only by the run.
+    EXPECT_EQ(refused_key("[material]\nmodel = \"kelvin_voigt\"\nG = 1.0e3\neta = 1.0\n[indenter]\nshape = \"sphere\"\n"
+                          "R = 1.0e-5\n[load]\n" + loading + harmonic + "[layer]\n" + bonded),
+              "material.eta");
 }
 
 }  // namespace
