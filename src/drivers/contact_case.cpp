@@ -3,6 +3,7 @@
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/oblique_sphere.hpp"
 #include "mdr/drivers/work_estimate.hpp"
+#include "mdr/rheology/compressible.hpp"
 #include "paused_base.hpp"
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 
 namespace mdr::drivers {
 namespace {
@@ -266,6 +268,12 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
 }
 
 }  // namespace
+
+std::optional<double> body_poisson_ratio(const ContactCase& contact_case) {
+    if (!contact_case.shear_material) return 0.5;  // no bulk part was folded in
+    if (!contact_case.bulk_material) return std::nullopt;
+    return rheology::constant_poisson_ratio(*contact_case.shear_material, *contact_case.bulk_material);
+}
 
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case) {
     validate(contact_case);

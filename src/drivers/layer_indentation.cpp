@@ -12,7 +12,6 @@
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
-#include "mdr/rheology/compressible.hpp"
 #include "layer_impact.hpp"
 #include "layer_regrowing.hpp"
 #include "layer_stepping.hpp"
@@ -53,12 +52,11 @@ struct ContactRegrows {};
 }  // namespace
 
 double layer_poisson_ratio(const ContactCase& contact_case) {
-    if (contact_case.tangential_exact) return 0.5;  // one incompressible body
-    if (!contact_case.bulk_material || !contact_case.shear_material) {
+    if (!contact_case.tangential_exact && !contact_case.bulk_material) {
         refuse("indenter.material", "[...]", "a deformable indenter (two bodies)");
     }
+    if (const auto ratio = body_poisson_ratio(contact_case)) return *ratio;
     const auto& bulk = *contact_case.bulk_material;
-    if (const auto ratio = rheology::constant_poisson_ratio(*contact_case.shear_material, bulk)) return *ratio;
     const bool elastic_bulk = bulk.is_time_independent();
     throw InvalidInput(elastic_bulk ? "material.K" : "material.bulk",
                        elastic_bulk ? format_value(bulk.equilibrium_modulus()) : "[...]",

@@ -7,7 +7,6 @@
 #include <optional>
 #include <vector>
 
-#include "mdr/rheology/compressible.hpp"
 #include "mdr/rheology/material_models.hpp"
 
 namespace mdr::fit {
@@ -35,14 +34,6 @@ bool is_shear_modulus(const std::string& name) {
 
 namespace {
 
-// The body's Poisson ratio when constant in time: 0.5 for an incompressible body, rheology::constant_poisson_ratio for
-// one compressible body (two bodies with a bulk part, or a ratio that changes in time: none).
-std::optional<double> poisson_ratio_of(const drivers::ContactCase& model) {
-    if (!model.shear_material) return 0.5;
-    if (!model.bulk_material) return std::nullopt;
-    return rheology::constant_poisson_ratio(*model.shear_material, *model.bulk_material);
-}
-
 // d nu / d value_k at the fitted values by central differences of the model (a free G beside a fixed K moves nu);
 // NaN where a neighbouring model has no constant nu or cannot be built.
 std::vector<double> poisson_ratio_gradient(const FitProblem& problem, const std::vector<double>& values) {
@@ -53,7 +44,7 @@ std::vector<double> poisson_ratio_gradient(const FitProblem& problem, const std:
         above[k] += step;
         below[k] -= step;
         try {
-            const auto upper = poisson_ratio_of(problem.model(above)), lower = poisson_ratio_of(problem.model(below));
+            const auto upper = drivers::body_poisson_ratio(problem.model(above)), lower = drivers::body_poisson_ratio(problem.model(below));
             gradient[k] = upper && lower ? (*upper - *lower) / (2.0 * step) : std::numeric_limits<double>::quiet_NaN();
         } catch (const std::exception&) {
             gradient[k] = std::numeric_limits<double>::quiet_NaN();
@@ -71,7 +62,7 @@ void describe_young_moduli(const FitProblem& problem, FitResult& result) {
     }
     if (moduli.empty()) return;
     const auto model = problem.model(result.values);
-    const auto poisson_ratio = poisson_ratio_of(model);
+    const auto poisson_ratio = drivers::body_poisson_ratio(model);
     if (!poisson_ratio) {
         // One body whose K(t)/G(t) changes, or (no bulk_material) a compressible body against a deformable indenter.
         result.flags.push_back(model.bulk_material

@@ -146,6 +146,12 @@ inline constexpr std::size_t min_steps_per_segment = 20;
 /// memory (require_bounded_work).
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case);
 
+/// The body's Poisson ratio when it is constant in time: 0.5 for an incompressible body (one, or two in series), the
+/// ratio of one compressible body whose bulk relaxation is proportional to its shear one (K(t) = c G(t),
+/// rheology::constant_poisson_ratio); none for one whose ratio changes in time, or a compressible body against a
+/// deformable indenter (the pair's material has no one nu).
+std::optional<double> body_poisson_ratio(const ContactCase& contact_case);
+
 /// Scales of an elastic impact (energy balance m v0^2 / 2 = int F_el dd), used for the impact defaults.
 struct ElasticImpact {
     double depth = 0.0;     ///< largest depth [m]
