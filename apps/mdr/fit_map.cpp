@@ -35,10 +35,11 @@ bool run_map(const fitcase::FitCase& fit_case, const std::string& map, const io:
             progress(total ? double(done) / double(total) : 1.0);
         });
     progress.finish();
+    const fitcase::MapRows table = fitcase::map_rows(pixels, fit_case);
     directory.write(
         [&](const std::filesystem::path& folder) {
-            fitcase::write_map_table(folder / "map.csv", pixels, fit_case);
-            fitcase::write_map_summary(folder / "map.json", layout, fit_case, path, pixels);
+            fitcase::write_map_table(folder / "map.csv", table);
+            fitcase::write_map_summary(folder / "map.json", layout, fit_case, path, table);
         },
         received_signal);
     std::size_t converged = 0, failed = 0;

@@ -6,6 +6,7 @@
 /// dicts and lists directly, with no text in between.
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -35,5 +36,12 @@ struct Document::Entry {
 
 /// `value` as a document: a finite number, else null (an undetermined error, a ratio to a zero noise).
 Document number_or_null(double value);
+
+/// The keys of the tables `rows` whose values `counted` accepts (every key when it is empty), each once: a key is put
+/// after the key before it in the first row that has it, so rows whose keys follow one order give that order whatever
+/// the order of the rows and whichever keys each lacks. The one rule of the columns of a table of documents
+/// (sweep.csv, map.csv).
+std::vector<std::string> union_of_keys(const std::vector<const Document::Table*>& rows,
+                                       const std::function<bool(const Document&)>& counted = {});
 
 }  // namespace mdr

@@ -1,13 +1,10 @@
 """Fits of instrument map files: `mdr.fit_map(case, "map.jpk-force-map")` fits every curve of the file with the same
-C++ as ``mdr fit CASE --map FILE --out DIR`` (mdr/fitcase/map_fit.hpp) and gives the rows of its map.csv."""
+C++ as ``mdr fit CASE --map FILE --out DIR`` (mdr/fitcase/map_fit.hpp) and gives the rows of its map.csv, taken from
+the C++ result directly (mdr::fitcase::MapRows)."""
 
 from __future__ import annotations
 
-import csv
 import os
-import pathlib
-import shutil
-import tempfile
 from dataclasses import dataclass
 from typing import Any, Callable, Mapping
 
@@ -20,9 +17,6 @@ from ._jobs import check_jobs, local_workers
 #: File endings of instrument maps (and single curves) that `fit_map` reads itself (docs/instrument-files.md): the
 #: C++ readers' own list (mdr::instrument::supported_extensions).
 INSTRUMENT_ENDINGS = tuple(_mdr._instrument_endings)
-
-#: The columns of map.csv that hold text; every other column is a number.
-TEXT_COLUMNS = ("status", "flags", "failure")
 
 
 def is_instrument_file(path: Any) -> bool:
@@ -45,17 +39,16 @@ class MapTable:
     units: str = "SI"
 
 
-def _read_table(path: pathlib.Path) -> dict[str, np.ndarray]:
-    with open(path, newline="", encoding="utf-8") as handle:
-        rows = list(csv.DictReader(handle))
-    names = list(rows[0].keys()) if rows else []
+def _columns(rows: list[dict[str, Any]], names: list[str]) -> dict[str, np.ndarray]:
+    """The columns `names` of the rows (dicts) as arrays: a column that holds text as str ("" where a row lacks it),
+    any other as float64 (NaN where a row lacks it or holds None)."""
     columns = {}
     for name in names:
-        values = [row[name] for row in rows]
-        if name in TEXT_COLUMNS:
-            columns[name] = np.array(values, dtype=object)
+        values = [row.get(name) for row in rows]
+        if any(isinstance(value, str) for value in values):
+            columns[name] = np.array(["" if value is None else value for value in values], dtype=object)
         else:
-            columns[name] = np.array([float(value) if value != "" else np.nan for value in values])
+            columns[name] = np.array([np.nan if value is None else value for value in values], dtype=float)
     return columns
 
 
@@ -92,20 +85,16 @@ def fit_map_file(case: str | os.PathLike | Mapping[str, Any], path: str | os.Pat
     map_file = os.path.abspath(path)
     # Checked before the fit: an output folder that is not mdr's is refused, and it is written whole or not at all.
     result_directory = None if out is None else _mdr._ResultDirectory(os.fspath(out), "out", inputs + [map_file])
-    with tempfile.TemporaryDirectory() as scratch:
-        folder = pathlib.Path(scratch)
-        columns, rows, size_x, size_y, units = _mdr._fit_map_file(case_input, source, directory, map_file,
-                                                                 os.fspath(folder),
-                                                                 lambda curves: local_workers(jobs, curves), progress)
-        table = MapTable(_read_table(folder / "map.csv"), (columns, rows), (size_x, size_y), units)
-        if result_directory is not None:
-            def write_files(temporary: str) -> None:
-                for name in ("map.csv", "map.json"):
-                    shutil.copyfile(folder / name, os.path.join(temporary, name))
-                if figures:
-                    from .map_figures import map_heat_maps
-                    for name, figure in map_heat_maps(temporary):
-                        figure.savefig(os.path.join(temporary, f"map_{name}.png"), dpi=120)
+    rows, names, write_tables, grid, units = _mdr._fit_map_file(case_input, source, directory, map_file,
+                                                                lambda curves: local_workers(jobs, curves), progress)
+    table = MapTable(_columns(rows, names), grid[:2], grid[2:], units)
+    if result_directory is not None:
+        def write_files(temporary: str) -> None:
+            write_tables(temporary)
+            if figures:
+                from .map_figures import map_heat_maps
+                for name, figure in map_heat_maps(temporary):
+                    figure.savefig(os.path.join(temporary, f"map_{name}.png"), dpi=120)
 
-            result_directory.write(write_files)
-        return table
+        result_directory.write(write_files)
+    return table

@@ -3,12 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <unordered_map>
 #include <utility>
+#include <variant>
 
 #include "mdr/error.hpp"
 #include "mdr/fit/instrument_curve.hpp"
@@ -154,130 +155,116 @@ std::vector<PixelFit> fit_map_pixels(const FitCase& fit_case, const std::filesys
 
 namespace {
 
-/// One field of a row of map.csv: its column, its text and the column's unit in SI symbols (a registry's "Pa",
-/// "s", "1" for a ratio; "" for no quantity), written in the case's system by write_map_summary.
-struct Field {
-    std::string name;
-    std::string value;
-    std::string unit;
-};
-/// One row of map.csv.
-using Row = std::vector<Field>;
-
-/// The columns every row has before the fit's (where the pixel is) and after them (how its fit went).
-const std::array<std::string, 5> place_columns = {"index", "column", "row", "x", "y"};
-const std::array<std::string, 3> outcome_columns = {"status", "flags", "failure"};
-
-std::string number(double value) { return fmt::format("{:.17g}", value); }
-
-/// The row of `pixel`; `key_unit` gives the unit of a free key (io::free_key_unit of the case).
-Row row_of(const PixelFit& pixel, const std::function<std::string(const std::string&)>& key_unit) {
-    const auto placed = [&](std::string text) { return pixel.placed ? text : std::string(); };
-    Row row{{"index", std::to_string(pixel.index), ""},
-            {"column", placed(std::to_string(pixel.column)), ""},
-            {"row", placed(std::to_string(pixel.row)), ""},
-            {"x", placed(number(pixel.x)), "m"},
-            {"y", placed(number(pixel.y)), "m"}};
-    if (pixel.result) {
-        const fit::FitResult& result = *pixel.result;
-        for (std::size_t j = 0; j < result.names.size(); ++j) {
-            const std::string unit = key_unit(result.names[j]);
-            row.push_back({result.names[j], number(result.values[j]), unit});
-            row.push_back({result.names[j] + "_stderr", number(result.standard_errors[j]), unit});
-        }
-        for (const auto& young : result.young_moduli) {
-            const std::string unit = key_unit(young.name);
-            row.push_back({"E_" + young.name, number(young.value), unit});
-            row.push_back({"E_" + young.name + "_stderr", number(young.standard_error), unit});
-        }
-        const bool force = result.curves.empty() || result.curves.front().fitted == fit::Fitted::force;
-        row.push_back({"contact_height", number(pixel.contact_height), "m"});
-        row.push_back({"residual_to_noise", number(result.rms_residual / result.noise), "1"});
-        row.push_back({"noise", number(result.noise), force ? "N" : "m"});
-        row.push_back({"status", result.status, ""});
-        std::string flags;
-        for (const auto& flag : result.flags) flags += (flags.empty() ? "" : "; ") + flag;
-        for (const auto& curve : result.curves) {
-            for (const auto& flag : curve.flags) flags += (flags.empty() ? "" : "; ") + flag;
-        }
-        row.push_back({"flags", flags, ""});
-    } else {
-        row.push_back({"status", "failed", ""});
+/// The row of `pixel` (map_rows); the unit of each of its keys is entered into `units` where it is not yet.
+Document::Table row_of(const PixelFit& pixel, const FitCase& fit_case,
+                       std::unordered_map<std::string, std::string>& units) {
+    Document::Table row;
+    const auto put = [&](const std::string& key, Document value, const std::string& unit) {
+        row.push_back({key, std::move(value)});
+        if (!units.contains(key)) units.emplace(key, unit);
+    };
+    const auto placed = [&](Document value) { return pixel.placed ? std::move(value) : Document{}; };
+    put("index", {pixel.index}, "");
+    put("column", placed({pixel.column}), "");
+    put("row", placed({pixel.row}), "");
+    put("x", placed({pixel.x}), "m");
+    put("y", placed({pixel.y}), "m");
+    if (!pixel.result) {
+        put("status", {std::string("failed")}, "");
+        put("flags", {std::string()}, "");
+        put("failure", {pixel.failure}, "");
+        return row;
     }
-    row.push_back({"failure", pixel.failure, ""});
+    const fit::FitResult& result = *pixel.result;
+    for (std::size_t j = 0; j < result.names.size(); ++j) {
+        const std::string unit = io::free_key_unit(fit_case.model, result.names[j]);
+        put(result.names[j], {result.values[j]}, unit);
+        put(result.names[j] + "_stderr", {result.standard_errors[j]}, unit);
+    }
+    for (const auto& young : result.young_moduli) {
+        const std::string unit = io::free_key_unit(fit_case.model, young.name);
+        put("E_" + young.name, {young.value}, unit);
+        put("E_" + young.name + "_stderr", {young.standard_error}, unit);
+    }
+    const bool force = result.curves.empty() || result.curves.front().fitted == fit::Fitted::force;
+    put("contact_height", {pixel.contact_height}, "m");
+    put("residual_to_noise", {result.rms_residual / result.noise}, "1");
+    put("noise", {result.noise}, force ? "N" : "m");
+    put("status", {result.status}, "");
+    std::string flags;
+    for (const auto& flag : result.flags) flags += (flags.empty() ? "" : "; ") + flag;
+    for (const auto& curve : result.curves) {
+        for (const auto& flag : curve.flags) flags += (flags.empty() ? "" : "; ") + flag;
+    }
+    put("flags", {std::move(flags)}, "");
+    put("failure", {pixel.failure}, "");
     return row;
 }
 
-std::vector<Row> rows_of(const std::vector<PixelFit>& pixels, const FitCase& fit_case) {
-    const auto key_unit = [&](const std::string& key) { return io::free_key_unit(fit_case.model, key); };
-    std::vector<Row> rows;
-    rows.reserve(pixels.size());
-    for (const auto& pixel : pixels) rows.push_back(row_of(pixel, key_unit));
-    return rows;
-}
-
-/// map.csv's columns with their units: place_columns, the fit's columns in the order the first fitted pixel has
-/// them (every fitted pixel has the same: one case), outcome_columns; whichever pixels failed.
-std::vector<std::pair<std::string, std::string>> table_columns(const std::vector<Row>& rows) {
-    std::vector<std::pair<std::string, std::string>> columns;
-    const auto known = [&](const std::string& name) {
-        return std::any_of(columns.begin(), columns.end(), [&](const auto& column) { return column.first == name; });
-    };
-    const auto outcome = [](const std::string& name) {
-        return std::find(outcome_columns.begin(), outcome_columns.end(), name) != outcome_columns.end();
-    };
-    for (const auto& row : rows) {
-        for (const auto& field : row) {
-            if (!outcome(field.name) && !known(field.name)) columns.emplace_back(field.name, field.unit);
-        }
-    }
-    for (const auto& name : outcome_columns) columns.emplace_back(name, "");
-    return columns;
+/// A value of a row as a field of map.csv: a count in decimal, a number with 17 significant digits ("nan", "inf"
+/// where it is not finite), a text quoted by RFC 4180 (io::csv_field), null (an unread pixel's place) empty.
+std::string csv_text(const Document& value) {
+    if (const auto* count = std::get_if<std::size_t>(&value.value)) return std::to_string(*count);
+    if (const auto* number = std::get_if<double>(&value.value)) return fmt::format("{:.17g}", *number);
+    if (const auto* text = std::get_if<std::string>(&value.value)) return io::csv_field(*text);
+    return {};
 }
 
 }  // namespace
 
-void write_map_table(const std::filesystem::path& path, const std::vector<PixelFit>& pixels,
-                     const FitCase& fit_case) {
-    const std::vector<Row> rows = rows_of(pixels, fit_case);
-    const auto columns = table_columns(rows);
-    std::string table;
-    for (std::size_t c = 0; c < columns.size(); ++c) table += (c ? "," : "") + io::csv_field(columns[c].first);
-    table += '\n';
-    for (const auto& row : rows) {
-        for (std::size_t c = 0; c < columns.size(); ++c) {
-            if (c) table += ',';
-            for (const auto& field : row) {
-                if (field.name == columns[c].first) table += io::csv_field(field.value);
-            }
-        }
-        table += '\n';
+MapRows map_rows(const std::vector<PixelFit>& pixels, const FitCase& fit_case) {
+    MapRows table;
+    std::unordered_map<std::string, std::string> units;
+    table.rows.reserve(pixels.size());
+    for (const auto& pixel : pixels) {
+        table.rows.push_back(row_of(pixel, fit_case, units));
+        if (!pixel.result) ++table.failed;
     }
-    io::write_text_file(path, table);
+    std::vector<const Document::Table*> rows;
+    rows.reserve(table.rows.size());
+    for (const auto& row : table.rows) rows.push_back(&row);
+    table.columns = union_of_keys(rows);
+    for (const auto& column : table.columns) table.units.push_back(units.at(column));
+    return table;
+}
+
+void write_map_table(const std::filesystem::path& path, const MapRows& table) {
+    std::string text;
+    for (std::size_t c = 0; c < table.columns.size(); ++c) text += (c ? "," : "") + io::csv_field(table.columns[c]);
+    text += '\n';
+    for (const auto& row : table.rows) {
+        for (std::size_t c = 0; c < table.columns.size(); ++c) {
+            if (c) text += ',';
+            const auto entry =
+                std::find_if(row.begin(), row.end(), [&](const auto& e) { return e.key == table.columns[c]; });
+            if (entry != row.end()) text += csv_text(entry->value);
+        }
+        text += '\n';
+    }
+    io::write_text_file(path, text);
 }
 
 void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const FitCase& fit_case,
-                       const std::filesystem::path& source, const std::vector<PixelFit>& pixels) {
+                       const std::filesystem::path& source, const MapRows& table) {
     const std::string& units = fit_case.units;
     const io::UnitSystem& system = io::unit_system(units);
     // map.json lists its keys, and the columns of column_units, by name.
     Document::Table column_units;
-    for (const auto& [name, unit] : table_columns(rows_of(pixels, fit_case))) {
-        column_units.push_back({name, {unit.empty() || unit == "1" ? unit : system.names(unit)}});
+    for (std::size_t c = 0; c < table.columns.size(); ++c) {
+        const std::string& unit = table.units[c];
+        column_units.push_back({table.columns[c], {unit.empty() || unit == "1" ? unit : system.names(unit)}});
     }
     std::sort(column_units.begin(), column_units.end(), [](const auto& a, const auto& b) { return a.key < b.key; });
-    const auto failed = static_cast<std::size_t>(
-        std::count_if(pixels.begin(), pixels.end(), [](const PixelFit& pixel) { return !pixel.result; }));
     const auto pixel_size = [](double size, std::size_t count) { return count ? size / double(count) : 0.0; };
     const Document summary{Document::Table{
         {"column_units", {std::move(column_units)}},
         {"columns", {layout.columns}},
-        {"failed", {failed}},
+        {"failed", {table.failed}},
         {"length_size", {system.length_size}},
         {"length_unit", {std::string(system.length)}},
         {"pixel_size", {Document::List{{pixel_size(layout.size_x, layout.columns)},
                                        {pixel_size(layout.size_y, layout.rows)}}}},
-        {"pixels", {pixels.size()}},
+        {"pixels", {table.rows.size()}},
         {"rows", {layout.rows}},
         {"size", {Document::List{{layout.size_x}, {layout.size_y}}}},
         {"source", {source.string()}},

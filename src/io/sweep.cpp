@@ -12,7 +12,6 @@
 #include <numeric>
 #include <optional>
 #include <sstream>
-#include <unordered_set>
 
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/step_observer.hpp"
@@ -250,22 +249,10 @@ std::vector<SweepRow> run_sweep_points(const CaseTemplate& model, const std::vec
 }
 
 std::vector<std::string> sweep_columns(const std::vector<SweepRow>& rows) {
-    std::vector<std::string> columns;
-    std::unordered_set<std::string> known;
-    for (const auto& row : rows) {
-        const bool all_known = std::all_of(row.summary.begin(), row.summary.end(), [&](const Document::Entry& entry) {
-            return known.contains(entry.key) || !number_in(entry.value);
-        });
-        if (all_known) continue;
-        auto position = columns.begin();
-        for (const auto& [key, value] : row.summary) {
-            if (!number_in(value)) continue;
-            const auto found = std::find(columns.begin(), columns.end(), key);
-            position = found != columns.end() ? found + 1 : columns.insert(position, key) + 1;
-            known.insert(key);
-        }
-    }
-    return columns;
+    std::vector<const Document::Table*> summaries;
+    summaries.reserve(rows.size());
+    for (const auto& row : rows) summaries.push_back(&row.summary);
+    return union_of_keys(summaries, [](const Document& value) { return number_in(value).has_value(); });
 }
 
 void write_sweep_csv(const std::filesystem::path& directory, const std::vector<SweepAxis>& axes,

@@ -204,6 +204,8 @@ def test_an_unreadable_first_curve_is_a_failed_row_and_the_columns_keep_their_or
     assert list(table.columns) == ["index", "column", "row", "x", "y", "material.G", "material.G_stderr",
                                    "E_material.G", "E_material.G_stderr", "contact_height", "residual_to_noise",
                                    "noise", "status", "flags", "failure"]
+    # map.csv is written from the same rows (fitcase::map_rows): the failed first row cuts none of its columns.
+    assert (tmp_path / "out" / "map.csv").read_text().splitlines()[0].split(",") == list(table.columns)
     summary = json.loads((tmp_path / "out" / "map.json").read_text())
     assert (summary["pixels"], summary["failed"], summary["columns"]) == (3, 1, 25)
 

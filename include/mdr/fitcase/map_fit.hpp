@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "mdr/document.hpp"
 #include "mdr/fit/fit.hpp"
 #include "mdr/fitcase/fit_case.hpp"
 #include "mdr/instrument/read_curves.hpp"
@@ -73,21 +74,35 @@ void require_map_time(instrument::CurveFile& file, const FitCase& fit_case, cons
 /// its pixel's failed row, fit_map_pixel); all 0 when no curve can be read or the file is not a map.
 MapLayout map_layout(instrument::CurveFile& file, const FitCase& fit_case);
 
-/// Writes map.csv: one row per pixel with `index`, `column`, `row`, `x`, `y` (empty when not `placed`), every free
-/// key and `KEY_stderr`, `E_KEY` and `E_KEY_stderr` for every Young modulus, `contact_height`,
-/// `residual_to_noise`, `noise`, then `status`, `flags` (joined by "; ") and `failure`, in this order whichever
-/// pixels failed; a value a row lacks is empty. Fields quoted by RFC 4180 (io::csv_field); numbers with 17
-/// significant digits. Throws std::runtime_error when the file cannot be written.
-void write_map_table(const std::filesystem::path& path, const std::vector<PixelFit>& pixels,
-                     const FitCase& fit_case);
+/// The per-pixel rows of a map fit as documents, built once (map_rows): what map.csv holds and mdr.fit_map returns.
+struct MapRows {
+    /// One row per pixel in the file's order: `index`, `column`, `row`, `x`, `y` (null when not `placed`), every free
+    /// key and `KEY_stderr`, `E_KEY` and `E_KEY_stderr` for every Young modulus, `contact_height`,
+    /// `residual_to_noise`, `noise` (a failed pixel has none of these), then `status` ("failed" for a failed pixel),
+    /// `flags` (joined by "; ") and `failure` as text; counts as counts, numbers as they are (NaN included).
+    std::vector<Document::Table> rows;
+    /// The columns of map.csv: the rows' keys by union_of_keys (mdr/document.hpp), whichever pixels failed.
+    std::vector<std::string> columns;
+    /// The unit of each column in SI symbols, as the registries write them: that of a free key (and of its `_stderr`
+    /// and `E_` columns) from the registry that defines it (io::free_key_unit), "m" for a position or height, "N"
+    /// or "m" for the noise of a force or depth fit, "1" for a ratio, "" for a column that is no quantity.
+    std::vector<std::string> units;
+    std::size_t failed = 0;  ///< pixels without a fit
+};
+
+/// The rows of `pixels`, fitted with `fit_case`, with their columns and units.
+MapRows map_rows(const std::vector<PixelFit>& pixels, const FitCase& fit_case);
+
+/// Writes map.csv: the columns of `table` and one line per row, a value the row lacks empty, as is a null. Fields
+/// quoted by RFC 4180 (io::csv_field); counts in decimal, numbers with 17 significant digits. Throws
+/// std::runtime_error when the file cannot be written.
+void write_map_table(const std::filesystem::path& path, const MapRows& table);
 
 /// Writes map.json: `source` (the map file), `units`, `length_unit` and `length_size` (m) of the case's unit
 /// system, the grid's `columns` and `rows`, its `size` and `pixel_size` (x, y) in that length unit, the number of
-/// `pixels` and of `failed` ones (no fit), and `column_units`: the unit of every column of map.csv in the case's
-/// system, that of a free key (and of its `_stderr` and `E_` columns) from the registry that defines it
-/// (io::free_key_unit), "1" for a ratio or an exponent, "" for a column that is no quantity. Throws
-/// std::runtime_error when the file cannot be written.
+/// `pixels` and of `failed` ones (no fit), and `column_units`: the unit of every column of map.csv (MapRows::units)
+/// in the case's system. Throws std::runtime_error when the file cannot be written.
 void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const FitCase& fit_case,
-                       const std::filesystem::path& source, const std::vector<PixelFit>& pixels);
+                       const std::filesystem::path& source, const MapRows& table);
 
 }  // namespace mdr::fitcase

@@ -77,9 +77,9 @@ std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& s
 std::vector<SweepRow> run_sweep(const CaseTemplate& model, const std::vector<SweepAxis>& axes, unsigned jobs,
                                 const std::function<void(std::size_t, std::size_t)>& progress);
 
-/// The numeric keys (numbers and counts, not flags) of the rows' summaries, each once: a key is put after the one
-/// before it in the first row that has it, so rows whose keys follow one order (a summary's) give that order whatever
-/// the order of the rows. The columns of sweep.csv between the varied keys and `error`, and of mdr.sweep's table.
+/// The numeric keys (numbers and counts, not flags) of the rows' summaries by union_of_keys (mdr/document.hpp), the
+/// rule of map.csv's columns too: rows whose keys follow one order (a summary's) give that order whatever the order
+/// of the rows. The columns of sweep.csv between the varied keys and `error`, and of mdr.sweep's table.
 std::vector<std::string> sweep_columns(const std::vector<SweepRow>& rows);
 
 /// Writes sweep.csv into `directory`: the varied keys (named as given), then sweep_columns (`nan` where a row lacks

@@ -1,10 +1,13 @@
 // fit_map_pixel (src/fitcase/map_fit.cpp): a pixel keeps the numbers of its map.csv row, not its curve's data points,
-// so that a map of many pixels holds a few numbers per pixel.
+// so that a map of many pixels holds a few numbers per pixel; map_rows and write_map_table: map.csv's columns.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "mdr/error.hpp"
@@ -57,9 +60,60 @@ TEST(MapFit, AWriteErrorOfTheTablesIsReportedNotLost) {
     PixelFit pixel;
     pixel.failure = "unreadable";
     const FitCase fit_case = parse_fit_case(map_case, "map.toml", ".");
-    EXPECT_THROW(write_map_table("/dev/full", {pixel}, fit_case), std::runtime_error);
-    EXPECT_THROW(write_map_summary("/dev/full", MapLayout{}, fit_case, "map.jpk-force-map", {pixel}),
+    const MapRows table = map_rows({pixel}, fit_case);
+    EXPECT_THROW(write_map_table("/dev/full", table), std::runtime_error);
+    EXPECT_THROW(write_map_summary("/dev/full", MapLayout{}, fit_case, "map.jpk-force-map", table),
                  std::runtime_error);
+}
+
+TEST(MapFit, EveryKeyOfEveryRowIsAColumnOfMapCsvWhicheverPixelComesFirst) {
+    // map.csv's columns are the union of its rows' keys (union_of_keys), in the order docs/instrument-to-map.md
+    // states whichever pixels failed: a failed pixel first (it has no fitted key) must not cut the fitted pixel's
+    // columns, nor a fitted pixel first the failed one's.
+    const FitCase fit_case = parse_fit_case(map_case, "map.toml", ".");
+    PixelFit failed;
+    failed.index = 0;
+    failed.failure = "unreadable";
+    PixelFit fitted;
+    fitted.index = 1;
+    fitted.placed = true;
+    fitted.column = 2;
+    fitted.row = 3;
+    fitted.x = 0.5;
+    fitted.y = 0.25;
+    fitted.contact_height = 1.5;
+    fit::FitResult result;
+    result.status = "converged";
+    result.names = {"material.G"};
+    result.values = {4.0};
+    result.standard_errors = {0.5};
+    result.young_moduli = {{"material.G", 12.0, 1.5}};
+    result.rms_residual = 3.0;
+    result.noise = 2.0;
+    fitted.result = result;
+    const std::string header = "index,column,row,x,y,material.G,material.G_stderr,E_material.G,E_material.G_stderr,"
+                               "contact_height,residual_to_noise,noise,status,flags,failure";
+    const std::string failed_line = "0,,,,,,,,,,,,failed,,unreadable";
+    const std::string fitted_line = "1,2,3,0.5,0.25,4,0.5,12,1.5,1.5,1.5,2,converged,,";
+    const auto path = std::filesystem::temp_directory_path() / "mdr_map_fit_test_map.csv";
+    for (const bool failed_first : {true, false}) {
+        const std::vector<PixelFit> pixels = failed_first ? std::vector{failed, fitted} : std::vector{fitted, failed};
+        const MapRows table = map_rows(pixels, fit_case);
+        for (const auto& row : table.rows) {
+            for (const auto& entry : row) {
+                EXPECT_TRUE(std::find(table.columns.begin(), table.columns.end(), entry.key) != table.columns.end())
+                    << entry.key << " is no column, " << (failed_first ? "failed" : "fitted") << " pixel first";
+            }
+        }
+        write_map_table(path, table);
+        std::ifstream written(path);
+        std::vector<std::string> lines;
+        for (std::string line; std::getline(written, line);) lines.push_back(line);
+        const std::vector<std::string> expected = failed_first ? std::vector{header, failed_line, fitted_line}
+                                                               : std::vector{header, fitted_line, failed_line};
+        EXPECT_EQ(lines, expected) << (failed_first ? "failed pixel first" : "fitted pixel first");
+    }
+    std::filesystem::remove(path);
 }
 
 TEST(MapFit, PixelsFittedOnThreadsAreThoseOfOneThreadInTheFilesOrder) {
