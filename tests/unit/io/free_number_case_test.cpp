@@ -150,6 +150,30 @@ TEST(FreeNumberCase, RefusesAValueWithTheTemplatesMessage) {
     }
 }
 
+// With several values that break rules, the one the case reader meets first is reported: a body's K when read,
+// the indenter, then the bodies when built (the indenter's own first), then the layer.
+TEST(FreeNumberCase, ReportsTheRuleTheReaderMeetsFirst) {
+    struct Bad {
+        std::string text;
+        std::vector<std::string> keys;
+        std::vector<double> values;
+        std::string first_key;
+    };
+    const std::vector<Bad> bad{
+        {two_bodies, {"material.terms[1][1]", "indenter.R"}, {-1.0, 0.0}, "indenter.R"},
+        {two_bodies, {"indenter.material.G", "material.G_inf"}, {-1.0, -1.0}, "indenter.material.G"},
+        {two_bodies, {"indenter.material.K", "indenter.R"}, {-1.0, -1.0}, "indenter.R"},
+        {power_law, {"indenter.half_angle_deg", "material.K"}, {95.0, -1.0}, "material.K"},
+        {layer, {"layer.thickness", "material.G"}, {0.0, -1.0}, "material.G"},
+    };
+    for (const auto& [text, keys, values, first_key] : bad) {
+        const FreeNumberCase free(CaseTemplate(text, "case"), keys);
+        const std::string expected = message_of([&] { return with_values(text, keys, values).build(); });
+        EXPECT_EQ(expected.rfind(first_key + " = ", 0), 0u) << expected;
+        EXPECT_EQ(message_of([&] { return free.build(values); }), expected) << first_key;
+    }
+}
+
 TEST(FreeNumberCase, OtherKeysGoThroughTheTemplate) {
     const std::string impact = R"(
 [material]
