@@ -15,6 +15,7 @@
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/free_key_units.hpp"
+#include "mdr/io/free_number_case.hpp"
 #include "mdr/io/units.hpp"
 
 namespace mdr::fitcase {
@@ -210,10 +211,9 @@ fit::ModelBuilder model_builder(const FitCase& fit_case) {
     }
     std::vector<std::string> keys;
     for (const auto& parameter : fit_case.parameters) keys.push_back(parameter.name);
-    return [model = fit_case.model, keys](const std::vector<double>& values) {
-        io::CaseTemplate copy = model;
-        for (std::size_t j = 0; j < keys.size(); ++j) copy.set_number(keys[j], values[j]);
-        return copy.build();
+    // Built once; each evaluation rebuilds only the material, indenter or layer the free keys touch.
+    return [model = io::FreeNumberCase(fit_case.model, std::move(keys))](const std::vector<double>& values) {
+        return model.build(values);
     };
 }
 

@@ -16,6 +16,7 @@
 #include "mdr/error.hpp"
 #include "mdr/rheology/contact_bodies.hpp"
 #include "mdr/foundation/foundation.hpp"
+#include "body_reader.hpp"
 #include "case_reader.hpp"
 #include "control_reader.hpp"
 #include "control_readers.hpp"
@@ -23,47 +24,10 @@
 #include "mdr/io/units.hpp"
 #include "indenter_reader.hpp"
 #include "layer_reader.hpp"
-#include "material_reader.hpp"
 #include "toml_reader.hpp"
 
 namespace mdr::io {
 namespace {
-
-// One body as read: its shear table and, for a compressible body, K or the bulk table (built once the time window
-// of the case is known, which a model converted to a series needs).
-struct BodySpec {
-    MaterialSpec shear;
-    std::optional<double> bulk_modulus;
-    std::optional<MaterialSpec> bulk;
-    bool needs_window() const { return shear.model->needs_window || (bulk && bulk->model->needs_window); }
-};
-
-BodySpec read_body(TableReader& table) {
-    BodySpec body{read_material(table, "G", {"K", "bulk"}), std::nullopt, std::nullopt};
-    if (table.has("K") && table.has("bulk")) {
-        throw InvalidInput(table.key_path("K"), table.text("K"), "give either K or [" + table.key_path("bulk") + "], not both");
-    }
-    if (table.has("K")) {
-        body.bulk_modulus = table.number("K");
-        require_positive(table.key_path("K"), *body.bulk_modulus);
-    } else if (auto bulk = table.table("bulk")) {
-        if (!bulk->has("model")) throw InvalidInput(bulk->key_path("model"), "(missing)", "a bulk table needs a model");
-        body.bulk = read_material(*bulk, "K", {});
-    }
-    return body;
-}
-
-// One body built (over the case's time window when a model is converted to a series).
-rheology::Body build_body(const BodySpec& spec, const std::optional<rheology::TimeWindow>& window,
-                          const std::string& directory, const UnitSystem& units) {
-    rheology::Body body{build_material(spec.shear, window, directory, units)};
-    if (spec.bulk_modulus) {
-        body.bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus),
-                                            {.times_from_conversion = true}};
-    }
-    if (spec.bulk) body.bulk = build_material(*spec.bulk, window, directory, units);
-    return body;
-}
 
 // The harmonic part of a load (normal or tangential); its history is read_history's.
 drivers::HarmonicLoad read_harmonic(TableReader& table) {

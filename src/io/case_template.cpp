@@ -8,15 +8,11 @@
 #include <variant>
 
 #include "case_reader.hpp"
+#include "case_template_tables.hpp"
 #include "mdr/error.hpp"
 #include "toml_reader.hpp"
 
 namespace mdr::io {
-
-struct CaseTemplate::Tables {
-    toml::table root;
-    std::string source;
-};
 
 namespace {
 

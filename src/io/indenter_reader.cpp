@@ -5,7 +5,17 @@
 
 namespace mdr::io {
 
-std::shared_ptr<const profile::Profile> read_indenter(TableReader& table) {
+namespace {
+
+// An error of the shape registry names the key of the shape row; the case names it `indenter.KEY`.
+InvalidInput indenter_error(const InvalidInput& error) {
+    if (error.key().rfind("indenter.", 0) == 0) return error;
+    return error.with_prefix("indenter.");
+}
+
+}  // namespace
+
+profile::ProfileDefinition read_indenter_definition(TableReader& table) {
     try {
         const profile::Shape& shape = profile::shape_named(table.string("shape"));
         std::vector<std::string> known{"shape", "mass", "moment_of_inertia", "material"};
@@ -26,11 +36,22 @@ std::shared_ptr<const profile::Profile> read_indenter(TableReader& table) {
                     break;
             }
         }
+        return definition;
+    } catch (const InvalidInput& error) {
+        throw indenter_error(error);
+    }
+}
+
+std::shared_ptr<const profile::Profile> build_indenter(const profile::ProfileDefinition& definition) {
+    try {
         return profile::make_profile(definition);
     } catch (const InvalidInput& error) {
-        if (error.key().rfind("indenter.", 0) == 0) throw;
-        throw error.with_prefix("indenter.");
+        throw indenter_error(error);
     }
+}
+
+std::shared_ptr<const profile::Profile> read_indenter(TableReader& table) {
+    return build_indenter(read_indenter_definition(table));
 }
 
 }  // namespace mdr::io

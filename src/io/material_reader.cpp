@@ -55,6 +55,30 @@ MaterialSpec read_material(TableReader& table, const std::string& modulus, const
     return spec;
 }
 
+double* material_number(MaterialSpec& spec, const std::string& name, const std::vector<std::size_t>& indices) {
+    for (const auto& parameter : spec.model->parameters) {
+        if (table_key(parameter.key, spec.bulk) != name) continue;
+        auto& values = spec.parameters;
+        if (parameter.kind == rheology::ParameterKind::number && indices.empty()) {
+            const auto number = values.numbers.find(parameter.key);
+            return number == values.numbers.end() ? nullptr : &number->second;
+        }
+        if (parameter.kind == rheology::ParameterKind::numbers && indices.size() == 1) {
+            const auto array = values.arrays.find(parameter.key);
+            if (array == values.arrays.end() || indices[0] >= array->second.size()) return nullptr;
+            return &array->second[indices[0]];
+        }
+        if (parameter.kind == rheology::ParameterKind::pairs && indices.size() == 2 && indices[1] < 2) {
+            const auto pairs = values.pairs.find(parameter.key);
+            if (pairs == values.pairs.end() || indices[0] >= pairs->second.size()) return nullptr;
+            auto& pair = pairs->second[indices[0]];
+            return indices[1] == 0 ? &pair.first : &pair.second;
+        }
+        return nullptr;
+    }
+    return nullptr;
+}
+
 rheology::ModelMaterial build_material(const MaterialSpec& spec, const std::optional<rheology::TimeWindow>& window,
                                        const std::string& directory, const UnitSystem& units) {
     try {

@@ -24,6 +24,10 @@ struct MaterialSpec {
 /// are the other keys the table may hold). Throws mdr::InvalidInput with the full dotted key.
 MaterialSpec read_material(TableReader& table, const std::string& modulus, const std::vector<std::string>& extra_keys);
 
+/// The number of `spec` that its table writes `name` with `indices` (`tau1`; `G[2]`, an array's element; `terms[0][1]`,
+/// the second value of a pair; `K_inf` in a bulk table), or nullptr when the spec holds no number there.
+double* material_number(MaterialSpec& spec, const std::string& name, const std::vector<std::size_t>& indices);
+
 /// Builds the material of a spec over `window` (used by models converted to a series), described in the case's
 /// `units`. Errors name the full key.
 rheology::ModelMaterial build_material(const MaterialSpec& spec, const std::optional<rheology::TimeWindow>& window,

@@ -8,20 +8,20 @@
 #include "mdr/io/key_suggestion.hpp"
 
 namespace mdr::io {
+
+std::string float_text(double value) {
+    return message_text(format_value(value));  // shortest round-trip form: 70.3, not 70.299999999999997
+}
+
 namespace {
 
 // A value as an error message prints it: one short line (message_text); a table or an array of tables as `[...]`.
 std::string node_text(const toml::node& node) {
     if (node.is_table() || node.is_array_of_tables()) return "[...]";
-    std::string text;
-    if (const auto* floating = node.as_floating_point()) {
-        text = format_value(floating->get());  // shortest round-trip form: 70.3, not 70.299999999999997
-    } else {
-        std::ostringstream out;
-        node.visit([&out](const auto& value) { out << value; });
-        text = out.str();
-    }
-    return message_text(text);
+    if (const auto* floating = node.as_floating_point()) return float_text(floating->get());
+    std::ostringstream out;
+    node.visit([&out](const auto& value) { out << value; });
+    return message_text(out.str());
 }
 
 }  // namespace

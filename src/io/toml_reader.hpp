@@ -9,6 +9,9 @@
 
 namespace mdr::io {
 
+/// A float value as messages print it (the text of a float key): its shortest round-trip form, one short line.
+std::string float_text(double value);
+
 /// The number a node holds (integer or float, finite) for `key`; throws mdr::InvalidInput naming the key for another
 /// type, a non-finite float, or an integer that a double cannot hold exactly.
 double as_number(const toml::node& node, const std::string& key);

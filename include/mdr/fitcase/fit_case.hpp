@@ -47,8 +47,8 @@ FitCase parse_fit_case(io::CaseTemplate model, const std::filesystem::path& case
 /// Reads and parses a fit case file (curves relative to its directory).
 FitCase load_fit_case(const std::filesystem::path& path);
 
-/// The model as a function of the free values: a copy of the model with each free key set, built (once, when no key
-/// is free).
+/// The model as a function of the free values: the model with each free key set, built (io::FreeNumberCase: built
+/// once, each evaluation rebuilding only the material, indenter or layer the free keys touch).
 fit::ModelBuilder model_builder(const FitCase& fit_case);
 
 /// The model case with `values` set for the free keys, as TOML text, with `[load]` replaced by `load_body` when

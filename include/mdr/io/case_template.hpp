@@ -54,6 +54,7 @@ public:
     const std::string& source() const;
 
 private:
+    friend class FreeNumberCase;  // reads the parsed tables once
     struct Tables;
     std::unique_ptr<Tables> tables_;
 };
