@@ -189,8 +189,8 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
             if (now.phase == LayerPhase::approach && right_side <= 0.0) {  // the surface not reached: F = 0
                 next = stepper.wait(node.time);
             } else if (dashpot_rate.trapezoidal && node.time == now.time && now.phase != LayerPhase::lifted_off) {
-                // A jump against the dashpot: it takes the force at once, the depth stays (F = k (z - d)).
-                next = stepper.jump(std::max(right_side - stiffness * now.centre, 0.0));
+                // A force jump against the dashpot (a spring's base must not jump): it takes the force at once.
+                next = stepper.jump(target);
             } else if (now.phase == LayerPhase::lifted_off) {
                 next = stepper.recover(node.time);
                 // The recovering surface would be loaded again: a force, or the spring's indenter reaching it.

@@ -74,9 +74,10 @@ TEST(LayerDashpot, KelvinVoigtCreepUnderAHeldForceIsTheLayersElasticSolution) {
 TEST(LayerDashpot, VeryThickLayerUnderForceControlIsTheHalfSpaceDriver) {
     // A force triangle, then none: the contact grows, recedes with the dashpot's pull in eq. L12, is lost when the
     // force reaches zero (t1 at the start), and the indenter rides on the recovering surface; then a jump from the
-    // peak to zero (the dashpot takes it at once and the contact is lost).
-    for (const std::string history : {"[[0.0, 0.0], [1.0, 3.0e-8], [2.0, 0.0], [3.0, 0.0]]",
-                                      "[[0.0, 0.0], [1.0, 3.0e-8], [1.0, 0.0], [2.0, 0.0]]"}) {
+    // peak to zero (the dashpot takes it at once and the contact is lost), and a jump up while the contact grows.
+    for (const std::string history :
+         {"[[0.0, 0.0], [1.0, 3.0e-8], [2.0, 0.0], [3.0, 0.0]]", "[[0.0, 0.0], [1.0, 3.0e-8], [1.0, 0.0], [2.0, 0.0]]",
+          "[[0.0, 0.0], [0.5, 1.0e-8], [0.5, 2.0e-8], [1.0, 2.0e-8], [2.0, 0.0], [3.0, 0.0]]"}) {
         const std::string load = "control = \"force\"\nhistory = " + history;
         const auto half_space = run_toml(loaded_case(prony_dashpot, load, ""));
         const auto thick =
@@ -92,8 +93,8 @@ TEST(LayerDashpot, VeryThickLayerUnderForceControlIsTheHalfSpaceDriver) {
                 depth_error = std::max(depth_error, std::abs(half_space.depth[i] - thick.depth[i]) / deepest);
             }
         }
-        // Observed 1.0e-5 and 7.7e-6 of the largest depth, the radius 7.2e-4 and 3.8e-4 of the widest (the
-        // half-space's elements, its graded start; without a dashpot 2.8e-6 and 1.4e-4).
+        // Observed 1.0e-5, 7.7e-6 and 6.4e-6 of the largest depth, the radius 7.2e-4, 3.8e-4 and 6.9e-4 of the widest
+        // (the half-space's elements, its graded start; without a dashpot 2.8e-6 and 1.4e-4).
         EXPECT_LT(depth_error, 2e-5) << history;
         EXPECT_LT(radius_error, 1.5e-3) << history;
         EXPECT_EQ(thick.force.back(), 0.0);
@@ -123,7 +124,8 @@ TEST(LayerDashpot, VeryThickLayerUnderSpringControlIsTheHalfSpaceDriver) {
     const std::string load = "control = \"spring\"\nhistory = [[0.0, 0.0], [1.0, 2.0e-6], [2.0, -0.5e-6], "
                              "[3.0, -0.5e-6]]\nspring_constant = 0.05";
     const auto half_space = run_toml(loaded_case(prony_dashpot, load, ""));
-    const auto thick = run_toml(loaded_case(prony_dashpot, load, "[layer]\nthickness = 1.0e3\ninterface = \"bonded\"\n"));
+    const auto thick =
+        run_toml(loaded_case(prony_dashpot, load, "[layer]\nthickness = 1.0e3\ninterface = \"bonded\"\n"));
     ASSERT_EQ(half_space.time.size(), thick.time.size());
     // Observed 5.4e-6 of the largest depth and 7.7e-6 of the peak force (without a dashpot 3.0e-7 and 4.6e-7).
     EXPECT_LT(largest_difference(half_space.depth, thick.depth), 1e-5);
