@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "mdr/contact/layer_contact.hpp"
+#include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "run_case.hpp"
 
@@ -156,6 +157,19 @@ velocity = 0.1
     EXPECT_NEAR(thick.impact->contact_time, half_space.impact->contact_time, 1e-6 * half_space.impact->contact_time);
     EXPECT_LT(largest_difference(half_space.depth, thick.depth), 3e-6);
     EXPECT_LT(thick.impact->restitution, 0.99);  // the dashpot dissipates
+}
+
+TEST(LayerDashpot, AForceThatMakesTheContactGrowAgainIsStillRefusedNamingEta) {
+    // Not built: on the cells a cell entering the contact would take the dashpot's kick within one step (first
+    // order in the cell). Found when the run of Ting's class meets the regrowth.
+    const std::string load = "control = \"force\"\nhistory = [[0.0, 0.0], [1.0, 3.0e-8], [1.5, 1.0e-8], [2.5, 3.0e-8]]";
+    try {
+        run_toml(loaded_case(prony_dashpot, load, "[layer]\nthickness = 2.0e-6\ninterface = \"bonded\"\n"));
+        ADD_FAILURE() << "accepted";
+    } catch (const InvalidInput& error) {
+        EXPECT_EQ(error.key(), "material.eta");
+        EXPECT_NE(std::string(error.what()).find("a contact that grows again"), std::string::npos) << error.what();
+    }
 }
 
 }  // namespace
