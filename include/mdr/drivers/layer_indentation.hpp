@@ -35,8 +35,8 @@ void validate_layer(const ContactCase& contact_case);
 /// Force control solves the depth of each step by numerics::monotone_root (the force increases with it in either
 /// phase), spring control likewise F(d) + k d = k z (F = k (z - d)); a parallel dashpot then sees the trapezoidal
 /// rate of the solved depth, and takes a force jump at a fixed depth (LayerStepper::jump). An impact runs
-/// run_layer_impact (src/drivers/layer_impact.hpp). `numerics.elements` is the least number of Gauss nodes over the contact (default
-/// contact::default_layer_nodes).
+/// run_layer_impact (src/drivers/layer_impact.hpp). `numerics.elements` is the least number of Gauss nodes over the
+/// contact (default contact::default_layer_nodes).
 /// A case whose contact would grow again after it shrank (a reload, a held depth that the recovering surface
 /// reaches, creep under a held force, a force after the contact was lost, a spring's base reaching the recovering
 /// surface, a harmonic load: outside Ting's solution) runs the coupled time-stepping on cells instead, from the start
