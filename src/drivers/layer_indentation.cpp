@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,10 +75,6 @@ void validate_layer(const ContactCase& contact_case) {
     }
     if (contact_case.shore()) refuse("load.control", "\"shore\"", "Shore control");
     if (contact_case.oblique()) refuse("load.tangential_velocity", "[...]", "an oblique impact");
-    if (!std::holds_alternative<DisplacementControl>(contact_case.control) && contact_case.material.viscosity() > 0.0) {
-        refuse("material.eta", format_value(contact_case.material.viscosity()),
-               "a parallel dashpot under force or spring control or in an impact");
-    }
     if (contact_case.spring() && !contact_case.spring()->force_pauses.empty()) {
         refuse("load.force_pauses", "[...]", "a force pause");
     }
@@ -136,7 +133,13 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     // The force of a trial depth is exact to ~1.5e-8 (the contact solve's depth to 1e-8): the depth solves' force
     // tolerance is no finer than 5e-8 of the largest force (under spring control at most k max z).
     const double force_tolerance = 5e-8 * (spring ? stiffness * largest_depth : history.max_value());
-    LayerStepper stepper(material, layer, unit_plane_modulus, grid.front().time, largest_depth);
+    // A parallel dashpot sees the trapezoidal rate of the solved depth (docs/theory.md, section 3): from rest under
+    // force control, unknown where a spring's indenter first touches (it hung at the moving base).
+    const bool dashpot = material.viscosity() > 0.0;
+    const DashpotRate dashpot_rate{.trapezoidal = dashpot && !std::holds_alternative<DisplacementControl>(
+                                                                 contact_case.control),
+                                   .start = force_control ? std::optional<double>(0.0) : std::nullopt};
+    LayerStepper stepper(material, layer, unit_plane_modulus, grid.front().time, largest_depth, dashpot_rate);
     const bool by_radius = !contact_case.indenter->is_flat_punch();
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     std::size_t reported = 0;
@@ -185,6 +188,9 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
             };
             if (now.phase == LayerPhase::approach && right_side <= 0.0) {  // the surface not reached: F = 0
                 next = stepper.wait(node.time);
+            } else if (dashpot_rate.trapezoidal && node.time == now.time && now.phase != LayerPhase::lifted_off) {
+                // A force jump against the dashpot (a spring's base must not jump): it takes the force at once.
+                next = stepper.jump(target);
             } else if (now.phase == LayerPhase::lifted_off) {
                 next = stepper.recover(node.time);
                 // The recovering surface would be loaded again: a force, or the spring's indenter reaching it.

@@ -24,13 +24,22 @@ void PronyBranches::advance(double step, double change) {
     }
 }
 
-double PronyBranches::free_change(double step, double signal) const {
+double PronyBranches::free_change(double step, double signal, std::optional<double> start_rate) const {
     if (!(step > 0.0)) return 0.0;
-    // G_inf (s + c) + sum_k G_k (exp(-step/tau_k) h_k + gain_k c) + eta c / step = 0 for the change c.
-    double stress = material_->equilibrium_modulus() * signal;
+    // G_inf (s + c) + sum_k G_k (exp(-step/tau_k) h_k + gain_k c) + eta r = 0 for the change c, the dashpot's rate r
+    // trapezoidal, 2 c / step - r0, from r0 = `start_rate`, else the free surface's own rate r0 = -(G_inf s +
+    // sum_k G_k h_k) / eta (zero stress; second order, as the half-space's force-free elements, docs/theory.md
+    // section 3).
+    const double viscosity = material_->viscosity();
+    double stress = material_->equilibrium_modulus() * signal, start_stress = stress;
     const auto& terms = material_->terms();
     for (std::size_t k = 0; k < terms.size(); ++k) {
         stress += terms[k].modulus * std::exp(-step / terms[k].relaxation_time) * values_[k];
+        start_stress += terms[k].modulus * values_[k];
+    }
+    if (viscosity > 0.0) {
+        const double start_term = start_rate ? -viscosity * *start_rate : start_stress;  // -eta r0
+        return -(stress + start_term) / (step_modulus(step) + viscosity / step);
     }
     return -stress / step_modulus(step);
 }

@@ -4,6 +4,7 @@
 // radius the receding contact has.
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "mdr/rheology/rheology.hpp"
@@ -19,8 +20,9 @@ public:
     /// Advances by `step` >= 0 [s] with the signal changing by `change` linearly over it (a jump when step = 0).
     void advance(double step, double change);
     /// The change of the signal over `step` [s], linear over it, after which G_inf s + sum_k G_k h_k + eta ds/dt
-    /// is zero (a free surface with the history of these branches and the value `signal` now; 0 when step = 0).
-    double free_change(double step, double signal) const;
+    /// is zero (a free surface with the history of these branches and the value `signal` now; 0 when step = 0),
+    /// ds/dt the trapezoidal rate from `start_rate` [per s], or without it the free surface's own rate at the start.
+    double free_change(double step, double signal, std::optional<double> start_rate = std::nullopt) const;
     /// G_inf + sum_k G_k (tau_k / step) (1 - exp(-step/tau_k)) + eta / step: the change of G_inf s + sum_k G_k h_k
     /// + eta ds/dt over `step` [s] per change of the signal, linear over it (the dashpot's part only when step > 0).
     double step_modulus(double step) const;

@@ -8,13 +8,61 @@
 namespace mdr::drivers {
 
 LayerStepper::LayerStepper(const rheology::Rheology& material, const contact::LayerContact& layer,
-                           double unit_modulus, double time, double largest_depth)
+                           double unit_modulus, double time, double largest_depth, const DashpotRate& dashpot)
     : material_(&material), layer_(&layer), unit_modulus_(unit_modulus), largest_depth_(largest_depth),
       loading_(material, time),
       current_{.time = time,
+               .rate = dashpot.trapezoidal ? dashpot.start : std::nullopt,
                .contact = {},
                .centre_branches = PronyBranches(material),
-               .force_branches = PronyBranches(material)} {}
+               .force_branches = PronyBranches(material)},
+      trapezoidal_(dashpot.trapezoidal) {}
+
+double LayerStepper::end_rate(double step, double change) const {
+    if (!(step > 0.0)) return current_.rate.value_or(0.0);
+    const double secant = change / step;
+    return trapezoidal_ && current_.rate ? 2.0 * secant - *current_.rate : secant;
+}
+
+LayerStep LayerStepper::jump(double force) const {
+    LayerStep next = current_;
+    next.force_slope = 0.0;
+    if (force == current_.force) return next;
+    const double viscosity = material_->viscosity();
+    // The dashpot's force per rate, eta dF_el/dd (eq. L5: dF_el/dd = E* times the contact's stiffness).
+    const double damping = viscosity * unit_modulus_ * current_.contact.stiffness;
+    const bool in_contact = current_.phase == LayerPhase::growing || current_.phase == LayerPhase::receding;
+    if (!in_contact || !current_.rate || !(damping > 0.0)) {
+        next.force = force;
+        next.rate = std::nullopt;
+        return next;
+    }
+    const double rate_jump = (force - current_.force) / damping;
+    if (force > current_.force || loading_.steps() == 0) {
+        // A jump up keeps a growing contact growing (eq. L11: only the dashpot's term changes at a fixed depth); a
+        // receding one would grow again.
+        if (current_.phase == LayerPhase::receding) next.grows_again = true;
+        next.rate = *current_.rate + rate_jump;
+        next.force = force;
+        return next;
+    }
+    if (force <= 0.0) {  // the dashpot pulls the contact off at once
+        next.phase = LayerPhase::lifted_off;
+        next.contact = {};
+        next.force = 0.0;
+        next.rate = std::nullopt;
+        return next;
+    }
+    // A jump down: the contact recedes at once (the rate turns), F (eq. L13) increases with the rate through t1
+    // (eq. L12).
+    const auto residual = [&](double rate) {
+        return recede_at_rate(current_.time, current_.centre, rate).force - force;
+    };
+    const double start = *current_.rate;
+    const double rate = numerics::monotone_root(residual, start, residual(start), std::abs(rate_jump),
+                                                5e-8 * current_.force, 1e-12 * std::abs(rate_jump), false);
+    return recede_at_rate(current_.time, current_.centre, rate);
+}
 
 LayerStep LayerStepper::wait(double time) const {
     LayerStep next = current_;
@@ -69,17 +117,29 @@ LayerStep LayerStepper::grow_with(double time, const contact::LayerContactState&
     const double force_change = next.elastic_force - current_.elastic_force;
     next.force_branches.advance(step, force_change);
     // G(t) = G_inf + eta delta(t) + sum G_k exp(-t/tau_k) in eq. L11, F_el linear over the step.
-    next.force = material_->equilibrium_modulus() * next.elastic_force + next.force_branches.weighted_sum() +
-                 (step > 0.0 ? material_->viscosity() * force_change / step : 0.0);
-    next.force_slope = next.force_branches.step_modulus(step) * unit_modulus_ * next.contact.stiffness;
+    const double viscosity = material_->viscosity();
+    double dashpot = step > 0.0 ? viscosity * force_change / step : 0.0;
+    double slope = next.force_branches.step_modulus(step);
+    if (trapezoidal_) {
+        // eta dF_el/dt = eta (E* stiffness) dd/dt at the step's end (eq. L5), dd/dt trapezoidal: its slope 2 eta/dt.
+        next.rate = end_rate(step, change);
+        dashpot = viscosity * unit_modulus_ * next.contact.stiffness * *next.rate;
+        if (current_.rate && step > 0.0) slope += viscosity / step;
+    }
+    next.force = material_->equilibrium_modulus() * next.elastic_force + next.force_branches.weighted_sum() + dashpot;
+    next.force_slope = slope * unit_modulus_ * next.contact.stiffness;
     next.position = static_cast<double>(loading_.steps() + 1);
     return next;
 }
 
 LayerStep LayerStepper::recede(double time, double depth) const {
+    return recede_at_rate(time, depth, end_rate(time - current_.time, depth - current_.centre));
+}
+
+LayerStep LayerStepper::recede_at_rate(double time, double depth, double rate) const {
     LayerStep next = current_;
     const double step = time - current_.time, change = depth - current_.centre;
-    const double rate = step > 0.0 ? change / step : 0.0;
+    if (trapezoidal_) next.rate = rate;
     next.phase = LayerPhase::receding;
     next.force_slope = 0.0;
     next.time = time;
@@ -94,6 +154,7 @@ LayerStep LayerStepper::recede(double time, double depth) const {
         next.phase = LayerPhase::lifted_off;
         next.contact = {};
         next.force = 0.0;
+        next.rate = std::nullopt;
         return next;
     }
     const double start = std::min(current_.position, steps);
@@ -111,9 +172,12 @@ LayerStep LayerStepper::recover(double time) const {
     LayerStep next = current_;
     const double step = time - current_.time;
     // int_0^t G(t - t') dw0(t') = 0, w0 linear over the step (eq. L14).
-    const double change = next.centre_branches.free_change(step, current_.centre);
+    // The loss's step starts at the indenter's rate where it is known (the contact lost at its end: zero force).
+    const double change = next.centre_branches.free_change(
+        step, current_.centre, current_.phase == LayerPhase::lifted_off ? std::nullopt : current_.rate);
     next.phase = LayerPhase::lifted_off;
     next.force_slope = 0.0;
+    next.rate = std::nullopt;
     next.time = time;
     next.centre += change;
     next.centre_branches.advance(step, change);

@@ -3,6 +3,8 @@
 // contact (Lee-Radok), a receding one (Ting), the free centre after the contact is lost. A step is tried at any depth
 // without changing the history (the force-controlled driver solves for the depth), then committed.
 
+#include <optional>
+
 #include "layer_receding.hpp"
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/rheology/rheology.hpp"
@@ -17,6 +19,14 @@ enum class LayerPhase {
     lifted_off,  ///< contact lost: the centre of the surface recovers freely (eq. L14)
 };
 
+/// The rate a parallel dashpot sees (docs/theory.md, section 3): the secant rate of a prescribed depth (of F_el while
+/// growing), or, where the depth is solved (force or spring control, an impact), the trapezoidal rate
+/// 2 dd/dt - rate0 from the rate `start` at the first contact (unknown: the secant rate for that step).
+struct DashpotRate {
+    bool trapezoidal = false;     ///< the depth is solved
+    std::optional<double> start;  ///< dd/dt [m/s] at the first contact, where known
+};
+
 /// The state after a step (committed) or a step tried.
 struct LayerStep {
     LayerPhase phase = LayerPhase::approach;
@@ -27,6 +37,9 @@ struct LayerStep {
     double force_slope = 0.0;    ///< dF/dd [N/m] of a growing step tried at this depth (eq. L11); 0 otherwise
     double position = 0.0;       ///< loading position of t1 (LoadingRecord); while growing, the last node's
     bool grows_again = false;    ///< receding: t1 would move forward (outside Ting's solution)
+    /// dd/dt [m/s] at this node that a parallel dashpot saw, where the depth is solved (trapezoidal rate); unknown
+    /// before the first contact of a spring's indenter, after a jump without contact and after the loss.
+    std::optional<double> rate;
     contact::LayerContactState contact;  ///< the elastic layer's equilibrium at a(t); none once lifted off
     PronyBranches centre_branches;       ///< of w0
     PronyBranches force_branches;        ///< of F_el (loading)
@@ -36,9 +49,9 @@ struct LayerStep {
 class LayerStepper {
 public:
     /// Starts at `time`, untouched; `unit_modulus` is E* / G of the layer (4, G the effective modulus of eq. 56),
-    /// `largest_depth` [m] the scale of the solves' tolerances.
+    /// `largest_depth` [m] the scale of the solves' tolerances, `dashpot` the rate a parallel dashpot sees.
     LayerStepper(const rheology::Rheology& material, const contact::LayerContact& layer, double unit_modulus,
-                 double time, double largest_depth);
+                 double time, double largest_depth, const DashpotRate& dashpot = {});
     /// The committed state.
     const LayerStep& current() const { return current_; }
     /// A step to `time` with the indenter at `depth`, the contact growing (Lee-Radok, eq. L11; meaningful for a
@@ -57,12 +70,21 @@ public:
     LayerStep recover(double time) const;
     /// A step to `time` before any contact.
     LayerStep wait(double time) const;
+    /// A jump of the force to `force` [N] at the current time against the parallel dashpot of a solved depth: the
+    /// depth stays, the rate jumps (growing: dF = eta dF_el/dd d(rate), eq. L11; receding: the rate at which
+    /// L12-L13 give that force, t1 moving back). Without contact, or without a known rate, the force is taken as
+    /// the dashpot's and the rate becomes unknown. `grows_again` where the force would move t1 forward.
+    LayerStep jump(double force) const;
     /// Makes `step` the current state (a growing one is recorded for Ting's solution).
     void commit(const LayerStep& step);
 
 private:
     // The growing step with the elastic equilibrium `contact` at `depth` (< 0: the contact's own depth).
     LayerStep grow_with(double time, const contact::LayerContactState& contact, double depth) const;
+    // The receding step at `depth` whose dashpot sees `rate` [m/s] (eq. L12).
+    LayerStep recede_at_rate(double time, double depth, double rate) const;
+    // The rate at the end of a step of `step` [s] changing the depth by `change` (trapezoidal, or the secant one).
+    double end_rate(double step, double change) const;
 
     const rheology::Rheology* material_;
     const contact::LayerContact* layer_;
@@ -71,6 +93,7 @@ private:
     LoadingRecord loading_;
     LayerStep current_;
     double previous_radius_ = 0.0;  // the contact radius of the state before the current one
+    bool trapezoidal_;              // the dashpot sees the trapezoidal rate of a solved depth
     // The last equilibrium solved, tried or committed: where the next solve starts (the force-controlled driver
     // tries depths ever closer to its root).
     mutable contact::LayerContactState hint_;
