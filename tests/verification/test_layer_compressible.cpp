@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "lee_radok_ramp.hpp"
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
-#include "mdr/numerics/gauss_rule.hpp"
 
 namespace {
 
@@ -174,21 +174,7 @@ TEST(CompressibleLayer, ProportionalViscoelasticLayerIsLeeRadokWithTheCompressib
     const double e_inf = 2.0 * 1.0e3 / (1.0 - proportional_nu), e1 = 2.0 * 3.0e3 / (1.0 - proportional_nu), tau = 0.2;
     const auto depth = [](double s) { return 1e-6 * std::min(s, 1.0); };
     const auto unit_force = [&](double s) { return layer.at_depth(depth(s)).force; };
-    const auto rule = mdr::numerics::make_gauss_rule(8);
-    const auto direct = [&](double t) {
-        const double ramp_end = std::min(t, 1.0);
-        const int panels = 100;
-        double integral = 0.0;
-        for (int p = 0; p < panels; ++p) {
-            const double width = ramp_end / panels;
-            for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
-                const double s = width * (p + rule.nodes[i]);
-                integral += width * rule.weights[i] * std::exp(-(t - s) / tau) * unit_force(s);
-            }
-        }
-        if (t > 1.0) integral += unit_force(1.0) * tau * (1.0 - std::exp(-(t - 1.0) / tau));
-        return e_inf * unit_force(t) + e1 * (unit_force(t) - integral / tau);
-    };
+    const auto direct = [&](double t) { return mdr::testing::ramp_and_hold_force(t, e_inf, e1, tau, unit_force); };
     const double peak = *std::max_element(result.force.begin(), result.force.end());
     const std::size_t rows = result.time.size();
     for (const std::size_t row : {rows / 8, rows / 3, rows / 2, rows - 1}) {

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <string>
 
+#include "lee_radok_ramp.hpp"
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
-#include "mdr/numerics/gauss_rule.hpp"
 
 namespace {
 
@@ -47,21 +47,7 @@ TEST(LayerViscoelastic, DriverMatchesTheDirectLeeRadokConvolution) {
         hint = state.contact_radius;
         return 4.0 * state.force;
     };
-    const auto rule = mdr::numerics::make_gauss_rule(8);
-    const auto direct = [&](double t) {
-        const double ramp_end = std::min(t, 1.0);
-        const int panels = 100;
-        double integral = 0.0;
-        for (int p = 0; p < panels; ++p) {
-            const double width = ramp_end / panels;
-            for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
-                const double s = width * (p + rule.nodes[i]);
-                integral += width * rule.weights[i] * std::exp(-(t - s) / tau) * elastic(s);
-            }
-        }
-        if (t > 1.0) integral += elastic(1.0) * tau * (1.0 - std::exp(-(t - 1.0) / tau));
-        return g_inf * elastic(t) + g1 * (elastic(t) - integral / tau);
-    };
+    const auto direct = [&](double t) { return mdr::testing::ramp_and_hold_force(t, g_inf, g1, tau, elastic); };
     const double peak = *std::max_element(result.force.begin(), result.force.end());
     const std::size_t rows = result.time.size();
     for (const std::size_t row : {rows / 8, rows / 3, rows / 2, rows - 1}) {
