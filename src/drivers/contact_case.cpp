@@ -253,8 +253,7 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
     } else if (indenter.is_flat_punch()) {
         resolved.half_width = indenter.max_radius();
     } else {
-        const double peak = contact_case.load.history->max_value() +
-                            (contact_case.load.harmonic ? std::abs(contact_case.load.harmonic->amplitude) : 0.0);
+        const double peak = contact_case.load.largest_value();
         const auto force_bound = [&](double force) {
             if (!(force > 0.0)) return 0.0;
             const double softest = 1.0 / contact_case.material.creep(std::max(duration, 0.0));

@@ -34,8 +34,7 @@ double largest_contact_radius(const ContactCase& contact_case) {
     const auto& indenter = *contact_case.indenter;
     if (indenter.is_flat_punch()) return indenter.max_radius();
     const bool bounded_by_force = contact_case.impact() || std::holds_alternative<ForceControl>(contact_case.control);
-    const auto& harmonic = contact_case.load.harmonic;
-    const double largest = contact_case.load.history->max_value() + (harmonic ? std::abs(harmonic->amplitude) : 0.0);
+    const double largest = contact_case.load.largest_value();
     const double half_space =
         bounded_by_force ? resolve_numerics(contact_case).half_width : indenter.contact_radius(largest);
     return std::min(indenter.max_radius(), contact::layer_radius_margin * half_space);

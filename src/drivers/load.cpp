@@ -1,6 +1,7 @@
 #include "mdr/drivers/load.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace mdr::drivers {
 
@@ -8,6 +9,10 @@ double Load::value(double t) const {
     if (!harmonic) return history->value(t);
     if (!history) return harmonic->value(t);
     return history->value(t) + harmonic->value(t);
+}
+
+double Load::largest_value() const {
+    return history->max_value() + (harmonic ? std::abs(harmonic->amplitude) : 0.0);
 }
 
 double Load::end_time() const {

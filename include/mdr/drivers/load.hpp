@@ -20,6 +20,9 @@ struct Load {
 
     /// The prescribed value at time t [s]: the sum of the parts given.
     double value(double t) const;
+    /// A bound of the largest prescribed value: the history's largest point plus the harmonic's |amplitude| (the
+    /// history is required: a harmonic alone has no level to oscillate about).
+    double largest_value() const;
     /// Last time [s] at which a part changes: the later of the history's last point and the harmonic's end.
     double end_time() const;
     /// Times [s] the time grid must step on: the history's points, and the harmonic's start, end and the bounds of
