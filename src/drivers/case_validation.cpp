@@ -136,6 +136,12 @@ void validate_force_pauses(const ContactCase& contact_case, const std::vector<Fo
 void validate_impact(const ContactCase& contact_case, const ImpactControl& impact) {
     require_positive("load.velocity", impact.velocity);
     require_positive("indenter.mass", impact.mass);
+    const auto& material = contact_case.material;
+    if (material.is_fluid() && material.terms().empty()) {  // a dashpot alone: no spring to give the energy back
+        throw InvalidInput("material.eta", format_value(material.viscosity()),
+                           "an impact needs an elastic part beside the dashpot: a purely viscous body stops the "
+                           "indenter at a finite depth, which never rebounds (restitution 0, the contact never ends)");
+    }
     if (contact_case.tangential) {
         throw InvalidInput("tangential", "[...]",
                            "a tangential load history is not for an impact; an oblique impact takes only "

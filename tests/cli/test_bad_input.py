@@ -243,6 +243,10 @@ BAD_CASES = [
                                       load='[load]\ncontrol = "impact"\nvelocity = 1.0\n'
                                            'history = [[0.0, 0.0], [1.0, 1e-4]]\n'),
      ["load.history", "impact"]),
+    ("impact-purely-viscous", case_text(material='[material]\nmodel = "viscous"\neta = 100.0\n',
+                                        indenter=INDENTER + "mass = 0.01\n",
+                                        load='[load]\ncontrol = "impact"\nvelocity = 0.1\n'),
+     ["material.eta = 100", "purely viscous", "never rebounds"]),
     ("impact-zero-mass", case_text(indenter=INDENTER + "mass = 0.0\n",
                                    load='[load]\ncontrol = "impact"\nvelocity = 1.0\n'),
      ["indenter.mass", "= 0", "must be > 0"]),

@@ -51,7 +51,7 @@ REFUSED = [
      case_text(material='[material]\nmodel = "viscous"\neta = 1.0e3\n', indenter=SPHERE_WITH_MASS,
                load='[load]\ncontrol = "impact"\nvelocity = 1e-3\nend = 1e9\n',
                numerics="[numerics]\nmax_element_steps = 1e8\n"),
-     ["numerics.max_element_steps = 1e+08", "reached after", "load.end"]),
+     ["material.eta = 1000", "purely viscous", "never rebounds"]),
     ("tiny-memory-bound", case_text(numerics="[numerics]\nelements = 50\ntime_step = 0.01\nmax_memory = 1000\n"),
      ["numerics.max_memory = 1e+03", "bytes", "numerics.output_every"]),
     ("non-finite-result", case_text(material=sub(sub(MATERIAL, "G_inf = 1.0e6", "G_inf = 1e308"), "G1 = 2.0e6",
