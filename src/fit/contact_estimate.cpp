@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 
+#include "median.hpp"
 #include "minimize_1d.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/curve.hpp"
@@ -25,14 +26,6 @@ constexpr double exponent_max = 3.0;
 constexpr std::size_t baseline_rows_min = 8;
 constexpr int contact_scan_points = 32;
 constexpr int exponent_scan_points = 9;
-
-double median(std::vector<double>& values) {
-    const std::size_t middle = values.size() / 2;
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(middle), values.end());
-    const double upper = values[middle];
-    if (values.size() % 2 == 1) return upper;
-    return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(middle)));
-}
 
 /// 1.4826 x the median absolute deviation of `values` (their RMS about the median where that is 0).
 double robust_deviation(std::vector<double> values) {

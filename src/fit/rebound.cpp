@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "curve_checks.hpp"
+#include "median.hpp"
 #include "mdr/csv_columns.hpp"
 #include "mdr/error.hpp"
 
@@ -24,11 +25,7 @@ double estimate_scatter(const std::vector<double>& x, const std::vector<double>&
         scaled.push_back(std::abs(residual) / std::sqrt(1.0 + w_left * w_left + w_right * w_right));
     }
     if (scaled.empty()) return 0.0;
-    const auto median = scaled.begin() + static_cast<std::ptrdiff_t>(scaled.size() / 2);
-    std::nth_element(scaled.begin(), median, scaled.end());
-    double mad = *median;
-    if (scaled.size() % 2 == 0) mad = 0.5 * (mad + *std::max_element(scaled.begin(), median));
-    return 1.4826 * mad;
+    return 1.4826 * median(scaled);
 }
 
 namespace {

@@ -7,18 +7,13 @@
 #include <limits>
 #include <stdexcept>
 
+#include "median.hpp"
 #include "mdr/numerics/chi_squared.hpp"
 
 namespace mdr::fit {
 namespace {
 
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 // The spread of one key over the converged fits.
 KeySpread key_spread(const std::vector<FitResult>& fits, std::size_t j) {
