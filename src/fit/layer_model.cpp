@@ -134,7 +134,8 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
             const double edge_force = elastic(edge_depth);
             response.force[row] = equilibrium * edge_force;
             if (!response.modulus_derivatives.empty()) {
-                // d(t1) - d(t) = sum G_k h_k / G_inf: dF/dG_inf = F_el(d1) - F_el'(d1) (d1 - d), dF/dG_k = F_el'(d1) h_k.
+                // d(t1) - d(t) = sum G_k h_k / G_inf: dF/dG_inf = F_el(d1) - F_el'(d1) (d1 - d),
+                // dF/dG_k = F_el'(d1) h_k.
                 const double nudge = 1e-6 * edge_depth;  // F_el is analytic in d: a central difference
                 const double tangent = (elastic(edge_depth + nudge) - elastic(edge_depth - nudge)) / (2.0 * nudge);
                 response.modulus_derivatives[0][row] = edge_force - tangent * (edge_depth - indented);

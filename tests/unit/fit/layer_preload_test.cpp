@@ -121,7 +121,8 @@ TEST(LayerPreload, ARecedingContactFollowsTheDriverIntoThePreloadAndPastItsLoss)
         double largest_error = 0.0;
         bool below_the_preload = false, lifted_off = false;
         for (std::size_t i = 0; i < time.size(); ++i) {
-            largest_error = std::max(largest_error, std::abs(model->force[i] - (result.force[first + i] - held)) / peak);
+            const double expected = result.force[first + i] - held;
+            largest_error = std::max(largest_error, std::abs(model->force[i] - expected) / peak);
             below_the_preload = below_the_preload || (result.force[first + i] > 0.0 && result.force[first + i] < held &&
                                                       time[i] > 9.5);
             lifted_off = lifted_off || (time[i] > 9.5 && result.force[first + i] == 0.0);
