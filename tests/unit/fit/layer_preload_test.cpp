@@ -148,7 +148,9 @@ TEST(LayerPreload, TheDerivativesInThePreloadAreThoseOfTheForce) {
     const contact::Layer layer{thickness, contact::LayerInterface::bonded};
     const auto forces = [&](double equilibrium, double branch) {
         const rheology::Rheology material(equilibrium, 0.0, {{branch, tau1}});
-        return *layer_forces(material, layer, 0.5, sphere, time, depth, 0.0, contact::default_layer_nodes, true, true);
+        // value(): a model that lost the contact and met the recovering surface throws (a failure, not a crash).
+        return layer_forces(material, layer, 0.5, sphere, time, depth, 0.0, contact::default_layer_nodes, true, true)
+            .value();
     };
     const auto model = forces(G_inf, G1);
     const double h = 1e-4;
