@@ -123,13 +123,13 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
         if (residual(0.0) >= 0.0) {
             // t1 before the record, inside the preload's jump to d_0 (weight G_inf: relaxed since): d(t1) = d_0 +
             // int_{t0}^t G dd / G_inf, F = G_inf F_el(d(t1)) (eq. L21); none left without a preload or G_inf.
-            edge = 0.0;
             const double jump = equilibrium * preload_depth - residual(0.0);
             if (!(jump > 0.0)) {
                 response.force[row] = 0.0;
                 for (auto& derivative : response.modulus_derivatives) derivative[row] = 0.0;
                 return std::nullopt;
             }
+            edge = 0.0;
             const double edge_depth = jump / equilibrium;
             const double edge_force = elastic(edge_depth);
             response.force[row] = equilibrium * edge_force;
