@@ -56,7 +56,7 @@ TEST(LayerPreload, ARampFromTheRelaxedPreloadIsLeeRadokOfTheChangeSince) {
     const auto model = layer_forces(material, layer, 0.5, sphere, record.time, measured, shift,
                                     contact::default_layer_nodes, true, true);
     ASSERT_TRUE(model.has_value());
-    const contact::LayerContact exact(layer, 0.5, sphere, 3.0 * sphere->contact_radius(top), 96);
+    const contact::LayerContact exact(layer, 0.5, sphere, 3.0 * sphere->contact_radius(top), 64);
     std::map<double, double> solved;  // the quadrature's nodes recur for every t past the ramp
     const auto elastic = [&](double depth) {
         const auto [at, added] = solved.try_emplace(depth, 0.0);
