@@ -56,8 +56,8 @@ double PronyBranches::weighted_sum() const {
     return sum;
 }
 
-LoadingRecord::LoadingRecord(const rheology::Rheology& material, double time)
-    : material_(&material), time_{time}, depth_{0.0}, force_{0.0},
+LoadingRecord::LoadingRecord(const rheology::Rheology& material, double time, double depth, double elastic_force)
+    : material_(&material), time_{time}, depth_{depth}, force_{elastic_force},
       depth_branches_(material.terms().size(), 0.0), force_branches_(material.terms().size(), 0.0) {}
 
 void LoadingRecord::append(double time, double depth, double elastic_force, const PronyBranches& depth_branches,

@@ -48,8 +48,10 @@ struct LoadingPoint {
 /// receding contact (eq. L13) follow at any later time.
 class LoadingRecord {
 public:
-    /// An empty record starting at `time` with zero depth and force.
-    LoadingRecord(const rheology::Rheology& material, double time);
+    /// An empty record starting at `time` with the depth `depth` [m] and the elastic force `elastic_force` [m^2, at
+    /// unit modulus] of a relaxed state (every branch zero: held since long before, a fit's preload, docs/theory.md
+    /// 4d); by default unloaded.
+    LoadingRecord(const rheology::Rheology& material, double time, double depth = 0.0, double elastic_force = 0.0);
     /// Appends a loading step ending at `time` with its depth, elastic force and both signals' branches there.
     void append(double time, double depth, double elastic_force, const PronyBranches& depth_branches,
                 const PronyBranches& force_branches);

@@ -70,7 +70,7 @@ std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_ca
 // The layer model's force at the used points, plus the baseline, and its derivatives (layer_model.hpp). Throws
 // mdr::InvalidInput for what is not built on a layer: a force-driven curve, a compressible body whose Poisson ratio
 // changes in time or two bodies (drivers::layer_poisson_ratio), and (the element model, run when the layer model
-// gives nullopt) a contact that grows again after it shrank.
+// gives nullopt) a contact that grows again after it shrank (key fit.data.start for a preloaded curve).
 std::optional<ModelValues> layer_curve(const drivers::ContactCase& model_case, const CurveModel& prepared,
                                        double contact_depth, double baseline, ForwardModel forward_model,
                                        bool modulus_derivatives) {
@@ -78,6 +78,15 @@ std::optional<ModelValues> layer_curve(const drivers::ContactCase& model_case, c
         throw InvalidInput("fit.fitted", "\"depth\"",
                            "must be \"force\" on a [layer]: the layer's fit model is driven by the measured "
                            "depth; a force-driven fit (the depth fitted) is not built on a layer yet (issue 28)");
+    }
+    if (forward_model == ForwardModel::elements && prepared.curve->preloaded) {
+        // The path beyond Ting's class starts unloaded: a preload holds only within it (docs/theory.md 4d, eq. L21).
+        throw InvalidInput("fit.data.start", "\"preloaded\"",
+                           fmt::format("on a [layer] holds while the contact stays in Ting's class; here it would grow "
+                                       "again after it shrank (the depth rises by more than {} of its range after "
+                                       "falling by more, or the indenter touches the recovering surface again): fit "
+                                       "up to the end of the first unloading",
+                                       format_value(layer_dip_tolerance)));
     }
     if (forward_model == ForwardModel::elements) {
         throw InvalidInput("fit.data", prepared.curve->name,
@@ -91,7 +100,7 @@ std::optional<ModelValues> layer_curve(const drivers::ContactCase& model_case, c
     const std::size_t nodes = model_case.numerics.elements.value_or(contact::default_layer_nodes);
     auto response = layer_forces(model_case.material, *model_case.layer, drivers::layer_poisson_ratio(model_case),
                                  model_case.indenter, curve.time, curve.depth, contact_depth, nodes,
-                                 modulus_derivatives);
+                                 modulus_derivatives, curve.preloaded);
     if (!response) return std::nullopt;
     return at_used_points(response->force, response->modulus_derivatives, prepared.used, baseline);
 }

@@ -40,13 +40,6 @@ std::size_t default_fit_elements(double noise_to_peak) {
 
 namespace {
 
-// Whether the case of the start values has a [layer] (the thickness may be free, the layer itself is not).
-bool on_a_layer(const FitProblem& problem) {
-    std::vector<double> values;
-    for (const auto& parameter : problem.parameters) values.push_back(parameter.start);
-    return problem.model(values).layer.has_value();
-}
-
 // The model must be built at the start values and at each bound of each free parameter (the others at their start
 // values): bounds are where the solver may go, so a bound outside the material's rules (tau1 < 0, say) is refused
 // here, naming the bound, and not met mid-solve as a model that cannot be evaluated.
@@ -138,9 +131,6 @@ void validate(const FitProblem& problem) {
             throw InvalidInput(key, "\"preloaded\"",
                                "needs a depth-driven curve (fitted = \"force\"): a preload under force control is "
                                "not built");
-        }
-        if (problem.model && on_a_layer(problem)) {
-            throw InvalidInput(key, "\"preloaded\"", "is not built on a [layer] (its model starts unloaded)");
         }
         const auto& bounds = problem.settings.contact_point_bounds;
         if (bounds && !((*bounds)[0] < curve.depth.front())) {

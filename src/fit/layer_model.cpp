@@ -83,12 +83,17 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
                                          double poisson_ratio,
                                          const std::shared_ptr<const profile::Profile>& indenter,
                                          const std::vector<double>& time, const std::vector<double>& depth,
-                                         double depth_shift, std::size_t nodes, bool modulus_derivatives) {
+                                         double depth_shift, std::size_t nodes, bool modulus_derivatives,
+                                         bool preloaded) {
     if (time.empty()) return std::nullopt;
     const auto [lowest, deepest] = std::minmax_element(depth.begin(), depth.end());
     const double noise = layer_dip_tolerance * (*deepest - *lowest);
     const double largest_depth = *deepest - depth_shift;
     const LayerElasticForce elastic(layer, poisson_ratio, indenter, largest_depth, nodes);
+    // A relaxed preload d_0 = the first depth (docs/theory.md 4d, eq. L21): the record starts at d_0 with every
+    // branch at zero, and G_inf F_el(d_0), the force the rows at rest hold, is taken off at the end.
+    const double preload_depth = preloaded ? std::max(depth.front() - depth_shift, 0.0) : 0.0;
+    const double preload_force = elastic(preload_depth);
 
     const auto& terms = material.terms();
     TingResponse response;
@@ -99,24 +104,46 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
     // The phases and the record of drivers::LayerStepper (eq. L11 to L14), on the interpolated F_el.
     drivers::PronyBranches centre_branches(material);  // of w0: the depth in contact, the free surface after
     drivers::PronyBranches force_branches(material);   // of F_el (Lee-Radok, the noise included)
-    drivers::LoadingRecord loading(material, time.front());
+    drivers::LoadingRecord loading(material, time.front(), preload_depth, preload_force);
     drivers::LayerPhase phase = drivers::LayerPhase::approach;
-    double centre = 0.0, previous_force = 0.0, position = 0.0;
+    double centre = preload_depth, previous_force = preload_force, position = 0.0;
     // The depth at the last loading node (the running maximum), the least depth since and the least d(t1).
-    double peak = 0.0, lowest_since_peak = 0.0, lowest_edge = 0.0;
+    double peak = preload_depth, lowest_since_peak = preload_depth, lowest_edge = preload_depth;
+    const double equilibrium = material.equilibrium_modulus();
     // Ting's force (eq. L13) at `row`, time `now`, depth `indented` with its branches and rate there, t1 solved from
-    // eq. L12 starting at loading position `edge` (updated): false (and zero force) where int_0^t G dd <= 0.
+    // eq. L12 starting at loading position `edge` (updated): the depth d(t1) at the contact's edge, or nullopt (and
+    // zero force) where the contact is lost: int_0^t G dd <= 0, the preload's jump included (eq. L21).
     const auto ting = [&](std::size_t row, double now, double indented, const drivers::PronyBranches& branches,
-                          double rate, double& edge) {
+                          double rate, double& edge) -> std::optional<double> {
         const double steps = static_cast<double>(loading.steps());
         const auto residual = [&](double x) {  // int_{t1}^t G dd, t1 at loading position x (eq. L12)
             const double inside = std::clamp(x, 0.0, steps);
             return (x - inside) - loading.ting_residual(inside, now, indented, branches, rate);
         };
         if (residual(0.0) >= 0.0) {
-            response.force[row] = 0.0;
-            for (auto& derivative : response.modulus_derivatives) derivative[row] = 0.0;
-            return false;
+            // t1 before the record, inside the preload's jump to d_0 (weight G_inf: relaxed since): d(t1) = d_0 +
+            // int_{t0}^t G dd / G_inf, F = G_inf F_el(d(t1)) (eq. L21); none left without a preload or G_inf.
+            const double jump = equilibrium * preload_depth - residual(0.0);
+            if (!(jump > 0.0)) {
+                response.force[row] = 0.0;
+                for (auto& derivative : response.modulus_derivatives) derivative[row] = 0.0;
+                return std::nullopt;
+            }
+            edge = 0.0;
+            const double edge_depth = jump / equilibrium;
+            const double edge_force = elastic(edge_depth);
+            response.force[row] = equilibrium * edge_force;
+            if (!response.modulus_derivatives.empty()) {
+                // d(t1) - d(t) = sum G_k h_k / G_inf: dF/dG_inf = F_el(d1) - F_el'(d1) (d1 - d),
+                // dF/dG_k = F_el'(d1) h_k.
+                const double nudge = 1e-6 * edge_depth;  // F_el is analytic in d: a central difference
+                const double tangent = (elastic(edge_depth + nudge) - elastic(edge_depth - nudge)) / (2.0 * nudge);
+                response.modulus_derivatives[0][row] = edge_force - tangent * (edge_depth - indented);
+                for (std::size_t k = 0; k < material.terms().size(); ++k) {
+                    response.modulus_derivatives[k + 1][row] = tangent * branches.values()[k];
+                }
+            }
+            return edge_depth;
         }
         const double start = std::min(edge, steps);
         edge = std::min(numerics::monotone_root(residual, start, residual(start), 1.0,
@@ -136,7 +163,6 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
             const double nudge = 1e-6 * point_depth;  // F_el is analytic in d: a central difference
             const double tangent = (elastic(point_depth + nudge) - elastic(point_depth - nudge)) / (2.0 * nudge);
             const double relaxed = material.relaxation(now - loading.at(edge).time);
-            const double equilibrium = material.equilibrium_modulus();
             const double weight = (equilibrium * tangent + (relaxed - equilibrium) * secant) / relaxed;
             response.modulus_derivatives[0][row] = point_force + weight * (indented - point_depth);
             for (std::size_t k = 0; k < material.terms().size(); ++k) {
@@ -145,7 +171,7 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
                     weight * (branches.values()[k] - loading.depth_term(k, edge, now));
             }
         }
-        return true;
+        return point_depth;
     };
     // The dips within the noise since the last loading node (Lee-Radok so far).
     struct Dip {
@@ -183,19 +209,22 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
                 // The first fall beyond the noise: the contact has receded since the last loading node, through the
                 // dips taken as noise until now (exact for a clean unloading sampled finer than the noise).
                 double edge = static_cast<double>(loading.steps());
-                for (const auto& dip : dips) ting(dip.row, dip.time, dip.depth, dip.branches, dip.rate, edge);
+                lowest_edge = loading.at(edge).depth;
+                for (const auto& dip : dips) {
+                    const auto dip_edge = ting(dip.row, dip.time, dip.depth, dip.branches, dip.rate, edge);
+                    if (dip_edge) lowest_edge = std::min(lowest_edge, *dip_edge);
+                }
                 position = edge;
-                lowest_edge = loading.at(position).depth;
             }
             dips.clear();
-            if (!ting(i, now, indented, centre_branches, rate, position)) {  // int_0^t G dd <= 0: contact lost
+            const auto point_depth = ting(i, now, indented, centre_branches, rate, position);
+            if (!point_depth) {  // int_0^t G dd <= 0: contact lost
                 phase = drivers::LayerPhase::lifted_off;
                 continue;
             }
             phase = drivers::LayerPhase::receding;
-            const double point_depth = loading.at(position).depth;
-            lowest_edge = std::min(lowest_edge, point_depth);
-            if (point_depth > lowest_edge + noise) return std::nullopt;
+            lowest_edge = std::min(lowest_edge, *point_depth);
+            if (*point_depth > lowest_edge + noise) return std::nullopt;
             continue;
         }
         // The contact grows, or the depth dips within the noise below its running maximum: Lee-Radok (eq. L11), F_el
@@ -203,7 +232,7 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
         phase = drivers::LayerPhase::growing;
         const double elastic_force = elastic(indented);
         force_branches.advance(step, elastic_force - previous_force);
-        double force = material.equilibrium_modulus() * elastic_force + force_branches.weighted_sum();
+        double force = equilibrium * elastic_force + force_branches.weighted_sum();
         if (step > 0.0) force += material.viscosity() * (elastic_force - previous_force) / step;
         response.force[i] = force;
         previous_force = elastic_force;
@@ -221,6 +250,10 @@ std::optional<TingResponse> layer_forces(const rheology::Rheology& material, con
         } else {
             dips.push_back({i, now, indented, rate, centre_branches});
         }
+    }
+    for (std::size_t i = 0; i < time.size() && preload_depth > 0.0; ++i) {  // the change since the preload (eq. L21)
+        response.force[i] -= equilibrium * preload_force;
+        if (!response.modulus_derivatives.empty()) response.modulus_derivatives[0][i] -= preload_force;
     }
     return response;
 }

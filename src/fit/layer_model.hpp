@@ -55,9 +55,13 @@ private:
 /// contact would grow again after it shrank or the indenter reaches the recovering surface. modulus_derivatives (left
 /// out for a material with a dashpot): dF/dG_inf = F_el, dF/dG_k = h_k under Lee-Radok; under Ting those at fixed t1
 /// plus the motion of t1 with the moduli (through the residual of eq. L12); zero after the loss of contact.
+/// `preloaded`: a first depth d_0 > 0 is a relaxed preload (docs/theory.md 4d, eq. L21: every branch relaxed under d_0
+/// at time[0]), and the force is the change since, F(t) - G_inf F_el(d_0); a receding contact's t1 may then fall into
+/// the preload (F = G_inf F_el(d_0 + int_{t0}^t G dd / G_inf), the contact lost once that depth reaches 0).
 std::optional<TingResponse> layer_forces(const rheology::Rheology& material, const contact::Layer& layer,
                                          double poisson_ratio, const std::shared_ptr<const profile::Profile>& indenter,
                                          const std::vector<double>& time, const std::vector<double>& depth,
-                                         double depth_shift, std::size_t nodes, bool modulus_derivatives = true);
+                                         double depth_shift, std::size_t nodes, bool modulus_derivatives = true,
+                                         bool preloaded = false);
 
 }  // namespace mdr::fit

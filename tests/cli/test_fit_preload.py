@@ -122,14 +122,41 @@ def test_bad_preload_input_is_refused(run_mdr, workdir, start, extra, fragments)
     assert_bad_input(run_mdr("fit", workdir / "case.toml", "--out", workdir / "out"), *fragments)
 
 
-def test_a_preload_on_a_layer_is_refused_before_the_fit(run_mdr, workdir):
-    # Checked up front with the other preload rules, naming the curve's index (the layer models start unloaded).
+def test_a_preload_on_a_thick_layer_is_the_half_space_preload(run_mdr, workdir):
+    # A [layer] of 1 m under this 63 um contact: its kernel vanishes (docs/theory.md eq. L4), so the preloaded layer
+    # model (eq. L21) fits the half-space reference back as the half-space model does.
     write_record(workdir / "record.csv")
+    layer = '[layer]\nthickness = 1.0\ninterface = "bonded"\n\n'
+    (workdir / "case.toml").write_text(CASE.format(start="preloaded").replace("[fit]\n", layer + "[fit]\n"),
+                                       encoding="utf-8")
+    result = run_mdr("fit", workdir / "case.toml", "--out", workdir / "out", timeout=300)
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((workdir / "out" / "fit.json").read_text())
+    assert summary["status"].startswith("converged"), summary["status"]
+    values, errors = summary["parameters"], summary["standard_errors"]
+    for key, truth in (("material.G_inf", G_INF), ("material.G1", G1), ("material.tau1", TAU1)):
+        assert abs(values[key] - truth) < 4.0 * errors[key], (key, values[key], errors[key])
+    curve = summary["curves"][0]
+    assert curve["start"] == "preloaded"
+    assert abs(curve["preload_depth"] - PRELOAD) < 4.0 * curve["preload_depth_error"], curve
+    assert summary["rms_residual"] < 1.5 * NOISE
+
+
+def test_a_preload_on_a_layer_whose_contact_grows_again_is_refused(run_mdr, workdir):
+    # The depth falls by 10 % of its range in the hold and rises again: outside Ting's class, where the preloaded
+    # layer model (eq. L21) holds; the path beyond it starts unloaded, so the preload is refused naming its key.
+    write_record(workdir / "record.csv")
+    lines = (workdir / "record.csv").read_text(encoding="utf-8").splitlines()
+    for index in range(300, 320):
+        row = lines[index].split(",")
+        row[1] = repr(float(row[1]) - 0.1 * (DEEPEST - PRELOAD))
+        lines[index] = ",".join(row)
+    (workdir / "record.csv").write_text("\n".join(lines) + "\n", encoding="utf-8")
     layer = '[layer]\nthickness = 2.0e-5\ninterface = "bonded"\n\n'
     text = CASE.format(start="preloaded").replace("[fit]\n", layer + "[fit]\n")
     (workdir / "case.toml").write_text(text, encoding="utf-8")
     assert_bad_input(run_mdr("fit", workdir / "case.toml", "--out", workdir / "out"),
-                     'fit.data[0].start = "preloaded"', "not built on a [layer]")
+                     'fit.data.start = "preloaded"', "would grow again after it shrank")
 
 
 def test_a_preload_the_band_model_cannot_run_is_refused(run_mdr, workdir):
