@@ -21,6 +21,7 @@
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
+#include "mdr/drivers/shore.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/units.hpp"
@@ -63,14 +64,18 @@ Points history_points(const std::optional<drivers::LoadHistory>& history) {
     return points;
 }
 
-// The load control: one of the bound control classes (drivers::LoadControl).
+// The load control: one of the bound control classes (drivers::LoadControl); a Shore test is a spring control with
+// the durometer's test.
 drivers::LoadControl load_control(const py::handle& control) {
     if (py::isinstance<drivers::DisplacementControl>(control)) return control.cast<drivers::DisplacementControl>();
     if (py::isinstance<drivers::ForceControl>(control)) return control.cast<drivers::ForceControl>();
     if (py::isinstance<drivers::SpringControl>(control)) return control.cast<drivers::SpringControl>();
     if (py::isinstance<drivers::ImpactControl>(control)) return control.cast<drivers::ImpactControl>();
-    throw py::type_error("load.control: expected mdr.DisplacementControl, mdr.ForceControl, mdr.SpringControl or "
-                         "mdr.ImpactControl, got " + type_name(control));
+    if (py::isinstance<drivers::ShoreTest>(control)) {
+        return drivers::SpringControl{.shore = control.cast<drivers::ShoreTest>()};
+    }
+    throw py::type_error("load.control: expected mdr.DisplacementControl, mdr.ForceControl, mdr.SpringControl, "
+                         "mdr.ImpactControl or mdr.ShoreTest, got " + type_name(control));
 }
 
 // The half-space's material as the case file's reader presents it (rheology::contact_material, one incompressible
@@ -93,14 +98,35 @@ struct CaseArguments {
     std::string title, units;
 };
 
-// The case of the keywords, validated as a case file is (io::read_case): the end defaults to the history's last
-// time (an impact's to infinity, the latest end of its own stop rule) or the tangential load's when later, and an
-// impact's history is the single point (0, 0).
+// A Shore test (control = "shore") in the case's units, as io's reader makes it: the durometer of its scale
+// (drivers::make_shore_test) as the spring, the standard's indenter and the base history of the test. `given` is a
+// copy: it replaces the case's control.
+void set_shore_test(drivers::ContactCase& contact_case, drivers::ShoreTest given, bool has_indenter,
+                    const io::UnitSystem& system) {
+    if (has_indenter) {
+        throw InvalidInput("indenter", "[...]",
+                           "not with control = \"shore\": the durometer's indenter is the standard's");
+    }
+    const drivers::ShoreTest test =
+        drivers::make_shore_test(given.scale, given.duration, system.length_size, system.force_size);
+    contact_case.indenter = drivers::durometer_indenter(test.scale, system.length_size);
+    contact_case.control = drivers::SpringControl{.spring_constant = test.instrument.spring_rate, .shore = test};
+    contact_case.load.history = drivers::shore_base_history(test);
+}
+
+// The case of the keywords, validated as a case file is (io::read_case): `[load]` keys its control does not take
+// are refused, the end defaults as the reader's (io::default_end_time) and an impact's history is the point (0, 0).
 drivers::ContactCase contact_case(const CaseArguments& given) {
     drivers::LoadControl control = load_control(given.control);
+    const drivers::ControlKind& kind = drivers::control_kind(control);
+    const std::pair<const char*, const py::object&> load_keys[] = {
+        {"history", given.history}, {"harmonic", given.harmonic}, {"end", given.end}};
+    for (const auto& [key, value] : load_keys) {
+        if (!value.is_none()) io::require_control_takes(kind, key, py::repr(value).cast<std::string>());
+    }
     const bool impact = std::holds_alternative<drivers::ImpactControl>(control);
     drivers::Load load{.history = load_history(given.history, "load.history")};
-    if (impact && !load.history) load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
+    if (impact) load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
     if (!given.harmonic.is_none()) {
         load.harmonic = argument<drivers::HarmonicLoad>(given.harmonic, "load.harmonic", "an mdr.Harmonic");
     }
@@ -109,21 +135,15 @@ drivers::ContactCase contact_case(const CaseArguments& given) {
         tangential = argument<drivers::TangentialLoad>(given.tangential, "tangential", "an mdr.Tangential");
         drivers::validate(*tangential);  // before its end time is used, as the reader does
     }
-    double end_time = std::numeric_limits<double>::infinity();
-    if (!given.end.is_none()) {
-        end_time = argument<double>(given.end, "load.end", "a number");
-    } else if (!impact && load.history) {
-        end_time = load.end_time();
-        if (tangential) end_time = std::max(end_time, tangential->load.end_time());
-    }
     rheology::ContactMaterial material = half_space(given.material);
+    const io::UnitSystem& system = io::unit_system(given.units);
     drivers::ContactCase built{
         .title = given.title,
         .material = std::move(material.material),
-        .indenter = argument<std::shared_ptr<profile::Profile>>(given.indenter, "indenter", "an mdr.Indenter"),
+        .indenter = nullptr,
         .control = std::move(control),
         .load = std::move(load),
-        .end_time = end_time,
+        .end_time = std::numeric_limits<double>::infinity(),
         .snapshots = given.snapshots.is_none()
                          ? std::vector<double>{}
                          : argument<std::vector<double>>(given.snapshots, "output.snapshots", "a sequence of times"),
@@ -135,7 +155,17 @@ drivers::ContactCase contact_case(const CaseArguments& given) {
         .tangential = std::move(tangential),
         .tangential_exact = material.tangential_exact,
         .material_origin = std::move(material.origin),
-        .units = std::string(io::unit_system(given.units).name)};
+        .units = std::string(system.name)};
+    if (const drivers::ShoreTest* shore = built.shore()) {
+        set_shore_test(built, *shore, !given.indenter.is_none(), system);
+    } else {
+        built.indenter = argument<std::shared_ptr<profile::Profile>>(given.indenter, "indenter", "an mdr.Indenter");
+    }
+    if (!given.end.is_none()) {
+        built.end_time = argument<double>(given.end, "load.end", "a number");
+    } else if (built.load.history) {  // else drivers::validate refuses the case
+        built.end_time = io::default_end_time(built.load, impact, built.tangential);
+    }
     if (!given.layer.is_none()) built.layer = argument<contact::Layer>(given.layer, "layer", "an mdr.Layer");
     drivers::validate(built);
     drivers::validate_layer(built);
@@ -186,10 +216,31 @@ force_pauses : sequence of (float, float), optional
                 return pauses;
             },
             "The pauses (start, end) [s].")
+        .def_readonly("shore", &drivers::SpringControl::shore, "The Shore test of a durometer's spring, or None.")
         .def("__repr__", [](const drivers::SpringControl& control) {
             return fmt::format("SpringControl(spring_constant={}, force_pauses={})", control.spring_constant,
                                control.force_pauses.size());
         });
+    py::class_<drivers::ShoreTest>(module, "ShoreTest", R"doc(A Shore durometer test (control = "shore"): the
+durometer's spring and the standard's indenter; the foot lands at t = 0 and the readings are measured at 1, 3 and
+15 s (docs/case-format.md, "Shore durometer"). A case with it takes no indenter and no history.
+
+Parameters
+----------
+scale : str
+    "A" (soft rubbers) or "D" (hard rubbers, plastics) (``load.scale``).
+duration : float, optional
+    The test's duration [s] > 0 (``load.duration``), default 15 s.
+)doc")
+        .def(py::init([](const std::string& scale, double duration) {
+                 return drivers::make_shore_test(drivers::shore_scale_named(scale), duration);
+             }),
+             py::kw_only(), py::arg("scale"), py::arg("duration") = drivers::shore_default_duration)
+        .def_property_readonly("scale",
+                               [](const drivers::ShoreTest& test) {
+                                   return test.scale == drivers::ShoreScale::A ? "A" : "D";
+                               })
+        .def_readonly("duration", &drivers::ShoreTest::duration, "[s]");
     py::class_<drivers::ObliqueImpactLoad>(module, "ObliqueImpact", R"doc(The tangential part of an oblique impact
 of a sphere (eq. 48-50): local Coulomb friction and the contact point's sliding at v_t - R omega.
 
@@ -340,9 +391,10 @@ Parameters
 material : mdr.Material
     The half-space (one incompressible body). An mdr.ConvertedMaterial keeps its series and certificate.
 indenter : mdr.Indenter
-control : mdr.DisplacementControl, mdr.ForceControl, mdr.SpringControl or mdr.ImpactControl
+    The indenter; none with an mdr.ShoreTest (the standard's).
+control : mdr.DisplacementControl, mdr.ForceControl, mdr.SpringControl, mdr.ImpactControl or mdr.ShoreTest
 history : sequence of (float, float), optional
-    The (t, value) points of the controlled quantity (``load.history``); an impact has none.
+    The (t, value) points of the controlled quantity (``load.history``); an impact and a Shore test have none.
 harmonic : mdr.Harmonic, optional
     A harmonic part added to the history (``load.harmonic``).
 end : float, optional
@@ -370,7 +422,7 @@ Examples
                  return contact_case(CaseArguments{material, indenter, control, history, harmonic, end, snapshots,
                                                    numerics, tangential, layer, title, units});
              }),
-             py::kw_only(), py::arg("material"), py::arg("indenter"), py::arg("control"),
+             py::kw_only(), py::arg("material"), py::arg("indenter") = py::none(), py::arg("control"),
              py::arg("history") = py::none(), py::arg("harmonic") = py::none(), py::arg("end") = py::none(),
              py::arg("snapshots") = py::none(), py::arg("numerics") = py::none(), py::arg("tangential") = py::none(),
              py::arg("layer") = py::none(), py::arg("title") = "", py::arg("units") = "SI")

@@ -26,7 +26,7 @@ from . import _mdr
 from ._arrays import real_array
 from ._jobs import check_jobs, local_workers
 from ._mdr import (ContactCase, ConvertedMaterial, DisplacementControl, ForceControl, Harmonic, ImpactControl, Indenter,
-                   InvalidInput, Layer, Material, Numerics, ObliqueImpact, SpringControl, Step, Tangential)
+                   InvalidInput, Layer, Material, Numerics, ObliqueImpact, ShoreTest, SpringControl, Step, Tangential)
 from ._case_tree import plain_tree
 from .curve_maps import map_curves
 from .fit_maps import fit_map
@@ -35,8 +35,8 @@ from .instruments import Curve, read_curves
 
 __all__ = ["run", "check", "sweep", "SweepTable", "fit", "FitResult", "spread_of_repeats", "map_curves", "fit_map",
            "Material", "ConvertedMaterial", "Indenter", "Result", "InvalidInput", "read_curves", "Curve", "ContactCase",
-           "DisplacementControl", "ForceControl", "SpringControl", "ImpactControl", "ObliqueImpact", "Harmonic",
-           "Numerics", "Tangential", "Layer", "Step", "__version__"]
+           "DisplacementControl", "ForceControl", "SpringControl", "ShoreTest", "ImpactControl", "ObliqueImpact",
+           "Harmonic", "Numerics", "Tangential", "Layer", "Step", "__version__"]
 __version__ = _mdr.__version__
 
 CaseLike = Union[str, os.PathLike, Mapping[str, Any]]

@@ -136,6 +136,17 @@ class SpringControl:
     def spring_constant(self) -> float: ...
     @property
     def force_pauses(self) -> list[tuple[float, float]]: ...
+    @property
+    def shore(self) -> Optional[ShoreTest]: ...
+
+class ShoreTest:
+    """A Shore durometer test: the durometer's spring and the standard's indenter."""
+
+    def __init__(self, *, scale: str, duration: float = 15.0) -> None: ...
+    @property
+    def scale(self) -> str: ...
+    @property
+    def duration(self) -> float: ...
 
 class ObliqueImpact:
     """The tangential part of an oblique impact of a sphere."""
@@ -162,7 +173,7 @@ class ImpactControl:
     @property
     def oblique(self) -> Optional[ObliqueImpact]: ...
 
-_Control = DisplacementControl | ForceControl | SpringControl | ImpactControl
+_Control = DisplacementControl | ForceControl | SpringControl | ImpactControl | ShoreTest
 
 class Harmonic:
     """A harmonic load part: amplitude sin(2 pi f (t - start)) from start to end."""
@@ -223,7 +234,7 @@ class Layer:
 class ContactCase:
     """A contact case as objects (drivers::ContactCase), checked at construction by the case file's rules."""
 
-    def __init__(self, *, material: Material, indenter: Indenter, control: _Control,
+    def __init__(self, *, material: Material, indenter: Optional[Indenter] = None, control: _Control,
                  history: Optional[Sequence[tuple[float, float]] | npt.ArrayLike] = None,
                  harmonic: Optional[Harmonic] = None, end: Optional[float] = None,
                  snapshots: Optional[Sequence[float]] = None, numerics: Optional[Numerics] = None,
@@ -240,7 +251,7 @@ class ContactCase:
     @property
     def indenter(self) -> Indenter: ...
     @property
-    def control(self) -> _Control: ...
+    def control(self) -> DisplacementControl | ForceControl | SpringControl | ImpactControl: ...
     @property
     def history(self) -> list[tuple[float, float]]: ...
     @property

@@ -100,6 +100,19 @@ def test_frictionless_oblique_impact_keeps_its_tangential_velocity_and_spin():
     np.testing.assert_allclose(history["omega"], 3.0, rtol=1e-12)
 
 
+def test_a_shore_test_brings_its_indenter_and_reads_as_the_case_file():
+    material = mdr.Material.standard(G_inf=1e6, G1=1e6, tau1=2.0)
+    case = mdr.ContactCase(material=material, control=mdr.ShoreTest(scale="A"))
+    assert case.control.shore.scale == "A" and case.control.shore.duration == 15.0
+    from_objects = mdr.run(case)
+    from_dict = mdr.run(material=material, load={"control": "shore", "scale": "A"})
+    for column, values in from_dict.history.items():
+        np.testing.assert_array_equal(from_objects.history[column], values, err_msg=column)
+    assert from_objects.summary["shore_1s"] == from_dict.summary["shore_1s"]
+    again = mdr.ContactCase(material=material, control=case.control)  # a durometer's spring read back
+    assert mdr.run(again).summary["shore_15s"] == from_dict.summary["shore_15s"]
+
+
 # --- the object path against a case file ---------------------------------------------------------------------------
 
 CASE_FILES = {
@@ -291,6 +304,11 @@ def test_the_rules_and_messages_are_the_case_files():
      "tangential.friction"),
     (dict(layer=mdr.Layer(thickness=-1e-3)), mdr.InvalidInput, "layer.thickness"),
     (dict(units="furlong"), mdr.InvalidInput, "units"),
+    (dict(control=mdr.ImpactControl(mass=1e-3, velocity=0.1)), mdr.InvalidInput, "load.history = [(0.0, 0.0), (1.0"),
+    (dict(control=mdr.ImpactControl(mass=1e-3, velocity=0.1), history=None,
+          harmonic=mdr.Harmonic(amplitude=1e-6, frequency=1.0, start=0.0, end=1.0)), mdr.InvalidInput, "load.harmonic"),
+    (dict(control=mdr.ShoreTest(scale="A"), indenter=None), mdr.InvalidInput, "load.history"),
+    (dict(control=mdr.ShoreTest(scale="A"), history=None), mdr.InvalidInput, "indenter = [...]: not with control"),
     (dict(control="spring"), TypeError, "load.control"),
     (dict(history="0 0 1 1"), TypeError, "load.history"),
     (dict(material={"model": "elastic", "G": G}), TypeError, "material"),
@@ -314,6 +332,10 @@ def test_bad_parts_raise_naming_the_field():
         mdr.SpringControl(spring_constant="stiff")
     with pytest.raises(mdr.InvalidInput, match="^tangential.control"):
         mdr.Tangential(friction=0.1, control="torque", history=[(0.0, 0.0), (1.0, 1e-6)])
+    with pytest.raises(mdr.InvalidInput, match="^load.scale"):
+        mdr.ShoreTest(scale="B")
+    with pytest.raises(mdr.InvalidInput, match="^load.duration"):
+        mdr.ShoreTest(scale="A", duration=-1.0)
     with pytest.raises(mdr.InvalidInput, match="^layer.interface"):
         mdr.Layer(thickness=1e-3, interface="glued")
     with pytest.raises(TypeError):
