@@ -219,6 +219,23 @@ def test_a_converted_material_keeps_its_series_and_certificate():
     assert "power_law (G0 = 1000 Pa" in mdr.check(case)
 
 
+def test_a_pickled_converted_material_runs_as_the_original():
+    """The description and the conversion's times travel with the pickle (a Dask worker's copy), so the default
+    time step (resolve_numerics: no material-time cap for a converted series' nodes) and the text are the same."""
+    import pickle
+
+    material = mdr.Material.power_law(G0=1e3, beta=0.3, window=(1e-4, 10.0))
+    copy = pickle.loads(pickle.dumps(material))
+
+    def run(given):
+        return mdr.run(mdr.ContactCase(material=given, indenter=sphere(), control=mdr.DisplacementControl(),
+                                       history=[(0.0, 0.0), (1.0, 1e-5)]))
+
+    original, copied = run(material), run(copy)
+    assert copied.description == original.description and copied.summary["steps"] == original.summary["steps"]
+    np.testing.assert_array_equal(copied.history["F"], original.history["F"])
+
+
 # --- observers ----------------------------------------------------------------------------------------------------
 
 def displacement_case():
