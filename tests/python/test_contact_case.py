@@ -287,7 +287,9 @@ def test_observers_with_a_case_file_and_bad_observers(tmp_path):
     assert len(steps) == len(result.history["t"])
     for bad in (len, [1], "abc"):
         with pytest.raises(TypeError, match="observers"):
-            mdr.run(displacement_case(), observers=bad if bad != [1] else [1])
+            mdr.run(displacement_case(), observers=bad)
+    with pytest.raises(mdr.InvalidInput, match="^layer = .*step observers"):  # drivers::run_layer_indentation
+        mdr.run(CASE_FILES["layer"][1](), observers=[steps.append])
 
 
 # --- bad input ----------------------------------------------------------------------------------------------------
