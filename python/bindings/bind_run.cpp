@@ -49,9 +49,15 @@ public:
 
 private:
     bool call(const drivers::StepState& state) const {
-        const StepRecord record{state.step,     state.time,     state.depth,
-                                state.force,    state.load,     state.velocity,
-                                state.foundation->contact_radius(), state.fraction, state.settled};
+        const StepRecord record{.step = state.step,
+                                .time = state.time,
+                                .depth = state.depth,
+                                .force = state.force,
+                                .load = state.load,
+                                .velocity = state.velocity,
+                                .contact_radius = state.foundation->contact_radius(),
+                                .fraction = state.fraction,
+                                .settled = state.settled};
         py::gil_scoped_acquire acquire;
         return py::bool_(callable_(record));
     }
