@@ -20,6 +20,12 @@ struct ConvertedMaterial : rheology::Rheology {
     std::string model;                     ///< the registry's name of the model
     rheology::ModelParameters parameters;  ///< the values given to its factory (a table's file: absolute)
     std::optional<double> tolerance;       ///< the factory's tolerance, when given
+    std::string description{};             ///< the model's description (rheology::build_material)
+    bool times_from_conversion = false;    ///< rheology::MaterialOrigin::times_from_conversion of the conversion
+
+    /// What the series stands for in a drivers::ContactCase: the description, the certificate and whether its
+    /// times come from the conversion (the model's functions are not kept).
+    rheology::MaterialOrigin origin() const { return {description, certificate, {}, times_from_conversion}; }
 };
 
 /// mdr.Material: the canonical rheology and its factories.
@@ -30,7 +36,9 @@ void bind_material_models(pybind11::class_<rheology::Rheology>& material);
 void bind_converted_material(pybind11::module_& module);
 /// _mdr._material_models(): the registry as data (stubs and docs are checked against it).
 void bind_material_registry(pybind11::module_& module);
-/// mdr.run and mdr.check: cases from TOML text, results as numpy arrays.
+/// mdr.ContactCase and the load programme's classes (controls, harmonic, numerics, tangential load, layer).
+void bind_contact_case(pybind11::module_& module);
+/// mdr.run and mdr.check: cases from TOML text, a dict tree or an mdr.ContactCase; results as numpy arrays.
 void bind_run(pybind11::module_& module);
 /// mdr.Indenter: the profiles and their g(x), its factories from the registry of shapes, and _mdr._shapes().
 void bind_profile(pybind11::module_& module);

@@ -11,6 +11,7 @@ PYBIND11_MODULE(_mdr, module) {
     mdr::python::bind_material_registry(module);
     mdr::python::bind_profile(module);
     mdr::python::bind_control_registry(module);
+    mdr::python::bind_contact_case(module);
     mdr::python::bind_run(module);
     mdr::python::bind_sweep(module);
     mdr::python::bind_fit(module);

@@ -18,14 +18,15 @@ import importlib
 import math
 import os
 from dataclasses import dataclass, field
-from typing import Any, Callable, Mapping, Optional, Union
+from typing import Any, Callable, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
 from . import _mdr
 from ._arrays import real_array
 from ._jobs import check_jobs, local_workers
-from ._mdr import ConvertedMaterial, Indenter, InvalidInput, Material
+from ._mdr import (ContactCase, ConvertedMaterial, DisplacementControl, ForceControl, Harmonic, ImpactControl, Indenter,
+                   InvalidInput, Layer, Material, Numerics, ObliqueImpact, ShoreTest, SpringControl, Step, Tangential)
 from ._case_tree import plain_tree
 from .curve_maps import map_curves
 from .fit_maps import fit_map
@@ -33,10 +34,13 @@ from .fitting import FitResult, fit, spread_of_repeats
 from .instruments import Curve, read_curves
 
 __all__ = ["run", "check", "sweep", "SweepTable", "fit", "FitResult", "spread_of_repeats", "map_curves", "fit_map",
-           "Material", "ConvertedMaterial", "Indenter", "Result", "InvalidInput", "read_curves", "Curve", "__version__"]
+           "Material", "ConvertedMaterial", "Indenter", "Result", "InvalidInput", "read_curves", "Curve", "ContactCase",
+           "DisplacementControl", "ForceControl", "SpringControl", "ShoreTest", "ImpactControl", "ObliqueImpact",
+           "Harmonic", "Numerics", "Tangential", "Layer", "Step", "__version__"]
 __version__ = _mdr.__version__
 
 CaseLike = Union[str, os.PathLike, Mapping[str, Any]]
+RunCase = Union[ContactCase, str, os.PathLike, Mapping[str, Any]]
 _LAZY_MODULES = ("plot", "maps")
 
 
@@ -94,8 +98,9 @@ def _case_input(case: CaseLike) -> tuple[Union[str, dict[str, Any]], str]:
     raise TypeError(f"case: expected a path or a dict, got {type(case).__name__}")
 
 
-def _case_of(case: Optional[CaseLike], tables: Mapping[str, Any]) -> CaseLike:
-    """The case of run and check: a path or dict, or the tables given as keywords (a dict like the file's)."""
+def _case_of(case: Optional[RunCase], tables: Mapping[str, Any]) -> RunCase:
+    """The case of run and check: an mdr.ContactCase, a path or dict, or the tables given as keywords (a dict like
+    the file's)."""
     given = {key: value for key, value in tables.items() if value is not None}
     if case is not None and given:
         raise TypeError(f"give a case or its tables ({', '.join(given)}) as keywords, not both")
@@ -112,20 +117,23 @@ def _callable_or_none(progress: Any) -> Any:
     return progress
 
 
-def run(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[str, Any], None] = None,
+def run(case: Optional[RunCase] = None, *, material: Union[Material, Mapping[str, Any], None] = None,
         indenter: Union[Indenter, Mapping[str, Any], None] = None, load: Optional[Mapping[str, Any]] = None,
         numerics: Optional[Mapping[str, Any]] = None, tangential: Optional[Mapping[str, Any]] = None,
         output: Optional[Mapping[str, Any]] = None, title: Optional[str] = None,
-        progress: Optional[Callable[[float], Any]] = None) -> Result:
+        progress: Optional[Callable[[float], Any]] = None,
+        observers: Optional[Sequence[Callable[[Step], Any]]] = None) -> Result:
     """Runs a contact case.
 
-    Give either `case` (a case file or a dict with its structure) or the case's tables as keywords.
+    Give either `case` (an ``mdr.ContactCase``, a case file or a dict with its structure) or the case's tables as
+    keywords.
 
     Parameters
     ----------
-    case : str, os.PathLike or dict, optional
-        A TOML case file (docs/case-format.md) or a dict with the same structure; values may be numpy numbers or
-        arrays, ``mdr.Material`` (for ``material``) and ``mdr.Indenter`` (for ``indenter``).
+    case : mdr.ContactCase, str, os.PathLike or dict, optional
+        An ``mdr.ContactCase`` (run as it is, without text), a TOML case file (docs/case-format.md) or a dict with
+        the same structure; values may be numpy numbers or arrays, ``mdr.Material`` (for ``material``) and
+        ``mdr.Indenter`` (for ``indenter``).
     material : mdr.Material or dict, optional
         The half-space: an ``mdr.Material`` or a dict like ``[material]``.
     indenter : mdr.Indenter or dict, optional
@@ -140,6 +148,10 @@ def run(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[st
     progress : callable, optional
         Called as ``progress(fraction)`` with the fraction of the simulated time done (0 to 1) as the run goes
         on, and with 1.0 at its end. An exception it raises stops the run and propagates.
+    observers : sequence of callables, optional
+        Each is called as ``observer(step)`` with an ``mdr.Step`` (time, depth, force, contact radius, ...) for
+        every state of the run, the initial one first, in time order. A true return value ends the run with that
+        state; an exception stops the run and propagates. Not with a ``[layer]``.
 
     Returns
     -------
@@ -164,14 +176,18 @@ def run(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[st
     'displacement'
     """
     progress = _callable_or_none(progress)
-    case_input, source = _case_input(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
-                                                  tangential=tangential, output=output, numerics=numerics)))
-    raw = _mdr._run_case(case_input, source, progress)
+    given = _case_of(case, dict(title=title, material=material, indenter=indenter, load=load, tangential=tangential,
+                                output=output, numerics=numerics))
+    if isinstance(given, ContactCase):
+        raw = _mdr._run_contact_case(given, progress, observers)
+    else:
+        case_input, source = _case_input(given)
+        raw = _mdr._run_case(case_input, source, progress, observers)
     return Result(history=dict(raw["history"]), summary=raw["summary"],
                   profiles=dict(raw["profiles"]), description=raw["description"])
 
 
-def check(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[str, Any], None] = None,
+def check(case: Optional[RunCase] = None, *, material: Union[Material, Mapping[str, Any], None] = None,
           indenter: Union[Indenter, Mapping[str, Any], None] = None, load: Optional[Mapping[str, Any]] = None,
           numerics: Optional[Mapping[str, Any]] = None, tangential: Optional[Mapping[str, Any]] = None,
           output: Optional[Mapping[str, Any]] = None, title: Optional[str] = None) -> str:
@@ -179,8 +195,8 @@ def check(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[
 
     Parameters
     ----------
-    case : str, os.PathLike or dict, optional
-        A case file or a dict with its structure, as for `run`.
+    case : mdr.ContactCase, str, os.PathLike or dict, optional
+        An ``mdr.ContactCase``, a case file or a dict with its structure, as for `run`.
     material, indenter, load, numerics, tangential, output, title
         The case's tables as keywords, as for `run`.
 
@@ -200,8 +216,11 @@ def check(case: Optional[CaseLike] = None, *, material: Union[Material, Mapping[
     ...           load={"control": "force", "history": [[0.0, 0.0], [1.0, 0.1]]})  # doctest: +ELLIPSIS
     'sphere R = 0.01 on an elastic half-space elastic (G = 1000000 Pa) (G(0+) = 1e+06 Pa, ...), force control, ...'
     """
-    case_input, source = _case_input(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
-                                                  tangential=tangential, output=output, numerics=numerics)))
+    given = _case_of(case, dict(title=title, material=material, indenter=indenter, load=load, tangential=tangential,
+                                output=output, numerics=numerics))
+    if isinstance(given, ContactCase):
+        return _mdr._check_contact_case(given)
+    case_input, source = _case_input(given)
     return _mdr._check_case(case_input, source)
 
 

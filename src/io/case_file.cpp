@@ -208,6 +208,12 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
     return read_case(parse_toml(toml_text, source));
 }
 
+double default_end_time(const drivers::Load& load, bool impact,
+                        const std::optional<drivers::TangentialLoad>& tangential) {
+    if (impact) return std::numeric_limits<double>::infinity();
+    return tangential ? std::max(load.end_time(), tangential->load.end_time()) : load.end_time();
+}
+
 drivers::ContactCase read_case(const toml::table& root_table) {
     TableReader root(root_table, "");
     root.reject_unknown(
@@ -250,8 +256,7 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     ControlLoad control = control_reading->load(*load, *indenter_table);
     normal_load.history = std::move(control.history);
     drivers::ImpactControl* const impact = std::get_if<drivers::ImpactControl>(&control.control);
-    double end_time = impact ? std::numeric_limits<double>::infinity() : normal_load.end_time();
-    if (auto end = load->optional_number("end")) end_time = *end;
+    const std::optional<double> given_end = load->optional_number("end");
 
     std::optional<drivers::TangentialLoad> tangential;
     auto tangential_table = root.table("tangential");
@@ -263,8 +268,8 @@ drivers::ContactCase read_case(const toml::table& root_table) {
                            "only with control = \"impact\" (an oblique impact)");
     } else if (auto table = std::move(tangential_table)) {
         tangential = read_tangential(*table);
-        if (!load->has("end")) end_time = std::max(end_time, tangential->load.end_time());
     }
+    const double end_time = given_end ? *given_end : default_end_time(normal_load, impact != nullptr, tangential);
 
     std::vector<double> snapshots;
     if (auto output = root.table("output")) {

@@ -5,20 +5,18 @@
 
 #include "mdr/alternatives.hpp"
 #include "mdr/error.hpp"
+#include "mdr/io/case_file.hpp"
 
 namespace mdr::io {
-namespace {
 
-// "a", "a" or "b", "a", "b" or "c": the controls that take `key`, quoted.
-std::string controls_taking(const std::string& key) {
-    std::vector<std::string> names;
-    for (const drivers::ControlKind& kind : drivers::controls()) {
-        if (kind.key_named(key)) names.push_back("\"" + kind.name + "\"");
+void require_control_takes(const drivers::ControlKind& kind, const std::string& key, const std::string& text) {
+    if (kind.key_named(key)) return;
+    std::vector<std::string> names;  // the controls that take `key`, quoted
+    for (const drivers::ControlKind& other : drivers::controls()) {
+        if (other.key_named(key)) names.push_back("\"" + other.name + "\"");
     }
-    return either_of(names);
+    throw InvalidInput("load." + key, text, "only with control = " + either_of(names) + ", not \"" + kind.name + "\"");
 }
-
-}  // namespace
 
 const drivers::ControlKind& read_control(TableReader& load) {
     const std::vector<std::string> keys = drivers::load_keys();
@@ -31,10 +29,7 @@ const drivers::ControlKind& read_control(TableReader& load) {
         throw error.with_prefix("load.");
     }
     for (const std::string& key : keys) {
-        if (key != "control" && load.has(key) && !kind->key_named(key)) {
-            throw InvalidInput(load.key_path(key), load.text(key),
-                               "only with control = " + controls_taking(key) + ", not \"" + kind->name + "\"");
-        }
+        if (key != "control" && load.has(key)) require_control_takes(*kind, key, load.text(key));
     }
     return *kind;
 }

@@ -3,10 +3,12 @@
 /// Reading a TOML case file (the contract: shared spec `case-format.md`) into a drivers::ContactCase.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/controls.hpp"
 
 namespace mdr::io {
 
@@ -20,6 +22,16 @@ std::string read_case_text(const std::filesystem::path& path);
 
 /// Reads and parses a case file.
 drivers::ContactCase load_case(const std::filesystem::path& path);
+
+/// The last time simulated [s] of a case without `load.end`: an impact's is infinite (its contact's end stops it,
+/// eq. 39); otherwise the later of the normal load's end (drivers::Load::end_time; it has a history) and the
+/// tangential load's.
+double default_end_time(const drivers::Load& load, bool impact,
+                        const std::optional<drivers::TangentialLoad>& tangential);
+
+/// Refuses the `[load]` key `key` (its value written `text`) when the control `kind` does not take it, naming the
+/// controls that do (`load.velocity = 1: only with control = "impact", not "force"`; drivers::controls()).
+void require_control_takes(const drivers::ControlKind& kind, const std::string& key, const std::string& text);
 
 /// One line describing a validated case, for `mdr check` and the run summary.
 std::string describe(const drivers::ContactCase& contact_case);

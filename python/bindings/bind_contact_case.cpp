@@ -1,0 +1,480 @@
+// mdr.ContactCase and the load programme's classes: drivers::ContactCase and its parts (include/mdr/drivers) as
+// Python objects, built with keywords and checked by drivers::validate and drivers::validate_layer, the rules and
+// messages of a case file. No text passes between Python and C++ on this path.
+
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bindings.hpp"
+#include "case_tree.hpp"
+#include "mdr/contact/layer.hpp"
+#include "mdr/drivers/case_validation.hpp"
+#include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/controls.hpp"
+#include "mdr/drivers/layer_indentation.hpp"
+#include "mdr/drivers/shore.hpp"
+#include "mdr/error.hpp"
+#include "mdr/io/case_file.hpp"
+#include "mdr/io/units.hpp"
+#include "mdr/rheology/contact_bodies.hpp"
+
+namespace py = pybind11;
+
+namespace mdr::python {
+namespace {
+
+using Points = std::vector<std::pair<double, double>>;
+
+std::string type_name(const py::handle& value) { return py::type::of(value).attr("__name__").cast<std::string>(); }
+
+// `value` as T, or a TypeError naming the case key `key` and what it takes.
+template <class T>
+T argument(const py::handle& value, const std::string& key, const std::string& expected) {
+    try {
+        return value.cast<T>();
+    } catch (const py::cast_error&) {
+        throw py::type_error(fmt::format("{}: expected {}, got {}", key, expected, type_name(value)));
+    }
+}
+
+// The history `points` (None: none) as the drivers' LoadHistory named `key` (its rules: drivers/load_history.hpp).
+std::optional<drivers::LoadHistory> load_history(const py::object& points, const std::string& key) {
+    if (points.is_none()) return std::nullopt;
+    std::vector<drivers::LoadPoint> history;
+    for (const auto& [time, value] : argument<Points>(points, key, "a sequence of (t, value) pairs")) {
+        history.push_back({time, value});
+    }
+    return drivers::LoadHistory(std::move(history), key);
+}
+
+Points history_points(const std::optional<drivers::LoadHistory>& history) {
+    Points points;
+    if (history) {
+        for (const drivers::LoadPoint& point : history->points()) points.emplace_back(point.time, point.value);
+    }
+    return points;
+}
+
+// The load control: one of the bound control classes (drivers::LoadControl); a Shore test is a spring control with
+// the durometer's test.
+drivers::LoadControl load_control(const py::handle& control) {
+    if (py::isinstance<drivers::DisplacementControl>(control)) return control.cast<drivers::DisplacementControl>();
+    if (py::isinstance<drivers::ForceControl>(control)) return control.cast<drivers::ForceControl>();
+    if (py::isinstance<drivers::SpringControl>(control)) return control.cast<drivers::SpringControl>();
+    if (py::isinstance<drivers::ImpactControl>(control)) return control.cast<drivers::ImpactControl>();
+    if (py::isinstance<drivers::ShoreTest>(control)) {
+        return drivers::SpringControl{.shore = control.cast<drivers::ShoreTest>()};
+    }
+    throw py::type_error("load.control: expected mdr.DisplacementControl, mdr.ForceControl, mdr.SpringControl, "
+                         "mdr.ImpactControl or mdr.ShoreTest, got " + type_name(control));
+}
+
+// The half-space's material as the case file's reader presents it (rheology::contact_material, one incompressible
+// body): a converted material with its certificate, description and conversion times (its own series, not
+// converted again).
+rheology::ContactMaterial half_space(const py::handle& material) {
+    if (py::isinstance<ConvertedMaterial>(material)) {
+        const auto& converted = material.cast<const ConvertedMaterial&>();
+        const rheology::Rheology& series = converted;
+        return rheology::contact_material(rheology::Body{rheology::ModelMaterial{series, converted.origin()}});
+    }
+    if (!py::isinstance<rheology::Rheology>(material)) {
+        throw py::type_error("material: expected an mdr.Material, got " + type_name(material));
+    }
+    return rheology::contact_material(rheology::Body{rheology::ModelMaterial{material.cast<rheology::Rheology>(), {}}});
+}
+
+struct CaseArguments {
+    py::object material, indenter, control, history, harmonic, end, snapshots, numerics, tangential, layer;
+    std::string title, units;
+};
+
+// A Shore test (control = "shore") in the case's units, as io's reader makes it: the durometer of its scale
+// (drivers::make_shore_test) as the spring, the standard's indenter and the base history of the test. `given` is a
+// copy: it replaces the case's control.
+void set_shore_test(drivers::ContactCase& contact_case, drivers::ShoreTest given, bool has_indenter,
+                    const io::UnitSystem& system) {
+    if (has_indenter) {
+        throw InvalidInput("indenter", "[...]",
+                           "not with control = \"shore\": the durometer's indenter is the standard's");
+    }
+    const drivers::ShoreTest test =
+        drivers::make_shore_test(given.scale, given.duration, system.length_size, system.force_size);
+    contact_case.indenter = drivers::durometer_indenter(test.scale, system.length_size);
+    contact_case.control = drivers::SpringControl{.spring_constant = test.instrument.spring_rate, .shore = test};
+    contact_case.load.history = drivers::shore_base_history(test);
+}
+
+// The case of the keywords, validated as a case file is (io::read_case): `[load]` keys its control does not take
+// are refused, the end defaults as the reader's (io::default_end_time) and an impact's history is the point (0, 0).
+drivers::ContactCase contact_case(const CaseArguments& given) {
+    drivers::LoadControl control = load_control(given.control);
+    const drivers::ControlKind& kind = drivers::control_kind(control);
+    const std::pair<const char*, const py::object&> load_keys[] = {
+        {"history", given.history}, {"harmonic", given.harmonic}, {"end", given.end}};
+    for (const auto& [key, value] : load_keys) {
+        if (!value.is_none()) io::require_control_takes(kind, key, py::repr(value).cast<std::string>());
+    }
+    const bool impact = std::holds_alternative<drivers::ImpactControl>(control);
+    drivers::Load load{.history = load_history(given.history, "load.history")};
+    if (impact) load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
+    if (!given.harmonic.is_none()) {
+        load.harmonic = argument<drivers::HarmonicLoad>(given.harmonic, "load.harmonic", "an mdr.Harmonic");
+    }
+    std::optional<drivers::TangentialLoad> tangential;
+    if (!given.tangential.is_none()) {
+        tangential = argument<drivers::TangentialLoad>(given.tangential, "tangential", "an mdr.Tangential");
+        drivers::validate(*tangential);  // before its end time is used, as the reader does
+    }
+    rheology::ContactMaterial material = half_space(given.material);
+    const io::UnitSystem& system = io::unit_system(given.units);
+    drivers::ContactCase built{
+        .title = given.title,
+        .material = std::move(material.material),
+        .indenter = nullptr,
+        .control = std::move(control),
+        .load = std::move(load),
+        .end_time = std::numeric_limits<double>::infinity(),
+        .snapshots = given.snapshots.is_none()
+                         ? std::vector<double>{}
+                         : argument<std::vector<double>>(given.snapshots, "output.snapshots", "a sequence of times"),
+        .numerics = given.numerics.is_none()
+                        ? drivers::NumericsOptions{}
+                        : argument<drivers::NumericsOptions>(given.numerics, "numerics", "an mdr.Numerics"),
+        .shear_material = std::move(material.shear_material),
+        .bulk_material = std::move(material.bulk_material),
+        .tangential = std::move(tangential),
+        .tangential_exact = material.tangential_exact,
+        .material_origin = std::move(material.origin),
+        .units = std::string(system.name)};
+    if (const drivers::ShoreTest* shore = built.shore()) {
+        set_shore_test(built, *shore, !given.indenter.is_none(), system);
+    } else {
+        built.indenter = argument<std::shared_ptr<profile::Profile>>(given.indenter, "indenter", "an mdr.Indenter");
+    }
+    if (!given.end.is_none()) {
+        built.end_time = argument<double>(given.end, "load.end", "a number");
+    } else if (built.load.history) {  // else drivers::validate refuses the case
+        built.end_time = io::default_end_time(built.load, impact, built.tangential);
+    }
+    if (!given.layer.is_none()) built.layer = argument<contact::Layer>(given.layer, "layer", "an mdr.Layer");
+    drivers::validate(built);
+    drivers::validate_layer(built);
+    return built;
+}
+
+contact::LayerInterface layer_interface(const std::string& name) {
+    for (const auto interface : {contact::LayerInterface::bonded, contact::LayerInterface::sliding}) {
+        if (contact::interface_name(interface) == name) return interface;
+    }
+    throw InvalidInput("layer.interface", "\"" + name + "\"", "must be \"bonded\" or \"sliding\"");
+}
+
+void bind_controls(py::module_& module) {
+    py::class_<drivers::DisplacementControl>(module, "DisplacementControl",
+                                             "The history prescribes the depth d(t) [m]; the force follows (eq. 16).")
+        .def(py::init<>())
+        .def("__repr__", [](const drivers::DisplacementControl&) { return "DisplacementControl()"; });
+    py::class_<drivers::ForceControl>(module, "ForceControl",
+                                      "The history prescribes the force F(t) >= 0 [N]; the depth is solved for each "
+                                      "step (eq. 19).")
+        .def(py::init<>())
+        .def("__repr__", [](const drivers::ForceControl&) { return "ForceControl()"; });
+    py::class_<drivers::SpringControl>(module, "SpringControl", R"doc(The history prescribes the base z(t) [m] of a
+linear spring k on the massless indenter: F = k (z - d), the spring unloaded at first contact.
+
+Parameters
+----------
+spring_constant : float
+    k [N/m] > 0 (``load.spring_constant``).
+force_pauses : sequence of (float, float), optional
+    Pauses (start, end) [s] over which the instrument's feedback holds the force (``load.force_pauses``).
+)doc")
+        .def(py::init([](double spring_constant, const Points& force_pauses) {
+                 drivers::SpringControl control{.spring_constant = spring_constant};
+                 for (const auto& [start, end] : force_pauses) control.force_pauses.push_back({start, end});
+                 return control;
+             }),
+             py::kw_only(), py::arg("spring_constant"), py::arg("force_pauses") = Points{})
+        .def_readonly("spring_constant", &drivers::SpringControl::spring_constant, "k [N/m]")
+        .def_property_readonly(
+            "force_pauses",
+            [](const drivers::SpringControl& control) {
+                Points pauses;
+                for (const drivers::ForcePause& pause : control.force_pauses) {
+                    pauses.emplace_back(pause.start, pause.end);
+                }
+                return pauses;
+            },
+            "The pauses (start, end) [s].")
+        .def_readonly("shore", &drivers::SpringControl::shore, "The Shore test of a durometer's spring, or None.")
+        .def("__repr__", [](const drivers::SpringControl& control) {
+            return fmt::format("SpringControl(spring_constant={}, force_pauses={})", control.spring_constant,
+                               control.force_pauses.size());
+        });
+    py::class_<drivers::ShoreTest>(module, "ShoreTest", R"doc(A Shore durometer test (control = "shore"): the
+durometer's spring and the standard's indenter; the foot lands at t = 0 and the readings are measured at 1, 3 and
+15 s (docs/case-format.md, "Shore durometer"). A case with it takes no indenter and no history.
+
+Parameters
+----------
+scale : str
+    "A" (soft rubbers) or "D" (hard rubbers, plastics) (``load.scale``).
+duration : float, optional
+    The test's duration [s] > 0 (``load.duration``), default 15 s.
+)doc")
+        .def(py::init([](const std::string& scale, double duration) {
+                 return drivers::make_shore_test(drivers::shore_scale_named(scale), duration);
+             }),
+             py::kw_only(), py::arg("scale"), py::arg("duration") = drivers::shore_default_duration)
+        .def_property_readonly("scale",
+                               [](const drivers::ShoreTest& test) {
+                                   return test.scale == drivers::ShoreScale::A ? "A" : "D";
+                               })
+        .def_readonly("duration", &drivers::ShoreTest::duration, "[s]");
+    py::class_<drivers::ObliqueImpactLoad>(module, "ObliqueImpact", R"doc(The tangential part of an oblique impact
+of a sphere (eq. 48-50): local Coulomb friction and the contact point's sliding at v_t - R omega.
+
+Parameters
+----------
+friction : float
+    mu >= 0 (``tangential.friction``).
+tangential_velocity : float, optional
+    v_t0 [m/s] of the centre along x at first contact (``load.tangential_velocity``), default 0.
+spin : float, optional
+    omega0 [rad/s] at first contact (``load.spin``), default 0.
+moment_of_inertia : float, optional
+    I [kg m^2] about the centre (``indenter.moment_of_inertia``); default a solid sphere's 2/5 m R^2.
+)doc")
+        .def(py::init([](double friction, double tangential_velocity, double spin,
+                         std::optional<double> moment_of_inertia) {
+                 return drivers::ObliqueImpactLoad{friction, tangential_velocity, spin, moment_of_inertia};
+             }),
+             py::kw_only(), py::arg("friction"), py::arg("tangential_velocity") = 0.0, py::arg("spin") = 0.0,
+             py::arg("moment_of_inertia") = py::none())
+        .def_readonly("friction", &drivers::ObliqueImpactLoad::friction)
+        .def_readonly("tangential_velocity", &drivers::ObliqueImpactLoad::tangential_velocity)
+        .def_readonly("spin", &drivers::ObliqueImpactLoad::spin)
+        .def_readonly("moment_of_inertia", &drivers::ObliqueImpactLoad::moment_of_inertia);
+    py::class_<drivers::ImpactControl>(module, "ImpactControl", R"doc(A rigid indenter of mass m hits the surface at
+t = 0 with speed v0 (eq. 37); the run ends when the contact does (eq. 39).
+
+Parameters
+----------
+mass : float
+    m [kg] (``indenter.mass``).
+velocity : float
+    v0 [m/s] > 0 (``load.velocity``).
+oblique : mdr.ObliqueImpact, optional
+    The tangential part of an oblique impact.
+)doc")
+        .def(py::init([](double mass, double velocity, std::optional<drivers::ObliqueImpactLoad> oblique) {
+                 return drivers::ImpactControl{mass, velocity, std::move(oblique)};
+             }),
+             py::kw_only(), py::arg("mass"), py::arg("velocity"), py::arg("oblique") = py::none())
+        .def_readonly("mass", &drivers::ImpactControl::mass)
+        .def_readonly("velocity", &drivers::ImpactControl::velocity)
+        .def_readonly("oblique", &drivers::ImpactControl::oblique)
+        .def("__repr__", [](const drivers::ImpactControl& control) {
+            return fmt::format("ImpactControl(mass={}, velocity={}{})", control.mass, control.velocity,
+                               control.oblique ? ", oblique=..." : "");
+        });
+}
+
+void bind_load_parts(py::module_& module) {
+    py::class_<drivers::HarmonicLoad>(module, "Harmonic", R"doc(A harmonic part of a load: amplitude sin(2 pi f
+(t - start)) from start to end, held at its end value after it (``load.harmonic``, or a harmonic tangential load).
+
+Parameters
+----------
+amplitude, frequency, start, end : float
+    The amplitude in the controlled quantity's unit, f [Hz] > 0, and the times [s], end > start.
+)doc")
+        .def(py::init([](double amplitude, double frequency, double start, double end) {
+                 return drivers::HarmonicLoad{amplitude, frequency, start, end};
+             }),
+             py::kw_only(), py::arg("amplitude"), py::arg("frequency"), py::arg("start"), py::arg("end"))
+        .def_readonly("amplitude", &drivers::HarmonicLoad::amplitude)
+        .def_readonly("frequency", &drivers::HarmonicLoad::frequency)
+        .def_readonly("start", &drivers::HarmonicLoad::start)
+        .def_readonly("end", &drivers::HarmonicLoad::end);
+    py::class_<drivers::NumericsOptions>(module, "Numerics", R"doc(The choices of ``[numerics]``; None: the default
+from the problem's scales (docs/case-format.md).
+
+Parameters
+----------
+elements : int, optional
+time_step, half_width : float, optional
+output_every : int, optional
+max_element_steps, max_memory : float, optional
+)doc")
+        .def(py::init([](std::optional<std::size_t> elements, std::optional<double> time_step,
+                         std::optional<double> half_width, std::size_t output_every,
+                         std::optional<double> max_element_steps, std::optional<double> max_memory) {
+                 return drivers::NumericsOptions{elements, time_step, half_width, output_every, max_element_steps,
+                                                 max_memory};
+             }),
+             py::kw_only(), py::arg("elements") = py::none(), py::arg("time_step") = py::none(),
+             py::arg("half_width") = py::none(), py::arg("output_every") = 1,
+             py::arg("max_element_steps") = py::none(), py::arg("max_memory") = py::none())
+        .def_readonly("elements", &drivers::NumericsOptions::elements)
+        .def_readonly("time_step", &drivers::NumericsOptions::time_step)
+        .def_readonly("half_width", &drivers::NumericsOptions::half_width)
+        .def_readonly("output_every", &drivers::NumericsOptions::output_every)
+        .def_readonly("max_element_steps", &drivers::NumericsOptions::max_element_steps)
+        .def_readonly("max_memory", &drivers::NumericsOptions::max_memory);
+    py::class_<drivers::TangentialLoad>(module, "Tangential", R"doc(Tangential loading superimposed on the normal
+contact (``[tangential]``, handbook section 6): local Coulomb friction and a history or a harmonic.
+
+Parameters
+----------
+friction : float
+    mu >= 0.
+control : str, optional
+    "displacement" (u(t) [m], the default) or "force" (F_x(t) [N]).
+history : sequence of (float, float), optional
+    (t, u) or (t, F_x) points, without jumps.
+harmonic : mdr.Harmonic, optional
+    A harmonic load instead of a history (exactly one of the two).
+)doc")
+        .def(py::init([](double friction, const std::string& control, const py::object& history,
+                         std::optional<drivers::HarmonicLoad> harmonic) {
+                 return drivers::TangentialLoad{friction, drivers::tangential_control_named(control).control,
+                                                drivers::Load{load_history(history, "tangential.history"), harmonic}};
+             }),
+             py::kw_only(), py::arg("friction"), py::arg("control") = "displacement", py::arg("history") = py::none(),
+             py::arg("harmonic") = py::none())
+        .def_readonly("friction", &drivers::TangentialLoad::friction)
+        .def_property_readonly(
+            "control",
+            [](const drivers::TangentialLoad& load) { return drivers::tangential_control_kind(load.control).name; })
+        .def_property_readonly("history",
+                               [](const drivers::TangentialLoad& load) { return history_points(load.load.history); })
+        .def_property_readonly("harmonic", [](const drivers::TangentialLoad& load) { return load.load.harmonic; });
+    py::class_<contact::Layer>(module, "Layer", R"doc(A layer of finite thickness on a rigid substrate (``[layer]``).
+
+Parameters
+----------
+thickness : float
+    h [m] > 0.
+interface : str, optional
+    "bonded" (the default) or "sliding".
+)doc")
+        .def(py::init([](double thickness, const std::string& interface) {
+                 return contact::Layer{thickness, layer_interface(interface)};
+             }),
+             py::kw_only(), py::arg("thickness"), py::arg("interface") = "bonded")
+        .def_readonly("thickness", &contact::Layer::thickness)
+        .def_property_readonly("interface",
+                               [](const contact::Layer& layer) { return contact::interface_name(layer.interface); });
+}
+
+}  // namespace
+
+void bind_contact_case(py::module_& module) {
+    bind_controls(module);
+    bind_load_parts(module);
+    py::class_<drivers::ContactCase>(module, "ContactCase", R"doc(A contact case as objects: the library's
+drivers::ContactCase, checked at construction by the rules of a case file (mdr.InvalidInput naming the key).
+
+Parameters
+----------
+material : mdr.Material
+    The half-space (one incompressible body). An mdr.ConvertedMaterial keeps its series and certificate.
+indenter : mdr.Indenter
+    The indenter; none with an mdr.ShoreTest (the standard's).
+control : mdr.DisplacementControl, mdr.ForceControl, mdr.SpringControl, mdr.ImpactControl or mdr.ShoreTest
+history : sequence of (float, float), optional
+    The (t, value) points of the controlled quantity (``load.history``); an impact and a Shore test have none.
+harmonic : mdr.Harmonic, optional
+    A harmonic part added to the history (``load.harmonic``).
+end : float, optional
+    Last time simulated [s] (``load.end``); default the history's end (an impact: when its contact ends).
+snapshots : sequence of float, optional
+    Times of pressure profiles [s] (``output.snapshots``).
+numerics : mdr.Numerics, optional
+tangential : mdr.Tangential, optional
+layer : mdr.Layer, optional
+title : str, optional
+units : str, optional
+    The declared unit system (``units``), default "SI".
+
+Examples
+--------
+>>> case = mdr.ContactCase(material=mdr.Material.elastic(G=1e6), indenter=mdr.Indenter.sphere(R=0.01),
+...                        control=mdr.DisplacementControl(), history=[(0.0, 0.0), (1.0, 1e-4)])
+>>> round(mdr.run(case).summary["max_force"], 4)   # Hertz: 16/3 G sqrt(R) d^(3/2)
+0.5333
+)doc")
+        .def(py::init([](const py::object& material, const py::object& indenter, const py::object& control,
+                         const py::object& history, const py::object& harmonic, const py::object& end,
+                         const py::object& snapshots, const py::object& numerics, const py::object& tangential,
+                         const py::object& layer, const std::string& title, const std::string& units) {
+                 return contact_case(CaseArguments{material, indenter, control, history, harmonic, end, snapshots,
+                                                   numerics, tangential, layer, title, units});
+             }),
+             py::kw_only(), py::arg("material"), py::arg("indenter") = py::none(), py::arg("control"),
+             py::arg("history") = py::none(), py::arg("harmonic") = py::none(), py::arg("end") = py::none(),
+             py::arg("snapshots") = py::none(), py::arg("numerics") = py::none(), py::arg("tangential") = py::none(),
+             py::arg("layer") = py::none(), py::arg("title") = "", py::arg("units") = "SI")
+        .def_static("from_file", &io::load_case, py::arg("path"),
+                    "The case of a TOML case file (docs/case-format.md), read by the command line's reader.")
+        .def_static(
+            "from_dict",
+            [](const py::dict& tree) {
+                const py::object plain = py::module_::import("mdr._case_tree").attr("plain_tree")(tree);
+                return case_template(plain, "case").build();
+            },
+            py::arg("case"),
+            "The case of a dict with a case file's structure (values may be numpy numbers and arrays, mdr.Material "
+            "and mdr.Indenter), read by the case file's reader without text.")
+        .def_readonly("title", &drivers::ContactCase::title)
+        .def_readonly("material", &drivers::ContactCase::material,
+                      "The normal problem's material (a plain mdr.Material; its certificate is material_error).")
+        .def_property_readonly(
+            "indenter",
+            [](const drivers::ContactCase& contact_case) {
+                return std::const_pointer_cast<profile::Profile>(contact_case.indenter);
+            })
+        .def_readonly("control", &drivers::ContactCase::control)
+        .def_property_readonly(
+            "history",
+            [](const drivers::ContactCase& contact_case) { return history_points(contact_case.load.history); })
+        .def_property_readonly("harmonic",
+                               [](const drivers::ContactCase& contact_case) { return contact_case.load.harmonic; })
+        .def_readonly("end", &drivers::ContactCase::end_time)
+        .def_readonly("snapshots", &drivers::ContactCase::snapshots)
+        .def_readonly("numerics", &drivers::ContactCase::numerics)
+        .def_readonly("tangential", &drivers::ContactCase::tangential)
+        .def_readonly("layer", &drivers::ContactCase::layer)
+        .def_readonly("units", &drivers::ContactCase::units)
+        .def_property_readonly(
+            "material_error",
+            [](const drivers::ContactCase& contact_case) -> std::optional<double> {
+                const auto& certificate = contact_case.material_origin.certificate;
+                return certificate ? std::optional<double>(certificate->error) : std::nullopt;
+            },
+            "The certified relative error of a converted material's series (None for an exact one).")
+        .def_property_readonly(
+            "material_window",
+            [](const drivers::ContactCase& contact_case) -> std::optional<std::pair<double, double>> {
+                const auto& certificate = contact_case.material_origin.certificate;
+                if (!certificate) return std::nullopt;
+                return std::pair{certificate->window.shortest, certificate->window.longest};
+            },
+            "The lags (shortest, longest) [s] over which a converted material's series is certified (None: exact).")
+        .def("__repr__", [](const drivers::ContactCase& contact_case) {
+            return "ContactCase(" + io::describe(contact_case) + ")";
+        });
+}
+
+}  // namespace mdr::python

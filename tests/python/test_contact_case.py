@@ -1,0 +1,372 @@
+"""mdr.ContactCase (issue 27): a case built as objects, run without text. Each control against a closed form, the
+object path against a case file (two entry points of one core), observers, converted materials and bad input."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import mdr
+
+G, R = 1.0e6, 0.01
+
+
+def hertz_force(depth, shear_modulus=G, radius=R):
+    """Hertz: F = (4/3) E* sqrt(R) d^(3/2), E* = 4 G for an incompressible half-space under a rigid sphere."""
+    return 16.0 / 3.0 * shear_modulus * math.sqrt(radius) * np.asarray(depth) ** 1.5
+
+
+def sphere():
+    return mdr.Indenter.sphere(R=R)
+
+
+# --- each control against a closed form ---------------------------------------------------------------------------
+
+def test_displacement_control_gives_the_hertz_force():
+    case = mdr.ContactCase(material=mdr.Material.elastic(G=G), indenter=sphere(), control=mdr.DisplacementControl(),
+                           history=[(0.0, 0.0), (1.0, 1e-4)])
+    history = mdr.run(case).history
+    loaded = history["d"] > 1e-5
+    np.testing.assert_allclose(history["F"][loaded], hertz_force(history["d"][loaded]), rtol=1e-5)
+
+
+def test_force_step_on_a_kelvin_voigt_body_creeps_as_lee_radok():
+    """Under a force step F0 the contact only grows, so Lee & Radok hold: d^(3/2)(t) = 3 F0 J(t) / (16 sqrt(R)) with
+    the Kelvin-Voigt creep J(t) = (1 - exp(-t G / eta)) / G."""
+    eta, force = 1e5, 0.05
+    case = mdr.ContactCase(material=mdr.Material.kelvin_voigt(G=G, eta=eta), indenter=sphere(),
+                           control=mdr.ForceControl(), history=[(0.0, force), (1.0, force)])
+    history = mdr.run(case).history
+    t, d = history["t"], history["d"]
+    late = t > 0.01
+    creep = (1.0 - np.exp(-t[late] * G / eta)) / G
+    expected = (3.0 * force * creep / (16.0 * math.sqrt(R))) ** (2.0 / 3.0)
+    np.testing.assert_allclose(d[late], expected, rtol=1e-4)
+
+
+def test_spring_control_balances_the_spring_against_hertz():
+    """F = k (z - d) and F = Hertz(d) at every row: d is the root of k (z - d) = 16/3 G sqrt(R) d^(3/2)."""
+    k = 2e3
+    case = mdr.ContactCase(material=mdr.Material.elastic(G=G), indenter=sphere(),
+                           control=mdr.SpringControl(spring_constant=k), history=[(0.0, 0.0), (1.0, 2e-4)])
+    history = mdr.run(case).history
+    z = 2e-4 * history["t"]
+    depth = np.empty_like(z)
+    for i, base in enumerate(z):  # bisection on the monotone residual
+        low, high = 0.0, base
+        for _ in range(200):
+            middle = 0.5 * (low + high)
+            low, high = (middle, high) if k * (base - middle) > hertz_force(middle) else (low, middle)
+        depth[i] = 0.5 * (low + high)
+    np.testing.assert_allclose(history["d"], depth, rtol=1e-5, atol=1e-12)
+    np.testing.assert_allclose(history["F"], k * (z - depth), rtol=1e-5, atol=1e-9)
+
+
+def test_spring_force_pause_holds_the_force():
+    k = 2e4
+    control = mdr.SpringControl(spring_constant=k, force_pauses=[(1.0, 4.0)])
+    case = mdr.ContactCase(material=mdr.Material.standard(G_inf=1e6, G1=2e6, tau1=1.0), indenter=sphere(),
+                           control=control, history=[(0.0, 0.0), (1.0, 1e-4), (4.0, 1e-4), (5.0, -5e-5)],
+                           numerics=mdr.Numerics(elements=200))
+    assert case.control.force_pauses == [(1.0, 4.0)]
+    history = mdr.run(case).history
+    pause = (history["t"] >= 1.0) & (history["t"] <= 4.0)
+    np.testing.assert_allclose(history["F"][pause], history["F"][pause][0], rtol=1e-12)
+    assert history["d"][pause][-1] > 1.2 * history["d"][pause][0]  # the standard solid crept
+
+
+def test_elastic_impact_follows_hertz():
+    """Elastic Hertz impact: d_max = (15 m v0^2 / (16 E* sqrt(R)))^(2/5) (energy balance), restitution 1, contact
+    time 2.9432 d_max / v0 (Johnson, Contact Mechanics, eq. 11.24)."""
+    mass, velocity = 1e-3, 0.1
+    case = mdr.ContactCase(material=mdr.Material.elastic(G=G), indenter=sphere(),
+                           control=mdr.ImpactControl(mass=mass, velocity=velocity))
+    summary = mdr.run(case).summary
+    depth = (15.0 * mass * velocity**2 / (16.0 * 4.0 * G * math.sqrt(R))) ** 0.4
+    assert summary["max_depth"] == pytest.approx(depth, rel=1e-4)
+    assert summary["restitution"] == pytest.approx(1.0, abs=1e-3)
+    assert summary["contact_time"] == pytest.approx(2.9432 * depth / velocity, rel=1e-3)
+
+
+def test_frictionless_oblique_impact_keeps_its_tangential_velocity_and_spin():
+    oblique = mdr.ObliqueImpact(friction=0.0, tangential_velocity=0.05, spin=3.0)
+    case = mdr.ContactCase(material=mdr.Material.elastic(G=G), indenter=sphere(),
+                           control=mdr.ImpactControl(mass=1e-3, velocity=0.1, oblique=oblique))
+    assert case.control.oblique.spin == 3.0
+    history = mdr.run(case).history
+    np.testing.assert_allclose(history["v_t"], 0.05, rtol=1e-12)
+    np.testing.assert_allclose(history["omega"], 3.0, rtol=1e-12)
+
+
+def test_a_shore_test_brings_its_indenter_and_reads_as_the_case_file():
+    material = mdr.Material.standard(G_inf=1e6, G1=1e6, tau1=2.0)
+    case = mdr.ContactCase(material=material, control=mdr.ShoreTest(scale="A"))
+    assert case.control.shore.scale == "A" and case.control.shore.duration == 15.0
+    from_objects = mdr.run(case)
+    from_dict = mdr.run(material=material, load={"control": "shore", "scale": "A"})
+    for column, values in from_dict.history.items():
+        np.testing.assert_array_equal(from_objects.history[column], values, err_msg=column)
+    assert from_objects.summary["shore_1s"] == from_dict.summary["shore_1s"]
+    again = mdr.ContactCase(material=material, control=case.control)  # a durometer's spring read back
+    assert mdr.run(again).summary["shore_15s"] == from_dict.summary["shore_15s"]
+
+
+# --- the object path against a case file ---------------------------------------------------------------------------
+
+CASE_FILES = {
+    "harmonic": ("""
+[material]
+model = "standard"
+G_inf = 1e6
+G1 = 2e6
+tau1 = 0.2
+[indenter]
+shape = "sphere"
+R = 0.01
+[load]
+control = "displacement"
+history = [[0.0, 0.0], [0.5, 1e-4], [2.0, 1e-4]]
+harmonic = { amplitude = 1e-6, frequency = 5.0, start = 0.5, end = 2.0 }
+[output]
+snapshots = [1.0]
+[numerics]
+elements = 300
+""", lambda: mdr.ContactCase(
+        material=mdr.Material.standard(G_inf=1e6, G1=2e6, tau1=0.2), indenter=sphere(),
+        control=mdr.DisplacementControl(), history=[(0.0, 0.0), (0.5, 1e-4), (2.0, 1e-4)],
+        harmonic=mdr.Harmonic(amplitude=1e-6, frequency=5.0, start=0.5, end=2.0), snapshots=[1.0],
+        numerics=mdr.Numerics(elements=300))),
+    "tangential": ("""
+[material]
+model = "maxwell"
+G = 1e6
+tau = 0.5
+[indenter]
+shape = "sphere"
+R = 0.01
+[load]
+control = "force"
+history = [[0.0, 0.0], [0.5, 0.1], [2.0, 0.1]]
+[tangential]
+friction = 0.3
+history = [[0.0, 0.0], [0.5, 0.0], [1.5, 2e-6]]
+[numerics]
+elements = 300
+""", lambda: mdr.ContactCase(
+        material=mdr.Material.maxwell(G=1e6, tau=0.5), indenter=sphere(), control=mdr.ForceControl(),
+        history=[(0.0, 0.0), (0.5, 0.1), (2.0, 0.1)],
+        tangential=mdr.Tangential(friction=0.3, history=[(0.0, 0.0), (0.5, 0.0), (1.5, 2e-6)]),
+        numerics=mdr.Numerics(elements=300))),
+    "layer": ("""
+[material]
+model = "elastic"
+G = 1e6
+[indenter]
+shape = "sphere"
+R = 0.01
+[load]
+control = "displacement"
+history = [[0.0, 0.0], [1.0, 5e-5]]
+[layer]
+thickness = 1e-3
+interface = "sliding"
+""", lambda: mdr.ContactCase(
+        material=mdr.Material.elastic(G=1e6), indenter=sphere(), control=mdr.DisplacementControl(),
+        history=[(0.0, 0.0), (1.0, 5e-5)], layer=mdr.Layer(thickness=1e-3, interface="sliding"))),
+}
+
+
+@pytest.mark.parametrize("name", sorted(CASE_FILES))
+def test_objects_run_as_the_same_case_file(tmp_path, name):
+    text, build = CASE_FILES[name]
+    path = tmp_path / f"{name}.toml"
+    path.write_text(text)
+    from_file, from_objects = mdr.run(str(path)), mdr.run(build())
+    assert from_file.history.keys() == from_objects.history.keys()
+    for column, values in from_file.history.items():
+        np.testing.assert_array_equal(from_objects.history[column], values, err_msg=column)
+    for column, values in from_file.profiles.items():
+        np.testing.assert_array_equal(from_objects.profiles[column], values, err_msg=column)
+    numbers = [key for key, value in from_file.summary.items()
+               if isinstance(value, float) and key != "wall_seconds"]
+    assert numbers and all(from_objects.summary[key] == from_file.summary[key] for key in numbers)
+    for read in (mdr.ContactCase.from_file(str(path)), mdr.ContactCase.from_dict(__import__("tomllib").loads(text))):
+        np.testing.assert_array_equal(mdr.run(read).history["F"], from_file.history["F"])
+
+
+def test_a_case_reads_back_its_parts(tmp_path):
+    case = CASE_FILES["harmonic"][1]()
+    assert isinstance(case.control, mdr.DisplacementControl)
+    assert case.history == [(0.0, 0.0), (0.5, 1e-4), (2.0, 1e-4)] and case.end == 2.0
+    assert case.harmonic.frequency == 5.0 and case.numerics.elements == 300 and case.snapshots == [1.0]
+    assert mdr.check(case) == repr(case)[len("ContactCase("):-1]
+
+
+# --- a converted material keeps its certificate -------------------------------------------------------------------
+
+def test_a_converted_material_keeps_its_series_and_certificate():
+    """The object path runs the series given, certified over its own window; the dict path converts the model again
+    over the case's window (docs/python.md)."""
+    material = mdr.Material.power_law(G0=1e3, beta=0.2, window=(1e-3, 10.0))
+    case = mdr.ContactCase(material=material, indenter=sphere(), control=mdr.ForceControl(),
+                           history=[(0.0, 0.0), (1.0, 1e-4), (2.0, 1e-4)])
+    assert case.material.terms == material.terms
+    assert case.material_window == (1e-3, 10.0) and case.material_error == material.material_error
+    summary = mdr.run(case).summary
+    assert summary["material_window"] == [1e-3, 10.0] and summary["material_error"] == material.material_error
+    assert "power_law (G0 = 1000 Pa" in mdr.check(case)
+
+
+def test_a_pickled_converted_material_runs_as_the_original():
+    """The description and the conversion's times travel with the pickle (a Dask worker's copy), so the default
+    time step (resolve_numerics: no material-time cap for a converted series' nodes) and the text are the same."""
+    import pickle
+
+    material = mdr.Material.power_law(G0=1e3, beta=0.3, window=(1e-4, 10.0))
+    copy = pickle.loads(pickle.dumps(material))
+
+    def run(given):
+        return mdr.run(mdr.ContactCase(material=given, indenter=sphere(), control=mdr.DisplacementControl(),
+                                       history=[(0.0, 0.0), (1.0, 1e-5)]))
+
+    original, copied = run(material), run(copy)
+    assert copied.description == original.description and copied.summary["steps"] == original.summary["steps"]
+    np.testing.assert_array_equal(copied.history["F"], original.history["F"])
+
+
+# --- observers ----------------------------------------------------------------------------------------------------
+
+def displacement_case():
+    return mdr.ContactCase(material=mdr.Material.standard(G_inf=1e6, G1=2e6, tau1=0.1), indenter=sphere(),
+                           control=mdr.DisplacementControl(), history=[(0.0, 0.0), (1.0, 1e-4), (2.0, 0.0)],
+                           numerics=mdr.Numerics(elements=200))
+
+
+def test_observers_see_every_step_in_order():
+    seen, also = [], []
+    result = mdr.run(displacement_case(), observers=[seen.append, lambda step: also.append(step.step)])
+    history = result.history
+    assert [step.step for step in seen] == list(range(len(history["t"]))) == also
+    np.testing.assert_array_equal([step.time for step in seen], history["t"])
+    np.testing.assert_array_equal([step.force for step in seen], history["F"])
+    np.testing.assert_array_equal([step.depth for step in seen], history["d"])
+    np.testing.assert_array_equal([step.contact_radius for step in seen], history["a"])
+    np.testing.assert_array_equal([step.load for step in seen], history["d"])  # displacement control: d prescribed
+    assert seen[-1].fraction == 1.0 and all(step.settled for step in seen)
+
+
+def test_an_observer_stops_a_run_and_its_exception_propagates():
+    times = []
+
+    def until_one(step):
+        times.append(step.time)
+        return step.time >= 1.0
+
+    stopped = mdr.run(displacement_case(), observers=[until_one]).history
+    assert stopped["t"][-1] == 1.0 and times[-1] == 1.0 and len(times) == len(stopped["t"])
+    assert stopped["d"][-1] == pytest.approx(1e-4)
+
+    class Abandon(Exception):
+        pass
+
+    def fail(step):
+        if step.time > 0.5:
+            raise Abandon(step.time)
+
+    with pytest.raises(Abandon):
+        mdr.run(displacement_case(), observers=[fail])
+
+
+def test_observers_with_a_case_file_and_bad_observers(tmp_path):
+    path = tmp_path / "case.toml"
+    path.write_text(CASE_FILES["tangential"][0])
+    steps = []
+    result = mdr.run(str(path), observers=[steps.append])
+    assert len(steps) == len(result.history["t"])
+    for bad in (len, [1], "abc"):
+        with pytest.raises(TypeError, match="observers"):
+            mdr.run(displacement_case(), observers=bad)
+    with pytest.raises(mdr.InvalidInput, match="^layer = .*step observers"):  # drivers::run_layer_indentation
+        mdr.run(CASE_FILES["layer"][1](), observers=[steps.append])
+
+
+# --- bad input ----------------------------------------------------------------------------------------------------
+
+def keywords(**changes):
+    given = dict(material=mdr.Material.elastic(G=G), indenter=sphere(), control=mdr.SpringControl(spring_constant=1e3),
+                 history=[(0.0, 0.0), (1.0, 1e-4)])
+    given.update(changes)
+    return given
+
+
+def test_the_rules_and_messages_are_the_case_files():
+    with pytest.raises(mdr.InvalidInput) as from_objects:
+        mdr.ContactCase(**keywords(control=mdr.SpringControl(spring_constant=-5.0)))
+    with pytest.raises(mdr.InvalidInput) as from_dict:
+        mdr.check(material={"model": "elastic", "G": G}, indenter={"shape": "sphere", "R": R},
+                  load={"control": "spring", "spring_constant": -5.0, "history": [[0.0, 0.0], [1.0, 1e-4]]})
+    assert str(from_objects.value) == str(from_dict.value)
+    assert str(from_objects.value).startswith("load.spring_constant = -5")
+
+
+@pytest.mark.parametrize("changes, error, key", [
+    (dict(history=[(0.0, 0.0), (-1.0, 1e-4)]), mdr.InvalidInput, "load.history[1]"),
+    (dict(control=mdr.ImpactControl(mass=1e-3, velocity=-1.0), history=None), mdr.InvalidInput, "load.velocity"),
+    (dict(control=mdr.ForceControl(), history=[(0.0, 0.0), (1.0, -1.0)]), mdr.InvalidInput, "load.history"),
+    (dict(harmonic=mdr.Harmonic(amplitude=1e-6, frequency=-1.0, start=0.0, end=1.0)), mdr.InvalidInput,
+     "load.harmonic.frequency"),
+    (dict(numerics=mdr.Numerics(time_step=-1.0)), mdr.InvalidInput, "numerics.time_step"),
+    (dict(end=-1.0), mdr.InvalidInput, "load.end"),
+    (dict(tangential=mdr.Tangential(friction=-0.1, history=[(0.0, 0.0), (1.0, 1e-6)])), mdr.InvalidInput,
+     "tangential.friction"),
+    (dict(layer=mdr.Layer(thickness=-1e-3)), mdr.InvalidInput, "layer.thickness"),
+    (dict(units="furlong"), mdr.InvalidInput, "units"),
+    (dict(control=mdr.ImpactControl(mass=1e-3, velocity=0.1)), mdr.InvalidInput, "load.history = [(0.0, 0.0), (1.0"),
+    (dict(control=mdr.ImpactControl(mass=1e-3, velocity=0.1), history=None,
+          harmonic=mdr.Harmonic(amplitude=1e-6, frequency=1.0, start=0.0, end=1.0)), mdr.InvalidInput, "load.harmonic"),
+    (dict(control=mdr.ShoreTest(scale="A"), indenter=None), mdr.InvalidInput, "load.history"),
+    (dict(control=mdr.ShoreTest(scale="A"), history=None), mdr.InvalidInput, "indenter = [...]: not with control"),
+    (dict(control="spring"), TypeError, "load.control"),
+    (dict(history="0 0 1 1"), TypeError, "load.history"),
+    (dict(material={"model": "elastic", "G": G}), TypeError, "material"),
+    (dict(indenter=None), mdr.InvalidInput, "indenter = (missing)"),
+    (dict(indenter={"shape": "sphere", "R": R}), TypeError, "indenter"),
+    (dict(numerics={"elements": 10}), TypeError, "numerics"),
+    (dict(end="late"), TypeError, "load.end"),
+])
+def test_bad_input_raises_naming_the_key(changes, error, key):
+    with pytest.raises(error) as raised:
+        mdr.ContactCase(**keywords(**changes))
+    assert str(raised.value).startswith(key), str(raised.value)
+
+
+def test_bad_parts_raise_naming_the_field():
+    with pytest.raises(mdr.InvalidInput, match="^R = -0.01"):
+        mdr.Indenter.sphere(R=-0.01)
+    with pytest.raises(TypeError, match="stiffness"):
+        mdr.SpringControl(spring_constant=1e3, stiffness=2.0)
+    with pytest.raises(TypeError, match="spring_constant"):
+        mdr.SpringControl(spring_constant="stiff")
+    with pytest.raises(mdr.InvalidInput, match="^tangential.control"):
+        mdr.Tangential(friction=0.1, control="torque", history=[(0.0, 0.0), (1.0, 1e-6)])
+    with pytest.raises(mdr.InvalidInput, match="^load.scale"):
+        mdr.ShoreTest(scale="B")
+    with pytest.raises(mdr.InvalidInput, match="^load.duration"):
+        mdr.ShoreTest(scale="A", duration=-1.0)
+    with pytest.raises(mdr.InvalidInput, match="^layer.interface"):
+        mdr.Layer(thickness=1e-3, interface="glued")
+    with pytest.raises(TypeError):
+        mdr.ContactCase(mdr.Material.elastic(G=G), sphere(), mdr.DisplacementControl())  # keywords only
+
+
+def test_the_docstring_example_holds():
+    import doctest
+
+    finder, runner = doctest.DocTestFinder(), doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
+    tests = finder.find(mdr.ContactCase, "ContactCase", module=False, globs={"mdr": mdr})
+    assert tests and sum(len(test.examples) for test in tests) >= 2
+    for test in tests:
+        runner.run(test)
+    assert runner.summarize(verbose=False).failed == 0
