@@ -21,6 +21,7 @@
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
+#include "mdr/drivers/material_window.hpp"
 #include "mdr/drivers/shore.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
@@ -169,6 +170,11 @@ drivers::ContactCase contact_case(const CaseArguments& given) {
     if (!given.layer.is_none()) built.layer = argument<contact::Layer>(given.layer, "layer", "an mdr.Layer");
     drivers::validate(built);
     drivers::validate_layer(built);
+    if (built.material_origin.certificate) {
+        drivers::require_certified_over(built.material_origin,
+                                        drivers::material_window(built.load, built.end_time, built.numerics,
+                                                                 built.tangential, impact));
+    }
     return built;
 }
 

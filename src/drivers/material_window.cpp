@@ -1,8 +1,11 @@
 #include "mdr/drivers/material_window.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -50,6 +53,29 @@ rheology::TimeWindow material_window(const Load& load, double end_time, const Nu
     const double shortest =
         std::min({step / 5.0, duration / 10.0, fastest / static_cast<double>(min_steps_per_segment) / 5.0});
     return {shortest, duration, std::move(frequencies)};
+}
+
+void require_certified_over(const rheology::MaterialOrigin& origin, const rheology::TimeWindow& needed) {
+    if (!origin.certificate || origin.certificate->kind != "model") return;
+    const rheology::TimeWindow& certified = origin.certificate->window;
+    constexpr double slack = 1e-9;  // the same window computed twice agrees to rounding
+    const auto frequency_covered = [&](double omega) {
+        if (omega * certified.longest >= 1.0 - slack && omega * certified.shortest <= 1.0 + slack) return true;
+        return std::any_of(certified.frequencies.begin(), certified.frequencies.end(),
+                           [&](double named) { return std::abs(named - omega) <= slack * omega; });
+    };
+    const bool lags_covered = certified.shortest <= needed.shortest * (1.0 + slack) &&
+                              certified.longest >= needed.longest * (1.0 - slack);
+    if (lags_covered && std::all_of(needed.frequencies.begin(), needed.frequencies.end(), frequency_covered)) return;
+    std::string frequencies;
+    for (const double omega : needed.frequencies) frequencies += (frequencies.empty() ? "" : ", ") + format_value(omega);
+    throw InvalidInput("material", origin.description,
+                       fmt::format("is certified over the lags [{}, {}] s, which do not cover the case's [{}, {}] s{}: "
+                                   "outside them the series is not the model's; convert the model over the case's "
+                                   "window, or give the model itself (a case converts it over its own window)",
+                                   format_value(certified.shortest), format_value(certified.longest),
+                                   format_value(needed.shortest), format_value(needed.longest),
+                                   frequencies.empty() ? "" : " and the angular frequencies " + frequencies + " rad/s"));
 }
 
 std::size_t rows_before_window(const LoadHistory& history, const std::vector<double>& time, double shortest) {

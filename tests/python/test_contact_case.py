@@ -209,14 +209,30 @@ def test_a_case_reads_back_its_parts(tmp_path):
 def test_a_converted_material_keeps_its_series_and_certificate():
     """The object path runs the series given, certified over its own window; the dict path converts the model again
     over the case's window (docs/python.md)."""
-    material = mdr.Material.power_law(G0=1e3, beta=0.2, window=(1e-3, 10.0))
+    material = mdr.Material.power_law(G0=1e3, beta=0.2, window=(1e-4, 10.0))
     case = mdr.ContactCase(material=material, indenter=sphere(), control=mdr.ForceControl(),
                            history=[(0.0, 0.0), (1.0, 1e-4), (2.0, 1e-4)])
     assert case.material.terms == material.terms
-    assert case.material_window == (1e-3, 10.0) and case.material_error == material.material_error
+    assert case.material_window == (1e-4, 10.0) and case.material_error == material.material_error
     summary = mdr.run(case).summary
-    assert summary["material_window"] == [1e-3, 10.0] and summary["material_error"] == material.material_error
+    assert summary["material_window"] == [1e-4, 10.0] and summary["material_error"] == material.material_error
     assert "power_law (G0 = 1000 Pa" in mdr.check(case)
+
+
+def test_a_converted_material_certified_over_fewer_lags_than_the_case_needs_is_refused():
+    """Issue 27's example: a power law converted over (1e-3, 10) s, a case whose steps (2 s over 2000) need lags from
+    a fifth of 1 ms. Outside its window the series is not the model's (G(0+) 1.5e4 against 2.4e4 Pa), so the case is
+    refused naming the material and both windows, not run on the uncertified part; a harmonic frequency above
+    1 / shortest likewise."""
+    history = [(0.0, 0.0), (1.0, 1e-4), (2.0, 1e-4)]
+    narrow = mdr.Material.power_law(G0=1e3, beta=0.2, window=(1e-3, 10.0))
+    with pytest.raises(mdr.InvalidInput, match=r"material = power_law.*certified over the lags \[0\.001, 10\] s.*"
+                                                r"\[0\.0002, 2\] s"):
+        mdr.ContactCase(material=narrow, indenter=sphere(), control=mdr.ForceControl(), history=history)
+    wide = mdr.Material.power_law(G0=1e3, beta=0.2, window=(1e-4, 10.0))
+    with pytest.raises(mdr.InvalidInput, match=r"angular frequencies"):
+        mdr.ContactCase(material=wide, indenter=sphere(), control=mdr.DisplacementControl(), history=history,
+                        harmonic=mdr.Harmonic(amplitude=1e-6, frequency=5e3, start=0.5, end=2.0), numerics=mdr.Numerics(time_step=1e-5))
 
 
 def test_a_pickled_converted_material_runs_as_the_original():

@@ -4,6 +4,8 @@
 
 #include <numbers>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "mdr/drivers/material_window.hpp"
@@ -78,6 +80,39 @@ TEST(MaterialWindow, RowsBeforeTheWindowFollowAJumpByLessThanItsStart) {
     // 0.5), the rows at 7.
     EXPECT_EQ(rows_before_window(jumps, time, 0.5), 11u);
     EXPECT_EQ(rows_before_window(history, {0.0, 0.5, 1.0, 1.0, 2.0}, 0.5), 0u);  // no jump
+}
+
+// A converted model's certificate over `window` (kind "model" or "fit residual").
+rheology::MaterialOrigin converted(rheology::TimeWindow window, const char* kind = "model") {
+    return {.description = "power_law (G0 = 1000 Pa, beta = 0.2, t0 = 1 s)",
+            .certificate = rheology::Certificate{1e-5, std::move(window), 1e-4, kind}};
+}
+
+TEST(RequireCertifiedOver, AWindowThatCoversTheCasesLagsAndFrequenciesIsTaken) {
+    const rheology::TimeWindow needed{1e-3, 10.0, {two_pi * 5.0}};
+    EXPECT_NO_THROW(require_certified_over(converted({1e-3, 10.0}), needed));     // the same window (a case file's)
+    EXPECT_NO_THROW(require_certified_over(converted({1e-4, 100.0}), needed));    // wider; 5 Hz inside [1/100, 1e4]
+    EXPECT_NO_THROW(require_certified_over(converted({1e-2, 10.0, {two_pi * 5.0}}), {1e-2, 10.0, {two_pi * 5.0}}));
+    EXPECT_NO_THROW(require_certified_over({}, needed));                           // an exact series
+    EXPECT_NO_THROW(require_certified_over(converted({1.0, 10.0}, "fit residual"), needed));  // data keep theirs
+}
+
+TEST(RequireCertifiedOver, LagsOrAFrequencyOutsideTheCertificateAreRefusedNamingTheMaterial) {
+    const auto refused = [](const rheology::TimeWindow& certified, const rheology::TimeWindow& needed) {
+        try {
+            require_certified_over(converted(certified), needed);
+        } catch (const InvalidInput& error) {
+            EXPECT_EQ(error.key(), "material");
+            return std::string(error.what());
+        }
+        return std::string("taken");
+    };
+    EXPECT_NE(refused({1e-3, 10.0}, {1e-4, 10.0}).find("[0.001, 10] s, which do not cover the case's [0.0001, 10]"),
+              std::string::npos);
+    EXPECT_NE(refused({1e-3, 10.0}, {1e-3, 20.0}).find("[0.001, 20] s"), std::string::npos);
+    // 2 pi 500 rad/s = 3142 > 1 / 1e-3: a frequency the series is not certified at.
+    EXPECT_NE(refused({1e-3, 10.0}, {1e-3, 10.0, {two_pi * 500.0}}).find("angular frequencies 3141.59"),
+              std::string::npos);
 }
 
 }  // namespace
