@@ -184,18 +184,5 @@ velocity = 0.1
     EXPECT_LT(thick.impact->restitution, 0.99);  // the dashpot dissipates
 }
 
-TEST(LayerDashpot, AForceThatMakesTheContactGrowAgainIsStillRefusedNamingEta) {
-    // Not built: on the cells a cell entering the contact would take the dashpot's kick within one step (first
-    // order in the cell). Found when the run of Ting's class meets the regrowth.
-    const std::string load = "control = \"force\"\nhistory = [[0.0, 0.0], [1.0, 3.0e-8], [1.5, 1.0e-8], [2.5, 3.0e-8]]";
-    try {
-        run_toml(loaded_case(prony_dashpot, load, "[layer]\nthickness = 2.0e-6\ninterface = \"bonded\"\n"));
-        ADD_FAILURE() << "accepted";
-    } catch (const InvalidInput& error) {
-        EXPECT_EQ(error.key(), "material.eta");
-        EXPECT_NE(std::string(error.what()).find("a contact that grows again"), std::string::npos) << error.what();
-    }
-}
-
 }  // namespace
 }  // namespace mdr
