@@ -143,6 +143,26 @@ LayerCellState LayerCells::step_loaded(double time_step, double right_side, doub
     return advance(time_step, depth_for, spring_constant == 0.0 && right_side > 0.0, rate_);
 }
 
+double LayerCells::regain_fraction(double time_step, double depth, double axis) const {
+    const double viscosity = material_->viscosity();
+    if (!(viscosity > 0.0) || !(time_step > 0.0) || contact_ > 0) return axis_ / (axis_ - axis);
+    // With a dashpot the edge function jumps where the axis touches (q/4 = eta times the rate's jump), so it is not
+    // linear over the step; the free surface's penetration d - g - w1 is: at the step's start, and at its end as the
+    // free surface would have been, w1 + dt rate0 (rate0 from its stress, eq. L16), both extrapolated to the axis
+    // linearly in g (second order in the located time).
+    const auto& terms = material_->terms();
+    const std::size_t branches = terms.size();
+    const auto at_axis = [&](auto&& value) { return value(0) + axis_weight_ * (value(1) - value(0)); };
+    const double surface = at_axis([&](std::size_t i) { return profile_[i] + displacement_[i]; });
+    const double rate = at_axis([&](std::size_t i) {
+        double elastic = material_->equilibrium_modulus() * displacement_[i];
+        for (std::size_t k = 0; k < branches; ++k) elastic += terms[k].modulus * branches_[i * branches + k];
+        return (stress_[i] - elastic) / viscosity;
+    });
+    const double start = depth_ - surface, end = depth - (surface + time_step * rate);
+    return end > start ? std::clamp(start / (start - end), 0.0, 1.0) : 1.0;
+}
+
 template <class DepthRule>
 LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for, bool needs_contact,
                                    std::optional<double> start_rate) {
@@ -230,7 +250,7 @@ LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for,
     } else if (axis_ > 0.0) {
         state.touching_part = {0.0, axis_ / (axis_ - axis)};
     } else if (state.touching) {
-        state.touching_part = {axis_ / (axis_ - axis), 1.0};
+        state.touching_part = {regain_fraction(time_step, depth, axis), 1.0};
     }
     axis_ = axis;
     state.depth = depth;

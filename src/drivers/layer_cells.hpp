@@ -67,6 +67,9 @@ private:
                            std::optional<double> start_rate);
     // eta times the indenter's rate at the step's end, at the end depth `depth` (eq. L16 in contact: w1 = d - g).
     double dashpot_stress(double depth) const;
+    // The fraction of a step of `time_step` [s] to `depth` [m] at which the axis touches again, the edge function at
+    // the axis `axis` at its end (committed state: its start).
+    double regain_fraction(double time_step, double depth, double axis) const;
     // q of the contact set [0, contact) for the step's coefficients and depth, and w1 of the first `free_cells`
     // free cells beyond (O(m^2) for m cells in contact, and O(m) a free cell).
     void solve(std::size_t contact, double depth, std::size_t free_cells);

@@ -72,8 +72,10 @@ TEST(LayerRegrowingDashpot, AThickLayerMeetsTheHalfSpaceUnderAHarmonicDepth) {
             ASSERT_TRUE(layer.harmonic);
             errors.push_back(force_difference(layer, half_space));
             stiffness_errors.push_back(stiffness_difference(layer, half_space));
-            // The standard solid loses the contact for ~21 % of the cycle (0.2134 against 0.2137).
-            EXPECT_NEAR(layer.harmonic->contact_loss_fraction, half_space.harmonic->contact_loss_fraction, 1e-3);
+            // The standard solid loses the contact for ~21 % of the cycle: 6.7e-7 apart at every cell count (the
+            // regain located by the free surface's penetration; by the edge function, which jumps there with a
+            // dashpot, 2.6e-4, first order in the time step).
+            EXPECT_NEAR(layer.harmonic->contact_loss_fraction, half_space.harmonic->contact_loss_fraction, 5e-6);
         }
         // Observed 2.8e-3, 1.6e-3, 7.3e-4 (Kelvin-Voigt) and 1.6e-3, 7.9e-4, 3.9e-4 (standard solid) of the peak
         // force at 100, 200, 400 cells; k' and k'' within 4.0e-5 and 1.5e-4 at 400 cells.
