@@ -105,6 +105,10 @@ LayerContactState LayerContact::at_radius(double contact_radius) const {
     return {a, depth, depth * force_depth - force_profile, force_depth};
 }
 
+double LayerContact::touch_stiffness() const {
+    return indenter_->is_flat_punch() ? at_radius(max_contact_radius_).stiffness : 0.0;
+}
+
 LayerContactState LayerContact::at_depth(double depth, double radius_hint) const {
     const bool usable = radius_hint > 0.0 && radius_hint < max_contact_radius_ && !indenter_->is_flat_punch();
     return at_depth(depth, usable && depth > 0.0 ? at_radius(radius_hint) : LayerContactState{});

@@ -29,9 +29,12 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
       factor_transposed_(cells * cells, 0.0),
       displacement_(cells, 0.0),
       branches_(cells * material.terms().size(), 0.0),
+      stress_(cells, 0.0),
       relaxed_(cells, 0.0),
+      free_relaxed_(cells, 0.0),
       trial_load_(cells, 0.0),
-      trial_displacement_(cells, 0.0) {
+      trial_displacement_(cells, 0.0),
+      trial_stress_(cells, 0.0) {
     if (cells < 2) throw InvalidInput("numerics.elements", std::to_string(cells), "must be >= 2 on a layer");
     const double h = layer.thickness;
     const contact::LayerKernel kernel(layer.interface, poisson_ratio, 2.0 * width / h);
@@ -78,12 +81,18 @@ void LayerCells::solve(std::size_t contact, double depth, std::size_t free_cells
     free_surface(contact, depth, free_cells);
 }
 
+double LayerCells::dashpot_stress(double depth) const {
+    return dashpot_gain_ * (depth - depth_) + dashpot_offset_;
+}
+
 void LayerCells::solve_load(std::size_t contact, double depth) {
-    const double stiffness = coefficients_.stiffness;
-    // Inside: (I - K) q = Q = 4 (stiffness (d - g) + relaxed) on the contact's cells, by the leading block of L.
+    // Inside: (I - K) q = Q = 4 (springs (d - g) + relaxed + eta rate) on the contact's cells, by the leading block
+    // of L (eq. L16 to L18; the dashpot sees the indenter's rate, w1 = d - g).
     std::fill(trial_load_.begin(), trial_load_.end(), 0.0);
+    const double dashpot = dashpot_stress(depth);
     for (std::size_t i = 0; i < contact; ++i) {
-        double value = plane_modulus_per_shear * (stiffness * (depth - profile_[i]) + relaxed_[i]);
+        trial_stress_[i] = springs_ * (depth - profile_[i]) + relaxed_[i] + dashpot;
+        double value = plane_modulus_per_shear * trial_stress_[i];
         for (std::size_t k = 0; k < i; ++k) value -= factor_[i * cells_ + k] * trial_load_[k];
         trial_load_[i] = value / factor_[i * cells_ + i];
     }
@@ -95,8 +104,7 @@ void LayerCells::solve_load(std::size_t contact, double depth) {
 }
 
 void LayerCells::free_surface(std::size_t contact, double depth, std::size_t free_cells) {
-    const double stiffness = coefficients_.stiffness;
-    // Outside q = 0: Q_j = ((I - K) q)_j = 4 (stiffness w1_j + relaxed_j) gives the free surface.
+    // Outside q = 0: Q_j = ((I - K) q)_j = 4 (free stiffness w1_j + free relaxed_j) gives the free surface.
     for (std::size_t i = 0; i < std::min(cells_, contact + free_cells); ++i) {
         if (i < contact) {
             trial_displacement_[i] = depth - profile_[i];
@@ -104,12 +112,13 @@ void LayerCells::free_surface(std::size_t contact, double depth, std::size_t fre
         }
         double load = 0.0;
         for (std::size_t k = 0; k < contact; ++k) load += operator_[i * cells_ + k] * trial_load_[k];
-        trial_displacement_[i] = (load / plane_modulus_per_shear - relaxed_[i]) / stiffness;
+        trial_stress_[i] = load / plane_modulus_per_shear;
+        trial_displacement_[i] = (trial_stress_[i] - free_relaxed_[i]) / free_stiffness_;
     }
 }
 
-LayerCellState LayerCells::step(double time_step, double depth) {
-    return advance(time_step, [depth](std::size_t) { return depth; }, false);
+LayerCellState LayerCells::step(double time_step, double depth, std::optional<double> start_rate) {
+    return advance(time_step, [depth](std::size_t) { return depth; }, false, start_rate);
 }
 
 LayerCellState LayerCells::step_loaded(double time_step, double right_side, double spring_constant, double base) {
@@ -131,25 +140,58 @@ LayerCellState LayerCells::step_loaded(double time_step, double right_side, doub
         for (std::size_t i = 0; i < contact; ++i) at_one += 2.0 * spacing_ * trial_load_[i];
         return (right_side - at_zero) / (at_one - at_zero + spring_constant);
     };
-    return advance(time_step, depth_for, spring_constant == 0.0 && right_side > 0.0);
+    return advance(time_step, depth_for, spring_constant == 0.0 && right_side > 0.0, rate_);
+}
+
+double LayerCells::regain_fraction(double time_step, double depth, double axis) const {
+    const double viscosity = material_->viscosity();
+    if (!(viscosity > 0.0) || !(time_step > 0.0) || contact_ > 0) return axis_ / (axis_ - axis);
+    // With a dashpot the edge function jumps where the axis touches (q/4 = eta times the rate's jump), so it is not
+    // linear over the step; the free surface's penetration d - g - w1 is: at the step's start, and at its end as the
+    // free surface would have been, w1 + dt rate0 (rate0 from its stress, eq. L16), both extrapolated to the axis
+    // linearly in g (second order in the located time).
+    const auto& terms = material_->terms();
+    const std::size_t branches = terms.size();
+    const auto at_axis = [&](auto&& value) { return value(0) + axis_weight_ * (value(1) - value(0)); };
+    const double surface = at_axis([&](std::size_t i) { return profile_[i] + displacement_[i]; });
+    const double rate = at_axis([&](std::size_t i) {
+        double elastic = material_->equilibrium_modulus() * displacement_[i];
+        for (std::size_t k = 0; k < branches; ++k) elastic += terms[k].modulus * branches_[i * branches + k];
+        return (stress_[i] - elastic) / viscosity;
+    });
+    const double start = depth_ - surface, end = depth - (surface + time_step * rate);
+    return end > start ? std::clamp(start / (start - end), 0.0, 1.0) : 1.0;
 }
 
 template <class DepthRule>
-LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for, bool needs_contact) {
+LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for, bool needs_contact,
+                                   std::optional<double> start_rate) {
     foundation::fill_step_coefficients(*material_, time_step, coefficients_);
     const auto& terms = material_->terms();
     const std::size_t branches = terms.size();
-    // Q/4 = G_inf w1 + sum_k G_k (E_k h_k + B_k (w1 - w1_old)) + eta (w1 - w1_old) / dt = stiffness w1 + relaxed
-    // (eq. L16: exact for w1 linear over the step; foundation/step_coefficients.hpp).
+    const double viscosity = material_->viscosity(), dashpot = time_step > 0.0 ? viscosity / time_step : 0.0;
+    // Q/4 = G_inf w1 + sum_k G_k (E_k h_k + B_k (w1 - w1_old)) + eta dw1/dt = springs w1 + relaxed + eta dw1/dt
+    // (eq. L16: exact for w1 linear over the step; foundation/step_coefficients.hpp). The dashpot's rate at the
+    // step's end as on the half-space (docs/theory.md, section 3): in contact the indenter's, trapezoidal from
+    // `start_rate` or the secant one; free, the trapezoidal rate from the cell's own start rate, eta rate0 = Q/4 -
+    // (G_inf w1 + sum_k G_k h_k) at the start (Q = ((I - K) q)_i, nonzero outside the contact on a layer).
+    springs_ = coefficients_.stiffness - dashpot;
+    free_stiffness_ = springs_ + 2.0 * dashpot;
+    dashpot_gain_ = (start_rate ? 2.0 : 1.0) * dashpot;
+    dashpot_offset_ = start_rate && time_step > 0.0 ? -viscosity * *start_rate : 0.0;
     for (std::size_t i = 0; i < cells_; ++i) {
-        double relaxed = 0.0;
+        double relaxed = 0.0, elastic = 0.0;
         for (std::size_t k = 0; k < branches; ++k) {
-            relaxed += terms[k].modulus * (coefficients_.decay[k] * branches_[i * branches + k] -
-                                           coefficients_.gain[k] * displacement_[i]);
+            const double branch = branches_[i * branches + k];
+            relaxed += terms[k].modulus * (coefficients_.decay[k] * branch - coefficients_.gain[k] * displacement_[i]);
+            elastic += terms[k].modulus * branch;
         }
-        // The parallel dashpot's eta (w1 - w1_old) / dt: its eta / dt is in the stiffness.
-        if (time_step > 0.0) relaxed -= material_->viscosity() / time_step * displacement_[i];
         relaxed_[i] = relaxed;
+        free_relaxed_[i] = relaxed;
+        if (dashpot > 0.0) {  // - eta (2 w1_old / dt + rate0)
+            elastic += material_->equilibrium_modulus() * displacement_[i];
+            free_relaxed_[i] -= 2.0 * dashpot * displacement_[i] + (stress_[i] - elastic);
+        }
     }
     // Complementarity (Ting 1968; eq. L18): q >= 0 in contact, the free surface not below the indenter outside.
     // From the last contact set, a cell is dropped while its line load is negative and added while the indenter
@@ -172,6 +214,11 @@ LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for,
             break;
         }
     }
+    if (!(time_step > 0.0) && contact > 0 && material_->viscosity() > 0.0) {
+        throw InvalidInput("material.eta", format_value(material_->viscosity()),
+                           "a jump of the load in contact against a parallel dashpot, with a contact that grows "
+                           "again, is not built on a [layer] yet (issue 28)");
+    }
     if (contact == cells_ && !flat_punch_) {
         throw InvalidInput("layer", "depth " + format_value(depth),
                            "the contact radius would exceed " + format_value(spacing_ * static_cast<double>(cells_)) +
@@ -184,7 +231,7 @@ LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for,
     // at the edge (w1 jumps in slope by q'/E* there): one C1 function (eq. L19).
     const auto edge_function = [&](std::size_t i) {
         return i < contact ? trial_load_[i] / plane_modulus_per_shear
-                           : -coefficients_.stiffness * (trial_displacement_[i] - (depth - profile_[i]));
+                           : -free_stiffness_ * (trial_displacement_[i] - (depth - profile_[i]));
     };
     if (contact == cells_) {
         state.contact_radius = spacing_ * static_cast<double>(cells_);
@@ -203,7 +250,7 @@ LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for,
     } else if (axis_ > 0.0) {
         state.touching_part = {0.0, axis_ / (axis_ - axis)};
     } else if (state.touching) {
-        state.touching_part = {axis_ / (axis_ - axis), 1.0};
+        state.touching_part = {regain_fraction(time_step, depth, axis), 1.0};
     }
     axis_ = axis;
     state.depth = depth;
@@ -215,6 +262,12 @@ LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for,
         }
     }
     displacement_ = trial_displacement_;
+    stress_ = trial_stress_;
+    if (time_step > 0.0) {  // the indenter's rate the dashpots saw; unknown after a step without contact
+        const double secant = (depth - depth_) / time_step;
+        rate_ = contact > 0 ? std::optional<double>(start_rate ? 2.0 * secant - *start_rate : secant) : std::nullopt;
+    }
+    depth_ = depth;
     contact_ = contact;
     return state;
 }

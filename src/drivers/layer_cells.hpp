@@ -6,6 +6,7 @@
 // shear modulus, eq. 56); the contact set by complementarity each step.
 
 #include <cstddef>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -43,18 +44,32 @@ public:
     /// leading blocks factor every contact set).
     LayerCells(const rheology::Rheology& material, const contact::Layer& layer, double poisson_ratio,
                const profile::Profile& indenter, double width, std::size_t cells);
-    /// Steps by `time_step` >= 0 [s] with the depth linear over it to `depth` [m]. Throws mdr::InvalidInput (key
-    /// `layer`) when the contact would reach the last cell (a smooth indenter's contact outgrowing the range).
-    LayerCellState step(double time_step, double depth);
+    /// Steps by `time_step` >= 0 [s] with the depth linear over it to `depth` [m]. A parallel dashpot (eq. L16 with
+    /// eta) sees the indenter's trapezoidal rate 2 dd/dt - `start_rate` [m/s] (the prescribed depth's rate at the
+    /// step's start, where the depth is not linear inside the step: a harmonic), else the secant rate (exact for a
+    /// depth linear over the step). Throws mdr::InvalidInput (key `layer`) when the contact would reach the last
+    /// cell (a smooth indenter's contact outgrowing the range).
+    LayerCellState step(double time_step, double depth, std::optional<double> start_rate = std::nullopt);
     /// Steps by `time_step` >= 0 [s] to the depth at which F(d) + k d = `right_side` [N], k = `spring_constant` >= 0
     /// [N/m]: force control (k = 0, the force), or spring control (k z, z = `base` [m], where the indenter hangs
-    /// without contact). Under force control at zero force the indenter rests on the free surface at the axis.
+    /// without contact). Under force control at zero force the indenter rests on the free surface at the axis. A
+    /// parallel dashpot sees the indenter's trapezoidal rate, carried from step to step (from rest; the secant rate
+    /// for the step after one without contact). With a dashpot a step of no duration in contact (a jump) throws
+    /// mdr::InvalidInput (key `material.eta`).
     LayerCellState step_loaded(double time_step, double right_side, double spring_constant, double base);
 
 private:
     // One step: `depth_for(m)` gives the depth for the contact set [0, m); `needs_contact`: a force without contact.
+    // `start_rate`: the indenter's rate at the step's start that its dashpot term takes (trapezoidal), or none (the
+    // secant rate).
     template <class DepthRule>
-    LayerCellState advance(double time_step, const DepthRule& depth_for, bool needs_contact);
+    LayerCellState advance(double time_step, const DepthRule& depth_for, bool needs_contact,
+                           std::optional<double> start_rate);
+    // eta times the indenter's rate at the step's end, at the end depth `depth` (eq. L16 in contact: w1 = d - g).
+    double dashpot_stress(double depth) const;
+    // The fraction of a step of `time_step` [s] to `depth` [m] at which the axis touches again, the edge function at
+    // the axis `axis` at its end (committed state: its start).
+    double regain_fraction(double time_step, double depth, double axis) const;
     // q of the contact set [0, contact) for the step's coefficients and depth, and w1 of the first `free_cells`
     // free cells beyond (O(m^2) for m cells in contact, and O(m) a free cell).
     void solve(std::size_t contact, double depth, std::size_t free_cells);
@@ -71,12 +86,20 @@ private:
     std::vector<double> factor_transposed_; // L^T, row-major (the back substitution reads rows)
     std::vector<double> displacement_;      // w1_i, committed
     std::vector<double> branches_;          // h_ki, per cell its branches together
+    std::vector<double> stress_;            // Q_i / 4 = ((I - K) q)_i / 4, committed (a free cell's dashpot rate)
     std::size_t contact_ = 0;               // committed contact cells
+    double depth_ = 0.0;                    // d, committed
+    std::optional<double> rate_ = 0.0;      // dd/dt the dashpots saw at the committed node (solved depths)
     double axis_weight_ = 0.0;              // lambda: the axis from the two innermost cells, linear in g
     double axis_ = 0.0;                     // the committed edge function at the axis (> 0: touching)
-    // The step being solved: coefficients, the relaxed part of Q/4 per cell, the trial q and w1.
+    // The step being solved: coefficients, the relaxed part of Q/4 per cell without the dashpot (in contact) and
+    // with it (free), the trial q, w1 and Q/4.
     foundation::StepCoefficients coefficients_;
-    std::vector<double> relaxed_, trial_load_, trial_displacement_;
+    double springs_ = 0.0;         // G_inf + sum_k G_k B_k: Q/4 per w1 in contact, the dashpot apart
+    double free_stiffness_ = 0.0;  // springs + 2 eta/dt: a free cell's Q/4 per w1 (trapezoidal rate)
+    double dashpot_gain_ = 0.0;    // eta/dt times 2 (trapezoidal) or 1 (secant): the contact's dashpot per dd
+    double dashpot_offset_ = 0.0;  // -eta rate0 (trapezoidal) or 0
+    std::vector<double> relaxed_, free_relaxed_, trial_load_, trial_displacement_, trial_stress_;
 };
 
 }  // namespace mdr::drivers

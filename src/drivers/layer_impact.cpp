@@ -21,8 +21,9 @@ IndentationResult run_layer_impact(const ContactCase& contact_case, const contac
     const double approach = contact_case.impact()->velocity;
     const double step = numerics.time_step;
     // A parallel dashpot sees the indenter's trapezoidal rate, the velocity below (docs/theory.md, section 3).
-    LayerStepper stepper(contact_case.material, layer, unit_modulus, 0.0, largest_depth,
-                         {.trapezoidal = contact_case.material.viscosity() > 0.0, .start = approach});
+    LayerStepper stepper(
+        contact_case.material, layer, unit_modulus, 0.0, largest_depth,
+        {.trapezoidal = contact_case.material.viscosity() > 0.0, .start = approach, .indenter_motion = true});
     double time = 0.0, depth = 0.0, velocity = approach, force = 0.0;
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     const auto record = [&](const LayerStep& state) {

@@ -77,7 +77,6 @@ void validate_layer(const ContactCase& contact_case) {
     if (contact_case.spring() && !contact_case.spring()->force_pauses.empty()) {
         refuse("load.force_pauses", "[...]", "a force pause");
     }
-    if (contact_case.load.harmonic) refuse_dashpot_on_cells(contact_case);  // a harmonic runs on cells
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
     if (!contact_case.snapshots.empty()) refuse("output.snapshots", "[...]", "a pressure snapshot");
     layer_poisson_ratio(contact_case);

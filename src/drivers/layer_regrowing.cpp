@@ -12,17 +12,8 @@
 
 namespace mdr::drivers {
 
-void refuse_dashpot_on_cells(const ContactCase& contact_case) {
-    if (contact_case.material.viscosity() > 0.0) {
-        throw InvalidInput("material.eta", format_value(contact_case.material.viscosity()),
-                           "a parallel dashpot with a contact that grows again after it shrank is not built on a "
-                           "[layer] yet (issue 28)");
-    }
-}
-
 IndentationResult run_layer_regrowing(const ContactCase& contact_case, double largest_radius,
                                       const ProgressObserver& progress) {
-    refuse_dashpot_on_cells(contact_case);
     const auto& material = contact_case.material;
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
@@ -38,13 +29,24 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
     const SpringControl* spring = contact_case.spring();
     const double spring_constant = spring ? spring->spring_constant : 0.0;
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
+    const bool sine_rate = displacement && contact_case.load.harmonic && material.viscosity() > 0.0;
     std::size_t reported = 0;
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const double time_step = i == 0 ? 0.0 : grid[i].time - grid[i - 1].time;
         const double value = grid[i].value;
+        // A prescribed depth under a harmonic with a dashpot is not linear inside a step: the dashpot takes the
+        // trapezoidal rate from the prescribed rate at the step's start, the history's slope plus the sine's rate
+        // (second order, as on the half-space, history_stepping.hpp).
+        std::optional<double> start_rate;
+        if (sine_rate && time_step > 0.0) {
+            const auto& harmonic = *contact_case.load.harmonic;
+            const double t0 = grid[i - 1].time, t1 = grid[i].time;
+            const double history_change = (value - harmonic.value(t1)) - (grid[i - 1].value - harmonic.value(t0));
+            start_rate = history_change / time_step + harmonic.rate(t0);
+        }
         // A force's round-off below zero is no pull; a spring's right side is k z.
         const LayerCellState state =
-            displacement ? layer.step(time_step, value)
+            displacement ? layer.step(time_step, value, start_rate)
                          : layer.step_loaded(time_step, spring ? spring_constant * value : std::max(value, 0.0),
                                              spring_constant, value);
         if (i > 0) ++result.steps;

@@ -8,16 +8,13 @@
 
 namespace mdr::drivers {
 
-/// Throws mdr::InvalidInput naming `material.eta` for a parallel dashpot, which LayerCells does not build (a cell
-/// entering the contact would take the dashpot's kick within one step: first order in the cell).
-void refuse_dashpot_on_cells(const ContactCase& contact_case);
-
 /// Runs a displacement-, force- or spring-controlled case with a `[layer]` on LayerCells (under force and spring
 /// control the depth of each step solved from F(d) + k d = the right side, LayerCells::step_loaded):
 /// `numerics.elements` cells (default default_layer_cells) on [0, `largest_radius`] (the widest contact prepared for,
 /// [m]), on the half-space driver's time grid (its harmonic part added and its last full cycle measured as on the
-/// half-space, HarmonicOutcome). Throws as refuse_dashpot_on_cells, and naming key `layer` when the contact outgrows
-/// the range.
+/// half-space, HarmonicOutcome). A parallel dashpot sees the indenter's rates as on the half-space (LayerCells).
+/// Throws mdr::InvalidInput naming key `layer` when the contact outgrows the range, `material.eta` for a jump of the
+/// load in contact against a dashpot.
 IndentationResult run_layer_regrowing(const ContactCase& contact_case, double largest_radius,
                                       const ProgressObserver& progress);
 

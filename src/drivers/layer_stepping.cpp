@@ -13,10 +13,25 @@ LayerStepper::LayerStepper(const rheology::Rheology& material, const contact::La
       loading_(material, time),
       current_{.time = time,
                .rate = dashpot.trapezoidal ? dashpot.start : std::nullopt,
+               .elastic_force_rate = std::nullopt,
                .contact = {},
                .centre_branches = PronyBranches(material),
                .force_branches = PronyBranches(material)},
-      trapezoidal_(dashpot.trapezoidal) {}
+      trapezoidal_(dashpot.trapezoidal), indenter_motion_(dashpot.indenter_motion),
+      touch_stiffness_(dashpot.trapezoidal && !dashpot.indenter_motion ? layer.touch_stiffness() : 0.0) {
+    if (!trapezoidal_ || indenter_motion_) return;
+    if (dashpot.start) {
+        current_.elastic_force_rate = unit_modulus_ * touch_stiffness_ * *dashpot.start;
+    } else if (touch_stiffness_ == 0.0) {
+        current_.elastic_force_rate = 0.0;  // a point touches: F_el's rate is zero whatever the indenter's
+    }
+}
+
+std::optional<double> LayerStepper::depth_rate(const LayerStep& state) const {
+    const double stiffness = state.phase == LayerPhase::growing ? state.contact.stiffness : touch_stiffness_;
+    if (!state.elastic_force_rate || !(stiffness > 0.0)) return std::nullopt;
+    return *state.elastic_force_rate / (unit_modulus_ * stiffness);
+}
 
 double LayerStepper::end_rate(double step, double change) const {
     if (!(step > 0.0)) return current_.rate.value_or(0.0);
@@ -29,30 +44,35 @@ LayerStep LayerStepper::jump(double force) const {
     next.force_slope = 0.0;
     if (force == current_.force) return next;
     const double viscosity = material_->viscosity();
-    // The dashpot's force per rate, eta dF_el/dd (eq. L5: dF_el/dd = E* times the contact's stiffness).
-    const double damping = viscosity * unit_modulus_ * current_.contact.stiffness;
-    const bool in_contact = current_.phase == LayerPhase::growing || current_.phase == LayerPhase::receding;
-    if (!in_contact || !current_.rate || !(damping > 0.0)) {
+    const bool receding = current_.phase == LayerPhase::receding;
+    const bool known = receding ? current_.rate.has_value() : current_.elastic_force_rate.has_value();
+    if (current_.phase == LayerPhase::lifted_off || !known || !(viscosity > 0.0)) {
         next.force = force;
-        next.rate = std::nullopt;
+        next.rate = next.elastic_force_rate = std::nullopt;
         return next;
     }
-    const double rate_jump = (force - current_.force) / damping;
+    next.force = force;
     if (force > current_.force || loading_.steps() == 0) {
-        // A jump up keeps a growing contact growing (eq. L11: only the dashpot's term changes at a fixed depth); a
-        // receding one would grow again.
-        if (current_.phase == LayerPhase::receding) next.grows_again = true;
-        next.rate = *current_.rate + rate_jump;
-        next.force = force;
+        // A jump up keeps a growing contact growing (eq. L11: at a fixed depth only the dashpot's term eta dF_el/dt
+        // changes, also before the touch); a receding one would grow again.
+        if (receding) {
+            next.grows_again = true;
+        } else {
+            next.elastic_force_rate = *current_.elastic_force_rate + (force - current_.force) / viscosity;
+            next.rate = depth_rate(next);
+        }
         return next;
     }
-    if (force <= 0.0) {  // the dashpot pulls the contact off at once
+    next.elastic_force_rate = std::nullopt;
+    if (force <= 0.0 || !current_.rate) {  // the dashpot pulls the contact off at once
         next.phase = LayerPhase::lifted_off;
         next.contact = {};
         next.force = 0.0;
         next.rate = std::nullopt;
         return next;
     }
+    // The dashpot's force per rate, eta dF_el/dd (eq. L5: dF_el/dd = E* times the contact's stiffness).
+    const double rate_jump = (force - current_.force) / (viscosity * unit_modulus_ * current_.contact.stiffness);
     // A jump down: the contact recedes at once (the rate turns), F (eq. L13) increases with the rate through t1
     // (eq. L12).
     const auto residual = [&](double rate) {
@@ -120,11 +140,22 @@ LayerStep LayerStepper::grow_with(double time, const contact::LayerContactState&
     const double viscosity = material_->viscosity();
     double dashpot = step > 0.0 ? viscosity * force_change / step : 0.0;
     double slope = next.force_branches.step_modulus(step);
-    if (trapezoidal_) {
+    if (trapezoidal_ && indenter_motion_) {
         // eta dF_el/dt = eta (E* stiffness) dd/dt at the step's end (eq. L5), dd/dt trapezoidal: its slope 2 eta/dt.
         next.rate = end_rate(step, change);
         dashpot = viscosity * unit_modulus_ * next.contact.stiffness * *next.rate;
         if (current_.rate && step > 0.0) slope += viscosity / step;
+    } else if (trapezoidal_) {
+        // eta dF_el/dt at the step's end, dF_el/dt trapezoidal (2 dF_el/dt - rate0: its slope 2 eta/dt), or the
+        // secant rate where rate0 is unknown.
+        const auto& start_rate = current_.elastic_force_rate;
+        if (step > 0.0) {
+            const double secant = force_change / step;
+            next.elastic_force_rate = start_rate ? 2.0 * secant - *start_rate : secant;
+            if (start_rate) slope += viscosity / step;
+        }
+        dashpot = viscosity * next.elastic_force_rate.value_or(0.0);
+        next.rate = depth_rate(next);
     }
     next.force = material_->equilibrium_modulus() * next.elastic_force + next.force_branches.weighted_sum() + dashpot;
     next.force_slope = slope * unit_modulus_ * next.contact.stiffness;
@@ -140,6 +171,7 @@ LayerStep LayerStepper::recede_at_rate(double time, double depth, double rate) c
     LayerStep next = current_;
     const double step = time - current_.time, change = depth - current_.centre;
     if (trapezoidal_) next.rate = rate;
+    next.elastic_force_rate = std::nullopt;
     next.phase = LayerPhase::receding;
     next.force_slope = 0.0;
     next.time = time;
@@ -177,7 +209,7 @@ LayerStep LayerStepper::recover(double time) const {
         step, current_.centre, current_.phase == LayerPhase::lifted_off ? std::nullopt : current_.rate);
     next.phase = LayerPhase::lifted_off;
     next.force_slope = 0.0;
-    next.rate = std::nullopt;
+    next.rate = next.elastic_force_rate = std::nullopt;
     next.time = time;
     next.centre += change;
     next.centre_branches.advance(step, change);

@@ -19,12 +19,17 @@ enum class LayerPhase {
     lifted_off,  ///< contact lost: the centre of the surface recovers freely (eq. L14)
 };
 
-/// The rate a parallel dashpot sees (docs/theory.md, section 3): the secant rate of a prescribed depth (of F_el while
-/// growing), or, where the depth is solved (force or spring control, an impact), the trapezoidal rate
-/// 2 dd/dt - rate0 from the rate `start` at the first contact (unknown: the secant rate for that step).
+/// The rate a parallel dashpot sees (docs/theory.md, section 3 and "Layers"): the secant rate of a prescribed depth (of
+/// F_el while growing), or, where the depth is solved, a trapezoidal rate 2 ds/dt - rate0. Under force or spring
+/// control s = F_el while the contact grows (eq. L11; smooth where the depth is not: d ~ t^(2/3) under a force step
+/// on a sphere) and s = d while it recedes (eq. L12); in an impact s = d throughout (the indenter's velocity of the
+/// equation of motion's trapezoidal rule). From the indenter's rate `start` at the first contact (F_el's rate there:
+/// E* times the touching stiffness times it, zero for a profile touching at a point; unknown for a flat punch
+/// without `start`: the secant rate for that step).
 struct DashpotRate {
     bool trapezoidal = false;     ///< the depth is solved
     std::optional<double> start;  ///< dd/dt [m/s] at the first contact, where known
+    bool indenter_motion = false;  ///< the depth follows a smooth motion (an impact): its rate while growing too
 };
 
 /// The state after a step (committed) or a step tried.
@@ -40,6 +45,9 @@ struct LayerStep {
     /// dd/dt [m/s] at this node that a parallel dashpot saw, where the depth is solved (trapezoidal rate); unknown
     /// before the first contact of a spring's indenter, after a jump without contact and after the loss.
     std::optional<double> rate;
+    /// dF_el/dt [N per Pa of shear modulus, per s] at this node, where the depth is solved and the contact grows
+    /// (or has not touched yet): the trapezoidal rate the dashpot's term eta dF_el/dt of eq. L11 takes.
+    std::optional<double> elastic_force_rate;
     contact::LayerContactState contact;  ///< the elastic layer's equilibrium at a(t); none once lifted off
     PronyBranches centre_branches;       ///< of w0
     PronyBranches force_branches;        ///< of F_el (loading)
@@ -85,6 +93,8 @@ private:
     LayerStep recede_at_rate(double time, double depth, double rate) const;
     // The rate at the end of a step of `step` [s] changing the depth by `change` (trapezoidal, or the secant one).
     double end_rate(double step, double change) const;
+    // dd/dt of a growing (or untouched) `state` from its dF_el/dt = E* S dd/dt (eq. L5); unknown where S = 0.
+    std::optional<double> depth_rate(const LayerStep& state) const;
 
     const rheology::Rheology* material_;
     const contact::LayerContact* layer_;
@@ -94,6 +104,8 @@ private:
     LayerStep current_;
     double previous_radius_ = 0.0;  // the contact radius of the state before the current one
     bool trapezoidal_;              // the dashpot sees the trapezoidal rate of a solved depth
+    bool indenter_motion_;          // of the depth while growing too (DashpotRate::indenter_motion)
+    double touch_stiffness_;        // dF_el/dd / E* as the indenter touches (LayerContact::touch_stiffness)
     // The last equilibrium solved, tried or committed: where the next solve starts (the force-controlled driver
     // tries depths ever closer to its root).
     mutable contact::LayerContactState hint_;

@@ -5,9 +5,11 @@ to L19), against an independent time-stepping of the coupled problem written her
 The reference: the MDR line load q(x, t) and the transformed surface displacement w1(x, t) on N uniform cells of
 [0, X] (midpoints), coupled in space by E* w1 = (I - K) q (eq. L3 for any q vanishing beyond the contact, K from
 eq. L4 with k(eta) by scipy's Fourier quadrature of eq. L1 and a cubic spline) and in time, cell by cell, by
-Q = 4 (G * dw1) (E* = 4G), the Prony branches integrated by the trapezoidal rule (not mdr's exponential update);
-each step finds its contact set [0, m cells) by complementarity (q >= 0 inside, w1 >= d - g outside: cells are
-added while the indenter would penetrate, removed while their line load is negative). It knows nothing of Ting's
+Q = 4 (G * dw1) (E* = 4G), the Prony branches integrated by the trapezoidal rule (not mdr's exponential update),
+a parallel dashpot's rate dw1/dt by the two-step backward differentiation formula (BDF2, variable step; not mdr's
+trapezoidal rates: it carries no rate, only the last two w1); each step finds its contact set [0, m cells) by
+complementarity (q >= 0 inside, w1 >= d - g outside: cells are added while the indenter would penetrate, removed
+while their line load is negative). It knows nothing of Ting's
 t1, of the contact radius's monotonicity or of the force-free edge."""
 
 from __future__ import annotations
@@ -25,9 +27,7 @@ import mdr
 R, H = 1.0e-5, 2.0e-6   # sphere radius, bonded layer thickness [m]
 WIDTH = 5.6e-6          # the reference's cells cover [0, WIDTH], beyond the largest contact radius (4.81 um)
 # (G_inf, eta, [(G_k, tau_k)]) and the depth history: a triangle on a standard solid; a ramp, hold and unload on two
-# branches. (With a dashpot the reference's cells entering the contact take the kick eta dw1/dt within one step, an
-# error of first order in the cell that the memory carries on: 7.7e-4, 3.3e-4, 1.2e-4 at 100, 200, 400 cells in the
-# ramp, and 1e-5 in the hold, with eta = 20 Pa s here; its receding phase met mdr to 4.9e-5, 1.2e-5, 3.7e-6.)
+# branches.
 CASES = {
     "triangle": ((1.0e3, 0.0, [(3.0e3, 0.2)]), [[0.0, 0.0], [1.0, 1.0e-6], [2.0, 0.0]]),
     "ramp_hold_unload": ((5.0e2, 0.0, [(2.0e3, 0.05), (1.5e3, 0.5)]),
@@ -73,6 +73,7 @@ def reference(kernel, material, history, cells, times, control="displacement", s
     taus = np.array([tau for _, tau in terms])
     loads = np.interp(times, [p[0] for p in history], [p[1] for p in history]) + harmonic_value(harmonic, times)
     w1, branches, contact = np.zeros(cells), np.zeros((len(terms), cells)), 0
+    previous_w1, previous_dt = np.zeros(cells), 0.0
     out = np.zeros(len(times))
 
     def line_load(right_side):  # q on the contact's cells, zero beyond: (I - K) q = right_side there
@@ -88,8 +89,13 @@ def reference(kernel, material, history, cells, times, control="displacement", s
         # Trapezoidal rule for h_k' = -h_k / tau_k + w1': h_k+ = decay_k h_k + gain_k (w1+ - w1).
         gains = 1.0 / (1.0 + dt / (2.0 * taus))
         decays = (1.0 - dt / (2.0 * taus)) * gains
-        slope = g_inf + moduli @ gains + eta / dt  # Q/4 = slope w1+ + rest
-        rest = moduli @ (decays[:, None] * branches - gains[:, None] * w1) - eta * w1 / dt
+        # BDF2 for the dashpot: dw1+/dt = c0 w1+ + c1 w1 + c2 w1-, with ratio = dt / the previous dt (backward
+        # Euler on the first step).
+        ratio = dt / previous_dt if previous_dt > 0.0 else 0.0
+        c0 = (1.0 + 2.0 * ratio) / ((1.0 + ratio) * dt)
+        c1, c2 = -(1.0 + ratio) / dt, ratio * ratio / ((1.0 + ratio) * dt)
+        slope = g_inf + moduli @ gains + eta * c0  # Q/4 = slope w1+ + rest
+        rest = moduli @ (decays[:, None] * branches - gains[:, None] * w1) + eta * (c1 * w1 + c2 * previous_w1)
         tried = set()
         while True:
             if control == "displacement":
@@ -119,7 +125,7 @@ def reference(kernel, material, history, cells, times, control="displacement", s
                 break
         new_w1 = np.where(np.arange(cells) < contact, indenter, free)
         branches = decays[:, None] * branches + gains[:, None] * (new_w1 - w1)
-        w1 = new_w1
+        previous_w1, previous_dt, w1 = w1, dt, new_w1
         out[step] = 2.0 * dx * q.sum() if control == "displacement" else depth
     return out
 
@@ -267,13 +273,46 @@ def test_the_progress_of_a_run_again_on_cells_never_goes_back():
     assert all(later >= earlier for earlier, later in zip(fractions, fractions[1:])), fractions
 
 
-def test_a_dashpot_with_a_contact_that_grows_again_is_refused_naming_eta():
-    # Not built: a cell entering the contact would take the dashpot's kick within one step (first order in the cell).
-    material = (1.0e3, 20.0, [(3.0e3, 0.2)])
-    with pytest.raises(ValueError, match=r"^material\.eta = 20: a parallel dashpot with a contact that grows again"):
-        run_mdr(material, HARMONIC_MEAN, harmonic=HARMONIC)
-    with pytest.raises(ValueError, match=r"^material\.eta = 20: a parallel dashpot with a contact that grows again"):
-        run_mdr(material, RELOAD)
+# A parallel dashpot with a contact that grows again (mdr's LayerCells with eta): the standard solid above with
+# eta = 20 Pa s under the harmonic depth. The dashpot's line load jumps at a growing contact's edge (eta dd/dt on
+# [0, a], eq. L16), which whole cells meet at first order in the cell, in mdr and in the reference alike. Compared
+# from t = 1 s on: at the history's kink (t = 0.5 s, the ramp's end and the sine's start) the depth's rate jumps and
+# the reference's BDF2 takes a blend of both slopes for a step (an error of the dashpot's force that does not fall
+# with the step, 1e-2 of the peak at that row), which its memory then forgets.
+DASHPOT = (1.0e3, 20.0, [(3.0e3, 0.2)])
+SETTLED = 1.0  # [s]
+
+
+def settled_difference(result, times, force):
+    """largest_difference over the rows from t = SETTLED on."""
+    later = times >= SETTLED
+    return largest_difference(result, times[later], force[later])
+
+
+def test_a_dashpot_under_a_harmonic_depth_meets_the_coupled_time_stepping(kernel):
+    errors = []
+    for cells in (100, 200, 400):
+        result = run_mdr(DASHPOT, HARMONIC_MEAN, harmonic=HARMONIC, elements=cells)
+        assert 0.05 < result.summary["contact_loss_fraction"] < 0.5  # lost and regained every cycle
+        times = result.history["t"]
+        errors.append(settled_difference(result, times, reference(kernel, DASHPOT, HARMONIC_MEAN, 2 * cells, times,
+                                                                  harmonic=HARMONIC)))
+    # Observed 1.7e-3, 6.8e-4, 3.3e-4 of the peak force (orders 1.3, 1.05); mdr's cells against the half-space
+    # driver likewise (tests/verification/test_layer_regrowing_dashpot.cpp).
+    assert errors[-1] < 6e-4, errors
+    orders = [math.log2(coarse / fine) for coarse, fine in zip(errors, errors[1:])]
+    assert min(orders) > 0.9, (errors, orders)
+
+
+def test_a_dashpot_under_a_harmonic_depth_converges_at_second_order_in_the_time_step(kernel):
+    times = np.linspace(0.0, 3.5, 2801)  # 0.00125 s: the coarse grids' nodes are on it
+    force = reference(kernel, DASHPOT, HARMONIC_MEAN, 400, times, harmonic=HARMONIC)
+    errors = [settled_difference(run_mdr(DASHPOT, HARMONIC_MEAN, harmonic=HARMONIC, time_step=step), times, force)
+              for step in (0.05, 0.025, 0.0125)]  # 10 to 40 steps a period
+    # Observed 6.7e-3, 1.7e-3, 4.3e-4 (orders 1.99, 1.95): the dashpot's trapezoidal rates, second order.
+    assert errors[-1] < 1e-3, errors
+    orders = [math.log2(coarse / fine) for coarse, fine in zip(errors, errors[1:])]
+    assert min(orders) > 1.8, (errors, orders)
 
 
 def test_force_control_meets_the_coupled_time_stepping(kernel):

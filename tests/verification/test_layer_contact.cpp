@@ -231,4 +231,16 @@ TEST(LayerContact, FlatPunchForceIsLinearInDepth) {
     EXPECT_GT(thin.at_depth(1e-8).force, thick.at_depth(1e-8).force);
 }
 
+TEST(LayerContact, TouchStiffnessIsThePunchsAndZeroForAPointContact) {
+    // dF/dd / E* as the indenter touches: 2 a for a punch on the half-space (F = 2 a E* d), its layer's unit-depth
+    // force on a layer; zero where a profile touches at a point (a sphere's 2 sqrt(R d) -> 0).
+    const auto punch = std::shared_ptr<const mdr::profile::Profile>(mdr::profile::make_flat_punch(thickness));
+    const LayerContact thick(Layer{1e7 * thickness, LayerInterface::bonded}, 0.5, punch, thickness);
+    EXPECT_NEAR(thick.touch_stiffness() / (2.0 * thickness), 1.0, 1e-6);
+    const LayerContact thin(Layer{thickness, LayerInterface::sliding}, 0.5, punch, thickness);
+    EXPECT_NEAR(thin.touch_stiffness() / (thin.at_depth(1e-8).force / 1e-8), 1.0, 1e-12);
+    const LayerContact point(Layer{thickness, LayerInterface::bonded}, 0.5, sphere(), thickness);
+    EXPECT_EQ(point.touch_stiffness(), 0.0);
+}
+
 }  // namespace

@@ -39,7 +39,7 @@ double largest_difference(const std::vector<double>& a, const std::vector<double
     return largest / scale;
 }
 
-TEST(LayerDashpot, KelvinVoigtCreepUnderAHeldForceIsTheLayersElasticSolution) {
+TEST(LayerDashpot, KelvinVoigtCreepUnderAHeldForceIsTheLayersElasticSolutionAtSecondOrder) {
     // G F_el(d) + eta dF_el/dt = F while the contact grows (eq. L11 with G(t) = G + eta delta(t)), F held from t = 0:
     // F_el(d(t)) = (F / G) (1 - exp(-t G / eta)) whatever the elastic law; here a bonded layer about as thick as
     // the contact is wide (a = 0.89 mm at the end, h = 1 mm), F_el = E*/G times its unit force (E* = 4 G).
@@ -47,7 +47,7 @@ TEST(LayerDashpot, KelvinVoigtCreepUnderAHeldForceIsTheLayersElasticSolution) {
     const std::string material = fmt::format("model = \"kelvin_voigt\"\nG = {}\neta = {}", modulus, viscosity);
     const std::string layer = "[layer]\nthickness = 1.0e-3\ninterface = \"bonded\"\n";
     std::vector<double> errors;
-    for (const double time_step : {2.0e-3, 1.0e-3, 5.0e-4}) {
+    for (const double time_step : {1.0e-3, 5.0e-4, 2.5e-4}) {
         const std::string text =
             "[material]\n" + material + "\n[indenter]\nshape = \"sphere\"\nR = 0.01\n[load]\ncontrol = \"force\"\n" +
             fmt::format("history = [[0.0, {0}], [1.0, {0}]]\n[numerics]\ntime_step = {1}\n", force, time_step) + layer;
@@ -65,11 +65,12 @@ TEST(LayerDashpot, KelvinVoigtCreepUnderAHeldForceIsTheLayersElasticSolution) {
         }
         errors.push_back(error);
     }
-    // Observed 1.4e-5, 8.0e-6, 4.4e-6 of F / G (order ~0.8: the steps graded after the jump at t = 0, the first of
-    // them at the secant rate, dominate; the half-space driver's Hertz creep is within 1.4e-5 of its closed form).
-    EXPECT_LT(errors[0], 2e-5);
-    EXPECT_LT(errors[1], 0.7 * errors[0]);
-    EXPECT_LT(errors[2], 0.7 * errors[1]);
+    // Observed 6.6e-7, 1.8e-7, 4.6e-8 of F / G: order 1.90, 1.97 (the dashpot's term eta dF_el/dt takes F_el's
+    // trapezoidal rate, F_el smooth where d ~ t^(2/3) is not; with d's rate 8.0e-6, 4.4e-6 at 1 and 0.5 ms, order
+    // ~0.8, the graded steps after the jump, of a fixed ratio, dominating). The contact solve's floor is ~1.5e-8.
+    EXPECT_LT(errors[0], 1e-6);
+    EXPECT_LT(errors[1], 0.3 * errors[0]);
+    EXPECT_LT(errors[2], 0.3 * errors[1]);
 }
 
 TEST(LayerDashpot, KelvinVoigtCreepOfAFlatPunchIsTheLayersElasticSolution) {
@@ -117,7 +118,7 @@ TEST(LayerDashpot, VeryThickLayerUnderForceControlIsTheHalfSpaceDriver) {
                 depth_error = std::max(depth_error, std::abs(half_space.depth[i] - thick.depth[i]) / deepest);
             }
         }
-        // Observed 1.0e-5, 7.7e-6 and 6.4e-6 of the largest depth, the radius 7.2e-4, 3.8e-4 and 6.9e-4 of the widest
+        // Observed 1.0e-5, 7.9e-6 and 6.3e-6 of the largest depth, the radius 7.2e-4, 3.8e-4 and 6.9e-4 of the widest
         // (the half-space's elements, its graded start; without a dashpot 2.8e-6 and 1.4e-4).
         EXPECT_LT(depth_error, 2e-5) << history;
         EXPECT_LT(radius_error, 1.5e-3) << history;
@@ -151,7 +152,7 @@ TEST(LayerDashpot, VeryThickLayerUnderSpringControlIsTheHalfSpaceDriver) {
     const auto thick =
         run_toml(loaded_case(prony_dashpot, load, "[layer]\nthickness = 1.0e3\ninterface = \"bonded\"\n"));
     ASSERT_EQ(half_space.time.size(), thick.time.size());
-    // Observed 5.4e-6 of the largest depth (at t = 0.08 s, a small contact) and 7.7e-6 of the peak force (without a
+    // Observed 5.5e-6 of the largest depth (at t = 0.08 s, a small contact) and 7.9e-6 of the peak force (without a
     // dashpot 3.0e-7 and 4.6e-7): the half-space's elements; with 8000 of them 9.0e-7, unchanged at half the step.
     EXPECT_LT(largest_difference(half_space.depth, thick.depth), 1e-5);
     EXPECT_LT(largest_difference(half_space.force, thick.force), 1.5e-5);
@@ -181,19 +182,6 @@ velocity = 0.1
     EXPECT_NEAR(thick.impact->contact_time, half_space.impact->contact_time, 1e-6 * half_space.impact->contact_time);
     EXPECT_LT(largest_difference(half_space.depth, thick.depth), 3e-6);
     EXPECT_LT(thick.impact->restitution, 0.99);  // the dashpot dissipates
-}
-
-TEST(LayerDashpot, AForceThatMakesTheContactGrowAgainIsStillRefusedNamingEta) {
-    // Not built: on the cells a cell entering the contact would take the dashpot's kick within one step (first
-    // order in the cell). Found when the run of Ting's class meets the regrowth.
-    const std::string load = "control = \"force\"\nhistory = [[0.0, 0.0], [1.0, 3.0e-8], [1.5, 1.0e-8], [2.5, 3.0e-8]]";
-    try {
-        run_toml(loaded_case(prony_dashpot, load, "[layer]\nthickness = 2.0e-6\ninterface = \"bonded\"\n"));
-        ADD_FAILURE() << "accepted";
-    } catch (const InvalidInput& error) {
-        EXPECT_EQ(error.key(), "material.eta");
-        EXPECT_NE(std::string(error.what()).find("a contact that grows again"), std::string::npos) << error.what();
-    }
 }
 
 }  // namespace

@@ -61,6 +61,9 @@ public:
     LayerContactState at_depth(double depth, double radius_hint = 0.0) const;
     /// The largest contact radius the kernel was tabulated for [m].
     double max_contact_radius() const { return max_contact_radius_; }
+    /// dF/dd / E* [m] as the indenter touches: a flat punch's unit-depth force (eq. L5), 0 for a profile that touches
+    /// at a point.
+    double touch_stiffness() const;
 
 private:
     Layer layer_;
