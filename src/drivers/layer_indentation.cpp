@@ -77,7 +77,9 @@ void validate_layer(const ContactCase& contact_case) {
     if (contact_case.spring() && !contact_case.spring()->force_pauses.empty()) {
         refuse("load.force_pauses", "[...]", "a force pause");
     }
-    if (contact_case.load.harmonic) refuse_dashpot_on_cells(contact_case);  // a harmonic runs on cells
+    if (contact_case.load.harmonic || contact_case.numerics.layer_cells) {  // runs on cells
+        refuse_dashpot_on_cells(contact_case);
+    }
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
     if (!contact_case.snapshots.empty()) refuse("output.snapshots", "[...]", "a pressure snapshot");
     layer_poisson_ratio(contact_case);
@@ -235,8 +237,9 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
                                         const StepObservers& observers) {
     validate_layer(contact_case);
     if (!observers.empty()) refuse("layer", "[...]", "a run with step observers (a sweep's measures)");
-    // A harmonic load's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19).
-    if (contact_case.load.harmonic) {
+    // A harmonic load's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19); a
+    // fit's model runs any history there (NumericsOptions::layer_cells).
+    if (contact_case.load.harmonic || contact_case.numerics.layer_cells) {
         return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), progress);
     }
     // The run again on cells reports no less than the first run reached (each call still lets the caller abandon).
