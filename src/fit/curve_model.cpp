@@ -176,8 +176,10 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     }
     if (curve.preloaded && depths.front() > 0.0) {
         throw InvalidInput("fit.data.start", "\"preloaded\"",
-                           "needs the band model (G_inf > 0, Prony moduli >= 0, no dashpot, no flat punch): the "
-                           "drivers' elements start unloaded");
+                           model_case.layer ? "on a [layer] holds while the contact stays in Ting's class (the "
+                                              "layer's cells start unloaded): fit up to the end of the first unloading"
+                                            : "needs the band model (G_inf > 0, Prony moduli >= 0, no dashpot, no flat "
+                                              "punch): the drivers' elements start unloaded");
     }
     drivers::ProgressObserver progress;
     if (check_interrupt) progress = [&](double) { check_interrupt(); };
