@@ -176,8 +176,9 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     }
     if (curve.preloaded && depths.front() > 0.0) {
         throw InvalidInput("fit.data.start", "\"preloaded\"",
-                           model_case.layer ? "on a [layer] holds while the contact stays in Ting's class (the "
-                                              "layer's cells start unloaded): fit up to the end of the first unloading"
+                           model_case.layer ? "on a [layer] holds while the contact stays in Ting's class; here it "
+                                              "would grow again after it shrank, and the layer's cells start "
+                                              "unloaded: fit up to the end of the first unloading"
                                             : "needs the band model (G_inf > 0, Prony moduli >= 0, no dashpot, no flat "
                                               "punch): the drivers' elements start unloaded");
     }
