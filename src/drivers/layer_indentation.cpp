@@ -234,8 +234,9 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
                                         const StepObservers& observers) {
     validate_layer(contact_case);
     if (!observers.empty()) refuse("layer", "[...]", "a run with step observers (a sweep's measures)");
-    // A harmonic load's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19).
-    if (contact_case.load.harmonic) {
+    // A harmonic load's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19); a
+    // fit's model runs any history there (NumericsOptions::layer_cells).
+    if (contact_case.load.harmonic || contact_case.numerics.layer_cells) {
         return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), progress);
     }
     // The run again on cells reports no less than the first run reached (each call still lets the caller abandon).

@@ -1,7 +1,5 @@
 #include "curve_model.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
 
@@ -67,35 +65,12 @@ std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_ca
     return at_used_points(response->force, response->modulus_derivatives, prepared.used, baseline);
 }
 
-// The layer model's force at the used points, plus the baseline, and its derivatives (layer_model.hpp). Throws
-// mdr::InvalidInput for what is not built on a layer: a force-driven curve, a compressible body whose Poisson ratio
-// changes in time or two bodies (drivers::layer_poisson_ratio), and (the element model, run when the layer model
-// gives nullopt) a contact that grows again after it shrank (key fit.data.start for a preloaded curve).
+// The layer's fast model of a depth-driven curve: its force at the used points, plus the baseline, and its derivatives
+// (layer_model.hpp); nullopt outside Ting's class (a contact that grows again after it shrank: the drivers' cells run
+// it). Throws mdr::InvalidInput for a compressible body whose Poisson ratio changes in time or two bodies
+// (drivers::layer_poisson_ratio).
 std::optional<ModelValues> layer_curve(const drivers::ContactCase& model_case, const CurveModel& prepared,
-                                       double contact_depth, double baseline, ForwardModel forward_model,
-                                       bool modulus_derivatives) {
-    if (prepared.fitted != Fitted::force) {
-        throw InvalidInput("fit.fitted", "\"depth\"",
-                           "must be \"force\" on a [layer]: the layer's fit model is driven by the measured "
-                           "depth; a force-driven fit (the depth fitted) is not built on a layer yet (issue 28)");
-    }
-    if (forward_model == ForwardModel::elements && prepared.curve->preloaded) {
-        // The path beyond Ting's class starts unloaded: a preload holds only within it (docs/theory.md 4d, eq. L21).
-        throw InvalidInput("fit.data.start", "\"preloaded\"",
-                           fmt::format("on a [layer] holds while the contact stays in Ting's class; here it would grow "
-                                       "again after it shrank (the depth rises by more than {} of its range after "
-                                       "falling by more, or the indenter touches the recovering surface again): fit "
-                                       "up to the end of the first unloading",
-                                       format_value(layer_dip_tolerance)));
-    }
-    if (forward_model == ForwardModel::elements) {
-        throw InvalidInput("fit.data", prepared.curve->name,
-                           fmt::format("the contact on the [layer] would grow again after it shrank (the depth "
-                                       "rises by more than {} of its range after falling by more, or the indenter "
-                                       "touches the recovering surface again): not built on a [layer] yet (issue "
-                                       "28); fit up to the end of the first unloading",
-                                       format_value(layer_dip_tolerance)));
-    }
+                                       double contact_depth, double baseline, bool modulus_derivatives) {
     const Curve& curve = *prepared.curve;
     const std::size_t nodes = model_case.numerics.elements.value_or(contact::default_layer_nodes);
     auto response = layer_forces(model_case.material, *model_case.layer, drivers::layer_poisson_ratio(model_case),
@@ -113,11 +88,9 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
                                      bool modulus_derivatives) {
     const Curve& curve = *prepared.curve;
     const bool depth_driven = prepared.fitted == Fitted::force;
-    if (model_case.layer) {
-        return layer_curve(model_case, prepared, contact_depth, baseline, forward_model, modulus_derivatives);
-    }
     if (forward_model == ForwardModel::continuum) {
         if (!depth_driven) return std::nullopt;
+        if (model_case.layer) return layer_curve(model_case, prepared, contact_depth, baseline, modulus_derivatives);
         return continuum_forces(model_case, prepared, contact_depth, baseline, modulus_derivatives);
     }
     std::vector<drivers::LoadPoint> points;
@@ -148,7 +121,15 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     model_case.snapshots.clear();
     model_case.tangential.reset();
     model_case.load.harmonic.reset();
-    model_case.numerics.elements = elements;
+    if (model_case.layer) {
+        // On cells from the start (eq. L16 to L19), whatever the history, so that the model does not switch between
+        // Ting's exact solution and the cells (second order in the cell) as the parameters move; `numerics.elements`
+        // is the number of cells, as for a run (a parallel dashpot included: the cells step it at second order in
+        // time; a force jump in contact, which a measured record does not have, stays refused naming material.eta).
+        model_case.numerics.layer_cells = true;
+    } else {
+        model_case.numerics.elements = elements;
+    }
     model_case.numerics.output_every = 1;
     // Under displacement control each element's update is exact for a depth linear in time (eq. 16, 18): the
     // measured points are the steps. Force control keeps its own step rule (second order).
@@ -159,8 +140,9 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     // A depth-driven run with a Prony material: the same elements with those that provably stay in contact summed
     // (band_model.hpp), the same forces; the drivers where it does not apply (or the contact outgrows the elements,
     // which the drivers then report).
-    // (A layer's curve has returned above: the band model is the half-space's foundation.)
-    const bool band_runs = band_model_applies(model_case.material) && !model_case.indenter->is_flat_punch();
+    // (A layer runs its own drivers: the band model is the half-space's foundation.)
+    const bool band_runs =
+        !model_case.layer && band_model_applies(model_case.material) && !model_case.indenter->is_flat_punch();
     if (depth_driven && band_runs) {
         const double spacing = drivers::resolve_numerics(model_case).half_width / static_cast<double>(elements);
         if (auto band = band_forces(model_case.material, *model_case.indenter, spacing, elements, times, depths,
@@ -194,8 +176,11 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     }
     if (curve.preloaded && depths.front() > 0.0) {
         throw InvalidInput("fit.data.start", "\"preloaded\"",
-                           "needs the band model (G_inf > 0, Prony moduli >= 0, no dashpot, no flat punch): the "
-                           "drivers' elements start unloaded");
+                           model_case.layer ? "on a [layer] holds while the contact stays in Ting's class; here it "
+                                              "would grow again after it shrank, and the layer's cells start "
+                                              "unloaded: fit up to the end of the first unloading"
+                                            : "needs the band model (G_inf > 0, Prony moduli >= 0, no dashpot, no flat "
+                                              "punch): the drivers' elements start unloaded");
     }
     drivers::ProgressObserver progress;
     if (check_interrupt) progress = [&](double) { check_interrupt(); };

@@ -27,8 +27,10 @@ CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline);
 
 /// Which forward model runs a curve.
 enum class ForwardModel {
-    continuum,  ///< the continuum foundation of ting_model.hpp (depth-driven curves in Ting's class only)
-    elements,   ///< the drivers' element foundation (any case)
+    /// the continuum foundation of ting_model.hpp, on a `[layer]` layer_model.hpp's model (depth-driven curves in
+    /// Ting's class only)
+    continuum,
+    elements,  ///< the drivers' element foundation, on a `[layer]` the layer's cells (any case)
 };
 
 /// One run of the model of a curve.
@@ -45,8 +47,10 @@ struct ModelValues {
 /// with its load replaced by the curve's history (depth minus contact_depth under displacement control; force minus
 /// baseline, and 0 below it, under force control). ForwardModel::elements runs the drivers with `elements` elements and
 /// the curve's own points as time steps (the depth model is the depth below the contact point), as the band model where
-/// it applies (band_forces, band_depths: the same values); ForwardModel::continuum computes the force of a depth-driven
-/// curve exactly (ting_forces) and gives nullopt where that model does not apply. `check_interrupt`, when set, is
+/// it applies (band_forces, band_depths: the same values); on a `[layer]` the layer's drivers on cells from the start
+/// (drivers::NumericsOptions::layer_cells; `numerics.elements` cells, `elements` unused); ForwardModel::continuum
+/// computes the force of a depth-driven curve exactly (ting_forces, on a layer layer_forces) and gives nullopt where
+/// that model does not apply. `check_interrupt`, when set, is
 /// called at the drivers' progress reports (it may throw mdr::Interrupted). Without `modulus_derivatives` the continuum
 /// model leaves them out (a run whose values alone are read: half its memory for an elastic material). Throws what the
 /// drivers throw.

@@ -368,3 +368,46 @@ def test_a_fit_through_the_unloading_recovers_the_material_and_the_thickness(ker
     errors = {key: abs(result.parameters[key] / value - 1.0) for key, value in truth.items()}
     # Observed 1.5e-6, 3.5e-6, 2.8e-6, 6.9e-7 (before issue 28's layer fits the unloading was refused).
     assert max(errors.values()) < 2e-5, errors
+
+
+# Fits whose contact grows again, and force-driven fits (issue 28): `mdr fit` runs the layer's cells for these
+# (docs/theory.md, "Fits on a layer"); the records here are the reference's, with white noise on the fitted quantity.
+# A load-unload-reload (the force fitted for the measured depth) and a creep record (the depth fitted for the measured
+# force): a force step held, then stepped down to a third and held (the contact shrinks and grows again under force).
+FIT_TIMES = np.linspace(0.0, 3.0, 1201)  # 2.5 ms: every corner of the histories is a sample
+CREEP = [[0.0, 0.0], [0.01, 3.0e-8], [1.5, 3.0e-8], [1.51, 1.0e-8], [3.0, 1.0e-8]]
+FIT_RECORDS = {"reload": ("displacement", RELOAD), "creep": ("force", CREEP)}
+
+
+@pytest.mark.parametrize("thickness_free", [False, True], ids=["thickness_fixed", "thickness_free"])
+@pytest.mark.parametrize("name", sorted(FIT_RECORDS))
+def test_a_fit_of_a_regrowing_or_force_driven_record_recovers_the_material(kernel, name, thickness_free):
+    material, _ = CASES["triangle"]
+    control, history = FIT_RECORDS[name]
+    driven = np.interp(FIT_TIMES, [p[0] for p in history], [p[1] for p in history])
+    response = reference(kernel, material, history, 400, FIT_TIMES, control)
+    rng = np.random.default_rng(28)
+    noise = 1e-3 * np.max(response)
+    measured = response + rng.normal(0.0, noise, response.size)
+    depth, force = (driven, measured) if control == "displacement" else (measured, driven)
+    free = ["material.G_inf", "material.G1", "material.tau1"] + (["layer.thickness"] if thickness_free else [])
+    case = {"material": {"model": "standard", "G_inf": 2.0e3, "G1": 2.0e3, "tau1": 0.4},
+            "indenter": {"shape": "sphere", "R": R},
+            "layer": {"thickness": 3.0e-6 if thickness_free else H, "interface": "bonded"},
+            "numerics": {"elements": 200},
+            "fit": {"free": free, "contact_point": "fixed", "baseline": "fixed",
+                    "fitted": "force" if control == "displacement" else "depth"}}
+    result = mdr.fit(case, {"time": FIT_TIMES, "depth": depth, "force": force})
+    assert result.status == "converged", result.summary
+    truth = {"material.G_inf": 1.0e3, "material.G1": 3.0e3, "material.tau1": 0.2, "layer.thickness": H}
+    # Observed (relative error; in standard errors), from starts 2x, 1.5x, 2x (and 1.5x for h) off:
+    #   reload, h fixed: 6.4e-5, 4.9e-4, -4.5e-4 (0.3, 1.6, -1.0);
+    #   reload, h free: -4.5e-3, -4.3e-3, -7.3e-4, -2.5e-3 (-2.2, -2.0, -1.6, -2.2);
+    #   creep, h fixed: -2.6e-4, -1.1e-3, 2.1e-3 (-2.7, -1.6, 2.6);
+    #   creep, h free: -1.1e-3, -1.7e-3, 1.8e-3, -5.4e-4 (-0.3, -0.5, 1.3, -0.2).
+    # The noise (1e-3 of the peak) gives standard errors of 1e-4 to 2e-3; mdr's cells at 200 (~2e-4 of the peak,
+    # second order) and the reference's at 400 add a bias of the same order, hence 3 standard errors and 5e-3.
+    for key in free:
+        error = result.parameters[key] - truth[key]
+        assert abs(error) < 5e-3 * truth[key], (key, result.parameters[key])
+        assert abs(error) < 3.0 * result.standard_errors[key], (key, result.parameters[key], result.standard_errors)

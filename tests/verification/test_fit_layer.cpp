@@ -2,7 +2,7 @@
 // the uniform-kernel model (eq. L7) at small depth, and from curves of the layer
 // driver (drivers::run_layer_indentation: the layer solved at every step, verified against a direct Lee-Radok
 // quadrature and scipy's layer solution in test_layer_viscoelastic.cpp and test_layer_contact.cpp), not from the
-// fit's own interpolated model; and what a fit on a layer refuses.
+// fit's own interpolated model; and a force-driven fit, which runs the layer's cells.
 
 #include <gtest/gtest.h>
 
@@ -232,31 +232,25 @@ TEST(FitLayer, CompressibleElasticLayerAndItsYoungsModulus) {
     EXPECT_NEAR(result.young_moduli[0].standard_error / (slope * result.standard_errors[0]), 1.0, 1e-4);
 }
 
-TEST(FitLayer, WhatIsNotBuiltOnALayerIsRefusedNamingTheKey) {
+TEST(FitLayer, AForceDrivenCurveFitsTheDepthOnCells) {
+    // The driver's ramp-hold (Lee-Radok on the layer, exact in time and to ~1e-8 in space) fitted with the depth as
+    // the fitted quantity: the fit runs the measured force through the layer's cells under force control (eq. L16 to
+    // L19, second order in the cell). Before issue 28's force-driven layer fits it was refused naming fit.fitted.
+    // Observed at 400 cells (the default): -1.7e-4, 3.5e-4, -4.9e-4 from starts 2x, 1.5x, 2x off (98 runs, 9 s).
     const auto truth = io::parse_case(layer_case("bonded"));
-    const auto curve = driver_curve(truth);
-    const auto message = [&](fit::FitProblem problem) {
-        try {
-            static_cast<void>(fit::fit(problem));
-        } catch (const InvalidInput& error) {
-            return std::string(error.what());
-        }
-        return std::string("(no error)");
+    auto problem = layer_problem(truth, driver_curve(truth), {2e3, 2e3, 0.4, thickness});
+    problem.parameters.pop_back();  // the thickness fixed
+    problem.model = [truth](const std::vector<double>& values) {
+        auto model = truth;
+        model.material = rheology::Rheology::standard(values[0], values[1], values[2]);
+        return model;
     };
-    // An unloading to half the range, then a hold: the contact would grow again (Ting's t1 moves forward) after it
-    // shrank.
-    auto unloading = curve;
-    for (std::size_t i = unloading.time.size() / 2; i < unloading.time.size(); ++i) {
-        unloading.depth[i] = 0.5 * unloading.depth[i];
-    }
-    EXPECT_NE(message(layer_problem(truth, unloading, {1e3, 3e3, 0.2, thickness})).find("fit.data"),
-              std::string::npos);
-    EXPECT_NE(message(layer_problem(truth, unloading, {1e3, 3e3, 0.2, thickness})).find("grow again"),
-              std::string::npos);
-    // A force-driven curve (the depth fitted): the layer's fit model is depth-driven.
-    auto force_driven = layer_problem(truth, curve, {1e3, 3e3, 0.2, thickness});
-    force_driven.settings.fitted = fit::Fitted::depth;
-    EXPECT_NE(message(force_driven).find("fit.fitted"), std::string::npos) << message(force_driven);
+    problem.settings.fitted = fit::Fitted::depth;
+    const auto result = fit::fit(problem);
+    ASSERT_TRUE(result.converged) << result.status;
+    EXPECT_NEAR(result.values[0] / 1e3, 1.0, 1e-3);
+    EXPECT_NEAR(result.values[1] / 3e3, 1.0, 1e-3);
+    EXPECT_NEAR(result.values[2] / 0.2, 1.0, 1e-3);
 }
 
 }  // namespace

@@ -29,6 +29,10 @@ struct NumericsOptions {
     /// Smallest number of steps per history segment (ResolvedNumerics::min_segment_steps); a fit sets 1, as its
     /// measured points under displacement control are exact steps (not a case-file key).
     std::optional<std::size_t> min_segment_steps{};
+    /// On a `[layer]`: run a history on cells from the start (eq. L16 to L19), not Ting's class first and cells only
+    /// where its contact grows again; a fit sets it, so that its model does not switch between the two solutions
+    /// (exact, and second order in the cell) as its parameters move (not a case-file key).
+    bool layer_cells = false;
 };
 
 /// The numerics actually used, after defaults.

@@ -19,8 +19,9 @@ double layer_poisson_ratio(const ContactCase& contact_case);
 
 /// Throws mdr::InvalidInput (key `layer` or the offending key, its value and the rule) for a case with a `[layer]`
 /// that needs what is not built on a layer yet: Shore control, an oblique impact, a parallel dashpot with a harmonic
-/// load (which runs on cells), a force pause, tangential loading, snapshots, a compressible body whose Poisson ratio
-/// changes in time or a deformable indenter (layer_poisson_ratio). Does nothing for a case without a layer.
+/// load or NumericsOptions::layer_cells (which run on cells), a force pause, tangential loading, snapshots, a
+/// compressible body whose Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio). Does nothing
+/// for a case without a layer.
 void validate_layer(const ContactCase& contact_case);
 
 /// Runs a displacement-, force- or spring-controlled case on its layer: the elastic layer's force F_el(d) at unit
@@ -40,9 +41,10 @@ void validate_layer(const ContactCase& contact_case);
 /// reaches, creep under a held force, a force after the contact was lost, a spring's base reaching the recovering
 /// surface, a harmonic load: outside Ting's solution) runs the coupled time-stepping on cells instead, from the start
 /// (Ting 1968's general case; eq. L16 to L19, src/drivers/layer_cells.hpp): a history once the run of Ting's class
-/// finds the regrowth (the progress then held at the fraction reached), a harmonic at once; `numerics.elements` is
-/// then its number of cells (default default_layer_cells). Throws as validate_layer; for step observers (not built
-/// on a layer yet); and naming `material.eta` for a parallel dashpot with a regrowing contact.
+/// finds the regrowth (the progress then held at the fraction reached), a harmonic (or any history with
+/// NumericsOptions::layer_cells) at once; `numerics.elements` is then its number of cells (default
+/// default_layer_cells). Throws as validate_layer; for step observers (not built on a layer yet); and naming
+/// `material.eta` for a parallel dashpot with a regrowing contact.
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {},
                                         const StepObservers& observers = {});
 
