@@ -129,7 +129,7 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     // Spring control: F = k (z - d), i.e. F(d) + k d = k z; force control: F(d) = the force (k = 0).
     const double stiffness = spring ? contact_case.spring()->spring_constant : 0.0;
     // In a force pause the feedback holds the force reached at its start (F(d) = that force, as under force control:
-    // eq. L15); after it the base history resumes shifted from the z reached (PausedBase, as on the half-space).
+    // eq. L22); after it the base history resumes shifted from the z reached (PausedBase, as on the half-space).
     std::optional<PausedBase> paused;
     if (spring && !contact_case.spring()->force_pauses.empty()) {
         paused.emplace(contact_case.spring()->force_pauses, stiffness);

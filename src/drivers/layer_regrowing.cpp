@@ -38,7 +38,7 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
     const bool displacement = std::holds_alternative<DisplacementControl>(contact_case.control);
     const SpringControl* spring = contact_case.spring();
     const double spring_constant = spring ? spring->spring_constant : 0.0;
-    // A force pause holds the force reached at its start (k = 0, as under force control; eq. L15), and the base
+    // A force pause holds the force reached at its start (k = 0, as under force control; eq. L22), and the base
     // history resumes shifted from the z reached (PausedBase, as on the half-space).
     std::optional<PausedBase> paused;
     if (spring && !spring->force_pauses.empty()) paused.emplace(spring->force_pauses, spring_constant);
