@@ -60,15 +60,19 @@ std::size_t row_at(const drivers::IndentationResult& result, double t) {
     return 0;
 }
 
-// The pause's rules on every row: the force held at its start's, z = d + F / k inside; after it z resumes from the
-// z reached with the history's slope (-2.5e-6 m/s) and F = k (z - d).
-void expect_pause_rules(const drivers::IndentationResult& result, double force_tolerance) {
+// The depth solves' force tolerance on a layer: 5e-8 of k max z (layer_indentation.cpp).
+constexpr double solve_tolerance = 5e-8 * k * 2e-6;
+
+// The pause's rules on every row: the force held at its start's, z = d + F / k inside (both to the solves' tolerance:
+// F(t1) = k (z - d) is solved); after it z resumes from the z reached with the history's slope (-2.5e-6 m/s) and
+// F = k (z - d).
+void expect_pause_rules(const drivers::IndentationResult& result) {
     const std::size_t start = row_at(result, t1), end = row_at(result, t2);
     const double held = result.force[start];
     ASSERT_GT(held, 0.0);
     for (std::size_t n = start; n <= end; ++n) {
-        EXPECT_NEAR(result.force[n], held, force_tolerance * held) << "t " << result.time[n];
-        EXPECT_NEAR(result.base[n], result.depth[n] + held / k, 1e-9 * 2e-6);  // F(t1) = k (z - d) solved
+        EXPECT_NEAR(result.force[n], held, solve_tolerance) << "t " << result.time[n];
+        EXPECT_NEAR(result.base[n], result.depth[n] + held / k, solve_tolerance / k);
     }
     for (std::size_t n = end + 1; n < result.time.size(); ++n) {
         EXPECT_NEAR(result.base[n], result.base[end] - 2.5e-6 * (result.time[n] - t2), 1e-12 * 2e-6);
@@ -80,11 +84,11 @@ TEST(LayerForcePause, ElasticLayerDepthStaysPutAndTheBaseResumesShifted) {
     const auto result = run_toml(case_text("model = \"elastic\"\nG = 4.0e3", program, layer(thin)));
     const std::size_t start = row_at(result, t1), end = row_at(result, t2);
     for (std::size_t n = start; n <= end; ++n) {
-        // F(d) = F held has one root: the depth of the start, to the solve's tolerance (5e-8 of k max z in force).
+        // F(d) = F held has one root, the depth at the start, which the solve tries first (the last change repeated).
         EXPECT_NEAR(result.depth[n], result.depth[start], 1e-9 * result.depth[start]) << "t " << result.time[n];
         EXPECT_NEAR(result.base[n], 2e-6, 1e-9 * 2e-6);
     }
-    expect_pause_rules(result, 1e-7);
+    expect_pause_rules(result);
 }
 
 // The half-space driver at `elements` (empty: its default) and the very thick layer's run, the largest differences
@@ -109,7 +113,7 @@ Difference against_half_space(const std::string& material, const drivers::Indent
 
 void expect_thick_layer_is_the_half_space(const std::string& material, const std::string& name) {
     const auto thick = run_toml(case_text(material, program, layer(1e3)));
-    expect_pause_rules(thick, 1e-7);
+    expect_pause_rules(thick);
     const std::size_t start = row_at(thick, t1), end = row_at(thick, t2);
     EXPECT_GT(thick.depth[end], 1.1 * thick.depth[start]);  // it crept
     const Difference at_default = against_half_space(material, thick);
@@ -132,6 +136,30 @@ TEST(LayerForcePause, VeryThickLayerIsTheHalfSpaceDriverStandardSolid) {
 
 TEST(LayerForcePause, VeryThickLayerIsTheHalfSpaceDriverProny2) {
     expect_thick_layer_is_the_half_space(prony2, "thick_layer_pause_prony2");
+}
+
+TEST(LayerForcePause, VeryThickLayerWithAParallelDashpotIsTheHalfSpaceDriver) {
+    // Kelvin-Voigt: the dashpot sees the trapezoidal rate of the solved depth through the pause's ends (the force
+    // continuous, so is the rate). The approach differs by the half-space's own early spike (its elements on the
+    // small contact with the graded steps, test_force_pause.cpp: 6.4e-4 of its own), observed 8.3e-5; from the
+    // pause on by 1.2e-6.
+    const std::string kelvin_voigt = "model = \"kelvin_voigt\"\nG = 1.0e3\neta = 100.0";
+    const auto thick = run_toml(case_text(kelvin_voigt, program, layer(1e3)));
+    const auto half_space = run_toml(case_text(kelvin_voigt, program, ""));
+    expect_pause_rules(thick);
+    ASSERT_EQ(thick.time.size(), half_space.time.size());
+    const double deepest = *std::max_element(half_space.depth.begin(), half_space.depth.end());
+    const double peak = *std::max_element(half_space.force.begin(), half_space.force.end());
+    double approach = 0.0, later = 0.0;
+    for (std::size_t n = 0; n < thick.time.size(); ++n) {
+        const double difference = std::max(std::abs(thick.depth[n] - half_space.depth[n]) / deepest,
+                                           std::abs(thick.force[n] - half_space.force[n]) / peak);
+        (thick.time[n] < t1 ? approach : later) = std::max(thick.time[n] < t1 ? approach : later, difference);
+    }
+    ::testing::Test::RecordProperty("approach_difference", fmt::format("{:.3g}", approach));
+    ::testing::Test::RecordProperty("pause_and_after_difference", fmt::format("{:.3g}", later));
+    EXPECT_LT(approach, 3e-4);
+    EXPECT_LT(later, 5e-6);
 }
 
 // The elastic layer at unit shear modulus: P(d) = 4 F_unit (E* = 4 G, incompressible), and the depth at which
@@ -215,7 +243,7 @@ struct SpringCreepReference {
 
 TEST(LayerForcePause, ThinLayerCreepsAsTheCorrespondencePrincipleAfterTheSpringApproach) {
     const auto result = run_toml(case_text(standard, program, layer(thin)));
-    expect_pause_rules(result, 1e-7);
+    expect_pause_rules(result);
     const ElasticLayer elastic(thin_case());
     const SpringCreepReference reference(elastic, 2000), half(elastic, 1000);
     const std::size_t start = row_at(result, t1), end = row_at(result, t2);
