@@ -16,6 +16,7 @@
 #include "layer_impact.hpp"
 #include "layer_regrowing.hpp"
 #include "layer_stepping.hpp"
+#include "paused_base.hpp"
 
 namespace mdr::drivers {
 
@@ -27,13 +28,16 @@ constexpr std::size_t max_layer_nodes = 512;
 
 // The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius
 // (under displacement control at the largest depth, its harmonic amplitude added; under spring control at the
-// largest base, as d <= z while F >= 0; under force control and in an impact its bound at the largest force with
-// the softest modulus, the half-width of resolve_numerics: the layer, stiffer, has a smaller contact at the same
-// force), within the profile's range (beyond it LayerContact::at_depth refuses the depth).
+// largest base, as d <= z while F >= 0; under force control, in an impact and under spring control with force pauses
+// (whose creep raises the later base) the half-width of resolve_numerics, its bound at the largest force with the
+// softest modulus: the layer, stiffer, has a smaller contact at the same force, and creeps less in a pause), within
+// the profile's range (beyond it LayerContact::at_depth refuses the depth).
 double largest_contact_radius(const ContactCase& contact_case) {
     const auto& indenter = *contact_case.indenter;
     if (indenter.is_flat_punch()) return indenter.max_radius();
-    const bool bounded_by_force = contact_case.impact() || std::holds_alternative<ForceControl>(contact_case.control);
+    const bool paused = contact_case.spring() && !contact_case.spring()->force_pauses.empty();
+    const bool bounded_by_force =
+        contact_case.impact() || paused || std::holds_alternative<ForceControl>(contact_case.control);
     const double largest = contact_case.load.largest_value();
     const double half_space =
         bounded_by_force ? resolve_numerics(contact_case).half_width : indenter.contact_radius(largest);
@@ -74,9 +78,6 @@ void validate_layer(const ContactCase& contact_case) {
     }
     if (contact_case.shore()) refuse("load.control", "\"shore\"", "Shore control");
     if (contact_case.oblique()) refuse("load.tangential_velocity", "[...]", "an oblique impact");
-    if (contact_case.spring() && !contact_case.spring()->force_pauses.empty()) {
-        refuse("load.force_pauses", "[...]", "a force pause");
-    }
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
     if (!contact_case.snapshots.empty()) refuse("output.snapshots", "[...]", "a pressure snapshot");
     layer_poisson_ratio(contact_case);
@@ -116,9 +117,9 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
                                 progress);
     }
     const auto& history = *contact_case.load.history;
-    // The half-space's grid (no cut of its own: snapshots, a tangential load and force pauses are refused on a layer,
-    // a harmonic runs on cells): under force or spring control graded after the same fast changes, a spring's base
-    // from where it is.
+    // The half-space's grid (no cut of its own: snapshots and a tangential load are refused on a layer, a harmonic
+    // runs on cells): under force or spring control graded after the same fast changes, a spring's base from where it
+    // is, each force pause's ends on nodes of their own.
     const auto grid = indentation_grid(contact_case, result.numerics);
 
     const auto& material = contact_case.material;
@@ -126,6 +127,12 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     const bool spring = contact_case.spring() != nullptr;
     // Spring control: F = k (z - d), i.e. F(d) + k d = k z; force control: F(d) = the force (k = 0).
     const double stiffness = spring ? contact_case.spring()->spring_constant : 0.0;
+    // In a force pause the feedback holds the force reached at its start (F(d) = that force, as under force control:
+    // eq. L22); after it the base history resumes shifted from the z reached (PausedBase, as on the half-space).
+    std::optional<PausedBase> paused;
+    if (spring && !contact_case.spring()->force_pauses.empty()) {
+        paused.emplace(contact_case.spring()->force_pauses, stiffness);
+    }
     // The depth's scale: the largest prescribed (under spring control the base's: d <= z while F >= 0).
     const double largest_depth = force_control ? solved_depth_scale : std::max(history.max_value(), 0.0);
     // The force of a trial depth is exact to ~1.5e-8 (the contact solve's depth to 1e-8): the depth solves' force
@@ -147,6 +154,9 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
         const LayerStep& now = stepper.current();
         LayerStep next = now;
         double depth = node.value;
+        const bool holding = paused && i > 0 && paused->holding(grid[i - 1].time, node.time);
+        // The base z of a spring: the history shifted by the pauses passed.
+        const double base = paused ? paused->base(node.value) : node.value;
         if (std::holds_alternative<DisplacementControl>(contact_case.control)) {
             next = now.phase == LayerPhase::approach && depth <= 0.0 ? stepper.wait(node.time)
                    : now.phase <= LayerPhase::growing && depth >= now.centre ? stepper.grow(node.time, depth)
@@ -156,33 +166,35 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
                 throw ContactRegrows{};  // the indenter reaches the recovering surface
             }
         } else {
-            // The base z (spring), or the force (its round-off below zero is no pull).
-            const double target = spring ? node.value : std::max(node.value, 0.0);
-            const double right_side = spring ? stiffness * target : target;
+            // The base z (spring), or the force (its round-off below zero is no pull); in a pause the force held
+            // with no spring (k = 0).
+            const double target = spring ? base : std::max(node.value, 0.0);
+            const double k = holding ? 0.0 : stiffness;
+            const double right_side = holding ? paused->held_force() : spring ? stiffness * target : target;
             const double change = now.centre - previous_centre;
             const auto solve = [&](auto&& trial) {  // the depth at which F(d) + k d = the right side
-                const auto residual = [&](double d) { return trial(d).force + stiffness * d - right_side; };
+                const auto residual = [&](double d) { return trial(d).force + k * d - right_side; };
                 // From the last step's change repeated (second order), corrected by Newton with a growing step's
                 // slope (dF/dd of eq. L11: one correction usually meets the tolerance), then bracketed in steps of
                 // a tenth of the change where that is not enough (a receding step: no slope).
                 double start = std::max(now.centre + change, 0.0);
                 LayerStep tried = trial(start);
-                double value = tried.force + stiffness * start - right_side;
+                double value = tried.force + k * start - right_side;
                 for (int newton = 0; newton < 2 && tried.force_slope > 0.0 && std::abs(value) > force_tolerance;
                      ++newton) {
-                    start = std::max(start - value / (tried.force_slope + stiffness), 0.0);
+                    start = std::max(start - value / (tried.force_slope + k), 0.0);
                     tried = trial(start);
-                    value = tried.force + stiffness * start - right_side;
+                    value = tried.force + k * start - right_side;
                 }
                 return numerics::monotone_root(residual, start, value,
                                                std::max(0.1 * std::abs(change), 1e-6 * largest_depth),
                                                force_tolerance, 1e-12 * largest_depth, false);
             };
             const auto recede = [&] {  // under zero force the indenter rides on the free surface
-                return stiffness == 0.0 && target == 0.0 ? stepper.recover(node.time)
-                                                         : stepper.recede(node.time, solve([&](double d) {
-                                                               return stepper.recede(node.time, d);
-                                                           }));
+                return k == 0.0 && right_side == 0.0 ? stepper.recover(node.time)
+                                                     : stepper.recede(node.time, solve([&](double d) {
+                                                           return stepper.recede(node.time, d);
+                                                       }));
             };
             if (now.phase == LayerPhase::approach && right_side <= 0.0) {  // the surface not reached: F = 0
                 next = stepper.wait(node.time);
@@ -192,15 +204,13 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
             } else if (now.phase == LayerPhase::lifted_off) {
                 next = stepper.recover(node.time);
                 // The recovering surface would be loaded again: a force, or the spring's indenter reaching it.
-                if (right_side - stiffness * next.centre > stiffness * 1e-9 * largest_depth) {
-                    throw ContactRegrows{};
-                }
+                if (right_side - k * next.centre > k * 1e-9 * largest_depth) throw ContactRegrows{};
             } else if (now.phase == LayerPhase::receding) {
                 next = recede();
             } else {
                 // Over the contact radius (one elastic solve a trial); a flat punch's is fixed: over the depth.
                 const auto grow = [&](double d) { return stepper.grow(node.time, d); };
-                next = by_radius ? stepper.grow_to(node.time, stiffness, right_side, force_tolerance)
+                next = by_radius ? stepper.grow_to(node.time, k, right_side, force_tolerance)
                                  : stepper.grow(node.time, solve(grow));
                 if (now.phase == LayerPhase::growing && next.centre < now.centre) next = recede();
             }
@@ -216,7 +226,12 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
             result.depth.push_back(depth);
             result.force.push_back(next.force);
             result.radius.push_back(next.contact.contact_radius);
-            if (spring) result.base.push_back(node.value);
+            // In a pause the feedback's base, z = d + F / k.
+            if (spring) result.base.push_back(holding ? paused->base_in_pause(depth) : base);
+        }
+        // At a pause's start the force to hold; at its end the base's shift (the node settled: no jump follows).
+        if (paused && (i + 1 == grid.size() || grid[i + 1].time != node.time)) {
+            paused->passed(node.time, next.force, depth, node.value);
         }
         const auto percent = static_cast<std::size_t>(100.0 * static_cast<double>(i + 1) /
                                                       static_cast<double>(grid.size()));

@@ -9,6 +9,7 @@
 #include "layer_cells.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/error.hpp"
+#include "paused_base.hpp"
 
 namespace mdr::drivers {
 
@@ -28,12 +29,17 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
     const bool displacement = std::holds_alternative<DisplacementControl>(contact_case.control);
     const SpringControl* spring = contact_case.spring();
     const double spring_constant = spring ? spring->spring_constant : 0.0;
+    // A force pause holds the force reached at its start (k = 0, as under force control; eq. L22), and the base
+    // history resumes shifted from the z reached (PausedBase, as on the half-space).
+    std::optional<PausedBase> paused;
+    if (spring && !spring->force_pauses.empty()) paused.emplace(spring->force_pauses, spring_constant);
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     const bool sine_rate = displacement && contact_case.load.harmonic && material.viscosity() > 0.0;
     std::size_t reported = 0;
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const double time_step = i == 0 ? 0.0 : grid[i].time - grid[i - 1].time;
-        const double value = grid[i].value;
+        const bool holding = paused && i > 0 && paused->holding(grid[i - 1].time, grid[i].time);
+        const double value = paused ? paused->base(grid[i].value) : grid[i].value;
         // A prescribed depth under a harmonic with a dashpot is not linear inside a step: the dashpot takes the
         // trapezoidal rate from the prescribed rate at the step's start, the history's slope plus the sine's rate
         // (second order, as on the half-space, history_stepping.hpp).
@@ -47,6 +53,7 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
         // A force's round-off below zero is no pull; a spring's right side is k z.
         const LayerCellState state =
             displacement ? layer.step(time_step, value, start_rate)
+            : holding    ? layer.step_loaded(time_step, paused->held_force(), 0.0, value)
                          : layer.step_loaded(time_step, spring ? spring_constant * value : std::max(value, 0.0),
                                              spring_constant, value);
         if (i > 0) ++result.steps;
@@ -55,7 +62,10 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
             result.depth.push_back(state.depth);
             result.force.push_back(state.force);
             result.radius.push_back(state.contact_radius);
-            if (spring) result.base.push_back(value);
+            if (spring) result.base.push_back(holding ? paused->base_in_pause(state.depth) : value);
+        }
+        if (paused && (i + 1 == grid.size() || grid[i + 1].time != grid[i].time)) {
+            paused->passed(grid[i].time, state.force, state.depth, grid[i].value);
         }
         if (cycle) cycle->record(grid[i].time, state.depth, state.force, state.touching, state.touching_part);
         const auto percent = static_cast<std::size_t>(100.0 * static_cast<double>(i + 1) /

@@ -9,7 +9,8 @@
 namespace mdr::drivers {
 
 /// Runs a displacement-, force- or spring-controlled case with a `[layer]` on LayerCells (under force and spring
-/// control the depth of each step solved from F(d) + k d = the right side, LayerCells::step_loaded):
+/// control the depth of each step solved from F(d) + k d = the right side, LayerCells::step_loaded; in a force pause
+/// with k = 0 and the force held, docs/theory.md eq. L22):
 /// `numerics.elements` cells (default default_layer_cells) on [0, `largest_radius`] (the widest contact prepared for,
 /// [m]), on the half-space driver's time grid (its harmonic part added and its last full cycle measured as on the
 /// half-space, HarmonicOutcome). A parallel dashpot sees the indenter's rates as on the half-space (LayerCells).

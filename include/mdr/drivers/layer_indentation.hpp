@@ -19,9 +19,9 @@ double layer_poisson_ratio(const ContactCase& contact_case);
 
 /// Throws mdr::InvalidInput (key `layer` or the offending key, its value and the rule) for a case with a `[layer]`
 /// that needs what is not built on a layer yet: Shore control, an oblique impact, a parallel dashpot with a harmonic
-/// load or NumericsOptions::layer_cells (which run on cells), a force pause, tangential loading, snapshots, a
-/// compressible body whose Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio). Does nothing
-/// for a case without a layer.
+/// load or NumericsOptions::layer_cells (which run on cells), tangential loading, snapshots, a compressible body whose
+/// Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio). Does nothing for a case without a
+/// layer.
 void validate_layer(const ContactCase& contact_case);
 
 /// Runs a displacement-, force- or spring-controlled case on its layer: the elastic layer's force F_el(d) at unit
@@ -33,13 +33,15 @@ void validate_layer(const ContactCase& contact_case);
 /// (LayerStepper). Once the contact is lost (t1 = the start) the force is zero and the free surface at the centre
 /// recovers (eq. L14); under force control the indenter rides on it, under spring control it hangs at the base z.
 /// Force control solves the depth of each step by numerics::monotone_root (the force increases with it in either
-/// phase), spring control likewise F(d) + k d = k z (F = k (z - d)); a parallel dashpot then sees the trapezoidal
-/// rate of the solved depth, and takes a force jump at a fixed depth (LayerStepper::jump). An impact runs
-/// run_layer_impact (src/drivers/layer_impact.hpp). `numerics.elements` is the least number of Gauss nodes over the
-/// contact (default contact::default_layer_nodes).
+/// phase), spring control likewise F(d) + k d = k z (F = k (z - d)), and in a force pause F(d) = the force held
+/// (eq. L22; the base z = d + F / k, shifted after it as on the half-space, PausedBase); a parallel dashpot then sees
+/// the trapezoidal rate of the solved depth, and takes a force jump at a fixed depth (LayerStepper::jump). An impact
+/// runs run_layer_impact (src/drivers/layer_impact.hpp). `numerics.elements` is the least number of Gauss nodes over
+/// the contact (default contact::default_layer_nodes).
 /// A case whose contact would grow again after it shrank (a reload, a held depth that the recovering surface
-/// reaches, creep under a held force, a force after the contact was lost, a spring's base reaching the recovering
-/// surface, a harmonic load: outside Ting's solution) runs the coupled time-stepping on cells instead, from the start
+/// reaches, creep under a held force or a force pause after an unload, a force after the contact was lost, a spring's
+/// base reaching the recovering surface, a harmonic load: outside Ting's solution) runs the coupled time-stepping on
+/// cells instead, from the start
 /// (Ting 1968's general case; eq. L16 to L19, src/drivers/layer_cells.hpp): a history once the run of Ting's class
 /// finds the regrowth (the progress then held at the fraction reached), a harmonic (or any history with
 /// NumericsOptions::layer_cells) at once; `numerics.elements` is then its number of cells (default
