@@ -23,7 +23,10 @@ namespace mdr::drivers {
 /// - `static ResolvedNumerics resolve_numerics(const ContactCase&, const Control&)`, its default numerics
 ///   (drivers::resolve_numerics);
 /// - `static std::vector<GridNode> grid(const ContactCase&, const ResolvedNumerics&, const Control&)`, its time grid
-///   (drivers::indentation_grid).
+///   (drivers::indentation_grid);
+/// - `static std::vector<ControlKind> rows()`, its rows of the table of controls (drivers::controls: name, one-line
+///   documentation, history column, `[load]` keys with units; a spring has two, spring and shore), and
+///   `static const char* row_name(const Control&)`, the name of the row of a value (drivers::control_kind).
 template <class Control>
 struct ControlTraits;
 

@@ -184,6 +184,18 @@ double ImpactStepping::end_contact(double time_step) {
     return -outcome.rebound_velocity;
 }
 
+std::vector<ControlKind> ControlTraits<ImpactControl>::rows() {
+    const auto& oblique = oblique_impact_keys();
+    return {{"impact",
+             "a rigid indenter of mass m meets the surface at speed v0 at t = 0 and moves by m d'' = -F (eq. 37) until "
+             "it leaves",
+             "",
+             {{"velocity", "m/s", "the approach speed v0 > 0 at first contact", true},
+              {"end", "s", "the latest end (default: from the contact time's scales)"},
+              oblique[0], oblique[1], oblique[2]},
+             {"indenter.mass"}}};
+}
+
 void ControlTraits<ImpactControl>::validate(const ContactCase& contact_case, const ImpactControl& impact) {
     validate_impact(contact_case, impact);
     validate_oblique(contact_case);

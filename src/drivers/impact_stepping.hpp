@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "control_traits.hpp"
@@ -69,6 +70,8 @@ private:
 template <>
 struct ControlTraits<ImpactControl> {
     using Stepping = ImpactStepping;
+    static std::vector<ControlKind> rows();
+    static const char* row_name(const ImpactControl& /*impact*/) { return "impact"; }
     /// A mass and an approach speed > 0, an elastic part beside a dashpot, no tangential load and no harmonic; an
     /// oblique impact: friction >= 0, finite tangential velocity and spin, a sphere, a positive moment of inertia
     /// when one is given, one incompressible body (tangential_exact).

@@ -8,7 +8,9 @@
 
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/shore.hpp"
 #include "mdr/error.hpp"
+#include "control_keys.hpp"
 
 namespace mdr::drivers {
 namespace {
@@ -134,6 +136,11 @@ void validate_force_pauses(const ContactCase& contact_case, const std::vector<Fo
 
 }  // namespace
 
+std::vector<ControlKind> ControlTraits<DisplacementControl>::rows() {
+    return {{"displacement", "the history prescribes the depth d(t); the force follows (eq. 16)", "d",
+             {history_key("s, m", "d"), harmonic_key("m"), end_key()}, {}}};
+}
+
 void ControlTraits<DisplacementControl>::validate(const ContactCase& contact_case,
                                                   const DisplacementControl& /*control*/) {
     if (contact_case.material.viscosity() > 0.0 && contact_case.load.history->has_jump()) {
@@ -150,6 +157,11 @@ double ControlTraits<DisplacementControl>::largest_contact_radius(const ContactC
     return 1.1 * contact_case.indenter->contact_radius(peak);
 }
 
+std::vector<ControlKind> ControlTraits<ForceControl>::rows() {
+    return {{"force", "the history prescribes the force F(t) >= 0; the depth is solved for at each step (eq. 19)", "F",
+             {history_key("s, N", "F"), harmonic_key("N"), end_key()}, {}}};
+}
+
 void ControlTraits<ForceControl>::validate(const ContactCase& contact_case, const ForceControl& /*control*/) {
     validate_force_history(contact_case);
     validate_harmonic(contact_case);
@@ -160,6 +172,27 @@ double ControlTraits<ForceControl>::largest_contact_radius(const ContactCase& /*
                                                            const ForceControl& /*control*/, double peak,
                                                            const ForceRadiusBound& force_bound) {
     return force_bound(peak);
+}
+
+std::vector<ControlKind> ControlTraits<SpringControl>::rows() {
+    return {
+        {"spring",
+         "the history prescribes the base z(t) of a spring k in series with the massless indenter: F = k (z - d)", "z",
+         {history_key("s, m", "z"),
+          {"spring_constant", "N/m", "the spring's stiffness k > 0", true},
+          harmonic_key("m"),
+          {"force_pauses", "s", "[[start, end], ...]: the instrument's feedback holds the force over each"},
+          end_key()},
+         {}},
+        {"shore",
+         "a Shore A or D durometer (ASTM D2240, ISO 48-4): the standard's indenter pushed through its calibrated spring "
+         "(spring control with a constant base); the reading H = 100 - d / 0.025 mm over time",
+         "",
+         {{"scale", "", "\"A\" (soft rubbers) or \"D\" (hard rubbers, plastics)", true},
+          {"duration", "s",
+           "how long the foot rests on the sample (default " + format_value(shore_default_duration) + ")"}},
+         {}},
+    };
 }
 
 void ControlTraits<SpringControl>::validate(const ContactCase& contact_case, const SpringControl& control) {

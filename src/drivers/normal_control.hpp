@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "control_traits.hpp"
@@ -55,6 +56,8 @@ public:
 
 template <>
 struct ControlTraits<DisplacementControl> : HistoryControlTraits<DisplacementControl, DisplacementStepping> {
+    static std::vector<ControlKind> rows();
+    static const char* row_name(const DisplacementControl& /*control*/) { return "displacement"; }
     /// No jump in depth against a dashpot; a harmonic's rules.
     static void validate(const ContactCase& contact_case, const DisplacementControl& control);
     /// 1.1 times the Lee-Radok radius g^-1 at the largest depth (an upper bound under unloading too: the free
@@ -87,6 +90,8 @@ public:
 
 template <>
 struct ControlTraits<ForceControl> : HistoryControlTraits<ForceControl, ForceStepping> {
+    static std::vector<ControlKind> rows();
+    static const char* row_name(const ForceControl& /*control*/) { return "force"; }
     /// No negative force in the history; a harmonic's rules, and it must not make the force pull.
     static void validate(const ContactCase& contact_case, const ForceControl& control);
     /// The force-control bound at the largest force.
@@ -159,6 +164,9 @@ private:
 
 template <>
 struct ControlTraits<SpringControl> : HistoryControlTraits<SpringControl, SpringStepping> {
+    /// spring, then shore (a spring control with a durometer).
+    static std::vector<ControlKind> rows();
+    static const char* row_name(const SpringControl& control) { return control.shore ? "shore" : "spring"; }
     /// A harmonic's rules; a spring constant > 0; a base history starting at or above the surface (z <= 0) without
     /// jumps, or a Shore test's rules (a duration > 0, the durometer's spring, no harmonic, no tangential load).
     static void validate(const ContactCase& contact_case, const SpringControl& control);
