@@ -1,10 +1,10 @@
 #include "mdr/drivers/contact_case.hpp"
 
 #include "mdr/drivers/case_validation.hpp"
-#include "mdr/drivers/oblique_sphere.hpp"
 #include "mdr/drivers/work_estimate.hpp"
 #include "mdr/rheology/compressible.hpp"
-#include "paused_base.hpp"
+#include "default_numerics.hpp"
+#include "every_control.hpp"
 
 #include <algorithm>
 #include <array>
@@ -49,18 +49,6 @@ double elastic_radius(const profile::Profile& indenter, double modulus, double f
         (elastic_force(indenter, modulus, mid) < force ? lower : upper) = mid;
     }
     return upper;
-}
-
-// The shortest material time (relaxation or retardation) that is at least `floor`; infinity if none.
-double shortest_time_above(const rheology::Rheology& material, double floor) {
-    double shortest = std::numeric_limits<double>::infinity();
-    for (const auto& term : material.terms()) {
-        if (term.relaxation_time >= floor) shortest = std::min(shortest, term.relaxation_time);
-    }
-    for (const auto& term : material.creep_function().terms) {
-        if (term.retardation_time >= floor) shortest = std::min(shortest, term.retardation_time);
-    }
-    return shortest;
 }
 
 // Elastic work W(a) = int_0^a F_el(a') g'(a') da' done by the indenter up to contact radius a (trapezoidal in a;
@@ -113,87 +101,19 @@ double elastic_force(const profile::Profile& indenter, double shear_modulus, dou
     return 8.0 * shear_modulus * integrate(integrand, 0.0, contact_radius, 4);
 }
 
-namespace {
-
-// Impact: the time step from the elastic impact with the stiffest spring modulus, the foundation from the one
-// with the softest modulus (G_inf; for a fluid 1/J at ten stiff impact times), which bounds the depth.
-ResolvedNumerics resolve_impact_numerics(const ContactCase& contact_case, const ImpactControl& impact) {
-    const auto& numerics = contact_case.numerics;
-    const auto& material = contact_case.material;
-    const auto& indenter = *contact_case.indenter;
-    double spring_modulus = material.equilibrium_modulus();
-    for (const auto& term : material.terms()) spring_modulus += term.modulus;
-    if (!(spring_modulus > 0.0)) spring_modulus = material.viscosity() / std::max(material.shortest_time(), 1e-300);
-    const ElasticImpact stiff = elastic_impact(indenter, spring_modulus, impact.mass, impact.velocity);
-    const double soft_modulus =
-        material.is_fluid() ? 1.0 / material.creep(10.0 * stiff.duration) : material.equilibrium_modulus();
-    const ElasticImpact soft =
-        elastic_impact(indenter, std::min(soft_modulus, spring_modulus), impact.mass, impact.velocity);
-
-    ResolvedNumerics resolved;
-    resolved.output_every = numerics.output_every;
-    resolved.elements = numerics.elements.value_or(default_elements);
-    double step = stiff.duration / static_cast<double>(default_steps);
-    if (material.viscosity() > 0.0) {
-        // A parallel dashpot brakes the indenter within m / (8 eta a) (eq. 21 with the dashpot's force 8 eta a v):
-        // an overdamped impact is decided on that scale, which the elastic contact time does not see. The soft
-        // radius bounds a, so this time is bounded below.
-        const double braking_time = impact.mass / (8.0 * material.viscosity() * soft.radius);
-        step = std::min(step, braking_time / static_cast<double>(braking_steps));
+double shortest_time_above(const rheology::Rheology& material, double floor) {
+    double shortest = std::numeric_limits<double>::infinity();
+    for (const auto& term : material.terms()) {
+        if (term.relaxation_time >= floor) shortest = std::min(shortest, term.relaxation_time);
     }
-    if (impact.oblique) {
-        // The contact point's motion has the effective mass m_t, 1/m_t = 1/m + R^2/I (2/7 m for a solid sphere, for
-        // which the normal steps resolve it): a lighter m_t oscillates faster, as sqrt(m_t).
-        const auto [radius, inertia] = oblique_sphere(contact_case);
-        const double tangential_mass = 1.0 / (1.0 / impact.mass + radius * radius / inertia);
-        step *= std::min(1.0, std::sqrt(tangential_mass / (2.0 / 7.0 * impact.mass)));
+    for (const auto& term : material.creep_function().terms) {
+        if (term.retardation_time >= floor) shortest = std::min(shortest, term.retardation_time);
     }
-    resolved.time_step = numerics.time_step.value_or(std::min(step, shortest_time_above(material, step) / 5.0));
-    resolved.half_width = numerics.half_width.value_or(
-        indenter.is_flat_punch() ? indenter.max_radius() : std::min(1.2 * soft.radius, indenter.max_radius()));
-    // Without load.end: ten soft contact times, and at most 200 stiff ones (a fluid may never push back).
-    resolved.time_limit = std::isfinite(contact_case.end_time)
-                              ? contact_case.end_time
-                              : std::min(10.0 * soft.duration, 200.0 * stiff.duration);
-    return resolved;
+    return shortest;
 }
 
-// The largest contact radius [m] of a history-driven control, 0 when there is none (see resolve_numerics):
-// `force_bound` the force-control bound for a force, `peak` the history's largest value with the harmonic's.
-struct ContactRadiusBound {
-    const ContactCase& contact_case;
-    double peak;
-    std::function<double(double)> force_bound;
-
-    double operator()(const DisplacementControl&) const { return 1.1 * contact_case.indenter->contact_radius(peak); }
-    double operator()(const ForceControl&) const { return force_bound(peak); }
-    double operator()(const SpringControl& spring) const {  // d <= z and F <= k z
-        const auto& indenter = *contact_case.indenter;
-        const double k = spring.spring_constant;
-        double base = peak;
-        double force = k * peak;
-        if (!spring.force_pauses.empty()) {
-            // The force at a depth d <= z is at most the elastic one with G(0+) (the contact only grows up to a
-            // pause); each pause shifts the later base by its creep, at most the depth of that force's bound.
-            const double modulus = contact_case.material.instantaneous_modulus();
-            const auto at_most = [&](double z) {
-                return std::isfinite(modulus)
-                           ? std::min(k * z, elastic_force(indenter, modulus, indenter.contact_radius(z)))
-                           : k * z;
-            };
-            const double creep = indenter.equivalent(std::min(force_bound(at_most(peak)), indenter.max_radius()));
-            base = paused_base_peak(*contact_case.load.history, spring.force_pauses, peak, creep);
-            force = std::isfinite(base) ? at_most(base) : force;
-        }
-        // (An infinite bound: the force bound reaches the indenter's edge, which is then the half-width.)
-        return std::isfinite(base) ? std::min(1.1 * indenter.contact_radius(base), force_bound(force))
-                                   : indenter.max_radius();
-    }
-    double operator()(const ImpactControl&) const { return 0.0; }  // resolve_impact_numerics
-};
-
-// Displacement, force or spring control: see resolve_numerics.
-ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
+ResolvedNumerics resolve_history_numerics(const ContactCase& contact_case, bool graded,
+                                          const ContactRadiusBound& largest_contact_radius) {
     const auto& numerics = contact_case.numerics;
     const auto& indenter = *contact_case.indenter;
     ResolvedNumerics resolved;
@@ -219,9 +139,10 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
     } else {
         resolved.time_step = 1.0;  // a history of jumps only: no step has a length
     }
-    // Under force or spring control the creep after the start and after a fast load change is taken on steps graded
-    // from there, scaled to the time step, the user's too (a finer step is never worse than the default):
-    if (!std::holds_alternative<DisplacementControl>(contact_case.control) && duration > 0.0) {
+    // Under a control that solves for the depth (force, spring) the creep after the start and after a fast load
+    // change is taken on steps graded from there, scaled to the time step, the user's too (a finer step is never
+    // worse than the default):
+    if (graded && duration > 0.0) {
         if (material.viscosity() > 0.0) {
             // a parallel dashpot: the trapezoidal rate is second order, and the creep, singular in time there, is
             // graded from a small fraction of the step;
@@ -259,14 +180,12 @@ ResolvedNumerics resolve_indentation_numerics(const ContactCase& contact_case) {
             const double softest = 1.0 / contact_case.material.creep(std::max(duration, 0.0));
             return 1.25 * elastic_radius(indenter, softest, force);
         };
-        double radius = std::visit(ContactRadiusBound{contact_case, peak, force_bound}, contact_case.control);
+        double radius = largest_contact_radius(peak, force_bound);
         if (!(radius > 0.0)) radius = std::isfinite(indenter.max_radius()) ? indenter.max_radius() : 1.0;
         resolved.half_width = std::min(radius, indenter.max_radius());
     }
     return resolved;
 }
-
-}  // namespace
 
 std::optional<double> body_poisson_ratio(const ContactCase& contact_case) {
     if (!contact_case.shear_material) return 0.5;  // no bulk part was folded in
@@ -276,9 +195,9 @@ std::optional<double> body_poisson_ratio(const ContactCase& contact_case) {
 
 ResolvedNumerics resolve_numerics(const ContactCase& contact_case) {
     validate(contact_case);
-    const ImpactControl* impact = contact_case.impact();
-    const ResolvedNumerics resolved =
-        impact ? resolve_impact_numerics(contact_case, *impact) : resolve_indentation_numerics(contact_case);
+    const ResolvedNumerics resolved = visit_control(
+        contact_case.control,
+        [&](auto traits, const auto& control) { return traits.resolve_numerics(contact_case, control); });
     require_bounded_work(contact_case, resolved);
     return resolved;
 }

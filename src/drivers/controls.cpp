@@ -1,58 +1,41 @@
 #include "mdr/drivers/controls.hpp"
 
 #include <algorithm>
+#include <type_traits>
+#include <utility>
+#include <variant>
 
-#include "mdr/drivers/shore.hpp"
 #include "mdr/error.hpp"
+#include "control_keys.hpp"
+#include "every_control.hpp"
 
 namespace mdr::drivers {
-namespace {
 
-// The keys several controls share.
-ControlKey history(const char* unit, const char* column) {
+ControlKey history_key(const char* unit, const char* column) {
     return {"history", unit, std::string("the (t, ") + column + ") points of a piecewise-linear history", true};
 }
-ControlKey harmonic(const char* amplitude_unit) {
+
+ControlKey harmonic_key(const char* amplitude_unit) {
     std::string keys;
     for (const auto& key : harmonic_keys()) {
         keys += (keys.empty() ? "" : ", ") + key.key + " [" + (key.unit.empty() ? amplitude_unit : key.unit) + "]";
     }
     return {"harmonic", "", "{ " + keys + " }: a sine added to the history; its last full cycle is measured"};
 }
-ControlKey end() { return {"end", "s", "the last time simulated (default: the end of the history and harmonic)"}; }
 
-std::vector<ControlKind> rows() {
-    return {
-        {"displacement", "the history prescribes the depth d(t); the force follows (eq. 16)",
-         "d", {history("s, m", "d"), harmonic("m"), end()}, {}},
-        {"force",
-         "the history prescribes the force F(t) >= 0; the depth is solved for at each step (eq. 19)", "F",
-         {history("s, N", "F"), harmonic("N"), end()}, {}},
-        {"impact",
-         "a rigid indenter of mass m meets the surface at speed v0 at t = 0 and moves by m d'' = -F (eq. 37) until it "
-         "leaves",
-         "",
-         {{"velocity", "m/s", "the approach speed v0 > 0 at first contact", true},
-          {"end", "s", "the latest end (default: from the contact time's scales)"},
-          oblique_impact_keys()[0], oblique_impact_keys()[1], oblique_impact_keys()[2]},
-         {"indenter.mass"}},
-        {"spring",
-         "the history prescribes the base z(t) of a spring k in series with the massless indenter: F = k (z - d)", "z",
-         {history("s, m", "z"),
-          {"spring_constant", "N/m", "the spring's stiffness k > 0", true},
-          harmonic("m"),
-          {"force_pauses", "s", "[[start, end], ...]: the instrument's feedback holds the force over each"},
-          end()},
-         {}},
-        {"shore",
-         "a Shore A or D durometer (ASTM D2240, ISO 48-4): the standard's indenter pushed through its calibrated spring "
-         "(spring control with a constant base); the reading H = 100 - d / 0.025 mm over time",
-         "",
-         {{"scale", "", "\"A\" (soft rubbers) or \"D\" (hard rubbers, plastics)", true},
-          {"duration", "s",
-           "how long the foot rests on the sample (default " + format_value(shore_default_duration) + ")"}},
-         {}},
+ControlKey end_key() { return {"end", "s", "the last time simulated (default: the end of the history and harmonic)"}; }
+
+namespace {
+
+// The rows of the types of LoadControl (each its ControlTraits' rows), in the variant's order.
+template <class... Control>
+std::vector<ControlKind> rows_of(std::type_identity<std::variant<Control...>> /*types*/) {
+    std::vector<ControlKind> table;
+    const auto append = [&table](std::vector<ControlKind> rows) {
+        for (ControlKind& row : rows) table.push_back(std::move(row));
     };
+    (append(ControlTraits<Control>::rows()), ...);
+    return table;
 }
 
 std::vector<TangentialControlKind> tangential_rows() {
@@ -93,7 +76,7 @@ std::vector<std::string> harmonic_key_names() {
 }
 
 const std::vector<ControlKind>& controls() {
-    static const std::vector<ControlKind> table = rows();
+    static const std::vector<ControlKind> table = rows_of(std::type_identity<LoadControl>{});
     return table;
 }
 
@@ -124,13 +107,8 @@ const ControlKind& control_named(const std::string& name) {
 }
 
 const ControlKind& control_kind(const LoadControl& control) {
-    struct Name {
-        const char* operator()(const DisplacementControl&) const { return "displacement"; }
-        const char* operator()(const ForceControl&) const { return "force"; }
-        const char* operator()(const SpringControl& spring) const { return spring.shore ? "shore" : "spring"; }
-        const char* operator()(const ImpactControl&) const { return "impact"; }
-    };
-    return control_named(std::visit(Name{}, control));
+    return control_named(
+        visit_control(control, [](auto traits, const auto& data) -> std::string { return traits.row_name(data); }));
 }
 
 }  // namespace mdr::drivers

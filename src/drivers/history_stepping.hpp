@@ -1,29 +1,35 @@
 #pragma once
-// The stepping class of a history-driven control (displacement, force, spring) in the one loop (control_loop.hpp):
+// The stepping class of a history-driven control (displacement, force, spring) in the one loop (indentation.cpp):
 // its grid (the history's points with the cuts of the snapshots, the tangential load, the harmonic and the control,
 // graded after fast changes), its step (jumps against a dashpot, the trapezoidal rate, the control's depth, the
 // tangential layer's step) and its outcomes (tangential, harmonic). What differs between the three controls is a
-// class of normal_control.hpp.
+// step class of normal_control.hpp; HistoryControlTraits is what their ControlTraits share.
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <optional>
-#include <utility>
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/foundation/foundation.hpp"
+#include "control_traits.hpp"
 #include "cycle_measure.hpp"
-#include "normal_control.hpp"
+#include "default_numerics.hpp"
 #include "observer_list.hpp"
 #include "recorders.hpp"
 #include "stepping.hpp"
 #include "tangential_stepping.hpp"
 
 namespace mdr::drivers {
+
+/// Where the depth solve of a step starts: the extrapolated guess and the scale of its bracket.
+struct DepthGuess {
+    double guess = 0.0;  ///< d0 + (d0 - d_previous)
+    double scale = 0.0;  ///< |d0 - d_previous|, at least a small fraction of the depth scale
+};
 
 /// The time grid of a history-driven control: the history's points, the cuts of the snapshots, the tangential load,
 /// the harmonic and the control, graded after fast changes, with the harmonic added to the history's values.
@@ -59,17 +65,19 @@ std::vector<GridNode> history_grid(const ContactCase& contact_case, const Resolv
     return nodes;
 }
 
-/// Steps a history-driven control (`Control`: a class of normal_control.hpp) node by node along history_grid, with
-/// the tangential loading and the harmonic cycle measure of the case; the run ends at the grid's last node.
+/// Steps a history-driven control (`Control`: a step class of normal_control.hpp) node by node along history_grid,
+/// with the tangential loading and the harmonic cycle measure of the case; the run ends at the grid's last node.
 template <class Control>
 class HistoryStepping {
 public:
-    /// `contact_case`, `numerics` and `foundation` must outlive the stepping.
+    /// `contact_case`, `numerics`, `foundation` and `data` (the case's control, from which the step class is made)
+    /// must outlive the stepping.
+    template <class ControlData>
     HistoryStepping(const ContactCase& contact_case, const ResolvedNumerics& numerics,
-                    foundation::Foundation& foundation, Control control)
+                    foundation::Foundation& foundation, const ControlData& data)
         : contact_case_(contact_case),
           foundation_(foundation),
-          control_(std::move(control)),
+          control_(data),
           cache_(contact_case.material),
           nodes_(history_grid(contact_case, numerics, control_)),
           last_node_(nodes_.size() - 1),
@@ -195,6 +203,26 @@ private:
     std::optional<TangentialStepper> tangential_;
     std::optional<TangentialColumns<TangentialStepper>> tangential_columns_;
     std::optional<CycleMeasure> cycle_;
+};
+
+/// What the ControlTraits (control_traits.hpp) of every history-driven control `Control` share: HistoryStepping over
+/// its step class `Step` (normal_control.hpp, made from the control's data), its grid (history_grid), its default
+/// numerics (resolve_history_numerics: graded steps when Step solves for the depth, the half-width from
+/// `ControlTraits<Control>::largest_contact_radius`) and no rules within the run unless its traits have some.
+template <class Control, class Step>
+struct HistoryControlTraits {
+    using Stepping = HistoryStepping<Step>;
+    static std::vector<GridNode> grid(const ContactCase& contact_case, const ResolvedNumerics& numerics,
+                                      const Control& control) {
+        return history_grid(contact_case, numerics, Step(control));
+    }
+    static ResolvedNumerics resolve_numerics(const ContactCase& contact_case, const Control& control) {
+        return resolve_history_numerics(
+            contact_case, Step::solves_depth, [&](double peak, const ForceRadiusBound& force_bound) {
+                return ControlTraits<Control>::largest_contact_radius(contact_case, control, peak, force_bound);
+            });
+    }
+    static void validate_within_run(const ContactCase& /*contact_case*/, const Control& /*control*/) {}
 };
 
 }  // namespace mdr::drivers

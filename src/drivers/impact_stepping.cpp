@@ -6,9 +6,95 @@
 #include "mdr/drivers/oblique_sphere.hpp"
 #include "mdr/drivers/work_estimate.hpp"
 #include "mdr/error.hpp"
+#include "mdr/profile/profile.hpp"
+#include "default_numerics.hpp"
 #include "impact_end.hpp"
 
 namespace mdr::drivers {
+namespace {
+
+void validate_impact(const ContactCase& contact_case, const ImpactControl& impact) {
+    require_positive("load.velocity", impact.velocity);
+    require_positive("indenter.mass", impact.mass);
+    const auto& material = contact_case.material;
+    if (material.is_fluid() && material.terms().empty()) {  // a dashpot alone: no spring to give the energy back
+        throw InvalidInput("material.eta", format_value(material.viscosity()),
+                           "an impact needs an elastic part beside the dashpot: a purely viscous body stops the "
+                           "indenter at a finite depth, which never rebounds (restitution 0, the contact never ends)");
+    }
+    if (contact_case.tangential) {
+        throw InvalidInput("tangential", "[...]",
+                           "a tangential load history is not for an impact; an oblique impact takes only "
+                           "tangential.friction with load.tangential_velocity or load.spin");
+    }
+}
+
+void validate_oblique(const ContactCase& contact_case) {
+    const ObliqueImpactLoad* oblique = contact_case.oblique();
+    if (!oblique) return;
+    require_non_negative("tangential.friction", oblique->friction);
+    require_finite("load.tangential_velocity", oblique->tangential_velocity);
+    require_finite("load.spin", oblique->spin);
+    const profile::ProfileDefinition sphere = contact_case.indenter->definition();
+    if (sphere.shape != "sphere") {
+        throw InvalidInput("indenter.shape", "\"" + sphere.shape + "\"",
+                           "an oblique impact needs shape = \"sphere\" (its radius is the lever of the friction)");
+    }
+    if (oblique->moment_of_inertia) require_positive("indenter.moment_of_inertia", *oblique->moment_of_inertia);
+    // Section 6 maps the tangential problem exactly for an incompressible body only: with a compressible body (or
+    // two bodies, whose elastic mismatch couples them) the normal and tangential problems are coupled (section 7).
+    if (contact_case.tangential_approximate()) {
+        throw InvalidInput("load.tangential_velocity", format_value(oblique->tangential_velocity),
+                           "an oblique impact needs an incompressible half-space and a rigid sphere: with a "
+                           "compressible body or two bodies the normal and tangential problems are coupled (section "
+                           "7) and the tangential mapping is not exact");
+    }
+}
+
+// Impact: the time step from the elastic impact with the stiffest spring modulus, the foundation from the one
+// with the softest modulus (G_inf; for a fluid 1/J at ten stiff impact times), which bounds the depth.
+ResolvedNumerics resolve_impact_numerics(const ContactCase& contact_case, const ImpactControl& impact) {
+    const auto& numerics = contact_case.numerics;
+    const auto& material = contact_case.material;
+    const auto& indenter = *contact_case.indenter;
+    double spring_modulus = material.equilibrium_modulus();
+    for (const auto& term : material.terms()) spring_modulus += term.modulus;
+    if (!(spring_modulus > 0.0)) spring_modulus = material.viscosity() / std::max(material.shortest_time(), 1e-300);
+    const ElasticImpact stiff = elastic_impact(indenter, spring_modulus, impact.mass, impact.velocity);
+    const double soft_modulus =
+        material.is_fluid() ? 1.0 / material.creep(10.0 * stiff.duration) : material.equilibrium_modulus();
+    const ElasticImpact soft =
+        elastic_impact(indenter, std::min(soft_modulus, spring_modulus), impact.mass, impact.velocity);
+
+    ResolvedNumerics resolved;
+    resolved.output_every = numerics.output_every;
+    resolved.elements = numerics.elements.value_or(default_elements);
+    double step = stiff.duration / static_cast<double>(default_steps);
+    if (material.viscosity() > 0.0) {
+        // A parallel dashpot brakes the indenter within m / (8 eta a) (eq. 21 with the dashpot's force 8 eta a v):
+        // an overdamped impact is decided on that scale, which the elastic contact time does not see. The soft
+        // radius bounds a, so this time is bounded below.
+        const double braking_time = impact.mass / (8.0 * material.viscosity() * soft.radius);
+        step = std::min(step, braking_time / static_cast<double>(braking_steps));
+    }
+    if (impact.oblique) {
+        // The contact point's motion has the effective mass m_t, 1/m_t = 1/m + R^2/I (2/7 m for a solid sphere, for
+        // which the normal steps resolve it): a lighter m_t oscillates faster, as sqrt(m_t).
+        const auto [radius, inertia] = oblique_sphere(contact_case);
+        const double tangential_mass = 1.0 / (1.0 / impact.mass + radius * radius / inertia);
+        step *= std::min(1.0, std::sqrt(tangential_mass / (2.0 / 7.0 * impact.mass)));
+    }
+    resolved.time_step = numerics.time_step.value_or(std::min(step, shortest_time_above(material, step) / 5.0));
+    resolved.half_width = numerics.half_width.value_or(
+        indenter.is_flat_punch() ? indenter.max_radius() : std::min(1.2 * soft.radius, indenter.max_radius()));
+    // Without load.end: ten soft contact times, and at most 200 stiff ones (a fluid may never push back).
+    resolved.time_limit = std::isfinite(contact_case.end_time)
+                              ? contact_case.end_time
+                              : std::min(10.0 * soft.duration, 200.0 * stiff.duration);
+    return resolved;
+}
+
+}  // namespace
 
 ImpactStepping::ImpactStepping(const ContactCase& contact_case, const ResolvedNumerics& numerics,
                                foundation::Foundation& foundation, const ImpactControl& impact)
@@ -96,6 +182,35 @@ double ImpactStepping::end_contact(double time_step) {
     }
     outcome_ = outcome;
     return -outcome.rebound_velocity;
+}
+
+std::vector<ControlKind> ControlTraits<ImpactControl>::rows() {
+    const auto& oblique = oblique_impact_keys();
+    return {{"impact",
+             "a rigid indenter of mass m meets the surface at speed v0 at t = 0 and moves by m d'' = -F (eq. 37) until "
+             "it leaves",
+             "",
+             {{"velocity", "m/s", "the approach speed v0 > 0 at first contact", true},
+              {"end", "s", "the latest end (default: from the contact time's scales)"},
+              oblique[0], oblique[1], oblique[2]},
+             {"indenter.mass"}}};
+}
+
+void ControlTraits<ImpactControl>::validate(const ContactCase& contact_case, const ImpactControl& impact) {
+    validate_impact(contact_case, impact);
+    validate_oblique(contact_case);
+    if (contact_case.load.harmonic) throw InvalidInput("load.harmonic", "{...}", "not with control = \"impact\"");
+}
+
+ResolvedNumerics ControlTraits<ImpactControl>::resolve_numerics(const ContactCase& contact_case,
+                                                               const ImpactControl& impact) {
+    return resolve_impact_numerics(contact_case, impact);
+}
+
+std::vector<GridNode> ControlTraits<ImpactControl>::grid(const ContactCase& /*contact_case*/,
+                                                         const ResolvedNumerics& /*numerics*/,
+                                                         const ImpactControl& /*impact*/) {
+    throw InvalidInput("load.control", "\"impact\"", "has no history grid (its steps end at the contact's end)");
 }
 
 }  // namespace mdr::drivers

@@ -1,7 +1,8 @@
 #pragma once
-// The stepping class of an impact in the one loop (control_loop.hpp): m d'' = -F (eq. 37) on steps of
+// An impact in the drivers: its stepping class in the one loop (indentation.cpp), m d'' = -F (eq. 37) on steps of
 // numerics.time_step cut at the snapshot times, with its oblique part, until the last element has left contact
-// (eq. 39), its stop rule; the restitution and the rest of ImpactOutcome are its outcome.
+// (eq. 39), its stop rule; the restitution and the rest of ImpactOutcome are its outcome. Beside it the
+// ControlTraits of ImpactControl (control_traits.hpp).
 
 #include <array>
 #include <cstddef>
@@ -9,8 +10,10 @@
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/foundation/foundation.hpp"
+#include "control_traits.hpp"
 #include "oblique_stepping.hpp"
 #include "observer_list.hpp"
 #include "recorders.hpp"
@@ -62,6 +65,25 @@ private:
     double force_ = 0.0;
     std::array<double, 2> inner_exits_{-1.0, -1.0};  ///< when the two innermost elements last left contact
     std::optional<ImpactOutcome> outcome_;
+};
+
+template <>
+struct ControlTraits<ImpactControl> {
+    using Stepping = ImpactStepping;
+    static std::vector<ControlKind> rows();
+    static const char* row_name(const ImpactControl& /*impact*/) { return "impact"; }
+    /// A mass and an approach speed > 0, an elastic part beside a dashpot, no tangential load and no harmonic; an
+    /// oblique impact: friction >= 0, finite tangential velocity and spin, a sphere, a positive moment of inertia
+    /// when one is given, one incompressible body (tangential_exact).
+    static void validate(const ContactCase& contact_case, const ImpactControl& impact);
+    static void validate_within_run(const ContactCase& /*contact_case*/, const ImpactControl& /*impact*/) {}
+    /// The impact's defaults (resolve_numerics): the time step from the elastic impact with the stiffest spring
+    /// modulus, at most the braking time over braking_steps with a parallel dashpot, scaled for a light contact
+    /// point of an oblique impact; the half-width from the elastic impact with the softest modulus.
+    static ResolvedNumerics resolve_numerics(const ContactCase& contact_case, const ImpactControl& impact);
+    /// Throws mdr::InvalidInput (`load.control`): an impact's steps end at the contact's end, not on a history grid.
+    static std::vector<GridNode> grid(const ContactCase& contact_case, const ResolvedNumerics& numerics,
+                                      const ImpactControl& impact);
 };
 
 }  // namespace mdr::drivers

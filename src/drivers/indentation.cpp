@@ -2,16 +2,12 @@
 
 #include <cstddef>
 #include <optional>
-#include <utility>
-#include <variant>
 #include <vector>
 
 #include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
-#include "history_stepping.hpp"
-#include "impact_stepping.hpp"
-#include "normal_control.hpp"
+#include "every_control.hpp"
 #include "observer_list.hpp"
 #include "recorders.hpp"
 
@@ -19,20 +15,21 @@ namespace mdr::drivers {
 namespace {
 
 // The one loop of every control on the half-space, as Boost.Odeint's integrate: the stepping class of the control
-// (HistoryStepping over a class of normal_control.hpp, ImpactStepping) takes each step to the next node of its grid
-// and says which state is the last (its stop rule); after each step the observers see the state: the standard ones
-// (rows, the control's own, snapshots, progress), then the caller's. A stepping class has a constructor
-// (contact_case, numerics, foundation, its control's data...), columns(), add_observers(observers, result),
-// shear_stress(), first_state(), step(n) and add_outcomes(result), the outcomes that need the whole run.
-template <class Stepping, class... ControlData>
+// (its ControlTraits' Stepping: HistoryStepping over a step class of normal_control.hpp, ImpactStepping) takes each
+// step to the next node of its grid and says which state is the last (its stop rule); after each step the observers
+// see the state: the standard ones (rows, the control's own, snapshots, progress), then the caller's. A stepping
+// class has a constructor (contact_case, numerics, foundation, its control's data), columns(),
+// add_observers(observers, result), shear_stress(), first_state(), step(n) and add_outcomes(result), the outcomes
+// that need the whole run.
+template <class Stepping, class Control>
 IndentationResult run_control(const ContactCase& contact_case, const ProgressObserver& progress,
-                              const StepObservers& extra_observers, ControlData&&... control_data) {
+                              const StepObservers& extra_observers, const Control& control) {
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
     const auto& numerics = result.numerics;
     foundation::Foundation foundation(contact_case.material, *contact_case.indenter,
                                       numerics.half_width / static_cast<double>(numerics.elements), numerics.elements);
-    Stepping stepping(contact_case, numerics, foundation, std::forward<ControlData>(control_data)...);
+    Stepping stepping(contact_case, numerics, foundation, control);
 
     // The standard observers fill the result; the caller's follow them.
     ObserverList observers(numerics.output_every);
@@ -57,56 +54,19 @@ IndentationResult run_control(const ContactCase& contact_case, const ProgressObs
     return result;
 }
 
-// The stepping class of each control.
-struct ControlRun {
-    const ContactCase& contact_case;
-    const ProgressObserver& progress;
-    const StepObservers& observers;
-
-    IndentationResult operator()(const DisplacementControl&) const {
-        return run_control<HistoryStepping<DisplacementStepping>>(contact_case, progress, observers,
-                                                                 DisplacementStepping{});
-    }
-    IndentationResult operator()(const ForceControl&) const {
-        return run_control<HistoryStepping<ForceStepping>>(contact_case, progress, observers, ForceStepping{});
-    }
-    IndentationResult operator()(const SpringControl& spring) const {
-        return run_control<HistoryStepping<SpringStepping>>(contact_case, progress, observers,
-                                                           SpringStepping(spring));
-    }
-    IndentationResult operator()(const ImpactControl& impact) const {
-        return run_control<ImpactStepping>(contact_case, progress, observers, impact);
-    }
-};
-
-// The grid of each history-driven control (indentation_grid); an impact has no history grid.
-struct HistoryGrid {
-    const ContactCase& contact_case;
-    const ResolvedNumerics& numerics;
-
-    std::vector<GridNode> operator()(const DisplacementControl&) const {
-        return history_grid(contact_case, numerics, DisplacementStepping{});
-    }
-    std::vector<GridNode> operator()(const ForceControl&) const {
-        return history_grid(contact_case, numerics, ForceStepping{});
-    }
-    std::vector<GridNode> operator()(const SpringControl& spring) const {
-        return history_grid(contact_case, numerics, SpringStepping(spring));
-    }
-    std::vector<GridNode> operator()(const ImpactControl&) const {
-        throw InvalidInput("load.control", "\"impact\"", "has no history grid (its steps end at the contact's end)");
-    }
-};
-
 }  // namespace
 
 std::vector<GridNode> indentation_grid(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
-    return std::visit(HistoryGrid{contact_case, numerics}, contact_case.control);
+    return visit_control(contact_case.control, [&](auto traits, const auto& control) {
+        return traits.grid(contact_case, numerics, control);
+    });
 }
 
 IndentationResult run_indentation(const ContactCase& contact_case, const ProgressObserver& progress,
                                   const StepObservers& extra_observers) {
-    return std::visit(ControlRun{contact_case, progress, extra_observers}, contact_case.control);
+    return visit_control(contact_case.control, [&](auto traits, const auto& control) {
+        return run_control<typename decltype(traits)::Stepping>(contact_case, progress, extra_observers, control);
+    });
 }
 
 IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress,

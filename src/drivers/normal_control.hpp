@@ -1,28 +1,26 @@
 #pragma once
-// What each history-driven control does in HistoryStepping (history_stepping.hpp), its step in the one loop of
-// run_indentation (indentation.cpp): its grid cuts and grid, its starting depth, the depth at the end of a step, the
-// force of a jump, the depth and load shown, and its own observers. One class per history-driven control type of
-// LoadControl (load_control.hpp); an impact is a stepping class of its own (impact_stepping.hpp).
+// The history-driven controls in the drivers. What each does in HistoryStepping (history_stepping.hpp), its step in
+// the one loop of run_indentation (indentation.cpp), is a step class: its grid cuts and grid, its starting depth, the
+// depth at the end of a step, the force of a jump, the depth and load shown, and its own observers. One step class
+// per history-driven control type of LoadControl (load_control.hpp), made from its data, and beside it the type's
+// ControlTraits (control_traits.hpp); an impact is a stepping class of its own (impact_stepping.hpp).
 
 #include <algorithm>
 #include <optional>
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/foundation/foundation.hpp"
+#include "control_traits.hpp"
+#include "history_stepping.hpp"
 #include "observer_list.hpp"
 #include "paused_base.hpp"
 #include "recorders.hpp"
 #include "stepping.hpp"
 
 namespace mdr::drivers {
-
-/// Where the depth solve of a step starts: the extrapolated guess and the scale of its bracket.
-struct DepthGuess {
-    double guess = 0.0;  ///< d0 + (d0 - d_previous)
-    double scale = 0.0;  ///< |d0 - d_previous|, at least a small fraction of the depth scale
-};
 
 /// Common defaults: no z column, no grid cuts or extra observers, the grid as made, the indenter starting at the
 /// surface, the depth shown as stepped and the prescribed value as the load, nothing to do at a settled node.
@@ -44,6 +42,7 @@ public:
 /// The history prescribes the depth (eq. 16): each step goes to it.
 class DisplacementStepping : public HistoryControl {
 public:
+    explicit DisplacementStepping(const DisplacementControl& /*control*/) {}
     static constexpr bool solves_depth = false;  ///< the depth is given; no trapezoidal rate of its own
     double target(double history_value) const { return history_value; }
     double jump_force(double /*target*/, double /*depth*/, const foundation::Foundation& foundation) const {
@@ -55,9 +54,22 @@ public:
     }
 };
 
+template <>
+struct ControlTraits<DisplacementControl> : HistoryControlTraits<DisplacementControl, DisplacementStepping> {
+    static std::vector<ControlKind> rows();
+    static const char* row_name(const DisplacementControl& /*control*/) { return "displacement"; }
+    /// No jump in depth against a dashpot; a harmonic's rules.
+    static void validate(const ContactCase& contact_case, const DisplacementControl& control);
+    /// 1.1 times the Lee-Radok radius g^-1 at the largest depth (an upper bound under unloading too: the free
+    /// surface never rises above the undeformed level).
+    static double largest_contact_radius(const ContactCase& contact_case, const DisplacementControl& control,
+                                         double peak, const ForceRadiusBound& force_bound);
+};
+
 /// The history prescribes the force F >= 0 (eq. 19): each step solves F(d) = target on the foundation.
 class ForceStepping : public HistoryControl {
 public:
+    explicit ForceStepping(const ForceControl& /*control*/) {}
     static constexpr bool solves_depth = true;
     /// The sine's round-off at a zero of the validated (>= 0) prescribed force is no pull.
     double target(double history_value) const { return std::max(history_value, 0.0); }
@@ -74,6 +86,17 @@ public:
     double shown_depth(double depth, double target, const foundation::Foundation& foundation) const {
         return target == 0.0 ? std::min(depth, foundation.touching_depth()) : depth;
     }
+};
+
+template <>
+struct ControlTraits<ForceControl> : HistoryControlTraits<ForceControl, ForceStepping> {
+    static std::vector<ControlKind> rows();
+    static const char* row_name(const ForceControl& /*control*/) { return "force"; }
+    /// No negative force in the history; a harmonic's rules, and it must not make the force pull.
+    static void validate(const ContactCase& contact_case, const ForceControl& control);
+    /// The force-control bound at the largest force.
+    static double largest_contact_radius(const ContactCase& contact_case, const ForceControl& control, double peak,
+                                         const ForceRadiusBound& force_bound);
 };
 
 /// The history prescribes the base z of a spring k: each step solves F(d) + k d = k z; a force pause (PausedBase)
@@ -137,6 +160,23 @@ private:
     std::optional<PausedBase> paused_;
     bool holding_ = false;
     std::optional<ShoreRecorder> shore_readings_;
+};
+
+template <>
+struct ControlTraits<SpringControl> : HistoryControlTraits<SpringControl, SpringStepping> {
+    /// spring, then shore (a spring control with a durometer).
+    static std::vector<ControlKind> rows();
+    static const char* row_name(const SpringControl& control) { return control.shore ? "shore" : "spring"; }
+    /// A harmonic's rules; a spring constant > 0; a base history starting at or above the surface (z <= 0) without
+    /// jumps, or a Shore test's rules (a duration > 0, the durometer's spring, no harmonic, no tangential load).
+    static void validate(const ContactCase& contact_case, const SpringControl& control);
+    /// Force pauses (none in a Shore test) in time order and apart, each starting after the history's first time,
+    /// ending after its start and by the end, and not overlapping a harmonic.
+    static void validate_within_run(const ContactCase& contact_case, const SpringControl& control);
+    /// The smaller of the displacement-control bound at the largest base (d <= z) and the force-control one at the
+    /// force k max z (F <= k z); with force pauses the largest base bounded by paused_base_peak.
+    static double largest_contact_radius(const ContactCase& contact_case, const SpringControl& control, double peak,
+                                         const ForceRadiusBound& force_bound);
 };
 
 }  // namespace mdr::drivers

@@ -22,8 +22,8 @@ void validate(const HarmonicLoad& harmonic, const std::string& prefix);
 /// [0, 90).
 double incidence_velocity(double velocity, double incidence_deg);
 
-/// Checks a contact problem: an indenter and a load history, then the rules of its control type (LoadControl, one
-/// overload per type in case_validation.cpp; a value of another control cannot be written): for an impact a mass and an
+/// Checks a contact problem: an indenter and a load history, then the rules of its control type (LoadControl, each
+/// type's own, src/drivers/control_traits.hpp; a value of another control cannot be written): for an impact a mass and an
 /// approach speed > 0 and no tangential load; for an oblique impact friction >= 0, finite tangential velocity and spin,
 /// a sphere, a positive moment of inertia when one is given, one incompressible body (tangential_exact); under force
 /// control no negative force; under displacement control no jump against a dashpot; an end after the first history time

@@ -3,10 +3,9 @@
 /// The tables of controls (`[load] control`, `[tangential] control`): name, one-line documentation and the `[load]`
 /// keys each takes, with units. The case reader (which `[load]` keys exist, which control takes each, which are
 /// required), its error messages, the description of a case, summary.json and the control table of
-/// docs/case-format.md take them from here: a control's new key is a new entry of its row (and of its reader,
-/// src/io/control_readers.cpp). A control's data is its type in LoadControl (load_control.hpp), its rules
-/// drivers::validate's overload for that type, its steps a stepping class (src/drivers/normal_control.hpp;
-/// impact.cpp for an impact).
+/// docs/case-format.md take them from here. A control's rows are its type's (the `rows` of its ControlTraits,
+/// src/drivers/control_traits.hpp, beside its stepping class), in the order of LoadControl's types (load_control.hpp);
+/// a control's new key is a new entry of its row and of its reader (src/io/control_readers.cpp).
 
 #include <string>
 #include <vector>
@@ -50,7 +49,8 @@ std::vector<std::string> harmonic_key_names();
 /// three, and what the reader looks for.
 const std::vector<ControlKey>& oblique_impact_keys();
 
-/// Every control, in the order of the documentation.
+/// Every control, in the order of the documentation: LoadControl's types in order, each with its rows (a spring's:
+/// spring, then shore).
 const std::vector<ControlKind>& controls();
 
 /// Every `[load]` key: `control`, then each row's keys in the order of the table, each once.

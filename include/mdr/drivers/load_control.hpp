@@ -50,8 +50,9 @@ struct ImpactControl {
     std::optional<ObliqueImpactLoad> oblique{};  ///< an oblique impact: its tangential part
 };
 
-/// What the load prescribes: one of the controls. Adding a control is one new type here, one row of the table of
-/// controls (controls.hpp) and its reader's row (src/io/control_readers.cpp).
-using LoadControl = std::variant<DisplacementControl, ForceControl, SpringControl, ImpactControl>;
+/// What the load prescribes: one of the controls, in the order of the table of controls (controls.hpp). Adding a
+/// control is one new type here, its drivers' side (its ControlTraits: stepping, rules, numerics, rows of the table)
+/// and its reader's row (src/io/control_readers.cpp): docs/architecture.md, "How to add a control".
+using LoadControl = std::variant<DisplacementControl, ForceControl, ImpactControl, SpringControl>;
 
 }  // namespace mdr::drivers

@@ -8,8 +8,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <iterator>
 #include <set>
 #include <string>
+#include <utility>
+#include <variant>
+#include <vector>
 
 namespace {
 
@@ -32,6 +37,23 @@ TEST(ControlRegistry, ARowPerControlFoundByNameAndByValue) {
     SpringControl durometer{.shore = make_shore_test(ShoreScale::D, 15.0)};
     EXPECT_EQ(control_kind(durometer).name, "shore");
     EXPECT_EQ(control_kind(SpringControl{}).name, "spring");
+}
+
+// The table is made from the control types' own rows, in the order of LoadControl's types: the row of the n-th type's
+// value is the n-th row once the durometer's is left out, and the durometer's row follows the spring's.
+TEST(ControlRegistry, TheRowsFollowTheOrderOfTheControlTypes) {
+    using namespace mdr::drivers;
+    std::vector<std::string> by_type;
+    [&by_type]<std::size_t... Index>(std::index_sequence<Index...>) {
+        (by_type.push_back(control_kind(LoadControl(std::in_place_index<Index>)).name), ...);
+    }(std::make_index_sequence<std::variant_size_v<LoadControl>>{});
+    std::vector<std::string> table;
+    for (const auto& kind : controls()) table.push_back(kind.name);
+    const auto shore = std::find(table.begin(), table.end(), "shore");
+    ASSERT_NE(shore, table.end());
+    EXPECT_EQ(*std::prev(shore), "spring");
+    table.erase(shore);
+    EXPECT_EQ(table, by_type);
 }
 
 TEST(ControlRegistry, UnknownControlListsTheTable) {

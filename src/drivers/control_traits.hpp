@@ -1,0 +1,48 @@
+#pragma once
+// What a control brings to the drivers, found by its type: one specialisation of ControlTraits for each type of
+// LoadControl (load_control.hpp), next to its stepping class (normal_control.hpp for the history-driven controls,
+// impact_stepping.hpp for an impact; every_control.hpp includes them all). The one loop (indentation.cpp), the rules
+// of a case (case_validation.cpp) and the default numerics (contact_case.cpp) visit LoadControl by visit_control,
+// which hands the traits of the type it meets, so a control without its specialisation does not compile, and none
+// of them lists the controls.
+
+#include <type_traits>
+#include <variant>
+
+#include "mdr/drivers/load_control.hpp"
+
+namespace mdr::drivers {
+
+/// The drivers' side of control type `Control`. A specialisation has:
+/// - `Stepping`, its stepping class in the one loop (run_control in indentation.cpp), constructed from
+///   (contact_case, numerics, foundation, the control's data): its grid and grid cuts, step, stop rule, columns,
+///   own observers and outcomes;
+/// - `static void validate(const ContactCase&, const Control&)`, its rules that need no valid end time, and
+///   `static void validate_within_run(const ContactCase&, const Control&)`, those checked after the times
+///   (drivers::validate);
+/// - `static ResolvedNumerics resolve_numerics(const ContactCase&, const Control&)`, its default numerics
+///   (drivers::resolve_numerics);
+/// - `static std::vector<GridNode> grid(const ContactCase&, const ResolvedNumerics&, const Control&)`, its time grid
+///   (drivers::indentation_grid);
+/// - `static std::vector<ControlKind> rows()`, its rows of the table of controls (drivers::controls: name, one-line
+///   documentation, history column, `[load]` keys with units; a spring has two, spring and shore), and
+///   `static const char* row_name(const Control&)`, the name of the row of a value (drivers::control_kind).
+template <class Control>
+struct ControlTraits;
+
+}  // namespace mdr::drivers
+
+namespace mdr::drivers {
+
+/// `visit(ControlTraits<T>{}, data)` for the control `data` of type T that `control` holds: the drivers' one way of
+/// dispatching on the control (every specialisation of ControlTraits is then needed: include every_control.hpp).
+template <class Visitor>
+decltype(auto) visit_control(const LoadControl& control, Visitor&& visit) {
+    return std::visit(
+        [&](const auto& data) -> decltype(auto) {
+            return visit(ControlTraits<std::remove_cvref_t<decltype(data)>>{}, data);
+        },
+        control);
+}
+
+}  // namespace mdr::drivers
