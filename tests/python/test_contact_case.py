@@ -258,8 +258,8 @@ def test_a_converted_material_is_described_in_the_cases_units():
 
 def test_a_pickled_converted_material_runs_as_the_original():
     """The definition (hence the description) and the conversion's times travel with the pickle (a Dask worker's
-    copy), so the default
-    time step (resolve_numerics: no material-time cap for a converted series' nodes) and the text are the same."""
+    copy), so the default time step (resolve_numerics: no material-time cap for a converted series' nodes) and the
+    text are the same."""
     import pickle
 
     material = mdr.Material.power_law(G0=1e3, beta=0.3, window=(1e-4, 10.0))
