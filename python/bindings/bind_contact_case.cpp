@@ -80,13 +80,14 @@ drivers::LoadControl load_control(const py::handle& control) {
 }
 
 // The half-space's material as the case file's reader presents it (rheology::contact_material, one incompressible
-// body): a converted material with its certificate, description and conversion times (its own series, not
-// converted again).
-rheology::ContactMaterial half_space(const py::handle& material) {
+// body): a converted material with its certificate, its description in the case's units `system` and its
+// conversion times (its own series, not converted again).
+rheology::ContactMaterial half_space(const py::handle& material, const io::UnitSystem& system) {
     if (py::isinstance<ConvertedMaterial>(material)) {
         const auto& converted = material.cast<const ConvertedMaterial&>();
         const rheology::Rheology& series = converted;
-        return rheology::contact_material(rheology::Body{rheology::ModelMaterial{series, converted.origin()}});
+        return rheology::contact_material(
+            rheology::Body{rheology::ModelMaterial{series, converted.origin(io::unit_names(system))}});
     }
     if (!py::isinstance<rheology::Rheology>(material)) {
         throw py::type_error("material: expected an mdr.Material, got " + type_name(material));
@@ -136,8 +137,8 @@ drivers::ContactCase contact_case(const CaseArguments& given) {
         tangential = argument<drivers::TangentialLoad>(given.tangential, "tangential", "an mdr.Tangential");
         drivers::validate(*tangential);  // before its end time is used, as the reader does
     }
-    rheology::ContactMaterial material = half_space(given.material);
     const io::UnitSystem& system = io::unit_system(given.units);
+    rheology::ContactMaterial material = half_space(given.material, system);
     drivers::ContactCase built{
         .title = given.title,
         .material = std::move(material.material),

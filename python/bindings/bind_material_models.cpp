@@ -105,8 +105,7 @@ py::object build(const MaterialModel& model, const py::args& args, const py::kwa
     rheology::ModelMaterial material = rheology::build_material(model, parameters, options);
     if (!material.origin.certificate) return py::cast(std::move(material.series));
     return py::cast(ConvertedMaterial{std::move(material.series), std::move(*material.origin.certificate), model.name,
-                                      std::move(parameters), tolerance, std::move(material.origin.description),
-                                      material.origin.times_from_conversion});
+                                      std::move(parameters), tolerance, material.origin.times_from_conversion});
 }
 
 // The [material] table of a converted material's model: what a case converts again (mdr.Material objects in a
@@ -207,7 +206,7 @@ void bind_converted_material(py::module_& module) {
         const Certificate& c = m.certificate;
         return py::make_tuple(m.equilibrium_modulus(), m.viscosity(), terms, c.error, c.window.shortest,
                               c.window.longest, c.window.frequencies, c.tolerance, c.kind, definition_table(m),
-                              m.description, m.times_from_conversion);
+                              m.times_from_conversion);
     };
     const auto restore = [](const py::tuple& s) {
         std::vector<rheology::RelaxationTerm> terms;
@@ -216,7 +215,7 @@ void bind_converted_material(py::module_& module) {
         ConvertedMaterial material{
             rheology::Rheology(s[0].cast<double>(), s[1].cast<double>(), std::move(terms)),
             Certificate{s[3].cast<double>(), std::move(window), s[7].cast<double>(), s[8].cast<std::string>()},
-            {}, {}, {}, s[10].cast<std::string>(), s[11].cast<bool>()};
+            {}, {}, {}, s[10].cast<bool>()};
         restore_definition(material, s[9].cast<py::dict>());
         return material;
     };

@@ -20,12 +20,17 @@ struct ConvertedMaterial : rheology::Rheology {
     std::string model;                     ///< the registry's name of the model
     rheology::ModelParameters parameters;  ///< the values given to its factory (a table's file: absolute)
     std::optional<double> tolerance;       ///< the factory's tolerance, when given
-    std::string description{};             ///< the model's description (rheology::build_material)
     bool times_from_conversion = false;    ///< rheology::MaterialOrigin::times_from_conversion of the conversion
 
-    /// What the series stands for in a drivers::ContactCase: the description, the certificate and whether its
-    /// times come from the conversion (the model's functions are not kept).
-    rheology::MaterialOrigin origin() const { return {description, certificate, {}, times_from_conversion}; }
+    /// What the series stands for in a drivers::ContactCase: the model described with the units `unit_names` of
+    /// the case (rheology::describe_model of its parameters with their defaults, as a case file's reader describes
+    /// it), the certificate and whether its times come from the conversion (the model's functions are not kept).
+    rheology::MaterialOrigin origin(const rheology::UnitNames& unit_names) const {
+        const rheology::MaterialModel& registered = rheology::material_model(model);
+        return {rheology::describe_model(registered, rheology::with_defaults(registered, parameters), nullptr,
+                                         unit_names),
+                certificate, {}, times_from_conversion};
+    }
 };
 
 /// mdr.Material: the canonical rheology and its factories.

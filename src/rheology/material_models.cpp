@@ -194,14 +194,19 @@ const MaterialModel& material_model(const std::string& name) {
     throw InvalidInput("model", "\"" + name + "\"", "unknown model; one of " + names);
 }
 
-ModelMaterial build_material(const MaterialModel& model, const ModelParameters& parameters,
-                             const ConversionOptions& options) {
+ModelParameters with_defaults(const MaterialModel& model, const ModelParameters& parameters) {
     ModelParameters complete = parameters;
     for (const ModelParameter& parameter : model.parameters) {
         if (complete.has(parameter.key)) continue;
         if (parameter.required) throw InvalidInput(parameter.key, "(missing)", "is required");
         if (parameter.kind == Kind::number) complete.numbers[parameter.key] = parameter.default_value;
     }
+    return complete;
+}
+
+ModelMaterial build_material(const MaterialModel& model, const ModelParameters& parameters,
+                             const ConversionOptions& options) {
+    const ModelParameters complete = with_defaults(model, parameters);
     if (model.needs_window) {
         if (!options.window) {
             throw InvalidInput("window", "(missing)",

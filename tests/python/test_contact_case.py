@@ -235,9 +235,31 @@ def test_a_converted_material_certified_over_fewer_lags_than_the_case_needs_is_r
                         harmonic=mdr.Harmonic(amplitude=1e-6, frequency=5e3, start=0.5, end=2.0), numerics=mdr.Numerics(time_step=1e-5))
 
 
+def test_a_converted_material_is_described_in_the_cases_units():
+    """A case's numbers are in its declared units (docs/case-format.md, Units): in um-nN-s a modulus is in kPa, so
+    the power law's G0 = 1 reads "G0 = 1 kPa" as in the same case given as a dict, not the factory's SI "1 Pa" (which
+    stood beside the same line's "G(0+) = ... kPa"), in the description and in the refusal naming the material."""
+    material = mdr.Material.power_law(G0=1.0, beta=0.2, window=(1e-4, 10.0))
+    history = [(0.0, 0.0), (1.0, 1.0)]
+    case = mdr.ContactCase(material=material, indenter=mdr.Indenter.sphere(R=10.0), control=mdr.DisplacementControl(),
+                           history=history, units="um-nN-s")
+    as_dict = mdr.check({"units": "um-nN-s", "material": {"model": "power_law", "G0": 1.0, "beta": 0.2},
+                         "indenter": {"shape": "sphere", "R": 10.0},
+                         "load": {"control": "displacement", "history": [list(point) for point in history]}})
+    expected = "power_law (G0 = 1 kPa, beta = 0.2, t0 = 1 s)"
+    assert expected in as_dict and expected in mdr.check(case) and expected in mdr.run(case).description
+    with pytest.raises(mdr.InvalidInput, match=r"^material = power_law \(G0 = 1 kPa, beta = 0.2, t0 = 1 s\): is "):
+        mdr.ContactCase(material=mdr.Material.power_law(G0=1.0, beta=0.2, window=(1e-3, 10.0)),
+                        indenter=mdr.Indenter.sphere(R=10.0), control=mdr.DisplacementControl(), history=history,
+                        units="um-nN-s")
+    si = mdr.ContactCase(material=material, indenter=sphere(), control=mdr.DisplacementControl(), history=history)
+    assert "power_law (G0 = 1 Pa, beta = 0.2, t0 = 1 s)" in mdr.check(si)
+
+
 def test_a_pickled_converted_material_runs_as_the_original():
-    """The description and the conversion's times travel with the pickle (a Dask worker's copy), so the default
-    time step (resolve_numerics: no material-time cap for a converted series' nodes) and the text are the same."""
+    """The definition (hence the description) and the conversion's times travel with the pickle (a Dask worker's
+    copy), so the default time step (resolve_numerics: no material-time cap for a converted series' nodes) and the
+    text are the same."""
     import pickle
 
     material = mdr.Material.power_law(G0=1e3, beta=0.3, window=(1e-4, 10.0))

@@ -85,6 +85,10 @@ const std::vector<MaterialModel>& material_models();
 /// The row named `name`; throws mdr::InvalidInput(`model`, "name", "unknown model; one of ...").
 const MaterialModel& material_model(const std::string& name);
 
+/// `parameters` with each number `model` defaults that is not given set to its default (ModelParameter::
+/// default_value); throws mdr::InvalidInput `key = (missing): is required` for a required key not given.
+ModelParameters with_defaults(const MaterialModel& model, const ModelParameters& parameters);
+
 /// Builds the material of `model` from `parameters`: checks that every required key is given, then calls the
 /// factory. Errors name the key as in a shear table (the caller prefixes its table).
 ModelMaterial build_material(const MaterialModel& model, const ModelParameters& parameters,
