@@ -18,7 +18,7 @@ namespace mdr::drivers {
 double layer_poisson_ratio(const ContactCase& contact_case);
 
 /// Throws mdr::InvalidInput (key `layer` or the offending key, its value and the rule) for a case with a `[layer]`
-/// that needs what is not built on a layer yet: Shore control, an oblique impact, a parallel dashpot with a harmonic
+/// that needs what is not built on a layer yet: an oblique impact, a parallel dashpot with a harmonic
 /// load (which runs on cells), a force pause, tangential loading, snapshots, a compressible body whose Poisson ratio
 /// changes in time or a deformable indenter (layer_poisson_ratio). Does nothing for a case without a layer.
 void validate_layer(const ContactCase& contact_case);
@@ -36,6 +36,9 @@ void validate_layer(const ContactCase& contact_case);
 /// rate of the solved depth, and takes a force jump at a fixed depth (LayerStepper::jump). An impact runs
 /// run_layer_impact (src/drivers/layer_impact.hpp). `numerics.elements` is the least number of Gauss nodes over the
 /// contact (default contact::default_layer_nodes).
+/// A Shore test (`control = "shore"`) is that spring control with the durometer's spring, its base step at the
+/// landing, its stop at the full extension and the half-space's reading columns (ShoreRecorder); the layer solves the
+/// durometer's tip (layer_indenter), and a contact that reaches the rod is refused (layer_shore_refusal).
 /// A case whose contact would grow again after it shrank (a reload, a held depth that the recovering surface
 /// reaches, creep under a held force, a force after the contact was lost, a spring's base reaching the recovering
 /// surface, a harmonic load: outside Ting's solution) runs the coupled time-stepping on cells instead, from the start
