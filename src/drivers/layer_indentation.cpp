@@ -141,7 +141,9 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
                                    .start = force_control ? std::optional<double>(0.0) : std::nullopt};
     LayerStepper stepper(material, layer, unit_plane_modulus, grid.front().time, largest_depth, dashpot_rate);
     const bool by_radius = !indenter->is_flat_punch();
-    // A Shore test: the indenter stops at its full extension, the readings as on the half-space (normal_control.hpp).
+    // A Shore test: the readings as on the half-space (normal_control.hpp). Its indenter's stop at the full extension
+    // is never reached on a layer: Type D's spring force vanishes there, and Type A's contact reaches the rod (refused)
+    // at a shallower depth (about 1.76 mm on the half-space, less on a layer).
     const ShoreTest* shore = contact_case.shore();
     std::optional<ShoreRecorder> shore_recorder;
     if (shore) shore_recorder.emplace(shore->instrument, result);
@@ -193,9 +195,8 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
             if (now.phase == LayerPhase::approach && right_side <= 0.0) {  // the surface not reached: F = 0
                 next = stepper.wait(node.time);
             } else if (dashpot_rate.trapezoidal && node.time == now.time && now.phase != LayerPhase::lifted_off) {
-                // A force jump against the dashpot (a spring's base jumps only at a durometer's landing): it takes
-                // the force at once, the spring's k (z - d).
-                next = stepper.jump(right_side - stiffness * now.centre);
+                // A force jump against the dashpot (a spring's base must not jump): it takes the force at once.
+                next = stepper.jump(target);
             } else if (now.phase == LayerPhase::lifted_off) {
                 next = stepper.recover(node.time);
                 // The recovering surface would be loaded again: a force, or the spring's indenter reaching it.
@@ -214,10 +215,6 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
                 const double slope = next.force_slope + stiffness;
                 const double noise = slope > 0.0 ? force_tolerance / slope : 0.0;
                 if (now.phase == LayerPhase::growing && next.centre < now.centre - noise) next = recede();
-                // A durometer's indenter stops at its full extension (reading 0): the stop takes the rest.
-                if (shore && next.centre > shore->instrument.full_extension()) {
-                    next = stepper.grow(node.time, shore->instrument.full_extension());
-                }
             }
             // Without force the spring's indenter hangs at the base, apart from the surface.
             depth = spring && next.force == 0.0 ? target : next.centre;
@@ -254,6 +251,10 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
                                         const StepObservers& observers) {
     validate_layer(contact_case);
     if (!observers.empty()) refuse("layer", "[...]", "a run with step observers (a sweep's measures)");
+    if (contact_case.shore() && contact_case.material.viscosity() > 0.0) {
+        refuse("material.eta", format_value(contact_case.material.viscosity()),
+               "a durometer's landing against a parallel dashpot");
+    }
     // A harmonic load's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19).
     if (contact_case.load.harmonic) {
         return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), progress);
