@@ -37,15 +37,16 @@ void validate_layer(const ContactCase& contact_case);
 /// run_layer_impact (src/drivers/layer_impact.hpp). `numerics.elements` is the least number of Gauss nodes over the
 /// contact (default contact::default_layer_nodes).
 /// A Shore test (`control = "shore"`) is that spring control with the durometer's spring, its base step at the
-/// landing, its stop at the full extension and the half-space's reading columns (ShoreRecorder); the layer solves the
-/// durometer's tip (layer_indenter), and a contact that reaches the rod is refused (layer_shore_refusal).
+/// landing and the half-space's reading columns (ShoreRecorder); the layer solves the durometer's tip
+/// (layer_indenter); a contact that reaches the rod is refused (layer_shore_refusal), which comes before the stop.
 /// A case whose contact would grow again after it shrank (a reload, a held depth that the recovering surface
 /// reaches, creep under a held force, a force after the contact was lost, a spring's base reaching the recovering
 /// surface, a harmonic load: outside Ting's solution) runs the coupled time-stepping on cells instead, from the start
 /// (Ting 1968's general case; eq. L16 to L19, src/drivers/layer_cells.hpp): a history once the run of Ting's class
 /// finds the regrowth (the progress then held at the fraction reached), a harmonic at once; `numerics.elements` is
 /// then its number of cells (default default_layer_cells). Throws as validate_layer; for step observers (not built
-/// on a layer yet); and naming `material.eta` for a parallel dashpot with a regrowing contact.
+/// on a layer yet); and naming `material.eta` for a parallel dashpot with a regrowing contact or in
+/// a Shore test.
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {},
                                         const StepObservers& observers = {});
 
