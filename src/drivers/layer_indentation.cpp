@@ -15,8 +15,10 @@
 #include "mdr/numerics/monotone_root.hpp"
 #include "layer_impact.hpp"
 #include "layer_regrowing.hpp"
+#include "layer_shore.hpp"
 #include "layer_stepping.hpp"
 #include "paused_base.hpp"
+#include "recorders.hpp"
 
 namespace mdr::drivers {
 
@@ -76,7 +78,6 @@ void validate_layer(const ContactCase& contact_case) {
     if (!(layer.thickness > 0.0) || !std::isfinite(layer.thickness)) {
         throw InvalidInput("layer.thickness", format_value(layer.thickness), "must be finite and > 0");
     }
-    if (contact_case.shore()) refuse("load.control", "\"shore\"", "Shore control");
     if (contact_case.oblique()) refuse("load.tangential_velocity", "[...]", "an oblique impact");
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
     if (!contact_case.snapshots.empty()) refuse("output.snapshots", "[...]", "a pressure snapshot");
@@ -105,7 +106,8 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     // Unit effective shear modulus: E* = 2 G / (1 - nu) = 4 G_eff (eq. 21, 56), the kernel with the body's constant nu
     // (eq. L1; `material` is G_eff(t) = G(t) / (2 (1 - nu)), so the layer separates as the incompressible one).
     constexpr double unit_plane_modulus = 4.0;
-    const contact::LayerContact layer(*contact_case.layer, layer_poisson_ratio(contact_case), contact_case.indenter,
+    const auto indenter = layer_indenter(contact_case);
+    const contact::LayerContact layer(*contact_case.layer, layer_poisson_ratio(contact_case), indenter,
                                       std::max(largest_radius, 1e-300), nodes);
     const double profile_depth = contact_case.indenter->equivalent(largest_radius);
     // The depth's scale under force control and in an impact: the profile's at the largest radius (a flat punch's
@@ -145,7 +147,13 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
                                                                  contact_case.control),
                                    .start = force_control ? std::optional<double>(0.0) : std::nullopt};
     LayerStepper stepper(material, layer, unit_plane_modulus, grid.front().time, largest_depth, dashpot_rate);
-    const bool by_radius = !contact_case.indenter->is_flat_punch();
+    const bool by_radius = !indenter->is_flat_punch();
+    // A Shore test: the readings as on the half-space (normal_control.hpp). Its indenter's stop at the full extension
+    // is never reached on a layer: Type D's spring force vanishes there, and Type A's contact reaches the rod (refused)
+    // at a shallower depth (about 1.76 mm on the half-space, less on a layer).
+    const ShoreTest* shore = contact_case.shore();
+    std::optional<ShoreRecorder> shore_recorder;
+    if (shore) shore_recorder.emplace(shore->instrument, result);
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     std::size_t reported = 0;
     double previous_centre = 0.0;
@@ -212,7 +220,11 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
                 const auto grow = [&](double d) { return stepper.grow(node.time, d); };
                 next = by_radius ? stepper.grow_to(node.time, k, right_side, force_tolerance)
                                  : stepper.grow(node.time, solve(grow));
-                if (now.phase == LayerPhase::growing && next.centre < now.centre) next = recede();
+                // A fall within the solve's tolerance (the force's over dF/dd + k) is its noise, not a receding
+                // contact (a held base on an elastic layer, a durometer's constant one).
+                const double slope = next.force_slope + k;
+                const double noise = slope > 0.0 ? force_tolerance / slope : 0.0;
+                if (now.phase == LayerPhase::growing && next.centre < now.centre - noise) next = recede();
             }
             // Without force the spring's indenter hangs at the base, apart from the surface.
             depth = spring && next.force == 0.0 ? target : next.centre;
@@ -221,13 +233,18 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
         previous_centre = now.centre;
         stepper.commit(next);
         if (i > 0) ++result.steps;
-        if (i % every == 0 || i + 1 == grid.size()) {
+        const bool row = i % every == 0 || i + 1 == grid.size();
+        if (row) {
             result.time.push_back(node.time);
             result.depth.push_back(depth);
             result.force.push_back(next.force);
             result.radius.push_back(next.contact.contact_radius);
             // In a pause the feedback's base, z = d + F / k.
-            if (spring) result.base.push_back(holding ? paused->base_in_pause(depth) : base);
+            if (spring && !shore) result.base.push_back(holding ? paused->base_in_pause(depth) : base);
+        }
+        if (shore_recorder) {
+            const bool settled = i + 1 == grid.size() || grid[i + 1].time != node.time;
+            shore_recorder->observe({.time = node.time, .depth = depth, .settled = settled, .row = row});
         }
         // At a pause's start the force to hold; at its end the base's shift (the node settled: no jump follows).
         if (paused && (i + 1 == grid.size() || grid[i + 1].time != node.time)) {
@@ -249,6 +266,10 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
                                         const StepObservers& observers) {
     validate_layer(contact_case);
     if (!observers.empty()) refuse("layer", "[...]", "a run with step observers (a sweep's measures)");
+    if (contact_case.shore() && contact_case.material.viscosity() > 0.0) {
+        refuse("material.eta", format_value(contact_case.material.viscosity()),
+               "a durometer's landing against a parallel dashpot");
+    }
     // A harmonic load's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19); a
     // fit's model runs any history there (NumericsOptions::layer_cells).
     if (contact_case.load.harmonic || contact_case.numerics.layer_cells) {
@@ -266,7 +287,18 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     try {
         return run_one_maximum(contact_case, monotone);
     } catch (const ContactRegrows&) {
+        // A durometer's spring pushes a creeping body: its contact only grows (the stop holds the depth), so a
+        // regrowth is not expected there; the cells have no stop, so refuse it rather than run another test.
+        if (contact_case.shore()) {
+            throw InvalidInput("load.control", "\"shore\"",
+                               "the contact would shrink and grow again on the [layer], which a durometer's test "
+                               "is not built for (issue 28)");
+        }
         return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), monotone);
+    } catch (const InvalidInput& error) {
+        // The contact beyond the largest radius prepared: in a Shore test, the durometer's rod.
+        if (contact_case.shore() && error.key() == "layer") throw layer_shore_refusal();
+        throw;
     }
 }
 

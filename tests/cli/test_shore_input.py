@@ -77,3 +77,35 @@ def test_short_shore_test_reports_only_the_readings_it_reaches(run_case):
     assert result.returncode == 0, result.stderr
     summary = json.loads((result.out / "summary.json").read_text())
     assert "shore_1s" in summary and "shore_3s" not in summary and "shore_15s" not in summary
+
+
+# A Shore test on a sheet ([layer], issue 28): the same columns and summary, the reading harder than the half-space's.
+SHEET = '[layer]\nthickness = 2.0e-3\ninterface = "bonded"\n'
+LAYER_BAD_CASES = [
+    ("layer-contact-reaches-the-rod", '[material]\nmodel = "elastic"\nG = 1.0e4\n' + SHORE + SHEET,
+     ["load.control", '"shore"', "the contact reaches the durometer's rod"]),
+    ("layer-parallel-dashpot", '[material]\nmodel = "kelvin_voigt"\nG = 1.0e6\neta = 1.0e6\n' + SHORE + SHEET,
+     ["material.eta", "parallel dashpot", "[layer]"]),
+]
+
+
+@pytest.mark.parametrize("text,fragments", [case[1:] for case in LAYER_BAD_CASES],
+                         ids=[case[0] for case in LAYER_BAD_CASES])
+def test_run_refuses_what_a_sheet_does_not_build(run_case, text, fragments):
+    assert_bad_input(run_case(text), *fragments)
+
+
+def test_shore_on_a_sheet_writes_the_readings(run_case):
+    half_space = run_case(MATERIAL + SHORE)
+    assert half_space.returncode == 0, half_space.stderr
+    thick = json.loads((half_space.out / "summary.json").read_text())
+    sheet = run_case(MATERIAL + SHORE + SHEET)  # into the same result directory
+    assert sheet.returncode == 0, sheet.stderr
+    summary = json.loads((sheet.out / "summary.json").read_text())
+    assert summary["control"] == "shore"
+    for key in ("shore_1s", "shore_3s", "shore_15s"):
+        assert summary[key] > thick[key] + 1.0  # the table carries part of the load (docs/case-format.md)
+    with open(sheet.out / "history.csv", newline="") as file:
+        rows = list(csv.DictReader(file))
+    assert list(rows[0]) == ["t", "d", "F", "a", "shore"]
+    assert float(rows[-1]["shore"]) == pytest.approx(summary["shore_15s"], abs=1e-9)

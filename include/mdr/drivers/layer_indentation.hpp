@@ -18,10 +18,9 @@ namespace mdr::drivers {
 double layer_poisson_ratio(const ContactCase& contact_case);
 
 /// Throws mdr::InvalidInput (key `layer` or the offending key, its value and the rule) for a case with a `[layer]`
-/// that needs what is not built on a layer yet: Shore control, an oblique impact, a parallel dashpot with a harmonic
-/// load or NumericsOptions::layer_cells (which run on cells), tangential loading, snapshots, a compressible body whose
-/// Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio). Does nothing for a case without a
-/// layer.
+/// that needs what is not built on a layer yet: an oblique impact, tangential loading, snapshots, a compressible body
+/// whose Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio). Does nothing for a case without
+/// a layer.
 void validate_layer(const ContactCase& contact_case);
 
 /// Runs a displacement-, force- or spring-controlled case on its layer: the elastic layer's force F_el(d) at unit
@@ -38,6 +37,9 @@ void validate_layer(const ContactCase& contact_case);
 /// the trapezoidal rate of the solved depth, and takes a force jump at a fixed depth (LayerStepper::jump). An impact
 /// runs run_layer_impact (src/drivers/layer_impact.hpp). `numerics.elements` is the least number of Gauss nodes over
 /// the contact (default contact::default_layer_nodes).
+/// A Shore test (`control = "shore"`) is that spring control with the durometer's spring, its base step at the
+/// landing and the half-space's reading columns (ShoreRecorder); the layer solves the durometer's tip
+/// (layer_indenter); a contact that reaches the rod is refused (layer_shore_refusal), which comes before the stop.
 /// A case whose contact would grow again after it shrank (a reload, a held depth that the recovering surface
 /// reaches, creep under a held force or a force pause after an unload, a force after the contact was lost, a spring's
 /// base reaching the recovering surface, a harmonic load: outside Ting's solution) runs the coupled time-stepping on
@@ -46,7 +48,7 @@ void validate_layer(const ContactCase& contact_case);
 /// finds the regrowth (the progress then held at the fraction reached), a harmonic (or any history with
 /// NumericsOptions::layer_cells) at once; `numerics.elements` is then its number of cells (default
 /// default_layer_cells). Throws as validate_layer; for step observers (not built on a layer yet); and naming
-/// `material.eta` for a parallel dashpot with a regrowing contact.
+/// `material.eta` for a force jump in contact against a parallel dashpot on the cells or in a Shore test.
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {},
                                         const StepObservers& observers = {});
 
