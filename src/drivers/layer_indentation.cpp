@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "mdr/contact/layer_contact.hpp"
@@ -72,8 +73,19 @@ double layer_poisson_ratio(const ContactCase& contact_case) {
                        "same times, the moduli in one ratio)");
 }
 
+// The controls the layer drivers run (run_one_maximum, run_layer_regrowing, run_layer_impact), which test the control
+// by its type: with no catch-all, a new type of LoadControl does not compile in validate_layer until it is run or
+// refused on a layer here (docs/architecture.md, "A control").
+struct LayerControls {
+    void operator()(const DisplacementControl&) const {}
+    void operator()(const ForceControl&) const {}
+    void operator()(const SpringControl&) const {}
+    void operator()(const ImpactControl&) const {}
+};
+
 void validate_layer(const ContactCase& contact_case) {
     if (!contact_case.layer) return;
+    std::visit(LayerControls{}, contact_case.control);
     const auto& layer = *contact_case.layer;
     if (!(layer.thickness > 0.0) || !std::isfinite(layer.thickness)) {
         throw InvalidInput("layer.thickness", format_value(layer.thickness), "must be finite and > 0");
