@@ -187,7 +187,6 @@ private:
         const double touch_depth = depth_ + fraction * (*free_end - depth_);
         foundation_.begin_step(cache_.get(touch_time), rate_);
         foundation_.advance(depth_, touch_depth);
-        previous_depth_ = depth_;
         depth_ = touch_depth;
         rate_.reset();
         return touch_time;
