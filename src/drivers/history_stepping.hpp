@@ -138,12 +138,16 @@ public:
                     (nodes_[n].value - harmonic.value(t1)) - (nodes_[n - 1].value - harmonic.value(t0));
                 rate_ = history_change / time_step + harmonic.rate(t0);
             }
-            foundation_.begin_step(cache_.get(time_step), rate_);
-            const DepthGuess start{.guess = depth_ + (depth_ - previous_depth_),
-                                   .scale = std::max(std::abs(depth_ - previous_depth_), 1e-6 * depth_scale_)};
+            // The step from the touch on (all of it unless the indenter moves free and touches inside it).
+            const double touch_time = trapezoidal_ ? free_until_touch(time_step, target) : 0.0;
+            const double contact_step = time_step - touch_time;
+            const double before = touch_time > 0.0 ? depth_ : previous_depth_;
+            foundation_.begin_step(cache_.get(contact_step), rate_);
+            const DepthGuess start{.guess = depth_ + (depth_ - before),
+                                   .scale = std::max(std::abs(depth_ - before), 1e-6 * depth_scale_)};
             const double new_depth = control_.step_depth(foundation_, depth_, start, target);
             foundation_.advance(depth_, new_depth);
-            if (trapezoidal_) rate_ = next_rate(depth_, new_depth, time_step);
+            if (trapezoidal_) rate_ = next_rate(depth_, new_depth, contact_step);
             if (tangential_) tangential_->step(cache_.get(time_step), nodes_[n - 1].time, nodes_[n].time);
             previous_depth_ = depth_;
             depth_ = new_depth;
@@ -166,6 +170,27 @@ public:
     }
 
 private:
+    // With a parallel dashpot, a step that starts with nothing in contact while the indenter moves free (a spring's
+    // base carries it, Step::free_depth) is split where the free indenter touches the body (Foundation::
+    // touch_fraction): the foundation steps free up to the touch, and depth_ moves there. The rest of the step is
+    // solved from the touch with the rate unknown (the secant from the touch): the indenter's rate breaks at the
+    // touch (F = k (z - d) is continuous, so the dashpots in contact stop it), and the approach's rate in a
+    // dashpot would be a force out of balance with the spring. Returns the time stepped free (0: no split).
+    double free_until_touch(double time_step, double target) {
+        if (foundation_.contact_count() != 0) return 0.0;
+        const auto free_end = control_.free_depth(target);
+        if (!free_end) return 0.0;
+        foundation_.begin_step(cache_.get(time_step), rate_);
+        const double fraction = foundation_.touch_fraction(depth_, *free_end);
+        if (!(fraction > 0.0 && fraction < 1.0)) return 0.0;
+        const double touch_time = fraction * time_step;
+        const double touch_depth = depth_ + fraction * (*free_end - depth_);
+        foundation_.begin_step(cache_.get(touch_time), rate_);
+        foundation_.advance(depth_, touch_depth);
+        depth_ = touch_depth;
+        rate_.reset();
+        return touch_time;
+    }
     // The indenter's rate after a force jump dF at fixed depth: the dashpots of the n elements in contact take it,
     // dF = 8 dx eta n d(rate) (eq. 16, 21); unknown without contact.
     std::optional<double> jumped_rate(double rate, double force_jump) const {

@@ -23,13 +23,17 @@
 namespace mdr::drivers {
 
 /// Common defaults: no z column, no grid cuts or extra observers, the grid as made, the indenter starting at the
-/// surface, the depth shown as stepped and the prescribed value as the load, nothing to do at a settled node.
+/// surface and never moving free of the body, the depth shown as stepped and the prescribed value as the load,
+/// nothing to do at a settled node.
 class HistoryControl {
 public:
     bool base_column() const { return false; }  ///< z is a column of the result
     void add_cuts(std::vector<double>& /*cuts*/, double /*end_time*/) const {}
     void shape_grid(std::vector<GridNode>& /*nodes*/) const {}
     double start_depth(const GridNode& /*first*/) const { return 0.0; }
+    /// The depth at the step's end if nothing touched the indenter, where it moves free of the body (a spring's
+    /// base carries it); none where the depth is prescribed or a force needs a contact.
+    std::optional<double> free_depth(double /*target*/) const { return std::nullopt; }
     void add_observers(ObserverList& /*observers*/, IndentationResult& /*result*/) {}
     void begin_step(double /*from*/, double /*to*/) {}
     double shown_depth(double depth, double /*target*/, const foundation::Foundation& /*foundation*/) const {
@@ -129,6 +133,12 @@ public:
     double start_depth(const GridNode& first) const { return first.value; }
     void add_observers(ObserverList& observers, IndentationResult& result) {
         if (control_.shore) observers.add(shore_readings_.emplace(control_.shore->instrument, result));
+    }
+    /// Out of contact the indenter hangs at the base, d = z, up to the durometer's stop; a force pause holds a
+    /// contact.
+    std::optional<double> free_depth(double target) const {
+        if (holding_) return std::nullopt;
+        return control_.shore ? std::min(target, control_.shore->instrument.full_extension()) : target;
     }
     void begin_step(double from, double to) { holding_ = paused_ && paused_->holding(from, to); }
     /// The base: the history shifted by the pauses passed (PausedBase).

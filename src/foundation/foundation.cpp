@@ -278,6 +278,20 @@ double Foundation::trial_force(double depth_start, double depth_end) const {
     return 2.0 * normal_stiffness_factor * spacing_ * sum;
 }
 
+double Foundation::touch_fraction(double depth_start, double depth_end) const {
+    const std::size_t end = reach(std::max(depth_start, depth_end));
+    const double* displacement = element_displacements();
+    const double* stress = element_stresses();
+    const double* flags = element_flags();
+    double first = 1.0;
+    for (std::size_t i = 0; i < end; ++i) {
+        if (flags[i] != 0.0) continue;
+        const Outcome outcome = evaluate(i, displacement[i], stress[i], depth_start, depth_end);
+        if (outcome.split) first = std::min(first, outcome.fraction);
+    }
+    return first;
+}
+
 __attribute__((target_clones("avx2", "default"))) void Foundation::advance(double depth_start, double depth_end) {
     const double deepest = std::max(depth_start, depth_end);
     if (deepest > beyond_ && profile_ends_) {

@@ -72,6 +72,20 @@ def test_shore_run_writes_the_readings(run_case):
     assert float(last["shore"]) == pytest.approx(summary["shore_15s"], abs=1e-9)
 
 
+def test_kelvin_voigt_readings_stay_on_the_scale(run_case):
+    # A parallel dashpot holds the indenter at the surface at the landing: from then on every row keeps the Type A
+    # spring's balance F = 8.05 N - 3000 N/m d (docs/case-format.md) and reads within 0..100 (the first step's depth
+    # solve once flew off to d = -2.1 mm, F = 0: a reading of 185).
+    result = run_case('[material]\nmodel = "kelvin_voigt"\nG = 1.0e6\neta = 1.0e6\n' + SHORE + NUMERICS)
+    assert result.returncode == 0, result.stderr
+    with open(result.out / "history.csv", newline="") as file:
+        rows = list(csv.DictReader(file))
+    for row in rows:
+        assert 0.0 <= float(row["shore"]) <= 100.0, row
+    for row in rows[1:]:  # after the landing
+        assert float(row["F"]) == pytest.approx(8.05 - 3000.0 * float(row["d"]), rel=1e-9), row
+
+
 def test_short_shore_test_reports_only_the_readings_it_reaches(run_case):
     result = run_case(shore_case(SHORE + "duration = 2.0\n"))
     assert result.returncode == 0, result.stderr

@@ -74,6 +74,10 @@ public:
     /// The total normal force [N] (eq. 21) the foundation would carry if the depth went linearly from
     /// `depth_start` to `depth_end` over the prepared step; the state is not changed.
     double trial_force(double depth_start, double depth_end) const;
+    /// Where inside the prepared step (0..1) the indenter would first reach an element out of contact (eq. 14, its
+    /// creeping surface interpolated linearly as in advance) if the depth went linearly from `depth_start` to
+    /// `depth_end`; 1 when it reaches none. The state is not changed.
+    double touch_fraction(double depth_start, double depth_end) const;
     /// Advances the state over the prepared step with the depth going linearly from `depth_start` to `depth_end`.
     /// Throws mdr::InvalidInput when the contact reaches the end of the foundation (key `numerics.half_width`)
     /// or of a tabulated profile (key `indenter.r`).
