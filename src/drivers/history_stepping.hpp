@@ -132,11 +132,8 @@ public:
                 // A prescribed depth under a harmonic with a dashpot: the depth is not linear inside a step, and
                 // the secant rate would be first order at the nodes. The dashpot takes the trapezoidal rate from the
                 // prescribed rate at the step's start, the history's slope plus the sine's rate (second order).
-                const auto& harmonic = *contact_case_.load.harmonic;
-                const double t0 = nodes_[n - 1].time, t1 = nodes_[n].time;
-                const double history_change =
-                    (nodes_[n].value - harmonic.value(t1)) - (nodes_[n - 1].value - harmonic.value(t0));
-                rate_ = history_change / time_step + harmonic.rate(t0);
+                rate_ = contact_case_.load.start_rate(nodes_[n - 1].time, nodes_[n - 1].value, nodes_[n].time,
+                                                      nodes_[n].value);
             }
             // The step from the touch on (all of it unless the indenter moves free and touches inside it).
             const double touch_time = trapezoidal_ ? free_until_touch(time_step, target) : 0.0;

@@ -45,10 +45,7 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
         // (second order, as on the half-space, history_stepping.hpp).
         std::optional<double> start_rate;
         if (sine_rate && time_step > 0.0) {
-            const auto& harmonic = *contact_case.load.harmonic;
-            const double t0 = grid[i - 1].time, t1 = grid[i].time;
-            const double history_change = (value - harmonic.value(t1)) - (grid[i - 1].value - harmonic.value(t0));
-            start_rate = history_change / time_step + harmonic.rate(t0);
+            start_rate = contact_case.load.start_rate(grid[i - 1].time, grid[i - 1].value, grid[i].time, value);
         }
         // A force's round-off below zero is no pull; a spring's right side is k z.
         const LayerCellState state =

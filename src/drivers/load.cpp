@@ -11,6 +11,11 @@ double Load::value(double t) const {
     return history->value(t) + harmonic->value(t);
 }
 
+double Load::start_rate(double t0, double v0, double t1, double v1) const {
+    const double h0 = harmonic ? harmonic->value(t0) : 0.0, h1 = harmonic ? harmonic->value(t1) : 0.0;
+    return ((v1 - h1) - (v0 - h0)) / (t1 - t0) + (harmonic ? harmonic->rate(t0) : 0.0);
+}
+
 double Load::largest_value() const {
     return history->max_value() + (harmonic ? std::abs(harmonic->amplitude) : 0.0);
 }

@@ -23,6 +23,11 @@ struct Load {
     /// A bound of the largest prescribed value: the history's largest point plus the harmonic's |amplitude| (the
     /// history is required: a harmonic alone has no level to oscillate about).
     double largest_value() const;
+    /// The prescribed rate at the start of a step from (t0, v0) to (t1, v1), t1 > t0, of values of this load: the
+    /// history's slope over the step, (v1 - h(t1) - v0 + h(t0)) / (t1 - t0) with h the harmonic (0 without one),
+    /// plus the harmonic's rate at t0. A dashpot's trapezoidal rate starts from it, second order where the secant
+    /// rate of a sine would be first order at the nodes.
+    double start_rate(double t0, double v0, double t1, double v1) const;
     /// Last time [s] at which a part changes: the later of the history's last point and the harmonic's end.
     double end_time() const;
     /// Times [s] the time grid must step on: the history's points, and the harmonic's start, end and the bounds of
