@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -91,6 +92,7 @@ double layer_balance(const Spring& spring, double plane_modulus, double thicknes
         double equivalent(double x) const override { return of->equivalent(x); }
         double contact_radius(double d) const override { return of->contact_radius(d); }
         double max_radius() const override { return of->max_radius(); }
+        std::vector<double> kinks() const override { return of->kinks(); }
         profile::ProfileDefinition definition() const override { return of->definition(); }
     };
     const contact::LayerContact layer({thickness, interface}, poisson_ratio, std::make_shared<Tip>(indenter), rod);
