@@ -6,10 +6,10 @@
 namespace mdr::contact {
 
 ContactQuadrature contact_quadrature(double contact_radius, const std::vector<double>& kinks, std::size_t points,
-                                     const numerics::GaussRule& rule) {
+                                     const std::vector<numerics::GaussRule>& rules) {
     const double a = contact_radius;
     const auto rule_of = [&](std::size_t size) {
-        return size == rule.nodes.size() ? rule : numerics::make_gauss_rule(size);
+        return size < rules.size() && rules[size].nodes.size() == size ? rules[size] : numerics::make_gauss_rule(size);
     };
     std::vector<double> ends{0.0};
     for (const double kink : kinks) {

@@ -60,19 +60,22 @@ LayerContact::LayerContact(const Layer& layer, double poisson_ratio, std::shared
       indenter_(std::move(indenter)),
       max_contact_radius_(indenter_->is_flat_punch() ? indenter_->max_radius() : max_contact_radius),
       nodes_(nodes),
-      rule_(numerics::make_gauss_rule(std::max<std::size_t>(nodes, 1))),
       kinks_(indenter_->kinks()),
+      rules_(std::max<std::size_t>(nodes, 1) + 1),
       kernel_(layer.interface, poisson_ratio,
               (layer.thickness > 0.0 && std::isfinite(layer.thickness))
                   ? 2.0 * max_contact_radius_ / layer.thickness
                   : throw InvalidInput("layer.thickness", format_value(layer.thickness), "must be finite and > 0")) {
     if (nodes < 2) throw InvalidInput("numerics.elements", std::to_string(nodes), "must be >= 2 on a layer");
+    for (std::size_t size = kinks_.empty() ? nodes : std::min(min_panel_nodes, nodes); size <= nodes; ++size) {
+        rules_[size] = numerics::make_gauss_rule(size);
+    }
 }
 
 LayerContactState LayerContact::at_radius(double contact_radius) const {
     const double a = contact_radius, h = layer_.thickness;
     const ContactQuadrature quadrature =
-        contact_quadrature(a, kinks_, std::max(nodes_, 6 * static_cast<std::size_t>(std::ceil(a / h))), rule_);
+        contact_quadrature(a, kinks_, std::max(nodes_, 6 * static_cast<std::size_t>(std::ceil(a / h))), rules_);
     const std::vector<double>& x = quadrature.nodes;
     const std::vector<double>& w = quadrature.weights;
     const std::size_t nodes = x.size();

@@ -72,8 +72,9 @@ private:
     std::shared_ptr<const profile::Profile> indenter_;
     double max_contact_radius_;
     std::size_t nodes_;
-    numerics::GaussRule rule_;  ///< the rule with nodes_ points
     std::vector<double> kinks_;  ///< the indenter's (profile::Profile::kinks): the quadrature's panels end there
+    /// rules_[k]: the k-point Gauss-Legendre rule for k = nodes_ and, with kinks, for each panel's k up to nodes_
+    std::vector<numerics::GaussRule> rules_;
     LayerKernel kernel_;
 };
 
