@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "contact_quadrature.hpp"
 #include "mdr/error.hpp"
 #include "mdr/numerics/gauss_rule.hpp"
 #include "mdr/numerics/monotone_root.hpp"
@@ -59,23 +60,25 @@ LayerContact::LayerContact(const Layer& layer, double poisson_ratio, std::shared
       indenter_(std::move(indenter)),
       max_contact_radius_(indenter_->is_flat_punch() ? indenter_->max_radius() : max_contact_radius),
       nodes_(nodes),
-      rule_(numerics::make_gauss_rule(std::max<std::size_t>(nodes, 1))),
+      kinks_(indenter_->kinks()),
+      rules_(std::max<std::size_t>(nodes, 1) + 1),
       kernel_(layer.interface, poisson_ratio,
               (layer.thickness > 0.0 && std::isfinite(layer.thickness))
                   ? 2.0 * max_contact_radius_ / layer.thickness
                   : throw InvalidInput("layer.thickness", format_value(layer.thickness), "must be finite and > 0")) {
     if (nodes < 2) throw InvalidInput("numerics.elements", std::to_string(nodes), "must be >= 2 on a layer");
+    for (std::size_t size = kinks_.empty() ? nodes : std::min(min_panel_nodes, nodes); size <= nodes; ++size) {
+        rules_[size] = numerics::make_gauss_rule(size);
+    }
 }
 
 LayerContactState LayerContact::at_radius(double contact_radius) const {
     const double a = contact_radius, h = layer_.thickness;
-    const std::size_t nodes = std::max(nodes_, 6 * static_cast<std::size_t>(std::ceil(a / h)));
-    const numerics::GaussRule rule = nodes == nodes_ ? rule_ : numerics::make_gauss_rule(nodes);
-    std::vector<double> x(nodes), w(nodes);
-    for (std::size_t i = 0; i < nodes; ++i) {
-        x[i] = a * rule.nodes[i];
-        w[i] = a * rule.weights[i];
-    }
+    const ContactQuadrature quadrature =
+        contact_quadrature(a, kinks_, std::max(nodes_, 6 * static_cast<std::size_t>(std::ceil(a / h))), rules_);
+    const std::vector<double>& x = quadrature.nodes;
+    const std::vector<double>& w = quadrature.weights;
+    const std::size_t nodes = x.size();
     // K(x -+ s) = k((x -+ s)/h)/h (eq. L4); the Nystroem matrix I - (1/pi) w_j [K(x_i - x_j) + K(x_i + x_j)].
     const auto kernel_sum = [&](double xi, double s) { return (kernel_((xi - s) / h) + kernel_((xi + s) / h)) / h; };
     std::vector<double> matrix(nodes * nodes);
@@ -106,7 +109,8 @@ LayerContactState LayerContact::at_radius(double contact_radius) const {
 }
 
 double LayerContact::touch_stiffness() const {
-    return indenter_->is_flat_punch() ? at_radius(max_contact_radius_).stiffness : 0.0;
+    const double touch = indenter_->is_flat_punch() ? max_contact_radius_ : indenter_->flat_radius();
+    return touch > 0.0 ? at_radius(std::min(touch, max_contact_radius_)).stiffness : 0.0;
 }
 
 LayerContactState LayerContact::at_depth(double depth, double radius_hint) const {

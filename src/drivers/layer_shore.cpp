@@ -2,6 +2,7 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "mdr/error.hpp"
 
@@ -17,6 +18,8 @@ public:
     double equivalent(double x) const override { return indenter_->equivalent(x); }
     double contact_radius(double depth) const override { return indenter_->contact_radius(depth); }
     double max_radius() const override { return indenter_->max_radius(); }
+    std::vector<double> kinks() const override { return indenter_->kinks(); }
+    double flat_radius() const override { return indenter_->flat_radius(); }
     std::string describe() const override { return indenter_->describe(); }
     profile::ProfileDefinition definition() const override { return indenter_->definition(); }
 

@@ -31,6 +31,8 @@ public:
     double equivalent(double x) const override { return tip_->equivalent(x); }
     double contact_radius(double depth) const override { return tip_->contact_radius(depth); }
     double max_radius() const override { return tip_->max_radius(); }
+    std::vector<double> kinks() const override { return tip_->kinks(); }
+    double flat_radius() const override { return tip_->flat_radius(); }
     bool is_flat_punch() const override { return true; }
     std::string describe() const override { return name_ + ", rod radius " + format_value(max_radius()); }
     profile::ProfileDefinition definition() const override { return tip_->definition(); }

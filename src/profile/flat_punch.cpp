@@ -18,6 +18,7 @@ public:
     double contact_radius(double depth) const override { return depth > 0.0 ? radius_ : 0.0; }
     double max_radius() const override { return radius_; }
     bool is_flat_punch() const override { return true; }
+    double flat_radius() const override { return radius_; }
     ProfileDefinition definition() const override { return {"flat", {{"a", radius_}}}; }
 
 private:

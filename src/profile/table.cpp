@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace mdr::profile {
 namespace {
@@ -159,6 +160,28 @@ public:
     }
 
     double max_radius() const override { return r_.back(); }
+
+    /// The inner points where the interpolant's slope jumps: every point of a piecewise-linear table whose two
+    /// secants differ (beyond rounding: collinear points of a cone are no kink); none for the monotone cubic, whose
+    /// slope is continuous.
+    std::vector<double> kinks() const override {
+        std::vector<double> found;
+        if (interpolation_ != Interpolation::linear) return found;
+        for (std::size_t k = 1; k + 1 < r_.size(); ++k) {
+            const double before = pieces_[k - 1].c1, after = pieces_[k].c1;
+            if (std::abs(after - before) > 1e-12 * std::max(std::abs(before), std::abs(after))) found.push_back(r_[k]);
+        }
+        return found;
+    }
+
+    /// The last point with f = 0: both interpolants are exactly 0 up to it (f non-decreasing from f(0) = 0; the
+    /// monotone cubic's slopes vanish beside a flat interval).
+    double flat_radius() const override {
+        std::size_t last = 0;
+        while (last + 1 < f_.size() && f_[last + 1] == 0.0) ++last;
+        return r_[last];
+    }
+
     std::string describe() const override {
         return "table " + std::to_string(r_.size()) + " points, r_max = " + format_value(r_.back());
     }

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <vector>
 
 #include "mdr/contact/layer.hpp"
 #include "mdr/numerics/gauss_rule.hpp"
@@ -50,7 +51,8 @@ public:
                  double max_contact_radius, std::size_t nodes = default_layer_nodes);
 
     /// The equilibrium with contact radius 0 < a <= max_contact_radius (a flat punch: its radius, at depth 1), on
-    /// max(nodes, 6 ceil(a/h)) Gauss-Legendre nodes (the kernel's width is h).
+    /// about max(nodes, 6 ceil(a/h)) Gauss-Legendre nodes (the kernel's width is h), in panels split at the indenter's
+    /// kinks (contact_quadrature).
     LayerContactState at_radius(double contact_radius) const;
     /// The equilibrium at depth d (d <= 0: no contact): the contact radius solved from depth(a) = d (increasing in
     /// a; depth to 1e-8 of d) by numerics::monotone_root, bracketed from `near` (a nearby solution, such as the
@@ -61,8 +63,8 @@ public:
     LayerContactState at_depth(double depth, double radius_hint = 0.0) const;
     /// The largest contact radius the kernel was tabulated for [m].
     double max_contact_radius() const { return max_contact_radius_; }
-    /// dF/dd / E* [m] as the indenter touches: a flat punch's unit-depth force (eq. L5), 0 for a profile that touches
-    /// at a point.
+    /// dF/dd / E* [m] as the indenter touches: the unit-depth force (eq. L5) of its flat end's contact (a flat punch,
+    /// a flat-tipped table: profile::Profile::flat_radius), 0 for a profile that touches at a point.
     double touch_stiffness() const;
 
 private:
@@ -70,7 +72,9 @@ private:
     std::shared_ptr<const profile::Profile> indenter_;
     double max_contact_radius_;
     std::size_t nodes_;
-    numerics::GaussRule rule_;  ///< the rule with nodes_ points
+    std::vector<double> kinks_;  ///< the indenter's (profile::Profile::kinks): the quadrature's panels end there
+    /// rules_[k]: the k-point Gauss-Legendre rule for k = nodes_ and, with kinks, for each panel's k up to nodes_
+    std::vector<numerics::GaussRule> rules_;
     LayerKernel kernel_;
 };
 

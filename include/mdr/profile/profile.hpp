@@ -48,6 +48,14 @@ public:
     /// True when g has a jump to a rigid wall at max_radius() (a flat punch; a durometer's rod): the contact radius
     /// cannot grow beyond it.
     virtual bool is_flat_punch() const { return false; }
+    /// The radii 0 < r < max_radius() where the gap's slope f' jumps (a flat tip's edge, a truncated cone's, the
+    /// inner points of a piecewise-linear table), ascending; none for a profile with a continuous slope. Beyond each,
+    /// g(x) grows by (f'(r+) - f'(r-)) x arccos(r/x) ~ sqrt(x - r) (eq. 9): a quadrature of g over the contact splits
+    /// there (contact::LayerContact).
+    virtual std::vector<double> kinks() const { return {}; }
+    /// The radius b >= 0 of the indenter's flat end, f = g = 0 for r <= b: the contact radius as it touches (a flat
+    /// punch: its radius; a table: its last point with f = 0). 0 for a profile that touches at a point.
+    virtual double flat_radius() const { return 0.0; }
     /// The exponent n when the MDR profile is exactly a power law g(x) = k |x|^n (sphere 2, eq. 30; cone 1, eq. 25;
     /// power law n): its contact radius a(d) = (d/k)^(1/n) is then smooth for d > 0, which the continuum (Ting)
     /// model of depth-driven fits needs. nullopt for any other profile (a flat punch, a table).

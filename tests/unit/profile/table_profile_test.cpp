@@ -195,4 +195,26 @@ TEST(TableProfile, PiecewiseLinearConeIsTheCone) {
     }
 }
 
+TEST(TableProfile, KinksAreThePointsWhereALinearTablesSlopeJumps) {
+    using mdr::profile::Interpolation;
+    using mdr::profile::make_table;
+    // A flat tip of radius 1, a flank, a steeper flank: slopes 0, 1, 3 jump at r = 1 and 2.
+    const auto stepped = make_table({0.0, 1.0, 2.0, 3.0}, {0.0, 0.0, 1.0, 4.0}, Interpolation::linear);
+    EXPECT_EQ(stepped->kinks(), (std::vector<double>{1.0, 2.0}));
+    EXPECT_EQ(stepped->flat_radius(), 1.0);
+    // Collinear points of a cone (slopes equal to rounding) are no kink; the monotone cubic has none.
+    const double slope = std::tan(0.3);
+    const auto cone = make_table({0.0, 0.1, 0.7, 1.3}, {0.0, 0.1 * slope, 0.7 * slope, 1.3 * slope},
+                                 Interpolation::linear);
+    EXPECT_TRUE(cone->kinks().empty());
+    EXPECT_EQ(cone->flat_radius(), 0.0);
+    const auto smooth = make_table({0.0, 1.0, 2.0, 3.0}, {0.0, 0.0, 1.0, 4.0});
+    EXPECT_TRUE(smooth->kinks().empty());
+    EXPECT_EQ(smooth->flat_radius(), 1.0);  // the cubic is exactly 0 on the flat interval too
+    EXPECT_EQ(smooth->gap(0.999), 0.0);
+    EXPECT_EQ(mdr::profile::make_flat_punch(0.5)->flat_radius(), 0.5);
+    EXPECT_TRUE(mdr::profile::make_sphere(1.0)->kinks().empty());
+    EXPECT_EQ(mdr::profile::make_sphere(1.0)->flat_radius(), 0.0);
+}
+
 }  // namespace
