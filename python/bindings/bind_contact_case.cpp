@@ -1,13 +1,11 @@
 // mdr.ContactCase and the load programme's classes: drivers::ContactCase and its parts (include/mdr/drivers) as
-// Python objects, built with keywords and checked by drivers::validate and drivers::validate_layer, the rules and
-// messages of a case file. No text passes between Python and C++ on this path.
+// Python objects, built with keywords and completed and checked by io::assemble_case, the case file reader's own
+// assembly (its rules and messages). No text passes between Python and C++ on this path.
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include <cmath>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,8 +18,6 @@
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/controls.hpp"
-#include "mdr/drivers/layer_indentation.hpp"
-#include "mdr/drivers/material_window.hpp"
 #include "mdr/drivers/shore.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_assembly.hpp"
@@ -123,15 +119,18 @@ void refuse_bools(const py::handle& values, const std::string& key, int depth) {
     }
 }
 
+// A number as Python writes it (2.0, 1e-06), for the parts' __repr__.
+std::string float_repr(double value) { return py::repr(py::float_(value)).cast<std::string>(); }
+
 // An optional number as a keyword's value in a __repr__: the number, or None.
-template <class T>
-std::string optional_repr(const std::optional<T>& value) {
-    return value ? fmt::format("{}", *value) : "None";
+std::string optional_repr(const std::optional<double>& value) { return value ? float_repr(*value) : "None"; }
+std::string optional_repr(const std::optional<std::size_t>& value) {
+    return value ? std::to_string(*value) : "None";
 }
 
 std::string harmonic_repr(const drivers::HarmonicLoad& harmonic) {
-    return fmt::format("Harmonic(amplitude={}, frequency={}, start={}, end={})", harmonic.amplitude,
-                       harmonic.frequency, harmonic.start, harmonic.end);
+    return fmt::format("Harmonic(amplitude={}, frequency={}, start={}, end={})", float_repr(harmonic.amplitude),
+                       float_repr(harmonic.frequency), float_repr(harmonic.start), float_repr(harmonic.end));
 }
 
 // The parts of the keywords as a case file's reader gives them to io::assemble_case (which completes the load as
@@ -235,7 +234,7 @@ duration : float, optional
         .def_readonly("duration", &drivers::ShoreTest::duration, "[s]")
         .def("__repr__", [](const drivers::ShoreTest& test) {
             return fmt::format("ShoreTest(scale=\"{}\", duration={})", test.scale == drivers::ShoreScale::A ? "A" : "D",
-                               test.duration);
+                               float_repr(test.duration));
         });
     py::class_<drivers::ObliqueImpactLoad>(module, "ObliqueImpact", R"doc(The tangential part of an oblique impact
 of a sphere (eq. 48-50): local Coulomb friction and the contact point's sliding at v_t - R omega.
@@ -263,7 +262,8 @@ moment_of_inertia : float, optional
         .def_readonly("moment_of_inertia", &drivers::ObliqueImpactLoad::moment_of_inertia)
         .def("__repr__", [](const drivers::ObliqueImpactLoad& oblique) {
             return fmt::format("ObliqueImpact(friction={}, tangential_velocity={}, spin={}, moment_of_inertia={})",
-                               oblique.friction, oblique.tangential_velocity, oblique.spin,
+                               float_repr(oblique.friction), float_repr(oblique.tangential_velocity),
+                               float_repr(oblique.spin),
                                optional_repr(oblique.moment_of_inertia));
         });
     py::class_<drivers::ImpactControl>(module, "ImpactControl", R"doc(A rigid indenter of mass m hits the surface at
@@ -373,7 +373,7 @@ harmonic : mdr.Harmonic, optional
             const std::string part = load.load.harmonic
                                          ? "harmonic=" + harmonic_repr(*load.load.harmonic)
                                          : fmt::format("history={} points", history_points(load.load.history).size());
-            return fmt::format("Tangential(friction={}, control=\"{}\", {})", load.friction,
+            return fmt::format("Tangential(friction={}, control=\"{}\", {})", float_repr(load.friction),
                                drivers::tangential_control_kind(load.control).name, part);
         });
     py::class_<contact::Layer>(module, "Layer", R"doc(A layer of finite thickness on a rigid substrate (``[layer]``).
@@ -394,7 +394,7 @@ interface : str, optional
         .def_property_readonly("interface",
                                [](const contact::Layer& layer) { return contact::interface_name(layer.interface); })
         .def("__repr__", [](const contact::Layer& layer) {
-            return fmt::format("Layer(thickness={}, interface=\"{}\")", layer.thickness,
+            return fmt::format("Layer(thickness={}, interface=\"{}\")", float_repr(layer.thickness),
                                contact::interface_name(layer.interface));
         });
 }

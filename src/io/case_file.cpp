@@ -5,13 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <limits>
 #include <sstream>
 
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
-#include "mdr/drivers/material_window.hpp"
 #include "mdr/drivers/oblique_sphere.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_assembly.hpp"

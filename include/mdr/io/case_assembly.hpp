@@ -22,16 +22,16 @@ namespace mdr::io {
 
 /// A case's parts as given, before assemble_case completes them; lengths, forces and times in the case's `units`.
 struct CaseParts {
-    std::string title;
+    std::string title{};
     std::string units = "SI";                          ///< the name of one of io::unit_systems()
-    std::shared_ptr<const profile::Profile> indenter;  ///< none with a Shore test (the standard's)
-    drivers::LoadControl control;                      ///< a Shore test: a spring control with its `shore`
-    drivers::Load load;                                ///< the history: none for an impact and a Shore test
-    std::optional<double> end;                         ///< `load.end`; none: default_end_time
-    std::vector<double> snapshots;
-    drivers::NumericsOptions numerics;
-    std::optional<drivers::TangentialLoad> tangential;
-    std::optional<contact::Layer> layer;
+    std::shared_ptr<const profile::Profile> indenter{};  ///< none with a Shore test (the standard's)
+    drivers::LoadControl control{};                    ///< a Shore test: a spring control with its `shore`
+    drivers::Load load{};                              ///< the history: none for an impact and a Shore test
+    std::optional<double> end{};                       ///< `load.end`; none: default_end_time
+    std::vector<double> snapshots{};
+    drivers::NumericsOptions numerics{};
+    std::optional<drivers::TangentialLoad> tangential{};
+    std::optional<contact::Layer> layer{};
 };
 
 /// The last time simulated [s] of a case without `load.end`: an impact's is infinite (its contact's end stops it,
