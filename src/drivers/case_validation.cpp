@@ -6,7 +6,6 @@
 #include <numbers>
 
 #include "mdr/drivers/controls.hpp"
-#include "mdr/drivers/material_window.hpp"
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "every_control.hpp"
@@ -96,14 +95,6 @@ void validate(const ContactCase& contact_case) {
                   [&](auto traits, const auto& control) { traits.validate_within_run(contact_case, control); });
     if (contact_case.tangential) validate(*contact_case.tangential);
     validate_numerics(contact_case.numerics);
-    // A model converted to a series (certificate kind "model") is a case's only over the lags it is certified for,
-    // whoever built the case (a case file's reader converts over the case's own window, always accepted).
-    const auto& certificate = contact_case.material_origin.certificate;
-    if (certificate && certificate->kind == "model") {
-        require_certified_over(contact_case.material_origin,
-                               material_window(contact_case.load, contact_case.end_time, contact_case.numerics,
-                                               contact_case.tangential, contact_case.impact() != nullptr));
-    }
 }
 
 }  // namespace mdr::drivers

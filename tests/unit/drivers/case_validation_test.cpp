@@ -121,21 +121,5 @@ TEST(CaseValidation, EveryRuleNamesItsKey) {
     });
 }
 
-// A C++ caller's case with a model converted to a series is checked as mdr.ContactCase's is: the series is the
-// model's only over its certificate's lags, and the creep test needs lags up to its duration, end - start = 1 s
-// (material_window). A certificate up to 10 s is taken; one up to 0.5 s is refused naming the material.
-TEST(CaseValidation, AConvertedModelMustBeCertifiedOverTheCasesLags) {
-    const auto with_certificate = [](double longest, const char* kind) {
-        ContactCase contact_case = creep_test();
-        contact_case.material_origin = {
-            .description = "power_law (G0 = 1e6 Pa, beta = 0.2, t0 = 1 s)",
-            .certificate = rheology::Certificate{1e-5, rheology::TimeWindow{1e-9, longest, {}}, 1e-4, kind}};
-        return contact_case;
-    };
-    EXPECT_NO_THROW(validate(with_certificate(10.0, "model")));
-    EXPECT_NO_THROW(validate(with_certificate(0.5, "fit residual")));  // a series fitted to data keeps its window
-    EXPECT_EQ(key_of([&] { validate(with_certificate(0.5, "model")); }), "material");
-}
-
 }  // namespace
 }  // namespace mdr::drivers

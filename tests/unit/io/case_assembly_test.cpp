@@ -50,5 +50,30 @@ TEST(CaseAssembly, AnImpactStartsAtTheSurfaceWithoutAnEnd) {
     EXPECT_TRUE(std::isinf(assembled.end_time));
 }
 
+// A model converted to a series is the case's only over its certificate's lags, and this case needs lags up to its
+// duration, end - start = 10 s (drivers::material_window): a certificate up to 100 s is taken; one up to 5 s is
+// refused naming the material, unless it is a series fitted to data (it keeps its data's window).
+TEST(CaseAssembly, AConvertedModelMustBeCertifiedOverTheCasesLags) {
+    const auto assembled_with = [](double longest, const char* kind) {
+        CaseParts parts{.indenter = profile::make_sphere(0.01),
+                        .control = drivers::DisplacementControl{},
+                        .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {10.0, 1e-5}}, "load.history")}};
+        return assemble_case(parts, [&](CaseParts& completed) {
+            rheology::ContactMaterial material = elastic(completed);
+            material.origin = {.description = "power_law (G0 = 1e6 Pa, beta = 0.2, t0 = 1 s)",
+                               .certificate = rheology::Certificate{1e-5, {1e-9, longest, {}}, 1e-4, kind}};
+            return material;
+        });
+    };
+    EXPECT_NO_THROW(assembled_with(100.0, "model"));
+    EXPECT_NO_THROW(assembled_with(5.0, "fit residual"));
+    try {
+        assembled_with(5.0, "model");
+        ADD_FAILURE() << "a series certified over fewer lags than the case needs was taken";
+    } catch (const InvalidInput& error) {
+        EXPECT_EQ(error.key(), "material");
+    }
+}
+
 }  // namespace
 }  // namespace mdr::io
