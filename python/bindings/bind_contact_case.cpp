@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "number.hpp"
 #include "case_tree.hpp"
 #include "mdr/contact/layer.hpp"
 #include "mdr/drivers/case_validation.hpp"
@@ -190,7 +191,7 @@ spring_constant : float
 force_pauses : sequence of (float, float), optional
     Pauses (start, end) [s] over which the instrument's feedback holds the force (``load.force_pauses``).
 )doc")
-        .def(py::init([](double spring_constant, const Points& force_pauses) {
+        .def(py::init([](Number spring_constant, const Points& force_pauses) {
                  drivers::SpringControl control{.spring_constant = spring_constant};
                  for (const auto& [start, end] : force_pauses) control.force_pauses.push_back({start, end});
                  return control;
@@ -223,7 +224,7 @@ scale : str
 duration : float, optional
     The test's duration [s] > 0 (``load.duration``), default 15 s.
 )doc")
-        .def(py::init([](const std::string& scale, double duration) {
+        .def(py::init([](const std::string& scale, Number duration) {
                  return drivers::make_shore_test(drivers::shore_scale_named(scale), duration);
              }),
              py::kw_only(), py::arg("scale"), py::arg("duration") = drivers::shore_default_duration)
@@ -250,8 +251,8 @@ spin : float, optional
 moment_of_inertia : float, optional
     I [kg m^2] about the centre (``indenter.moment_of_inertia``); default a solid sphere's 2/5 m R^2.
 )doc")
-        .def(py::init([](double friction, double tangential_velocity, double spin,
-                         std::optional<double> moment_of_inertia) {
+        .def(py::init([](Number friction, Number tangential_velocity, Number spin,
+                         std::optional<Number> moment_of_inertia) {
                  return drivers::ObliqueImpactLoad{friction, tangential_velocity, spin, moment_of_inertia};
              }),
              py::kw_only(), py::arg("friction"), py::arg("tangential_velocity") = 0.0, py::arg("spin") = 0.0,
@@ -278,7 +279,7 @@ velocity : float
 oblique : mdr.ObliqueImpact, optional
     The tangential part of an oblique impact.
 )doc")
-        .def(py::init([](double mass, double velocity, std::optional<drivers::ObliqueImpactLoad> oblique) {
+        .def(py::init([](Number mass, Number velocity, std::optional<drivers::ObliqueImpactLoad> oblique) {
                  return drivers::ImpactControl{mass, velocity, std::move(oblique)};
              }),
              py::kw_only(), py::arg("mass"), py::arg("velocity"), py::arg("oblique") = py::none())
@@ -300,7 +301,7 @@ Parameters
 amplitude, frequency, start, end : float
     The amplitude in the controlled quantity's unit, f [Hz] > 0, and the times [s], end > start.
 )doc")
-        .def(py::init([](double amplitude, double frequency, double start, double end) {
+        .def(py::init([](Number amplitude, Number frequency, Number start, Number end) {
                  return drivers::HarmonicLoad{amplitude, frequency, start, end};
              }),
              py::kw_only(), py::arg("amplitude"), py::arg("frequency"), py::arg("start"), py::arg("end"))
@@ -319,9 +320,9 @@ time_step, half_width : float, optional
 output_every : int, optional
 max_element_steps, max_memory : float, optional
 )doc")
-        .def(py::init([](std::optional<std::size_t> elements, std::optional<double> time_step,
-                         std::optional<double> half_width, std::size_t output_every,
-                         std::optional<double> max_element_steps, std::optional<double> max_memory) {
+        .def(py::init([](std::optional<Count> elements, std::optional<Number> time_step,
+                         std::optional<Number> half_width, Count output_every,
+                         std::optional<Number> max_element_steps, std::optional<Number> max_memory) {
                  return drivers::NumericsOptions{elements, time_step, half_width, output_every, max_element_steps,
                                                  max_memory};
              }),
@@ -355,7 +356,7 @@ history : sequence of (float, float), optional
 harmonic : mdr.Harmonic, optional
     A harmonic load instead of a history (exactly one of the two).
 )doc")
-        .def(py::init([](double friction, const std::string& control, const py::object& history,
+        .def(py::init([](Number friction, const std::string& control, const py::object& history,
                          std::optional<drivers::HarmonicLoad> harmonic) {
                  return drivers::TangentialLoad{friction, drivers::tangential_control_named(control).control,
                                                 drivers::Load{load_history(history, "tangential.history"), harmonic}};
@@ -385,7 +386,7 @@ thickness : float
 interface : str, optional
     "bonded" (the default) or "sliding".
 )doc")
-        .def(py::init([](double thickness, const std::string& interface) {
+        .def(py::init([](Number thickness, const std::string& interface) {
                  return contact::Layer{thickness,
                                        contact::interface_named(interface, "layer.interface", "\"" + interface + "\"")};
              }),

@@ -472,3 +472,21 @@ def test_a_converted_material_pickle_of_another_version_is_refused_naming_the_ru
 def test_a_layer_refuses_observers_naming_mdr_runs_own():
     with pytest.raises(mdr.InvalidInput, match="mdr.run's observers"):
         mdr.run(CASE_FILES["layer"][1](), observers=[lambda step: None])
+
+
+@pytest.mark.parametrize("make", [
+    lambda: mdr.Harmonic(amplitude=True, frequency=1.0, start=0.0, end=1.0),
+    lambda: mdr.SpringControl(spring_constant=True),
+    lambda: mdr.ShoreTest(scale="A", duration=True),
+    lambda: mdr.ObliqueImpact(friction=0.3, spin=False),
+    lambda: mdr.ImpactControl(mass=True, velocity=0.1),
+    lambda: mdr.Numerics(time_step=True),
+    lambda: mdr.Numerics(elements=True),
+    lambda: mdr.Numerics(output_every=True),
+    lambda: mdr.Tangential(friction=False, history=[(0.0, 0.0), (1.0, 1e-6)]),
+    lambda: mdr.Layer(thickness=True),
+])
+def test_a_part_refuses_a_bool_for_a_number_and_names_it(make):
+    with pytest.raises(TypeError, match=r"Invoked with: kwargs: .*=(True|False)"):
+        make()
+    assert mdr.Layer(thickness=1).thickness == 1.0 and mdr.Numerics(elements=10).elements == 10  # ints are numbers
