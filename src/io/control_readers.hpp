@@ -26,7 +26,7 @@ struct ControlLoad {
 
 /// One control being read. read_case calls its steps where it has always met the control's keys, so a case with
 /// several errors reports the same first one: the reading is made after `[load]`'s keys are checked (read_control,
-/// require_control_keys), then indenter, then load, then finish once the rest of the case is read.
+/// require_control_keys), then brings_indenter, then load, then finish once the rest of the case is read.
 class ControlReading {
 public:
     virtual ~ControlReading() = default;
