@@ -26,7 +26,8 @@ void refuse_indenter_beside_durometer(bool case_has_indenter) {
 }
 
 rheology::TimeWindow case_window(const CaseParts& parts) {
-    return drivers::material_window(parts.load, parts.end.value(), parts.numerics, parts.tangential,
+    return drivers::material_window(parts.load, parts.end.value_or(std::numeric_limits<double>::infinity()),
+                                    parts.numerics, parts.tangential,
                                     std::holds_alternative<drivers::ImpactControl>(parts.control));
 }
 
