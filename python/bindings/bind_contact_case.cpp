@@ -1,13 +1,11 @@
 // mdr.ContactCase and the load programme's classes: drivers::ContactCase and its parts (include/mdr/drivers) as
-// Python objects, built with keywords and checked by drivers::validate and drivers::validate_layer, the rules and
-// messages of a case file. No text passes between Python and C++ on this path.
+// Python objects, built with keywords and completed and checked by io::assemble_case, the case file reader's own
+// assembly (its rules and messages). No text passes between Python and C++ on this path.
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include <cmath>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,15 +13,15 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "number.hpp"
 #include "case_tree.hpp"
 #include "mdr/contact/layer.hpp"
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/controls.hpp"
-#include "mdr/drivers/layer_indentation.hpp"
-#include "mdr/drivers/material_window.hpp"
 #include "mdr/drivers/shore.hpp"
 #include "mdr/error.hpp"
+#include "mdr/io/case_assembly.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/units.hpp"
 #include "mdr/rheology/contact_bodies.hpp"
@@ -100,90 +98,77 @@ struct CaseArguments {
     std::string title, units;
 };
 
-// A Shore test (control = "shore") in the case's units, as io's reader makes it: the durometer of its scale
-// (drivers::make_shore_test) as the spring, the standard's indenter and the base history of the test. `given` is a
-// copy: it replaces the case's control.
-void set_shore_test(drivers::ContactCase& contact_case, drivers::ShoreTest given, bool has_indenter,
-                    const io::UnitSystem& system) {
-    if (has_indenter) {
-        throw InvalidInput("indenter", "[...]",
-                           "not with control = \"shore\": the durometer's indenter is the standard's");
-    }
-    const drivers::ShoreTest test =
-        drivers::make_shore_test(given.scale, given.duration, system.length_size, system.force_size);
-    contact_case.indenter = drivers::durometer_indenter(test.scale, system.length_size);
-    contact_case.control = drivers::SpringControl{.spring_constant = test.instrument.spring_rate, .shore = test};
-    contact_case.load.history = drivers::shore_base_history(test);
+// A value as the message of a refusal shows it: Python's repr cut short (reprlib: a long sequence's first items),
+// never the whole repr of a long history; InvalidInput then shows it as every value (mdr::message_text).
+std::string value_text(const py::handle& value) {
+    return py::module_::import("reprlib").attr("repr")(value).cast<std::string>();
 }
 
-// The case of the keywords, validated as a case file is (io::read_case): `[load]` keys its control does not take
-// are refused, the end defaults as the reader's (io::default_end_time) and an impact's history is the point (0, 0).
+// A number of the case (`key`): a bool is refused as a case file refuses it, not taken as 0 or 1.
+double number(const py::handle& value, const std::string& key) {
+    if (PyBool_Check(value.ptr())) throw py::type_error(key + ": expected a number, got bool");
+    return argument<double>(value, key, "a number");
+}
+
+// The numbers of a list or tuple `values` (`key`): refuses a bool among them (number); other sequences (arrays)
+// are cast whole.
+void refuse_bools(const py::handle& values, const std::string& key, int depth) {
+    if (!py::isinstance<py::list>(values) && !py::isinstance<py::tuple>(values)) return;
+    for (const py::handle item : values) {
+        if (depth > 0) refuse_bools(item, key, depth - 1);
+        else if (PyBool_Check(item.ptr())) throw py::type_error(key + ": expected a number, got bool");
+    }
+}
+
+// A number as Python writes it (2.0, 1e-06), for the parts' __repr__.
+std::string float_repr(double value) { return py::repr(py::float_(value)).cast<std::string>(); }
+
+// An optional number as a keyword's value in a __repr__: the number, or None.
+std::string optional_repr(const std::optional<double>& value) { return value ? float_repr(*value) : "None"; }
+std::string optional_repr(const std::optional<std::size_t>& value) {
+    return value ? std::to_string(*value) : "None";
+}
+
+std::string harmonic_repr(const drivers::HarmonicLoad& harmonic) {
+    return fmt::format("Harmonic(amplitude={}, frequency={}, start={}, end={})", float_repr(harmonic.amplitude),
+                       float_repr(harmonic.frequency), float_repr(harmonic.start), float_repr(harmonic.end));
+}
+
+// The parts of the keywords as a case file's reader gives them to io::assemble_case (which completes the load as
+// the reader's: a Shore test's durometer, an impact's history, the default end): `[load]` keys its control does not
+// take are refused.
 drivers::ContactCase contact_case(const CaseArguments& given) {
-    drivers::LoadControl control = load_control(given.control);
-    const drivers::ControlKind& kind = drivers::control_kind(control);
+    io::CaseParts parts{.title = given.title, .units = std::string(io::unit_system(given.units).name)};
+    parts.control = load_control(given.control);
+    const drivers::ControlKind& kind = drivers::control_kind(parts.control);
     const std::pair<const char*, const py::object&> load_keys[] = {
         {"history", given.history}, {"harmonic", given.harmonic}, {"end", given.end}};
     for (const auto& [key, value] : load_keys) {
-        if (!value.is_none()) io::require_control_takes(kind, key, py::repr(value).cast<std::string>());
+        if (!value.is_none() && !kind.key_named(key)) io::require_control_takes(kind, key, value_text(value));
     }
-    const bool impact = std::holds_alternative<drivers::ImpactControl>(control);
-    drivers::Load load{.history = load_history(given.history, "load.history")};
-    if (impact) load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
+    refuse_bools(given.history, "load.history", 1);
+    parts.load.history = load_history(given.history, "load.history");
     if (!given.harmonic.is_none()) {
-        load.harmonic = argument<drivers::HarmonicLoad>(given.harmonic, "load.harmonic", "an mdr.Harmonic");
+        parts.load.harmonic = argument<drivers::HarmonicLoad>(given.harmonic, "load.harmonic", "an mdr.Harmonic");
     }
-    std::optional<drivers::TangentialLoad> tangential;
     if (!given.tangential.is_none()) {
-        tangential = argument<drivers::TangentialLoad>(given.tangential, "tangential", "an mdr.Tangential");
-        drivers::validate(*tangential);  // before its end time is used, as the reader does
+        parts.tangential = argument<drivers::TangentialLoad>(given.tangential, "tangential", "an mdr.Tangential");
+        drivers::validate(*parts.tangential);  // before its end time is used, as the reader does
     }
-    const io::UnitSystem& system = io::unit_system(given.units);
-    rheology::ContactMaterial material = half_space(given.material, system);
-    drivers::ContactCase built{
-        .title = given.title,
-        .material = std::move(material.material),
-        .indenter = nullptr,
-        .control = std::move(control),
-        .load = std::move(load),
-        .end_time = std::numeric_limits<double>::infinity(),
-        .snapshots = given.snapshots.is_none()
-                         ? std::vector<double>{}
-                         : argument<std::vector<double>>(given.snapshots, "output.snapshots", "a sequence of times"),
-        .numerics = given.numerics.is_none()
-                        ? drivers::NumericsOptions{}
-                        : argument<drivers::NumericsOptions>(given.numerics, "numerics", "an mdr.Numerics"),
-        .shear_material = std::move(material.shear_material),
-        .bulk_material = std::move(material.bulk_material),
-        .tangential = std::move(tangential),
-        .tangential_exact = material.tangential_exact,
-        .material_origin = std::move(material.origin),
-        .units = std::string(system.name)};
-    if (const drivers::ShoreTest* shore = built.shore()) {
-        set_shore_test(built, *shore, !given.indenter.is_none(), system);
-    } else {
-        built.indenter = argument<std::shared_ptr<profile::Profile>>(given.indenter, "indenter", "an mdr.Indenter");
+    if (!given.indenter.is_none()) {
+        parts.indenter = argument<std::shared_ptr<profile::Profile>>(given.indenter, "indenter", "an mdr.Indenter");
     }
-    if (!given.end.is_none()) {
-        built.end_time = argument<double>(given.end, "load.end", "a number");
-    } else if (built.load.history) {  // else drivers::validate refuses the case
-        built.end_time = io::default_end_time(built.load, impact, built.tangential);
+    if (!given.end.is_none()) parts.end = number(given.end, "load.end");
+    if (!given.snapshots.is_none()) {
+        refuse_bools(given.snapshots, "output.snapshots", 0);
+        parts.snapshots = argument<std::vector<double>>(given.snapshots, "output.snapshots", "a sequence of times");
     }
-    if (!given.layer.is_none()) built.layer = argument<contact::Layer>(given.layer, "layer", "an mdr.Layer");
-    drivers::validate(built);
-    drivers::validate_layer(built);
-    if (built.material_origin.certificate) {
-        drivers::require_certified_over(built.material_origin,
-                                        drivers::material_window(built.load, built.end_time, built.numerics,
-                                                                 built.tangential, impact));
+    if (!given.numerics.is_none()) {
+        parts.numerics = argument<drivers::NumericsOptions>(given.numerics, "numerics", "an mdr.Numerics");
     }
-    return built;
-}
-
-contact::LayerInterface layer_interface(const std::string& name) {
-    for (const auto interface : {contact::LayerInterface::bonded, contact::LayerInterface::sliding}) {
-        if (contact::interface_name(interface) == name) return interface;
-    }
-    throw InvalidInput("layer.interface", "\"" + name + "\"", "must be \"bonded\" or \"sliding\"");
+    if (!given.layer.is_none()) parts.layer = argument<contact::Layer>(given.layer, "layer", "an mdr.Layer");
+    const io::UnitSystem& system = io::unit_system(parts.units);
+    return io::assemble_case(std::move(parts), [&](io::CaseParts&) { return half_space(given.material, system); });
 }
 
 void bind_controls(py::module_& module) {
@@ -206,7 +191,7 @@ spring_constant : float
 force_pauses : sequence of (float, float), optional
     Pauses (start, end) [s] over which the instrument's feedback holds the force (``load.force_pauses``).
 )doc")
-        .def(py::init([](double spring_constant, const Points& force_pauses) {
+        .def(py::init([](Number spring_constant, const Points& force_pauses) {
                  drivers::SpringControl control{.spring_constant = spring_constant};
                  for (const auto& [start, end] : force_pauses) control.force_pauses.push_back({start, end});
                  return control;
@@ -239,7 +224,7 @@ scale : str
 duration : float, optional
     The test's duration [s] > 0 (``load.duration``), default 15 s.
 )doc")
-        .def(py::init([](const std::string& scale, double duration) {
+        .def(py::init([](const std::string& scale, Number duration) {
                  return drivers::make_shore_test(drivers::shore_scale_named(scale), duration);
              }),
              py::kw_only(), py::arg("scale"), py::arg("duration") = drivers::shore_default_duration)
@@ -247,7 +232,11 @@ duration : float, optional
                                [](const drivers::ShoreTest& test) {
                                    return test.scale == drivers::ShoreScale::A ? "A" : "D";
                                })
-        .def_readonly("duration", &drivers::ShoreTest::duration, "[s]");
+        .def_readonly("duration", &drivers::ShoreTest::duration, "[s]")
+        .def("__repr__", [](const drivers::ShoreTest& test) {
+            return fmt::format("ShoreTest(scale=\"{}\", duration={})", test.scale == drivers::ShoreScale::A ? "A" : "D",
+                               float_repr(test.duration));
+        });
     py::class_<drivers::ObliqueImpactLoad>(module, "ObliqueImpact", R"doc(The tangential part of an oblique impact
 of a sphere (eq. 48-50): local Coulomb friction and the contact point's sliding at v_t - R omega.
 
@@ -262,8 +251,8 @@ spin : float, optional
 moment_of_inertia : float, optional
     I [kg m^2] about the centre (``indenter.moment_of_inertia``); default a solid sphere's 2/5 m R^2.
 )doc")
-        .def(py::init([](double friction, double tangential_velocity, double spin,
-                         std::optional<double> moment_of_inertia) {
+        .def(py::init([](Number friction, Number tangential_velocity, Number spin,
+                         std::optional<Number> moment_of_inertia) {
                  return drivers::ObliqueImpactLoad{friction, tangential_velocity, spin, moment_of_inertia};
              }),
              py::kw_only(), py::arg("friction"), py::arg("tangential_velocity") = 0.0, py::arg("spin") = 0.0,
@@ -271,7 +260,13 @@ moment_of_inertia : float, optional
         .def_readonly("friction", &drivers::ObliqueImpactLoad::friction)
         .def_readonly("tangential_velocity", &drivers::ObliqueImpactLoad::tangential_velocity)
         .def_readonly("spin", &drivers::ObliqueImpactLoad::spin)
-        .def_readonly("moment_of_inertia", &drivers::ObliqueImpactLoad::moment_of_inertia);
+        .def_readonly("moment_of_inertia", &drivers::ObliqueImpactLoad::moment_of_inertia)
+        .def("__repr__", [](const drivers::ObliqueImpactLoad& oblique) {
+            return fmt::format("ObliqueImpact(friction={}, tangential_velocity={}, spin={}, moment_of_inertia={})",
+                               float_repr(oblique.friction), float_repr(oblique.tangential_velocity),
+                               float_repr(oblique.spin),
+                               optional_repr(oblique.moment_of_inertia));
+        });
     py::class_<drivers::ImpactControl>(module, "ImpactControl", R"doc(A rigid indenter of mass m hits the surface at
 t = 0 with speed v0 (eq. 37); the run ends when the contact does (eq. 39).
 
@@ -284,7 +279,7 @@ velocity : float
 oblique : mdr.ObliqueImpact, optional
     The tangential part of an oblique impact.
 )doc")
-        .def(py::init([](double mass, double velocity, std::optional<drivers::ObliqueImpactLoad> oblique) {
+        .def(py::init([](Number mass, Number velocity, std::optional<drivers::ObliqueImpactLoad> oblique) {
                  return drivers::ImpactControl{mass, velocity, std::move(oblique)};
              }),
              py::kw_only(), py::arg("mass"), py::arg("velocity"), py::arg("oblique") = py::none())
@@ -306,14 +301,15 @@ Parameters
 amplitude, frequency, start, end : float
     The amplitude in the controlled quantity's unit, f [Hz] > 0, and the times [s], end > start.
 )doc")
-        .def(py::init([](double amplitude, double frequency, double start, double end) {
+        .def(py::init([](Number amplitude, Number frequency, Number start, Number end) {
                  return drivers::HarmonicLoad{amplitude, frequency, start, end};
              }),
              py::kw_only(), py::arg("amplitude"), py::arg("frequency"), py::arg("start"), py::arg("end"))
         .def_readonly("amplitude", &drivers::HarmonicLoad::amplitude)
         .def_readonly("frequency", &drivers::HarmonicLoad::frequency)
         .def_readonly("start", &drivers::HarmonicLoad::start)
-        .def_readonly("end", &drivers::HarmonicLoad::end);
+        .def_readonly("end", &drivers::HarmonicLoad::end)
+        .def("__repr__", &harmonic_repr);
     py::class_<drivers::NumericsOptions>(module, "Numerics", R"doc(The choices of ``[numerics]``; None: the default
 from the problem's scales (docs/case-format.md).
 
@@ -324,9 +320,9 @@ time_step, half_width : float, optional
 output_every : int, optional
 max_element_steps, max_memory : float, optional
 )doc")
-        .def(py::init([](std::optional<std::size_t> elements, std::optional<double> time_step,
-                         std::optional<double> half_width, std::size_t output_every,
-                         std::optional<double> max_element_steps, std::optional<double> max_memory) {
+        .def(py::init([](std::optional<Count> elements, std::optional<Number> time_step,
+                         std::optional<Number> half_width, Count output_every,
+                         std::optional<Number> max_element_steps, std::optional<Number> max_memory) {
                  return drivers::NumericsOptions{elements, time_step, half_width, output_every, max_element_steps,
                                                  max_memory};
              }),
@@ -338,7 +334,14 @@ max_element_steps, max_memory : float, optional
         .def_readonly("half_width", &drivers::NumericsOptions::half_width)
         .def_readonly("output_every", &drivers::NumericsOptions::output_every)
         .def_readonly("max_element_steps", &drivers::NumericsOptions::max_element_steps)
-        .def_readonly("max_memory", &drivers::NumericsOptions::max_memory);
+        .def_readonly("max_memory", &drivers::NumericsOptions::max_memory)
+        .def("__repr__", [](const drivers::NumericsOptions& numerics) {
+            return fmt::format("Numerics(elements={}, time_step={}, half_width={}, output_every={}, "
+                               "max_element_steps={}, max_memory={})",
+                               optional_repr(numerics.elements), optional_repr(numerics.time_step),
+                               optional_repr(numerics.half_width), numerics.output_every,
+                               optional_repr(numerics.max_element_steps), optional_repr(numerics.max_memory));
+        });
     py::class_<drivers::TangentialLoad>(module, "Tangential", R"doc(Tangential loading superimposed on the normal
 contact (``[tangential]``, handbook section 6): local Coulomb friction and a history or a harmonic.
 
@@ -353,7 +356,7 @@ history : sequence of (float, float), optional
 harmonic : mdr.Harmonic, optional
     A harmonic load instead of a history (exactly one of the two).
 )doc")
-        .def(py::init([](double friction, const std::string& control, const py::object& history,
+        .def(py::init([](Number friction, const std::string& control, const py::object& history,
                          std::optional<drivers::HarmonicLoad> harmonic) {
                  return drivers::TangentialLoad{friction, drivers::tangential_control_named(control).control,
                                                 drivers::Load{load_history(history, "tangential.history"), harmonic}};
@@ -366,7 +369,14 @@ harmonic : mdr.Harmonic, optional
             [](const drivers::TangentialLoad& load) { return drivers::tangential_control_kind(load.control).name; })
         .def_property_readonly("history",
                                [](const drivers::TangentialLoad& load) { return history_points(load.load.history); })
-        .def_property_readonly("harmonic", [](const drivers::TangentialLoad& load) { return load.load.harmonic; });
+        .def_property_readonly("harmonic", [](const drivers::TangentialLoad& load) { return load.load.harmonic; })
+        .def("__repr__", [](const drivers::TangentialLoad& load) {
+            const std::string part = load.load.harmonic
+                                         ? "harmonic=" + harmonic_repr(*load.load.harmonic)
+                                         : fmt::format("history={} points", history_points(load.load.history).size());
+            return fmt::format("Tangential(friction={}, control=\"{}\", {})", float_repr(load.friction),
+                               drivers::tangential_control_kind(load.control).name, part);
+        });
     py::class_<contact::Layer>(module, "Layer", R"doc(A layer of finite thickness on a rigid substrate (``[layer]``).
 
 Parameters
@@ -376,13 +386,18 @@ thickness : float
 interface : str, optional
     "bonded" (the default) or "sliding".
 )doc")
-        .def(py::init([](double thickness, const std::string& interface) {
-                 return contact::Layer{thickness, layer_interface(interface)};
+        .def(py::init([](Number thickness, const std::string& interface) {
+                 return contact::Layer{thickness,
+                                       contact::interface_named(interface, "layer.interface", "\"" + interface + "\"")};
              }),
              py::kw_only(), py::arg("thickness"), py::arg("interface") = "bonded")
         .def_readonly("thickness", &contact::Layer::thickness)
         .def_property_readonly("interface",
-                               [](const contact::Layer& layer) { return contact::interface_name(layer.interface); });
+                               [](const contact::Layer& layer) { return contact::interface_name(layer.interface); })
+        .def("__repr__", [](const contact::Layer& layer) {
+            return fmt::format("Layer(thickness={}, interface=\"{}\")", float_repr(layer.thickness),
+                               contact::interface_name(layer.interface));
+        });
 }
 
 }  // namespace

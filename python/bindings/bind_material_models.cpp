@@ -209,6 +209,13 @@ void bind_converted_material(py::module_& module) {
                               m.times_from_conversion);
     };
     const auto restore = [](const py::tuple& s) {
+        constexpr std::size_t fields = 11;  // the tuple of `state`
+        if (s.size() != fields) {
+            throw py::value_error(fmt::format(
+                "mdr.ConvertedMaterial pickle: {} fields, this mdr {} reads {}: a pickle is read by the version of mdr "
+                "that wrote it (the state gains fields, as times_from_conversion); convert the model again",
+                s.size(), MDR_VERSION, fields));
+        }
         std::vector<rheology::RelaxationTerm> terms;
         for (const auto& [G, tau] : s[2].cast<std::vector<std::pair<double, double>>>()) terms.push_back({G, tau});
         rheology::TimeWindow window{s[4].cast<double>(), s[5].cast<double>(), s[6].cast<std::vector<double>>()};

@@ -25,6 +25,13 @@ std::string interface_name(LayerInterface interface) {
     return interface == LayerInterface::bonded ? "bonded" : "sliding";
 }
 
+LayerInterface interface_named(const std::string& name, const std::string& key, const std::string& text) {
+    for (const auto interface : {LayerInterface::bonded, LayerInterface::sliding}) {
+        if (interface_name(interface) == name) return interface;
+    }
+    throw InvalidInput(key, text, "must be \"bonded\" or \"sliding\"");
+}
+
 double layer_compliance_defect(LayerInterface interface, double poisson_ratio, double u) {
     const double e2 = std::exp(-2.0 * u);
     if (interface == LayerInterface::sliding) {

@@ -277,7 +277,9 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress,
                                         const StepObservers& observers) {
     validate_layer(contact_case);
-    if (!observers.empty()) refuse("layer", "[...]", "a run with step observers (a sweep's measures)");
+    if (!observers.empty()) {
+        refuse("layer", "[...]", "a run with step observers (a sweep's measures, mdr.run's observers)");
+    }
     if (contact_case.shore() && contact_case.material.viscosity() > 0.0) {
         refuse("material.eta", format_value(contact_case.material.viscosity()),
                "a durometer's landing against a parallel dashpot");

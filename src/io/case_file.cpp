@@ -5,15 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <limits>
 #include <sstream>
 
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
-#include "mdr/drivers/material_window.hpp"
 #include "mdr/drivers/oblique_sphere.hpp"
 #include "mdr/error.hpp"
+#include "mdr/io/case_assembly.hpp"
 #include "mdr/rheology/contact_bodies.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "body_reader.hpp"
@@ -208,18 +207,14 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
     return read_case(parse_toml(toml_text, source));
 }
 
-double default_end_time(const drivers::Load& load, bool impact,
-                        const std::optional<drivers::TangentialLoad>& tangential) {
-    if (impact) return std::numeric_limits<double>::infinity();
-    return tangential ? std::max(load.end_time(), tangential->load.end_time()) : load.end_time();
-}
-
 drivers::ContactCase read_case(const toml::table& root_table) {
     TableReader root(root_table, "");
     root.reject_unknown(
         {"title", "units", "material", "indenter", "load", "tangential", "output", "numerics", "layer"});
-    const std::string title = root.optional_string("title").value_or("");
-    const std::string units(unit_system(root.optional_string("units").value_or("SI")).name);
+    CaseParts parts;
+    parts.title = root.optional_string("title").value_or("");
+    parts.units = unit_system(root.optional_string("units").value_or("SI")).name;
+    const UnitSystem& system = unit_system(parts.units);
 
     auto material_table = root.table("material");
     if (!material_table) throw InvalidInput("material", "(missing)", "is required");
@@ -232,17 +227,16 @@ drivers::ContactCase read_case(const toml::table& root_table) {
                            "a harmonic is added to a base history: give one, e.g. [[0.0, 0.0], [1.0, d0]]");
     }
     require_control_keys(*load, control_kind);
-    const std::unique_ptr<ControlReading> control_reading = start_control(control_kind, *load, unit_system(units));
+    const std::unique_ptr<ControlReading> control_reading = start_control(control_kind, *load, system);
     const toml::table no_indenter;  // a control that brings its indenter (a durometer) leaves [indenter] empty
     auto indenter_table = root.table("indenter");
-    auto indenter = control_reading->indenter(indenter_table.has_value());
-    if (indenter) indenter_table.emplace(no_indenter, "indenter");
+    const bool control_brings_indenter = control_reading->brings_indenter(indenter_table.has_value());
+    if (control_brings_indenter) indenter_table.emplace(no_indenter, "indenter");
     if (!indenter_table) throw InvalidInput("indenter", "(missing)", "is required");
-    if (!indenter) indenter = read_indenter(*indenter_table);
+    if (!control_brings_indenter) parts.indenter = read_indenter(*indenter_table);
     std::optional<BodySpec> second_spec;
     if (auto indenter_material = indenter_table->table("material")) second_spec = read_body(*indenter_material);
 
-    drivers::Load normal_load;
     if (load->has("harmonic")) {
         auto table = load->table("harmonic");
         if (!table) {
@@ -251,14 +245,14 @@ drivers::ContactCase read_case(const toml::table& root_table) {
                                            fmt::join(drivers::harmonic_key_names(), ", ")));
         }
         table->reject_unknown(drivers::harmonic_key_names());
-        normal_load.harmonic = read_harmonic(*table);
+        parts.load.harmonic = read_harmonic(*table);
     }
     ControlLoad control = control_reading->load(*load, *indenter_table);
-    normal_load.history = std::move(control.history);
-    drivers::ImpactControl* const impact = std::get_if<drivers::ImpactControl>(&control.control);
-    const std::optional<double> given_end = load->optional_number("end");
+    parts.load.history = std::move(control.history);
+    parts.control = std::move(control.control);
+    drivers::ImpactControl* const impact = std::get_if<drivers::ImpactControl>(&parts.control);
+    parts.end = load->optional_number("end");
 
-    std::optional<drivers::TangentialLoad> tangential;
     auto tangential_table = root.table("tangential");
     const bool oblique_keys = is_oblique(*load) || indenter_table->has("moment_of_inertia");
     if (impact && (tangential_table || oblique_keys)) {
@@ -267,61 +261,42 @@ drivers::ContactCase read_case(const toml::table& root_table) {
         throw InvalidInput("indenter.moment_of_inertia", indenter_table->text("moment_of_inertia"),
                            "only with control = \"impact\" (an oblique impact)");
     } else if (auto table = std::move(tangential_table)) {
-        tangential = read_tangential(*table);
+        parts.tangential = read_tangential(*table);
     }
-    const double end_time = given_end ? *given_end : default_end_time(normal_load, impact != nullptr, tangential);
 
-    std::vector<double> snapshots;
     if (auto output = root.table("output")) {
         output->reject_unknown({"snapshots"});
-        if (output->has("snapshots")) snapshots = output->numbers("snapshots");
+        if (output->has("snapshots")) parts.snapshots = output->numbers("snapshots");
     }
 
-    drivers::NumericsOptions numerics;
     if (auto table = root.table("numerics")) {
         table->reject_unknown(
             {"elements", "time_step", "output_every", "half_width", "max_element_steps", "max_memory"});
-        numerics.elements = table->optional_count("elements");
-        numerics.time_step = table->optional_number("time_step");
-        numerics.half_width = table->optional_number("half_width");
-        numerics.output_every = table->optional_count("output_every").value_or(1);
-        numerics.max_element_steps = table->optional_number("max_element_steps");
-        numerics.max_memory = table->optional_number("max_memory");
+        parts.numerics.elements = table->optional_count("elements");
+        parts.numerics.time_step = table->optional_number("time_step");
+        parts.numerics.half_width = table->optional_number("half_width");
+        parts.numerics.output_every = table->optional_count("output_every").value_or(1);
+        parts.numerics.max_element_steps = table->optional_number("max_element_steps");
+        parts.numerics.max_memory = table->optional_number("max_memory");
     }
 
-    // The bodies, built over the time window of the case when a model is converted to a series.
-    std::optional<rheology::TimeWindow> window;
-    if (half_space_spec.needs_window() || (second_spec && second_spec->needs_window())) {
-        window = drivers::material_window(normal_load, end_time, numerics, tangential, impact != nullptr);
-    }
     // Files a material names (a table's `file`) are found next to the case file (the parsed table's source).
     const auto& source_path = root_table.source().path;
     const std::string directory = source_path ? std::filesystem::path(*source_path).parent_path().string() : "";
-    std::optional<rheology::Body> second;
-    const UnitSystem& system = unit_system(units);
-    if (second_spec) second = build_body(*second_spec, window, directory, system);
-    rheology::ContactMaterial contact =
-        rheology::contact_material(build_body(half_space_spec, window, directory, system), second);
-    control_reading->finish(*load, control.control);
-
-    drivers::ContactCase contact_case{.title = title,
-                                      .material = std::move(contact.material),
-                                      .indenter = std::move(indenter),
-                                      .control = std::move(control.control),
-                                      .load = std::move(normal_load),
-                                      .end_time = end_time,
-                                      .snapshots = std::move(snapshots),
-                                      .numerics = numerics,
-                                      .shear_material = std::move(contact.shear_material),
-                                      .bulk_material = std::move(contact.bulk_material),
-                                      .tangential = std::move(tangential),
-                                      .tangential_exact = contact.tangential_exact,
-                                      .material_origin = std::move(contact.origin),
-                                      .units = units};
-    if (auto layer = root.table("layer")) contact_case.layer = read_layer(*layer);
-    drivers::validate(contact_case);
-    drivers::validate_layer(contact_case);
-    return contact_case;
+    // The bodies, built over the time window of the case when a model is converted to a series.
+    return assemble_case(std::move(parts), [&](CaseParts& completed) {
+        std::optional<rheology::TimeWindow> window;
+        if (half_space_spec.needs_window() || (second_spec && second_spec->needs_window())) {
+            window = case_window(completed);
+        }
+        std::optional<rheology::Body> second;
+        if (second_spec) second = build_body(*second_spec, window, directory, system);
+        rheology::ContactMaterial contact =
+            rheology::contact_material(build_body(half_space_spec, window, directory, system), second);
+        control_reading->finish(*load, completed.control);
+        if (auto layer = root.table("layer")) completed.layer = read_layer(*layer);
+        return contact;
+    });
 }
 
 std::string read_case_text(const std::filesystem::path& path) {

@@ -7,6 +7,7 @@
 
 #include "mdr/drivers/shore.hpp"
 #include "mdr/error.hpp"
+#include "mdr/io/case_assembly.hpp"
 #include "history_reader.hpp"
 #include "shore_reader.hpp"
 
@@ -45,7 +46,7 @@ private:
     std::string column_;
 };
 
-// An impact (eq. 37): `load.velocity`, the keys it needs in other tables (indenter.mass) and the history (0, 0).
+// An impact (eq. 37): `load.velocity` and the keys it needs in other tables (indenter.mass).
 class ImpactReading final : public ControlReading {
 public:
     ImpactReading(const drivers::ControlKind& kind, TableReader&, const UnitSystem&) : other_keys_(kind.other_keys) {}
@@ -56,34 +57,29 @@ public:
                 throw InvalidInput(key, "(missing)", "is required for an impact");
             }
         }
-        return {drivers::ImpactControl{.mass = indenter.number("mass"), .velocity = velocity},
-                drivers::LoadHistory({{0.0, 0.0}}, "load.history")};
+        return {drivers::ImpactControl{.mass = indenter.number("mass"), .velocity = velocity}, std::nullopt};
     }
 
 private:
     std::vector<std::string> other_keys_;
 };
 
-// A Shore durometer: its keys are read first (it brings the standard's indenter), then it is a spring control with
-// the durometer's spring and base history.
+// A Shore durometer: its keys are read first, then it is a spring control with the durometer's test (its spring,
+// indenter and base history are io::assemble_case's).
 class ShoreReading final : public ControlReading {
 public:
     ShoreReading(const drivers::ControlKind&, TableReader& load, const UnitSystem& units)
-        : shore_(read_shore(load, units)) {}
-    std::shared_ptr<const profile::Profile> indenter(bool has_indenter_table) const override {
-        if (has_indenter_table) {
-            throw InvalidInput("indenter", "[...]",
-                               "not with control = \"shore\": the durometer's indenter is the standard's");
-        }
-        return shore_.indenter;
+        : test_(read_shore(load, units)) {}
+    bool brings_indenter(bool has_indenter_table) const override {
+        refuse_indenter_beside_durometer(has_indenter_table);  // where the reader has always refused it
+        return true;
     }
     ControlLoad load(TableReader&, TableReader&) override {
-        return {drivers::SpringControl{.spring_constant = shore_.test.instrument.spring_rate, .shore = shore_.test},
-                drivers::shore_base_history(shore_.test)};
+        return {drivers::SpringControl{.shore = test_}, std::nullopt};
     }
 
 private:
-    ShoreLoad shore_;
+    drivers::ShoreTest test_;
 };
 
 template <class Reading>
@@ -93,7 +89,7 @@ std::unique_ptr<ControlReading> start(const drivers::ControlKind& kind, TableRea
 
 }  // namespace
 
-std::shared_ptr<const profile::Profile> ControlReading::indenter(bool) const { return nullptr; }
+bool ControlReading::brings_indenter(bool) const { return false; }
 
 void ControlReading::finish(TableReader&, drivers::LoadControl&) const {}
 

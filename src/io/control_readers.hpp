@@ -17,22 +17,23 @@
 
 namespace mdr::io {
 
-/// A control and its base history as read (the harmonic, the end and an impact's oblique part are the case's).
+/// A control and its base history as read (the harmonic, the end and an impact's oblique part are the case's);
+/// an impact's and a Shore test's history are io::assemble_case's.
 struct ControlLoad {
     drivers::LoadControl control;
-    drivers::LoadHistory history;
+    std::optional<drivers::LoadHistory> history;
 };
 
 /// One control being read. read_case calls its steps where it has always met the control's keys, so a case with
 /// several errors reports the same first one: the reading is made after `[load]`'s keys are checked (read_control,
-/// require_control_keys), then indenter, then load, then finish once the rest of the case is read.
+/// require_control_keys), then brings_indenter, then load, then finish once the rest of the case is read.
 class ControlReading {
 public:
     virtual ~ControlReading() = default;
 
-    /// The indenter the control brings instead of `[indenter]` (a durometer's), refusing a case's `[indenter]`
-    /// (`has_indenter_table`) beside it; none: the case's `[indenter]` is read.
-    virtual std::shared_ptr<const profile::Profile> indenter(bool has_indenter_table) const;
+    /// Whether the control brings its indenter instead of `[indenter]` (a durometer's, io::assemble_case's),
+    /// refusing a case's `[indenter]` (`has_indenter_table`) beside it; false: the case's `[indenter]` is read.
+    virtual bool brings_indenter(bool has_indenter_table) const;
 
     /// The control and its base history from `[load]` and `[indenter]`, after the indenter and `load.harmonic`.
     virtual ControlLoad load(TableReader& load, TableReader& indenter) = 0;

@@ -14,11 +14,8 @@ contact::Layer read_layer(TableReader& table) {
     table.reject_unknown({"thickness", "interface"});
     const double thickness = table.number("thickness");
     require_layer_thickness(table.key_path("thickness"), thickness, table.text("thickness"));
-    const std::string interface = table.string("interface");
-    if (interface != "bonded" && interface != "sliding") {
-        throw InvalidInput(table.key_path("interface"), table.text("interface"), "must be \"bonded\" or \"sliding\"");
-    }
-    return {thickness, interface == "bonded" ? contact::LayerInterface::bonded : contact::LayerInterface::sliding};
+    return {thickness, contact::interface_named(table.string("interface"), table.key_path("interface"),
+                                                table.text("interface"))};
 }
 
 }  // namespace mdr::io

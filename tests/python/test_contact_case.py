@@ -4,6 +4,7 @@ object path against a case file (two entry points of one core), observers, conve
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -408,3 +409,84 @@ def test_the_docstring_example_holds():
     for test in tests:
         runner.run(test)
     assert runner.summarize(verbose=False).failed == 0
+
+
+# --- issue 27: one rule in one place ------------------------------------------------------------------------------
+
+class ReprFails(list):
+    """A history whose repr must not be needed: building the case's message text of a long history is refused work."""
+
+    def __repr__(self):
+        raise AssertionError("the whole repr of a history was built")
+
+
+def test_a_history_is_shown_capped_and_only_when_refused():
+    history = ReprFails([(0.0, 0.0), (1.0, 1e-4)])
+    assert mdr.ContactCase(**keywords(history=history)).history == list(history)  # taken: never shown
+    long_history = [(float(i), 1e-6) for i in range(100_000)]
+    with pytest.raises(mdr.InvalidInput) as raised:  # an impact takes no history: shown cut, as every value
+        mdr.ContactCase(**keywords(control=mdr.ImpactControl(mass=1e-3, velocity=0.1), history=long_history))
+    message = str(raised.value)  # reprlib's first items, then message_text's cut: (N bytes) of that text, not 2 MB
+    assert message.startswith("load.history = [(0.0, 1e-06), (1.0, 1e") and len(message) < 200, message
+    assert int(re.search(r"\((\d+) bytes\)", message).group(1)) < 200, message
+    with pytest.raises(mdr.InvalidInput, match="^load.history = "):
+        mdr.ContactCase(**keywords(control=mdr.ImpactControl(mass=1e-3, velocity=0.1), history=history))
+
+
+@pytest.mark.parametrize("changes, key", [
+    (dict(end=True), "load.end"),
+    (dict(history=[(0.0, 0.0), (True, 1e-4)]), "load.history"),
+    (dict(history=[(0.0, False), (1.0, 1e-4)]), "load.history"),
+    (dict(snapshots=[0.5, True]), "output.snapshots"),
+])
+def test_a_bool_is_not_a_number_as_in_a_case_file(changes, key):
+    with pytest.raises(TypeError, match=f"^{key}: expected a number, got bool"):
+        mdr.ContactCase(**keywords(**changes))
+    assert mdr.ContactCase(**keywords(end=1)).end == 1.0  # an int is a number
+
+
+def test_the_parts_show_their_values():
+    harmonic = mdr.Harmonic(amplitude=1e-6, frequency=2.0, start=0.5, end=1.5)
+    assert repr(harmonic) == "Harmonic(amplitude=1e-06, frequency=2.0, start=0.5, end=1.5)"
+    assert repr(mdr.ShoreTest(scale="D", duration=3.0)) == 'ShoreTest(scale="D", duration=3.0)'
+    assert repr(mdr.Numerics(elements=200)) == ("Numerics(elements=200, time_step=None, half_width=None, "
+                                                "output_every=1, max_element_steps=None, max_memory=None)")
+    assert repr(mdr.Layer(thickness=1e-3, interface="sliding")) == 'Layer(thickness=0.001, interface="sliding")'
+    assert repr(mdr.ObliqueImpact(friction=0.3, spin=2.0)) == (
+        "ObliqueImpact(friction=0.3, tangential_velocity=0.0, spin=2.0, moment_of_inertia=None)")
+    assert repr(mdr.Tangential(friction=0.2, harmonic=harmonic)) == (
+        'Tangential(friction=0.2, control="displacement", harmonic=' + repr(harmonic) + ")")
+    assert repr(mdr.Tangential(friction=0.2, control="force", history=[(0.0, 0.0), (1.0, 1e-3)])) == (
+        'Tangential(friction=0.2, control="force", history=2 points)')
+
+
+def test_a_converted_material_pickle_of_another_version_is_refused_naming_the_rule():
+    material = mdr.Material.power_law(G0=1e3, beta=0.3, window=(1e-4, 10.0))
+    state = material.__getstate__()
+    assert len(state) == 11
+    copy = mdr.ConvertedMaterial.__new__(mdr.ConvertedMaterial)
+    with pytest.raises(ValueError, match="10 fields, this mdr .* reads 11: a pickle is read by the version of mdr"):
+        copy.__setstate__(state[:10])  # a pickle written before the conversion's times were kept
+
+
+def test_a_layer_refuses_observers_naming_mdr_runs_own():
+    with pytest.raises(mdr.InvalidInput, match="mdr.run's observers"):
+        mdr.run(CASE_FILES["layer"][1](), observers=[lambda step: None])
+
+
+@pytest.mark.parametrize("make", [
+    lambda: mdr.Harmonic(amplitude=True, frequency=1.0, start=0.0, end=1.0),
+    lambda: mdr.SpringControl(spring_constant=True),
+    lambda: mdr.ShoreTest(scale="A", duration=True),
+    lambda: mdr.ObliqueImpact(friction=0.3, spin=False),
+    lambda: mdr.ImpactControl(mass=True, velocity=0.1),
+    lambda: mdr.Numerics(time_step=True),
+    lambda: mdr.Numerics(elements=True),
+    lambda: mdr.Numerics(output_every=True),
+    lambda: mdr.Tangential(friction=False, history=[(0.0, 0.0), (1.0, 1e-6)]),
+    lambda: mdr.Layer(thickness=True),
+])
+def test_a_part_refuses_a_bool_for_a_number_and_names_it(make):
+    with pytest.raises(TypeError, match=r"Invoked with: kwargs: .*=(True|False)"):
+        make()
+    assert mdr.Layer(thickness=1).thickness == 1.0 and mdr.Numerics(elements=10).elements == 10  # ints are numbers

@@ -24,6 +24,10 @@ struct Layer {
 /// The name of an interface as written in a case ("bonded", "sliding").
 std::string interface_name(LayerInterface interface);
 
+/// The interface named `name` ("bonded" or "sliding"); throws mdr::InvalidInput naming `key` and `text` (the value
+/// as the caller wrote it) otherwise.
+LayerInterface interface_named(const std::string& name, const std::string& key, const std::string& text);
+
 /// One minus the layer's compliance function, 1 - L(u), u = xi h the dimensionless wavenumber: the surface
 /// displacement under an axisymmetric pressure with Hankel transform P(xi) is w(r) = (2/E*) int_0^inf P(xi) L(xi h)
 /// J0(xi r) dxi (L = 1: the half-space). Bonded (kappa = 3 - 4 nu): L = (2 kappa sinh 2u - 4u) / (2 kappa cosh 2u +

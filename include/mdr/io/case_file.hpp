@@ -23,12 +23,6 @@ std::string read_case_text(const std::filesystem::path& path);
 /// Reads and parses a case file.
 drivers::ContactCase load_case(const std::filesystem::path& path);
 
-/// The last time simulated [s] of a case without `load.end`: an impact's is infinite (its contact's end stops it,
-/// eq. 39); otherwise the later of the normal load's end (drivers::Load::end_time; it has a history) and the
-/// tangential load's.
-double default_end_time(const drivers::Load& load, bool impact,
-                        const std::optional<drivers::TangentialLoad>& tangential);
-
 /// Refuses the `[load]` key `key` (its value written `text`) when the control `kind` does not take it, naming the
 /// controls that do (`load.velocity = 1: only with control = "impact", not "force"`; drivers::controls()).
 void require_control_takes(const drivers::ControlKind& kind, const std::string& key, const std::string& text);

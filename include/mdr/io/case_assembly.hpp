@@ -1,0 +1,62 @@
+#pragma once
+/// \file
+/// The one assembly of a contact case from its parts, shared by the case file's reader (io::read_case) and the
+/// callers that give the parts as objects (Python's mdr.ContactCase): a Shore test's durometer, an impact's
+/// history, the default end, then the bodies and the case's rules (drivers::validate, drivers::validate_layer).
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mdr/contact/layer.hpp"
+#include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/shore.hpp"
+#include "mdr/io/units.hpp"
+#include "mdr/profile/profile.hpp"
+#include "mdr/rheology/approximation.hpp"
+#include "mdr/rheology/contact_bodies.hpp"
+
+namespace mdr::io {
+
+/// A case's parts as given, before assemble_case completes them; lengths, forces and times in the case's `units`.
+struct CaseParts {
+    std::string title{};
+    std::string units = "SI";                          ///< the name of one of io::unit_systems()
+    std::shared_ptr<const profile::Profile> indenter{};  ///< none with a Shore test (the standard's)
+    drivers::LoadControl control{};                    ///< a Shore test: a spring control with its `shore`
+    drivers::Load load{};                              ///< the history: none for an impact and a Shore test
+    std::optional<double> end{};                       ///< `load.end`; none: default_end_time
+    std::vector<double> snapshots{};
+    drivers::NumericsOptions numerics{};
+    std::optional<drivers::TangentialLoad> tangential{};
+    std::optional<contact::Layer> layer{};
+};
+
+/// The last time simulated [s] of a case without `load.end`: an impact's is infinite (its contact's end stops it,
+/// eq. 39); otherwise the later of the normal load's end (drivers::Load::end_time; it has a history) and the
+/// tangential load's.
+double default_end_time(const drivers::Load& load, bool impact,
+                        const std::optional<drivers::TangentialLoad>& tangential);
+
+/// Throws mdr::InvalidInput (key `indenter`) when a case with a Shore test gives an indenter too
+/// (`case_has_indenter`): the durometer's is the standard's (docs/case-format.md, "Shore durometer").
+void refuse_indenter_beside_durometer(bool case_has_indenter);
+
+/// The bodies of a case, built once its load is complete (`parts` as assemble_case completed it; a model converted
+/// to a series is converted over case_window(parts)). The reader also reads there what it has always read after
+/// the bodies (a spring's force pauses, `[layer]`), into `parts`.
+using BodiesBuilder = std::function<rheology::ContactMaterial(CaseParts& parts)>;
+
+/// The time window of completed parts (drivers::material_window of their load, end, numerics and tangential load).
+rheology::TimeWindow case_window(const CaseParts& parts);
+
+/// The case of `parts`: a Shore test's durometer in the case's units (drivers::make_shore_test; its spring, the
+/// standard's indenter, shore_indenter, and its base history), an impact's history the point (0, 0), the end
+/// `load.end` or default_end_time; then the bodies (`bodies`) and the case's rules (drivers::validate,
+/// drivers::validate_layer, and for a model converted to a series drivers::require_certified_over its
+/// material_window). Throws mdr::InvalidInput naming the key, the value and the rule.
+drivers::ContactCase assemble_case(CaseParts parts, const BodiesBuilder& bodies);
+
+}  // namespace mdr::io

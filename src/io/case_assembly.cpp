@@ -1,0 +1,81 @@
+#include "mdr/io/case_assembly.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <utility>
+#include <variant>
+
+#include "mdr/drivers/case_validation.hpp"
+#include "mdr/drivers/layer_indentation.hpp"
+#include "mdr/drivers/material_window.hpp"
+#include "mdr/error.hpp"
+
+namespace mdr::io {
+
+double default_end_time(const drivers::Load& load, bool impact,
+                        const std::optional<drivers::TangentialLoad>& tangential) {
+    if (impact) return std::numeric_limits<double>::infinity();
+    return tangential ? std::max(load.end_time(), tangential->load.end_time()) : load.end_time();
+}
+
+void refuse_indenter_beside_durometer(bool case_has_indenter) {
+    if (case_has_indenter) {
+        throw InvalidInput("indenter", "[...]",
+                           "not with control = \"shore\": the durometer's indenter is the standard's");
+    }
+}
+
+rheology::TimeWindow case_window(const CaseParts& parts) {
+    return drivers::material_window(parts.load, parts.end.value_or(std::numeric_limits<double>::infinity()),
+                                    parts.numerics, parts.tangential,
+                                    std::holds_alternative<drivers::ImpactControl>(parts.control));
+}
+
+drivers::ContactCase assemble_case(CaseParts parts, const BodiesBuilder& bodies) {
+    const UnitSystem& system = unit_system(parts.units);
+    auto* spring = std::get_if<drivers::SpringControl>(&parts.control);
+    if (spring && spring->shore) {
+        const drivers::ShoreTest test =
+            drivers::make_shore_test(spring->shore->scale, spring->shore->duration, system.length_size,
+                                     system.force_size);
+        refuse_indenter_beside_durometer(parts.indenter != nullptr);
+        parts.indenter = drivers::durometer_indenter(test.scale, system.length_size);
+        *spring = drivers::SpringControl{.spring_constant = test.instrument.spring_rate, .shore = test};
+        parts.load.history = drivers::shore_base_history(test);
+    }
+    const bool impact = std::holds_alternative<drivers::ImpactControl>(parts.control);
+    if (impact) parts.load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
+    if (!parts.end && parts.load.history) {  // without a history drivers::validate refuses the case
+        parts.end = default_end_time(parts.load, impact, parts.tangential);
+    }
+    rheology::ContactMaterial material = bodies(parts);
+    drivers::ContactCase contact_case{.title = std::move(parts.title),
+                                      .material = std::move(material.material),
+                                      .indenter = std::move(parts.indenter),
+                                      .control = std::move(parts.control),
+                                      .load = std::move(parts.load),
+                                      .end_time = parts.end.value_or(std::numeric_limits<double>::infinity()),
+                                      .snapshots = std::move(parts.snapshots),
+                                      .numerics = parts.numerics,
+                                      .shear_material = std::move(material.shear_material),
+                                      .bulk_material = std::move(material.bulk_material),
+                                      .tangential = std::move(parts.tangential),
+                                      .tangential_exact = material.tangential_exact,
+                                      .material_origin = std::move(material.origin),
+                                      .units = std::string(system.name),
+                                      .layer = parts.layer};
+    drivers::validate(contact_case);
+    drivers::validate_layer(contact_case);
+    // A model converted to a series (certificate kind "model") is the case's material only over the lags it is
+    // certified for: a caller's converted object is checked here; the reader converts over the case's own window.
+    const auto& certificate = contact_case.material_origin.certificate;
+    if (certificate && certificate->kind == "model") {
+        drivers::require_certified_over(contact_case.material_origin,
+                                        drivers::material_window(contact_case.load, contact_case.end_time,
+                                                                 contact_case.numerics, contact_case.tangential,
+                                                                 impact));
+    }
+    return contact_case;
+}
+
+}  // namespace mdr::io
