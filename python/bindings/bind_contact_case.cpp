@@ -104,14 +104,8 @@ std::string value_text(const py::handle& value) {
     return py::module_::import("reprlib").attr("repr")(value).cast<std::string>();
 }
 
-// A number of the case (`key`): a bool is refused as a case file refuses it, not taken as 0 or 1.
-double number(const py::handle& value, const std::string& key) {
-    if (PyBool_Check(value.ptr())) throw py::type_error(key + ": expected a number, got bool");
-    return argument<double>(value, key, "a number");
-}
-
-// The numbers of a list or tuple `values` (`key`): refuses a bool among them (number); other sequences (arrays)
-// are cast whole.
+// The numbers of a list or tuple `values` (`key`): refuses a bool among them, with the message of argument<Number>;
+// other sequences (arrays) are cast whole.
 void refuse_bools(const py::handle& values, const std::string& key, int depth) {
     if (!py::isinstance<py::list>(values) && !py::isinstance<py::tuple>(values)) return;
     for (const py::handle item : values) {
@@ -158,7 +152,7 @@ drivers::ContactCase contact_case(const CaseArguments& given) {
     if (!given.indenter.is_none()) {
         parts.indenter = argument<std::shared_ptr<profile::Profile>>(given.indenter, "indenter", "an mdr.Indenter");
     }
-    if (!given.end.is_none()) parts.end = number(given.end, "load.end");
+    if (!given.end.is_none()) parts.end = argument<Number>(given.end, "load.end", "a number");  // a bool refused
     if (!given.snapshots.is_none()) {
         refuse_bools(given.snapshots, "output.snapshots", 0);
         parts.snapshots = argument<std::vector<double>>(given.snapshots, "output.snapshots", "a sequence of times");
