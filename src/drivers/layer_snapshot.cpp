@@ -1,0 +1,128 @@
+#include "layer_snapshot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+#include "layer_receding.hpp"
+#include "mdr/contact/stress.hpp"
+#include "stepping.hpp"
+
+namespace mdr::drivers {
+
+namespace {
+
+// Cells of the uniform grid on which a growing contact's q and w1 are sampled, across the contact (q piecewise
+// linear between their centres: p to ~1e-5 of its peak, docs/theory.md eq. L25).
+constexpr std::size_t snapshot_cells = 1000;
+
+}  // namespace
+
+SnapshotSchedule::SnapshotSchedule(std::vector<double> times) : times_(std::move(times)) {
+    std::sort(times_.begin(), times_.end());
+}
+
+std::size_t SnapshotSchedule::due(double time) {
+    const std::size_t first = next_;
+    while (next_ < times_.size() && times_[next_] <= time) ++next_;
+    return next_ - first;
+}
+
+Snapshot cells_snapshot(const LayerCells& cells, double contact_radius, double time, bool flat_punch) {
+    const auto surface = cells.surface();
+    const double spacing = cells.spacing();
+    Snapshot snapshot = snapshot_radii(time, contact_radius, spacing * static_cast<double>(surface.size()));
+    const auto load = cells.line_load();
+    // A flat punch whose face is all in contact: its line load does not vanish at the wall (eq. 23's sqrt
+    // singularity), as on the half-space.
+    const double edge_value = flat_punch && !load.empty() && load.size() == surface.size() ? load.back() : 0.0;
+    snapshot.pressure = contact::stress_from_line_load(spacing, load, contact_radius, edge_value, snapshot.radius);
+    snapshot.displacement = contact::surface_displacement(spacing, surface, snapshot.radius);
+    return snapshot;
+}
+
+GrowingSnapshots::GrowingSnapshots(const rheology::Rheology& material, const contact::LayerContact& layer,
+                                   double unit_modulus)
+    : material_(&material), layer_(&layer), unit_modulus_(unit_modulus) {}
+
+void GrowingSnapshots::commit(const LayerStep& step) {
+    if (step.phase == LayerPhase::approach) {
+        start_ = step.time;
+        nodes_.clear();
+    } else if (step.phase == LayerPhase::growing) {
+        nodes_.push_back({step.time, step.contact});
+    }
+}
+
+Snapshot GrowingSnapshots::take(const LayerStep& step) const {
+    const double range = layer_->max_contact_radius();
+    Snapshot snapshot = snapshot_radii(step.time, step.contact.contact_radius, range);
+    const double a = snapshot.contact_radius;
+    snapshot.pressure.assign(snapshot.radius.size(), 0.0);
+    snapshot.displacement.assign(snapshot.radius.size(), 0.0);
+    if (step.phase != LayerPhase::growing || !(a > 0.0) || nodes_.empty()) return snapshot;  // nothing loaded yet
+    // Cell centres x_i = (i + 1/2) dx across the contact (the first `inside`) and on to the snapshot's outer radius.
+    const double spacing = a / static_cast<double>(snapshot_cells);
+    const auto count = static_cast<std::size_t>(std::ceil(snapshot.radius.back() / spacing - 0.5)) + 1;
+    std::vector<double> centres(std::max(count, snapshot_cells));
+    for (std::size_t i = 0; i < centres.size(); ++i) centres[i] = (static_cast<double>(i) + 0.5) * spacing;
+    // Eq. L25: q(x, t) = G_inf q_el(x, t) + sum_k G_k h_k(x, t) + the dashpot's part, h_k the Prony branches of
+    // q_el(x, .) linear over each loading step (as LayerStepper's of F_el): q = sum_n c_n q_el(x, t_n), c_n =
+    // beta_n - beta_n+1 (+ G_inf for the last), beta_n = sum_k G_k's response at t to a unit change over step n.
+    const std::size_t steps = nodes_.size();
+    std::vector<double> response(steps + 1, 0.0);
+    for (std::size_t n = 0; n < steps; ++n) {
+        PronyBranches unit(*material_);
+        unit.advance(nodes_[n].time - (n == 0 ? start_ : nodes_[n - 1].time), 1.0);
+        unit.advance(step.time - nodes_[n].time, 0.0);
+        response[n] = unit.weighted_sum();
+    }
+    std::vector<double> load(snapshot_cells, 0.0);
+    double last_on_load = 0.0, last_on_unit_depth = 0.0;  // the last group's: the current radius
+    // Consecutive nodes of one contact radius (a hold; a flat punch's every node) share one solve: there q_el =
+    // d q_d - q_g, so their sum is C q_el(first) + E q_d with C = sum c_n, E = sum c_n (d_n - d_first).
+    for (std::size_t first = 0; first < steps;) {
+        const contact::LayerContactState& state = nodes_[first].contact;
+        double on_load = 0.0, on_unit_depth = 0.0;
+        std::size_t n = first;
+        for (; n < steps && nodes_[n].contact.contact_radius == state.contact_radius; ++n) {
+            const double weight = response[n] - response[n + 1] +
+                                  (n + 1 == steps ? material_->equilibrium_modulus() : 0.0);
+            on_load += weight;
+            on_unit_depth += weight * (nodes_[n].contact.depth - state.depth);
+        }
+        first = n;
+        last_on_load = on_load;
+        last_on_unit_depth = on_unit_depth;
+        if (!(state.contact_radius > 0.0) || (on_load == 0.0 && on_unit_depth == 0.0)) continue;
+        // q_el of this radius vanishes beyond it: only the centres inside.
+        const auto inside = static_cast<std::size_t>(
+            std::upper_bound(centres.begin(), centres.begin() + snapshot_cells, state.contact_radius) -
+            centres.begin());
+        const auto profile = layer_->profile(state, std::span(centres.data(), inside));
+        for (std::size_t i = 0; i < inside; ++i) {
+            load[i] += unit_modulus_ * (on_load * profile.load[i] + on_unit_depth * profile.unit_depth_load[i]);
+        }
+    }
+    // The current equilibrium over every centre and at the edge: w1 (eq. L26), the dashpot's shape, q(a).
+    centres.resize(count);
+    centres.push_back(a);
+    const auto current = layer_->profile(step.contact, centres);
+    double edge_value =
+        unit_modulus_ * (last_on_load * current.load.back() + last_on_unit_depth * current.unit_depth_load.back());
+    // A parallel dashpot: eta dq_el/dt = eta (dd/dt) q_d at a fixed radius (q(a) = 0, eq. L6): its force, the
+    // step's force less the springs' (eq. L11), in the shape of q_d, which does not vanish at the edge.
+    if (material_->viscosity() > 0.0 && step.contact.stiffness > 0.0) {
+        const double dashpot = step.force - material_->equilibrium_modulus() * step.elastic_force -
+                               step.force_branches.weighted_sum();
+        const double per_unit_depth = dashpot / step.contact.stiffness;  // 2 int q_d = the stiffness (eq. L5)
+        for (std::size_t i = 0; i < snapshot_cells; ++i) load[i] += per_unit_depth * current.unit_depth_load[i];
+        edge_value += per_unit_depth * current.unit_depth_load.back();
+    }
+    snapshot.pressure = contact::stress_from_line_load(spacing, load, a, edge_value, snapshot.radius);
+    snapshot.displacement = contact::surface_displacement(
+        spacing, std::span(current.surface.data(), count), snapshot.radius);
+    return snapshot;
+}
+
+}  // namespace mdr::drivers
