@@ -66,8 +66,7 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
         const bool settled = i + 1 == grid.size() || grid[i + 1].time != grid[i].time;
         if (paused && settled) paused->passed(grid[i].time, state.force, state.depth, grid[i].value);
         for (std::size_t due = settled ? snapshots.due(grid[i].time) : 0; due > 0; --due) {
-            result.snapshots.push_back(cells_snapshot(layer, state.contact_radius, grid[i].time,
-                                                      contact_case.indenter->is_flat_punch()));
+            result.snapshots.push_back(cells_snapshot(layer, state.contact_radius, grid[i].time));
         }
         if (cycle) cycle->record(grid[i].time, state.depth, state.force, state.touching, state.touching_part);
         const auto percent = static_cast<std::size_t>(100.0 * static_cast<double>(i + 1) /

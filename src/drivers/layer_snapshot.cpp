@@ -28,14 +28,20 @@ std::size_t SnapshotSchedule::due(double time) {
     return next_ - first;
 }
 
-Snapshot cells_snapshot(const LayerCells& cells, double contact_radius, double time, bool flat_punch) {
+Snapshot cells_snapshot(const LayerCells& cells, double contact_radius, double time) {
     const auto surface = cells.surface();
     const double spacing = cells.spacing();
     Snapshot snapshot = snapshot_radii(time, contact_radius, spacing * static_cast<double>(surface.size()));
     const auto load = cells.line_load();
-    // A flat punch whose face is all in contact: its line load does not vanish at the wall (eq. 23's sqrt
-    // singularity), as on the half-space.
-    const double edge_value = flat_punch && !load.empty() && load.size() == surface.size() ? load.back() : 0.0;
+    // The line load at the edge, extrapolated linearly from the last two cells in contact (no less than zero):
+    // about zero where q falls to zero there (eq. L6), the jump of a parallel dashpot's part in a growing contact
+    // (eq. L16) and a flat punch's at its wall, whose pressures grow as 1/sqrt(a^2 - r^2) at the edge (eq. 23).
+    double edge_value = 0.0;
+    if (load.size() >= 2) {
+        const double last = load[load.size() - 1], before = load[load.size() - 2];
+        const double last_centre = (static_cast<double>(load.size()) - 0.5) * spacing;
+        edge_value = std::max(0.0, last + (contact_radius - last_centre) * (last - before) / spacing);
+    }
     snapshot.pressure = contact::stress_from_line_load(spacing, load, contact_radius, edge_value, snapshot.radius);
     snapshot.displacement = contact::surface_displacement(spacing, surface, snapshot.radius);
     return snapshot;
@@ -80,18 +86,19 @@ Snapshot GrowingSnapshots::take(const LayerStep& step) const {
     std::vector<double> load(snapshot_cells, 0.0);
     double last_on_load = 0.0, last_on_unit_depth = 0.0;  // the last group's: the current radius
     // Consecutive nodes of one contact radius (a hold; a flat punch's every node) share one solve: there q_el =
-    // d q_d - q_g, so their sum is C q_el(first) + E q_d with C = sum c_n, E = sum c_n (d_n - d_first).
+    // d q_d - q_g, so their sum is C q_el(last) + E q_d with C = sum c_n, E = sum c_n (d_n - d_last).
     for (std::size_t first = 0; first < steps;) {
-        const contact::LayerContactState& state = nodes_[first].contact;
+        std::size_t end = first;
+        while (end < steps && nodes_[end].contact.contact_radius == nodes_[first].contact.contact_radius) ++end;
+        const contact::LayerContactState& state = nodes_[end - 1].contact;
         double on_load = 0.0, on_unit_depth = 0.0;
-        std::size_t n = first;
-        for (; n < steps && nodes_[n].contact.contact_radius == state.contact_radius; ++n) {
+        for (std::size_t n = first; n < end; ++n) {
             const double weight = response[n] - response[n + 1] +
                                   (n + 1 == steps ? material_->equilibrium_modulus() : 0.0);
             on_load += weight;
             on_unit_depth += weight * (nodes_[n].contact.depth - state.depth);
         }
-        first = n;
+        first = end;
         last_on_load = on_load;
         last_on_unit_depth = on_unit_depth;
         if (!(state.contact_radius > 0.0) || (on_load == 0.0 && on_unit_depth == 0.0)) continue;
