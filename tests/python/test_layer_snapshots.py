@@ -72,7 +72,7 @@ def test_a_very_thick_layer_has_hertz_pressure_and_surface(interface, material, 
     for time in (0.5, 1.0):
         radii, pressure, displacement = snapshot(result, time)
         expected_pressure, expected_displacement, p0 = hertz(radii, 1.0e-6 * time, plane_modulus)
-        assert radii[100] == pytest.approx(math.sqrt(R * 1.0e-6 * time), rel=1e-8)
+        assert radii[100] == pytest.approx(math.sqrt(R * 1.0e-6 * time), rel=1e-8, abs=0.0)
         assert np.abs(pressure - expected_pressure)[1:].max() < 5e-5 * p0
         assert abs(pressure[0] - p0) < 5e-4 * p0
         assert np.abs(displacement - expected_displacement).max() < 2e-5 * 1.0e-6 * time
@@ -86,7 +86,7 @@ def test_a_very_thick_layer_under_a_flat_punch_has_sneddons_pressure():
     result = mdr.run(case(1.0e3, RAMP, ELASTIC, (1.0,), {"time_step": 0.25}, indenter=punch))
     radii, pressure, displacement = snapshot(result, 1.0)
     a, force = 2.0e-6, result.history["F"][-1]
-    assert force == pytest.approx(2.0 * 4.0e3 * a * 1.0e-6, rel=1e-8)  # F = 2 E* a d
+    assert force == pytest.approx(2.0 * 4.0e3 * a * 1.0e-6, rel=1e-8, abs=0.0)  # F = 2 E* a d
     inner = radii[:100]
     np.testing.assert_allclose(pressure[:100], force / (2.0 * math.pi * a * np.sqrt(a * a - inner ** 2)), rtol=1e-8)
     np.testing.assert_allclose(displacement[:100], 1.0e-6, rtol=1e-6)
@@ -96,20 +96,20 @@ def test_a_very_thick_layer_under_a_flat_punch_has_sneddons_pressure():
 @pytest.mark.parametrize("interface", ["bonded", "sliding"])
 def test_the_pressure_carries_the_force(material, interface):
     # A layer as thick as the contact is wide: int 2 pi r p dr = F (eq. L5) at each snapshot. Ting's path (a ramp,
-    # 2.5 ms steps; the dashpot's part in the shape of the unit depth's line load, eq. L25): measured within 1.2e-5
-    # (the test's spline through 100 radii; with 10 ms steps the kinks of p at the loading radii, eq. L25, take it
+    # 2.5 ms steps; the dashpot's part in the shape of the unit depth's line load, eq. L26): measured within 3.7e-5
+    # (the test's spline through 100 radii; with 10 ms steps the kinks of p at the loading radii, eq. L26, take it
     # to 7e-4). The cells (a snapshot after the turn runs the case there, 400 cells): 4.4e-4 at 0.3 s, where the
-    # contact spans 70 cells, 6.2e-5 at 1.2 s.
+    # contact spans about 70 cells, 6.2e-5 at 1.2 s.
     growing = mdr.run(case(2.0e-6, RAMP, material, (0.3, 1.0), {"time_step": 0.0025}, interface))
     for time in (0.3, 1.0):
         radii, pressure, _ = snapshot(growing, time)
         force = np.interp(time, growing.history["t"], growing.history["F"])
-        assert pressure_force(radii, pressure) == pytest.approx(force, rel=3e-5), time
+        assert pressure_force(radii, pressure) == pytest.approx(force, rel=6e-5, abs=0.0), time
     result = mdr.run(case(2.0e-6, TRIANGLE, material, (0.3, 0.5, 1.0, 1.2), {"time_step": 0.01}, interface))
     for time, tolerance in ((0.3, 1e-3), (0.5, 1e-3), (1.0, 2e-4), (1.2, 2e-4)):
         radii, pressure, _ = snapshot(result, time)
         force = np.interp(time, result.history["t"], result.history["F"])
-        assert pressure_force(radii, pressure) == pytest.approx(force, rel=tolerance), time
+        assert pressure_force(radii, pressure) == pytest.approx(force, rel=tolerance, abs=0.0), time
 
 
 def test_a_thin_bonded_incompressible_layer_squeezes_out():
