@@ -141,8 +141,9 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
                                 progress);
     }
     const auto& history = *contact_case.load.history;
-    // The half-space's grid, cut at the snapshots (a tangential load is refused on a layer, a harmonic runs on cells): under force or spring control graded after the same fast changes, a spring's base from where it
-    // is, each force pause's ends on nodes of their own.
+    // The half-space's grid, cut at the snapshots (a tangential load is refused on a layer, a harmonic runs on
+    // cells): under force or spring control graded after the same fast changes, a spring's base from where it is,
+    // each force pause's ends on nodes of their own.
     const auto grid = indentation_grid(contact_case, result.numerics);
 
     const auto& material = contact_case.material;

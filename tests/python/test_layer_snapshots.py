@@ -201,7 +201,8 @@ def test_a_receding_contact_on_the_cells_meets_the_half_space():
 
 def test_a_snapshot_in_an_impact_on_a_layer_is_refused():
     impact = {"material": STANDARD, "indenter": {"shape": "sphere", "R": R, "mass": 1.0e-9},
-              "load": {"control": "impact", "velocity": 1.0e-3, "end": 1.0e-3}, "layer": {"thickness": 2.0e-6, "interface": "bonded"},
+              "load": {"control": "impact", "velocity": 1.0e-3, "end": 1.0e-3},
+              "layer": {"thickness": 2.0e-6, "interface": "bonded"},
               "numerics": {"time_step": 1.0e-6}, "output": {"snapshots": [1.0e-4]}}
     with pytest.raises(mdr.InvalidInput, match=r"output\.snapshots.*impact"):
         mdr.run(impact)
