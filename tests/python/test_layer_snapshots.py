@@ -112,6 +112,25 @@ def test_the_pressure_carries_the_force(material, interface):
         assert pressure_force(radii, pressure) == pytest.approx(force, rel=tolerance, abs=0.0), time
 
 
+@pytest.mark.parametrize("material", [STANDARD, {"model": "kelvin_voigt", "G": 1.0e3, "eta": 50.0}])
+@pytest.mark.parametrize("control,history,spring_constant", [("force", [[0.0, 0.0], [1.0, 2.0e-8]], None),
+                                                             ("spring", [[0.0, 0.0], [1.0, 2.0e-6]], 0.02)])
+def test_force_and_spring_control_snapshots_carry_the_force(material, control, history, spring_constant):
+    # Ting's path with the depth solved (eq. L11; the dashpot's trapezoidal rate, its part in the shape of q_d):
+    # int 2 pi r p dr = F measured within 1.5e-5, the surface at the axis the depth (w1 = d - g at the first cell's
+    # centre: 5e-7).
+    contact_case = case(2.0e-6, history, material, (0.5, 1.0), {"time_step": 0.0025}, control=control)
+    if spring_constant:
+        contact_case["load"]["spring_constant"] = spring_constant
+    result = mdr.run(contact_case)
+    for time in (0.5, 1.0):
+        radii, pressure, displacement = snapshot(result, time)
+        force = np.interp(time, result.history["t"], result.history["F"])
+        depth = np.interp(time, result.history["t"], result.history["d"])
+        assert pressure_force(radii, pressure) == pytest.approx(force, rel=6e-5, abs=0.0), time
+        assert displacement[0] == pytest.approx(depth, rel=1e-6, abs=0.0), time
+
+
 def test_a_thin_bonded_incompressible_layer_squeezes_out():
     # Lubrication (eq. L8): p = (3 G / h^3) [d (a^2 - r^2)/4 - (a^4 - r^4)/(32 R)] = 3 G (a^2 - r^2)^2 / (32 R h^3),
     # a^2 = 4 R d, approached at O((h/a)^2): measured 0.193, 0.051, 0.013 of its peak at chi = sqrt(R d)/h = 5, 10,
