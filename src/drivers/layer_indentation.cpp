@@ -58,8 +58,8 @@ double largest_contact_radius(const ContactCase& contact_case) {
 struct ContactRegrows {};
 
 // A snapshot due while the contact recedes or after it was lost: the surface outside a receding contact creeps under
-// the nonlocal load K q of the contact (eq. L18's free cells), which Ting's solution (eq. L12) does not carry. Thrown
-// by the run of Ting's class, caught by run_layer_indentation, which runs the case again on LayerCells.
+// the nonlocal load K q of the contact (eq. L27; L18's free cells), which Ting's solution (eq. L12) does not carry.
+// Thrown by the run of Ting's class, caught by run_layer_indentation, which runs the case again on LayerCells.
 struct SnapshotOnCells {};
 
 }  // namespace
@@ -179,7 +179,7 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     std::size_t reported = 0;
     double previous_centre = 0.0;
-    // Snapshots of the growing contact (eq. L25, L26); one due while it recedes runs the case on cells.
+    // Snapshots of the growing contact (eq. L26); one due while it recedes runs the case on cells (eq. L27).
     std::optional<SnapshotSchedule> snapshots;
     std::optional<GrowingSnapshots> growing;
     if (!contact_case.snapshots.empty()) {

@@ -13,20 +13,10 @@ namespace mdr::drivers {
 namespace {
 
 // Cells of the uniform grid on which a growing contact's q and w1 are sampled, across the contact (q piecewise
-// linear between their centres: p to ~1e-5 of its peak, docs/theory.md eq. L25).
+// linear between their centres, docs/theory.md eq. L25: Hertz's p to 3e-5 of p0, 3.5e-4 at the axis).
 constexpr std::size_t snapshot_cells = 1000;
 
 }  // namespace
-
-SnapshotSchedule::SnapshotSchedule(std::vector<double> times) : times_(std::move(times)) {
-    std::sort(times_.begin(), times_.end());
-}
-
-std::size_t SnapshotSchedule::due(double time) {
-    const std::size_t first = next_;
-    while (next_ < times_.size() && times_[next_] <= time) ++next_;
-    return next_ - first;
-}
 
 Snapshot cells_snapshot(const LayerCells& cells, double contact_radius, double time) {
     const auto surface = cells.surface();
@@ -72,7 +62,7 @@ Snapshot GrowingSnapshots::take(const LayerStep& step) const {
     const auto count = static_cast<std::size_t>(std::ceil(snapshot.radius.back() / spacing - 0.5)) + 1;
     std::vector<double> centres(std::max(count, snapshot_cells));
     for (std::size_t i = 0; i < centres.size(); ++i) centres[i] = (static_cast<double>(i) + 0.5) * spacing;
-    // Eq. L25: q(x, t) = G_inf q_el(x, t) + sum_k G_k h_k(x, t) + the dashpot's part, h_k the Prony branches of
+    // Eq. L26: q(x, t) = G_inf q_el(x, t) + sum_k G_k h_k(x, t) + the dashpot's part, h_k the Prony branches of
     // q_el(x, .) linear over each loading step (as LayerStepper's of F_el): q = sum_n c_n q_el(x, t_n), c_n =
     // beta_n - beta_n+1 (+ G_inf for the last), beta_n = sum_k G_k's response at t to a unit change over step n.
     const std::size_t steps = nodes_.size();
