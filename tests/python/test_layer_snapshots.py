@@ -218,6 +218,20 @@ def test_a_receding_contact_on_the_cells_meets_the_half_space():
     assert displacement_errors[2] < displacement_errors[1] < displacement_errors[0] and displacement_errors[2] < 5e-5
 
 
+def test_snapshots_of_a_growing_contact_leave_tings_run_as_it_is():
+    # Snapshots while the contact grows keep the run of Ting's class (exact, eq. L11 to L14): its history as without
+    # snapshots through the unloading after them (to round-off: the snapshot's cut places the grid's nodes anew); one
+    # after the turn runs the case on the cells (eq. L27), whose force differs from Ting's by their error (~1e-4 of
+    # the peak at 400 cells).
+    plain = mdr.run(case(2.0e-6, TRIANGLE, STANDARD, (), {"time_step": 0.01}))
+    growing = mdr.run(case(2.0e-6, TRIANGLE, STANDARD, (0.5, 1.0), {"time_step": 0.01}))
+    for column in ("t", "d", "F", "a"):
+        np.testing.assert_allclose(growing.history[column], plain.history[column], rtol=1e-12, atol=1e-24)
+    receding = mdr.run(case(2.0e-6, TRIANGLE, STANDARD, (1.2,), {"time_step": 0.01}))
+    difference = np.abs(receding.history["F"] - plain.history["F"]).max() / plain.history["F"].max()
+    assert 1e-7 < difference < 1e-3
+
+
 def test_a_snapshot_in_an_impact_on_a_layer_is_refused():
     impact = {"material": STANDARD, "indenter": {"shape": "sphere", "R": R, "mass": 1.0e-9},
               "load": {"control": "impact", "velocity": 1.0e-3, "end": 1.0e-3},
