@@ -92,6 +92,20 @@ def test_a_very_thick_layer_under_a_flat_punch_has_sneddons_pressure():
     np.testing.assert_allclose(displacement[:100], 1.0e-6, rtol=1e-6)
 
 
+def test_a_very_thick_layer_under_a_cone_has_sneddons_pressure():
+    # Sneddon: p = (E* tan(theta) / 2) arccosh(a / r), a = 2 d / (pi tan(theta)) (theta the flank's slope; the
+    # profile's kink at the axis splits the layer's Gauss rule, contact_quadrature). q is linear in x (eq. 9), which
+    # the piecewise-linear transform takes exactly: off the axis (where p is infinite) to round-off.
+    tangent = math.tan(math.radians(20.0))
+    result = mdr.run(case(1.0e3, RAMP, ELASTIC, (1.0,), {"time_step": 0.5},
+                          indenter={"shape": "cone", "slope_deg": 20.0}))
+    radii, pressure, _ = snapshot(result, 1.0)
+    a = radii[100]
+    assert a == pytest.approx(2.0e-6 / (math.pi * tangent), rel=1e-8, abs=0.0)
+    expected = 4.0e3 * tangent / 2.0 * np.arccosh(a / radii[1:100])
+    assert np.abs(pressure[1:100] - expected).max() < 1e-10 * expected.max()
+
+
 @pytest.mark.parametrize("material", [ELASTIC, STANDARD, {"model": "kelvin_voigt", "G": 1.0e3, "eta": 50.0}])
 @pytest.mark.parametrize("interface", ["bonded", "sliding"])
 def test_the_pressure_carries_the_force(material, interface):
