@@ -57,7 +57,7 @@ Snapshot GrowingSnapshots::take(const LayerStep& step) const {
     snapshot.pressure.assign(snapshot.radius.size(), 0.0);
     snapshot.displacement.assign(snapshot.radius.size(), 0.0);
     if (step.phase != LayerPhase::growing || !(a > 0.0) || nodes_.empty()) return snapshot;  // nothing loaded yet
-    // Cell centres x_i = (i + 1/2) dx across the contact (the first `inside`) and on to the snapshot's outer radius.
+    // Cell centres x_i = (i + 1/2) dx: snapshot_cells across the contact, then on to the snapshot's outer radius.
     const double spacing = a / static_cast<double>(snapshot_cells);
     const auto count = static_cast<std::size_t>(std::ceil(snapshot.radius.back() / spacing - 0.5)) + 1;
     std::vector<double> centres(std::max(count, snapshot_cells));
@@ -73,40 +73,52 @@ Snapshot GrowingSnapshots::take(const LayerStep& step) const {
         unit.advance(step.time - nodes_[n].time, 0.0);
         response[n] = unit.weighted_sum();
     }
-    std::vector<double> load(snapshot_cells, 0.0);
-    double last_on_load = 0.0, last_on_unit_depth = 0.0;  // the last group's: the current radius
     // Consecutive nodes of one contact radius (a hold; a flat punch's every node) share one solve: there q_el =
-    // d q_d - q_g, so their sum is C q_el(last) + E q_d with C = sum c_n, E = sum c_n (d_n - d_last).
-    for (std::size_t first = 0; first < steps;) {
+    // d q_d - q_g, so their sum is C q_el(last) + E q_d with C = sum c_n, E = sum c_n (d_n - d_last). The last
+    // group is the current equilibrium's, solved below over every centre.
+    struct Weights {
+        double on_load = 0.0, on_unit_depth = 0.0;
+    };
+    const auto weights = [&](std::size_t first, std::size_t end) {
+        Weights sum;
+        for (std::size_t n = first; n < end; ++n) {
+            const double weight =
+                response[n] - response[n + 1] + (n + 1 == steps ? material_->equilibrium_modulus() : 0.0);
+            sum.on_load += weight;
+            sum.on_unit_depth += weight * (nodes_[n].contact.depth - nodes_[end - 1].contact.depth);
+        }
+        return sum;
+    };
+    // unit_modulus (C q_el + E q_d) at point i of a group's profile.
+    const auto group_load = [&](const Weights& sum, const contact::LayerContactProfile& profile, std::size_t i) {
+        return unit_modulus_ * (sum.on_load * profile.load[i] + sum.on_unit_depth * profile.unit_depth_load[i]);
+    };
+    const auto group_end = [&](std::size_t first) {
         std::size_t end = first;
         while (end < steps && nodes_[end].contact.contact_radius == nodes_[first].contact.contact_radius) ++end;
-        const contact::LayerContactState& state = nodes_[end - 1].contact;
-        double on_load = 0.0, on_unit_depth = 0.0;
-        for (std::size_t n = first; n < end; ++n) {
-            const double weight = response[n] - response[n + 1] +
-                                  (n + 1 == steps ? material_->equilibrium_modulus() : 0.0);
-            on_load += weight;
-            on_unit_depth += weight * (nodes_[n].contact.depth - state.depth);
-        }
-        first = end;
-        last_on_load = on_load;
-        last_on_unit_depth = on_unit_depth;
-        if (!(state.contact_radius > 0.0) || (on_load == 0.0 && on_unit_depth == 0.0)) continue;
+        return end;
+    };
+    std::vector<double> load(snapshot_cells, 0.0);
+    std::size_t first = 0;
+    for (std::size_t end = group_end(first); end < steps; first = end, end = group_end(first)) {
         // q_el of this radius vanishes beyond it: only the centres inside.
+        const contact::LayerContactState& state = nodes_[end - 1].contact;
         const auto inside = static_cast<std::size_t>(
             std::upper_bound(centres.begin(), centres.begin() + snapshot_cells, state.contact_radius) -
             centres.begin());
+        if (inside == 0) continue;
+        const Weights sum = weights(first, end);
         const auto profile = layer_->profile(state, std::span(centres.data(), inside));
-        for (std::size_t i = 0; i < inside; ++i) {
-            load[i] += unit_modulus_ * (on_load * profile.load[i] + on_unit_depth * profile.unit_depth_load[i]);
-        }
+        for (std::size_t i = 0; i < inside; ++i) load[i] += group_load(sum, profile, i);
     }
-    // The current equilibrium over every centre and at the edge: w1 (eq. L26), the dashpot's shape, q(a).
+    // The last group, the current equilibrium's, over every centre and at the edge x = a: its load, w1 (eq. L26),
+    // the dashpot's shape.
     centres.resize(count);
     centres.push_back(a);
     const auto current = layer_->profile(step.contact, centres);
-    double edge_value =
-        unit_modulus_ * (last_on_load * current.load.back() + last_on_unit_depth * current.unit_depth_load.back());
+    const Weights sum = weights(first, steps);
+    for (std::size_t i = 0; i < snapshot_cells; ++i) load[i] += group_load(sum, current, i);
+    double edge_value = group_load(sum, current, count);  // q(a): earlier radii are smaller, their q_el(a) = 0
     // A parallel dashpot: eta dq_el/dt = eta (dd/dt) q_d at a fixed radius (q(a) = 0, eq. L6): its force, the
     // step's force less the springs' (eq. L11), in the shape of q_d, which does not vanish at the edge.
     if (material_->viscosity() > 0.0 && step.contact.stiffness > 0.0) {
