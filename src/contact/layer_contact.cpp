@@ -72,15 +72,22 @@ LayerContact::LayerContact(const Layer& layer, double poisson_ratio, std::shared
     }
 }
 
-LayerContactState LayerContact::at_radius(double contact_radius) const {
+// The Nystroem solution of eq. L3 (E* = 1) on the Gauss nodes of the contact [0, a]: q_d of the unit depth and q_g
+// of the profile at the nodes, q = d q_d - q_g.
+struct LayerContact::Solution {
+    ContactQuadrature quadrature;
+    std::vector<double> unit_depth, profile;
+};
+
+LayerContact::Solution LayerContact::solve(double contact_radius) const {
     const double a = contact_radius, h = layer_.thickness;
-    const ContactQuadrature quadrature =
-        contact_quadrature(a, kinks_, std::max(nodes_, 6 * static_cast<std::size_t>(std::ceil(a / h))), rules_);
-    const std::vector<double>& x = quadrature.nodes;
-    const std::vector<double>& w = quadrature.weights;
+    Solution solution{
+        contact_quadrature(a, kinks_, std::max(nodes_, 6 * static_cast<std::size_t>(std::ceil(a / h))), rules_), {},
+        {}};
+    const std::vector<double>& x = solution.quadrature.nodes;
+    const std::vector<double>& w = solution.quadrature.weights;
     const std::size_t nodes = x.size();
-    // K(x -+ s) = k((x -+ s)/h)/h (eq. L4); the Nystroem matrix I - (1/pi) w_j [K(x_i - x_j) + K(x_i + x_j)].
-    const auto kernel_sum = [&](double xi, double s) { return (kernel_((xi - s) / h) + kernel_((xi + s) / h)) / h; };
+    // The Nystroem matrix I - (1/pi) w_j [K(x_i - x_j) + K(x_i + x_j)] (eq. L4: K(x -+ s) = k((x -+ s)/h)/h).
     std::vector<double> matrix(nodes * nodes);
     for (std::size_t i = 0; i < nodes; ++i) {
         for (std::size_t j = 0; j <= i; ++j) {  // the kernel sum is symmetric in x_i, x_j
@@ -90,22 +97,65 @@ LayerContactState LayerContact::at_radius(double contact_radius) const {
         }
     }
     // Two right-hand sides of eq. L3 with E* = 1: the unit depth (q_d) and the profile (q_g); q = d q_d - q_g.
-    std::vector<double> unit_depth(nodes, 1.0), profile(nodes);
-    for (std::size_t i = 0; i < nodes; ++i) profile[i] = indenter_->equivalent(x[i]);
-    solve_two(matrix, unit_depth, profile, nodes);
+    solution.unit_depth.assign(nodes, 1.0);
+    solution.profile.resize(nodes);
+    for (std::size_t i = 0; i < nodes; ++i) solution.profile[i] = indenter_->equivalent(x[i]);
+    solve_two(matrix, solution.unit_depth, solution.profile, nodes);
+    return solution;
+}
+
+double LayerContact::kernel_sum(double x, double s) const {
+    const double h = layer_.thickness;
+    return (kernel_((x - s) / h) + kernel_((x + s) / h)) / h;
+}
+
+LayerContactState LayerContact::at_radius(double contact_radius) const {
+    const double a = contact_radius;
+    const Solution solution = solve(a);
+    const std::vector<double>& x = solution.quadrature.nodes;
+    const std::vector<double>& w = solution.quadrature.weights;
     double edge_depth = 1.0, edge_profile = indenter_->is_flat_punch() ? 0.0 : indenter_->equivalent(a);
     double force_depth = 0.0, force_profile = 0.0;
-    for (std::size_t j = 0; j < nodes; ++j) {
+    for (std::size_t j = 0; j < x.size(); ++j) {
         // Nystroem interpolation of q_d, q_g at the edge x = a.
         const double weight = w[j] * kernel_sum(a, x[j]) / std::numbers::pi;
-        edge_depth += weight * unit_depth[j];
-        edge_profile += weight * profile[j];
-        force_depth += 2.0 * w[j] * unit_depth[j];  // eq. L5
-        force_profile += 2.0 * w[j] * profile[j];
+        edge_depth += weight * solution.unit_depth[j];
+        edge_profile += weight * solution.profile[j];
+        force_depth += 2.0 * w[j] * solution.unit_depth[j];  // eq. L5
+        force_profile += 2.0 * w[j] * solution.profile[j];
     }
     if (indenter_->is_flat_punch()) return {a, 1.0, force_depth, force_depth};
     const double depth = edge_profile / edge_depth;  // q(a) = 0 (eq. L6)
     return {a, depth, depth * force_depth - force_profile, force_depth};
+}
+
+LayerContactProfile LayerContact::profile(const LayerContactState& state, std::span<const double> points) const {
+    LayerContactProfile result{std::vector<double>(points.size(), 0.0), std::vector<double>(points.size(), 0.0),
+                               std::vector<double>(points.size(), 0.0)};
+    const double a = state.contact_radius, d = state.depth;
+    if (!(a > 0.0)) return result;
+    const Solution solution = solve(a);
+    const std::vector<double>& x = solution.quadrature.nodes;
+    const std::vector<double>& w = solution.quadrature.weights;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const double point = points[i];
+        // (1/pi) int_0^a [K(x - s) + K(x + s)] q(s) ds for q_d and q (eq. L3, the Nystroem interpolant).
+        double coupled_depth = 0.0, coupled_load = 0.0;
+        for (std::size_t j = 0; j < x.size(); ++j) {
+            const double weight = w[j] * kernel_sum(point, x[j]) / std::numbers::pi;
+            coupled_depth += weight * solution.unit_depth[j];
+            coupled_load += weight * (d * solution.unit_depth[j] - solution.profile[j]);
+        }
+        if (point <= a) {
+            const double gap = d - indenter_->equivalent(point);  // w1 = d - g inside (a flat punch's g = 0)
+            result.load[i] = gap + coupled_load;
+            result.unit_depth_load[i] = 1.0 + coupled_depth;
+            result.surface[i] = gap;
+        } else {
+            result.surface[i] = -coupled_load;  // q = 0 beyond a: E* w1 = -K q
+        }
+    }
+    return result;
 }
 
 double LayerContact::touch_stiffness() const {

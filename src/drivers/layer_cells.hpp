@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -57,6 +58,13 @@ public:
     /// for the step after one without contact). With a dashpot a step of no duration in contact (a jump) throws
     /// mdr::InvalidInput (key `material.eta`).
     LayerCellState step_loaded(double time_step, double right_side, double spring_constant, double base);
+
+    /// The cells' width dx [m]: cell i is centred at (i + 1/2) dx.
+    double spacing() const { return spacing_; }
+    /// The line load q_i [N/m] of the cells in contact after the last step (eq. L17; zero beyond them).
+    std::span<const double> line_load() const { return {trial_load_.data(), contact_}; }
+    /// The transformed surface displacement w1_i [m] of every cell after the last step (eq. L18).
+    std::span<const double> surface() const { return displacement_; }
 
 private:
     // One step: `depth_for(m)` gives the depth for the contact set [0, m); `needs_contact`: a force without contact.

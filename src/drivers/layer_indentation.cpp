@@ -17,6 +17,7 @@
 #include "layer_impact.hpp"
 #include "layer_regrowing.hpp"
 #include "layer_shore.hpp"
+#include "layer_snapshot.hpp"
 #include "layer_stepping.hpp"
 #include "paused_base.hpp"
 #include "recorders.hpp"
@@ -56,6 +57,11 @@ double largest_contact_radius(const ContactCase& contact_case) {
 // which runs the case again on LayerCells.
 struct ContactRegrows {};
 
+// A snapshot due while the contact recedes or after it was lost: the surface outside a receding contact creeps under
+// the nonlocal load K q of the contact (eq. L27; L18's free cells), which Ting's solution (eq. L12) does not carry.
+// Thrown by the run of Ting's class, caught by run_layer_indentation, which runs the case again on LayerCells.
+struct SnapshotOnCells {};
+
 }  // namespace
 
 double layer_poisson_ratio(const ContactCase& contact_case) {
@@ -92,7 +98,11 @@ void validate_layer(const ContactCase& contact_case) {
     }
     if (contact_case.oblique()) refuse("load.tangential_velocity", "[...]", "an oblique impact");
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
-    if (!contact_case.snapshots.empty()) refuse("output.snapshots", "[...]", "a pressure snapshot");
+    if (!contact_case.snapshots.empty() && contact_case.impact()) {
+        refuse("output.snapshots", "[...]",
+               "a snapshot in an impact (its contact recedes after the turn, where only the cells carry the surface "
+               "outside the contact, and they do not run an impact)");
+    }
     layer_poisson_ratio(contact_case);
     const auto& elements = contact_case.numerics.elements;
     if (elements && (*elements < 2 || *elements > max_layer_nodes)) {  // LayerContact and LayerCells need 2
@@ -131,9 +141,9 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
                                 progress);
     }
     const auto& history = *contact_case.load.history;
-    // The half-space's grid (no cut of its own: snapshots and a tangential load are refused on a layer, a harmonic
-    // runs on cells): under force or spring control graded after the same fast changes, a spring's base from where it
-    // is, each force pause's ends on nodes of their own.
+    // The half-space's grid, cut at the snapshots (a tangential load is refused on a layer, a harmonic runs on
+    // cells): under force or spring control graded after the same fast changes, a spring's base from where it is,
+    // each force pause's ends on nodes of their own.
     const auto grid = indentation_grid(contact_case, result.numerics);
 
     const auto& material = contact_case.material;
@@ -169,6 +179,13 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     std::size_t reported = 0;
     double previous_centre = 0.0;
+    // Snapshots of the growing contact (eq. L26); one due while it recedes runs the case on cells (eq. L27).
+    std::optional<SnapshotSchedule> snapshots;
+    std::optional<GrowingSnapshots> growing;
+    if (!contact_case.snapshots.empty()) {
+        snapshots.emplace(contact_case.snapshots);
+        growing.emplace(material, layer, unit_plane_modulus);
+    }
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const GridNode& node = grid[i];
         const LayerStep& now = stepper.current();
@@ -244,6 +261,7 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
         if (next.grows_again) throw ContactRegrows{};
         previous_centre = now.centre;
         stepper.commit(next);
+        if (growing) growing->commit(next);
         if (i > 0) ++result.steps;
         const bool row = i % every == 0 || i + 1 == grid.size();
         if (row) {
@@ -258,9 +276,12 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
             const bool settled = i + 1 == grid.size() || grid[i + 1].time != node.time;
             shore_recorder->observe({.time = node.time, .depth = depth, .settled = settled, .row = row});
         }
+        const bool settled = i + 1 == grid.size() || grid[i + 1].time != node.time;
         // At a pause's start the force to hold; at its end the base's shift (the node settled: no jump follows).
-        if (paused && (i + 1 == grid.size() || grid[i + 1].time != node.time)) {
-            paused->passed(node.time, next.force, depth, node.value);
+        if (paused && settled) paused->passed(node.time, next.force, depth, node.value);
+        for (std::size_t due = snapshots && settled ? snapshots->due(node.time) : 0; due > 0; --due) {
+            if (next.phase == LayerPhase::receding || next.phase == LayerPhase::lifted_off) throw SnapshotOnCells{};
+            result.snapshots.push_back(growing->take(next));
         }
         const auto percent = static_cast<std::size_t>(100.0 * static_cast<double>(i + 1) /
                                                       static_cast<double>(grid.size()));
@@ -300,6 +321,10 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     }
     try {
         return run_one_maximum(contact_case, monotone);
+    } catch (const SnapshotOnCells&) {
+        // A durometer's contact only grows; the cells have no stop.
+        if (contact_case.shore()) refuse("output.snapshots", "[...]", "a snapshot of a durometer's receding contact");
+        return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), monotone);
     } catch (const ContactRegrows&) {
         // A durometer's spring pushes a creeping body: its contact only grows (the stop holds the depth), so a
         // regrowth is not expected there; the cells have no stop, so refuse it rather than run another test.

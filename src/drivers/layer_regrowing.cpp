@@ -7,6 +7,7 @@
 
 #include "cycle_measure.hpp"
 #include "layer_cells.hpp"
+#include "layer_snapshot.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/error.hpp"
 #include "paused_base.hpp"
@@ -36,6 +37,7 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
     const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
     const bool sine_rate = displacement && contact_case.load.harmonic && material.viscosity() > 0.0;
     std::size_t reported = 0;
+    SnapshotSchedule snapshots(contact_case.snapshots);
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const double time_step = i == 0 ? 0.0 : grid[i].time - grid[i - 1].time;
         const bool holding = paused && i > 0 && paused->holding(grid[i - 1].time, grid[i].time);
@@ -61,8 +63,10 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
             result.radius.push_back(state.contact_radius);
             if (spring) result.base.push_back(holding ? paused->base_in_pause(state.depth) : value);
         }
-        if (paused && (i + 1 == grid.size() || grid[i + 1].time != grid[i].time)) {
-            paused->passed(grid[i].time, state.force, state.depth, grid[i].value);
+        const bool settled = i + 1 == grid.size() || grid[i + 1].time != grid[i].time;
+        if (paused && settled) paused->passed(grid[i].time, state.force, state.depth, grid[i].value);
+        for (std::size_t due = settled ? snapshots.due(grid[i].time) : 0; due > 0; --due) {
+            result.snapshots.push_back(cells_snapshot(layer, state.contact_radius, grid[i].time));
         }
         if (cycle) cycle->record(grid[i].time, state.depth, state.force, state.touching, state.touching_part);
         const auto percent = static_cast<std::size_t>(100.0 * static_cast<double>(i + 1) /

@@ -1,6 +1,7 @@
 #include "recorders.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "mdr/foundation/foundation.hpp"
 #include "stepping.hpp"
@@ -17,15 +18,23 @@ void RowRecorder::observe(const StepState& state) {
     if (columns_.base) result_.base.push_back(state.load);
 }
 
-SnapshotRecorder::SnapshotRecorder(std::vector<double> times, const profile::Profile& indenter,
-                                   IndentationResult& result, ShearStress shear_stress)
-    : times_(std::move(times)), indenter_(indenter), result_(result), shear_stress_(std::move(shear_stress)) {
+SnapshotSchedule::SnapshotSchedule(std::vector<double> times) : times_(std::move(times)) {
     std::sort(times_.begin(), times_.end());
 }
 
+std::size_t SnapshotSchedule::due(double time) {
+    const std::size_t first = next_;
+    while (next_ < times_.size() && times_[next_] <= time) ++next_;
+    return next_ - first;
+}
+
+SnapshotRecorder::SnapshotRecorder(std::vector<double> times, const profile::Profile& indenter,
+                                   IndentationResult& result, ShearStress shear_stress)
+    : schedule_(std::move(times)), indenter_(indenter), result_(result), shear_stress_(std::move(shear_stress)) {}
+
 void SnapshotRecorder::observe(const StepState& state) {
     if (!state.settled) return;
-    for (; next_ < times_.size() && times_[next_] <= state.time; ++next_) {
+    for (std::size_t due = schedule_.due(state.time); due > 0; --due) {
         result_.snapshots.push_back(take_snapshot(*state.foundation, indenter_, state.time));
         if (shear_stress_) shear_stress_(result_.snapshots.back());
     }

@@ -29,6 +29,19 @@ private:
     Columns columns_;
 };
 
+/// The case's snapshot times, each due at the first settled state at or after it (SnapshotRecorder; the layer
+/// drivers, layer_snapshot.hpp).
+class SnapshotSchedule {
+public:
+    explicit SnapshotSchedule(std::vector<double> times);
+    /// The number of snapshots due at a settled state at `time` [s], each counted once.
+    std::size_t due(double time);
+
+private:
+    std::vector<double> times_;  // ascending
+    std::size_t next_ = 0;
+};
+
 /// Snapshots (pressure, surface displacement, and shear stress when `shear_stress` is given) at the case's times,
 /// each taken at the first settled state at or after it; the drivers put a state on each of these times.
 class SnapshotRecorder final : public StepObserver {
@@ -40,8 +53,7 @@ public:
     void observe(const StepState& state) override;
 
 private:
-    std::vector<double> times_;  // ascending
-    std::size_t next_ = 0;
+    SnapshotSchedule schedule_;
     const profile::Profile& indenter_;
     IndentationResult& result_;
     ShearStress shear_stress_;

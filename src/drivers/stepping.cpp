@@ -27,18 +27,24 @@ double solve_depth(const foundation::Foundation& foundation, double depth_start,
                                foundation.force_slope(), guess, scale, target, spring, anchor);
 }
 
-Snapshot take_snapshot(const foundation::Foundation& foundation, const profile::Profile& indenter, double time) {
+Snapshot snapshot_radii(double time, double contact_radius, double range) {
     Snapshot snapshot;
     snapshot.time = time;
-    snapshot.contact_radius = foundation.contact_radius();
-    const double a = snapshot.contact_radius;
-    const double outer = a > 0.0 ? std::min(2.0 * a, foundation.half_width()) : foundation.half_width();
+    snapshot.contact_radius = contact_radius;
+    const double a = contact_radius;
+    const double outer = a > 0.0 ? std::min(2.0 * a, range) : range;
     for (std::size_t j = 0; j < snapshot_points && a > 0.0; ++j) {
         snapshot.radius.push_back(a * static_cast<double>(j) / static_cast<double>(snapshot_points));
     }
     for (std::size_t j = 0; j <= snapshot_points; ++j) {
         snapshot.radius.push_back(a + (outer - a) * static_cast<double>(j) / static_cast<double>(snapshot_points));
     }
+    return snapshot;
+}
+
+Snapshot take_snapshot(const foundation::Foundation& foundation, const profile::Profile& indenter, double time) {
+    Snapshot snapshot = snapshot_radii(time, foundation.contact_radius(), foundation.half_width());
+    const double a = snapshot.contact_radius;
     const auto q = foundation.line_loads();
     std::size_t inside = 0;
     while (inside < q.size() && foundation.position(inside) < a) ++inside;

@@ -28,6 +28,10 @@ private:
 double solve_depth(const foundation::Foundation& foundation, double depth_start, double guess, double scale,
                    double target, double spring, double anchor);
 
+/// A snapshot at `time` [s] with its contact radius a [m] and radii (no profiles yet): 100 from 0 across the contact
+/// and 101 from a to min(2a, `range`) [m] (the range itself without contact).
+Snapshot snapshot_radii(double time, double contact_radius, double range);
+
 /// Pressure (eq. 23) and surface displacement at `time` from the foundation's current state.
 Snapshot take_snapshot(const foundation::Foundation& foundation, const profile::Profile& indenter, double time);
 

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "mdr/contact/layer.hpp"
@@ -40,6 +41,17 @@ struct LayerContactState {
                                   ///< the force-free edge's move changes F only at second order, eq. L6)
 };
 
+/// One elastic equilibrium's line loads and surface (E* = 1) at chosen points x >= 0 (LayerContact::profile).
+struct LayerContactProfile {
+    std::vector<double> load;        ///< q(x) / E* [m] (eq. L3): d q_d - q_g on [0, a], 0 beyond
+    /// q_d(x) / E*, the unit depth's line load on the fixed contact [0, a] (0 beyond): dq/dd at a fixed radius (the
+    /// edge's move adds nothing where q(a) = 0, eq. L6), the shape of a parallel dashpot's part (eq. L11)
+    std::vector<double> unit_depth_load;
+    /// w1(x) [m], the transformed surface displacement: d - g(x) on [0, a], and beyond, where q = 0, eq. L3 at any x
+    /// (E* w1 = q - K q): -(1/pi) int_0^a [K(x - s) + K(x + s)] q(s) ds / E*
+    std::vector<double> surface;
+};
+
 /// The elastic layer problem for one indenter: q(x) - (1/pi) int_0^a [K(x - s) + K(x + s)] q(s) ds = E* (d - g(x))
 /// (eq. L3) by the Nystroem method on Gauss-Legendre nodes; F = 2 int_0^a q (eq. L5); a smooth indenter's contact
 /// edge is force-free, q(a) = 0 (eq. L6), a flat punch's is its radius. Valid for contact radii up to
@@ -61,6 +73,11 @@ public:
     LayerContactState at_depth(double depth, const LayerContactState& near) const;
     /// As above, near the solution whose contact radius is `radius_hint` (> 0; else from max_contact_radius / 2).
     LayerContactState at_depth(double depth, double radius_hint = 0.0) const;
+    /// The line loads and the transformed surface of `state` (an equilibrium of at_radius or at_depth: its contact
+    /// radius and depth) at each of `points` (0 <= x <= 2 max_contact_radius - a [m], the kernel's range), by the
+    /// Nystroem interpolation of eq. L3 from the Gauss nodes of at_radius (the solve repeated: O(n^3), then O(n) a
+    /// point).
+    LayerContactProfile profile(const LayerContactState& state, std::span<const double> points) const;
     /// The largest contact radius the kernel was tabulated for [m].
     double max_contact_radius() const { return max_contact_radius_; }
     /// dF/dd / E* [m] as the indenter touches: the unit-depth force (eq. L5) of its flat end's contact (a flat punch,
@@ -68,6 +85,11 @@ public:
     double touch_stiffness() const;
 
 private:
+    struct Solution;  // the Nystroem solution on [0, a] (layer_contact.cpp)
+    Solution solve(double contact_radius) const;
+    // K(x - s) + K(x + s) (eq. L4: K(y) = k(y/h)/h).
+    double kernel_sum(double x, double s) const;
+
     Layer layer_;
     std::shared_ptr<const profile::Profile> indenter_;
     double max_contact_radius_;

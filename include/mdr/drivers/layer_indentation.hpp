@@ -18,9 +18,9 @@ namespace mdr::drivers {
 double layer_poisson_ratio(const ContactCase& contact_case);
 
 /// Throws mdr::InvalidInput (key `layer` or the offending key, its value and the rule) for a case with a `[layer]`
-/// that needs what is not built on a layer yet: an oblique impact, tangential loading, snapshots, a compressible body
-/// whose Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio). Does nothing for a case without
-/// a layer.
+/// that needs what is not built on a layer yet: an oblique impact, tangential loading, snapshots in an impact, a
+/// compressible body whose Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio). Does nothing
+/// for a case without a layer.
 void validate_layer(const ContactCase& contact_case);
 
 /// Runs a displacement-, force- or spring-controlled case on its layer: the elastic layer's force F_el(d) at unit
@@ -47,7 +47,10 @@ void validate_layer(const ContactCase& contact_case);
 /// (Ting 1968's general case; eq. L16 to L19, src/drivers/layer_cells.hpp): a history once the run of Ting's class
 /// finds the regrowth (the progress then held at the fraction reached), a harmonic (or any history with
 /// NumericsOptions::layer_cells) at once; `numerics.elements` is then its number of cells (default
-/// default_layer_cells). Throws as validate_layer; for step observers (not built on a layer yet); and naming
+/// default_layer_cells). Snapshots (`output.snapshots`, eq. L25 to L27): of a growing contact in the run of Ting's
+/// class (GrowingSnapshots, src/drivers/layer_snapshot.hpp), and on the cells; one due while the contact recedes or
+/// after it was lost runs the case on the cells from the start (the surface outside a receding contact is theirs
+/// alone). Throws as validate_layer; for step observers (not built on a layer yet); and naming
 /// `material.eta` for a force jump in contact against a parallel dashpot on the cells or in a Shore test.
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {},
                                         const StepObservers& observers = {});
