@@ -55,6 +55,11 @@ rheology::TimeWindow material_window(const Load& load, double end_time, const Nu
     return {shortest, duration, std::move(frequencies)};
 }
 
+rheology::TimeWindow material_window(const ContactCase& contact_case) {
+    return material_window(contact_case.load, contact_case.end_time, contact_case.numerics, contact_case.tangential,
+                           contact_case.impact() != nullptr);
+}
+
 void require_certified_over(const rheology::MaterialOrigin& origin, const rheology::TimeWindow& needed) {
     if (!origin.certificate || origin.certificate->kind != "model") return;
     const rheology::TimeWindow& certified = origin.certificate->window;
