@@ -98,8 +98,7 @@ void validate(const ContactCase& contact_case) {
     validate_numerics(contact_case.numerics);
     // A model converted to a series (a power law, a springpot) is the case's material only over the lags its
     // certificate covers; the window is computed only for such a material (an impact's needs load.end then).
-    const auto& certificate = contact_case.material_origin.certificate;
-    if (certificate && certificate->kind == "model") {
+    if (converted_model(contact_case.material_origin)) {
         require_certified_over(contact_case.material_origin, material_window(contact_case));
     }
 }

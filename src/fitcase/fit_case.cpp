@@ -7,8 +7,8 @@
 #include <cmath>
 #include <optional>
 #include <string>
-#include <utility>
 #include <string_view>
+#include <utility>
 
 #include "fitcase/fit_candidates_reader.hpp"
 #include "fitcase/fit_data_reader.hpp"
@@ -214,8 +214,7 @@ FitCase load_fit_case(const std::filesystem::path& path) {
 io::CaseTemplate converting_model(const FitCase& fit_case, const std::vector<fit::Curve>& curves) {
     io::CaseTemplate model = fit_case.model;
     const drivers::ContactCase built = model.build();
-    const auto& certificate = built.material_origin.certificate;
-    if (!certificate || certificate->kind != "model" || curves.empty()) return model;
+    if (!drivers::converted_model(built.material_origin) || curves.empty()) return model;
     rheology::TimeWindow window = fit::curves_window(curves, fit_case.settings.fitted, built);
     // The model's own load, which the case's rules check too: the case's [load], or a placeholder as long as the
     // longest run.

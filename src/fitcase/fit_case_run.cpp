@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "mdr/drivers/material_window.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/units.hpp"
 
@@ -51,8 +52,7 @@ namespace {
 void require_no_rebounds_with_a_converted_model(const FitCase& fit_case, std::size_t rebound_sets) {
     if (rebound_sets == 0) return;
     const drivers::ContactCase built = fit_case.model.build();
-    const auto& certificate = built.material_origin.certificate;
-    if (certificate && certificate->kind == "model") {
+    if (drivers::converted_model(built.material_origin)) {
         throw InvalidInput("material", built.material_origin.description,
                            "is converted to a Prony series over the lags of the runs, and an impact's are known only "
                            "once it has run: rebound data need a finite Prony series (e.g. model = \"prony\")");

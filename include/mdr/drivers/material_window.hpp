@@ -27,6 +27,10 @@ rheology::TimeWindow material_window(const Load& load, double end_time, const Nu
 /// material_window of a case: its load, end time, numerics, tangential load and control (an impact or not).
 rheology::TimeWindow material_window(const ContactCase& contact_case);
 
+/// True when `origin` is a model converted to a series (its certificate's kind "model": a power law, a springpot),
+/// which stands for the model only over its certificate's window.
+bool converted_model(const rheology::MaterialOrigin& origin);
+
 /// Throws mdr::InvalidInput (key `material`) when `origin` is a model converted to a series (its certificate's kind
 /// "model": a power law, a springpot) whose certificate does not cover `needed` (material_window of the case): lags
 /// before its window's start or past its end, or a harmonic frequency outside [1 / longest, 1 / shortest] that it
