@@ -37,6 +37,9 @@ struct Document::Entry {
 /// `value` as a document: a finite number, else null (an undetermined error, a ratio to a zero noise).
 Document number_or_null(double value);
 
+/// `numbers` as a document's list (a number that is not finite written as null, as to_json writes every number).
+Document number_list(const std::vector<double>& numbers);
+
 /// The keys of the tables `rows` whose values `counted` accepts (every key when it is empty), each once: a key is put
 /// after the key before it in the first row that has it, so rows whose keys follow one order give that order whatever
 /// the order of the rows and whichever keys each lacks. The one rule of the columns of a table of documents

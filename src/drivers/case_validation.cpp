@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "mdr/drivers/controls.hpp"
+#include "mdr/drivers/material_window.hpp"
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "every_control.hpp"
@@ -95,6 +96,11 @@ void validate(const ContactCase& contact_case) {
                   [&](auto traits, const auto& control) { traits.validate_within_run(contact_case, control); });
     if (contact_case.tangential) validate(*contact_case.tangential);
     validate_numerics(contact_case.numerics);
+    // A model converted to a series (a power law, a springpot) is the case's material only over the lags its
+    // certificate covers; the window is computed only for such a material (an impact's needs load.end then).
+    if (converted_model(contact_case.material_origin)) {
+        require_certified_over(contact_case.material_origin, material_window(contact_case));
+    }
 }
 
 }  // namespace mdr::drivers

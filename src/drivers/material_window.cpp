@@ -55,8 +55,17 @@ rheology::TimeWindow material_window(const Load& load, double end_time, const Nu
     return {shortest, duration, std::move(frequencies)};
 }
 
+rheology::TimeWindow material_window(const ContactCase& contact_case) {
+    return material_window(contact_case.load, contact_case.end_time, contact_case.numerics, contact_case.tangential,
+                           contact_case.impact() != nullptr);
+}
+
+bool converted_model(const rheology::MaterialOrigin& origin) {
+    return origin.certificate && origin.certificate->kind == "model";
+}
+
 void require_certified_over(const rheology::MaterialOrigin& origin, const rheology::TimeWindow& needed) {
-    if (!origin.certificate || origin.certificate->kind != "model") return;
+    if (!converted_model(origin)) return;
     const rheology::TimeWindow& certified = origin.certificate->window;
     constexpr double slack = 1e-9;  // the same window computed twice agrees to rounding
     const auto frequency_covered = [&](double omega) {

@@ -9,6 +9,7 @@
 
 #include "curve_model.hpp"
 #include "mdr/error.hpp"
+#include "mdr/fit/curve_window.hpp"
 #include "pre_contact_baseline.hpp"
 #include "mdr/fit/plausibility.hpp"
 #include <Eigen/Dense>
@@ -51,7 +52,7 @@ struct Material {
     std::size_t terms = 0;                  // Prony terms with free times (elastic: 0)
     std::vector<double> grid;               // spectrum: the fixed times, one free modulus each
     const rheology::MaterialModel* model = nullptr;  // a registry model: its required keys, in its order
-    rheology::TimeWindow window{};          // a registry model's conversion window: the data's
+    rheology::TimeWindow window{};          // a registry model's conversion window: the runs' (curves_window)
     bool spectrum() const { return !grid.empty(); }
 };
 
@@ -64,13 +65,14 @@ rheology::ModelParameters registry_parameters(const Material& material, const do
     return parameters;
 }
 
-// G(t) = G_inf + sum G_k exp(-t / tau_k) (Table 1) of the values; a spectrum drops its zero moduli.
-rheology::Rheology make_material(const Material& material, const double* values) {
+// G(t) = G_inf + sum G_k exp(-t / tau_k) (Table 1) of the values; a spectrum drops its zero moduli. A registry
+// model with what it stands for (a converted one with its certificate).
+rheology::ModelMaterial make_material(const Material& material, const double* values) {
     if (material.model) {
         const rheology::ConversionOptions options{.window = material.window};
-        return rheology::build_material(*material.model, registry_parameters(material, values), options).series;
+        return rheology::build_material(*material.model, registry_parameters(material, values), options);
     }
-    if (material.parameters.size() == 1) return rheology::Rheology::elastic(values[0]);
+    if (material.parameters.size() == 1) return {rheology::Rheology::elastic(values[0]), {}};
     std::vector<rheology::RelaxationTerm> terms;
     if (material.spectrum()) {
         for (std::size_t j = 0; j < material.grid.size(); ++j) {
@@ -79,7 +81,7 @@ rheology::Rheology make_material(const Material& material, const double* values)
     } else {
         for (std::size_t k = 0; k < material.terms; ++k) terms.push_back({values[1 + 2 * k], values[2 + 2 * k]});
     }
-    return rheology::Rheology::prony(values[0], std::move(terms));
+    return {rheology::Rheology::prony(values[0], std::move(terms)), {}};
 }
 
 // The `[material]` body of the values, as make_material builds it.
@@ -91,7 +93,7 @@ std::string material_text(const Material& material, const double* values) {
         }
         return text;
     }
-    const rheology::Rheology rheology = make_material(material, values);
+    const rheology::Rheology rheology = make_material(material, values).series;
     if (rheology.terms().empty()) return fmt::format("model = \"elastic\"\nG = {}\n", rheology.equilibrium_modulus());
     std::string terms;
     for (const auto& term : rheology.terms()) {
@@ -146,10 +148,11 @@ Material spectrum(const SpectrumSettings& settings, double modulus, const Window
 // modulus G_e and the window's middle time T = sqrt(shortest longest): a modulus G_e / 2 in [1e-6, 1e4] G_e; a time
 // T in [1e-2 shortest, 1e2 longest]; a viscosity G_e T and a quasi-property G_e T^(1/2), each in [1e-8, 1e8] times
 // it; a key of a bounded domain (0, L) (ModelParameter::upper_limit: an exponent alpha, beta < 1) L/2 in
-// [0.01, 0.99] L. Optional keys keep their defaults.
-Material registry_material(const rheology::MaterialModel& model, double modulus, const Window& window) {
+// [0.01, 0.99] L. Optional keys keep their defaults. A model that stands as a series is converted over `lags`.
+Material registry_material(const rheology::MaterialModel& model, double modulus, const Window& window,
+                           const rheology::TimeWindow& lags) {
     const double middle = std::sqrt(window.shortest * window.longest);
-    Material material{model.name, {}, 0, {}, &model, {window.shortest, window.longest, {}}};
+    Material material{model.name, {}, 0, {}, &model, lags};
     for (const auto& parameter : model.parameters) {
         if (!parameter.required) continue;
         const std::string key = "material." + parameter.key;
@@ -168,13 +171,13 @@ Material registry_material(const rheology::MaterialModel& model, double modulus,
     return material;
 }
 
-Material candidate(const std::string& name, double modulus, const Window& window) {
+Material candidate(const std::string& name, double modulus, const Window& window, const rheology::TimeWindow& lags) {
     if (name == "elastic") return elastic(modulus);
     if (name == "standard") return prony(name, 1, modulus, window);
     if (name.rfind("prony", 0) == 0) {
         return prony(name, static_cast<std::size_t>(std::stoul(name.substr(5))), modulus, window);  // "pronyN", read
     }
-    return registry_material(rheology::material_model(name), modulus, window);  // registry_candidate, read
+    return registry_material(rheology::material_model(name), modulus, window, lags);  // registry_candidate, read
 }
 
 CandidateFit fit_material(const CandidateProblem& base, const Material& material, const std::vector<double>& indenter,
@@ -190,7 +193,9 @@ CandidateFit fit_material(const CandidateProblem& base, const Material& material
     problem.model = [model = base.model, offset, material](const std::vector<double>& values) {
         const auto indenter_end = values.begin() + static_cast<std::ptrdiff_t>(offset);
         auto built = model(std::vector<double>(values.begin(), indenter_end));
-        built.material = make_material(material, values.data() + offset);
+        rheology::ModelMaterial candidate = make_material(material, values.data() + offset);
+        built.material = std::move(candidate.series);
+        if (material.model) built.material_origin = std::move(candidate.origin);  // a converted one's certificate
         return built;
     };
     CandidateFit fitted{material.name, fit(problem), "", material.grid, 0.0, 0.0};
@@ -338,6 +343,8 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
     const double start = base.start_modulus;
     std::vector<double> indenter;
     for (const auto& parameter : base.parameters) indenter.push_back(parameter.start);
+    // A registry model that stands as a series is converted over the lags of the runs, as in a fit case.
+    const rheology::TimeWindow lags = curves_window(curves, base.settings.fitted, base.model(indenter));
 
     // The elastic fit first: its modulus is the scale of every other start value.
     CandidateFit reference = fit_material(base, elastic(start), indenter, curves, {});
@@ -371,7 +378,7 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
         const Material material =
             one_term ? spectrum(settings.spectrum.value_or(SpectrumSettings{}), choice.modulus_scale, window,
                                 one_term->result.values[offset + 2])
-                     : candidate(name, choice.modulus_scale, window);
+                     : candidate(name, choice.modulus_scale, window, lags);
         Material started = material;
         const double smoothing = material.spectrum() ? settings.spectrum.value_or(SpectrumSettings{}).smoothing : 0.0;
         const auto penalty = smoothing_penalty(material, offset, smoothing, choice.modulus_scale, curves);

@@ -82,6 +82,34 @@ std::optional<ModelValues> layer_curve(const drivers::ContactCase& model_case, c
 
 }  // namespace
 
+std::vector<drivers::LoadPoint> driving_points(const std::vector<double>& time, const std::vector<double>& values) {
+    std::vector<drivers::LoadPoint> points;
+    points.reserve(time.size() + 1);
+    // Start one interval early from the undeformed state, so that a first point out of contact is no jump.
+    if (values.front() <= 0.0) points.push_back({time[0] - (time[1] - time[0]), 0.0});
+    for (std::size_t i = 0; i < time.size(); ++i) points.push_back({time[i], values[i]});
+    return points;
+}
+
+void drive(drivers::ContactCase& model_case, std::vector<drivers::LoadPoint> points, const std::vector<double>& time,
+           bool depth_driven) {
+    model_case.control = depth_driven ? drivers::LoadControl(drivers::DisplacementControl{})
+                                      : drivers::LoadControl(drivers::ForceControl{});
+    model_case.load.history = drivers::LoadHistory(std::move(points), "load.history");
+    model_case.end_time = time.back();
+    model_case.snapshots.clear();
+    model_case.tangential.reset();
+    model_case.load.harmonic.reset();
+    // Under displacement control each element's update is exact for a depth linear in time (eq. 16, 18): the
+    // measured points are the steps. Force control keeps its own step rule (second order).
+    if (depth_driven) {
+        double widest = 0.0;
+        for (std::size_t i = 1; i < time.size(); ++i) widest = std::max(widest, time[i] - time[i - 1]);
+        model_case.numerics.time_step = widest;
+        model_case.numerics.min_segment_steps = 1;
+    }
+}
+
 std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const CurveModel& prepared,
                                      double contact_depth, double baseline, std::size_t elements,
                                      ForwardModel forward_model, const std::function<void()>& check_interrupt,
@@ -93,18 +121,13 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
         if (model_case.layer) return layer_curve(model_case, prepared, contact_depth, baseline, modulus_derivatives);
         return continuum_forces(model_case, prepared, contact_depth, baseline, modulus_derivatives);
     }
-    std::vector<drivers::LoadPoint> points;
-    points.reserve(curve.time.size() + 1);
-    double widest = 0.0;
+    std::vector<double> drive_values(curve.time.size());
     for (std::size_t i = 0; i < curve.time.size(); ++i) {
         // The driving quantity: depth below the contact point, or force above the baseline (the indenter cannot
         // pull, so a force reading below the baseline is no contact: 0).
-        const double value = depth_driven ? curve.depth[i] - contact_depth : std::max(curve.force[i] - baseline, 0.0);
-        if (i > 0) widest = std::max(widest, curve.time[i] - curve.time[i - 1]);
-        points.push_back({curve.time[i], value});
+        drive_values[i] = depth_driven ? curve.depth[i] - contact_depth : std::max(curve.force[i] - baseline, 0.0);
     }
-    // Start one interval early from the undeformed state, so that a first point out of contact is no jump.
-    if (points.front().value <= 0.0) points.insert(points.begin(), {curve.time[0] - (curve.time[1] - curve.time[0]), 0.0});
+    std::vector<drivers::LoadPoint> points = driving_points(curve.time, drive_values);
     std::vector<double> times, depths;  // the driving points, for the band model
     if (depth_driven) {
         times.reserve(points.size());
@@ -114,13 +137,7 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
             depths.push_back(point.value);
         }
     }
-    model_case.control = depth_driven ? drivers::LoadControl(drivers::DisplacementControl{})
-                                      : drivers::LoadControl(drivers::ForceControl{});
-    model_case.load.history = drivers::LoadHistory(std::move(points), "load.history");
-    model_case.end_time = curve.time.back();
-    model_case.snapshots.clear();
-    model_case.tangential.reset();
-    model_case.load.harmonic.reset();
+    drive(model_case, std::move(points), curve.time, depth_driven);
     if (model_case.layer) {
         // On cells from the start (eq. L16 to L19), whatever the history, so that the model does not switch between
         // Ting's exact solution and the cells (second order in the cell) as the parameters move; `numerics.elements`
@@ -131,12 +148,6 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
         model_case.numerics.elements = elements;
     }
     model_case.numerics.output_every = 1;
-    // Under displacement control each element's update is exact for a depth linear in time (eq. 16, 18): the
-    // measured points are the steps. Force control keeps its own step rule (second order).
-    if (depth_driven) {
-        model_case.numerics.time_step = widest;
-        model_case.numerics.min_segment_steps = 1;
-    }
     // A depth-driven run with a Prony material: the same elements with those that provably stay in contact summed
     // (band_model.hpp), the same forces; the drivers where it does not apply (or the contact outgrows the elements,
     // which the drivers then report).

@@ -33,6 +33,18 @@ enum class ForwardModel {
     elements,  ///< the drivers' element foundation, on a `[layer]` the layer's cells (any case)
 };
 
+/// The points that drive a run of a curve: (time[i], values[i]), started one interval early from the undeformed
+/// state (value 0) when the first value is <= 0 (out of contact), so that a first point out of contact is no jump.
+/// `time` has at least two rows.
+std::vector<drivers::LoadPoint> driving_points(const std::vector<double>& time, const std::vector<double>& values);
+
+/// `model_case` driven by `points` (driving_points of a curve with rows at `time`) as run_curve runs it: under
+/// displacement control (`depth_driven`) with the largest row spacing as its time step and one step per segment,
+/// else under force control on the case's own steps; the end at the last row; no snapshots, tangential load or
+/// harmonic.
+void drive(drivers::ContactCase& model_case, std::vector<drivers::LoadPoint> points, const std::vector<double>& time,
+           bool depth_driven);
+
 /// One run of the model of a curve.
 struct ModelValues {
     std::vector<double> values;  ///< the fitted quantity at the used points

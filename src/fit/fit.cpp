@@ -425,6 +425,7 @@ FitResult solve(const FitProblem& problem) {
     describe_uncertainty(problem, scales, costs, rebounds, shared, nuisance, result);
     if (result.converged && result.misfit) result.status = "converged, misfit";
     describe_young_moduli(problem, result);
+    result.material_certificate = problem.model(result.values).material_origin.certificate;
     result.evaluations = evaluations;
     result.element_evaluations = element_evaluations;
     result.band_evaluations = band_evaluations;

@@ -6,13 +6,17 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <utility>
 
 #include "fitcase/fit_candidates_reader.hpp"
 #include "fitcase/fit_data_reader.hpp"
 #include "io/case_reader.hpp"
 #include "io/toml_reader.hpp"
+#include "mdr/drivers/material_window.hpp"
 #include "mdr/error.hpp"
+#include "mdr/fit/curve_window.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/free_key_units.hpp"
 #include "mdr/io/free_number_case.hpp"
@@ -24,8 +28,10 @@ using io::TableReader;
 
 namespace {
 
-// A placeholder history: each curve replaces the load (fit::run_curve).
-constexpr const char* placeholder_load = "control = \"displacement\"\nhistory = [[0.0, 0.0], [1.0, 0.0]]\n";
+// A placeholder history `duration` [s] long: each curve replaces the load (fit::run_curve).
+std::string placeholder_load(double duration) {
+    return fmt::format("control = \"displacement\"\nhistory = [[0.0, 0.0], [{}, 0.0]]\n", duration);
+}
 
 std::vector<std::string> free_keys(const toml::table& fit, bool optional) {
     const auto* array = fit["free"].as_array();
@@ -168,7 +174,7 @@ FitCase parse_fit_case(io::CaseTemplate model, const std::filesystem::path& case
         }
         fit_case.model.set_table("load", load);
     } else {
-        fit_case.model.set_table("load", placeholder_load);
+        fit_case.model.set_table("load", placeholder_load(1.0));
     }
     const drivers::ContactCase built = fit_case.model.build();  // the model's own rules
     fit_case.units = built.units;                                 // its unit system
@@ -205,15 +211,32 @@ FitCase load_fit_case(const std::filesystem::path& path) {
     return parse_fit_case(io::read_case_text(path), path.string(), path.parent_path());
 }
 
-fit::ModelBuilder model_builder(const FitCase& fit_case) {
+io::CaseTemplate converting_model(const FitCase& fit_case, const std::vector<fit::Curve>& curves) {
+    io::CaseTemplate model = fit_case.model;
+    const drivers::ContactCase built = model.build();
+    if (!drivers::converted_model(built.material_origin) || curves.empty()) return model;
+    rheology::TimeWindow window = fit::curves_window(curves, fit_case.settings.fitted, built);
+    // The model's own load, which the case's rules check too: the case's [load], or a placeholder as long as the
+    // longest run.
+    if (!fit_case.had_load) model.set_table("load", placeholder_load(window.longest));
+    const rheology::TimeWindow own = drivers::material_window(model.build());
+    window.shortest = std::min(window.shortest, own.shortest);
+    window.longest = std::max(window.longest, own.longest);
+    window.frequencies = own.frequencies;
+    model.set_conversion_window(std::move(window));
+    return model;
+}
+
+fit::ModelBuilder model_builder(const FitCase& fit_case, const std::vector<fit::Curve>& curves) {
+    io::CaseTemplate model = converting_model(fit_case, curves);
     if (fit_case.parameters.empty()) {  // nothing varies (a model choice with no indenter key free): built once
-        return [built = fit_case.model.build()](const std::vector<double>&) { return built; };
+        return [built = model.build()](const std::vector<double>&) { return built; };
     }
     std::vector<std::string> keys;
     for (const auto& parameter : fit_case.parameters) keys.push_back(parameter.name);
     // Built once; each evaluation rebuilds only the material, indenter or layer the free keys touch.
-    return [model = io::FreeNumberCase(fit_case.model, std::move(keys))](const std::vector<double>& values) {
-        return model.build(values);
+    return [free = io::FreeNumberCase(model, std::move(keys))](const std::vector<double>& values) {
+        return free.build(values);
     };
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "mdr/drivers/material_window.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/units.hpp"
 
@@ -45,9 +46,26 @@ void require_curves_only_for_model_choice(const FitCase& fit_case, std::size_t r
     }
 }
 
+namespace {
+
+// A model converted to a series over the lags of the runs: an impact's lags are known only after it has run.
+void require_no_rebounds_with_a_converted_model(const FitCase& fit_case, std::size_t rebound_sets) {
+    if (rebound_sets == 0) return;
+    const drivers::ContactCase built = fit_case.model.build();
+    if (drivers::converted_model(built.material_origin)) {
+        throw InvalidInput("material", built.material_origin.description,
+                           "is converted to a Prony series over the lags of the runs, and an impact's are known only "
+                           "once it has run: rebound data need a finite Prony series (e.g. model = \"prony\")");
+    }
+}
+
+}  // namespace
+
 fit::FitProblem make_problem(const FitCase& fit_case, std::vector<fit::Curve> curves,
                              std::vector<fit::ReboundData> rebounds) {
-    fit::FitProblem problem{model_builder(fit_case), fit_case.parameters, std::move(curves), fit_case.settings};
+    require_no_rebounds_with_a_converted_model(fit_case, rebounds.size());
+    fit::ModelBuilder model = model_builder(fit_case, curves);
+    fit::FitProblem problem{std::move(model), fit_case.parameters, std::move(curves), fit_case.settings};
     problem.rebounds = std::move(rebounds);
     return problem;
 }

@@ -129,7 +129,7 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
         entry.emplace_back("flags", flag_list(curve.flags));
         curves.push_back({std::move(entry)});
     }
-    return {Document::Table{
+    Document::Table document{
         {"status", {result.status}},
         {"converged", {result.converged}},
         {"misfit", {result.misfit}},
@@ -157,7 +157,16 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
         {"runs_per_iteration", {std::move(runs_per_iteration)}},
         {"wall_seconds", {result.wall_seconds}},
         {"units", {units}},
-    }};
+    };
+    if (const auto& certificate = result.material_certificate) {  // a converted model: as summary.json states it
+        document.emplace_back("material_error", number_or_null(certificate->error));
+        document.emplace_back("material_window",
+                              number_list({certificate->window.shortest, certificate->window.longest}));
+        if (!certificate->window.frequencies.empty()) {
+            document.emplace_back("material_frequencies", number_list(certificate->window.frequencies));
+        }
+    }
+    return {std::move(document)};
 }
 
 std::string fit_json(const fit::FitResult& result, const std::string& units) {

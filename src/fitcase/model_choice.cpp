@@ -31,8 +31,8 @@ FitCase base_case(const FitCase& fit_case, double modulus) {
 fit::ModelChoice fit_candidates(const FitCase& fit_case, const std::vector<fit::Curve>& curves) {
     const double start = fit::candidate_start_modulus(fit_case.model.build().material, curves);
     const FitCase base = base_case(fit_case, start);
-    const fit::CandidateProblem problem{model_builder(base), base.parameters, base.settings, base.model_choice, start,
-                                        plausibility_units(base)};
+    const fit::CandidateProblem problem{model_builder(base, curves), base.parameters, base.settings, base.model_choice,
+                                        start, plausibility_units(base)};
     return fit::fit_candidates(problem, curves);
 }
 

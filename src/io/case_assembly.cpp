@@ -66,15 +66,6 @@ drivers::ContactCase assemble_case(CaseParts parts, const BodiesBuilder& bodies)
                                       .layer = parts.layer};
     drivers::validate(contact_case);
     drivers::validate_layer(contact_case);
-    // A model converted to a series (certificate kind "model") is the case's material only over the lags it is
-    // certified for: a caller's converted object is checked here; the reader converts over the case's own window.
-    const auto& certificate = contact_case.material_origin.certificate;
-    if (certificate && certificate->kind == "model") {
-        drivers::require_certified_over(contact_case.material_origin,
-                                        drivers::material_window(contact_case.load, contact_case.end_time,
-                                                                 contact_case.numerics, contact_case.tangential,
-                                                                 impact));
-    }
     return contact_case;
 }
 

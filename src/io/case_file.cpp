@@ -207,7 +207,8 @@ drivers::ContactCase parse_case(std::string_view toml_text, const std::string& s
     return read_case(parse_toml(toml_text, source));
 }
 
-drivers::ContactCase read_case(const toml::table& root_table) {
+drivers::ContactCase read_case(const toml::table& root_table,
+                               const std::optional<rheology::TimeWindow>& conversion_window) {
     TableReader root(root_table, "");
     root.reject_unknown(
         {"title", "units", "material", "indenter", "load", "tangential", "output", "numerics", "layer"});
@@ -283,11 +284,11 @@ drivers::ContactCase read_case(const toml::table& root_table) {
     // Files a material names (a table's `file`) are found next to the case file (the parsed table's source).
     const auto& source_path = root_table.source().path;
     const std::string directory = source_path ? std::filesystem::path(*source_path).parent_path().string() : "";
-    // The bodies, built over the time window of the case when a model is converted to a series.
+    // The bodies, built over the time window of the case (or the one given) when a model is converted to a series.
     return assemble_case(std::move(parts), [&](CaseParts& completed) {
         std::optional<rheology::TimeWindow> window;
         if (half_space_spec.needs_window() || (second_spec && second_spec->needs_window())) {
-            window = case_window(completed);
+            window = conversion_window ? *conversion_window : case_window(completed);
         }
         std::optional<rheology::Body> second;
         if (second_spec) second = build_body(*second_spec, window, directory, system);

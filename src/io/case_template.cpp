@@ -5,6 +5,7 @@
 #include <charconv>
 #include <sstream>
 #include <type_traits>
+#include <utility>
 #include <variant>
 
 #include "case_reader.hpp"
@@ -127,7 +128,15 @@ void CaseTemplate::set_table(const std::string& name, std::string_view body) {
     tables_->root.insert_or_assign(name, parse_toml(body, tables_->source));
 }
 
-drivers::ContactCase CaseTemplate::build() const { return read_case(tables_->root); }
+drivers::ContactCase CaseTemplate::build() const { return read_case(tables_->root, tables_->conversion_window); }
+
+void CaseTemplate::set_conversion_window(rheology::TimeWindow window) {
+    tables_->conversion_window = std::move(window);
+}
+
+const std::optional<rheology::TimeWindow>& CaseTemplate::conversion_window() const {
+    return tables_->conversion_window;
+}
 
 std::string CaseTemplate::text() const {
     std::ostringstream text;

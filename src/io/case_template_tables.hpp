@@ -3,15 +3,18 @@
 
 #include <toml++/toml.h>
 
+#include <optional>
 #include <string>
 
 #include "mdr/io/case_template.hpp"
+#include "mdr/rheology/approximation.hpp"
 
 namespace mdr::io {
 
 struct CaseTemplate::Tables {
     toml::table root;
     std::string source;
+    std::optional<rheology::TimeWindow> conversion_window{};  // set_conversion_window
 };
 
 }  // namespace mdr::io

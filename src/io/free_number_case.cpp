@@ -136,8 +136,7 @@ FreeNumberCase::FreeNumberCase(const CaseTemplate& model, std::vector<std::strin
     const drivers::ContactCase& base = parts->base;
     if (parts->typed && parts->material &&
         (editable.half_space.needs_window() || (editable.second && editable.second->needs_window()))) {
-        parts->window = drivers::material_window(base.load, base.end_time, base.numerics, base.tangential,
-                                                 base.impact() != nullptr);
+        parts->window = model.conversion_window() ? *model.conversion_window() : drivers::material_window(base);
     }
     const auto& source_path = root_table.source().path;
     parts->directory = source_path ? std::filesystem::path(*source_path).parent_path().string() : "";

@@ -20,15 +20,6 @@ double max_of(const std::vector<double>& values) {
     return values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
 }
 
-// A list of numbers as a document's list. Assigned into null documents: GCC 12 warns of an uninitialised variant
-// when a temporary Document{number} is moved into the list (a false positive that -Werror turns into a failed
-// sanitize build).
-Document list_of(const std::vector<double>& numbers) {
-    Document::List list(numbers.size());
-    for (std::size_t i = 0; i < numbers.size(); ++i) list[i].value = numbers[i];
-    return Document{std::move(list)};
-}
-
 }  // namespace
 
 Summary summarize(const drivers::ContactCase& contact_case, const drivers::IndentationResult& result,
@@ -52,14 +43,14 @@ Summary summarize(const drivers::ContactCase& contact_case, const drivers::Inden
     add("final_depth", result.depth.empty() ? 0.0 : result.depth.back());
     if (const auto& certificate = contact_case.material_origin.certificate) {
         add("material_error", certificate->error);  // the series standing for the model (power law, table)
-        add("material_window", list_of({certificate->window.shortest, certificate->window.longest}));
+        add("material_window", number_list({certificate->window.shortest, certificate->window.longest}));
         if (contact_case.load.history) {
             const std::size_t rows =
                 drivers::rows_before_window(*contact_case.load.history, result.time, certificate->window.shortest);
             if (rows > 0) add("material_uncertified_rows", rows);  // after a jump, before the window's start
         }
         if (!certificate->window.frequencies.empty()) {
-            add("material_frequencies", list_of(certificate->window.frequencies));  // [rad/s], certified explicitly
+            add("material_frequencies", number_list(certificate->window.frequencies));  // [rad/s], certified explicitly
         }
     }
     if (contact_case.tangential) add("tangential_approximation", contact_case.tangential_approximate());
@@ -83,7 +74,7 @@ Summary summary_from_json(const std::string& json_text) {
             summary.push_back({key, Document{value.get<std::string>()}});
         } else if (value.is_array() &&
                    std::all_of(value.begin(), value.end(), [](const auto& x) { return x.is_number(); })) {
-            summary.push_back({key, list_of(value.get<std::vector<double>>())});
+            summary.push_back({key, number_list(value.get<std::vector<double>>())});
         } else {
             throw std::runtime_error("summary key " + key + " has a value of no summary type: " + value.dump());
         }

@@ -32,8 +32,10 @@ double incidence_velocity(double velocity, double incidence_deg);
 /// history force during it. Spring control: a spring constant > 0, a base history starting at or above the surface (z
 /// <= 0) without jumps; force pauses (a spring without durometer) in time order and apart, each starting after the
 /// history's first time, ending after its start and by the end, and not overlapping a harmonic. A Shore test: a
-/// duration > 0, spring control with the durometer's spring, no harmonic and no tangential load. Called by
-/// resolve_numerics, so every driver runs only valid problems.
+/// duration > 0, spring control with the durometer's spring, no harmonic and no tangential load. A model converted to
+/// a series (certificate kind "model": a power law, a springpot) certified over the case's lags and harmonic
+/// frequencies (require_certified_over of material_window; key `material`). Called by resolve_numerics, so every
+/// driver runs only valid problems.
 void validate(const ContactCase& contact_case);
 
 }  // namespace mdr::drivers

@@ -24,12 +24,20 @@ namespace mdr::drivers {
 rheology::TimeWindow material_window(const Load& load, double end_time, const NumericsOptions& numerics,
                                      const std::optional<TangentialLoad>& tangential, bool impact);
 
+/// material_window of a case: its load, end time, numerics, tangential load and control (an impact or not).
+rheology::TimeWindow material_window(const ContactCase& contact_case);
+
+/// True when `origin` is a model converted to a series (its certificate's kind "model": a power law, a springpot),
+/// which stands for the model only over its certificate's window.
+bool converted_model(const rheology::MaterialOrigin& origin);
+
 /// Throws mdr::InvalidInput (key `material`) when `origin` is a model converted to a series (its certificate's kind
 /// "model": a power law, a springpot) whose certificate does not cover `needed` (material_window of the case): lags
 /// before its window's start or past its end, or a harmonic frequency outside [1 / longest, 1 / shortest] that it
 /// does not name. Outside its window the series is not the model's, and a run would not say so. A case file's reader
 /// converts over the case's own window, which this always accepts; a series fitted to data (kind "fit residual")
-/// keeps its data's window there as here, and an exact series has no certificate.
+/// keeps its data's window there as here, and an exact series has no certificate. validate(const ContactCase&) checks
+/// every case with it.
 void require_certified_over(const rheology::MaterialOrigin& origin, const rheology::TimeWindow& needed);
 
 /// The rows at `time` that follow a jump of `history` (two points at one time, or a first value other than 0) by

@@ -247,6 +247,10 @@ struct FitResult {
     std::vector<std::size_t> runs_per_iteration;
     double wall_seconds = 0.0;               ///< wall time of the fit
     MaterialBands material;                  ///< the identified material functions with their bands
+    /// The certificate of the material at the fitted values when it is a model converted to a series (a power law, a
+    /// springpot: over the lags of the fit's runs, fitcase::converting_model; fit.json `material_error`,
+    /// `material_window`); none for an exact series.
+    std::optional<rheology::Certificate> material_certificate{};
 };
 
 /// A curve whose residual RMS exceeds this many times its noise is a misfit (FitResult::misfit): with white

@@ -47,9 +47,16 @@ FitCase parse_fit_case(io::CaseTemplate model, const std::filesystem::path& case
 /// Reads and parses a fit case file (curves relative to its directory).
 FitCase load_fit_case(const std::filesystem::path& path);
 
-/// The model as a function of the free values: the model with each free key set, built (io::FreeNumberCase: built
-/// once, each evaluation rebuilding only the material, indenter or layer the free keys touch).
-fit::ModelBuilder model_builder(const FitCase& fit_case);
+/// The model of a fit case, ready for `curves`: a model converted to a series (a power law, a springpot) is converted
+/// over the lags the fit's runs of the curves need (fit::curves_window) joined with those of the model's own load,
+/// which its rules check (drivers::validate): the case's `[load]`, or without one a placeholder as long as the longest
+/// run (io::CaseTemplate::set_conversion_window). Any other model, or no curves: the case's model as it is.
+io::CaseTemplate converting_model(const FitCase& fit_case, const std::vector<fit::Curve>& curves);
+
+/// The model as a function of the free values: converting_model(fit_case, curves) with each free key set, built
+/// (io::FreeNumberCase: built once, each evaluation rebuilding only the material, indenter or layer the free keys
+/// touch).
+fit::ModelBuilder model_builder(const FitCase& fit_case, const std::vector<fit::Curve>& curves);
 
 /// The model case with `values` set for the free keys, as TOML text, with `[load]` replaced by `load_body` when
 /// it is not empty (fitted.toml).

@@ -26,7 +26,9 @@ std::optional<double> case_mass(const FitCase& fit_case);
 void require_curves_only_for_model_choice(const FitCase& fit_case, std::size_t rebound_sets);
 
 /// The problem of a fit case with its curves and rebound data (from load_curves and load_rebounds, or arrays given
-/// by a caller).
+/// by a caller); its model is model_builder(fit_case, curves). Throws mdr::InvalidInput (key `material`) for rebound
+/// data with a model converted to a series (a power law, a springpot: converted over the runs' lags, which an impact
+/// has only once it has run).
 fit::FitProblem make_problem(const FitCase& fit_case, std::vector<fit::Curve> curves,
                              std::vector<fit::ReboundData> rebounds = {});
 

@@ -10,6 +10,7 @@
 
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/io/case_tree.hpp"
+#include "mdr/rheology/approximation.hpp"
 
 namespace mdr::io {
 
@@ -48,6 +49,12 @@ public:
 
     /// The validated case (same rules and messages as parse_case).
     drivers::ContactCase build() const;
+    /// Converts a model that is not a finite Prony series (a power law, a springpot) over `window` in build() instead
+    /// of over the case's own window: a fit's, whose curves replace the load (fitcase::conversion_window). The case's
+    /// rules still hold the series to the case's own lags (drivers::validate), so `window` must cover them too.
+    void set_conversion_window(rheology::TimeWindow window);
+    /// The window of set_conversion_window, or none.
+    const std::optional<rheology::TimeWindow>& conversion_window() const;
     /// The case as TOML text.
     std::string text() const;
     /// The name used in messages.

@@ -16,7 +16,8 @@ namespace mdr::io {
 /// (`material.tau1`, `material.terms[0][1]`, `material.G[2]`, `material.K`, `material.bulk.K_inf`,
 /// `indenter.material.G`), of the indenter's shape (`indenter.R`) or `layer.thickness` is typed: build() sets it
 /// in the values as read and rebuilds that body's material from its registry row, the indenter from its shape row,
-/// or the layer, with CaseTemplate::build()'s rules and messages in its order. When any key is of another kind
+/// or the layer, with CaseTemplate::build()'s rules and messages in its order (a converted model over the template's
+/// conversion window when it has one, as its build() converts it). When any key is of another kind
 /// (`indenter.mass`, `material.tolerance`), build() goes through the template: a copy, set_number() and build().
 class FreeNumberCase {
 public:

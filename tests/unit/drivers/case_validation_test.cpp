@@ -12,6 +12,7 @@
 #include "mdr/drivers/oblique_sphere.hpp"
 #include "mdr/error.hpp"
 #include "mdr/profile/profile.hpp"
+#include "mdr/rheology/power_law.hpp"
 
 namespace mdr::drivers {
 namespace {
@@ -42,6 +43,36 @@ TEST(CaseValidation, AValidCaseRuns) {
     const auto contact_case = creep_test();
     EXPECT_EQ(key_of([&] { validate(contact_case); }), "");
     EXPECT_GT(run_case(contact_case).force.back(), 0.0);
+}
+
+// The creep test (lags 1e-4 s, a fifth of its 1 s over 2000 steps, to 1 s) with a power law converted over `window`.
+ContactCase power_law_creep_test(const rheology::TimeWindow& window) {
+    auto contact_case = creep_test();
+    const rheology::PowerLaw power_law{.G0 = 1e6, .beta = 0.2};
+    const auto approximation = rheology::approximate(power_law, window);
+    contact_case.material = approximation.series;
+    contact_case.material_origin = {.description = "power_law (G0 = 1e+06 Pa, beta = 0.2, t0 = 1 s)",
+                                    .certificate = approximation.certificate,
+                                    .model = approximation.model};
+    return contact_case;
+}
+
+// A C++ caller's converted series is held to the case's lags as a case file's is (the rule stated by
+// require_certified_over): the creep test lasts 1 s, so a series certified to 0.1 s only is refused naming
+// `material`, by validate and by the driver, before anything runs.
+TEST(CaseValidation, ASeriesCertifiedOverFewerLagsThanTheCaseNeedsIsRefusedNamingTheMaterial) {
+    EXPECT_EQ(key_of([&] { validate(power_law_creep_test({1e-4, 1.0})); }), "");
+    EXPECT_EQ(key_of([&] { validate(power_law_creep_test({1e-5, 10.0})); }), "");
+    const auto short_series = power_law_creep_test({1e-4, 0.1});
+    EXPECT_EQ(key_of([&] { validate(short_series); }), "material");
+    EXPECT_EQ(key_of([&] { run_case(short_series); }), "material");
+    EXPECT_EQ(key_of([&] { validate(power_law_creep_test({1e-3, 1.0})); }), "material");  // steps below its start
+    // An impact has no window without load.end: a converted series there is refused naming it.
+    auto impact = power_law_creep_test({1e-4, 1.0});
+    impact.control = ImpactControl{.mass = 1e-3, .velocity = 0.1};
+    impact.load.history = LoadHistory({{0.0, 0.0}}, "load.history");
+    impact.end_time = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(key_of([&] { validate(impact); }), "load.end");
 }
 
 TEST(CaseValidation, ANegativeForceIsRefusedNotANaNDepth) {
