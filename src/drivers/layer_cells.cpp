@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "mdr/error.hpp"
+#include "../numerics/dot_product.hpp"
 
 namespace mdr::drivers {
 
@@ -58,16 +59,15 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
     }
     // Cholesky, I - K = L L^T: symmetric, and positive as its symbol L(xi h) > 0 is (eq. L1).
     for (std::size_t j = 0; j < cells; ++j) {
-        double diagonal = operator_[j * cells + j];
-        for (std::size_t k = 0; k < j; ++k) diagonal -= factor_[j * cells + k] * factor_[j * cells + k];
+        const double* row_j = &factor_[j * cells];
+        const double diagonal = operator_[j * cells + j] - numerics::dot_product(row_j, row_j, j);
         if (!(diagonal > 0.0)) {
             throw std::runtime_error("the layer's operator I - K is not positive definite on " +
                                      std::to_string(cells) + " cells");
         }
         factor_[j * cells + j] = std::sqrt(diagonal);
         for (std::size_t i = j + 1; i < cells; ++i) {
-            double value = operator_[i * cells + j];
-            for (std::size_t k = 0; k < j; ++k) value -= factor_[i * cells + k] * factor_[j * cells + k];
+            const double value = operator_[i * cells + j] - numerics::dot_product(&factor_[i * cells], row_j, j);
             factor_[i * cells + j] = value / factor_[j * cells + j];
         }
     }
@@ -92,13 +92,13 @@ void LayerCells::solve_load(std::size_t contact, double depth) {
     const double dashpot = dashpot_stress(depth);
     for (std::size_t i = 0; i < contact; ++i) {
         trial_stress_[i] = springs_ * (depth - profile_[i]) + relaxed_[i] + dashpot;
-        double value = plane_modulus_per_shear * trial_stress_[i];
-        for (std::size_t k = 0; k < i; ++k) value -= factor_[i * cells_ + k] * trial_load_[k];
+        const double value = plane_modulus_per_shear * trial_stress_[i] -
+                             numerics::dot_product(&factor_[i * cells_], trial_load_.data(), i);
         trial_load_[i] = value / factor_[i * cells_ + i];
     }
     for (std::size_t i = contact; i-- > 0;) {
-        double value = trial_load_[i];
-        for (std::size_t k = i + 1; k < contact; ++k) value -= factor_transposed_[i * cells_ + k] * trial_load_[k];
+        const double value = trial_load_[i] - numerics::dot_product(&factor_transposed_[i * cells_ + i + 1],
+                                                                    &trial_load_[i + 1], contact - i - 1);
         trial_load_[i] = value / factor_[i * cells_ + i];
     }
 }
@@ -110,8 +110,7 @@ void LayerCells::free_surface(std::size_t contact, double depth, std::size_t fre
             trial_displacement_[i] = depth - profile_[i];
             continue;
         }
-        double load = 0.0;
-        for (std::size_t k = 0; k < contact; ++k) load += operator_[i * cells_ + k] * trial_load_[k];
+        const double load = numerics::dot_product(&operator_[i * cells_], trial_load_.data(), contact);
         trial_stress_[i] = load / plane_modulus_per_shear;
         trial_displacement_[i] = (trial_stress_[i] - free_relaxed_[i]) / free_stiffness_;
     }
