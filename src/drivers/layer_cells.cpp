@@ -35,7 +35,8 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
       free_relaxed_(cells, 0.0),
       trial_load_(cells, 0.0),
       trial_displacement_(cells, 0.0),
-      trial_stress_(cells, 0.0) {
+      trial_stress_(cells, 0.0),
+      unit_loads_(cells + 1) {
     if (cells < 2) throw InvalidInput("numerics.elements", std::to_string(cells), "must be >= 2 on a layer");
     const double h = layer.thickness;
     const contact::LayerKernel kernel(layer.interface, poisson_ratio, 2.0 * width / h);
@@ -76,31 +77,41 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
     }
 }
 
-void LayerCells::solve(std::size_t contact, double depth, std::size_t free_cells) {
-    solve_load(contact, depth);
-    free_surface(contact, depth, free_cells);
-}
-
 double LayerCells::dashpot_stress(double depth) const {
     return dashpot_gain_ * (depth - depth_) + dashpot_offset_;
 }
 
 void LayerCells::solve_load(std::size_t contact, double depth) {
-    // Inside: (I - K) q = Q = 4 (springs (d - g) + relaxed + eta rate) on the contact's cells, by the leading block
-    // of L (eq. L16 to L18; the dashpot sees the indenter's rate, w1 = d - g).
-    std::fill(trial_load_.begin(), trial_load_.end(), 0.0);
+    // Inside: (I - K) q = Q = 4 (springs (d - g) + relaxed + eta rate) on the contact's cells (eq. L16 to L18; the
+    // dashpot sees the indenter's rate, w1 = d - g).
     const double dashpot = dashpot_stress(depth);
     for (std::size_t i = 0; i < contact; ++i) {
         trial_stress_[i] = springs_ * (depth - profile_[i]) + relaxed_[i] + dashpot;
-        const double value = plane_modulus_per_shear * trial_stress_[i] -
-                             numerics::dot_product(&factor_[i * cells_], trial_load_.data(), i);
-        trial_load_[i] = value / factor_[i * cells_ + i];
+        trial_load_[i] = plane_modulus_per_shear * trial_stress_[i];
+    }
+    std::fill(trial_load_.begin() + static_cast<std::ptrdiff_t>(contact), trial_load_.end(), 0.0);
+    solve_contact(contact, trial_load_.data());
+}
+
+void LayerCells::solve_contact(std::size_t contact, double* values) const {
+    // (I - K) on the contact's cells is the leading block of L L^T: a forward and a back substitution.
+    for (std::size_t i = 0; i < contact; ++i) {
+        values[i] = (values[i] - numerics::dot_product(&factor_[i * cells_], values, i)) / factor_[i * cells_ + i];
     }
     for (std::size_t i = contact; i-- > 0;) {
-        const double value = trial_load_[i] - numerics::dot_product(&factor_transposed_[i * cells_ + i + 1],
-                                                                    &trial_load_[i + 1], contact - i - 1);
-        trial_load_[i] = value / factor_[i * cells_ + i];
+        const double later = numerics::dot_product(&factor_transposed_[i * cells_ + i + 1], &values[i + 1],
+                                                   contact - i - 1);
+        values[i] = (values[i] - later) / factor_[i * cells_ + i];
     }
+}
+
+const std::vector<double>& LayerCells::unit_load(std::size_t contact) {
+    auto& load = unit_loads_[contact];
+    if (load.empty()) {
+        load.assign(contact, plane_modulus_per_shear);
+        solve_contact(contact, load.data());
+    }
+    return load;
 }
 
 void LayerCells::free_surface(std::size_t contact, double depth, std::size_t free_cells) {
@@ -117,29 +128,41 @@ void LayerCells::free_surface(std::size_t contact, double depth, std::size_t fre
 }
 
 LayerCellState LayerCells::step(double time_step, double depth, std::optional<double> start_rate) {
-    return advance(time_step, [depth](std::size_t) { return depth; }, false, start_rate);
+    const auto load_for = [this, depth](std::size_t contact) {
+        solve_load(contact, depth);
+        return depth;
+    };
+    return advance(time_step, load_for, false, start_rate);
 }
 
 LayerCellState LayerCells::step_loaded(double time_step, double right_side, double spring_constant, double base) {
-    // F(d) + k d = right side. On a contact set q is affine in d (eq. L17, L18), so is F = F(0) + d (F(1) - F(0)).
+    // F(d) + k d = right side. On a contact set q is affine in d (eq. L17, L18): q(d) = q(0) + d slope u, u the
+    // solution for Q = 4 on the set (unit_load) and slope = d(Q/4)/dd there, so F = F(0) + d slope 2 dx sum u.
     // Without contact F = 0: a spring's indenter hangs at its base; under force control it rests on the free
     // surface at the axis, extrapolated linearly in g (the lambda of the axis, below eq. L19).
-    const auto depth_for = [&](std::size_t contact) {
+    const auto load_for = [&](std::size_t contact) {
+        solve_load(contact, 0.0);
         if (contact == 0) {
             if (spring_constant > 0.0) return base;
-            solve(0, 0.0, 2);
+            free_surface(0, 0.0, 2);
             const double inner = profile_[0] + trial_displacement_[0], next = profile_[1] + trial_displacement_[1];
             return inner + axis_weight_ * (next - inner);
         }
-        solve_load(contact, 0.0);
-        double at_zero = 0.0;
-        for (std::size_t i = 0; i < contact; ++i) at_zero += 2.0 * spacing_ * trial_load_[i];
-        solve_load(contact, 1.0);
-        double at_one = 0.0;
-        for (std::size_t i = 0; i < contact; ++i) at_one += 2.0 * spacing_ * trial_load_[i];
-        return (right_side - at_zero) / (at_one - at_zero + spring_constant);
+        const auto& unit = unit_load(contact);
+        const double slope = springs_ + dashpot_gain_;
+        double at_zero = 0.0, per_depth = 0.0;
+        for (std::size_t i = 0; i < contact; ++i) {
+            at_zero += 2.0 * spacing_ * trial_load_[i];
+            per_depth += 2.0 * spacing_ * slope * unit[i];
+        }
+        const double depth = (right_side - at_zero) / (per_depth + spring_constant);
+        for (std::size_t i = 0; i < contact; ++i) {
+            trial_load_[i] += depth * slope * unit[i];
+            trial_stress_[i] += slope * depth;
+        }
+        return depth;
     };
-    return advance(time_step, depth_for, spring_constant == 0.0 && right_side > 0.0, rate_);
+    return advance(time_step, load_for, spring_constant == 0.0 && right_side > 0.0, rate_);
 }
 
 double LayerCells::regain_fraction(double time_step, double depth, double axis) const {
@@ -162,8 +185,8 @@ double LayerCells::regain_fraction(double time_step, double depth, double axis) 
     return end > start ? std::clamp(start / (start - end), 0.0, 1.0) : 1.0;
 }
 
-template <class DepthRule>
-LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for, bool needs_contact,
+template <class LoadRule>
+LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, bool needs_contact,
                                    std::optional<double> start_rate) {
     foundation::fill_step_coefficients(*material_, time_step, coefficients_);
     const auto& terms = material_->terms();
@@ -200,8 +223,8 @@ LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for,
     std::size_t contact = contact_;
     double depth = 0.0;
     for (;;) {
-        depth = depth_for(contact);
-        solve(contact, depth, 1);  // the free cell next to the contact decides
+        depth = load_for(contact);
+        free_surface(contact, depth, 1);  // the free cell next to the contact decides
         tried[contact] = true;
         if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried[contact - 1]) {
             --contact;

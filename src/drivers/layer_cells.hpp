@@ -59,23 +59,25 @@ public:
     LayerCellState step_loaded(double time_step, double right_side, double spring_constant, double base);
 
 private:
-    // One step: `depth_for(m)` gives the depth for the contact set [0, m); `needs_contact`: a force without contact.
-    // `start_rate`: the indenter's rate at the step's start that its dashpot term takes (trapezoidal), or none (the
-    // secant rate).
-    template <class DepthRule>
-    LayerCellState advance(double time_step, const DepthRule& depth_for, bool needs_contact,
+    // One step: `load_for(m)` solves q on the contact set [0, m) (solve_load) and gives its depth; `needs_contact`: a
+    // force without contact. `start_rate`: the indenter's rate at the step's start that its dashpot term takes
+    // (trapezoidal), or none (the secant rate).
+    template <class LoadRule>
+    LayerCellState advance(double time_step, const LoadRule& load_for, bool needs_contact,
                            std::optional<double> start_rate);
     // eta times the indenter's rate at the step's end, at the end depth `depth` (eq. L16 in contact: w1 = d - g).
     double dashpot_stress(double depth) const;
     // The fraction of a step of `time_step` [s] to `depth` [m] at which the axis touches again, the edge function at
     // the axis `axis` at its end (committed state: its start).
     double regain_fraction(double time_step, double depth, double axis) const;
-    // q of the contact set [0, contact) for the step's coefficients and depth, and w1 of the first `free_cells`
-    // free cells beyond (O(m^2) for m cells in contact, and O(m) a free cell).
-    void solve(std::size_t contact, double depth, std::size_t free_cells);
-    // The two parts of solve: q on the contact set, then w1 (d - g inside).
+    // q of the contact set [0, contact) for the step's coefficients and depth (O(m^2) for m cells in contact; zero
+    // beyond), then w1 of the cells in contact (d - g) and of the first `free_cells` free cells beyond (O(m) each).
     void solve_load(std::size_t contact, double depth);
     void free_surface(std::size_t contact, double depth, std::size_t free_cells);
+    // Overwrites the first `contact` values, a right side, with the solution of (I - K) q = it on the contact's cells.
+    void solve_contact(std::size_t contact, double* values) const;
+    // q for Q = 4 on the contact set [0, contact) (its line load per unit of Q/4), solved once per set.
+    const std::vector<double>& unit_load(std::size_t contact);
 
     const rheology::Rheology* material_;
     bool flat_punch_;
@@ -100,6 +102,7 @@ private:
     double dashpot_gain_ = 0.0;    // eta/dt times 2 (trapezoidal) or 1 (secant): the contact's dashpot per dd
     double dashpot_offset_ = 0.0;  // -eta rate0 (trapezoidal) or 0
     std::vector<double> relaxed_, free_relaxed_, trial_load_, trial_displacement_, trial_stress_;
+    std::vector<std::vector<double>> unit_loads_;  // unit_load per contact set, empty until first needed
 };
 
 }  // namespace mdr::drivers
