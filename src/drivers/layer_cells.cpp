@@ -28,6 +28,7 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
       operator_(cells * cells),
       factor_(cells * cells, 0.0),
       factor_transposed_(cells * cells, 0.0),
+      inverse_diagonal_(cells),
       displacement_(cells, 0.0),
       branches_(cells * material.terms().size(), 0.0),
       stress_(cells, 0.0),
@@ -74,6 +75,7 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
     }
     for (std::size_t i = 0; i < cells; ++i) {
         for (std::size_t j = 0; j <= i; ++j) factor_transposed_[j * cells + i] = factor_[i * cells + j];
+        inverse_diagonal_[i] = 1.0 / factor_[i * cells + i];
     }
 }
 
@@ -96,12 +98,12 @@ void LayerCells::solve_load(std::size_t contact, double depth) {
 void LayerCells::solve_contact(std::size_t contact, double* values) const {
     // (I - K) on the contact's cells is the leading block of L L^T: a forward and a back substitution.
     for (std::size_t i = 0; i < contact; ++i) {
-        values[i] = (values[i] - numerics::dot_product(&factor_[i * cells_], values, i)) / factor_[i * cells_ + i];
+        values[i] = (values[i] - numerics::dot_product(&factor_[i * cells_], values, i)) * inverse_diagonal_[i];
     }
     for (std::size_t i = contact; i-- > 0;) {
         const double later = numerics::dot_product(&factor_transposed_[i * cells_ + i + 1], &values[i + 1],
                                                    contact - i - 1);
-        values[i] = (values[i] - later) / factor_[i * cells_ + i];
+        values[i] = (values[i] - later) * inverse_diagonal_[i];
     }
 }
 
@@ -123,7 +125,7 @@ void LayerCells::free_surface(std::size_t contact, double depth, std::size_t fre
         }
         const double load = numerics::dot_product(&operator_[i * cells_], trial_load_.data(), contact);
         trial_stress_[i] = load / plane_modulus_per_shear;
-        trial_displacement_[i] = (trial_stress_[i] - free_relaxed_[i]) / free_stiffness_;
+        trial_displacement_[i] = (trial_stress_[i] - free_relaxed_[i]) * free_compliance_;
     }
 }
 
@@ -199,6 +201,7 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     // (G_inf w1 + sum_k G_k h_k) at the start (Q = ((I - K) q)_i, nonzero outside the contact on a layer).
     springs_ = coefficients_.stiffness - dashpot;
     free_stiffness_ = springs_ + 2.0 * dashpot;
+    free_compliance_ = 1.0 / free_stiffness_;
     dashpot_gain_ = (start_rate ? 2.0 : 1.0) * dashpot;
     dashpot_offset_ = start_rate && time_step > 0.0 ? -viscosity * *start_rate : 0.0;
     for (std::size_t i = 0; i < cells_; ++i) {

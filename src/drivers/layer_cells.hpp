@@ -86,6 +86,7 @@ private:
     std::vector<double> centre_, profile_;  // x_i, g(x_i)
     std::vector<double> operator_, factor_; // I - K (midpoint rule) and its Cholesky factor L, row-major
     std::vector<double> factor_transposed_; // L^T, row-major (the back substitution reads rows)
+    std::vector<double> inverse_diagonal_;  // 1 / L_ii (the substitutions multiply: no division in their chain)
     std::vector<double> displacement_;      // w1_i, committed
     std::vector<double> branches_;          // h_ki, per cell its branches together
     std::vector<double> stress_;            // Q_i / 4 = ((I - K) q)_i / 4, committed (a free cell's dashpot rate)
@@ -99,6 +100,7 @@ private:
     foundation::StepCoefficients coefficients_;
     double springs_ = 0.0;         // G_inf + sum_k G_k B_k: Q/4 per w1 in contact, the dashpot apart
     double free_stiffness_ = 0.0;  // springs + 2 eta/dt: a free cell's Q/4 per w1 (trapezoidal rate)
+    double free_compliance_ = 0.0; // 1 / free_stiffness
     double dashpot_gain_ = 0.0;    // eta/dt times 2 (trapezoidal) or 1 (secant): the contact's dashpot per dd
     double dashpot_offset_ = 0.0;  // -eta rate0 (trapezoidal) or 0
     std::vector<double> relaxed_, free_relaxed_, trial_load_, trial_displacement_, trial_stress_;
