@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
-#include <stdexcept>
 
 #include "mdr/error.hpp"
 #include "../numerics/dot_product.hpp"
@@ -25,10 +23,6 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
       cells_(cells),
       centre_(cells),
       profile_(cells),
-      operator_(cells * cells),
-      factor_(cells * cells, 0.0),
-      factor_transposed_(cells * cells, 0.0),
-      inverse_diagonal_(cells),
       displacement_(cells, 0.0),
       branches_(cells * material.terms().size(), 0.0),
       stress_(cells, 0.0),
@@ -39,8 +33,6 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
       trial_stress_(cells, 0.0),
       unit_loads_(cells + 1) {
     if (cells < 2) throw InvalidInput("numerics.elements", std::to_string(cells), "must be >= 2 on a layer");
-    const double h = layer.thickness;
-    const contact::LayerKernel kernel(layer.interface, poisson_ratio, 2.0 * width / h);
     for (std::size_t i = 0; i < cells; ++i) {
         centre_[i] = (static_cast<double>(i) + 0.5) * spacing_;
         profile_[i] = indenter.equivalent(centre_[i]);
@@ -49,34 +41,7 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
     if (profile_[1] != profile_[0]) {
         axis_weight_ = (indenter.equivalent(0.0) - profile_[0]) / (profile_[1] - profile_[0]);
     }
-    // (I - K)_ij = delta_ij - (dx/pi) [K(x_i - x_j) + K(x_i + x_j)], K(y) = k(y/h)/h (eq. L17 from L3, L4; midpoint
-    // rule).
-    for (std::size_t i = 0; i < cells; ++i) {
-        for (std::size_t j = 0; j <= i; ++j) {
-            const double coupling = spacing_ / std::numbers::pi *
-                                    (kernel((centre_[i] - centre_[j]) / h) + kernel((centre_[i] + centre_[j]) / h)) /
-                                    h;
-            operator_[i * cells + j] = operator_[j * cells + i] = (i == j ? 1.0 : 0.0) - coupling;
-        }
-    }
-    // Cholesky, I - K = L L^T: symmetric, and positive as its symbol L(xi h) > 0 is (eq. L1).
-    for (std::size_t j = 0; j < cells; ++j) {
-        const double* row_j = &factor_[j * cells];
-        const double diagonal = operator_[j * cells + j] - numerics::dot_product(row_j, row_j, j);
-        if (!(diagonal > 0.0)) {
-            throw std::runtime_error("the layer's operator I - K is not positive definite on " +
-                                     std::to_string(cells) + " cells");
-        }
-        factor_[j * cells + j] = std::sqrt(diagonal);
-        for (std::size_t i = j + 1; i < cells; ++i) {
-            const double value = operator_[i * cells + j] - numerics::dot_product(&factor_[i * cells], row_j, j);
-            factor_[i * cells + j] = value / factor_[j * cells + j];
-        }
-    }
-    for (std::size_t i = 0; i < cells; ++i) {
-        for (std::size_t j = 0; j <= i; ++j) factor_transposed_[j * cells + i] = factor_[i * cells + j];
-        inverse_diagonal_[i] = 1.0 / factor_[i * cells + i];
-    }
+    operator_ = layer_operator(layer, poisson_ratio, width, cells);
 }
 
 double LayerCells::dashpot_stress(double depth) const {
@@ -97,13 +62,15 @@ void LayerCells::solve_load(std::size_t contact, double depth) {
 
 void LayerCells::solve_contact(std::size_t contact, double* values) const {
     // (I - K) on the contact's cells is the leading block of L L^T: a forward and a back substitution.
+    const auto& factored = *operator_;
     for (std::size_t i = 0; i < contact; ++i) {
-        values[i] = (values[i] - numerics::dot_product(&factor_[i * cells_], values, i)) * inverse_diagonal_[i];
+        const double earlier = numerics::dot_product(&factored.factor[i * cells_], values, i);
+        values[i] = (values[i] - earlier) * factored.inverse_diagonal[i];
     }
     for (std::size_t i = contact; i-- > 0;) {
-        const double later = numerics::dot_product(&factor_transposed_[i * cells_ + i + 1], &values[i + 1],
+        const double later = numerics::dot_product(&factored.factor_transposed[i * cells_ + i + 1], &values[i + 1],
                                                    contact - i - 1);
-        values[i] = (values[i] - later) * inverse_diagonal_[i];
+        values[i] = (values[i] - later) * factored.inverse_diagonal[i];
     }
 }
 
@@ -123,7 +90,7 @@ void LayerCells::free_surface(std::size_t contact, double depth, std::size_t fre
             trial_displacement_[i] = depth - profile_[i];
             continue;
         }
-        const double load = numerics::dot_product(&operator_[i * cells_], trial_load_.data(), contact);
+        const double load = numerics::dot_product(&operator_->matrix[i * cells_], trial_load_.data(), contact);
         trial_stress_[i] = load / plane_modulus_per_shear;
         trial_displacement_[i] = (trial_stress_[i] - free_relaxed_[i]) * free_compliance_;
     }

@@ -6,6 +6,7 @@
 // shear modulus, eq. 56); the contact set by complementarity each step.
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/profile/profile.hpp"
 #include "mdr/rheology/rheology.hpp"
+#include "layer_operator.hpp"
 
 namespace mdr::drivers {
 
@@ -41,7 +43,8 @@ public:
     /// `cells` (>= 2) uniform cells on [0, width] (width > 0 [m], at least the widest contact; a flat punch: its
     /// radius), the layer's kernel of the body's constant Poisson ratio (layer_poisson_ratio; `material` is then the
     /// effective shear material, E* = 4 G) tabulated on [0, 2 width / h] and I - K factored once (Cholesky: its
-    /// leading blocks factor every contact set).
+    /// leading blocks factor every contact set; layer_operator, kept for the thread's next LayerCells on the same
+    /// layer and cells).
     LayerCells(const rheology::Rheology& material, const contact::Layer& layer, double poisson_ratio,
                const profile::Profile& indenter, double width, std::size_t cells);
     /// Steps by `time_step` >= 0 [s] with the depth linear over it to `depth` [m]. A parallel dashpot (eq. L16 with
@@ -84,9 +87,7 @@ private:
     double spacing_;
     std::size_t cells_;
     std::vector<double> centre_, profile_;  // x_i, g(x_i)
-    std::vector<double> operator_, factor_; // I - K (midpoint rule) and its Cholesky factor L, row-major
-    std::vector<double> factor_transposed_; // L^T, row-major (the back substitution reads rows)
-    std::vector<double> inverse_diagonal_;  // 1 / L_ii (the substitutions multiply: no division in their chain)
+    std::shared_ptr<const LayerOperator> operator_;  // I - K and its Cholesky factor
     std::vector<double> displacement_;      // w1_i, committed
     std::vector<double> branches_;          // h_ki, per cell its branches together
     std::vector<double> stress_;            // Q_i / 4 = ((I - K) q)_i / 4, committed (a free cell's dashpot rate)
