@@ -31,7 +31,9 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
       trial_load_(cells, 0.0),
       trial_displacement_(cells, 0.0),
       trial_stress_(cells, 0.0),
-      unit_loads_(cells + 1) {
+      tried_(cells + 1, false),
+      unit_loads_(cells + 1),
+      history_offsets_{0} {
     if (cells < 2) throw InvalidInput("numerics.elements", std::to_string(cells), "must be >= 2 on a layer");
     for (std::size_t i = 0; i < cells; ++i) {
         centre_[i] = (static_cast<double>(i) + 0.5) * spacing_;
@@ -154,12 +156,85 @@ double LayerCells::regain_fraction(double time_step, double depth, double axis) 
     return end > start ? std::clamp(start / (start - end), 0.0, 1.0) : 1.0;
 }
 
+void LayerCells::prepare_cell(std::size_t i, const double* decay, const double* gain, double dashpot) {
+    const auto& terms = material_->terms();
+    const std::size_t branches = terms.size();
+    double relaxed = 0.0, elastic = 0.0;
+    for (std::size_t k = 0; k < branches; ++k) {
+        const double branch = branches_[i * branches + k];
+        relaxed += terms[k].modulus * (decay[k] * branch - gain[k] * displacement_[i]);
+        elastic += terms[k].modulus * branch;
+    }
+    relaxed_[i] = relaxed;
+    free_relaxed_[i] = relaxed;
+    if (dashpot > 0.0) {  // - eta (2 w1_old / dt + rate0)
+        elastic += material_->equilibrium_modulus() * displacement_[i];
+        free_relaxed_[i] -= 2.0 * dashpot * displacement_[i] + (stress_[i] - elastic);
+    }
+}
+
+void LayerCells::commit_cell(std::size_t i, const double* decay, const double* gain) {
+    const std::size_t branches = material_->terms().size();
+    const double change = trial_displacement_[i] - displacement_[i];
+    for (std::size_t k = 0; k < branches; ++k) {
+        double& branch = branches_[i * branches + k];
+        branch = decay[k] * branch + gain[k] * change;
+    }
+    displacement_[i] = trial_displacement_[i];
+    stress_[i] = trial_stress_[i];
+}
+
+void LayerCells::record(std::size_t contact, double dashpot) {
+    if (kept_ == cells_) return;
+    history_steps_.insert(history_steps_.end(), coefficients_.decay.begin(), coefficients_.decay.end());
+    history_steps_.insert(history_steps_.end(), coefficients_.gain.begin(), coefficients_.gain.end());
+    history_steps_.push_back(dashpot);
+    history_steps_.push_back(free_compliance_);
+    history_loads_.insert(history_loads_.end(), trial_load_.begin(),
+                          trial_load_.begin() + static_cast<std::ptrdiff_t>(contact));
+    history_offsets_.push_back(history_loads_.size());
+    // The history's memory stays below the operator's: beyond that, every cell is kept from here on.
+    if (history_loads_.size() + history_steps_.size() > 4 * cells_ * cells_) catch_up(cells_);
+}
+
+void LayerCells::catch_up(std::size_t count) {
+    // Each cell beyond the kept ones has been free from the start, its Q = ((I - K) q)_i set by the contact's q
+    // alone: stepped through the recorded steps exactly as the kept cells were (the same operations in the same
+    // order, so the same numbers).
+    const std::size_t branches = material_->terms().size(), stride = 2 * branches + 2;
+    const std::size_t steps = history_offsets_.size() - 1;
+    for (std::size_t i = kept_; i < std::min(count, cells_); ++i) {
+        for (std::size_t t = 0; t < steps; ++t) {
+            const double* coefficients = &history_steps_[t * stride];
+            const double *decay = coefficients, *gain = coefficients + branches;
+            prepare_cell(i, decay, gain, coefficients[2 * branches]);
+            const std::size_t begin = history_offsets_[t], contact = history_offsets_[t + 1] - begin;
+            const double load = numerics::dot_product(&operator_->matrix[i * cells_], &history_loads_[begin], contact);
+            trial_stress_[i] = load / plane_modulus_per_shear;
+            trial_displacement_[i] = (trial_stress_[i] - free_relaxed_[i]) * coefficients[2 * branches + 1];
+            commit_cell(i, decay, gain);
+        }
+    }
+    kept_ = std::max(kept_, std::min(count, cells_));
+    if (kept_ == cells_) {
+        history_steps_ = {};
+        history_loads_ = {};
+        history_offsets_ = {};
+    }
+}
+
+void LayerCells::keep(std::size_t count, double dashpot) {
+    const std::size_t first = kept_;
+    catch_up(count);
+    for (std::size_t i = first; i < kept_; ++i) {
+        prepare_cell(i, coefficients_.decay.data(), coefficients_.gain.data(), dashpot);
+    }
+}
+
 template <class LoadRule>
 LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, bool needs_contact,
                                    std::optional<double> start_rate) {
     foundation::fill_step_coefficients(*material_, time_step, coefficients_);
-    const auto& terms = material_->terms();
-    const std::size_t branches = terms.size();
     const double viscosity = material_->viscosity(), dashpot = time_step > 0.0 ? viscosity / time_step : 0.0;
     // Q/4 = G_inf w1 + sum_k G_k (E_k h_k + B_k (w1 - w1_old)) + eta dw1/dt = springs w1 + relaxed + eta dw1/dt
     // (eq. L16: exact for w1 linear over the step; foundation/step_coefficients.hpp). The dashpot's rate at the
@@ -171,37 +246,29 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     free_compliance_ = 1.0 / free_stiffness_;
     dashpot_gain_ = (start_rate ? 2.0 : 1.0) * dashpot;
     dashpot_offset_ = start_rate && time_step > 0.0 ? -viscosity * *start_rate : 0.0;
-    for (std::size_t i = 0; i < cells_; ++i) {
-        double relaxed = 0.0, elastic = 0.0;
-        for (std::size_t k = 0; k < branches; ++k) {
-            const double branch = branches_[i * branches + k];
-            relaxed += terms[k].modulus * (coefficients_.decay[k] * branch - coefficients_.gain[k] * displacement_[i]);
-            elastic += terms[k].modulus * branch;
-        }
-        relaxed_[i] = relaxed;
-        free_relaxed_[i] = relaxed;
-        if (dashpot > 0.0) {  // - eta (2 w1_old / dt + rate0)
-            elastic += material_->equilibrium_modulus() * displacement_[i];
-            free_relaxed_[i] -= 2.0 * dashpot * displacement_[i] + (stress_[i] - elastic);
-        }
+    // The kept cells (keep) step here; the others, free from the start and not yet needed, later (catch_up).
+    for (std::size_t i = 0; i < kept_; ++i) {
+        prepare_cell(i, coefficients_.decay.data(), coefficients_.gain.data(), dashpot);
     }
+    keep(std::max<std::size_t>(contact_ + 1, 2), dashpot);
     // Complementarity (Ting 1968; eq. L18): q >= 0 in contact, the free surface not below the indenter outside.
     // From the last contact set, a cell is dropped while its line load is negative and added while the indenter
     // would penetrate it, never returning to a set already tried.
     // A force with no contact (`needs_contact`) adds the innermost cell.
-    std::vector<bool> tried(cells_ + 1, false);
+    std::fill(tried_.begin(), tried_.end(), false);
     std::size_t contact = contact_;
     double depth = 0.0;
     for (;;) {
         depth = load_for(contact);
         free_surface(contact, depth, 1);  // the free cell next to the contact decides
-        tried[contact] = true;
-        if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried[contact - 1]) {
+        tried_[contact] = true;
+        if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried_[contact - 1]) {
             --contact;
         } else if (contact < cells_ &&
                    (trial_displacement_[contact] < depth - profile_[contact] || (needs_contact && contact == 0)) &&
-                   !tried[contact + 1]) {
+                   !tried_[contact + 1]) {
             ++contact;
+            keep(contact + 1, dashpot);
         } else {
             break;
         }
@@ -218,7 +285,7 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     }
     LayerCellState state;
     for (std::size_t i = 0; i < contact; ++i) state.force += 2.0 * spacing_ * trial_load_[i];  // eq. L5
-    free_surface(contact, depth, cells_);  // every free cell's surface, for its branches
+    free_surface(contact, depth, kept_ - std::min(contact, kept_));  // every kept free cell's, for its branches
     // q/4 inside and minus the stiffness times the gap outside (E*/4 = the step's stiffness) meet with the same slope
     // at the edge (w1 jumps in slope by q'/E* there): one C1 function (eq. L19).
     const auto edge_function = [&](std::size_t i) {
@@ -246,15 +313,8 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     }
     axis_ = axis;
     state.depth = depth;
-    for (std::size_t i = 0; i < cells_; ++i) {
-        const double change = trial_displacement_[i] - displacement_[i];
-        for (std::size_t k = 0; k < branches; ++k) {
-            double& branch = branches_[i * branches + k];
-            branch = coefficients_.decay[k] * branch + coefficients_.gain[k] * change;
-        }
-    }
-    displacement_ = trial_displacement_;
-    stress_ = trial_stress_;
+    for (std::size_t i = 0; i < kept_; ++i) commit_cell(i, coefficients_.decay.data(), coefficients_.gain.data());
+    record(contact, dashpot);
     if (time_step > 0.0) {  // the indenter's rate the dashpots saw; unknown after a step without contact
         const double secant = (depth - depth_) / time_step;
         rate_ = contact > 0 ? std::optional<double>(start_rate ? 2.0 * secant - *start_rate : secant) : std::nullopt;

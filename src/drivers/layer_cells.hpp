@@ -77,6 +77,17 @@ private:
     // beyond), then w1 of the cells in contact (d - g) and of the first `free_cells` free cells beyond (O(m) each).
     void solve_load(std::size_t contact, double depth);
     void free_surface(std::size_t contact, double depth, std::size_t free_cells);
+    // The relaxed parts of cell i's Q/4 for a step of coefficients E_k = `decay`, B_k = `gain` and eta/dt =
+    // `dashpot` (relaxed_, free_relaxed_: eq. L16).
+    void prepare_cell(std::size_t i, const double* decay, const double* gain, double dashpot);
+    // Commits cell i's trial w1 and Q/4, its branches stepped by E_k = `decay`, B_k = `gain`.
+    void commit_cell(std::size_t i, const double* decay, const double* gain);
+    // Records a committed step (its coefficients, q on its `contact` cells) while cells are left out of the stepping.
+    void record(std::size_t contact, double dashpot);
+    // Steps the cells from kept_ up to `count` through the recorded steps, and keeps them (kept_ = count).
+    void catch_up(std::size_t count);
+    // catch_up, then the new kept cells' relaxed parts for the step being solved (eta/dt = `dashpot`).
+    void keep(std::size_t count, double dashpot);
     // Overwrites the first `contact` values, a right side, with the solution of (I - K) q = it on the contact's cells.
     void solve_contact(std::size_t contact, double* values) const;
     // q for Q = 4 on the contact set [0, contact) (its line load per unit of Q/4), solved once per set.
@@ -105,7 +116,15 @@ private:
     double dashpot_gain_ = 0.0;    // eta/dt times 2 (trapezoidal) or 1 (secant): the contact's dashpot per dd
     double dashpot_offset_ = 0.0;  // -eta rate0 (trapezoidal) or 0
     std::vector<double> relaxed_, free_relaxed_, trial_load_, trial_displacement_, trial_stress_;
+    std::vector<bool> tried_;                      // the contact sets tried in a step
     std::vector<std::vector<double>> unit_loads_;  // unit_load per contact set, empty until first needed
+    // A free cell's surface changes nothing until the contact reaches it, or its neighbour: only the cells [0, kept_)
+    // are stepped (kept_ >= the contact's cells + 1, and 2 for the axis), the others (at rest, free from the start)
+    // are stepped through the record of the steps when the contact comes near (catch_up). Per step: E_k, B_k,
+    // eta/dt and the free compliance; q of its contact's cells, from history_offsets_[t].
+    std::size_t kept_ = 0;
+    std::vector<double> history_steps_, history_loads_;
+    std::vector<std::size_t> history_offsets_;
 };
 
 }  // namespace mdr::drivers
