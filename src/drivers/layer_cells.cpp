@@ -70,8 +70,8 @@ void LayerCells::solve_contact(std::size_t contact, double* values) const {
         values[i] = (values[i] - earlier) * factored.inverse_diagonal[i];
     }
     for (std::size_t i = contact; i-- > 0;) {
-        const double later = numerics::dot_product(&factored.factor_transposed[i * cells_ + i + 1], &values[i + 1],
-                                                   contact - i - 1);
+        const double* row = factored.factor_transposed.data() + i * cells_;  // L^T_ik, k > i
+        const double later = numerics::dot_product(row + i + 1, values + i + 1, contact - i - 1);
         values[i] = (values[i] - later) * factored.inverse_diagonal[i];
     }
 }
@@ -193,7 +193,7 @@ void LayerCells::record(std::size_t contact, double dashpot) {
     history_loads_.insert(history_loads_.end(), trial_load_.begin(),
                           trial_load_.begin() + static_cast<std::ptrdiff_t>(contact));
     history_offsets_.push_back(history_loads_.size());
-    // The history's memory stays below the operator's: beyond that, every cell is kept from here on.
+    // The record stays below four times the operator's memory: beyond, every cell is stepped from here on.
     if (history_loads_.size() + history_steps_.size() > 4 * cells_ * cells_) catch_up(cells_);
 }
 
@@ -201,21 +201,24 @@ void LayerCells::catch_up(std::size_t count) {
     // Each cell beyond the kept ones has been free from the start, its Q = ((I - K) q)_i set by the contact's q
     // alone: stepped through the recorded steps exactly as the kept cells were (the same operations in the same
     // order, so the same numbers).
+    count = std::min(count, cells_);
+    if (count <= kept_) return;
     const std::size_t branches = material_->terms().size(), stride = 2 * branches + 2;
     const std::size_t steps = history_offsets_.size() - 1;
-    for (std::size_t i = kept_; i < std::min(count, cells_); ++i) {
+    for (std::size_t i = kept_; i < count; ++i) {
         for (std::size_t t = 0; t < steps; ++t) {
             const double* coefficients = &history_steps_[t * stride];
             const double *decay = coefficients, *gain = coefficients + branches;
             prepare_cell(i, decay, gain, coefficients[2 * branches]);
             const std::size_t begin = history_offsets_[t], contact = history_offsets_[t + 1] - begin;
-            const double load = numerics::dot_product(&operator_->matrix[i * cells_], &history_loads_[begin], contact);
+            const double* load_at_step = history_loads_.data() + begin;
+            const double load = numerics::dot_product(&operator_->matrix[i * cells_], load_at_step, contact);
             trial_stress_[i] = load / plane_modulus_per_shear;
             trial_displacement_[i] = (trial_stress_[i] - free_relaxed_[i]) * coefficients[2 * branches + 1];
             commit_cell(i, decay, gain);
         }
     }
-    kept_ = std::max(kept_, std::min(count, cells_));
+    kept_ = count;
     if (kept_ == cells_) {
         history_steps_ = {};
         history_loads_ = {};
