@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
-#include <stdexcept>
 
 #include "mdr/error.hpp"
+#include "../numerics/dot_product.hpp"
 
 namespace mdr::drivers {
 
@@ -24,9 +23,6 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
       cells_(cells),
       centre_(cells),
       profile_(cells),
-      operator_(cells * cells),
-      factor_(cells * cells, 0.0),
-      factor_transposed_(cells * cells, 0.0),
       displacement_(cells, 0.0),
       branches_(cells * material.terms().size(), 0.0),
       stress_(cells, 0.0),
@@ -34,10 +30,11 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
       free_relaxed_(cells, 0.0),
       trial_load_(cells, 0.0),
       trial_displacement_(cells, 0.0),
-      trial_stress_(cells, 0.0) {
+      trial_stress_(cells, 0.0),
+      tried_(cells + 1, false),
+      unit_loads_(cells + 1),
+      history_offsets_{0} {
     if (cells < 2) throw InvalidInput("numerics.elements", std::to_string(cells), "must be >= 2 on a layer");
-    const double h = layer.thickness;
-    const contact::LayerKernel kernel(layer.interface, poisson_ratio, 2.0 * width / h);
     for (std::size_t i = 0; i < cells; ++i) {
         centre_[i] = (static_cast<double>(i) + 0.5) * spacing_;
         profile_[i] = indenter.equivalent(centre_[i]);
@@ -46,39 +43,7 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
     if (profile_[1] != profile_[0]) {
         axis_weight_ = (indenter.equivalent(0.0) - profile_[0]) / (profile_[1] - profile_[0]);
     }
-    // (I - K)_ij = delta_ij - (dx/pi) [K(x_i - x_j) + K(x_i + x_j)], K(y) = k(y/h)/h (eq. L17 from L3, L4; midpoint
-    // rule).
-    for (std::size_t i = 0; i < cells; ++i) {
-        for (std::size_t j = 0; j <= i; ++j) {
-            const double coupling = spacing_ / std::numbers::pi *
-                                    (kernel((centre_[i] - centre_[j]) / h) + kernel((centre_[i] + centre_[j]) / h)) /
-                                    h;
-            operator_[i * cells + j] = operator_[j * cells + i] = (i == j ? 1.0 : 0.0) - coupling;
-        }
-    }
-    // Cholesky, I - K = L L^T: symmetric, and positive as its symbol L(xi h) > 0 is (eq. L1).
-    for (std::size_t j = 0; j < cells; ++j) {
-        double diagonal = operator_[j * cells + j];
-        for (std::size_t k = 0; k < j; ++k) diagonal -= factor_[j * cells + k] * factor_[j * cells + k];
-        if (!(diagonal > 0.0)) {
-            throw std::runtime_error("the layer's operator I - K is not positive definite on " +
-                                     std::to_string(cells) + " cells");
-        }
-        factor_[j * cells + j] = std::sqrt(diagonal);
-        for (std::size_t i = j + 1; i < cells; ++i) {
-            double value = operator_[i * cells + j];
-            for (std::size_t k = 0; k < j; ++k) value -= factor_[i * cells + k] * factor_[j * cells + k];
-            factor_[i * cells + j] = value / factor_[j * cells + j];
-        }
-    }
-    for (std::size_t i = 0; i < cells; ++i) {
-        for (std::size_t j = 0; j <= i; ++j) factor_transposed_[j * cells + i] = factor_[i * cells + j];
-    }
-}
-
-void LayerCells::solve(std::size_t contact, double depth, std::size_t free_cells) {
-    solve_load(contact, depth);
-    free_surface(contact, depth, free_cells);
+    operator_ = layer_operator(layer, poisson_ratio, width, cells);
 }
 
 double LayerCells::dashpot_stress(double depth) const {
@@ -86,21 +51,38 @@ double LayerCells::dashpot_stress(double depth) const {
 }
 
 void LayerCells::solve_load(std::size_t contact, double depth) {
-    // Inside: (I - K) q = Q = 4 (springs (d - g) + relaxed + eta rate) on the contact's cells, by the leading block
-    // of L (eq. L16 to L18; the dashpot sees the indenter's rate, w1 = d - g).
-    std::fill(trial_load_.begin(), trial_load_.end(), 0.0);
+    // Inside: (I - K) q = Q = 4 (springs (d - g) + relaxed + eta rate) on the contact's cells (eq. L16 to L18; the
+    // dashpot sees the indenter's rate, w1 = d - g).
     const double dashpot = dashpot_stress(depth);
     for (std::size_t i = 0; i < contact; ++i) {
         trial_stress_[i] = springs_ * (depth - profile_[i]) + relaxed_[i] + dashpot;
-        double value = plane_modulus_per_shear * trial_stress_[i];
-        for (std::size_t k = 0; k < i; ++k) value -= factor_[i * cells_ + k] * trial_load_[k];
-        trial_load_[i] = value / factor_[i * cells_ + i];
+        trial_load_[i] = plane_modulus_per_shear * trial_stress_[i];
+    }
+    std::fill(trial_load_.begin() + static_cast<std::ptrdiff_t>(contact), trial_load_.end(), 0.0);
+    solve_contact(contact, trial_load_.data());
+}
+
+void LayerCells::solve_contact(std::size_t contact, double* values) const {
+    // (I - K) on the contact's cells is the leading block of L L^T: a forward and a back substitution.
+    const auto& factored = *operator_;
+    for (std::size_t i = 0; i < contact; ++i) {
+        const double earlier = numerics::dot_product(&factored.factor[i * cells_], values, i);
+        values[i] = (values[i] - earlier) * factored.inverse_diagonal[i];
     }
     for (std::size_t i = contact; i-- > 0;) {
-        double value = trial_load_[i];
-        for (std::size_t k = i + 1; k < contact; ++k) value -= factor_transposed_[i * cells_ + k] * trial_load_[k];
-        trial_load_[i] = value / factor_[i * cells_ + i];
+        const double* row = factored.factor_transposed.data() + i * cells_;  // L^T_ik, k > i
+        const double later = numerics::dot_product(row + i + 1, values + i + 1, contact - i - 1);
+        values[i] = (values[i] - later) * factored.inverse_diagonal[i];
     }
+}
+
+const std::vector<double>& LayerCells::unit_load(std::size_t contact) {
+    auto& load = unit_loads_[contact];
+    if (load.empty()) {
+        load.assign(contact, plane_modulus_per_shear);
+        solve_contact(contact, load.data());
+    }
+    return load;
 }
 
 void LayerCells::free_surface(std::size_t contact, double depth, std::size_t free_cells) {
@@ -110,37 +92,48 @@ void LayerCells::free_surface(std::size_t contact, double depth, std::size_t fre
             trial_displacement_[i] = depth - profile_[i];
             continue;
         }
-        double load = 0.0;
-        for (std::size_t k = 0; k < contact; ++k) load += operator_[i * cells_ + k] * trial_load_[k];
+        const double load = numerics::dot_product(&operator_->matrix[i * cells_], trial_load_.data(), contact);
         trial_stress_[i] = load / plane_modulus_per_shear;
-        trial_displacement_[i] = (trial_stress_[i] - free_relaxed_[i]) / free_stiffness_;
+        trial_displacement_[i] = (trial_stress_[i] - free_relaxed_[i]) * free_compliance_;
     }
 }
 
 LayerCellState LayerCells::step(double time_step, double depth, std::optional<double> start_rate) {
-    return advance(time_step, [depth](std::size_t) { return depth; }, false, start_rate);
+    const auto load_for = [this, depth](std::size_t contact) {
+        solve_load(contact, depth);
+        return depth;
+    };
+    return advance(time_step, load_for, false, start_rate);
 }
 
 LayerCellState LayerCells::step_loaded(double time_step, double right_side, double spring_constant, double base) {
-    // F(d) + k d = right side. On a contact set q is affine in d (eq. L17, L18), so is F = F(0) + d (F(1) - F(0)).
+    // F(d) + k d = right side. On a contact set q is affine in d (eq. L17, L18): q(d) = q(0) + d slope u, u the
+    // solution for Q = 4 on the set (unit_load) and slope = d(Q/4)/dd there, so F = F(0) + d slope 2 dx sum u.
     // Without contact F = 0: a spring's indenter hangs at its base; under force control it rests on the free
     // surface at the axis, extrapolated linearly in g (the lambda of the axis, below eq. L19).
-    const auto depth_for = [&](std::size_t contact) {
+    const auto load_for = [&](std::size_t contact) {
+        solve_load(contact, 0.0);
         if (contact == 0) {
             if (spring_constant > 0.0) return base;
-            solve(0, 0.0, 2);
+            free_surface(0, 0.0, 2);
             const double inner = profile_[0] + trial_displacement_[0], next = profile_[1] + trial_displacement_[1];
             return inner + axis_weight_ * (next - inner);
         }
-        solve_load(contact, 0.0);
-        double at_zero = 0.0;
-        for (std::size_t i = 0; i < contact; ++i) at_zero += 2.0 * spacing_ * trial_load_[i];
-        solve_load(contact, 1.0);
-        double at_one = 0.0;
-        for (std::size_t i = 0; i < contact; ++i) at_one += 2.0 * spacing_ * trial_load_[i];
-        return (right_side - at_zero) / (at_one - at_zero + spring_constant);
+        const auto& unit = unit_load(contact);
+        const double slope = springs_ + dashpot_gain_;
+        double at_zero = 0.0, per_depth = 0.0;
+        for (std::size_t i = 0; i < contact; ++i) {
+            at_zero += 2.0 * spacing_ * trial_load_[i];
+            per_depth += 2.0 * spacing_ * slope * unit[i];
+        }
+        const double depth = (right_side - at_zero) / (per_depth + spring_constant);
+        for (std::size_t i = 0; i < contact; ++i) {
+            trial_load_[i] += depth * slope * unit[i];
+            trial_stress_[i] += slope * depth;
+        }
+        return depth;
     };
-    return advance(time_step, depth_for, spring_constant == 0.0 && right_side > 0.0, rate_);
+    return advance(time_step, load_for, spring_constant == 0.0 && right_side > 0.0, rate_);
 }
 
 double LayerCells::regain_fraction(double time_step, double depth, double axis) const {
@@ -163,12 +156,88 @@ double LayerCells::regain_fraction(double time_step, double depth, double axis) 
     return end > start ? std::clamp(start / (start - end), 0.0, 1.0) : 1.0;
 }
 
-template <class DepthRule>
-LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for, bool needs_contact,
-                                   std::optional<double> start_rate) {
-    foundation::fill_step_coefficients(*material_, time_step, coefficients_);
+void LayerCells::prepare_cell(std::size_t i, const double* decay, const double* gain, double dashpot) {
     const auto& terms = material_->terms();
     const std::size_t branches = terms.size();
+    double relaxed = 0.0, elastic = 0.0;
+    for (std::size_t k = 0; k < branches; ++k) {
+        const double branch = branches_[i * branches + k];
+        relaxed += terms[k].modulus * (decay[k] * branch - gain[k] * displacement_[i]);
+        elastic += terms[k].modulus * branch;
+    }
+    relaxed_[i] = relaxed;
+    free_relaxed_[i] = relaxed;
+    if (dashpot > 0.0) {  // - eta (2 w1_old / dt + rate0)
+        elastic += material_->equilibrium_modulus() * displacement_[i];
+        free_relaxed_[i] -= 2.0 * dashpot * displacement_[i] + (stress_[i] - elastic);
+    }
+}
+
+void LayerCells::commit_cell(std::size_t i, const double* decay, const double* gain) {
+    const std::size_t branches = material_->terms().size();
+    const double change = trial_displacement_[i] - displacement_[i];
+    for (std::size_t k = 0; k < branches; ++k) {
+        double& branch = branches_[i * branches + k];
+        branch = decay[k] * branch + gain[k] * change;
+    }
+    displacement_[i] = trial_displacement_[i];
+    stress_[i] = trial_stress_[i];
+}
+
+void LayerCells::record(std::size_t contact, double dashpot) {
+    if (kept_ == cells_) return;
+    history_steps_.insert(history_steps_.end(), coefficients_.decay.begin(), coefficients_.decay.end());
+    history_steps_.insert(history_steps_.end(), coefficients_.gain.begin(), coefficients_.gain.end());
+    history_steps_.push_back(dashpot);
+    history_steps_.push_back(free_compliance_);
+    history_loads_.insert(history_loads_.end(), trial_load_.begin(),
+                          trial_load_.begin() + static_cast<std::ptrdiff_t>(contact));
+    history_offsets_.push_back(history_loads_.size());
+    // The record stays below four times the operator's memory: beyond, every cell is stepped from here on.
+    if (history_loads_.size() + history_steps_.size() > 4 * cells_ * cells_) catch_up(cells_);
+}
+
+void LayerCells::catch_up(std::size_t count) {
+    // Each cell beyond the kept ones has been free from the start, its Q = ((I - K) q)_i set by the contact's q
+    // alone: stepped through the recorded steps exactly as the kept cells were (the same operations in the same
+    // order, so the same numbers).
+    count = std::min(count, cells_);
+    if (count <= kept_) return;
+    const std::size_t branches = material_->terms().size(), stride = 2 * branches + 2;
+    const std::size_t steps = history_offsets_.size() - 1;
+    for (std::size_t i = kept_; i < count; ++i) {
+        for (std::size_t t = 0; t < steps; ++t) {
+            const double* coefficients = &history_steps_[t * stride];
+            const double *decay = coefficients, *gain = coefficients + branches;
+            prepare_cell(i, decay, gain, coefficients[2 * branches]);
+            const std::size_t begin = history_offsets_[t], contact = history_offsets_[t + 1] - begin;
+            const double* load_at_step = history_loads_.data() + begin;
+            const double load = numerics::dot_product(&operator_->matrix[i * cells_], load_at_step, contact);
+            trial_stress_[i] = load / plane_modulus_per_shear;
+            trial_displacement_[i] = (trial_stress_[i] - free_relaxed_[i]) * coefficients[2 * branches + 1];
+            commit_cell(i, decay, gain);
+        }
+    }
+    kept_ = count;
+    if (kept_ == cells_) {
+        history_steps_ = {};
+        history_loads_ = {};
+        history_offsets_ = {};
+    }
+}
+
+void LayerCells::keep(std::size_t count, double dashpot) {
+    const std::size_t first = kept_;
+    catch_up(count);
+    for (std::size_t i = first; i < kept_; ++i) {
+        prepare_cell(i, coefficients_.decay.data(), coefficients_.gain.data(), dashpot);
+    }
+}
+
+template <class LoadRule>
+LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, bool needs_contact,
+                                   std::optional<double> start_rate) {
+    foundation::fill_step_coefficients(*material_, time_step, coefficients_);
     const double viscosity = material_->viscosity(), dashpot = time_step > 0.0 ? viscosity / time_step : 0.0;
     // Q/4 = G_inf w1 + sum_k G_k (E_k h_k + B_k (w1 - w1_old)) + eta dw1/dt = springs w1 + relaxed + eta dw1/dt
     // (eq. L16: exact for w1 linear over the step; foundation/step_coefficients.hpp). The dashpot's rate at the
@@ -177,39 +246,32 @@ LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for,
     // (G_inf w1 + sum_k G_k h_k) at the start (Q = ((I - K) q)_i, nonzero outside the contact on a layer).
     springs_ = coefficients_.stiffness - dashpot;
     free_stiffness_ = springs_ + 2.0 * dashpot;
+    free_compliance_ = 1.0 / free_stiffness_;
     dashpot_gain_ = (start_rate ? 2.0 : 1.0) * dashpot;
     dashpot_offset_ = start_rate && time_step > 0.0 ? -viscosity * *start_rate : 0.0;
-    for (std::size_t i = 0; i < cells_; ++i) {
-        double relaxed = 0.0, elastic = 0.0;
-        for (std::size_t k = 0; k < branches; ++k) {
-            const double branch = branches_[i * branches + k];
-            relaxed += terms[k].modulus * (coefficients_.decay[k] * branch - coefficients_.gain[k] * displacement_[i]);
-            elastic += terms[k].modulus * branch;
-        }
-        relaxed_[i] = relaxed;
-        free_relaxed_[i] = relaxed;
-        if (dashpot > 0.0) {  // - eta (2 w1_old / dt + rate0)
-            elastic += material_->equilibrium_modulus() * displacement_[i];
-            free_relaxed_[i] -= 2.0 * dashpot * displacement_[i] + (stress_[i] - elastic);
-        }
+    // The kept cells (keep) step here; the others, free from the start and not yet needed, later (catch_up).
+    for (std::size_t i = 0; i < kept_; ++i) {
+        prepare_cell(i, coefficients_.decay.data(), coefficients_.gain.data(), dashpot);
     }
+    keep(std::max<std::size_t>(contact_ + 1, 2), dashpot);
     // Complementarity (Ting 1968; eq. L18): q >= 0 in contact, the free surface not below the indenter outside.
     // From the last contact set, a cell is dropped while its line load is negative and added while the indenter
     // would penetrate it, never returning to a set already tried.
     // A force with no contact (`needs_contact`) adds the innermost cell.
-    std::vector<bool> tried(cells_ + 1, false);
+    std::fill(tried_.begin(), tried_.end(), false);
     std::size_t contact = contact_;
     double depth = 0.0;
     for (;;) {
-        depth = depth_for(contact);
-        solve(contact, depth, 1);  // the free cell next to the contact decides
-        tried[contact] = true;
-        if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried[contact - 1]) {
+        depth = load_for(contact);
+        free_surface(contact, depth, 1);  // the free cell next to the contact decides
+        tried_[contact] = true;
+        if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried_[contact - 1]) {
             --contact;
         } else if (contact < cells_ &&
                    (trial_displacement_[contact] < depth - profile_[contact] || (needs_contact && contact == 0)) &&
-                   !tried[contact + 1]) {
+                   !tried_[contact + 1]) {
             ++contact;
+            keep(contact + 1, dashpot);
         } else {
             break;
         }
@@ -226,7 +288,7 @@ LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for,
     }
     LayerCellState state;
     for (std::size_t i = 0; i < contact; ++i) state.force += 2.0 * spacing_ * trial_load_[i];  // eq. L5
-    free_surface(contact, depth, cells_);  // every free cell's surface, for its branches
+    free_surface(contact, depth, kept_ - std::min(contact, kept_));  // every kept free cell's, for its branches
     // q/4 inside and minus the stiffness times the gap outside (E*/4 = the step's stiffness) meet with the same slope
     // at the edge (w1 jumps in slope by q'/E* there): one C1 function (eq. L19).
     const auto edge_function = [&](std::size_t i) {
@@ -254,15 +316,8 @@ LayerCellState LayerCells::advance(double time_step, const DepthRule& depth_for,
     }
     axis_ = axis;
     state.depth = depth;
-    for (std::size_t i = 0; i < cells_; ++i) {
-        const double change = trial_displacement_[i] - displacement_[i];
-        for (std::size_t k = 0; k < branches; ++k) {
-            double& branch = branches_[i * branches + k];
-            branch = coefficients_.decay[k] * branch + coefficients_.gain[k] * change;
-        }
-    }
-    displacement_ = trial_displacement_;
-    stress_ = trial_stress_;
+    for (std::size_t i = 0; i < kept_; ++i) commit_cell(i, coefficients_.decay.data(), coefficients_.gain.data());
+    record(contact, dashpot);
     if (time_step > 0.0) {  // the indenter's rate the dashpots saw; unknown after a step without contact
         const double secant = (depth - depth_) / time_step;
         rate_ = contact > 0 ? std::optional<double>(start_rate ? 2.0 * secant - *start_rate : secant) : std::nullopt;

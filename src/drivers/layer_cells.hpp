@@ -6,6 +6,7 @@
 // shear modulus, eq. 56); the contact set by complementarity each step.
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <span>
 #include <utility>
@@ -15,6 +16,7 @@
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/profile/profile.hpp"
 #include "mdr/rheology/rheology.hpp"
+#include "layer_operator.hpp"
 
 namespace mdr::drivers {
 
@@ -42,7 +44,8 @@ public:
     /// `cells` (>= 2) uniform cells on [0, width] (width > 0 [m], at least the widest contact; a flat punch: its
     /// radius), the layer's kernel of the body's constant Poisson ratio (layer_poisson_ratio; `material` is then the
     /// effective shear material, E* = 4 G) tabulated on [0, 2 width / h] and I - K factored once (Cholesky: its
-    /// leading blocks factor every contact set).
+    /// leading blocks factor every contact set; layer_operator, kept for the thread's next LayerCells on the same
+    /// layer and cells).
     LayerCells(const rheology::Rheology& material, const contact::Layer& layer, double poisson_ratio,
                const profile::Profile& indenter, double width, std::size_t cells);
     /// Steps by `time_step` >= 0 [s] with the depth linear over it to `depth` [m]. A parallel dashpot (eq. L16 with
@@ -67,31 +70,43 @@ public:
     std::span<const double> surface() const { return displacement_; }
 
 private:
-    // One step: `depth_for(m)` gives the depth for the contact set [0, m); `needs_contact`: a force without contact.
-    // `start_rate`: the indenter's rate at the step's start that its dashpot term takes (trapezoidal), or none (the
-    // secant rate).
-    template <class DepthRule>
-    LayerCellState advance(double time_step, const DepthRule& depth_for, bool needs_contact,
+    // One step: `load_for(m)` solves q on the contact set [0, m) (solve_load) and gives its depth; `needs_contact`: a
+    // force without contact. `start_rate`: the indenter's rate at the step's start that its dashpot term takes
+    // (trapezoidal), or none (the secant rate).
+    template <class LoadRule>
+    LayerCellState advance(double time_step, const LoadRule& load_for, bool needs_contact,
                            std::optional<double> start_rate);
     // eta times the indenter's rate at the step's end, at the end depth `depth` (eq. L16 in contact: w1 = d - g).
     double dashpot_stress(double depth) const;
     // The fraction of a step of `time_step` [s] to `depth` [m] at which the axis touches again, the edge function at
     // the axis `axis` at its end (committed state: its start).
     double regain_fraction(double time_step, double depth, double axis) const;
-    // q of the contact set [0, contact) for the step's coefficients and depth, and w1 of the first `free_cells`
-    // free cells beyond (O(m^2) for m cells in contact, and O(m) a free cell).
-    void solve(std::size_t contact, double depth, std::size_t free_cells);
-    // The two parts of solve: q on the contact set, then w1 (d - g inside).
+    // q of the contact set [0, contact) for the step's coefficients and depth (O(m^2) for m cells in contact; zero
+    // beyond), then w1 of the cells in contact (d - g) and of the first `free_cells` free cells beyond (O(m) each).
     void solve_load(std::size_t contact, double depth);
     void free_surface(std::size_t contact, double depth, std::size_t free_cells);
+    // The relaxed parts of cell i's Q/4 for a step of coefficients E_k = `decay`, B_k = `gain` and eta/dt =
+    // `dashpot` (relaxed_, free_relaxed_: eq. L16).
+    void prepare_cell(std::size_t i, const double* decay, const double* gain, double dashpot);
+    // Commits cell i's trial w1 and Q/4, its branches stepped by E_k = `decay`, B_k = `gain`.
+    void commit_cell(std::size_t i, const double* decay, const double* gain);
+    // Records a committed step (its coefficients, q on its `contact` cells) while cells are left out of the stepping.
+    void record(std::size_t contact, double dashpot);
+    // Steps the cells from kept_ up to `count` through the recorded steps, and keeps them (kept_ = count).
+    void catch_up(std::size_t count);
+    // catch_up, then the new kept cells' relaxed parts for the step being solved (eta/dt = `dashpot`).
+    void keep(std::size_t count, double dashpot);
+    // Overwrites the first `contact` values, a right side, with the solution of (I - K) q = it on the contact's cells.
+    void solve_contact(std::size_t contact, double* values) const;
+    // q for Q = 4 on the contact set [0, contact) (its line load per unit of Q/4), solved once per set.
+    const std::vector<double>& unit_load(std::size_t contact);
 
     const rheology::Rheology* material_;
     bool flat_punch_;
     double spacing_;
     std::size_t cells_;
     std::vector<double> centre_, profile_;  // x_i, g(x_i)
-    std::vector<double> operator_, factor_; // I - K (midpoint rule) and its Cholesky factor L, row-major
-    std::vector<double> factor_transposed_; // L^T, row-major (the back substitution reads rows)
+    std::shared_ptr<const LayerOperator> operator_;  // I - K and its Cholesky factor
     std::vector<double> displacement_;      // w1_i, committed
     std::vector<double> branches_;          // h_ki, per cell its branches together
     std::vector<double> stress_;            // Q_i / 4 = ((I - K) q)_i / 4, committed (a free cell's dashpot rate)
@@ -105,9 +120,19 @@ private:
     foundation::StepCoefficients coefficients_;
     double springs_ = 0.0;         // G_inf + sum_k G_k B_k: Q/4 per w1 in contact, the dashpot apart
     double free_stiffness_ = 0.0;  // springs + 2 eta/dt: a free cell's Q/4 per w1 (trapezoidal rate)
+    double free_compliance_ = 0.0; // 1 / free_stiffness
     double dashpot_gain_ = 0.0;    // eta/dt times 2 (trapezoidal) or 1 (secant): the contact's dashpot per dd
     double dashpot_offset_ = 0.0;  // -eta rate0 (trapezoidal) or 0
     std::vector<double> relaxed_, free_relaxed_, trial_load_, trial_displacement_, trial_stress_;
+    std::vector<bool> tried_;                      // the contact sets tried in a step
+    std::vector<std::vector<double>> unit_loads_;  // unit_load per contact set, empty until first needed
+    // A free cell's surface changes nothing until the contact reaches it, or its neighbour: only the cells [0, kept_)
+    // are stepped (kept_ >= the contact's cells + 1, and 2 for the axis), the others (at rest, free from the start)
+    // are stepped through the record of the steps when the contact comes near (catch_up). Per step: E_k, B_k,
+    // eta/dt and the free compliance; q of its contact's cells, from history_offsets_[t].
+    std::size_t kept_ = 0;
+    std::vector<double> history_steps_, history_loads_;
+    std::vector<std::size_t> history_offsets_;
 };
 
 }  // namespace mdr::drivers
