@@ -43,8 +43,8 @@ const char* quantity_name(const fit::CurveFit& curve) {
 std::string load_of_curve(const fit::CurveFit& curve) {
     const bool depth_driven = curve.fitted == fit::Fitted::force;
     std::string history;
-    for (const auto& [time, drive] : curve.history) {
-        history += fmt::format("{}[{}, {}]", history.empty() ? "" : ", ", time, drive);
+    for (const auto& [at, drive] : curve.history) {
+        history += fmt::format("{}[{}, {}]", history.empty() ? "" : ", ", at, drive);
     }
     return fmt::format("control = \"{}\"\nhistory = [{}]\n", depth_driven ? "displacement" : "force", history);
 }
