@@ -1,4 +1,5 @@
-// select_rows: the rows of a curve that enter the fit's residual (`[[fit.data]] window` and `until`), and the retract's adhesion.
+// select_rows: the rows of a curve that enter the fit's residual (`[[fit.data]] window` and `until`), and the
+// retract's adhesion.
 
 #include <fmt/format.h>
 
@@ -95,8 +96,9 @@ void select_rows(Curve& curve, const RowSelection& selection) {
     }
     // The rows in the residual: before the cut of `until` and inside every window. The model is driven by the record
     // from its first row, whatever the window: the force at a row depends on the whole history since the contact
-    // (eq. 16, 18), and the contact and baseline estimates are the whole record's. Only the rows after the last row
-    // kept are dropped from the record: they come after every row the residual holds, and the model is causal.
+    // (Lee & Radok's hereditary integral), and the contact and baseline estimates are the whole record's. Only the
+    // rows after the last row kept are dropped from the record: they come after every row the residual holds, and
+    // the model is causal.
     std::vector<std::size_t> kept;
     for (std::size_t i = 0; i < end; ++i) {
         if (inside(selection.time, curve.time[i]) && inside(selection.depth, curve.depth[i]) &&

@@ -144,9 +144,9 @@ inline constexpr double adhesion_deviations = 5.0;
 /// rows outside a window. The rows after the last row kept are dropped from the record (the model is causal: they
 /// change no kept row); the rows before it stay and drive the model, those left out listed by their absence from
 /// Curve::residual_rows. The estimates stay the whole record's. Curve::rows_left_out counts the rows left out;
-/// Curve::notes says why, with the numbers. Throws mdr::InvalidInput (key `window` or `until`) when fewer than minimum_curve_rows rows are
-/// left, or `until = "pull_off"` on a curve with no baseline estimate; a window's lower bound must be below its
-/// upper (key `window.time`, ...).
+/// Curve::notes says why, with the numbers. Throws mdr::InvalidInput (key `window` or `until`) when fewer than
+/// minimum_curve_rows rows are left, or `until = "pull_off"` on a curve with no baseline estimate; a window's lower
+/// bound must be below its upper (key `window.time`, ...).
 void select_rows(Curve& curve, const RowSelection& selection);
 
 /// The depth and force of a raw AFM curve.
