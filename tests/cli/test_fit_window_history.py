@@ -167,3 +167,17 @@ def test_a_windowed_fit_costs_no_more_model_runs_than_the_whole_curve(run_case, 
     whole = fit(run_case, workdir, record)
     windowed = fit(run_case, workdir, record, "window = { force = [-1.0, 15.0] }")
     assert windowed["evaluations"] <= whole["evaluations"] + 5, (windowed["evaluations"], whole["evaluations"])
+
+
+# A window of rows before contact alone: refused with one line naming the curve, what was fitted and what was left
+# out (before, "the curve never makes contact" said nothing of the window), and nothing written.
+@pytest.mark.parametrize("record, settings", [(relaxation_record, ""), (creep_record, 'fitted = "depth"')])
+def test_a_window_before_contact_is_refused_naming_the_rows_fitted(run_case, workdir, record, settings):
+    write_record(workdir / "record.csv", *record())
+    result = run_case(CASE.format(window="window = { time = [0.0, 0.4] }", settings=settings), command="fit",
+                      extra_args=("--out", "out"))
+    assert result.returncode == 2
+    assert len(result.stderr_lines) == 1, result.stderr
+    assert "fit.data[0]" in result.stderr and "never makes contact (81 rows fitted, 1120 left out by the window" \
+        in result.stderr, result.stderr
+    assert not (workdir / "out").exists()
