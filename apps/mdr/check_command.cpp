@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "fit_preparation.hpp"
+#include "mdr/fit/curve.hpp"
 #include "mdr/io/case_file.hpp"
 #include "setup_progress.hpp"
 
@@ -21,7 +22,7 @@ std::string describe(const PreparedFit& prepared) {
     std::vector<std::string> free;
     for (const auto& parameter : fit_case.parameters) free.push_back(parameter.name);
     std::size_t points = 0;
-    for (const auto& curve : prepared.problem.curves) points += curve.time.size();
+    for (const auto& curve : prepared.problem.curves) points += fit::residual_row_count(curve);
     std::string models;
     if (!fit_case.model_choice.candidates.empty()) {
         models = fmt::format("; candidates {}", fmt::join(fit_case.model_choice.candidates, ", "));

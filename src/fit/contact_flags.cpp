@@ -164,9 +164,10 @@ void flag_contact_and_baseline(const FitProblem& problem, FitResult& result) {
         }
         flag_contact(problem, curve, fitted);
         flag_baseline(problem, curve, fitted);
+        // The record's deepest row, which drives the model whether or not a window fits it.
         const double deepest = fitted.drive.empty() || fitted.fitted != Fitted::force
                                    ? 0.0
-                                   : *std::max_element(fitted.drive.begin(), fitted.drive.end());
+                                   : *std::max_element(curve.depth.begin(), curve.depth.end()) - fitted.contact_depth;
         if (thickness && deepest >= *thickness) {
             fitted.flags.push_back(fmt::format(
                 "the depth below the contact point reaches {:.6g}, not less than the layer's thickness {:.6g}: a "

@@ -17,6 +17,10 @@ std::string curve_value_rule() {
            format_value(largest_curve_value) + " (the fit squares and sums the values)";
 }
 
+std::size_t residual_row_count(const Curve& curve) {
+    return curve.residual_rows.empty() ? curve.time.size() : curve.residual_rows.size();
+}
+
 Curve checked_curve(std::string name, std::vector<double> time, std::vector<double> depth, std::vector<double> force,
                     const std::string& origin, const RowLocation& where) {
     const std::size_t rows = time.size();

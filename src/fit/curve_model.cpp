@@ -25,8 +25,13 @@ CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline) {
     for (double value : measured) largest = std::max(largest, std::abs(value));
     prepared.noise = std::max(prepared.noise, 1e-12 * largest);
     const double force_noise = curve.force_noise > 0.0 ? curve.force_noise : difference_noise(curve.force, 0, curve.force.size());
-    for (std::size_t i = 0; i < curve.time.size(); ++i) {
+    const auto use = [&](std::size_t i) {
         if (fitted == Fitted::force || curve.force[i] - baseline > 3.0 * force_noise) prepared.used.push_back(i);
+    };
+    if (curve.residual_rows.empty()) {
+        for (std::size_t i = 0; i < curve.time.size(); ++i) use(i);
+    } else {
+        for (std::size_t i : curve.residual_rows) use(i);
     }
     return prepared;
 }

@@ -166,7 +166,7 @@ void validate(const FitProblem& problem) {
                                    (problem.settings.contact_point == ContactPointMode::fit ? problem.curves.size() : 0) +
                                    (problem.settings.baseline == BaselineMode::fit ? problem.curves.size() : 0);
     std::size_t points = 0;
-    for (const auto& curve : problem.curves) points += curve.time.size();
+    for (const auto& curve : problem.curves) points += residual_row_count(curve);
     for (const auto& rebound : problem.rebounds) points += rebound.restitution.size() + rebound.contact_time.size();
     if (points <= free_count) {
         throw InvalidInput("fit.data", fmt::format("{} points", points),
@@ -219,6 +219,14 @@ void silence_solver_log() {
     static_cast<void>(silenced);
 }
 
+// What a fit saw of a curve whose rows select_rows left out: " (N rows fitted, M left out by the window or until)",
+// "" for a whole curve.
+std::string rows_fitted(const Curve& curve) {
+    if (curve.rows_left_out == 0) return "";
+    return fmt::format(" ({} rows fitted, {} left out by the window or until)", residual_row_count(curve),
+                       curve.rows_left_out);
+}
+
 // The rules that need a curve's model: its fitted quantity has a noise > 0 (the residuals' weight 1 / noise is
 // finite: not 0 in every row), and a depth-driven curve reaches past its start contact point (else the model's
 // force is 0 at every point whatever the parameters). Keys name the curve as fit.data[c].
@@ -232,8 +240,8 @@ void require_fittable(const Curve& curve, const CurveCost& cost, const double* n
     const double contact = cost.contact_depth(nuisance);
     if (force_fitted && !(*std::max_element(curve.depth.begin(), curve.depth.end()) > contact)) {
         throw InvalidInput(fmt::format("fit.data[{}]", c), curve.name,
-                           fmt::format("the curve never makes contact: no depth passes its contact point {}",
-                                       format_value(contact)));
+                           fmt::format("the curve never makes contact{}: no depth passes its contact point {}",
+                                       rows_fitted(curve), format_value(contact)));
     }
 }
 
@@ -316,7 +324,8 @@ FitResult solve(const FitProblem& problem) {
         const double baseline = held_baseline(problem.settings, curve);
         prepared.push_back(prepare_curve(curve, fitted_of(problem, c), baseline));
         if (prepared.back().used.empty()) {
-            throw InvalidInput(fmt::format("fit.data[{}]", c), curve.name, "the curve never makes contact");
+            throw InvalidInput(fmt::format("fit.data[{}]", c), curve.name,
+                               "the curve never makes contact" + rows_fitted(curve));
         }
         if (scales.fit_contact) {
             const auto bounds = contact_bounds(problem, c);

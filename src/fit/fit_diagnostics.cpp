@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -131,6 +132,20 @@ CurveFit rebound_entry(const ReboundData& data, ReboundQuantity quantity, const 
     return entry;
 }
 
+// CurveFit::history of the record `data`: every stride-th row and its last, with what drove the model there.
+std::vector<std::array<double, 2>> driving_history(const Curve& data, bool force_fitted, double contact_depth,
+                                                   double baseline) {
+    const std::size_t rows = data.time.size();
+    const std::size_t stride = std::max<std::size_t>(1, rows / history_points);
+    std::vector<std::array<double, 2>> history;
+    for (std::size_t i = 0; i < rows; i += stride) {
+        const std::size_t row = i + stride >= rows ? rows - 1 : i;
+        history.push_back({data.time[row], force_fitted ? data.depth[row] - contact_depth
+                                                        : std::max(data.force[row] - baseline, 0.0)});
+    }
+    return history;
+}
+
 // Fills result.curves (data, model, residual RMS, lag-1 correlation and effective points of each measured curve;
 // the rebound data's entries) and gathers the summary of the weighted Jacobian and residuals at the optimum, one
 // curve at a time: no N x p copy of the Jacobian (docs/performance.md, "Memory of a fit"). A curve's errors are
@@ -176,6 +191,7 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
             curve.drive.push_back(force_fitted ? data.depth[row] - curve.contact_depth
                                                : std::max(data.force[row] - curve.baseline, 0.0));
         }
+        curve.history = driving_history(data, force_fitted, curve.contact_depth, curve.baseline);
         curve.rms_residual = root_mean_square(
             n, [&](std::size_t i) { return curve.model[i] - curve.measured[i]; }, [](std::size_t) { return 1.0; });
         const double phi = above_model_accuracy(curve)

@@ -1,9 +1,11 @@
-// select_rows: the rows of a curve that the fit keeps (`[[fit.data]] window` and `until`), and the retract's adhesion.
+// select_rows: the rows of a curve that enter the fit's residual (`[[fit.data]] window` and `until`), and the
+// retract's adhesion.
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "mdr/error.hpp"
 #include "mdr/fit/curve.hpp"
@@ -92,34 +94,35 @@ void select_rows(Curve& curve, const RowSelection& selection) {
                                     "fitted through (until = \"end\"): the model has no adhesion",
                                     curve.adhesion.pull_off_force, curve.adhesion.work));
     }
-    std::vector<double> time, depth, force;
+    // The rows in the residual: before the cut of `until` and inside every window. The model is driven by the record
+    // from its first row, whatever the window: the force at a row depends on the whole history since the contact
+    // (Lee & Radok's hereditary integral), and the contact and baseline estimates are the whole record's. Only the
+    // rows after the last row kept are dropped from the record: they come after every row the residual holds, and
+    // the model is causal.
+    std::vector<std::size_t> kept;
     for (std::size_t i = 0; i < end; ++i) {
-        if (!inside(selection.time, curve.time[i]) || !inside(selection.depth, curve.depth[i]) ||
-            !inside(selection.force, curve.force[i])) {
-            continue;
+        if (inside(selection.time, curve.time[i]) && inside(selection.depth, curve.depth[i]) &&
+            inside(selection.force, curve.force[i])) {
+            kept.push_back(i);
         }
-        time.push_back(curve.time[i]);
-        depth.push_back(curve.depth[i]);
-        force.push_back(curve.force[i]);
     }
-    const std::size_t windowed = end - time.size();
-    if (windowed > 0) notes.push_back(fmt::format("{} rows outside the window are left out", windowed));
-    if (time.size() < minimum_curve_rows) {
+    const std::size_t windowed = end - kept.size();
+    if (windowed > 0) {
+        notes.push_back(fmt::format("{} rows outside the window are left out of the residual (the model is still "
+                                    "driven by every row up to the last one fitted)",
+                                    windowed));
+    }
+    if (kept.size() < minimum_curve_rows) {
         const bool by_window = selection.time || selection.depth || selection.force;
-        throw InvalidInput(by_window ? "window" : "until", fmt::format("{} rows kept", time.size()),
+        throw InvalidInput(by_window ? "window" : "until", fmt::format("{} rows kept", kept.size()),
                            fmt::format("a curve needs at least {} rows", minimum_curve_rows));
     }
-    if (time.size() == rows) {
-        curve.notes.insert(curve.notes.end(), notes.begin(), notes.end());
-        return;
-    }
-    curve.time = std::move(time);
-    curve.depth = std::move(depth);
-    curve.force = std::move(force);
-    curve.rows_left_out += rows - curve.time.size();
-    const Adhesion adhesion = curve.adhesion;
-    estimate_contact(curve);
-    curve.adhesion = adhesion;
+    const std::size_t record = kept.back() + 1;
+    curve.time.resize(record);
+    curve.depth.resize(record);
+    curve.force.resize(record);
+    curve.rows_left_out += rows - kept.size();
+    if (kept.size() < record) curve.residual_rows = std::move(kept);
     curve.notes.insert(curve.notes.end(), notes.begin(), notes.end());
 }
 

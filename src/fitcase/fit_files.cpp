@@ -39,16 +39,12 @@ const char* quantity_name(const fit::CurveFit& curve) {
     return curve.fitted == fit::Fitted::force ? "force" : "depth";
 }
 
-// A driving history as a `[load]` body: at most about 400 points, the contact point removed.
+// A driving history as a `[load]` body (CurveFit::history: the whole record's, the contact point removed).
 std::string load_of_curve(const fit::CurveFit& curve) {
     const bool depth_driven = curve.fitted == fit::Fitted::force;
     std::string history;
-    const std::size_t stride = std::max<std::size_t>(1, curve.time.size() / 400);
-    for (std::size_t i = 0; i < curve.time.size(); i += stride) {
-        const bool last = i + stride >= curve.time.size();
-        const std::size_t k = last ? curve.time.size() - 1 : i;
-        history += fmt::format("{}[{}, {}]", history.empty() ? "" : ", ", curve.time[k], curve.drive[k]);
-        if (last) break;
+    for (const auto& [at, drive] : curve.history) {
+        history += fmt::format("{}[{}, {}]", history.empty() ? "" : ", ", at, drive);
     }
     return fmt::format("control = \"{}\"\nhistory = [{}]\n", depth_driven ? "displacement" : "force", history);
 }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -109,6 +110,7 @@ PixelFit fit_map_pixel(const FitCase& fit_case, const std::filesystem::path& pat
             for (std::vector<double>* points : {&curve.time, &curve.measured, &curve.model, &curve.drive}) {
                 std::vector<double>().swap(*points);
             }
+            std::vector<std::array<double, 2>>().swap(curve.history);
         }
         pixel.result = std::move(result);
     } catch (const Interrupted&) {

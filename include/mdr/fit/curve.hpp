@@ -26,8 +26,9 @@ enum class Until {
     end,        ///< every row, an adhesive retract included (`"end"`: the user asks for it)
 };
 
-/// The rows of a curve that the fit keeps (`[[fit.data]] window` and `until`), in the case's units: a row is kept
-/// when it lies inside every window given and before the cut of `until` (select_rows).
+/// The rows of a curve whose fitted quantity enters the residual (`[[fit.data]] window` and `until`), in the case's
+/// units: a row is kept when it lies inside every window given and before the cut of `until` (select_rows). The
+/// model is driven by every row of the record up to the last row kept, those outside the window included.
 struct RowSelection {
     std::optional<std::array<double, 2>> time{};   ///< `window.time = [t0, t1]`
     std::optional<std::array<double, 2>> depth{};  ///< `window.depth = [d0, d1]`, in the data's depth
@@ -102,7 +103,10 @@ struct Curve {
     /// baseline plus G_inf F_el(d_0) (docs/theory.md §4d).
     bool preloaded = false;
     Adhesion adhesion{};            ///< the retract's adhesion, measured on the whole record (select_rows)
-    std::size_t rows_left_out = 0;  ///< rows of the record that select_rows left out
+    std::size_t rows_left_out = 0;  ///< rows of the record that select_rows left out of the residual
+    /// The rows whose fitted quantity enters the residual (select_rows' windows), increasing; empty: every row. The
+    /// other rows still drive the model: the force at a row depends on the whole history since the contact.
+    std::vector<std::size_t> residual_rows{};
     /// What reading the curve did that a user must know (select_rows: rows left out and why); the fit adds them to
     /// CurveFit::flags.
     std::vector<std::string> notes{};
@@ -112,8 +116,11 @@ struct Curve {
     std::string file_without_time;
 };
 
-/// The fewest rows a curve may have (after the segment selection).
+/// The fewest rows a curve may have (after the segment selection), and the fewest its residual may hold.
 inline constexpr std::size_t minimum_curve_rows = 10;
+
+/// The number of rows of `curve` in the residual: Curve::residual_rows, or every row when it is empty.
+std::size_t residual_row_count(const Curve& curve);
 
 /// Reads and validates a curve from its CSV source and estimates its noise, contact point and baseline
 /// (estimate_contact). Throws mdr::InvalidInput naming the file, column and row for a missing file or column,
@@ -130,14 +137,16 @@ Curve load_curve(const CurveSource& source);
 /// select_rows: a retract whose force falls more than this many noise deviations below the baseline is adhesive.
 inline constexpr double adhesion_deviations = 5.0;
 
-/// Keeps the rows of `curve` (estimated on its whole record) that `selection` selects and estimates it again
-/// (estimate_contact). First the retract (the rows after the first deepest row) is measured for adhesion
-/// (Curve::adhesion) against the baseline line through the rows before contact; then, with Until::pull_off, or
-/// Until::automatic on an adhesive retract, the rows from the first retract row whose force is below that line
-/// on are left out; then the rows outside a window. Curve::rows_left_out counts them; Curve::notes says why, with
-/// the numbers. Throws mdr::InvalidInput (key `window` or `until`) when fewer than minimum_curve_rows rows are
-/// left, or `until = "pull_off"` on a curve with no baseline estimate; a window's lower bound must be below its
-/// upper (key `window.time`, ...).
+/// Selects the rows of `curve` (estimated on its whole record: estimate_contact) whose fitted quantity enters the
+/// residual. First the retract (the rows after the first deepest row) is measured for adhesion (Curve::adhesion)
+/// against the baseline line through the rows before contact; then, with Until::pull_off, or Until::automatic on an
+/// adhesive retract, the rows from the first retract row whose force is below that line on are left out; then the
+/// rows outside a window. The rows after the last row kept are dropped from the record (the model is causal: they
+/// change no kept row); the rows before it stay and drive the model, those left out listed by their absence from
+/// Curve::residual_rows. The estimates stay the whole record's. Curve::rows_left_out counts the rows left out;
+/// Curve::notes says why, with the numbers. Throws mdr::InvalidInput (key `window` or `until`) when fewer than
+/// minimum_curve_rows rows are left, or `until = "pull_off"` on a curve with no baseline estimate; a window's lower
+/// bound must be below its upper (key `window.time`, ...).
 void select_rows(Curve& curve, const RowSelection& selection);
 
 /// The depth and force of a raw AFM curve.

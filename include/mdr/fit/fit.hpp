@@ -126,6 +126,10 @@ enum class ReboundQuantity {
     contact_time,  ///< the contact time T [s]
 };
 
+/// The most points of CurveFit::history, about (every k-th row of the record, k = max(1, rows / history_points), and
+/// its last).
+inline constexpr std::size_t history_points = 400;
+
 /// One curve's data, model and residual at the points used by the fit; or one quantity of a rebound data set (its
 /// `time` then holds the approach speeds v0 [m/s], `drive` is empty, contact point and baseline are 0).
 struct CurveFit {
@@ -136,6 +140,10 @@ struct CurveFit {
     std::vector<double> model;      ///< model of the same quantity, baseline and contact point included
     std::vector<double> drive;      ///< what drove the model: depth below the contact point [m], or force above
                                     ///< the baseline [N] (0 below it)
+    /// The model's whole driving history as (t, drive) pairs, every row of the record from its first up to the last
+    /// fitted (rows a window leaves out of the residual included), thinned to at most about history_points
+    /// (fitted.toml's `[load]` history); empty for rebound data.
+    std::vector<std::array<double, 2>> history{};
     double contact_depth = 0.0;     ///< the contact point used [m]
     double contact_depth_error = 0.0;  ///< its standard error [m] (0 unless fitted)
     /// The preload depth d_0 = first depth - contact point [m] of a curve with `start = "preloaded"` (Curve::preloaded;

@@ -99,22 +99,37 @@ TEST(RowSelection, UntilPullOffWithoutAdhesion) {
     EXPECT_TRUE(has_note(curve, "until = \"pull_off\"")) << notes_of(curve);
 }
 
-// A time window keeps the rows inside it (ends included); a depth and a force window likewise; too few rows and a
-// reversed window are refused naming the key.
+// A window selects the rows of the residual (ends included); the record stays whole up to the last row selected
+// (the model is driven by it: the force at a row depends on the history since the contact), and the contact and
+// baseline estimates stay the whole record's. Too few rows and a reversed window are refused naming the key.
 TEST(RowSelection, Windows) {
-    Curve curve = retract_record(0.0);
+    const Curve whole = retract_record(0.0);
+    Curve curve = whole;
     select_rows(curve, {.time = std::array<double, 2>{1.0, 2.0}, .until = Until::end});
-    EXPECT_NEAR(static_cast<double>(curve.time.size()), 1001.0, 1.0);
-    EXPECT_NEAR(curve.time.front(), 1.0, 1e-3);
+    ASSERT_EQ(curve.time.size(), 2001u);  // rows at t = 0, 1 ms, ..., 2 s: every row up to the window's end
+    EXPECT_EQ(curve.time.front(), 0.0);
+    ASSERT_EQ(curve.residual_rows.size(), 1001u);  // t = 1 s to 2 s
+    EXPECT_NEAR(curve.time[curve.residual_rows.front()], 1.0, 1e-9);
+    EXPECT_EQ(residual_row_count(curve), 1001u);
+    EXPECT_EQ(curve.rows_left_out, whole.time.size() - 1001u);
+    EXPECT_EQ(curve.contact_depth, whole.contact_depth);
+    EXPECT_EQ(curve.force_baseline, whole.force_baseline);
+    EXPECT_EQ(curve.baseline_rows, whole.baseline_rows);
     EXPECT_TRUE(has_note(curve, "rows outside the window are left out")) << notes_of(curve);
 
-    Curve deep = retract_record(0.0);
+    Curve deep = whole;
     select_rows(deep, {.depth = std::array<double, 2>{-1e-6, 3e-6}, .until = Until::end});
-    EXPECT_TRUE(std::all_of(deep.depth.begin(), deep.depth.end(), [](double d) { return d >= -1e-6 && d <= 3e-6; }));
+    ASSERT_FALSE(deep.residual_rows.empty());
+    EXPECT_TRUE(std::all_of(deep.residual_rows.begin(), deep.residual_rows.end(),
+                            [&](std::size_t i) { return deep.depth[i] >= -1e-6 && deep.depth[i] <= 3e-6; }));
+    EXPECT_LT(deep.depth.front(), -1e-6);  // the approach before the window still drives the model
 
-    Curve strong = retract_record(0.0);
+    Curve strong = whole;
     select_rows(strong, {.force = std::array<double, 2>{0.0, 2e-8}, .until = Until::end});
-    EXPECT_TRUE(std::all_of(strong.force.begin(), strong.force.end(), [](double f) { return f <= 2e-8; }));
+    ASSERT_FALSE(strong.residual_rows.empty());
+    EXPECT_TRUE(std::all_of(strong.residual_rows.begin(), strong.residual_rows.end(),
+                            [&](std::size_t i) { return strong.force[i] <= 2e-8; }));
+    EXPECT_GT(*std::max_element(strong.force.begin(), strong.force.end()), 2e-8);  // the peak drives the model
 
     Curve few = retract_record(0.0);
     try {
