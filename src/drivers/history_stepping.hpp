@@ -139,7 +139,7 @@ public:
             const double touch_time = trapezoidal_ ? free_until_touch(time_step, target) : 0.0;
             const double contact_step = time_step - touch_time;
             const double before = touch_time > 0.0 ? depth_ : previous_depth_;
-            foundation_.begin_step(cache_.get(contact_step), rate_);
+            foundation_.begin_step(cache_.get(contact_step), rate_, depth_source);
             const DepthGuess start{.guess = depth_ + (depth_ - before),
                                    .scale = std::max(std::abs(depth_ - before), 1e-6 * depth_scale_)};
             const double new_depth = control_.step_depth(foundation_, depth_, start, target);
@@ -167,6 +167,9 @@ public:
     }
 
 private:
+    // What an element entering contact inside a step sees in its dashpot (Foundation::begin_step).
+    static constexpr foundation::DepthSource depth_source =
+        Control::solves_depth ? foundation::DepthSource::solved : foundation::DepthSource::prescribed;
     // With a parallel dashpot, a step that starts with nothing in contact while the indenter moves free (a spring's
     // base carries it, Step::free_depth) is split where the free indenter touches the body (Foundation::
     // touch_fraction): the foundation steps free up to the touch, and depth_ moves there. The rest of the step is
@@ -177,12 +180,12 @@ private:
         if (foundation_.contact_count() != 0) return 0.0;
         const auto free_end = control_.free_depth(target);
         if (!free_end) return 0.0;
-        foundation_.begin_step(cache_.get(time_step), rate_);
+        foundation_.begin_step(cache_.get(time_step), rate_, depth_source);
         const double fraction = foundation_.touch_fraction(depth_, *free_end);
         if (!(fraction > 0.0 && fraction < 1.0)) return 0.0;
         const double touch_time = fraction * time_step;
         const double touch_depth = depth_ + fraction * (*free_end - depth_);
-        foundation_.begin_step(cache_.get(touch_time), rate_);
+        foundation_.begin_step(cache_.get(touch_time), rate_, depth_source);
         foundation_.advance(depth_, touch_depth);
         depth_ = touch_depth;
         rate_.reset();

@@ -131,9 +131,11 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
 }
 
 __attribute__((target_clones("avx2", "default"))) void Foundation::begin_step(const StepCoefficients& coefficients,
-                                                                               std::optional<double> indenter_rate) {
+                                                                               std::optional<double> indenter_rate,
+                                                                               DepthSource depth_source) {
     copy_step_coefficients(coefficients, step_);
     indenter_rate_ = indenter_rate;
+    depth_source_ = depth_source;
     const std::size_t n = size();
     const double g_inf = material_.equilibrium_modulus();
     const double eta = material_.viscosity();
@@ -194,14 +196,25 @@ Foundation::Outcome Foundation::evaluate(std::size_t i, double w0, double sigma0
     return outcome;
 }
 
+double Foundation::spring_force(double w, const double* h) const {
+    const auto& terms = material_.terms();
+    double force = material_.equilibrium_modulus() * w;
+    for (std::size_t k = 0; k < terms.size(); ++k) force += terms[k].modulus * h[k];
+    return force;
+}
+
+double Foundation::free_rate(double w, const double* h) const {
+    const double eta = material_.viscosity();
+    return eta > 0.0 ? -spring_force(w, h) / eta : 0.0;  // G_inf w + eta w' + sum G_k h_k = 0
+}
+
 void Foundation::free_substep(double time_step, double& w, double* h) const {
     const auto& terms = material_.terms();
     const double eta = material_.viscosity();
     if (time_step <= 0.0 && eta > 0.0) return;  // a dashpot does not move in no time
     // Force-free: G_inf w + eta w' + sum G_k h_k = 0 at the end, the dashpot with the trapezoidal rate from its
     // start rate -(G_inf w + sum G_k h_k)/eta.
-    double start_force = material_.equilibrium_modulus() * w;
-    for (std::size_t k = 0; k < terms.size(); ++k) start_force += terms[k].modulus * h[k];
+    const double start_force = spring_force(w, h);
     double relaxed = material_.equilibrium_modulus() * w + (eta > 0.0 ? start_force : 0.0);
     double stiffness = material_.equilibrium_modulus() + (eta > 0.0 ? 2.0 * eta / time_step : 0.0);
     for (std::size_t k = 0; k < terms.size(); ++k) {
@@ -246,8 +259,17 @@ double Foundation::split_stress(std::size_t i, double w0, const Outcome& outcome
     const double start_rate = indenter_rate_.value_or(secant);
     const double end_rate = indenter_rate_ ? 2.0 * secant - start_rate : secant;
     if (outcome.contact) {  // free, then in contact from the entry on
+        const double own_start_rate = free_rate(w, h);
         free_substep(first, w, h);
-        return std::max(contact_substep(second, depth_end - g, end_rate, w, h), 0.0);
+        const double new_displacement = depth_end - g;
+        double rate = end_rate;
+        if (depth_source_ == DepthSource::solved && step_.time_step > 0.0) {
+            // Its own rate over the step (see begin_step): at f = 1 the free element's end rate, so that its force
+            // grows from zero.
+            rate = indenter_rate_ ? 2.0 * (new_displacement - w0) / step_.time_step - own_start_rate
+                                  : (new_displacement - w) / step_.time_step + outcome.fraction * free_rate(w, h);
+        }
+        return std::max(contact_substep(second, new_displacement, rate, w, h), 0.0);
     }
     const double depth_at_exit = depth_start + outcome.fraction * (depth_end - depth_start);
     contact_substep(first, depth_at_exit - g, start_rate + outcome.fraction * (end_rate - start_rate), w, h);

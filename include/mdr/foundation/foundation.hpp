@@ -32,6 +32,13 @@ bool state_fits(std::size_t count, std::size_t branches);
 /// nothing is known). A flat punch keeps its rigid wall (+infinity) beyond its radius.
 double deepest_depth(const profile::Profile& profile, double half_width);
 
+/// Where the depth at the end of a step comes from. It decides the rate that the dashpot of an element entering
+/// contact inside the step sees (Foundation::begin_step).
+enum class DepthSource {
+    prescribed,  ///< given (displacement control, a DEM overlap): the force steps as an element enters
+    solved,      ///< solved from a balance of forces (force and spring control, an impact): the force is continuous
+};
+
 /// An element that came into contact inside the last step, and where (eq. 14).
 struct Entry {
     std::size_t element;  ///< its index i
@@ -70,7 +77,15 @@ public:
     /// dashpot in contact then sees the trapezoidal end rate 2 (d1 - d0)/dt - rate (second order). Without it
     /// it sees the step's secant rate, exact for a prescribed piecewise-linear depth. Force-free elements always
     /// take the trapezoidal rate from their own start rate.
-    void begin_step(const StepCoefficients& coefficients, std::optional<double> indenter_rate = std::nullopt);
+    /// An element entering contact inside the step follows the indenter's rate from its entry on when the depth is
+    /// `prescribed` (exact: the force steps by its dashpot's). When the depth is `solved` from a balance, the force
+    /// is continuous and the indenter's rate breaks at the entry instead (the dashpots in contact share the force);
+    /// the entering element's dashpot then sees its own rate over the step, the trapezoidal 2 (w1 - w0)/dt minus
+    /// its free start rate, or with the secant rate (w1 - w_entry)/dt + f w'_entry (f the entry's fraction of the
+    /// step, w'_entry its free rate there): it grows from the free element's force at f = 1, so the total force is
+    /// continuous in the end depth and the balance has a root, and it carries the rate break to the step's end.
+    void begin_step(const StepCoefficients& coefficients, std::optional<double> indenter_rate = std::nullopt,
+                    DepthSource depth_source = DepthSource::prescribed);
     /// The total normal force [N] (eq. 21) the foundation would carry if the depth went linearly from
     /// `depth_start` to `depth_end` over the prepared step; the state is not changed.
     double trial_force(double depth_start, double depth_end) const;
@@ -165,6 +180,8 @@ private:
     }
     double* element_flags() { return attached_ != nullptr ? attached_ + 3 + 2 * size() : flags_.data(); }
     const double* element_flags() const { return attached_ != nullptr ? attached_ + 3 + 2 * size() : flags_.data(); }
+    double spring_force(double w, const double* h) const;
+    double free_rate(double w, const double* h) const;
     void free_substep(double time_step, double& w, double* h) const;
     double contact_substep(double time_step, double new_displacement, double end_rate, double& w, double* h) const;
     double free_gap(std::size_t i) const;
@@ -188,6 +205,7 @@ private:
     std::vector<double> relaxed_;              ///< G_inf w_i + sum_k G_k E_k h_{k,i} for the prepared step
     std::vector<double> free_relaxed_;         ///< with a dashpot: relaxed_ - eta w'_i(start) of a free element
     std::optional<double> indenter_rate_;      ///< see begin_step
+    DepthSource depth_source_ = DepthSource::prescribed;  ///< see begin_step
     double contact_stiffness_ = 0.0;           ///< dsigma/dw of an element in contact over the prepared step
     double contact_offset_ = 0.0;              ///< -eta rate0 with the trapezoidal rate, else 0
     double free_stiffness_ = 0.0;              ///< dsigma/dw of a force-free element over the prepared step
