@@ -130,7 +130,10 @@ TEST(SpringDashpotTouch, SphereKeepsTheSpringBalanceAndFollowsAnIndependentInteg
     RecordProperty("balance", fmt::format("{:.3g}", balance / peak_force));
     EXPECT_LT(balance, 1e-9 * peak_force);
     RecordProperty("depth_error", fmt::format("{:.3g}", depth_error / peak_depth));
-    EXPECT_LT(depth_error, 1e-3 * peak_depth);  // measured 2.3e-4 (first order at the touch's step)
+    // Measured 6.5e-4 at the row after the touch, 2.9e-5 from t = 0.4 s on (2.3e-4 and 2.0e-5 before): the touch's
+    // step takes the secant rate with the contact growing from nothing, where the entering elements' own rates
+    // (1 - f) dd/dt give the dashpots less than the indenter's end rate would; first order in the time step.
+    EXPECT_LT(depth_error, 1e-3 * peak_depth);
 }
 
 }  // namespace
