@@ -136,7 +136,7 @@ StepState ImpactStepping::step(std::size_t n) {
     while (next_cut_ < cuts_.size() && cuts_[next_cut_] <= time_) ++next_cut_;
     const double step = next_cut_ < cuts_.size() ? std::min(numerics_.time_step, cuts_[next_cut_] - time_)
                                                  : numerics_.time_step;
-    foundation_.begin_step(cache_.get(step), velocity_, foundation::DepthSource::solved);
+    foundation_.begin_step(cache_.get(step), velocity_);
     // Trapezoidal rule for m d'' = -F (eq. 37): d1 = d0 + (v0 + v1) dt/2, v1 = v0 - (F0 + F1) dt/(2m), i.e.
     // F(d1) + (4m/dt^2)(d1 - d0 - v0 dt) = -F0, monotone in d1.
     const double spring = 4.0 * mass_ / (step * step);
