@@ -173,9 +173,11 @@ private:
     // With a parallel dashpot, a step that starts with nothing in contact while the indenter moves free (a spring's
     // base carries it, Step::free_depth) is split where the free indenter touches the body (Foundation::
     // touch_fraction): the foundation steps free up to the touch, and depth_ moves there. The rest of the step is
-    // solved from the touch with the rate unknown (the secant from the touch): the indenter's rate breaks at the
-    // touch (F = k (z - d) is continuous, so the dashpots in contact stop it), and the approach's rate in a
-    // dashpot would be a force out of balance with the spring. Returns the time stepped free (0: no split).
+    // solved from the touch with the dashpots at rest: the indenter's rate breaks at the touch (F = k (z - d) is
+    // continuous, so the dashpots in contact stop it), and the approach's rate in a dashpot would be a force out of
+    // balance with the spring. Nothing is in contact at the touch: every element in contact after it entered after
+    // it and takes its own trapezoidal rate from its own start (Foundation::begin_step). Returns the time stepped
+    // free (0: no split).
     double free_until_touch(double time_step, double target) {
         if (foundation_.contact_count() != 0) return 0.0;
         const auto free_end = control_.free_depth(target);
@@ -188,7 +190,7 @@ private:
         foundation_.begin_step(cache_.get(touch_time), rate_, rate_at_entry);
         foundation_.advance(depth_, touch_depth);
         depth_ = touch_depth;
-        rate_.reset();
+        rate_ = 0.0;
         return touch_time;
     }
     // The indenter's rate after a force jump dF at fixed depth: the dashpots of the n elements in contact take it,
@@ -218,9 +220,10 @@ private:
     bool has_dashpot_;
     bool trapezoidal_;  // a control that solves for the depth, with a parallel dashpot
     bool sine_rate_;    // a prescribed depth under a harmonic, with a parallel dashpot
-    // The indenter's rate dd/dt at the current node that the dashpot sees (Foundation::begin_step): trapezoidal
-    // (second order) when the control solves for the depth; unknown (the secant rate is used for one step) while
-    // nothing is in contact, as the rate is then not tied to the force.
+    // The rate dd/dt at the current node that the dashpots in contact see (Foundation::begin_step, contact_rate):
+    // trapezoidal (second order) when the control solves for the depth, zero from rest (the start, a touch); unknown
+    // (the secant rate is used for one step) after a force jump with nothing in contact or a step that ends without
+    // contact, as the rate is then not tied to the force.
     std::optional<double> rate_;
     double depth_;
     double previous_depth_;

@@ -263,13 +263,15 @@ double Foundation::split_stress(std::size_t i, double w0, const Outcome& outcome
     const double g = equivalent_[i];
     const auto [start_rate, end_rate] = indenter_rates(depth_start, depth_end);
     if (outcome.contact) {  // free, then in contact from the entry on
-        double rate = end_rate;
-        if (rate_at_entry_ == RateAtEntry::breaks && step_.time_step > 0.0) {
-            // Its own trapezoidal rate from its free start rate (see begin_step).
-            rate = 2.0 * (depth_end - g - w0) / step_.time_step - free_rate(w, h);
-        }
-        if (own_rate != nullptr) *own_rate = rate;
+        const bool own = rate_at_entry_ == RateAtEntry::breaks && step_.time_step > 0.0;
+        const double start_rate_own = free_rate(w, h);
         free_substep(first, w, h);
+        // Its own rate over the step (see begin_step), the trapezoidal from its free start rate or the secant with the
+        // free part at its end rate.
+        const double rate = !own ? end_rate
+                            : indenter_rate_ ? 2.0 * (depth_end - g - w0) / step_.time_step - start_rate_own
+                                             : (depth_end - g - w) / step_.time_step + outcome.fraction * free_rate(w, h);
+        if (own_rate != nullptr) *own_rate = rate;
         return std::max(contact_substep(second, depth_end - g, rate, w, h), 0.0);
     }
     const double depth_at_exit = depth_start + outcome.fraction * (depth_end - depth_start);

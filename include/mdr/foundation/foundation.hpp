@@ -81,11 +81,13 @@ public:
     /// it sees the step's secant rate, exact for a prescribed piecewise-linear depth. Force-free elements always
     /// take the trapezoidal rate from their own start rate.
     /// An element entering contact inside the step follows the indenter's rate at once where the rate is `continuous`
-    /// (exact: the force steps by its dashpot's). Where it `breaks`, the entering element's dashpot sees the
-    /// trapezoidal rate of its own motion over the step, 2 (w1 - w0)/dt minus its free start rate
-    /// -(G_inf w0 + sum G_k h_k)/eta: at an entry at the step's very end that is the free element's end rate, so its
-    /// force grows from zero and the total force is continuous in the end depth (the balance has a root), and the
-    /// dashpots in contact together carry the rate's break at the entry (docs/theory.md section 3).
+    /// (exact: the force steps by its dashpot's). Where it `breaks`, the entering element's dashpot sees the rate of
+    /// its own motion over the step by the indenter's rule: with `indenter_rate` the trapezoidal 2 (w1 - w0)/dt minus
+    /// its free start rate -(G_inf w0 + sum G_k h_k)/eta, without it the secant (w1 - w_e)/dt + f w'_e (f the entry's
+    /// fraction of the step, w_e and w'_e the free element's displacement and rate there). At an entry at the step's
+    /// very end that is the free element's end rate, so its force grows from zero and the total force is continuous
+    /// in the end depth (the balance has a root), and the dashpots in contact together carry the rate's break at the
+    /// entry (docs/theory.md section 3).
     void begin_step(const StepCoefficients& coefficients, std::optional<double> indenter_rate = std::nullopt,
                     RateAtEntry rate_at_entry = RateAtEntry::continuous);
     /// The total normal force [N] (eq. 21) the foundation would carry if the depth went linearly from
