@@ -268,9 +268,10 @@ double Foundation::split_stress(std::size_t i, double w0, const Outcome& outcome
         free_substep(first, w, h);
         // Its own rate over the step (see begin_step), the trapezoidal from its free start rate or the secant with the
         // free part at its end rate.
-        const double rate = !own ? end_rate
-                            : indenter_rate_ ? 2.0 * (depth_end - g - w0) / step_.time_step - start_rate_own
-                                             : (depth_end - g - w) / step_.time_step + outcome.fraction * free_rate(w, h);
+        const double dt = step_.time_step;
+        const double rate = !own            ? end_rate
+                            : indenter_rate_ ? 2.0 * (depth_end - g - w0) / dt - start_rate_own
+                                             : (depth_end - g - w) / dt + outcome.fraction * free_rate(w, h);
         if (own_rate != nullptr) *own_rate = rate;
         return std::max(contact_substep(second, depth_end - g, rate, w, h), 0.0);
     }

@@ -4,8 +4,9 @@
 // massless indenter under a force: the depth is solved from a balance) the force must not step, or the balance has no
 // root (a row missed it by up to that step): the entering element's dashpot takes its own rate over the step (the
 // trapezoidal with a start rate, else the secant), which at an entry at the step's very end is the free element's, so
-// the trial force is continuous in the end depth. Checked at the exact entry depth of an untouched element (g(x_j)) and of one that left contact and creeps
-// back (its free surface at the step's end); and Foundation::contact_rate, the mean rate of the dashpots in contact.
+// the trial force is continuous in the end depth. Checked at the exact entry depth of an untouched element (g(x_j))
+// and of one that left contact and creeps back (its free surface at the step's end); and Foundation::contact_rate,
+// the mean rate of the dashpots in contact.
 
 #include <gtest/gtest.h>
 
