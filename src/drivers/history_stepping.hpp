@@ -139,12 +139,12 @@ public:
             const double touch_time = trapezoidal_ ? free_until_touch(time_step, target) : 0.0;
             const double contact_step = time_step - touch_time;
             const double before = touch_time > 0.0 ? depth_ : previous_depth_;
-            foundation_.begin_step(cache_.get(contact_step), rate_);
+            foundation_.begin_step(cache_.get(contact_step), rate_, rate_at_entry);
             const DepthGuess start{.guess = depth_ + (depth_ - before),
                                    .scale = std::max(std::abs(depth_ - before), 1e-6 * depth_scale_)};
             const double new_depth = control_.step_depth(foundation_, depth_, start, target);
             foundation_.advance(depth_, new_depth);
-            if (trapezoidal_) rate_ = next_rate(depth_, new_depth, contact_step);
+            if (trapezoidal_) rate_ = next_rate();
             if (tangential_) tangential_->step(cache_.get(time_step), nodes_[n - 1].time, nodes_[n].time);
             previous_depth_ = depth_;
             depth_ = new_depth;
@@ -167,25 +167,30 @@ public:
     }
 
 private:
+    // A massless indenter under a force: its rate breaks where an element enters (Foundation::begin_step).
+    static constexpr foundation::RateAtEntry rate_at_entry =
+        Control::solves_depth ? foundation::RateAtEntry::breaks : foundation::RateAtEntry::continuous;
     // With a parallel dashpot, a step that starts with nothing in contact while the indenter moves free (a spring's
     // base carries it, Step::free_depth) is split where the free indenter touches the body (Foundation::
     // touch_fraction): the foundation steps free up to the touch, and depth_ moves there. The rest of the step is
-    // solved from the touch with the rate unknown (the secant from the touch): the indenter's rate breaks at the
-    // touch (F = k (z - d) is continuous, so the dashpots in contact stop it), and the approach's rate in a
-    // dashpot would be a force out of balance with the spring. Returns the time stepped free (0: no split).
+    // solved from the touch with the dashpots at rest: the indenter's rate breaks at the touch (F = k (z - d) is
+    // continuous, so the dashpots in contact stop it), and the approach's rate in a dashpot would be a force out of
+    // balance with the spring. Nothing is in contact at the touch: every element in contact after it entered after
+    // it and takes its own trapezoidal rate from its own start (Foundation::begin_step). Returns the time stepped
+    // free (0: no split).
     double free_until_touch(double time_step, double target) {
         if (foundation_.contact_count() != 0) return 0.0;
         const auto free_end = control_.free_depth(target);
         if (!free_end) return 0.0;
-        foundation_.begin_step(cache_.get(time_step), rate_);
+        foundation_.begin_step(cache_.get(time_step), rate_, rate_at_entry);
         const double fraction = foundation_.touch_fraction(depth_, *free_end);
         if (!(fraction > 0.0 && fraction < 1.0)) return 0.0;
         const double touch_time = fraction * time_step;
         const double touch_depth = depth_ + fraction * (*free_end - depth_);
-        foundation_.begin_step(cache_.get(touch_time), rate_);
+        foundation_.begin_step(cache_.get(touch_time), rate_, rate_at_entry);
         foundation_.advance(depth_, touch_depth);
         depth_ = touch_depth;
-        rate_.reset();
+        rate_ = 0.0;
         return touch_time;
     }
     // The indenter's rate after a force jump dF at fixed depth: the dashpots of the n elements in contact take it,
@@ -195,12 +200,12 @@ private:
         if (contacts == 0.0) return std::nullopt;
         return rate + force_jump / (8.0 * foundation_.spacing() * contact_case_.material.viscosity() * contacts);
     }
-    // The rate at the end of a force-controlled step: the trapezoidal 2 dd/dt - rate0, or the secant dd/dt after a
-    // step without a known start rate (what the dashpots saw, so that the next step starts in equilibrium).
-    std::optional<double> next_rate(double depth_start, double depth_end, double time_step) const {
+    // The rate at the end of a force-controlled step: what the dashpots in contact saw, so that the next step starts
+    // in equilibrium (Foundation::contact_rate: the trapezoidal 2 dd/dt - rate0, or the secant dd/dt after a step
+    // without a known start rate, with an element that entered in the step taking its own rate).
+    std::optional<double> next_rate() const {
         if (foundation_.contact_count() == 0) return std::nullopt;
-        const double secant = (depth_end - depth_start) / time_step;
-        return rate_ ? 2.0 * secant - *rate_ : secant;
+        return foundation_.contact_rate();
     }
 
     const ContactCase& contact_case_;
@@ -215,9 +220,10 @@ private:
     bool has_dashpot_;
     bool trapezoidal_;  // a control that solves for the depth, with a parallel dashpot
     bool sine_rate_;    // a prescribed depth under a harmonic, with a parallel dashpot
-    // The indenter's rate dd/dt at the current node that the dashpot sees (Foundation::begin_step): trapezoidal
-    // (second order) when the control solves for the depth; unknown (the secant rate is used for one step) while
-    // nothing is in contact, as the rate is then not tied to the force.
+    // The rate dd/dt at the current node that the dashpots in contact see (Foundation::begin_step, contact_rate):
+    // trapezoidal (second order) when the control solves for the depth, zero from rest (the start, a touch); unknown
+    // (the secant rate is used for one step) after a force jump with nothing in contact or a step that ends without
+    // contact, as the rate is then not tied to the force.
     std::optional<double> rate_;
     double depth_;
     double previous_depth_;

@@ -7,6 +7,7 @@
 #include <new>
 #include <optional>
 #include <type_traits>
+#include <utility>
 
 #include "branch_sums.hpp"
 #include "mdr/error.hpp"
@@ -131,9 +132,11 @@ Foundation::Foundation(const rheology::Rheology& material, const profile::Profil
 }
 
 __attribute__((target_clones("avx2", "default"))) void Foundation::begin_step(const StepCoefficients& coefficients,
-                                                                               std::optional<double> indenter_rate) {
+                                                                               std::optional<double> indenter_rate,
+                                                                               RateAtEntry rate_at_entry) {
     copy_step_coefficients(coefficients, step_);
     indenter_rate_ = indenter_rate;
+    rate_at_entry_ = rate_at_entry;
     const std::size_t n = size();
     const double g_inf = material_.equilibrium_modulus();
     const double eta = material_.viscosity();
@@ -194,14 +197,25 @@ Foundation::Outcome Foundation::evaluate(std::size_t i, double w0, double sigma0
     return outcome;
 }
 
+double Foundation::spring_force(double w, const double* h) const {
+    const auto& terms = material_.terms();
+    double force = material_.equilibrium_modulus() * w;
+    for (std::size_t k = 0; k < terms.size(); ++k) force += terms[k].modulus * h[k];
+    return force;
+}
+
+double Foundation::free_rate(double w, const double* h) const {
+    const double eta = material_.viscosity();
+    return eta > 0.0 ? -spring_force(w, h) / eta : 0.0;  // G_inf w + eta w' + sum G_k h_k = 0
+}
+
 void Foundation::free_substep(double time_step, double& w, double* h) const {
     const auto& terms = material_.terms();
     const double eta = material_.viscosity();
     if (time_step <= 0.0 && eta > 0.0) return;  // a dashpot does not move in no time
     // Force-free: G_inf w + eta w' + sum G_k h_k = 0 at the end, the dashpot with the trapezoidal rate from its
     // start rate -(G_inf w + sum G_k h_k)/eta.
-    double start_force = material_.equilibrium_modulus() * w;
-    for (std::size_t k = 0; k < terms.size(); ++k) start_force += terms[k].modulus * h[k];
+    const double start_force = spring_force(w, h);
     double relaxed = material_.equilibrium_modulus() * w + (eta > 0.0 ? start_force : 0.0);
     double stiffness = material_.equilibrium_modulus() + (eta > 0.0 ? 2.0 * eta / time_step : 0.0);
     for (std::size_t k = 0; k < terms.size(); ++k) {
@@ -231,8 +245,14 @@ double Foundation::contact_substep(double time_step, double new_displacement, do
     return stress;
 }
 
+std::pair<double, double> Foundation::indenter_rates(double depth_start, double depth_end) const {
+    const double secant = step_.time_step > 0.0 ? (depth_end - depth_start) / step_.time_step : 0.0;
+    const double start_rate = indenter_rate_.value_or(secant);
+    return {start_rate, indenter_rate_ ? 2.0 * secant - start_rate : secant};
+}
+
 double Foundation::split_stress(std::size_t i, double w0, const Outcome& outcome, double depth_start,
-                                double depth_end, double& w, double* h) const {
+                                double depth_end, double& w, double* h, double* own_rate) const {
     const std::size_t n = size();
     const std::size_t branches = material_.terms().size();
     const double* memory = element_memories();
@@ -241,13 +261,19 @@ double Foundation::split_stress(std::size_t i, double w0, const Outcome& outcome
     const double first = outcome.fraction * step_.time_step;
     const double second = step_.time_step - first;
     const double g = equivalent_[i];
-    // The indenter's rate at the start and the end of the step (see begin_step).
-    const double secant = step_.time_step > 0.0 ? (depth_end - depth_start) / step_.time_step : 0.0;
-    const double start_rate = indenter_rate_.value_or(secant);
-    const double end_rate = indenter_rate_ ? 2.0 * secant - start_rate : secant;
+    const auto [start_rate, end_rate] = indenter_rates(depth_start, depth_end);
     if (outcome.contact) {  // free, then in contact from the entry on
+        const bool own = rate_at_entry_ == RateAtEntry::breaks && step_.time_step > 0.0;
+        const double start_rate_own = free_rate(w, h);
         free_substep(first, w, h);
-        return std::max(contact_substep(second, depth_end - g, end_rate, w, h), 0.0);
+        // Its own rate over the step (see begin_step), the trapezoidal from its free start rate or the secant with the
+        // free part at its end rate.
+        const double dt = step_.time_step;
+        const double rate = !own            ? end_rate
+                            : indenter_rate_ ? 2.0 * (depth_end - g - w0) / dt - start_rate_own
+                                             : (depth_end - g - w) / dt + outcome.fraction * free_rate(w, h);
+        if (own_rate != nullptr) *own_rate = rate;
+        return std::max(contact_substep(second, depth_end - g, rate, w, h), 0.0);
     }
     const double depth_at_exit = depth_start + outcome.fraction * (depth_end - depth_start);
     contact_substep(first, depth_at_exit - g, start_rate + outcome.fraction * (end_rate - start_rate), w, h);
@@ -331,6 +357,8 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
         split_end_ = static_cast<std::size_t>(last + 1);
     }
     split_.clear();
+    end_rate_ = indenter_rates(depth_start, depth_end).second;
+    entry_excess_ = 0.0;
     entries_.clear();
     split_state_.clear();
     latest_exit_ = 0.0;
@@ -343,9 +371,11 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
         double split_w = 0.0;
         const std::size_t offset = split_state_.size();
         split_state_.resize(offset + branches + 2);
+        double own_rate = end_rate_;
         const double stress =
             split_stress(i, start_displacement_[i], outcome, depth_start, depth_end, split_w,
-                         split_state_.data() + offset + 2);
+                         split_state_.data() + offset + 2, &own_rate);
+        if (outcome.contact) entry_excess_ += own_rate - end_rate_;
         split_state_[offset] = split_w;
         split_state_[offset + 1] = stress;
         split_.push_back(i);
@@ -396,6 +426,11 @@ std::size_t Foundation::contact_count() const {
 
 double Foundation::force_slope() const {
     return 2.0 * normal_stiffness_factor * spacing_ * contact_stiffness_ * static_cast<double>(contact_count());
+}
+
+double Foundation::contact_rate() const {
+    const auto contacts = static_cast<double>(contact_count());
+    return contacts > 0.0 ? end_rate_ + entry_excess_ / contacts : end_rate_;
 }
 
 double Foundation::free_gap(std::size_t i) const {

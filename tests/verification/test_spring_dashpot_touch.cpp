@@ -78,7 +78,7 @@ TEST(SpringDashpotTouch, FlatPunchKeepsTheSpringBalanceAndFollowsTheClosedForm) 
         RecordProperty(fmt::format("balance_{}", z0), fmt::format("{:.3g}", balance / peak_force));
         RecordProperty(fmt::format("depth_error_{}", z0), fmt::format("{:.3g}", depth_error / peak_depth));
         EXPECT_LT(balance, 1e-9 * peak_force);      // F = k (z - d) at every row (the depth solve's tolerance)
-        EXPECT_LT(depth_error, 2e-4 * peak_depth);  // measured 1.6e-5 (z0 = 0) and 4.2e-5 (z0 = -1e-6)
+        EXPECT_LT(depth_error, 2e-4 * peak_depth);  // measured 1.6e-5 (z0 = 0) and 2.4e-5 (z0 = -1e-6)
     }
 }
 
@@ -119,25 +119,21 @@ TEST(SpringDashpotTouch, SphereKeepsTheSpringBalanceAndFollowsAnIndependentInteg
                                              fmt::format("elements = {}\nhalf_width = {}", elements, half_width)));
     const SphereReference reference(R, z0, 200000);
     const double peak_force = largest(result.force), peak_depth = largest(result.depth);
-    const double spacing = half_width / static_cast<double>(elements);
-    double depth_error = 0.0;
+    double depth_error = 0.0, balance = 0.0;
     for (std::size_t n = 1; n < result.time.size(); ++n) {
-        const double t = result.time[n];
-        depth_error = std::max(depth_error, std::abs(result.depth[n] - reference.depth(t)));
-        // The balance holds to the depth solve's tolerance, but the force is a step function of the depth: an element
-        // entering contact at the edge carries its dashpot's force 8 dx eta d' (both halves) at once. The rate the
-        // dashpots may see is the contact's own, at most the secant over the row's step from the touch on.
-        const double from = std::max(result.time[n - 1], reference.t0);
-        const double contact_rate = t > from ? std::abs(result.depth[n] - std::max(result.depth[n - 1], 0.0)) /
-                                                   (t - from)
-                                             : 0.0;
-        const double entry_step = 8.0 * spacing * eta * contact_rate;
-        EXPECT_LE(std::abs(result.force[n] - k * (result.base[n] - result.depth[n])),
-                  entry_step + 1e-9 * peak_force)
-            << "t = " << t;
+        depth_error = std::max(depth_error, std::abs(result.depth[n] - reference.depth(result.time[n])));
+        balance = std::max(balance, std::abs(result.force[n] - k * (result.base[n] - result.depth[n])));
     }
+    // F = k (z - d) at every row to the depth solve's tolerance: an element entering contact at the edge takes its
+    // dashpot's force as it enters, continuously in the depth (before, it carried 8 dx eta d' at once, and the rows
+    // where the balance fell inside that step missed it: 1.1e-5 of the peak force here).
+    RecordProperty("balance", fmt::format("{:.3g}", balance / peak_force));
+    EXPECT_LT(balance, 1e-9 * peak_force);
     RecordProperty("depth_error", fmt::format("{:.3g}", depth_error / peak_depth));
-    EXPECT_LT(depth_error, 1e-3 * peak_depth);  // measured 2.3e-4 (first order at the touch's step)
+    // Measured 6.6e-5 (2.3e-4 before: the entering elements' dashpots at the indenter's secant rate in the touch's
+    // step, the contact growing from nothing; now from rest, each at its own trapezoidal rate, docs/theory.md
+    // section 3).
+    EXPECT_LT(depth_error, 1.5e-4 * peak_depth);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mdr/foundation/step_coefficients.hpp"
@@ -31,6 +32,15 @@ bool state_fits(std::size_t count, std::size_t branches);
 /// profile g just beyond the half-width, or at it where a tabulated profile ends there (g is +infinity beyond, where
 /// nothing is known). A flat punch keeps its rigid wall (+infinity) beyond its radius.
 double deepest_depth(const profile::Profile& profile, double half_width);
+
+/// What the indenter's rate does where an element enters contact inside a step; it decides what that element's
+/// parallel dashpot sees (Foundation::begin_step).
+enum class RateAtEntry {
+    continuous,  ///< the depth is given, or carried by the indenter's inertia (displacement control, a DEM overlap,
+                 ///< an impact): the force steps by the entering element's dashpot
+    breaks,      ///< a massless indenter under a force that is given or follows the depth (force and spring control):
+                 ///< the force is continuous and the rate breaks, the dashpots in contact sharing the force
+};
 
 /// An element that came into contact inside the last step, and where (eq. 14).
 struct Entry {
@@ -70,7 +80,16 @@ public:
     /// dashpot in contact then sees the trapezoidal end rate 2 (d1 - d0)/dt - rate (second order). Without it
     /// it sees the step's secant rate, exact for a prescribed piecewise-linear depth. Force-free elements always
     /// take the trapezoidal rate from their own start rate.
-    void begin_step(const StepCoefficients& coefficients, std::optional<double> indenter_rate = std::nullopt);
+    /// An element entering contact inside the step follows the indenter's rate at once where the rate is `continuous`
+    /// (exact: the force steps by its dashpot's). Where it `breaks`, the entering element's dashpot sees the rate of
+    /// its own motion over the step by the indenter's rule: with `indenter_rate` the trapezoidal 2 (w1 - w0)/dt minus
+    /// its free start rate -(G_inf w0 + sum G_k h_k)/eta, without it the secant (w1 - w_e)/dt + f w'_e (f the entry's
+    /// fraction of the step, w_e and w'_e the free element's displacement and rate there). At an entry at the step's
+    /// very end that is the free element's end rate, so its force grows from zero and the total force is continuous
+    /// in the end depth (the balance has a root), and the dashpots in contact together carry the rate's break at the
+    /// entry (docs/theory.md section 3).
+    void begin_step(const StepCoefficients& coefficients, std::optional<double> indenter_rate = std::nullopt,
+                    RateAtEntry rate_at_entry = RateAtEntry::continuous);
     /// The total normal force [N] (eq. 21) the foundation would carry if the depth went linearly from
     /// `depth_start` to `depth_end` over the prepared step; the state is not changed.
     double trial_force(double depth_start, double depth_end) const;
@@ -112,6 +131,10 @@ public:
     /// dF/dd [N/m] of the prepared step while no element enters or leaves: 8 dx K n_contact (eq. 21), K the
     /// step's stiffness.
     double force_slope() const;
+    /// The mean rate [m/s] that the dashpots of the elements in contact saw at the end of the last step: the
+    /// indenter's end rate (see begin_step), with an element that entered in it taking its own; with that as the
+    /// next step's start rate, the next step starts with the force these dashpots carried.
+    double contact_rate() const;
 
     /// Doubles of the state that persists between steps (saved by save_state) for `count` elements and `branches`
     /// relaxation branches: 3 + count (branches + 3).
@@ -148,8 +171,11 @@ private:
     // The step of element i from its displacement w0 and stress sigma0 at the start (the state's before advance
     // overwrites them in place).
     Outcome evaluate(std::size_t i, double w0, double sigma0, double depth_start, double depth_end) const;
+    // The indenter's rate at the start and the end of the prepared step, the depth going linearly from depth_start
+    // to depth_end (see begin_step).
+    std::pair<double, double> indenter_rates(double depth_start, double depth_end) const;
     double split_stress(std::size_t i, double w0, const Outcome& outcome, double depth_start, double depth_end,
-                        double& w, double* h) const;
+                        double& w, double* h, double* own_rate = nullptr) const;
     void clear_beyond(std::size_t active);
     // w_i, sigma_i and h_{k,i}: the attached state's, else the foundation's own (found per call, so that a copy
     // never points into the original's buffers).
@@ -165,6 +191,8 @@ private:
     }
     double* element_flags() { return attached_ != nullptr ? attached_ + 3 + 2 * size() : flags_.data(); }
     const double* element_flags() const { return attached_ != nullptr ? attached_ + 3 + 2 * size() : flags_.data(); }
+    double spring_force(double w, const double* h) const;
+    double free_rate(double w, const double* h) const;
     void free_substep(double time_step, double& w, double* h) const;
     double contact_substep(double time_step, double new_displacement, double end_rate, double& w, double* h) const;
     double free_gap(std::size_t i) const;
@@ -188,6 +216,9 @@ private:
     std::vector<double> relaxed_;              ///< G_inf w_i + sum_k G_k E_k h_{k,i} for the prepared step
     std::vector<double> free_relaxed_;         ///< with a dashpot: relaxed_ - eta w'_i(start) of a free element
     std::optional<double> indenter_rate_;      ///< see begin_step
+    RateAtEntry rate_at_entry_ = RateAtEntry::continuous;  ///< see begin_step
+    double end_rate_ = 0.0;      ///< the indenter's rate at the end of the last step (see begin_step)
+    double entry_excess_ = 0.0;  ///< the sum of the entering elements' own rates less end_rate_, last step
     double contact_stiffness_ = 0.0;           ///< dsigma/dw of an element in contact over the prepared step
     double contact_offset_ = 0.0;              ///< -eta rate0 with the trapezoidal rate, else 0
     double free_stiffness_ = 0.0;              ///< dsigma/dw of a force-free element over the prepared step
