@@ -37,7 +37,8 @@ class FitResult:
         ``fitted`` ``"restitution"`` or ``"contact_time"``) with ``t`` holding the approach speeds v0 and an
         empty ``drive``. Numbers in the case's units (``summary["units"]``).
     fitted_case : str
-        The case with the fitted values, as TOML text.
+        fitted.toml's text: the case with the fitted values; its ``[load]`` is the case's own, or the first curve's
+        driving history (the contact point removed), as ``mdr fit`` writes it.
     ranking : list of dict
         With ``fit.candidates``: one entry per candidate model in ascending BIC (``name``, ``free_count``,
         ``residual_to_noise``, ``aic``, ``bic``, ``delta_aic``, ``delta_bic``, ``undetermined``, ...: the

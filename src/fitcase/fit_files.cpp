@@ -49,8 +49,8 @@ std::string load_of_curve(const fit::CurveFit& curve) {
     return fmt::format("control = \"{}\"\nhistory = [{}]\n", depth_driven ? "displacement" : "force", history);
 }
 
-// fitted.toml: the case with the fitted values and its own `[load]`; without one, the first measured curve's
-// history, or for rebound data alone the first impact (its speed, and the data set's mass as `indenter.mass`).
+// The case with the fitted values and its own `[load]`; without one, the first measured curve's history, or for
+// rebound data alone the first impact (its speed, and the data set's mass as `indenter.mass`).
 std::string fitted_text(const FitCase& fit_case, const fit::FitResult& result) {
     if (fit_case.had_load) return fitted_case_text(fit_case, result.values, "");
     const auto curve = std::find_if(result.curves.begin(), result.curves.end(),
@@ -69,6 +69,11 @@ std::string fitted_text(const FitCase& fit_case, const fit::FitResult& result) {
 }
 
 }  // namespace
+
+std::string fitted_toml(const FitCase& fit_case, const fit::FitResult& result) {
+    return fmt::format("# The case with the fitted values of mdr fit (fit.json has their errors).\n{}\n",
+                       fitted_text(fit_case, result));
+}
 
 Document fit_document(const fit::FitResult& result, const std::string& units) {
     Document::Table parameters, errors, intervals, undetermined;
@@ -213,8 +218,7 @@ void write_fit_result(const std::filesystem::path& directory, const FitCase& fit
     }
 
     auto toml = OutputFile(directory / "fitted.toml");
-    toml.print("# The case with the fitted values of mdr fit (fit.json has their errors).\n{}\n",
-               fitted_text(fit_case, result));
+    toml.print("{}", fitted_toml(fit_case, result));
     toml.close();
 }
 

@@ -107,3 +107,31 @@ def test_the_ranking_and_every_candidate_are_their_files(mdr_binary, tmp_path):
     assert list(result.candidates) == [entry["name"] for entry in ranking["candidates"]] == ["elastic", "standard"]
     for name, candidate in result.candidates.items():
         assert_same_document(candidate.summary, load(out / name / "fit.json"), name)
+
+
+@pytest.mark.parametrize("name", ["elastic", "candidates"])
+def test_the_fitted_case_is_fitted_toml(mdr_binary, tmp_path, name):
+    """FitResult.fitted_case is fitted.toml's text (docs/python.md), every candidate's too: a case without `[load]`
+    gets the first curve's driving history, so that it runs the fitted curve (docs/case-format.md, fitted.toml)."""
+    case = write_case(tmp_path, name)
+    result = mdr.fit(case)
+    out = command_line_fit(mdr_binary, case)
+    if not result.candidates:
+        assert result.fitted_case == (out / "fitted.toml").read_text(encoding="utf-8")
+    for candidate, fitted in result.candidates.items():
+        assert fitted.fitted_case == (out / candidate / "fitted.toml").read_text(encoding="utf-8"), candidate
+
+
+def test_a_fitted_case_without_a_load_drives_the_first_curve():
+    """The rule of fitted.toml (docs/case-format.md): without a `[load]`, the first curve's driving history, the
+    contact point removed (here fixed at 0, so the depths as given), at the data's own rows."""
+    t = [0.1 * i for i in range(11)]
+    d = [1e-6 * i for i in range(11)]
+    force = [16.0 / 3.0 * G_TRUE * math.sqrt(R) * depth**1.5 for depth in d]
+    case = {"material": {"model": "elastic", "G": 5e4}, "indenter": {"shape": "sphere", "R": R},
+            "fit": {"free": ["material.G"], "contact_point": "fixed", "baseline": "fixed"}}
+    result = mdr.fit(case, data=[{"time": t, "depth": d, "force": force}])
+    load = __import__("tomllib").loads(result.fitted_case)["load"]
+    assert load["control"] == "displacement"
+    assert [point[0] for point in load["history"]] == pytest.approx(t, rel=1e-15, abs=0.0)
+    assert [point[1] for point in load["history"]] == pytest.approx(d, rel=1e-15, abs=0.0)

@@ -18,6 +18,9 @@ namespace mdr::contact {
 /// the force with 48 nodes (6 per thickness beyond a/h = 8) is within 1e-7 of 512 nodes' for a/h up to 9
 /// (tests/verification/test_layer_contact.cpp, ForceConvergesInTheNumberOfNodes).
 inline constexpr std::size_t default_layer_nodes = 48;
+/// Gauss-Legendre nodes per thickness of the contact radius at least (the kernel's width is h): a contact wider than
+/// default_layer_nodes / 6 thicknesses takes more than the default nodes.
+inline constexpr std::size_t nodes_per_thickness = 6;
 
 /// The contact radius on a layer exceeds the half-space's at the same depth by at most 3 pi / 4 (a cone on a thin
 /// bonded incompressible layer, whose displaced volume stays under the indenter; a sphere: 2, docs/theory.md eq.
@@ -89,13 +92,17 @@ private:
     Solution solve(double contact_radius) const;
     // K(x - s) + K(x + s) (eq. L4: K(y) = k(y/h)/h).
     double kernel_sum(double x, double s) const;
+    /// Gauss-Legendre nodes over a contact of radius a: max(nodes_, nodes_per_thickness ceil(a/h)) (the kernel's
+    /// width is h).
+    std::size_t points_at(double contact_radius) const;
 
     Layer layer_;
     std::shared_ptr<const profile::Profile> indenter_;
     double max_contact_radius_;
     std::size_t nodes_;
     std::vector<double> kinks_;  ///< the indenter's (profile::Profile::kinks): the quadrature's panels end there
-    /// rules_[k]: the k-point Gauss-Legendre rule for k = nodes_ and, with kinks, for each panel's k up to nodes_
+    /// rules_[k]: the k-point Gauss-Legendre rule for every k = points_at(a) and, with kinks, for each panel's k up to
+    /// nodes_ (empty elsewhere)
     std::vector<numerics::GaussRule> rules_;
     LayerKernel kernel_;
 };
