@@ -77,38 +77,24 @@ drivers::LoadControl load_control(const py::handle& control) {
                          "mdr.ImpactControl or mdr.ShoreTest, got " + type_name(control));
 }
 
-// One part of the half-space given as an mdr.Material (`key` in messages): an mdr.ConvertedMaterial with its series,
-// its certificate, its description in the case's units `system` and its conversion times (not converted again).
-rheology::ModelMaterial model_material(const py::handle& material, const std::string& key,
-                                       const io::UnitSystem& system) {
+// The half-space's material as the case file's reader presents it (rheology::contact_material, one incompressible
+// body): a converted material with its certificate, its description in the case's units `system` and its
+// conversion times (its own series, not converted again).
+rheology::ContactMaterial half_space(const py::handle& material, const io::UnitSystem& system) {
     if (py::isinstance<ConvertedMaterial>(material)) {
         const auto& converted = material.cast<const ConvertedMaterial&>();
         const rheology::Rheology& series = converted;
-        return {series, converted.origin(io::unit_names(system))};
+        return rheology::contact_material(
+            rheology::Body{rheology::ModelMaterial{series, converted.origin(io::unit_names(system))}});
     }
     if (!py::isinstance<rheology::Rheology>(material)) {
-        throw py::type_error(key + ": expected an mdr.Material, got " + type_name(material));
+        throw py::type_error("material: expected an mdr.Material, got " + type_name(material));
     }
-    return {material.cast<rheology::Rheology>(), {}};
-}
-
-// The half-space as the case file's reader presents it (rheology::contact_material, one body): its shear material
-// and, for a compressible body, its bulk part `bulk`: K [Pa] as a number (`material.K`) or K(t) as an mdr.Material
-// (`[material.bulk]`).
-rheology::ContactMaterial half_space(const py::handle& material, const py::handle& bulk,
-                                     const io::UnitSystem& system) {
-    rheology::Body body{model_material(material, "material", system)};
-    if (py::isinstance<rheology::Rheology>(bulk)) {  // an mdr.ConvertedMaterial too
-        body.bulk = model_material(bulk, "bulk", system);
-    } else if (!bulk.is_none()) {
-        body.bulk = io::elastic_bulk(argument<Number>(bulk, "bulk", "a number (K) or an mdr.Material (K(t))"),
-                                     "material.K");
-    }
-    return rheology::contact_material(body);
+    return rheology::contact_material(rheology::Body{rheology::ModelMaterial{material.cast<rheology::Rheology>(), {}}});
 }
 
 struct CaseArguments {
-    py::object material, bulk, indenter, control, history, harmonic, end, snapshots, numerics, tangential, layer;
+    py::object material, indenter, control, history, harmonic, end, snapshots, numerics, tangential, layer;
     std::string title, units;
 };
 
@@ -176,8 +162,7 @@ drivers::ContactCase contact_case(const CaseArguments& given) {
     }
     if (!given.layer.is_none()) parts.layer = argument<contact::Layer>(given.layer, "layer", "an mdr.Layer");
     const io::UnitSystem& system = io::unit_system(parts.units);
-    return io::assemble_case(std::move(parts),
-                             [&](io::CaseParts&) { return half_space(given.material, given.bulk, system); });
+    return io::assemble_case(std::move(parts), [&](io::CaseParts&) { return half_space(given.material, system); });
 }
 
 void bind_controls(py::module_& module) {
@@ -420,10 +405,7 @@ drivers::ContactCase, checked at construction by the rules of a case file (mdr.I
 Parameters
 ----------
 material : mdr.Material
-    The half-space's shear material G(t) (one body). An mdr.ConvertedMaterial keeps its series and certificate.
-bulk : float or mdr.Material, optional
-    A compressible body's bulk part: its bulk modulus K [Pa] (``material.K``) or K(t) as an mdr.Material
-    (``[material.bulk]``); none: incompressible.
+    The half-space (one incompressible body). An mdr.ConvertedMaterial keeps its series and certificate.
 indenter : mdr.Indenter
     The indenter; none with an mdr.ShoreTest (the standard's).
 control : mdr.DisplacementControl, mdr.ForceControl, mdr.SpringControl, mdr.ImpactControl or mdr.ShoreTest
@@ -449,16 +431,14 @@ Examples
 >>> round(mdr.run(case).summary["max_force"], 4)   # Hertz: 16/3 G sqrt(R) d^(3/2)
 0.5333
 )doc")
-        .def(py::init([](const py::object& material, const py::object& bulk, const py::object& indenter,
-                         const py::object& control, const py::object& history, const py::object& harmonic,
-                         const py::object& end, const py::object& snapshots, const py::object& numerics,
-                         const py::object& tangential, const py::object& layer, const std::string& title,
-                         const std::string& units) {
-                 return contact_case(CaseArguments{material, bulk, indenter, control, history, harmonic, end,
-                                                   snapshots, numerics, tangential, layer, title, units});
+        .def(py::init([](const py::object& material, const py::object& indenter, const py::object& control,
+                         const py::object& history, const py::object& harmonic, const py::object& end,
+                         const py::object& snapshots, const py::object& numerics, const py::object& tangential,
+                         const py::object& layer, const std::string& title, const std::string& units) {
+                 return contact_case(CaseArguments{material, indenter, control, history, harmonic, end, snapshots,
+                                                   numerics, tangential, layer, title, units});
              }),
-             py::kw_only(), py::arg("material"), py::arg("bulk") = py::none(), py::arg("indenter") = py::none(),
-             py::arg("control"),
+             py::kw_only(), py::arg("material"), py::arg("indenter") = py::none(), py::arg("control"),
              py::arg("history") = py::none(), py::arg("harmonic") = py::none(), py::arg("end") = py::none(),
              py::arg("snapshots") = py::none(), py::arg("numerics") = py::none(), py::arg("tangential") = py::none(),
              py::arg("layer") = py::none(), py::arg("title") = "", py::arg("units") = "SI")
@@ -475,12 +455,7 @@ Examples
             "and mdr.Indenter), read by the case file's reader without text.")
         .def_readonly("title", &drivers::ContactCase::title)
         .def_readonly("material", &drivers::ContactCase::material,
-                      "The normal problem's material (a plain mdr.Material; its certificate is material_error): a "
-                      "compressible body's effective one (eq. 56).")
-        .def_readonly("shear_material", &drivers::ContactCase::shear_material,
-                      "A compressible body's shear material G(t) (None: incompressible, `material` is it).")
-        .def_readonly("bulk_material", &drivers::ContactCase::bulk_material,
-                      "A compressible body's bulk material K(t) (None: incompressible).")
+                      "The normal problem's material (a plain mdr.Material; its certificate is material_error).")
         .def_property_readonly(
             "indenter",
             [](const drivers::ContactCase& contact_case) {

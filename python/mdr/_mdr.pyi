@@ -240,8 +240,7 @@ class Layer:
 class ContactCase:
     """A contact case as objects (drivers::ContactCase), checked at construction by the case file's rules."""
 
-    def __init__(self, *, material: Material, bulk: Optional[float | Material] = None,
-                 indenter: Optional[Indenter] = None, control: _Control,
+    def __init__(self, *, material: Material, indenter: Optional[Indenter] = None, control: _Control,
                  history: Optional[Sequence[tuple[float, float]] | npt.ArrayLike] = None,
                  harmonic: Optional[Harmonic] = None, end: Optional[float] = None,
                  snapshots: Optional[Sequence[float]] = None, numerics: Optional[Numerics] = None,
@@ -255,10 +254,6 @@ class ContactCase:
     def title(self) -> str: ...
     @property
     def material(self) -> Material: ...
-    @property
-    def shear_material(self) -> Optional[Material]: ...
-    @property
-    def bulk_material(self) -> Optional[Material]: ...
     @property
     def indenter(self) -> Indenter: ...
     @property

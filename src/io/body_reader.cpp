@@ -1,7 +1,6 @@
 #include "body_reader.hpp"
 
 #include "mdr/error.hpp"
-#include "mdr/io/case_assembly.hpp"
 
 namespace mdr::io {
 
@@ -28,7 +27,10 @@ void require_bulk_modulus(const BodySpec& body) {
 rheology::Body build_body(const BodySpec& spec, const std::optional<rheology::TimeWindow>& window,
                           const std::string& directory, const UnitSystem& units) {
     rheology::Body body{build_material(spec.shear, window, directory, units)};
-    if (spec.bulk_modulus) body.bulk = elastic_bulk(*spec.bulk_modulus, spec.shear.prefix + "K");
+    if (spec.bulk_modulus) {
+        body.bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus),
+                                            {.times_from_conversion = true}};
+    }
     if (spec.bulk) body.bulk = build_material(*spec.bulk, window, directory, units);
     return body;
 }

@@ -25,12 +25,6 @@ void refuse_indenter_beside_durometer(bool case_has_indenter) {
     }
 }
 
-rheology::ModelMaterial elastic_bulk(double bulk_modulus, const std::string& key) {
-    require_positive(key, bulk_modulus);
-    // An elastic K has no time of its own: nothing for the time step (MaterialOrigin::times_from_conversion).
-    return {rheology::Rheology::elastic(bulk_modulus), {.times_from_conversion = true}};
-}
-
 rheology::TimeWindow case_window(const CaseParts& parts) {
     return drivers::material_window(parts.load, parts.end.value_or(std::numeric_limits<double>::infinity()),
                                     parts.numerics, parts.tangential,

@@ -176,45 +176,6 @@ interface = "sliding"
 """, lambda: mdr.ContactCase(
         material=mdr.Material.elastic(G=1e6), indenter=sphere(), control=mdr.DisplacementControl(),
         history=[(0.0, 0.0), (1.0, 5e-5)], layer=mdr.Layer(thickness=1e-3, interface="sliding"))),
-    "compressible_layer": ("""
-[material]
-model = "elastic"
-G = 1e6
-K = 3e6
-[indenter]
-shape = "sphere"
-R = 0.01
-[load]
-control = "displacement"
-history = [[0.0, 0.0], [1.0, 5e-5]]
-[layer]
-thickness = 1e-3
-interface = "bonded"
-""", lambda: mdr.ContactCase(
-        material=mdr.Material.elastic(G=1e6), bulk=3e6, indenter=sphere(), control=mdr.DisplacementControl(),
-        history=[(0.0, 0.0), (1.0, 5e-5)], layer=mdr.Layer(thickness=1e-3, interface="bonded"))),
-    "bulk_relaxation": ("""
-[material]
-model = "standard"
-G_inf = 1e6
-G1 = 2e6
-tau1 = 0.2
-[material.bulk]
-model = "maxwell"
-K = 5e6
-tau = 0.1
-[indenter]
-shape = "sphere"
-R = 0.01
-[load]
-control = "force"
-history = [[0.0, 0.0], [0.5, 0.1], [2.0, 0.1]]
-[numerics]
-elements = 300
-""", lambda: mdr.ContactCase(
-        material=mdr.Material.standard(G_inf=1e6, G1=2e6, tau1=0.2), bulk=mdr.Material.maxwell(G=5e6, tau=0.1),
-        indenter=sphere(), control=mdr.ForceControl(), history=[(0.0, 0.0), (0.5, 0.1), (2.0, 0.1)],
-        numerics=mdr.Numerics(elements=300))),
 }
 
 
@@ -242,48 +203,6 @@ def test_a_case_reads_back_its_parts(tmp_path):
     assert case.history == [(0.0, 0.0), (0.5, 1e-4), (2.0, 1e-4)] and case.end == 2.0
     assert case.harmonic.frequency == 5.0 and case.numerics.elements == 300 and case.snapshots == [1.0]
     assert mdr.check(case) == repr(case)[len("ContactCase("):-1]
-
-
-# --- a compressible body ------------------------------------------------------------------------------------------
-
-def test_a_compressible_body_gives_the_compressible_hertz_force():
-    """Hertz for a compressible elastic half-space: F = (4/3) E* sqrt(R) d^(3/2), E* = E / (1 - nu^2) = 2 G / (1 - nu),
-    nu = (3 K - 2 G) / (2 (3 K + G)) (Johnson, Contact Mechanics, eq. 4.22); K = 3 G gives nu = 0.35."""
-    bulk = 3.0 * G
-    nu = (3.0 * bulk - 2.0 * G) / (2.0 * (3.0 * bulk + G))
-    case = mdr.ContactCase(material=mdr.Material.elastic(G=G), bulk=bulk, indenter=sphere(),
-                           control=mdr.DisplacementControl(), history=[(0.0, 0.0), (1.0, 1e-4)])
-    history = mdr.run(case).history
-    loaded = history["d"] > 1e-5
-    expected = 4.0 / 3.0 * 2.0 * G / (1.0 - nu) * math.sqrt(R) * history["d"][loaded] ** 1.5
-    np.testing.assert_allclose(history["F"][loaded], expected, rtol=1e-5)
-    assert case.shear_material.G_inf == G and case.bulk_material.G_inf == bulk
-
-
-def test_a_compressible_case_rebuilt_from_its_parts_runs_as_before():
-    """The shear and bulk parts read back build the same case: the same force, and the tangential mapping still
-    flagged as approximate (a compressible body couples the two problems, section 7)."""
-    case = CASE_FILES["bulk_relaxation"][1]()
-    again = mdr.ContactCase(material=case.shear_material, bulk=case.bulk_material, indenter=case.indenter,
-                            control=case.control, history=case.history, numerics=case.numerics,
-                            tangential=mdr.Tangential(friction=0.3, history=[(0.0, 0.0), (2.0, 1e-7)]))
-    assert case.material.G_inf < case.shear_material.G_inf  # the effective material (eq. 56), not the shear one
-    np.testing.assert_array_equal(mdr.run(again).history["F"], mdr.run(case).history["F"])
-    assert mdr.run(again).summary["tangential_approximation"] is True
-    plain = mdr.ContactCase(material=mdr.Material.elastic(G=G), indenter=sphere(), control=mdr.ForceControl(),
-                            history=[(0.0, 0.0), (1.0, 0.1)])
-    assert plain.shear_material is None and plain.bulk_material is None
-
-
-@pytest.mark.parametrize("bulk, error, match", [
-    (-3e6, mdr.InvalidInput, r"material\.K = -3000000: must be > 0"),
-    ("3e6", TypeError, "bulk: expected a number"),
-    (True, TypeError, "bulk: expected a number"),
-])
-def test_a_bad_bulk_part_is_refused_naming_it(bulk, error, match):
-    with pytest.raises(error, match=match):
-        mdr.ContactCase(material=mdr.Material.elastic(G=G), bulk=bulk, indenter=sphere(),
-                        control=mdr.DisplacementControl(), history=[(0.0, 0.0), (1.0, 1e-4)])
 
 
 # --- a converted material keeps its certificate -------------------------------------------------------------------

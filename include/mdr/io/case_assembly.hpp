@@ -49,10 +49,6 @@ void refuse_indenter_beside_durometer(bool case_has_indenter);
 /// the bodies (a spring's force pauses, `[layer]`), into `parts`.
 using BodiesBuilder = std::function<rheology::ContactMaterial(CaseParts& parts)>;
 
-/// A body's bulk part given as its bulk modulus K [Pa] (`key`: `material.K`, `indenter.material.K`): K(t) = K.
-/// Throws mdr::InvalidInput naming `key` unless K > 0 is finite (require_positive).
-rheology::ModelMaterial elastic_bulk(double bulk_modulus, const std::string& key);
-
 /// The time window of completed parts (drivers::material_window of their load, end, numerics and tangential load).
 rheology::TimeWindow case_window(const CaseParts& parts);
 
