@@ -44,6 +44,7 @@ py::dict fit_output(const fitcase::FitCase& fit_case, const fit::FitResult& resu
     py::dict out;
     out["fit"] = document_object(fitcase::fit_document(result, fit_case.units));
     out["fitted_case"] = fitcase::fitted_case_text(fit_case, result.values, "");
+    out["fitted_tree"] = tree_object(fitcase::fitted_model(fit_case, result.values).tree());
     out["curves"] = curve_list;
     const auto& bands = result.material;
     py::dict material;

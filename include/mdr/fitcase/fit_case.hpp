@@ -51,8 +51,12 @@ FitCase load_fit_case(const std::filesystem::path& path);
 /// once, each evaluation rebuilding only the material, indenter or layer the free keys touch).
 fit::ModelBuilder model_builder(const FitCase& fit_case);
 
-/// The model case with `values` set for the free keys, as TOML text, with `[load]` replaced by `load_body` when
-/// it is not empty (fitted.toml).
+/// The model case with `values` set for the free keys (what fitted_case_text writes; Python's FitResult.predict
+/// takes it as a tree, io::CaseTemplate::tree, with its `[load]` replaced).
+io::CaseTemplate fitted_model(const FitCase& fit_case, const std::vector<double>& values);
+
+/// The model case with `values` set for the free keys (fitted_model), as TOML text, with `[load]` replaced by
+/// `load_body` when it is not empty (fitted.toml).
 std::string fitted_case_text(const FitCase& fit_case, const std::vector<double>& values, std::string_view load_body);
 
 }  // namespace mdr::fitcase

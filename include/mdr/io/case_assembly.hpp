@@ -67,9 +67,10 @@ rheology::TimeWindow case_window(const CaseParts& parts);
 
 /// The case of `parts`: a Shore test's durometer in the case's units (drivers::make_shore_test; its spring, the
 /// standard's indenter, shore_indenter, and its base history), an impact's history the point (0, 0), the end
-/// `load.end` or default_end_time; then the bodies (`bodies`, kept in the case: drivers::set_bodies) and the case's rules (drivers::validate,
-/// drivers::validate_layer, and for a model converted to a series drivers::require_certified_over its
-/// material_window). Throws mdr::InvalidInput naming the key, the value and the rule.
+/// `load.end` or default_end_time; then the bodies (`bodies`, kept in the case: drivers::set_bodies) and the case's
+/// rules (drivers::validate, drivers::validate_layer, and for a model converted to a series
+/// drivers::require_certified_over its material_window). Throws mdr::InvalidInput naming the key, the value and the
+/// rule.
 drivers::ContactCase assemble_case(CaseParts parts, const BodiesBuilder& bodies);
 
 }  // namespace mdr::io
