@@ -99,9 +99,9 @@ struct ContactCase {
     /// `[layer]`: a layer of finite thickness on a rigid substrate; absent: the half-space
     /// (drivers/layer_indentation.hpp).
     std::optional<contact::Layer> layer{};
-    /// The bodies as given (a compressible body's shear and bulk parts, the indenter's own body), which `material`,
-    /// `shear_material`, `bulk_material`, `tangential_exact` and `material_origin` combine (set_bodies); absent in a
-    /// case built from its combined material alone. What gives a case's parts back (Python's mdr.ContactCase).
+    /// The bodies as given (a compressible body's bulk part, the indenter's own body), of which set_bodies makes
+    /// `material`, `shear_material`, `bulk_material`, `tangential_exact` and `material_origin` (the drivers read those
+    /// only: a caller replacing them resets this). Absent: built from its combined material. mdr.ContactCase's parts.
     std::optional<rheology::ContactBodies> bodies{};
 };
 
