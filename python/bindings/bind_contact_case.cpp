@@ -3,13 +3,16 @@
 // assembly (its rules and messages). No text passes between Python and C++ on this path.
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "bindings.hpp"
@@ -63,38 +66,81 @@ Points history_points(const std::optional<drivers::LoadHistory>& history) {
     return points;
 }
 
-// The load control: one of the bound control classes (drivers::LoadControl); a Shore test is a spring control with
+// The name of the class `Type` is bound as in this module: `mdr.DisplacementControl`.
+template <class Type>
+std::string class_name() {
+    return "mdr." + py::type::of<Type>().attr("__name__").template cast<std::string>();
+}
+
+// The load control: an object of one of the alternatives `Controls` of drivers::LoadControl, each bound as its own
+// class (folded over them: a new control is taken once its class is bound), or a Shore test, a spring control with
 // the durometer's test.
-drivers::LoadControl load_control(const py::handle& control) {
-    if (py::isinstance<drivers::DisplacementControl>(control)) return control.cast<drivers::DisplacementControl>();
-    if (py::isinstance<drivers::ForceControl>(control)) return control.cast<drivers::ForceControl>();
-    if (py::isinstance<drivers::SpringControl>(control)) return control.cast<drivers::SpringControl>();
-    if (py::isinstance<drivers::ImpactControl>(control)) return control.cast<drivers::ImpactControl>();
+template <class... Controls>
+drivers::LoadControl load_control(const py::handle& control, std::type_identity<std::variant<Controls...>>) {
+    std::optional<drivers::LoadControl> found;
+    ((!found && py::isinstance<Controls>(control) ? void(found = control.template cast<Controls>()) : void()), ...);
+    if (found) return *std::move(found);
     if (py::isinstance<drivers::ShoreTest>(control)) {
         return drivers::SpringControl{.shore = control.cast<drivers::ShoreTest>()};
     }
-    throw py::type_error("load.control: expected mdr.DisplacementControl, mdr.ForceControl, mdr.SpringControl, "
-                         "mdr.ImpactControl or mdr.ShoreTest, got " + type_name(control));
+    const std::vector<std::string> names{class_name<Controls>()...};
+    throw py::type_error(fmt::format("load.control: expected {} or {}, got {}", fmt::join(names, ", "),
+                                     class_name<drivers::ShoreTest>(), type_name(control)));
 }
 
-// The half-space's material as the case file's reader presents it (rheology::contact_material, one incompressible
-// body): a converted material with its certificate, its description in the case's units `system` and its
-// conversion times (its own series, not converted again).
-rheology::ContactMaterial half_space(const py::handle& material, const io::UnitSystem& system) {
+// The material `material` (key `key`) as a case file's reader gives it to a body (io::compressible_body): a
+// converted material with its certificate, its description in the case's units `system` and its conversion times
+// (its own series, not converted again); a plain mdr.Material as its series.
+rheology::ModelMaterial model_material(const py::handle& material, const std::string& key,
+                                       const io::UnitSystem& system) {
     if (py::isinstance<ConvertedMaterial>(material)) {
         const auto& converted = material.cast<const ConvertedMaterial&>();
         const rheology::Rheology& series = converted;
-        return rheology::contact_material(
-            rheology::Body{rheology::ModelMaterial{series, converted.origin(io::unit_names(system))}});
+        return rheology::ModelMaterial{series, converted.origin(io::unit_names(system))};
     }
     if (!py::isinstance<rheology::Rheology>(material)) {
-        throw py::type_error("material: expected an mdr.Material, got " + type_name(material));
+        throw py::type_error(key + ": expected an mdr.Material, got " + type_name(material));
     }
-    return rheology::contact_material(rheology::Body{rheology::ModelMaterial{material.cast<rheology::Rheology>(), {}}});
+    return rheology::ModelMaterial{material.cast<rheology::Rheology>(), {}};
+}
+
+// The half-space's body (`material`, `K`, `bulk`) and the indenter's (`indenter_material`), by the rules of a case
+// file's body tables.
+rheology::ContactBodies contact_bodies(const py::object& material, const py::object& K, const py::object& bulk,
+                                       const py::object& indenter_material, const io::UnitSystem& system) {
+    std::optional<rheology::ModelMaterial> bulk_material;
+    if (!bulk.is_none()) bulk_material = model_material(bulk, "material.bulk", system);
+    std::optional<double> bulk_modulus;
+    if (!K.is_none()) bulk_modulus = argument<Number>(K, "material.K", "a number");
+    rheology::ContactBodies bodies{io::compressible_body(model_material(material, "material", system), bulk_modulus,
+                                                         std::move(bulk_material), "material.")};
+    if (!indenter_material.is_none()) {
+        bodies.indenter = rheology::Body{model_material(indenter_material, "indenter.material", system)};
+    }
+    return bodies;
+}
+
+// True when the control of `contact_case` takes the `[load]` key `key` (its row, drivers::control_kind): a part
+// that the control brings itself (an impact's and a Shore test's history) reads back as None, as it is given.
+bool control_takes(const drivers::ContactCase& contact_case, const std::string& key) {
+    return drivers::control_kind(contact_case.control).key_named(key) != nullptr;
+}
+
+// The indenter's own material as given, or None for a rigid one; a compressible indenter (its own K or bulk, from a
+// case file or dict) is not bound as objects, so it is refused here rather than read back without its bulk part.
+std::optional<rheology::Rheology> indenter_material(const drivers::ContactCase& contact_case) {
+    if (!contact_case.bodies || !contact_case.bodies->indenter) return std::nullopt;
+    const rheology::Body& body = *contact_case.bodies->indenter;
+    if (body.bulk) {
+        throw py::value_error("indenter.material: a compressible indenter (its own K or bulk) has no object form; "
+                              "read the case with mdr.ContactCase.from_file or from_dict");
+    }
+    return body.shear.series;
 }
 
 struct CaseArguments {
-    py::object material, indenter, control, history, harmonic, end, snapshots, numerics, tangential, layer;
+    py::object material, K, bulk, indenter, indenter_material, control, history, harmonic, end, snapshots, numerics,
+        tangential, layer;
     std::string title, units;
 };
 
@@ -133,7 +179,7 @@ std::string harmonic_repr(const drivers::HarmonicLoad& harmonic) {
 // take are refused.
 drivers::ContactCase contact_case(const CaseArguments& given) {
     io::CaseParts parts{.title = given.title, .units = std::string(io::unit_system(given.units).name)};
-    parts.control = load_control(given.control);
+    parts.control = load_control(given.control, std::type_identity<drivers::LoadControl>{});
     const drivers::ControlKind& kind = drivers::control_kind(parts.control);
     const std::pair<const char*, const py::object&> load_keys[] = {
         {"history", given.history}, {"harmonic", given.harmonic}, {"end", given.end}};
@@ -162,7 +208,9 @@ drivers::ContactCase contact_case(const CaseArguments& given) {
     }
     if (!given.layer.is_none()) parts.layer = argument<contact::Layer>(given.layer, "layer", "an mdr.Layer");
     const io::UnitSystem& system = io::unit_system(parts.units);
-    return io::assemble_case(std::move(parts), [&](io::CaseParts&) { return half_space(given.material, system); });
+    return io::assemble_case(std::move(parts), [&](io::CaseParts&) {
+        return contact_bodies(given.material, given.K, given.bulk, given.indenter_material, system);
+    });
 }
 
 void bind_controls(py::module_& module) {
@@ -405,9 +453,17 @@ drivers::ContactCase, checked at construction by the rules of a case file (mdr.I
 Parameters
 ----------
 material : mdr.Material
-    The half-space (one incompressible body). An mdr.ConvertedMaterial keeps its series and certificate.
+    The half-space's (shear) material, G(t) (``[material]``). An mdr.ConvertedMaterial keeps its series and
+    certificate.
+K : float, optional
+    A compressible half-space's bulk modulus [Pa] > 0, an elastic bulk part (``material.K``).
+bulk : mdr.Material, optional
+    A compressible half-space's bulk material K(t) (``material.bulk``, its moduli written as G); not with K.
 indenter : mdr.Indenter
     The indenter; none with an mdr.ShoreTest (the standard's).
+indenter_material : mdr.Material, optional
+    The material of an indenter that deforms itself (``indenter.material``, incompressible): two bodies in series
+    (eq. 8). A compressible indenter is read from a case file or dict only.
 control : mdr.DisplacementControl, mdr.ForceControl, mdr.SpringControl, mdr.ImpactControl or mdr.ShoreTest
 history : sequence of (float, float), optional
     The (t, value) points of the controlled quantity (``load.history``); an impact and a Shore test have none.
@@ -431,14 +487,17 @@ Examples
 >>> round(mdr.run(case).summary["max_force"], 4)   # Hertz: 16/3 G sqrt(R) d^(3/2)
 0.5333
 )doc")
-        .def(py::init([](const py::object& material, const py::object& indenter, const py::object& control,
+        .def(py::init([](const py::object& material, const py::object& K, const py::object& bulk,
+                         const py::object& indenter, const py::object& indenter_material, const py::object& control,
                          const py::object& history, const py::object& harmonic, const py::object& end,
                          const py::object& snapshots, const py::object& numerics, const py::object& tangential,
                          const py::object& layer, const std::string& title, const std::string& units) {
-                 return contact_case(CaseArguments{material, indenter, control, history, harmonic, end, snapshots,
-                                                   numerics, tangential, layer, title, units});
+                 return contact_case(CaseArguments{material, K, bulk, indenter, indenter_material, control, history,
+                                                   harmonic, end, snapshots, numerics, tangential, layer, title,
+                                                   units});
              }),
-             py::kw_only(), py::arg("material"), py::arg("indenter") = py::none(), py::arg("control"),
+             py::kw_only(), py::arg("material"), py::arg("K") = py::none(), py::arg("bulk") = py::none(),
+             py::arg("indenter") = py::none(), py::arg("indenter_material") = py::none(), py::arg("control"),
              py::arg("history") = py::none(), py::arg("harmonic") = py::none(), py::arg("end") = py::none(),
              py::arg("snapshots") = py::none(), py::arg("numerics") = py::none(), py::arg("tangential") = py::none(),
              py::arg("layer") = py::none(), py::arg("title") = "", py::arg("units") = "SI")
@@ -454,20 +513,46 @@ Examples
             "The case of a dict with a case file's structure (values may be numpy numbers and arrays, mdr.Material "
             "and mdr.Indenter), read by the case file's reader without text.")
         .def_readonly("title", &drivers::ContactCase::title)
-        .def_readonly("material", &drivers::ContactCase::material,
-                      "The normal problem's material (a plain mdr.Material; its certificate is material_error).")
+        .def_property_readonly(
+            "material",
+            [](const drivers::ContactCase& contact_case) {
+                return contact_case.bodies ? contact_case.bodies->half_space.shear.series : contact_case.material;
+            },
+            "The half-space's (shear) material as given (a plain mdr.Material; its certificate is material_error).")
+        .def_property_readonly(
+            "bulk",
+            [](const drivers::ContactCase& contact_case) -> std::optional<rheology::Rheology> {
+                if (!contact_case.bodies || !contact_case.bodies->half_space.bulk) return std::nullopt;
+                return contact_case.bodies->half_space.bulk->series;
+            },
+            "The half-space's bulk material K(t) (``material.K`` or ``material.bulk``), None for an incompressible "
+            "body.")
         .def_property_readonly(
             "indenter",
-            [](const drivers::ContactCase& contact_case) {
+            [](const drivers::ContactCase& contact_case) -> std::shared_ptr<profile::Profile> {
+                if (contact_case.shore()) return nullptr;  // the durometer's: the Shore test brings it
                 return std::const_pointer_cast<profile::Profile>(contact_case.indenter);
-            })
+            },
+            "The indenter as given; None with a Shore test, which brings the standard's.")
+        .def_property_readonly("indenter_material", &indenter_material,
+                               "The indenter's own material (``indenter.material``), None for a rigid indenter.")
         .def_readonly("control", &drivers::ContactCase::control)
         .def_property_readonly(
             "history",
-            [](const drivers::ContactCase& contact_case) { return history_points(contact_case.load.history); })
+            [](const drivers::ContactCase& contact_case) -> std::optional<Points> {
+                if (!control_takes(contact_case, "history")) return std::nullopt;
+                return history_points(contact_case.load.history);
+            },
+            "The history as given; None under a control that brings its own (an impact, a Shore test).")
         .def_property_readonly("harmonic",
                                [](const drivers::ContactCase& contact_case) { return contact_case.load.harmonic; })
-        .def_readonly("end", &drivers::ContactCase::end_time)
+        .def_property_readonly(
+            "end",
+            [](const drivers::ContactCase& contact_case) -> std::optional<double> {
+                if (!control_takes(contact_case, "end")) return std::nullopt;
+                return contact_case.end_time;
+            },
+            "The last time simulated [s]; None under a control that sets it (a Shore test).")
         .def_readonly("snapshots", &drivers::ContactCase::snapshots)
         .def_readonly("numerics", &drivers::ContactCase::numerics)
         .def_readonly("tangential", &drivers::ContactCase::tangential)

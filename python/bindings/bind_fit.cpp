@@ -43,7 +43,9 @@ py::dict fit_output(const fitcase::FitCase& fit_case, const fit::FitResult& resu
     }
     py::dict out;
     out["fit"] = document_object(fitcase::fit_document(result, fit_case.units));
+    const io::CaseTemplate fitted = fitcase::fitted_case(fit_case, result);
     out["fitted_case"] = fitcase::fitted_toml(fit_case, result);
+    out["fitted_tree"] = tree_object(fitted.tree());
     out["curves"] = curve_list;
     const auto& bands = result.material;
     py::dict material;

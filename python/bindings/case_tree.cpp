@@ -1,6 +1,8 @@
 #include "case_tree.hpp"
 
 #include <cstdint>
+#include <type_traits>
+#include <variant>
 
 #include "mdr/error.hpp"
 #include "mdr/io/case_tree.hpp"
@@ -44,7 +46,30 @@ io::CaseValue case_value(const py::handle& value, const std::string& key) {
                          py::type::of(value).attr("__name__").cast<std::string>());
 }
 
+py::object value_object(const io::CaseValue& value) {
+    return std::visit(
+        [](const auto& held) -> py::object {
+            using Held = std::decay_t<decltype(held)>;
+            if constexpr (std::is_same_v<Held, io::CaseTable>) {
+                return tree_object(held);
+            } else if constexpr (std::is_same_v<Held, io::CaseArray>) {
+                py::list items;
+                for (const io::CaseValue& item : held) items.append(value_object(item));
+                return items;
+            } else {
+                return py::cast(held);
+            }
+        },
+        value.value);
+}
+
 }  // namespace
+
+py::dict tree_object(const io::CaseTable& table) {
+    py::dict converted;
+    for (const auto& [key, value] : table) converted[py::str(key)] = value_object(value);
+    return converted;
+}
 
 io::CaseTemplate case_template(const py::handle& case_, const std::string& source) {
     if (py::isinstance<py::str>(case_)) return io::CaseTemplate(case_.cast<std::string>(), source);

@@ -15,4 +15,8 @@ namespace mdr::python {
 /// integer beyond 64 bits and for malformed TOML text.
 io::CaseTemplate case_template(const pybind11::handle& case_, const std::string& source);
 
+/// The tree `table` as Python values (dicts, lists, bool, int, float, str): the inverse of what case_template reads
+/// from a dict.
+pybind11::dict tree_object(const io::CaseTable& table);
+
 }  // namespace mdr::python

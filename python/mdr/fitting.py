@@ -39,6 +39,9 @@ class FitResult:
     fitted_case : str
         fitted.toml's text: the case with the fitted values; its ``[load]`` is the case's own, or the first curve's
         driving history (the contact point removed), as ``mdr fit`` writes it.
+    fitted_tree : dict
+        The same case as a tree of dicts, lists and numbers, given by the library without text: what ``predict``
+        runs (with its ``[load]`` replaced), and what :func:`mdr.run` takes as a case.
     ranking : list of dict
         With ``fit.candidates``: one entry per candidate model in ascending BIC (``name``, ``free_count``,
         ``residual_to_noise``, ``aic``, ``bic``, ``delta_aic``, ``delta_bic``, ``undetermined``, ...: the
@@ -61,6 +64,7 @@ class FitResult:
     summary: dict[str, Any]
     curves: list[dict[str, Any]] = field(default_factory=list)
     fitted_case: str = ""
+    fitted_tree: dict[str, Any] = field(default_factory=dict)
     ranking: list[dict[str, Any]] = field(default_factory=list)
     candidates: dict[str, "FitResult"] = field(default_factory=dict)
     spectrum: dict[str, Any] | None = None
@@ -81,9 +85,7 @@ class FitResult:
         """
         from . import run
 
-        case = tomllib.loads(self.fitted_case)
-        case["load"] = dict(load)
-        return run(case)
+        return run({**self.fitted_tree, "load": dict(load)})
 
 
 def _numbers(summary: Mapping[str, Any], key: str) -> dict[str, float]:
@@ -285,7 +287,8 @@ def _result(raw: Mapping[str, Any]) -> FitResult:
     result = FitResult(parameters=_numbers(summary, "parameters"), standard_errors=_numbers(summary, "standard_errors"),
                        status=summary["status"], summary=summary,
                        curves=[dict(c, kind=s["kind"], fitted=s["fitted"]) for c, s in zip(raw["curves"], summary["curves"])],
-                       fitted_case=raw["fitted_case"], material=dict(raw["material"]))
+                       fitted_case=raw["fitted_case"], fitted_tree=raw["fitted_tree"],
+                       material=dict(raw["material"]))
     times = np.asarray(raw.get("relaxation_times", []), dtype=float)
     if times.size:
         result.spectrum = {"tau": times, "G_inf": result.parameters["material.G_inf"],

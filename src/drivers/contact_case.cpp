@@ -12,6 +12,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <utility>
 
 namespace mdr::drivers {
 namespace {
@@ -200,6 +201,16 @@ ResolvedNumerics resolve_numerics(const ContactCase& contact_case) {
         [&](auto traits, const auto& control) { return traits.resolve_numerics(contact_case, control); });
     require_bounded_work(contact_case, resolved);
     return resolved;
+}
+
+void set_bodies(ContactCase& contact_case, rheology::ContactBodies bodies) {
+    rheology::ContactMaterial contact = rheology::contact_material(bodies);
+    contact_case.material = std::move(contact.material);
+    contact_case.shear_material = std::move(contact.shear_material);
+    contact_case.bulk_material = std::move(contact.bulk_material);
+    contact_case.tangential_exact = contact.tangential_exact;
+    contact_case.material_origin = std::move(contact.origin);
+    contact_case.bodies = std::move(bodies);
 }
 
 }  // namespace mdr::drivers

@@ -35,9 +35,8 @@ void validate_oblique(const ContactCase& contact_case) {
     require_non_negative("tangential.friction", oblique->friction);
     require_finite("load.tangential_velocity", oblique->tangential_velocity);
     require_finite("load.spin", oblique->spin);
-    const profile::ProfileDefinition sphere = contact_case.indenter->definition();
-    if (sphere.shape != "sphere") {
-        throw InvalidInput("indenter.shape", "\"" + sphere.shape + "\"",
+    if (!contact_case.indenter->tip_radius()) {  // the capability of the type, not its name (issue 27)
+        throw InvalidInput("indenter.shape", "\"" + contact_case.indenter->definition().shape + "\"",
                            "an oblique impact needs shape = \"sphere\" (its radius is the lever of the friction)");
     }
     if (oblique->moment_of_inertia) require_positive("indenter.moment_of_inertia", *oblique->moment_of_inertia);

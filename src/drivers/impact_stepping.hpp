@@ -73,8 +73,9 @@ struct ControlTraits<ImpactControl> {
     static std::vector<ControlKind> rows();
     static const char* row_name(const ImpactControl& /*impact*/) { return "impact"; }
     /// A mass and an approach speed > 0, an elastic part beside a dashpot, no tangential load and no harmonic; an
-    /// oblique impact: friction >= 0, finite tangential velocity and spin, a sphere, a positive moment of inertia
-    /// when one is given, one incompressible body (tangential_exact).
+    /// oblique impact: friction >= 0, finite tangential velocity and spin, an indenter with a tip radius
+    /// (Profile::tip_radius: a sphere), a positive moment of inertia when one is given, one incompressible body
+    /// (tangential_exact).
     static void validate(const ContactCase& contact_case, const ImpactControl& impact);
     static void validate_within_run(const ContactCase& /*contact_case*/, const ImpactControl& /*impact*/) {}
     /// The impact's defaults (resolve_numerics): the time step from the elastic impact with the stiffest spring

@@ -240,11 +240,10 @@ fit::ModelBuilder model_builder(const FitCase& fit_case, const std::vector<fit::
     };
 }
 
-std::string fitted_case_text(const FitCase& fit_case, const std::vector<double>& values, std::string_view load_body) {
+io::CaseTemplate fitted_model(const FitCase& fit_case, const std::vector<double>& values) {
     io::CaseTemplate copy = fit_case.model;
     for (std::size_t j = 0; j < fit_case.parameters.size(); ++j) copy.set_number(fit_case.parameters[j].name, values[j]);
-    if (!load_body.empty()) copy.set_table("load", load_body);
-    return copy.text();
+    return copy;
 }
 
 }  // namespace mdr::fitcase

@@ -49,30 +49,31 @@ std::string load_of_curve(const fit::CurveFit& curve) {
     return fmt::format("control = \"{}\"\nhistory = [{}]\n", depth_driven ? "displacement" : "force", history);
 }
 
-// The case with the fitted values and its own `[load]`; without one, the first measured curve's history, or for
-// rebound data alone the first impact (its speed, and the data set's mass as `indenter.mass`).
-std::string fitted_text(const FitCase& fit_case, const fit::FitResult& result) {
-    if (fit_case.had_load) return fitted_case_text(fit_case, result.values, "");
+}  // namespace
+
+io::CaseTemplate fitted_case(const FitCase& fit_case, const fit::FitResult& result) {
+    io::CaseTemplate fitted = fitted_model(fit_case, result.values);
+    if (fit_case.had_load) return fitted;
     const auto curve = std::find_if(result.curves.begin(), result.curves.end(),
                                     [](const fit::CurveFit& entry) { return !entry.rebound; });
-    if (curve != result.curves.end()) return fitted_case_text(fit_case, result.values, load_of_curve(*curve));
-    const auto& rebound = result.curves.front();
-    FitCase impact_case = fit_case;
-    if (impact_case.model.has_number("indenter.mass")) {
-        impact_case.model.set_number("indenter.mass", rebound.mass);
-    } else {
-        const std::string indenter = impact_case.model.take_table("indenter");
-        impact_case.model.set_table("indenter", fmt::format("mass = {}\n{}", rebound.mass, indenter));
+    if (curve != result.curves.end()) {
+        fitted.set_table("load", load_of_curve(*curve));
+        return fitted;
     }
-    return fitted_case_text(impact_case, result.values,
-                            fmt::format("control = \"impact\"\nvelocity = {}\n", rebound.time.front()));
+    const auto& rebound = result.curves.front();
+    if (fitted.has_number("indenter.mass")) {
+        fitted.set_number("indenter.mass", rebound.mass);
+    } else {
+        const std::string indenter = fitted.take_table("indenter");
+        fitted.set_table("indenter", fmt::format("mass = {}\n{}", rebound.mass, indenter));
+    }
+    fitted.set_table("load", fmt::format("control = \"impact\"\nvelocity = {}\n", rebound.time.front()));
+    return fitted;
 }
-
-}  // namespace
 
 std::string fitted_toml(const FitCase& fit_case, const fit::FitResult& result) {
     return fmt::format("# The case with the fitted values of mdr fit (fit.json has their errors).\n{}\n",
-                       fitted_text(fit_case, result));
+                       fitted_case(fit_case, result).text());
 }
 
 Document fit_document(const fit::FitResult& result, const std::string& units) {

@@ -1,15 +1,13 @@
 #include "body_reader.hpp"
 
 #include "mdr/error.hpp"
+#include "mdr/io/case_assembly.hpp"
 
 namespace mdr::io {
 
 BodySpec read_body(TableReader& table) {
     BodySpec body{read_material(table, "G", {"K", "bulk"}), std::nullopt, std::nullopt};
-    if (table.has("K") && table.has("bulk")) {
-        throw InvalidInput(table.key_path("K"), table.text("K"),
-                           "give either K or [" + table.key_path("bulk") + "], not both");
-    }
+    refuse_two_bulk_parts(body.shear.prefix, table.has("K"), table.has("bulk"), table.has("K") ? table.text("K") : "");
     if (table.has("K")) {
         body.bulk_modulus = table.number("K");
         require_bulk_modulus(body);
@@ -21,18 +19,15 @@ BodySpec read_body(TableReader& table) {
 }
 
 void require_bulk_modulus(const BodySpec& body) {
-    if (body.bulk_modulus) require_positive(body.shear.prefix + "K", *body.bulk_modulus);
+    if (body.bulk_modulus) require_bulk_modulus(body.shear.prefix, *body.bulk_modulus);
 }
 
 rheology::Body build_body(const BodySpec& spec, const std::optional<rheology::TimeWindow>& window,
                           const std::string& directory, const UnitSystem& units) {
-    rheology::Body body{build_material(spec.shear, window, directory, units)};
-    if (spec.bulk_modulus) {
-        body.bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*spec.bulk_modulus),
-                                            {.times_from_conversion = true}};
-    }
-    if (spec.bulk) body.bulk = build_material(*spec.bulk, window, directory, units);
-    return body;
+    rheology::ModelMaterial shear = build_material(spec.shear, window, directory, units);
+    std::optional<rheology::ModelMaterial> bulk;
+    if (spec.bulk) bulk = build_material(*spec.bulk, window, directory, units);
+    return compressible_body(std::move(shear), spec.bulk_modulus, std::move(bulk), spec.shear.prefix);
 }
 
 }  // namespace mdr::io

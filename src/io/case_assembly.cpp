@@ -25,6 +25,27 @@ void refuse_indenter_beside_durometer(bool case_has_indenter) {
     }
 }
 
+void refuse_two_bulk_parts(const std::string& prefix, bool has_bulk_modulus, bool has_bulk, const std::string& K_text) {
+    if (has_bulk_modulus && has_bulk) {
+        throw InvalidInput(prefix + "K", K_text, "give either K or [" + prefix + "bulk], not both");
+    }
+}
+
+void require_bulk_modulus(const std::string& prefix, double K) { require_positive(prefix + "K", K); }
+
+rheology::Body compressible_body(rheology::ModelMaterial shear, std::optional<double> K,
+                                 std::optional<rheology::ModelMaterial> bulk, const std::string& prefix) {
+    rheology::Body body{std::move(shear)};
+    if (K) {
+        refuse_two_bulk_parts(prefix, true, bulk.has_value(), format_value(*K));
+        require_bulk_modulus(prefix, *K);
+        body.bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*K), {.times_from_conversion = true}};
+    } else {
+        body.bulk = std::move(bulk);
+    }
+    return body;
+}
+
 rheology::TimeWindow case_window(const CaseParts& parts) {
     return drivers::material_window(parts.load, parts.end.value_or(std::numeric_limits<double>::infinity()),
                                     parts.numerics, parts.tangential,
@@ -48,22 +69,19 @@ drivers::ContactCase assemble_case(CaseParts parts, const BodiesBuilder& bodies)
     if (!parts.end && parts.load.history) {  // without a history drivers::validate refuses the case
         parts.end = default_end_time(parts.load, impact, parts.tangential);
     }
-    rheology::ContactMaterial material = bodies(parts);
+    rheology::ContactBodies given_bodies = bodies(parts);
     drivers::ContactCase contact_case{.title = std::move(parts.title),
-                                      .material = std::move(material.material),
+                                      .material = given_bodies.half_space.shear.series,  // combined by set_bodies
                                       .indenter = std::move(parts.indenter),
                                       .control = std::move(parts.control),
                                       .load = std::move(parts.load),
                                       .end_time = parts.end.value_or(std::numeric_limits<double>::infinity()),
                                       .snapshots = std::move(parts.snapshots),
                                       .numerics = parts.numerics,
-                                      .shear_material = std::move(material.shear_material),
-                                      .bulk_material = std::move(material.bulk_material),
                                       .tangential = std::move(parts.tangential),
-                                      .tangential_exact = material.tangential_exact,
-                                      .material_origin = std::move(material.origin),
                                       .units = std::string(system.name),
                                       .layer = parts.layer};
+    drivers::set_bodies(contact_case, std::move(given_bodies));
     drivers::validate(contact_case);
     drivers::validate_layer(contact_case);
     return contact_case;

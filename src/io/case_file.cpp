@@ -292,11 +292,10 @@ drivers::ContactCase read_case(const toml::table& root_table,
         }
         std::optional<rheology::Body> second;
         if (second_spec) second = build_body(*second_spec, window, directory, system);
-        rheology::ContactMaterial contact =
-            rheology::contact_material(build_body(half_space_spec, window, directory, system), second);
+        rheology::ContactBodies bodies{build_body(half_space_spec, window, directory, system), std::move(second)};
         control_reading->finish(*load, completed.control);
         if (auto layer = root.table("layer")) completed.layer = read_layer(*layer);
-        return contact;
+        return bodies;
     });
 }
 

@@ -73,6 +73,31 @@ toml::table to_toml(const CaseTable& table) {
     return converted;
 }
 
+CaseTable from_toml(const toml::table& table);
+
+// A node as a value of the tree; a date or time (no value of a case: its readers refuse one) as its TOML text.
+CaseValue from_toml(const toml::node& node) {
+    if (const auto* table = node.as_table()) return {from_toml(*table)};
+    if (const auto* array = node.as_array()) {
+        CaseArray converted;
+        for (const toml::node& item : *array) converted.push_back(from_toml(item));
+        return {std::move(converted)};
+    }
+    if (const auto* flag = node.as_boolean()) return {flag->get()};
+    if (const auto* integer = node.as_integer()) return {integer->get()};
+    if (const auto* number = node.as_floating_point()) return {number->get()};
+    if (const auto* text = node.as_string()) return {text->get()};
+    std::ostringstream text;
+    node.visit([&text](const auto& value) { text << value; });
+    return {text.str()};
+}
+
+CaseTable from_toml(const toml::table& table) {
+    CaseTable converted;
+    for (const auto& [key, node] : table) converted.emplace_back(std::string(key.str()), from_toml(node));
+    return converted;
+}
+
 }  // namespace
 
 CaseTemplate::CaseTemplate(const CaseTable& root, const std::string& source)
@@ -143,6 +168,8 @@ std::string CaseTemplate::text() const {
     text << tables_->root;
     return text.str();
 }
+
+CaseTable CaseTemplate::tree() const { return from_toml(tables_->root); }
 
 const std::string& CaseTemplate::source() const { return tables_->source; }
 

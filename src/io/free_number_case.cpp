@@ -167,13 +167,8 @@ drivers::ContactCase FreeNumberCase::build(const std::vector<double>& values) co
         const UnitSystem& units = unit_system(contact_case.units);
         std::optional<rheology::Body> second;
         if (editable.second) second = build_body(*editable.second, parts.window, parts.directory, units);
-        rheology::ContactMaterial contact = rheology::contact_material(
-            build_body(editable.half_space, parts.window, parts.directory, units), second);
-        contact_case.material = std::move(contact.material);
-        contact_case.shear_material = std::move(contact.shear_material);
-        contact_case.bulk_material = std::move(contact.bulk_material);
-        contact_case.tangential_exact = contact.tangential_exact;
-        contact_case.material_origin = std::move(contact.origin);
+        drivers::set_bodies(contact_case, {build_body(editable.half_space, parts.window, parts.directory, units),
+                                           std::move(second)});
     }
     if (parts.layer) {
         require_layer_thickness("layer.thickness", *editable.thickness, float_text(*editable.thickness));

@@ -42,6 +42,31 @@ def test_kelvin_voigt_from_a_creep_curve_given_as_arrays():
     assert predicted.summary["max_force"] == pytest.approx(0.2)
 
 
+def test_predict_runs_the_fitted_values_as_given_without_text(monkeypatch):
+    """FitResult.predict runs the fitted case the library gives as a tree (issue 27: no text between C++ and
+    Python): the model case with each fitted value set by hand, bit-identical, and no TOML parsed on the way."""
+    t = np.linspace(0.0, 2.0, 201)
+    F = np.full_like(t, 0.2)
+    material = {"model": "kelvin_voigt", "G": 3.0e5, "eta": 1.0e6}
+    case = {"material": material, "indenter": {"shape": "sphere", "R": R},
+            "fit": {"free": ["material.G", "material.eta"], "fitted": "depth",
+                    "contact_point": "fixed", "baseline": "fixed"}}
+    result = mdr.fit(case, data=[{"time": t, "depth": kelvin_voigt_creep_depth(t, 1.0e6, 3.0e5, 0.2), "force": F}])
+    load = {"control": "force", "history": [[0.0, 0.0], [0.5, 0.2], [2.0, 0.2]]}
+    fitted = dict(material, G=result.parameters["material.G"], eta=result.parameters["material.eta"])
+    expected = mdr.run({"material": fitted, "indenter": case["indenter"], "load": load})
+
+    def no_text(*_):
+        raise AssertionError("predict parsed TOML text")
+
+    import tomllib
+    monkeypatch.setattr(tomllib, "loads", no_text)
+    predicted = result.predict(load)
+    for column, values in expected.history.items():
+        np.testing.assert_array_equal(predicted.history[column], values, err_msg=column)
+    assert result.fitted_tree["material"] == fitted
+
+
 def test_a_curve_can_fit_its_own_quantity():
     # The creep curve of the test above fits its depth while the fit's setting says force: per-curve `fitted`.
     t = np.linspace(0.0, 2.0, 201)

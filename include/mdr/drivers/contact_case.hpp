@@ -14,6 +14,7 @@
 #include "mdr/drivers/tangential_load.hpp"
 #include "mdr/profile/profile.hpp"
 #include "mdr/rheology/approximation.hpp"
+#include "mdr/rheology/contact_bodies.hpp"
 #include "mdr/rheology/rheology.hpp"
 
 namespace mdr::drivers {
@@ -98,7 +99,15 @@ struct ContactCase {
     /// `[layer]`: a layer of finite thickness on a rigid substrate; absent: the half-space
     /// (drivers/layer_indentation.hpp).
     std::optional<contact::Layer> layer{};
+    /// The bodies as given (a compressible body's bulk part, the indenter's own body), of which set_bodies makes
+    /// `material`, `shear_material`, `bulk_material`, `tangential_exact` and `material_origin` (the drivers read those
+    /// only: a caller replacing them resets this). Absent: built from its combined material. mdr.ContactCase's parts.
+    std::optional<rheology::ContactBodies> bodies{};
 };
+
+/// Sets the material of `contact_case` from its bodies: `material`, `shear_material`, `bulk_material`,
+/// `tangential_exact` and `material_origin` as rheology::contact_material combines `bodies`, and `bodies` itself.
+void set_bodies(ContactCase& contact_case, rheology::ContactBodies bodies);
 
 /// Elements on the half-width when `[numerics] elements` is not given. With the half-width 1.1 times the largest
 /// contact radius, the contact spans ~1800 elements at the peak, so the midpoint-rule error of the force,

@@ -51,8 +51,8 @@ struct ImpactControl {
 };
 
 /// What the load prescribes: one of the controls, in the order of the table of controls (controls.hpp). Adding a
-/// control is one new type here, its drivers' side (its ControlTraits: stepping, rules, numerics, rows of the table)
-/// and its reader's row (src/io/control_readers.cpp): docs/architecture.md, "How to add a control".
+/// control is one new type here, its drivers' side (its ControlTraits: stepping, rules, numerics, rows of the table),
+/// its reader's row (src/io/control_readers.cpp) and its Python class: docs/architecture.md, "How to add a control".
 using LoadControl = std::variant<DisplacementControl, ForceControl, ImpactControl, SpringControl>;
 
 }  // namespace mdr::drivers

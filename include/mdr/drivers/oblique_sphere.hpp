@@ -13,7 +13,7 @@ struct ObliqueSphere {
     double moment_of_inertia;  ///< I [kg m^2] about the centre
 };
 
-/// The sphere of `contact_case`, an oblique impact on a sphere (drivers::validate): R from the indenter, I as
+/// The sphere of `contact_case`, an oblique impact on a sphere (drivers::validate): R the indenter's tip_radius(), I as
 /// given (ObliqueImpactLoad::moment_of_inertia) or a solid sphere's 2/5 m R^2.
 ObliqueSphere oblique_sphere(const ContactCase& contact_case);
 

@@ -58,8 +58,7 @@ io::CaseTemplate converting_model(const FitCase& fit_case, const std::vector<fit
 /// touch).
 fit::ModelBuilder model_builder(const FitCase& fit_case, const std::vector<fit::Curve>& curves);
 
-/// The model case with `values` set for the free keys, as TOML text, with `[load]` replaced by `load_body` when
-/// it is not empty (fitted.toml).
-std::string fitted_case_text(const FitCase& fit_case, const std::vector<double>& values, std::string_view load_body);
+/// The model case with `values` set for the free keys (its `[load]` the case's own: fitted_case completes it).
+io::CaseTemplate fitted_model(const FitCase& fit_case, const std::vector<double>& values);
 
 }  // namespace mdr::fitcase

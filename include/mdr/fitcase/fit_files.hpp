@@ -27,9 +27,12 @@ std::string fit_json(const fit::FitResult& result, const std::string& units = "S
 /// (fit::KeySpread), and `flags`. NaN is null.
 Document spread_document(const fit::RepeatSpread& spread);
 
-/// fitted.toml's text: the case with the fitted values; its `[load]` is the case's own, or the first curve's driving
-/// history (the contact point removed), or for rebound data alone the first impact (its speed, the data set's mass
-/// as `indenter.mass`), so that `mdr run fitted.toml` runs it. Python's FitResult.fitted_case is this text.
+/// The case with the fitted values; its `[load]` is the case's own, or the first curve's driving history (the
+/// contact point removed), or for rebound data alone the first impact (its speed, the data set's mass as
+/// `indenter.mass`), so that it runs. Python's FitResult.fitted_tree is its tree.
+io::CaseTemplate fitted_case(const FitCase& fit_case, const fit::FitResult& result);
+
+/// fitted.toml's text: fitted_case as TOML under a comment line. Python's FitResult.fitted_case is this text.
 std::string fitted_toml(const FitCase& fit_case, const fit::FitResult& result);
 
 /// Writes fit.json, fitted.toml (the case with the fitted values; its load is the case's own, or the first

@@ -47,16 +47,29 @@ void refuse_indenter_beside_durometer(bool case_has_indenter);
 /// The bodies of a case, built once its load is complete (`parts` as assemble_case completed it; a model converted
 /// to a series is converted over case_window(parts)). The reader also reads there what it has always read after
 /// the bodies (a spring's force pauses, `[layer]`), into `parts`.
-using BodiesBuilder = std::function<rheology::ContactMaterial(CaseParts& parts)>;
+using BodiesBuilder = std::function<rheology::ContactBodies(CaseParts& parts)>;
+
+/// Throws mdr::InvalidInput (key `prefix`K, its value `K_text`) when a body table `prefix` (`material.`,
+/// `indenter.material.`) gives both a bulk modulus K and a bulk material: a body has one bulk part.
+void refuse_two_bulk_parts(const std::string& prefix, bool has_bulk_modulus, bool has_bulk, const std::string& K_text);
+
+/// The rule of a body table `prefix`'s bulk modulus: K > 0 (mdr::InvalidInput naming `prefix`K).
+void require_bulk_modulus(const std::string& prefix, double K);
+
+/// The body of the shear material `shear`, compressible with the bulk modulus `K` [Pa] (an elastic bulk part, whose
+/// times count as a conversion's: none) or the bulk material `bulk` (K(t)), incompressible with neither, by a body
+/// table `prefix`'s rules (require_bulk_modulus; not both: refuse_two_bulk_parts). Throws mdr::InvalidInput.
+rheology::Body compressible_body(rheology::ModelMaterial shear, std::optional<double> K,
+                                 std::optional<rheology::ModelMaterial> bulk, const std::string& prefix);
 
 /// The time window of completed parts (drivers::material_window of their load, end, numerics and tangential load).
 rheology::TimeWindow case_window(const CaseParts& parts);
 
 /// The case of `parts`: a Shore test's durometer in the case's units (drivers::make_shore_test; its spring, the
 /// standard's indenter, shore_indenter, and its base history), an impact's history the point (0, 0), the end
-/// `load.end` or default_end_time; then the bodies (`bodies`) and the case's rules (drivers::validate, which checks a
-/// model converted to a series against the case's window, and drivers::validate_layer). Throws mdr::InvalidInput
-/// naming the key, the value and the rule.
+/// `load.end` or default_end_time; then the bodies (`bodies`, kept in the case: drivers::set_bodies) and the case's
+/// rules (drivers::validate, which checks a model converted to a series against the case's window, and
+/// drivers::validate_layer). Throws mdr::InvalidInput naming the key, the value and the rule.
 drivers::ContactCase assemble_case(CaseParts parts, const BodiesBuilder& bodies);
 
 }  // namespace mdr::io

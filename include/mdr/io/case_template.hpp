@@ -57,6 +57,9 @@ public:
     const std::optional<rheology::TimeWindow>& conversion_window() const;
     /// The case as TOML text.
     std::string text() const;
+    /// The case as a tree of values (case_tree.hpp), without text: what a caller gives back as a case
+    /// (CaseTemplate(const CaseTable&, ...)) with its tables changed.
+    CaseTable tree() const;
     /// The name used in messages.
     const std::string& source() const;
 

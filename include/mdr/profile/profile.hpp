@@ -61,8 +61,9 @@ public:
     /// model of depth-driven fits needs. nullopt for any other profile (a flat punch, a table).
     virtual std::optional<double> power_law_exponent() const { return std::nullopt; }
     /// The radius R [m] of a spherical tip, parabolic near its apex (g = x^2/R, eq. 30): the depth that makes sense
-    /// for it lies between a small fraction of R and R (a fit's depth flags, fit/plausibility.cpp). nullopt for a
-    /// tip without one (a cone, a flat punch, a power law, a table).
+    /// for it lies between a small fraction of R and R (a fit's depth flags, fit/plausibility.cpp), and it is the
+    /// lever of an oblique impact's friction (drivers::oblique_sphere), which needs a profile that has one. nullopt
+    /// for a tip without one (a cone, a flat punch, a power law, a table).
     virtual std::optional<double> tip_radius() const { return std::nullopt; }
     /// Short human description, e.g. `sphere R = 0.01`: by default describe_shape(definition()) of the registry.
     virtual std::string describe() const;

@@ -15,6 +15,13 @@ struct Body {
     std::optional<ModelMaterial> bulk{};  ///< K(t); absent for an incompressible body
 };
 
+/// The deformable bodies of a contact as given: the half-space's and, for an indenter that deforms, the indenter's
+/// (a case file's `[material]` and `[indenter.material]`).
+struct ContactBodies {
+    Body half_space;                ///< the half-space (or the layer)
+    std::optional<Body> indenter{};  ///< absent for a rigid indenter
+};
+
 /// What the contact of a half-space with an indenter presents to the MDR.
 struct ContactMaterial {
     /// The normal problem's material: each compressible body's effective one (eq. 56), the two bodies' creep
@@ -34,5 +41,9 @@ struct ContactMaterial {
 /// The contact material of `half_space` under a rigid indenter, or under an indenter that is itself the body
 /// `indenter`.
 ContactMaterial contact_material(const Body& half_space, const std::optional<Body>& indenter = std::nullopt);
+/// The contact material of `bodies` (contact_material of its half-space and indenter).
+inline ContactMaterial contact_material(const ContactBodies& bodies) {
+    return contact_material(bodies.half_space, bodies.indenter);
+}
 
 }  // namespace mdr::rheology

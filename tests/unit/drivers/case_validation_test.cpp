@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <memory>
+#include <optional>
 #include <string>
 
 #include "mdr/drivers/indentation.hpp"
@@ -124,6 +126,32 @@ TEST(CaseValidation, AnObliqueImpactTakesItsLeverFromTheSphereAndRefusesOtherSha
     auto compressible = oblique_impact(profile::make_sphere(0.01));
     compressible.tangential_exact = false;  // as rheology::contact_material gives for K or a second body
     EXPECT_EQ(key_of([&] { validate(compressible); }), "load.tangential_velocity");
+}
+
+// A smooth indenter of its own type (a sphere under another name, as a new shape would be): what decides an oblique
+// impact is the capability of its type, Profile::tip_radius, not its name (issue 27).
+class RenamedSphere final : public profile::Profile {
+public:
+    explicit RenamedSphere(double radius) : sphere_(profile::make_sphere(radius)) {}
+    double gap(double r) const override { return sphere_->gap(r); }
+    double equivalent(double x) const override { return sphere_->equivalent(x); }
+    double contact_radius(double depth) const override { return sphere_->contact_radius(depth); }
+    double max_radius() const override { return sphere_->max_radius(); }
+    std::optional<double> tip_radius() const override { return sphere_->tip_radius(); }
+    profile::ProfileDefinition definition() const override { return {"renamed_sphere", {{"radius", 0.01}}}; }
+
+private:
+    std::unique_ptr<profile::Profile> sphere_;
+};
+
+TEST(CaseValidation, AnObliqueImpactAsksTheIndentersTypeForItsLeverNotItsName) {
+    const auto renamed = oblique_impact(std::make_shared<RenamedSphere>(0.01));
+    EXPECT_EQ(key_of([&] { validate(renamed); }), "");
+    EXPECT_DOUBLE_EQ(oblique_sphere(renamed).radius, 0.01);
+    const auto outcome = run_case(renamed).impact->oblique;  // the same profile under its own name: the same run
+    const auto expected = run_case(oblique_impact(profile::make_sphere(0.01))).impact->oblique;
+    ASSERT_TRUE(outcome && expected);
+    EXPECT_EQ(outcome->impulse_ratio, expected->impulse_ratio);
 }
 
 TEST(CaseValidation, EveryRuleNamesItsKey) {

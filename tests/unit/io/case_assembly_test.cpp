@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "mdr/error.hpp"
 #include "mdr/profile/profile.hpp"
@@ -14,8 +16,8 @@
 namespace mdr::io {
 namespace {
 
-rheology::ContactMaterial elastic(CaseParts&) {
-    return rheology::contact_material(rheology::Body{rheology::ModelMaterial{rheology::Rheology(1e6, 0.0, {}), {}}});
+rheology::ContactBodies elastic(CaseParts&) {
+    return {rheology::Body{rheology::ModelMaterial{rheology::Rheology(1e6, 0.0, {}), {}}}};
 }
 
 // A Shore A test in mm-N-s: the spring falls 0.075 N per point over 0.025 mm (ASTM D2240: 0.55 + 0.075 H [N], 100
@@ -59,10 +61,11 @@ TEST(CaseAssembly, AConvertedModelMustBeCertifiedOverTheCasesLags) {
                         .control = drivers::DisplacementControl{},
                         .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {10.0, 1e-5}}, "load.history")}};
         return assemble_case(parts, [&](CaseParts& completed) {
-            rheology::ContactMaterial material = elastic(completed);
-            material.origin = {.description = "power_law (G0 = 1e6 Pa, beta = 0.2, t0 = 1 s)",
-                               .certificate = rheology::Certificate{1e-5, {1e-9, longest, {}}, 1e-4, kind}};
-            return material;
+            rheology::ContactBodies bodies = elastic(completed);
+            bodies.half_space.shear.origin = {
+                .description = "power_law (G0 = 1e6 Pa, beta = 0.2, t0 = 1 s)",
+                .certificate = rheology::Certificate{1e-5, {1e-9, longest, {}}, 1e-4, kind}};
+            return bodies;
         });
     };
     EXPECT_NO_THROW(assembled_with(100.0, "model"));
@@ -73,6 +76,46 @@ TEST(CaseAssembly, AConvertedModelMustBeCertifiedOverTheCasesLags) {
     } catch (const InvalidInput& error) {
         EXPECT_EQ(error.key(), "material");
     }
+}
+
+// The case keeps the bodies it was assembled from (what mdr.ContactCase reads back) beside their combination: an
+// elastic half-space G = 1 MPa, K = 2 MPa under an elastic indenter G2 = 1 MPa. Eq. 56 gives the compressible body
+// 1 / G_eff = 1 / G + 3 / (3K + G) = 10 / 7 MPa^-1, eq. 8 adds the indenter's creep 1 / G2: J = 17 / 7 MPa^-1; a
+// compressible body or a second body makes tangential loading an approximation (section 7).
+TEST(CaseAssembly, ACaseKeepsItsBodiesBesideTheirCombination) {
+    const auto elastic_body = [](double modulus) {
+        return rheology::ModelMaterial{rheology::Rheology::elastic(modulus), {}};
+    };
+    const drivers::ContactCase assembled = assemble_case(
+        CaseParts{.indenter = profile::make_sphere(0.01),
+                  .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 1e-5}}, "load.history")}},
+        [&](CaseParts&) {
+            return rheology::ContactBodies{compressible_body(elastic_body(1e6), 2e6, std::nullopt, "material."),
+                                           rheology::Body{elastic_body(1e6)}};
+        });
+    ASSERT_TRUE(assembled.bodies && assembled.bodies->indenter);
+    EXPECT_EQ(assembled.bodies->half_space.shear.series.equilibrium_modulus(), 1e6);
+    ASSERT_TRUE(assembled.bodies->half_space.bulk);
+    EXPECT_EQ(assembled.bodies->half_space.bulk->series.equilibrium_modulus(), 2e6);
+    EXPECT_NEAR(assembled.material.creep(1.0), 17.0 / 7.0 * 1e-6, 1e-18);
+    EXPECT_FALSE(assembled.tangential_exact);
+}
+
+// A body table's rules, the reader's and mdr.ContactCase's: K > 0, not K beside a bulk material.
+TEST(CaseAssembly, ABodyTakesOnePositiveBulkPart) {
+    const rheology::ModelMaterial shear{rheology::Rheology::elastic(1e6), {}};
+    const auto key_of = [&](std::optional<double> K, std::optional<rheology::ModelMaterial> bulk) -> std::string {
+        try {
+            compressible_body(shear, K, std::move(bulk), "indenter.material.");
+        } catch (const InvalidInput& error) {
+            return error.key() + ": " + error.rule();
+        }
+        return "";
+    };
+    EXPECT_EQ(key_of(-1.0, std::nullopt), "indenter.material.K: must be > 0");
+    EXPECT_EQ(key_of(1e9, shear), "indenter.material.K: give either K or [indenter.material.bulk], not both");
+    EXPECT_EQ(key_of(1e9, std::nullopt), "");
+    EXPECT_FALSE(compressible_body(shear, std::nullopt, std::nullopt, "material.").bulk);
 }
 
 }  // namespace
