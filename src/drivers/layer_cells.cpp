@@ -226,6 +226,11 @@ void LayerCells::catch_up(std::size_t count) {
     }
 }
 
+std::span<const double> LayerCells::surface() {
+    catch_up(cells_);
+    return displacement_;
+}
+
 void LayerCells::keep(std::size_t count, double dashpot) {
     const std::size_t first = kept_;
     catch_up(count);

@@ -66,8 +66,10 @@ public:
     double spacing() const { return spacing_; }
     /// The line load q_i [N/m] of the cells in contact after the last step (eq. L17; zero beyond them).
     std::span<const double> line_load() const { return {trial_load_.data(), contact_}; }
-    /// The transformed surface displacement w1_i [m] of every cell after the last step (eq. L18).
-    std::span<const double> surface() const { return displacement_; }
+    /// The transformed surface displacement w1_i [m] of every cell after the last step (eq. L18). The cells left out
+    /// of the stepping (beyond the contact's neighbour) are first stepped through the steps they missed (catch_up),
+    /// and every cell is stepped from then on.
+    std::span<const double> surface();
 
 private:
     // One step: `load_for(m)` solves q on the contact set [0, m) (solve_load) and gives its depth; `needs_contact`: a

@@ -18,7 +18,7 @@ constexpr std::size_t snapshot_cells = 1000;
 
 }  // namespace
 
-Snapshot cells_snapshot(const LayerCells& cells, double contact_radius, double time) {
+Snapshot cells_snapshot(LayerCells& cells, double contact_radius, double time) {
     const auto surface = cells.surface();
     const double spacing = cells.spacing();
     Snapshot snapshot = snapshot_radii(time, contact_radius, spacing * static_cast<double>(surface.size()));

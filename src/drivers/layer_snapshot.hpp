@@ -18,8 +18,8 @@ namespace mdr::drivers {
 
 /// The snapshot of `cells` after a step at `time` [s] with the contact radius `contact_radius` [m] (eq. L19): p(r)
 /// from the cells' line load, taken to the edge by its linear extrapolation there, w(r) from their w1, over the cells'
-/// range (a flat punch's: its radius).
-Snapshot cells_snapshot(const LayerCells& cells, double contact_radius, double time);
+/// range (a flat punch's: its radius). Steps every cell from then on (LayerCells::surface).
+Snapshot cells_snapshot(LayerCells& cells, double contact_radius, double time);
 
 /// Snapshots of a growing contact in a run of Ting's class (eq. L26): records the loading nodes as
 /// LayerStepper::commit does, and takes the snapshot of an untouched or growing step from them.

@@ -232,6 +232,23 @@ def test_a_receding_contact_on_the_cells_meets_the_half_space():
     assert displacement_errors[2] < displacement_errors[1] < displacement_errors[0] and displacement_errors[2] < 5e-5
 
 
+@pytest.mark.parametrize("thickness", [1.0e-6, 5.0e-6])
+def test_the_cells_surface_outside_a_receding_contact_is_the_elastic_layers(thickness):
+    # An elastic layer keeps no history: unloading to d = 0.8 um on the cells (a snapshot after the turn) has the
+    # surface of Ting's class loading to the same depth (LayerContact's w1 at its Gauss nodes, eq. L26), outside the
+    # contact too, where a thin layer's w1 = ((I - K) q)_j / E* is not zero. Observed 1.1e-5, 6.6e-5 of the depth at
+    # 400 cells; 4.8e-2, 1.9e-1 when the cells left out of the stepping (beyond the widest contact) gave their w1 of
+    # rest to the snapshot.
+    loading = mdr.run(case(thickness, RAMP, ELASTIC, (0.8,), {"time_step": 0.005}))
+    unloading = mdr.run(case(thickness, TRIANGLE, ELASTIC, (1.2,), {"elements": 400, "time_step": 0.005}))
+    radii_loading, _, displacement_loading = snapshot(loading, 0.8)
+    radii, _, displacement = snapshot(unloading, 1.2)
+    outside = (radii > radii[100]) & (radii <= radii_loading.max())
+    assert outside.sum() > 50
+    error = np.abs(displacement[outside] - np.interp(radii[outside], radii_loading, displacement_loading)).max()
+    assert error < 2e-4 * 0.8e-6
+
+
 def test_snapshots_of_a_growing_contact_leave_tings_run_as_it_is():
     # Snapshots while the contact grows keep the run of Ting's class (exact, eq. L11 to L14): its history as without
     # snapshots through the unloading after them (to round-off: the snapshot's cut places the grid's nodes anew); one
