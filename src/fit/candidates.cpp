@@ -242,7 +242,7 @@ std::vector<std::vector<double>> smoothing_penalty(const Material& material, std
     std::vector<std::vector<double>> rows;
     if (smoothing <= 0.0) return rows;
     std::size_t points = 0;
-    for (const auto& curve : curves) points += window_rows(curve);
+    for (const auto& curve : curves) points += curve.time.size();
     const double weight = smoothing * std::sqrt(static_cast<double>(points)) / modulus;
     for (std::size_t j = 0; j + 1 < material.grid.size(); ++j) {
         std::vector<double> row(offset + material.parameters.size(), 0.0);

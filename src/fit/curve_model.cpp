@@ -26,7 +26,6 @@ CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline) {
     prepared.noise = std::max(prepared.noise, 1e-12 * largest);
     const double force_noise = curve.force_noise > 0.0 ? curve.force_noise : difference_noise(curve.force, 0, curve.force.size());
     for (std::size_t i = 0; i < curve.time.size(); ++i) {
-        if (!in_window(curve, i)) continue;
         if (fitted == Fitted::force || curve.force[i] - baseline > 3.0 * force_noise) prepared.used.push_back(i);
     }
     return prepared;

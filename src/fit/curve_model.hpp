@@ -21,9 +21,8 @@ struct CurveModel {
     double noise = 0.0;             ///< noise of the fitted quantity (the residuals' weight is 1 / noise)
 };
 
-/// The points of `curve` that enter the residual, of those inside its windows (in_window): every point when the
-/// depth drives the model; when the force drives it, the points where the force minus `baseline` is above 3 noise
-/// (the indenter is then in contact).
+/// The points of `curve` that enter the residual: every point when the depth drives the model; when the force
+/// drives it, the points where the force minus `baseline` is above 3 noise (the indenter is then in contact).
 CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline);
 
 /// Which forward model runs a curve.

@@ -166,7 +166,7 @@ void validate(const FitProblem& problem) {
                                    (problem.settings.contact_point == ContactPointMode::fit ? problem.curves.size() : 0) +
                                    (problem.settings.baseline == BaselineMode::fit ? problem.curves.size() : 0);
     std::size_t points = 0;
-    for (const auto& curve : problem.curves) points += window_rows(curve);
+    for (const auto& curve : problem.curves) points += curve.time.size();
     for (const auto& rebound : problem.rebounds) points += rebound.restitution.size() + rebound.contact_time.size();
     if (points <= free_count) {
         throw InvalidInput("fit.data", fmt::format("{} points", points),

@@ -11,20 +11,25 @@
 namespace mdr::fit {
 namespace {
 
-// The largest indentation of a measured record (every row, those outside a window too: Curve::outside_window), in
-// the case's length unit: from the fitted contact point, or from the record's shallowest depth when the contact lies
-// before it (a contact off the data must not hide a record whose whole depth span is a micrometre's millionth).
-double largest_indentation(const Curve& record, double contact_depth) {
-    const auto [least, greatest] = std::minmax_element(record.depth.begin(), record.depth.end());
-    return *greatest - std::max(contact_depth, *least);
+// The largest indentation of a measured curve, in the case's length unit: from the contact point, or from the
+// record's first depth when the fitted contact lies before it (a contact off the data must not hide a record whose
+// whole depth span is a micrometre's millionth).
+double largest_indentation(const CurveFit& curve) {
+    const bool force_fitted = curve.fitted == Fitted::force;
+    double least = std::numeric_limits<double>::infinity();
+    double greatest = -least;
+    for (std::size_t i = 0; i < curve.measured.size() && i < curve.drive.size(); ++i) {
+        const double depth = force_fitted ? curve.drive[i] + curve.contact_depth : curve.measured[i];
+        least = std::min(least, depth);
+        greatest = std::max(greatest, depth);
+    }
+    return greatest - std::max(curve.contact_depth, least);
 }
 
-// result.curves holds the measured curves first, in the order of problem.curves, then the rebound data's entries.
-void add_depth_flags(const FitProblem& problem, double radius, const PlausibilityUnits& units, FitResult& result) {
-    for (std::size_t c = 0; c < problem.curves.size() && c < result.curves.size(); ++c) {
-        CurveFit& curve = result.curves[c];
-        if (curve.rebound || problem.curves[c].depth.empty()) continue;
-        const double depth = largest_indentation(problem.curves[c], curve.contact_depth);
+void add_depth_flags(double radius, const PlausibilityUnits& units, FitResult& result) {
+    for (auto& curve : result.curves) {
+        if (curve.rebound || curve.drive.empty()) continue;
+        const double depth = largest_indentation(curve);
         if (depth < least_sphere_indentation * radius) {
             curve.flags.push_back(fmt::format(
                 "largest indentation {:.3g} {} is below {:g} of the sphere's R = {:.4g} {}: are the data's lengths in "
@@ -90,7 +95,7 @@ void add_modulus_key_flags(const FitProblem& problem, const PlausibilityUnits& u
 void add_plausibility_flags(const FitProblem& problem, const PlausibilityUnits& units, FitResult& result) {
     if (!result.curves.empty() && problem.model) {
         const auto model = problem.model(result.values);
-        if (const auto radius = model.indenter->tip_radius()) add_depth_flags(problem, *radius, units, result);
+        if (const auto radius = model.indenter->tip_radius()) add_depth_flags(*radius, units, result);
     }
     add_modulus_flag(units, result);
     add_modulus_key_flags(problem, units, result);

@@ -92,41 +92,35 @@ void select_rows(Curve& curve, const RowSelection& selection) {
                                     "fitted through (until = \"end\"): the model has no adhesion",
                                     curve.adhesion.pull_off_force, curve.adhesion.work));
     }
-    std::vector<bool> outside(end, false);
+    std::vector<double> time, depth, force;
     for (std::size_t i = 0; i < end; ++i) {
-        outside[i] = !inside(selection.time, curve.time[i]) || !inside(selection.depth, curve.depth[i]) ||
-                     !inside(selection.force, curve.force[i]);
+        if (!inside(selection.time, curve.time[i]) || !inside(selection.depth, curve.depth[i]) ||
+            !inside(selection.force, curve.force[i])) {
+            continue;
+        }
+        time.push_back(curve.time[i]);
+        depth.push_back(curve.depth[i]);
+        force.push_back(curve.force[i]);
     }
-    const auto windowed = static_cast<std::size_t>(std::count(outside.begin(), outside.end(), true));
-    if (windowed > 0) {
-        notes.push_back(fmt::format("{} rows outside the window are left out of the residual (they still drive the "
-                                    "model: the history before and between the rows fitted)", windowed));
-    }
-    if (end - windowed < minimum_curve_rows) {
+    const std::size_t windowed = end - time.size();
+    if (windowed > 0) notes.push_back(fmt::format("{} rows outside the window are left out", windowed));
+    if (time.size() < minimum_curve_rows) {
         const bool by_window = selection.time || selection.depth || selection.force;
-        throw InvalidInput(by_window ? "window" : "until", fmt::format("{} rows kept", end - windowed),
+        throw InvalidInput(by_window ? "window" : "until", fmt::format("{} rows kept", time.size()),
                            fmt::format("a curve needs at least {} rows", minimum_curve_rows));
     }
-    if (end < rows) {  // the rows from the pull-off on are no part of the record the model runs
-        curve.time.resize(end);
-        curve.depth.resize(end);
-        curve.force.resize(end);
-        const Adhesion adhesion = curve.adhesion;
-        estimate_contact(curve);
-        curve.adhesion = adhesion;
+    if (time.size() == rows) {
+        curve.notes.insert(curve.notes.end(), notes.begin(), notes.end());
+        return;
     }
-    if (windowed > 0) curve.outside_window = std::move(outside);
-    curve.rows_left_out += rows - end + windowed;
+    curve.time = std::move(time);
+    curve.depth = std::move(depth);
+    curve.force = std::move(force);
+    curve.rows_left_out += rows - curve.time.size();
+    const Adhesion adhesion = curve.adhesion;
+    estimate_contact(curve);
+    curve.adhesion = adhesion;
     curve.notes.insert(curve.notes.end(), notes.begin(), notes.end());
-}
-
-bool in_window(const Curve& curve, std::size_t row) {
-    return curve.outside_window.empty() || !curve.outside_window[row];
-}
-
-std::size_t window_rows(const Curve& curve) {
-    return curve.time.size() - static_cast<std::size_t>(std::count(curve.outside_window.begin(),
-                                                                   curve.outside_window.end(), true));
 }
 
 }  // namespace mdr::fit

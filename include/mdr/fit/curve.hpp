@@ -27,7 +27,7 @@ enum class Until {
 };
 
 /// The rows of a curve that the fit keeps (`[[fit.data]] window` and `until`), in the case's units: a row is kept
-/// before the cut of `until`, and fitted when it lies inside every window given as well (select_rows).
+/// when it lies inside every window given and before the cut of `until` (select_rows).
 struct RowSelection {
     std::optional<std::array<double, 2>> time{};   ///< `window.time = [t0, t1]`
     std::optional<std::array<double, 2>> depth{};  ///< `window.depth = [d0, d1]`, in the data's depth
@@ -102,11 +102,7 @@ struct Curve {
     /// baseline plus G_inf F_el(d_0) (docs/theory.md §4d).
     bool preloaded = false;
     Adhesion adhesion{};            ///< the retract's adhesion, measured on the whole record (select_rows)
-    std::size_t rows_left_out = 0;  ///< rows of the record that select_rows left out of the residual
-    /// One flag per row, true for a row outside the curve's windows (`[[fit.data]] window`, select_rows); empty when
-    /// every row is inside. Such a row still drives the model (the history before and between the rows fitted
-    /// shapes a viscoelastic response) but does not enter the residual.
-    std::vector<bool> outside_window{};
+    std::size_t rows_left_out = 0;  ///< rows of the record that select_rows left out
     /// What reading the curve did that a user must know (select_rows: rows left out and why); the fit adds them to
     /// CurveFit::flags.
     std::vector<std::string> notes{};
@@ -134,22 +130,15 @@ Curve load_curve(const CurveSource& source);
 /// select_rows: a retract whose force falls more than this many noise deviations below the baseline is adhesive.
 inline constexpr double adhesion_deviations = 5.0;
 
-/// Selects the rows of `curve` (estimated on its whole record) that the fit keeps and those it fits (`selection`).
-/// First the retract (the rows after the first deepest row) is measured for adhesion
+/// Keeps the rows of `curve` (estimated on its whole record) that `selection` selects and estimates it again
+/// (estimate_contact). First the retract (the rows after the first deepest row) is measured for adhesion
 /// (Curve::adhesion) against the baseline line through the rows before contact; then, with Until::pull_off, or
 /// Until::automatic on an adhesive retract, the rows from the first retract row whose force is below that line
-/// on are removed (and the estimates made again on the rows left); then the rows outside a window are marked
-/// (Curve::outside_window), kept as the model's history and left out of the residual. Curve::rows_left_out counts
-/// both; Curve::notes says why, with the numbers. Throws mdr::InvalidInput (key `window` or `until`) when fewer than
-/// minimum_curve_rows rows are left to fit, or `until = "pull_off"` on a curve with no baseline estimate; a window's
-/// lower bound must be below its upper (key `window.time`, ...).
+/// on are left out; then the rows outside a window. Curve::rows_left_out counts them; Curve::notes says why, with
+/// the numbers. Throws mdr::InvalidInput (key `window` or `until`) when fewer than minimum_curve_rows rows are
+/// left, or `until = "pull_off"` on a curve with no baseline estimate; a window's lower bound must be below its
+/// upper (key `window.time`, ...).
 void select_rows(Curve& curve, const RowSelection& selection);
-
-/// Whether row `row` of `curve` can enter the residual: it lies inside the curve's windows (Curve::outside_window).
-bool in_window(const Curve& curve, std::size_t row);
-
-/// The number of rows of `curve` inside its windows (in_window).
-std::size_t window_rows(const Curve& curve);
 
 /// The depth and force of a raw AFM curve.
 struct DepthAndForce {

@@ -99,31 +99,22 @@ TEST(RowSelection, UntilPullOffWithoutAdhesion) {
     EXPECT_TRUE(has_note(curve, "until = \"pull_off\"")) << notes_of(curve);
 }
 
-// A time window marks the rows outside it (ends included) and keeps every row as the model's history; a depth and
-// a force window likewise; too few rows and a reversed window are refused naming the key.
+// A time window keeps the rows inside it (ends included); a depth and a force window likewise; too few rows and a
+// reversed window are refused naming the key.
 TEST(RowSelection, Windows) {
     Curve curve = retract_record(0.0);
-    const std::size_t rows = curve.time.size();
     select_rows(curve, {.time = std::array<double, 2>{1.0, 2.0}, .until = Until::end});
-    EXPECT_EQ(curve.time.size(), rows);
-    EXPECT_NEAR(static_cast<double>(window_rows(curve)), 1001.0, 1.0);
-    EXPECT_EQ(curve.rows_left_out, rows - window_rows(curve));
-    for (std::size_t i = 0; i < rows; ++i) {
-        EXPECT_EQ(in_window(curve, i), curve.time[i] >= 1.0 && curve.time[i] <= 2.0) << i;
-    }
+    EXPECT_NEAR(static_cast<double>(curve.time.size()), 1001.0, 1.0);
+    EXPECT_NEAR(curve.time.front(), 1.0, 1e-3);
     EXPECT_TRUE(has_note(curve, "rows outside the window are left out")) << notes_of(curve);
 
     Curve deep = retract_record(0.0);
     select_rows(deep, {.depth = std::array<double, 2>{-1e-6, 3e-6}, .until = Until::end});
-    for (std::size_t i = 0; i < deep.time.size(); ++i) {
-        EXPECT_EQ(in_window(deep, i), deep.depth[i] >= -1e-6 && deep.depth[i] <= 3e-6) << i;
-    }
+    EXPECT_TRUE(std::all_of(deep.depth.begin(), deep.depth.end(), [](double d) { return d >= -1e-6 && d <= 3e-6; }));
 
     Curve strong = retract_record(0.0);
     select_rows(strong, {.force = std::array<double, 2>{0.0, 2e-8}, .until = Until::end});
-    for (std::size_t i = 0; i < strong.time.size(); ++i) {
-        EXPECT_EQ(in_window(strong, i), strong.force[i] >= 0.0 && strong.force[i] <= 2e-8) << i;
-    }
+    EXPECT_TRUE(std::all_of(strong.force.begin(), strong.force.end(), [](double f) { return f <= 2e-8; }));
 
     Curve few = retract_record(0.0);
     try {
