@@ -19,6 +19,13 @@ void print_flags(const fit::FitResult& result) {
     }
 }
 
+std::string young_modulus_text(const fit::FitResult& result, const std::string& name) {
+    for (const auto& young : result.young_moduli) {
+        if (young.name == name) return fmt::format("  (E = {:.6g} +- {:.2g})", young.value, young.standard_error);
+    }
+    return "";
+}
+
 bool run_model_choice(const fitcase::FitCase& fit_case, const std::vector<fit::Curve>& curves,
                       const io::ResultDirectory& directory, FitProgress& progress) {
     const auto choice = fitcase::fit_candidates(fit_case, curves);

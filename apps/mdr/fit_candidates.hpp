@@ -1,6 +1,7 @@
 #pragma once
 // `mdr fit` with `fit.candidates` or `[fit.spectrum]`: every candidate fitted, ranked and written.
 
+#include <string>
 #include <vector>
 
 #include "fit_progress.hpp"
@@ -13,6 +14,10 @@ namespace mdr::cli {
 
 /// Prints a fit's flags and each curve's (fit::FitResult::flags, fit::CurveFit::flags), one console line each.
 void print_flags(const fit::FitResult& result);
+
+/// `  (E = 482.9 +- 1.6e+02)` for the free key `name` when the fit reports its Young's modulus
+/// (fit::FitResult::young_moduli), else "": what the console prints beside a shear modulus.
+std::string young_modulus_text(const fit::FitResult& result, const std::string& name);
 
 /// Fits the candidates of `fit_case` to `curves`, writes them into `directory` (fitcase::write_model_choice) and prints
 /// the ranking. Returns true when the preferred candidate's fit converged (the others' status is in the

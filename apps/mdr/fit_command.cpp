@@ -82,12 +82,8 @@ void add_fit_command(CLI::App& app, int& exit_code) {
                        result.names.size(), problem.curves.size(), problem.rebounds.size(), result.points,
                        result.status);
             for (std::size_t j = 0; j < result.names.size(); ++j) {
-                fmt::print("  {} = {:.6g} +- {:.2g}", result.names[j], result.values[j], result.standard_errors[j]);
-                for (const auto& young : result.young_moduli) {
-                    if (young.name != result.names[j]) continue;
-                    fmt::print("  (E = {:.6g} +- {:.2g})", young.value, young.standard_error);
-                }
-                fmt::print("\n");
+                fmt::print("  {} = {:.6g} +- {:.2g}{}\n", result.names[j], result.values[j], result.standard_errors[j],
+                           young_modulus_text(result, result.names[j]));
             }
             fmt::print("  standard errors: {}\n", result.error_kind);
             for (const auto& entry : result.undetermined) {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 #include <utility>
@@ -46,12 +47,21 @@ void write_table(const std::filesystem::path& path, const std::vector<std::strin
     io::OutputFile table(path);
     table.print("file");
     for (const auto& name : results.front().names) table.print(",{0},{0}_stderr", name);
+    // Young's moduli beside the shear moduli, as map.csv has them (the batch's files share one case: its keys).
+    const auto& young_moduli = results.front().young_moduli;
+    for (const auto& young : young_moduli) table.print(",E_{0},E_{0}_stderr", young.name);
     table.print(",status,residual_to_noise\n");
     for (std::size_t i = 0; i < results.size(); ++i) {
         const auto& result = results[i];
         table.print("{}", io::csv_field(stems[i]));
         for (std::size_t j = 0; j < result.names.size(); ++j) {
             table.print(",{:.17g},{:.17g}", result.values[j], result.standard_errors[j]);
+        }
+        for (const auto& column : young_moduli) {
+            const auto young = std::find_if(result.young_moduli.begin(), result.young_moduli.end(),
+                                            [&](const fit::YoungModulus& entry) { return entry.name == column.name; });
+            if (young == result.young_moduli.end()) table.print(",nan,nan");
+            else table.print(",{:.17g},{:.17g}", young->value, young->standard_error);
         }
         table.print(",{},{:.17g}\n", io::csv_field(result.status), result.rms_residual / result.noise);
     }
@@ -115,8 +125,8 @@ bool run_each(const fitcase::FitCase& fit_case, const std::vector<std::string>& 
         const auto& result = results[i];
         std::string values;
         for (std::size_t j = 0; j < result.names.size(); ++j) {
-            values += fmt::format("  {} = {:.6g} +- {:.2g}", result.names[j], result.values[j],
-                                  result.standard_errors[j]);
+            values += fmt::format("  {} = {:.6g} +- {:.2g}{}", result.names[j], result.values[j],
+                                  result.standard_errors[j], young_modulus_text(result, result.names[j]));
         }
         fmt::print("  {}:{}; residual/noise {:.3g}: {}\n", stems[i], values, result.rms_residual / result.noise,
                    result.status);

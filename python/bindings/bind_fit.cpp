@@ -20,9 +20,12 @@ namespace mdr::python {
 namespace {
 
 /// name, time, depth, force, fitted ("" for the fit's setting, else "force" or "depth"), start ("" or "at_rest",
-/// "preloaded": Curve::preloaded); numpy arrays come in without a copy (mdr.fit checks them, python/mdr/_arrays.py)
-/// and are copied once, into the curve.
-using CurveArrays = std::tuple<std::string, InputArray, InputArray, InputArray, std::string, std::string>;
+/// "preloaded": Curve::preloaded), until ("" or "pull_off", "end": fit::Until), the windows of time, depth and force
+/// (fit::RowSelection); numpy arrays come in without a copy (mdr.fit checks them, python/mdr/_arrays.py) and are
+/// copied once, into the curve.
+using Window = std::optional<std::array<double, 2>>;
+using CurveArrays = std::tuple<std::string, InputArray, InputArray, InputArray, std::string, std::string, std::string,
+                               Window, Window, Window>;
 
 /// index in mdr.fit's data, name, mass (None: the case's indenter.mass), velocity, restitution, contact_time,
 /// restitution_error, contact_time_error (each error list empty, one value or one per impact).
@@ -87,17 +90,29 @@ py::dict fit_case_of(const py::object& case_, const std::string& source, const s
             }
         }
         for (std::size_t i = 0; i < curves.size(); ++i) {
-            const auto& [name, time, depth, force, fitted, start] = curves[i];
+            const auto& [name, time, depth, force, fitted, start, until, window_time, window_depth, window_force] =
+                curves[i];
+            const std::string prefix = "data[" + std::to_string(i) + "].";
             loaded.push_back(fit::make_curve(name, to_vector(time), to_vector(depth), to_vector(force)));
             if (fitted == "force") loaded.back().fitted = fit::Fitted::force;
             else if (fitted == "depth") loaded.back().fitted = fit::Fitted::depth;
             else if (!fitted.empty()) {
-                throw InvalidInput("data[" + std::to_string(i) + "].fitted", "\"" + fitted + "\"", "one of force, depth");
+                throw InvalidInput(prefix + "fitted", "\"" + fitted + "\"", "one of force, depth");
             }
             if (start == "preloaded") loaded.back().preloaded = true;
             else if (!start.empty() && start != "at_rest") {
-                throw InvalidInput("data[" + std::to_string(i) + "].start", "\"" + start + "\"",
-                                   "one of at_rest, preloaded");
+                throw InvalidInput(prefix + "start", "\"" + start + "\"", "one of at_rest, preloaded");
+            }
+            // The rows of a file's curve, by the same rule (select_rows): an adhesive retract is cut at pull-off
+            // unless until = "end".
+            fit::RowSelection rows{.time = window_time, .depth = window_depth, .force = window_force};
+            if (until == "pull_off") rows.until = fit::Until::pull_off;
+            else if (until == "end") rows.until = fit::Until::end;
+            else if (!until.empty()) throw InvalidInput(prefix + "until", "\"" + until + "\"", "one of pull_off, end");
+            try {
+                fit::select_rows(loaded.back(), rows);
+            } catch (const InvalidInput& error) {
+                throw error.with_prefix(prefix);
             }
         }
     }

@@ -334,7 +334,9 @@ class _ResultDirectory:
     @property
     def shown(self) -> str: ...
 def _fit_case(case: str | dict[str, Any], source: str, directory: str,
-              curves: Sequence[tuple[str, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike, str, str]],
+              curves: Sequence[tuple[str, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike, str, str, str,
+                                     tuple[float, float] | None, tuple[float, float] | None,
+                                     tuple[float, float] | None]],
               rebounds: Sequence[tuple[int, str, float | None, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike,
                                        npt.ArrayLike, npt.ArrayLike]]) -> dict[str, Any]: ...
 def _spread_of_repeats(names: Sequence[str], values: Sequence[Sequence[float]],

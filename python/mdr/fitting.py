@@ -172,7 +172,8 @@ def fit(case: CaseLike, data: Mapping[str, Any] | Sequence[Mapping[str, Any]] | 
             rebounds.append(_rebound_arrays(curve, i))
         elif kind == "curve":
             curves.append((str(curve.get("name", f"curve{i}")), *_curve_arrays(curve, f"data[{i}]", case_units),
-                           str(curve.get("fitted", "")), str(curve.get("start", ""))))
+                           str(curve.get("fitted", "")), str(curve.get("start", "")), str(curve.get("until", "")),
+                           *_windows(curve, f"data[{i}]")))
         else:
             raise ValueError(f"data[{i}].kind = {kind!r}: one of curve, rebound")
     raw = _mdr._fit_case(case_input, source, directory, curves, rebounds)
@@ -227,9 +228,39 @@ def _spring_constant(curve: Mapping[str, Any], key: str, case_units: str) -> flo
         raise ValueError(str(error)) from None
 
 
+_CURVE_KEYS = ("kind", "name", "time", "depth", "force", "piezo", "deflection", "spring_constant", "units",
+               "fitted", "start", "until", "window")
+_WINDOW_KEYS = ("time", "depth", "force")
+
+
+def _windows(curve: Mapping[str, Any], key: str) -> tuple:
+    """The ``window`` of one curve of mdr.fit's ``data`` as (time, depth, force), each None or (lower, upper); the
+    library checks the ends (finite, lower below upper) as a case file's."""
+    window = curve.get("window", {})
+    if not isinstance(window, Mapping):
+        raise TypeError(f"{key}.window: a {type(window).__name__}; must be a dict of time, depth, force")
+    unknown = [name for name in window if name not in _WINDOW_KEYS]
+    if unknown:
+        raise ValueError(f"{key}.window.{unknown[0]} = (given): unknown key; valid keys: {', '.join(_WINDOW_KEYS)}")
+    ends = []
+    for name in _WINDOW_KEYS:
+        pair = window.get(name)
+        if pair is not None:
+            pair = real_array(pair, f"{key}.window.{name}")
+            if pair.shape != (2,):
+                raise ValueError(f"{key}.window.{name} = {pair.tolist()!r}: must be [lower, upper]")
+            pair = (float(pair[0]), float(pair[1]))
+        ends.append(pair)
+    return tuple(ends)
+
+
 def _curve_arrays(curve: Mapping[str, Any], key: str,
                   case_units: str = "SI") -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """time, depth and force of one curve of mdr.fit's ``data``: given, or from the raw AFM arrays."""
+    unknown = [name for name in curve if name not in _CURVE_KEYS]
+    if unknown:
+        raise ValueError(f"{key}.{unknown[0]} = (given): unknown key; valid keys: {', '.join(_CURVE_KEYS)}")
+
     def values(name):
         return real_array(curve[name], f"{key}.{name}")
 

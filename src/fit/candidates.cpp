@@ -181,13 +181,15 @@ Material candidate(const std::string& name, double modulus, const Window& window
 }
 
 CandidateFit fit_material(const CandidateProblem& base, const Material& material, const std::vector<double>& indenter,
-                          const std::vector<Curve>& curves, const std::vector<std::vector<double>>& penalty) {
+                          const std::vector<Curve>& curves, const std::vector<NuisanceStart>& starts,
+                          const std::vector<std::vector<double>>& penalty) {
     FitProblem problem;
     problem.parameters = base.parameters;  // the indenter's free keys (parse_fit_case allows no others here)
     for (std::size_t j = 0; j < indenter.size(); ++j) problem.parameters[j].start = indenter[j];
     const std::size_t offset = problem.parameters.size();
     problem.parameters.insert(problem.parameters.end(), material.parameters.begin(), material.parameters.end());
     problem.curves = curves;
+    problem.starts = starts;
     problem.settings = base.settings;
     problem.penalty = penalty;
     problem.model = [model = base.model, offset, material](const std::vector<double>& values) {
@@ -207,10 +209,21 @@ CandidateFit fit_material(const CandidateProblem& base, const Material& material
 // The weighted residual sum of squares of a fit, up to a monotone map: n ln(RSS / n) (AIC without its 2k).
 double log_residual(const FitResult& result) { return result.aic - 2.0 * static_cast<double>(result.free_count); }
 
+// Where the fit `fitted` left the curves' fitted contact points and baselines: the starts of the next fit.
+std::vector<NuisanceStart> nuisance_starts(const CandidateProblem& base, const FitResult& fitted) {
+    std::vector<NuisanceStart> starts(fitted.curves.size());
+    for (std::size_t c = 0; c < starts.size(); ++c) {
+        const CurveFit& curve = fitted.curves[c];
+        if (base.settings.contact_point == ContactPointMode::fit) starts[c].contact_depth = curve.contact_depth;
+        if (base.settings.baseline == BaselineMode::fit) starts[c].baseline = curve.baseline;
+    }
+    return starts;
+}
+
 // The one-term fit `one` as a start of the spectrum `grid_material` (whose grid holds its time): G_inf and the
 // modulus at the nearest grid time from it, the other moduli 0; its indenter values, contact points and baselines.
 CandidateFit spectrum_from_one_term(const CandidateProblem& base, Material grid_material, const CandidateFit& one,
-                                    std::vector<Curve> curves, const std::vector<std::vector<double>>& penalty) {
+                                    const std::vector<Curve>& curves, const std::vector<std::vector<double>>& penalty) {
     const std::size_t offset = base.parameters.size();
     const std::vector<double>& values = one.result.values;
     const auto& grid = grid_material.grid;
@@ -224,13 +237,8 @@ CandidateFit spectrum_from_one_term(const CandidateProblem& base, Material grid_
     for (std::size_t j = 0; j < grid.size(); ++j) {
         parameters[1 + j].start = j == nearest ? std::min(values[offset + 1], parameters[1 + j].upper) : 0.0;
     }
-    for (std::size_t c = 0; c < curves.size(); ++c) {
-        const CurveFit& fitted = one.result.curves[c];
-        if (base.settings.contact_point == ContactPointMode::fit) curves[c].contact_depth = fitted.contact_depth;
-        if (base.settings.baseline == BaselineMode::fit) curves[c].force_baseline = fitted.baseline;
-    }
     const std::vector<double> indenter(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(offset));
-    return fit_material(base, std::move(grid_material), indenter, curves, penalty);
+    return fit_material(base, std::move(grid_material), indenter, curves, nuisance_starts(base, one.result), penalty);
 }
 
 // The smoothing penalty of a spectrum (SpectrumSettings::smoothing): rows w (G_j+1 - G_j) / G_e, w = s sqrt(n).
@@ -258,6 +266,7 @@ std::vector<std::vector<double>> smoothing_penalty(const Material& material, std
 // this is a start close to the optimum, which the Levenberg-Marquardt fit then refines.
 std::vector<double> linear_start(const CandidateProblem& base, const Material& material,
                                  const std::vector<double>& indenter, const std::vector<Curve>& curves,
+                                 const std::vector<NuisanceStart>& starts,
                                  const std::vector<std::vector<double>>& penalty) {
     const drivers::ContactCase built = base.model(indenter);
     const auto columns = static_cast<Eigen::Index>(material.parameters.size());
@@ -274,10 +283,11 @@ std::vector<double> linear_start(const CandidateProblem& base, const Material& m
     }
     const std::size_t elements =
         base.settings.elements.value_or(built.numerics.elements.value_or(default_fit_elements(noise_to_peak)));
-    for (const auto& curve : curves) {
+    for (std::size_t c = 0; c < curves.size(); ++c) {
+        const Curve& curve = curves[c];
         const bool fixed_contact = base.settings.contact_point == ContactPointMode::fixed;
-        const double contact = fixed_contact ? 0.0 : curve.contact_depth;
-        const double baseline = held_baseline(base.settings, curve);
+        const double contact = fixed_contact ? 0.0 : starts[c].contact_depth.value_or(curve.contact_depth);
+        const double baseline = starts[c].baseline.value_or(held_baseline(base.settings, curve));
         const CurveModel prepared = prepare_curve(curve, Fitted::force, baseline);
         const auto n = static_cast<Eigen::Index>(prepared.used.size());
         Eigen::MatrixXd A(n, columns);
@@ -347,21 +357,15 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
     const rheology::TimeWindow lags = curves_window(curves, base.settings.fitted, base.model(indenter));
 
     // The elastic fit first: its modulus is the scale of every other start value.
-    CandidateFit reference = fit_material(base, elastic(start), indenter, curves, {});
+    CandidateFit reference = fit_material(base, elastic(start), indenter, curves, {}, {});
     const std::size_t offset = base.parameters.size();
     ModelChoice choice;
     choice.modulus_scale = reference.result.values[offset];
     choice.shortest_interval = window.shortest;
     choice.longest_record = window.longest;
     indenter.assign(reference.result.values.begin(), reference.result.values.begin() + static_cast<std::ptrdiff_t>(offset));
-    // Fitted contact points and baselines start where the elastic fit put them.
-    std::vector<Curve> started_curves = curves;
-    for (std::size_t c = 0; c < curves.size(); ++c) {
-        if (base.settings.contact_point == ContactPointMode::fit) {
-            started_curves[c].contact_depth = reference.result.curves[c].contact_depth;
-        }
-        if (base.settings.baseline == BaselineMode::fit) started_curves[c].force_baseline = reference.result.curves[c].baseline;
-    }
+    // Fitted contact points and baselines start where the elastic fit put them (the curves keep their estimates).
+    const std::vector<NuisanceStart> starts = nuisance_starts(base, reference.result);
 
     for (const auto& name : names) {
         if (name == "elastic") {
@@ -373,7 +377,7 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
         std::optional<CandidateFit> one_term;
         if (name == "spectrum") {
             const Material standard = prony("standard", 1, choice.modulus_scale, window);
-            one_term = fit_material(base, standard, indenter, started_curves, {});
+            one_term = fit_material(base, standard, indenter, curves, starts, {});
         }
         const Material material =
             one_term ? spectrum(settings.spectrum.value_or(SpectrumSettings{}), choice.modulus_scale, window,
@@ -382,16 +386,16 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
         Material started = material;
         const double smoothing = material.spectrum() ? settings.spectrum.value_or(SpectrumSettings{}).smoothing : 0.0;
         const auto penalty = smoothing_penalty(material, offset, smoothing, choice.modulus_scale, curves);
-        const bool all_force_fitted = std::all_of(started_curves.begin(), started_curves.end(), [&](const Curve& curve) {
+        const bool all_force_fitted = std::all_of(curves.begin(), curves.end(), [&](const Curve& curve) {
             return curve.fitted.value_or(base.settings.fitted) == Fitted::force;
         });
         if (material.spectrum() && all_force_fitted) {
-            const auto linear = linear_start(base, material, indenter, started_curves, penalty);
+            const auto linear = linear_start(base, material, indenter, curves, starts, penalty);
             for (std::size_t j = 0; j < linear.size(); ++j) started.parameters[j].start = linear[j];
         }
-        CandidateFit fitted = fit_material(base, started, indenter, started_curves, penalty);
+        CandidateFit fitted = fit_material(base, started, indenter, curves, starts, penalty);
         if (one_term && log_residual(fitted.result) > log_residual(one_term->result)) {
-            CandidateFit again = spectrum_from_one_term(base, material, *one_term, started_curves, penalty);
+            CandidateFit again = spectrum_from_one_term(base, material, *one_term, curves, penalty);
             if (log_residual(again.result) < log_residual(fitted.result)) fitted = std::move(again);
         }
         choice.fits.push_back(std::move(fitted));

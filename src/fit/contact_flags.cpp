@@ -50,9 +50,7 @@ void flag_contact(const FitProblem& problem, const Curve& curve, CurveFit& fitte
     if (contact < *lowest || contact > *deepest) {
         fitted.flags.push_back(fmt::format("contact point {:.6g} lies outside the record's depths [{:.6g}, {:.6g}]",
                                            contact, *lowest, *deepest));
-        return;
-    }
-    if (const double noise_depth = noise_equivalent_depth(curve); noise_depth > 0.0) {
+    } else if (const double noise_depth = noise_equivalent_depth(curve); noise_depth > 0.0) {
         const double distance = std::abs(contact - curve.contact_depth) / noise_depth;
         if (distance > contact_flag_depths) {
             fitted.flags.push_back(fmt::format(

@@ -308,6 +308,13 @@ std::array<double, 2> contact_bounds(const FitProblem& problem, std::size_t c) {
     return {*lowest, *deepest};
 }
 
+// Where curve c's fitted contact point or baseline (`member`) starts: FitProblem::starts, else `estimate`.
+double nuisance_start(const FitProblem& problem, std::size_t c, std::optional<double> NuisanceStart::*member,
+                      double estimate) {
+    if (c < problem.starts.size() && (problem.starts[c].*member).has_value()) return *(problem.starts[c].*member);
+    return estimate;
+}
+
 FitResult solve(const FitProblem& problem) {
     const auto start_time = std::chrono::steady_clock::now();
     const ParameterScales scales = make_scales(problem);
@@ -329,12 +336,16 @@ FitResult solve(const FitProblem& problem) {
         }
         if (scales.fit_contact) {
             const auto bounds = contact_bounds(problem, c);
-            double start = std::clamp(curve.contact_depth, bounds[0], bounds[1]);
+            double start = std::clamp(nuisance_start(problem, c, &NuisanceStart::contact_depth, curve.contact_depth),
+                                      bounds[0], bounds[1]);
             // A preload starts off its bound d_0 = 0 (its estimate is the first row's depth or deeper).
             if (curve.preloaded) start = std::min(start, bounds[1] - 0.1 * (bounds[1] - bounds[0]));
             nuisance[c].push_back(start / scales.depth[c]);
         }
-        if (scales.fit_baseline) nuisance[c].push_back(curve.force_baseline / scales.force[c]);
+        if (scales.fit_baseline) {
+            nuisance[c].push_back(nuisance_start(problem, c, &NuisanceStart::baseline, curve.force_baseline) /
+                                  scales.force[c]);
+        }
     }
 
     const std::size_t elements = default_fit_elements(noise_to_peak(scales, prepared));

@@ -172,11 +172,16 @@ def test_each_fits_one_material_per_file(run_mdr, workdir):
     assert result.returncode == 0, result.stderr
     with open(workdir / "out" / "each.csv", newline="", encoding="utf-8") as handle:
         rows = list(csv.DictReader(handle))
-    assert list(rows[0]) == ["file", "material.G", "material.G_stderr", "status", "residual_to_noise"]
+    assert list(rows[0]) == ["file", "material.G", "material.G_stderr", "E_material.G", "E_material.G_stderr",
+                             "status", "residual_to_noise"]
     assert [row["file"] for row in rows] == ["cell-a", "cell-b"]
     import json
     for row, contact in zip(rows, (1.0, 1.5)):
         assert float(row["material.G"]) == pytest.approx(G_TRUE, rel=0.02)
+        # Young's modulus beside G, as fit.json and map.csv have it: E = 2 (1 + nu) G, nu = 0.5 (incompressible).
+        assert float(row["E_material.G"]) == pytest.approx(3.0 * float(row["material.G"]), rel=1e-12)
+        assert float(row["E_material.G_stderr"]) == pytest.approx(3.0 * float(row["material.G_stderr"]), rel=1e-12)
+        assert f"{row['file']}:  material.G = " in result.stdout and "(E = " in result.stdout
         assert row["status"] == "converged" and 0.7 < float(row["residual_to_noise"]) < 1.3
         summary = json.loads((workdir / "out" / row["file"] / "fit.json").read_text())
         assert summary["parameters"]["material.G"] == float(row["material.G"])

@@ -10,8 +10,10 @@
 #include <random>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "mdr/error.hpp"
+#include "mdr/fit/curve.hpp"
 #include "mdr/fitcase/model_choice.hpp"
 #include "reference/closed_forms.hpp"
 #include "reference/indenter.hpp"
@@ -173,6 +175,44 @@ TEST(FitCandidates, SpectrumIsNeverWorseThanTheOneTermFit) {
     const auto& grid = spectrum.relaxation_times;
     EXPECT_NE(std::find_if(grid.begin(), grid.end(), [&](double tau) { return std::abs(tau / 0.37 - 1.0) < 1e-3; }),
               grid.end());
+}
+
+TEST(FitCandidates, EachCandidatesContactIsFlaggedAgainstTheDataNotAgainstTheElasticFit) {
+    // A standard solid pressed after an approach of 0.2 s out of contact (true contact: depth 0). The elastic
+    // candidate cannot follow the relaxation and moves its contact point far before the onset, and is flagged for
+    // it. The other candidates start from the elastic fit's contact point; they were once also flagged against it,
+    // as if it were where the data's force leaves the baseline ("estimate" = the elastic fit's contact), although
+    // the standard solid's contact lies at the true one. The rule (contact_flags.hpp): the distance to the data's
+    // own onset estimate.
+    const reference::PronyMaterial truth{1e6, 0.0, {{2e6, 0.5}}};
+    const reference::PiecewiseLinear history{{0.0, 0.2, 0.3, 5.0}, {0.0, 0.0, depth, depth}};
+    std::mt19937_64 random(7);
+    std::normal_distribution<double> gaussian(0.0, 1.0);
+    std::vector<double> time, depths, forces;
+    for (std::size_t i = 0; i <= 500; ++i) {
+        const double t = 0.01 * static_cast<double>(i);
+        time.push_back(t);
+        depths.push_back(t < 0.2 ? -0.5 * depth * (1.0 - t / 0.2) : history.value(t));
+        forces.push_back(reference::lee_radok_force(reference::sphere_indenter(R), truth, history, t) +
+                         noise * gaussian(random));
+    }
+    const fit::Curve curve = fit::make_curve("approach", time, depths, forces);
+    const std::string text = "[material]\nmodel = \"elastic\"\nG = 3.0e5\n"
+                             "[indenter]\nshape = \"sphere\"\nR = 1.0e-3\n"
+                             "[fit]\nelements = 500\ncandidates = [\"elastic\", \"standard\"]\n";
+    const auto choice = fitcase::fit_candidates(fitcase::parse_fit_case(text, "case", "."), {curve});
+    const auto far_from_onset = [](const fit::CandidateFit& fitted) {
+        const auto& flags = fitted.result.curves.at(0).flags;
+        return std::count_if(flags.begin(), flags.end(), [](const std::string& flag) {
+            return flag.find("noise-equivalent depths") != std::string::npos;
+        });
+    };
+    const auto& elastic = named(choice, "elastic");
+    const auto& standard = named(choice, "standard");
+    ASSERT_TRUE(standard.result.converged) << standard.result.status;
+    EXPECT_EQ(far_from_onset(elastic), 1);  // the start of the standard solid's contact is far from the onset
+    EXPECT_NEAR(standard.result.curves[0].contact_depth, 0.0, 0.01 * depth);
+    EXPECT_EQ(far_from_onset(standard), 0) << fmt::format("{}", fmt::join(standard.result.curves[0].flags, "; "));
 }
 
 TEST(FitCandidates, SmoothingEvensTheSpectrum) {

@@ -105,6 +105,14 @@ inline constexpr std::size_t max_fit_elements = 2000;
 /// mdr::InvalidInput for values that break a rule of the case.
 using ModelBuilder = std::function<drivers::ContactCase(const std::vector<double>& values)>;
 
+/// Where one curve's fitted contact point and fitted baseline start (ContactPointMode::fit, BaselineMode::fit);
+/// nullopt: at the curve's estimates (Curve::contact_depth, Curve::force_baseline). The estimates stay what the
+/// data show: the fit's flags compare the fitted values with them, never with a start.
+struct NuisanceStart {
+    std::optional<double> contact_depth{};  ///< the fitted contact point's start [m]
+    std::optional<double> baseline{};       ///< the fitted baseline's start [N]
+};
+
 /// A fit: the model, what is free, the measured curves.
 struct FitProblem {
     ModelBuilder model;                       ///< see ModelBuilder
@@ -118,6 +126,9 @@ struct FitProblem {
     /// Rebound data: impacts of the case's indenter at measured approach speeds, the same material as the curves
     /// (at least one curve or one rebound data set).
     std::vector<ReboundData> rebounds{};
+    /// Per curve (in the order of `curves`), where its fitted contact point and baseline start; empty, or a
+    /// default entry: at the curve's estimates. Model choice starts every candidate where the elastic fit ended.
+    std::vector<NuisanceStart> starts{};
 };
 
 /// What an entry of rebound data in FitResult::curves compares.

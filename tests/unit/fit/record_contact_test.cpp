@@ -265,6 +265,19 @@ TEST(RecordContact, ContactPointBoundsAreHonoured) {
     EXPECT_THROW(validate(problem), InvalidInput);
 }
 
+// Bounds that the user sets before the record (the record starts at -3 um, its contact is at 0): the data push the
+// contact to the upper bound -4 um, outside the record. Both are said: outside the record, and at the user's bound
+// (once only the first, so a contact held by the user's bound read like one the data had chosen).
+TEST(RecordContact, ContactOutsideTheRecordAtTheUsersBoundSaysBoth) {
+    FitProblem problem = hertz_problem(hertz_record({}));
+    problem.settings.contact_point_bounds = std::array<double, 2>{-6e-6, -4e-6};
+    const FitResult result = fit(problem);
+    EXPECT_NEAR(result.curves[0].contact_depth, -4e-6, 1e-12);
+    EXPECT_TRUE(has_flag(result.curves[0], "lies outside the record's depths")) << flags_of(result.curves[0]);
+    EXPECT_TRUE(has_flag(result.curves[0], "at its upper bound (fit.bounds.contact_point upper bound)"))
+        << flags_of(result.curves[0]);
+}
+
 // A baseline that sits far from the rows before contact is flagged: the data's zero (baseline = "fixed") on a
 // record whose pre-contact force is 1e-9 N = 100 sigma.
 TEST(RecordContact, BaselineFarFromThePreContactRowsIsFlagged) {
