@@ -75,14 +75,20 @@ LayerContact::Solution LayerContact::solve(double contact_radius) const {
     // The Nystroem matrix I - (1/pi) w_j [K(x_i - x_j) + K(x_i + x_j)] (eq. L4: K(x -+ s) = k((x -+ s)/h)/h), scaled
     // as W^(1/2) (I - K W) W^(-1/2) = I - W^(1/2) K W^(1/2): symmetric (the kernel sum is symmetric in x_i, x_j) and
     // positive definite as the operator's symbol L(xi h) > 0 is (eq. L1), so it is solved by Cholesky (n^3/3 flops,
-    // half of Gaussian elimination's). Only its lower triangle is filled.
-    std::vector<double> root_weight(nodes);
-    for (std::size_t i = 0; i < nodes; ++i) root_weight[i] = std::sqrt(w[i]);
+    // half of Gaussian elimination's). Only its upper triangle is filled, from the nodes over h and the factors
+    // sqrt(w_i) / (pi h): no division in the loop (it and the kernel's interpolation were half a thin layer's time).
+    const double h = layer_.thickness;
+    std::vector<double> root_weight(nodes), scaled_node(nodes);
+    for (std::size_t i = 0; i < nodes; ++i) {
+        root_weight[i] = std::sqrt(w[i]);
+        scaled_node[i] = x[i] / h;
+    }
     std::vector<double> matrix(nodes * nodes);
     for (std::size_t i = 0; i < nodes; ++i) {
-        for (std::size_t j = 0; j <= i; ++j) {
-            const double kernel = kernel_sum(x[i], x[j]) / std::numbers::pi;
-            matrix[i * nodes + j] = (i == j ? 1.0 : 0.0) - root_weight[i] * root_weight[j] * kernel;
+        const double row_factor = root_weight[i] / (std::numbers::pi * h);
+        for (std::size_t j = i; j < nodes; ++j) {
+            const double kernel = kernel_(scaled_node[i] - scaled_node[j]) + kernel_(scaled_node[i] + scaled_node[j]);
+            matrix[i * nodes + j] = (i == j ? 1.0 : 0.0) - row_factor * root_weight[j] * kernel;
         }
     }
     if (!numerics::cholesky_factor(matrix, nodes)) {

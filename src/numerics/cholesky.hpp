@@ -8,13 +8,14 @@
 
 namespace mdr::numerics {
 
-/// Factors the symmetric n x n row-major `matrix` = L L^T in place, reading only its lower triangle: L takes the
-/// lower triangle, the upper one is left as it was (Golub & Van Loan, Matrix Computations, algorithm 4.2.1, the
-/// row-oriented form). Returns false where a pivot is not > 0 (the matrix is not positive definite to working
-/// precision); `matrix` is then part-factored.
+/// Factors the symmetric n x n row-major `matrix` = U^T U in place, reading only its upper triangle (j >= i): U takes
+/// the upper triangle, the lower one is left as it was (Golub & Van Loan, Matrix Computations, the outer-product
+/// form of algorithm 4.2.2: each row of U updates the rows below it by contiguous multiply-adds, which vectorise).
+/// Returns false where a pivot is not > 0 (the matrix is not positive definite to working precision); `matrix` is
+/// then part-factored.
 bool cholesky_factor(std::vector<double>& matrix, std::size_t n);
 
-/// Solves L L^T x = b in place (`b` becomes x) with the factor that cholesky_factor left in `factor`.
+/// Solves U^T U x = b in place (`b` becomes x) with the factor that cholesky_factor left in `factor`.
 void cholesky_solve(const std::vector<double>& factor, std::size_t n, std::vector<double>& b);
 
 }  // namespace mdr::numerics

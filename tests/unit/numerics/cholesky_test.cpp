@@ -1,5 +1,5 @@
 // numerics::cholesky_factor and cholesky_solve (src/numerics/cholesky.hpp): a matrix made as L L^T from an integer L
-// gives L back exactly, a solve gives the integer x whose A x was the right-hand side, and a matrix that is not
+// gives U = L^T back exactly, a solve gives the integer x whose A x was the right-hand side, and a matrix that is not
 // positive definite is refused.
 
 #include <gtest/gtest.h>
@@ -11,8 +11,8 @@
 
 namespace {
 
-// L_ii = 2, L_ij = (i + 2 j) mod 3 below the diagonal: every product and sum in A = L L^T, and every division by
-// L_jj = 2 in the factorisation, is exact in doubles.
+// L_ii = 2, L_ij = (i + 2 j) mod 3 below the diagonal: every product and sum in A = L L^T, and every scaling by
+// 1 / L_jj = 1/2 in the factorisation, is exact in doubles.
 std::vector<double> integer_factor(std::size_t n) {
     std::vector<double> factor(n * n, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
@@ -32,7 +32,7 @@ std::vector<double> product_with_transpose(const std::vector<double>& factor, st
     return matrix;
 }
 
-TEST(Cholesky, FactorsAnIntegerProductExactlyAndLeavesTheUpperTriangle) {
+TEST(Cholesky, FactorsAnIntegerProductExactlyAndLeavesTheLowerTriangle) {
     for (const std::size_t n : {1U, 2U, 7U, 20U}) {
         const std::vector<double> factor = integer_factor(n);
         std::vector<double> matrix = product_with_transpose(factor, n);
@@ -40,7 +40,7 @@ TEST(Cholesky, FactorsAnIntegerProductExactlyAndLeavesTheUpperTriangle) {
         ASSERT_TRUE(mdr::numerics::cholesky_factor(matrix, n)) << n;
         for (std::size_t i = 0; i < n; ++i) {
             for (std::size_t j = 0; j < n; ++j) {
-                EXPECT_EQ(matrix[i * n + j], j <= i ? factor[i * n + j] : original[i * n + j]) << n << ' ' << i << j;
+                EXPECT_EQ(matrix[i * n + j], j >= i ? factor[j * n + i] : original[i * n + j]) << n << ' ' << i << j;
             }
         }
     }
