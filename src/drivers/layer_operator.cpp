@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "../numerics/dot_product.hpp"
+#include "../numerics/cholesky.hpp"
 
 namespace mdr::drivers {
 
@@ -39,25 +39,20 @@ std::shared_ptr<const LayerOperator> build(const OperatorKey& key) {
             matrix[i * cells + j] = matrix[j * cells + i] = (i == j ? 1.0 : 0.0) - coupling;
         }
     }
-    // Cholesky, I - K = L L^T: symmetric, and positive as its symbol L(xi h) > 0 is (eq. L1).
-    for (std::size_t j = 0; j < cells; ++j) {
-        const double* row_j = &factor[j * cells];
-        const double diagonal = matrix[j * cells + j] - numerics::dot_product(row_j, row_j, j);
-        if (!(diagonal > 0.0)) {
-            throw std::runtime_error("the layer's operator I - K is not positive definite on " +
-                                     std::to_string(cells) + " cells");
-        }
-        factor[j * cells + j] = std::sqrt(diagonal);
-        for (std::size_t i = j + 1; i < cells; ++i) {
-            const double value = matrix[i * cells + j] - numerics::dot_product(&factor[i * cells], row_j, j);
-            factor[i * cells + j] = value / factor[j * cells + j];
-        }
+    // Cholesky, I - K = L L^T with L = U^T of numerics::cholesky_factor: symmetric, and positive as its symbol
+    // L(xi h) > 0 is (eq. L1).
+    std::vector<double> upper = matrix;
+    if (!numerics::cholesky_factor(upper, cells)) {
+        throw std::runtime_error("the layer's operator I - K is not positive definite on " + std::to_string(cells) +
+                                 " cells");
     }
     built->factor_transposed.assign(cells * cells, 0.0);
     built->inverse_diagonal.resize(cells);
     for (std::size_t i = 0; i < cells; ++i) {
-        for (std::size_t j = 0; j <= i; ++j) built->factor_transposed[j * cells + i] = factor[i * cells + j];
-        built->inverse_diagonal[i] = 1.0 / factor[i * cells + i];
+        for (std::size_t j = i; j < cells; ++j) {
+            built->factor_transposed[i * cells + j] = factor[j * cells + i] = upper[i * cells + j];
+        }
+        built->inverse_diagonal[i] = 1.0 / upper[i * cells + i];
     }
     return built;
 }
