@@ -40,3 +40,12 @@ def test_a_short_approach_gives_the_true_modulus_and_no_tilt(approach_rows):
     assert abs(curve["baseline"] - BASELINE) < 3.0 * NOISE / np.sqrt(8)   # a mean of at least 8 rows before contact
     assert not [flag for flag in curve["flags"] if "tilt" in flag]
 
+
+def test_the_95_percent_intervals_cover_the_modulus_after_a_short_approach():
+    seeds = 60
+    covered = 0
+    for seed in range(seeds):
+        result = mdr.fit(CASE, data=[hertz_curve(30, seed)])
+        error = result.standard_errors["material.G"]
+        covered += abs(result.parameters["material.G"] - TRUE_G) < 1.96 * error
+    assert 0.85 * seeds <= covered <= seeds
