@@ -229,6 +229,13 @@ std::size_t last_crossing(const Curve& curve, const Baseline& baseline, std::siz
     return 0;
 }
 
+/// The first row from which the depth stays beyond `depth` up to `limit` (`limit` itself when its depth does not).
+std::size_t first_row_beyond(const Curve& curve, std::size_t limit, double depth) {
+    std::size_t row = limit;
+    while (row > 0 && curve.depth[row - 1] > depth) --row;
+    return row;
+}
+
 }  // namespace
 
 double difference_noise(const std::vector<double>& values, std::size_t begin, std::size_t end) {
@@ -260,10 +267,13 @@ double difference_noise(const std::vector<double>& values, std::size_t begin, st
 //     form); n in [1, 3] and d_c minimise the profiled residual: a 32 x 9 grid, then Brent's method in d_c with n
 //     optimised (Brent) for each d_c, each within a grid step of the best grid point (a box that moves where the
 //     minimum is on its edge).
-//  4. The baseline is fitted again to the rows before the contact (before the first row from which the depth
-//     stays beyond d_c), and step 3 is repeated once, starting from its first result; not when that would leave
-//     fewer than half of the window's rows (the depth of a pause before the approach is then within its noise of
-//     d_c: the window stays).
+//  4. The window shrinks to the rows before the contact: before the first row from which the depth stays beyond
+//     d_c - (sigma / A)^(1/n), the depth over which the fitted onset rises by one deviation (a contact estimate off
+//     by that much adds at most a deviation to a row). The baseline is fitted again there and step 3 repeated from
+//     its last result, until the window stays (at most 20 times): a short approach whose first window reached into
+//     a slow onset (its line tilted with the rise, pulling d_c deeper) comes back before the contact in a few
+//     passes. The window does not shrink below 8 rows (a pause at rest before the approach lies within its noise
+//     of d_c and holds no row that much shallower: the window stays).
 //  5. force_baseline is the line at the time the depth passes d_c. The depth noise is 1.4826 x MAD / sqrt(6) of
 //     the second differences of the depth over the baseline rows (they remove a smooth trend;
 //     var(x[i+1] - 2 x[i] + x[i-1]) = 6 sigma^2 for white noise): row-to-row noise, not slow drift.
@@ -312,7 +322,7 @@ void estimate_contact(Curve& curve) {
     curve.depth_noise = difference_noise(curve.depth, 0, end);
     std::optional<Onset> onset;
     std::size_t contact_row = 0;
-    for (int pass = 0; pass < 2; ++pass) {
+    for (int pass = 0; pass < max_window_moves; ++pass) {
         const double rise = curve.force[peak] - baseline.at(curve.time[peak]);
         if (!(rise > onset_deviations * baseline.noise + round_off)) {
             curve.estimate_note = "the force does not rise clearly above its baseline (by at most " +
@@ -328,10 +338,12 @@ void estimate_contact(Curve& curve) {
             curve.estimate_note = "the depth does not increase where the force rises: no contact point";
             return;
         }
-        contact_row = limit;  // the first row from which the depth stays beyond the contact depth up to limit
-        while (contact_row > 0 && curve.depth[contact_row - 1] > onset->contact) --contact_row;
-        if (pass == 1 || contact_row < std::max(baseline_rows_min, end / 2) || contact_row >= end) break;
-        end = contact_row;  // Step 4.
+        contact_row = first_row_beyond(curve, limit, onset->contact);
+        // Rows within the depth over which the onset rises by one deviation of the contact are left out too.
+        const double margin = std::pow(baseline.noise / onset->amplitude, 1.0 / onset->exponent);
+        const std::size_t before_contact = first_row_beyond(curve, limit, onset->contact - margin);
+        if (before_contact < baseline_rows_min || before_contact >= end) break;
+        end = before_contact;  // Step 4.
         baseline = fit_baseline(curve, end);
         threshold = threshold_deviations * baseline.noise + round_off;
         crossing = last_crossing(curve, baseline, peak, threshold);

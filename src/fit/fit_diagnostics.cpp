@@ -13,6 +13,7 @@
 #include "data_window.hpp"
 #include "curve_rows_cost.hpp"
 #include "jacobian_summary.hpp"
+#include "pre_contact_baseline.hpp"
 
 namespace mdr::fit {
 
@@ -150,12 +151,14 @@ std::vector<std::array<double, 2>> driving_history(const Curve& data, bool force
 // the rebound data's entries) and gathers the summary of the weighted Jacobian and residuals at the optimum, one
 // curve at a time: no N x p copy of the Jacobian (docs/performance.md, "Memory of a fit"). A curve's errors are
 // taken as AR(1) with coefficient phi (error_correlation) within the curve; rebound data as independent.
+// `baseline_sums` gets each curve's J^T dr/db (dr/db = 1 / noise on each fitted force; 0 for fitted depths).
 JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
                                  const std::vector<std::unique_ptr<ReboundCost>>& rebounds,
                                  const std::vector<double>& shared, const std::vector<std::vector<double>>& nuisance,
-                                 std::size_t m, FitResult& result) {
+                                 std::size_t m, FitResult& result, std::vector<Eigen::VectorXd>& baseline_sums) {
     const std::size_t k = shared.size();
     JacobianSummary summary(static_cast<Eigen::Index>(k + m * costs.size()));
+    baseline_sums.assign(costs.size(), Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k + m * costs.size())));
     for (std::size_t c = 0; c < costs.size(); ++c) {
         const CurveCost& cost = *costs[c];
         const CurveModel& prepared = cost.prepared();
@@ -216,6 +219,7 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
                                  for (std::size_t j = 0; j < m; ++j) {
                                      row[static_cast<Eigen::Index>(k + c * m + j)] = nuisance_block[r * m + j];
                                  }
+                                 if (force_fitted) baseline_sums[c] += row.transpose() / prepared.noise;
                              });
         }
         result.curves.push_back(std::move(curve));
@@ -294,7 +298,9 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
                           const std::vector<std::vector<double>>& nuisance, FitResult& result) {
     const std::size_t k = shared.size();
     const std::size_t m = scales.nuisance_size();
-    const JacobianSummary summary = summarise_curves(problem, costs, rebounds, shared, nuisance, m, result);
+    std::vector<Eigen::VectorXd> baseline_sums;  // per curve: J^T dr/db, dr/db = 1 / noise for each fitted force
+    const JacobianSummary summary =
+        summarise_curves(problem, costs, rebounds, shared, nuisance, m, result, baseline_sums);
     const auto n = static_cast<double>(summary.rows());
     const auto columns = k + m * costs.size();
     result.points = static_cast<std::size_t>(summary.rows());
@@ -338,7 +344,16 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
             }
         }
     }
-    const Eigen::MatrixXd covariance = honest_covariance(summary, variance_scale, pseudo_inverse, costs.size(), result);
+    Eigen::MatrixXd covariance = honest_covariance(summary, variance_scale, pseudo_inverse, costs.size(), result);
+    // A held baseline b (from the rows before contact) carries its own error sigma_b, independent of the fitted rows'
+    // noise: the least-squares estimate moves by -(J^T J)^+ J^T dr/db per unit of b, which adds sigma_b^2 s s^T.
+    for (std::size_t c = 0; c < costs.size(); ++c) {
+        const double baseline_error = held_baseline_error(problem.settings, problem.curves[c]);
+        if (!(baseline_error > 0.0)) continue;
+        result.curves[c].baseline_error = baseline_error;
+        const Eigen::VectorXd shift = pseudo_inverse * baseline_sums[c];
+        covariance += baseline_error * baseline_error * shift * shift.transpose();
+    }
     // The intervals' quantile: Student's t with the effective points less the free parameters (s^2 is estimated).
     double effective = n;
     for (std::size_t c = 0; c < costs.size(); ++c) {

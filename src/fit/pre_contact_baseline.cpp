@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "mdr/error.hpp"
 
@@ -19,6 +20,19 @@ double pre_contact_mean(const Curve& curve) {
 double held_baseline(const FitSettings& settings, const Curve& curve) {
     if (settings.baseline == BaselineMode::fixed) return 0.0;
     return settings.baseline == BaselineMode::constant ? pre_contact_mean(curve) : curve.force_baseline;
+}
+
+double held_baseline_error(const FitSettings& settings, const Curve& curve) {
+    const std::size_t rows = std::min(curve.baseline_rows, curve.time.size());
+    if (rows == 0 || settings.baseline == BaselineMode::fixed || settings.baseline == BaselineMode::fit) return 0.0;
+    const double count = static_cast<double>(rows);
+    if (settings.baseline == BaselineMode::constant) return curve.force_noise / std::sqrt(count);
+    double mean_time = 0.0, spread = 0.0;
+    for (std::size_t i = 0; i < rows; ++i) mean_time += curve.time[i];
+    mean_time /= count;
+    for (std::size_t i = 0; i < rows; ++i) spread += (curve.time[i] - mean_time) * (curve.time[i] - mean_time);
+    const double lever = spread > 0.0 ? std::pow(curve.contact_time - mean_time, 2) / spread : 0.0;
+    return curve.force_noise * std::sqrt(1.0 / count + lever);
 }
 
 std::optional<FitProblem> with_pre_contact_baselines(const FitProblem& problem) {

@@ -18,6 +18,13 @@ double pre_contact_mean(const Curve& curve);
 /// Curve::force_baseline (for BaselineMode::line, after with_pre_contact_baselines, the line's value at the contact).
 double held_baseline(const FitSettings& settings, const Curve& curve);
 
+/// The standard error [force] of held_baseline from the white force noise sigma (Curve::force_noise) of the n rows
+/// before contact: sigma / sqrt(n) for their mean (BaselineMode::constant); for the line through them at the contact
+/// time t_c (BaselineMode::estimate, and line after with_pre_contact_baselines) sigma sqrt(1/n + (t_c - mean t)^2 /
+/// sum (t - mean t)^2), the standard error of a least-squares line's value. 0 for BaselineMode::fixed and fit (a
+/// fitted baseline has its own error) and for a curve without rows before contact.
+double held_baseline_error(const FitSettings& settings, const Curve& curve);
+
 /// Checks that every curve has rows before contact where the baseline comes from them (BaselineMode::constant or
 /// line): throws mdr::InvalidInput (key `fit.baseline`) for a curve without (it starts in contact, or has no
 /// contact estimate): its baseline cannot come from the data. For BaselineMode::line returns `problem` with each

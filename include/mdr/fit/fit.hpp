@@ -162,7 +162,7 @@ struct CurveFit {
     std::optional<double> preload_depth{};
     double preload_depth_error = 0.0;  ///< its standard error [m] (the contact point's)
     double baseline = 0.0;          ///< the force baseline used [N]
-    double baseline_error = 0.0;    ///< its standard error [N] (0 unless fitted)
+    double baseline_error = 0.0;    ///< its standard error [N] (held: from the rows before contact; 0 if fixed)
     double noise = 0.0;             ///< the measurement noise of the fitted quantity [N or m]
     double rms_residual = 0.0;      ///< RMS of model - measured
     /// Lag-1 autocorrelation of the residuals (rows in time order); 0 for rebound data.

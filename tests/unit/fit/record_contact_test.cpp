@@ -215,7 +215,12 @@ free = ["material.G"]
     curve = make_curve("offset", curve.time, curve.depth, curve.force);
     const FitResult result = fit(hertz_problem(curve));
     EXPECT_NEAR(result.curves[0].baseline, 1e-9, 5.0 * sigma / std::sqrt(1000.0));
-    EXPECT_EQ(result.curves[0].baseline_error, 0.0);
+    // Its error is that of a mean of the rows before contact: sigma / sqrt(their count), within the noise estimate's
+    // own scatter and the few rows next to the contact that the estimate leaves out.
+    const auto before_contact = static_cast<double>(
+        std::count_if(curve.depth.begin(), curve.depth.end(), [](double depth) { return depth <= 0.0; }));
+    const double mean_error = sigma / std::sqrt(before_contact);
+    EXPECT_NEAR(result.curves[0].baseline_error, mean_error, 0.2 * mean_error);
 }
 
 // A record at rest and then pressed deeper (a pause at constant height, then a ramp; the JPK relaxations): the
