@@ -18,10 +18,12 @@ double baseline_at(const Curve& curve, double t) {
     return curve.force_baseline + curve.baseline_slope * (t - curve.contact_time);
 }
 
-// The first row of the retract: the row after the first deepest row (rows when the curve has no retract).
+// The first row of the retract: the row after the last deepest row (rows when the curve has no retract). A hold at
+// the deepest depth is not a retract: its force relaxes, and the baseline's line extrapolated over a long hold can
+// pass above it without any adhesion.
 std::size_t retract_begin(const Curve& curve) {
-    const auto deepest = std::max_element(curve.depth.begin(), curve.depth.end());
-    return static_cast<std::size_t>(deepest - curve.depth.begin()) + 1;
+    const auto deepest = std::max_element(curve.depth.rbegin(), curve.depth.rend());
+    return curve.depth.size() - static_cast<std::size_t>(deepest - curve.depth.rbegin());
 }
 
 Adhesion measure_adhesion(const Curve& curve, std::size_t begin) {

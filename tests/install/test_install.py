@@ -66,7 +66,11 @@ def check_binary(binary: pathlib.Path, python: str, workdir: pathlib.Path, env: 
 def providing_packages(binary: pathlib.Path) -> dict[str, str]:
     """The shared libraries that `binary` names as NEEDED, each with the Debian package that holds it here."""
     needed = re.findall(r"\(NEEDED\)\s+Shared library: \[(.+?)\]", run("readelf", "-d", binary))
-    resolved = dict(re.findall(r"^\s*(\S+) => (/\S+)", run("ldd", binary), re.MULTILINE))
+    listed = run("ldd", binary)
+    resolved = dict(re.findall(r"^\s*(\S+) => (/\S+)", listed, re.MULTILINE))
+    # The dynamic loader is listed by its path alone ("/lib64/ld-linux-x86-64.so.2 (0x...)"); a binary names it as
+    # NEEDED when its code reads thread-local storage through __tls_get_addr (position-independent objects).
+    resolved |= {pathlib.Path(path).name: path for path in re.findall(r"^\s*(/\S+) \(0x", listed, re.MULTILINE)}
     packages = {}
     for soname in needed:
         assert soname in resolved, f"{binary.name}: {soname} not found by ldd"

@@ -160,6 +160,8 @@ def test_a_power_law_fit_converts_over_the_lags_of_its_curve():
             "fit": {"free": ["material.G0", "material.beta"], "contact_point": "fixed", "baseline": "fixed"}}
     result = mdr.fit(case, data=[{"time": t, "depth": np.minimum(v * t, 1.0e-6), "force": force}])
     assert result.status == "converged"
+    # The hold is not a retract: no row of it is taken for an adhesive pull-off and left out.
+    assert result.summary["curves"][0]["rows_left_out"] == 0
     shortest, longest = result.summary["material_window"]
     assert shortest <= 0.01 / 5.0 * (1.0 + 1e-12) and longest >= 30.0
     assert result.summary["material_error"] <= 1e-4
