@@ -3,6 +3,8 @@
 /// An elastic layer of finite thickness on a rigid substrate: its compliance function and the kernel of the MDR's
 /// Fredholm equation (docs/theory.md, "Layers"; Lebedev & Ufliand 1958, Vorovich et al. 1974).
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -37,21 +39,29 @@ double layer_compliance_defect(LayerInterface interface, double poisson_ratio, d
 
 /// The kernel k(eta) = int_0^inf (1 - L(u)) cos(u eta) du of the layer (K(y) = k(y/h)/h in the Fredholm equation
 /// q(x) - (1/pi) int_0^a [K(x - s) + K(x + s)] q(s) ds = E* (d - g(x)), docs/theory.md eq. L4), tabulated on
-/// [0, max_eta] and interpolated by cubic Hermite polynomials with its exact slope (error below 1e-9 of k(0)).
+/// [0, max_eta] with a uniform spacing and interpolated by the cubic Hermite polynomial of each interval from the
+/// values and exact slopes at its ends (error below 1e-9 of k(0)).
 class LayerKernel {
 public:
     /// Tabulates k on [0, max_eta] (max_eta > 0) for the interface and Poisson ratio.
     LayerKernel(LayerInterface interface, double poisson_ratio, double max_eta);
-    /// k(eta) for |eta| <= max_eta (k is even).
-    double operator()(double eta) const;
+    /// k(eta) for |eta| <= max_eta (k is even). Inline: the Nystroem fill evaluates it twice per matrix entry.
+    double operator()(double eta) const {
+        const double position = std::abs(eta) * inverse_spacing_;
+        const std::size_t interval = std::min(static_cast<std::size_t>(position), last_interval_);
+        const double t = position - static_cast<double>(interval);
+        const double* c = &coefficients_[4 * interval];
+        return c[0] + t * (c[1] + t * (c[2] + t * c[3]));  // Horner
+    }
     /// The largest |eta| tabulated.
     double max_eta() const { return max_eta_; }
 
 private:
     double max_eta_;
-    double spacing_;
-    std::vector<double> values_;
-    std::vector<double> slopes_;
+    double inverse_spacing_;
+    std::size_t last_interval_;
+    /// Per interval [eta_j, eta_j+1], the Hermite cubic's coefficients in t = eta / spacing - j, lowest first.
+    std::vector<double> coefficients_;
 };
 
 }  // namespace mdr::contact

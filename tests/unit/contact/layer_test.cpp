@@ -56,4 +56,18 @@ TEST(LayerKernel, MatchesAdaptiveQuadrature) {
     }
 }
 
+// A wide table, as a thin film's (a/h 40): the rotations that give cos(u eta_j) run 4000 steps, with the quadrature's
+// 9600 nodes in u; the tail, k ~ eta^-4, against scipy's quad of eq. L4 with weight cos (QAWO, epsabs 1e-15).
+TEST(LayerKernel, WideTableMatchesAdaptiveQuadrature) {
+    constexpr std::array<double, 4> eta{20.0, 39.99, 63.3, 79.9};
+    constexpr std::array<double, 4> expected{-2.79446327685e-05, -1.6011213979e-06, -2.51423697612e-07,
+                                             -9.87063036354e-08};
+    const double k0 = 1.77021677337;
+    const LayerKernel kernel(LayerInterface::bonded, 0.5, 80.0);
+    EXPECT_NEAR(kernel(0.0), k0, 1e-9 * k0);
+    for (std::size_t i = 0; i < eta.size(); ++i) {
+        EXPECT_NEAR(kernel(eta[i]), expected[i], 1e-9 * k0) << "eta " << eta[i];
+    }
+}
+
 }  // namespace
