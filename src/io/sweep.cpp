@@ -135,8 +135,8 @@ std::size_t sweep_size(const std::vector<SweepAxis>& axes) {
 
 namespace {
 
-// Thrown from a run's progress report when the sweep is being stopped and the run takes no step observers (a
-// [layer]'s, drivers::takes_step_observers): it then ends at its next hundredth instead of its next step.
+// Thrown from a run's progress report when the sweep is being stopped: a [layer]'s run of Ting's class with observers
+// first runs without them (run_layer_indentation), and ends at its next hundredth there.
 struct SweepStopped {};
 
 // Ends a run of the sweep when the sweep is being stopped (interrupted or failed), checked at every step.
@@ -241,9 +241,7 @@ std::vector<SweepRow> run_sweep_points(const CaseTemplate& model, const std::vec
             try {
                 const auto contact_case = case_at(model, keys, row.point);
                 const auto start = std::chrono::steady_clock::now();
-                const auto result = drivers::takes_step_observers(contact_case)
-                                        ? drivers::run_case(contact_case, {}, {&stop_observer})
-                                        : drivers::run_case(contact_case, stop_report);
+                const auto result = drivers::run_case(contact_case, stop_report, {&stop_observer});
                 if (result.stopped) return;  // interrupted: the row stays empty, the sweep is abandoned
                 const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 row.summary = summarize(contact_case, result, wall);
