@@ -331,10 +331,13 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
         };
     }
     try {
-        if (observers.empty() || contact_case.impact()) return run_one_maximum(contact_case, monotone, observers);
+        const bool one_run = std::any_of(observers.begin(), observers.end(),
+                                         [](const StepObserver* observer) { return observer && observer->needs_one_run(); });
+        if (!one_run || contact_case.impact()) return run_one_maximum(contact_case, monotone, observers);
         // Ting's class finds that the contact grows again only when it does, and the cells then run the case from its
-        // start: the observers must not have seen Ting's states before. A run without them decides the class, and
-        // the observed run repeats it (twice the time of Ting's class; an impact's regrowth is refused, not rerun).
+        // start: an observer that needs one run must not have seen Ting's states before. A run without observers
+        // decides the class, and the observed run repeats it (twice the time of Ting's class; an impact's regrowth is
+        // refused, not rerun).
         run_one_maximum(contact_case, monotone, {});
         return run_one_maximum(contact_case, monotone, observers);
     } catch (const SnapshotOnCells&) {

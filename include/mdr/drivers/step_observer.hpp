@@ -51,6 +51,11 @@ public:
         (void)state;
         return false;
     }
+    /// Whether it must see the states of one run only (by default yes). An observer that only asks to stop (a
+    /// sweep's) says no: a [layer]'s run of Ting's class then shows it its states at once, and the run on the cells
+    /// that replaces it where the contact grows again shows them again from the start (run_layer_indentation), instead
+    /// of running Ting's class once without observers first.
+    virtual bool needs_one_run() const { return true; }
 };
 
 /// Observers a caller attaches to a run (not owned; each must outlive the run; a null pointer is an

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -103,6 +104,27 @@ TEST_P(LayerObserver, StopsTheRunWithTheRowsOfTheFullRunUpToThen) {
     }
     ASSERT_EQ(watcher.states.size(), middle + 1);
     EXPECT_TRUE(watcher.states.back().last);
+}
+
+// Only asks to stop, as a sweep's observer: it may see the abandoned run of Ting's class before the cells' run.
+class StopOnly final : public StepObserver {
+public:
+    void observe(const StepState& state) override { steps.push_back(state.step); }
+    bool needs_one_run() const override { return false; }
+    std::vector<std::size_t> steps;
+};
+
+TEST(LayerObserverOfOneRun, SeesTheCellsRunAloneWhereAnObserverWithoutTheNeedSeesTingsRunFirst) {
+    Watcher watcher;
+    StopOnly stop_only;
+    const auto alone = run_case(reloading(), {}, {&stop_only});
+    const auto both = run_case(reloading(), {}, {&stop_only, &watcher});
+    ASSERT_EQ(watcher.states.size(), both.time.size());
+    EXPECT_EQ(alone.force, both.force);
+    // Alone it was shown the states of Ting's run up to the regrowth, then the cells' from their start.
+    const auto restarts = std::count(stop_only.steps.begin(), stop_only.steps.end(), std::size_t{0});
+    EXPECT_EQ(restarts, 3);  // twice alone (Ting's, the cells'), once with the watcher (the cells' only)
+    EXPECT_GT(stop_only.steps.size(), 2 * both.time.size());
 }
 
 INSTANTIATE_TEST_SUITE_P(TingCellsImpact, LayerObserver, testing::Values(&loading, &reloading, &impact));
