@@ -331,8 +331,9 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
         };
     }
     try {
-        const bool one_run = std::any_of(observers.begin(), observers.end(),
-                                         [](const StepObserver* observer) { return observer && observer->needs_one_run(); });
+        const bool one_run = std::any_of(observers.begin(), observers.end(), [](const StepObserver* observer) {
+            return observer != nullptr && observer->needs_one_run();  // a null one is refused by ObserverList
+        });
         if (!one_run || contact_case.impact()) return run_one_maximum(contact_case, monotone, observers);
         // Ting's class finds that the contact grows again only when it does, and the cells then run the case from its
         // start: an observer that needs one run must not have seen Ting's states before. A run without observers
