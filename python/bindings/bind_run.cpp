@@ -24,7 +24,8 @@ namespace py = pybind11;
 namespace mdr::python {
 namespace {
 
-// One state of a run as a Python observer sees it (drivers::StepState, the foundation's contact radius read out).
+// One state of a run as a Python observer sees it (drivers::StepState, the foundation's contact radius read out;
+// a [layer]'s, which has no foundation, as given).
 struct StepRecord {
     std::size_t step = 0;
     double time = 0.0, depth = 0.0, force = 0.0, load = 0.0, velocity = 0.0, contact_radius = 0.0, fraction = 0.0;
@@ -55,7 +56,8 @@ private:
                                 .force = state.force,
                                 .load = state.load,
                                 .velocity = state.velocity,
-                                .contact_radius = state.foundation->contact_radius(),
+                                .contact_radius = state.foundation ? state.foundation->contact_radius()
+                                                                   : state.contact_radius,
                                 .fraction = state.fraction,
                                 .settled = state.settled};
         py::gil_scoped_acquire acquire;

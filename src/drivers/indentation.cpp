@@ -69,8 +69,6 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
     });
 }
 
-bool takes_step_observers(const ContactCase& contact_case) { return !contact_case.layer; }
-
 IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress,
                            const StepObservers& observers) {
     auto result = contact_case.layer ? run_layer_indentation(contact_case, progress, observers)

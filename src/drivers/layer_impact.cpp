@@ -9,12 +9,13 @@
 #include "mdr/numerics/monotone_root.hpp"
 #include "impact_end.hpp"
 #include "layer_stepping.hpp"
+#include "observer_list.hpp"
 
 namespace mdr::drivers {
 
 IndentationResult run_layer_impact(const ContactCase& contact_case, const contact::LayerContact& layer,
                                    double unit_modulus, double largest_depth, const ResolvedNumerics& numerics,
-                                   const ProgressObserver& progress) {
+                                   const ProgressObserver& progress, const StepObservers& observers) {
     IndentationResult result;
     result.numerics = numerics;
     const double mass = contact_case.impact()->mass;
@@ -25,15 +26,33 @@ IndentationResult run_layer_impact(const ContactCase& contact_case, const contac
         contact_case.material, layer, unit_modulus, 0.0, largest_depth,
         {.trapezoidal = contact_case.material.viscosity() > 0.0, .start = approach, .indenter_motion = true});
     double time = 0.0, depth = 0.0, velocity = approach, force = 0.0;
-    const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
-    const auto record = [&](const LayerStep& state) {
-        result.time.push_back(time);
-        result.depth.push_back(depth);
-        result.force.push_back(force);
-        result.radius.push_back(state.contact.contact_radius);
-        result.velocity.push_back(velocity);
+    // The caller's observers see each state before it is recorded; a stop ends the run with it (and no outcome).
+    ObserverList observed(std::max<std::size_t>(contact_case.numerics.output_every, 1));
+    observed.add(observers);
+    // Hands the state after step n to the observers, records it when a row; returns whether the run ends with it.
+    const auto notify = [&](std::size_t n, const LayerStep& state) {
+        StepState observed_state{.step = n,
+                                 .time = time,
+                                 .depth = depth,
+                                 .force = force,
+                                 .velocity = velocity,
+                                 .fraction = std::min(time / numerics.time_limit, 1.0),
+                                 .last = result.impact.has_value(),
+                                 .contact_radius = state.contact.contact_radius};
+        const bool ends = observed.notify(observed_state);
+        if (observed_state.row) {
+            result.time.push_back(time);
+            result.depth.push_back(depth);
+            result.force.push_back(force);
+            result.radius.push_back(state.contact.contact_radius);
+            result.velocity.push_back(velocity);
+        }
+        return ends;
     };
-    record(stepper.current());
+    if (notify(0, stepper.current())) {
+        result.stopped = true;
+        return result;
+    }
     for (std::size_t n = 1;; ++n) {
         if (time >= numerics.time_limit) {
             throw InvalidInput("load.end", format_value(numerics.time_limit),
@@ -95,9 +114,12 @@ IndentationResult run_layer_impact(const ContactCase& contact_case, const contac
         depth = next.centre;
         force = next.force;
         velocity = new_velocity;
-        if (result.impact || n % every == 0) record(next);
+        const bool ends = notify(n, next);
         if (progress) progress(std::min(time / numerics.time_limit, 1.0));
-        if (result.impact) return result;
+        if (ends) {
+            result.stopped = observed.stopped();
+            return result;
+        }
     }
 }
 

@@ -15,6 +15,6 @@ namespace mdr::drivers {
 /// contact has not ended by the time limit, std::runtime_error when the restitution lies outside [0, 1].
 IndentationResult run_layer_impact(const ContactCase& contact_case, const contact::LayerContact& layer,
                                    double unit_modulus, double largest_depth, const ResolvedNumerics& numerics,
-                                   const ProgressObserver& progress);
+                                   const ProgressObserver& progress, const StepObservers& observers = {});
 
 }  // namespace mdr::drivers

@@ -19,6 +19,7 @@
 #include "layer_shore.hpp"
 #include "layer_snapshot.hpp"
 #include "layer_stepping.hpp"
+#include "observer_list.hpp"
 #include "paused_base.hpp"
 #include "recorders.hpp"
 
@@ -117,8 +118,10 @@ void validate_layer(const ContactCase& contact_case) {
 namespace {
 
 // A run of Ting's class (one maximum of the contact radius; eq. L11 to L14); throws ContactRegrows where the
-// contact would grow again after it shrank.
-IndentationResult run_one_maximum(const ContactCase& contact_case, const ProgressObserver& progress) {
+// contact would grow again after it shrank. The caller's observers see each state before it is recorded (a row, a
+// Shore reading, a snapshot), as the half-space's recorders see it; a stop ends the run with it.
+IndentationResult run_one_maximum(const ContactCase& contact_case, const ProgressObserver& progress,
+                                  const StepObservers& extra_observers) {
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
     const std::size_t nodes = contact_case.numerics.elements.value_or(contact::default_layer_nodes);
@@ -138,7 +141,7 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
                                                                                            : largest_radius;
     if (contact_case.impact()) {
         return run_layer_impact(contact_case, layer, unit_plane_modulus, solved_depth_scale, result.numerics,
-                                progress);
+                                progress, extra_observers);
     }
     const auto& history = *contact_case.load.history;
     // The half-space's grid, cut at the snapshots (a tangential load is refused on a layer, a harmonic runs on
@@ -176,7 +179,9 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     const ShoreTest* shore = contact_case.shore();
     std::optional<ShoreRecorder> shore_recorder;
     if (shore) shore_recorder.emplace(shore->instrument, result);
-    const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
+    const std::size_t last_node = grid.size() - 1;
+    ObserverList observers(std::max<std::size_t>(contact_case.numerics.output_every, 1));
+    observers.add(extra_observers);
     std::size_t reported = 0;
     double previous_centre = 0.0;
     // Snapshots of the growing contact (eq. L26); one due while it recedes runs the case on cells (eq. L27).
@@ -263,20 +268,27 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
         stepper.commit(next);
         if (growing) growing->commit(next);
         if (i > 0) ++result.steps;
-        const bool row = i % every == 0 || i + 1 == grid.size();
-        if (row) {
+        const bool settled = i + 1 == grid.size() || grid[i + 1].time != node.time;
+        // In a pause the feedback's base, z = d + F / k.
+        const double shown_base = holding ? paused->base_in_pause(depth) : base;
+        StepState state{.step = i,
+                        .time = node.time,
+                        .depth = depth,
+                        .force = next.force,
+                        .load = spring ? shown_base : node.value,
+                        .fraction = static_cast<double>(i) / static_cast<double>(std::max<std::size_t>(last_node, 1)),
+                        .settled = settled,
+                        .last = i == last_node,
+                        .contact_radius = next.contact.contact_radius};
+        const bool ends = observers.notify(state);
+        if (state.row) {
             result.time.push_back(node.time);
             result.depth.push_back(depth);
             result.force.push_back(next.force);
             result.radius.push_back(next.contact.contact_radius);
-            // In a pause the feedback's base, z = d + F / k.
-            if (spring && !shore) result.base.push_back(holding ? paused->base_in_pause(depth) : base);
+            if (spring && !shore) result.base.push_back(shown_base);
         }
-        if (shore_recorder) {
-            const bool settled = i + 1 == grid.size() || grid[i + 1].time != node.time;
-            shore_recorder->observe({.time = node.time, .depth = depth, .settled = settled, .row = row});
-        }
-        const bool settled = i + 1 == grid.size() || grid[i + 1].time != node.time;
+        if (shore_recorder) shore_recorder->observe(state);
         // At a pause's start the force to hold; at its end the base's shift (the node settled: no jump follows).
         if (paused && settled) paused->passed(node.time, next.force, depth, node.value);
         for (std::size_t due = snapshots && settled ? snapshots->due(node.time) : 0; due > 0; --due) {
@@ -289,7 +301,9 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
             reported = percent;
             progress(static_cast<double>(i + 1) / static_cast<double>(grid.size()));
         }
+        if (ends) break;
     }
+    result.stopped = observers.stopped();
     return result;
 }
 
@@ -298,9 +312,6 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress,
                                         const StepObservers& observers) {
     validate_layer(contact_case);
-    if (!observers.empty()) {
-        refuse("layer", "[...]", "a run with step observers (a sweep's measures, mdr.run's observers)");
-    }
     if (contact_case.shore() && contact_case.material.viscosity() > 0.0) {
         refuse("material.eta", format_value(contact_case.material.viscosity()),
                "a durometer's landing against a parallel dashpot");
@@ -308,7 +319,7 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     // A harmonic load's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19); a
     // fit's model runs any history there (NumericsOptions::layer_cells).
     if (contact_case.load.harmonic || contact_case.numerics.layer_cells) {
-        return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), progress);
+        return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), progress, observers);
     }
     // The run again on cells reports no less than the first run reached (each call still lets the caller abandon).
     double reached = 0.0;
@@ -320,11 +331,20 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
         };
     }
     try {
-        return run_one_maximum(contact_case, monotone);
+        const bool one_run = std::any_of(observers.begin(), observers.end(), [](const StepObserver* observer) {
+            return observer != nullptr && observer->needs_one_run();  // a null one is refused by ObserverList
+        });
+        if (!one_run || contact_case.impact()) return run_one_maximum(contact_case, monotone, observers);
+        // Ting's class finds that the contact grows again only when it does, and the cells then run the case from its
+        // start: an observer that needs one run must not have seen Ting's states before. A run without observers
+        // decides the class, and the observed run repeats it (twice the time of Ting's class; an impact's regrowth is
+        // refused, not rerun).
+        run_one_maximum(contact_case, monotone, {});
+        return run_one_maximum(contact_case, monotone, observers);
     } catch (const SnapshotOnCells&) {
         // A durometer's contact only grows; the cells have no stop.
         if (contact_case.shore()) refuse("output.snapshots", "[...]", "a snapshot of a durometer's receding contact");
-        return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), monotone);
+        return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), monotone, observers);
     } catch (const ContactRegrows&) {
         // A durometer's spring pushes a creeping body: its contact only grows (the stop holds the depth), so a
         // regrowth is not expected there; the cells have no stop, so refuse it rather than run another test.
@@ -333,7 +353,7 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
                                "the contact would shrink and grow again on the [layer], which a durometer's test "
                                "is not built for (issue 28)");
         }
-        return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), monotone);
+        return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), monotone, observers);
     } catch (const InvalidInput& error) {
         // The contact beyond the largest radius prepared: in a Shore test, the durometer's rod.
         if (contact_case.shore() && error.key() == "layer") throw layer_shore_refusal();

@@ -10,12 +10,13 @@
 #include "layer_snapshot.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/error.hpp"
+#include "observer_list.hpp"
 #include "paused_base.hpp"
 
 namespace mdr::drivers {
 
 IndentationResult run_layer_regrowing(const ContactCase& contact_case, double largest_radius,
-                                      const ProgressObserver& progress) {
+                                      const ProgressObserver& progress, const StepObservers& observers) {
     const auto& material = contact_case.material;
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
@@ -34,7 +35,10 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
     // history resumes shifted from the z reached (PausedBase, as on the half-space).
     std::optional<PausedBase> paused;
     if (spring && !spring->force_pauses.empty()) paused.emplace(spring->force_pauses, spring_constant);
-    const std::size_t every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
+    // The caller's observers see each state before it is recorded; a stop ends the run with it.
+    ObserverList observed(std::max<std::size_t>(contact_case.numerics.output_every, 1));
+    observed.add(observers);
+    const std::size_t last_node = grid.size() - 1;
     const bool sine_rate = displacement && contact_case.load.harmonic && material.viscosity() > 0.0;
     std::size_t reported = 0;
     SnapshotSchedule snapshots(contact_case.snapshots);
@@ -56,14 +60,26 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
                          : layer.step_loaded(time_step, spring ? spring_constant * value : std::max(value, 0.0),
                                              spring_constant, value);
         if (i > 0) ++result.steps;
-        if (i % every == 0 || i + 1 == grid.size()) {
+        const bool settled = i == last_node || grid[i + 1].time != grid[i].time;
+        const double shown_base = holding ? paused->base_in_pause(state.depth) : value;
+        StepState observed_state{
+            .step = i,
+            .time = grid[i].time,
+            .depth = state.depth,
+            .force = state.force,
+            .load = spring ? shown_base : value,
+            .fraction = static_cast<double>(i) / static_cast<double>(std::max<std::size_t>(last_node, 1)),
+            .settled = settled,
+            .last = i == last_node,
+            .contact_radius = state.contact_radius};
+        const bool ends = observed.notify(observed_state);
+        if (observed_state.row) {
             result.time.push_back(grid[i].time);
             result.depth.push_back(state.depth);
             result.force.push_back(state.force);
             result.radius.push_back(state.contact_radius);
-            if (spring) result.base.push_back(holding ? paused->base_in_pause(state.depth) : value);
+            if (spring) result.base.push_back(shown_base);
         }
-        const bool settled = i + 1 == grid.size() || grid[i + 1].time != grid[i].time;
         if (paused && settled) paused->passed(grid[i].time, state.force, state.depth, grid[i].value);
         for (std::size_t due = settled ? snapshots.due(grid[i].time) : 0; due > 0; --due) {
             result.snapshots.push_back(cells_snapshot(layer, state.contact_radius, grid[i].time));
@@ -75,8 +91,10 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
             reported = percent;
             progress(static_cast<double>(i + 1) / static_cast<double>(grid.size()));
         }
+        if (ends) break;
     }
-    if (cycle) result.harmonic = cycle->outcome();
+    result.stopped = observed.stopped();
+    if (cycle && !result.stopped) result.harmonic = cycle->outcome();  // the outcome needs the whole run
     return result;
 }
 

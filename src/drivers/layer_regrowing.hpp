@@ -17,6 +17,6 @@ namespace mdr::drivers {
 /// Throws mdr::InvalidInput naming key `layer` when the contact outgrows the range, `material.eta` for a jump of the
 /// load in contact against a dashpot.
 IndentationResult run_layer_regrowing(const ContactCase& contact_case, double largest_radius,
-                                      const ProgressObserver& progress);
+                                      const ProgressObserver& progress, const StepObservers& observers = {});
 
 }  // namespace mdr::drivers

@@ -135,16 +135,13 @@ std::size_t sweep_size(const std::vector<SweepAxis>& axes) {
 
 namespace {
 
-// Thrown from a run's progress report when the sweep is being stopped and the run takes no step observers (a
-// [layer]'s, drivers::takes_step_observers): it then ends at its next hundredth instead of its next step.
-struct SweepStopped {};
-
 // Ends a run of the sweep when the sweep is being stopped (interrupted or failed), checked at every step.
 class StopWhenAsked : public drivers::StepObserver {
 public:
     explicit StopWhenAsked(const std::atomic<bool>& stop) : stop_(stop) {}
     void observe(const drivers::StepState&) override {}
     bool stop(const drivers::StepState&) override { return stop_.load(std::memory_order_relaxed); }
+    bool needs_one_run() const override { return false; }  // a [layer] run then need not be run twice
 
 private:
     const std::atomic<bool>& stop_;
@@ -235,20 +232,13 @@ std::vector<SweepRow> run_sweep_points(const CaseTemplate& model, const std::vec
         [&](std::size_t n, unsigned, const std::atomic<bool>& stop) {
             SweepRow& row = rows[order[n]];
             StopWhenAsked stop_observer(stop);
-            const drivers::ProgressObserver stop_report = [&stop](double) {
-                if (stop.load(std::memory_order_relaxed)) throw SweepStopped{};
-            };
             try {
                 const auto contact_case = case_at(model, keys, row.point);
                 const auto start = std::chrono::steady_clock::now();
-                const auto result = drivers::takes_step_observers(contact_case)
-                                        ? drivers::run_case(contact_case, {}, {&stop_observer})
-                                        : drivers::run_case(contact_case, stop_report);
+                const auto result = drivers::run_case(contact_case, {}, {&stop_observer});
                 if (result.stopped) return;  // interrupted: the row stays empty, the sweep is abandoned
                 const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 row.summary = summarize(contact_case, result, wall);
-            } catch (const SweepStopped&) {
-                return;  // interrupted, as above
             } catch (const std::exception& error) {
                 row.error = error.what();
             }

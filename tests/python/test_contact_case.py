@@ -327,8 +327,6 @@ def test_observers_with_a_case_file_and_bad_observers(tmp_path):
     for bad in (len, [1], "abc"):
         with pytest.raises(TypeError, match="observers"):
             mdr.run(displacement_case(), observers=bad)
-    with pytest.raises(mdr.InvalidInput, match="^layer = .*step observers"):  # drivers::run_layer_indentation
-        mdr.run(CASE_FILES["layer"][1](), observers=[steps.append])
 
 
 # --- bad input ----------------------------------------------------------------------------------------------------
@@ -467,11 +465,6 @@ def test_a_converted_material_pickle_of_another_version_is_refused_naming_the_ru
     copy = mdr.ConvertedMaterial.__new__(mdr.ConvertedMaterial)
     with pytest.raises(ValueError, match="10 fields, this mdr .* reads 11: a pickle is read by the version of mdr"):
         copy.__setstate__(state[:10])  # a pickle written before the conversion's times were kept
-
-
-def test_a_layer_refuses_observers_naming_mdr_runs_own():
-    with pytest.raises(mdr.InvalidInput, match="mdr.run's observers"):
-        mdr.run(CASE_FILES["layer"][1](), observers=[lambda step: None])
 
 
 @pytest.mark.parametrize("make", [

@@ -128,11 +128,6 @@ IndentationResult run_indentation(const ContactCase& contact_case, const Progres
 /// one of its outcomes()), so that no NaN or infinity is ever reported as a result.
 void require_finite_result(const IndentationResult& result);
 
-/// True when run_case takes step observers for `contact_case`: the half-space's drivers do; a [layer]'s refuse them
-/// (mdr::InvalidInput, key `layer`), so that a caller that only needs to end the run early throws from its progress
-/// report instead.
-bool takes_step_observers(const ContactCase& contact_case);
-
 /// Runs any case: run_layer_indentation for a case with a layer, run_indentation otherwise, with the caller's
 /// `observers` after the standard ones; the result is checked with require_finite_result.
 IndentationResult run_case(const ContactCase& contact_case, const ProgressObserver& progress = {},

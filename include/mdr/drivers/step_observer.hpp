@@ -30,8 +30,10 @@ struct StepState {
     bool row = false;       ///< a written row of the result: the initial state, every numerics.output_every-th
                             ///< step and the last state
     bool last = false;      ///< the run's last state (its end, or an observer's stop)
-    const foundation::Foundation* foundation = nullptr;  ///< the MDR foundation after the step (never null): contact
-                                                         ///< radius, elements in contact, line loads
+    double contact_radius = 0.0;  ///< a [m] on a [layer] (its drivers have no foundation); on the half-space 0: read
+                                  ///< foundation->contact_radius()
+    const foundation::Foundation* foundation = nullptr;  ///< the MDR foundation after the step (null only on a
+                                                         ///< [layer]): contact radius, elements in contact, line loads
 };
 
 /// Watches a run. For every state, in time order (the initial one first), the driver asks each observer whether to
@@ -49,6 +51,11 @@ public:
         (void)state;
         return false;
     }
+    /// Whether it must see the states of one run only (by default yes). An observer that only asks to stop (a
+    /// sweep's) says no: a [layer]'s run of Ting's class then shows it its states at once, and the run on the cells
+    /// that replaces it where the contact grows again shows them again from the start (run_layer_indentation), instead
+    /// of running Ting's class once without observers first.
+    virtual bool needs_one_run() const { return true; }
 };
 
 /// Observers a caller attaches to a run (not owned; each must outlive the run; a null pointer is an
