@@ -10,6 +10,8 @@ incompressible material), plus a baseline 0.3 nN and white noise 0.01 nN, in um-
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 
@@ -49,3 +51,21 @@ def test_the_95_percent_intervals_cover_the_modulus_after_a_short_approach():
         error = result.standard_errors["material.G"]
         covered += abs(result.parameters["material.G"] - TRUE_G) < 1.96 * error
     assert 0.85 * seeds <= covered <= seeds
+
+
+@pytest.mark.parametrize("approach_rows", [3, 5])
+def test_an_approach_shorter_than_the_baseline_window_is_said_to_be_short_not_a_start_in_contact(approach_rows):
+    # Before: "starts in contact: no approach out of contact is recorded", untrue for a record whose depth moves
+    # from -0.2 um. The flag now counts the rows before the contact estimate and the window's rows past it.
+    curve = hertz_curve(approach_rows, seed=0)
+    result = mdr.fit(CASE, data=[curve])
+    flags = result.summary["curves"][0]["flags"]
+    assert not [flag for flag in flags if "starts in contact" in flag], flags
+    short = [flag for flag in flags if flag.startswith("short approach: only ")]
+    assert len(short) == 1, flags
+    numbers = re.match(r"short approach: only (\d+) rows before the contact estimate \(depth (\S+)\); the baseline is "
+                       r"taken from (\d+) rows, (\d+) of them past", short[0])
+    before, contact, window, past = int(numbers[1]), float(numbers[2]), int(numbers[3]), int(numbers[4])
+    assert before == int(np.argmax(curve["depth"] > contact))   # the rows shallower than the stated contact
+    assert approach_rows <= before < approach_rows + 10          # the true contact is at row approach_rows
+    assert window >= 8 and past == window - before > 0
