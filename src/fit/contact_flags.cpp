@@ -21,20 +21,24 @@ double noise_equivalent_depth(const Curve& curve) {
     return std::pow(curve.force_noise / curve.onset_amplitude, 1.0 / curve.onset_exponent);
 }
 
-// Whether the depth moves across the rows before contact: the median depth of their last min_approach_rows rows
-// lies deeper than that of their first by more than rest_depth_deviations depth-noise deviations. Rows at rest (a
-// pause, the JPK relaxations) move by their noise only; a short approach moves although too few of its rows lie past
-// the median by the onset's noise-equivalent depth for approach_rows to count min_approach_rows of them.
+// How far a row before contact may lie from rows at rest and still be taken as at rest: rest_depth_deviations
+// depth-noise deviations, and at least the onset's noise-equivalent depth (within which the contact estimate cannot
+// tell contact from rest).
+double rest_tolerance(const Curve& curve) {
+    return std::max(rest_depth_deviations * curve.depth_noise, noise_equivalent_depth(curve));
+}
+
+// Whether the depth moves from the start of the rows before contact: the median depth of the second half of their
+// first min_approach_rows rows lies deeper than that of the first half by more than rest_tolerance. A record at rest
+// (a pause, the JPK relaxations) starts with rows at one depth within their noise; a short approach moves from its
+// first row on, although too few of its rows lie past their median for approach_rows to count min_approach_rows.
 bool depth_moves_before_contact(const Curve& curve) {
-    const std::size_t rows = std::min(curve.baseline_rows, curve.depth.size());
-    const std::size_t span = std::min(rows, min_approach_rows);
-    if (span == 0) return false;
-    const auto median_of = [&](std::size_t first) {
-        std::vector<double> depths(curve.depth.begin() + static_cast<std::ptrdiff_t>(first),
-                                   curve.depth.begin() + static_cast<std::ptrdiff_t>(first + span));
-        return median(depths);
-    };
-    return median_of(rows - span) - median_of(0) > rest_depth_deviations * curve.depth_noise;
+    const auto span =
+        static_cast<std::ptrdiff_t>(std::min({curve.baseline_rows, curve.depth.size(), min_approach_rows}));
+    if (span < 2) return false;
+    std::vector<double> first(curve.depth.begin(), curve.depth.begin() + span / 2);
+    std::vector<double> second(curve.depth.begin() + span / 2, curve.depth.begin() + span);
+    return median(second) - median(first) > rest_tolerance(curve);
 }
 
 // The flag of a record with rows before contact but fewer than min_approach_rows approach rows: a short approach
@@ -51,9 +55,9 @@ std::string few_approach_rows_flag(const Curve& curve, std::size_t approach) {
                                                                              : 0;
         return fmt::format(
             "short approach: only {} rows before the contact estimate (depth {:.6g}); the baseline is taken from {} "
-            "rows, {} of them past the contact estimate (in contact), and {} of them lie deeper than their median depth beyond the noise ({} "
-            "tell a recorded approach from a start in contact): the baseline rests on few rows and its error is "
-            "large (baseline_error)",
+            "rows, {} of them past the contact estimate (in contact), and {} of them lie deeper than their median "
+            "depth beyond the noise ({} tell a recorded approach from a start in contact): the baseline rests on few "
+            "rows and its error is large (baseline_error)",
             first_in_contact, curve.contact_depth, curve.baseline_rows, in_window, approach, min_approach_rows);
     }
     return fmt::format(
@@ -176,8 +180,7 @@ std::size_t approach_rows(const Curve& curve) {
     if (rows == 0) return 0;
     std::vector<double> depths(curve.depth.begin(), curve.depth.begin() + rows);
     std::nth_element(depths.begin(), depths.begin() + rows / 2, depths.end());
-    const double rest = depths[static_cast<std::size_t>(rows / 2)] +
-                        std::max(rest_depth_deviations * curve.depth_noise, noise_equivalent_depth(curve));
+    const double rest = depths[static_cast<std::size_t>(rows / 2)] + rest_tolerance(curve);
     return static_cast<std::size_t>(
         std::count_if(curve.depth.begin(), curve.depth.begin() + rows, [&](double depth) { return depth > rest; }));
 }

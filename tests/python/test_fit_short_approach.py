@@ -69,3 +69,24 @@ def test_an_approach_shorter_than_the_baseline_window_is_said_to_be_short_not_a_
     assert before == int(np.argmax(curve["depth"] > contact))   # the rows shallower than the stated contact
     assert approach_rows <= before < approach_rows + 10          # the true contact is at row approach_rows
     assert window >= 8 and past == window - before > 0
+
+
+def tilted_hertz_curve(approach_rows: int, seed: int, tilt: float = 0.5) -> dict:
+    """hertz_curve on a baseline tilted by `tilt` nN/s: 0.5 nN over the 1 s of contact, 50 noise deviations."""
+    curve = hertz_curve(approach_rows, seed)
+    return {**curve, "force": curve["force"] + tilt * curve["time"]}
+
+
+def test_the_95_percent_intervals_cover_the_modulus_over_a_line_baseline_from_a_short_approach():
+    # A line through 30 rows before contact (0.03 s) is extrapolated over the 1 s of contact: its slope's error,
+    # sigma / sqrt(sum (t - mean t)^2) = 0.2 nN/s, moves the force by 0.2 nN (20 noise deviations) at the end. Before,
+    # only the line's value error at the contact entered the covariance: 2 of 60 seeds covered G. Now the level's
+    # and the slope's errors both do.
+    case = {**CASE, "fit": {**CASE["fit"], "baseline": "line"}}
+    seeds = 100
+    covered = 0
+    for seed in range(seeds):
+        result = mdr.fit(case, data=[tilted_hertz_curve(30, seed)])
+        error = result.standard_errors["material.G"]
+        covered += abs(result.parameters["material.G"] - TRUE_G) < 1.96 * error
+    assert 0.85 * seeds <= covered <= seeds
