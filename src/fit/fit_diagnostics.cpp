@@ -357,6 +357,13 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
         const HeldBaselineErrors errors = held_baseline_errors(problem.settings, problem.curves[c]);
         if (!(errors.level > 0.0)) continue;
         result.curves[c].baseline_error = held_baseline_error(problem.settings, problem.curves[c]);
+        if (result.curves[c].fitted != Fitted::force) {  // the baseline moves the force that drives the model
+            result.curves[c].flags.push_back(fmt::format(
+                "the baseline's error {:.3g} (from the rows before contact) is not included in the errors: the curve "
+                "is fitted in depth, driven by its force less the baseline, and that is not propagated",
+                result.curves[c].baseline_error));
+            continue;
+        }
         const std::array<double, 2> part_errors{errors.level, errors.slope};
         for (Eigen::Index part = 0; part < 2; ++part) {
             const Eigen::VectorXd shift = pseudo_inverse * baseline_sums[c].col(part);
