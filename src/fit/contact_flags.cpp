@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "mdr/error.hpp"
+#include "median.hpp"
 
 namespace mdr::fit {
 namespace {
@@ -17,6 +19,57 @@ namespace {
 double noise_equivalent_depth(const Curve& curve) {
     if (!(curve.onset_amplitude > 0.0 && curve.onset_exponent > 0.0 && curve.force_noise > 0.0)) return 0.0;
     return std::pow(curve.force_noise / curve.onset_amplitude, 1.0 / curve.onset_exponent);
+}
+
+// How far a row before contact may lie from rows at rest and still be taken as at rest: rest_depth_deviations
+// depth-noise deviations, and at least the onset's noise-equivalent depth (within which the contact estimate cannot
+// tell contact from rest).
+double rest_tolerance(const Curve& curve) {
+    return std::max(rest_depth_deviations * curve.depth_noise, noise_equivalent_depth(curve));
+}
+
+// Whether the depth moves from the start of the rows before contact: the median depth of the second half of their
+// first min_approach_rows rows lies deeper than that of the first half by more than rest_tolerance. A record at rest
+// (a pause, the JPK relaxations) starts with rows at one depth within their noise; a short approach moves from its
+// first row on, although too few of its rows lie past their median for approach_rows to count min_approach_rows.
+bool depth_moves_before_contact(const Curve& curve) {
+    const auto span =
+        static_cast<std::ptrdiff_t>(std::min({curve.baseline_rows, curve.depth.size(), min_approach_rows}));
+    if (span < 2) return false;
+    std::vector<double> first(curve.depth.begin(), curve.depth.begin() + span / 2);
+    std::vector<double> second(curve.depth.begin() + span / 2, curve.depth.begin() + span);
+    return median(second) - median(first) > rest_tolerance(curve);
+}
+
+// The flag of a record with rows before contact but fewer than min_approach_rows approach rows: a short approach
+// (the depth moves: the rows before the contact estimate are counted, and those of the baseline's window that lie
+// past it, which a window of at least 8 rows takes in), or a start in contact (rows at rest, then the force rises as
+// soon as the depth moves).
+std::string few_approach_rows_flag(const Curve& curve, std::size_t approach) {
+    if (depth_moves_before_contact(curve)) {
+        const auto first_in_contact = static_cast<std::size_t>(
+            std::find_if(curve.depth.begin(), curve.depth.end(),
+                         [&](double depth) { return depth > curve.contact_depth; }) -
+            curve.depth.begin());
+        const std::size_t in_window = first_in_contact < curve.baseline_rows ? curve.baseline_rows - first_in_contact
+                                                                             : 0;
+        return fmt::format(
+            "short approach: only {} rows before the contact estimate (depth {:.6g}); the baseline is taken from {} "
+            "rows, {} of them past the contact estimate (in contact), and {} of them lie deeper than their median "
+            "depth beyond the noise ({} tell a recorded approach from a start in contact): the baseline rests on few "
+            "rows and its error is large (baseline_error)",
+            first_in_contact, curve.contact_depth, curve.baseline_rows, in_window, approach, min_approach_rows);
+    }
+    return fmt::format(
+        "starts in contact: no approach out of contact is recorded (of the {} rows before the contact, {} lie "
+        "deeper than their median depth beyond the noise; {} needed): the force rises as soon as the depth "
+        "moves, {}",
+        curve.baseline_rows, approach, min_approach_rows,
+        curve.preloaded ? "modelled as a relaxed preload (start = \"preloaded\": the rows at rest hold the "
+                          "baseline plus the preload's force)"
+                        : "and the model takes the rows before contact as unloaded (no preload at the "
+                          "record's start; a preload's force would be taken for baseline; start = "
+                          "\"preloaded\" models one)");
 }
 
 // A preloaded curve's preload depth d_0 (its contact at or before its first row by design) against its bounds.
@@ -127,8 +180,7 @@ std::size_t approach_rows(const Curve& curve) {
     if (rows == 0) return 0;
     std::vector<double> depths(curve.depth.begin(), curve.depth.begin() + rows);
     std::nth_element(depths.begin(), depths.begin() + rows / 2, depths.end());
-    const double rest = depths[static_cast<std::size_t>(rows / 2)] +
-                        std::max(rest_depth_deviations * curve.depth_noise, noise_equivalent_depth(curve));
+    const double rest = depths[static_cast<std::size_t>(rows / 2)] + rest_tolerance(curve);
     return static_cast<std::size_t>(
         std::count_if(curve.depth.begin(), curve.depth.begin() + rows, [&](double depth) { return depth > rest; }));
 }
@@ -149,16 +201,7 @@ void flag_contact_and_baseline(const FitProblem& problem, FitResult& result) {
         }
         const std::size_t approach = approach_rows(curve);
         if (curve.baseline_rows > 0 && approach < min_approach_rows) {
-            fitted.flags.push_back(fmt::format(
-                "starts in contact: no approach out of contact is recorded (of the {} rows before the contact, {} lie "
-                "deeper than their median depth beyond the noise; {} needed): the force rises as soon as the depth "
-                "moves, {}",
-                curve.baseline_rows, approach, min_approach_rows,
-                curve.preloaded ? "modelled as a relaxed preload (start = \"preloaded\": the rows at rest hold the "
-                                  "baseline plus the preload's force)"
-                                : "and the model takes the rows before contact as unloaded (no preload at the "
-                                  "record's start; a preload's force would be taken for baseline; start = "
-                                  "\"preloaded\" models one)"));
+            fitted.flags.push_back(few_approach_rows_flag(curve, approach));
         }
         flag_contact(problem, curve, fitted);
         flag_baseline(problem, curve, fitted);

@@ -151,14 +151,15 @@ std::vector<std::array<double, 2>> driving_history(const Curve& data, bool force
 // the rebound data's entries) and gathers the summary of the weighted Jacobian and residuals at the optimum, one
 // curve at a time: no N x p copy of the Jacobian (docs/performance.md, "Memory of a fit"). A curve's errors are
 // taken as AR(1) with coefficient phi (error_correlation) within the curve; rebound data as independent.
-// `baseline_sums` gets each curve's J^T dr/db (dr/db = 1 / noise on each fitted force; 0 for fitted depths).
+// `baseline_sums` gets each curve's J^T dr/db for the held baseline's level and slope (held_baseline_errors): two
+// columns, dr/d level = 1 / noise and dr/d slope = (t - mean_time) / noise on each fitted force (0 for fitted depths).
 JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
                                  const std::vector<std::unique_ptr<ReboundCost>>& rebounds,
                                  const std::vector<double>& shared, const std::vector<std::vector<double>>& nuisance,
-                                 std::size_t m, FitResult& result, std::vector<Eigen::VectorXd>& baseline_sums) {
+                                 std::size_t m, FitResult& result, std::vector<Eigen::MatrixX2d>& baseline_sums) {
     const std::size_t k = shared.size();
     JacobianSummary summary(static_cast<Eigen::Index>(k + m * costs.size()));
-    baseline_sums.assign(costs.size(), Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k + m * costs.size())));
+    baseline_sums.assign(costs.size(), Eigen::MatrixX2d::Zero(static_cast<Eigen::Index>(k + m * costs.size()), 2));
     for (std::size_t c = 0; c < costs.size(); ++c) {
         const CurveCost& cost = *costs[c];
         const CurveModel& prepared = cost.prepared();
@@ -177,6 +178,7 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
         summary.add_residuals(residuals);
         const Curve& data = problem.curves[c];
         const bool force_fitted = prepared.fitted == Fitted::force;
+        const double mean_time = held_baseline_errors(problem.settings, data).mean_time;
         const auto& measured = force_fitted ? data.force : data.depth;
         curve.name = data.name;
         curve.fitted = prepared.fitted;
@@ -219,7 +221,10 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
                                  for (std::size_t j = 0; j < m; ++j) {
                                      row[static_cast<Eigen::Index>(k + c * m + j)] = nuisance_block[r * m + j];
                                  }
-                                 if (force_fitted) baseline_sums[c] += row.transpose() / prepared.noise;
+                                 if (!force_fitted) return;
+                                 const double lever = data.time[prepared.used[begin + r]] - mean_time;
+                                 baseline_sums[c].col(0) += row.transpose() / prepared.noise;
+                                 baseline_sums[c].col(1) += row.transpose() * (lever / prepared.noise);
                              });
         }
         result.curves.push_back(std::move(curve));
@@ -298,7 +303,7 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
                           const std::vector<std::vector<double>>& nuisance, FitResult& result) {
     const std::size_t k = shared.size();
     const std::size_t m = scales.nuisance_size();
-    std::vector<Eigen::VectorXd> baseline_sums;  // per curve: J^T dr/db, dr/db = 1 / noise for each fitted force
+    std::vector<Eigen::MatrixX2d> baseline_sums;  // per curve: J^T dr/db for the baseline's level and slope
     const JacobianSummary summary =
         summarise_curves(problem, costs, rebounds, shared, nuisance, m, result, baseline_sums);
     const auto n = static_cast<double>(summary.rows());
@@ -345,14 +350,25 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
         }
     }
     Eigen::MatrixXd covariance = honest_covariance(summary, variance_scale, pseudo_inverse, costs.size(), result);
-    // A held baseline b (from the rows before contact) carries its own error sigma_b, independent of the fitted rows'
-    // noise: the least-squares estimate moves by -(J^T J)^+ J^T dr/db per unit of b, which adds sigma_b^2 s s^T.
+    // A held baseline b (from the rows before contact) carries its own error, independent of the fitted rows' noise:
+    // the least-squares estimate moves by -(J^T J)^+ J^T dr/db per unit of b, which adds sigma_b^2 s s^T for each of
+    // the baseline's independent parts (a line's level and slope about its rows' mean time, held_baseline_errors).
     for (std::size_t c = 0; c < costs.size(); ++c) {
-        const double baseline_error = held_baseline_error(problem.settings, problem.curves[c]);
-        if (!(baseline_error > 0.0)) continue;
-        result.curves[c].baseline_error = baseline_error;
-        const Eigen::VectorXd shift = pseudo_inverse * baseline_sums[c];
-        covariance += baseline_error * baseline_error * shift * shift.transpose();
+        const HeldBaselineErrors errors = held_baseline_errors(problem.settings, problem.curves[c]);
+        if (!(errors.level > 0.0)) continue;
+        result.curves[c].baseline_error = held_baseline_error(problem.settings, problem.curves[c]);
+        if (result.curves[c].fitted != Fitted::force) {  // the baseline moves the force that drives the model
+            result.curves[c].flags.push_back(fmt::format(
+                "the baseline's error {:.3g} (from the rows before contact) is not included in the errors: the curve "
+                "is fitted in depth, driven by its force less the baseline, and that is not propagated",
+                result.curves[c].baseline_error));
+            continue;
+        }
+        const std::array<double, 2> part_errors{errors.level, errors.slope};
+        for (Eigen::Index part = 0; part < 2; ++part) {
+            const Eigen::VectorXd shift = pseudo_inverse * baseline_sums[c].col(part);
+            covariance += std::pow(part_errors[static_cast<std::size_t>(part)], 2) * shift * shift.transpose();
+        }
     }
     // The intervals' quantile: Student's t with the effective points less the free parameters (s^2 is estimated).
     double effective = n;

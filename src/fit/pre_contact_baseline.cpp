@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "mdr/error.hpp"
 
@@ -22,17 +23,35 @@ double held_baseline(const FitSettings& settings, const Curve& curve) {
     return settings.baseline == BaselineMode::constant ? pre_contact_mean(curve) : curve.force_baseline;
 }
 
+namespace {
+
+// The mean time and the sum of squared deviations from it of the n rows before contact.
+std::pair<double, double> pre_contact_times(const Curve& curve, std::size_t rows) {
+    double mean_time = 0.0, spread = 0.0;
+    for (std::size_t i = 0; i < rows; ++i) mean_time += curve.time[i];
+    mean_time /= static_cast<double>(rows);
+    for (std::size_t i = 0; i < rows; ++i) spread += (curve.time[i] - mean_time) * (curve.time[i] - mean_time);
+    return {mean_time, spread};
+}
+
+}  // namespace
+
 double held_baseline_error(const FitSettings& settings, const Curve& curve) {
     const std::size_t rows = std::min(curve.baseline_rows, curve.time.size());
     if (rows == 0 || settings.baseline == BaselineMode::fixed || settings.baseline == BaselineMode::fit) return 0.0;
     const double count = static_cast<double>(rows);
     if (settings.baseline == BaselineMode::constant) return curve.force_noise / std::sqrt(count);
-    double mean_time = 0.0, spread = 0.0;
-    for (std::size_t i = 0; i < rows; ++i) mean_time += curve.time[i];
-    mean_time /= count;
-    for (std::size_t i = 0; i < rows; ++i) spread += (curve.time[i] - mean_time) * (curve.time[i] - mean_time);
+    const auto [mean_time, spread] = pre_contact_times(curve, rows);
     const double lever = spread > 0.0 ? std::pow(curve.contact_time - mean_time, 2) / spread : 0.0;
     return curve.force_noise * std::sqrt(1.0 / count + lever);
+}
+
+HeldBaselineErrors held_baseline_errors(const FitSettings& settings, const Curve& curve) {
+    const std::size_t rows = std::min(curve.baseline_rows, curve.time.size());
+    if (!curve.tilt_taken_off || rows == 0) return {held_baseline_error(settings, curve), 0.0, curve.contact_time};
+    const auto [mean_time, spread] = pre_contact_times(curve, rows);
+    return {curve.force_noise / std::sqrt(static_cast<double>(rows)),
+            spread > 0.0 ? curve.force_noise / std::sqrt(spread) : 0.0, mean_time};
 }
 
 std::optional<FitProblem> with_pre_contact_baselines(const FitProblem& problem) {
@@ -55,6 +74,7 @@ std::optional<FitProblem> with_pre_contact_baselines(const FitProblem& problem) 
         for (std::size_t i = 0; i < curve.force.size(); ++i) {
             curve.force[i] -= curve.baseline_slope * (curve.time[i] - curve.contact_time);
         }
+        curve.tilt_taken_off = true;
     }
     return fixed;
 }

@@ -25,6 +25,17 @@ double held_baseline(const FitSettings& settings, const Curve& curve);
 /// fitted baseline has its own error) and for a curve without rows before contact.
 double held_baseline_error(const FitSettings& settings, const Curve& curve);
 
+/// A held baseline's error as two independent parts, b(t) = level + slope (t - mean_time) with mean_time the mean
+/// time of the n rows before contact: for a line whose tilt was taken off the force (Curve::tilt_taken_off) the
+/// least-squares errors sigma / sqrt(n) of its level and sigma / sqrt(sum (t - mean t)^2) of its slope, which are
+/// uncorrelated about the mean time; otherwise the constant held_baseline_error as the level and no slope.
+struct HeldBaselineErrors {
+    double level = 0.0;      ///< the standard error of the baseline's value at mean_time [force]
+    double slope = 0.0;      ///< the standard error of its slope [force / time]
+    double mean_time = 0.0;  ///< the mean time of the rows before contact [time]
+};
+HeldBaselineErrors held_baseline_errors(const FitSettings& settings, const Curve& curve);
+
 /// Checks that every curve has rows before contact where the baseline comes from them (BaselineMode::constant or
 /// line): throws mdr::InvalidInput (key `fit.baseline`) for a curve without (it starts in contact, or has no
 /// contact estimate): its baseline cannot come from the data. For BaselineMode::line returns `problem` with each

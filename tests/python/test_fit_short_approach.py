@@ -10,6 +10,8 @@ incompressible material), plus a baseline 0.3 nN and white noise 0.01 nN, in um-
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 
@@ -46,6 +48,45 @@ def test_the_95_percent_intervals_cover_the_modulus_after_a_short_approach():
     covered = 0
     for seed in range(seeds):
         result = mdr.fit(CASE, data=[hertz_curve(30, seed)])
+        error = result.standard_errors["material.G"]
+        covered += abs(result.parameters["material.G"] - TRUE_G) < 1.96 * error
+    assert 0.85 * seeds <= covered <= seeds
+
+
+@pytest.mark.parametrize("approach_rows", [3, 5])
+def test_an_approach_shorter_than_the_baseline_window_is_said_to_be_short_not_a_start_in_contact(approach_rows):
+    # Before: "starts in contact: no approach out of contact is recorded", untrue for a record whose depth moves
+    # from -0.2 um. The flag now counts the rows before the contact estimate and the window's rows past it.
+    curve = hertz_curve(approach_rows, seed=0)
+    result = mdr.fit(CASE, data=[curve])
+    flags = result.summary["curves"][0]["flags"]
+    assert not [flag for flag in flags if "starts in contact" in flag], flags
+    short = [flag for flag in flags if flag.startswith("short approach: only ")]
+    assert len(short) == 1, flags
+    numbers = re.match(r"short approach: only (\d+) rows before the contact estimate \(depth (\S+)\); the baseline is "
+                       r"taken from (\d+) rows, (\d+) of them past", short[0])
+    before, contact, window, past = int(numbers[1]), float(numbers[2]), int(numbers[3]), int(numbers[4])
+    assert before == int(np.argmax(curve["depth"] > contact))   # the rows shallower than the stated contact
+    assert approach_rows <= before < approach_rows + 10          # the true contact is at row approach_rows
+    assert window >= 8 and past == window - before > 0
+
+
+def tilted_hertz_curve(approach_rows: int, seed: int, tilt: float = 0.5) -> dict:
+    """hertz_curve on a baseline tilted by `tilt` nN/s: 0.5 nN over the 1 s of contact, 50 noise deviations."""
+    curve = hertz_curve(approach_rows, seed)
+    return {**curve, "force": curve["force"] + tilt * curve["time"]}
+
+
+def test_the_95_percent_intervals_cover_the_modulus_over_a_line_baseline_from_a_short_approach():
+    # A line through 30 rows before contact (0.03 s) is extrapolated over the 1 s of contact: its slope's error,
+    # sigma / sqrt(sum (t - mean t)^2) = 0.2 nN/s, moves the force by 0.2 nN (20 noise deviations) at the end. Before,
+    # only the line's value error at the contact entered the covariance: 2 of 60 seeds covered G. Now the level's
+    # and the slope's errors both do.
+    case = {**CASE, "fit": {**CASE["fit"], "baseline": "line"}}
+    seeds = 100
+    covered = 0
+    for seed in range(seeds):
+        result = mdr.fit(case, data=[tilted_hertz_curve(30, seed)])
         error = result.standard_errors["material.G"]
         covered += abs(result.parameters["material.G"] - TRUE_G) < 1.96 * error
     assert 0.85 * seeds <= covered <= seeds

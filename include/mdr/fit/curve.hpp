@@ -94,6 +94,9 @@ struct Curve {
     std::size_t baseline_rows = 0;
     double baseline_slope = 0.0;   ///< slope of the baseline line in time [N/s] (0 when unknown)
     double contact_time = 0.0;     ///< the time the depth passes contact_depth [s]: force_baseline's time
+    /// The line baseline_slope was taken off force (BaselineMode::line, with_pre_contact_baselines): the errors of
+    /// the line's value and slope both enter the fit's covariance.
+    bool tilt_taken_off = false;
     /// What this curve fits, when it differs from the fit's setting (FitSettings::fitted): a creep curve (depth
     /// fitted) beside a relaxation or an indentation curve (force fitted), one material for both.
     std::optional<Fitted> fitted{};

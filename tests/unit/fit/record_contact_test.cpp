@@ -96,6 +96,28 @@ TEST(RecordContact, LineBaselineFollowsATiltedBaseline) {
     EXPECT_TRUE(has_flag(constant.curves[0], "baseline = \"line\" follows the tilt"));
 }
 
+// A line baseline's reported error is the least-squares standard error of the line's value at the contact time t_c,
+// sigma^2 [1, t_c] (X^T X)^-1 [1, t_c]^T with X = [1, t_i] over the n rows before contact (the normal equations
+// solved here directly, not in the centred form the fit uses).
+TEST(RecordContact, LineBaselineErrorIsTheLeastSquaresValueErrorAtTheContact) {
+    const Curve curve = hertz_record({.tilt = 40.0 * sigma / 2.5});
+    FitProblem problem = hertz_problem(curve);
+    problem.settings.baseline = BaselineMode::line;
+    const FitResult line = fit(problem);
+    double n = 0.0, sum_t = 0.0, sum_tt = 0.0;
+    for (std::size_t i = 0; i < curve.baseline_rows; ++i) {
+        n += 1.0;
+        sum_t += curve.time[i];
+        sum_tt += curve.time[i] * curve.time[i];
+    }
+    const double determinant = n * sum_tt - sum_t * sum_t;
+    const double t_c = curve.contact_time;
+    const double variance = curve.force_noise * curve.force_noise *
+                            (sum_tt - 2.0 * t_c * sum_t + t_c * t_c * n) / determinant;  // [1 t_c] (X^T X)^-1 [1 t_c]^T
+    ASSERT_GT(curve.baseline_rows, 8u);
+    EXPECT_NEAR(line.curves[0].baseline_error, std::sqrt(variance), 1e-9 * std::sqrt(variance));
+}
+
 // Without a tilt the constant baseline is the mean of the rows before contact: b0 within a few sigma / sqrt(rows).
 TEST(RecordContact, ConstantBaselineIsThePreContactMean) {
     FitProblem problem = hertz_problem(hertz_record({}));
