@@ -50,50 +50,49 @@ constexpr double smallest_scale = 1e-150;        // a composition factor below: 
 
 double half_width() { return 1.2 * std::sqrt(radius * peak_overlap); }
 
-// Whether every element i < count keeps a compressive end stress, sum_k weight_k h^_k,i - G_inf g_i + common >= 0
-// (h^ branch-major, `stride` apart; eq. 20). Passes of restrict pointers and an integer count, so that GCC 12
-// vectorises them (a floating-point min reduction it leaves scalar).
-__attribute__((noinline, target_clones("avx2", "default"))) bool all_compressive(
-    std::size_t count, std::size_t branches, std::size_t stride, double g_inf, double common,
-    const double* __restrict g, const double* __restrict hat, const double* __restrict weight,
-    double* __restrict scratch) {
-    for (std::size_t i = 0; i < count; ++i) scratch[i] = common - g_inf * g[i];
+// Whether no element i < count enters or leaves contact over the step: one in contact (flag 1) keeps a
+// compressive end stress, common - G_inf g_i + sum_k weight_k h^_k,i >= 0 (eq. 20), a free one stays clear of the
+// indenter, g_i + row_0 w^_i + sum_k row_(k+1) h^_k,i >= depth (eq. 14). w^, h^ branch-major, `stride` apart.
+// Passes of restrict pointers and an integer count, so that GCC 12 vectorises them (a floating-point min reduction
+// it leaves scalar).
+__attribute__((noinline, target_clones("avx2", "default"))) bool no_event(
+    std::size_t count, std::size_t branches, std::size_t stride, double g_inf, double common, double depth,
+    const double* __restrict g, const double* __restrict flags, const double* __restrict w,
+    const double* __restrict hat, const double* __restrict weight, const double* __restrict row,
+    double* __restrict contact_part, double* __restrict free_part) {
+    for (std::size_t i = 0; i < count; ++i) {
+        contact_part[i] = common - g_inf * g[i];
+        free_part[i] = g[i] - depth + row[0] * w[i];
+    }
     for (std::size_t k = 0; k < branches; ++k) {
         const double* __restrict h = hat + k * stride;
-        const double factor = weight[k];
-        for (std::size_t i = 0; i < count; ++i) scratch[i] += factor * h[i];
+        const double contact_factor = weight[k], free_factor = row[k + 1];
+        for (std::size_t i = 0; i < count; ++i) {
+            contact_part[i] += contact_factor * h[i];
+            free_part[i] += free_factor * h[i];
+        }
     }
-    std::int64_t tensile = 0;
-    for (std::size_t i = 0; i < count; ++i) tensile += scratch[i] >= 0.0 ? 0 : 1;
-    return tensile == 0;
+    std::int64_t events = 0;
+    for (std::size_t i = 0; i < count; ++i) events += (flags[i] != 0.0 ? contact_part[i] : free_part[i]) >= 0.0 ? 0 : 1;
+    return events == 0;
 }
 
-// One contact's normal problem stepped lazily while every touched element is in contact, else by the Foundation.
-// The state is the Foundation's (Foundation::state_size); in the lazy form its memories hold h^ and its w, sigma
-// are stale until materialise().
+// One contact's normal problem stepped lazily while no element enters or leaves contact, else by the Foundation.
+// The state is the Foundation's (Foundation::state_size). In the lazy form an element in contact has h = A h^ + B
+// (its memories in the state are h^, its w and sigma stale) and a free one (w, h) = P (w^, h^): the force-free
+// update (Foundation::begin_step and plain_step: dw = -(G_inf w + sum_k G_k E_k h_k + [eta > 0] (G_inf w +
+// sum_k G_k h_k)) / K_free, h_k <- E_k h_k + B_k dw) is the same linear map F for every free element, and P the
+// product of those since the last materialisation.
 class LazyNormalContact {
 public:
-    LazyNormalContact(const Rheology& material, std::size_t count, double spacing)
-        : material_(material),
-          foundation_(material, *mdr::profile::make_sphere(radius), spacing, count),
-          coefficients_(mdr::foundation::step_coefficients(material, time_step)),
-          state_(Foundation::state_size(count, material.terms().size()), 0.0),
-          scale_(material.terms().size(), 1.0),
-          shift_(material.terms().size(), 0.0),
-          hat_sum_(material.terms().size(), 0.0),
-          hat_floor_(material.terms().size(), 0.0),
-          weight_(material.terms().size(), 0.0),
-          scratch_(count, 0.0),
-          deepest_(mdr::foundation::deepest_depth(*mdr::profile::make_sphere(radius), spacing * double(count))) {
-        foundation_.reserve_events();
-    }
+    LazyNormalContact(const Rheology& material, std::size_t count, double spacing);
 
     // One step to `overlap`; returns the normal force.
     __attribute__((noinline)) double step_lazy(double overlap) {
         if (!try_lazy(overlap)) step_eager(overlap);
         return state_[1];
     }
-    // Brings w, sigma and h up to date in the state (h = A h^ + B) and restarts the composition.
+    // Brings w, sigma and h up to date in the state and restarts the composition.
     void materialise();
     std::span<const double> state() const { return state_; }
     std::size_t lazy_steps = 0, eager_steps = 0, element_passes = 0;
@@ -103,6 +102,7 @@ private:
     void step_eager(double overlap);
     void restart_composition();
     std::size_t active() const { return static_cast<std::size_t>(state_[2]); }
+    std::size_t order() const { return scale_.size() + 1; }  // (w, h_1 .. h_M)
 
     Rheology material_;
     Foundation foundation_;
@@ -111,22 +111,68 @@ private:
     std::vector<double> scale_, shift_;  // A_k, B_k
     std::vector<double> hat_sum_;        // S_k = sum over the elements in contact of h^_k,i
     std::vector<double> hat_floor_;      // min over the elements in contact of h^_k,i
-    std::vector<double> weight_, scratch_;
-    double profile_sum_ = 0.0;  // sum over the elements in contact of g_i
-    double outermost_ = 0.0;    // max over the elements in contact of g_i
-    double contacts_ = 0.0;     // elements in contact; the lazy form needs all touched ones in contact
-    double rate_ = 0.0;         // dw/dt of the last lazy step (its dashpot's share of sigma)
-    bool all_in_contact_ = true;
+    std::vector<double> weight_;         // G_k A_k of the step being taken
+    std::vector<double> free_step_;      // F, row-major (M + 1)^2
+    std::vector<double> free_map_;       // P, row-major
+    std::vector<double> next_map_;       // F P of the step being taken
+    std::vector<double> free_floor_, free_ceiling_;  // min and max over the free elements of (w^, h^_k)
+    std::vector<double> contact_part_, free_part_, column_;
+    double profile_sum_ = 0.0;   // sum over the elements in contact of g_i
+    double outermost_ = 0.0;     // max over the elements in contact of g_i
+    double innermost_free_ = 0.0;  // min over the free elements of g_i
+    double contacts_ = 0.0;      // elements in contact
+    double free_ = 0.0;          // touched elements out of contact
+    double rate_ = 0.0;          // dw/dt of the last lazy step (its dashpot's share of sigma)
     bool stale_ = false;
     double deepest_;
 };
 
-bool LazyNormalContact::try_lazy(double overlap) {
-    const std::size_t n = foundation_.size(), touched = active();
+LazyNormalContact::LazyNormalContact(const Rheology& material, std::size_t count, double spacing)
+    : material_(material),
+      foundation_(material, *mdr::profile::make_sphere(radius), spacing, count),
+      coefficients_(mdr::foundation::step_coefficients(material, time_step)),
+      state_(Foundation::state_size(count, material.terms().size()), 0.0),
+      scale_(material.terms().size(), 1.0),
+      shift_(material.terms().size(), 0.0),
+      hat_sum_(material.terms().size(), 0.0),
+      hat_floor_(material.terms().size(), 0.0),
+      weight_(material.terms().size(), 0.0),
+      free_floor_(material.terms().size() + 1, 0.0),
+      free_ceiling_(material.terms().size() + 1, 0.0),
+      contact_part_(count, 0.0),
+      free_part_(count, 0.0),
+      column_(material.terms().size() + 1, 0.0),
+      deepest_(mdr::foundation::deepest_depth(*mdr::profile::make_sphere(radius), spacing * double(count))) {
+    foundation_.reserve_events();
+    // F = D + u c^T: D = diag(1, E_k), u = (1, B_k), c the force-free increment's coefficients (see the class).
+    const auto& terms = material.terms();
+    const std::size_t m = order();
+    const double g_inf = material.equilibrium_modulus(), eta = material.viscosity();
+    const double dashpot = eta > 0.0 ? 1.0 : 0.0;
+    const double free_stiffness = coefficients_.stiffness + eta / coefficients_.time_step;  // G_inf + sum G_k B_k
+                                                                                          // + 2 eta / dt
+    std::vector<double> diagonal(m, 1.0), gain(m, 1.0), increment(m, 0.0);
+    increment[0] = -g_inf * (1.0 + dashpot) / free_stiffness;
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+        diagonal[k + 1] = coefficients_.decay[k];
+        gain[k + 1] = coefficients_.gain[k];
+        increment[k + 1] = -terms[k].modulus * (coefficients_.decay[k] + dashpot) / free_stiffness;
+    }
+    free_step_.assign(m * m, 0.0);
+    for (std::size_t r = 0; r < m; ++r) {
+        for (std::size_t j = 0; j < m; ++j) free_step_[r * m + j] = (r == j ? diagonal[r] : 0.0) + gain[r] * increment[j];
+    }
+    free_map_.assign(m * m, 0.0);
+    next_map_.assign(m * m, 0.0);
+    for (std::size_t r = 0; r < m; ++r) free_map_[r * m + r] = 1.0;
+}
+
+__attribute__((noinline)) bool LazyNormalContact::try_lazy(double overlap) {
+    const std::size_t n = foundation_.size(), touched = active(), m = order();
     const auto g = foundation_.equivalent_profile();
-    // Not lazy: a touched element free, a new element reached (Foundation::reach: g_i < d), the end of the
-    // foundation reached (the Foundation throws).
-    if (!all_in_contact_ || (touched < n && g[touched] < overlap) || overlap > deepest_) return false;
+    // Not lazy: a new element reached (Foundation::reach: g_i < d), the end of the foundation reached (the
+    // Foundation throws).
+    if ((touched < n && g[touched] < overlap) || overlap > deepest_) return false;
     const auto& terms = material_.terms();
     const std::size_t branches = terms.size();
     const double depth = state_[0], increment = overlap - depth;
@@ -141,18 +187,42 @@ bool LazyNormalContact::try_lazy(double overlap) {
         weight_[k] = terms[k].modulus * scale;
         smallest_scale_now = std::min(smallest_scale_now, scale);
     }
-    // The exit rule (eq. 20) on every element in contact: a lower bound of their end stresses first (G_k A_k > 0:
-    // each sum_k G_k A_k h^_k,i - G_inf g_i is at least sum_k G_k A_k min_i h^_k,i - G_inf max_i g_i), O(M); where
-    // it is negative, each element's. Both exact: the bound only decides whether the pass is needed.
-    double lower = common - material_.equilibrium_modulus() * outermost_;
-    for (std::size_t k = 0; k < branches; ++k) lower += weight_[k] * hat_floor_[k];
-    if (touched > 0 && !(lower >= 0.0)) {
+    double largest_map = 0.0;
+    if (free_ > 0.0) {  // P <- F P
+        for (std::size_t r = 0; r < m; ++r) {
+            for (std::size_t j = 0; j < m; ++j) {
+                double entry = 0.0;
+                for (std::size_t l = 0; l < m; ++l) entry += free_step_[r * m + l] * free_map_[l * m + j];
+                next_map_[r * m + j] = entry;
+                largest_map = std::max(largest_map, std::abs(entry));
+            }
+        }
+    }
+    // The exit rule (eq. 20) on the elements in contact and the entry rule (eq. 14) on the free ones: lower bounds
+    // first, O(M^2) (G_k A_k > 0: each element's sum_k G_k A_k h^_k,i - G_inf g_i is at least sum_k G_k A_k
+    // min_i h^_k,i - G_inf max_i g_i; likewise each free surface g_i + w_i from the extremes of w^, h^ by the signs
+    // of P's first row); where one is negative, each element's. Both exact: the bounds only decide whether the pass
+    // is needed.
+    bool certain = true;
+    if (contacts_ > 0.0) {
+        double lower = common - material_.equilibrium_modulus() * outermost_;
+        for (std::size_t k = 0; k < branches; ++k) lower += weight_[k] * hat_floor_[k];
+        certain = lower >= 0.0;
+    }
+    if (certain && free_ > 0.0) {
+        double lower = innermost_free_ - overlap;
+        for (std::size_t j = 0; j < m; ++j) {
+            lower += next_map_[j] * (next_map_[j] >= 0.0 ? free_floor_[j] : free_ceiling_[j]);
+        }
+        certain = lower >= 0.0;
+    }
+    if (!certain) {
         ++element_passes;
-        const double* hat = state_.data() + 3 + 3 * n;
-        // An exit inside the step: the Foundation splits it.
-        if (!all_compressive(touched, branches, n, material_.equilibrium_modulus(), common, g.data(), hat,
-                             weight_.data(), scratch_.data())) {
-            return false;
+        const double* w = state_.data() + 3;
+        const double* free_row = free_ > 0.0 ? next_map_.data() : free_map_.data();
+        if (!no_event(touched, branches, n, material_.equilibrium_modulus(), common, overlap, g.data(), w + 2 * n,
+                      w, w + 3 * n, weight_.data(), free_row, contact_part_.data(), free_part_.data())) {
+            return false;  // an entry or exit inside the step: the Foundation splits it
         }
     }
     double sum = contacts_ * common - material_.equilibrium_modulus() * profile_sum_;
@@ -161,59 +231,82 @@ bool LazyNormalContact::try_lazy(double overlap) {
         shift_[k] = coefficients_.decay[k] * shift_[k] + coefficients_.gain[k] * increment;
         sum += weight_[k] * hat_sum_[k];
     }
+    if (free_ > 0.0) free_map_.swap(next_map_);
     state_[0] = overlap;
     state_[1] = 2.0 * normal_stiffness_factor * foundation_.spacing() * sum;  // eq. 21, both halves
     rate_ = rate;
     stale_ = true;
     ++lazy_steps;
-    if (smallest_scale_now < smallest_scale) materialise();
+    if (smallest_scale_now < smallest_scale || (free_ > 0.0 && largest_map < smallest_scale)) materialise();
     return true;
 }
 
 void LazyNormalContact::materialise() {
     if (!stale_) return;
-    const std::size_t n = foundation_.size(), touched = active(), branches = material_.terms().size();
+    const std::size_t n = foundation_.size(), touched = active(), branches = material_.terms().size(), m = order();
     const auto g = foundation_.equivalent_profile();
     const double depth = state_[0];
     double* w = state_.data() + 3;
     double* sigma = w + n;
+    const double* flags = w + 2 * n;
     double* h = w + 3 * n;
-    for (std::size_t i = 0; i < touched; ++i) {  // all in contact (the lazy form's condition)
-        w[i] = depth - g[i];
-        sigma[i] = material_.equilibrium_modulus() * w[i] + material_.viscosity() * rate_;
-    }
-    for (std::size_t k = 0; k < branches; ++k) {
-        const double modulus = material_.terms()[k].modulus;
-        for (std::size_t i = 0; i < touched; ++i) {
-            h[k * n + i] = scale_[k] * h[k * n + i] + shift_[k];
-            sigma[i] += modulus * h[k * n + i];
+    for (std::size_t i = 0; i < touched; ++i) {
+        if (flags[i] != 0.0) {  // h = A h^ + B, w = d - g_i, sigma (eq. 16)
+            w[i] = depth - g[i];
+            sigma[i] = material_.equilibrium_modulus() * w[i] + material_.viscosity() * rate_;
+            for (std::size_t k = 0; k < branches; ++k) {
+                h[k * n + i] = scale_[k] * h[k * n + i] + shift_[k];
+                sigma[i] += material_.terms()[k].modulus * h[k * n + i];
+            }
+            continue;
         }
+        column_[0] = w[i];  // (w, h) = P (w^, h^), force-free
+        for (std::size_t k = 0; k < branches; ++k) column_[k + 1] = h[k * n + i];
+        for (std::size_t r = 0; r < m; ++r) {
+            double entry = 0.0;
+            for (std::size_t j = 0; j < m; ++j) entry += free_map_[r * m + j] * column_[j];
+            (r == 0 ? w[i] : h[(r - 1) * n + i]) = entry;
+        }
+        sigma[i] = 0.0;
     }
     restart_composition();
 }
 
 void LazyNormalContact::restart_composition() {
-    const std::size_t n = foundation_.size(), touched = active(), branches = material_.terms().size();
+    const std::size_t n = foundation_.size(), touched = active(), branches = material_.terms().size(), m = order();
     const auto g = foundation_.equivalent_profile();
-    const double* flags = state_.data() + 3 + 2 * n;
-    const double* h = state_.data() + 3 + 3 * n;
+    const double* w = state_.data() + 3;
+    const double* flags = w + 2 * n;
+    const double* h = w + 3 * n;
     std::fill(scale_.begin(), scale_.end(), 1.0);
     std::fill(shift_.begin(), shift_.end(), 0.0);
-    contacts_ = profile_sum_ = outermost_ = 0.0;
+    std::fill(free_map_.begin(), free_map_.end(), 0.0);
+    for (std::size_t r = 0; r < m; ++r) free_map_[r * m + r] = 1.0;
+    contacts_ = free_ = profile_sum_ = outermost_ = 0.0;
+    innermost_free_ = INFINITY;
+    std::fill(hat_sum_.begin(), hat_sum_.end(), 0.0);
+    std::fill(hat_floor_.begin(), hat_floor_.end(), INFINITY);
+    std::fill(free_floor_.begin(), free_floor_.end(), INFINITY);
+    std::fill(free_ceiling_.begin(), free_ceiling_.end(), -INFINITY);
     for (std::size_t i = 0; i < touched; ++i) {
-        contacts_ += flags[i];
-        profile_sum_ += flags[i] * g[i];
-        if (flags[i] != 0.0) outermost_ = std::max(outermost_, g[i]);
-    }
-    for (std::size_t k = 0; k < branches; ++k) {
-        hat_sum_[k] = 0.0;
-        hat_floor_[k] = contacts_ > 0.0 ? INFINITY : 0.0;
-        for (std::size_t i = 0; i < touched; ++i) {
-            hat_sum_[k] += flags[i] * h[k * n + i];
-            if (flags[i] != 0.0) hat_floor_[k] = std::min(hat_floor_[k], h[k * n + i]);
+        if (flags[i] != 0.0) {
+            contacts_ += 1.0;
+            profile_sum_ += g[i];
+            outermost_ = std::max(outermost_, g[i]);
+            for (std::size_t k = 0; k < branches; ++k) {
+                hat_sum_[k] += h[k * n + i];
+                hat_floor_[k] = std::min(hat_floor_[k], h[k * n + i]);
+            }
+            continue;
+        }
+        free_ += 1.0;
+        innermost_free_ = std::min(innermost_free_, g[i]);
+        for (std::size_t j = 0; j < m; ++j) {
+            const double value = j == 0 ? w[i] : h[(j - 1) * n + i];
+            free_floor_[j] = std::min(free_floor_[j], value);
+            free_ceiling_[j] = std::max(free_ceiling_[j], value);
         }
     }
-    all_in_contact_ = contacts_ == static_cast<double>(touched);
     stale_ = false;
 }
 
