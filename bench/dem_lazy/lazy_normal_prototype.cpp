@@ -197,6 +197,8 @@ public:
 
 private:
     bool try_lazy(double overlap);
+    template <class Branches>
+    bool try_lazy_with(double overlap, Branches branches);  // the branch count a constant or a number
     void step_eager(double overlap);
     void bring_up_to_date();  // w, sigma, h in the state from the composition (which then no longer holds)
     void restart_composition();
@@ -264,37 +266,48 @@ LazyNormalContact::LazyNormalContact(const Rheology& material, std::size_t count
 }
 
 __attribute__((noinline)) bool LazyNormalContact::try_lazy(double overlap) {
-    const std::size_t n = foundation_.size(), touched = active(), branches = branches_, m = branches + 1;
+    return with_branches(branches_, [&](auto branches) { return try_lazy_with(overlap, branches); });
+}
+
+template <class Branches>
+bool LazyNormalContact::try_lazy_with(double overlap, Branches branches) {
+    const std::size_t n = foundation_.size(), touched = active(), m = branches + 1;
     const double* g = foundation_.equivalent_profile().data();
     // Not lazy: a new element reached (Foundation::reach: g_i < d), the end of the foundation reached (the
     // Foundation throws).
     if ((touched < n && g[touched] < overlap) || overlap > deepest_) return false;
+    // The workspace's arrays, distinct vectors: restrict pointers, so that no store reloads them.
+    const double* __restrict decay = coefficients_.decay.data();
+    const double* __restrict gain = coefficients_.gain.data();
+    const double* __restrict moduli = moduli_.data();
+    double* __restrict weight = weight_.data();
+    double* __restrict scale = scale_.data();
+    double* __restrict shift = shift_.data();
+    const double* __restrict map = free_map_.data();
+    double* __restrict next = next_map_.data();
     const double g_inf = material_.equilibrium_modulus();
-    const double* decay = coefficients_.decay.data();
-    const double* gain = coefficients_.gain.data();
-    const double* moduli = moduli_.data();
-    double* weight = weight_.data();
     const double depth = state_[0], increment = overlap - depth;
     const double rate = increment / coefficients_.time_step;
+    const Summary summary = summary_;
     // The composed maps after this step and the stress part common to every element in contact (eq. 16).
     double common = g_inf * overlap + material_.viscosity() * rate;
     double smallest_scale_now = 1.0;
     for (std::size_t k = 0; k < branches; ++k) {
-        const double scale = decay[k] * scale_[k];
-        common += moduli[k] * (decay[k] * shift_[k] + gain[k] * increment);
-        weight[k] = moduli[k] * scale;
-        smallest_scale_now = std::min(smallest_scale_now, scale);
+        common += moduli[k] * (decay[k] * shift[k] + gain[k] * increment);
+        weight[k] = moduli[k] * decay[k] * scale[k];
+        smallest_scale_now = std::min(smallest_scale_now, decay[k] * scale[k]);
     }
-    const bool free = summary_.free > 0.0;
+    const bool free = summary.free > 0.0;
     double largest_map = 0.0;
     if (free) {  // P <- F P = D P + u (c^T P)
-        const double* map = free_map_.data();
-        double* next = next_map_.data();
+        const double* __restrict diagonal = free_diagonal_.data();
+        const double* __restrict unit_gain = free_gain_.data();
+        const double* __restrict free_increment = free_increment_.data();
         for (std::size_t j = 0; j < m; ++j) {
             double projection = 0.0;
-            for (std::size_t l = 0; l < m; ++l) projection += free_increment_[l] * map[l * m + j];
+            for (std::size_t l = 0; l < m; ++l) projection += free_increment[l] * map[l * m + j];
             for (std::size_t r = 0; r < m; ++r) {
-                next[r * m + j] = free_diagonal_[r] * map[r * m + j] + free_gain_[r] * projection;
+                next[r * m + j] = diagonal[r] * map[r * m + j] + unit_gain[r] * projection;
                 largest_map = std::max(largest_map, std::abs(next[r * m + j]));
             }
         }
@@ -304,29 +317,26 @@ __attribute__((noinline)) bool LazyNormalContact::try_lazy(double overlap) {
     // extremes of w^, h^ by the signs of P's first row); where one is negative, each element's (no_event). Both
     // exact: the bounds only decide whether the pass is needed.
     bool certain = true;
-    if (summary_.contacts > 0.0) {
-        double lower = common - g_inf * summary_.outermost;
+    if (summary.contacts > 0.0) {
+        double lower = common - g_inf * summary.outermost;
         for (std::size_t k = 0; k < branches; ++k) lower += weight[k] * hat_floor_[k];
         certain = lower >= 0.0;
     }
     if (certain && free) {
-        double lower = summary_.innermost_free - overlap;
-        for (std::size_t j = 0; j < m; ++j) {
-            lower += next_map_[j] * (next_map_[j] >= 0.0 ? free_floor_[j] : free_ceiling_[j]);
-        }
+        double lower = summary.innermost_free - overlap;
+        for (std::size_t j = 0; j < m; ++j) lower += next[j] * (next[j] >= 0.0 ? free_floor_[j] : free_ceiling_[j]);
         certain = lower >= 0.0;
     }
     if (!certain) {
         ++element_passes;
-        if (!no_event(touched, branches, elements_view(), g_inf, common, overlap, g, weight,
-                      free ? next_map_.data() : free_map_.data())) {
+        if (!no_event(touched, branches, elements_view(), g_inf, common, overlap, g, weight, free ? next : map)) {
             return false;  // an entry or exit inside the step: the Foundation splits it
         }
     }
-    double sum = summary_.contacts * common - g_inf * summary_.profile_sum;
+    double sum = summary.contacts * common - g_inf * summary.profile_sum;
     for (std::size_t k = 0; k < branches; ++k) {
-        scale_[k] *= decay[k];
-        shift_[k] = decay[k] * shift_[k] + gain[k] * increment;
+        scale[k] *= decay[k];
+        shift[k] = decay[k] * shift[k] + gain[k] * increment;
         sum += weight[k] * hat_sum_[k];
     }
     if (free) free_map_.swap(next_map_);
