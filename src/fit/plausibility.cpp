@@ -23,6 +23,9 @@ double largest_indentation(const Curve& record, const CurveFit& curve) {
     return *greatest - std::max(curve.contact_depth, *least);
 }
 
+// Where a curve's lengths get their unit: a file's from its table's units.length, mdr.fit's arrays from the case.
+constexpr const char* length_unit_key = "units.length of the curve's table; arrays are in the case's units";
+
 // The flag of a curve whose largest indentation `depth` (in the case's length unit) is implausible for the indenter
 // and the units, or nullopt: on a sphere against its radius (the tip size says the most); on every indenter against
 // the lengths of contacts (least_contact_length_m to greatest_contact_length_m), its depth and then its contact
@@ -32,8 +35,8 @@ std::optional<std::string> depth_flag(const profile::Profile& indenter, double d
         if (depth < least_sphere_indentation * *radius) {
             return fmt::format(
                 "largest indentation {:.3g} {} is below {:g} of the sphere's R = {:.4g} {}: are the data's lengths in "
-                "the case's unit (units.length of the curve's table)?",
-                depth, units.length, least_sphere_indentation, *radius, units.length);
+                "the case's unit ({})?",
+                depth, units.length, least_sphere_indentation, *radius, units.length, length_unit_key);
         }
         if (depth > *radius) {
             return fmt::format(
@@ -50,15 +53,16 @@ std::optional<std::string> depth_flag(const profile::Profile& indenter, double d
     if (outside(depth * units.length_size)) {
         return fmt::format(
             "largest indentation {:.3g} {} ({:.3g} m) is outside {}: are the data's lengths in the case's unit "
-            "(units.length of the curve's table)?",
-            depth, units.length, depth * units.length_size, range);
+            "({})?",
+            depth, units.length, depth * units.length_size, range, length_unit_key);
     }
     const double contact_radius = indenter.contact_radius(depth);
     if (outside(contact_radius * units.length_size)) {
         return fmt::format(
             "the contact radius {:.3g} {} ({:.3g} m) at the largest indentation {:.3g} {} is outside {}: are the "
-            "data's and the indenter's lengths in the case's unit (units.length of the curve's table, [indenter])?",
-            contact_radius, units.length, contact_radius * units.length_size, depth, units.length, range);
+            "data's and the indenter's lengths in the case's unit ([indenter]; {})?",
+            contact_radius, units.length, contact_radius * units.length_size, depth, units.length, range,
+            length_unit_key);
     }
     return std::nullopt;
 }
