@@ -67,7 +67,8 @@ def test_metres_read_as_micrometres_on_a_cone_are_flagged(run_mdr, workdir):
     _, curve_flags, stdout = fit_flags(run_mdr, workdir, CONE_CASE.format(data="", fit=""))
     (flag,) = unit_flags(curve_flags)
     # About 3 to 4 (1e-6 um): from the fitted contact, which such a fit may put at the record's first row.
-    assert re.match(r"largest indentation [234](\.\d+)?e-06 µm \([234](\.\d+)?e-12 m\) " + re.escape(LENGTH_RULE), flag)
+    shown = r"largest indentation [234](\.\d+)?e-06 µm \([234](\.\d+)?e-12 m\) "
+    assert re.match(shown + re.escape(LENGTH_RULE), flag)
     assert "units.length" in flag and "flag (hertz): largest indentation" in stdout
     # The same file with its unit stated: no flag.
     _, curve_flags, _ = fit_flags(run_mdr, workdir, CONE_CASE.format(data='units = { length = "m" }', fit=""))
