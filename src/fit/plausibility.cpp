@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
 
+#include "mdr/profile/profile.hpp"
 #include "young_moduli.hpp"
 
 namespace mdr::fit {
@@ -20,21 +23,57 @@ double largest_indentation(const Curve& record, const CurveFit& curve) {
     return *greatest - std::max(curve.contact_depth, *least);
 }
 
-void add_depth_flags(const FitProblem& problem, double radius, const PlausibilityUnits& units, FitResult& result) {
+// Where a curve's lengths get their unit: a file's from its table's units.length, mdr.fit's arrays from the case.
+constexpr const char* length_unit_key = "units.length of the curve's table; arrays are in the case's units";
+
+// The flag of a curve whose largest indentation `depth` (in the case's length unit) is implausible for the indenter
+// and the units, or nullopt: on a sphere against its radius (the tip size says the most); on every indenter against
+// the lengths of contacts (least_contact_length_m to greatest_contact_length_m), its depth and then its contact
+// radius at that depth (Profile::contact_radius, eq. 15: a flat punch's radius, 2d / (pi tan(theta)) on a cone).
+std::optional<std::string> depth_flag(const profile::Profile& indenter, double depth, const PlausibilityUnits& units) {
+    if (const auto radius = indenter.tip_radius()) {
+        if (depth < least_sphere_indentation * *radius) {
+            return fmt::format(
+                "largest indentation {:.3g} {} is below {:g} of the sphere's R = {:.4g} {}: are the data's lengths in "
+                "the case's unit ({})?",
+                depth, units.length, least_sphere_indentation, *radius, units.length, length_unit_key);
+        }
+        if (depth > *radius) {
+            return fmt::format(
+                "largest indentation {:.3g} {} exceeds the sphere's R = {:.4g} {}: the contact radius would pass the "
+                "sphere's radius, where the sphere is no paraboloid (eq. 30); check the units or the indenter",
+                depth, units.length, *radius, units.length);
+        }
+    }
+    auto outside = [](double length_m) {
+        return !(length_m >= least_contact_length_m && length_m <= greatest_contact_length_m);
+    };
+    const std::string range = fmt::format("the lengths of indentation contacts ({:g} m to {:g} m, AFM to macroscopic "
+                                          "indentation)", least_contact_length_m, greatest_contact_length_m);
+    if (outside(depth * units.length_size)) {
+        return fmt::format(
+            "largest indentation {:.3g} {} ({:.3g} m) is outside {}: are the data's lengths in the case's unit "
+            "({})?",
+            depth, units.length, depth * units.length_size, range, length_unit_key);
+    }
+    const double contact_radius = indenter.contact_radius(depth);
+    if (outside(contact_radius * units.length_size)) {
+        return fmt::format(
+            "the contact radius {:.3g} {} ({:.3g} m) at the largest indentation {:.3g} {} is outside {}: are the "
+            "data's and the indenter's lengths in the case's unit ([indenter]; {})?",
+            contact_radius, units.length, contact_radius * units.length_size, depth, units.length, range,
+            length_unit_key);
+    }
+    return std::nullopt;
+}
+
+void add_depth_flags(const FitProblem& problem, const profile::Profile& indenter, const PlausibilityUnits& units,
+                     FitResult& result) {
     for (std::size_t c = 0; c < problem.curves.size() && c < result.curves.size(); ++c) {
         auto& curve = result.curves[c];  // the measured curves' entries come first, in the problem's order
         if (curve.rebound || curve.drive.empty() || problem.curves[c].depth.empty()) continue;
-        const double depth = largest_indentation(problem.curves[c], curve);
-        if (depth < least_sphere_indentation * radius) {
-            curve.flags.push_back(fmt::format(
-                "largest indentation {:.3g} {} is below {:g} of the sphere's R = {:.4g} {}: are the data's lengths in "
-                "the case's unit (units.length of the curve's table)?",
-                depth, units.length, least_sphere_indentation, radius, units.length));
-        } else if (depth > radius) {
-            curve.flags.push_back(fmt::format(
-                "largest indentation {:.3g} {} exceeds the sphere's R = {:.4g} {}: the contact radius would pass the "
-                "sphere's radius, where the sphere is no paraboloid (eq. 30); check the units or the indenter",
-                depth, units.length, radius, units.length));
+        if (auto flag = depth_flag(indenter, largest_indentation(problem.curves[c], curve), units)) {
+            curve.flags.push_back(std::move(*flag));
         }
     }
 }
@@ -90,7 +129,7 @@ void add_modulus_key_flags(const FitProblem& problem, const PlausibilityUnits& u
 void add_plausibility_flags(const FitProblem& problem, const PlausibilityUnits& units, FitResult& result) {
     if (!result.curves.empty() && problem.model) {
         const auto model = problem.model(result.values);
-        if (const auto radius = model.indenter->tip_radius()) add_depth_flags(problem, *radius, units, result);
+        add_depth_flags(problem, *model.indenter, units, result);
     }
     add_modulus_flag(units, result);
     add_modulus_key_flags(problem, units, result);
