@@ -13,7 +13,7 @@ void RowRecorder::observe(const StepState& state) {
     result_.time.push_back(state.time);
     result_.depth.push_back(state.depth);
     result_.force.push_back(state.force);
-    result_.radius.push_back(state.foundation->contact_radius());
+    result_.radius.push_back(state.contact_radius());
     if (columns_.velocity) result_.velocity.push_back(state.velocity);
     if (columns_.base) result_.base.push_back(state.load);
 }

@@ -13,7 +13,8 @@
 
 namespace mdr::drivers {
 
-/// The rows t, d, F, a (and v of an impact, z of spring control when asked) at every written row.
+/// The rows t, d, F, a (and v of an impact, z of spring control when asked) at every written row, on the half-space
+/// and on a [layer] (StepState::contact_radius).
 class RowRecorder final : public StepObserver {
 public:
     /// The optional columns of IndentationResult that this run fills.
