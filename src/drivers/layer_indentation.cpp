@@ -203,11 +203,11 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
         list.add(extra_observers);
     };
     ObserverList observers(output_every);
-    StateLog log;
+    StateLog state_log;
     if (showing == Showing::live) {
         add_shown(observers);
     } else {
-        observers.add(log);
+        observers.add(state_log);
     }
     const std::size_t last_node = grid.size() - 1;
     std::size_t reported = 0;
@@ -327,7 +327,7 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     if (showing == Showing::once_in_class) {
         ObserverList shown(output_every);
         add_shown(shown);
-        const StepState end = log.replay(shown);
+        const StepState end = state_log.replay(shown);
         if (shown.stopped()) {
             result.stopped = true;
             result.steps = end.step;
