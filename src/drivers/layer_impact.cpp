@@ -30,7 +30,7 @@ IndentationResult run_layer_impact(const ContactCase& contact_case, const contac
     // The rows by the half-space's recorder, then the caller's observers; a stop ends the run with its state (and no
     // outcome).
     ObserverList observed(std::max<std::size_t>(contact_case.numerics.output_every, 1));
-    RowRecorder rows(result, {.velocity = true, .base = false});
+    RowRecorder rows(result, row_columns(contact_case.control));
     observed.add(rows);
     observed.add(observers);
     // Hands the state after step n to the observers; returns whether the run ends with it.

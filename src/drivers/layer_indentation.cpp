@@ -193,7 +193,7 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     // is never reached on a layer: Type D's spring force vanishes there, and Type A's contact reaches the rod (refused)
     // at a shallower depth (about 1.76 mm on the half-space, less on a layer).
     const ShoreTest* shore = contact_case.shore();
-    RowRecorder rows(result, {.velocity = false, .base = spring && !shore});
+    RowRecorder rows(result, row_columns(contact_case.control));
     std::optional<ShoreRecorder> shore_recorder;
     if (shore) shore_recorder.emplace(shore->instrument, result);
     const std::size_t output_every = std::max<std::size_t>(contact_case.numerics.output_every, 1);

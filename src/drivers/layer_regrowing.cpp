@@ -36,10 +36,9 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
     // history resumes shifted from the z reached (PausedBase, as on the half-space).
     std::optional<PausedBase> paused;
     if (spring && !spring->force_pauses.empty()) paused.emplace(spring->force_pauses, spring_constant);
-    // The rows by the half-space's recorder (a Shore test never runs on the cells), then the caller's observers; a
-    // stop ends the run with its state.
+    // The rows by the half-space's recorder, then the caller's observers; a stop ends the run with its state.
     ObserverList observed(std::max<std::size_t>(contact_case.numerics.output_every, 1));
-    RowRecorder rows(result, {.velocity = false, .base = spring != nullptr});
+    RowRecorder rows(result, row_columns(contact_case.control));
     observed.add(rows);
     observed.add(observers);
     const std::size_t last_node = grid.size() - 1;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "every_control.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "stepping.hpp"
 
@@ -16,6 +17,10 @@ void RowRecorder::observe(const StepState& state) {
     result_.radius.push_back(state.contact_radius());
     if (columns_.velocity) result_.velocity.push_back(state.velocity);
     if (columns_.base) result_.base.push_back(state.load);
+}
+
+RowRecorder::Columns row_columns(const LoadControl& control) {
+    return visit_control(control, [](auto traits, const auto& data) { return traits.columns(data); });
 }
 
 SnapshotSchedule::SnapshotSchedule(std::vector<double> times) : times_(std::move(times)) {

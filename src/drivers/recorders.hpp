@@ -30,6 +30,9 @@ private:
     Columns columns_;
 };
 
+/// The optional row columns that `control` writes (its ControlTraits' columns), on the half-space and on a [layer].
+RowRecorder::Columns row_columns(const LoadControl& control);
+
 /// The case's snapshot times, each due at the first settled state at or after it (SnapshotRecorder; the layer
 /// drivers, layer_snapshot.hpp).
 class SnapshotSchedule {
