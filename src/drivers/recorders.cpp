@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <utility>
 
-#include "every_control.hpp"
 #include "mdr/foundation/foundation.hpp"
+#include "every_control.hpp"
 #include "stepping.hpp"
 
 namespace mdr::drivers {
