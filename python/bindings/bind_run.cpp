@@ -11,7 +11,6 @@
 #include "document_object.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/step_observer.hpp"
-#include "mdr/foundation/foundation.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/io/history_columns.hpp"
@@ -24,8 +23,7 @@ namespace py = pybind11;
 namespace mdr::python {
 namespace {
 
-// One state of a run as a Python observer sees it (drivers::StepState, the foundation's contact radius read out;
-// a [layer]'s, which has no foundation, as given).
+// One state of a run as a Python observer sees it (drivers::StepState, its contact radius read out).
 struct StepRecord {
     std::size_t step = 0;
     double time = 0.0, depth = 0.0, force = 0.0, load = 0.0, velocity = 0.0, contact_radius = 0.0, fraction = 0.0;
@@ -56,8 +54,7 @@ private:
                                 .force = state.force,
                                 .load = state.load,
                                 .velocity = state.velocity,
-                                .contact_radius = state.foundation ? state.foundation->contact_radius()
-                                                                   : state.contact_radius,
+                                .contact_radius = state.contact_radius(),
                                 .fraction = state.fraction,
                                 .settled = state.settled};
         py::gil_scoped_acquire acquire;

@@ -15,8 +15,10 @@ namespace mdr::drivers {
 
 /// The drivers' side of control type `Control`. A specialisation has:
 /// - `Stepping`, its stepping class in the one loop (run_control in indentation.cpp), constructed from
-///   (contact_case, numerics, foundation, the control's data): its grid and grid cuts, step, stop rule, columns,
-///   own observers and outcomes;
+///   (contact_case, numerics, foundation, the control's data): its grid and grid cuts, step, stop rule, own observers
+///   and outcomes;
+/// - `static RowRecorder::Columns columns(const Control&)`, the optional row columns it writes (row_columns, for the
+///   half-space's loop and a [layer]'s drivers alike);
 /// - `static void validate(const ContactCase&, const Control&)`, its rules that need no valid end time, and
 ///   `static void validate_within_run(const ContactCase&, const Control&)`, those checked after the times
 ///   (drivers::validate);

@@ -95,8 +95,6 @@ public:
         if (const auto& harmonic = contact_case.load.harmonic) cycle_.emplace(*harmonic, contact_case.end_time);
     }
 
-    /// t, d, F, a and z when the control has a base column.
-    RowRecorder::Columns columns() const { return {.velocity = false, .base = control_.base_column()}; }
     /// The control's observers, the tangential columns and the harmonic cycle measure.
     void add_observers(ObserverList& observers, IndentationResult& result) {
         control_.add_observers(observers, result);
@@ -240,6 +238,10 @@ private:
 template <class Control, class Step>
 struct HistoryControlTraits {
     using Stepping = HistoryStepping<Step>;
+    /// t, d, F, a and z when the control has a base column.
+    static RowRecorder::Columns columns(const Control& control) {
+        return {.velocity = false, .base = Step(control).base_column()};
+    }
     static std::vector<GridNode> grid(const ContactCase& contact_case, const ResolvedNumerics& numerics,
                                       const Control& control) {
         return history_grid(contact_case, numerics, Step(control));

@@ -29,8 +29,6 @@ public:
     ImpactStepping(const ContactCase& contact_case, const ResolvedNumerics& numerics,
                    foundation::Foundation& foundation, const ImpactControl& impact);
 
-    /// t, d, F, a and v.
-    RowRecorder::Columns columns() const { return {.velocity = true, .base = false}; }
     /// The oblique part's columns.
     void add_observers(ObserverList& observers, IndentationResult& result);
     /// The oblique part's shear stress in snapshots.
@@ -72,6 +70,8 @@ struct ControlTraits<ImpactControl> {
     using Stepping = ImpactStepping;
     static std::vector<ControlKind> rows();
     static const char* row_name(const ImpactControl& /*impact*/) { return "impact"; }
+    /// t, d, F, a and v.
+    static RowRecorder::Columns columns(const ImpactControl& /*impact*/) { return {.velocity = true, .base = false}; }
     /// A mass and an approach speed > 0, an elastic part beside a dashpot, no tangential load and no harmonic; an
     /// oblique impact: friction >= 0, finite tangential velocity and spin, an indenter with a tip radius
     /// (Profile::tip_radius: a sphere), a positive moment of inertia when one is given, one incompressible body

@@ -18,7 +18,7 @@ namespace {
 // (its ControlTraits' Stepping: HistoryStepping over a step class of normal_control.hpp, ImpactStepping) takes each
 // step to the next node of its grid and says which state is the last (its stop rule); after each step the observers
 // see the state: the standard ones (rows, the control's own, snapshots, progress), then the caller's. A stepping
-// class has a constructor (contact_case, numerics, foundation, its control's data), columns(),
+// class has a constructor (contact_case, numerics, foundation, its control's data),
 // add_observers(observers, result), shear_stress(), first_state(), step(n) and add_outcomes(result), the outcomes
 // that need the whole run.
 template <class Stepping, class Control>
@@ -33,7 +33,7 @@ IndentationResult run_control(const ContactCase& contact_case, const ProgressObs
 
     // The standard observers fill the result; the caller's follow them.
     ObserverList observers(numerics.output_every);
-    RowRecorder rows(result, stepping.columns());
+    RowRecorder rows(result, ControlTraits<Control>::columns(control));
     observers.add(rows);
     stepping.add_observers(observers, result);
     SnapshotRecorder snapshots(contact_case.snapshots, *contact_case.indenter, result, stepping.shear_stress());

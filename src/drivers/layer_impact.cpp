@@ -10,6 +10,7 @@
 #include "impact_end.hpp"
 #include "layer_stepping.hpp"
 #include "observer_list.hpp"
+#include "recorders.hpp"
 
 namespace mdr::drivers {
 
@@ -26,10 +27,13 @@ IndentationResult run_layer_impact(const ContactCase& contact_case, const contac
         contact_case.material, layer, unit_modulus, 0.0, largest_depth,
         {.trapezoidal = contact_case.material.viscosity() > 0.0, .start = approach, .indenter_motion = true});
     double time = 0.0, depth = 0.0, velocity = approach, force = 0.0;
-    // The caller's observers see each state before it is recorded; a stop ends the run with it (and no outcome).
+    // The rows by the half-space's recorder, then the caller's observers; a stop ends the run with its state (and no
+    // outcome).
     ObserverList observed(std::max<std::size_t>(contact_case.numerics.output_every, 1));
+    RowRecorder rows(result, row_columns(contact_case.control));
+    observed.add(rows);
     observed.add(observers);
-    // Hands the state after step n to the observers, records it when a row; returns whether the run ends with it.
+    // Hands the state after step n to the observers; returns whether the run ends with it.
     const auto notify = [&](std::size_t n, const LayerStep& state) {
         StepState observed_state{.step = n,
                                  .time = time,
@@ -38,16 +42,8 @@ IndentationResult run_layer_impact(const ContactCase& contact_case, const contac
                                  .velocity = velocity,
                                  .fraction = std::min(time / numerics.time_limit, 1.0),
                                  .last = result.impact.has_value(),
-                                 .contact_radius = state.contact.contact_radius};
-        const bool ends = observed.notify(observed_state);
-        if (observed_state.row) {
-            result.time.push_back(time);
-            result.depth.push_back(depth);
-            result.force.push_back(force);
-            result.radius.push_back(state.contact.contact_radius);
-            result.velocity.push_back(velocity);
-        }
-        return ends;
+                                 .layer_contact_radius = state.contact.contact_radius};
+        return observed.notify(observed_state);
     };
     if (notify(0, stepper.current())) {
         result.stopped = true;

@@ -117,11 +117,27 @@ void validate_layer(const ContactCase& contact_case) {
 
 namespace {
 
+// When the caller's observers see the states of a run of Ting's class.
+enum class Showing {
+    live,          // as they come: a stop ends the run with its state
+    once_in_class  // once the run has ended in Ting's class (not thrown to the cells), replayed in order (StateLog)
+};
+
+// Leaves out the snapshots taken after state `end`: each is taken at the first settled state at or after its time,
+// which is `end` itself only when `end` is settled.
+void drop_snapshots_after(std::vector<Snapshot>& snapshots, const StepState& end) {
+    std::erase_if(snapshots, [&](const Snapshot& snapshot) {
+        return snapshot.time > end.time || (snapshot.time == end.time && !end.settled);
+    });
+}
+
 // A run of Ting's class (one maximum of the contact radius; eq. L11 to L14); throws ContactRegrows where the
-// contact would grow again after it shrank. The caller's observers see each state before it is recorded (a row, a
-// Shore reading, a snapshot), as the half-space's recorders see it; a stop ends the run with it.
+// contact would grow again after it shrank. The rows and a Shore test's readings are recorded by the half-space's
+// recorders (RowRecorder, ShoreRecorder), which the caller's observers follow, as on the half-space; a stop ends the
+// run with its state, also one asked in the replay of a run shown `once_in_class`, whose result then ends there as
+// it would have live (its rows recorded in the replay, its snapshots cut there).
 IndentationResult run_one_maximum(const ContactCase& contact_case, const ProgressObserver& progress,
-                                  const StepObservers& extra_observers) {
+                                  const StepObservers& extra_observers, Showing showing) {
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
     const std::size_t nodes = contact_case.numerics.elements.value_or(contact::default_layer_nodes);
@@ -177,11 +193,23 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     // is never reached on a layer: Type D's spring force vanishes there, and Type A's contact reaches the rod (refused)
     // at a shallower depth (about 1.76 mm on the half-space, less on a layer).
     const ShoreTest* shore = contact_case.shore();
+    RowRecorder rows(result, row_columns(contact_case.control));
     std::optional<ShoreRecorder> shore_recorder;
     if (shore) shore_recorder.emplace(shore->instrument, result);
+    const std::size_t output_every = std::max<std::size_t>(contact_case.numerics.output_every, 1);
+    const auto add_shown = [&](ObserverList& list) {  // the recorders, then the caller's observers
+        list.add(rows);
+        if (shore_recorder) list.add(*shore_recorder);
+        list.add(extra_observers);
+    };
+    ObserverList observers(output_every);
+    StateLog state_log;
+    if (showing == Showing::live) {
+        add_shown(observers);
+    } else {
+        observers.add(state_log);
+    }
     const std::size_t last_node = grid.size() - 1;
-    ObserverList observers(std::max<std::size_t>(contact_case.numerics.output_every, 1));
-    observers.add(extra_observers);
     std::size_t reported = 0;
     double previous_centre = 0.0;
     // Snapshots of the growing contact (eq. L26); one due while it recedes runs the case on cells (eq. L27).
@@ -279,16 +307,8 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
                         .fraction = static_cast<double>(i) / static_cast<double>(std::max<std::size_t>(last_node, 1)),
                         .settled = settled,
                         .last = i == last_node,
-                        .contact_radius = next.contact.contact_radius};
+                        .layer_contact_radius = next.contact.contact_radius};
         const bool ends = observers.notify(state);
-        if (state.row) {
-            result.time.push_back(node.time);
-            result.depth.push_back(depth);
-            result.force.push_back(next.force);
-            result.radius.push_back(next.contact.contact_radius);
-            if (spring && !shore) result.base.push_back(shown_base);
-        }
-        if (shore_recorder) shore_recorder->observe(state);
         // At a pause's start the force to hold; at its end the base's shift (the node settled: no jump follows).
         if (paused && settled) paused->passed(node.time, next.force, depth, node.value);
         for (std::size_t due = snapshots && settled ? snapshots->due(node.time) : 0; due > 0; --due) {
@@ -304,6 +324,16 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
         if (ends) break;
     }
     result.stopped = observers.stopped();
+    if (showing == Showing::once_in_class) {
+        ObserverList shown(output_every);
+        add_shown(shown);
+        const StepState end = state_log.replay(shown);
+        if (shown.stopped()) {
+            result.stopped = true;
+            result.steps = end.step;
+            drop_snapshots_after(result.snapshots, end);
+        }
+    }
     return result;
 }
 
@@ -331,16 +361,14 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
         };
     }
     try {
+        // Ting's class finds that the contact grows again only when it does, and the cells then run the case from its
+        // start: an observer that needs one run must not have seen Ting's states before, so it is shown them once the
+        // run has ended in Ting's class (an impact's regrowth is refused, not rerun: shown live).
         const bool one_run = std::any_of(observers.begin(), observers.end(), [](const StepObserver* observer) {
             return observer != nullptr && observer->needs_one_run();  // a null one is refused by ObserverList
         });
-        if (!one_run || contact_case.impact()) return run_one_maximum(contact_case, monotone, observers);
-        // Ting's class finds that the contact grows again only when it does, and the cells then run the case from its
-        // start: an observer that needs one run must not have seen Ting's states before. A run without observers
-        // decides the class, and the observed run repeats it (twice the time of Ting's class; an impact's regrowth is
-        // refused, not rerun).
-        run_one_maximum(contact_case, monotone, {});
-        return run_one_maximum(contact_case, monotone, observers);
+        const Showing showing = one_run && !contact_case.impact() ? Showing::once_in_class : Showing::live;
+        return run_one_maximum(contact_case, monotone, observers, showing);
     } catch (const SnapshotOnCells&) {
         // A durometer's contact only grows; the cells have no stop.
         if (contact_case.shore()) refuse("output.snapshots", "[...]", "a snapshot of a durometer's receding contact");

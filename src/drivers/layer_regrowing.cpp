@@ -12,6 +12,7 @@
 #include "mdr/error.hpp"
 #include "observer_list.hpp"
 #include "paused_base.hpp"
+#include "recorders.hpp"
 
 namespace mdr::drivers {
 
@@ -35,8 +36,10 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
     // history resumes shifted from the z reached (PausedBase, as on the half-space).
     std::optional<PausedBase> paused;
     if (spring && !spring->force_pauses.empty()) paused.emplace(spring->force_pauses, spring_constant);
-    // The caller's observers see each state before it is recorded; a stop ends the run with it.
+    // The rows by the half-space's recorder, then the caller's observers; a stop ends the run with its state.
     ObserverList observed(std::max<std::size_t>(contact_case.numerics.output_every, 1));
+    RowRecorder rows(result, row_columns(contact_case.control));
+    observed.add(rows);
     observed.add(observers);
     const std::size_t last_node = grid.size() - 1;
     const bool sine_rate = displacement && contact_case.load.harmonic && material.viscosity() > 0.0;
@@ -71,15 +74,8 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
             .fraction = static_cast<double>(i) / static_cast<double>(std::max<std::size_t>(last_node, 1)),
             .settled = settled,
             .last = i == last_node,
-            .contact_radius = state.contact_radius};
+            .layer_contact_radius = state.contact_radius};
         const bool ends = observed.notify(observed_state);
-        if (observed_state.row) {
-            result.time.push_back(grid[i].time);
-            result.depth.push_back(state.depth);
-            result.force.push_back(state.force);
-            result.radius.push_back(state.contact_radius);
-            if (spring) result.base.push_back(shown_base);
-        }
         if (paused && settled) paused->passed(grid[i].time, state.force, state.depth, grid[i].value);
         for (std::size_t due = settled ? snapshots.due(grid[i].time) : 0; due > 0; --due) {
             result.snapshots.push_back(cells_snapshot(layer, state.contact_radius, grid[i].time));

@@ -26,4 +26,13 @@ bool ObserverList::notify(StepState& state) {
     return state.last;
 }
 
+StepState StateLog::replay(ObserverList& observers) const {
+    StepState state;
+    for (const StepState& kept : states_) {
+        state = kept;
+        if (observers.notify(state)) break;
+    }
+    return state;
+}
+
 }  // namespace mdr::drivers

@@ -29,4 +29,19 @@ private:
     bool stopped_ = false;
 };
 
+/// Keeps every state of a run for observers that may see them only once the run is known to give the result (a
+/// [layer]'s run of Ting's class, which the cells replace from the start where the contact grows again): a copy of
+/// each state, O(steps) memory.
+class StateLog final : public StepObserver {
+public:
+    void observe(const StepState& state) override { states_.push_back(state); }
+    /// Hands the kept states in order to `observers` (ObserverList::notify: their stops asked, a stop making its state
+    /// the last one and a row) up to the run's last state; returns the state the run ends with (the last kept, or the
+    /// one an observer stopped at).
+    StepState replay(ObserverList& observers) const;
+
+private:
+    std::vector<StepState> states_;
+};
+
 }  // namespace mdr::drivers

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "mdr/foundation/foundation.hpp"
+#include "every_control.hpp"
 #include "stepping.hpp"
 
 namespace mdr::drivers {
@@ -13,9 +14,13 @@ void RowRecorder::observe(const StepState& state) {
     result_.time.push_back(state.time);
     result_.depth.push_back(state.depth);
     result_.force.push_back(state.force);
-    result_.radius.push_back(state.foundation->contact_radius());
+    result_.radius.push_back(state.contact_radius());
     if (columns_.velocity) result_.velocity.push_back(state.velocity);
     if (columns_.base) result_.base.push_back(state.load);
+}
+
+RowRecorder::Columns row_columns(const LoadControl& control) {
+    return visit_control(control, [](auto traits, const auto& data) { return traits.columns(data); });
 }
 
 SnapshotSchedule::SnapshotSchedule(std::vector<double> times) : times_(std::move(times)) {

@@ -13,7 +13,8 @@
 
 namespace mdr::drivers {
 
-/// The rows t, d, F, a (and v of an impact, z of spring control when asked) at every written row.
+/// The rows t, d, F, a (and v of an impact, z of spring control when asked) at every written row, on the half-space
+/// and on a [layer] (StepState::contact_radius).
 class RowRecorder final : public StepObserver {
 public:
     /// The optional columns of IndentationResult that this run fills.
@@ -28,6 +29,9 @@ private:
     IndentationResult& result_;
     Columns columns_;
 };
+
+/// The optional row columns that `control` writes (its ControlTraits' columns), on the half-space and on a [layer].
+RowRecorder::Columns row_columns(const LoadControl& control);
 
 /// The case's snapshot times, each due at the first settled state at or after it (SnapshotRecorder; the layer
 /// drivers, layer_snapshot.hpp).

@@ -141,7 +141,7 @@ public:
     explicit StopWhenAsked(const std::atomic<bool>& stop) : stop_(stop) {}
     void observe(const drivers::StepState&) override {}
     bool stop(const drivers::StepState&) override { return stop_.load(std::memory_order_relaxed); }
-    bool needs_one_run() const override { return false; }  // a [layer] run then need not be run twice
+    bool needs_one_run() const override { return false; }  // asked at once in a [layer]'s run of Ting's class too
 
 private:
     const std::atomic<bool>& stop_;

@@ -1,7 +1,8 @@
 # Observers on a [layer] (issue 27): mdr.run(layer_case, observers=[...]) sees every state of the run that gives the
 # result, in order, with the values of its history rows, on Ting's path, on the cells and in an impact; a true return
-# stops the run there and an exception propagates. The independent expectation is the run's own history table
-# (output_every = 1: one row a state), written by the drivers' row recording, not by the observers.
+# stops the run there and an exception propagates; a run of Ting's class is made once. The independent expectation is
+# the run's own history table (output_every = 1: one row a state), written by the drivers' row recording, not by the
+# observers.
 from __future__ import annotations
 
 import numpy as np
@@ -78,3 +79,17 @@ def test_an_observers_exception_abandons_a_layer_run(name):
 
     with pytest.raises(Abandon):
         mdr.run(CASES[name](), observers=[fail])
+
+
+@pytest.mark.parametrize("name", ["ting", "force"])
+def test_a_layer_run_of_tings_class_with_observers_runs_once(name):
+    # Its observers see its states once it has ended in Ting's class: the same progress as a run without them (before,
+    # the run was made once without observers to learn its class and again with them: each report twice).
+    def reports(**kwargs):
+        fractions = []
+        mdr.run(CASES[name](), progress=fractions.append, **kwargs)
+        return fractions
+
+    steps = []
+    assert reports(observers=[steps.append]) == reports()
+    assert [step.step for step in steps] == list(range(len(steps)))

@@ -50,13 +50,14 @@ void validate_layer(const ContactCase& contact_case);
 /// default_layer_cells). Snapshots (`output.snapshots`, eq. L25 to L27): of a growing contact in the run of Ting's
 /// class (GrowingSnapshots, src/drivers/layer_snapshot.hpp), and on the cells; one due while the contact recedes or
 /// after it was lost runs the case on the cells from the start (the surface outside a receding contact is theirs
-/// alone). The caller's `observers` see every state of the run that gives the result, as on the half-space
-/// (step_observer.hpp; StepState::contact_radius filled, foundation null), before it is recorded; a stop ends the run
-/// there (IndentationResult::stopped, no harmonic outcome). With an observer that needs one run
-/// (StepObserver::needs_one_run), a history of Ting's class is run once without observers first, so that they never
-/// see the states of a run abandoned for the cells. Throws as validate_layer;
-/// and naming
-/// `material.eta` for a force jump in contact against a parallel dashpot on the cells or in a Shore test.
+/// alone). The rows and a Shore test's readings are recorded by the half-space's recorders (RowRecorder,
+/// ShoreRecorder). The caller's `observers` see every state of the run that gives the result after them, as on the
+/// half-space (step_observer.hpp; StepState::layer_contact_radius filled, foundation null); a stop ends the run there
+/// (IndentationResult::stopped, no harmonic outcome). With an observer that needs one run
+/// (StepObserver::needs_one_run), a run of Ting's class keeps its states and shows them once it has ended in that class
+/// (dropped where the cells take over), so that they never see the states of a run abandoned for the cells; a stop
+/// then ends the result at its state as a stop asked at once. Throws as validate_layer; and naming `material.eta` for a
+/// force jump in contact against a parallel dashpot on the cells or in a Shore test.
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {},
                                         const StepObservers& observers = {});
 

@@ -30,10 +30,13 @@ struct StepState {
     bool row = false;       ///< a written row of the result: the initial state, every numerics.output_every-th
                             ///< step and the last state
     bool last = false;      ///< the run's last state (its end, or an observer's stop)
-    double contact_radius = 0.0;  ///< a [m] on a [layer] (its drivers have no foundation); on the half-space 0: read
-                                  ///< foundation->contact_radius()
+    double layer_contact_radius = 0.0;  ///< a [m] on a [layer] (its drivers have no foundation); 0 on the
+                                        ///< half-space: read contact_radius()
     const foundation::Foundation* foundation = nullptr;  ///< the MDR foundation after the step (null only on a
                                                          ///< [layer]): contact radius, elements in contact, line loads
+    /// The contact radius a [m]: the foundation's (Foundation::contact_radius, a scan of its elements), or on a
+    /// [layer] layer_contact_radius.
+    double contact_radius() const;
 };
 
 /// Watches a run. For every state, in time order (the initial one first), the driver asks each observer whether to
@@ -51,10 +54,12 @@ public:
         (void)state;
         return false;
     }
-    /// Whether it must see the states of one run only (by default yes). An observer that only asks to stop (a
-    /// sweep's) says no: a [layer]'s run of Ting's class then shows it its states at once, and the run on the cells
-    /// that replaces it where the contact grows again shows them again from the start (run_layer_indentation), instead
-    /// of running Ting's class once without observers first.
+    /// Whether it must see the states of one run only (by default yes). A [layer]'s run of Ting's class finds only
+    /// when it happens that the contact grows again, and the cells then run the case from the start
+    /// (run_layer_indentation): it keeps its states and shows them to such an observer once it has ended in Ting's
+    /// class (a stop then ends the result at its state as at once). An observer that only asks to stop (a sweep's)
+    /// says no: it is asked at once, so that it can stop a long run at any step, and may be shown the states of
+    /// Ting's run and then those of the cells' from the start.
     virtual bool needs_one_run() const { return true; }
 };
 

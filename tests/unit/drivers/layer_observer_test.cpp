@@ -1,7 +1,9 @@
 // A caller's StepObserver on a [layer] (issue 27): run_case hands it every state of the run that gives the result, in
 // time order, with the values of the result's rows (every state a row here), on Ting's path (one maximum of the
 // contact radius, eq. L12), on the cells (a reload, eq. L16) and in an impact; a stop ends the run with its state,
-// leaving the rows of the full run up to then.
+// leaving the rows of the full run up to then. An observer that needs one run is shown Ting's states once that run
+// has ended in Ting's class (one run, not a run without observers first); its stop ends the result as one asked at
+// once.
 
 #include <gtest/gtest.h>
 
@@ -13,6 +15,7 @@
 #include "mdr/contact/layer.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/step_observer.hpp"
+#include "mdr/io/case_file.hpp"
 #include "mdr/profile/profile.hpp"
 
 namespace mdr::drivers {
@@ -74,7 +77,7 @@ TEST_P(LayerObserver, SeesEveryStateOnceInTimeOrderWithTheRowsRecorded) {
         EXPECT_EQ(states[i].time, result.time[i]);
         EXPECT_EQ(states[i].depth, result.depth[i]);
         EXPECT_EQ(states[i].force, result.force[i]);
-        EXPECT_EQ(states[i].contact_radius, result.radius[i]);
+        EXPECT_EQ(states[i].contact_radius(), result.radius[i]);
     }
     EXPECT_FALSE(result.stopped);
 }
@@ -128,6 +131,101 @@ TEST(LayerObserverOfOneRun, SeesTheCellsRunAloneWhereAnObserverWithoutTheNeedSee
 }
 
 INSTANTIATE_TEST_SUITE_P(TingCellsImpact, LayerObserver, testing::Values(&loading, &reloading, &impact));
+
+// The progress reports of a run: one run of Ting's class reports each hundredth of its grid once.
+std::size_t progress_reports(const ContactCase& contact_case, const StepObservers& observers) {
+    std::size_t reports = 0;
+    run_case(contact_case, [&](double) { ++reports; }, observers);
+    return reports;
+}
+
+TEST(LayerObserverOfOneRun, RunsTingsClassOnceAndShowsItsStatesOnce) {
+    // Before, an observer that needs one run made Ting's class run twice (once without observers, to find whether
+    // the contact grows again): twice the reports.
+    Watcher watcher;
+    const std::size_t unobserved = progress_reports(loading(), {});
+    EXPECT_EQ(progress_reports(loading(), {&watcher}), unobserved);
+    const auto result = run_case(loading());
+    ASSERT_EQ(watcher.states.size(), result.steps + 1);
+    for (std::size_t i = 0; i < watcher.states.size(); ++i) EXPECT_EQ(watcher.states[i].step, i);
+}
+
+// Ends the run at step `step`; `at_once` says it needs no one run (asked at once on Ting's class, as a sweep's).
+class StopAtStep final : public StepObserver {
+public:
+    StopAtStep(std::size_t step, bool at_once) : step_(step), at_once_(at_once) {}
+    void observe(const StepState&) override {}
+    bool stop(const StepState& state) override { return state.step == step_; }
+    bool needs_one_run() const override { return !at_once_; }
+
+private:
+    std::size_t step_;
+    bool at_once_;
+};
+
+// Cases of Ting's class with rows every third state, snapshots or Shore readings, stopped between rows.
+ContactCase spring_with_snapshots() {  // the base driven in, then held: the contact grows as the layer creeps
+    auto contact_case = on_layer(SpringControl{.spring_constant = 200.0}, {{0.0, 0.0}, {1.0, 8e-5}, {2.0, 8e-5}});
+    contact_case.snapshots = {0.4, 0.5, 1.2, 1.9};
+    contact_case.numerics.output_every = 3;
+    contact_case.numerics.time_step = 0.02;
+    return contact_case;
+}
+ContactCase shore_on_sheet() {
+    return io::parse_case(
+        "[material]\nmodel = \"standard\"\nG_inf = 1.0e6\nG1 = 1.0e6\ntau1 = 2.0\n[load]\ncontrol = \"shore\"\n"
+        "scale = \"A\"\n[layer]\nthickness = 6e-3\ninterface = \"bonded\"\n[numerics]\noutput_every = 3\n");
+}
+
+class LayerStopShownOnce : public testing::TestWithParam<ContactCase (*)()> {};
+
+TEST_P(LayerStopShownOnce, EndsTheResultAtItsStateAsAStopAskedAtOnce) {
+    Watcher every_state;
+    const auto full = run_case(GetParam()(), {}, {&every_state});
+    const std::size_t later = 2 * every_state.states.size() / 3;
+    const std::size_t end = later % 3 == 0 ? later + 1 : later;  // not a row of its own (every third)
+    const StepState& at_end = every_state.states[end];
+    StopAtStep once(end, false), at_once(end, true);
+    const auto replayed = run_case(GetParam()(), {}, {&once});
+    const auto live = run_case(GetParam()(), {}, {&at_once});
+    // Independent of the live stop: the full run's rows up to the state, then the state itself.
+    const std::size_t rows = end / 3 + 1;  // steps 0, 3, 6, ... up to the stop's
+    ASSERT_EQ(replayed.time.size(), rows + 1);
+    for (std::size_t i = 0; i < rows; ++i) {
+        EXPECT_EQ(replayed.time[i], full.time[i]);
+        EXPECT_EQ(replayed.force[i], full.force[i]);
+    }
+    EXPECT_EQ(replayed.time.back(), at_end.time);
+    EXPECT_EQ(replayed.depth.back(), at_end.depth);
+    EXPECT_EQ(replayed.force.back(), at_end.force);
+    EXPECT_EQ(replayed.radius.back(), at_end.contact_radius());
+    EXPECT_EQ(replayed.steps, end);
+    EXPECT_TRUE(replayed.stopped);
+    // As the stop asked at once.
+    EXPECT_TRUE(live.stopped);
+    EXPECT_EQ(replayed.steps, live.steps);
+    EXPECT_EQ(replayed.time, live.time);
+    EXPECT_EQ(replayed.depth, live.depth);
+    EXPECT_EQ(replayed.force, live.force);
+    EXPECT_EQ(replayed.radius, live.radius);
+    EXPECT_EQ(replayed.base, live.base);
+    EXPECT_EQ(replayed.shore, live.shore);
+    ASSERT_EQ(replayed.shore_readings.size(), live.shore_readings.size());
+    for (std::size_t n = 0; n < live.shore_readings.size(); ++n) {
+        EXPECT_EQ(replayed.shore_readings[n].time, live.shore_readings[n].time);
+        EXPECT_EQ(replayed.shore_readings[n].reading, live.shore_readings[n].reading);
+    }
+    ASSERT_EQ(replayed.snapshots.size(), live.snapshots.size());
+    for (std::size_t n = 0; n < live.snapshots.size(); ++n) {
+        EXPECT_EQ(replayed.snapshots[n].time, live.snapshots[n].time);
+        EXPECT_EQ(replayed.snapshots[n].pressure, live.snapshots[n].pressure);
+    }
+    // Some of the full run's snapshots or readings fall after the stop, some before.
+    EXPECT_LT(live.snapshots.size() + live.shore_readings.size(), full.snapshots.size() + full.shore_readings.size());
+    EXPECT_GT(live.snapshots.size() + live.shore_readings.size(), 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(SpringShore, LayerStopShownOnce, testing::Values(&spring_with_snapshots, &shore_on_sheet));
 
 }  // namespace
 }  // namespace mdr::drivers

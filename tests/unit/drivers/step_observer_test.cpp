@@ -52,7 +52,7 @@ class Watcher final : public StepObserver {
 public:
     void observe(const StepState& state) override {
         states.push_back(state);
-        contact_radii.push_back(state.foundation->contact_radius());
+        contact_radii.push_back(state.contact_radius());
     }
     std::vector<StepState> states;
     std::vector<double> contact_radii;
