@@ -88,6 +88,13 @@ drivers::LoadControl load_control(const py::handle& control, std::type_identity<
                                      class_name<drivers::ShoreTest>(), type_name(control)));
 }
 
+// The classes of the alternatives `Controls` of drivers::LoadControl, in its order: what `case.control` gives (the
+// stub's `_LoadControl` is checked against them). Importing _mdr fails while one is not bound.
+template <class... Controls>
+py::tuple load_control_classes(std::type_identity<std::variant<Controls...>>) {
+    return py::make_tuple(py::type::of<Controls>()...);
+}
+
 // The material `material` (key `key`) as a case file's reader gives it to a body (io::compressible_body): a
 // converted material with its certificate, its description in the case's units `system` and its conversion times
 // (its own series, not converted again); a plain mdr.Material as its own exact series (rheology::exact_material).
@@ -446,6 +453,7 @@ interface : str, optional
 
 void bind_contact_case(py::module_& module) {
     bind_controls(module);
+    module.attr("_load_controls") = load_control_classes(std::type_identity<drivers::LoadControl>{});
     bind_load_parts(module);
     py::class_<drivers::ContactCase>(module, "ContactCase", R"doc(A contact case as objects: the library's
 drivers::ContactCase, checked at construction by the rules of a case file (mdr.InvalidInput naming the key).

@@ -62,6 +62,10 @@ void bind_instrument(pybind11::module_& module);
 /// mdr.fit: fit cases from TOML text, curves from files or arrays.
 void bind_fit(pybind11::module_& module);
 
+/// `_mdr.__all__`: every name of the module not starting with `_` (its public classes), in the order bound; the
+/// `mdr` package exports them (`from ._mdr import *`), so a new class needs no edit there. Called last.
+void list_public_names(pybind11::module_& module);
+
 /// mdr.fit_map of an instrument map file: _mdr._fit_map_file (mdr/fitcase/map_fit.hpp, as `mdr fit --map`).
 void bind_map_fit(pybind11::module_& module);
 }  // namespace mdr::python
