@@ -88,9 +88,16 @@ drivers::LoadControl load_control(const py::handle& control, std::type_identity<
                                      class_name<drivers::ShoreTest>(), type_name(control)));
 }
 
+// The classes of the alternatives `Controls` of drivers::LoadControl, in its order: what `case.control` gives (the
+// stub's `_LoadControl` is checked against them). Importing _mdr fails while one is not bound.
+template <class... Controls>
+py::tuple load_control_classes(std::type_identity<std::variant<Controls...>>) {
+    return py::make_tuple(py::type::of<Controls>()...);
+}
+
 // The material `material` (key `key`) as a case file's reader gives it to a body (io::compressible_body): a
 // converted material with its certificate, its description in the case's units `system` and its conversion times
-// (its own series, not converted again); a plain mdr.Material as its series.
+// (its own series, not converted again); a plain mdr.Material as its own exact series (rheology::exact_material).
 rheology::ModelMaterial model_material(const py::handle& material, const std::string& key,
                                        const io::UnitSystem& system) {
     if (py::isinstance<ConvertedMaterial>(material)) {
@@ -101,7 +108,7 @@ rheology::ModelMaterial model_material(const py::handle& material, const std::st
     if (!py::isinstance<rheology::Rheology>(material)) {
         throw py::type_error(key + ": expected an mdr.Material, got " + type_name(material));
     }
-    return rheology::ModelMaterial{material.cast<rheology::Rheology>(), {}};
+    return rheology::exact_material(material.cast<rheology::Rheology>());
 }
 
 // The half-space's body (`material`, `K`, `bulk`) and the indenter's (`indenter_material`), by the rules of a case
@@ -128,14 +135,14 @@ bool control_takes(const drivers::ContactCase& contact_case, const std::string& 
 
 // The indenter's own material as given, or None for a rigid one; a compressible indenter (its own K or bulk, from a
 // case file or dict) is not bound as objects, so it is refused here rather than read back without its bulk part.
-std::optional<rheology::Rheology> indenter_material(const drivers::ContactCase& contact_case) {
-    if (!contact_case.bodies || !contact_case.bodies->indenter) return std::nullopt;
+py::object indenter_material(const drivers::ContactCase& contact_case) {
+    if (!contact_case.bodies || !contact_case.bodies->indenter) return py::none();
     const rheology::Body& body = *contact_case.bodies->indenter;
     if (body.bulk) {
         throw py::value_error("indenter.material: a compressible indenter (its own K or bulk) has no object form; "
                               "read the case with mdr.ContactCase.from_file or from_dict");
     }
-    return body.shear.series;
+    return material_object(body.shear);
 }
 
 struct CaseArguments {
@@ -446,6 +453,7 @@ interface : str, optional
 
 void bind_contact_case(py::module_& module) {
     bind_controls(module);
+    module.attr("_load_controls") = load_control_classes(std::type_identity<drivers::LoadControl>{});
     bind_load_parts(module);
     py::class_<drivers::ContactCase>(module, "ContactCase", R"doc(A contact case as objects: the library's
 drivers::ContactCase, checked at construction by the rules of a case file (mdr.InvalidInput naming the key).
@@ -516,14 +524,16 @@ Examples
         .def_property_readonly(
             "material",
             [](const drivers::ContactCase& contact_case) {
-                return contact_case.bodies ? contact_case.bodies->half_space.shear.series : contact_case.material;
+                if (!contact_case.bodies) return py::cast(contact_case.material);
+                return material_object(contact_case.bodies->half_space.shear);
             },
-            "The half-space's (shear) material as given (a plain mdr.Material; its certificate is material_error).")
+            "The half-space's (shear) material as given: an mdr.ConvertedMaterial for a model converted to a series "
+            "(with its certificate over the case's window), else an mdr.Material.")
         .def_property_readonly(
             "bulk",
-            [](const drivers::ContactCase& contact_case) -> std::optional<rheology::Rheology> {
-                if (!contact_case.bodies || !contact_case.bodies->half_space.bulk) return std::nullopt;
-                return contact_case.bodies->half_space.bulk->series;
+            [](const drivers::ContactCase& contact_case) {
+                if (!contact_case.bodies || !contact_case.bodies->half_space.bulk) return py::none().cast<py::object>();
+                return material_object(*contact_case.bodies->half_space.bulk);
             },
             "The half-space's bulk material K(t) (``material.K`` or ``material.bulk``), None for an incompressible "
             "body.")

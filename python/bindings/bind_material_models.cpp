@@ -8,7 +8,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <filesystem>
 
 #include "bindings.hpp"
 #include "mdr/error.hpp"
@@ -53,7 +52,6 @@ py::object build(const MaterialModel& model, const py::args& args, const py::kwa
     rheology::ModelParameters parameters;
     rheology::ConversionOptions options;
     std::vector<double> frequencies;
-    std::optional<double> tolerance;
     std::string valid;
     for (const auto& parameter : model.parameters) valid += (valid.empty() ? "" : ", ") + parameter.key;
     if (model.needs_window) valid += ", window, frequencies, tolerance";
@@ -74,8 +72,7 @@ py::object build(const MaterialModel& model, const py::args& args, const py::kwa
             continue;
         }
         if (model.needs_window && key == "tolerance") {
-            tolerance = value.cast<double>();
-            options.tolerance = *tolerance;
+            options.tolerance = value.cast<double>();
             continue;
         }
         const rheology::ModelParameter* found = find_parameter(model, key);
@@ -98,45 +95,40 @@ py::object build(const MaterialModel& model, const py::args& args, const py::kwa
         std::sort(frequencies.begin(), frequencies.end());
         options.window->frequencies = std::move(frequencies);
     }
-    // A relative file is the working directory's now; its definition names it absolutely, for any later case.
-    for (auto& [key, text] : parameters.texts) {
-        if (find_parameter(model, key)->unit == "path") text = std::filesystem::absolute(text).string();
-    }
-    rheology::ModelMaterial material = rheology::build_material(model, parameters, options);
-    if (!material.origin.certificate) return py::cast(std::move(material.series));
-    return py::cast(ConvertedMaterial{std::move(material.series), std::move(*material.origin.certificate), model.name,
-                                      std::move(parameters), tolerance, material.origin.times_from_conversion});
+    return material_object(rheology::build_material(model, parameters, options));
 }
 
 // The [material] table of a converted material's model: what a case converts again (mdr.Material objects in a
 // case dict, python/mdr/_case_tree.py).
 py::dict definition_table(const ConvertedMaterial& material) {
+    const rheology::ModelDefinition& definition = material.definition;
     py::dict table;
-    table["model"] = material.model;
-    for (const auto& [key, value] : material.parameters.numbers) table[key.c_str()] = value;
-    for (const auto& [key, value] : material.parameters.pairs) {
+    table["model"] = definition.model;
+    for (const auto& [key, value] : definition.parameters.numbers) table[key.c_str()] = value;
+    for (const auto& [key, value] : definition.parameters.pairs) {
         py::list pairs;
         for (const auto& [a, b] : value) pairs.append(py::make_tuple(a, b));
         table[key.c_str()] = pairs;
     }
-    for (const auto& [key, value] : material.parameters.arrays) table[key.c_str()] = value;
-    for (const auto& [key, value] : material.parameters.texts) table[key.c_str()] = value;
-    if (material.tolerance) table["tolerance"] = *material.tolerance;
+    for (const auto& [key, value] : definition.parameters.arrays) table[key.c_str()] = value;
+    for (const auto& [key, value] : definition.parameters.texts) table[key.c_str()] = value;
+    if (definition.tolerance) table["tolerance"] = *definition.tolerance;
     return table;
 }
 
 // The model and parameters of a definition table (a pickle's), inverse of definition_table.
 void restore_definition(ConvertedMaterial& material, const py::dict& table) {
     const MaterialModel& model = rheology::material_model(table["model"].cast<std::string>());
-    material.model = model.name;
+    rheology::ModelDefinition& definition = material.definition;
+    definition.model = model.name;
     for (const auto& [name, value] : table) {
         const auto key = name.cast<std::string>();
         if (key == "tolerance") {
-            material.tolerance = value.cast<double>();
+            definition.tolerance = value.cast<double>();
         } else if (key != "model") {
             const rheology::ModelParameter* parameter = find_parameter(model, key);
             if (parameter == nullptr) throw InvalidInput(key, "(given)", "not a key of model " + model.name);
-            put(material.parameters, *parameter, value);
+            put(definition.parameters, *parameter, value);
         }
     }
 }
@@ -170,6 +162,12 @@ std::string docstring(const MaterialModel& model) {
 }
 
 }  // namespace
+
+py::object material_object(rheology::ModelMaterial material) {
+    if (!material.origin.certificate || !material.definition) return py::cast(std::move(material.series));
+    return py::cast(ConvertedMaterial{std::move(material.series), std::move(*material.origin.certificate),
+                                      std::move(*material.definition), material.origin.times_from_conversion});
+}
 
 void bind_material_models(py::class_<rheology::Rheology>& material) {
     // A Material that is its own series (no conversion): None; mdr.ConvertedMaterial gives the values.
@@ -222,7 +220,7 @@ void bind_converted_material(py::module_& module) {
         ConvertedMaterial material{
             rheology::Rheology(s[0].cast<double>(), s[1].cast<double>(), std::move(terms)),
             Certificate{s[3].cast<double>(), std::move(window), s[7].cast<double>(), s[8].cast<std::string>()},
-            {}, {}, {}, s[10].cast<bool>()};
+            {}, s[10].cast<bool>()};
         restore_definition(material, s[9].cast<py::dict>());
         return material;
     };

@@ -13,25 +13,27 @@
 namespace mdr::python {
 
 /// What the factories of a model converted to a Prony series (power law, springpots, table) build: the series
-/// and the certificate of the conversion, and the model's definition, which stands for it in a case (a case
-/// converts the model again over its own window and harmonic frequencies, as for the same [material] table).
+/// and the certificate of the conversion, and the model's definition, which stands for it in a case given as a dict
+/// (converted again over the case's window and harmonic frequencies, as for the same [material] table).
 struct ConvertedMaterial : rheology::Rheology {
     rheology::Certificate certificate;
-    std::string model;                     ///< the registry's name of the model
-    rheology::ModelParameters parameters;  ///< the values given to its factory (a table's file: absolute)
-    std::optional<double> tolerance;       ///< the factory's tolerance, when given
+    rheology::ModelDefinition definition;  ///< the model and the values given to its factory (a file: absolute)
     bool times_from_conversion = false;    ///< rheology::MaterialOrigin::times_from_conversion of the conversion
 
     /// What the series stands for in a drivers::ContactCase: the model described with the units `unit_names` of
     /// the case (rheology::describe_model of its parameters with their defaults, as a case file's reader describes
     /// it), the certificate and whether its times come from the conversion (the model's functions are not kept).
     rheology::MaterialOrigin origin(const rheology::UnitNames& unit_names) const {
-        const rheology::MaterialModel& registered = rheology::material_model(model);
-        return {rheology::describe_model(registered, rheology::with_defaults(registered, parameters), nullptr,
-                                         unit_names),
+        const rheology::MaterialModel& registered = rheology::material_model(definition.model);
+        return {rheology::describe_model(registered, rheology::with_defaults(registered, definition.parameters),
+                                         nullptr, unit_names),
                 certificate, {}, times_from_conversion};
     }
 };
+
+/// A material as Python holds it: an mdr.ConvertedMaterial for a series converted from a model (its certificate
+/// and definition: a factory's, or a case body's as the reader built it), else an mdr.Material, its series.
+pybind11::object material_object(rheology::ModelMaterial material);
 
 /// mdr.Material: the canonical rheology and its factories.
 void bind_rheology(pybind11::module_& module);
@@ -59,6 +61,10 @@ void bind_instrument(pybind11::module_& module);
 
 /// mdr.fit: fit cases from TOML text, curves from files or arrays.
 void bind_fit(pybind11::module_& module);
+
+/// `_mdr.__all__`: every name of the module not starting with `_` (its public classes), in the order bound; the
+/// `mdr` package exports them (`from ._mdr import *`), so a new class needs no edit there. Called last.
+void list_public_names(pybind11::module_& module);
 
 /// mdr.fit_map of an instrument map file: _mdr._fit_map_file (mdr/fitcase/map_fit.hpp, as `mdr fit --map`).
 void bind_map_fit(pybind11::module_& module);

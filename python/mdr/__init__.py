@@ -25,18 +25,18 @@ import numpy as np
 from . import _mdr
 from ._arrays import real_array
 from ._jobs import check_jobs, local_workers
-from ._mdr import (ContactCase, ConvertedMaterial, DisplacementControl, ForceControl, Harmonic, ImpactControl, Indenter,
-                   InvalidInput, Layer, Material, Numerics, ObliqueImpact, ShoreTest, SpringControl, Step, Tangential)
+# Every public class of the core (Material, ContactCase, the controls, ...): the names _mdr.__all__ lists (its stub
+# _mdr.pyi too), exported below as they are, so that a class bound in python/bindings needs no line here.
+from ._mdr import *  # noqa: F401,F403
 from ._case_tree import plain_tree
 from .curve_maps import map_curves
 from .fit_maps import fit_map
 from .fitting import FitResult, fit, spread_of_repeats
-from .instruments import Curve, read_curves
+from .instruments import read_curves
 
 __all__ = ["run", "check", "sweep", "SweepTable", "fit", "FitResult", "spread_of_repeats", "map_curves", "fit_map",
-           "Material", "ConvertedMaterial", "Indenter", "Result", "InvalidInput", "read_curves", "Curve", "ContactCase",
-           "DisplacementControl", "ForceControl", "SpringControl", "ShoreTest", "ImpactControl", "ObliqueImpact",
-           "Harmonic", "Numerics", "Tangential", "Layer", "Step", "__version__"]
+           "Result", "read_curves", "__version__"]
+__all__ += _mdr.__all__
 __version__ = _mdr.__version__
 
 CaseLike = Union[str, os.PathLike, Mapping[str, Any]]

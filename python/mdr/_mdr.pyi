@@ -10,6 +10,11 @@ import numpy.typing as npt
 _Scalar = float | int | np.floating[Any] | np.integer[Any]
 
 __version__: str
+# The public classes, which the mdr package exports (`from ._mdr import *`); tests/python/test_bindings.py checks this
+# list against the module's.
+__all__ = ["InvalidInput", "Material", "ConvertedMaterial", "Indenter", "DisplacementControl", "ForceControl",
+           "SpringControl", "ShoreTest", "ObliqueImpact", "ImpactControl", "Harmonic", "Numerics", "Tangential", "Layer",
+           "ContactCase", "Step", "Curve"]
 
 class InvalidInput(ValueError):
     """Bad input: the message names the key, the value and the rule (`key = value: rule`)."""
@@ -175,7 +180,11 @@ class ImpactControl:
     @property
     def oblique(self) -> Optional[ObliqueImpact]: ...
 
-_Control = DisplacementControl | ForceControl | SpringControl | ImpactControl | ShoreTest
+# What case.control gives: the alternatives of drivers::LoadControl (checked against _load_controls); the
+# constructor also takes a Shore test.
+_LoadControl = DisplacementControl | ForceControl | ImpactControl | SpringControl
+_Control = _LoadControl | ShoreTest
+_load_controls: tuple[type, ...]
 
 class Harmonic:
     """A harmonic load part: amplitude sin(2 pi f (t - start)) from start to end."""
@@ -262,7 +271,7 @@ class ContactCase:
     @property
     def indenter_material(self) -> Optional[Material]: ...
     @property
-    def control(self) -> DisplacementControl | ForceControl | SpringControl | ImpactControl: ...
+    def control(self) -> _LoadControl: ...
     @property
     def history(self) -> Optional[list[tuple[float, float]]]: ...
     @property

@@ -39,7 +39,7 @@ rheology::Body compressible_body(rheology::ModelMaterial shear, std::optional<do
     if (K) {
         refuse_two_bulk_parts(prefix, true, bulk.has_value(), format_value(*K));
         require_bulk_modulus(prefix, *K);
-        body.bulk = rheology::ModelMaterial{rheology::Rheology::elastic(*K), {.times_from_conversion = true}};
+        body.bulk = rheology::exact_material(rheology::Rheology::elastic(*K));
     } else {
         body.bulk = std::move(bulk);
     }

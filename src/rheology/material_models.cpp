@@ -12,6 +12,12 @@
 
 namespace mdr::rheology {
 namespace {
+// A file named by a model's key: relative to a case's `directory` (ConversionOptions::directory; empty: the working
+// directory).
+std::filesystem::path found_path(const std::string& name, const std::string& directory) {
+    const std::filesystem::path path = name;
+    return path.is_relative() && !directory.empty() ? std::filesystem::path(directory) / path : path;
+}
 
 using Kind = ParameterKind;
 
@@ -21,12 +27,6 @@ ModelParameter modulus(std::string key, std::string documentation) {
 ModelParameter viscosity(std::string documentation) { return {"eta", Kind::number, "Pa s", std::move(documentation)}; }
 ModelParameter time(std::string key, std::string documentation) {
     return {std::move(key), Kind::number, "s", std::move(documentation)};
-}
-
-// The models of Table 1 are their own series: exact, no certificate; an elastic one has no time at all.
-ModelMaterial exact(Rheology series) {
-    const bool timeless = series.terms().empty() && series.viscosity() == 0.0;
-    return {std::move(series), {.times_from_conversion = timeless}};
 }
 
 std::vector<RelaxationTerm> relaxation_terms(const ModelParameters& p) {
@@ -61,9 +61,7 @@ ModelMaterial build_table(const ModelParameters& p, const ConversionOptions& opt
     if (sources != 1) throw InvalidInput("model", "\"table\"", rule);
     MaterialTable table;
     if (given("file")) {
-        std::filesystem::path path = p.texts.at("file");
-        if (path.is_relative() && !options.directory.empty()) path = std::filesystem::path(options.directory) / path;
-        table = read_material_table(path);
+        table = read_material_table(found_path(p.texts.at("file"), options.directory));
         for (const char* key : {"t", "omega"}) {
             if (given(key)) throw InvalidInput(key, "[...]", "not with file (the file holds the columns)");
         }
@@ -90,25 +88,25 @@ ModelMaterial build_table(const ModelParameters& p, const ConversionOptions& opt
 std::vector<MaterialModel> rows() {
     return {
         {"elastic", "G(t) = G", {modulus("G", "shear modulus")}, false,
-         [](const ModelParameters& p, const ConversionOptions&) { return exact(Rheology::elastic(p.number("G"))); }},
+         [](const ModelParameters& p, const ConversionOptions&) { return exact_material(Rheology::elastic(p.number("G"))); }},
         {"viscous", "G(t) = eta delta(t)", {viscosity("viscosity")}, false,
-         [](const ModelParameters& p, const ConversionOptions&) { return exact(Rheology::viscous(p.number("eta"))); }},
+         [](const ModelParameters& p, const ConversionOptions&) { return exact_material(Rheology::viscous(p.number("eta"))); }},
         {"kelvin_voigt", "G(t) = G + eta delta(t): a spring and a dashpot in parallel",
          {modulus("G", "spring modulus"), viscosity("dashpot viscosity")}, false,
          [](const ModelParameters& p, const ConversionOptions&) {
-             return exact(Rheology::kelvin_voigt(p.number("G"), p.number("eta")));
+             return exact_material(Rheology::kelvin_voigt(p.number("G"), p.number("eta")));
          }},
         {"maxwell", "G(t) = G exp(-t/tau): a spring and a dashpot in series",
          {modulus("G", "spring modulus"), time("tau", "relaxation time")}, false,
          [](const ModelParameters& p, const ConversionOptions&) {
-             return exact(Rheology::maxwell(p.number("G"), p.number("tau")));
+             return exact_material(Rheology::maxwell(p.number("G"), p.number("tau")));
          }},
         {"standard", "G(t) = G_inf + G1 exp(-t/tau1): the standard linear solid",
          {modulus("G_inf", "equilibrium modulus"), modulus("G1", "modulus of the Maxwell branch"),
           time("tau1", "relaxation time of the Maxwell branch")},
          false,
          [](const ModelParameters& p, const ConversionOptions&) {
-             return exact(Rheology::standard(p.number("G_inf"), p.number("G1"), p.number("tau1")));
+             return exact_material(Rheology::standard(p.number("G_inf"), p.number("G1"), p.number("tau1")));
          }},
         {"prony", "G(t) = G_inf + eta delta(t) + sum G_k exp(-t/tau_k): a Prony series (generalised Maxwell)",
          {modulus("G_inf", "equilibrium modulus (0 for a fluid)"),
@@ -116,7 +114,7 @@ std::vector<MaterialModel> rows() {
           {"eta", Kind::number, "Pa s", "viscosity of a dashpot in parallel", false, 0.0}},
          false,
          [](const ModelParameters& p, const ConversionOptions&) {
-             return exact(Rheology(p.number("G_inf"), p.number("eta"), relaxation_terms(p)));
+             return exact_material(Rheology(p.number("G_inf"), p.number("eta"), relaxation_terms(p)));
          }},
         {"power_law", "G(t) = G0 (t/t0)^(-beta): power-law rheology of cells and soft tissue, as a certified Prony series",
          {modulus("G0", "modulus at t = t0"),
@@ -168,6 +166,19 @@ std::string in_system(const UnitNames& unit_names, const std::string& si_unit) {
     return unit_names ? unit_names(si_unit) : si_unit;
 }
 
+// The model as given, its files named absolutely (as found from the case's directory), so that it converts again
+// from anywhere.
+ModelDefinition definition_of(const MaterialModel& model, ModelParameters parameters,
+                              const ConversionOptions& options) {
+    for (const ModelParameter& parameter : model.parameters) {
+        const auto name = parameters.texts.find(parameter.key);
+        if (parameter.unit != "path" || name == parameters.texts.end()) continue;
+        name->second = std::filesystem::absolute(found_path(name->second, options.directory)).string();
+    }
+    const auto tolerance = model.needs_window ? std::optional<double>(options.tolerance) : std::nullopt;
+    return {model.name, std::move(parameters), tolerance};
+}
+
 }  // namespace
 
 double ModelParameters::number(const std::string& key) const {
@@ -216,7 +227,13 @@ ModelMaterial build_material(const MaterialModel& model, const ModelParameters& 
     }
     ModelMaterial material = model.build(complete, options);
     material.origin.description = describe_model(model, complete, nullptr, options.unit_names);
+    material.definition = definition_of(model, parameters, options);
     return material;
+}
+
+ModelMaterial exact_material(Rheology series) {
+    const bool timeless = series.terms().empty() && series.viscosity() == 0.0;
+    return {std::move(series), {.times_from_conversion = timeless}};
 }
 
 std::string describe_model(const MaterialModel& model, const ModelParameters& parameters,

@@ -3,6 +3,7 @@ closed forms of Table 1, and the plots (headless)."""
 
 from __future__ import annotations
 
+import ast
 import csv
 import inspect
 import json
@@ -490,6 +491,29 @@ def test_stubs_list_every_public_binding():
         assert re.search(rf"\b(def|class) {name}\b|^{name}:", stub, re.M), f"{name} missing from _mdr.pyi"
     for name in (n for n in dir(mdr.Material) if not n.startswith("_")):
         assert re.search(rf"def {name}\b", stub), f"Material.{name} missing from _mdr.pyi"
+
+
+def test_the_package_exports_every_public_class_of_the_core_as_the_stub_lists_them():
+    """mdr exports _mdr.__all__ (every public name of the module, python/bindings/public_names.cpp) with no list of
+    its own, and the stub's __all__ is the module's: a class bound in C++ is exported, and one missing from the stub
+    fails here."""
+    stub = (pathlib.Path(mdr.__file__).parent / "_mdr.pyi").read_text()
+    listed = ast.literal_eval(re.search(r"^__all__ = (\[.*?\])", stub, re.M | re.S).group(1))
+    public = [name for name in vars(mdr._mdr) if not name.startswith("_")]
+    assert mdr._mdr.__all__ == public and sorted(listed) == sorted(public)
+    for name in public:
+        assert name in mdr.__all__ and getattr(mdr, name) is getattr(mdr._mdr, name)
+
+
+def test_the_stubs_load_controls_are_the_variants_alternatives():
+    """case.control gives one class per alternative of drivers::LoadControl (_mdr._load_controls, folded over the
+    variant: importing _mdr fails while one is not bound); the stub's _LoadControl names the same classes, and the
+    constructor's _Control adds the Shore test."""
+    stub = (pathlib.Path(mdr.__file__).parent / "_mdr.pyi").read_text()
+    union = re.search(r"^_LoadControl = (.*)$", stub, re.M).group(1)
+    assert [name.strip() for name in union.split("|")] == [cls.__name__ for cls in mdr._mdr._load_controls]
+    assert re.search(r"^_Control = _LoadControl \| ShoreTest$", stub, re.M)
+    assert re.search(r"def control\(self\) -> _LoadControl:", stub)
 
 
 def test_sweep_from_python(tmp_path):

@@ -142,3 +142,70 @@ def test_a_compressible_indenter_has_no_object_form_and_says_so():
     case = mdr.ContactCase.from_dict(as_dict(MAXWELL, dict(SPHERE, material=dict(model="elastic", G=5e8, K=1e9))))
     with pytest.raises(ValueError, match="^indenter.material: a compressible indenter"):
         case.indenter_material
+
+
+CONVERTED_CASES = {
+    "power law under force": """
+[material]
+model = "power_law"
+G0 = 2e3
+beta = 0.2
+[indenter]
+shape = "sphere"
+R = 1e-5
+[load]
+control = "force"
+history = [[0, 0], [1, 1e-8], [3, 1e-8]]
+""",
+    "fractional Maxwell with K, um-nN-s": """
+units = "um-nN-s"
+[material]
+model = "fractional_maxwell"
+G = 10.0
+c = 2.0
+alpha = 0.4
+K = 50.0
+tolerance = 1e-5
+[indenter]
+shape = "sphere"
+R = 5.0
+[load]
+control = "displacement"
+history = [[0, 0], [1, 0.5], [2, 0]]
+""",
+    "springpot on a power-law indenter": """
+[material]
+model = "springpot"
+c = 1e3
+alpha = 0.3
+[indenter]
+shape = "cone"
+half_angle_deg = 70
+[indenter.material]
+model = "power_law"
+G0 = 1e5
+beta = 0.05
+[load]
+control = "displacement"
+history = [[0, 0], [0.5, 1e-5]]
+""",
+}
+
+
+@pytest.mark.parametrize("text", CONVERTED_CASES.values(), ids=CONVERTED_CASES.keys())
+def test_a_converted_material_of_a_case_file_rebuilds_with_its_origin(tmp_path, text):
+    """A model converted to a series over the case's window reads back as an mdr.ConvertedMaterial with the file's
+    certificate and definition, so the rebuilt case has the file's origin: its default time step (a series of a
+    continuous spectrum sets none; an elastic body, no time at all, neither), its summary's material_error and
+    material_window and its description. Before, case.material was the bare series: 9878 steps for the file's 2322
+    (power law), no certificate in summary.json; and an elastic K read back as a body with times."""
+    path = tmp_path / "case.toml"
+    path.write_text(text)
+    from_file = mdr.ContactCase.from_file(str(path))
+    assert isinstance(from_file.material, mdr.ConvertedMaterial)
+    assert from_file.material.material_window == from_file.material_window
+    expected = mdr.run(str(path))
+    rebuilt = mdr.run(mdr.ContactCase(**parts(from_file)))
+    assert_same_outputs(expected, rebuilt)
+    assert rebuilt.description == expected.description
+    assert rebuilt.summary["material_window"] == expected.summary["material_window"]

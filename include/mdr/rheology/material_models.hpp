@@ -64,11 +64,26 @@ struct ConversionOptions {
     UnitNames unit_names{};                    ///< the units of the description (empty: SI)
 };
 
+/// A model as given to build_material: what a converted series stands for, so that the series can be described
+/// again in another case's units and the model converted again over another case's window (mdr.ConvertedMaterial,
+/// also as read back from a case's body).
+struct ModelDefinition {
+    std::string model;                ///< the row's name (`model = "name"`)
+    ModelParameters parameters;       ///< the values given, a file named absolutely (ConversionOptions::directory)
+    std::optional<double> tolerance;  ///< ConversionOptions::tolerance of a model converted over a window; else none
+};
+
 /// What a factory builds.
 struct ModelMaterial {
     Rheology series;       ///< what the solver uses
     MaterialOrigin origin; ///< what it stands for
+    /// The model given to build_material; none for a material built otherwise (exact_material, a combination).
+    std::optional<ModelDefinition> definition{};
 };
+
+/// `series` as its own model (the models of Table 1, a plain mdr.Material): exact, no certificate, and with
+/// MaterialOrigin::times_from_conversion when it has no time at all (no terms, no dashpot: elastic).
+ModelMaterial exact_material(Rheology series);
 
 /// One row of the table.
 struct MaterialModel {

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <set>
 
 #include "mdr/error.hpp"
@@ -66,6 +68,41 @@ TEST(MaterialModels, ErrorsNameTheKey) {
     const ModelMaterial built = build_material(material_model("power_law"), power, {TimeWindow{1e-3, 1.0}});
     ASSERT_TRUE(built.origin.certificate.has_value());
     EXPECT_EQ(built.origin.description, "power_law (G0 = 1000 Pa, beta = 0.3, t0 = 1 s)");  // t0 by default
+}
+
+// The definition a built material keeps (what mdr.ContactCase's ConvertedMaterial reads back, issue 27): the row's
+// name, the values as given (no defaults added), a windowed model's tolerance, and a table's file named absolutely
+// from the case's directory, so that the model converts again from anywhere.
+TEST(MaterialModels, ABuiltMaterialKeepsItsDefinition) {
+    ModelParameters power;
+    power.numbers = {{"G0", 1e3}, {"beta", 0.3}};
+    const ModelMaterial built = build_material(material_model("power_law"), power, {TimeWindow{1e-3, 1.0}, 1e-5});
+    ASSERT_TRUE(built.definition.has_value());
+    EXPECT_EQ(built.definition->model, "power_law");
+    EXPECT_EQ(built.definition->parameters.numbers, power.numbers);  // t0 not added
+    EXPECT_EQ(built.definition->tolerance, 1e-5);
+
+    const auto directory = std::filesystem::temp_directory_path() / "mdr_material_definition_test";
+    std::filesystem::create_directories(directory);
+    std::ofstream(directory / "master.csv") << "t,G\n0.01,3e6\n0.1,2e6\n1,1.2e6\n";
+    ModelParameters table;
+    table.texts = {{"file", "master.csv"}};
+    const ModelMaterial from_file = build_material(material_model("table"), table, {{}, 1e-4, directory.string()});
+    ASSERT_TRUE(from_file.definition.has_value());
+    EXPECT_EQ(from_file.definition->parameters.texts.at("file"),
+              std::filesystem::absolute(directory / "master.csv").string());
+    EXPECT_FALSE(from_file.definition->tolerance.has_value());  // a table takes no tolerance
+    std::filesystem::remove_all(directory);
+}
+
+// A series as its own model: no certificate, no definition, and times from a conversion only when it has no time at
+// all (the default time step then ignores none of its times, resolve_numerics).
+TEST(MaterialModels, AnExactMaterialHasTimesOfItsOwnUnlessElastic) {
+    EXPECT_TRUE(exact_material(Rheology::elastic(1e6)).origin.times_from_conversion);
+    EXPECT_FALSE(exact_material(Rheology::kelvin_voigt(1e6, 1e3)).origin.times_from_conversion);
+    const ModelMaterial standard = exact_material(Rheology::standard(1e6, 2e6, 0.1));
+    EXPECT_FALSE(standard.origin.times_from_conversion);
+    EXPECT_FALSE(standard.origin.certificate.has_value() || standard.definition.has_value());
 }
 
 }  // namespace
