@@ -141,8 +141,7 @@ LayerContact::Solution LayerContact::solve(double contact_radius) const {
     solution.unit_depth = root_weight;
     solution.profile.resize(nodes);
     for (std::size_t i = 0; i < nodes; ++i) solution.profile[i] = root_weight[i] * indenter_->equivalent(x[i]);
-    numerics::cholesky_solve(matrix, nodes, solution.unit_depth);
-    numerics::cholesky_solve(matrix, nodes, solution.profile);
+    numerics::cholesky_solve(matrix, nodes, solution.unit_depth, solution.profile);
     for (std::size_t i = 0; i < nodes; ++i) {
         solution.unit_depth[i] /= root_weight[i];
         solution.profile[i] /= root_weight[i];
