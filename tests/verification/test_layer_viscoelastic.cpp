@@ -197,7 +197,8 @@ TEST(LayerViscoelastic, AHeldDepthThatTheRecoveringSurfaceReachesAgainTouchesWhe
 // nodes in ascending order, then at the contact's edge, so a solve starts where x falls below the previous call's.
 class SolveCountingProfile : public mdr::profile::Profile {
 public:
-    explicit SolveCountingProfile(std::shared_ptr<const mdr::profile::Profile> profile) : profile_(std::move(profile)) {}
+    explicit SolveCountingProfile(std::shared_ptr<const mdr::profile::Profile> profile)
+        : profile_(std::move(profile)) {}
     double gap(double r) const override { return profile_->gap(r); }
     double equivalent(double x) const override {
         if (x < last_) ++solves_;
@@ -225,7 +226,7 @@ TEST(LayerViscoelastic, ThinFilmLoadUnloadSolvesTheContactAboutOnceAStep) {
     // Issue 28's thin film (docs/performance.md): a colloidal probe on a bonded layer, a/h up to 19, ramp, hold,
     // unload. Each step that moves the depth solves the contact at one depth (the loading's, or Ting's d(t1) while it
     // recedes): started from the radii of the steps around that depth, one solve meets the depth's tolerance
-    // (1e-8 of d) at most steps; from the last radius alone (a ~ sqrt(d)) it took 2.5 solves a step.
+    // (1e-8 of d) at most steps (1.25 a step); from the last radius alone (a ~ sqrt(d)) it took 3.6.
     auto contact_case = mdr::io::parse_case(R"(
 [material]
 model = "prony"
@@ -249,7 +250,7 @@ interface = "bonded"
         if (result.radius[i] > 0.0 && result.depth[i] != result.depth[i - 1]) ++moving;
     }
     EXPECT_GT(moving, 900u);  // the contact is lost at t ~ 2.5 s
-    EXPECT_LT(static_cast<double>(counting->solves()), 1.3 * static_cast<double>(moving)) << counting->solves();
+    EXPECT_LT(static_cast<double>(counting->solves()), 1.5 * static_cast<double>(moving)) << counting->solves();
     // Each loading row at its depth, solved afresh: both radii meet the depth to 1e-8 of d, so each other to ~1e-8.
     const mdr::contact::LayerContact layer(*contact_case.layer, 0.5, contact_case.indenter, 30e-6);
     for (const std::size_t row : {std::size_t{100}, std::size_t{400}, std::size_t{666}}) {
