@@ -16,18 +16,34 @@ constexpr double wavenumber_cutoff = 24.0;
 // Table spacing in eta: the Hermite cubic's error, spacing^4 / 384 max|k''''| with max|k''''| <= int u^4 (1 - L),
 // stays below 1e-9 of k(0) (checked against adaptive quadrature in tests/unit/contact/layer_test.cpp).
 constexpr double table_spacing = 0.02;
-// Gauss points per panel of the quadrature in u; a panel spans at most a quarter period of cos(u max_eta).
-constexpr std::size_t panel_points = 8;
+// Panels of the quadrature in u on [0, wavenumber_cutoff] (48), and the fewest Gauss points on one.
+constexpr double panel_width = 0.5;
+constexpr std::size_t min_panel_points = 8;
+// Lanes of the table's rotations (tabulate): each panel's Gauss points are a multiple of it.
+constexpr std::size_t lanes = 4;
+
+// The Gauss points per panel that integrate D(u) cos(u eta) for every |eta| <= max_eta to round-off: the fewest (a
+// multiple of lanes, at least min_panel_points) whose error bound w^(2n+1) (n!)^4 / ((2n+1) ((2n)!)^3) max|f^(2n)|
+// (Abramowitz & Stegun 25.4.30 on a panel of width w), with |f^(2n)| <= max_eta^(2n) (0 <= D <= 1; D's own
+// variation, on scales of u ~ 1, is what min_panel_points resolve), is below 1e-19 per panel. At max_eta = 120 it
+// takes 36 points a panel, where a quarter period of cos(u max_eta) per 8-point panel took 306.
+std::size_t panel_points(double max_eta) {
+    std::size_t points = min_panel_points;
+    const auto log_bound = [&](double n) {
+        return (2.0 * n + 1.0) * std::log(panel_width) + 4.0 * std::lgamma(n + 1.0) - std::log(2.0 * n + 1.0) -
+               3.0 * std::lgamma(2.0 * n + 1.0) + 2.0 * n * std::log(max_eta);
+    };
+    while (log_bound(static_cast<double>(points)) > std::log(1e-19)) points += lanes;
+    return points;
+}
 
 // values[j] = k(j spacing) = sum_n weighted_defect[n] cos(u_n j spacing) and slopes[j] = k'(j spacing), the
 // quadrature of eq. L4 and its derivative. cos(u eta_j) and sin(u eta_j) by rotating with exp(i u spacing) from
 // eta = 0 (rounding grows ~j 1e-16), four nodes at a time: four independent rotations per step of j (the rotation of
 // one node is a chain of dependent multiplications), and values and slopes read and written once per four nodes.
-// The node count is a multiple of four (whole panels of panel_points).
+// The node count is a multiple of lanes (whole panels of panel_points).
 void tabulate(const std::vector<double>& nodes, const std::vector<double>& weighted_defect, double spacing,
               std::vector<double>& values, std::vector<double>& slopes) {
-    constexpr std::size_t lanes = 4;
-    static_assert(panel_points % lanes == 0);
     for (std::size_t first = 0; first < nodes.size(); first += lanes) {
         double step_cos[lanes], step_sin[lanes], cosine[lanes], sine[lanes], weight[lanes], slope_weight[lanes];
         for (std::size_t l = 0; l < lanes; ++l) {
@@ -89,21 +105,21 @@ LayerKernel::LayerKernel(LayerInterface interface, double poisson_ratio, double 
     if (!(poisson_ratio > -1.0 && poisson_ratio <= 0.5)) {  // K > 0 and G > 0
         throw InvalidInput("layer.poisson_ratio", format_value(poisson_ratio), "must be in (-1, 0.5]");
     }
-    const double panel_width = std::min(0.5, 0.25 * 2.0 * 3.141592653589793 / max_eta);
     const auto panels = static_cast<std::size_t>(std::ceil(wavenumber_cutoff / panel_width));
     const double width = wavenumber_cutoff / static_cast<double>(panels);
-    const numerics::GaussRule rule = numerics::make_gauss_rule(panel_points);
+    const auto points = static_cast<std::size_t>(std::ceil(max_eta / table_spacing)) + 1;
+    const std::size_t points_per_panel = panel_points(table_spacing * static_cast<double>(points - 1));
+    const numerics::GaussRule rule = numerics::make_gauss_rule(points_per_panel);
     std::vector<double> nodes, weighted_defect;
-    nodes.reserve(panels * panel_points);
-    weighted_defect.reserve(panels * panel_points);
+    nodes.reserve(panels * points_per_panel);
+    weighted_defect.reserve(panels * points_per_panel);
     for (std::size_t panel = 0; panel < panels; ++panel) {
-        for (std::size_t i = 0; i < panel_points; ++i) {
+        for (std::size_t i = 0; i < points_per_panel; ++i) {
             const double u = width * (static_cast<double>(panel) + rule.nodes[i]);
             nodes.push_back(u);
             weighted_defect.push_back(width * rule.weights[i] * layer_compliance_defect(interface, poisson_ratio, u));
         }
     }
-    const auto points = static_cast<std::size_t>(std::ceil(max_eta / table_spacing)) + 1;
     std::vector<double> values(points, 0.0), slopes(points, 0.0);
     tabulate(nodes, weighted_defect, table_spacing, values, slopes);
     // The cubic Hermite polynomial on [eta_j, eta_j+1] in t = eta / spacing - j from the values v and the slopes

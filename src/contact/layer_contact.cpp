@@ -16,6 +16,47 @@
 
 namespace mdr::contact {
 
+namespace {
+
+// The contact radius at `depth` from the equilibria `nearby`: a^2 interpolated in d (Neville) through the last
+// nearest_points of them with distinct depths inside the prepared range (a profile touching at a point has a^2 ~ d
+// near the touch, a sphere on the half-space a^2 = R d exactly: a^2 is smoother in d than a). A single one is
+// joined by the touch (d, a) = (0, 0); none gives 0. `nearest` is the one closest in depth (none: radius 0).
+constexpr std::size_t nearest_points = 4;
+
+double interpolated_radius(std::span<const LayerContactState> nearby, double depth, double max_contact_radius,
+                           LayerContactState& nearest) {
+    double depths[nearest_points], squares[nearest_points];
+    std::size_t count = 0;
+    for (std::size_t i = nearby.size(); i-- > 0 && count < nearest_points;) {
+        const LayerContactState& state = nearby[i];
+        if (!(state.contact_radius > 0.0 && state.contact_radius < max_contact_radius && state.depth > 0.0)) continue;
+        // Depths closer than 1e-6 of d would amplify the solves' tolerance (1e-8 of d) in the divided differences.
+        const bool distinct = std::none_of(depths, depths + count, [&](double taken) {
+            return std::abs(taken - state.depth) <= 1e-6 * depth;
+        });
+        if (!distinct) continue;
+        if (count == 0 || std::abs(state.depth - depth) < std::abs(nearest.depth - depth)) nearest = state;
+        depths[count] = state.depth;
+        squares[count++] = state.contact_radius * state.contact_radius;
+    }
+    if (count == 0) return 0.0;
+    if (count == 1) {
+        depths[1] = squares[1] = 0.0;
+        count = 2;
+    }
+    // Neville's scheme: squares[i] becomes the polynomial through points i .. i + level at `depth`.
+    for (std::size_t level = 1; level < count; ++level) {
+        for (std::size_t i = 0; i + level < count; ++i) {
+            squares[i] = ((depth - depths[i + level]) * squares[i] + (depths[i] - depth) * squares[i + 1]) /
+                         (depths[i] - depths[i + level]);
+        }
+    }
+    return squares[0] > 0.0 ? std::sqrt(squares[0]) : 0.0;
+}
+
+}  // namespace
+
 void check_layer_contact_radius(const Layer& layer, double largest_radius) {
     if (!(largest_radius <= max_layer_radius_over_thickness * layer.thickness)) {
         throw InvalidInput("layer.thickness", format_value(layer.thickness),
@@ -100,8 +141,7 @@ LayerContact::Solution LayerContact::solve(double contact_radius) const {
     solution.unit_depth = root_weight;
     solution.profile.resize(nodes);
     for (std::size_t i = 0; i < nodes; ++i) solution.profile[i] = root_weight[i] * indenter_->equivalent(x[i]);
-    numerics::cholesky_solve(matrix, nodes, solution.unit_depth);
-    numerics::cholesky_solve(matrix, nodes, solution.profile);
+    numerics::cholesky_solve(matrix, nodes, solution.unit_depth, solution.profile);
     for (std::size_t i = 0; i < nodes; ++i) {
         solution.unit_depth[i] /= root_weight[i];
         solution.profile[i] /= root_weight[i];
@@ -174,15 +214,20 @@ LayerContactState LayerContact::at_depth(double depth, double radius_hint) const
 }
 
 LayerContactState LayerContact::at_depth(double depth, const LayerContactState& near) const {
+    return at_depth(depth, std::span<const LayerContactState>(&near, 1));
+}
+
+LayerContactState LayerContact::at_depth(double depth, std::span<const LayerContactState> nearby) const {
     if (!(depth > 0.0)) return {};
     if (indenter_->is_flat_punch()) {
         const LayerContactState unit = at_radius(max_contact_radius_);
         return {unit.contact_radius, depth, depth * unit.force, unit.force};
     }
-    // Depth to 1e-8: the force to ~1.5e-8 (a sphere, F ~ d^1.5), below the default nodes' 1e-7; from a nearby
-    // solution the first regula falsi point often meets it (3.6 solves a step on average in a run).
+    // Depth to 1e-8: the force to ~1.5e-8 (a sphere, F ~ d^1.5), below the default nodes' 1e-7.
     const double value_tolerance = 1e-8 * depth;
-    if (near.contact_radius > 0.0 && std::abs(near.depth - depth) <= value_tolerance) return near;
+    for (const LayerContactState& state : nearby) {
+        if (state.contact_radius > 0.0 && std::abs(state.depth - depth) <= value_tolerance) return state;
+    }
     // depth(a) - d is increasing in a with depth(0) = 0; continued linearly outside (0, max_contact_radius] so that
     // the shared root finder may bracket it from the start.
     LayerContactState last, widest;
@@ -201,19 +246,33 @@ LayerContactState LayerContact::at_depth(double depth, const LayerContactState& 
         last = widest;
         return widest.depth - depth + (a - max_contact_radius_);
     };
-    double start = 0.5 * max_contact_radius_, step = 0.25 * max_contact_radius_;
-    const bool nearby = near.contact_radius > 0.0 && near.contact_radius < max_contact_radius_ && near.depth > 0.0;
-    if (nearby) start = near.contact_radius * std::sqrt(depth / near.depth);  // a sphere's a ~ sqrt(d)
-    const double f_start = residual(start);
-    if (nearby && f_start != near.depth - depth) {
-        // 1.5 times the secant's correction through the nearby solution and the start: the bracket closes at the
-        // first try, and regula falsi is then nearly exact.
-        const double secant = f_start * (start - near.contact_radius) / (f_start - (near.depth - depth));
-        step = std::max(1.5 * std::abs(secant), 1e-9 * max_contact_radius_);
+    const auto found = [&](double radius) { return radius == last.contact_radius ? last : at_radius(radius); };
+    // From the interpolation through the nearby solutions (often within the tolerance at once: one solve a step),
+    // then the secant through the start and the nearest of them, then Illinois regula falsi bracketed by 1.5 times
+    // the last secant's correction.
+    LayerContactState nearest;
+    const double interpolated = interpolated_radius(nearby, depth, max_contact_radius_, nearest);
+    double start = interpolated > 0.0 ? std::min(interpolated, max_contact_radius_) : 0.5 * max_contact_radius_;
+    double f_start = residual(start);
+    if (std::abs(f_start) <= value_tolerance) return found(start);
+    double step = 0.25 * max_contact_radius_;
+    if (nearest.contact_radius > 0.0 && f_start != nearest.depth - depth) {
+        const double secant = f_start * (start - nearest.contact_radius) / (f_start - (nearest.depth - depth));
+        const double second = start - secant;
+        if (second > 0.0 && second < max_contact_radius_) {
+            const double f_second = residual(second);
+            if (std::abs(f_second) <= value_tolerance) return found(second);
+            step = f_second != f_start ? 1.5 * std::abs(f_second * (second - start) / (f_second - f_start))
+                                       : 1.5 * std::abs(secant);
+            start = second;
+            f_start = f_second;
+        } else {
+            step = 1.5 * std::abs(secant);
+        }
+        step = std::max(step, 1e-9 * max_contact_radius_);
     }
-    const double radius = numerics::monotone_root(residual, start, f_start, step, value_tolerance,
-                                                  1e-12 * max_contact_radius_, false);
-    return radius == last.contact_radius ? last : at_radius(radius);
+    return found(numerics::monotone_root(residual, start, f_start, step, value_tolerance,
+                                         1e-12 * max_contact_radius_, false));
 }
 
 }  // namespace mdr::contact

@@ -1,16 +1,26 @@
 #include "layer_stepping.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <span>
+#include <vector>
 
 #include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
 
 namespace mdr::drivers {
 
+namespace {
+
+// The loading steps whose equilibria start a growing step's solve (at most: a hold repeats one).
+constexpr std::size_t recent_steps = 8;
+
+}  // namespace
+
 LayerStepper::LayerStepper(const rheology::Rheology& material, const contact::LayerContact& layer,
                            double unit_modulus, double time, double largest_depth, const DashpotRate& dashpot)
     : material_(&material), layer_(&layer), unit_modulus_(unit_modulus), largest_depth_(largest_depth),
-      loading_(material, time),
+      loading_(material, time), loading_contacts_(1),
       current_{.time = time,
                .rate = dashpot.trapezoidal ? dashpot.start : std::nullopt,
                .elastic_force_rate = std::nullopt,
@@ -95,7 +105,13 @@ LayerStep LayerStepper::grow(double time, double depth) const {
     if (depth == current_.centre && current_.phase != LayerPhase::approach) {
         return grow_with(time, current_.contact, depth);  // a hold: the same equilibrium
     }
-    return grow_with(time, hint_ = layer_->at_depth(depth, hint_), depth);
+    // From the last loading steps' equilibria and the last one tried (the force-controlled driver tries depths ever
+    // closer to its root).
+    std::vector<contact::LayerContactState> nearby(
+        loading_contacts_.end() - static_cast<std::ptrdiff_t>(std::min(loading_contacts_.size(), recent_steps)),
+        loading_contacts_.end());
+    nearby.push_back(hint_);
+    return grow_with(time, hint_ = layer_->at_depth(depth, nearby), depth);
 }
 
 LayerStep LayerStepper::grow_to(double time, double stiffness, double right_side, double force_tolerance) const {
@@ -195,7 +211,13 @@ LayerStep LayerStepper::recede_at_rate(double time, double depth, double rate) c
     next.grows_again = next.position > steps || loading_.at(std::min(next.position, steps)).depth >
                                                     loading_.at(start).depth + 1e-9 * largest_depth_;
     next.position = std::min(next.position, steps);
-    next.contact = hint_ = layer_->at_depth(loading_.at(next.position).depth, hint_);
+    // From the loading steps' equilibria around t1 (two on either side: d(t1) lies between the middle two).
+    const auto node = static_cast<std::ptrdiff_t>(std::min(next.position, steps - 1.0));
+    const auto first = std::max<std::ptrdiff_t>(node - 1, 0);
+    const auto end = std::min<std::ptrdiff_t>(node + 3, static_cast<std::ptrdiff_t>(loading_contacts_.size()));
+    next.contact = hint_ = layer_->at_depth(
+        loading_.at(next.position).depth,
+        std::span<const contact::LayerContactState>(loading_contacts_.data() + first, loading_contacts_.data() + end));
     next.force = loading_.force(next.position, time, unit_modulus_ * next.contact.force);
     return next;
 }
@@ -219,10 +241,14 @@ LayerStep LayerStepper::recover(double time) const {
 }
 
 void LayerStepper::commit(const LayerStep& step) {
-    if (step.phase == LayerPhase::approach) loading_ = LoadingRecord(*material_, step.time);
+    if (step.phase == LayerPhase::approach) {
+        loading_ = LoadingRecord(*material_, step.time);
+        loading_contacts_.assign(1, {});
+    }
     previous_radius_ = current_.contact.contact_radius;
     if (step.phase == LayerPhase::growing) {
         loading_.append(step.time, step.centre, step.elastic_force, step.centre_branches, step.force_branches);
+        loading_contacts_.push_back(step.contact);
     }
     current_ = step;
 }

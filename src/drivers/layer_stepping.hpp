@@ -4,6 +4,7 @@
 // without changing the history (the force-controlled driver solves for the depth), then committed.
 
 #include <optional>
+#include <vector>
 
 #include "layer_receding.hpp"
 #include "mdr/contact/layer_contact.hpp"
@@ -101,6 +102,9 @@ private:
     double unit_modulus_;
     double largest_depth_;
     LoadingRecord loading_;
+    // The elastic equilibrium at each node of loading_ (none at its start): where the solves at a depth of the
+    // loading (Ting's d(t1)) start, interpolated between the nodes around it.
+    std::vector<contact::LayerContactState> loading_contacts_;
     LayerStep current_;
     double previous_radius_ = 0.0;  // the contact radius of the state before the current one
     bool trapezoidal_;              // the dashpot sees the trapezoidal rate of a solved depth

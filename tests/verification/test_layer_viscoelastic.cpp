@@ -5,13 +5,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <memory>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "lee_radok_ramp.hpp"
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
+#include "mdr/profile/profile.hpp"
 
 namespace {
 
@@ -185,6 +191,71 @@ TEST(LayerViscoelastic, AHeldDepthThatTheRecoveringSurfaceReachesAgainTouchesWhe
     };
     const double step = half_space.time[1] - half_space.time[0];
     EXPECT_NEAR(touches_again(on_layer), touches_again(half_space), 1.01 * step);
+}
+
+// The profile of another that counts the layer's contact solves: each evaluates the equivalent profile at its Gauss
+// nodes in ascending order, then at the contact's edge, so a solve starts where x falls below the previous call's.
+class SolveCountingProfile : public mdr::profile::Profile {
+public:
+    explicit SolveCountingProfile(std::shared_ptr<const mdr::profile::Profile> profile)
+        : profile_(std::move(profile)) {}
+    double gap(double r) const override { return profile_->gap(r); }
+    double equivalent(double x) const override {
+        if (x < last_) ++solves_;
+        last_ = x;
+        return profile_->equivalent(x);
+    }
+    double contact_radius(double depth) const override { return profile_->contact_radius(depth); }
+    double max_radius() const override { return profile_->max_radius(); }
+    bool is_flat_punch() const override { return profile_->is_flat_punch(); }
+    std::vector<double> kinks() const override { return profile_->kinks(); }
+    double flat_radius() const override { return profile_->flat_radius(); }
+    std::optional<double> power_law_exponent() const override { return profile_->power_law_exponent(); }
+    std::optional<double> tip_radius() const override { return profile_->tip_radius(); }
+    std::string describe() const override { return profile_->describe(); }
+    mdr::profile::ProfileDefinition definition() const override { return profile_->definition(); }
+    std::size_t solves() const { return solves_; }
+
+private:
+    std::shared_ptr<const mdr::profile::Profile> profile_;
+    mutable double last_ = 0.0;
+    mutable std::size_t solves_ = 0;
+};
+
+TEST(LayerViscoelastic, ThinFilmLoadUnloadSolvesTheContactAboutOnceAStep) {
+    // Issue 28's thin film (docs/performance.md): a colloidal probe on a bonded layer, a/h up to 19, ramp, hold,
+    // unload. Each step that moves the depth solves the contact at one depth (the loading's, or Ting's d(t1) while it
+    // recedes): started from the radii of the steps around that depth, one solve meets the depth's tolerance
+    // (1e-8 of d) at most steps (1.25 a step); from the last radius alone (a ~ sqrt(d)) it took 3.6.
+    auto contact_case = mdr::io::parse_case(R"(
+[material]
+model = "prony"
+G_inf = 300.0
+terms = [[700.0, 0.1], [400.0, 1.0]]
+[indenter]
+shape = "sphere"
+R = 500e-6
+[load]
+control = "displacement"
+history = [[0.0, 0.0], [1.0, 0.2e-6], [2.0, 0.2e-6], [3.0, 0.0]]
+[layer]
+thickness = 1e-6
+interface = "bonded"
+)");
+    const auto counting = std::make_shared<const SolveCountingProfile>(contact_case.indenter);
+    contact_case.indenter = counting;
+    const auto result = mdr::drivers::run_case(contact_case);
+    std::size_t moving = 0;  // steps in contact that change the depth
+    for (std::size_t i = 1; i < result.time.size(); ++i) {
+        if (result.radius[i] > 0.0 && result.depth[i] != result.depth[i - 1]) ++moving;
+    }
+    EXPECT_GT(moving, 900u);  // the contact is lost at t ~ 2.5 s
+    EXPECT_LT(static_cast<double>(counting->solves()), 1.5 * static_cast<double>(moving)) << counting->solves();
+    // Each loading row at its depth, solved afresh: both radii meet the depth to 1e-8 of d, so each other to ~1e-8.
+    const mdr::contact::LayerContact layer(*contact_case.layer, 0.5, contact_case.indenter, 30e-6);
+    for (const std::size_t row : {std::size_t{100}, std::size_t{400}, std::size_t{666}}) {
+        EXPECT_NEAR(result.radius[row] / layer.at_depth(result.depth[row]).contact_radius, 1.0, 2e-8) << row;
+    }
 }
 
 }  // namespace

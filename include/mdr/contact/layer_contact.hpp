@@ -74,6 +74,11 @@ public:
     /// previous step's; none: from max_contact_radius / 2). Throws mdr::InvalidInput (key `layer`) when the
     /// contact would grow beyond max_contact_radius.
     LayerContactState at_depth(double depth, const LayerContactState& near) const;
+    /// As above, from the equilibria `nearby` solved before (such as the last steps', or the loading steps around
+    /// d; their order the caller's, the last preferred): the start is a^2 interpolated in d through up to four of
+    /// them with distinct depths (one: a^2 ~ d, a sphere's), so that one solve often meets the tolerance; then the
+    /// secant through the start and the one nearest in depth, then regula falsi.
+    LayerContactState at_depth(double depth, std::span<const LayerContactState> nearby) const;
     /// As above, near the solution whose contact radius is `radius_hint` (> 0; else from max_contact_radius / 2).
     LayerContactState at_depth(double depth, double radius_hint = 0.0) const;
     /// The line loads and the transformed surface of `state` (an equilibrium of at_radius or at_depth: its contact

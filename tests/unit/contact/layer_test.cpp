@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <utility>
 
 #include "mdr/contact/layer.hpp"
 
@@ -67,6 +68,26 @@ TEST(LayerKernel, WideTableMatchesAdaptiveQuadrature) {
     EXPECT_NEAR(kernel(0.0), k0, 1e-9 * k0);
     for (std::size_t i = 0; i < eta.size(); ++i) {
         EXPECT_NEAR(kernel(eta[i]), expected[i], 1e-9 * k0) << "eta " << eta[i];
+    }
+}
+
+// The widest table a case may prepare (contacts of up to 100 thicknesses: eta = (x + s)/h up to 200), whose quadrature
+// in u takes the Gauss points per panel of its error bound (layer.cpp, panel_points: 36 at max_eta 120): at table
+// nodes, where no interpolation enters, against scipy's quad of eq. L4 with weight cos (QAWO on [0, 40], epsabs
+// 1e-15), to round-off.
+TEST(LayerKernel, WidestTableIsTheQuadratureToRoundOff) {
+    constexpr std::array<double, 5> eta{0.0, 20.0, 100.3, 150.7, 199.9};
+    const std::array<std::pair<LayerInterface, std::array<double, 5>>, 2> cases{{
+        {LayerInterface::bonded, {1.7702167733659795, -2.7944632768574316e-05, -3.966610577304207e-08,
+                                  -7.767784840635497e-09, -2.507267370106996e-09}},
+        {LayerInterface::sliding, {1.1675768374043443, 0.0012499787480474295, 4.9701343309550226e-05,
+                                   2.2016257571455728e-05, 1.2512509360356185e-05}},
+    }};
+    for (const auto& [interface, expected] : cases) {
+        const LayerKernel kernel(interface, 0.5, 200.0);
+        for (std::size_t i = 0; i < eta.size(); ++i) {
+            EXPECT_NEAR(kernel(eta[i]), expected[i], 1e-13 * expected[0]) << "eta " << eta[i];
+        }
     }
 }
 
