@@ -272,9 +272,9 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     dashpot_gain_ = (start_rate ? 2.0 : 1.0) * dashpot;
     dashpot_offset_ = start_rate && time_step > 0.0 ? -viscosity * *start_rate : 0.0;
     // Where the indenter's rate breaks, a cell entering contact takes its own rate (solve_load), in a step with a
-    // start rate: one that starts in contact. A step from no contact keeps the indenter's secant rate in every cell:
-    // without the touch located inside it (as the half-space's spring control does) the cells' own rates made that
-    // step's depth 2 to 4 times further off (docs/theory.md).
+    // start rate (all but the step after one without contact). That step keeps the indenter's secant rate in every
+    // cell: without the touch located inside it (as the half-space's spring control does) the cells' own rates put
+    // its depth about twice as far off (docs/theory.md, "A parallel dashpot on the cells").
     const bool trapezoidal = start_rate && time_step > 0.0;
     entering_from_ = rate_at_entry == foundation::RateAtEntry::breaks && trapezoidal ? contact_ : cells_;
     // The kept cells (keep) step here; the others, free from the start and not yet needed, later (catch_up).

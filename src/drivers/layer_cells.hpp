@@ -63,8 +63,8 @@ public:
     /// (foundation::RateAtEntry::breaks: the massless indenter's rate breaks there), the trapezoidal rate of its own
     /// motion from its own start rate, the law it was stepped by while free, so that its line load grows from zero
     /// and F(d) is continuous; the rate carried on is then the one that keeps the force the contact's dashpots
-    /// carried. A step from no contact keeps the indenter's secant rate in every cell. With a dashpot a step of no
-    /// duration in contact (a jump) throws mdr::InvalidInput (key `material.eta`).
+    /// carried. The step after one without contact keeps the indenter's secant rate in every cell. With a dashpot a
+    /// step of no duration in contact (a jump) throws mdr::InvalidInput (key `material.eta`).
     LayerCellState step_loaded(double time_step, double right_side, double spring_constant, double base);
 
     /// The cells' width dx [m]: cell i is centred at (i + 1/2) dx.
@@ -136,7 +136,7 @@ private:
     double dashpot_gain_ = 0.0;    // eta/dt times 2 (trapezoidal) or 1 (secant): the contact's dashpot per dd
     double dashpot_offset_ = 0.0;  // -eta rate0 (trapezoidal) or 0
     // Cells [entering_from_, contact) of a trial set entered contact in the step and take the free law (their own
-    // rate, RateAtEntry::breaks in a step that starts in contact: the committed contact's count), else cells_.
+    // rate, RateAtEntry::breaks in a step with a start rate: the committed contact's count), else cells_.
     std::size_t entering_from_ = 0;
     std::vector<double> relaxed_, free_relaxed_, trial_load_, trial_displacement_, trial_stress_;
     std::vector<bool> tried_;                      // the contact sets tried in a step
