@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "drivers/layer_cells.hpp"
@@ -42,9 +43,8 @@ TEST(LayerCells, ALiftOffIsLocatedInsideTheStep) {
 
 TEST(LayerCells, WithADashpotTheSolvedDepthIsContinuousAndMonotoneInTheForceAcrossAnEntry) {
     // A Kelvin-Voigt sphere on a bonded layer under force control: from one state, the next step's depth for forces
-    // on a fine grid across the entry of several cells. More force presses deeper (the elements' forces all grow
-    // with the depth), continuously: an entering cell's line load grows from zero where the indenter meets its free
-    // surface. With the indenter's rate in the entering cell's dashpot F(d) jumped up there by that dashpot's part,
+    // on a fine grid across the entry of several cells. More force presses deeper (F(d) grows on every contact
+    // set), continuously: an entering cell's line load grows from zero where the indenter meets its free surface. With the indenter's rate in the entering cell's dashpot F(d) jumped up there by that dashpot's part,
     // and the solved depth fell back as the force crossed the jump (by 0.44 nm, 16 % of the rise over the grid).
     const auto material = mdr::rheology::Rheology::kelvin_voigt(1.0e3, 50.0);
     const auto sphere = mdr::profile::make_sphere(1.0e-5);
@@ -52,14 +52,15 @@ TEST(LayerCells, WithADashpotTheSolvedDepthIsContinuousAndMonotoneInTheForceAcro
     const double time_step = 1.0e-3;
     for (int n = 1; n <= 20; ++n) static_cast<void>(cells.step_loaded(time_step, 5.0e-10 * n, 0.0, 0.0));
     std::vector<double> depths;
-    const int samples = 2000;
-    for (int j = 0; j <= samples; ++j) {
+    const std::size_t samples = 2000;
+    for (std::size_t j = 0; j <= samples; ++j) {
         auto trial = cells;  // the same state for every force
-        depths.push_back(trial.step_loaded(time_step, 1.0e-8 + 1.0e-8 * j / samples, 0.0, 0.0).depth);
+        const double force = 1.0e-8 * (1.0 + static_cast<double>(j) / static_cast<double>(samples));
+        depths.push_back(trial.step_loaded(time_step, force, 0.0, 0.0).depth);
     }
-    const double mean_increment = (depths.back() - depths.front()) / samples;
+    const double mean_increment = (depths.back() - depths.front()) / static_cast<double>(samples);
     double smallest = mean_increment, largest = 0.0;
-    for (int j = 0; j < samples; ++j) {
+    for (std::size_t j = 0; j < samples; ++j) {
         smallest = std::min(smallest, depths[j + 1] - depths[j]);
         largest = std::max(largest, depths[j + 1] - depths[j]);
     }
