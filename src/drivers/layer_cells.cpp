@@ -129,6 +129,9 @@ LayerCellState LayerCells::step(double time_step, double depth, std::optional<do
 }
 
 LayerCellState LayerCells::step_loaded(double time_step, double right_side, double spring_constant, double base) {
+    if (!(time_step > 0.0) && contact_ > 0 && material_->viscosity() > 0.0) {
+        return jump(right_side - spring_constant * depth_);
+    }
     // F(d) + k d = right side. On a contact set q is affine in d (eq. L17, L18): q(d) = q(0) + d slope u, u the
     // solution for Q = 4 on the set (unit_load) and slope = d(Q/4)/dd there, so F = F(0) + d slope 2 dx sum u.
     // Without contact F = 0: a spring's indenter hangs at its base; under force control it rests on the free
@@ -157,6 +160,43 @@ LayerCellState LayerCells::step_loaded(double time_step, double right_side, doub
     };
     return advance(time_step, load_for, spring_constant == 0.0 && right_side > 0.0, rate_,
                    foundation::RateAtEntry::breaks);
+}
+
+LayerCellState LayerCells::jump(double force) {
+    // A dashpot does not move in no time: the depth and every cell's w1 and branches stay, and each cell in contact
+    // follows the indenter, so the contact's dashpots take the force's change at one change of the indenter's rate,
+    // Q/4 += eta dr on the set, q += eta dr u (unit_load), dF = eta dr 2 dx sum u (the half-space's dF = 8 dx eta n
+    // dr where K = 0, u = 4). The free cells' Q = ((I - K) q)_i follows q at once (their rates jump), every cell's:
+    // the cells not stepped yet are stepped up to now first, and every cell is stepped from here on.
+    const double viscosity = material_->viscosity();
+    const auto& unit = unit_load(contact_);
+    double current = 0.0, per_rate = 0.0;
+    for (std::size_t i = 0; i < contact_; ++i) {
+        current += 2.0 * spacing_ * trial_load_[i];
+        per_rate += 2.0 * spacing_ * viscosity * unit[i];
+    }
+    const double rate_change = (force - current) / per_rate;
+    for (std::size_t i = 0; i < contact_; ++i) {
+        if (trial_load_[i] + viscosity * rate_change * unit[i] < 0.0) {
+            throw InvalidInput("material.eta", format_value(viscosity),
+                               "a jump of the force down to " + format_value(force) +
+                                   " N in contact pulls the contact's edge off at once against a parallel dashpot, "
+                                   "which is not built on a [layer] yet (issue 28)");
+        }
+    }
+    catch_up(cells_);
+    for (std::size_t i = 0; i < contact_; ++i) {
+        trial_load_[i] += viscosity * rate_change * unit[i];
+        stress_[i] += viscosity * rate_change;
+    }
+    for (std::size_t i = contact_; i < cells_; ++i) {
+        const double load = numerics::dot_product(&operator_->matrix[i * cells_], trial_load_.data(), contact_);
+        stress_[i] = load / plane_modulus_per_shear;
+    }
+    if (rate_) *rate_ += rate_change;
+    last_.force = force;
+    last_.touching_part = {0.0, last_.touching ? 1.0 : 0.0};
+    return last_;
 }
 
 double LayerCells::regain_fraction(double time_step, double depth, double axis) const {
@@ -306,8 +346,8 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     }
     if (!(time_step > 0.0) && contact > 0 && material_->viscosity() > 0.0) {
         throw InvalidInput("material.eta", format_value(material_->viscosity()),
-                           "a jump of the load in contact against a parallel dashpot, with a contact that grows "
-                           "again, is not built on a [layer] yet (issue 28)");
+                           "a jump of the load onto the surface (nothing in contact before it) against a parallel "
+                           "dashpot, with a contact that grows again, is not built on a [layer] yet (issue 28)");
     }
     if (contact == cells_ && !flat_punch_) {
         throw InvalidInput("layer", "depth " + format_value(depth),
@@ -355,6 +395,7 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     }
     depth_ = depth;
     contact_ = contact;
+    last_ = state;
     return state;
 }
 

@@ -64,7 +64,9 @@ public:
     /// motion from its own start rate, the law it was stepped by while free, so that its line load grows from zero
     /// and F(d) is continuous; the rate carried on is then the one that keeps the force the contact's dashpots
     /// carried. The step after one without contact keeps the indenter's secant rate in every cell. With a dashpot a
-    /// step of no duration in contact (a jump) throws mdr::InvalidInput (key `material.eta`).
+    /// step of no duration in contact (a jump of the force) keeps the depth and every cell's w1, and the contact's
+    /// dashpots take the change at one rate (jump); it throws mdr::InvalidInput (key `material.eta`) where that
+    /// would pull the contact's edge off (a jump down) or where nothing was in contact before it.
     LayerCellState step_loaded(double time_step, double right_side, double spring_constant, double base);
 
     /// The cells' width dx [m]: cell i is centred at (i + 1/2) dx.
@@ -83,6 +85,9 @@ private:
     template <class LoadRule>
     LayerCellState advance(double time_step, const LoadRule& load_for, bool needs_contact,
                            std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry);
+    // A jump of the force to `force` [N] at the committed depth against a parallel dashpot, the contact's cells all
+    // in contact before it (step_loaded).
+    LayerCellState jump(double force);
     // eta times the indenter's rate at the step's end, at the end depth `depth` (eq. L16 in contact: w1 = d - g).
     double dashpot_stress(double depth) const;
     // eta dw1_i/dt at the committed node: Q_i/4 - (G_inf w1_i + sum_k G_k h_ki) (eq. L16).
@@ -125,6 +130,7 @@ private:
     std::size_t contact_ = 0;               // committed contact cells
     double depth_ = 0.0;                    // d, committed
     std::optional<double> rate_ = 0.0;      // dd/dt the dashpots saw at the committed node (solved depths)
+    LayerCellState last_;                   // the state after the last step
     double axis_weight_ = 0.0;              // lambda: the axis from the two innermost cells, linear in g
     double axis_ = 0.0;                     // the committed edge function at the axis (> 0: touching)
     // The step being solved: coefficients, the relaxed part of Q/4 per cell without the dashpot (in contact) and
