@@ -176,8 +176,8 @@ LayerCellState LayerCells::jump(double force) {
         per_rate += 2.0 * spacing_ * viscosity * unit[i];
     }
     const double rate_change = (force - current) / per_rate;
-    for (std::size_t i = 0; i < contact_; ++i) {
-        if (trial_load_[i] + viscosity * rate_change * unit[i] < 0.0) {
+    for (std::size_t i = 0; i < contact_; ++i) {  // a cell it pulls below zero (not one below it already)
+        if (trial_load_[i] >= 0.0 && trial_load_[i] + viscosity * rate_change * unit[i] < 0.0) {
             throw InvalidInput("material.eta", format_value(viscosity),
                                "a jump of the force down to " + format_value(force) +
                                    " N in contact pulls the contact's edge off at once against a parallel dashpot, "
