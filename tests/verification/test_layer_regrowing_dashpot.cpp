@@ -124,19 +124,20 @@ TEST(LayerRegrowingDashpot, AThickLayerMeetsTheHalfSpaceOnAReload) {
 TEST(LayerRegrowingDashpot, AThickLayerMeetsTheHalfSpaceUnderForceAndSpringControl) {
     // The depth of each step solved on the cells; the indenter's trapezoidal rate carried from step to step (the
     // secant rate for the step after one without contact), a cell entering a contact taking its own, as on the
-    // half-space (RateAtEntry::breaks). The standard solid with eta.
+    // half-space (RateAtEntry::breaks). The standard solid with eta. The first, third and fourth tolerances fail with
+    // the indenter's rate in an entering cell (observed below).
     const std::vector<std::pair<std::string, double>> loads = {
         {"control = \"force\"\nhistory = [[0.0, 0.0], [0.5, 3.0e-8], [0.75, 1.0e-8], [1.25, 3.0e-8], [2.0, 0.0]]\n",
-         1.2e-4},
+         4e-5},
         {"control = \"force\"\nhistory = [[0.0, 0.0], [0.5, 3.0e-8], [1.0, 0.0], [1.5, 0.0], [1.75, 2.0e-8], "
          "[2.0, 2.0e-8]]\n",
          5e-4},
         {"control = \"force\"\nhistory = [[0.0, 0.0], [0.5, 2.0e-8], [3.5, 2.0e-8]]\n"
          "harmonic = { amplitude = 1.0e-8, frequency = 2.0, start = 0.5, end = 3.5 }\n",
-         1e-4},
+         3.5e-5},
         {"control = \"spring\"\nspring_constant = 0.05\nhistory = [[0.0, 0.0], [0.5, 2.0e-6], [1.0, -0.5e-6], "
          "[1.25, -0.5e-6], [2.0, 2.0e-6]]\n",
-         2e-4}};
+         9e-5}};
     for (const auto& [load, tolerance] : loads) {
         const std::string text = "[material]\n" + standard_dashpot +
                                  "[indenter]\nshape = \"sphere\"\nR = 1.0e-5\n[load]\n" + load;
