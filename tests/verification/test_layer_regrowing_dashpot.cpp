@@ -1,6 +1,7 @@
 // A parallel dashpot on a layer whose contact grows again (docs/theory.md, "Layers", eq. L16 to L19 with eta): a very
 // thick layer against the half-space driver under a harmonic depth, a reload and a reloading force, for a
-// Kelvin-Voigt body and a standard solid with a dashpot, with the orders in the cell and in the time step.
+// Kelvin-Voigt body and a standard solid with a dashpot, with the orders in the cell and in the time step; Kelvin-Voigt
+// creep on the cells through a force jump up against its closed form, and a jump down refused.
 
 #include <gtest/gtest.h>
 
