@@ -50,12 +50,34 @@ double LayerCells::dashpot_stress(double depth) const {
     return dashpot_gain_ * (depth - depth_) + dashpot_offset_;
 }
 
+double LayerCells::committed_dashpot_stress(std::size_t i) const {
+    const auto& terms = material_->terms();
+    const std::size_t branches = terms.size();
+    double elastic = material_->equilibrium_modulus() * displacement_[i];
+    for (std::size_t k = 0; k < branches; ++k) elastic += terms[k].modulus * branches_[i * branches + k];
+    return stress_[i] - elastic;
+}
+
+double LayerCells::force_keeping_rate(std::size_t contact) {
+    const auto& unit = unit_load(contact);
+    double weighted = 0.0, weights = 0.0;
+    for (std::size_t i = 0; i < contact; ++i) {
+        weighted += unit[i] * committed_dashpot_stress(i);
+        weights += unit[i];
+    }
+    return weighted / (weights * material_->viscosity());
+}
+
 void LayerCells::solve_load(std::size_t contact, double depth) {
-    // Inside: (I - K) q = Q = 4 (springs (d - g) + relaxed + eta rate) on the contact's cells (eq. L16 to L18; the
-    // dashpot sees the indenter's rate, w1 = d - g).
+    // Inside: (I - K) q = Q = 4 (springs (d - g) + relaxed + eta rate) on the contact's cells (eq. L16 to L18; w1 =
+    // d - g). The dashpot sees the indenter's rate, or, in a cell entering contact where that rate breaks, the
+    // trapezoidal rate of the cell's own motion from its own start rate: the law it was stepped by while free, Q/4 =
+    // free stiffness w1 + free relaxed, so that its q is zero where the indenter meets its free surface
+    // (docs/theory.md, "A parallel dashpot on the cells"). Its slope in d is the contact's, 2 eta/dt apart.
     const double dashpot = dashpot_stress(depth);
     for (std::size_t i = 0; i < contact; ++i) {
-        trial_stress_[i] = springs_ * (depth - profile_[i]) + relaxed_[i] + dashpot;
+        trial_stress_[i] = i < entering_from_ ? springs_ * (depth - profile_[i]) + relaxed_[i] + dashpot
+                                              : free_stiffness_ * (depth - profile_[i]) + free_relaxed_[i];
         trial_load_[i] = plane_modulus_per_shear * trial_stress_[i];
     }
     std::fill(trial_load_.begin() + static_cast<std::ptrdiff_t>(contact), trial_load_.end(), 0.0);
@@ -103,10 +125,13 @@ LayerCellState LayerCells::step(double time_step, double depth, std::optional<do
         solve_load(contact, depth);
         return depth;
     };
-    return advance(time_step, load_for, false, start_rate);
+    return advance(time_step, load_for, false, start_rate, foundation::RateAtEntry::continuous);
 }
 
 LayerCellState LayerCells::step_loaded(double time_step, double right_side, double spring_constant, double base) {
+    if (!(time_step > 0.0) && contact_ > 0 && material_->viscosity() > 0.0) {
+        return jump(right_side - spring_constant * depth_);
+    }
     // F(d) + k d = right side. On a contact set q is affine in d (eq. L17, L18): q(d) = q(0) + d slope u, u the
     // solution for Q = 4 on the set (unit_load) and slope = d(Q/4)/dd there, so F = F(0) + d slope 2 dx sum u.
     // Without contact F = 0: a spring's indenter hangs at its base; under force control it rests on the free
@@ -133,7 +158,45 @@ LayerCellState LayerCells::step_loaded(double time_step, double right_side, doub
         }
         return depth;
     };
-    return advance(time_step, load_for, spring_constant == 0.0 && right_side > 0.0, rate_);
+    return advance(time_step, load_for, spring_constant == 0.0 && right_side > 0.0, rate_,
+                   foundation::RateAtEntry::breaks);
+}
+
+LayerCellState LayerCells::jump(double force) {
+    // A dashpot does not move in no time: the depth and every cell's w1 and branches stay, and each cell in contact
+    // follows the indenter, so the contact's dashpots take the force's change at one change of the indenter's rate,
+    // Q/4 += eta dr on the set, q += eta dr u (unit_load), dF = eta dr 2 dx sum u (the half-space's dF = 8 dx eta n
+    // dr where K = 0, u = 4). The free cells' Q = ((I - K) q)_i follows q at once (their rates jump), every cell's:
+    // the cells not stepped yet are stepped up to now first, and every cell is stepped from here on.
+    const double viscosity = material_->viscosity();
+    const auto& unit = unit_load(contact_);
+    double current = 0.0, per_rate = 0.0;
+    for (std::size_t i = 0; i < contact_; ++i) {
+        current += 2.0 * spacing_ * trial_load_[i];
+        per_rate += 2.0 * spacing_ * viscosity * unit[i];
+    }
+    const double rate_change = (force - current) / per_rate;
+    for (std::size_t i = 0; i < contact_; ++i) {  // a cell it pulls below zero (not one below it already)
+        if (trial_load_[i] >= 0.0 && trial_load_[i] + viscosity * rate_change * unit[i] < 0.0) {
+            throw InvalidInput("material.eta", format_value(viscosity),
+                               "a jump of the force down to " + format_value(force) +
+                                   " N in contact pulls the contact's edge off at once against a parallel dashpot, "
+                                   "which is not built on a [layer] yet (issue 28)");
+        }
+    }
+    catch_up(cells_);
+    for (std::size_t i = 0; i < contact_; ++i) {
+        trial_load_[i] += viscosity * rate_change * unit[i];
+        stress_[i] += viscosity * rate_change;
+    }
+    for (std::size_t i = contact_; i < cells_; ++i) {
+        const double load = numerics::dot_product(&operator_->matrix[i * cells_], trial_load_.data(), contact_);
+        stress_[i] = load / plane_modulus_per_shear;
+    }
+    if (rate_) *rate_ += rate_change;
+    last_.force = force;
+    last_.touching_part = {0.0, last_.touching ? 1.0 : 0.0};
+    return last_;
 }
 
 double LayerCells::regain_fraction(double time_step, double depth, double axis) const {
@@ -143,15 +206,9 @@ double LayerCells::regain_fraction(double time_step, double depth, double axis) 
     // linear over the step; the free surface's penetration d - g - w1 is: at the step's start, and at its end as the
     // free surface would have been, w1 + dt rate0 (rate0 from its stress, eq. L16), both extrapolated to the axis
     // linearly in g (second order in the located time).
-    const auto& terms = material_->terms();
-    const std::size_t branches = terms.size();
     const auto at_axis = [&](auto&& value) { return value(0) + axis_weight_ * (value(1) - value(0)); };
     const double surface = at_axis([&](std::size_t i) { return profile_[i] + displacement_[i]; });
-    const double rate = at_axis([&](std::size_t i) {
-        double elastic = material_->equilibrium_modulus() * displacement_[i];
-        for (std::size_t k = 0; k < branches; ++k) elastic += terms[k].modulus * branches_[i * branches + k];
-        return (stress_[i] - elastic) / viscosity;
-    });
+    const double rate = at_axis([&](std::size_t i) { return committed_dashpot_stress(i) / viscosity; });
     const double start = depth_ - surface, end = depth - (surface + time_step * rate);
     return end > start ? std::clamp(start / (start - end), 0.0, 1.0) : 1.0;
 }
@@ -241,7 +298,7 @@ void LayerCells::keep(std::size_t count, double dashpot) {
 
 template <class LoadRule>
 LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, bool needs_contact,
-                                   std::optional<double> start_rate) {
+                                   std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry) {
     foundation::fill_step_coefficients(*material_, time_step, coefficients_);
     const double viscosity = material_->viscosity(), dashpot = time_step > 0.0 ? viscosity / time_step : 0.0;
     // Q/4 = G_inf w1 + sum_k G_k (E_k h_k + B_k (w1 - w1_old)) + eta dw1/dt = springs w1 + relaxed + eta dw1/dt
@@ -254,6 +311,12 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     free_compliance_ = 1.0 / free_stiffness_;
     dashpot_gain_ = (start_rate ? 2.0 : 1.0) * dashpot;
     dashpot_offset_ = start_rate && time_step > 0.0 ? -viscosity * *start_rate : 0.0;
+    // Where the indenter's rate breaks, a cell entering contact takes its own rate (solve_load), in a step with a
+    // start rate (all but the step after one without contact). That step keeps the indenter's secant rate in every
+    // cell: without the touch located inside it (as the half-space's spring control does) the cells' own rates put
+    // its depth about twice as far off (docs/theory.md, "A parallel dashpot on the cells").
+    const bool trapezoidal = start_rate && time_step > 0.0;
+    entering_from_ = rate_at_entry == foundation::RateAtEntry::breaks && trapezoidal ? contact_ : cells_;
     // The kept cells (keep) step here; the others, free from the start and not yet needed, later (catch_up).
     for (std::size_t i = 0; i < kept_; ++i) {
         prepare_cell(i, coefficients_.decay.data(), coefficients_.gain.data(), dashpot);
@@ -283,8 +346,8 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     }
     if (!(time_step > 0.0) && contact > 0 && material_->viscosity() > 0.0) {
         throw InvalidInput("material.eta", format_value(material_->viscosity()),
-                           "a jump of the load in contact against a parallel dashpot, with a contact that grows "
-                           "again, is not built on a [layer] yet (issue 28)");
+                           "a jump of the load onto the surface (nothing in contact before it) against a parallel "
+                           "dashpot, with a contact that grows again, is not built on a [layer] yet (issue 28)");
     }
     if (contact == cells_ && !flat_punch_) {
         throw InvalidInput("layer", "depth " + format_value(depth),
@@ -326,9 +389,13 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     if (time_step > 0.0) {  // the indenter's rate the dashpots saw; unknown after a step without contact
         const double secant = (depth - depth_) / time_step;
         rate_ = contact > 0 ? std::optional<double>(start_rate ? 2.0 * secant - *start_rate : secant) : std::nullopt;
+        // Cells that entered with their own rates: the next step starts with the force their dashpots carried (as
+        // the half-space's Foundation::contact_rate; on a layer each cell's part of F weighs by its unit load).
+        if (contact > entering_from_ && viscosity > 0.0) rate_ = force_keeping_rate(contact);
     }
     depth_ = depth;
     contact_ = contact;
+    last_ = state;
     return state;
 }
 

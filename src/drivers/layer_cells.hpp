@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "mdr/contact/layer.hpp"
+#include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/profile/profile.hpp"
 #include "mdr/rheology/rheology.hpp"
@@ -57,9 +58,15 @@ public:
     /// Steps by `time_step` >= 0 [s] to the depth at which F(d) + k d = `right_side` [N], k = `spring_constant` >= 0
     /// [N/m]: force control (k = 0, the force), or spring control (k z, z = `base` [m], where the indenter hangs
     /// without contact). Under force control at zero force the indenter rests on the free surface at the axis. A
-    /// parallel dashpot sees the indenter's trapezoidal rate, carried from step to step (from rest; the secant rate
-    /// for the step after one without contact). With a dashpot a step of no duration in contact (a jump) throws
-    /// mdr::InvalidInput (key `material.eta`).
+    /// parallel dashpot in contact sees the indenter's trapezoidal rate, carried from step to step (from rest; the
+    /// secant rate for the step after one without contact); a cell entering contact in the step sees its own
+    /// (foundation::RateAtEntry::breaks: the massless indenter's rate breaks there), the trapezoidal rate of its own
+    /// motion from its own start rate, the law it was stepped by while free, so that its line load grows from zero
+    /// and F(d) is continuous; the rate carried on is then the one that keeps the force the contact's dashpots
+    /// carried. The step after one without contact keeps the indenter's secant rate in every cell. With a dashpot a
+    /// step of no duration in contact (a jump of the force) keeps the depth and every cell's w1, and the contact's
+    /// dashpots take the change at one rate (jump); it throws mdr::InvalidInput (key `material.eta`) where that
+    /// would pull the contact's edge off (a jump down) or where nothing was in contact before it.
     LayerCellState step_loaded(double time_step, double right_side, double spring_constant, double base);
 
     /// The cells' width dx [m]: cell i is centred at (i + 1/2) dx.
@@ -74,12 +81,20 @@ public:
 private:
     // One step: `load_for(m)` solves q on the contact set [0, m) (solve_load) and gives its depth; `needs_contact`: a
     // force without contact. `start_rate`: the indenter's rate at the step's start that its dashpot term takes
-    // (trapezoidal), or none (the secant rate).
+    // (trapezoidal), or none (the secant rate); `rate_at_entry`: what a cell entering contact in the step sees.
     template <class LoadRule>
     LayerCellState advance(double time_step, const LoadRule& load_for, bool needs_contact,
-                           std::optional<double> start_rate);
+                           std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry);
+    // A jump of the force to `force` [N] at the committed depth against a parallel dashpot, the contact's cells all
+    // in contact before it (step_loaded).
+    LayerCellState jump(double force);
     // eta times the indenter's rate at the step's end, at the end depth `depth` (eq. L16 in contact: w1 = d - g).
     double dashpot_stress(double depth) const;
+    // eta dw1_i/dt at the committed node: Q_i/4 - (G_inf w1_i + sum_k G_k h_ki) (eq. L16).
+    double committed_dashpot_stress(std::size_t i) const;
+    // The rate [m/s] that, seen by every dashpot of the committed contact of `contact` cells, carries the force they
+    // carry (their rates weighted by the line load per unit Q/4, unit_load: F = 2 dx sum_i u_i Q_i/4).
+    double force_keeping_rate(std::size_t contact);
     // The fraction of a step of `time_step` [s] to `depth` [m] at which the axis touches again, the edge function at
     // the axis `axis` at its end (committed state: its start).
     double regain_fraction(double time_step, double depth, double axis) const;
@@ -115,6 +130,7 @@ private:
     std::size_t contact_ = 0;               // committed contact cells
     double depth_ = 0.0;                    // d, committed
     std::optional<double> rate_ = 0.0;      // dd/dt the dashpots saw at the committed node (solved depths)
+    LayerCellState last_;                   // the state after the last step
     double axis_weight_ = 0.0;              // lambda: the axis from the two innermost cells, linear in g
     double axis_ = 0.0;                     // the committed edge function at the axis (> 0: touching)
     // The step being solved: coefficients, the relaxed part of Q/4 per cell without the dashpot (in contact) and
@@ -125,6 +141,9 @@ private:
     double free_compliance_ = 0.0; // 1 / free_stiffness
     double dashpot_gain_ = 0.0;    // eta/dt times 2 (trapezoidal) or 1 (secant): the contact's dashpot per dd
     double dashpot_offset_ = 0.0;  // -eta rate0 (trapezoidal) or 0
+    // Cells [entering_from_, contact) of a trial set entered contact in the step and take the free law (their own
+    // rate, RateAtEntry::breaks in a step with a start rate: the committed contact's count), else cells_.
+    std::size_t entering_from_ = 0;
     std::vector<double> relaxed_, free_relaxed_, trial_load_, trial_displacement_, trial_stress_;
     std::vector<bool> tried_;                      // the contact sets tried in a step
     std::vector<std::vector<double>> unit_loads_;  // unit_load per contact set, empty until first needed

@@ -15,7 +15,7 @@ namespace mdr::drivers {
 /// [m]), on the half-space driver's time grid (its harmonic part added and its last full cycle measured as on the
 /// half-space, HarmonicOutcome). A parallel dashpot sees the indenter's rates as on the half-space (LayerCells).
 /// Throws mdr::InvalidInput naming key `layer` when the contact outgrows the range, `material.eta` for a jump of the
-/// load in contact against a dashpot.
+/// force against a dashpot that pulls the contact's edge off or lands on the surface (LayerCells::step_loaded).
 IndentationResult run_layer_regrowing(const ContactCase& contact_case, double largest_radius,
                                       const ProgressObserver& progress, const StepObservers& observers = {});
 

@@ -1,6 +1,7 @@
 // A parallel dashpot on a layer whose contact grows again (docs/theory.md, "Layers", eq. L16 to L19 with eta): a very
 // thick layer against the half-space driver under a harmonic depth, a reload and a reloading force, for a
-// Kelvin-Voigt body and a standard solid with a dashpot, with the orders in the cell and in the time step.
+// Kelvin-Voigt body and a standard solid with a dashpot, with the orders in the cell and in the time step; Kelvin-Voigt
+// creep on the cells through a force jump up against its closed form, and a jump down refused.
 
 #include <gtest/gtest.h>
 
@@ -12,7 +13,10 @@
 
 #include <fmt/format.h>
 
+#include "mdr/contact/layer_contact.hpp"
+#include "mdr/drivers/indentation.hpp"
 #include "mdr/error.hpp"
+#include "mdr/io/case_file.hpp"
 #include "run_case.hpp"
 
 namespace mdr {
@@ -120,19 +124,21 @@ TEST(LayerRegrowingDashpot, AThickLayerMeetsTheHalfSpaceOnAReload) {
 
 TEST(LayerRegrowingDashpot, AThickLayerMeetsTheHalfSpaceUnderForceAndSpringControl) {
     // The depth of each step solved on the cells; the indenter's trapezoidal rate carried from step to step (the
-    // secant rate for the step after one without contact), as on the half-space. The standard solid with eta.
+    // secant rate for the step after one without contact), a cell entering a contact taking its own, as on the
+    // half-space (RateAtEntry::breaks). The standard solid with eta. The first, third and fourth tolerances fail with
+    // the indenter's rate in an entering cell (observed below).
     const std::vector<std::pair<std::string, double>> loads = {
         {"control = \"force\"\nhistory = [[0.0, 0.0], [0.5, 3.0e-8], [0.75, 1.0e-8], [1.25, 3.0e-8], [2.0, 0.0]]\n",
-         1.2e-4},
+         4e-5},
         {"control = \"force\"\nhistory = [[0.0, 0.0], [0.5, 3.0e-8], [1.0, 0.0], [1.5, 0.0], [1.75, 2.0e-8], "
          "[2.0, 2.0e-8]]\n",
          5e-4},
         {"control = \"force\"\nhistory = [[0.0, 0.0], [0.5, 2.0e-8], [3.5, 2.0e-8]]\n"
          "harmonic = { amplitude = 1.0e-8, frequency = 2.0, start = 0.5, end = 3.5 }\n",
-         1e-4},
+         3.5e-5},
         {"control = \"spring\"\nspring_constant = 0.05\nhistory = [[0.0, 0.0], [0.5, 2.0e-6], [1.0, -0.5e-6], "
          "[1.25, -0.5e-6], [2.0, 2.0e-6]]\n",
-         2e-4}};
+         9e-5}};
     for (const auto& [load, tolerance] : loads) {
         const std::string text = "[material]\n" + standard_dashpot +
                                  "[indenter]\nshape = \"sphere\"\nR = 1.0e-5\n[load]\n" + load;
@@ -145,8 +151,10 @@ TEST(LayerRegrowingDashpot, AThickLayerMeetsTheHalfSpaceUnderForceAndSpringContr
         for (std::size_t i = 0; i < layer.time.size(); ++i) {
             largest = std::max(largest, std::abs(layer.depth[i] - half_space.depth[i]));
         }
-        // Observed 5.8e-5, 2.5e-4, 4.3e-5 and 1.1e-4 of the largest depth (in this order); the harmonic force's k'
-        // and k'' within 2.2e-5.
+        // Observed 2.8e-5, 3.6e-4, 2.7e-5 and 6.8e-5 of the largest depth (in this order; with the indenter's rate in
+        // an entering cell 5.8e-5, 3.6e-4, 3.9e-5, 1.1e-4; the half-space on 16000 elements is within 1e-6 of its
+        // defaults' here). The second's largest is the reload's first step, which starts without contact, where the
+        // cells keep the indenter's rate. The harmonic force's k' and k'' within 2.2e-5.
         EXPECT_LT(largest / deepest, tolerance) << load;
         if (half_space.harmonic) {
             ASSERT_TRUE(layer.harmonic);
@@ -155,18 +163,83 @@ TEST(LayerRegrowingDashpot, AThickLayerMeetsTheHalfSpaceUnderForceAndSpringContr
     }
 }
 
-TEST(LayerRegrowingDashpot, AForceJumpInContactOnTheCellsIsRefusedNamingEta) {
-    // Not built: a jump of the force in contact would move every cell's dashpot rate at a fixed depth.
+// A Kelvin-Voigt body (G, eta) under F(t) = F t / t_r up to t_r, then `held` (a jump where it differs), while the
+// contact grows (eq. L11 with G(t) = G + eta delta(t)): G F_el(d) + eta dF_el/dt = F(t), so F_el(d(t)) = int_0^t
+// exp(-(t - s) G / eta) F(s) ds / eta, whatever the elastic law F_el (here the layer's, E* = 4 G times its unit force).
+double kelvin_voigt_elastic_force(double time, double force, double held, double ramp, double modulus,
+                                  double viscosity) {
+    const double relaxation = viscosity / modulus;
+    const auto on_ramp = [&](double t) {
+        return force / (modulus * ramp) * (t + relaxation * std::expm1(-t / relaxation));
+    };
+    if (time < ramp) return on_ramp(time);
+    return held / modulus + (on_ramp(ramp) - held / modulus) * std::exp(-(time - ramp) / relaxation);
+}
+
+// The largest |F_el(d) - the closed form| over the rows of a Kelvin-Voigt sphere on a bonded layer h = 2 um run on the
+// cells (NumericsOptions::layer_cells, as a fit runs them) under the force ramped to `force` in 0.2 s, then `held` to
+// 1 s, over held / G.
+double kelvin_voigt_error_on_cells(double force, double held, int cells) {
+    const double modulus = 1.0e3, viscosity = 50.0, ramp = 0.2;
+    const std::string text = fmt::format(
+        "[material]\n{}[indenter]\nshape = \"sphere\"\nR = 1.0e-5\n[load]\ncontrol = \"force\"\n"
+        "history = [[0.0, 0.0], [{}, {}], [{}, {}], [1.0, {}]]\n[layer]\nthickness = 2.0e-6\ninterface = "
+        "\"bonded\"\n[numerics]\nelements = {}\n",
+        kelvin_voigt, ramp, force, ramp, held, held, cells);
+    auto contact_case = io::parse_case(text, "test case");
+    contact_case.numerics.layer_cells = true;
+    const auto result = drivers::run_case(contact_case);
+    const contact::LayerContact elastic(*contact_case.layer, 0.5, contact_case.indenter, 6.0e-6);
+    double error = 0.0;
+    for (std::size_t i = 0; i < result.time.size(); ++i) {
+        // At t_r the rows before and after the jump share the time: the one after it has the held force.
+        const bool before_jump = result.time[i] == ramp && result.force[i] < 0.5 * (force + held);
+        const double expected = before_jump ? kelvin_voigt_elastic_force(ramp, force, force, ramp, modulus, viscosity)
+                                            : kelvin_voigt_elastic_force(result.time[i], force, held, ramp, modulus,
+                                                                         viscosity);
+        const double solved = 4.0 * elastic.at_depth(result.depth[i]).force;
+        error = std::max(error, std::abs(solved - expected) * modulus / held);
+    }
+    return error;
+}
+
+TEST(LayerRegrowingDashpot, KelvinVoigtCreepOnTheCellsIsTheLayersElasticSolution) {
+    // The ramp to 30 nN held: against the closed form above with the layer's own elastic force (LayerContact, its
+    // Gauss nodes: not the cells), each row.
+    std::vector<double> errors;
+    for (const int cells : {100, 200, 400}) errors.push_back(kelvin_voigt_error_on_cells(3.0e-8, 3.0e-8, cells));
+    // Observed 1.5e-3, 4.3e-4, 1.1e-4 of F / G at 100, 200, 400 cells: second order (1.85, 2.03). The cells' own
+    // error: the entering cells' rate (own or the indenter's) changes it by less than 4e-6.
+    EXPECT_LT(errors.back(), 2e-4);
+    for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], 0.35 * errors[i - 1]);
+}
+
+TEST(LayerRegrowingDashpot, AForceJumpUpInContactOnTheCellsIsKelvinVoigtsClosedForm) {
+    // The force ramped to 15 nN in 0.2 s jumps to 30 nN: the depth does not move in no time, the contact's dashpots
+    // take the jump at one rate (LayerCells::jump), and the contact keeps growing (Lee-Radok holds, and the closed
+    // form with it: F_el is continuous through the jump, its rate jumps by dF / eta).
+    std::vector<double> errors;
+    for (const int cells : {100, 200, 400}) errors.push_back(kelvin_voigt_error_on_cells(1.5e-8, 3.0e-8, cells));
+    // Observed 1.5e-3, 4.3e-4, 1.0e-4 of F / G (the same from the jump on): second order, as the ramp held at 30 nN
+    // without a jump (1.5e-3, 4.3e-4, 1.1e-4); the cells' own error at the largest depth dominates.
+    EXPECT_LT(errors.back(), 2e-4);
+    for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], 0.35 * errors[i - 1]);
+}
+
+TEST(LayerRegrowingDashpot, AForceJumpThatPullsTheEdgeOffOnTheCellsIsRefusedNamingEta) {
+    // Not built: a jump down at a fixed depth, taken by the contact's dashpots at one rate, would pull the edge's line
+    // load below zero (the unit rate's line load is largest at the edge): the contact would recede at once, a
+    // complementarity in the rates that the cells do not solve. Nothing is written by the caller.
     const std::string text = "[material]\n" + standard_dashpot +
                              "[indenter]\nshape = \"sphere\"\nR = 1.0e-5\n[load]\ncontrol = \"force\"\n"
-                             "history = [[0.0, 0.0], [0.5, 3.0e-8], [0.75, 1.0e-8], [1.0, 1.0e-8], [1.0, 3.0e-8], "
-                             "[1.5, 3.0e-8]]\n[layer]\nthickness = 2.0e-6\ninterface = \"bonded\"\n";
+                             "history = [[0.0, 0.0], [0.5, 3.0e-8], [0.75, 1.0e-8], [1.0, 3.0e-8], [1.0, 1.0e-8], "
+                             "[1.5, 1.0e-8]]\n[layer]\nthickness = 2.0e-6\ninterface = \"bonded\"\n";
     try {
         run_toml(text);
         ADD_FAILURE() << "accepted";
     } catch (const InvalidInput& error) {
         EXPECT_EQ(error.key(), "material.eta");
-        EXPECT_NE(std::string(error.what()).find("jump of the load in contact"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("pulls the contact's edge off"), std::string::npos) << error.what();
     }
 }
 
