@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "data_window.hpp"
+#include "curve_model.hpp"
 #include "curve_rows_cost.hpp"
 #include "jacobian_summary.hpp"
 #include "pre_contact_baseline.hpp"
@@ -108,9 +109,10 @@ bool above_model_accuracy(const CurveFit& curve) {
     return curve.rms_residual > 1e-5 * largest;
 }
 
-// A curve the model cannot follow: its residual RMS above misfit_ratio times its noise and the model's accuracy.
+// A curve the model cannot follow: its residual RMS above misfit_ratio times its noise and the model's accuracy. A
+// noise-free curve (noise 0) has no noise to compare with: never a misfit by this rule (flag_misfits says why).
 bool is_misfit(const CurveFit& curve) {
-    return curve.rms_residual > misfit_ratio * curve.noise && above_model_accuracy(curve);
+    return curve.noise > 0.0 && curve.rms_residual > misfit_ratio * curve.noise && above_model_accuracy(curve);
 }
 
 // One quantity of a rebound data set: measured, model, speeds and noise.
@@ -199,7 +201,7 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
         curve.fitted = prepared.fitted;
         curve.contact_depth = cost.contact_depth(nuisance[c].data());
         curve.baseline = cost.baseline(nuisance[c].data());
-        curve.noise = prepared.noise;
+        curve.noise = prepared.noise_free ? 0.0 : prepared.noise;
         curve.time.reserve(n);
         curve.measured.reserve(n);
         curve.drive.reserve(n);
@@ -328,10 +330,32 @@ Eigen::MatrixXd honest_covariance(const JacobianSummary& summary, double varianc
     return std::max(variance_scale, correlated_scale) * pseudo_inverse * meat * pseudo_inverse;
 }
 
-// Flags each curve the model cannot follow (is_misfit) on the curve (the fit's status says "misfit").
+// Flags each curve the model cannot follow (is_misfit) on the curve (the fit's status says "misfit"), and each
+// noise-free curve (noise 0, prepare_curve): its residual cannot be measured against a noise. Below the model's
+// accuracy the model reproduces the data. Above it the residual is the model's distance from the data: noise of the
+// driving quantity carried through the model, or a model that cannot follow the data, which noise-free data cannot
+// tell apart; the errors are then that residual's own scatter (s^2 = RSS / (n - k), describe_uncertainty), not a
+// noise's.
 void flag_misfits(FitResult& result) {
     for (auto& curve : result.curves) {
-        if (curve.rebound || !is_misfit(curve)) continue;
+        if (curve.rebound) continue;
+        if (curve.noise == 0.0) {
+            double largest = 0.0;
+            for (double value : curve.measured) largest = std::max(largest, std::abs(value));
+            const std::string quantity = curve.fitted == Fitted::force ? "force" : "depth";
+            curve.flags.push_back(fmt::format(
+                "noise-free: the measured {}'s noise is at round-off (at most {:g} of its largest value {:.4g}), "
+                "no misfit ratio; residual RMS {:.4g} ({:.2g} of the largest value, lag-1 correlation {:.2f}) {}",
+                quantity, noise_free_level, largest, curve.rms_residual,
+                largest > 0.0 ? curve.rms_residual / largest : 0.0, curve.residual_correlation,
+                above_model_accuracy(curve)
+                    ? "is above the model's accuracy: the driving quantity's noise carried through the model, or a "
+                      "model that cannot follow the data (noise-free data cannot tell them apart); the errors are the "
+                      "residual's own scatter, not a noise's"
+                    : "is at the model's accuracy: the model reproduces the data"));
+            continue;
+        }
+        if (!is_misfit(curve)) continue;
         const std::string reason = fmt::format(
             "misfit: residual RMS {:.4g} is {:.3g} x the noise {:.4g} (lag-1 correlation {:.2f}): the model cannot "
             "follow the data; the errors include the misfit (error_kind)",
