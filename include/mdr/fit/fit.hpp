@@ -171,7 +171,8 @@ struct CurveFit {
     /// Lag-1 autocorrelation of the residuals (rows in time order); 0 for rebound data.
     double residual_correlation = 0.0;
     /// Points that count as independent in the errors (effective sample size, see describe_uncertainty): the
-    /// curve's points when its residuals are white, n (1 - rho) / (1 + rho) when they are autocorrelated.
+    /// curve's points when its residuals are white, n (1 - phi) / (1 + phi) when they are autocorrelated, phi the AR(1)
+    /// coefficient of its errors: the residuals' lag-1 correlation with its bias and the fit's absorbed share put back.
     double effective_points = 0.0;
     /// Rebound data only: the quantity compared (`fitted` is then meaningless); nullopt for a measured curve.
     std::optional<ReboundQuantity> rebound{};
