@@ -26,6 +26,11 @@ std::string young_modulus_text(const fit::FitResult& result, const std::string& 
     return "";
 }
 
+std::string residual_to_noise_text(const fit::FitResult& result) {
+    const double ratio = fit::residual_to_noise(result);
+    return std::isnan(ratio) ? "noise-free" : fmt::format("{:.3g}", ratio);
+}
+
 bool run_model_choice(const fitcase::FitCase& fit_case, const std::vector<fit::Curve>& curves,
                       const io::ResultDirectory& directory, FitProgress& progress) {
     const auto choice = fitcase::fit_candidates(fit_case, curves);
@@ -50,8 +55,8 @@ bool run_model_choice(const fitcase::FitCase& fit_case, const std::vector<fit::C
         const std::string flags = result.undetermined.empty()
                                       ? ""
                                       : fmt::format(", {} undetermined", result.undetermined.size());
-        fmt::print("  {:<10} {:>5} {:>12.3g} {:>10.1f} {:>10.1f}  {}{}\n", fitted.name, result.free_count,
-                   result.rms_residual / result.noise, fitted.delta_aic, fitted.delta_bic, result.status, flags);
+        fmt::print("  {:<10} {:>5} {:>12} {:>10.1f} {:>10.1f}  {}{}\n", fitted.name, result.free_count,
+                   residual_to_noise_text(result), fitted.delta_aic, fitted.delta_bic, result.status, flags);
     }
     for (const auto& entry : choice.fits[choice.preferred].result.undetermined) {
         fmt::print("  undetermined ({}): {}: {}\n", choice.fits[choice.preferred].name, entry.name, entry.reason);

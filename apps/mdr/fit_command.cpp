@@ -90,8 +90,8 @@ void add_fit_command(CLI::App& app, int& exit_code) {
                 fmt::print("  undetermined: {}: {}\n", entry.name, entry.reason);
             }
             print_flags(result);
-            fmt::print("  residual RMS {:.4g}, noise {:.4g} (ratio {:.3g}); {} iterations, {} model runs, {:.3f} s\n",
-                       result.rms_residual, result.noise, result.rms_residual / result.noise, result.iterations,
+            fmt::print("  residual RMS {:.4g}, noise {:.4g} (ratio {}); {} iterations, {} model runs, {:.3f} s\n",
+                       result.rms_residual, result.noise, residual_to_noise_text(result), result.iterations,
                        result.evaluations, result.wall_seconds);
             fmt::print("  results in {}/ (fit.json, fitted.toml, curves.csv)\n", *out);
             converged = result.converged;

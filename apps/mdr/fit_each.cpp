@@ -63,7 +63,7 @@ void write_table(const std::filesystem::path& path, const std::vector<std::strin
             if (young == result.young_moduli.end()) table.print(",nan,nan");
             else table.print(",{:.17g},{:.17g}", young->value, young->standard_error);
         }
-        table.print(",{},{:.17g}\n", io::csv_field(result.status), result.rms_residual / result.noise);
+        table.print(",{},{:.17g}\n", io::csv_field(result.status), fit::residual_to_noise(result));
     }
     table.close();
 }
@@ -128,7 +128,7 @@ bool run_each(const fitcase::FitCase& fit_case, const std::vector<std::string>& 
             values += fmt::format("  {} = {:.6g} +- {:.2g}{}", result.names[j], result.values[j],
                                   result.standard_errors[j], young_modulus_text(result, result.names[j]));
         }
-        fmt::print("  {}:{}; residual/noise {:.3g}: {}\n", stems[i], values, result.rms_residual / result.noise,
+        fmt::print("  {}:{}; residual/noise {}: {}\n", stems[i], values, residual_to_noise_text(result),
                    result.status);
         print_flags(result);
         converged = converged && result.converged;

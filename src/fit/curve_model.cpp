@@ -23,7 +23,8 @@ CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline) {
     // A floor for noise-free data: the weights stay finite, and relative to the largest value.
     double largest = 0.0;
     for (double value : measured) largest = std::max(largest, std::abs(value));
-    prepared.noise = std::max(prepared.noise, 1e-12 * largest);
+    prepared.noise_free = prepared.noise <= noise_free_level * largest;
+    prepared.noise = std::max(prepared.noise, noise_free_level * largest);
     const double force_noise = curve.force_noise > 0.0 ? curve.force_noise : difference_noise(curve.force, 0, curve.force.size());
     const auto use = [&](std::size_t i) {
         if (fitted == Fitted::force || curve.force[i] - baseline > 3.0 * force_noise) prepared.used.push_back(i);

@@ -19,7 +19,15 @@ struct CurveModel {
     Fitted fitted = Fitted::force;
     std::vector<std::size_t> used;  ///< indices of the points in the residual
     double noise = 0.0;             ///< noise of the fitted quantity (the residuals' weight is 1 / noise)
+    /// The fitted quantity is noise-free: its noise (stated or estimated) is at most noise_free_level of its largest
+    /// magnitude, round-off and not noise; `noise` is then that level, a finite weight and nothing more.
+    bool noise_free = false;
 };
+
+/// The noise, relative to the fitted quantity's largest magnitude, at and below which a curve is noise-free: ~4500
+/// double round-offs, the accumulated rounding of values computed in closed form (a record written with 6 or 9
+/// digits carries ~1e-6 or ~1e-9 of quantisation noise, well above).
+constexpr double noise_free_level = 1e-12;
 
 /// The points of `curve` that enter the residual: its residual rows (Curve::residual_rows: every row unless a window
 /// leaves some out) when the depth drives the model; when the force drives it, those where the force minus

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "data_window.hpp"
+#include "curve_model.hpp"
 #include "curve_rows_cost.hpp"
 #include "jacobian_summary.hpp"
 #include "pre_contact_baseline.hpp"
@@ -108,9 +109,10 @@ bool above_model_accuracy(const CurveFit& curve) {
     return curve.rms_residual > 1e-5 * largest;
 }
 
-// A curve the model cannot follow: its residual RMS above misfit_ratio times its noise and the model's accuracy.
+// A curve the model cannot follow: its residual RMS above misfit_ratio times its noise and the model's accuracy. A
+// noise-free curve (noise 0) has no noise to compare with: never a misfit by this rule (flag_misfits says why).
 bool is_misfit(const CurveFit& curve) {
-    return curve.rms_residual > misfit_ratio * curve.noise && above_model_accuracy(curve);
+    return curve.noise > 0.0 && curve.rms_residual > misfit_ratio * curve.noise && above_model_accuracy(curve);
 }
 
 // One quantity of a rebound data set: measured, model, speeds and noise.
@@ -147,19 +149,34 @@ std::vector<std::array<double, 2>> driving_history(const Curve& data, bool force
     return history;
 }
 
+// The columns of J in which curve c's rows can be nonzero: the k shared parameters, then its m nuisance parameters.
+std::vector<Eigen::Index> curve_columns(std::size_t k, std::size_t m, std::size_t c) {
+    std::vector<Eigen::Index> columns;
+    for (std::size_t j = 0; j < k; ++j) columns.push_back(static_cast<Eigen::Index>(j));
+    for (std::size_t j = 0; j < m; ++j) columns.push_back(static_cast<Eigen::Index>(k + c * m + j));
+    return columns;
+}
+
 // Fills result.curves (data, model, residual RMS, lag-1 correlation and effective points of each measured curve;
 // the rebound data's entries) and gathers the summary of the weighted Jacobian and residuals at the optimum, one
 // curve at a time: no N x p copy of the Jacobian (docs/performance.md, "Memory of a fit"). A curve's errors are
-// taken as AR(1) with coefficient phi (error_correlation) within the curve; rebound data as independent.
-// `baseline_sums` gets each curve's J^T dr/db for the held baseline's level and slope (held_baseline_errors): two
-// columns, dr/d level = 1 / noise and dr/d slope = (t - mean_time) / noise on each fitted force (0 for fitted depths).
+// taken as AR(1) within the curve with coefficient phis[c]; where `phis` is empty on entry, phi = error_correlation,
+// and `phis` gets them. Rebound data are taken as independent. `baseline_sums` gets each curve's J^T dr/db for the
+// held baseline's level and slope (held_baseline_errors): two columns, dr/d level = 1 / noise and dr/d slope =
+// (t - mean_time) / noise on each fitted force (0 for fitted depths). `curve_grams` gets each curve's part
+// J_c^T P_c J_c of J^T P J on its columns (curve_columns).
 JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
                                  const std::vector<std::unique_ptr<ReboundCost>>& rebounds,
                                  const std::vector<double>& shared, const std::vector<std::vector<double>>& nuisance,
-                                 std::size_t m, FitResult& result, std::vector<Eigen::MatrixX2d>& baseline_sums) {
+                                 std::size_t m, std::vector<double>& phis, FitResult& result,
+                                 std::vector<Eigen::MatrixX2d>& baseline_sums,
+                                 std::vector<Eigen::MatrixXd>& curve_grams) {
     const std::size_t k = shared.size();
     JacobianSummary summary(static_cast<Eigen::Index>(k + m * costs.size()));
     baseline_sums.assign(costs.size(), Eigen::MatrixX2d::Zero(static_cast<Eigen::Index>(k + m * costs.size()), 2));
+    curve_grams.clear();
+    result.curves.clear();
+    const bool estimate = phis.empty();
     for (std::size_t c = 0; c < costs.size(); ++c) {
         const CurveCost& cost = *costs[c];
         const CurveModel& prepared = cost.prepared();
@@ -184,7 +201,7 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
         curve.fitted = prepared.fitted;
         curve.contact_depth = cost.contact_depth(nuisance[c].data());
         curve.baseline = cost.baseline(nuisance[c].data());
-        curve.noise = prepared.noise;
+        curve.noise = prepared.noise_free ? 0.0 : prepared.noise;
         curve.time.reserve(n);
         curve.measured.reserve(n);
         curve.drive.reserve(n);
@@ -199,9 +216,12 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
         curve.history = driving_history(data, force_fitted, curve.contact_depth, curve.baseline);
         curve.rms_residual = root_mean_square(
             n, [&](std::size_t i) { return curve.model[i] - curve.measured[i]; }, [](std::size_t) { return 1.0; });
-        const double phi = above_model_accuracy(curve)
+        if (estimate) {
+            phis.push_back(above_model_accuracy(curve)
                                ? error_correlation(curve.residual_correlation, static_cast<Eigen::Index>(n))
-                               : 0.0;
+                               : 0.0);
+        }
+        const double phi = phis[c];
         curve.effective_points = std::max(static_cast<double>(n) * (1.0 - phi) / (1.0 + phi), 1.0);
         // The Jacobian in the solver's row blocks (the cost keeps its columns until the last block).
         const std::size_t block = std::min(n, solver_block_rows);
@@ -227,6 +247,8 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
                                  baseline_sums[c].col(1) += row.transpose() * (lever / prepared.noise);
                              });
         }
+        const std::vector<Eigen::Index> columns = curve_columns(k, m, c);
+        curve_grams.push_back(summary.curve_correlated_gram()(columns, columns));
         result.curves.push_back(std::move(curve));
     }
     for (const auto& cost : rebounds) {  // their rows have no contact point or baseline: 0 in those columns
@@ -251,6 +273,32 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
         }
     }
     return summary;
+}
+
+// The curves' AR(1) coefficients `phis` (error_correlation) with what the fit absorbs of their errors put back.
+// The fitted model takes up part of correlated errors e (most of their slow part) and the residuals r = (I - H) e,
+// H = J (J^T J)^+ J^T, keep less of their correlation. For columns of J smooth over one row (J_(i+1) ~ J_i, so that
+// the lag-1 sum A, A_(i,i+1) = A_(i+1,i) = 1/2, passes them: tr(H A H P) ~ tr(H A P) ~ tr(H P)), a curve's residuals
+// have E[r^T r] = sigma^2 (n - a) and E[r^T A r] ~ sigma^2 ((n - 1) phi - a), with a = tr((J^T J)^+ J_c^T P J_c) the
+// share of its errors' variance the fit absorbs (the same trace as in honest_covariance; k for white errors). Their
+// lag-1 correlation is then rho' = ((n - 1) phi - a) / (n - a), so phi = (rho' (n - a) + a) / (n - 1), at most
+// (n - 1) / (n + 1), with rho' the curve's first coefficient (error_correlation: the residuals' rho with the bias of
+// its mean and ratio removed; white curves stay white) and a taken at it (one step towards the fixed point; a grows
+// with phi, so the step stays short of it). Without a, rho' falls short of phi by (phi + a (1 - phi)) / (n - a):
+// AR(1) noise with phi = 0.99 over 1501 points (a ~ 500) gave phi ~ 0.9855 and n_eff ~ 11 for the true 7.5, and
+// 95 % intervals that covered the truth in 92-93 %; with a, phi ~ 0.9897, n_eff ~ 7.8 and 95.2-95.8 % (10 000
+// realisations; tests/verification/test_fit_error_coverage.cpp).
+std::vector<double> unabsorbed_correlations(const Eigen::MatrixXd& pseudo_inverse,
+                                            const std::vector<Eigen::MatrixXd>& curve_grams, std::size_t k,
+                                            std::size_t m, std::vector<double> phis, const FitResult& result) {
+    for (std::size_t c = 0; c < curve_grams.size(); ++c) {
+        if (!(phis[c] > 0.0)) continue;
+        const auto n = static_cast<double>(result.curves[c].time.size());
+        const std::vector<Eigen::Index> columns = curve_columns(k, m, c);
+        const double absorbed = (pseudo_inverse(columns, columns) * curve_grams[c]).trace();
+        phis[c] = std::min((phis[c] * (n - absorbed) + absorbed) / (n - 1.0), (n - 1.0) / (n + 1.0));
+    }
+    return phis;
 }
 
 // Autocorrelated residuals (a misfit's systematic ones, or correlated noise) carry less information than their
@@ -282,10 +330,32 @@ Eigen::MatrixXd honest_covariance(const JacobianSummary& summary, double varianc
     return std::max(variance_scale, correlated_scale) * pseudo_inverse * meat * pseudo_inverse;
 }
 
-// Flags each curve the model cannot follow (is_misfit) on the curve (the fit's status says "misfit").
+// Flags each curve the model cannot follow (is_misfit) on the curve (the fit's status says "misfit"), and each
+// noise-free curve (noise 0, prepare_curve): its residual cannot be measured against a noise. Below the model's
+// accuracy the model reproduces the data. Above it the residual is the model's distance from the data: noise of the
+// driving quantity carried through the model, or a model that cannot follow the data, which noise-free data cannot
+// tell apart; the errors are then that residual's own scatter (s^2 = RSS / (n - k), describe_uncertainty), not a
+// noise's.
 void flag_misfits(FitResult& result) {
     for (auto& curve : result.curves) {
-        if (curve.rebound || !is_misfit(curve)) continue;
+        if (curve.rebound) continue;
+        if (curve.noise == 0.0) {
+            double largest = 0.0;
+            for (double value : curve.measured) largest = std::max(largest, std::abs(value));
+            const std::string quantity = curve.fitted == Fitted::force ? "force" : "depth";
+            curve.flags.push_back(fmt::format(
+                "noise-free: the measured {}'s noise is at round-off (at most {:g} of its largest value {:.4g}), "
+                "no misfit ratio; residual RMS {:.4g} ({:.2g} of the largest value, lag-1 correlation {:.2f}) {}",
+                quantity, noise_free_level, largest, curve.rms_residual,
+                largest > 0.0 ? curve.rms_residual / largest : 0.0, curve.residual_correlation,
+                above_model_accuracy(curve)
+                    ? "is above the model's accuracy: the driving quantity's noise carried through the model, or a "
+                      "model that cannot follow the data (noise-free data cannot tell them apart); the errors are the "
+                      "residual's own scatter, not a noise's"
+                    : "is at the model's accuracy: the model reproduces the data"));
+            continue;
+        }
+        if (!is_misfit(curve)) continue;
         const std::string reason = fmt::format(
             "misfit: residual RMS {:.4g} is {:.3g} x the noise {:.4g} (lag-1 correlation {:.2f}): the model cannot "
             "follow the data; the errors include the misfit (error_kind)",
@@ -304,8 +374,10 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
     const std::size_t k = shared.size();
     const std::size_t m = scales.nuisance_size();
     std::vector<Eigen::MatrixX2d> baseline_sums;  // per curve: J^T dr/db for the baseline's level and slope
-    const JacobianSummary summary =
-        summarise_curves(problem, costs, rebounds, shared, nuisance, m, result, baseline_sums);
+    std::vector<Eigen::MatrixXd> curve_grams;     // per curve: J_c^T P_c J_c
+    std::vector<double> phis;                     // per curve: the AR(1) coefficient of its errors
+    JacobianSummary summary =
+        summarise_curves(problem, costs, rebounds, shared, nuisance, m, phis, result, baseline_sums, curve_grams);
     const auto n = static_cast<double>(summary.rows());
     const auto columns = k + m * costs.size();
     result.points = static_cast<std::size_t>(summary.rows());
@@ -348,6 +420,11 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
                 if (std::abs(direction[static_cast<Eigen::Index>(j)]) > 1e-3) undetermined[j] = true;
             }
         }
+    }
+    std::vector<double> unabsorbed = unabsorbed_correlations(pseudo_inverse, curve_grams, k, m, phis, result);
+    if (unabsorbed != phis) {  // the curves' rows again, with the corrected coefficients
+        summary = summarise_curves(problem, costs, rebounds, shared, nuisance, m, unabsorbed, result, baseline_sums,
+                                   curve_grams);
     }
     Eigen::MatrixXd covariance = honest_covariance(summary, variance_scale, pseudo_inverse, costs.size(), result);
     // A held baseline b (from the rows before contact) carries its own error, independent of the fitted rows' noise:

@@ -7,11 +7,13 @@ namespace mdr::fit {
 
 JacobianSummary::JacobianSummary(Eigen::Index columns)
     : stack_(RowMajorMatrix::Zero(columns + block_rows, columns)),
-      correlated_gram_(Eigen::MatrixXd::Zero(columns, columns)), forward_(Eigen::RowVectorXd::Zero(columns)) {}
+      correlated_gram_(Eigen::MatrixXd::Zero(columns, columns)),
+      curve_correlated_gram_(Eigen::MatrixXd::Zero(columns, columns)), forward_(Eigen::RowVectorXd::Zero(columns)) {}
 
 void JacobianSummary::start_curve(double phi) {
     phi_ = phi;
     forward_.setZero();
+    curve_correlated_gram_.setZero();
 }
 
 void JacobianSummary::fold() const {
@@ -46,7 +48,9 @@ void JacobianSummary::add_rows(Eigen::Index rows, const RowOf& row_of) {
         waiting_ += count;
         begin += count;
     }
-    correlated_gram_ += lower + lower.transpose() - gram;
+    const Eigen::MatrixXd part = lower + lower.transpose() - gram;  // these rows' part of J^T P J
+    correlated_gram_ += part;
+    curve_correlated_gram_ += part;
     rows_ += rows;
 }
 

@@ -37,6 +37,8 @@ public:
     Eigen::MatrixXd triangular() const;
     /// J^T P J.
     const Eigen::MatrixXd& correlated_gram() const { return correlated_gram_; }
+    /// The current curve's part J_c^T P_c J_c of J^T P J (its rows since start_curve).
+    const Eigen::MatrixXd& curve_correlated_gram() const { return curve_correlated_gram_; }
     /// |r|, without overflow of its squares.
     double residual_norm() const;
     /// The rows of J added.
@@ -51,6 +53,7 @@ private:
     mutable RowMajorMatrix stack_;                  ///< R in its top rows, then up to block_rows rows waiting
     mutable Eigen::Index waiting_ = 0;               ///< the rows waiting below R
     Eigen::MatrixXd correlated_gram_;
+    Eigen::MatrixXd curve_correlated_gram_;
     double phi_ = 0.0;                ///< the current curve's
     Eigen::RowVectorXd forward_;      ///< F_i of the current curve's last row
     double scale_ = 0.0, scaled_squares_ = 0.0;

@@ -17,8 +17,6 @@ using io::OutputFile;
 
 namespace {
 
-double ratio(const fit::FitResult& result) { return result.noise > 0.0 ? result.rms_residual / result.noise : NAN; }
-
 // spectrum.csv: term,tau,modulus,standard_error; G_inf first with tau = inf.
 void write_spectrum(const std::filesystem::path& directory, const fit::CandidateFit& spectrum) {
     const auto& result = spectrum.result;
@@ -52,7 +50,7 @@ Document ranking_document(const fit::ModelChoice& choice) {
                                               {"free_count", {result.free_count}},
                                               {"rms_residual", number_or_null(result.rms_residual)},
                                               {"noise", number_or_null(result.noise)},
-                                              {"residual_to_noise", number_or_null(ratio(result))},
+                                              {"residual_to_noise", number_or_null(fit::residual_to_noise(result))},
                                               {"aic", number_or_null(result.aic)},
                                               {"bic", number_or_null(result.bic)},
                                               {"delta_aic", number_or_null(fitted.delta_aic)},
@@ -86,7 +84,7 @@ void write_model_choice(const std::filesystem::path& directory, const FitCase& f
         const auto& fitted = choice.fits[i];
         const auto& result = fitted.result;
         csv.print("{},{},{},{},{},{},{},{},{},{},{},{}\n", i + 1, csv_field(fitted.name), result.free_count,
-                  result.rms_residual, ratio(result), result.aic, result.bic, fitted.delta_aic, fitted.delta_bic,
+                  result.rms_residual, fit::residual_to_noise(result), result.aic, result.bic, fitted.delta_aic, fitted.delta_bic,
                   result.converged, result.undetermined.size(), result.wall_seconds);
         std::filesystem::create_directory(directory / fitted.name);
         write_candidate(directory / fitted.name, fit_case, fitted);

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -163,12 +164,15 @@ struct CurveFit {
     double preload_depth_error = 0.0;  ///< its standard error [m] (the contact point's)
     double baseline = 0.0;          ///< the force baseline used [N]
     double baseline_error = 0.0;    ///< its standard error [N] (held: from the rows before contact; 0 if fixed)
-    double noise = 0.0;             ///< the measurement noise of the fitted quantity [N or m]
+    /// The measurement noise of the fitted quantity [N or m]; 0 when it is noise-free (at most 1e-12 of its largest
+    /// magnitude: round-off, e.g. values computed in closed form), which a flag then says: no misfit ratio.
+    double noise = 0.0;
     double rms_residual = 0.0;      ///< RMS of model - measured
     /// Lag-1 autocorrelation of the residuals (rows in time order); 0 for rebound data.
     double residual_correlation = 0.0;
     /// Points that count as independent in the errors (effective sample size, see describe_uncertainty): the
-    /// curve's points when its residuals are white, n (1 - rho) / (1 + rho) when they are autocorrelated.
+    /// curve's points when its residuals are white, n (1 - phi) / (1 + phi) when they are autocorrelated, phi the AR(1)
+    /// coefficient of its errors: the residuals' lag-1 correlation with its bias and the fit's absorbed share put back.
     double effective_points = 0.0;
     /// Rebound data only: the quantity compared (`fitted` is then meaningless); nullopt for a measured curve.
     std::optional<ReboundQuantity> rebound{};
@@ -271,6 +275,12 @@ struct FitResult {
     /// `material_window`); none for an exact series.
     std::optional<rheology::Certificate> material_certificate{};
 };
+
+/// The fit's residual RMS over its noise (fit.json `residual_to_noise`); NaN, no ratio, when its curves are
+/// noise-free (noise 0: CurveFit::noise).
+inline double residual_to_noise(const FitResult& result) {
+    return result.noise > 0.0 ? result.rms_residual / result.noise : std::numeric_limits<double>::quiet_NaN();
+}
 
 /// A curve whose residual RMS exceeds this many times its noise is a misfit (FitResult::misfit): with white
 /// noise the ratio is 1 within a few sqrt(2 / n); 2 means a residual variance 4 times the noise's.

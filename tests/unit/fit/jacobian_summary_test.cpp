@@ -1,5 +1,6 @@
 // src/fit/jacobian_summary.cpp against the dense quantities it replaces (issue 23, memory of a large fit): the
-// singular values of J from a JacobiSVD of J itself, J^T P J with P_ij = phi^|i - j| written out as a matrix, |r| from
+// singular values of J from a JacobiSVD of J itself, J^T P J (and the last curve's part of it) with
+// P_ij = phi^|i - j| written out as a matrix, |r| from
 // Eigen's norm; and no overflow of the squares of large residuals.
 
 #include <gtest/gtest.h>
@@ -81,6 +82,10 @@ TEST(JacobianSummary, AgreesWithTheDenseSvdSandwichAndNorm) {
 
     const Eigen::MatrixXd sandwich = jacobian.transpose() * correlation_matrix(sizes, phis) * jacobian;
     EXPECT_LT((summary.correlated_gram() - sandwich).norm(), 1e-12 * sandwich.norm());
+    // The last curve's part: its rows alone, written out.
+    const Eigen::MatrixXd last_rows = jacobian.bottomRows(sizes.back());
+    const Eigen::MatrixXd last = last_rows.transpose() * correlation_matrix({sizes.back()}, {phis.back()}) * last_rows;
+    EXPECT_LT((summary.curve_correlated_gram() - last).norm(), 1e-12 * last.norm());
     EXPECT_NEAR(summary.residual_norm(), residuals.norm(), 1e-14 * residuals.norm());
 }
 
