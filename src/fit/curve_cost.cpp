@@ -117,7 +117,7 @@ CurveCost::BaselineColumns CurveCost::baseline_columns(const double* shared, con
                                                        bool slope) const {
     const Curve& curve = problem_.curves[curve_];
     const std::vector<std::size_t>& used = prepared_.used;
-    if (prepared_.fitted == Fitted::force) return {&curve.time, &used, origin, prepared_.noise};
+    if (prepared_.fitted == Fitted::force) return {&curve.time, &used, origin};
     BaselineColumns columns;
     // Driven by the force: the element model (the continuum model runs depth-driven curves only).
     const auto run = [&](const ForceBaseline& shift) {
@@ -125,7 +125,8 @@ CurveCost::BaselineColumns CurveCost::baseline_columns(const double* shared, con
         if (!values) throw std::runtime_error("the model cannot be evaluated at the fitted values");
         return std::move(values->values);
     };
-    // The residuals at these values: the run the fit's last evaluation kept (base_residuals), or one more.
+    // The residuals at these values (the model is measured + residual x noise): the run the fit's last evaluation
+    // kept (base_residuals), or one more.
     std::shared_ptr<const std::vector<double>> base;
     std::shared_ptr<const ModelValues> base_run;
     const std::size_t m = scales_.nuisance_size();
@@ -139,7 +140,7 @@ CurveCost::BaselineColumns CurveCost::baseline_columns(const double* shared, con
     const auto difference = [&](const ForceBaseline& shift, double size) {
         std::vector<double> shifted = run(shift);
         for (std::size_t i = 0; i < shifted.size(); ++i) {
-            shifted[i] = ((shifted[i] - curve.depth[used[i]]) / prepared_.noise - (*base)[i]) / size;
+            shifted[i] = (shifted[i] - (curve.depth[used[i]] + (*base)[i] * prepared_.noise)) / size;
         }
         return shifted;
     };

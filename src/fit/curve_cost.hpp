@@ -56,21 +56,20 @@ public:
     /// The curve as prepared for the model (its used points and noise).
     const CurveModel& prepared() const { return prepared_; }
 
-    /// The derivatives of the residuals with respect to a shift level + slope (t - origin) of the baseline, per used
-    /// point (the held baseline's error parts, HeldBaselineErrors). A fitted force is the model's force plus the
-    /// baseline: 1 / noise and (t - origin) / noise, exact (nothing stored). A fitted depth is driven by the force
-    /// less the baseline: forward differences of the model, stored.
+    /// The derivatives of the model (the fitted quantity, unweighted) with respect to a shift level + slope
+    /// (t - origin) of the baseline, per used point (the held baseline's error parts, HeldBaselineErrors): the
+    /// residuals' are these over the noise. A fitted force is the model's force plus the baseline: 1 and t - origin,
+    /// exact (nothing stored). A fitted depth is driven by the force less the baseline: forward differences of the
+    /// model, stored.
     struct BaselineColumns {
-        const std::vector<double>* time = nullptr;    ///< the rows' times (a fitted force)
+        const std::vector<double>* time = nullptr;       ///< the rows' times (a fitted force)
         const std::vector<std::size_t>* used = nullptr;  ///< the used points' rows (a fitted force)
-        double origin = 0.0, noise = 1.0;             ///< the slope's origin, the residuals' noise (a fitted force)
+        double origin = 0.0;                             ///< the slope's origin [time]
         std::vector<double> level_differences{}, slope_differences{};  ///< a fitted depth's columns
-        /// d r_i / d level at used point i.
-        double level(std::size_t i) const { return time ? 1.0 / noise : level_differences[i]; }
-        /// d r_i / d slope at used point i.
-        double slope(std::size_t i) const {
-            return time ? ((*time)[(*used)[i]] - origin) / noise : slope_differences[i];
-        }
+        /// d model_i / d level at used point i.
+        double level(std::size_t i) const { return time ? 1.0 : level_differences[i]; }
+        /// d model_i / d slope at used point i.
+        double slope(std::size_t i) const { return time ? (*time)[(*used)[i]] - origin : slope_differences[i]; }
     };
     /// BaselineColumns at these values; a fitted depth's by one model run in the baseline's level and one in its
     /// slope (`slope` only when asked for; slope(i) must not be read otherwise), each moving the force by

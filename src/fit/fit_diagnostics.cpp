@@ -152,8 +152,9 @@ std::vector<std::array<double, 2>> driving_history(const Curve& data, bool force
 // curve at a time: no N x p copy of the Jacobian (docs/performance.md, "Memory of a fit"). A curve's errors are
 // taken as AR(1) with coefficient phi (error_correlation) within the curve; rebound data as independent.
 // `baseline_sums` gets each curve's J^T dr/db for the held baseline's level and slope (held_baseline_errors) about
-// the mean time of the rows before contact: two columns, dr/db from CurveCost::baseline_columns (exact for a fitted
-// force, by model runs for a fitted depth; only where the held baseline has an error).
+// the mean time of the rows before contact: two columns, dr/db = (d model / db) / noise from
+// CurveCost::baseline_columns (exact for a fitted force, by model runs for a fitted depth; only where the held
+// baseline has an error).
 JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
                                  const std::vector<std::unique_ptr<ReboundCost>>& rebounds,
                                  const std::vector<double>& shared, const std::vector<std::vector<double>>& nuisance,
@@ -229,10 +230,12 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
                                  }
                                  const std::size_t point = begin + r;
                                  if (baseline_error) {
-                                     baseline_sums[c].col(0) += row.transpose() * baseline_columns.level(point);
+                                     baseline_sums[c].col(0) +=
+                                         row.transpose() * baseline_columns.level(point) / prepared.noise;
                                  }
                                  if (slope_error) {
-                                     baseline_sums[c].col(1) += row.transpose() * baseline_columns.slope(point);
+                                     baseline_sums[c].col(1) +=
+                                         row.transpose() * baseline_columns.slope(point) / prepared.noise;
                                  }
                              });
         }
