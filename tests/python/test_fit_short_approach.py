@@ -63,8 +63,8 @@ def test_an_approach_shorter_than_the_baseline_window_is_said_to_be_short_not_a_
     assert not [flag for flag in flags if "starts in contact" in flag], flags
     short = [flag for flag in flags if flag.startswith("short approach: only ")]
     assert len(short) == 1, flags
-    numbers = re.match(r"short approach: only (\d+) rows before the contact estimate \((?:depth )?(\S+)\); the baseline "
-                       r"is taken from (\d+) rows, (\d+) of them past", short[0])
+    numbers = re.match(r"short approach: only (\d+) rows before the contact estimate \(depth (\S+)\); the "
+                       r"baseline is taken from (\d+) rows, (\d+) of them past", short[0])
     before, contact, window, past = int(numbers[1]), float(numbers[2]), int(numbers[3]), int(numbers[4])
     assert before == int(np.argmax(curve["depth"] > contact))   # the rows shallower than the stated contact
     assert approach_rows <= before < approach_rows + 10          # the true contact is at row approach_rows
