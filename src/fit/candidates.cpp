@@ -297,8 +297,8 @@ std::vector<double> linear_start(const CandidateProblem& base, const Material& m
             drivers::ContactCase basis = built;
             basis.material = j == 0 ? rheology::Rheology::elastic(1.0)
                                     : rheology::Rheology::prony(0.0, {{1.0, material.grid[static_cast<std::size_t>(j - 1)]}});
-            auto force = run_curve(basis, prepared, contact, 0.0, elements, ForwardModel::continuum, {}, false);
-            if (!force) force = run_curve(std::move(basis), prepared, contact, 0.0, elements, ForwardModel::elements);
+            auto force = run_curve(basis, prepared, contact, {}, elements, ForwardModel::continuum, {}, false);
+            if (!force) force = run_curve(std::move(basis), prepared, contact, {}, elements, ForwardModel::elements);
             for (Eigen::Index i = 0; i < n; ++i) A(i, j) = force->values[static_cast<std::size_t>(i)] / prepared.noise;
         }
         rows += n;

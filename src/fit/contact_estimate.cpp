@@ -23,7 +23,8 @@ constexpr double onset_fraction = 0.2;        // the onset fit reaches 20 % of t
 constexpr double onset_deviations = 10.0;     // ... and at least 10 deviations; a rise below this is no contact
 constexpr double exponent_min = 1.0;
 constexpr double exponent_max = 3.0;
-constexpr std::size_t baseline_rows_min = 8;
+constexpr std::size_t baseline_rows_min = tilt_rows_min;  // a line and its noise need this many rows
+constexpr std::size_t pre_contact_rows_min = 2;  // a mean of rows before contact needs this many (step 4)
 constexpr int contact_scan_points = 32;
 constexpr int exponent_scan_points = 9;
 
@@ -85,6 +86,15 @@ Baseline fit_baseline(const Curve& curve, std::size_t end) {
     }
     line.noise = robust_deviation(std::move(residuals));
     return line;
+}
+
+/// Step 4 with fewer than baseline_rows_min rows before contact: their mean, no tilt (a slope from so few rows would
+/// be mostly noise, extrapolated over the onset), and the noise `noise` of the wider window before (a MAD of fewer
+/// than 8 residuals is no estimate of it).
+Baseline level_baseline(const Curve& curve, std::size_t end, double noise) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < end; ++i) sum += curve.force[i];
+    return {0.0, sum / static_cast<double>(end), 0.0, noise};
 }
 
 /// True when a parabola F = c0 + c1 x + c2 x^2 (x: time scaled to [-1, 1]) fitted by least squares to the rows
@@ -272,8 +282,12 @@ double difference_noise(const std::vector<double>& values, std::size_t begin, st
 //     by that much adds at most a deviation to a row). The baseline is fitted again there and step 3 repeated from
 //     its last result, until the window stays (at most 20 times): a short approach whose first window reached into
 //     a slow onset (its line tilted with the rise, pulling d_c deeper) comes back before the contact in a few
-//     passes. The window does not shrink below 8 rows (a pause at rest before the approach lies within its noise
-//     of d_c and holds no row that much shallower: the window stays).
+//     passes. Below 8 rows (a short approach) the window still shrinks to them, down to 2: the baseline is then
+//     their mean, without a tilt, and the force and depth noise stay those of the wider window before; the
+//     baseline's error, sigma / sqrt(n), is large and enters the fit's errors. A window of rows in contact would
+//     instead bias the baseline by a part of sigma that no error states (0.3-0.45 sigma with 3-5 approach rows on
+//     a Hertz onset). Below 2 rows the window stays (a pause at rest before the approach lies within its noise of
+//     d_c and holds no row that much shallower).
 //  5. force_baseline is the line at the time the depth passes d_c. The depth noise is 1.4826 x MAD / sqrt(6) of
 //     the second differences of the depth over the baseline rows (they remove a smooth trend;
 //     var(x[i+1] - 2 x[i] + x[i-1]) = 6 sigma^2 for white noise): row-to-row noise, not slow drift.
@@ -342,13 +356,17 @@ void estimate_contact(Curve& curve) {
         // Rows within the depth over which the onset rises by one deviation of the contact are left out too.
         const double margin = std::pow(baseline.noise / onset->amplitude, 1.0 / onset->exponent);
         const std::size_t before_contact = first_row_beyond(curve, limit, onset->contact - margin);
-        if (before_contact < baseline_rows_min || before_contact >= end) break;
+        if (before_contact < pre_contact_rows_min || before_contact >= end) break;
         end = before_contact;  // Step 4.
-        baseline = fit_baseline(curve, end);
+        if (end >= baseline_rows_min) {
+            baseline = fit_baseline(curve, end);
+            curve.force_noise = baseline.noise;
+            curve.depth_noise = difference_noise(curve.depth, 0, end);
+        } else {
+            baseline = level_baseline(curve, end, baseline.noise);  // both noises stay the wider window's
+        }
         threshold = threshold_deviations * baseline.noise + round_off;
         crossing = last_crossing(curve, baseline, peak, threshold);
-        curve.force_noise = baseline.noise;
-        curve.depth_noise = difference_noise(curve.depth, 0, end);
     }
     curve.contact_depth = onset->contact;
     curve.onset_exponent = onset->exponent;

@@ -43,8 +43,8 @@ bool depth_moves_before_contact(const Curve& curve) {
 
 // The flag of a record with rows before contact but fewer than min_approach_rows approach rows: a short approach
 // (the depth moves: the rows before the contact estimate are counted, and those of the baseline's window that lie
-// past it, which a window of at least 8 rows takes in), or a start in contact (rows at rest, then the force rises as
-// soon as the depth moves).
+// past it: none unless fewer than 2 rows lie before it, estimate_contact's step 4), or a start in contact (rows at
+// rest, then the force rises as soon as the depth moves).
 std::string few_approach_rows_flag(const Curve& curve, std::size_t approach) {
     if (depth_moves_before_contact(curve)) {
         const auto first_in_contact = static_cast<std::size_t>(
@@ -57,8 +57,11 @@ std::string few_approach_rows_flag(const Curve& curve, std::size_t approach) {
             "short approach: only {} rows before the contact estimate (depth {:.6g}); the baseline is taken from {} "
             "rows, {} of them past the contact estimate (in contact), and {} of them lie deeper than their median "
             "depth beyond the noise ({} tell a recorded approach from a start in contact): the baseline rests on few "
-            "rows and its error is large (baseline_error)",
-            first_in_contact, curve.contact_depth, curve.baseline_rows, in_window, approach, min_approach_rows);
+            "rows and its error is large (baseline_error){}",
+            first_in_contact, curve.contact_depth, curve.baseline_rows, in_window, approach, min_approach_rows,
+            curve.baseline_rows < tilt_rows_min
+                ? fmt::format("; fewer than {} rows: their mean, no tilt, the noise from a wider window", tilt_rows_min)
+                : "");
     }
     return fmt::format(
         "starts in contact: no approach out of contact is recorded (of the {} rows before the contact, {} lie "

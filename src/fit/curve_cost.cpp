@@ -6,6 +6,7 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <stdexcept>
 
 #include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/error.hpp"
@@ -47,12 +48,13 @@ double CurveCost::baseline(const double* nuisance) const {
 }
 
 std::optional<ModelValues> CurveCost::model(const double* shared, const double* nuisance, ForwardModel forward,
-                                            bool modulus_derivatives) const {
+                                            bool modulus_derivatives, const ForceBaseline& shift) const {
     if (problem_.settings.check_interrupt) problem_.settings.check_interrupt();
     auto model_case = problem_.model(scales_.values(shared));
     const std::size_t elements = problem_.settings.elements.value_or(model_case.numerics.elements.value_or(elements_));
-    auto values = run_curve(std::move(model_case), prepared_, contact_depth(nuisance), baseline(nuisance), elements,
-                            forward, problem_.settings.check_interrupt, modulus_derivatives);
+    const ForceBaseline moved{baseline(nuisance) + shift.level, shift.slope, shift.origin};
+    auto values = run_curve(std::move(model_case), prepared_, contact_depth(nuisance), moved, elements, forward,
+                            problem_.settings.check_interrupt, modulus_derivatives);
     if (values) {
         ++evaluations_;
         if (forward == ForwardModel::elements) ++element_evaluations_;
@@ -109,6 +111,50 @@ std::string CurveCost::failure_at(const double* shared, const double* nuisance) 
     } catch (const std::exception& error) {
         return error.what();
     }
+}
+
+CurveCost::BaselineColumns CurveCost::baseline_columns(const double* shared, const double* nuisance, double origin,
+                                                       bool slope) const {
+    const Curve& curve = problem_.curves[curve_];
+    const std::vector<std::size_t>& used = prepared_.used;
+    if (prepared_.fitted == Fitted::force) return {&curve.time, &used, origin};
+    BaselineColumns columns;
+    // Driven by the force: the element model (the continuum model runs depth-driven curves only).
+    const auto run = [&](const ForceBaseline& shift) {
+        auto values = model(shared, nuisance, ForwardModel::elements, false, shift);
+        if (!values) throw std::runtime_error("the model cannot be evaluated at the fitted values");
+        return std::move(values->values);
+    };
+    // The residuals at these values (the model is measured + residual x noise): the run the fit's last evaluation
+    // kept (base_residuals), or one more.
+    std::shared_ptr<const std::vector<double>> base;
+    std::shared_ptr<const ModelValues> base_run;
+    const std::size_t m = scales_.nuisance_size();
+    if (base_residuals(std::vector<double>(shared, shared + problem_.parameters.size()),
+                       std::vector<double>(nuisance, nuisance + m), ForwardModel::elements, base,
+                       base_run) != Outcome::done) {
+        throw std::runtime_error("the model cannot be evaluated at the fitted values");
+    }
+    // The step of a fitted baseline's column (difference_step in its coordinate, the force over its scale).
+    const double step = difference_step * std::max(std::abs(baseline(nuisance)), scales_.force[curve_]);
+    const auto difference = [&](const ForceBaseline& shift, double size) {
+        std::vector<double> shifted = run(shift);
+        for (std::size_t i = 0; i < shifted.size(); ++i) {
+            shifted[i] = (shifted[i] - (curve.depth[used[i]] + (*base)[i] * prepared_.noise)) / size;
+        }
+        return shifted;
+    };
+    columns.level_differences = difference({step, 0.0, origin}, step);
+    if (slope) {
+        // A slope that moves the force by `step` at the row farthest from the origin.
+        const double lever = std::max(std::abs(curve.time.front() - origin), std::abs(curve.time.back() - origin));
+        if (lever > 0.0) {
+            columns.slope_differences = difference({0.0, step / lever, origin}, step / lever);
+        } else {
+            columns.slope_differences.assign(used.size(), 0.0);
+        }
+    }
+    return columns;
 }
 
 namespace {

@@ -55,14 +55,35 @@ public:
     double baseline(const double* nuisance) const;
     /// The curve as prepared for the model (its used points and noise).
     const CurveModel& prepared() const { return prepared_; }
+
+    /// The derivatives of the model (the fitted quantity, unweighted) with respect to a shift level + slope
+    /// (t - origin) of the baseline, per used point (the held baseline's error parts, HeldBaselineErrors): the
+    /// residuals' are these over the noise. A fitted force is the model's force plus the baseline: 1 and t - origin,
+    /// exact (nothing stored). A fitted depth is driven by the force less the baseline: forward differences of the
+    /// model, stored.
+    struct BaselineColumns {
+        const std::vector<double>* time = nullptr;       ///< the rows' times (a fitted force)
+        const std::vector<std::size_t>* used = nullptr;  ///< the used points' rows (a fitted force)
+        double origin = 0.0;                             ///< the slope's origin [time]
+        std::vector<double> level_differences{}, slope_differences{};  ///< a fitted depth's columns
+        /// d model_i / d level at used point i.
+        double level(std::size_t i) const { return time ? 1.0 : level_differences[i]; }
+        /// d model_i / d slope at used point i.
+        double slope(std::size_t i) const { return time ? (*time)[(*used)[i]] - origin : slope_differences[i]; }
+    };
+    /// BaselineColumns at these values; a fitted depth's by one model run in the baseline's level and one in its
+    /// slope (`slope` only when asked for; slope(i) must not be read otherwise), each moving the force by
+    /// 1e-6 of the curve's largest |force| at most (the step of a fitted baseline's column). Throws std::runtime_error
+    /// where the model cannot run there.
+    BaselineColumns baseline_columns(const double* shared, const double* nuisance, double origin, bool slope) const;
 private:
     /// What an evaluation with one forward model gave.
     enum class Outcome { done, failed, outside_model };
-    /// The model of the fitted quantity at the used points (contact point and baseline included): one forward run;
-    /// nullopt when the continuum model was asked for and does not apply; the continuum model's modulus derivatives
-    /// only when asked for.
+    /// The model of the fitted quantity at the used points (contact point and baseline included, the baseline moved
+    /// by `shift`): one forward run; nullopt when the continuum model was asked for and does not apply; the continuum
+    /// model's modulus derivatives only when asked for.
     std::optional<ModelValues> model(const double* shared, const double* nuisance, ForwardModel forward,
-                                     bool modulus_derivatives = true) const;
+                                     bool modulus_derivatives = true, const ForceBaseline& shift = {}) const;
     /// Residuals of one run into `residuals` (made in the run's own values where nothing reads them after: one
     /// vector as long as the curve, not two); `run`, when given, keeps the run (its modulus derivatives, which only a
     /// kept run has).

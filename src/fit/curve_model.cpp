@@ -39,12 +39,14 @@ CurveModel prepare_curve(const Curve& curve, Fitted fitted, double baseline) {
 
 namespace {
 
-// A forward model's forces at the used points plus the baseline, and its modulus derivatives there.
+// A forward model's forces at the used points of a curve with rows at `time` plus the baseline, and its modulus
+// derivatives there.
 ModelValues at_used_points(const std::vector<double>& force, const std::vector<std::vector<double>>& derivatives,
-                           const std::vector<std::size_t>& used, double baseline) {
+                           const std::vector<std::size_t>& used, const std::vector<double>& time,
+                           const ForceBaseline& baseline) {
     ModelValues model;
     model.values.reserve(used.size());
-    for (std::size_t i : used) model.values.push_back(force[i] + baseline);
+    for (std::size_t i : used) model.values.push_back(force[i] + baseline.at(time[i]));
     for (const auto& derivative : derivatives) {
         auto& at_used = model.modulus_derivatives.emplace_back();
         at_used.reserve(used.size());
@@ -55,7 +57,8 @@ ModelValues at_used_points(const std::vector<double>& force, const std::vector<s
 
 // The continuum model's force at the used points, plus the baseline, and its derivatives; nullopt outside its class.
 std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_case, const CurveModel& prepared,
-                                            double contact_depth, double baseline, bool modulus_derivatives) {
+                                            double contact_depth, const ForceBaseline& baseline,
+                                            bool modulus_derivatives) {
     const Curve& curve = *prepared.curve;
     // The depth below the contact point, taken in place (no copy of the curve's depth).
     auto response = ting_forces(model_case.material, *model_case.indenter, curve.time, curve.depth, contact_depth,
@@ -64,11 +67,11 @@ std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_ca
     ModelValues model;
     if (prepared.used.size() == response->force.size()) {  // every point (increasing indices): moved, not copied
         model.values = std::move(response->force);
-        for (double& value : model.values) value += baseline;
+        for (std::size_t i = 0; i < model.values.size(); ++i) model.values[i] += baseline.at(curve.time[i]);
         model.modulus_derivatives = std::move(response->modulus_derivatives);
         return model;
     }
-    return at_used_points(response->force, response->modulus_derivatives, prepared.used, baseline);
+    return at_used_points(response->force, response->modulus_derivatives, prepared.used, curve.time, baseline);
 }
 
 // The layer's fast model of a depth-driven curve: its force at the used points, plus the baseline, and its derivatives
@@ -76,14 +79,15 @@ std::optional<ModelValues> continuum_forces(const drivers::ContactCase& model_ca
 // it). Throws mdr::InvalidInput for a compressible body whose Poisson ratio changes in time or two bodies
 // (drivers::layer_poisson_ratio).
 std::optional<ModelValues> layer_curve(const drivers::ContactCase& model_case, const CurveModel& prepared,
-                                       double contact_depth, double baseline, bool modulus_derivatives) {
+                                       double contact_depth, const ForceBaseline& baseline,
+                                       bool modulus_derivatives) {
     const Curve& curve = *prepared.curve;
     const std::size_t nodes = model_case.numerics.elements.value_or(contact::default_layer_nodes);
     auto response = layer_forces(model_case.material, *model_case.layer, drivers::layer_poisson_ratio(model_case),
                                  model_case.indenter, curve.time, curve.depth, contact_depth, nodes,
                                  modulus_derivatives, curve.preloaded);
     if (!response) return std::nullopt;
-    return at_used_points(response->force, response->modulus_derivatives, prepared.used, baseline);
+    return at_used_points(response->force, response->modulus_derivatives, prepared.used, curve.time, baseline);
 }
 
 }  // namespace
@@ -117,7 +121,7 @@ void drive(drivers::ContactCase& model_case, std::vector<drivers::LoadPoint> poi
 }
 
 std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const CurveModel& prepared,
-                                     double contact_depth, double baseline, std::size_t elements,
+                                     double contact_depth, const ForceBaseline& baseline, std::size_t elements,
                                      ForwardModel forward_model, const std::function<void()>& check_interrupt,
                                      bool modulus_derivatives) {
     const Curve& curve = *prepared.curve;
@@ -131,7 +135,8 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     for (std::size_t i = 0; i < curve.time.size(); ++i) {
         // The driving quantity: depth below the contact point, or force above the baseline (the indenter cannot
         // pull, so a force reading below the baseline is no contact: 0).
-        drive_values[i] = depth_driven ? curve.depth[i] - contact_depth : std::max(curve.force[i] - baseline, 0.0);
+        drive_values[i] = depth_driven ? curve.depth[i] - contact_depth
+                                       : std::max(curve.force[i] - baseline.at(curve.time[i]), 0.0);
     }
     std::vector<drivers::LoadPoint> points = driving_points(curve.time, drive_values);
     std::vector<double> times, depths;  // the driving points, for the band model
@@ -168,7 +173,9 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
             ModelValues model;
             model.band = true;
             model.values.reserve(prepared.used.size());
-            for (std::size_t i : prepared.used) model.values.push_back(band->force[i + offset] + baseline);
+            for (std::size_t i : prepared.used) {
+                model.values.push_back(band->force[i + offset] + baseline.at(curve.time[i]));
+            }
             return model;
         }
     }
@@ -211,7 +218,7 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
     for (std::size_t i : prepared.used) {
         const double t = curve.time[i];
         while (row + 1 < result.time.size() && result.time[row + 1] <= t) ++row;
-        model.values.push_back(depth_driven ? values[row] + baseline : values[row] + contact_depth);
+        model.values.push_back(depth_driven ? values[row] + baseline.at(t) : values[row] + contact_depth);
     }
     return model;
 }

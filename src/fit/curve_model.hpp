@@ -54,6 +54,16 @@ std::vector<drivers::LoadPoint> driving_points(const std::vector<double>& time, 
 void drive(drivers::ContactCase& model_case, std::vector<drivers::LoadPoint> points, const std::vector<double>& time,
            bool depth_driven);
 
+/// The force baseline b(t) = level + slope (t - origin) of a run of a curve [force]: a constant unless `slope` is set
+/// (the held baseline's slope error is propagated through it, fit_diagnostics.cpp).
+struct ForceBaseline {
+    double level = 0.0;   ///< b at `origin` [force]
+    double slope = 0.0;   ///< [force / time]
+    double origin = 0.0;  ///< [time]
+    /// b at time `t`.
+    double at(double t) const { return level + slope * (t - origin); }
+};
+
 /// One run of the model of a curve.
 struct ModelValues {
     std::vector<double> values;  ///< the fitted quantity at the used points
@@ -66,17 +76,17 @@ struct ModelValues {
 
 /// The model of the fitted quantity at the used points (force plus baseline, or depth plus contact_depth): `model_case`
 /// with its load replaced by the curve's history (depth minus contact_depth under displacement control; force minus
-/// baseline, and 0 below it, under force control). ForwardModel::elements runs the drivers with `elements` elements and
-/// the curve's own points as time steps (the depth model is the depth below the contact point), as the band model where
-/// it applies (band_forces, band_depths: the same values); on a `[layer]` the layer's drivers on cells from the start
-/// (drivers::NumericsOptions::layer_cells; `numerics.elements` cells, `elements` unused); ForwardModel::continuum
-/// computes the force of a depth-driven curve exactly (ting_forces, on a layer layer_forces) and gives nullopt where
-/// that model does not apply. `check_interrupt`, when set, is
-/// called at the drivers' progress reports (it may throw mdr::Interrupted). Without `modulus_derivatives` the continuum
-/// model leaves them out (a run whose values alone are read: half its memory for an elastic material). Throws what the
+/// baseline, and 0 below it, under force control; the baseline at each row's time). ForwardModel::elements runs the
+/// drivers with `elements` elements and the curve's own points as time steps (the depth model is the depth below the
+/// contact point), as the band model where it applies (band_forces, band_depths: the same values); on a `[layer]` the
+/// layer's drivers on cells from the start (drivers::NumericsOptions::layer_cells; `numerics.elements` cells,
+/// `elements` unused); ForwardModel::continuum computes the force of a depth-driven curve exactly (ting_forces, on a
+/// layer layer_forces) and gives nullopt where that model does not apply. `check_interrupt`, when set, is called at
+/// the drivers' progress reports (it may throw mdr::Interrupted). Without `modulus_derivatives` the continuum model
+/// leaves them out (a run whose values alone are read: half its memory for an elastic material). Throws what the
 /// drivers throw.
 std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const CurveModel& prepared,
-                                     double contact_depth, double baseline, std::size_t elements,
+                                     double contact_depth, const ForceBaseline& baseline, std::size_t elements,
                                      ForwardModel forward_model, const std::function<void()>& check_interrupt = {},
                                      bool modulus_derivatives = true);
 

@@ -162,8 +162,9 @@ std::vector<Eigen::Index> curve_columns(std::size_t k, std::size_t m, std::size_
 // curve at a time: no N x p copy of the Jacobian (docs/performance.md, "Memory of a fit"). A curve's errors are
 // taken as AR(1) within the curve with coefficient phis[c]; where `phis` is empty on entry, phi = error_correlation,
 // and `phis` gets them. Rebound data are taken as independent. `baseline_sums` gets each curve's J^T dr/db for the
-// held baseline's level and slope (held_baseline_errors): two columns, dr/d level = 1 / noise and dr/d slope =
-// (t - mean_time) / noise on each fitted force (0 for fitted depths). `curve_grams` gets each curve's part
+// held baseline's level and slope (held_baseline_errors) about the mean time of the rows before contact: two
+// columns, dr/db = (d model / db) / noise from CurveCost::baseline_columns (exact for a fitted force, by model runs
+// for a fitted depth; only where the held baseline has an error). `curve_grams` gets each curve's part
 // J_c^T P_c J_c of J^T P J on its columns (curve_columns).
 JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
                                  const std::vector<std::unique_ptr<ReboundCost>>& rebounds,
@@ -195,7 +196,12 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
         summary.add_residuals(residuals);
         const Curve& data = problem.curves[c];
         const bool force_fitted = prepared.fitted == Fitted::force;
-        const double mean_time = held_baseline_errors(problem.settings, data).mean_time;
+        const HeldBaselineErrors baseline_errors = held_baseline_errors(problem.settings, data);
+        const bool baseline_error = baseline_errors.level > 0.0, slope_error = baseline_errors.slope > 0.0;
+        const CurveCost::BaselineColumns baseline_columns =
+            baseline_error ? cost.baseline_columns(shared.data(), nuisance[c].data(), baseline_errors.mean_time,
+                                                   slope_error)
+                           : CurveCost::BaselineColumns{};
         const auto& measured = force_fitted ? data.force : data.depth;
         curve.name = data.name;
         curve.fitted = prepared.fitted;
@@ -241,10 +247,15 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
                                  for (std::size_t j = 0; j < m; ++j) {
                                      row[static_cast<Eigen::Index>(k + c * m + j)] = nuisance_block[r * m + j];
                                  }
-                                 if (!force_fitted) return;
-                                 const double lever = data.time[prepared.used[begin + r]] - mean_time;
-                                 baseline_sums[c].col(0) += row.transpose() / prepared.noise;
-                                 baseline_sums[c].col(1) += row.transpose() * (lever / prepared.noise);
+                                 const std::size_t point = begin + r;
+                                 if (baseline_error) {
+                                     baseline_sums[c].col(0) +=
+                                         row.transpose() * baseline_columns.level(point) / prepared.noise;
+                                 }
+                                 if (slope_error) {
+                                     baseline_sums[c].col(1) +=
+                                         row.transpose() * baseline_columns.slope(point) / prepared.noise;
+                                 }
                              });
         }
         const std::vector<Eigen::Index> columns = curve_columns(k, m, c);
@@ -430,17 +441,11 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
     // A held baseline b (from the rows before contact) carries its own error, independent of the fitted rows' noise:
     // the least-squares estimate moves by -(J^T J)^+ J^T dr/db per unit of b, which adds sigma_b^2 s s^T for each of
     // the baseline's independent parts (a line's level and slope about its rows' mean time, held_baseline_errors).
+    // A fitted force moves with b directly, a fitted depth through the force less b that drives it.
     for (std::size_t c = 0; c < costs.size(); ++c) {
         const HeldBaselineErrors errors = held_baseline_errors(problem.settings, problem.curves[c]);
         if (!(errors.level > 0.0)) continue;
         result.curves[c].baseline_error = held_baseline_error(problem.settings, problem.curves[c]);
-        if (result.curves[c].fitted != Fitted::force) {  // the baseline moves the force that drives the model
-            result.curves[c].flags.push_back(fmt::format(
-                "the baseline's error {:.3g} (from the rows before contact) is not included in the errors: the curve "
-                "is fitted in depth, driven by its force less the baseline, and that is not propagated",
-                result.curves[c].baseline_error));
-            continue;
-        }
         const std::array<double, 2> part_errors{errors.level, errors.slope};
         for (Eigen::Index part = 0; part < 2; ++part) {
             const Eigen::VectorXd shift = pseudo_inverse * baseline_sums[c].col(part);

@@ -40,7 +40,10 @@ double held_baseline_error(const FitSettings& settings, const Curve& curve) {
     const std::size_t rows = std::min(curve.baseline_rows, curve.time.size());
     if (rows == 0 || settings.baseline == BaselineMode::fixed || settings.baseline == BaselineMode::fit) return 0.0;
     const double count = static_cast<double>(rows);
-    if (settings.baseline == BaselineMode::constant) return curve.force_noise / std::sqrt(count);
+    // A mean: the constant's, or the estimate's from fewer rows than a tilt needs (no slope fitted).
+    if (settings.baseline == BaselineMode::constant || rows < tilt_rows_min) {
+        return curve.force_noise / std::sqrt(count);
+    }
     const auto [mean_time, spread] = pre_contact_times(curve, rows);
     const double lever = spread > 0.0 ? std::pow(curve.contact_time - mean_time, 2) / spread : 0.0;
     return curve.force_noise * std::sqrt(1.0 / count + lever);
@@ -68,6 +71,16 @@ std::optional<FitProblem> with_pre_contact_baselines(const FitProblem& problem) 
         }
     }
     if (mode == BaselineMode::constant) return std::nullopt;
+    for (std::size_t c = 0; c < problem.curves.size(); ++c) {
+        const Curve& curve = problem.curves[c];
+        if (curve.baseline_rows < tilt_rows_min) {
+            throw InvalidInput("fit.baseline", "\"line\"",
+                               fmt::format("fit.data[{}] ({}) has only {} rows before contact (a short approach); a "
+                                           "line's tilt needs {}: baseline = \"constant\" takes their mean and "
+                                           "carries its error",
+                                           c, curve.name, curve.baseline_rows, tilt_rows_min));
+        }
+    }
     FitProblem fixed = problem;
     fixed.settings.baseline = BaselineMode::estimate;
     for (Curve& curve : fixed.curves) {

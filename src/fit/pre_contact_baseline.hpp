@@ -38,10 +38,11 @@ HeldBaselineErrors held_baseline_errors(const FitSettings& settings, const Curve
 
 /// Checks that every curve has rows before contact where the baseline comes from them (BaselineMode::constant or
 /// line): throws mdr::InvalidInput (key `fit.baseline`) for a curve without (it starts in contact, or has no
-/// contact estimate): its baseline cannot come from the data. For BaselineMode::line returns `problem` with each
-/// curve's tilt, the estimate's slope (t - contact_time), taken off every row's force and the baseline then held at
-/// the line's value at the contact (BaselineMode::estimate). Any other mode returns nullopt: `problem` stands as it
-/// is, and is not copied (its curves may hold 10^7 rows).
+/// contact estimate): its baseline cannot come from the data; for BaselineMode::line also for a curve with fewer
+/// than tilt_rows_min rows before contact (a tilt cannot come from them). For BaselineMode::line returns `problem`
+/// with each curve's tilt, the estimate's slope (t - contact_time), taken off every row's force and the baseline
+/// then held at the line's value at the contact (BaselineMode::estimate). Any other mode returns nullopt: `problem`
+/// stands as it is, and is not copied (its curves may hold 10^7 rows).
 std::optional<FitProblem> with_pre_contact_baselines(const FitProblem& problem);
 
 }  // namespace mdr::fit

@@ -225,7 +225,7 @@ TEST(BandModel, FitsRunTheElementModelAsTheBandModel) {
                                     .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
                                     .end_time = 1.0};
     const std::size_t elements = 2000;
-    const auto model = run_curve(model_case, prepared, 0.0, 0.0, elements, ForwardModel::elements);
+    const auto model = run_curve(model_case, prepared, 0.0, {}, elements, ForwardModel::elements);
     ASSERT_TRUE(model.has_value());
     EXPECT_TRUE(model->band);
     const auto expected = element_forces(material, indenter, history, elements).first;
@@ -557,7 +557,7 @@ TEST(BandModel, FitsRunForceDrivenCurvesAsTheBandModel) {
                                     .end_time = 1.0};
     const std::size_t elements = 1000;
     const double contact_depth = 1e-8;
-    const auto model = run_curve(model_case, prepared, contact_depth, 0.0, elements, ForwardModel::elements);
+    const auto model = run_curve(model_case, prepared, contact_depth, {}, elements, ForwardModel::elements);
     ASSERT_TRUE(model.has_value());
     EXPECT_TRUE(model->band);
     const auto expected = drivers::run_case(force_case(material, indenter, history, elements));

@@ -173,6 +173,10 @@ Curve make_curve(std::string name, std::vector<double> time, std::vector<double>
 /// 0 for fewer than 3 values.
 double difference_noise(const std::vector<double>& values, std::size_t begin, std::size_t end);
 
+/// The rows before contact that a baseline's tilt and its noise need: from a window of fewer (a short approach,
+/// estimate_contact's step 4) the baseline is their mean, Curve::baseline_slope 0, and the noise a wider window's.
+inline constexpr std::size_t tilt_rows_min = 8;
+
 /// Fills the noise, contact point and baseline estimates of `curve`: a straight-line baseline in time fitted before
 /// the force rises (its noise: 1.4826 x MAD of the residuals), then a power-law onset F - baseline = A (d - d_c)^n
 /// (n in [1, 3]) fitted near the rise gives the contact depth d_c; the depth noise comes from second differences.
