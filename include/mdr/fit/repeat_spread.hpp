@@ -37,8 +37,8 @@ struct RepeatSpread {
 };
 
 /// The spread of `fits` (the same free keys in the same order, as `mdr fit --each` gives). Fits that did not
-/// converge are left out, and a key's value where its fit leaves it undetermined (FitResult::undetermined; a flag
-/// says how many); a key with fewer than 2 values left has no spread (count < 2, the rest NaN).
+/// converge are left out, and so is a key's value where its fit leaves it undetermined (FitResult::undetermined; a
+/// flag says how many); a key with fewer than 2 values left has no spread (count < 2, the rest NaN).
 /// Throws std::invalid_argument when the fits' free keys differ.
 RepeatSpread spread_of_repeats(const std::vector<FitResult>& fits);
 
