@@ -130,6 +130,9 @@ bool run_each(const fitcase::FitCase& fit_case, const std::vector<std::string>& 
         }
         fmt::print("  {}:{}; residual/noise {}: {}\n", stems[i], values, residual_to_noise_text(result),
                    result.status);
+        for (const auto& entry : result.undetermined) {
+            fmt::print("  undetermined ({}): {}: {}\n", stems[i], entry.name, entry.reason);
+        }
         print_flags(result);
         converged = converged && result.converged;
     }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "curve_model.hpp"
 #include "mdr/error.hpp"
@@ -200,7 +201,13 @@ CandidateFit fit_material(const CandidateProblem& base, const Material& material
         if (material.model) built.material_origin = std::move(candidate.origin);  // a converted one's certificate
         return built;
     };
-    CandidateFit fitted{material.name, fit(problem), "", material.grid, 0.0, 0.0};
+    FitResult result;
+    try {
+        result = fit(problem);
+    } catch (const InvalidInput& error) {  // a rule the candidate breaks (the case's are checked before): name it
+        throw InvalidInput(error.key(), error.value(), error.rule() + " (candidate " + material.name + ")");
+    }
+    CandidateFit fitted{material.name, std::move(result), "", material.grid, 0.0, 0.0};
     add_plausibility_flags(problem, base.units, fitted.result);
     fitted.material_table = material_text(material, fitted.result.values.data() + offset);
     return fitted;

@@ -72,7 +72,7 @@ std::string few_approach_rows_flag(const Curve& curve, std::size_t approach) {
                           "baseline plus the preload's force)"
                         : "and the model takes the rows before contact as unloaded (no preload at the "
                           "record's start; a preload's force would be taken for baseline; start = "
-                          "\"preloaded\" models one)");
+                          "\"preloaded\" models one, for a material with an equilibrium modulus G_inf > 0)");
 }
 
 // A preloaded curve's preload depth d_0 (its contact at or before its first row by design) against its bounds.

@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "active_bounds.hpp"
+#include "band_model.hpp"
 #include "contact_flags.hpp"
 #include "curve_cost.hpp"
 #include "curve_rows_cost.hpp"
@@ -69,6 +70,32 @@ void require_bounds_within_the_model(const FitProblem& problem) {
     }
 }
 
+// A preloaded start (Curve::preloaded) is the material at rest under d_0, every branch relaxed: the band model builds
+// it (band_model.hpp: an equilibrium modulus > 0, Prony moduli >= 0, no dashpot) for an indenter other than a flat
+// punch, a [layer] its own (docs/theory.md eq. L21). Checked at the start values, so that `mdr check` and a candidate
+// of fit.candidates refuse it before any fit runs (the forward model refuses it too, mid-fit).
+void require_a_material_that_can_rest_preloaded(const FitProblem& problem) {
+    const auto preloaded = std::find_if(problem.curves.begin(), problem.curves.end(),
+                                        [](const Curve& curve) { return curve.preloaded; });
+    if (preloaded == problem.curves.end() || !problem.model) return;
+    std::vector<double> values;
+    for (const auto& parameter : problem.parameters) values.push_back(parameter.start);
+    const drivers::ContactCase model = problem.model(values);
+    if (model.layer) return;
+    const bool flat_punch = model.indenter && model.indenter->is_flat_punch();
+    if (band_model_applies(model.material) && !flat_punch) return;
+    const auto c = static_cast<std::size_t>(preloaded - problem.curves.begin());
+    throw InvalidInput(
+        fmt::format("fit.data[{}].start", c), "\"preloaded\"",
+        fmt::format("needs a material that rests under a preload with every branch relaxed (an equilibrium modulus "
+                    "G_inf > 0, Prony moduli >= 0, no dashpot) and an indenter other than a flat punch; {} (at the "
+                    "start values of fit.free): use start = \"at_rest\" or such a material",
+                    flat_punch ? "the indenter is a flat punch"
+                               : fmt::format("the material has equilibrium modulus {}, dashpot viscosity {}",
+                                             format_value(model.material.equilibrium_modulus()),
+                                             format_value(model.material.viscosity()))));
+}
+
 }  // namespace
 
 void validate(const FitProblem& problem) {
@@ -105,6 +132,7 @@ void validate(const FitProblem& problem) {
     }
     require_bounds_within_the_model(problem);
     require_time_where_the_material_needs_it(problem);
+    require_a_material_that_can_rest_preloaded(problem);
     if (const auto& bounds = problem.settings.contact_point_bounds) {
         const std::string key = "fit.bounds.contact_point";
         require_finite(key, (*bounds)[0]);

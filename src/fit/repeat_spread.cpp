@@ -15,12 +15,22 @@ namespace {
 
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 
-// The spread of one key over the converged fits.
+bool undetermined_in(const FitResult& fit, const std::string& name) {
+    return std::any_of(fit.undetermined.begin(), fit.undetermined.end(),
+                       [&](const Undetermined& entry) { return entry.name == name; });
+}
+
+// The spread of one key over the converged fits that determine it (an undetermined value is no measurement:
+// docs/case-format.md, "Undetermined").
 KeySpread key_spread(const std::vector<FitResult>& fits, std::size_t j) {
     KeySpread spread{.name = fits.front().names[j]};
     std::vector<double> values, errors;
     for (const auto& fit : fits) {
         if (!fit.converged || !std::isfinite(fit.values[j])) continue;
+        if (undetermined_in(fit, spread.name)) {
+            ++spread.undetermined;
+            continue;
+        }
         values.push_back(fit.values[j]);
         errors.push_back(fit.standard_errors[j]);
     }
@@ -47,6 +57,14 @@ KeySpread key_spread(const std::vector<FitResult>& fits, std::size_t j) {
     spread.consistent_low = std::sqrt((n - 1.0) / numerics::chi_squared_quantile(n - 1.0, 0.975));
     spread.consistent_high = std::sqrt((n - 1.0) / numerics::chi_squared_quantile(n - 1.0, 0.025));
     return spread;
+}
+
+// The flag of a key that some converged fits leave undetermined, or "".
+std::string undetermined_flag(const KeySpread& key) {
+    if (key.undetermined == 0) return "";
+    return fmt::format("{}: undetermined in {} of the {} converged fits (see their undetermined): those values are "
+                       "left out of its spread, which has {} value(s) left",
+                       key.name, key.undetermined, key.undetermined + key.count, key.count);
 }
 
 // The flag of a key whose errors and spread disagree, or "".
@@ -85,7 +103,9 @@ RepeatSpread spread_of_repeats(const std::vector<FitResult>& fits) {
     }
     for (std::size_t j = 0; j < fits.front().names.size(); ++j) {
         result.keys.push_back(key_spread(fits, j));
-        if (auto flag = disagreement(result.keys.back()); !flag.empty()) result.flags.push_back(std::move(flag));
+        for (auto flag : {undetermined_flag(result.keys.back()), disagreement(result.keys.back())}) {
+            if (!flag.empty()) result.flags.push_back(std::move(flag));
+        }
     }
     return result;
 }

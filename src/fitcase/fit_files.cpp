@@ -181,6 +181,7 @@ Document spread_document(const fit::RepeatSpread& spread) {
         const Document::List range{number_or_null(key.consistent_low), number_or_null(key.consistent_high)};
         keys.emplace_back(key.name, Document{Document::Table{
                                         {"count", Document{key.count}},
+                                        {"undetermined", Document{key.undetermined}},
                                         {"mean", number_or_null(key.mean)},
                                         {"standard_deviation", number_or_null(key.standard_deviation)},
                                         {"standard_error_of_mean", number_or_null(key.standard_error_of_mean)},

@@ -94,3 +94,22 @@ def test_a_misfit_the_records_share_is_flagged(run_mdr, workdir):
     spread = each["spread"]["material.G"]
     assert spread["error_to_spread"] > spread["consistent_range"][1]
     assert len(each["flags"]) == 1 and "model misfit" in each["flags"][0]
+
+
+def test_an_undetermined_key_is_left_out_of_the_spread(run_mdr, workdir):
+    # G and R of an elastic sphere enter only as G sqrt(R): each fit leaves both undetermined (at G = 0.1, not the
+    # 0.2 of the data). The batch gave "G = 0.1 +- 1.8e-06" without a flag; an undetermined value is no measurement.
+    names = write_curves(workdir, [0.2] * 3)
+    path = workdir / "case.toml"
+    path.write_text(CASE.replace('free = ["material.G"]', 'free = ["material.G", "indenter.R"]'), encoding="utf-8")
+    result = run_mdr("fit", path, "--each", *names, "--out", workdir / "out", timeout=300)
+    assert result.returncode == 0, result.stderr
+    each = json.loads((workdir / "out" / "each.json").read_text())
+    for key in ("material.G", "indenter.R"):
+        spread = each["spread"][key]
+        assert spread["count"] == 0 and spread["undetermined"] == 3, spread
+        assert spread["mean"] is None and spread["error_to_spread"] is None, spread
+        assert f"{key}: undetermined in 3 of the 3 converged fits" in result.stdout
+        assert f"undetermined (c0): {key}:" in result.stdout
+    assert len(each["flags"]) == 2 and all("left out of its spread" in flag for flag in each["flags"])
+    assert "spread of the" not in result.stdout

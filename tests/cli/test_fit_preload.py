@@ -160,8 +160,8 @@ def test_a_preload_on_a_layer_whose_contact_grows_again_is_refused(run_mdr, work
 
 
 def test_a_preload_the_band_model_cannot_run_is_refused(run_mdr, workdir):
-    # A Maxwell material (G_inf = 0) and a depth that dips once (outside the continuum model): the drivers' elements
-    # start unloaded, so the preloaded curve is refused naming the key and the rule.
+    # A Maxwell material (G_inf = 0) and a depth that dips once (outside the continuum model): no state at rest under
+    # a preload (the drivers' elements start unloaded), so the preloaded curve is refused naming the key and the rule.
     write_record(workdir / "record.csv")
     lines = (workdir / "record.csv").read_text(encoding="utf-8").splitlines()
     row = lines[300].split(",")
@@ -173,4 +173,30 @@ def test_a_preload_the_band_model_cannot_run_is_refused(run_mdr, workdir):
             .replace('["material.G_inf", "material.G1", "material.tau1"]', '["material.G", "material.tau"]'))
     (workdir / "case.toml").write_text(text, encoding="utf-8")
     assert_bad_input(run_mdr("fit", workdir / "case.toml", "--out", workdir / "out"),
-                     'fit.data.start = "preloaded"', "needs the band model")
+                     'fit.data[0].start = "preloaded"', "equilibrium modulus G_inf > 0",
+                     "the material has equilibrium modulus 0")
+
+
+STANDARD = "model = \"standard\"\nG_inf = 5.0e3\nG1 = 1.0e4\ntau1 = 0.1\n"
+FREE = "free = [\"material.G_inf\", \"material.G1\", \"material.tau1\"]\n"
+
+
+@pytest.mark.parametrize("command", ["check", "fit"])
+def test_a_material_that_relaxes_to_zero_cannot_start_preloaded(run_mdr, workdir, command):
+    # A power law relaxes to 0 (no equilibrium modulus): no state at rest under a preload. `mdr check` said "ok" and
+    # `mdr fit` refused it only when its model first ran; both refuse it now, naming the key and the material's G_inf.
+    write_record(workdir / "record.csv")
+    text = CASE.format(start="preloaded").replace(STANDARD, "model = \"power_law\"\nG0 = 1.0e4\nbeta = 0.3\n")
+    (workdir / "case.toml").write_text(text.replace(FREE, "free = [\"material.G0\", \"material.beta\"]\n"),
+                                       encoding="utf-8")
+    extra = ("--out", workdir / "out") if command == "fit" else ()
+    assert_bad_input(run_mdr(command, workdir / "case.toml", *extra), "fit.data[0].start = \"preloaded\"",
+                     "equilibrium modulus G_inf > 0", "the material has equilibrium modulus 0")
+
+
+def test_a_candidate_that_cannot_start_preloaded_is_named(run_mdr, workdir):
+    write_record(workdir / "record.csv")
+    text = CASE.format(start="preloaded").replace(FREE, "candidates = [\"standard\", \"power_law\"]\n")
+    (workdir / "case.toml").write_text(text, encoding="utf-8")
+    assert_bad_input(run_mdr("fit", workdir / "case.toml", "--out", workdir / "out", timeout=300),
+                     "fit.data[0].start = \"preloaded\"", "equilibrium modulus 0", "(candidate power_law)")

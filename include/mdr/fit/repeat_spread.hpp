@@ -15,7 +15,8 @@ namespace mdr::fit {
 /// One free key over the fits of a batch.
 struct KeySpread {
     std::string name;                    ///< the free key, e.g. `material.G_inf`
-    std::size_t count = 0;               ///< fits that converged with a finite value of the key
+    std::size_t count = 0;               ///< fits that converged with a finite, determined value of the key
+    std::size_t undetermined = 0;        ///< converged fits that leave the key undetermined (left out)
     double mean = 0.0;                   ///< their mean value
     double standard_deviation = 0.0;     ///< their sample standard deviation (n - 1): the spread of the repeats
     double standard_error_of_mean = 0.0; ///< standard_deviation / sqrt(count): the mean's uncertainty from the spread
@@ -36,7 +37,8 @@ struct RepeatSpread {
 };
 
 /// The spread of `fits` (the same free keys in the same order, as `mdr fit --each` gives). Fits that did not
-/// converge are left out; a key with fewer than 2 converged values has no spread (count < 2, the rest NaN).
+/// converge are left out, and so is a key's value where its fit leaves it undetermined (FitResult::undetermined; a
+/// flag says how many); a key with fewer than 2 values left has no spread (count < 2, the rest NaN).
 /// Throws std::invalid_argument when the fits' free keys differ.
 RepeatSpread spread_of_repeats(const std::vector<FitResult>& fits);
 
