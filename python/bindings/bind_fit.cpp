@@ -148,18 +148,20 @@ void bind_fit(py::module_& module) {
     module.def(
         "_spread_of_repeats",
         [](const std::vector<std::string>& names, const std::vector<std::vector<double>>& values,
-           const std::vector<std::vector<double>>& standard_errors, const std::vector<bool>& converged) {
+           const std::vector<std::vector<double>>& standard_errors, const std::vector<bool>& converged,
+           const std::vector<std::vector<std::string>>& undetermined) {
             std::vector<fit::FitResult> fits(values.size());
             for (std::size_t i = 0; i < fits.size(); ++i) {
                 fits[i].names = names;
                 fits[i].values = values[i];
                 fits[i].standard_errors = standard_errors.at(i);
                 fits[i].converged = converged.at(i);
+                for (const auto& name : undetermined.at(i)) fits[i].undetermined.push_back({name, ""});
             }
             return document_object(fitcase::spread_document(fit::spread_of_repeats(fits)));
         },
-        py::arg("names"), py::arg("values"), py::arg("standard_errors"), py::arg("converged"),
-        "each.json's dict for fits with these free keys, one row of values and errors per fit "
+        py::arg("names"), py::arg("values"), py::arg("standard_errors"), py::arg("converged"), py::arg("undetermined"),
+        "each.json's dict for fits with these free keys, one row of values, errors and undetermined keys per fit "
         "(mdr.spread_of_repeats is the public entry).");
     module.def(
         "_afm_depth_and_force",

@@ -334,7 +334,8 @@ def spread_of_repeats(fits: Sequence[FitResult]) -> dict[str, Any]:
     fits that converged, ``count``, ``mean``, ``standard_deviation`` (n - 1), ``standard_error_of_mean``,
     ``typical_error`` (the median of the fits' standard errors), ``error_to_spread`` and ``consistent_range`` (the
     95 % range of that ratio when each value scatters by exactly its error); and ``flags``, one line per key outside
-    its range (a misfit the records share, or records that differ by more than their noise).
+    its range (a misfit the records share, or records that differ by more than their noise). A key's value from a
+    fit that leaves it undetermined is no measurement: it is left out of the spread and counted in ``undetermined``.
 
     Parameters
     ----------
@@ -361,4 +362,5 @@ def spread_of_repeats(fits: Sequence[FitResult]) -> dict[str, Any]:
     values = [[float(result.parameters[name]) for name in names] for result in fits]
     errors = [[float(result.standard_errors[name]) for name in names] for result in fits]
     converged = [bool(result.summary.get("converged", False)) for result in fits]
-    return _mdr._spread_of_repeats(names, values, errors, converged)
+    undetermined = [list(result.summary.get("undetermined") or {}) for result in fits]
+    return _mdr._spread_of_repeats(names, values, errors, converged, undetermined)

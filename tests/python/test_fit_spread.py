@@ -52,3 +52,25 @@ def test_bad_input_is_refused_naming_it():
                           status="converged", summary={"converged": True})
     with pytest.raises(ValueError, match=r"fits\[1\]: its free keys \['material.G_inf'\] differ"):
         mdr.spread_of_repeats([fit, other])
+
+
+def test_an_undetermined_key_is_left_out_of_the_spread_as_by_fit_each():
+    # G and R of an elastic sphere enter only as G sqrt(R): each fit leaves both undetermined. Their values are no
+    # measurement; spread_of_repeats counted them as one (undetermined 0), where `mdr fit --each` leaves them out.
+    fits = []
+    for seed in range(3):
+        generator = np.random.default_rng(seed)
+        depth = np.linspace(0.0, 4.0e-6, 300)
+        force = 16.0 / 3.0 * 200.0 * np.sqrt(R) * np.clip(depth - 1.0e-6, 0.0, None) ** 1.5
+        case = {"material": {"model": "elastic", "G": 50.0}, "indenter": {"shape": "sphere", "R": R},
+                "fit": {"free": ["material.G", "indenter.R"]}}
+        data = {"time": np.linspace(0.0, 1.0, 300), "depth": depth,
+                "force": force + generator.normal(0.0, 2e-12, 300)}
+        fits.append(mdr.fit(case, data=[data]))
+    assert all(set(fit.summary["undetermined"]) == {"material.G", "indenter.R"} for fit in fits)
+    result = mdr.spread_of_repeats(fits)
+    for key in ("material.G", "indenter.R"):
+        spread = result["spread"][key]
+        assert spread["count"] == 0 and spread["undetermined"] == 3, spread
+        assert spread["mean"] is None and spread["error_to_spread"] is None, spread
+    assert len(result["flags"]) == 2 and all("left out of its spread" in flag for flag in result["flags"])
