@@ -96,14 +96,15 @@ py::tuple load_control_classes(std::type_identity<std::variant<Controls...>>) {
 }
 
 // The material `material` (key `key`) as a case file's reader gives it to a body (io::compressible_body): a
-// converted material with its certificate, its description in the case's units `system` and its conversion times
-// (its own series, not converted again); a plain mdr.Material as its own exact series (rheology::exact_material).
+// converted material with its certificate, its description in the case's units `system`, its conversion times and
+// its definition (its own series, not converted again; read back as an mdr.ConvertedMaterial); a plain mdr.Material
+// as its own exact series (rheology::exact_material).
 rheology::ModelMaterial model_material(const py::handle& material, const std::string& key,
                                        const io::UnitSystem& system) {
     if (py::isinstance<ConvertedMaterial>(material)) {
         const auto& converted = material.cast<const ConvertedMaterial&>();
         const rheology::Rheology& series = converted;
-        return rheology::ModelMaterial{series, converted.origin(io::unit_names(system))};
+        return rheology::ModelMaterial{series, converted.origin(io::unit_names(system)), converted.definition};
     }
     if (!py::isinstance<rheology::Rheology>(material)) {
         throw py::type_error(key + ": expected an mdr.Material, got " + type_name(material));

@@ -209,3 +209,18 @@ def test_a_converted_material_of_a_case_file_rebuilds_with_its_origin(tmp_path, 
     assert_same_outputs(expected, rebuilt)
     assert rebuilt.description == expected.description
     assert rebuilt.summary["material_window"] == expected.summary["material_window"]
+
+
+@pytest.mark.parametrize("text", CONVERTED_CASES.values(), ids=CONVERTED_CASES.keys())
+def test_a_rebuilt_case_reads_back_its_converted_material_for_the_next_rebuild(tmp_path, text):
+    """A case built from an mdr.ConvertedMaterial reads it back as one (its definition and certificate), so that a
+    case rebuilt from a rebuilt case is still the file's case. Before, the object constructor dropped the definition:
+    the second rebuild's material was the bare series (no certificate, the series' own time step)."""
+    path = tmp_path / "case.toml"
+    path.write_text(text)
+    from_file = mdr.ContactCase.from_file(str(path))
+    once = mdr.ContactCase(**parts(from_file))
+    assert isinstance(once.material, mdr.ConvertedMaterial)
+    assert once.material._definition == from_file.material._definition
+    twice = mdr.ContactCase(**parts(once))
+    assert_same_outputs(mdr.run(str(path)), mdr.run(twice))
