@@ -88,9 +88,13 @@ ModelMaterial build_table(const ModelParameters& p, const ConversionOptions& opt
 std::vector<MaterialModel> rows() {
     return {
         {"elastic", "G(t) = G", {modulus("G", "shear modulus")}, false,
-         [](const ModelParameters& p, const ConversionOptions&) { return exact_material(Rheology::elastic(p.number("G"))); }},
+         [](const ModelParameters& p, const ConversionOptions&) {
+             return exact_material(Rheology::elastic(p.number("G")));
+         }},
         {"viscous", "G(t) = eta delta(t)", {viscosity("viscosity")}, false,
-         [](const ModelParameters& p, const ConversionOptions&) { return exact_material(Rheology::viscous(p.number("eta"))); }},
+         [](const ModelParameters& p, const ConversionOptions&) {
+             return exact_material(Rheology::viscous(p.number("eta")));
+         }},
         {"kelvin_voigt", "G(t) = G + eta delta(t): a spring and a dashpot in parallel",
          {modulus("G", "spring modulus"), viscosity("dashpot viscosity")}, false,
          [](const ModelParameters& p, const ConversionOptions&) {
