@@ -288,11 +288,12 @@ double difference_noise(const std::vector<double>& values, std::size_t begin, st
 //     twice the depth span of the fitted rise to a quarter of that span past the crossing. A is linear (closed
 //     form); n in [1, 3] and d_c minimise the profiled residual: a 32 x 9 grid, then Brent's method in d_c with n
 //     optimised (Brent) for each d_c, each within a grid step of the best grid point (a box that moves where the
-//     minimum is on its edge). From step 4 on, "baseline" here is the window's line only where its tilt is measured
+//     minimum is on its edge). "Baseline" in steps 3 and 4 is the window's line only where its tilt is measured
 //     (the slope beyond 5 of its standard errors, sigma / sqrt(sum (t - mean t)^2), the rule by which a fit flags a
-//     tilt), else its level (the window's mean); the crossing too. Extrapolated over the onset, a line from a
-//     window of 9-21 rows (1.1 nN/s of slope error from 10 rows at 0.01 nN, 40 sigma at the onset fit's end) drew
-//     d_c 50-300 nm deep in 1 of 9 seeds with 3-5 approach rows, and the window then stayed there.
+//     tilt), else its level (the window's mean); the crossings of step 4 too (step 5 reports the line). Extrapolated
+//     over the onset, a line from a window of 9-21 rows (1.1 nN/s of slope error from 10 rows at 0.01 nN, 40 sigma
+//     at the onset fit's end) drew d_c 50-300 nm deep in 1 of 9 seeds with 3-5 approach rows, and the window then
+//     stayed there.
 //  4. The window shrinks to the rows before the contact: before the first row from which the depth stays beyond
 //     d_c - (sigma / A)^(1/n), the depth over which the fitted onset rises by one deviation (a contact estimate off
 //     by that much adds at most a deviation to a row). The baseline is fitted again there and step 3 repeated from
