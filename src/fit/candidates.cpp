@@ -163,7 +163,7 @@ Material registry_material(const rheology::MaterialModel& model, double modulus,
             material.parameters.push_back({key, middle, 1e-2 * window.shortest, 1e2 * window.longest, true});
         } else if (std::isfinite(parameter.upper_limit)) {
             const double limit = parameter.upper_limit;
-            material.parameters.push_back({key, 0.5 * limit, 0.01 * limit, 0.99 * limit, true});
+            material.parameters.push_back({key, 0.5 * limit, 0.01 * limit, 0.99 * limit, true, limit});
         } else {
             const double start = parameter.unit == "Pa s" ? modulus * middle : modulus * std::sqrt(middle);
             material.parameters.push_back({key, start, 1e-8 * start, 1e8 * start, true});

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "data_window.hpp"
+#include "interval_scale.hpp"
 #include "curve_model.hpp"
 #include "curve_rows_cost.hpp"
 #include "jacobian_summary.hpp"
@@ -465,6 +466,9 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
         const auto J = static_cast<Eigen::Index>(j);
         const double value = result.values[j];
         const double sigma = std::sqrt(std::max(covariance(J, J), 0.0));
+        const auto& parameter = problem.parameters[j];
+        const IntervalScale interval = interval_scale(parameter);
+        result.interval_scales.push_back(interval_scale_name(interval));
         if (undetermined[j]) {
             result.standard_errors.push_back(nan);
             result.lower_95.push_back(nan);
@@ -472,16 +476,12 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
             flag(result, flagged, result.names[j], "the data do not determine it (no change of the fit along it)");
             continue;
         }
-        if (scales.scale[j] == 0.0) {  // logarithmic: sigma is relative
-            result.standard_errors.push_back(value * sigma);
-            result.lower_95.push_back(value * std::exp(-quantile * sigma));
-            result.upper_95.push_back(value * std::exp(quantile * sigma));
-        } else {
-            result.standard_errors.push_back(scales.scale[j] * sigma);
-            result.lower_95.push_back(value - quantile * scales.scale[j] * sigma);
-            result.upper_95.push_back(value + quantile * scales.scale[j] * sigma);
-        }
-        const auto& parameter = problem.parameters[j];
+        // First order at the value: sigma is relative on a logarithmic coordinate, in units of the scale otherwise.
+        result.standard_errors.push_back(scales.scale[j] == 0.0 ? value * sigma : scales.scale[j] * sigma);
+        const auto [lower, upper] =
+            interval_on_scale(interval, value, result.standard_errors[j], quantile, parameter.domain_upper);
+        result.lower_95.push_back(lower);
+        result.upper_95.push_back(upper);
         const double span = scales.scale[j] == 0.0 ? std::log(parameter.upper / parameter.lower)
                                                    : (parameter.upper - parameter.lower) / scales.scale[j];
         const double from_lower = scales.to_internal(j, value) - scales.to_internal(j, parameter.lower);

@@ -16,8 +16,8 @@ namespace mdr::fit {
 /// rows, then the rebound data's, one entry of FitResult::curves per quantity): the
 /// covariance s^2 (J^T J)^+ with s^2 = RSS / (n - k) (so that a misjudged noise level does not bias the errors),
 /// inflated for curves whose residuals are autocorrelated (effective points, FitResult::error_kind), the misfit flags,
-/// the 95 % intervals (Student's t quantile with the effective points less k degrees of freedom; on the logarithmic
-/// scale for logarithmic parameters), the curves'
+/// the 95 % intervals (Student's t quantile with the effective points less k degrees of freedom; on the scale on
+/// which each parameter's domain is the whole line, interval_scale.hpp), the curves'
 /// data and model, AIC and BIC, and Undetermined entries for: directions the data do not constrain (singular
 /// values below 1e-8 of the largest), a value at its bound, a standard error above the value, |correlation| > 0.99, a time parameter
 /// outside the measured window (above 10 times the longest record or below a tenth of the shortest sampling

@@ -91,7 +91,7 @@ fit::FreeParameter read_parameter(const toml::table& fit, const io::CaseTemplate
         throw InvalidInput("fit.free", key, "must name a number of [material] or [indenter], or layer.thickness");
     }
     if (!model.has_number(key)) throw InvalidInput("fit.free", key, "the case has no number under this key");
-    fit::FreeParameter parameter{key, model.number(key), 0.0, 0.0, true};
+    fit::FreeParameter parameter{key, model.number(key), 0.0, 0.0, true, io::free_key_upper_limit(model, key)};
     // The numbers of a TOML case's rules (TableReader: finite, an integer exactly a double).
     if (per_key(fit, "start", key)) parameter.start = TableReader(*fit["start"].as_table(), "fit.start").number(key);
     require_finite(key, parameter.start);
@@ -106,7 +106,7 @@ fit::FreeParameter read_parameter(const toml::table& fit, const io::CaseTemplate
         // Four decades either side of the start, within the key's physical domain (0, limit) of its registry row:
         // the lower bound keeps 1e-4 of the start's distance to 0, the upper 1e-4 of its distance to a finite limit
         // (an exponent 0.2 of a power law: [2e-5, 0.99992], not [2e-5, 2000]).
-        const double limit = io::free_key_upper_limit(model, key);
+        const double limit = parameter.domain_upper;
         parameter.lower = parameter.start * 1e-4;
         parameter.upper = parameter.start * 1e4;
         if (std::isfinite(limit)) parameter.upper = std::min(parameter.upper, limit - (limit - parameter.start) * 1e-4);

@@ -77,13 +77,14 @@ std::string fitted_toml(const FitCase& fit_case, const fit::FitResult& result) {
 }
 
 Document fit_document(const fit::FitResult& result, const std::string& units) {
-    Document::Table parameters, errors, intervals, undetermined;
+    Document::Table parameters, errors, intervals, interval_scales, undetermined;
     Document::List correlation;
     for (std::size_t j = 0; j < result.names.size(); ++j) {
         parameters.emplace_back(result.names[j], number_or_null(result.values[j]));
         errors.emplace_back(result.names[j], number_or_null(result.standard_errors[j]));
         const Document::List interval{number_or_null(result.lower_95[j]), number_or_null(result.upper_95[j])};
         intervals.emplace_back(result.names[j], Document{interval});
+        interval_scales.emplace_back(result.names[j], Document{result.interval_scales[j]});
         Document::List row;
         for (double r : result.correlation[j]) row.push_back(number_or_null(r));
         correlation.push_back({std::move(row)});
@@ -139,6 +140,7 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
         {"standard_errors", {std::move(errors)}},
         {"error_kind", {result.error_kind}},
         {"intervals_95", {std::move(intervals)}},
+        {"interval_scales", {std::move(interval_scales)}},
         {"young_moduli", {std::move(young_moduli)}},
         {"young_moduli_errors", {std::move(young_errors)}},
         {"correlation", {std::move(correlation)}},

@@ -83,6 +83,11 @@ def test_recovers_the_modulus_and_writes_the_result_directory(run_mdr, fit_case,
     assert summary["young_moduli_errors"] == {"material.G": pytest.approx(3.0 * error, rel=1e-15)}
     assert "(E = " in result.stdout and "standard errors: " in result.stdout
     assert summary["misfit"] is False and summary["error_kind"] == "white noise (chi-square)"
+    # A modulus, domain (0, inf): its interval on the log scale, G exp(-/+ t error / G), t ~ 1.97 for 300 rows.
+    assert summary["interval_scales"] == {"material.G": "log"}
+    lower, upper = summary["intervals_95"]["material.G"]
+    assert math.sqrt(lower * upper) == pytest.approx(G, rel=1e-12)
+    assert math.log(upper / G) == pytest.approx(1.97 * error / G, rel=0.01)
     curve = summary["curves"][0]
     assert abs(curve["contact_point"] - CONTACT) < 4.0 * curve["contact_point_error"] + 2e-8
     # The baseline is the mean of the rows before contact (the default "constant"; 66 rows before the contact, at

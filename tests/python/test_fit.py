@@ -97,6 +97,10 @@ def test_power_law_modulus_and_exponent_from_the_lee_radok_closed_form():
     # The series stands for the power law to its certificate (1e-4 of G): so far, no closer.
     assert result.parameters["material.G0"] == pytest.approx(G0, rel=1e-4)
     assert result.parameters["material.beta"] == pytest.approx(beta, rel=1e-4)
+    # beta's domain (0, 1) gives its interval the logit scale, G0's (0, inf) the log scale (docs: "Intervals").
+    assert result.summary["interval_scales"] == {"material.G0": "log", "material.beta": "logit"}
+    lower, upper = result.summary["intervals_95"]["material.beta"]
+    assert 0.0 < lower <= result.parameters["material.beta"] <= upper < 1.0
 
 
 def test_power_law_is_fitted_within_its_physical_domain_without_bounds():

@@ -28,6 +28,10 @@ struct FreeParameter {
     /// Fitted on a logarithmic scale: moduli, times, radii (every parameter that must stay > 0). The standard
     /// error is then first order in the relative change, and the bounds are > 0.
     bool logarithmic = true;
+    /// The open upper end of the physical domain (0, domain_upper) of a parameter bounded above (its registry row,
+    /// io::free_key_upper_limit: 1 for an exponent or a springpot order, 90 for a cone's angle); infinity otherwise.
+    /// The 95 % interval is built on the scale on which the domain is the whole line (FitResult::interval_scales).
+    double domain_upper = std::numeric_limits<double>::infinity();
 };
 
 
@@ -236,9 +240,13 @@ struct FitResult {
     std::vector<std::string> names;          ///< the free parameters, in the order of FitProblem::parameters
     std::vector<double> values;              ///< fitted values
     std::vector<double> standard_errors;     ///< one standard deviation, first order (NaN when undetermined)
-    /// 95 % confidence interval (Student's t quantile; on the logarithmic scale where fitted so)
+    /// 95 % confidence interval: g^-1(g(value) -/+ t g'(value) standard error), Student's t quantile, on the scale g
+    /// on which the parameter's domain is the whole line (interval_scales), so that it lies inside the domain
     std::vector<double> lower_95;
     std::vector<double> upper_95;            ///< see lower_95
+    /// Per free parameter, the scale of its interval: "log" (domain (0, inf)), "logit" (domain (0, L), ln(x/(L - x)),
+    /// FreeParameter::domain_upper) or "linear" (a parameter fitted linearly, domain unbounded)
+    std::vector<std::string> interval_scales;
     std::vector<std::vector<double>> correlation;  ///< correlation matrix of the free parameters
     std::vector<Undetermined> undetermined;  ///< parameters the data cannot determine
     /// E for every fitted shear modulus (keys whose registry unit is Pa, see young_moduli), in the order of `names`;

@@ -3,6 +3,7 @@
 // handbook (a power law's 0 < beta < 1, a cone's 0 < angle < 90 degrees, a modulus > 0).
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -45,6 +46,32 @@ force = "F"
     const auto& angle = parameter(fit_case, "indenter.half_angle_deg");
     EXPECT_DOUBLE_EQ(angle.lower, 35.0e-4);
     EXPECT_DOUBLE_EQ(angle.upper, 90.0 - 55.0 * 1e-4);  // before: 3.5e5 degrees
+}
+
+TEST(FitCaseDefaultBounds, EachKeyCarriesTheUpperEndOfItsDomainForItsInterval) {
+    // The domain (0, L) of each key's registry row, with or without fit.bounds: beta < 1, a cone's angle < 90
+    // degrees, a modulus unbounded above (the 95 % interval's scale: logit on (0, L), else log).
+    const FitCase fit_case = parse_fit_case(R"(
+[material]
+model = "power_law"
+G0 = 1000.0
+beta = 0.2
+[indenter]
+shape = "cone"
+half_angle_deg = 35.0
+[fit]
+free = ["material.G0", "material.beta", "indenter.half_angle_deg"]
+bounds = {"material.beta" = [0.01, 0.9]}
+[[fit.data]]
+file = "curve.csv"
+time = "t"
+depth = "d"
+force = "F"
+)",
+                                            "case.toml", ".");
+    EXPECT_EQ(parameter(fit_case, "material.G0").domain_upper, std::numeric_limits<double>::infinity());
+    EXPECT_EQ(parameter(fit_case, "material.beta").domain_upper, 1.0);
+    EXPECT_EQ(parameter(fit_case, "indenter.half_angle_deg").domain_upper, 90.0);
 }
 
 }  // namespace
