@@ -140,6 +140,26 @@ def test_check_validates_a_fit_case_with_its_curves(run_mdr, workdir):
     assert result.stdout.strip().endswith("; candidates elastic, standard")
 
 
+def test_check_of_a_fractional_model_at_its_default_bounds_takes_seconds(run_mdr, workdir):
+    """`mdr check` builds the model at every bound of fit.free; a fractional model's default alpha bounds (start/1e4
+    and 1 - 3e-5) made its Mittag-Leffler certificate take minutes (the quadrature's spacing shrank with the strip
+    of analyticity). Now well within run_mdr's 60 s (observed 0.3 s), and the bounds are still checked: one that the
+    model refuses is named."""
+    write_afm_curve(workdir / "afm.csv")
+    path = write_case(workdir, f'spring_constant = {K_CASE}\nunits = {{ spring_constant = "nN/um" }}')
+    text = path.read_text().replace('model = "elastic"\nG = 0.05',
+                                    'model = "fractional_standard"\nG_inf = 0.05\nG1 = 0.1\nc = 0.02\nalpha = 0.7')
+    path.write_text(text.replace('free = ["material.G"]',
+                                 'free = ["material.G_inf", "material.G1", "material.c", "material.alpha"]'))
+    started = time.monotonic()
+    result = run_mdr("check", path)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.startswith("ok: fit case: 4 free parameter(s)")
+    assert time.monotonic() - started < 30.0
+    path.write_text(path.read_text().replace('[fit]\n', '[fit]\nbounds = { "material.alpha" = [0.1, 1.2] }\n'))
+    assert_bad_input(run_mdr("check", path), "fit.bounds.material.alpha", "1.2")
+
+
 def test_fit_reports_its_iterations_on_stderr(mdr_binary, workdir):
     """A slow fit (a force-driven curve of a material with a dashpot on many elements: no band model, every run on
     the elements) prints "mdr: fit iteration N, chi^2 = X, T s so far" every 5 s when stderr is a pipe, like mdr
