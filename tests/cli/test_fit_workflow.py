@@ -183,6 +183,27 @@ def test_fit_reports_its_iterations_on_stderr(mdr_binary, workdir):
     assert 4.5 < elapsed < 30.0
 
 
+def test_each_labels_its_progress_lines_with_the_file(mdr_binary, workdir):
+    """`mdr fit --each`: the progress lines say which file they belong to, "mdr: [1/2 cell-a.csv] fit iteration N,
+    ..." (they did not: a batch's lines were those of one fit). The slow fit of
+    test_fit_reports_its_iterations_on_stderr, its first line (the second file's would need the first fit's end,
+    about a minute here: fit_each.cpp labels each file alike)."""
+    import signal
+    write_hertz_curve(workdir / "cell-a.csv")
+    write_hertz_curve(workdir / "cell-b.csv", seed=6)
+    case = AFM_CASE.format(data="", fit='fitted = "depth"\nelements = 100000')
+    case = case.replace('piezo = "piezo"\ndeflection = "defl"', 'depth = "d"\nforce = "F"')
+    case = case.replace('model = "elastic"\nG = 0.05', 'model = "kelvin_voigt"\nG = 0.05\neta = 1e-4')
+    (workdir / "case.toml").write_text(case.replace("afm.csv", "cell-a.csv"))
+    process = subprocess.Popen([mdr_binary, "fit", "case.toml", "--each", "cell-a.csv", "cell-b.csv", "--out", "out"],
+                               cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    line = process.stderr.readline()
+    process.send_signal(signal.SIGINT)
+    process.communicate(timeout=60)
+    assert line.startswith("mdr: [1/2 cell-a.csv] fit iteration "), line
+    assert line.rstrip().endswith("s so far")
+
+
 def test_each_fits_one_material_per_file(run_mdr, workdir):
     for name, contact, seed in (("cell-a", 1.0, 1), ("cell-b", 1.5, 2)):
         write_afm_curve(workdir / f"{name}.csv", contact=contact, seed=seed)
