@@ -28,7 +28,9 @@ void FitProgress::finish() {
     drawn_ = false;
 }
 
-void FitProgress::label(const std::string& text) { label_ = text.empty() ? "" : fmt::format("[{}] ", message_text(text)); }
+void FitProgress::label(const std::string& text) {
+    label_ = text.empty() ? "" : fmt::format("[{}] ", message_text(text));
+}
 
 void FitProgress::operator()(std::size_t iteration, double chi_squared) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
