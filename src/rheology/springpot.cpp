@@ -28,8 +28,9 @@ constexpr double narrow_strip = 1.0 / 32.0;
 // alpha -> 1 (delta = pi (1 - alpha) small): the integrand has simple poles at v = +-i delta, where
 // s^2 + 2 s cos(alpha pi) + 1 = 0 (s = exp(+-i delta)). The trapezoidal sum on the grid v = k h exceeds the integral
 // by exactly the poles' terms 2 pi i R / (exp(2 pi delta / h) - 1) (residue R at i delta, and its conjugate at
-// -i delta; Trefethen and Weideman, SIAM Rev. 56 (2014), sec. 5): subtracted, the spacing is set by the next
-// singularity, the growth of exp(-scale s^(1/alpha)) at |Im v| = alpha pi / 2. The denominator is written as
+// -i delta: the residue theorem with the trapezoidal rule's kernel, cf. Trefethen and Weideman, SIAM Rev. 56 (2014);
+// for 1 / (v^2 + delta^2) the sum is exactly (pi / delta) coth(pi delta / h)): subtracted, the spacing is set by
+// the next singularity, the growth of exp(-scale s^(1/alpha)) at |Im v| = alpha pi / 2. The denominator is written as
 // (s - 1)^2 + 4 s sin^2(delta / 2), free of the cancellation of 2 + 2 cos(alpha pi) at s = 1.
 double mittag_leffler_near_one(double alpha, double x) {
     const double delta = std::numbers::pi * (1.0 - alpha);
@@ -46,7 +47,8 @@ double mittag_leffler_near_one(double alpha, double x) {
         sum += s * std::exp(-scale * std::pow(s, 1.0 / alpha)) / (below * below + 4.0 * s * half_sine * half_sine);
     }
     // 2 pi i (R - conj R) / (exp(2 pi delta / h) - 1), R = exp(-scale exp(i delta / alpha)) / (2 i sin delta).
-    const double at_pole = std::exp(-scale * std::cos(delta / alpha)) * std::cos(scale * std::sin(delta / alpha));
+    const double decay = std::exp(-scale * std::cos(delta / alpha));  // 0 also for scale = inf (no cos(inf) then)
+    const double at_pole = decay == 0.0 ? 0.0 : decay * std::cos(scale * std::sin(delta / alpha));
     const double poles = 2.0 * std::numbers::pi * at_pole /
                          (std::sin(delta) * std::expm1(2.0 * std::numbers::pi * delta / h));
     return std::sin(delta) / phi * (h * sum - poles);
