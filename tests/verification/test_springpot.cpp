@@ -114,6 +114,17 @@ TEST(SpringpotModels, MittagLefflerNearOrdersZeroAndOneIsExactAndFast) {
                 << alpha << " " << x;
         }
     }
+    // At the last double below 1, E_alpha(-x) = exp(-x) to ~1e-15 (d/dalpha E is of order 1): no cancellation.
+    for (double x : {0.1, 1.0, 5.0}) {
+        EXPECT_NEAR(rheology::mittag_leffler_decay(std::nextafter(1.0, 0.0), x) / std::exp(-x), 1.0, 1e-12) << x;
+    }
+    // x^(1/alpha) under- or overflowing a double (it was 0 * inf = NaN): the series' 1 - x / Gamma(1 + alpha) and the
+    // asymptotic series.
+    for (double alpha : {0.03, 0.05, 0.3}) {
+        EXPECT_NEAR(rheology::mittag_leffler_decay(alpha, 1e-200), 1.0, 1e-15) << alpha;
+        const double x = std::pow(10.0, 310.0 * alpha);  // x^(1/alpha) = 1e310
+        EXPECT_NEAR(rheology::mittag_leffler_decay(alpha, x) / mittag_leffler_asymptotic(alpha, x), 1.0, 1e-9) << alpha;
+    }
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 
