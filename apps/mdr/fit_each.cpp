@@ -103,11 +103,15 @@ bool run_each(const fitcase::FitCase& fit_case, const std::vector<std::string>& 
         prepared.push_back(prepare_fit(case_for(fit_case, file)));
     }
     std::vector<fit::FitResult> results;
-    for (const auto& one : prepared) {
+    for (std::size_t i = 0; i < prepared.size(); ++i) {
+        const auto& one = prepared[i];
+        const std::string name = std::filesystem::path(files[i]).filename().string();
+        progress.label(fmt::format("{}/{} {}", i + 1, prepared.size(), name));
         results.push_back(fit::fit(one.problem));
         fit::add_plausibility_flags(one.problem, fitcase::plausibility_units(fit_case), results.back());
     }
     progress.finish();
+    progress.label("");
     const auto spread = fit::spread_of_repeats(results);
     directory.write(
         [&](const std::filesystem::path& folder) {

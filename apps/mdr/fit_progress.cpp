@@ -1,8 +1,12 @@
 #include "fit_progress.hpp"
 
+#include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+
+#include "mdr/error.hpp"
 
 namespace mdr::cli {
 namespace {
@@ -20,17 +24,22 @@ FitProgress::FitProgress()
 FitProgress::~FitProgress() { finish(); }
 
 void FitProgress::finish() {
-    if (drawn_) std::fprintf(stderr, "\r%70s\r", "");
+    if (drawn_) std::fprintf(stderr, "\r%*s\r", drawn_width_, "");
     drawn_ = false;
+}
+
+void FitProgress::label(const std::string& text) {
+    label_ = text.empty() ? "" : fmt::format("[{}] ", message_text(text));
 }
 
 void FitProgress::operator()(std::size_t iteration, double chi_squared) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     if (elapsed < next_report_) return;
     next_report_ = terminal_ ? elapsed : elapsed + line_interval;
-    std::fprintf(stderr, terminal_ ? "\rmdr: fit iteration %zu, chi^2 = %.6g, %.0f s so far "
-                                   : "mdr: fit iteration %zu, chi^2 = %.6g, %.0f s so far\n",
-                 iteration, chi_squared, elapsed);
+    const int width = std::fprintf(stderr, terminal_ ? "\rmdr: %sfit iteration %zu, chi^2 = %.6g, %.0f s so far "
+                                                     : "mdr: %sfit iteration %zu, chi^2 = %.6g, %.0f s so far\n",
+                                   label_.c_str(), iteration, chi_squared, elapsed);
+    if (terminal_) drawn_width_ = std::max(drawn_width_, width);
     drawn_ = terminal_;
 }
 

@@ -140,6 +140,26 @@ def test_check_validates_a_fit_case_with_its_curves(run_mdr, workdir):
     assert result.stdout.strip().endswith("; candidates elastic, standard")
 
 
+def test_check_of_a_fractional_model_at_its_default_bounds_takes_seconds(run_mdr, workdir):
+    """`mdr check` builds the model at every bound of fit.free; a fractional model's default alpha bounds (start/1e4
+    and 1 - 3e-5) made its Mittag-Leffler certificate take minutes (the quadrature's spacing shrank with the strip
+    of analyticity). Now well within run_mdr's 60 s (observed 0.3 s), and the bounds are still checked: one that the
+    model refuses is named."""
+    write_afm_curve(workdir / "afm.csv")
+    path = write_case(workdir, f'spring_constant = {K_CASE}\nunits = {{ spring_constant = "nN/um" }}')
+    text = path.read_text().replace('model = "elastic"\nG = 0.05',
+                                    'model = "fractional_standard"\nG_inf = 0.05\nG1 = 0.1\nc = 0.02\nalpha = 0.7')
+    path.write_text(text.replace('free = ["material.G"]',
+                                 'free = ["material.G_inf", "material.G1", "material.c", "material.alpha"]'))
+    started = time.monotonic()
+    result = run_mdr("check", path)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.startswith("ok: fit case: 4 free parameter(s)")
+    assert time.monotonic() - started < 30.0
+    path.write_text(path.read_text().replace('[fit]\n', '[fit]\nbounds = { "material.alpha" = [0.1, 1.2] }\n'))
+    assert_bad_input(run_mdr("check", path), "fit.bounds.material.alpha", "1.2")
+
+
 def test_fit_reports_its_iterations_on_stderr(mdr_binary, workdir):
     """A slow fit (a force-driven curve of a material with a dashpot on many elements: no band model, every run on
     the elements) prints "mdr: fit iteration N, chi^2 = X, T s so far" every 5 s when stderr is a pipe, like mdr
@@ -161,6 +181,27 @@ def test_fit_reports_its_iterations_on_stderr(mdr_binary, workdir):
     fields = line.split()
     assert fields[4] == "chi^2" and float(fields[6].rstrip(",")) > 0.0 and line.rstrip().endswith("s so far")
     assert 4.5 < elapsed < 30.0
+
+
+def test_each_labels_its_progress_lines_with_the_file(mdr_binary, workdir):
+    """`mdr fit --each`: the progress lines say which file they belong to, "mdr: [1/2 cell-a.csv] fit iteration N,
+    ..." (they did not: a batch's lines were those of one fit). The slow fit of
+    test_fit_reports_its_iterations_on_stderr, its first line (the second file's would need the first fit's end,
+    about a minute here: fit_each.cpp labels each file alike)."""
+    import signal
+    write_hertz_curve(workdir / "cell-a.csv")
+    write_hertz_curve(workdir / "cell-b.csv", seed=6)
+    case = AFM_CASE.format(data="", fit='fitted = "depth"\nelements = 100000')
+    case = case.replace('piezo = "piezo"\ndeflection = "defl"', 'depth = "d"\nforce = "F"')
+    case = case.replace('model = "elastic"\nG = 0.05', 'model = "kelvin_voigt"\nG = 0.05\neta = 1e-4')
+    (workdir / "case.toml").write_text(case.replace("afm.csv", "cell-a.csv"))
+    process = subprocess.Popen([mdr_binary, "fit", "case.toml", "--each", "cell-a.csv", "cell-b.csv", "--out", "out"],
+                               cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    line = process.stderr.readline()
+    process.send_signal(signal.SIGINT)
+    process.communicate(timeout=60)
+    assert line.startswith("mdr: [1/2 cell-a.csv] fit iteration "), line
+    assert line.rstrip().endswith("s so far")
 
 
 def test_each_fits_one_material_per_file(run_mdr, workdir):
