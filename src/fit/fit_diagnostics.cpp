@@ -378,6 +378,18 @@ void flag_misfits(FitResult& result) {
 
 }  // namespace
 
+double residual_to_noise(const FitResult& result) {
+    std::vector<double> rms_residuals, noises, points;
+    for (const auto& curve : result.curves) {
+        if (!(curve.noise > 0.0)) continue;
+        rms_residuals.push_back(curve.rms_residual);
+        noises.push_back(curve.noise);
+        points.push_back(static_cast<double>(curve.time.size()));
+    }
+    if (noises.empty()) return std::numeric_limits<double>::quiet_NaN();
+    return root_mean_square(rms_residuals, points) / root_mean_square(noises, points);
+}
+
 void describe_uncertainty(const FitProblem& problem, const ParameterScales& scales,
                           const std::vector<std::unique_ptr<CurveCost>>& costs,
                           const std::vector<std::unique_ptr<ReboundCost>>& rebounds, const std::vector<double>& shared,

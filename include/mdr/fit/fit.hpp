@@ -8,7 +8,6 @@
 #include <array>
 #include <cstddef>
 #include <functional>
-#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -276,11 +275,10 @@ struct FitResult {
     std::optional<rheology::Certificate> material_certificate{};
 };
 
-/// The fit's residual RMS over its noise (fit.json `residual_to_noise`); NaN, no ratio, when its curves are
-/// noise-free (noise 0: CurveFit::noise).
-inline double residual_to_noise(const FitResult& result) {
-    return result.noise > 0.0 ? result.rms_residual / result.noise : std::numeric_limits<double>::quiet_NaN();
-}
+/// The fit's residual RMS over its noise (fit.json `residual_to_noise`), over the entries of FitResult::curves that
+/// have a noise, each counted by its points: a noise-free curve (noise 0: CurveFit::noise) has none to measure its
+/// residual against. FitResult::rms_residual / FitResult::noise when every entry has one; NaN, no ratio, when none.
+double residual_to_noise(const FitResult& result);
 
 /// A curve whose residual RMS exceeds this many times its noise is a misfit (FitResult::misfit): with white
 /// noise the ratio is 1 within a few sqrt(2 / n); 2 means a residual variance 4 times the noise's.
