@@ -27,7 +27,7 @@ std::string young_modulus_text(const fit::FitResult& result, const std::string& 
 }
 
 std::string residual_to_noise_text(const fit::FitResult& result) {
-    const double ratio = fit::residual_to_noise(result);
+    const double ratio = result.residual_to_noise;
     return std::isnan(ratio) ? "noise-free" : fmt::format("{:.3g}", ratio);
 }
 

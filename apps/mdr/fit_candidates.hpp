@@ -19,8 +19,8 @@ void print_flags(const fit::FitResult& result);
 /// (fit::FitResult::young_moduli), else "": what the console prints beside a shear modulus.
 std::string young_modulus_text(const fit::FitResult& result, const std::string& name);
 
-/// The fit's residual RMS over its noise (fit::residual_to_noise) as the console prints it, `noise-free` when its
-/// curves are (no ratio).
+/// The fit's residual RMS over its noise (fit::FitResult::residual_to_noise) as the console prints it, `noise-free`
+/// when its curves are (no ratio).
 std::string residual_to_noise_text(const fit::FitResult& result);
 
 /// Fits the candidates of `fit_case` to `curves`, writes them into `directory` (fitcase::write_model_choice) and prints

@@ -63,7 +63,7 @@ void write_table(const std::filesystem::path& path, const std::vector<std::strin
             if (young == result.young_moduli.end()) table.print(",nan,nan");
             else table.print(",{:.17g},{:.17g}", young->value, young->standard_error);
         }
-        table.print(",{},{:.17g}\n", io::csv_field(result.status), fit::residual_to_noise(result));
+        table.print(",{},{:.17g}\n", io::csv_field(result.status), result.residual_to_noise);
     }
     table.close();
 }

@@ -377,6 +377,19 @@ void flag_misfits(FitResult& result) {
     }
 }
 
+// FitResult::residual_to_noise of the entries of result.curves.
+double ratio_over_noisy_curves(const FitResult& result) {
+    std::vector<double> rms_residuals, noises, points;
+    for (const auto& curve : result.curves) {
+        if (!(curve.noise > 0.0)) continue;
+        rms_residuals.push_back(curve.rms_residual);
+        noises.push_back(curve.noise);
+        points.push_back(static_cast<double>(curve.time.size()));
+    }
+    if (noises.empty()) return std::numeric_limits<double>::quiet_NaN();
+    return root_mean_square(rms_residuals, points) / root_mean_square(noises, points);
+}
+
 }  // namespace
 
 void describe_uncertainty(const FitProblem& problem, const ParameterScales& scales,
@@ -404,6 +417,7 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
     }
     result.rms_residual = root_mean_square(rms_residuals, points);
     result.noise = root_mean_square(noises, points);
+    result.residual_to_noise = ratio_over_noisy_curves(result);
     // log(RSS / n) from the norm (no overflow of the squares), RSS at least the smallest double.
     const double residual_norm = summary.residual_norm();
     const double log_mean_square =

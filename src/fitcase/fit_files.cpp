@@ -149,7 +149,7 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
         {"curves", {std::move(curves)}},
         {"rms_residual", number_or_null(result.rms_residual)},
         {"noise", number_or_null(result.noise)},
-        {"residual_to_noise", number_or_null(fit::residual_to_noise(result))},
+        {"residual_to_noise", number_or_null(result.residual_to_noise)},
         {"aic", number_or_null(result.aic)},
         {"bic", number_or_null(result.bic)},
         {"points", {result.points}},

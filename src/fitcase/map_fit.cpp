@@ -190,7 +190,7 @@ Document::Table row_of(const PixelFit& pixel, const FitCase& fit_case,
     }
     const bool force = result.curves.empty() || result.curves.front().fitted == fit::Fitted::force;
     put("contact_height", {pixel.contact_height}, "m");
-    put("residual_to_noise", {fit::residual_to_noise(result)}, "1");
+    put("residual_to_noise", {result.residual_to_noise}, "1");
     put("noise", {result.noise}, force ? "N" : "m");
     put("status", {result.status}, "");
     std::string flags;

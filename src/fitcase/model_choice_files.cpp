@@ -50,7 +50,7 @@ Document ranking_document(const fit::ModelChoice& choice) {
                                               {"free_count", {result.free_count}},
                                               {"rms_residual", number_or_null(result.rms_residual)},
                                               {"noise", number_or_null(result.noise)},
-                                              {"residual_to_noise", number_or_null(fit::residual_to_noise(result))},
+                                              {"residual_to_noise", number_or_null(result.residual_to_noise)},
                                               {"aic", number_or_null(result.aic)},
                                               {"bic", number_or_null(result.bic)},
                                               {"delta_aic", number_or_null(fitted.delta_aic)},
@@ -84,8 +84,8 @@ void write_model_choice(const std::filesystem::path& directory, const FitCase& f
         const auto& fitted = choice.fits[i];
         const auto& result = fitted.result;
         csv.print("{},{},{},{},{},{},{},{},{},{},{},{}\n", i + 1, csv_field(fitted.name), result.free_count,
-                  result.rms_residual, fit::residual_to_noise(result), result.aic, result.bic, fitted.delta_aic, fitted.delta_bic,
-                  result.converged, result.undetermined.size(), result.wall_seconds);
+                  result.rms_residual, result.residual_to_noise, result.aic, result.bic, fitted.delta_aic,
+                  fitted.delta_bic, result.converged, result.undetermined.size(), result.wall_seconds);
         std::filesystem::create_directory(directory / fitted.name);
         write_candidate(directory / fitted.name, fit_case, fitted);
     }

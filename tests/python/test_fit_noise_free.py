@@ -69,3 +69,20 @@ def test_a_noise_free_cone_curve_is_reproduced_and_says_so():
     flag = noise_free_flag(curve)
     assert "measured force's noise is at round-off" in flag and "the model reproduces the data" in flag, flag
     assert abs(summary["parameters"]["material.G"] / G - 1.0) < 1e-6
+
+
+def test_a_noise_free_curve_beside_a_noisy_one_leaves_the_ratio_to_the_noisy_one():
+    # The fit's residual_to_noise is the RMS residual over the RMS noise of the curves that have a noise: a noise-free
+    # curve has no noise to measure its residual against. Before, its residual entered the numerator and its noise 0
+    # the denominator: 44.3 for a fit whose one noisy curve has 31.3 (sqrt(2) too large with two curves of 201 rows).
+    case = {"material": {"model": "kelvin_voigt", "G": 3.0e5, "eta": 1.0e6}, "indenter": {"shape": "sphere", "R": R},
+            "fit": {"free": ["material.G", "material.eta"], "fitted": "depth", "contact_point": "fixed"}}
+    noise_free = kelvin_voigt_creep(1.0e-6)
+    noisy = kelvin_voigt_creep(1.0e-6)
+    noisy["depth"] = noisy["depth"] + np.random.default_rng(5).normal(0.0, 1.0e-9, noisy["depth"].size)
+    summary = mdr.fit(case, data=[noise_free, noisy]).summary
+    free_entry, noisy_entry = summary["curves"]
+    assert free_entry["noise"] == 0.0 and noisy_entry["noise"] > 0.0
+    assert free_entry["rms_residual"] > 10.0 * noisy_entry["noise"]  # a residual that would move the ratio
+    ratio = noisy_entry["rms_residual"] / noisy_entry["noise"]
+    assert abs(summary["residual_to_noise"] / ratio - 1.0) < 1e-12, (summary["residual_to_noise"], ratio)

@@ -258,6 +258,10 @@ struct FitResult {
     std::vector<CurveFit> curves;            ///< per curve
     double rms_residual = 0.0;               ///< RMS of model - measured over all curves [N or m]
     double noise = 0.0;                      ///< RMS of the curves' noise estimates, weighted by their points
+    /// The residual RMS over the noise (fit.json `residual_to_noise`) of the entries of `curves` that have a noise,
+    /// each counted by its points: a noise-free curve (noise 0: CurveFit::noise) has none to measure its residual
+    /// against. rms_residual / noise when every entry has one; NaN, no ratio, when none.
+    double residual_to_noise = std::numeric_limits<double>::quiet_NaN();
     double aic = 0.0;                        ///< Akaike information criterion, n ln(RSS/n) + 2k (RSS of the residuals
                                              ///< weighted by each curve's noise)
     double bic = 0.0;                        ///< Bayesian information criterion, n ln(RSS/n) + k ln n
@@ -283,12 +287,6 @@ struct FitResult {
     /// `material_window`); none for an exact series.
     std::optional<rheology::Certificate> material_certificate{};
 };
-
-/// The fit's residual RMS over its noise (fit.json `residual_to_noise`); NaN, no ratio, when its curves are
-/// noise-free (noise 0: CurveFit::noise).
-inline double residual_to_noise(const FitResult& result) {
-    return result.noise > 0.0 ? result.rms_residual / result.noise : std::numeric_limits<double>::quiet_NaN();
-}
 
 /// A curve whose residual RMS exceeds this many times its noise is a misfit (FitResult::misfit): with white
 /// noise the ratio is 1 within a few sqrt(2 / n); 2 means a residual variance 4 times the noise's.

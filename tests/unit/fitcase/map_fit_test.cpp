@@ -90,6 +90,7 @@ TEST(MapFit, EveryKeyOfEveryRowIsAColumnOfMapCsvWhicheverPixelComesFirst) {
     result.young_moduli = {{"material.G", 12.0, 1.5}};
     result.rms_residual = 3.0;
     result.noise = 2.0;
+    result.residual_to_noise = 1.5;  // rms_residual / noise: describe_uncertainty sets it
     fitted.result = result;
     const std::string header = "index,column,row,x,y,material.G,material.G_stderr,E_material.G,E_material.G_stderr,"
                                "contact_height,residual_to_noise,noise,status,flags,failure";
