@@ -415,6 +415,38 @@ void add_driving_noise(const std::vector<DriveNoiseSums>& drive_sums, const Eige
                                      drive_noise_draw_count);
 }
 
+// Flags the data whose driving input's noise is not carried into the errors (add_driving_noise carries a depth-fitted
+// curve's force noise): rebound data (the approach speed's), and a force-fitted curve whose depth noise moves the
+// force noticeably. The force that the depth's noise sigma_d moves is at most k sigma_d, k the contact stiffness,
+// below 2 F_range / d_range for a power-law loading F ~ d^n, n <= 2 (flat punch 1, sphere 3/2, cone 2: n times the
+// secant); it is flagged above 0.3 of the force's noise (it would add more than 9 % to the rows' variance). For AFM on
+// soft samples it is far below (1 nm of depth noise on 1 um and 2 nN, 50 pN of force noise: 0.08).
+void flag_unpropagated_drive_noise(const FitProblem& problem, FitResult& result) {
+    constexpr double significant = 0.3;
+    for (std::size_t c = 0; c < result.curves.size(); ++c) {
+        CurveFit& curve = result.curves[c];
+        if (curve.rebound) {
+            curve.flags.push_back("the approach speed's noise is not in the errors (taken as exact)");
+            continue;
+        }
+        if (curve.fitted != Fitted::force || curve.noise == 0.0 || curve.measured.size() < 2) continue;
+        const Curve& data = problem.curves[c];
+        const double depth_noise = difference_noise(data.depth, 0, data.depth.size());
+        const auto [force_low, force_high] = std::minmax_element(curve.measured.begin(), curve.measured.end());
+        const auto [depth_low, depth_high] = std::minmax_element(curve.drive.begin(), curve.drive.end());
+        const double depth_range = *depth_high - *depth_low;
+        if (!(depth_range > 0.0)) continue;
+        const double moved = 2.0 * (*force_high - *force_low) / depth_range * depth_noise;
+        if (moved > significant * curve.noise) {
+            curve.flags.push_back(fmt::format(
+                "the driving depth's noise is not in the errors: its {:.3g} moves the force by up to about {:.3g}, "
+                "{:.2g} x the force's noise {:.3g} (errors in the variables; fit the depth, fitted = \"depth\", to "
+                "carry the force's noise instead)",
+                depth_noise, moved, moved / curve.noise, curve.noise));
+        }
+    }
+}
+
 // Flags each curve the model cannot follow (is_misfit) on the curve (the fit's status says "misfit"), and each
 // noise-free curve (noise 0, prepare_curve): its residual cannot be measured against a noise. Below the model's
 // accuracy the model reproduces the data. Above it the residual is the model's distance from the data: noise of the
@@ -535,6 +567,7 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
     }
     const double quantile = student_quantile_95(std::max(effective - static_cast<double>(columns), 1.0));
     flag_misfits(result);
+    flag_unpropagated_drive_noise(problem, result);
 
     std::set<std::string> flagged;
     for (std::size_t j = 0; j < k; ++j) {
