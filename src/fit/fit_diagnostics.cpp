@@ -191,7 +191,8 @@ double driving_force_noise(const Curve& curve, const CurveModel& prepared) {
 // held baseline's level and slope (held_baseline_errors) about the mean time of the rows before contact: two
 // columns, dr/db = (d model / db) / noise from CurveCost::baseline_columns (exact for a fitted force, by model runs
 // for a fitted depth; only where the held baseline has an error). `curve_grams` gets each curve's part
-// J_c^T P_c J_c of J^T P J on its columns (curve_columns).
+// J_c^T P_c J_c of J^T P J on its columns (curve_columns). `drive_sums` gets each depth-fitted curve's sums over the
+// draws of its driving force's noise (DriveNoiseSums) where it does not hold one per curve on entry; else it is kept.
 JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
                                  const std::vector<std::unique_ptr<ReboundCost>>& rebounds,
                                  const std::vector<double>& shared, const std::vector<std::vector<double>>& nuisance,
@@ -202,7 +203,9 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
     const auto columns_count = static_cast<Eigen::Index>(k + m * costs.size());
     JacobianSummary summary(columns_count);
     baseline_sums.assign(costs.size(), Eigen::MatrixX2d::Zero(columns_count, 2));
-    drive_sums.assign(costs.size(), DriveNoiseSums{});
+    // The draws' sums do not depend on the errors' correlation: a second summary (corrected phis) keeps the first's.
+    const bool draw = drive_sums.size() != costs.size();
+    if (draw) drive_sums.assign(costs.size(), DriveNoiseSums{});
     curve_grams.clear();
     result.curves.clear();
     const bool estimate = phis.empty();
@@ -232,11 +235,11 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
                            : CurveCost::BaselineColumns{};
         const double drive_noise = driving_force_noise(data, prepared);
         const std::vector<std::vector<double>> drive_draws =
-            drive_noise > 0.0 ? cost.drive_noise_draws(shared.data(), nuisance[c].data(), drive_noise,
+            draw && drive_noise > 0.0 ? cost.drive_noise_draws(shared.data(), nuisance[c].data(), drive_noise,
                                                        drive_noise_draw_count)
                               : std::vector<std::vector<double>>{};
         const auto draws = static_cast<Eigen::Index>(drive_draws.size());
-        drive_sums[c] = {Eigen::MatrixXd::Zero(columns_count, draws), Eigen::VectorXd::Zero(draws)};
+        if (draw) drive_sums[c] = {Eigen::MatrixXd::Zero(columns_count, draws), Eigen::VectorXd::Zero(draws)};
         for (Eigen::Index d = 0; d < draws; ++d) {
             for (double change : drive_draws[static_cast<std::size_t>(d)]) {
                 drive_sums[c].squares[d] += (change / prepared.noise) * (change / prepared.noise);
@@ -248,7 +251,7 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
         curve.contact_depth = cost.contact_depth(nuisance[c].data());
         curve.baseline = cost.baseline(nuisance[c].data());
         curve.noise = prepared.noise_free ? 0.0 : prepared.noise;
-        curve.drive_noise = drive_draws.empty() ? 0.0 : drive_noise;
+        curve.drive_noise = drive_sums[c].squares.size() == 0 ? 0.0 : drive_noise;
         curve.time.reserve(n);
         curve.measured.reserve(n);
         curve.drive.reserve(n);
