@@ -58,3 +58,10 @@ def test_a_force_fitted_curve_with_a_quiet_depth_is_not_flagged(monkeypatch):
     case = {**KNOWN_BASELINE, "fit": {**KNOWN_BASELINE["fit"], "fitted": "force"}}
     curve = mdr.fit(case, data=[source.creep_curve(0)]).summary["curves"][0]
     assert not [flag for flag in curve["flags"] if flag.startswith("the driving depth's noise")], curve["flags"]
+
+
+def test_rebound_data_say_that_the_approach_speed_is_taken_as_exact():
+    # Rebound data are driven by the measured approach speed, whose noise is not carried: a flag says so.
+    from test_fit_rebound import CASE as REBOUND_CASE, RESTITUTION, SPEEDS
+    result = mdr.fit(REBOUND_CASE, data=[{"kind": "rebound", "velocity": SPEEDS, "restitution": RESTITUTION}])
+    assert "the approach speed's noise is not in the errors (taken as exact)" in result.summary["curves"][0]["flags"]
