@@ -6,6 +6,8 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <cstdint>
+#include <random>
 #include <stdexcept>
 
 #include "mdr/drivers/layer_indentation.hpp"
@@ -20,6 +22,8 @@ namespace {
 // element's entry and exit inside a step), and a step this size keeps the truncation error near 1e-6 while the
 // rounding error of a run (~1e-15 relative) stays far below.
 constexpr double difference_step = 1e-6;
+// The seed of the draws of the driving force's noise (drive_noise_draws): the same errors for the same fit.
+constexpr std::uint64_t drive_noise_seed = 20240524;
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 }  // namespace
@@ -52,7 +56,7 @@ std::optional<ModelValues> CurveCost::model(const double* shared, const double* 
     if (problem_.settings.check_interrupt) problem_.settings.check_interrupt();
     auto model_case = problem_.model(scales_.values(shared));
     const std::size_t elements = problem_.settings.elements.value_or(model_case.numerics.elements.value_or(elements_));
-    const ForceBaseline moved{baseline(nuisance) + shift.level, shift.slope, shift.origin};
+    const ForceBaseline moved{baseline(nuisance) + shift.level, shift.slope, shift.origin, shift.row_shift};
     auto values = run_curve(std::move(model_case), prepared_, contact_depth(nuisance), moved, elements, forward,
                             problem_.settings.check_interrupt, modulus_derivatives);
     if (values) {
@@ -144,17 +148,48 @@ CurveCost::BaselineColumns CurveCost::baseline_columns(const double* shared, con
         }
         return shifted;
     };
-    columns.level_differences = difference({step, 0.0, origin}, step);
+    columns.level_differences = difference({step, 0.0, origin, {}}, step);
     if (slope) {
         // A slope that moves the force by `step` at the row farthest from the origin.
         const double lever = std::max(std::abs(curve.time.front() - origin), std::abs(curve.time.back() - origin));
         if (lever > 0.0) {
-            columns.slope_differences = difference({0.0, step / lever, origin}, step / lever);
+            columns.slope_differences = difference({0.0, step / lever, origin, {}}, step / lever);
         } else {
             columns.slope_differences.assign(used.size(), 0.0);
         }
     }
     return columns;
+}
+
+std::vector<std::vector<double>> CurveCost::drive_noise_draws(const double* shared, const double* nuisance,
+                                                              double sigma, std::size_t probes) const {
+    const Curve& curve = problem_.curves[curve_];
+    const std::vector<std::size_t>& used = prepared_.used;
+    std::shared_ptr<const std::vector<double>> base;
+    std::shared_ptr<const ModelValues> base_run;
+    if (base_residuals(std::vector<double>(shared, shared + problem_.parameters.size()),
+                       std::vector<double>(nuisance, nuisance + scales_.nuisance_size()), ForwardModel::elements, base,
+                       base_run) != Outcome::done) {
+        throw std::runtime_error("the model cannot be evaluated at the fitted values");
+    }
+    // Each draw scaled by `scale`, so that sigma moves the force by the step of a fitted baseline's column.
+    const double scale = difference_step * std::max(std::abs(baseline(nuisance)), scales_.force[curve_]) / sigma;
+    std::mt19937_64 generator(drive_noise_seed);
+    std::normal_distribution<double> normal(0.0, sigma);
+    std::vector<std::vector<double>> draws;
+    draws.reserve(probes);
+    for (std::size_t p = 0; p < probes; ++p) {
+        ForceBaseline shift;  // the baseline moved by -e: the driving force by +e
+        shift.row_shift.resize(curve.time.size());
+        for (double& value : shift.row_shift) value = -scale * normal(generator);
+        auto values = model(shared, nuisance, ForwardModel::elements, false, shift);
+        if (!values) throw std::runtime_error("the model cannot be evaluated at the fitted values");
+        std::vector<double>& change = draws.emplace_back(std::move(values->values));
+        for (std::size_t i = 0; i < change.size(); ++i) {
+            change[i] = (change[i] - (curve.depth[used[i]] + (*base)[i] * prepared_.noise)) / scale;
+        }
+    }
+    return draws;
 }
 
 namespace {

@@ -76,6 +76,13 @@ public:
     /// 1e-6 of the curve's largest |force| at most (the step of a fitted baseline's column). Throws std::runtime_error
     /// where the model cannot run there.
     BaselineColumns baseline_columns(const double* shared, const double* nuisance, double origin, bool slope) const;
+    /// The driving force's noise carried through the model of a depth-fitted curve: for each of `probes` draws e of
+    /// white noise of standard deviation `sigma` [force] on every row's driving force (a fixed seed), the model's
+    /// change of depth S e at the used points (S = d model / d driving force, linear at small scale: one forward
+    /// difference per draw, the draw scaled to move the force by 1e-6 of the curve's largest |force|). Throws
+    /// std::runtime_error where the model cannot run there.
+    std::vector<std::vector<double>> drive_noise_draws(const double* shared, const double* nuisance, double sigma,
+                                                       std::size_t probes) const;
 private:
     /// What an evaluation with one forward model gave.
     enum class Outcome { done, failed, outside_model };

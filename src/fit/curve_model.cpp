@@ -136,7 +136,7 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
         // The driving quantity: depth below the contact point, or force above the baseline (the indenter cannot
         // pull, so a force reading below the baseline is no contact: 0).
         drive_values[i] = depth_driven ? curve.depth[i] - contact_depth
-                                       : std::max(curve.force[i] - baseline.at(curve.time[i]), 0.0);
+                                       : std::max(curve.force[i] - baseline.at_row(i, curve.time[i]), 0.0);
     }
     std::vector<drivers::LoadPoint> points = driving_points(curve.time, drive_values);
     std::vector<double> times, depths;  // the driving points, for the band model

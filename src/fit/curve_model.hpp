@@ -60,8 +60,13 @@ struct ForceBaseline {
     double level = 0.0;   ///< b at `origin` [force]
     double slope = 0.0;   ///< [force / time]
     double origin = 0.0;  ///< [time]
+    /// A further shift of b per row of the curve [force] (empty: none); it moves only the drive of a depth-fitted
+    /// curve, by -shift (the driving force's noise propagated through the model, fit_diagnostics.cpp).
+    std::vector<double> row_shift{};
     /// b at time `t`.
     double at(double t) const { return level + slope * (t - origin); }
+    /// b at row `row` of the curve, at its time `t`.
+    double at_row(std::size_t row, double t) const { return at(t) + (row_shift.empty() ? 0.0 : row_shift[row]); }
 };
 
 /// One run of the model of a curve.

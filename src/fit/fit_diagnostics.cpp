@@ -158,6 +158,32 @@ std::vector<Eigen::Index> curve_columns(std::size_t k, std::size_t m, std::size_
     return columns;
 }
 
+// The driving force's noise of a depth-fitted curve (errors in the variables): the residual is
+// r = d_model(F + e) - d ~ r0 + S e, so the rows' errors have the covariance sigma_d^2 I + sigma_F^2 S S^T, not the
+// fitted quantity's alone. S e is had by model runs (CurveCost::drive_noise_draws) for drive_noise_draw_count draws
+// of e; their sums give J^T S S^T J / noise^2 and tr(S S^T) / noise^2 (Hutchinson 1989: E[e e^T] = sigma_F^2 I), each
+// within a relative standard error of sqrt(2 / draws) (29 % for 24 draws; of the errors' added variance, not of the
+// errors).
+constexpr std::size_t drive_noise_draw_count = 24;
+
+/// Per curve, the sums over the draws of the driving force's noise (DriveNoiseSums of summarise_curves).
+struct DriveNoiseSums {
+    Eigen::MatrixXd gradients;  ///< column per draw: J^T S e / noise (all columns of J)
+    Eigen::VectorXd squares;    ///< per draw: |S e|^2 / noise^2
+};
+
+// The standard deviation [force] of the noise of the force that drives a depth-fitted curve: from the second
+// differences of every row of the record (difference_noise), not from the few rows before contact that hold the
+// baseline (Curve::force_noise: 15 rows scatter it by about +-20 %); 0 for a force-fitted curve and where it is at
+// round-off.
+double driving_force_noise(const Curve& curve, const CurveModel& prepared) {
+    if (prepared.fitted != Fitted::depth || prepared.noise_free) return 0.0;
+    const double noise = difference_noise(curve.force, 0, curve.force.size());
+    double largest = 0.0;
+    for (double value : curve.force) largest = std::max(largest, std::abs(value));
+    return noise > noise_free_level * largest ? noise : 0.0;
+}
+
 // Fills result.curves (data, model, residual RMS, lag-1 correlation and effective points of each measured curve;
 // the rebound data's entries) and gathers the summary of the weighted Jacobian and residuals at the optimum, one
 // curve at a time: no N x p copy of the Jacobian (docs/performance.md, "Memory of a fit"). A curve's errors are
@@ -166,16 +192,21 @@ std::vector<Eigen::Index> curve_columns(std::size_t k, std::size_t m, std::size_
 // held baseline's level and slope (held_baseline_errors) about the mean time of the rows before contact: two
 // columns, dr/db = (d model / db) / noise from CurveCost::baseline_columns (exact for a fitted force, by model runs
 // for a fitted depth; only where the held baseline has an error). `curve_grams` gets each curve's part
-// J_c^T P_c J_c of J^T P J on its columns (curve_columns).
+// J_c^T P_c J_c of J^T P J on its columns (curve_columns). `drive_sums` gets each depth-fitted curve's sums over the
+// draws of its driving force's noise (DriveNoiseSums) where it does not hold one per curve on entry; else it is kept.
 JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
                                  const std::vector<std::unique_ptr<ReboundCost>>& rebounds,
                                  const std::vector<double>& shared, const std::vector<std::vector<double>>& nuisance,
                                  std::size_t m, std::vector<double>& phis, FitResult& result,
                                  std::vector<Eigen::MatrixX2d>& baseline_sums,
-                                 std::vector<Eigen::MatrixXd>& curve_grams) {
+                                 std::vector<Eigen::MatrixXd>& curve_grams, std::vector<DriveNoiseSums>& drive_sums) {
     const std::size_t k = shared.size();
-    JacobianSummary summary(static_cast<Eigen::Index>(k + m * costs.size()));
-    baseline_sums.assign(costs.size(), Eigen::MatrixX2d::Zero(static_cast<Eigen::Index>(k + m * costs.size()), 2));
+    const auto columns_count = static_cast<Eigen::Index>(k + m * costs.size());
+    JacobianSummary summary(columns_count);
+    baseline_sums.assign(costs.size(), Eigen::MatrixX2d::Zero(columns_count, 2));
+    // The draws' sums do not depend on the errors' correlation: a second summary (corrected phis) keeps the first's.
+    const bool draw = drive_sums.size() != costs.size();
+    if (draw) drive_sums.assign(costs.size(), DriveNoiseSums{});
     curve_grams.clear();
     result.curves.clear();
     const bool estimate = phis.empty();
@@ -203,12 +234,25 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
             baseline_error ? cost.baseline_columns(shared.data(), nuisance[c].data(), baseline_errors.mean_time,
                                                    slope_error)
                            : CurveCost::BaselineColumns{};
+        const double drive_noise = driving_force_noise(data, prepared);
+        const std::vector<std::vector<double>> drive_draws =
+            draw && drive_noise > 0.0 ? cost.drive_noise_draws(shared.data(), nuisance[c].data(), drive_noise,
+                                                       drive_noise_draw_count)
+                              : std::vector<std::vector<double>>{};
+        const auto draws = static_cast<Eigen::Index>(drive_draws.size());
+        if (draw) drive_sums[c] = {Eigen::MatrixXd::Zero(columns_count, draws), Eigen::VectorXd::Zero(draws)};
+        for (Eigen::Index d = 0; d < draws; ++d) {
+            for (double change : drive_draws[static_cast<std::size_t>(d)]) {
+                drive_sums[c].squares[d] += (change / prepared.noise) * (change / prepared.noise);
+            }
+        }
         const auto& measured = force_fitted ? data.force : data.depth;
         curve.name = data.name;
         curve.fitted = prepared.fitted;
         curve.contact_depth = cost.contact_depth(nuisance[c].data());
         curve.baseline = cost.baseline(nuisance[c].data());
         curve.noise = prepared.noise_free ? 0.0 : prepared.noise;
+        curve.drive_noise = drive_sums[c].squares.size() == 0 ? 0.0 : drive_noise;
         curve.time.reserve(n);
         curve.measured.reserve(n);
         curve.drive.reserve(n);
@@ -256,6 +300,11 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
                                  if (slope_error) {
                                      baseline_sums[c].col(1) +=
                                          row.transpose() * baseline_columns.slope(point) / prepared.noise;
+                                 }
+                                 for (Eigen::Index d = 0; d < draws; ++d) {
+                                     drive_sums[c].gradients.col(d) +=
+                                         row.transpose() * drive_draws[static_cast<std::size_t>(d)][point] /
+                                         prepared.noise;
                                  }
                              });
         }
@@ -342,6 +391,66 @@ Eigen::MatrixXd honest_covariance(const JacobianSummary& summary, double varianc
     return std::max(variance_scale, correlated_scale) * pseudo_inverse * meat * pseudo_inverse;
 }
 
+// The driving force's noise (errors in the variables, DriveNoiseSums): with the rows' errors sigma_d^2 I +
+// sigma_F^2 S S^T (weighted by 1 / noise), the covariance is sigma_d^2 (J^T J)^+ + (J^T J)^+ J^T S S^T J (J^T J)^+
+// sigma_F^2. The residuals hold both: E[RSS] = sigma_d^2 (n - k) + sigma_F^2 tr((I - H) S S^T (I - H)), so the
+// covariance from the residuals (chi-square or inflated for their correlation, honest_covariance) keeps the share
+// of RSS that the driving noise does not explain, |(I - H) S e|^2 = |S e|^2 - (J^T S e)^T (J^T J)^+ J^T S e per
+// draw, and the driving noise's own sandwich is added. Says so in the error kind.
+void add_driving_noise(const std::vector<DriveNoiseSums>& drive_sums, const Eigen::MatrixXd& pseudo_inverse,
+                       double residual_norm, Eigen::MatrixXd& covariance, FitResult& result) {
+    Eigen::MatrixXd meat = Eigen::MatrixXd::Zero(pseudo_inverse.rows(), pseudo_inverse.cols());
+    double explained = 0.0;
+    bool any = false;
+    for (const DriveNoiseSums& sums : drive_sums) {
+        const auto draws = static_cast<double>(sums.squares.size());
+        if (sums.squares.size() == 0) continue;
+        any = true;
+        meat += sums.gradients * sums.gradients.transpose() / draws;
+        for (Eigen::Index d = 0; d < sums.squares.size(); ++d) {
+            explained += (sums.squares[d] - sums.gradients.col(d).dot(pseudo_inverse * sums.gradients.col(d))) / draws;
+        }
+    }
+    if (!any) return;
+    const double rss = residual_norm * residual_norm;
+    const double kept = rss > 0.0 ? std::clamp((rss - explained) / rss, 0.0, 1.0) : 0.0;
+    covariance = kept * covariance + pseudo_inverse * meat * pseudo_inverse;
+    result.error_kind += fmt::format(", with the driving force's noise carried through the model ({} draws)",
+                                     drive_noise_draw_count);
+}
+
+// Flags the data whose driving input's noise is not carried into the errors (add_driving_noise carries a depth-fitted
+// curve's force noise): rebound data (the approach speed's), and a force-fitted curve whose depth noise moves the
+// force noticeably. The force that the depth's noise sigma_d moves is at most k sigma_d, k the contact stiffness,
+// below 2 F_range / d_range for a power-law loading F ~ d^n, n <= 2 (flat punch 1, sphere 3/2, cone 2: n times the
+// secant); it is flagged above 0.3 of the force's noise (it would add more than 9 % to the rows' variance). For AFM on
+// soft samples it is far below (1 nm of depth noise on 1 um and 2 nN, 50 pN of force noise: 0.08).
+void flag_unpropagated_drive_noise(const FitProblem& problem, FitResult& result) {
+    constexpr double significant = 0.3;
+    for (std::size_t c = 0; c < result.curves.size(); ++c) {
+        CurveFit& curve = result.curves[c];
+        if (curve.rebound) {
+            curve.flags.push_back("the approach speed's noise is not in the errors (taken as exact)");
+            continue;
+        }
+        if (curve.fitted != Fitted::force || curve.noise == 0.0 || curve.measured.size() < 2) continue;
+        const Curve& data = problem.curves[c];
+        const double depth_noise = difference_noise(data.depth, 0, data.depth.size());
+        const auto [force_low, force_high] = std::minmax_element(curve.measured.begin(), curve.measured.end());
+        const auto [depth_low, depth_high] = std::minmax_element(curve.drive.begin(), curve.drive.end());
+        const double depth_range = *depth_high - *depth_low;
+        if (!(depth_range > 0.0)) continue;
+        const double moved = 2.0 * (*force_high - *force_low) / depth_range * depth_noise;
+        if (moved > significant * curve.noise) {
+            curve.flags.push_back(fmt::format(
+                "the driving depth's noise is not in the errors: its {:.3g} moves the force by up to about {:.3g}, "
+                "{:.2g} x the force's noise {:.3g} (errors in the variables; fit the depth, fitted = \"depth\", to "
+                "carry the force's noise instead)",
+                depth_noise, moved, moved / curve.noise, curve.noise));
+        }
+    }
+}
+
 // Flags each curve the model cannot follow (is_misfit) on the curve (the fit's status says "misfit"), and each
 // noise-free curve (noise 0, prepare_curve): its residual cannot be measured against a noise. Below the model's
 // accuracy the model reproduces the data. Above it the residual is the model's distance from the data: noise of the
@@ -401,8 +510,9 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
     std::vector<Eigen::MatrixX2d> baseline_sums;  // per curve: J^T dr/db for the baseline's level and slope
     std::vector<Eigen::MatrixXd> curve_grams;     // per curve: J_c^T P_c J_c
     std::vector<double> phis;                     // per curve: the AR(1) coefficient of its errors
-    JacobianSummary summary =
-        summarise_curves(problem, costs, rebounds, shared, nuisance, m, phis, result, baseline_sums, curve_grams);
+    std::vector<DriveNoiseSums> drive_sums;       // per curve: the draws of its driving force's noise
+    JacobianSummary summary = summarise_curves(problem, costs, rebounds, shared, nuisance, m, phis, result,
+                                               baseline_sums, curve_grams, drive_sums);
     const auto n = static_cast<double>(summary.rows());
     const auto columns = k + m * costs.size();
     result.points = static_cast<std::size_t>(summary.rows());
@@ -450,9 +560,10 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
     std::vector<double> unabsorbed = unabsorbed_correlations(pseudo_inverse, curve_grams, k, m, phis, result);
     if (unabsorbed != phis) {  // the curves' rows again, with the corrected coefficients
         summary = summarise_curves(problem, costs, rebounds, shared, nuisance, m, unabsorbed, result, baseline_sums,
-                                   curve_grams);
+                                   curve_grams, drive_sums);
     }
     Eigen::MatrixXd covariance = honest_covariance(summary, variance_scale, pseudo_inverse, costs.size(), result);
+    add_driving_noise(drive_sums, pseudo_inverse, residual_norm, covariance, result);
     // A held baseline b (from the rows before contact) carries its own error, independent of the fitted rows' noise:
     // the least-squares estimate moves by -(J^T J)^+ J^T dr/db per unit of b, which adds sigma_b^2 s s^T for each of
     // the baseline's independent parts (a line's level and slope about its rows' mean time, held_baseline_errors).
@@ -474,6 +585,7 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
     }
     const double quantile = student_quantile_95(std::max(effective - static_cast<double>(columns), 1.0));
     flag_misfits(result);
+    flag_unpropagated_drive_noise(problem, result);
 
     std::set<std::string> flagged;
     for (std::size_t j = 0; j < k; ++j) {

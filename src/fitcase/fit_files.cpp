@@ -127,6 +127,7 @@ Document fit_document(const fit::FitResult& result, const std::string& units) {
         }
         entry.emplace_back("noise", number_or_null(curve.noise));
         entry.emplace_back("rms_residual", number_or_null(curve.rms_residual));
+        if (!curve.rebound) entry.emplace_back("drive_noise", number_or_null(curve.drive_noise));
         entry.emplace_back("residual_correlation", number_or_null(curve.residual_correlation));
         entry.emplace_back("effective_points", number_or_null(curve.effective_points));
         entry.emplace_back("flags", flag_list(curve.flags));

@@ -172,6 +172,9 @@ struct CurveFit {
     /// magnitude: round-off, e.g. values computed in closed form), which a flag then says: no misfit ratio.
     double noise = 0.0;
     double rms_residual = 0.0;      ///< RMS of model - measured
+    /// The noise of the driving force of a depth-fitted curve [N], carried through the model into the errors (errors
+    /// in the variables, describe_uncertainty); 0 where it is not (a force-fitted curve, noise-free data).
+    double drive_noise = 0.0;
     /// Lag-1 autocorrelation of the residuals (rows in time order); 0 for rebound data.
     double residual_correlation = 0.0;
     /// Points that count as independent in the errors (effective sample size, see describe_uncertainty): the
