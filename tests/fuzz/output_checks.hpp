@@ -69,7 +69,9 @@ enum class ResultCheck { format, values };
 /// Where a result file (fit.json, ranking.json, a CSV file, fitted.toml) is not readable as its format, or holds a
 /// value that is not finite (NaN, infinity, null); "" when it has none. Allowed, as docs/case-format.md documents
 /// them: the standard errors, 95 % intervals and correlations of a fit with undetermined parameters (and its
-/// bands `*_lower`, `*_upper` and `standard_error` columns), and spectrum.csv's `tau` of G_inf (`inf`).
+/// bands `*_lower`, `*_upper` and `standard_error` columns), spectrum.csv's `tau` of G_inf (`inf`), and
+/// `residual_to_noise` of a fit without noise (noise-free data: null in JSON beside `noise` = 0, nan in a CSV file
+/// beside a fit.json or ranking.json that reports such a fit).
 class ResultScan {
 public:
     /// Scans every file below `directory` (a fit's result directory: one fit, or a model choice with one directory
@@ -79,7 +81,7 @@ public:
             if (!entry.is_regular_file()) continue;
             const auto& path = entry.path();
             const ResultScan file{check, has_undetermined(path.parent_path() / "fit.json"),
-                                  path.filename() == "spectrum.csv"};
+                                  path.filename() == "spectrum.csv", has_noise_free_fit(path.parent_path())};
             std::string where;
             if (path.extension() == ".json") where = file.scan_json(read_file(path));
             if (path.extension() == ".csv") where = file.scan_csv(read_file(path));
@@ -95,8 +97,20 @@ private:
         return json.is_object() && json.contains("undetermined") && !json["undetermined"].empty();
     }
 
-    ResultScan(ResultCheck check, bool undetermined, bool spectrum)
-        : check_(check), undetermined_(undetermined), spectrum_(spectrum) {}
+    // Whether a fit.json or ranking.json in `directory` reports a fit without noise (`noise` = 0).
+    static bool has_noise_free_fit(const std::filesystem::path& directory) {
+        const auto noise_free = [](const nlohmann::json& fit) {
+            return fit.is_object() && fit.contains("noise") && fit["noise"].is_number() && fit["noise"] == 0.0;
+        };
+        const auto fit = nlohmann::json::parse(read_file(directory / "fit.json"), nullptr, false);
+        if (noise_free(fit)) return true;
+        const auto ranking = nlohmann::json::parse(read_file(directory / "ranking.json"), nullptr, false);
+        if (!ranking.is_object() || !ranking.contains("candidates") || !ranking["candidates"].is_array()) return false;
+        return std::any_of(ranking["candidates"].begin(), ranking["candidates"].end(), noise_free);
+    }
+
+    ResultScan(ResultCheck check, bool undetermined, bool spectrum, bool noise_free)
+        : check_(check), undetermined_(undetermined), spectrum_(spectrum), noise_free_(noise_free) {}
 
     std::string scan_json(const std::string& text) const {
         const auto json = nlohmann::json::parse(text, nullptr, false);
@@ -112,7 +126,10 @@ private:
             return path + " = " + value.dump();
         }
         if (value.is_object()) {
+            // A fit without noise has no residual-to-noise ratio: null beside its `noise` of 0 (documented).
+            const bool noise_free = value.contains("noise") && value["noise"].is_number() && value["noise"] == 0.0;
             for (const auto& [key, item] : value.items()) {
+                if (noise_free && key == "residual_to_noise" && item.is_null()) continue;
                 if (auto where = walk(item, path + "/" + key); !where.empty()) return where;
             }
         }
@@ -151,7 +168,8 @@ private:
                 // A rebound row of curves.csv (NAME:restitution, NAME:contact_time) has no drive: nan, as documented.
                 const bool rebound_drive = name == "drive" && (fields[0].ends_with(":restitution") ||
                                                                fields[0].ends_with(":contact_time"));
-                if (text_column || (band && undetermined_) || g_inf_time || rebound_drive) continue;
+                const bool no_noise_ratio = noise_free_ && name == "residual_to_noise";
+                if (text_column || (band && undetermined_) || g_inf_time || rebound_drive || no_noise_ratio) continue;
                 return "line " + std::to_string(row + 1) + ", " + name + " = " + fields[column];
             }
         }
@@ -191,6 +209,7 @@ private:
     ResultCheck check_;
     bool undetermined_;
     bool spectrum_;
+    bool noise_free_;
 
     // The fields of a CSV line mdr wrote: comma-separated, a field in double quotes may hold commas.
     static std::vector<std::string> fields_of(const std::string& line) {
