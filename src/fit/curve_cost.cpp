@@ -117,54 +117,7 @@ std::string CurveCost::failure_at(const double* shared, const double* nuisance) 
     }
 }
 
-CurveCost::BaselineColumns CurveCost::baseline_columns(const double* shared, const double* nuisance, double origin,
-                                                       bool slope) const {
-    const Curve& curve = problem_.curves[curve_];
-    const std::vector<std::size_t>& used = prepared_.used;
-    if (prepared_.fitted == Fitted::force) return {&curve.time, &used, origin};
-    BaselineColumns columns;
-    // Driven by the force: the element model (the continuum model runs depth-driven curves only).
-    const auto run = [&](const ForceBaseline& shift) {
-        auto values = model(shared, nuisance, ForwardModel::elements, false, shift);
-        if (!values) throw std::runtime_error("the model cannot be evaluated at the fitted values");
-        return std::move(values->values);
-    };
-    // The residuals at these values (the model is measured + residual x noise): the run the fit's last evaluation
-    // kept (base_residuals), or one more.
-    std::shared_ptr<const std::vector<double>> base;
-    std::shared_ptr<const ModelValues> base_run;
-    const std::size_t m = scales_.nuisance_size();
-    if (base_residuals(std::vector<double>(shared, shared + problem_.parameters.size()),
-                       std::vector<double>(nuisance, nuisance + m), ForwardModel::elements, base,
-                       base_run) != Outcome::done) {
-        throw std::runtime_error("the model cannot be evaluated at the fitted values");
-    }
-    // The step of a fitted baseline's column (difference_step in its coordinate, the force over its scale).
-    const double step = difference_step * std::max(std::abs(baseline(nuisance)), scales_.force[curve_]);
-    const auto difference = [&](const ForceBaseline& shift, double size) {
-        std::vector<double> shifted = run(shift);
-        for (std::size_t i = 0; i < shifted.size(); ++i) {
-            shifted[i] = (shifted[i] - (curve.depth[used[i]] + (*base)[i] * prepared_.noise)) / size;
-        }
-        return shifted;
-    };
-    columns.level_differences = difference({step, 0.0, origin, {}}, step);
-    if (slope) {
-        // A slope that moves the force by `step` at the row farthest from the origin.
-        const double lever = std::max(std::abs(curve.time.front() - origin), std::abs(curve.time.back() - origin));
-        if (lever > 0.0) {
-            columns.slope_differences = difference({0.0, step / lever, origin, {}}, step / lever);
-        } else {
-            columns.slope_differences.assign(used.size(), 0.0);
-        }
-    }
-    return columns;
-}
-
-std::vector<std::vector<double>> CurveCost::drive_noise_draws(const double* shared, const double* nuisance,
-                                                              double sigma, std::size_t probes) const {
-    const Curve& curve = problem_.curves[curve_];
-    const std::vector<std::size_t>& used = prepared_.used;
+std::vector<double> CurveCost::fitted_model(const double* shared, const double* nuisance) const {
     std::shared_ptr<const std::vector<double>> base;
     std::shared_ptr<const ModelValues> base_run;
     if (base_residuals(std::vector<double>(shared, shared + problem_.parameters.size()),
@@ -172,22 +125,62 @@ std::vector<std::vector<double>> CurveCost::drive_noise_draws(const double* shar
                        base_run) != Outcome::done) {
         throw std::runtime_error("the model cannot be evaluated at the fitted values");
     }
+    const Curve& curve = problem_.curves[curve_];
+    std::vector<double> fitted(prepared_.used.size());
+    for (std::size_t i = 0; i < fitted.size(); ++i) {
+        fitted[i] = curve.depth[prepared_.used[i]] + (*base)[i] * prepared_.noise;
+    }
+    return fitted;
+}
+
+std::vector<double> CurveCost::shifted_change(const double* shared, const double* nuisance, const ForceBaseline& shift,
+                                              double size, const std::vector<double>& fitted) const {
+    auto values = model(shared, nuisance, ForwardModel::elements, false, shift);
+    if (!values) throw std::runtime_error("the model cannot be evaluated at the fitted values");
+    std::vector<double>& change = values->values;
+    for (std::size_t i = 0; i < change.size(); ++i) change[i] = (change[i] - fitted[i]) / size;
+    return std::move(change);
+}
+
+double CurveCost::baseline_step(const double* nuisance) const {
+    return difference_step * std::max(std::abs(baseline(nuisance)), scales_.force[curve_]);
+}
+
+CurveCost::BaselineColumns CurveCost::baseline_columns(const double* shared, const double* nuisance, double origin,
+                                                       bool slope) const {
+    const Curve& curve = problem_.curves[curve_];
+    if (prepared_.fitted == Fitted::force) return {&curve.time, &prepared_.used, origin};
+    BaselineColumns columns;
+    const std::vector<double> fitted = fitted_model(shared, nuisance);
+    const double step = baseline_step(nuisance);
+    columns.level_differences = shifted_change(shared, nuisance, {step, 0.0, origin, {}}, step, fitted);
+    if (slope) {
+        // A slope that moves the force by `step` at the row farthest from the origin.
+        const double lever = std::max(std::abs(curve.time.front() - origin), std::abs(curve.time.back() - origin));
+        if (lever > 0.0) {
+            columns.slope_differences =
+                shifted_change(shared, nuisance, {0.0, step / lever, origin, {}}, step / lever, fitted);
+        } else {
+            columns.slope_differences.assign(prepared_.used.size(), 0.0);
+        }
+    }
+    return columns;
+}
+
+std::vector<std::vector<double>> CurveCost::drive_noise_draws(const double* shared, const double* nuisance,
+                                                              double sigma, std::size_t probes) const {
+    const std::vector<double> fitted = fitted_model(shared, nuisance);
     // Each draw scaled by `scale`, so that sigma moves the force by the step of a fitted baseline's column.
-    const double scale = difference_step * std::max(std::abs(baseline(nuisance)), scales_.force[curve_]) / sigma;
+    const double scale = baseline_step(nuisance) / sigma;
     std::mt19937_64 generator(drive_noise_seed);
     std::normal_distribution<double> normal(0.0, sigma);
     std::vector<std::vector<double>> draws;
     draws.reserve(probes);
     for (std::size_t p = 0; p < probes; ++p) {
         ForceBaseline shift;  // the baseline moved by -e: the driving force by +e
-        shift.row_shift.resize(curve.time.size());
+        shift.row_shift.resize(problem_.curves[curve_].time.size());
         for (double& value : shift.row_shift) value = -scale * normal(generator);
-        auto values = model(shared, nuisance, ForwardModel::elements, false, shift);
-        if (!values) throw std::runtime_error("the model cannot be evaluated at the fitted values");
-        std::vector<double>& change = draws.emplace_back(std::move(values->values));
-        for (std::size_t i = 0; i < change.size(); ++i) {
-            change[i] = (change[i] - (curve.depth[used[i]] + (*base)[i] * prepared_.noise)) / scale;
-        }
+        draws.push_back(shifted_change(shared, nuisance, shift, scale, fitted));
     }
     return draws;
 }

@@ -84,6 +84,16 @@ public:
     std::vector<std::vector<double>> drive_noise_draws(const double* shared, const double* nuisance, double sigma,
                                                        std::size_t probes) const;
 private:
+    /// A depth-fitted curve's model at these values at the used points, measured + residual x noise (the run the
+    /// fit's last evaluation kept, base_residuals, or one more). Throws std::runtime_error where it cannot run.
+    std::vector<double> fitted_model(const double* shared, const double* nuisance) const;
+    /// (the model with the baseline moved by `shift` - `fitted`) / `size` at the used points: one forward difference
+    /// of the element model (the continuum model runs depth-driven curves only). Throws std::runtime_error where it
+    /// cannot run.
+    std::vector<double> shifted_change(const double* shared, const double* nuisance, const ForceBaseline& shift,
+                                       double size, const std::vector<double>& fitted) const;
+    /// The step of a fitted baseline's column: difference_step in its coordinate (the force over its scale).
+    double baseline_step(const double* nuisance) const;
     /// What an evaluation with one forward model gave.
     enum class Outcome { done, failed, outside_model };
     /// The model of the fitted quantity at the used points (contact point and baseline included, the baseline moved
