@@ -193,7 +193,8 @@ double driving_force_noise(const Curve& curve, const CurveModel& prepared) {
 // columns, dr/db = (d model / db) / noise from CurveCost::baseline_columns (exact for a fitted force, by model runs
 // for a fitted depth; only where the held baseline has an error). `curve_grams` gets each curve's part
 // J_c^T P_c J_c of J^T P J on its columns (curve_columns). `drive_sums` gets each depth-fitted curve's sums over the
-// draws of its driving force's noise (DriveNoiseSums) where it does not hold one per curve on entry; else it is kept.
+// draws of its driving force's noise (DriveNoiseSums). Where `drive_sums` holds one per curve on entry (a second
+// summary), it and `baseline_sums` are kept as they are.
 JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<std::unique_ptr<CurveCost>>& costs,
                                  const std::vector<std::unique_ptr<ReboundCost>>& rebounds,
                                  const std::vector<double>& shared, const std::vector<std::vector<double>>& nuisance,
@@ -203,10 +204,13 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
     const std::size_t k = shared.size();
     const auto columns_count = static_cast<Eigen::Index>(k + m * costs.size());
     JacobianSummary summary(columns_count);
-    baseline_sums.assign(costs.size(), Eigen::MatrixX2d::Zero(columns_count, 2));
-    // The draws' sums do not depend on the errors' correlation: a second summary (corrected phis) keeps the first's.
-    const bool draw = drive_sums.size() != costs.size();
-    if (draw) drive_sums.assign(costs.size(), DriveNoiseSums{});
+    // The baseline's and the draws' sums do not depend on the errors' correlation: a second summary (corrected phis)
+    // keeps the first's, and runs no model for them again.
+    const bool first_pass = drive_sums.size() != costs.size();
+    if (first_pass) {
+        baseline_sums.assign(costs.size(), Eigen::MatrixX2d::Zero(columns_count, 2));
+        drive_sums.assign(costs.size(), DriveNoiseSums{});
+    }
     curve_grams.clear();
     result.curves.clear();
     const bool estimate = phis.empty();
@@ -229,18 +233,19 @@ JacobianSummary summarise_curves(const FitProblem& problem, const std::vector<st
         const Curve& data = problem.curves[c];
         const bool force_fitted = prepared.fitted == Fitted::force;
         const HeldBaselineErrors baseline_errors = held_baseline_errors(problem.settings, data);
-        const bool baseline_error = baseline_errors.level > 0.0, slope_error = baseline_errors.slope > 0.0;
+        const bool baseline_error = first_pass && baseline_errors.level > 0.0;
+        const bool slope_error = baseline_error && baseline_errors.slope > 0.0;
         const CurveCost::BaselineColumns baseline_columns =
             baseline_error ? cost.baseline_columns(shared.data(), nuisance[c].data(), baseline_errors.mean_time,
                                                    slope_error)
                            : CurveCost::BaselineColumns{};
         const double drive_noise = driving_force_noise(data, prepared);
         const std::vector<std::vector<double>> drive_draws =
-            draw && drive_noise > 0.0 ? cost.drive_noise_draws(shared.data(), nuisance[c].data(), drive_noise,
+            first_pass && drive_noise > 0.0 ? cost.drive_noise_draws(shared.data(), nuisance[c].data(), drive_noise,
                                                        drive_noise_draw_count)
                               : std::vector<std::vector<double>>{};
         const auto draws = static_cast<Eigen::Index>(drive_draws.size());
-        if (draw) drive_sums[c] = {Eigen::MatrixXd::Zero(columns_count, draws), Eigen::VectorXd::Zero(draws)};
+        if (first_pass) drive_sums[c] = {Eigen::MatrixXd::Zero(columns_count, draws), Eigen::VectorXd::Zero(draws)};
         for (Eigen::Index d = 0; d < draws; ++d) {
             for (double change : drive_draws[static_cast<std::size_t>(d)]) {
                 drive_sums[c].squares[d] += (change / prepared.noise) * (change / prepared.noise);
