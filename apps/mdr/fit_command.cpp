@@ -57,6 +57,7 @@ void add_fit_command(CLI::App& app, int& exit_code) {
                 auto read = fitcase::load_fit_case(*case_path);
                 read.settings.check_interrupt = throw_if_interrupted;  // Ctrl-C stops the fit at its next model run
                 read.settings.on_iteration = std::ref(progress);
+                read.settings.on_model = [&progress](const std::string& model) { progress.label(model); };
                 if (!each->empty() || !map->empty()) return PreparedFit{std::move(read), {}};  // per file, pixel
                 return prepare_fit(std::move(read));
             }();

@@ -2,7 +2,8 @@
 // Progress of a fit, like `mdr run`'s: after every solver iteration, on a terminal a line rewritten in place after a
 // second (cleared when the fit ends or fails, so that a failure still leaves exactly one error line); when stderr
 // is a file or a pipe, a line every 5 s: "mdr: fit iteration 12, chi^2 = 412.5, 10 s so far". A batch (`--each`)
-// labels its fits: "mdr: [2/3 cell-b.csv] fit iteration 12, ...".
+// labels its fits: "mdr: [2/3 cell-b.csv] fit iteration 12, ...", a choice of models its candidates' fits:
+// "mdr: [standard] fit iteration 3, ...".
 
 #include <chrono>
 #include <cstddef>

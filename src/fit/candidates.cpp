@@ -363,7 +363,11 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
     // A registry model that stands as a series is converted over the lags of the runs, as in a fit case.
     const rheology::TimeWindow lags = curves_window(curves, base.settings.fitted, base.model(indenter));
 
+    const auto announce = [&](const std::string& name) {
+        if (base.settings.on_model) base.settings.on_model(name);
+    };
     // The elastic fit first: its modulus is the scale of every other start value.
+    announce("elastic");
     CandidateFit reference = fit_material(base, elastic(start), indenter, curves, {}, {});
     const std::size_t offset = base.parameters.size();
     ModelChoice choice;
@@ -379,6 +383,7 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
             choice.fits.push_back(reference);
             continue;
         }
+        announce(name);
         // A spectrum is never worse than the best one-term fit (the standard solid): its grid holds that fit's time,
         // and when the fit from the linear start ends with larger residuals, it is fitted again from that fit.
         std::optional<CandidateFit> one_term;

@@ -204,6 +204,27 @@ def test_each_labels_its_progress_lines_with_the_file(mdr_binary, workdir):
     assert line.rstrip().endswith("s so far")
 
 
+def test_candidates_label_their_progress_lines_with_the_model(mdr_binary, workdir):
+    """`fit.candidates`: the progress lines say which candidate's fit they belong to, "mdr: [kelvin_voigt] fit
+    iteration N, ..." (they did not: the lines of the elastic reference and of every candidate read alike). The slow
+    fit of test_fit_reports_its_iterations_on_stderr as a choice between the elastic model and Kelvin-Voigt: the
+    first line, 5 s in, belongs to one of the two."""
+    import signal
+    write_hertz_curve(workdir / "hertz.csv")
+    case = AFM_CASE.format(data="", fit='fitted = "depth"\nelements = 100000\ncandidates = ["elastic", "kelvin_voigt"]')
+    case = case.replace('piezo = "piezo"\ndeflection = "defl"', 'depth = "d"\nforce = "F"')
+    case = case.replace('model = "elastic"\nG = 0.05', 'model = "kelvin_voigt"\nG = 0.05\neta = 1e-4')
+    case = case.replace('free = ["material.G"]\n', "")  # the candidates free the material's keys
+    (workdir / "case.toml").write_text(case.replace("afm.csv", "hertz.csv"))
+    process = subprocess.Popen([mdr_binary, "fit", "case.toml", "--out", "out"], cwd=workdir,
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    line = process.stderr.readline()
+    process.send_signal(signal.SIGINT)
+    process.communicate(timeout=60)
+    assert line.startswith(("mdr: [elastic] fit iteration ", "mdr: [kelvin_voigt] fit iteration ")), line
+    assert line.rstrip().endswith("s so far")
+
+
 def test_each_fits_one_material_per_file(run_mdr, workdir):
     for name, contact, seed in (("cell-a", 1.0, 1), ("cell-b", 1.5, 2)):
         write_afm_curve(workdir / f"{name}.csv", contact=contact, seed=seed)

@@ -91,6 +91,10 @@ struct FitSettings {
     /// Called after every Levenberg-Marquardt iteration (0: the start) with its number and chi^2 (the sum of the
     /// squared residuals in units of each curve's noise): the command line's progress lines.
     std::function<void(std::size_t iteration, double chi_squared)> on_iteration{};
+    /// Called by fit_candidates before each model's fit with the candidate's name ("elastic" first: the reference
+    /// fit whose modulus starts the others), so that the iterations that follow can be told apart: the command
+    /// line's progress labels.
+    std::function<void(const std::string& model)> on_model{};
 };
 
 /// Elements of the element model when neither the fit nor the case sets them: enough that the model's
