@@ -138,9 +138,11 @@ Material spectrum(const SpectrumSettings& settings, double modulus, const Window
                                        material.grid.size(), window.shortest, window.longest, max_spectrum_terms));
     }
     const double start = 0.5 * modulus / static_cast<double>(material.grid.size());
-    material.parameters.push_back({"material.G_inf", 0.5 * modulus, 0.0, 1e3 * modulus, false});
+    constexpr double infinite = std::numeric_limits<double>::infinity();  // moduli >= 0: the domain [0, infinity)
+    material.parameters.push_back({"material.G_inf", 0.5 * modulus, 0.0, 1e3 * modulus, false, infinite, 0.0});
     for (std::size_t j = 0; j < material.grid.size(); ++j) {
-        material.parameters.push_back({fmt::format("spectrum.G[{}]", j), start, 0.0, 1e3 * modulus, false});
+        material.parameters.push_back(
+            {fmt::format("spectrum.G[{}]", j), start, 0.0, 1e3 * modulus, false, infinite, 0.0});
     }
     return material;
 }

@@ -610,7 +610,8 @@ void describe_uncertainty(const FitProblem& problem, const ParameterScales& scal
         // First order at the value: sigma is relative on a logarithmic coordinate, in units of the scale otherwise.
         result.standard_errors.push_back(scales.scale[j] == 0.0 ? value * sigma : scales.scale[j] * sigma);
         const auto [lower, upper] =
-            interval_on_scale(interval, value, result.standard_errors[j], quantile, parameter.domain_upper);
+            interval_on_scale(interval, value, result.standard_errors[j], quantile, parameter.domain_lower,
+                              parameter.domain_upper);
         result.lower_95.push_back(lower);
         result.upper_95.push_back(upper);
         const double span = scales.scale[j] == 0.0 ? std::log(parameter.upper / parameter.lower)

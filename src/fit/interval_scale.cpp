@@ -1,5 +1,6 @@
 #include "interval_scale.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -20,11 +21,11 @@ std::string interval_scale_name(IntervalScale scale) {
 }
 
 std::array<double, 2> interval_on_scale(IntervalScale scale, double value, double standard_error, double quantile,
-                                        double domain_upper) {
+                                        double domain_lower, double domain_upper) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double half = quantile * standard_error;
     switch (scale) {
-        case IntervalScale::linear: return {value - half, value + half};
+        case IntervalScale::linear: return {std::max(value - half, domain_lower), value + half};
         case IntervalScale::log: {
             if (!(value > 0.0) || !std::isfinite(value)) return {nan, nan};
             const double spread = half / value;  // g'(x) = 1 / x

@@ -26,8 +26,10 @@ IntervalScale interval_scale(const FreeParameter& parameter);
 std::string interval_scale_name(IntervalScale scale);
 
 /// [lower, upper] = g^-1(g(value) -/+ quantile g'(value) standard_error) on `scale` (domain (0, domain_upper) for
-/// logit). A value on the edge of its domain, or not finite, has no such interval: NaN, NaN.
+/// logit; on the linear scale the interval ends at domain_lower: the part below holds no value of the parameter, so
+/// the cut keeps the coverage). A value on the edge of its domain (log, logit), or not finite, has no such interval:
+/// NaN, NaN.
 std::array<double, 2> interval_on_scale(IntervalScale scale, double value, double standard_error, double quantile,
-                                        double domain_upper);
+                                        double domain_lower, double domain_upper);
 
 }  // namespace mdr::fit

@@ -161,6 +161,31 @@ TEST(FitCandidates, SpectrumReproducesTheRelaxationFunction) {
     EXPECT_LT(errors[1], errors[0]);
 }
 
+TEST(FitCandidates, SpectrumModuliIntervalsEndAtZero) {
+    // A spectrum's moduli are fitted linearly (each may be 0): their intervals x -/+ t se reached below 0 where a
+    // grid time holds little of G(t) (a modulus below 0, which no material has). The domain [0, inf) ends them at 0:
+    // [max(x - t se, 0), x + t se]; the part cut holds no value of the modulus, so the coverage stays.
+    const reference::PronyMaterial truth{1e6, 0.0, {{2e6, 0.05}, {1e6, 1.0}}};
+    const auto choice =
+        fitcase::fit_candidates(candidate_case("[fit.spectrum]\nper_decade = 4\n"), {ramp_hold(truth, 5e-5, 1)});
+    const auto& spectrum = choice.fits.front().result;
+    ASSERT_TRUE(spectrum.converged) << spectrum.status;
+    std::size_t crossing = 0;
+    for (std::size_t j = 0; j < spectrum.names.size(); ++j) {
+        ASSERT_EQ(spectrum.interval_scales[j], "linear") << spectrum.names[j];
+        const double value = spectrum.values[j], error = spectrum.standard_errors[j];
+        if (!std::isfinite(error)) continue;  // undetermined: no interval
+        EXPECT_GE(spectrum.lower_95[j], 0.0) << spectrum.names[j];
+        EXPECT_GT(spectrum.upper_95[j], value + 1.96 * error) << spectrum.names[j];  // x + t se, t >= 1.96
+        if (value - 1.96 * error < 0.0) {
+            ++crossing;
+            EXPECT_EQ(spectrum.lower_95[j], 0.0) << spectrum.names[j];
+        }
+    }
+    std::printf("%zu of %zu moduli have x - 1.96 se < 0\n", crossing, spectrum.names.size());
+    EXPECT_GT(crossing, 0u) << "some x - t se must pass 0 for this test to test anything";
+}
+
 TEST(FitCandidates, SpectrumIsNeverWorseThanTheOneTermFit) {
     // A standard solid with its time off the grid (0.37 s; 2 per decade put times at 0.316 and 1 s), force noise
     // 1e-5 of the peak: on its own grid the spectrum's residuals exceed the standard solid's (the grid cannot hold

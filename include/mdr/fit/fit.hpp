@@ -32,6 +32,10 @@ struct FreeParameter {
     /// io::free_key_upper_limit: 1 for an exponent or a springpot order, 90 for a cone's angle); infinity otherwise.
     /// The 95 % interval is built on the scale on which the domain is the whole line (FitResult::interval_scales).
     double domain_upper = std::numeric_limits<double>::infinity();
+    /// The closed lower end of the physical domain, where a parameter fitted linearly ends its 95 % interval: 0 for
+    /// every key of a case (the registry's numbers and layer.thickness are > 0) and a spectrum's moduli (>= 0);
+    /// -infinity (the default) for a signed parameter of a caller's own model.
+    double domain_lower = -std::numeric_limits<double>::infinity();
 };
 
 
@@ -252,7 +256,8 @@ struct FitResult {
     std::vector<double> lower_95;
     std::vector<double> upper_95;            ///< see lower_95
     /// Per free parameter, the scale of its interval: "log" (domain (0, inf)), "logit" (domain (0, L), ln(x/(L - x)),
-    /// FreeParameter::domain_upper) or "linear" (a parameter fitted linearly, domain unbounded)
+    /// FreeParameter::domain_upper) or "linear" (a parameter fitted linearly: x -/+ t se, ending at
+    /// FreeParameter::domain_lower)
     std::vector<std::string> interval_scales;
     std::vector<std::vector<double>> correlation;  ///< correlation matrix of the free parameters
     std::vector<Undetermined> undetermined;  ///< parameters the data cannot determine
