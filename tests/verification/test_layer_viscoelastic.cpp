@@ -135,10 +135,10 @@ TEST(LayerViscoelastic, VeryThickLayerUnderForceControlIsTheHalfSpaceDriver) {
 
 TEST(LayerViscoelastic, VeryThickLayerUnderAForceRampCreepsAsLeeRadoksClosedForm) {
     // h -> infinity against the half-space's exact solution rather than its driver (whose elements leave 2e-6 at the
-    // first steps): a force ramp F = F0 t/T to T, then held. While the contact grows, Lee-Radok's creep form (theory.md
-    // eq. L22 with the Hertz force (16/3) G sqrt(R) d^(3/2), E* = 4G) gives d(t)^(3/2) = 3/(16 sqrt(R)) int_0^t J(t - s)
-    // dF(s), with the standard solid's creep function J(t) = 1/G_inf - (1/G_inf - 1/G_0) exp(-t/tau_c), G_0 = G_inf +
-    // G1, tau_c = tau1 G_0/G_inf (Table 1), integrated over the ramp in closed form.
+    // first steps): a force ramp F = F0 t/T to T, then held. While the contact grows, Lee-Radok's creep form
+    // (theory.md eq. L22 with the Hertz force (16/3) G sqrt(R) d^(3/2), E* = 4G) gives d(t)^(3/2) = 3/(16 sqrt(R))
+    // int_0^t J(t - s) dF(s), with the standard solid's creep function J(t) = 1/G_inf - (1/G_inf - 1/G_0)
+    // exp(-t/tau_c), G_0 = G_inf + G1, tau_c = tau1 G_0/G_inf (Table 1), integrated over the ramp in closed form.
     const double radius = 1e-5, force = 3e-8, ramp = 1.0, g_inf = 1e3, g_0 = 4e3, tau_c = 0.2 * g_0 / g_inf;
     const auto exact = [&](double t) {
         const double loaded = std::min(t, ramp);
@@ -146,8 +146,9 @@ TEST(LayerViscoelastic, VeryThickLayerUnderAForceRampCreepsAsLeeRadoksClosedForm
                                                   (std::exp(-(t - loaded) / tau_c) - std::exp(-t / tau_c));
         return std::pow(3.0 / (16.0 * std::sqrt(radius)) * force / ramp * creep, 2.0 / 3.0);
     };
-    const auto thick = mdr::drivers::run_case(mdr::io::parse_case(layer_case(
-        "[layer]\nthickness = 1.0e3\ninterface = \"bonded\"\n", "[[0.0, 0.0], [1.0, 3.0e-8], [3.0, 3.0e-8]]", "force")));
+    const auto thick = mdr::drivers::run_case(
+        mdr::io::parse_case(layer_case("[layer]\nthickness = 1.0e3\ninterface = \"bonded\"\n",
+                                       "[[0.0, 0.0], [1.0, 3.0e-8], [3.0, 3.0e-8]]", "force")));
     const double deepest = exact(thick.time.back());
     double largest = 0.0;
     for (std::size_t i = 0; i < thick.time.size(); ++i) {
