@@ -161,15 +161,20 @@ class LayerFE:
         solution[free] = spla.spsolve(self.matrix[free][:, free].tocsc(), load[free])
         return solution[self.top]
 
-    def sphere_at_radius(self, radius, depth, contact_radius):
-        """The force of a frictionless rigid sphere at depth d in contact exactly over the surface nodes r <=
-        contact_radius (a vertex of the mesh): a mixed boundary-value problem with no active set, whose edge lies
-        where it is put. At the force-free edge of the exact solution, dF/da = 0 at fixed d, so a contact radius
-        from another solution, exact to e, changes the force at second order in e."""
-        gap = lambda r: radius - np.sqrt(np.maximum(radius ** 2 - r ** 2, 0.0))  # noqa: E731
+    def indenter_at_radius(self, gap, depth, contact_radius):
+        """The force of a frictionless rigid axisymmetric indenter of profile gap(r) (f(r), f(0) = 0) at depth d in
+        contact exactly over the surface nodes r <= contact_radius (a vertex of the mesh): a mixed boundary-value
+        problem with no active set, whose edge lies where it is put. At the force-free edge of the exact solution,
+        dF/da = 0 at fixed d, so a contact radius from another solution, exact to e, changes the force at second order
+        in e."""
         inside = [i for i in range(self.mr) if self.r[i] <= contact_radius * (1.0 + 1e-12)]
         _, reactions = self.solve({i: -(depth - gap(self.r[i])) for i in inside})
         return -sum(reactions.values())
+
+    def sphere_at_radius(self, radius, depth, contact_radius):
+        """indenter_at_radius for a sphere of the given radius."""
+        return self.indenter_at_radius(lambda r: radius - np.sqrt(np.maximum(radius ** 2 - r ** 2, 0.0)), depth,
+                                       contact_radius)
 
     def sphere(self, radius, depth, max_iterations=50):
         """Frictionless rigid sphere at depth d: active set on the surface nodes. Returns (force, contact radius)."""
