@@ -151,7 +151,7 @@ def run(case: Optional[RunCase] = None, *, material: Union[Material, Mapping[str
     observers : sequence of callables, optional
         Each is called as ``observer(step)`` with an ``mdr.Step`` (time, depth, force, contact radius, ...) for
         every state of the run, the initial one first, in time order. A true return value ends the run with that
-        state; an exception stops the run and propagates. Not with a ``[layer]``.
+        state; an exception stops the run and propagates. On a ``[layer]`` too (docs/python.md).
 
     Returns
     -------

@@ -113,6 +113,11 @@ void validate_layer(const ContactCase& contact_case) {
     }
     const double largest_radius = largest_contact_radius(contact_case);
     contact::check_layer_contact_radius(layer, largest_radius);
+    // A rule of the parts, not of the run's course: `mdr check` and a sweep's validation refuse it too.
+    if (contact_case.shore() && contact_case.material.viscosity() > 0.0) {
+        refuse("material.eta", format_value(contact_case.material.viscosity()),
+               "a durometer's landing against a parallel dashpot");
+    }
 }
 
 namespace {
@@ -342,10 +347,6 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress,
                                         const StepObservers& observers) {
     validate_layer(contact_case);
-    if (contact_case.shore() && contact_case.material.viscosity() > 0.0) {
-        refuse("material.eta", format_value(contact_case.material.viscosity()),
-               "a durometer's landing against a parallel dashpot");
-    }
     // A harmonic load's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19); a
     // fit's model runs any history there (NumericsOptions::layer_cells).
     if (contact_case.load.harmonic || contact_case.numerics.layer_cells) {

@@ -109,6 +109,13 @@ def test_run_refuses_what_a_sheet_does_not_build(run_case, text, fragments):
     assert_bad_input(run_case(text), *fragments)
 
 
+def test_check_refuses_a_durometer_on_a_sheet_against_a_dashpot(run_case):
+    """A rule of the parts, not of the run's course (drivers::validate_layer): `mdr check` refuses it as `mdr run`
+    does, so that no case passes check and then fails to run (check said ok before, issue 27's audit)."""
+    text, fragments = next(case[1:] for case in LAYER_BAD_CASES if case[0] == "layer-parallel-dashpot")
+    assert_bad_input(run_case(text, command="check"), *fragments)
+
+
 def test_shore_on_a_sheet_writes_the_readings(run_case):
     half_space = run_case(MATERIAL + SHORE)
     assert half_space.returncode == 0, half_space.stderr

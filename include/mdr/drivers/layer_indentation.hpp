@@ -19,8 +19,8 @@ double layer_poisson_ratio(const ContactCase& contact_case);
 
 /// Throws mdr::InvalidInput (key `layer` or the offending key, its value and the rule) for a case with a `[layer]`
 /// that needs what is not built on a layer yet: an oblique impact, tangential loading, snapshots in an impact, a
-/// compressible body whose Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio). Does nothing
-/// for a case without a layer.
+/// compressible body whose Poisson ratio changes in time, a deformable indenter (layer_poisson_ratio) or a Shore test
+/// against a parallel dashpot (`material.eta`). Does nothing for a case without a layer.
 void validate_layer(const ContactCase& contact_case);
 
 /// Runs a displacement-, force- or spring-controlled case on its layer: the elastic layer's force F_el(d) at unit
@@ -57,7 +57,7 @@ void validate_layer(const ContactCase& contact_case);
 /// (StepObserver::needs_one_run), a run of Ting's class keeps its states and shows them once it has ended in that class
 /// (dropped where the cells take over), so that they never see the states of a run abandoned for the cells; a stop
 /// then ends the result at its state as a stop asked at once. Throws as validate_layer; and naming `material.eta` for a
-/// force jump in contact against a parallel dashpot on the cells or in a Shore test.
+/// force jump in contact against a parallel dashpot on the cells.
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {},
                                         const StepObservers& observers = {});
 
