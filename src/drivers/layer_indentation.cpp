@@ -58,11 +58,6 @@ double largest_contact_radius(const ContactCase& contact_case) {
 // which runs the case again on LayerCells.
 struct ContactRegrows {};
 
-// A snapshot due while the contact recedes or after it was lost: the surface outside a receding contact creeps under
-// the nonlocal load K q of the contact (eq. L27; L18's free cells), which Ting's solution (eq. L12) does not carry.
-// Thrown by the run of Ting's class, caught by run_layer_indentation, which runs the case again on LayerCells.
-struct SnapshotOnCells {};
-
 }  // namespace
 
 double layer_poisson_ratio(const ContactCase& contact_case) {
@@ -202,6 +197,14 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
         if (shore_recorder) list.add(*shore_recorder);
         list.add(extra_observers);
     };
+    // Snapshots of the growing contact (eq. L26), taken live: in the replay the stepper has moved on. One due while
+    // the contact recedes runs the case on cells (eq. L27).
+    std::optional<GrowingSnapshots> growing;
+    std::optional<SnapshotRecorder> snapshots;
+    if (!contact_case.snapshots.empty()) {
+        growing.emplace(material, layer, unit_plane_modulus, stepper);
+        snapshots.emplace(contact_case.snapshots, *growing, result);
+    }
     ObserverList observers(output_every);
     StateLog state_log;
     if (showing == Showing::live) {
@@ -209,16 +212,10 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     } else {
         observers.add(state_log);
     }
+    if (snapshots) observers.add(*snapshots);
     const std::size_t last_node = grid.size() - 1;
     std::size_t reported = 0;
     double previous_centre = 0.0;
-    // Snapshots of the growing contact (eq. L26); one due while it recedes runs the case on cells (eq. L27).
-    std::optional<SnapshotSchedule> snapshots;
-    std::optional<GrowingSnapshots> growing;
-    if (!contact_case.snapshots.empty()) {
-        snapshots.emplace(contact_case.snapshots);
-        growing.emplace(material, layer, unit_plane_modulus);
-    }
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const GridNode& node = grid[i];
         const LayerStep& now = stepper.current();
@@ -311,10 +308,6 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
         const bool ends = observers.notify(state);
         // At a pause's start the force to hold; at its end the base's shift (the node settled: no jump follows).
         if (paused && settled) paused->passed(node.time, next.force, depth, node.value);
-        for (std::size_t due = snapshots && settled ? snapshots->due(node.time) : 0; due > 0; --due) {
-            if (next.phase == LayerPhase::receding || next.phase == LayerPhase::lifted_off) throw SnapshotOnCells{};
-            result.snapshots.push_back(growing->take(next));
-        }
         const auto percent = static_cast<std::size_t>(100.0 * static_cast<double>(i + 1) /
                                                       static_cast<double>(grid.size()));
         if (progress && percent > reported) {

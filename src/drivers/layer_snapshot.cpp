@@ -18,11 +18,12 @@ constexpr std::size_t snapshot_cells = 1000;
 
 }  // namespace
 
-Snapshot cells_snapshot(LayerCells& cells, double contact_radius, double time) {
-    const auto surface = cells.surface();
-    const double spacing = cells.spacing();
-    Snapshot snapshot = snapshot_radii(time, contact_radius, spacing * static_cast<double>(surface.size()));
-    const auto load = cells.line_load();
+Snapshot CellSnapshots::take(const StepState& state) {
+    const double contact_radius = state.contact_radius();
+    const auto surface = cells_.surface();
+    const double spacing = cells_.spacing();
+    Snapshot snapshot = snapshot_radii(state.time, contact_radius, spacing * static_cast<double>(surface.size()));
+    const auto load = cells_.line_load();
     // The line load at the edge, extrapolated linearly from the last two cells in contact (no less than zero):
     // about zero where q falls to zero there (eq. L6), the jump of a parallel dashpot's part in a growing contact
     // (eq. L16) and a flat punch's at its wall, whose pressures grow as 1/sqrt(a^2 - r^2) at the edge (eq. 23).
@@ -38,8 +39,8 @@ Snapshot cells_snapshot(LayerCells& cells, double contact_radius, double time) {
 }
 
 GrowingSnapshots::GrowingSnapshots(const rheology::Rheology& material, const contact::LayerContact& layer,
-                                   double unit_modulus)
-    : material_(&material), layer_(&layer), unit_modulus_(unit_modulus) {}
+                                   double unit_modulus, const LayerStepper& stepper)
+    : material_(&material), layer_(&layer), unit_modulus_(unit_modulus), stepper_(&stepper) {}
 
 void GrowingSnapshots::commit(const LayerStep& step) {
     if (step.phase == LayerPhase::approach) {
@@ -50,7 +51,9 @@ void GrowingSnapshots::commit(const LayerStep& step) {
     }
 }
 
-Snapshot GrowingSnapshots::take(const LayerStep& step) const {
+Snapshot GrowingSnapshots::take(const StepState& /*state*/) {
+    const LayerStep& step = stepper_->current();
+    if (step.phase == LayerPhase::receding || step.phase == LayerPhase::lifted_off) throw SnapshotOnCells{};
     const double range = layer_->max_contact_radius();
     Snapshot snapshot = snapshot_radii(step.time, step.contact.contact_radius, range);
     const double a = snapshot.contact_radius;
