@@ -12,6 +12,7 @@
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/load_history.hpp"
+#include "mdr/drivers/work_estimate.hpp"
 #include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
 #include "layer_impact.hpp"
@@ -134,7 +135,8 @@ void drop_snapshots_after(std::vector<Snapshot>& snapshots, const StepState& end
 IndentationResult run_one_maximum(const ContactCase& contact_case, const ProgressObserver& progress,
                                   const StepObservers& extra_observers, Showing showing) {
     IndentationResult result;
-    result.numerics = resolve_numerics(contact_case);
+    const ResolvedNumerics resolved = resolve_numerics(contact_case);  // as its bounds were checked
+    result.numerics = resolved;
     const std::size_t nodes = contact_case.numerics.elements.value_or(contact::default_layer_nodes);
     result.numerics.elements = nodes;
     const double largest_radius = largest_contact_radius(contact_case);
@@ -210,6 +212,9 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     if (showing == Showing::live) {
         add_shown(observers);
     } else {
+        // A copy of each state of the grid, counted against numerics.max_memory before it is kept.
+        require_kept_states_within_bound(contact_case, resolved, grid.size(), sizeof(StepState));
+        state_log.reserve(grid.size());
         observers.add(state_log);
     }
     if (snapshots) observers.add(*snapshots);
