@@ -296,7 +296,6 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
         if (next.grows_again) throw ContactRegrows{};
         previous_centre = now.centre;
         stepper.commit(next);
-        if (growing) growing->commit(next);
         if (i > 0) ++result.steps;
         const bool settled = i + 1 == grid.size() || grid[i + 1].time != node.time;
         // In a pause the feedback's base, z = d + F / k.

@@ -36,16 +36,14 @@ private:
 /// Thrown by GrowingSnapshots::take, caught by run_layer_indentation, which runs the case again on LayerCells.
 struct SnapshotOnCells {};
 
-/// Snapshots of a growing contact in a run of Ting's class (eq. L26): records the loading nodes as
-/// LayerStepper::commit does, and takes the snapshot of the stepper's committed step, untouched or growing.
+/// Snapshots of a growing contact in a run of Ting's class (eq. L26), from the loading record of the stepper
+/// (LayerStepper::loading_times, loading_contacts).
 class GrowingSnapshots final : public SnapshotSource {
 public:
     /// `unit_modulus`: E* / G of the layer (4, G the effective modulus of eq. 56), as `stepper`'s, which must outlive
     /// the source.
     GrowingSnapshots(const rheology::Rheology& material, const contact::LayerContact& layer, double unit_modulus,
                      const LayerStepper& stepper);
-    /// Records a committed step: an untouched one restarts the record, a growing one is appended.
-    void commit(const LayerStep& step);
     /// The snapshot of the stepper's committed step, untouched or growing: q(x, t) = int_0^t G(t - t') dq_el(x, t')
     /// with the parallel dashpot's part in the unit depth's shape, w1 the elastic layer's at the depth (eq. L26),
     /// p and w by eq. L25, over [0, the layer's largest contact radius]. Throws SnapshotOnCells where the contact
@@ -53,16 +51,10 @@ public:
     Snapshot take(const StepState& state) override;
 
 private:
-    struct Node {
-        double time = 0.0;
-        contact::LayerContactState contact;
-    };
     const rheology::Rheology* material_;
     const contact::LayerContact* layer_;
     double unit_modulus_;
     const LayerStepper* stepper_;
-    double start_ = 0.0;      // the record's start: the last untouched node
-    std::vector<Node> nodes_;  // the loading nodes since
 };
 
 }  // namespace mdr::drivers
