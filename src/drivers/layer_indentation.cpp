@@ -201,12 +201,8 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     };
     // Snapshots of the growing contact (eq. L26), taken live: in the replay the stepper has moved on. One due while
     // the contact recedes runs the case on cells (eq. L27).
-    std::optional<GrowingSnapshots> growing;
-    std::optional<SnapshotRecorder> snapshots;
-    if (!contact_case.snapshots.empty()) {
-        growing.emplace(material, layer, unit_plane_modulus, stepper);
-        snapshots.emplace(contact_case.snapshots, *growing, result);
-    }
+    GrowingSnapshots growing(material, layer, unit_plane_modulus, stepper);
+    SnapshotRecorder snapshots(contact_case.snapshots, growing, result);
     ObserverList observers(output_every);
     StateLog state_log;
     if (showing == Showing::live) {
@@ -217,7 +213,7 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
         state_log.reserve(grid.size());
         observers.add(state_log);
     }
-    if (snapshots) observers.add(*snapshots);
+    observers.add(snapshots);
     const std::size_t last_node = grid.size() - 1;
     std::size_t reported = 0;
     double previous_centre = 0.0;
