@@ -102,7 +102,7 @@ public:
         if (cycle_) observers.add(*cycle_);
     }
     /// The tangential layer's shear stress in snapshots, with tangential loading.
-    SnapshotRecorder::ShearStress shear_stress() {
+    FoundationSnapshots::ShearStress shear_stress() {
         if (!tangential_) return {};
         return [this](Snapshot& snapshot) { tangential_->add_shear_stress(snapshot); };
     }

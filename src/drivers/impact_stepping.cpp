@@ -115,7 +115,7 @@ void ImpactStepping::add_observers(ObserverList& observers, IndentationResult& r
     if (oblique_) observers.add(oblique_columns_.emplace(*oblique_, result));
 }
 
-SnapshotRecorder::ShearStress ImpactStepping::shear_stress() {
+FoundationSnapshots::ShearStress ImpactStepping::shear_stress() {
     if (!oblique_) return {};
     return [this](Snapshot& snapshot) { oblique_->add_shear_stress(snapshot); };
 }

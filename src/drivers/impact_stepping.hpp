@@ -32,7 +32,7 @@ public:
     /// The oblique part's columns.
     void add_observers(ObserverList& observers, IndentationResult& result);
     /// The oblique part's shear stress in snapshots.
-    SnapshotRecorder::ShearStress shear_stress();
+    FoundationSnapshots::ShearStress shear_stress();
     /// The first contact at t = 0, at the approach speed.
     StepState first_state() const { return state(0, false); }
     /// Step `n` (1, 2, ...): the next time step, cut at the next snapshot time; the run ends in the step in which the

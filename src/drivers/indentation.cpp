@@ -36,7 +36,8 @@ IndentationResult run_control(const ContactCase& contact_case, const ProgressObs
     RowRecorder rows(result, ControlTraits<Control>::columns(control));
     observers.add(rows);
     stepping.add_observers(observers, result);
-    SnapshotRecorder snapshots(contact_case.snapshots, *contact_case.indenter, result, stepping.shear_stress());
+    FoundationSnapshots snapshot_source(*contact_case.indenter, stepping.shear_stress());
+    SnapshotRecorder snapshots(contact_case.snapshots, snapshot_source, result);
     observers.add(snapshots);
     std::optional<ProgressReport> progress_report;
     if (progress) observers.add(progress_report.emplace(progress));

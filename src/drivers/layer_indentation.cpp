@@ -12,6 +12,7 @@
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/load_history.hpp"
+#include "mdr/drivers/work_estimate.hpp"
 #include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
 #include "layer_impact.hpp"
@@ -57,11 +58,6 @@ double largest_contact_radius(const ContactCase& contact_case) {
 // Ting's solution (eq. L12) no longer holds. Thrown by the run of Ting's class, caught by run_layer_indentation,
 // which runs the case again on LayerCells.
 struct ContactRegrows {};
-
-// A snapshot due while the contact recedes or after it was lost: the surface outside a receding contact creeps under
-// the nonlocal load K q of the contact (eq. L27; L18's free cells), which Ting's solution (eq. L12) does not carry.
-// Thrown by the run of Ting's class, caught by run_layer_indentation, which runs the case again on LayerCells.
-struct SnapshotOnCells {};
 
 }  // namespace
 
@@ -144,7 +140,8 @@ void drop_snapshots_after(std::vector<Snapshot>& snapshots, const StepState& end
 IndentationResult run_one_maximum(const ContactCase& contact_case, const ProgressObserver& progress,
                                   const StepObservers& extra_observers, Showing showing) {
     IndentationResult result;
-    result.numerics = resolve_numerics(contact_case);
+    const ResolvedNumerics resolved = resolve_numerics(contact_case);  // as its bounds were checked
+    result.numerics = resolved;
     const std::size_t nodes = contact_case.numerics.elements.value_or(contact::default_layer_nodes);
     result.numerics.elements = nodes;
     const double largest_radius = largest_contact_radius(contact_case);
@@ -207,23 +204,24 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
         if (shore_recorder) list.add(*shore_recorder);
         list.add(extra_observers);
     };
+    // Snapshots of the growing contact (eq. L26), taken live: in the replay the stepper has moved on. One due while
+    // the contact recedes runs the case on cells (eq. L27).
+    GrowingSnapshots growing(material, layer, unit_plane_modulus, stepper);
+    SnapshotRecorder snapshots(contact_case.snapshots, growing, result);
     ObserverList observers(output_every);
     StateLog state_log;
     if (showing == Showing::live) {
         add_shown(observers);
     } else {
+        // A copy of each state of the grid, counted against numerics.max_memory before it is kept.
+        require_kept_states_within_bound(contact_case, resolved, grid.size(), sizeof(StepState));
+        state_log.reserve(grid.size());
         observers.add(state_log);
     }
+    observers.add(snapshots);
     const std::size_t last_node = grid.size() - 1;
     std::size_t reported = 0;
     double previous_centre = 0.0;
-    // Snapshots of the growing contact (eq. L26); one due while it recedes runs the case on cells (eq. L27).
-    std::optional<SnapshotSchedule> snapshots;
-    std::optional<GrowingSnapshots> growing;
-    if (!contact_case.snapshots.empty()) {
-        snapshots.emplace(contact_case.snapshots);
-        growing.emplace(material, layer, unit_plane_modulus);
-    }
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const GridNode& node = grid[i];
         const LayerStep& now = stepper.current();
@@ -299,7 +297,6 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
         if (next.grows_again) throw ContactRegrows{};
         previous_centre = now.centre;
         stepper.commit(next);
-        if (growing) growing->commit(next);
         if (i > 0) ++result.steps;
         const bool settled = i + 1 == grid.size() || grid[i + 1].time != node.time;
         // In a pause the feedback's base, z = d + F / k.
@@ -316,10 +313,6 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
         const bool ends = observers.notify(state);
         // At a pause's start the force to hold; at its end the base's shift (the node settled: no jump follows).
         if (paused && settled) paused->passed(node.time, next.force, depth, node.value);
-        for (std::size_t due = snapshots && settled ? snapshots->due(node.time) : 0; due > 0; --due) {
-            if (next.phase == LayerPhase::receding || next.phase == LayerPhase::lifted_off) throw SnapshotOnCells{};
-            result.snapshots.push_back(growing->take(next));
-        }
         const auto percent = static_cast<std::size_t>(100.0 * static_cast<double>(i + 1) /
                                                       static_cast<double>(grid.size()));
         if (progress && percent > reported) {

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "mdr/rheology/rheology.hpp"
@@ -57,6 +58,8 @@ public:
                 const PronyBranches& force_branches);
     /// The number of steps recorded.
     std::size_t steps() const { return time_.size() - 1; }
+    /// The times of its nodes [s]: the start, then the end of each step.
+    std::span<const double> times() const { return time_; }
     /// The point at loading position x in [0, steps()].
     LoadingPoint at(double position) const;
     /// int_{t1}^t G(t - t') dd(t') (eq. L12) at time `now` with the depth `depth_now`, its branches `branches_now`

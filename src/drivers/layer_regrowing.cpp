@@ -36,15 +36,18 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
     // history resumes shifted from the z reached (PausedBase, as on the half-space).
     std::optional<PausedBase> paused;
     if (spring && !spring->force_pauses.empty()) paused.emplace(spring->force_pauses, spring_constant);
-    // The rows by the half-space's recorder, then the caller's observers; a stop ends the run with its state.
+    // The rows and the snapshots (of the cells) by the half-space's recorders, then the caller's observers; a stop
+    // ends the run with its state.
     ObserverList observed(std::max<std::size_t>(contact_case.numerics.output_every, 1));
     RowRecorder rows(result, row_columns(contact_case.control));
     observed.add(rows);
+    CellSnapshots cell_snapshots(layer);
+    SnapshotRecorder snapshots(contact_case.snapshots, cell_snapshots, result);
+    observed.add(snapshots);
     observed.add(observers);
     const std::size_t last_node = grid.size() - 1;
     const bool sine_rate = displacement && contact_case.load.harmonic && material.viscosity() > 0.0;
     std::size_t reported = 0;
-    SnapshotSchedule snapshots(contact_case.snapshots);
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const double time_step = i == 0 ? 0.0 : grid[i].time - grid[i - 1].time;
         const bool holding = paused && i > 0 && paused->holding(grid[i - 1].time, grid[i].time);
@@ -77,9 +80,6 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
             .layer_contact_radius = state.contact_radius};
         const bool ends = observed.notify(observed_state);
         if (paused && settled) paused->passed(grid[i].time, state.force, state.depth, grid[i].value);
-        for (std::size_t due = settled ? snapshots.due(grid[i].time) : 0; due > 0; --due) {
-            result.snapshots.push_back(cells_snapshot(layer, state.contact_radius, grid[i].time));
-        }
         if (cycle) cycle->record(grid[i].time, state.depth, state.force, state.touching, state.touching_part);
         const auto percent = static_cast<std::size_t>(100.0 * static_cast<double>(i + 1) /
                                                       static_cast<double>(grid.size()));

@@ -18,11 +18,12 @@ constexpr std::size_t snapshot_cells = 1000;
 
 }  // namespace
 
-Snapshot cells_snapshot(LayerCells& cells, double contact_radius, double time) {
-    const auto surface = cells.surface();
-    const double spacing = cells.spacing();
-    Snapshot snapshot = snapshot_radii(time, contact_radius, spacing * static_cast<double>(surface.size()));
-    const auto load = cells.line_load();
+Snapshot CellSnapshots::take(const StepState& state) {
+    const double contact_radius = state.contact_radius();
+    const auto surface = cells_.surface();
+    const double spacing = cells_.spacing();
+    Snapshot snapshot = snapshot_radii(state.time, contact_radius, spacing * static_cast<double>(surface.size()));
+    const auto load = cells_.line_load();
     // The line load at the edge, extrapolated linearly from the last two cells in contact (no less than zero):
     // about zero where q falls to zero there (eq. L6), the jump of a parallel dashpot's part in a growing contact
     // (eq. L16) and a flat punch's at its wall, whose pressures grow as 1/sqrt(a^2 - r^2) at the edge (eq. 23).
@@ -38,25 +39,22 @@ Snapshot cells_snapshot(LayerCells& cells, double contact_radius, double time) {
 }
 
 GrowingSnapshots::GrowingSnapshots(const rheology::Rheology& material, const contact::LayerContact& layer,
-                                   double unit_modulus)
-    : material_(&material), layer_(&layer), unit_modulus_(unit_modulus) {}
+                                   double unit_modulus, const LayerStepper& stepper)
+    : material_(&material), layer_(&layer), unit_modulus_(unit_modulus), stepper_(&stepper) {}
 
-void GrowingSnapshots::commit(const LayerStep& step) {
-    if (step.phase == LayerPhase::approach) {
-        start_ = step.time;
-        nodes_.clear();
-    } else if (step.phase == LayerPhase::growing) {
-        nodes_.push_back({step.time, step.contact});
-    }
-}
-
-Snapshot GrowingSnapshots::take(const LayerStep& step) const {
+Snapshot GrowingSnapshots::take(const StepState& /*state*/) {
+    const LayerStep& step = stepper_->current();
+    if (step.phase == LayerPhase::receding || step.phase == LayerPhase::lifted_off) throw SnapshotOnCells{};
     const double range = layer_->max_contact_radius();
     Snapshot snapshot = snapshot_radii(step.time, step.contact.contact_radius, range);
     const double a = snapshot.contact_radius;
     snapshot.pressure.assign(snapshot.radius.size(), 0.0);
     snapshot.displacement.assign(snapshot.radius.size(), 0.0);
-    if (step.phase != LayerPhase::growing || !(a > 0.0) || nodes_.empty()) return snapshot;  // nothing loaded yet
+    // The loading nodes: times[0] the record's start, node n (0, 1, ...) ending at times[n + 1] with contacts[n + 1].
+    const auto times = stepper_->loading_times();
+    const auto contacts = stepper_->loading_contacts();
+    const std::size_t steps = times.size() - 1;
+    if (step.phase != LayerPhase::growing || !(a > 0.0) || steps == 0) return snapshot;  // nothing loaded yet
     // Cell centres x_i = (i + 1/2) dx: snapshot_cells across the contact, then on to the snapshot's outer radius.
     const double spacing = a / static_cast<double>(snapshot_cells);
     const auto count = static_cast<std::size_t>(std::ceil(snapshot.radius.back() / spacing - 0.5)) + 1;
@@ -65,12 +63,11 @@ Snapshot GrowingSnapshots::take(const LayerStep& step) const {
     // Eq. L26: q(x, t) = G_inf q_el(x, t) + sum_k G_k h_k(x, t) + the dashpot's part, h_k the Prony branches of
     // q_el(x, .) linear over each loading step (as LayerStepper's of F_el): q = sum_n c_n q_el(x, t_n), c_n =
     // beta_n - beta_n+1 (+ G_inf for the last), beta_n = sum_k G_k's response at t to a unit change over step n.
-    const std::size_t steps = nodes_.size();
     std::vector<double> response(steps + 1, 0.0);
     for (std::size_t n = 0; n < steps; ++n) {
         PronyBranches unit(*material_);
-        unit.advance(nodes_[n].time - (n == 0 ? start_ : nodes_[n - 1].time), 1.0);
-        unit.advance(step.time - nodes_[n].time, 0.0);
+        unit.advance(times[n + 1] - times[n], 1.0);
+        unit.advance(step.time - times[n + 1], 0.0);
         response[n] = unit.weighted_sum();
     }
     // Consecutive nodes of one contact radius (a hold; a flat punch's every node) share one solve: there q_el =
@@ -85,7 +82,7 @@ Snapshot GrowingSnapshots::take(const LayerStep& step) const {
             const double weight =
                 response[n] - response[n + 1] + (n + 1 == steps ? material_->equilibrium_modulus() : 0.0);
             sum.on_load += weight;
-            sum.on_unit_depth += weight * (nodes_[n].contact.depth - nodes_[end - 1].contact.depth);
+            sum.on_unit_depth += weight * (contacts[n + 1].depth - contacts[end].depth);
         }
         return sum;
     };
@@ -95,14 +92,14 @@ Snapshot GrowingSnapshots::take(const LayerStep& step) const {
     };
     const auto group_end = [&](std::size_t first) {
         std::size_t end = first;
-        while (end < steps && nodes_[end].contact.contact_radius == nodes_[first].contact.contact_radius) ++end;
+        while (end < steps && contacts[end + 1].contact_radius == contacts[first + 1].contact_radius) ++end;
         return end;
     };
     std::vector<double> load(snapshot_cells, 0.0);
     std::size_t first = 0;
     for (std::size_t end = group_end(first); end < steps; first = end, end = group_end(first)) {
         // q_el of this radius vanishes beyond it: only the centres inside.
-        const contact::LayerContactState& state = nodes_[end - 1].contact;
+        const contact::LayerContactState& state = contacts[end];
         const auto inside = static_cast<std::size_t>(
             std::upper_bound(centres.begin(), centres.begin() + snapshot_cells, state.contact_radius) -
             centres.begin());

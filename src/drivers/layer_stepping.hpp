@@ -4,6 +4,7 @@
 // without changing the history (the force-controlled driver solves for the depth), then committed.
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "layer_receding.hpp"
@@ -86,6 +87,11 @@ public:
     LayerStep jump(double force) const;
     /// Makes `step` the current state (a growing one is recorded for Ting's solution).
     void commit(const LayerStep& step);
+    /// The times [s] of the loading record since the last untouched state (eq. L12's t1 runs over it): its start, then
+    /// each growing step committed.
+    std::span<const double> loading_times() const { return loading_.times(); }
+    /// The elastic layer's equilibrium at each time of loading_times (none at the start).
+    std::span<const contact::LayerContactState> loading_contacts() const { return loading_contacts_; }
 
 private:
     // The growing step with the elastic equilibrium `contact` at `depth` (< 0: the contact's own depth).

@@ -34,6 +34,8 @@ private:
 /// each state, O(steps) memory.
 class StateLog final : public StepObserver {
 public:
+    /// Makes room for `states` states at once (numerics.max_memory counts them: require_kept_states_within_bound).
+    void reserve(std::size_t states) { states_.reserve(states); }
     void observe(const StepState& state) override { states_.push_back(state); }
     /// Hands the kept states in order to `observers` (ObserverList::notify: their stops asked, a stop making its state
     /// the last one and a row) up to the run's last state; returns the state the run ends with (the last kept, or the

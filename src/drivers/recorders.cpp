@@ -23,25 +23,21 @@ RowRecorder::Columns row_columns(const LoadControl& control) {
     return visit_control(control, [](auto traits, const auto& data) { return traits.columns(data); });
 }
 
-SnapshotSchedule::SnapshotSchedule(std::vector<double> times) : times_(std::move(times)) {
+Snapshot FoundationSnapshots::take(const StepState& state) {
+    Snapshot snapshot = take_snapshot(*state.foundation, indenter_, state.time);
+    if (shear_stress_) shear_stress_(snapshot);
+    return snapshot;
+}
+
+SnapshotRecorder::SnapshotRecorder(std::vector<double> times, SnapshotSource& source, IndentationResult& result)
+    : times_(std::move(times)), source_(source), result_(result) {
     std::sort(times_.begin(), times_.end());
 }
 
-std::size_t SnapshotSchedule::due(double time) {
-    const std::size_t first = next_;
-    while (next_ < times_.size() && times_[next_] <= time) ++next_;
-    return next_ - first;
-}
-
-SnapshotRecorder::SnapshotRecorder(std::vector<double> times, const profile::Profile& indenter,
-                                   IndentationResult& result, ShearStress shear_stress)
-    : schedule_(std::move(times)), indenter_(indenter), result_(result), shear_stress_(std::move(shear_stress)) {}
-
 void SnapshotRecorder::observe(const StepState& state) {
     if (!state.settled) return;
-    for (std::size_t due = schedule_.due(state.time); due > 0; --due) {
-        result_.snapshots.push_back(take_snapshot(*state.foundation, indenter_, state.time));
-        if (shear_stress_) shear_stress_(result_.snapshots.back());
+    for (; next_ < times_.size() && times_[next_] <= state.time; ++next_) {
+        result_.snapshots.push_back(source_.take(state));
     }
 }
 

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "mdr/drivers/indentation.hpp"
@@ -33,34 +34,44 @@ private:
 /// The optional row columns that `control` writes (its ControlTraits' columns), on the half-space and on a [layer].
 RowRecorder::Columns row_columns(const LoadControl& control);
 
-/// The case's snapshot times, each due at the first settled state at or after it (SnapshotRecorder; the layer
-/// drivers, layer_snapshot.hpp).
-class SnapshotSchedule {
+/// What a run's snapshots are taken of: the physics of its pressure p(r), surface displacement w(r) (and shear
+/// stress) at a state, which differs between the half-space's foundation (FoundationSnapshots) and a [layer]'s Ting
+/// solution or cells (layer_snapshot.hpp); the times, the result and its columns are SnapshotRecorder's.
+class SnapshotSource {
 public:
-    explicit SnapshotSchedule(std::vector<double> times);
-    /// The number of snapshots due at a settled state at `time` [s], each counted once.
-    std::size_t due(double time);
-
-private:
-    std::vector<double> times_;  // ascending
-    std::size_t next_ = 0;
+    virtual ~SnapshotSource() = default;
+    /// The snapshot at `state`, a settled state at or after a snapshot time, taken at the state's time.
+    virtual Snapshot take(const StepState& state) = 0;
 };
 
-/// Snapshots (pressure, surface displacement, and shear stress when `shear_stress` is given) at the case's times,
-/// each taken at the first settled state at or after it; the drivers put a state on each of these times.
-class SnapshotRecorder final : public StepObserver {
+/// The half-space's snapshots: pressure (eq. 23) and surface displacement of its MDR foundation (take_snapshot), and
+/// the shear stress when `shear_stress` is given.
+class FoundationSnapshots final : public SnapshotSource {
 public:
     /// Fills a snapshot's shear stress from a tangential layer.
     using ShearStress = std::function<void(Snapshot&)>;
-    SnapshotRecorder(std::vector<double> times, const profile::Profile& indenter, IndentationResult& result,
-                     ShearStress shear_stress);
+    FoundationSnapshots(const profile::Profile& indenter, ShearStress shear_stress)
+        : indenter_(indenter), shear_stress_(std::move(shear_stress)) {}
+    Snapshot take(const StepState& state) override;
+
+private:
+    const profile::Profile& indenter_;
+    ShearStress shear_stress_;
+};
+
+/// Snapshots at the case's times, each taken from `source` at the first settled state at or after it (the drivers
+/// put a state on each of these times), on the half-space and on a [layer].
+class SnapshotRecorder final : public StepObserver {
+public:
+    /// `source` must outlive the recorder.
+    SnapshotRecorder(std::vector<double> times, SnapshotSource& source, IndentationResult& result);
     void observe(const StepState& state) override;
 
 private:
-    SnapshotSchedule schedule_;
-    const profile::Profile& indenter_;
+    std::vector<double> times_;  // ascending
+    std::size_t next_ = 0;       // the first time not taken yet
+    SnapshotSource& source_;
     IndentationResult& result_;
-    ShearStress shear_stress_;
 };
 
 /// A Shore test: the reading column H at every row, and the readings at shore_reading_times (settled states on

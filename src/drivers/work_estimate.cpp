@@ -38,6 +38,11 @@ double indentation_steps(const ContactCase& contact_case, const ResolvedNumerics
     return steps;
 }
 
+// `[numerics] max_memory` or default_max_memory [bytes].
+double memory_bound(const ContactCase& contact_case) {
+    return contact_case.numerics.max_memory.value_or(default_max_memory);
+}
+
 }  // namespace
 
 WorkEstimate estimate_work(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
@@ -85,7 +90,7 @@ void require_bounded_work(const ContactCase& contact_case, const ResolvedNumeric
                         estimate.steps, numerics.time_step, start, numerics.time_limit, numerics.elements,
                         contact_case.tangential ? " x 2 layers" : "", estimate.element_steps));
     }
-    const double max_memory = contact_case.numerics.max_memory.value_or(default_max_memory);
+    const double max_memory = memory_bound(contact_case);
     if (!(estimate.memory <= max_memory)) {
         throw InvalidInput("numerics.max_memory", fmt::format("{:.3g}", max_memory),
                            fmt::format("exceeded: the run would hold about {:.3g} bytes ({:.3g} steps, {} elements); "
@@ -93,6 +98,20 @@ void require_bounded_work(const ContactCase& contact_case, const ResolvedNumeric
                                        "raise numerics.max_memory if the machine has it",
                                        estimate.memory, estimate.steps, numerics.elements));
     }
+}
+
+void require_kept_states_within_bound(const ContactCase& contact_case, const ResolvedNumerics& numerics,
+                                      std::size_t states, std::size_t state_bytes) {
+    const WorkEstimate estimate = estimate_work(contact_case, numerics);
+    const double memory = estimate.memory + static_cast<double>(states) * static_cast<double>(state_bytes);
+    const double max_memory = memory_bound(contact_case);
+    if (memory <= max_memory) return;
+    throw InvalidInput("numerics.max_memory", fmt::format("{:.3g}", max_memory),
+                       fmt::format("exceeded: the run would hold about {:.3g} bytes ({:.3g} steps, {} elements, and "
+                                   "a copy of each of its {} states, {} bytes each, kept for an observer that sees "
+                                   "one run on the [layer]); lengthen numerics.time_step, or raise "
+                                   "numerics.max_memory if the machine has it",
+                                   memory, estimate.steps, numerics.elements, states, state_bytes));
 }
 
 double element_step_bound(const ContactCase& contact_case) {

@@ -55,7 +55,8 @@ void validate_layer(const ContactCase& contact_case);
 /// half-space (step_observer.hpp; StepState::layer_contact_radius filled, foundation null); a stop ends the run there
 /// (IndentationResult::stopped, no harmonic outcome). With an observer that needs one run
 /// (StepObserver::needs_one_run), a run of Ting's class keeps its states and shows them once it has ended in that class
-/// (dropped where the cells take over), so that they never see the states of a run abandoned for the cells; a stop
+/// (dropped where the cells take over; counted against numerics.max_memory before they are kept, refused naming it
+/// where they exceed it), so that they never see the states of a run abandoned for the cells; a stop
 /// then ends the result at its state as a stop asked at once. Throws as validate_layer; and naming `material.eta` for a
 /// force jump in contact against a parallel dashpot on the cells.
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress = {},

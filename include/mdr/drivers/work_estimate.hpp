@@ -36,6 +36,13 @@ WorkEstimate estimate_work(const ContactCase& contact_case, const ResolvedNumeri
 /// (require_steps_within_bound): the end is only the latest time allowed.
 void require_bounded_work(const ContactCase& contact_case, const ResolvedNumerics& numerics);
 
+/// Throws mdr::InvalidInput (key `numerics.max_memory`) when the run's memory (estimate_work) with a copy of each of
+/// its `states` states kept besides, `state_bytes` each, exceeds the bound: a [layer]'s run of Ting's class keeps its
+/// states for the observers that need one run (StateLog, src/drivers/observer_list.hpp). Called where they are kept,
+/// before they are.
+void require_kept_states_within_bound(const ContactCase& contact_case, const ResolvedNumerics& numerics,
+                                      std::size_t states, std::size_t state_bytes);
+
 /// The bound on steps x elements of `contact_case`: `[numerics] max_element_steps` or default_max_element_steps.
 double element_step_bound(const ContactCase& contact_case);
 

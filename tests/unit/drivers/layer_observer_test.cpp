@@ -15,6 +15,8 @@
 #include "mdr/contact/layer.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/step_observer.hpp"
+#include "mdr/drivers/work_estimate.hpp"
+#include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "mdr/profile/profile.hpp"
 
@@ -148,6 +150,33 @@ TEST(LayerObserverOfOneRun, RunsTingsClassOnceAndShowsItsStatesOnce) {
     const auto result = run_case(loading());
     ASSERT_EQ(watcher.states.size(), result.steps + 1);
     for (std::size_t i = 0; i < watcher.states.size(); ++i) EXPECT_EQ(watcher.states[i].step, i);
+}
+
+// numerics.max_memory counts what the run would hold (estimate_work) and, with an observer that needs one run, a copy
+// of each of the states of Ting's class kept for it (StateLog: sizeof(StepState) bytes a state, one a node of the
+// grid), before they are kept. Before, the bound counted 16 bytes a step and the copies not at all: the run with the
+// watcher ran.
+TEST(LayerObserverOfOneRun, KeepsItsStatesOnlyWithinTheMemoryBound) {
+    auto contact_case = loading();
+    const auto plain = run_case(contact_case);  // Ting's class throughout (no observer: nothing kept)
+    const double states = static_cast<double>(plain.steps + 1);
+    const double state_bytes = static_cast<double>(sizeof(StepState));
+    const double run_memory = estimate_work(contact_case, resolve_numerics(contact_case)).memory;
+    ASSERT_GT(states * state_bytes, 1000.0);
+    contact_case.numerics.max_memory = run_memory + states * state_bytes - 1000.0;
+    EXPECT_NO_THROW(run_case(contact_case));  // the run itself is within the bound
+    Watcher watcher;
+    try {
+        run_case(contact_case, {}, {&watcher});
+        ADD_FAILURE() << "a run whose kept states exceed numerics.max_memory ran";
+    } catch (const InvalidInput& error) {
+        EXPECT_EQ(error.key(), "numerics.max_memory");
+    }
+    EXPECT_TRUE(watcher.states.empty());  // refused before the run
+    contact_case.numerics.max_memory = run_memory + states * state_bytes;  // room for them all
+    const auto observed = run_case(contact_case, {}, {&watcher});
+    EXPECT_EQ(watcher.states.size(), plain.steps + 1);
+    EXPECT_EQ(observed.force, plain.force);
 }
 
 // Ends the run at step `step`; `at_once` says it needs no one run (asked at once on Ting's class, as a sweep's).
