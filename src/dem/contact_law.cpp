@@ -267,11 +267,11 @@ double ContactLaw::normal_trial(double overlap) {
 void ContactLaw::advance_normal(double overlap) {
     if (!std::isfinite(overlap)) require_finite("overlap", overlap);  // the key's string only when it throws
     double force = 0.0;
-    composed_step_ = composed_.advance(header(), elements(), overlap_, overlap, force);
+    const foundation::AttachedElements start = elements();
+    composed_step_ = composed_.advance(header(), start, overlap_, overlap, force);
     if (composed_step_) {
         state_[normal_offset_] = overlap;
         state_[normal_offset_ + 1] = force;
-        if (composed_.needs_writing(header())) composed_.write(header(), elements(), overlap);
     } else {
         // Refused before the elements are written, so that the contact's state stays as it was, bytes included.
         if (std::max(overlap_, overlap) > composed_.deepest()) {
@@ -289,7 +289,7 @@ void ContactLaw::advance_normal(double overlap) {
     normal_work_ = 0.5 * (start_normal_force_ + normal_force_) * (overlap - overlap_);
     if (tangential_idle_) return;
     if (composed_step_) {
-        composed_.line_loads(header(), elements(), overlap, std::span<double>(loads_).first(touched_));
+        composed_.line_loads(header(), start, overlap, std::span<double>(loads_).first(touched_));
         layer_.begin_step(coefficients_);
     } else {
         foundation_.line_loads(loads_);
@@ -307,7 +307,9 @@ bool ContactLaw::tangential_at_rest(PlanarVector increment) const {
 
 std::span<const double> ContactLaw::loads() const { return std::span<const double>(loads_).first(touched_); }
 
-std::span<const double> ContactLaw::contact_flags() const { return {elements().flags, touched_}; }
+std::span<const double> ContactLaw::contact_flags() const {
+    return {state_ + normal_offset_ + 3 + loads_.size(), touched_};  // the Foundation's flags (elements())
+}
 
 PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
     const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};

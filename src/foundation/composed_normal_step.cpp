@@ -37,17 +37,43 @@ __attribute__((target_clones("avx2", "default"))) bool no_event(
     const double* __restrict h, std::size_t stride, double g_inf, double common, double depth,
     const double* __restrict g, const double* __restrict weight, const double* __restrict row) {
     return with_branches(branches, [&](auto m) {
+        const double* __restrict profile = g;  // local restrict pointers, as in stress_pass
+        const double* __restrict displacement = w;
+        const double* __restrict contact_flags = flags;
+        const double* __restrict memory = h;
         std::int64_t events = 0;
         for (std::size_t i = 0; i < count; ++i) {
-            double contact = common - g_inf * g[i];
-            double free = g[i] - depth + row[0] * w[i];
+            double contact = common - g_inf * profile[i];
+            double free = profile[i] - depth + row[0] * displacement[i];
             for (std::size_t k = 0; k < m; ++k) {
-                contact += weight[k] * h[k * stride + i];
-                free += row[k + 1] * h[k * stride + i];
+                contact += weight[k] * memory[k * stride + i];
+                free += row[k + 1] * memory[k * stride + i];
             }
-            events += (flags[i] != 0.0 ? contact : free) >= 0.0 ? 0 : 1;
+            events += (contact_flags[i] != 0.0 ? contact : free) >= 0.0 ? 0 : 1;
         }
         return events == 0;
+    });
+}
+
+// Line loads 4 sigma_i (eq. 16, 22) of elements i < count: in contact G_inf w + eta rate + sum_k G_k (A_k h^_k + C_k)
+// with w = d - g_i when `composed` is 1, the written w_i when 0 (A_k = 1, C_k = 0 then); 0 out of contact.
+__attribute__((target_clones("avx2", "default"))) void stress_pass(
+    std::size_t count, std::size_t branches, double composed, double depth, double g_inf, double dashpot,
+    const double* __restrict g, const double* __restrict w, const double* __restrict flags,
+    const double* __restrict h, std::size_t stride, const double* __restrict moduli, const double* __restrict scale,
+    const double* __restrict shift, double* __restrict out) {
+    with_branches(branches, [&](auto m) {
+        // Local restrict pointers: the lambda's captures lose the parameters' (and the loop would stay scalar).
+        const double* __restrict profile = g;
+        const double* __restrict displacement = w;
+        const double* __restrict contact = flags;
+        const double* __restrict memory = h;
+        double* __restrict loads = out;
+        for (std::size_t i = 0; i < count; ++i) {
+            double stress = g_inf * (composed * (depth - profile[i]) + (1.0 - composed) * displacement[i]) + dashpot;
+            for (std::size_t k = 0; k < m; ++k) stress += moduli[k] * (scale[k] * memory[k * stride + i] + shift[k]);
+            loads[i] = contact[i] != 0.0 ? normal_stiffness_factor * stress : 0.0;
+        }
     });
 }
 
@@ -72,8 +98,11 @@ ComposedNormalStep::ComposedNormalStep(const rheology::Rheology& material, std::
       deepest_(deepest),
       profile_(profile.begin(), profile.end()),
       free_increment_(branches_ + 1, 0.0),
+      unit_(2 * branches_ + (branches_ + 1) * (branches_ + 1), 0.0),
       scratch_(branches_ + (branches_ + 1) * (branches_ + 1) + branches_ * profile.size(), 0.0) {
     for (const auto& term : material.terms()) moduli_.push_back(term.modulus);
+    std::fill(unit_.begin(), unit_.begin() + static_cast<std::ptrdiff_t>(branches_), 1.0);
+    for (std::size_t r = 0; r <= branches_; ++r) unit_[2 * branches_ + r * (branches_ + 1) + r] = 1.0;
 }
 
 std::size_t ComposedNormalStep::header_size(std::size_t branches) { return branches * branches + 8 * branches + 9; }
@@ -92,101 +121,118 @@ void ComposedNormalStep::set_step(const StepCoefficients& coefficients) {
 
 bool ComposedNormalStep::prepare(std::span<const double> header, const AttachedElements& elements,
                                  double depth_start, double depth_end, Step& step) const {
-    const std::size_t m = branches_, order = m + 1, touched = elements.touched;
+    return with_branches(branches_, [&](auto branches) {
+        return prepare_with(header, elements, depth_start, depth_end, step, branches);
+    });
+}
+
+template <class Branches>
+bool ComposedNormalStep::prepare_with(std::span<const double> header, const AttachedElements& elements,
+                                      double depth_start, double depth_end, Step& step, Branches m) const {
+    const std::size_t order = m + 1, touched = elements.touched;
     const double deepest = std::max(depth_start, depth_end);
     // The Foundation's step: an element reached for the first time (Foundation::reach), the end of the foundation.
     if ((touched < profile_.size() && profile_[touched] < deepest) || deepest > deepest_) return false;
+    // Not composed: A_k = 1, C_k = 0, P = I (unit_).
     const bool composed = header[composed_offset] != 0.0;
     const double* __restrict decay = coefficients_.decay.data();
     const double* __restrict gain = coefficients_.gain.data();
-    const double* __restrict scale = header.data() + scale_offset;
+    const double* __restrict moduli = moduli_.data();
+    const double* __restrict scale = composed ? header.data() + scale_offset : unit_.data();
     const double* __restrict shift = scale + m;
-    const double* __restrict floor = scale + 3 * m;
-    const double* __restrict map = header.data() + map_offset();
-    step.weight = scratch_.data();
-    step.next = scratch_.data() + m;
+    const double* __restrict map = composed ? header.data() + map_offset() : unit_.data() + 2 * m;
+    double* __restrict weight = scratch_.data();
+    double* __restrict next = weight + m;
+    step.weight = weight;
+    step.next = next;
     step.increment = depth_end - depth_start;
     step.rate = step.increment / coefficients_.time_step;
-    step.common = g_inf_ * depth_end + viscosity_ * step.rate;
+    double common = g_inf_ * depth_end + viscosity_ * step.rate;
     for (std::size_t k = 0; k < m; ++k) {
-        step.common += moduli_[k] * (decay[k] * (composed ? shift[k] : 0.0) + gain[k] * step.increment);
-        step.weight[k] = moduli_[k] * decay[k] * (composed ? scale[k] : 1.0);
+        common += moduli[k] * (decay[k] * shift[k] + gain[k] * step.increment);
+        weight[k] = moduli[k] * decay[k] * scale[k];
     }
+    step.common = common;
     const double contacts = header[contacts_offset];
     step.free = static_cast<double>(touched) > contacts;
-    // F P = D P + u (c^T P), D = diag(1, E_k), u = (1, B_k), c the free increment (P = I when not composed).
-    for (std::size_t j = 0; j < order; ++j) {
-        double projection = 0.0;
-        for (std::size_t l = 0; l < order; ++l) {
-            projection += free_increment_[l] * (composed ? map[l * order + j] : (l == j ? 1.0 : 0.0));
-        }
-        for (std::size_t r = 0; r < order; ++r) {
-            const double entry = composed ? map[r * order + j] : (r == j ? 1.0 : 0.0);
-            step.next[r * order + j] =
-                (r == 0 ? 1.0 : decay[r - 1]) * entry + (r == 0 ? 1.0 : gain[r - 1]) * projection;
-        }
-    }
+    bool certain = true;
     // Lower bounds of the end stresses in contact (G_k E_k A_k > 0: each is at least common - G_inf max g_i +
     // sum_k G_k E_k A_k min h^_k,i) and of the free surfaces' clearance g_i + w_i - d1 (from the extremes of w^, h^
     // by the signs of F P's first row); where one is negative, each element's (no_event).
-    bool certain = true;
     if (contacts > 0.0) {
-        double lower = step.common - g_inf_ * header[outermost_offset];
-        for (std::size_t k = 0; k < m; ++k) lower += step.weight[k] * floor[k];
+        const double* __restrict floor = header.data() + scale_offset + 3 * m;
+        double lower = common - g_inf_ * header[outermost_offset];
+        for (std::size_t k = 0; k < m; ++k) lower += weight[k] * floor[k];
         certain = lower >= 0.0;
     }
-    if (certain && step.free) {
-        const double* free_floor = map + order * order;
-        const double* free_ceiling = free_floor + order;
-        double lower = header[innermost_free_offset] - depth_end;
+    if (step.free) {
+        // F P = D P + u (c^T P), D = diag(1, E_k), u = (1, B_k), c the free increment (Foundation::begin_step).
+        const double* __restrict increment = free_increment_.data();
         for (std::size_t j = 0; j < order; ++j) {
-            lower += step.next[j] * (step.next[j] >= 0.0 ? free_floor[j] : free_ceiling[j]);
+            double projection = 0.0;
+            for (std::size_t l = 0; l < order; ++l) projection += increment[l] * map[l * order + j];
+            next[j] = map[j] + projection;
+            for (std::size_t r = 1; r < order; ++r) {
+                next[r * order + j] = decay[r - 1] * map[r * order + j] + gain[r - 1] * projection;
+            }
         }
-        certain = lower >= 0.0;
+        if (certain) {
+            const double* __restrict free_floor = header.data() + map_offset() + order * order;
+            const double* __restrict free_ceiling = free_floor + order;
+            double lower = header[innermost_free_offset] - depth_end;
+            for (std::size_t j = 0; j < order; ++j) lower += next[j] * (next[j] >= 0.0 ? free_floor[j] : free_ceiling[j]);
+            certain = lower >= 0.0;
+        }
     }
-    return certain || no_event(touched, m, elements.w, elements.flags, elements.h, elements.stride, g_inf_,
-                               step.common, depth_end, profile_.data(), step.weight, step.next);
+    return certain || no_event(touched, m, elements.w, elements.flags, elements.h, elements.stride, g_inf_, common,
+                               depth_end, profile_.data(), weight, step.free ? next : map);
 }
 
 bool ComposedNormalStep::trial_force(std::span<const double> header, const AttachedElements& elements,
                                      double depth_start, double depth_end, double& force) const {
     Step step;
     if (!prepare(header, elements, depth_start, depth_end, step)) return false;
+    force = sum_force(header, step);
+    return true;
+}
+
+double ComposedNormalStep::sum_force(std::span<const double> header, const Step& step) const {
     const double* hat_sum = header.data() + scale_offset + 2 * branches_;
     // F_N = 8 dx sum_i sigma_i (eq. 21, both halves) over the elements in contact.
     double sum = header[contacts_offset] * step.common - g_inf_ * header[profile_sum_offset];
     for (std::size_t k = 0; k < branches_; ++k) sum += step.weight[k] * hat_sum[k];
-    force = 2.0 * normal_stiffness_factor * spacing_ * sum;
-    return true;
+    return 2.0 * normal_stiffness_factor * spacing_ * sum;
 }
 
 bool ComposedNormalStep::advance(std::span<double> header, const AttachedElements& elements, double depth_start,
                                  double depth_end, double& force) const {
-    if (!trial_force(header, elements, depth_start, depth_end, force)) return false;
+    Step step;
+    if (!prepare(header, elements, depth_start, depth_end, step)) return false;
+    force = sum_force(header, step);
     const std::size_t m = branches_, order = m + 1;
     const bool composed = header[composed_offset] != 0.0;
-    const double increment = depth_end - depth_start;
     double* scale = header.data() + scale_offset;
     double* shift = scale + m;
+    double smallest = 1.0;
     for (std::size_t k = 0; k < m; ++k) {
         const double decay = coefficients_.decay[k];
         scale[k] = decay * (composed ? scale[k] : 1.0);
-        shift[k] = decay * (composed ? shift[k] : 0.0) + coefficients_.gain[k] * increment;
+        shift[k] = decay * (composed ? shift[k] : 0.0) + coefficients_.gain[k] * step.increment;
+        smallest = std::min(smallest, scale[k]);
     }
-    std::copy(scratch_.data() + m, scratch_.data() + m + order * order, header.data() + map_offset());
+    if (step.free) {
+        double largest = 0.0;
+        for (std::size_t j = 0; j < order * order; ++j) largest = std::max(largest, std::abs(step.next[j]));
+        std::copy(step.next, step.next + order * order, header.data() + map_offset());
+        smallest = std::min(smallest, largest);
+    } else if (!composed) {
+        std::copy(unit_.data() + 2 * m, unit_.data() + 2 * m + order * order, header.data() + map_offset());
+    }
     header[composed_offset] = 1.0;
-    header[rate_offset] = increment / coefficients_.time_step;
+    header[rate_offset] = step.rate;
+    // A composition factor this small would lose the written values' digits: the elements are written again.
+    if (smallest < smallest_factor) write(header, elements, depth_end);
     return true;
-}
-
-bool ComposedNormalStep::needs_writing(std::span<const double> header) const {
-    if (header[composed_offset] == 0.0) return false;
-    const std::size_t order = branches_ + 1;
-    double smallest = 1.0;
-    for (std::size_t k = 0; k < branches_; ++k) smallest = std::min(smallest, header[scale_offset + k]);
-    double largest = 0.0;
-    for (std::size_t j = 0; j < order * order; ++j) largest = std::max(largest, std::abs(header[map_offset() + j]));
-    return smallest < smallest_factor || largest < smallest_factor;
 }
 
 void ComposedNormalStep::element(std::span<const double> header, const double* w, const double* flags,
@@ -289,20 +335,11 @@ void ComposedNormalStep::summarise(std::span<double> header, const AttachedEleme
 
 void ComposedNormalStep::line_loads(std::span<const double> header, const AttachedElements& elements, double depth,
                                     std::span<double> out) const {
-    const std::size_t m = branches_;
     const bool composed = header[composed_offset] != 0.0;
-    const double* scale = header.data() + scale_offset;
-    const double* shift = scale + m;
-    const double dashpot = viscosity_ * header[rate_offset];
-    for (std::size_t i = 0; i < elements.touched; ++i) {
-        // eq. (16) in contact: G_inf w + eta rate + sum_k G_k h_k, w = d - g_i and h_k = A_k h^_k + C_k when composed.
-        double stress = g_inf_ * (composed ? depth - profile_[i] : elements.w[i]) + dashpot;
-        for (std::size_t k = 0; k < m; ++k) {
-            const double h = elements.h[k * elements.stride + i];
-            stress += moduli_[k] * (composed ? scale[k] * h + shift[k] : h);
-        }
-        out[i] = elements.flags[i] != 0.0 ? normal_stiffness_factor * stress : 0.0;
-    }
+    const double* scale = composed ? header.data() + scale_offset : unit_.data();
+    stress_pass(elements.touched, branches_, composed ? 1.0 : 0.0, depth, g_inf_, viscosity_ * header[rate_offset],
+                profile_.data(), elements.w, elements.flags, elements.h, elements.stride, moduli_.data(), scale,
+                scale + branches_, out.data());
 }
 
 }  // namespace mdr::foundation

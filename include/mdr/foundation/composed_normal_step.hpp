@@ -60,23 +60,21 @@ public:
     double deepest() const { return deepest_; }
     /// Sets the coefficients of the following steps (the free elements' map F).
     void set_step(const StepCoefficients& coefficients);
-    /// Steps from `depth_start` to `depth_end` [m] in the composed form and returns true, writing the header only,
-    /// when no element enters or leaves contact, none is reached for the first time and the depth stays within the
-    /// foundation; else returns false and changes nothing. `force` is then F_N at the end (eq. 21).
+    /// Steps from `depth_start` to `depth_end` [m] in the composed form and returns true, writing the header only
+    /// (but see write), when no element enters or leaves contact, none is reached for the first time and the depth
+    /// stays within the foundation; else returns false and changes nothing. `force` is then F_N at the end (eq. 21).
     bool advance(std::span<double> header, const AttachedElements& elements, double depth_start, double depth_end,
                  double& force) const;
     /// F_N [N] if the step went from `depth_start` to `depth_end`, when advance would take it; false otherwise.
     bool trial_force(std::span<const double> header, const AttachedElements& elements, double depth_start,
                      double depth_end, double& force) const;
     /// Writes the elements' current w and h at depth `depth` (the composed maps applied; no change when not
-    /// composed) and summarises them: the header then holds no composition. A composition factor below 1e-150
-    /// is written this way by advance's caller (needs_writing).
+    /// composed) and summarises them: the header then holds no composition. advance does this itself where a
+    /// composition factor falls below 1e-150 (the written values' digits would be lost).
     void write(std::span<double> header, const AttachedElements& elements, double depth) const;
     /// Summarises the written elements into the header (after the Foundation's step), `rate` the dashpots' rate
     /// at its end.
     void summarise(std::span<double> header, const AttachedElements& elements, double rate) const;
-    /// Whether a composition factor has become so small (< 1e-150) that the elements should be written.
-    bool needs_writing(std::span<const double> header) const;
     /// Element i's current displacement w [m] and memories h (M doubles) at depth `depth`.
     void element(std::span<const double> header, const double* w, const double* flags, const double* h,
                  std::size_t stride, std::size_t i, double depth, double& current_w, double* current_h) const;
@@ -88,6 +86,10 @@ private:
     struct Step;
     bool prepare(std::span<const double> header, const AttachedElements& elements, double depth_start,
                  double depth_end, Step& step) const;
+    template <class Branches>
+    bool prepare_with(std::span<const double> header, const AttachedElements& elements, double depth_start,
+                      double depth_end, Step& step, Branches branches) const;
+    double sum_force(std::span<const double> header, const Step& step) const;
     std::size_t map_offset() const { return 6 + 4 * branches_; }
 
     std::size_t branches_;
@@ -99,6 +101,7 @@ private:
     std::vector<double> profile_;  ///< g(x_i)
     StepCoefficients coefficients_;
     std::vector<double> free_increment_;  ///< c: a free element's dw = c . (w, h) (Foundation::begin_step)
+    std::vector<double> unit_;  ///< the maps when not composed: A_k = 1, C_k = 0 (M each), P = I
     mutable std::vector<double> scratch_;  ///< the step's weights G_k E_k A_k and map F P; written memories
 };
 
