@@ -249,9 +249,13 @@ foundation::AttachedElements ContactLaw::elements() const {
 }
 
 // The Foundation takes the step: the elements brought up to date (the header's maps applied), attached, their
-// stresses derived from the last step's rate, the step prepared.
-void ContactLaw::prepare_foundation() {
-    composed_.write(header(), elements(), overlap_);
+// stresses derived from the last step's rate, the step prepared. The header's summary is made again where the
+// Foundation's step will not be taken (`summarise`; a trial), else after it.
+void ContactLaw::prepare_foundation(bool summarise) {
+    const std::span<double> composed = header();
+    if (composed_.write(composed, elements(), overlap_) && summarise) {
+        composed_.summarise(composed, elements(), composed[foundation::ComposedNormalStep::rate_offset]);
+    }
     foundation_.attach({state_ + normal_offset_, tangential_offset_ - normal_offset_});
     foundation_.derive_stresses(header()[foundation::ComposedNormalStep::rate_offset]);
     foundation_.begin_step(coefficients_);
@@ -260,7 +264,7 @@ void ContactLaw::prepare_foundation() {
 double ContactLaw::normal_trial(double overlap) {
     double force = 0.0;
     if (composed_.trial_force(header(), elements(), overlap_, overlap, force)) return force;
-    prepare_foundation();
+    prepare_foundation(true);
     return foundation_.trial_force(overlap_, overlap);
 }
 
@@ -279,7 +283,7 @@ void ContactLaw::advance_normal(double overlap) {
                                "the contact grows beyond the law's half-width at overlap " + format_value(overlap) +
                                    "; give a larger half-width (at least sqrt(R d) for the largest overlap d)");
         }
-        prepare_foundation();
+        prepare_foundation(false);
         foundation_.advance(overlap_, overlap);
         composed_.summarise(header(), elements(), (overlap - overlap_) / coefficients_.time_step);
     }

@@ -231,7 +231,9 @@ bool ComposedNormalStep::advance(std::span<double> header, const AttachedElement
     header[composed_offset] = 1.0;
     header[rate_offset] = step.rate;
     // A composition factor this small would lose the written values' digits: the elements are written again.
-    if (smallest < smallest_factor) write(header, elements, depth_end);
+    if (smallest < smallest_factor && write(header, elements, depth_end)) {
+        summarise(header, elements, header[rate_offset]);
+    }
     return true;
 }
 
@@ -261,8 +263,9 @@ void ComposedNormalStep::element(std::span<const double> header, const double* w
     }
 }
 
-void ComposedNormalStep::write(std::span<double> header, const AttachedElements& elements, double depth) const {
-    if (header[composed_offset] != 0.0) {
+bool ComposedNormalStep::write(std::span<double> header, const AttachedElements& elements, double depth) const {
+    if (header[composed_offset] == 0.0) return false;
+    {
         const std::size_t m = branches_;
         double* fresh = scratch_.data() + m + (m + 1) * (m + 1);  // each new memory reads all the old ones
         const std::size_t n = elements.touched;
@@ -276,7 +279,8 @@ void ComposedNormalStep::write(std::span<double> header, const AttachedElements&
             for (std::size_t k = 0; k < m; ++k) elements.h[k * elements.stride + i] = fresh[i * m + k];
         }
     }
-    summarise(header, elements, header[rate_offset]);
+    header[composed_offset] = 0.0;
+    return true;
 }
 
 void ComposedNormalStep::summarise(std::span<double> header, const AttachedElements& elements, double rate) const {

@@ -151,7 +151,7 @@ private:
     static constexpr std::size_t header_offset = 6;
     std::span<double> header() const { return {state_ + header_offset, header_size_}; }
     foundation::AttachedElements elements() const;
-    void prepare_foundation();
+    void prepare_foundation(bool summarise);
     std::span<const double> loads() const;
     std::span<const double> contact_flags() const;
     std::size_t count_at(std::span<const double> state, std::size_t offset) const;

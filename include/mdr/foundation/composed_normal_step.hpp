@@ -68,10 +68,11 @@ public:
     /// F_N [N] if the step went from `depth_start` to `depth_end`, when advance would take it; false otherwise.
     bool trial_force(std::span<const double> header, const AttachedElements& elements, double depth_start,
                      double depth_end, double& force) const;
-    /// Writes the elements' current w and h at depth `depth` (the composed maps applied; no change when not
-    /// composed) and summarises them: the header then holds no composition. advance does this itself where a
-    /// composition factor falls below 1e-150 (the written values' digits would be lost).
-    void write(std::span<double> header, const AttachedElements& elements, double depth) const;
+    /// Writes the elements' current w and h at depth `depth` (the composed maps applied) and returns true when the
+    /// header holds a composition, which it then no longer does; its summary describes the elements again only
+    /// after summarise. advance does both itself where a composition factor falls below 1e-150 (the written
+    /// values' digits would be lost).
+    bool write(std::span<double> header, const AttachedElements& elements, double depth) const;
     /// Summarises the written elements into the header (after the Foundation's step), `rate` the dashpots' rate
     /// at its end.
     void summarise(std::span<double> header, const AttachedElements& elements, double rate) const;
