@@ -180,7 +180,9 @@ bool ComposedNormalStep::prepare_with(std::span<const double> header, const Atta
             const double* __restrict free_floor = header.data() + map_offset() + order * order;
             const double* __restrict free_ceiling = free_floor + order;
             double lower = header[innermost_free_offset] - depth_end;
-            for (std::size_t j = 0; j < order; ++j) lower += next[j] * (next[j] >= 0.0 ? free_floor[j] : free_ceiling[j]);
+            for (std::size_t j = 0; j < order; ++j) {
+                lower += next[j] * (next[j] >= 0.0 ? free_floor[j] : free_ceiling[j]);
+            }
             certain = lower >= 0.0;
         }
     }
