@@ -83,9 +83,9 @@ def run(law):
 
 results = {name: run(law) for name, law in LAWS.items()}
 base = results[next(iter(LAWS))][0]
-state = 12 + ELEMENTS * (3 * TERMS + 5)
+state = TERMS * TERMS + 8 * TERMS + 21 + ELEMENTS * (3 * TERMS + 4)
 unit, scale = ("instructions", 1.0) if CALLGRIND else ("ns", 1e9)
 print(f"{'law':62s} {unit + '/contact-step':>24s} {'ratio':>6s} {'contacts':>9s} {'MB/rank':>8s}")
 for name, (cost, contacts, memory) in results.items():
     print(f"{name:62s} {cost * scale:24.1f} {cost / base:6.2f} {contacts:9.0f} {memory:8.1f}")
-print(f"mdr/visco history per contact: {state} doubles = {state * 8} bytes (12 + N (3M + 5))")
+print(f"mdr/visco history per contact: {state} doubles = {state * 8} bytes (M^2 + 8M + 21 + N (3M + 4))")

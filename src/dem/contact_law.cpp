@@ -53,20 +53,26 @@ std::string entry(std::size_t index) { return "state[" + std::to_string(index) +
 }  // namespace
 
 std::size_t ContactLaw::state_size(std::size_t elements, std::size_t branches) {
-    return normal_offset + foundation::Foundation::state_size(elements, branches) +
+    return header_offset + foundation::ComposedNormalStep::header_size(branches) +
+           foundation::Foundation::attached_size(elements, branches) +
            foundation::PlanarTangentialLayer::state_size(elements, branches);
 }
 
 ContactLaw::ContactLaw(const rheology::Rheology& material, double radius, double friction, std::size_t elements,
                        double half_width, double time_step)
     : foundation_(sphere_foundation(material, radius, elements, half_width)),
+      composed_(material, foundation_.equivalent_profile(), foundation_.spacing(),
+                foundation::deepest_depth(*profile::make_sphere(radius), foundation_.half_width())),
       layer_(material, friction, half_width / static_cast<double>(elements), elements),
       material_(material),
       loads_(elements, 0.0),
       friction_(friction),
       branches_(material.terms().size()),
-      tangential_offset_(normal_offset + foundation::Foundation::state_size(elements, branches_)),
-      state_size_(state_size(elements, branches_)) {
+      header_size_(foundation::ComposedNormalStep::header_size(branches_)),
+      normal_offset_(header_offset + header_size_),
+      tangential_offset_(normal_offset_ + foundation::Foundation::attached_size(elements, branches_)),
+      state_size_(state_size(elements, branches_)),
+      memories_(branches_, 0.0) {
     require_non_negative("friction", friction);
     set_time_step(time_step);
     foundation_.reserve_events();
@@ -76,6 +82,7 @@ void ContactLaw::set_time_step(double time_step) {
     if (time_step > 0.0 && time_step == coefficients_.time_step) return;  // every step of a DEM code: cheap
     require_positive("time_step", time_step);
     foundation::fill_step_coefficients(material_, time_step, coefficients_);
+    composed_.set_step(coefficients_);
 }
 
 void ContactLaw::initialise(std::span<double> state) const {
@@ -116,12 +123,12 @@ void ContactLaw::check(std::span<const double> state) const {
         }
     }
     const std::size_t n = loads_.size();
-    const std::size_t active = count_at(state, normal_offset + 2);
+    const std::size_t active = count_at(state, normal_offset_ + 2);
     const std::size_t touched =
         count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
     // The elements are stepped in place (Foundation::attach, PlanarTangentialLayer::attach), which takes those
     // never touched to be zero, as initialise() leaves them: `blocks` blocks of n from `offset` (the Foundation's
-    // w, sigma, flags and h per branch; the layer's u_x, u_y and h_x, h_y per branch).
+    // w, flags and h per branch; the layer's u_x, u_y and h_x, h_y per branch).
     const auto require_untouched_zero = [&](std::size_t offset, std::size_t blocks, std::size_t count,
                                             const char* kind) {
         for (std::size_t block = 0; block < blocks; ++block) {
@@ -135,12 +142,33 @@ void ContactLaw::check(std::span<const double> state) const {
             }
         }
     };
-    require_untouched_zero(normal_offset + 3, 3 + branches_, active, "normal");
+    require_untouched_zero(normal_offset_ + 3, 2 + branches_, active, "normal");
     require_untouched_zero(tangential_offset_ + 3, 2 + 2 * branches_, touched, "tangential");
+    std::size_t contacts = 0;
     for (std::size_t i = 0; i < active; ++i) {
-        const std::size_t flag = normal_offset + 3 + 2 * n + i;
+        const std::size_t flag = normal_offset_ + 3 + n + i;
         if (state[flag] != 0.0 && state[flag] != 1.0) {
             throw InvalidInput(entry(flag), format_value(state[flag]), "a contact flag must be 0 or 1");
+        }
+        contacts += state[flag] != 0.0 ? 1 : 0;
+    }
+    // The composed normal step's header (foundation::ComposedNormalStep): its flag, its count of the elements in
+    // contact, and its composition factors A_k = prod E_k in (0, 1] while composed.
+    const std::size_t composed = header_offset + foundation::ComposedNormalStep::composed_offset;
+    if (state[composed] != 0.0 && state[composed] != 1.0) {
+        throw InvalidInput(entry(composed), format_value(state[composed]),
+                           "the header's flag \"composed\" must be 0 or 1");
+    }
+    const std::size_t counted = header_offset + foundation::ComposedNormalStep::contacts_offset;
+    if (state[counted] != static_cast<double>(contacts)) {
+        throw InvalidInput(entry(counted), format_value(state[counted]),
+                           "the header counts the " + std::to_string(contacts) + " elements in contact");
+    }
+    for (std::size_t k = 0; k < branches_ && state[composed] != 0.0; ++k) {
+        const std::size_t factor = header_offset + foundation::ComposedNormalStep::factors_offset + k;
+        if (!(state[factor] > 0.0 && state[factor] <= 1.0)) {
+            throw InvalidInput(entry(factor), format_value(state[factor]),
+                               "a composition factor lies in (0, 1] (a product of exp(-dt/tau_k))");
         }
     }
     const double handedness = state[handedness_offset];
@@ -176,11 +204,21 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
         }
         return sum;
     };
-    // The Foundation's state: depth, force, count, then w_i, sigma_i, flags, h_k,i; the layer's: force (2), count,
-    // then u_x, u_y, and h_x, h_y per branch (foundation.cpp, planar_tangential_layer.cpp).
-    const double* normal = state.data() + normal_offset;
+    // The Foundation's attached state: depth, force, count, then w_i, flags, h_k,i, composed (the header's maps
+    // applied, foundation::ComposedNormalStep::element); the layer's: force (2), count, then u_x, u_y, and h_x, h_y
+    // per branch (foundation.cpp, planar_tangential_layer.cpp).
+    const double* normal = state.data() + normal_offset_;
     const double* tangential = state.data() + tangential_offset_;
-    const double normal_sum = spring_sum(normal + 3, normal + 3 + 3 * n, 1, count_at(state, normal_offset + 2));
+    const std::span<const double> header = state.subspan(header_offset, header_size_);
+    double normal_sum = 0.0;
+    for (std::size_t i = 0; i < count_at(state, normal_offset_ + 2); ++i) {
+        double w = 0.0;
+        composed_.element(header, normal + 3, normal + 3 + n, normal + 3 + 2 * n, n, i, normal[0], w,
+                          memories_.data());
+        double sum = material_.equilibrium_modulus() * w * w;
+        for (std::size_t k = 0; k < terms.size(); ++k) sum += terms[k].modulus * memories_[k] * memories_[k];
+        normal_sum += sum;
+    }
     const double tangential_sum = spring_sum(
         tangential + 3, tangential + 3 + 2 * n, 2,
         count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset));
@@ -190,36 +228,77 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
 
 void ContactLaw::begin(std::span<double> state) {
     require_state_size(state);
-    count_at(state, normal_offset + 2);  // the two element counts decide where the loads below read and write
+    count_at(state, normal_offset_ + 2);  // the two element counts decide where the loads below read and write
     count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
+    state_ = state.data();
     displacement_ = {state[0], state[1]};
     frame_ = {state[frame_offset], state[frame_offset + 1], state[frame_offset + 2]};
     handedness_ = state[handedness_offset];
-    overlap_ = state[normal_offset];
-    foundation_.attach(state.subspan(normal_offset));  // the elements step in place there
-    layer_.attach(state.subspan(tangential_offset_));
-    foundation_.begin_step(coefficients_);
+    overlap_ = state[normal_offset_];
+    layer_.attach(state.subspan(tangential_offset_));  // the elements step in place there
     tangential_idle_ = friction_ == 0.0 && layer_.touched() == 0;
-    start_normal_force_ = foundation_.total_force();
+    start_normal_force_ = state[normal_offset_ + 1];
     start_tangential_force_ = layer_.total_force();
     normal_work_ = tangential_work_ = 0.0;
 }
 
-double ContactLaw::normal_trial(double overlap) const { return foundation_.trial_force(overlap_, overlap); }
+foundation::AttachedElements ContactLaw::elements() const {
+    const std::size_t n = loads_.size();
+    double* w = state_ + normal_offset_ + 3;
+    return {w, w + n, w + 2 * n, n, static_cast<std::size_t>(state_[normal_offset_ + 2])};
+}
+
+// The Foundation takes the step: the elements brought up to date (the header's maps applied), attached, their
+// stresses derived from the last step's rate, the step prepared. The header's summary is made again where the
+// Foundation's step will not be taken (`summarise`; a trial), else after it.
+void ContactLaw::prepare_foundation(bool summarise) {
+    const std::span<double> composed = header();
+    if (composed_.write(composed, elements(), overlap_) && summarise) {
+        composed_.summarise(composed, elements(), composed[foundation::ComposedNormalStep::rate_offset]);
+    }
+    foundation_.attach({state_ + normal_offset_, tangential_offset_ - normal_offset_});
+    foundation_.derive_stresses(header()[foundation::ComposedNormalStep::rate_offset]);
+    foundation_.begin_step(coefficients_);
+}
+
+double ContactLaw::normal_trial(double overlap) {
+    double force = 0.0;
+    if (composed_.trial_force(header(), elements(), overlap_, overlap, force)) return force;
+    prepare_foundation(true);
+    return foundation_.trial_force(overlap_, overlap);
+}
 
 void ContactLaw::advance_normal(double overlap) {
     if (!std::isfinite(overlap)) require_finite("overlap", overlap);  // the key's string only when it throws
-    try {
+    double force = 0.0;
+    const foundation::AttachedElements start = elements();
+    composed_step_ = composed_.advance(header(), start, overlap_, overlap, force);
+    if (composed_step_) {
+        state_[normal_offset_] = overlap;
+        state_[normal_offset_ + 1] = force;
+    } else {
+        // Refused before the elements are written, so that the contact's state stays as it was, bytes included.
+        if (std::max(overlap_, overlap) > composed_.deepest()) {
+            throw InvalidInput("half_width", format_value(foundation_.half_width()),
+                               "the contact grows beyond the law's half-width at overlap " + format_value(overlap) +
+                                   "; give a larger half-width (at least sqrt(R d) for the largest overlap d)");
+        }
+        prepare_foundation(false);
         foundation_.advance(overlap_, overlap);
-    } catch (const InvalidInput& error) {
-        throw InvalidInput("half_width", format_value(foundation_.half_width()),
-                           "the contact grows beyond the law's half-width at overlap " + format_value(overlap) +
-                               "; give a larger half-width (at least sqrt(R d) for the largest overlap d)");
+        composed_.summarise(header(), elements(), (overlap - overlap_) / coefficients_.time_step);
     }
-    normal_work_ = 0.5 * (start_normal_force_ + foundation_.total_force()) * (overlap - overlap_);
+    normal_force_ = state_[normal_offset_ + 1];
+    touched_ = static_cast<std::size_t>(state_[normal_offset_ + 2]);
+    contact_count_ = static_cast<std::size_t>(header()[foundation::ComposedNormalStep::contacts_offset]);
+    normal_work_ = 0.5 * (start_normal_force_ + normal_force_) * (overlap - overlap_);
     if (tangential_idle_) return;
-    foundation_.line_loads(loads_);
-    layer_.begin_step(coefficients_, foundation_.entries());
+    if (composed_step_) {
+        composed_.line_loads(header(), start, overlap, std::span<double>(loads_).first(touched_));
+        layer_.begin_step(coefficients_);
+    } else {
+        foundation_.line_loads(loads_);
+        layer_.begin_step(coefficients_, foundation_.entries());
+    }
 }
 
 // Whether a tangential step with this increment leaves every element as it is, unloaded: none was ever touched (u =
@@ -230,15 +309,17 @@ bool ContactLaw::tangential_at_rest(PlanarVector increment) const {
     return tangential_idle_ || (layer_.touched() == 0 && increment[0] == 0.0 && increment[1] == 0.0);
 }
 
-std::span<const double> ContactLaw::loads() const {
-    return std::span<const double>(loads_).first(foundation_.touched());
+std::span<const double> ContactLaw::loads() const { return std::span<const double>(loads_).first(touched_); }
+
+std::span<const double> ContactLaw::contact_flags() const {
+    return {state_ + normal_offset_ + 3 + loads_.size(), touched_};  // the Foundation's flags (elements())
 }
 
 PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
     const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};
     if (tangential_at_rest(increment)) return {0.0, 0.0};
     return layer_.trial_force(increment, loads(),
-                              foundation_.contact_flags().first(foundation_.touched()));
+                              contact_flags());
 }
 
 void ContactLaw::advance_tangential(PlanarVector displacement) {
@@ -251,7 +332,7 @@ void ContactLaw::advance_tangential(PlanarVector displacement) {
         displacement_ = displacement;
         return;
     }
-    layer_.advance(increment, loads(), foundation_.contact_flags().first(foundation_.touched()));
+    layer_.advance(increment, loads(), contact_flags());
     const PlanarVector end_force = layer_.total_force();
     tangential_work_ = 0.5 * ((start_tangential_force_[0] + end_force[0]) * increment[0] +
                               (start_tangential_force_[1] + end_force[1]) * increment[1]);

@@ -544,6 +544,23 @@ void Foundation::attach(std::span<double> state) {
     attached_ = state.data();
 }
 
+void Foundation::derive_stresses(double rate) {
+    const std::size_t n = size();
+    const auto& terms = material_.terms();
+    const double dashpot = material_.viscosity() * rate;
+    const double g_inf = material_.equilibrium_modulus();
+    const double* __restrict w = element_displacements();
+    const double* __restrict flags = element_flags();
+    double* __restrict sigma = stress_.data();
+    for (std::size_t i = 0; i < active_; ++i) sigma[i] = g_inf * w[i] + dashpot;
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+        const double modulus = terms[k].modulus;
+        const double* __restrict h = element_memories() + k * n;
+        for (std::size_t i = 0; i < active_; ++i) sigma[i] += modulus * h[i];
+    }
+    for (std::size_t i = 0; i < active_; ++i) sigma[i] = flags[i] != 0.0 ? sigma[i] : 0.0;
+}
+
 void Foundation::clear_beyond(std::size_t active) {
     const std::size_t n = size();
     const std::size_t branches = material_.terms().size();

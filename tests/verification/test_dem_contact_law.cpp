@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -165,13 +166,15 @@ time_step = {}
     EXPECT_FALSE(result.impact->oblique->slid_throughout);  // partial slip: the stick zone is exercised
 
     // Driven by the run's own overlap and contact-point displacement at every step (all but the last, where the
-    // contact ends inside the step), the law gives the run's forces: the same code on the same input.
+    // contact ends inside the step), the law gives the run's forces: the same rule on the same input, to round-off
+    // of the largest force (the law composes the steps in which no element enters or leaves contact).
     dem::ContactLaw law(combined, radius, friction, elements, half_width, time_step);
     std::vector<double> state(law.state_size());
     law.initialise(state);
+    const double largest_force = *std::max_element(result.force.begin(), result.force.end());
     for (std::size_t n = 1; n + 1 < result.time.size(); ++n) {
         law.advance(state, result.depth[n], {result.tangential_displacement[n], 0.0});
-        ASSERT_NEAR(law.normal_force(state), result.force[n], 1e-13 * result.force[n]) << "step " << n;
+        ASSERT_NEAR(law.normal_force(state), result.force[n], 1e-13 * largest_force) << "step " << n;
         ASSERT_NEAR(law.tangential_force(state)[0], result.tangential_force[n],
                     1e-12 * result.impact->oblique->max_tangential_force) << "step " << n;
     }

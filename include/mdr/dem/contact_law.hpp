@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "mdr/foundation/composed_normal_step.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/planar_tangential_layer.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
@@ -27,7 +28,9 @@ using SpatialVector = std::array<double, 3>;
 /// PlanarTangentialLayer (section 6) of N elements on the half-width L — and no contact's state: a contact's state
 /// is state_size() doubles in the caller's memory (a pair style's per-contact history, say), zeroed by
 /// initialise() at first touch; the elements are stepped in place there (no copy into the workspace and back),
-/// the workspace keeps only what a step derives. A step of one contact:
+/// the workspace keeps only what a step derives. While no element enters or leaves normal contact the normal step
+/// is composed in the state's header (foundation::ComposedNormalStep, O(M)): it reads and writes the header only,
+/// not the elements. A step of one contact:
 ///
 ///     law.begin(state);                      // attaches the contact's state (its header checked)
 ///     law.normal_trial(overlap);             // optional: F_N for a trial overlap (an implicit integrator's solve)
@@ -53,14 +56,15 @@ public:
     ContactLaw(const rheology::Rheology& material, double radius, double friction, std::size_t elements,
                double half_width, double time_step);
 
-    /// Doubles of one contact's state for N elements and M relaxation branches: 12 + N (3 M + 5).
+    /// Doubles of one contact's state for N elements and M relaxation branches: M^2 + 8 M + 21 + N (3 M + 4).
     static std::size_t state_size(std::size_t elements, std::size_t branches);
     /// state_size for this law's N and M.
     std::size_t state_size() const { return state_size_; }
     /// Zeroes a contact's state at first touch (state_size() doubles).
     void initialise(std::span<double> state) const;
     /// Throws mdr::InvalidInput (key `state[i]`) unless `state` is a state this law could have written: state_size()
-    /// doubles, all finite, element counts within N, contact flags 0 or 1, a unit frame axis with handedness +-1
+    /// doubles, all finite, element counts within N, contact flags 0 or 1 and as many as the header counts, the
+    /// header's flag "composed" 0 or 1 with composition factors in (0, 1], a unit frame axis with handedness +-1
     /// (or all zero before the first advance_spatial). For states read back from a file (a restart).
     void check(std::span<const double> state) const;
     /// Turns a contact's state into the same contact seen with the two bodies swapped (a code that stores a
@@ -77,8 +81,9 @@ public:
     /// written by end(). Throws
     /// mdr::InvalidInput when the state's sizes are not this law's (a corrupted state); check() inspects every value.
     void begin(std::span<double> state);
-    /// Total normal force [N] if the step ended at `overlap` [m]; the state is not changed.
-    double normal_trial(double overlap) const;
+    /// Total normal force [N] if the step ended at `overlap` [m]. The state keeps its values; where an element
+    /// would enter or leave contact its elements are brought up to date first (the composed maps applied).
+    double normal_trial(double overlap);
     /// Advances the normal problem to `overlap` [m] over the step. Throws mdr::InvalidInput (key `half_width`)
     /// when the contact would grow beyond the half-width, (key `overlap`) for an overlap that is not finite.
     void advance_normal(double overlap);
@@ -102,13 +107,13 @@ public:
                                   const SpatialVector& increment);
 
     /// Normal force F_N [N] (eq. 21) of the workspace after the last advance_normal.
-    double normal_force() const { return foundation_.total_force(); }
+    double normal_force() const { return normal_force_; }
     /// Tangential force [N] (eq. 46) of the workspace after the last advance_tangential.
     PlanarVector tangential_force() const { return layer_.total_force(); }
     /// Where inside the last normal step (0..1) the last element to leave contact left; 0 when none left.
-    double latest_exit() const { return foundation_.latest_exit(); }
+    double latest_exit() const { return composed_step_ ? 0.0 : foundation_.latest_exit(); }
     /// Number of elements in normal contact after the last advance_normal (0: the contact has ended).
-    std::size_t contact_count() const { return foundation_.contact_count(); }
+    std::size_t contact_count() const { return contact_count_; }
 
     /// Work [J] the two bodies did on the contact over the last step (after begin, advance_normal and
     /// advance_tangential): the trapezoidal rule, (F_N0 + F_N1) / 2 (d1 - d0) + (F_t0 + F_t1) / 2 . (u1 - u0), with
@@ -123,7 +128,7 @@ public:
     double stored_energy(std::span<const double> state) const;
 
     /// Normal force [N] stored in a contact's state (after end()).
-    double normal_force(std::span<const double> state) const { return state[normal_offset + 1]; }
+    double normal_force(std::span<const double> state) const { return state[normal_offset_ + 1]; }
     /// Tangential force [N] stored in a contact's state.
     PlanarVector tangential_force(std::span<const double> state) const {
         return {state[tangential_offset_], state[tangential_offset_ + 1]};
@@ -132,23 +137,30 @@ public:
     /// `normal` (that of its last advance_spatial); zero before the first.
     SpatialVector tangential_force(std::span<const double> state, const SpatialVector& normal) const;
     /// Overlap [m] stored in a contact's state.
-    double overlap(std::span<const double> state) const { return state[normal_offset]; }
+    double overlap(std::span<const double> state) const { return state[normal_offset_]; }
     /// Tangential displacement [m] stored in a contact's state.
     PlanarVector displacement(std::span<const double> state) const { return {state[0], state[1]}; }
 
 private:
     // The state: [0, 2) the tangential displacement, [2, 5) the frame's first axis, [5] its handedness (e2 =
-    // handedness normal x e1; 0 before the first advance_spatial), then the Foundation's and the layer's states.
+    // handedness normal x e1; 0 before the first advance_spatial), then the composed normal step's header (first, so
+    // that a step without an entry or exit touches the state's first cache lines only), the Foundation's attached
+    // state and the layer's.
     static constexpr std::size_t frame_offset = 2;
     static constexpr std::size_t handedness_offset = 5;
-    static constexpr std::size_t normal_offset = 6;
+    static constexpr std::size_t header_offset = 6;
+    std::span<double> header() const { return {state_ + header_offset, header_size_}; }
+    foundation::AttachedElements elements() const;
+    void prepare_foundation(bool summarise);
     std::span<const double> loads() const;
+    std::span<const double> contact_flags() const;
     std::size_t count_at(std::span<const double> state, std::size_t offset) const;
     bool tangential_at_rest(PlanarVector increment) const;
     void skip_resting_layer(PlanarVector displacement);
     void require_state_size(std::span<const double> state) const;
 
     foundation::Foundation foundation_;
+    foundation::ComposedNormalStep composed_;
     foundation::PlanarTangentialLayer layer_;
     foundation::StepCoefficients coefficients_;
     rheology::Rheology material_;
@@ -156,12 +168,20 @@ private:
     double friction_;
     bool tangential_idle_ = false;  ///< the layer stays at rest this step (tangential_at_rest): nothing to step
     std::size_t branches_;
+    std::size_t header_size_;
+    std::size_t normal_offset_;  ///< the Foundation's attached state: depth, force, touched count, the elements
     std::size_t tangential_offset_;
     std::size_t state_size_;
     PlanarVector displacement_{0.0, 0.0};  ///< tangential displacement at the start of the step
     SpatialVector frame_{0.0, 0.0, 0.0};   ///< the frame's first axis
     double handedness_ = 0.0;
     double overlap_ = 0.0;  ///< overlap at the start of the step
+    double* state_ = nullptr;  ///< the contact's state from begin() on
+    bool composed_step_ = false;  ///< the last normal step was composed (no entry or exit)
+    double normal_force_ = 0.0;   ///< F_N after the last advance_normal
+    std::size_t contact_count_ = 0;  ///< elements in contact after the last advance_normal
+    std::size_t touched_ = 0;        ///< elements touched after the last advance_normal
+    mutable std::vector<double> memories_;  ///< one element's h_k (stored_energy)
     double start_normal_force_ = 0.0;           ///< F_N at the start of the step
     PlanarVector start_tangential_force_{0.0, 0.0};  ///< F_t at the start of the step
     double normal_work_ = 0.0;      ///< the normal force's work over the step

@@ -145,12 +145,22 @@ public:
     /// Replaces the state with one written by save_state (or zeros: no contact yet) by a foundation of the same
     /// size and material. Call begin_step after it.
     void load_state(std::span<const double> in);
-    /// Steps the state in place in `state` (state_size doubles written by this foundation's steps, save_state or
-    /// zeros; zero beyond the touched elements; the caller has checked the touched count) instead of the
-    /// foundation's own buffers: every advance reads and writes the elements there, and the depth, force, touched
-    /// count and contact flags (0 or 1), until the next attach or load_state. No copy in or out. Call begin_step
-    /// after it; `state` must outlive the steps.
+    /// Doubles of a state stepped in place (attach) for `count` elements and `branches` relaxation branches: 3 +
+    /// count (branches + 2): depth, force, touched elements; w_i, contact flag, h_{k,i} (no stresses: derive_stresses).
+    static std::size_t attached_size(std::size_t count, std::size_t branches) { return 3 + count * (branches + 2); }
+    /// Steps the state in place in `state` (attached_size doubles written by this foundation's steps or zeros; zero
+    /// beyond the touched elements; the caller has checked the touched count) instead of the foundation's own
+    /// buffers: every advance reads and writes the elements' displacements, contact flags (0 or 1) and memories
+    /// there, and the depth, force and touched count, until the next attach or load_state. No copy in or out. The
+    /// state keeps no stresses: they stay in the foundation's own buffer (derive_stresses). Call begin_step after it;
+    /// `state` must outlive the steps.
     void attach(std::span<double> state);
+    /// Sets the attached elements' stresses at the start of the step from their state (eq. 16): G_inf w + eta rate +
+    /// sum_k G_k h_k in contact, 0 out of it, `rate` [m/s] the dashpots' rate at the end of the last step (its
+    /// secant rate for a DEM overlap). Only an exit's location inside the step reads them (equal to round-off to
+    /// the stresses the last step left; an entering element's stress clamped at zero there is its raw value here,
+    /// which locates an exit at the step's start either way).
+    void derive_stresses(double rate);
     /// Reserves room for an event at every element, so that no later step allocates.
     void reserve_events();
     /// Line loads q_z,i [N/m] of the first out.size() <= size() elements into `out`, without allocating.
@@ -177,20 +187,20 @@ private:
     double split_stress(std::size_t i, double w0, const Outcome& outcome, double depth_start, double depth_end,
                         double& w, double* h, double* own_rate = nullptr) const;
     void clear_beyond(std::size_t active);
-    // w_i, sigma_i and h_{k,i}: the attached state's, else the foundation's own (found per call, so that a copy
-    // never points into the original's buffers).
+    // w_i, the flags and h_{k,i}: the attached state's, else the foundation's own (found per call, so that a copy
+    // never points into the original's buffers); sigma_i always the foundation's own.
     double* element_displacements() { return attached_ != nullptr ? attached_ + 3 : displacement_.data(); }
     const double* element_displacements() const {
         return attached_ != nullptr ? attached_ + 3 : displacement_.data();
     }
-    double* element_stresses() { return attached_ != nullptr ? attached_ + 3 + size() : stress_.data(); }
-    const double* element_stresses() const { return attached_ != nullptr ? attached_ + 3 + size() : stress_.data(); }
-    double* element_memories() { return attached_ != nullptr ? attached_ + 3 + 3 * size() : memory_.data(); }
+    double* element_stresses() { return stress_.data(); }
+    const double* element_stresses() const { return stress_.data(); }
+    double* element_memories() { return attached_ != nullptr ? attached_ + 3 + 2 * size() : memory_.data(); }
     const double* element_memories() const {
-        return attached_ != nullptr ? attached_ + 3 + 3 * size() : memory_.data();
+        return attached_ != nullptr ? attached_ + 3 + 2 * size() : memory_.data();
     }
-    double* element_flags() { return attached_ != nullptr ? attached_ + 3 + 2 * size() : flags_.data(); }
-    const double* element_flags() const { return attached_ != nullptr ? attached_ + 3 + 2 * size() : flags_.data(); }
+    double* element_flags() { return attached_ != nullptr ? attached_ + 3 + size() : flags_.data(); }
+    const double* element_flags() const { return attached_ != nullptr ? attached_ + 3 + size() : flags_.data(); }
     double spring_force(double w, const double* h) const;
     double free_rate(double w, const double* h) const;
     void free_substep(double time_step, double& w, double* h) const;
@@ -203,7 +213,7 @@ private:
     double spacing_;
     std::vector<double> equivalent_;           ///< g(x_i)
     std::vector<double> displacement_;         ///< w_i when no state is attached
-    std::vector<double> stress_;               ///< sigma_i at the end of the last step, when no state is attached
+    std::vector<double> stress_;               ///< sigma_i at the end of the last step
     std::vector<double> memory_;               ///< h_{k,i}, branch-major: memory_[k * n + i], when none is attached
     double* attached_ = nullptr;               ///< the attached state (see attach), else null
     std::vector<double> flags_;                ///< contact flags when no state is attached

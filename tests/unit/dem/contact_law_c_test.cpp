@@ -78,15 +78,18 @@ TEST(DemContactLawC, BadInputIsACodeAndAMessage) {
               MDR_INVALID_INPUT);
     EXPECT_EQ(std::string(message).rfind("half_width = ", 0), 0u) << message;
     EXPECT_EQ(state, before);
-    state[8] = 1e12;  // a corrupted element count
+    // A corrupted element count: the Foundation's, after the law's 6 doubles and the composed step's header (M = 1).
+    const std::size_t count = 6 + mdr::foundation::ComposedNormalStep::header_size(1) + 2;
+    const std::string count_key = "state[" + std::to_string(count) + "] = ";
+    state[count] = 1e12;
     EXPECT_EQ(mdr_contact_law_check(law, state.data(), state.size(), message, sizeof message), MDR_INVALID_INPUT);
-    EXPECT_EQ(std::string(message).rfind("state[8] = ", 0), 0u) << message;
+    EXPECT_EQ(std::string(message).rfind(count_key, 0), 0u) << message;
     EXPECT_EQ(mdr_contact_law_step(law, state.data(), 2e-6, 1e-5, normal, increment, force, nullptr, 0),
               MDR_INVALID_INPUT);
     // The stored energy of a corrupted state: a code and a message, not an exception through the C interface.
     double energy = -1.0;
     EXPECT_EQ(mdr_contact_law_stored_energy(law, state.data(), &energy, message, sizeof message), MDR_INVALID_INPUT);
-    EXPECT_EQ(std::string(message).rfind("state[8] = ", 0), 0u) << message;
+    EXPECT_EQ(std::string(message).rfind(count_key, 0), 0u) << message;
     EXPECT_EQ(energy, -1.0);
     mdr_contact_law_destroy(law);
 }

@@ -44,6 +44,13 @@ void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 namespace mdr::dem {
 namespace {
 
+// The state's layout for make_law's N = 50, M = 2 (contact_law.hpp): the law's 6 doubles, the composed normal step's
+// header, the Foundation's depth, force and touched count, then its w, flags and h (50 (2 + 2)), then the layer's.
+constexpr std::size_t law_header = 6;
+const std::size_t normal_start = law_header + foundation::ComposedNormalStep::header_size(2);
+const std::size_t normal_touched = normal_start + 2;
+const std::size_t layer_start = normal_start + 3 + 50 * 4;
+
 ContactLaw make_law() {
     return ContactLaw(rheology::Rheology::prony(1e6, {{3e6, 1e-3}, {1e6, 3e-5}}), 0.005, 0.3, 50, 1e-3, 2e-6);
 }
@@ -89,7 +96,7 @@ TEST(DemContactLaw, AFrictionlessOrHeadOnContactLeavesItsTangentialElementsUnloa
     std::vector<double> sliding(frictionless.state_size()), head_on(rough.state_size());
     frictionless.initialise(sliding);
     rough.initialise(head_on);
-    const std::size_t layer_touched = 6 + (3 + 50 * 5) + 2;  // the Foundation's state, then the layer's force (2)
+    const std::size_t layer_touched = layer_start + 2;  // the layer's force (2), then its touched count
     for (int n = 1; n < 600; ++n) {
         frictionless.advance(sliding, overlap_at(n, 1.0), {displacement_at(n, 1.0), displacement_at(n, 0.5)});
         rough.advance(head_on, overlap_at(n, 1.0), {0.0, 0.0});
@@ -101,11 +108,11 @@ TEST(DemContactLaw, AFrictionlessOrHeadOnContactLeavesItsTangentialElementsUnloa
         ASSERT_EQ(head_on[layer_touched], 0.0) << "step " << n;
         ASSERT_EQ(frictionless.step_work(), rough.step_work()) << "step " << n;
     }
-    EXPECT_GT(sliding[8], 10.0);  // the contact grew over more than ten elements
+    EXPECT_GT(sliding[normal_touched], 10.0);  // the contact grew over more than ten elements
     EXPECT_NO_THROW(frictionless.check(sliding));
     // Once the head-on contact slides, its layer steps the elements the Foundation touched.
     rough.advance(head_on, overlap_at(300, 1.0), {1e-7, 0.0});
-    EXPECT_EQ(head_on[layer_touched], head_on[8]);
+    EXPECT_EQ(head_on[layer_touched], head_on[normal_touched]);
     EXPECT_NE(rough.tangential_force(head_on)[0], 0.0);
 }
 
@@ -129,7 +136,10 @@ TEST(DemContactLaw, AStepAllocatesNothing) {
 #endif
 
 TEST(DemContactLaw, StateSizeAndBadParameters) {
-    EXPECT_EQ(ContactLaw::state_size(20, 1), 12u + 20u * 8u);  // 12 + N (3 M + 5)
+    // M^2 + 8 M + 21 + N (3 M + 4): at N = 20, M = 1 no more than the 12 + N (3 M + 5) = 172 before the composed
+    // normal step's header (18 doubles) took the place of the element stresses (20).
+    EXPECT_EQ(ContactLaw::state_size(20, 1), 30u + 20u * 7u);
+    EXPECT_LE(ContactLaw::state_size(20, 1), 172u);
     EXPECT_EQ(make_law().state_size(), ContactLaw::state_size(50, 2));
     const auto material = rheology::Rheology::standard(1e6, 3e6, 1e-3);
     EXPECT_THROW(ContactLaw(material, 0.0, 0.3, 20, 1e-3, 1e-6), InvalidInput);
@@ -155,27 +165,37 @@ TEST(DemContactLaw, ACorruptedStateRaisesNamingTheEntry) {
     law.initialise(state);
     for (int n = 1; n < 100; ++n) law.advance(state, overlap_at(n, 1.0), {displacement_at(n, 1.0), 0.0});
     EXPECT_NO_THROW(law.check(state));
-    // The Foundation's element count (state[8]) and the layer's are indices: out of range they raise in begin()
-    // (they used to read and write past the workspace).
+    // The Foundation's element count and the layer's are indices: out of range they raise in begin() (they used to
+    // read and write past the workspace).
+    const std::string count_key = "state[" + std::to_string(normal_touched) + "]";
     for (const double bad : {1e9, -1.0, 2.5, std::nan("")}) {
         auto corrupted = state;
-        corrupted[8] = bad;
-        EXPECT_EQ(thrown_key([&] { law.begin(corrupted); }), "state[8]") << bad;
-        EXPECT_EQ(thrown_key([&] { law.check(corrupted); }), "state[8]") << bad;
+        corrupted[normal_touched] = bad;
+        EXPECT_EQ(thrown_key([&] { law.begin(corrupted); }), count_key) << bad;
+        EXPECT_EQ(thrown_key([&] { law.check(corrupted); }), count_key) << bad;
     }
     // The elements are stepped in place in the state and those never touched are taken as zero: a state
-    // with a value there is not one this law wrote (state_size: 6 + the Foundation's 3 + 50 (2 + 3) doubles, then
-    // the layer's header of 3 and u_x; element 49 was never touched by this collision's contact radius).
-    const std::size_t untouched_u_x = 6 + (3 + 50 * 5) + 3 + 49;
-    ASSERT_EQ(state[6 + (3 + 50 * 5) + 2], state[8]);  // the layer touched what the Foundation did
-    ASSERT_LT(state[8], 49.0);
+    // with a value there is not one this law wrote (the layer's header of 3 and u_x; element 49 was never touched
+    // by this collision's contact radius).
+    const std::size_t untouched_u_x = layer_start + 3 + 49;
+    ASSERT_EQ(state[layer_start + 2], state[normal_touched]);  // the layer touched what the Foundation did
+    ASSERT_LT(state[normal_touched], 49.0);
     auto stray = state;
     stray[untouched_u_x] = 1e-9;
     EXPECT_EQ(thrown_key([&] { law.check(stray); }), "state[" + std::to_string(untouched_u_x) + "]");
-    // The same for the Foundation's elements: w of element 49 at 6 + 3 + 49.
+    // The same for the Foundation's elements: w of element 49.
     auto stray_normal = state;
-    stray_normal[6 + 3 + 49] = 1e-9;
-    EXPECT_EQ(thrown_key([&] { law.check(stray_normal); }), "state[58]");
+    stray_normal[normal_start + 3 + 49] = 1e-9;
+    EXPECT_EQ(thrown_key([&] { law.check(stray_normal); }), "state[" + std::to_string(normal_start + 3 + 49) + "]");
+    // The header's count of the elements in contact and its flag "composed".
+    auto miscounted = state;
+    miscounted[law_header + foundation::ComposedNormalStep::contacts_offset] += 1.0;
+    EXPECT_EQ(thrown_key([&] { law.check(miscounted); }),
+              "state[" + std::to_string(law_header + foundation::ComposedNormalStep::contacts_offset) + "]");
+    auto half_composed = state;
+    half_composed[law_header + foundation::ComposedNormalStep::composed_offset] = 0.5;
+    EXPECT_EQ(thrown_key([&] { law.check(half_composed); }),
+              "state[" + std::to_string(law_header + foundation::ComposedNormalStep::composed_offset) + "]");
     auto short_state = state;
     short_state.pop_back();
     EXPECT_EQ(thrown_key([&] { law.begin(short_state); }), "state");

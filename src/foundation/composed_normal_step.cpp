@@ -1,0 +1,351 @@
+#include "mdr/foundation/composed_normal_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+
+namespace mdr::foundation {
+namespace {
+
+constexpr double normal_stiffness_factor = 4.0;  // k_z = 4 G dx, eq. (11)
+constexpr double smallest_factor = 1e-150;       // a composition factor below: the elements are written
+
+// Header entries (see the class's comment).
+constexpr std::size_t profile_sum_offset = 3, outermost_offset = 4, innermost_free_offset = 5;
+constexpr std::size_t scale_offset = ComposedNormalStep::factors_offset;
+
+// Calls `kernel` with the branch count as a constant for M = 1, 2, 3 (its loops over the branches unrolled, the loop
+// over the elements vectorised), else as a number.
+template <class Kernel>
+inline __attribute__((always_inline)) auto with_branches(std::size_t branches, Kernel kernel) {
+    switch (branches) {
+        case 1: return kernel(std::integral_constant<std::size_t, 1>{});
+        case 2: return kernel(std::integral_constant<std::size_t, 2>{});
+        case 3: return kernel(std::integral_constant<std::size_t, 3>{});
+        default: return kernel(branches);
+    }
+}
+
+// Whether no element i < count enters or leaves contact over the step: one in contact keeps a compressive end
+// stress, common - G_inf g_i + sum_k weight_k h^_k,i >= 0 (eq. 20), a free one stays clear of the indenter,
+// g_i + row_0 w^_i + sum_k row_(k+1) h^_k,i >= depth (eq. 14). Read only; an integer count, so that it vectorises
+// (GCC leaves a floating-point min reduction scalar).
+__attribute__((target_clones("avx2", "default"))) bool no_event(
+    std::size_t count, std::size_t branches, const double* __restrict w, const double* __restrict flags,
+    const double* __restrict h, std::size_t stride, double g_inf, double common, double depth,
+    const double* __restrict g, const double* __restrict weight, const double* __restrict row) {
+    return with_branches(branches, [&](auto m) {
+        const double* __restrict profile = g;  // local restrict pointers, as in stress_pass
+        const double* __restrict displacement = w;
+        const double* __restrict contact_flags = flags;
+        const double* __restrict memory = h;
+        std::int64_t events = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            double contact = common - g_inf * profile[i];
+            double free = profile[i] - depth + row[0] * displacement[i];
+            for (std::size_t k = 0; k < m; ++k) {
+                contact += weight[k] * memory[k * stride + i];
+                free += row[k + 1] * memory[k * stride + i];
+            }
+            events += (contact_flags[i] != 0.0 ? contact : free) >= 0.0 ? 0 : 1;
+        }
+        return events == 0;
+    });
+}
+
+// Line loads 4 sigma_i (eq. 16, 22) of elements i < count: in contact G_inf w + eta rate + sum_k G_k (A_k h^_k + C_k)
+// with w = d - g_i when `composed` is 1, the written w_i when 0 (A_k = 1, C_k = 0 then); 0 out of contact.
+__attribute__((target_clones("avx2", "default"))) void stress_pass(
+    std::size_t count, std::size_t branches, double composed, double depth, double g_inf, double dashpot,
+    const double* __restrict g, const double* __restrict w, const double* __restrict flags,
+    const double* __restrict h, std::size_t stride, const double* __restrict moduli, const double* __restrict scale,
+    const double* __restrict shift, double* __restrict out) {
+    with_branches(branches, [&](auto m) {
+        // Local restrict pointers: the lambda's captures lose the parameters' (and the loop would stay scalar).
+        const double* __restrict profile = g;
+        const double* __restrict displacement = w;
+        const double* __restrict contact = flags;
+        const double* __restrict memory = h;
+        double* __restrict loads = out;
+        for (std::size_t i = 0; i < count; ++i) {
+            double stress = g_inf * (composed * (depth - profile[i]) + (1.0 - composed) * displacement[i]) + dashpot;
+            for (std::size_t k = 0; k < m; ++k) stress += moduli[k] * (scale[k] * memory[k * stride + i] + shift[k]);
+            loads[i] = contact[i] != 0.0 ? normal_stiffness_factor * stress : 0.0;
+        }
+    });
+}
+
+}  // namespace
+
+// What a step in the composed form derives before it is taken (prepare).
+struct ComposedNormalStep::Step {
+    double common = 0.0;     ///< the end stress common to the elements in contact, eq. (16): G_inf d1 + eta rate + ...
+    double increment = 0.0;  ///< d1 - d0
+    double rate = 0.0;       ///< the dashpots' (secant) rate
+    bool free = false;       ///< some touched element is out of contact
+    double* weight = nullptr;  ///< G_k E_k A_k (M)
+    double* next = nullptr;    ///< F P, row-major (order M + 1)
+};
+
+ComposedNormalStep::ComposedNormalStep(const rheology::Rheology& material, std::span<const double> profile,
+                                       double spacing, double deepest)
+    : branches_(material.terms().size()),
+      g_inf_(material.equilibrium_modulus()),
+      viscosity_(material.viscosity()),
+      spacing_(spacing),
+      deepest_(deepest),
+      profile_(profile.begin(), profile.end()),
+      free_increment_(branches_ + 1, 0.0),
+      unit_(2 * branches_ + (branches_ + 1) * (branches_ + 1), 0.0),
+      scratch_(branches_ + (branches_ + 1) * (branches_ + 1) + branches_ * profile.size(), 0.0) {
+    for (const auto& term : material.terms()) moduli_.push_back(term.modulus);
+    std::fill(unit_.begin(), unit_.begin() + static_cast<std::ptrdiff_t>(branches_), 1.0);
+    for (std::size_t r = 0; r <= branches_; ++r) unit_[2 * branches_ + r * (branches_ + 1) + r] = 1.0;
+}
+
+std::size_t ComposedNormalStep::header_size(std::size_t branches) { return branches * branches + 8 * branches + 9; }
+
+void ComposedNormalStep::set_step(const StepCoefficients& coefficients) {
+    copy_step_coefficients(coefficients, coefficients_);
+    // A free element's dw = -(relaxed + [eta > 0] (G_inf w + sum_k G_k h_k)) / K_free with relaxed = G_inf w +
+    // sum_k G_k E_k h_k and K_free = G_inf + sum_k G_k B_k + 2 eta / dt (Foundation::begin_step, plain_step).
+    const double dashpot = viscosity_ > 0.0 ? 1.0 : 0.0;
+    const double free_stiffness = coefficients.stiffness + viscosity_ / coefficients.time_step;
+    free_increment_[0] = -g_inf_ * (1.0 + dashpot) / free_stiffness;
+    for (std::size_t k = 0; k < branches_; ++k) {
+        free_increment_[k + 1] = -moduli_[k] * (coefficients.decay[k] + dashpot) / free_stiffness;
+    }
+}
+
+bool ComposedNormalStep::prepare(std::span<const double> header, const AttachedElements& elements,
+                                 double depth_start, double depth_end, Step& step) const {
+    return with_branches(branches_, [&](auto branches) {
+        return prepare_with(header, elements, depth_start, depth_end, step, branches);
+    });
+}
+
+template <class Branches>
+bool ComposedNormalStep::prepare_with(std::span<const double> header, const AttachedElements& elements,
+                                      double depth_start, double depth_end, Step& step, Branches m) const {
+    const std::size_t order = m + 1, touched = elements.touched;
+    const double deepest = std::max(depth_start, depth_end);
+    // The Foundation's step: an element reached for the first time (Foundation::reach), the end of the foundation.
+    if ((touched < profile_.size() && profile_[touched] < deepest) || deepest > deepest_) return false;
+    // Not composed: A_k = 1, C_k = 0, P = I (unit_).
+    const bool composed = header[composed_offset] != 0.0;
+    const double* __restrict decay = coefficients_.decay.data();
+    const double* __restrict gain = coefficients_.gain.data();
+    const double* __restrict moduli = moduli_.data();
+    const double* __restrict scale = composed ? header.data() + scale_offset : unit_.data();
+    const double* __restrict shift = scale + m;
+    const double* __restrict map = composed ? header.data() + map_offset() : unit_.data() + 2 * m;
+    double* __restrict weight = scratch_.data();
+    double* __restrict next = weight + m;
+    step.weight = weight;
+    step.next = next;
+    step.increment = depth_end - depth_start;
+    step.rate = step.increment / coefficients_.time_step;
+    double common = g_inf_ * depth_end + viscosity_ * step.rate;
+    for (std::size_t k = 0; k < m; ++k) {
+        common += moduli[k] * (decay[k] * shift[k] + gain[k] * step.increment);
+        weight[k] = moduli[k] * decay[k] * scale[k];
+    }
+    step.common = common;
+    const double contacts = header[contacts_offset];
+    step.free = static_cast<double>(touched) > contacts;
+    bool certain = true;
+    // Lower bounds of the end stresses in contact (G_k E_k A_k > 0: each is at least common - G_inf max g_i +
+    // sum_k G_k E_k A_k min h^_k,i) and of the free surfaces' clearance g_i + w_i - d1 (from the extremes of w^, h^
+    // by the signs of F P's first row); where one is negative, each element's (no_event).
+    if (contacts > 0.0) {
+        const double* __restrict floor = header.data() + scale_offset + 3 * m;
+        double lower = common - g_inf_ * header[outermost_offset];
+        for (std::size_t k = 0; k < m; ++k) lower += weight[k] * floor[k];
+        certain = lower >= 0.0;
+    }
+    if (step.free) {
+        // F P = D P + u (c^T P), D = diag(1, E_k), u = (1, B_k), c the free increment (Foundation::begin_step).
+        const double* __restrict increment = free_increment_.data();
+        for (std::size_t j = 0; j < order; ++j) {
+            double projection = 0.0;
+            for (std::size_t l = 0; l < order; ++l) projection += increment[l] * map[l * order + j];
+            next[j] = map[j] + projection;
+            for (std::size_t r = 1; r < order; ++r) {
+                next[r * order + j] = decay[r - 1] * map[r * order + j] + gain[r - 1] * projection;
+            }
+        }
+        if (certain) {
+            const double* __restrict free_floor = header.data() + map_offset() + order * order;
+            const double* __restrict free_ceiling = free_floor + order;
+            double lower = header[innermost_free_offset] - depth_end;
+            for (std::size_t j = 0; j < order; ++j) {
+                lower += next[j] * (next[j] >= 0.0 ? free_floor[j] : free_ceiling[j]);
+            }
+            certain = lower >= 0.0;
+        }
+    }
+    return certain || no_event(touched, m, elements.w, elements.flags, elements.h, elements.stride, g_inf_, common,
+                               depth_end, profile_.data(), weight, step.free ? next : map);
+}
+
+bool ComposedNormalStep::trial_force(std::span<const double> header, const AttachedElements& elements,
+                                     double depth_start, double depth_end, double& force) const {
+    Step step;
+    if (!prepare(header, elements, depth_start, depth_end, step)) return false;
+    force = sum_force(header, step);
+    return true;
+}
+
+double ComposedNormalStep::sum_force(std::span<const double> header, const Step& step) const {
+    const double* hat_sum = header.data() + scale_offset + 2 * branches_;
+    // F_N = 8 dx sum_i sigma_i (eq. 21, both halves) over the elements in contact.
+    double sum = header[contacts_offset] * step.common - g_inf_ * header[profile_sum_offset];
+    for (std::size_t k = 0; k < branches_; ++k) sum += step.weight[k] * hat_sum[k];
+    return 2.0 * normal_stiffness_factor * spacing_ * sum;
+}
+
+bool ComposedNormalStep::advance(std::span<double> header, const AttachedElements& elements, double depth_start,
+                                 double depth_end, double& force) const {
+    Step step;
+    if (!prepare(header, elements, depth_start, depth_end, step)) return false;
+    force = sum_force(header, step);
+    const std::size_t m = branches_, order = m + 1;
+    const bool composed = header[composed_offset] != 0.0;
+    double* scale = header.data() + scale_offset;
+    double* shift = scale + m;
+    double smallest = 1.0;
+    for (std::size_t k = 0; k < m; ++k) {
+        const double decay = coefficients_.decay[k];
+        scale[k] = decay * (composed ? scale[k] : 1.0);
+        shift[k] = decay * (composed ? shift[k] : 0.0) + coefficients_.gain[k] * step.increment;
+        smallest = std::min(smallest, scale[k]);
+    }
+    if (step.free) {
+        double largest = 0.0;
+        for (std::size_t j = 0; j < order * order; ++j) largest = std::max(largest, std::abs(step.next[j]));
+        std::copy(step.next, step.next + order * order, header.data() + map_offset());
+        smallest = std::min(smallest, largest);
+    } else if (!composed) {
+        std::copy(unit_.data() + 2 * m, unit_.data() + 2 * m + order * order, header.data() + map_offset());
+    }
+    header[composed_offset] = 1.0;
+    header[rate_offset] = step.rate;
+    // A composition factor this small would lose the written values' digits: the elements are written again.
+    if (smallest < smallest_factor && write(header, elements, depth_end)) {
+        summarise(header, elements, header[rate_offset]);
+    }
+    return true;
+}
+
+void ComposedNormalStep::element(std::span<const double> header, const double* w, const double* flags,
+                                 const double* h, std::size_t stride, std::size_t i, double depth, double& current_w,
+                                 double* current_h) const {
+    const std::size_t m = branches_, order = m + 1;
+    if (header[composed_offset] == 0.0) {
+        current_w = w[i];
+        for (std::size_t k = 0; k < m; ++k) current_h[k] = h[k * stride + i];
+        return;
+    }
+    const double* scale = header.data() + scale_offset;
+    const double* shift = scale + m;
+    const double* map = header.data() + map_offset();
+    if (flags[i] != 0.0) {
+        current_w = depth - profile_[i];
+        for (std::size_t k = 0; k < m; ++k) current_h[k] = scale[k] * h[k * stride + i] + shift[k];
+        return;
+    }
+    const auto written = [&](std::size_t j) { return j == 0 ? w[i] : h[(j - 1) * stride + i]; };
+    current_w = 0.0;
+    for (std::size_t j = 0; j < order; ++j) current_w += map[j] * written(j);
+    for (std::size_t k = 0; k < m; ++k) {
+        current_h[k] = 0.0;
+        for (std::size_t j = 0; j < order; ++j) current_h[k] += map[(k + 1) * order + j] * written(j);
+    }
+}
+
+bool ComposedNormalStep::write(std::span<double> header, const AttachedElements& elements, double depth) const {
+    if (header[composed_offset] == 0.0) return false;
+    {
+        const std::size_t m = branches_;
+        double* fresh = scratch_.data() + m + (m + 1) * (m + 1);  // each new memory reads all the old ones
+        const std::size_t n = elements.touched;
+        double current_w = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            element(header, elements.w, elements.flags, elements.h, elements.stride, i, depth, current_w,
+                    fresh + i * m);
+            elements.w[i] = current_w;
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            for (std::size_t k = 0; k < m; ++k) elements.h[k * elements.stride + i] = fresh[i * m + k];
+        }
+    }
+    header[composed_offset] = 0.0;
+    return true;
+}
+
+void ComposedNormalStep::summarise(std::span<double> header, const AttachedElements& elements, double rate) const {
+    const std::size_t m = branches_, order = m + 1;
+    constexpr double infinity = std::numeric_limits<double>::infinity();
+    double* scale = header.data() + scale_offset;
+    double* shift = scale + m;
+    double* hat_sum = scale + 2 * m;
+    double* hat_floor = scale + 3 * m;
+    double* map = header.data() + map_offset();
+    double* free_floor = map + order * order;
+    double* free_ceiling = free_floor + order;
+    double contacts = 0.0, profile_sum = 0.0, outermost = 0.0, innermost_free = infinity;
+    std::fill(hat_sum, hat_sum + m, 0.0);
+    std::fill(hat_floor, hat_floor + m, infinity);
+    std::fill(free_floor, free_floor + order, infinity);
+    std::fill(free_ceiling, free_ceiling + order, -infinity);
+    for (std::size_t i = 0; i < elements.touched; ++i) {
+        const double g = profile_[i];
+        if (elements.flags[i] != 0.0) {
+            contacts += 1.0;
+            profile_sum += g;
+            outermost = std::max(outermost, g);
+            for (std::size_t k = 0; k < m; ++k) {
+                const double h = elements.h[k * elements.stride + i];
+                hat_sum[k] += h;
+                hat_floor[k] = std::min(hat_floor[k], h);
+            }
+            continue;
+        }
+        innermost_free = std::min(innermost_free, g);
+        for (std::size_t j = 0; j < order; ++j) {
+            const double value = j == 0 ? elements.w[i] : elements.h[(j - 1) * elements.stride + i];
+            free_floor[j] = std::min(free_floor[j], value);
+            free_ceiling[j] = std::max(free_ceiling[j], value);
+        }
+    }
+    // An extreme over no element is not read (no element in contact, or none free): 0 keeps the header finite.
+    const auto finite = [](double* first, double* last) {
+        std::transform(first, last, first, [](double value) { return std::isfinite(value) ? value : 0.0; });
+    };
+    finite(hat_floor, hat_floor + m);
+    finite(free_floor, free_ceiling + order);
+    header[composed_offset] = 0.0;
+    header[rate_offset] = rate;
+    header[contacts_offset] = contacts;
+    header[profile_sum_offset] = profile_sum;
+    header[outermost_offset] = outermost;
+    header[innermost_free_offset] = std::isfinite(innermost_free) ? innermost_free : 0.0;
+    std::fill(scale, scale + m, 1.0);
+    std::fill(shift, shift + m, 0.0);
+    for (std::size_t r = 0; r < order; ++r) {
+        for (std::size_t j = 0; j < order; ++j) map[r * order + j] = r == j ? 1.0 : 0.0;
+    }
+}
+
+void ComposedNormalStep::line_loads(std::span<const double> header, const AttachedElements& elements, double depth,
+                                    std::span<double> out) const {
+    const bool composed = header[composed_offset] != 0.0;
+    const double* scale = composed ? header.data() + scale_offset : unit_.data();
+    stress_pass(elements.touched, branches_, composed ? 1.0 : 0.0, depth, g_inf_, viscosity_ * header[rate_offset],
+                profile_.data(), elements.w, elements.flags, elements.h, elements.stride, moduli_.data(), scale,
+                scale + branches_, out.data());
+}
+
+}  // namespace mdr::foundation

@@ -1,0 +1,103 @@
+// The DEM contact law's composed normal step (foundation::ComposedNormalStep): while no element enters or leaves
+// contact it steps a contact through its state's header alone, and its forces are the Foundation's to round-off.
+
+#include "mdr/dem/contact_law.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "mdr/foundation/foundation.hpp"
+#include "mdr/foundation/step_coefficients.hpp"
+#include "mdr/profile/profile.hpp"
+
+namespace mdr::dem {
+namespace {
+
+constexpr double radius = 0.005, peak_overlap = 4e-5, time_step = 2e-6, pi = 3.141592653589793;
+constexpr std::size_t elements = 20;
+const double half_width = 1.2 * std::sqrt(radius * peak_overlap);
+
+struct Motion {
+    const char* name;
+    int steps;
+    std::function<double(int)> overlap;
+};
+
+// Held after loading, loaded slowly, an impact, a long hold with a ripple (400 relaxation times of the standard
+// solid: the composition factors fall below 1e-150 and the elements are written again), partial unloadings.
+std::vector<Motion> motions() {
+    return {
+        {"held", 1100, [](int n) { return peak_overlap * std::sin(0.5 * pi * std::min(n, 100) / 100.0); }},
+        {"slow", 1000, [](int n) { return peak_overlap * (0.2 + 0.8 * n / 1000.0); }},
+        {"impact", 200, [](int n) { return peak_overlap * std::sin(pi * n / 200.0); }},
+        {"long", 40000,
+         [](int n) {
+             const double ripple = 1.0 + 1e-3 * std::sin(2.0 * pi * n / 500.0);
+             return peak_overlap * (n < 100 ? std::sin(0.5 * pi * n / 100.0) : ripple);
+         }},
+        {"cycles", 1000,
+         [](int n) { return peak_overlap * (0.75 + 0.25 * std::cos(2.0 * pi * n / 200.0)) * std::min(1.0, n / 50.0); }},
+    };
+}
+
+// M = 1 to 4, with and without a parallel dashpot.
+std::vector<rheology::Rheology> materials() {
+    return {rheology::Rheology::standard(1e6, 1e6, 1e-4), rheology::Rheology(1e6, 20.0, {{1e6, 1e-4}, {5e5, 3e-3}}),
+            rheology::Rheology::prony(1e6, {{1e6, 4e-5}, {1e6, 1.3e-3}, {1e6, 4e-2}}),
+            rheology::Rheology(5e5, 5.0, {{1e6, 4e-5}, {1e6, 4e-4}, {1e6, 4e-3}, {1e6, 4e-2}})};
+}
+
+// The reference: the library's Foundation stepping its own buffers (eq. 13-22), every element every step.
+TEST(DemComposedNormalStep, ForcesAreTheFoundationsToRoundOff) {
+    for (const auto& material : materials()) {
+        for (const auto& motion : motions()) {
+            foundation::Foundation reference(material, *profile::make_sphere(radius), half_width / elements, elements);
+            const auto coefficients = foundation::step_coefficients(material, time_step);
+            ContactLaw law(material, radius, 0.0, elements, half_width, time_step);
+            std::vector<double> state(law.state_size());
+            law.initialise(state);
+            double depth = 0.0, largest = 0.0, deviation = 0.0;
+            for (int n = 1; n <= motion.steps; ++n) {
+                const double overlap = motion.overlap(n);
+                reference.begin_step(coefficients);
+                reference.advance(depth, overlap);
+                depth = overlap;
+                law.advance(state, overlap, {0.0, 0.0});
+                largest = std::max(largest, std::abs(reference.total_force()));
+                deviation = std::max(deviation, std::abs(law.normal_force() - reference.total_force()));
+                ASSERT_EQ(law.contact_count(), reference.contact_count()) << motion.name << " step " << n;
+                ASSERT_EQ(law.normal_force(state), law.normal_force());
+            }
+            EXPECT_LE(deviation, 1e-12 * largest) << "M = " << material.terms().size() << ", " << motion.name;
+            EXPECT_NO_THROW(law.check(state));
+        }
+    }
+}
+
+// A held contact (no element enters or leaves) is stepped in its header: the elements' w, flags and h in the
+// state stay as they were, bit for bit, while the force relaxes as the Foundation's.
+TEST(DemComposedNormalStep, AHeldContactsStepsLeaveItsElementsAsTheyWere) {
+    const auto material = rheology::Rheology::standard(1e6, 1e6, 1e-4);
+    ContactLaw law(material, radius, 0.0, elements, half_width, time_step);
+    std::vector<double> state(law.state_size());
+    law.initialise(state);
+    for (int n = 1; n <= 100; ++n) law.advance(state, peak_overlap * n / 100.0, {0.0, 0.0});
+    const std::size_t start = 6 + foundation::ComposedNormalStep::header_size(1) + 3;  // w_0 (contact_law.hpp)
+    const std::vector<double> before(state.begin() + static_cast<std::ptrdiff_t>(start),
+                                     state.begin() + static_cast<std::ptrdiff_t>(start + elements * 3));
+    const double loaded = law.normal_force(state);
+    for (int n = 0; n < 50; ++n) law.advance(state, peak_overlap, {0.0, 0.0});
+    const std::vector<double> after(state.begin() + static_cast<std::ptrdiff_t>(start),
+                                    state.begin() + static_cast<std::ptrdiff_t>(start + elements * 3));
+    EXPECT_EQ(after, before);
+    EXPECT_LT(law.normal_force(state), loaded);  // the standard solid relaxes (tau = 0.1 ms = 50 steps)
+    EXPECT_GT(law.contact_count(), 0u);
+}
+
+}  // namespace
+}  // namespace mdr::dem
