@@ -17,7 +17,8 @@ namespace mdr::io {
 ///   definition (rheology::ModelDefinition; a series that stands for itself by rheology::series_definition:
 ///   `material.G_inf`, `material.terms[0][1]`); the material is built again from its registry row, a model converted
 ///   to a series over its own certificate's window and frequencies with its tolerance;
-/// - `indenter.KEY`: a number of the indenter's shape (`indenter.R`, `indenter.r[3]`; not with a Shore test);
+/// - `indenter.KEY`: a number of the indenter's shape by its definition (profile::Profile::definition: `indenter.R`,
+///   `indenter.r[3]`, a cone's `slope_deg`; not with a Shore test);
 /// - `load.history[i][j]` (under a control that takes a history), `load.harmonic.KEY`, `load.end` (when the case's
 ///   end is not its history's default, which follows the history), `output.snapshots[i]`, `tangential.friction`,
 ///   `layer.thickness`, and the `[numerics]` values the case holds (`numerics.elements` an integer >= 1).
