@@ -98,10 +98,8 @@ py::object build(const MaterialModel& model, const py::args& args, const py::kwa
     return material_object(rheology::build_material(model, parameters, options));
 }
 
-// The [material] table of a converted material's model: what a case converts again (mdr.Material objects in a
-// case dict, python/mdr/_case_tree.py).
-py::dict definition_table(const ConvertedMaterial& material) {
-    const rheology::ModelDefinition& definition = material.definition;
+// The [material] table of a model's definition: what a case builds (converts) again.
+py::dict model_table(const rheology::ModelDefinition& definition) {
     py::dict table;
     table["model"] = definition.model;
     for (const auto& [key, value] : definition.parameters.numbers) table[key.c_str()] = value;
@@ -115,6 +113,9 @@ py::dict definition_table(const ConvertedMaterial& material) {
     if (definition.tolerance) table["tolerance"] = *definition.tolerance;
     return table;
 }
+
+// The [material] table of a converted material's model (ConvertedMaterial::_definition, its pickle).
+py::dict definition_table(const ConvertedMaterial& material) { return model_table(material.definition); }
 
 // The model and parameters of a definition table (a pickle's), inverse of definition_table.
 void restore_definition(ConvertedMaterial& material, const py::dict& table) {
@@ -259,6 +260,19 @@ Examples
 }
 
 void bind_material_registry(py::module_& module) {
+    module.def(
+        "_material_table",
+        [](const py::handle& material) {
+            if (py::isinstance<ConvertedMaterial>(material)) {
+                return definition_table(material.cast<const ConvertedMaterial&>());
+            }
+            return model_table(rheology::series_definition(material.cast<const rheology::Rheology&>()));
+        },
+        py::arg("material"),
+        "The [material] table an mdr.Material stands for in a case dict (python/mdr/_case_tree.py): an "
+        "mdr.ConvertedMaterial's model (its name, parameters and tolerance), which the case converts again over its "
+        "own window; else the series as its own model (rheology::series_definition: elastic, viscous, kelvin_voigt "
+        "or prony), the keys a sweep of an mdr.ContactCase names it by too.");
     module.def(
         "_material_models",
         [] {

@@ -9,6 +9,8 @@
 #include "case_tree.hpp"
 #include "document_object.hpp"
 #include "mdr/error.hpp"
+#include "mdr/drivers/contact_case.hpp"
+#include "mdr/io/case_objects.hpp"
 #include "mdr/io/sweep.hpp"
 
 namespace py = pybind11;
@@ -35,6 +37,39 @@ std::vector<io::SweepAxis> sweep_axes(const py::list& specs) {
     return axes;
 }
 
+// The table of a sweep of `model` (an io::CaseTemplate or io::SweepCase) over the axes `specs` on `jobs` threads (0:
+// every core), as _sweep_case returns it.
+template <class Model>
+py::dict sweep_table(const Model& model, const py::list& specs, unsigned jobs, const py::object& progress) {
+    const auto axes = sweep_axes(specs);
+    io::validate_sweep(model, axes);
+    std::vector<io::SweepRow> rows;
+    {
+        py::gil_scoped_release release;
+        rows = io::run_sweep(model, axes, jobs == 0 ? std::thread::hardware_concurrency() : jobs,
+                             [&progress](std::size_t done, std::size_t total) {
+                                 // Ctrl-C or an exception of `progress` stops the sweep (run_sweep joins its
+                                 // threads and rethrows).
+                                 py::gil_scoped_acquire acquire;
+                                 if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+                                 if (!progress.is_none()) progress(done, total);
+                             });
+    }
+    py::list points, summaries, errors;
+    for (const auto& row : rows) {
+        points.append(py::cast(row.point));
+        summaries.append(document_object(Document{row.summary}));
+        errors.append(row.error);
+    }
+    py::dict out;
+    out["keys"] = specs;
+    out["points"] = points;
+    out["summaries"] = summaries;
+    out["errors"] = errors;
+    out["columns"] = io::sweep_columns(rows);
+    return out;
+}
+
 }  // namespace
 
 void bind_sweep(py::module_& module) {
@@ -42,38 +77,20 @@ void bind_sweep(py::module_& module) {
         "_sweep_case",
         [](const py::object& case_, const std::string& source, const py::list& specs, unsigned jobs,
            const py::object& progress) {
-            const auto axes = sweep_axes(specs);
             const auto model = case_template(case_, source);
-            io::validate_sweep(model, axes);
-            std::vector<io::SweepRow> rows;
-            {
-                py::gil_scoped_release release;
-                rows = io::run_sweep(model, axes, jobs == 0 ? std::thread::hardware_concurrency() : jobs,
-                                     [&progress](std::size_t done, std::size_t total) {
-                                         // Ctrl-C or an exception of `progress` stops the sweep (run_sweep joins
-                                         // its threads and rethrows).
-                                         py::gil_scoped_acquire acquire;
-                                         if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-                                         if (!progress.is_none()) progress(done, total);
-                                     });
-            }
-            py::list points, summaries, errors;
-            for (const auto& row : rows) {
-                points.append(py::cast(row.point));
-                summaries.append(document_object(Document{row.summary}));
-                errors.append(row.error);
-            }
-            py::dict out;
-            out["keys"] = specs;
-            out["points"] = points;
-            out["summaries"] = summaries;
-            out["errors"] = errors;
-            out["columns"] = io::sweep_columns(rows);
-            return out;
+            return sweep_table(model, specs, jobs, progress);
         },
         py::arg("case"), py::arg("source"), py::arg("specs"), py::arg("jobs") = 0, py::arg("progress") = py::none(),
         "Runs a case (TOML text or a dict tree) over the cartesian product of axes, each a --vary spec or a "
         "(key, values) pair (use mdr.sweep).");
+    module.def(
+        "_sweep_contact_case",
+        [](const drivers::ContactCase& contact_case, const py::list& specs, unsigned jobs,
+           const py::object& progress) {
+            return sweep_table(io::CaseObjects(contact_case), specs, jobs, progress);
+        },
+        py::arg("case"), py::arg("specs"), py::arg("jobs") = 0, py::arg("progress") = py::none(),
+        "Runs an mdr.ContactCase over the cartesian product of axes as _sweep_case, on its objects (use mdr.sweep).");
     module.def(
         "_sweep_columns",
         [](const py::list& summaries) {

@@ -243,7 +243,7 @@ class SweepTable(dict):
     threads: Optional[int] = None
 
 
-def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = None, jobs: Optional[int] = None,
+def sweep(case: Optional[RunCase] = None, vary: Optional[Mapping[str, Any]] = None, jobs: Optional[int] = None,
           progress: Optional[Callable[[int, int], Any]] = None, scheduler: Any = None, *,
           material: Union[Material, Mapping[str, Any], None] = None,
           indenter: Union[Indenter, Mapping[str, Any], None] = None, load: Optional[Mapping[str, Any]] = None,
@@ -251,16 +251,20 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
           output: Optional[Mapping[str, Any]] = None, title: Optional[str] = None) -> SweepTable:
     """Runs a case over the cartesian product of grids of numeric keys, like ``mdr sweep``.
 
-    Give either `case` (a case file or a dict with its structure) or the case's tables as keywords, as for `run`.
+    Give either `case` (an ``mdr.ContactCase``, a case file or a dict with its structure) or the case's tables as
+    keywords, as for `run`.
 
     Parameters
     ----------
-    case : str, os.PathLike or dict, optional
-        A case file or a dict with its structure.
+    case : mdr.ContactCase, str, os.PathLike or dict, optional
+        An ``mdr.ContactCase`` (each point built from its objects, without text: a key sets a typed value on a copy
+        of the part it names, and a part no key names is used as it is, so that an ``mdr.ConvertedMaterial`` keeps
+        its series and certificate; docs/python.md), a case file or a dict with its structure.
     vary : dict of str to sequence or str
         ``{dotted key: values}``: a 1-D sequence of numbers or ``"START:STOP:COUNT[:log]"``; the last key varies
         fastest. A key names a number of the case, also inside an array (``"load.history[1][1]"``: the value of
-        the second history point).
+        the second history point), by the names of its case file (an ``mdr.ContactCase``: of the file or dict it
+        would be read from).
     jobs : int, optional
         Threads (default: all cores); min(jobs, cores, points) run (``.threads`` of the table), and more than the
         cores warns (RuntimeWarning).
@@ -269,7 +273,8 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
         every 0.2 s. An exception it raises stops the sweep and propagates (local sweeps).
     scheduler : str or distributed.Client, optional
         A Dask scheduler address ``"tcp://HOST:PORT"`` or a client: the points run in chunks on its workers
-        (docs/distributed.md), with the same rows bit for bit.
+        (docs/distributed.md), with the same rows bit for bit. Not with an ``mdr.ContactCase`` (its objects do not
+        travel to the workers; give its file or dict).
     material, indenter, load, numerics, tangential, output, title
         The case's tables as keywords, as for `run` (``mdr.Material`` and ``mdr.Indenter`` objects or dicts).
 
@@ -288,7 +293,7 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
     ValueError
         For `jobs` not an integer >= 1 (a bool included), or given with a scheduler.
     TypeError
-        For a case given both ways, or none.
+        For a case given both ways, or none, or an ``mdr.ContactCase`` with a scheduler.
 
     Examples
     --------
@@ -309,14 +314,22 @@ def sweep(case: Optional[CaseLike] = None, vary: Optional[Mapping[str, Any]] = N
         raise TypeError("vary: expected a non-empty dict {key: values}")
     check_jobs(jobs, scheduler)
     progress = _callable_or_none(progress)
-    case_input, source = _case_input(_case_of(case, dict(title=title, material=material, indenter=indenter, load=load,
-                                                  tangential=tangential, output=output, numerics=numerics)))
+    given = _case_of(case, dict(title=title, material=material, indenter=indenter, load=load, tangential=tangential,
+                                output=output, numerics=numerics))
+    if isinstance(given, ContactCase) and scheduler is not None:
+        raise TypeError("scheduler: an mdr.ContactCase runs on the local cores only; give its case file or dict to "
+                        "run on a scheduler")
     specs = [_axis_spec(key, values) for key, values in vary.items()]
     batch = threads = None
     if scheduler is None:
         threads = local_workers(jobs, _mdr._sweep_size(specs))
-        raw = _mdr._sweep_case(case_input, source, specs, threads, progress)
+        if isinstance(given, ContactCase):
+            raw = _mdr._sweep_contact_case(given, specs, threads, progress)
+        else:
+            case_input, source = _case_input(given)
+            raw = _mdr._sweep_case(case_input, source, specs, threads, progress)
     else:
+        case_input, source = _case_input(given)
         from . import distributed
 
         _, points, batch = distributed.sweep_rows(case_input, source, specs, scheduler)

@@ -8,32 +8,12 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from ._mdr import Indenter, Material
-
-
-def material_table(material: Material) -> dict[str, Any]:
-    """The `[material]` table of a Material: for an `mdr.ConvertedMaterial` the model it was built from (its name,
-    parameters and tolerance), which the case converts again over its own window and harmonic frequencies, exactly
-    as the same table given as a dict; else its named model where one fits (elastic, viscous, kelvin_voigt), else
-    a Prony series (with its parallel dashpot `eta` where it has one)."""
-    if material._definition is not None:
-        return material._definition
-    terms = [[modulus, time] for modulus, time in material.terms]
-    if not terms:
-        if material.eta == 0.0:
-            return {"model": "elastic", "G": material.G_inf}
-        if material.G_inf == 0.0:
-            return {"model": "viscous", "eta": material.eta}
-        return {"model": "kelvin_voigt", "G": material.G_inf, "eta": material.eta}
-    table = {"model": "prony", "G_inf": material.G_inf, "terms": terms}
-    if material.eta > 0.0:
-        table["eta"] = material.eta
-    return table
+from ._mdr import Indenter, Material, _material_table
 
 
 def _plain(value: Any, key: str) -> Any:
     if isinstance(value, Material):
-        return material_table(value)
+        return _plain(_material_table(value), key)  # its model's table, or the series as its own model
     if isinstance(value, Indenter):
         return value.table
     if isinstance(value, Mapping):

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <charconv>
+#include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <type_traits>
 #include <utility>
@@ -129,12 +131,22 @@ std::optional<std::string> CaseTemplate::string_at(const std::string& key) const
 
 void CaseTemplate::set_number(const std::string& key, double value) {
     if (!has_number(key)) throw InvalidInput(key, "(missing)", "the case has no number under this key");
+    // An integer stays one when the value is a whole number it can hold exactly (a count: `numerics.elements`).
+    const bool integer = tables_->root.at_path(key).is_integer() && value == std::floor(value) &&
+                         std::abs(value) <= 0x1p53;
     const auto location = locate(tables_->root, key);
-    if (auto* table = location->parent->as_table()) {
-        table->insert_or_assign(location->name, value);
+    const auto assign = [&location](auto number) {
+        if (auto* table = location->parent->as_table()) {
+            table->insert_or_assign(location->name, number);
+        } else {
+            auto* array = location->parent->as_array();
+            array->replace(array->begin() + static_cast<std::ptrdiff_t>(location->index), number);
+        }
+    };
+    if (integer) {
+        assign(static_cast<std::int64_t>(value));
     } else {
-        auto* array = location->parent->as_array();
-        array->replace(array->begin() + static_cast<std::ptrdiff_t>(location->index), value);
+        assign(value);
     }
 }
 

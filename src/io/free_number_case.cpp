@@ -1,6 +1,5 @@
 #include "mdr/io/free_number_case.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -10,6 +9,7 @@
 #include "case_template_tables.hpp"
 #include "indenter_reader.hpp"
 #include "layer_reader.hpp"
+#include "part_numbers.hpp"
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/drivers/material_window.hpp"
@@ -31,45 +31,11 @@ struct Editable {
 // The parts of a case a free key rebuilds.
 enum class Part { material, indenter, layer };
 
-// `name[i][j]` as the name and its indices; nothing when an index is not a decimal number in brackets.
-std::optional<std::pair<std::string, std::vector<std::size_t>>> split_indices(const std::string& key) {
-    const std::size_t open = key.find('[');
-    std::pair<std::string, std::vector<std::size_t>> split{key.substr(0, open), {}};
-    for (std::size_t at = open; at != std::string::npos && at < key.size();) {
-        const std::size_t close = key.find(']', at);
-        if (key[at] != '[' || close == std::string::npos || close == at + 1) return std::nullopt;
-        std::size_t index = 0;
-        const auto [end, error] = std::from_chars(key.data() + at + 1, key.data() + close, index);
-        if (error != std::errc() || end != key.data() + close) return std::nullopt;
-        split.second.push_back(index);
-        at = close + 1;
-    }
-    return split;
-}
-
-double* spec_number(MaterialSpec& spec, const std::string& key) {
-    const auto split = split_indices(key);
-    return split ? material_number(spec, split->first, split->second) : nullptr;
-}
-
 // `K`, `bulk.KEY` or a key of the shear table.
 double* body_number(BodySpec& body, const std::string& key) {
     if (key == "K") return body.bulk_modulus ? &*body.bulk_modulus : nullptr;
     if (key.rfind("bulk.", 0) == 0) return body.bulk ? spec_number(*body.bulk, key.substr(5)) : nullptr;
     return spec_number(body.shear, key);
-}
-
-double* profile_number(profile::ProfileDefinition& definition, const std::string& key) {
-    const auto split = split_indices(key);
-    if (!split) return nullptr;
-    const auto& [name, indices] = *split;
-    if (indices.empty()) {
-        const auto number = definition.numbers.find(name);
-        return number == definition.numbers.end() ? nullptr : &number->second;
-    }
-    const auto array = definition.arrays.find(name);
-    if (indices.size() != 1 || array == definition.arrays.end() || indices[0] >= array->second.size()) return nullptr;
-    return &array->second[indices[0]];
 }
 
 bool starts_with(const std::string& key, const std::string& prefix) { return key.rfind(prefix, 0) == 0; }

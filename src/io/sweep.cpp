@@ -64,11 +64,21 @@ std::vector<std::string> split(const std::string& text, char separator) {
     }
 }
 
-// The case with each key set to its value at `point`.
-drivers::ContactCase case_at(CaseTemplate model, const std::vector<std::string>& keys, const std::vector<double>& point) {
-    for (std::size_t a = 0; a < keys.size(); ++a) model.set_number(keys[a], point[a]);
-    return model.build();
-}
+// A case file's case as a sweep varies it: a copy of its tables with each key set (CaseTemplate::set_number), read
+// again.
+class TemplateSweepCase final : public SweepCase {
+public:
+    explicit TemplateSweepCase(const CaseTemplate& model) : model_(model) {}
+    bool has_number(const std::string& key) const override { return model_.has_number(key); }
+    drivers::ContactCase build(const std::vector<std::string>& keys, const std::vector<double>& values) const override {
+        CaseTemplate copy = model_;
+        for (std::size_t a = 0; a < keys.size(); ++a) copy.set_number(keys[a], values[a]);
+        return copy.build();
+    }
+
+private:
+    const CaseTemplate& model_;
+};
 
 }  // namespace
 
@@ -111,8 +121,12 @@ void validate_sweep(std::string_view case_text, const std::string& source, const
 }
 
 void validate_sweep(const CaseTemplate& model, const std::vector<SweepAxis>& axes) {
+    validate_sweep(TemplateSweepCase(model), axes);
+}
+
+void validate_sweep(const SweepCase& model, const std::vector<SweepAxis>& axes) {
     sweep_size(axes);
-    model.build();
+    model.build({}, {});
     for (const auto& axis : axes) {
         if (!model.has_number(axis.key)) {
             throw InvalidInput("--vary", axis.key, "no such numeric key in the case file (arrays by index: "
@@ -150,7 +164,7 @@ private:
 // elements; a point that cannot be built costs 0, its run fails at once), ties in grid order, so that a parallel
 // sweep does not end waiting on a large point started last. The estimates are spread over the threads too, while
 // this thread reports progress (0 points done) every 0.2 s, so that the caller can stop them by throwing.
-std::vector<std::size_t> costliest_first(const CaseTemplate& model, const std::vector<std::string>& keys,
+std::vector<std::size_t> costliest_first(const SweepCase& model, const std::vector<std::string>& keys,
                                          const std::vector<SweepRow>& rows, unsigned threads,
                                          const std::function<void(std::size_t, std::size_t)>& progress) {
     std::vector<double> costs(rows.size(), 0.0);
@@ -158,7 +172,7 @@ std::vector<std::size_t> costliest_first(const CaseTemplate& model, const std::v
         rows.size(), threads,
         [&](std::size_t r, unsigned, const std::atomic<bool>&) {
             try {
-                const auto contact_case = case_at(model, keys, rows[r].point);
+                const auto contact_case = model.build(keys, rows[r].point);
                 const auto numerics = drivers::resolve_numerics(contact_case);
                 costs[r] = drivers::estimate_work(contact_case, numerics).element_steps;
             } catch (const std::exception&) {
@@ -199,6 +213,11 @@ std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& s
 
 std::vector<SweepRow> run_sweep(const CaseTemplate& model, const std::vector<SweepAxis>& axes, unsigned jobs,
                                 const std::function<void(std::size_t, std::size_t)>& progress) {
+    return run_sweep(TemplateSweepCase(model), axes, jobs, progress);
+}
+
+std::vector<SweepRow> run_sweep(const SweepCase& model, const std::vector<SweepAxis>& axes, unsigned jobs,
+                                const std::function<void(std::size_t, std::size_t)>& progress) {
     std::vector<std::string> keys;
     for (const auto& axis : axes) keys.push_back(axis.key);
     return run_sweep_points(model, keys, sweep_points(axes), jobs, progress);
@@ -211,6 +230,12 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
 }
 
 std::vector<SweepRow> run_sweep_points(const CaseTemplate& model, const std::vector<std::string>& keys,
+                                       std::vector<std::vector<double>> points, unsigned jobs,
+                                       const std::function<void(std::size_t, std::size_t)>& progress) {
+    return run_sweep_points(TemplateSweepCase(model), keys, std::move(points), jobs, progress);
+}
+
+std::vector<SweepRow> run_sweep_points(const SweepCase& model, const std::vector<std::string>& keys,
                                        std::vector<std::vector<double>> points, unsigned jobs,
                                        const std::function<void(std::size_t, std::size_t)>& progress) {
     const std::size_t total = points.size();
@@ -232,7 +257,7 @@ std::vector<SweepRow> run_sweep_points(const CaseTemplate& model, const std::vec
             SweepRow& row = rows[order[n]];
             StopWhenAsked stop_observer(stop);
             try {
-                const auto contact_case = case_at(model, keys, row.point);
+                const auto contact_case = model.build(keys, row.point);
                 const auto start = std::chrono::steady_clock::now();
                 const auto result = drivers::run_case(contact_case, {}, {&stop_observer});
                 if (result.stopped) return;  // interrupted: the row stays empty, the sweep is abandoned

@@ -240,6 +240,22 @@ ModelMaterial exact_material(Rheology series) {
     return {std::move(series), {.times_from_conversion = timeless}};
 }
 
+ModelDefinition series_definition(const Rheology& series) {
+    const double G = series.equilibrium_modulus(), eta = series.viscosity();
+    ModelParameters parameters;
+    if (series.terms().empty()) {
+        const char* model = eta == 0.0 ? "elastic" : G == 0.0 ? "viscous" : "kelvin_voigt";
+        if (eta == 0.0 || G != 0.0) parameters.numbers["G"] = G;
+        if (eta != 0.0) parameters.numbers["eta"] = eta;
+        return {model, std::move(parameters), std::nullopt};
+    }
+    parameters.numbers["G_inf"] = G;
+    if (eta > 0.0) parameters.numbers["eta"] = eta;
+    auto& terms = parameters.pairs["terms"];
+    for (const RelaxationTerm& term : series.terms()) terms.emplace_back(term.modulus, term.relaxation_time);
+    return {"prony", std::move(parameters), std::nullopt};
+}
+
 std::string describe_model(const MaterialModel& model, const ModelParameters& parameters,
                            std::string (*rename)(const std::string&), const UnitNames& unit_names) {
     std::string list;

@@ -35,8 +35,9 @@ public:
     bool has_number(const std::string& key) const;
     /// The number at `key`. Throws mdr::InvalidInput (key `key`) when there is none.
     double number(const std::string& key) const;
-    /// Sets the number at `key` (an integer becomes a floating-point value). Throws mdr::InvalidInput (key `key`)
-    /// when the case has no number there.
+    /// Sets the number at `key` (an integer stays an integer when `value` is a whole number of at most 2^53 in
+    /// magnitude, so that a count takes a sweep's values; else it becomes a floating-point value). Throws
+    /// mdr::InvalidInput (key `key`) when the case has no number there.
     void set_number(const std::string& key, double value);
     /// The string at `key` (`material.model`), or nothing when the case has no string there.
     std::optional<std::string> string_at(const std::string& key) const;

@@ -14,6 +14,20 @@
 
 namespace mdr::io {
 
+/// What a sweep varies: a case whose numbers are named by the dotted keys of a case file (`material.tau1`,
+/// `load.history[1][1]`). A case file's is its CaseTemplate (its tables, read again at every point); a case given as
+/// objects is an io::CaseObjects (its parts, a typed value set on a copy of the part a key names).
+class SweepCase {
+public:
+    virtual ~SweepCase() = default;
+    /// True when `key` names a number of the case.
+    virtual bool has_number(const std::string& key) const = 0;
+    /// The validated case with `values[a]` under `keys[a]` (no keys: the case itself). Throws mdr::InvalidInput
+    /// (naming the key, the value and the rule) for a value the case's rules refuse.
+    virtual drivers::ContactCase build(const std::vector<std::string>& keys,
+                                       const std::vector<double>& values) const = 0;
+};
+
 /// One varied key and its values.
 struct SweepAxis {
     std::string key;              ///< dotted key as given, e.g. `material.tau1`
@@ -45,6 +59,8 @@ std::size_t sweep_size(const std::vector<SweepAxis>& axes);
 void validate_sweep(std::string_view case_text, const std::string& source, const std::vector<SweepAxis>& axes);
 /// validate_sweep of a case already parsed (or given as a tree).
 void validate_sweep(const CaseTemplate& model, const std::vector<SweepAxis>& axes);
+/// validate_sweep of any case a sweep varies (the one rule of its keys and their message).
+void validate_sweep(const SweepCase& model, const std::vector<SweepAxis>& axes);
 
 /// The points of the cartesian product of the axes, in row order (the last axis varying fastest): the value of each
 /// axis at each row. Throws mdr::InvalidInput for a grid above max_sweep_points.
@@ -61,6 +77,10 @@ std::vector<SweepRow> run_sweep_points(std::string_view case_text, const std::st
 std::vector<SweepRow> run_sweep_points(const CaseTemplate& model, const std::vector<std::string>& keys,
                                        std::vector<std::vector<double>> points, unsigned jobs,
                                        const std::function<void(std::size_t, std::size_t)>& progress);
+/// run_sweep_points of any case a sweep varies: each point's case is model.build(keys, point).
+std::vector<SweepRow> run_sweep_points(const SweepCase& model, const std::vector<std::string>& keys,
+                                       std::vector<std::vector<double>> points, unsigned jobs,
+                                       const std::function<void(std::size_t, std::size_t)>& progress);
 
 /// Runs the case at every point of the cartesian product of the axes (the last axis varying fastest) on `jobs`
 /// threads (at most one a point; with more than one, the points are handed out costliest first by
@@ -75,6 +95,9 @@ std::vector<SweepRow> run_sweep(std::string_view case_text, const std::string& s
                                 const std::function<void(std::size_t, std::size_t)>& progress);
 /// run_sweep of a case already parsed (or given as a tree).
 std::vector<SweepRow> run_sweep(const CaseTemplate& model, const std::vector<SweepAxis>& axes, unsigned jobs,
+                                const std::function<void(std::size_t, std::size_t)>& progress);
+/// run_sweep of any case a sweep varies.
+std::vector<SweepRow> run_sweep(const SweepCase& model, const std::vector<SweepAxis>& axes, unsigned jobs,
                                 const std::function<void(std::size_t, std::size_t)>& progress);
 
 /// The numeric keys (numbers and counts, not flags) of the rows' summaries by union_of_keys (mdr/document.hpp), the

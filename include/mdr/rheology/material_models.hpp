@@ -85,6 +85,11 @@ struct ModelMaterial {
 /// MaterialOrigin::times_from_conversion when it has no time at all (no terms, no dashpot: elastic).
 ModelMaterial exact_material(Rheology series);
 
+/// The model a series that stands for itself is written as in a case's `[material]` table (a plain mdr.Material in
+/// a case dict, python/mdr/_case_tree.py; a sweep's keys of a case given as objects): elastic (G), viscous (eta) or
+/// kelvin_voigt (G, eta) without branches, else prony (G_inf, terms and, with a parallel dashpot, eta).
+ModelDefinition series_definition(const Rheology& series);
+
 /// One row of the table.
 struct MaterialModel {
     std::string name;                        ///< `model = "name"`

@@ -53,6 +53,24 @@ TEST(CaseTemplate, RefusesKeysThatNameNoNumber) {
     }
 }
 
+// A count (`numerics.elements`, read as an integer >= 1) takes a whole value as an integer, and refuses another with
+// the reader's rule; a value set on an integer key that is not whole becomes a float.
+TEST(CaseTemplate, SetsAWholeNumberOnAnIntegerKeyAsAnInteger) {
+    mdr::io::CaseTemplate model(std::string(case_text) + "[numerics]\nelements = 300\n", "case");
+    model.take_table("fit");
+    model.set_number("numerics.elements", 600.0);
+    EXPECT_EQ(model.build().numerics.elements, std::size_t{600});
+    model.set_number("material.G_inf", 1.5e6);  // an integer in the file, a float now
+    EXPECT_EQ(model.build().material.equilibrium_modulus(), 1.5e6);
+    model.set_number("numerics.elements", 2.5);
+    try {
+        model.build();
+        FAIL();
+    } catch (const mdr::InvalidInput& error) {
+        EXPECT_EQ(std::string(error.what()), "numerics.elements = 2.5: must be an integer >= 1");
+    }
+}
+
 TEST(CaseTemplate, BuildAppliesTheCaseRules) {
     mdr::io::CaseTemplate model(case_text, "case");
     model.take_table("fit");
