@@ -70,6 +70,9 @@ class TemplateSweepCase final : public SweepCase {
 public:
     explicit TemplateSweepCase(const CaseTemplate& model) : model_(model) {}
     bool has_number(const std::string& key) const override { return model_.has_number(key); }
+    std::string numbers_rule() const override {
+        return "no such numeric key in the case file (arrays by index: load.history[1][1])";
+    }
     drivers::ContactCase build(const std::vector<std::string>& keys, const std::vector<double>& values) const override {
         CaseTemplate copy = model_;
         for (std::size_t a = 0; a < keys.size(); ++a) copy.set_number(keys[a], values[a]);
@@ -129,8 +132,7 @@ void validate_sweep(const SweepCase& model, const std::vector<SweepAxis>& axes) 
     model.build({}, {});
     for (const auto& axis : axes) {
         if (!model.has_number(axis.key)) {
-            throw InvalidInput("--vary", axis.key, "no such numeric key in the case file (arrays by index: "
-                                                   "load.history[1][1])");
+            throw InvalidInput("--vary", axis.key, model.numbers_rule());
         }
     }
 }

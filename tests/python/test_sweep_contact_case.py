@@ -148,8 +148,18 @@ def test_a_key_the_case_lacks_is_refused_as_by_the_file_sweep(tmp_path, key):
         mdr.sweep(path, {key: [1.0]}, jobs=1)
     with pytest.raises(mdr.InvalidInput) as from_objects:
         mdr.sweep(mdr.ContactCase.from_file(path), {key: [1.0]}, jobs=1)
-    assert str(from_objects.value) == str(from_file.value)
-    assert str(from_objects.value).startswith(f"--vary = {key}: no such numeric key")
+    assert str(from_file.value).startswith(f"--vary = {key}: no such numeric key in the case file")
+    assert str(from_objects.value).startswith(f"--vary = {key}: no such numeric key among those a case of objects")
+
+
+def test_a_key_the_objects_do_not_sweep_says_where_it_is_swept(tmp_path):
+    """A spring's constant is a number of the case, which the object sweep does not set yet: its message says so and
+    where it is swept (it said "no such numeric key in the case file" of a case whose file has it)."""
+    path = case_file(tmp_path, STANDARD_CASE.replace('control = "displacement"',
+                                                     'control = "spring"\nspring_constant = 0.1'))
+    mdr.sweep(path, {"load.spring_constant": [0.1]}, jobs=1)
+    with pytest.raises(mdr.InvalidInput, match="a control's own keys.* are swept from the case file or dict"):
+        mdr.sweep(mdr.ContactCase.from_file(path), {"load.spring_constant": [0.1]}, jobs=1)
 
 
 def test_a_count_takes_integers_only():

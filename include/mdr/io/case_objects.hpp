@@ -29,6 +29,7 @@ public:
     explicit CaseObjects(drivers::ContactCase base);
 
     bool has_number(const std::string& key) const override;
+    std::string numbers_rule() const override;
     drivers::ContactCase build(const std::vector<std::string>& keys, const std::vector<double>& values) const override;
 
 private:

@@ -22,6 +22,8 @@ public:
     virtual ~SweepCase() = default;
     /// True when `key` names a number of the case.
     virtual bool has_number(const std::string& key) const = 0;
+    /// The rule a key that is not among has_number's breaks, for the message naming `--vary` and the key.
+    virtual std::string numbers_rule() const = 0;
     /// The validated case with `values[a]` under `keys[a]` (no keys: the case itself). Throws mdr::InvalidInput
     /// (naming the key, the value and the rule) for a value the case's rules refuse.
     virtual drivers::ContactCase build(const std::vector<std::string>& keys,
