@@ -203,15 +203,25 @@ class CurveMap:
                                       int(np.count_nonzero(self.status != OK)))
 
     def write_files(self, directory: str, figures: bool = True) -> list[str]:
-        """Writes NAME.npy per value, status.npy, failures.csv (row,col,reason), map.json (`summary`) and, with
-        `figures`, a heat map NAME.png per value that is a number and no pixel's place
-        (mdr.map_figures.NOT_DRAWN) into an existing directory; returns the file names."""
+        """Writes NAME.npy per value that is a number, texts.csv (row,col and the values that are text, if any),
+        status.npy (the codes), failures.csv (row,col,status,reason), map.json (`summary`) and, with `figures`, a heat
+        map NAME.png per value that is a number and no pixel's place (mdr.map_figures.NOT_DRAWN) into an existing
+        directory; returns the file names."""
         from .map_figures import NOT_DRAWN
 
         names = []
+        texts = [name for name, array in self.values.items() if array.dtype.kind != "f"]
         for name, array in self.values.items():
-            np.save(os.path.join(directory, f"{name}.npy"), array)
-            names.append(f"{name}.npy")
+            if name not in texts:
+                np.save(os.path.join(directory, f"{name}.npy"), array)
+                names.append(f"{name}.npy")
+        if texts:  # e.g. a fit's status, flags and failure: text, one line a pixel
+            with open(os.path.join(directory, "texts.csv"), "w", newline="", encoding="utf-8") as handle:
+                writer = csv.writer(handle)
+                writer.writerow(["row", "col", *texts])
+                for row, col in np.ndindex(self.status.shape):
+                    writer.writerow([row, col, *(self.values[name][row, col] for name in texts)])
+            names.append("texts.csv")
         np.save(os.path.join(directory, "status.npy"), self.status)
         with open(os.path.join(directory, "failures.csv"), "w", newline="", encoding="utf-8") as handle:
             writer = csv.writer(handle)

@@ -83,6 +83,12 @@ def test_a_stacks_map_json_has_the_layout_of_the_command_lines(command_line_map,
     assert stack["column_units"] == cli["column_units"]  # the same case: the same columns in the same units
     assert (stack["columns"], stack["rows"], stack["pixels"], stack["failed"]) == (3, 1, 3, 1)
     assert stack == fits.summary()
+    # The codes of the pixels stay status.npy; the fit's own status, flags and failure (text) are texts.csv.
+    np.testing.assert_array_equal(np.load(tmp_path / "py" / "status.npy"), fits.status)
+    with open(tmp_path / "py" / "texts.csv", newline="") as handle:
+        texts = list(csv.DictReader(handle))
+    assert [row["status"] for row in texts] == ["converged", "converged", ""] and list(texts[0]) == \
+        ["row", "col", "status", "flags", "failure"]
 
 
 def test_the_sweep_helper_writes_json_the_command_line_parses(monkeypatch, capsys):
