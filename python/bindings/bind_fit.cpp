@@ -9,6 +9,7 @@
 #include "mdr/error.hpp"
 #include "mdr/fit/plausibility.hpp"
 #include "mdr/fitcase/fit_case_run.hpp"
+#include "mdr/fitcase/fit_columns.hpp"
 #include "mdr/fitcase/fit_files.hpp"
 #include "mdr/fitcase/model_choice.hpp"
 #include "mdr/fitcase/model_choice_files.hpp"
@@ -35,13 +36,14 @@ using ReboundArrays = std::tuple<std::size_t, std::string, std::optional<double>
 // fit.json (as a dict), the fitted case and the curves of one fit.
 py::dict fit_output(const fitcase::FitCase& fit_case, const fit::FitResult& result) {
     py::list curve_list;
-    for (const auto& curve : result.curves) {
+    for (const auto& curve : result.curves) {  // curves.csv's columns (fitcase::curve_columns), the name aside
         py::dict entry;
         entry["name"] = curve.name;
-        entry["t"] = to_array(curve.time);
-        entry["measured"] = to_array(curve.measured);
-        entry["model"] = to_array(curve.model);
-        entry["drive"] = to_array(curve.drive);
+        for (const fitcase::CurveColumn& column : fitcase::curve_columns()) {
+            std::vector<double> values(curve.time.size());
+            for (std::size_t i = 0; i < values.size(); ++i) values[i] = column.value(curve, i);
+            entry[py::str(column.name.data(), column.name.size())] = to_array(values);
+        }
         curve_list.append(entry);
     }
     py::dict out;
@@ -50,16 +52,11 @@ py::dict fit_output(const fitcase::FitCase& fit_case, const fit::FitResult& resu
     out["fitted_case"] = fitcase::fitted_toml(fit_case, result);
     out["fitted_tree"] = tree_object(fitted.tree());
     out["curves"] = curve_list;
-    const auto& bands = result.material;
-    py::dict material;
-    material["t"] = to_array(bands.times);
-    material["omega"] = to_array(bands.omegas);
-    const std::pair<const char*, const fit::MaterialBand*> functions[] = {
-        {"G", &bands.relaxation}, {"J", &bands.creep}, {"storage", &bands.storage}, {"loss", &bands.loss}};
-    for (const auto& [name, band] : functions) {
-        material[name] = to_array(band->value);
-        material[(std::string(name) + "_lower").c_str()] = to_array(band->lower);
-        material[(std::string(name) + "_upper").c_str()] = to_array(band->upper);
+    py::dict material;  // the columns of functions.csv and dynamic.csv (fitcase::material_tables)
+    for (const fitcase::MaterialTable& table : fitcase::material_tables(result.material)) {
+        for (const fitcase::MaterialColumn& column : table.columns) {
+            material[column.name.c_str()] = to_array(*column.values);
+        }
     }
     out["material"] = material;
     return out;

@@ -68,4 +68,6 @@ void list_public_names(pybind11::module_& module);
 
 /// mdr.fit_map of an instrument map file: _mdr._fit_map_file (mdr/fitcase/map_fit.hpp, as `mdr fit --map`).
 void bind_map_fit(pybind11::module_& module);
+/// _mdr._to_json: the one JSON writer of results (io::to_json) for files and messages written from Python.
+void bind_document(pybind11::module_& module);
 }  // namespace mdr::python

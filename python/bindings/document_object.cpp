@@ -42,7 +42,7 @@ Document document_of(const py::handle& object) {
     if (py::isinstance<py::int_>(object)) return {object.cast<std::size_t>()};
     if (py::isinstance<py::float_>(object)) return {object.cast<double>()};
     if (py::isinstance<py::str>(object)) return {object.cast<std::string>()};
-    if (py::isinstance<py::list>(object)) {
+    if (py::isinstance<py::list>(object) || py::isinstance<py::tuple>(object)) {
         Document::List list;
         for (const auto& item : object) list.push_back(document_of(item));
         return {std::move(list)};

@@ -12,8 +12,8 @@ namespace mdr::python {
 /// float, a count as int, a flag as bool, a text as str, null as None.
 pybind11::object document_object(const Document& document);
 
-/// The document that document_object gave as `object` (a dict, list, float, int, bool, str or None). Throws
-/// TypeError for any other object (a negative int included).
+/// The document that document_object gave as `object` (a dict, list, float, int, bool, str or None; a tuple is a
+/// list). Throws TypeError for any other object (a negative int included).
 Document document_of(const pybind11::handle& object);
 
 }  // namespace mdr::python

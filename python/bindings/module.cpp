@@ -16,6 +16,7 @@ PYBIND11_MODULE(_mdr, module) {
     mdr::python::bind_sweep(module);
     mdr::python::bind_fit(module);
     mdr::python::bind_map_fit(module);
+    mdr::python::bind_document(module);
     mdr::python::bind_result_directory(module);
     mdr::python::bind_instrument(module);
     mdr::python::list_public_names(module);

@@ -17,7 +17,14 @@ ROWS_PER_LINE = 1000
 
 
 def _emit(message: dict) -> None:
-    sys.stdout.write(json.dumps(message) + "\n")
+    """Writes `message` as one line of JSON by mdr's one writer (io::to_json: null for a number that is not finite,
+    which the command line's parser requires)."""
+    try:
+        from mdr import _mdr
+    except ImportError:  # mdr itself cannot be imported: the message is that error, text only
+        sys.stdout.write(json.dumps(message) + "\n")
+    else:
+        sys.stdout.write(_mdr._to_json(message, -1) + "\n")
     sys.stdout.flush()
 
 

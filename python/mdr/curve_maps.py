@@ -20,7 +20,7 @@ import csv
 import json
 import math
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping, Sequence
 
 import numpy as np
@@ -111,7 +111,8 @@ def open_stack(source: Any, dataset: str = "curves"):
     source : array-like, str or os.PathLike
         An array (ny, nx, nt) or (ny, nx, nt, channels), the curve of pixel (row, col) being ``source[row, col]``;
         an HDF5 file ``*.h5`` or ``*.hdf5`` holding such an array (needs h5py); or a directory with
-        ``positions.csv`` (columns ``file,row,col``) and one CSV file a listed curve. A stack is returned as it is.
+        ``positions.csv`` (columns ``file,row,col``) and one CSV file a listed curve. A stack (this function's, or
+        anything with its ``shape``, ``read``, ``inputs``, ``source`` and ``close``) is returned as it is.
     dataset : str, optional
         The dataset of an HDF5 file (default ``"curves"``).
 
@@ -135,8 +136,9 @@ def open_stack(source: Any, dataset: str = "curves"):
     ((2, 3), (50,))
     >>> stack = mdr.curve_maps.open_stack("force-map.h5", dataset="forces")   # doctest: +SKIP
     """
-    if isinstance(source, (ArrayStack, DirectoryStack)):
-        return source
+    if isinstance(source, (ArrayStack, DirectoryStack)) or (callable(getattr(source, "read", None))
+                                                           and hasattr(source, "inputs")):
+        return source  # a stack: shape, read, inputs, source and close
     if isinstance(source, (str, os.PathLike)):
         path = os.fspath(source)
         if os.path.isdir(path):
@@ -158,33 +160,68 @@ def open_stack(source: Any, dataset: str = "curves"):
     return ArrayStack(np.asarray(source))
 
 
+class MapRow(dict):
+    """The values of one pixel, {name: number or text}, with the SI unit of each (`units`, as map.json's
+    ``column_units`` states them: "" for no quantity, "1" for a ratio) and the unit system of the numbers
+    (`unit_system`): what `mdr.fit_maps.fit_curve` returns. A per-curve function may return a plain dict instead (its
+    values without units, in SI)."""
+
+    def __init__(self, values: Mapping[str, Any], units: Mapping[str, str], unit_system: str = "SI"):
+        super().__init__(values)
+        self.units, self.unit_system = dict(units), unit_system
+
+
 @dataclass
 class CurveMap:
-    """Per-pixel results: `values[name]` (ny, nx) float arrays (nan where a pixel has no value), `status` (ny, nx)
-    codes (OK, FAILED, NO_CURVE), `reasons` (ny, nx) strings ("" where ok), `batch` how the map ran
-    (mdr.distributed.MapOutcome without outputs)."""
+    """Per-pixel results: `values[name]` (ny, nx) arrays, float (nan where a pixel has no value) or, for a value that
+    is text, str ("" where a pixel has none), `status` (ny, nx) codes (OK, FAILED, NO_CURVE), `reasons` (ny, nx)
+    strings ("" where ok), `batch` how the map ran (mdr.distributed.MapOutcome without outputs), `units` the SI unit
+    of each value ("" where unknown), `unit_system` that of the numbers and `source` what the stack was read from."""
 
     values: dict[str, np.ndarray]
     status: np.ndarray
     reasons: np.ndarray
     batch: distributed.MapOutcome | None = None
+    units: dict[str, str] = field(default_factory=dict)
+    unit_system: str = "SI"
+    source: str = ""
 
     def summary(self) -> dict[str, Any]:
-        """map.json: the shape, the value names, the counts of each status, and how the map ran."""
-        batch = self.batch
-        return {"shape": list(self.status.shape), "values": list(self.values),
-                **{STATUS_NAMES[c].replace(" ", "_"): int(np.count_nonzero(self.status == c)) for c in STATUS_NAMES},
-                "scheduler": batch.scheduler if batch else None, "workers": batch.workers if batch else None,
-                "tasks": batch.tasks if batch else None, "retried": batch.retried if batch else None,
-                "wall_seconds": batch.seconds if batch else None}
+        """map.json as a dict: the layout of the command line's map.json (``mdr fit CASE --map FILE``), written by
+        the same C++: the grid's ``columns`` and ``rows`` (nx, ny; ``size`` and ``pixel_size`` 0: a stack states no
+        positions), ``pixels``, ``failed`` (pixels without values: failed or without a curve), ``source``, the unit
+        system and ``column_units`` (the unit of every value). How the map ran is ``batch``."""
+        return json.loads(self._summary_json())
+
+    def _summary_json(self) -> str:
+        from . import _mdr
+
+        ny, nx = self.status.shape
+        names = list(self.values)
+        return _mdr._map_summary_json(int(nx), int(ny), self.unit_system, self.source, names,
+                                      [self.units.get(name, "") for name in names], int(self.status.size),
+                                      int(np.count_nonzero(self.status != OK)))
 
     def write_files(self, directory: str, figures: bool = True) -> list[str]:
-        """Writes NAME.npy per value, status.npy, failures.csv (row,col,reason), map.json and, with `figures`, a
-        heat map NAME.png per value into an existing directory; returns the file names."""
+        """Writes NAME.npy per value that is a number, texts.csv (row,col and the values that are text, if any),
+        status.npy (the codes), failures.csv (row,col,status,reason), map.json (`summary`) and, with `figures`, a heat
+        map NAME.png per value that is a number and no pixel's place (mdr.map_figures.NOT_DRAWN) into an existing
+        directory; returns the file names."""
+        from .map_figures import NOT_DRAWN
+
         names = []
+        texts = [name for name, array in self.values.items() if array.dtype.kind != "f"]
         for name, array in self.values.items():
-            np.save(os.path.join(directory, f"{name}.npy"), array)
-            names.append(f"{name}.npy")
+            if name not in texts:
+                np.save(os.path.join(directory, f"{name}.npy"), array)
+                names.append(f"{name}.npy")
+        if texts:  # e.g. a fit's status, flags and failure: text, one line a pixel
+            with open(os.path.join(directory, "texts.csv"), "w", newline="", encoding="utf-8") as handle:
+                writer = csv.writer(handle)
+                writer.writerow(["row", "col", *texts])
+                for row, col in np.ndindex(self.status.shape):
+                    writer.writerow([row, col, *(self.values[name][row, col] for name in texts)])
+            names.append("texts.csv")
         np.save(os.path.join(directory, "status.npy"), self.status)
         with open(os.path.join(directory, "failures.csv"), "w", newline="", encoding="utf-8") as handle:
             writer = csv.writer(handle)
@@ -192,11 +229,12 @@ class CurveMap:
             for row, col in zip(*np.nonzero(self.status != OK)):
                 writer.writerow([row, col, STATUS_NAMES[int(self.status[row, col])], self.reasons[row, col]])
         with open(os.path.join(directory, "map.json"), "w", encoding="utf-8") as handle:
-            json.dump(self.summary(), handle, indent=2)
-            handle.write("\n")
+            handle.write(self._summary_json())
         names += ["status.npy", "failures.csv", "map.json"]
         if figures:
             for name, array in self.values.items():
+                if name in NOT_DRAWN or array.dtype.kind != "f":
+                    continue
                 heat_map(array, name).savefig(os.path.join(directory, f"{name}.png"), dpi=120)
                 names.append(f"{name}.png")
         return names
@@ -306,11 +344,19 @@ def map_curves(per_curve: Callable[[Any], Mapping[str, float]], stack: Any, *, s
             opened.close()
     batch.outputs = []
     names: list[str] = []
+    units: dict[str, str] = {}
+    unit_system = "SI"
     for result in results:
-        for name in result or {}:
+        if result is None:
+            continue
+        values_of, units_of, unit_system = result
+        units.update(units_of)
+        for name in values_of:
             if name not in names:
                 names.append(name)
-    values = {name: np.full((ny, nx), math.nan) for name in names}
+    texts = {name for result in results if result for name, value in result[0].items() if isinstance(value, str)}
+    values = {name: np.full((ny, nx), "", dtype=object) if name in texts else np.full((ny, nx), math.nan)
+              for name in names}
     status = np.full((ny, nx), OK, dtype=np.int8)
     reasons = np.full((ny, nx), "", dtype=object)
     for index, (result, error) in enumerate(zip(results, errors)):
@@ -319,9 +365,11 @@ def map_curves(per_curve: Callable[[Any], Mapping[str, float]], stack: Any, *, s
             status[row, col] = NO_CURVE if error == _NO_CURVE else FAILED
             reasons[row, col] = "" if error == _NO_CURVE else error
             continue
-        for name, value in result.items():
+        for name, value in result[0].items():
             values[name][row, col] = value
-    curve_map = CurveMap(values=values, status=status, reasons=reasons.astype(str), batch=batch)
+    values = {name: array.astype(str) if name in texts else array for name, array in values.items()}
+    curve_map = CurveMap(values=values, status=status, reasons=reasons.astype(str), batch=batch, units=units,
+                         unit_system=unit_system, source=str(opened.source))
     if directory is not None:
         directory.write(lambda temporary: curve_map.write_files(temporary, figures))
     return curve_map
@@ -342,13 +390,17 @@ class _Guarded:
     def __init__(self, per_curve: Callable[[Any], Mapping[str, float]]):
         self.per_curve = per_curve
 
-    def __call__(self, curve: Any) -> dict[str, float]:
+    def __call__(self, curve: Any) -> tuple[dict[str, float | str], dict[str, str], str]:
         if curve is None:
             raise NoCurve("no curve at this position")
         result = self.per_curve(curve)
         if not isinstance(result, Mapping):
             raise TypeError(f"the per-curve function returned {type(result).__name__}, not a dict of numbers")
-        return {str(name): float(value) for name, value in result.items()}
+        values = {str(name): value if isinstance(value, str) else math.nan if value is None else float(value)
+                  for name, value in result.items()}
+        if isinstance(result, MapRow):
+            return values, result.units, result.unit_system
+        return values, {}, "SI"
 
 
 class _LazyCurves(Sequence):

@@ -12,7 +12,8 @@ from typing import Any, Callable, Mapping, Sequence
 import numpy as np
 
 from ._arrays import real_array
-from .curve_maps import CurveMap, map_curves
+from ._case_tree import plain_tree
+from .curve_maps import CurveMap, MapRow, map_curves, open_stack
 from .fit_map_files import MapTable, fit_map_file, is_instrument_file
 
 #: The channels of a curve, in the order of the last axis of a stack (ny, nx, nt, 3), and the names of its columns.
@@ -24,8 +25,10 @@ class FitNotConverged(Exception):
 
 
 def fit_curve(curve: Any, case: Mapping[str, Any], time: Sequence[float] | None = None,
-              depth: Sequence[float] | None = None, columns: Mapping[str, str] | None = None) -> dict[str, float]:
-    """Fits one curve with mdr.fit: the per-curve function of `fit_map`.
+              depth: Sequence[float] | None = None, columns: Mapping[str, str] | None = None,
+              pixel: tuple[int, int, int] = (0, 0, 0)) -> MapRow:
+    """Fits one curve as a pixel of a map: the per-curve function of `fit_map`, the same C++ as a pixel of ``mdr fit
+    CASE --map FILE`` (mdr/fitcase/map_fit.hpp), whose row of map.csv it returns.
 
     Parameters
     ----------
@@ -33,17 +36,21 @@ def fit_curve(curve: Any, case: Mapping[str, Any], time: Sequence[float] | None 
         A dict of columns (named by `columns`), a (nt, 3) array of time [s], depth [m] and force [N], or a (nt,)
         array of force with the common `time` and `depth`.
     case : dict
-        A fit case (``[fit]`` table included) as a dict; its ``[[fit.data]]`` is not used.
+        A fit case (``[fit]`` table included) as a dict; its ``[[fit.data]]`` is not used; no model choice.
     time, depth : sequence of float, optional
         The common time [s] and depth [m] of curves given as force alone.
     columns : dict, optional
         The column names of a dict curve, ``{"time": name, "depth": name, "force": name}`` (default: those names).
+    pixel : tuple of int, optional
+        The curve's ``index`` in the stack (row-major), its ``column`` and its ``row``.
 
     Returns
     -------
-    dict
-        ``{key: value, key + "_stderr": standard error}`` for every free key, ``rms_residual`` and
-        ``evaluations``.
+    MapRow
+        The row of map.csv (docs/instrument-to-map.md): ``index``, ``column``, ``row``, ``x``, ``y`` (0: a stack
+        states no positions), every free key and ``KEY_stderr``, ``E_KEY`` and ``E_KEY_stderr`` for every Young
+        modulus, ``contact_height`` (-contact point), ``residual_to_noise``, ``noise``, ``status``, ``flags`` and
+        ``failure``, with the unit of each (``units``) and the case's unit system.
 
     Raises
     ------
@@ -60,10 +67,10 @@ def fit_curve(curve: Any, case: Mapping[str, Any], time: Sequence[float] | None 
     >>> case = {"material": {"model": "elastic", "G": 3e5}, "indenter": {"shape": "sphere", "R": 1e-3},
     ...         "fit": {"free": ["material.G"], "contact_point": "fixed", "baseline": "fixed"}}
     >>> values = mdr.fit_maps.fit_curve(F, case, time=t, depth=d)
-    >>> round(values["material.G"] / 1e6, 4), sorted(values)
-    (1.0, ['evaluations', 'material.G', 'material.G_stderr', 'rms_residual'])
+    >>> round(values["material.G"] / 1e6, 4), values["status"], values.units["material.G"]
+    (1.0, 'converged', 'Pa')
     """
-    from .fitting import fit
+    from . import _mdr
 
     if isinstance(curve, Mapping):
         names = {channel: (columns or {}).get(channel, channel) for channel in CHANNELS}
@@ -77,16 +84,34 @@ def fit_curve(curve: Any, case: Mapping[str, Any], time: Sequence[float] | None 
         else:
             raise ValueError(f"curve: an array of shape {array.shape}; must be (nt, 3) time, depth, force, or (nt,) "
                              f"force with time= and depth= given")
-    result = fit(case, data=[data])
-    if not result.status.startswith("converged"):  # "converged, misfit" is a result: its flag says so
-        raise FitNotConverged(result.status)
-    values: dict[str, float] = {}
-    for key, value in result.parameters.items():
-        values[key] = value
-        values[key + "_stderr"] = result.standard_errors.get(key, math.nan)
-    values["rms_residual"] = float(result.summary.get("rms_residual", math.nan))
-    values["evaluations"] = float(result.summary.get("evaluations", math.nan))
-    return values
+    arrays = [real_array(data[channel], channel) for channel in CHANNELS]
+    index, column, row = pixel
+    values, units, unit_system = _mdr._fit_map_curve(plain_tree(case), "case", os.getcwd(), *arrays, index, column,
+                                                     row)
+    if not values["status"].startswith("converged"):  # "converged, misfit" is a result: its flag says so
+        raise FitNotConverged(values["status"])
+    return MapRow(values, units, unit_system)
+
+
+class _NumberedStack:
+    """A stack whose curves come with their place: (index, column, row, curve), None where it has no curve."""
+
+    def __init__(self, stack: Any):
+        self.stack, self.shape, self.inputs, self.source = stack, stack.shape, stack.inputs, stack.source
+
+    def read(self, start: int, stop: int) -> list:
+        nx = self.shape[1]
+        return [None if curve is None else (index, index % nx, index // nx, curve)
+                for index, curve in zip(range(start, stop), self.stack.read(start, stop))]
+
+    def close(self) -> None:
+        self.stack.close()
+
+
+def _fit_pixel(numbered: tuple, **settings: Any) -> MapRow:
+    """fit_curve of one curve of a _NumberedStack."""
+    index, column, row, curve = numbered
+    return fit_curve(curve, pixel=(index, column, row), **settings)
 
 
 def fit_map(case: str | os.PathLike | Mapping[str, Any], stack: Any, *, time: Sequence[float] | None = None,
@@ -156,6 +181,12 @@ def fit_map(case: str | os.PathLike | Mapping[str, Any], stack: Any, *, time: Se
             case = tomllib.load(handle)
     case = dict(case)
     case["fit"] = {key: value for key, value in dict(case.get("fit", {})).items() if key != "data"}
-    per_curve = functools.partial(fit_curve, case=case, time=None if time is None else real_array(time, "time"),
+    per_curve = functools.partial(_fit_pixel, case=case, time=None if time is None else real_array(time, "time"),
                                   depth=None if depth is None else real_array(depth, "depth"), columns=columns)
-    return map_curves(per_curve, stack, scheduler=scheduler, jobs=jobs, out=out, figures=figures, progress=progress)
+    opened = open_stack(stack)
+    try:
+        return map_curves(per_curve, _NumberedStack(opened), scheduler=scheduler, jobs=jobs, out=out, figures=figures,
+                          progress=progress)
+    finally:
+        if opened is not stack:
+            opened.close()

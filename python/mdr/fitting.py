@@ -32,10 +32,11 @@ class FitResult:
         Everything ``fit.json`` holds: intervals, correlation, undetermined parameters, per-curve contact point
         and baseline, residual and noise, AIC, BIC, evaluations, wall time.
     curves : list of dict
-        Per curve: ``name``, ``kind`` (``"curve"``), ``fitted`` (``"force"`` or ``"depth"``), ``t``, ``measured``,
-        ``model`` and ``drive`` (numpy arrays). Rebound data give one entry per quantity (``kind`` ``"rebound"``,
-        ``fitted`` ``"restitution"`` or ``"contact_time"``) with ``t`` holding the approach speeds v0 and an
-        empty ``drive``. Numbers in the case's units (``summary["units"]``).
+        Per curve: ``name``, ``kind`` (``"curve"``), ``fitted`` (``"force"`` or ``"depth"``) and the columns of
+        curves.csv as numpy arrays: ``t`` (nan where the file records no time), ``measured``, ``model``,
+        ``residual`` (model - measured) and ``drive``. Rebound data give one entry per quantity (``kind``
+        ``"rebound"``, ``fitted`` ``"restitution"`` or ``"contact_time"``) with ``t`` holding the approach speeds v0
+        and ``drive`` nan. Numbers in the case's units (``summary["units"]``).
     fitted_case : str
         fitted.toml's text: the case with the fitted values; its ``[load]`` is the case's own, or the first curve's
         driving history (the contact point removed), as ``mdr fit`` writes it.

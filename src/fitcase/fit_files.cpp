@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mdr/fitcase/fit_columns.hpp"
 #include "mdr/io/csv_field.hpp"
 #include "mdr/io/document.hpp"
 #include "mdr/io/output_file.hpp"
@@ -16,17 +17,14 @@ using io::OutputFile;
 
 namespace {
 
-// A table of the material's functions over `x` with their 95 % bands: `x,f,f_lower,f_upper,...`.
-void write_bands(const std::filesystem::path& path, const std::string& x_name, const std::vector<double>& x,
-                 const std::vector<std::pair<std::string, fit::MaterialBand>>& bands) {
-    auto file = OutputFile(path);
-    file.print("{}", x_name);
-    for (const auto& band : bands) file.print(",{0},{0}_lower,{0}_upper", band.first);
+// A table of the fitted material (material_tables): its header, then one line per row.
+void write_material_table(const std::filesystem::path& directory, const MaterialTable& table) {
+    auto file = OutputFile(directory / table.file);
+    for (std::size_t c = 0; c < table.columns.size(); ++c) file.print("{}{}", c ? "," : "", table.columns[c].name);
     file.print("\n");
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        file.print("{}", x[i]);
-        for (const auto& band : bands) {
-            file.print(",{},{},{}", band.second.value[i], band.second.lower[i], band.second.upper[i]);
+    for (std::size_t i = 0; i < table.columns.front().values->size(); ++i) {
+        for (std::size_t c = 0; c < table.columns.size(); ++c) {
+            file.print("{}{}", c ? "," : "", (*table.columns[c].values)[i]);
         }
         file.print("\n");
     }
@@ -204,22 +202,22 @@ void write_fit_result(const std::filesystem::path& directory, const FitCase& fit
     json.close();
 
     auto csv = OutputFile(directory / "curves.csv");
-    csv.print("curve,t,measured,model,residual,drive\n");
+    csv.print("curve");
+    for (const CurveColumn& column : curve_columns()) csv.print(",{}", column.name);
+    csv.print("\n");
     for (const auto& curve : result.curves) {
         // Rebound data: one row per impact, named NAME:restitution or NAME:contact_time, t holding the speed v0.
         const std::string name = csv_field(curve.rebound ? curve.name + ":" + quantity_name(curve) : curve.name);
         for (std::size_t i = 0; i < curve.time.size(); ++i) {
-            csv.print("{},{},{},{},{},{}\n", name, curve.time_recorded ? curve.time[i] : NAN, curve.measured[i],
-                      curve.model[i], curve.model[i] - curve.measured[i], i < curve.drive.size() ? curve.drive[i] : NAN);
+            csv.print("{}", name);
+            for (const CurveColumn& column : curve_columns()) csv.print(",{}", column.value(curve, i));
+            csv.print("\n");
         }
     }
     csv.close();
 
-    const auto& material = result.material;
-    if (!material.times.empty()) {
-        write_bands(directory / "functions.csv", "t", material.times, {{"G", material.relaxation}, {"J", material.creep}});
-        write_bands(directory / "dynamic.csv", "omega", material.omegas,
-                    {{"storage", material.storage}, {"loss", material.loss}});
+    if (!result.material.times.empty()) {
+        for (const MaterialTable& table : material_tables(result.material)) write_material_table(directory, table);
     }
 
     auto toml = OutputFile(directory / "fitted.toml");

@@ -76,6 +76,31 @@ void require_map_time(instrument::CurveFile& file, const FitCase& fit_case, cons
     }
 }
 
+namespace {
+
+/// Fits `curve` alone with `fit_case` into `pixel` (fit_map_pixel, fit_curve_pixel): make_problem, validate, fit,
+/// the plausibility flags and the contact's height below `tip_height_zero`; the fit's data points are released.
+void fit_pixel(const FitCase& fit_case, fit::Curve curve, double tip_height_zero, PixelFit& pixel) {
+    std::vector<fit::Curve> curves;
+    curves.push_back(std::move(curve));
+    fit::FitProblem problem = make_problem(fit_case, std::move(curves));
+    fit::validate(problem);
+    fit::FitResult result = fit::fit(problem);
+    fit::add_plausibility_flags(problem, plausibility_units(fit_case), result);
+    // The depth is measured down from tip_height_zero: the contact lies that far below.
+    pixel.contact_height = tip_height_zero - result.curves.front().contact_depth;
+    // A row needs no data points: release them, so that a map holds a few numbers per pixel, not its curve.
+    for (fit::CurveFit& fitted : result.curves) {
+        for (std::vector<double>* points : {&fitted.time, &fitted.measured, &fitted.model, &fitted.drive}) {
+            std::vector<double>().swap(*points);
+        }
+        std::vector<std::array<double, 2>>().swap(fitted.history);
+    }
+    pixel.result = std::move(result);
+}
+
+}  // namespace
+
 PixelFit fit_map_pixel(const FitCase& fit_case, const std::filesystem::path& path, instrument::CurveFile& file,
                        std::size_t index) {
     const io::UnitSystem& system = io::unit_system(fit_case.units);
@@ -97,22 +122,8 @@ PixelFit fit_map_pixel(const FitCase& fit_case, const std::filesystem::path& pat
         source.instrument = true;
         source.curve = index;
         double tip_height_zero = 0.0;
-        std::vector<fit::Curve> curves;
-        curves.push_back(fit::instrument_fit_curve(raw, source, &tip_height_zero));
-        fit::FitProblem problem = make_problem(one, std::move(curves));
-        fit::validate(problem);
-        fit::FitResult result = fit::fit(problem);
-        fit::add_plausibility_flags(problem, plausibility_units(fit_case), result);
-        // The depth is measured down from tip_height_zero (afm_depth_and_force): the contact lies that far below.
-        pixel.contact_height = tip_height_zero - result.curves.front().contact_depth;
-        // A row needs no data points: release them, so that a map holds a few numbers per pixel, not its curve.
-        for (fit::CurveFit& curve : result.curves) {
-            for (std::vector<double>* points : {&curve.time, &curve.measured, &curve.model, &curve.drive}) {
-                std::vector<double>().swap(*points);
-            }
-            std::vector<std::array<double, 2>>().swap(curve.history);
-        }
-        pixel.result = std::move(result);
+        fit::Curve curve = fit::instrument_fit_curve(raw, source, &tip_height_zero);
+        fit_pixel(one, std::move(curve), tip_height_zero, pixel);
     } catch (const Interrupted&) {
         throw;
     } catch (const InvalidInput& error) {
@@ -120,6 +131,21 @@ PixelFit fit_map_pixel(const FitCase& fit_case, const std::filesystem::path& pat
     } catch (const std::runtime_error& error) {
         pixel.failure = error.what();
     }
+    return pixel;
+}
+
+PixelFit fit_curve_pixel(const FitCase& fit_case, fit::Curve curve, std::size_t index, std::size_t column,
+                         std::size_t row) {
+    if (!fit_case.model_choice.empty()) {
+        throw InvalidInput("fit", "(with fit.candidates or [fit.spectrum])",
+                           "a map fits the case's own material per pixel; choose the model on one curve first");
+    }
+    PixelFit pixel;
+    pixel.index = index;
+    pixel.column = column;
+    pixel.row = row;
+    pixel.placed = true;  // at its column and row; x and y are 0: a stack states no positions
+    fit_pixel(fit_case, std::move(curve), 0.0, pixel);
     return pixel;
 }
 
@@ -246,32 +272,38 @@ void write_map_table(const std::filesystem::path& path, const MapRows& table) {
     io::write_text_file(path, text);
 }
 
-void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const FitCase& fit_case,
-                       const std::filesystem::path& source, const MapRows& table) {
-    const std::string& units = fit_case.units;
+Document map_summary(const MapLayout& layout, const std::string& units, const std::string& source,
+                     const std::vector<std::string>& columns, const std::vector<std::string>& column_units,
+                     std::size_t pixels, std::size_t failed) {
     const io::UnitSystem& system = io::unit_system(units);
     // map.json lists its keys, and the columns of column_units, by name.
-    Document::Table column_units;
-    for (std::size_t c = 0; c < table.columns.size(); ++c) {
-        const std::string& unit = table.units[c];
-        column_units.push_back({table.columns[c], {unit.empty() || unit == "1" ? unit : system.names(unit)}});
+    Document::Table named_units;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+        const std::string& unit = column_units.at(c);
+        named_units.push_back({columns[c], {unit.empty() || unit == "1" ? unit : system.names(unit)}});
     }
-    std::sort(column_units.begin(), column_units.end(), [](const auto& a, const auto& b) { return a.key < b.key; });
+    std::sort(named_units.begin(), named_units.end(), [](const auto& a, const auto& b) { return a.key < b.key; });
     const auto pixel_size = [](double size, std::size_t count) { return count ? size / double(count) : 0.0; };
-    const Document summary{Document::Table{
-        {"column_units", {std::move(column_units)}},
+    return Document{Document::Table{
+        {"column_units", {std::move(named_units)}},
         {"columns", {layout.columns}},
-        {"failed", {table.failed}},
+        {"failed", {failed}},
         {"length_size", {system.length_size}},
         {"length_unit", {std::string(system.length)}},
         {"pixel_size", {Document::List{{pixel_size(layout.size_x, layout.columns)},
                                        {pixel_size(layout.size_y, layout.rows)}}}},
-        {"pixels", {table.rows.size()}},
+        {"pixels", {pixels}},
         {"rows", {layout.rows}},
         {"size", {Document::List{{layout.size_x}, {layout.size_y}}}},
-        {"source", {source.string()}},
+        {"source", {source}},
         {"units", {units}},
     }};
+}
+
+void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const FitCase& fit_case,
+                       const std::filesystem::path& source, const MapRows& table) {
+    const Document summary = map_summary(layout, fit_case.units, source.string(), table.columns, table.units,
+                                         table.rows.size(), table.failed);
     io::write_text_file(path, io::to_json(summary, 1) + "\n");
 }
 

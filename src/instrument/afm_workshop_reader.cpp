@@ -20,6 +20,8 @@ Curve parse_export(std::string_view text, const std::string& file, const ReadOpt
     if (!looks_like_afm_workshop(text)) {
         throw InvalidInput(file, "(first line)", "must be 'Force-Distance Curve' (an AFM Workshop export)");
     }
+    // Not mdr::CsvFile: the export may be a member of a zip (text in memory, not a file), its columns follow
+    // `name:<TAB>value` lines, and a shorter segment's fields are empty, which CsvFile refuses in a row.
     const auto lines = split_lines(text);
     Curve curve;
     curve.source = file;

@@ -10,6 +10,7 @@ import pathlib
 import random
 import subprocess
 
+import numpy as np
 import pytest
 
 import mdr
@@ -135,3 +136,33 @@ def test_a_fitted_case_without_a_load_drives_the_first_curve():
     assert load["control"] == "displacement"
     assert [point[0] for point in load["history"]] == pytest.approx(t, rel=1e-15, abs=0.0)
     assert [point[1] for point in load["history"]] == pytest.approx(d, rel=1e-15, abs=0.0)
+
+
+def read_columns(path: pathlib.Path) -> dict[str, list[str]]:
+    """A CSV file's columns by header, as text."""
+    import csv
+
+    with open(path, newline="", encoding="utf-8") as handle:
+        rows = list(csv.reader(handle))
+    return {name: [row[c] for row in rows[1:]] for c, name in enumerate(rows[0])}
+
+
+def test_the_curves_and_material_arrays_are_the_columns_of_curves_csv_functions_csv_and_dynamic_csv(mdr_binary,
+                                                                                                    tmp_path):
+    """mdr.fit's curves have exactly curves.csv's columns (`curve` being each entry's name; `residual` = model -
+    measured included) and its material arrays exactly those of functions.csv and dynamic.csv, with their values:
+    both are written from one declaration (mdr/fitcase/fit_columns.hpp)."""
+    case = write_case(tmp_path, "elastic")
+    result = mdr.fit(case)
+    out = command_line_fit(mdr_binary, case)
+    curves = read_columns(out / "curves.csv")
+    (curve,) = result.curves
+    assert [key for key in curve if key not in ("name", "kind", "fitted")] == list(curves)[1:]
+    assert [curve["name"]] * len(curve["t"]) == curves["curve"]
+    for key in list(curves)[1:]:
+        np.testing.assert_array_equal(curve[key], [float(value) for value in curves[key]], err_msg=key)
+    np.testing.assert_array_equal(curve["residual"], curve["model"] - curve["measured"])
+    tables = {**read_columns(out / "functions.csv"), **read_columns(out / "dynamic.csv")}
+    assert sorted(result.material) == sorted(tables)
+    for key, values in tables.items():
+        np.testing.assert_array_equal(result.material[key], [float(value) for value in values], err_msg=key)

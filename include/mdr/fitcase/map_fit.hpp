@@ -54,6 +54,14 @@ void require_map_case(const FitCase& fit_case);
 PixelFit fit_map_pixel(const FitCase& fit_case, const std::filesystem::path& path, instrument::CurveFile& file,
                        std::size_t index);
 
+/// Fits `curve`, the curve of pixel (`column`, `row`) of a stack of arrays (`mdr.fit_map` on an array, an HDF5 file or
+/// a folder of curves), alone with `fit_case`, as fit_map_pixel fits a curve of a file: the pixel is placed at
+/// `column` and `row` with x and y 0 (a stack states no positions), and its `contact_height` is -contact point (the
+/// depth is measured down from height 0). Throws mdr::InvalidInput (key `fit`) for a case with a model choice, and
+/// passes on the fit's errors (bad data: mdr::InvalidInput), which the caller reports as the pixel's.
+PixelFit fit_curve_pixel(const FitCase& fit_case, fit::Curve curve, std::size_t index, std::size_t column,
+                         std::size_t row);
+
 /// Fits the curves 0 to `count` - 1 of the instrument file at `path` (`count` its size) with fit_map_pixel on
 /// `threads` threads (at most one a curve), each with its own opening of the file and its own copy of the case, so
 /// that they share nothing mutable; the pixels are returned in the file's order, the same whatever `threads`.
@@ -98,10 +106,16 @@ MapRows map_rows(const std::vector<PixelFit>& pixels, const FitCase& fit_case);
 /// std::runtime_error when the file cannot be written.
 void write_map_table(const std::filesystem::path& path, const MapRows& table);
 
-/// Writes map.json: `source` (the map file), `units`, `length_unit` and `length_size` (m) of the case's unit
-/// system, the grid's `columns` and `rows`, its `size` and `pixel_size` (x, y) in that length unit, the number of
-/// `pixels` and of `failed` ones (no fit), and `column_units`: the unit of every column of map.csv (MapRows::units)
-/// in the case's system. Throws std::runtime_error when the file cannot be written.
+/// map.json as a document: `source` (the map file, or the stack), `units`, `length_unit` and `length_size` (m) of the
+/// unit system `units`, the grid's `columns` and `rows`, its `size` and `pixel_size` (x, y) in that length unit, the
+/// number of `pixels` and of `failed` ones (no fit), and `column_units`: the unit of each of `columns` (SI symbols,
+/// `column_units`, as MapRows::units; "" for no quantity, "1" for a ratio) in that unit system, sorted by column.
+Document map_summary(const MapLayout& layout, const std::string& units, const std::string& source,
+                     const std::vector<std::string>& columns, const std::vector<std::string>& column_units,
+                     std::size_t pixels, std::size_t failed);
+
+/// Writes map.json (map_summary of `table` with the case's units, io::to_json indented by 1). Throws
+/// std::runtime_error when the file cannot be written.
 void write_map_summary(const std::filesystem::path& path, const MapLayout& layout, const FitCase& fit_case,
                        const std::filesystem::path& source, const MapRows& table);
 

@@ -109,7 +109,9 @@ def test_the_result_directory_holds_arrays_figures_and_failures(tmp_path):
     np.testing.assert_array_equal(np.load(out / "status.npy"), result.status)
     assert (out / "failures.csv").read_text().splitlines()[1].startswith("0,0,failed,ValueError: the curve has")
     summary = json.loads((out / "map.json").read_text())
-    assert summary["shape"] == [NY, NX] and summary["failed"] == 1 and summary["ok"] == NY * NX - 1
+    assert (summary["rows"], summary["columns"]) == (NY, NX)  # map.json of `mdr fit --map`: its layout
+    assert summary["failed"] == 1 and summary["pixels"] == NY * NX
+    assert summary["column_units"] == {"G": "", "G_stderr": ""}  # a plain dict of numbers states no units
     mdr.map_curves(fit_hertz, curves, jobs=2, out=out)  # mdr's own directory is replaced
 
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mdr/error.hpp"
+#include "mdr/fit/curve.hpp"
 #include "mdr/fitcase/fit_case.hpp"
 #include "mdr/fitcase/map_fit.hpp"
 #include "mdr/instrument/read_curves.hpp"
@@ -143,6 +144,58 @@ TEST(MapFit, AMapStoppedByItsProgressEndsWithTheProgresssException) {
     const FitCase fit_case = parse_fit_case(map_case, "map.toml", ".");
     EXPECT_THROW(fit_map_pixels(fit_case, vendor_map, 3, 2, [](std::size_t, std::size_t) { throw Interrupted(); }),
                  Interrupted);
+}
+
+/// map_case without its [[fit.data]] table, as mdr.fit_map on a stack of arrays parses it.
+std::string stack_case() {
+    const std::string text = map_case;
+    return text.substr(0, text.find("[[fit.data]]"));
+}
+
+/// Hertz (docs/theory.md eq. 31, E* = 4 G for nu = 1/2): F = (16/3) G sqrt(R) d^(3/2) [SI], contact at d = 0 after an
+/// approach.
+fit::Curve hertz_curve(double shear_modulus, double radius) {
+    std::vector<double> time, depth, force;
+    for (int i = 0; i <= 60; ++i) {
+        time.push_back(i / 60.0);
+        depth.push_back(3.0e-7 * time.back() - 1.0e-7);
+        force.push_back(16.0 / 3.0 * shear_modulus * std::sqrt(radius) * std::pow(std::max(depth.back(), 0.0), 1.5));
+    }
+    return fit::make_curve("curve", time, depth, force);
+}
+
+TEST(MapFit, ACurveOfAStackIsAPixelWithTheRowOfAFilesPixel) {
+    const FitCase fit_case = parse_fit_case(stack_case(), "stack.toml", ".");
+    const double shear_modulus = 2000.0;
+    const PixelFit pixel = fit_curve_pixel(fit_case, hertz_curve(shear_modulus, 5.0e-6), 5, 2, 1);
+    ASSERT_TRUE(pixel.result.has_value());
+    EXPECT_NEAR(pixel.result->values.at(0), shear_modulus, 1e-3 * shear_modulus);
+    EXPECT_TRUE(pixel.placed);
+    EXPECT_EQ(pixel.index, 5u);
+    EXPECT_EQ(pixel.column, 2u);
+    EXPECT_EQ(pixel.row, 1u);
+    EXPECT_EQ(pixel.x, 0.0);
+    EXPECT_EQ(pixel.y, 0.0);
+    EXPECT_EQ(pixel.contact_height, -pixel.result->curves.front().contact_depth);  // measured down from height 0
+
+    const FitCase file_case = parse_fit_case(map_case, "map.toml", ".");
+    instrument::CurveFile file(vendor_map);
+    const MapRows from_stack = map_rows({pixel}, fit_case);
+    const MapRows from_file = map_rows({fit_map_pixel(file_case, vendor_map, file, 0)}, file_case);
+    EXPECT_EQ(from_stack.columns, from_file.columns);
+    EXPECT_EQ(from_stack.units, from_file.units);
+}
+
+TEST(MapFit, ACurveOfAStackRefusesAModelChoiceNamingFit) {
+    const std::string text = stack_case();
+    const std::string candidates = "candidates = [\"elastic\", \"standard\"]\n";
+    const FitCase fit_case = parse_fit_case(text.substr(0, text.find("free")) + candidates, "stack.toml", ".");
+    try {
+        fit_curve_pixel(fit_case, hertz_curve(2000.0, 5.0e-6), 0, 0, 0);
+        FAIL() << "a model choice was fitted per pixel";
+    } catch (const InvalidInput& error) {
+        EXPECT_EQ(error.key(), "fit");
+    }
 }
 
 }  // namespace
