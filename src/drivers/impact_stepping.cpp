@@ -126,11 +126,7 @@ StepState ImpactStepping::state(std::size_t step, bool ended) const {
 }
 
 StepState ImpactStepping::step(std::size_t n) {
-    if (time_ >= numerics_.time_limit) {
-        throw InvalidInput("load.end", format_value(numerics_.time_limit),
-                           "the contact has not ended by then (velocity v = " + format_value(velocity_) +
-                               "): the indenter does not rebound in time; give a later load.end");
-    }
+    require_before_end(time_, numerics_.time_limit, velocity_);
     // Land exactly on snapshot times (the recorder takes each at the first state at or after it).
     while (next_cut_ < cuts_.size() && cuts_[next_cut_] <= time_) ++next_cut_;
     const double step = next_cut_ < cuts_.size() ? std::min(numerics_.time_step, cuts_[next_cut_] - time_)
