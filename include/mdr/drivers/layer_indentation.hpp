@@ -18,9 +18,9 @@ namespace mdr::drivers {
 double layer_poisson_ratio(const ContactCase& contact_case);
 
 /// Throws mdr::InvalidInput (key `layer` or the offending key, its value and the rule) for a case with a `[layer]`
-/// that needs what is not built on a layer yet: an oblique impact, tangential loading, snapshots in an impact, a
-/// compressible body whose Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio). Does nothing
-/// for a case without a layer.
+/// that needs what is not built on a layer yet: an oblique impact, tangential loading, a compressible body whose
+/// Poisson ratio changes in time or a deformable indenter (layer_poisson_ratio). Does nothing for a case without a
+/// layer.
 void validate_layer(const ContactCase& contact_case);
 
 /// Runs a displacement-, force- or spring-controlled case on its layer: the elastic layer's force F_el(d) at unit
