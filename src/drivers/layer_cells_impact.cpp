@@ -1,10 +1,10 @@
 #include "layer_cells_impact.hpp"
 
 #include <algorithm>
-#include <vector>
 
 #include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/drivers/work_estimate.hpp"
+#include "impact_clock.hpp"
 #include "impact_end.hpp"
 #include "layer_cells.hpp"
 #include "layer_snapshot.hpp"
@@ -24,11 +24,9 @@ IndentationResult run_layer_cells_impact(const ContactCase& contact_case, double
     LayerCells layer(contact_case.material, *contact_case.layer, layer_poisson_ratio(contact_case),
                      *contact_case.indenter, largest_radius, cells);
     const double mass = contact_case.impact()->mass, approach = contact_case.impact()->velocity;
-    std::vector<double> cuts = contact_case.snapshots;
-    std::sort(cuts.begin(), cuts.end());
+    ImpactClock clock(contact_case.snapshots, numerics.time_step);
     SnapshotSchedule snapshots(contact_case.snapshots);
-    std::size_t next_cut = 0;
-    double time = 0.0, depth = 0.0, velocity = approach, force = 0.0, contact_radius = 0.0;
+    double depth = 0.0, velocity = approach, force = 0.0, contact_radius = 0.0;
     // The rows by the half-space's recorder, then the caller's observers; a stop ends the run with its state.
     ObserverList observed(std::max<std::size_t>(contact_case.numerics.output_every, 1));
     RowRecorder rows(result, row_columns(contact_case.control));
@@ -37,16 +35,16 @@ IndentationResult run_layer_cells_impact(const ContactCase& contact_case, double
     // Hands the state after step n to the observers, then takes the snapshots due; returns whether the run ends.
     const auto notify = [&](std::size_t n) {
         StepState state{.step = n,
-                        .time = time,
+                        .time = clock.time(),
                         .depth = depth,
                         .force = force,
                         .velocity = velocity,
-                        .fraction = std::min(time / numerics.time_limit, 1.0),
+                        .fraction = std::min(clock.time() / numerics.time_limit, 1.0),
                         .last = result.impact.has_value(),
                         .layer_contact_radius = contact_radius};
         const bool ends = observed.notify(state);
-        for (std::size_t due = snapshots.due(time); due > 0; --due) {
-            result.snapshots.push_back(cells_snapshot(layer, contact_radius, time));
+        for (std::size_t due = snapshots.due(clock.time()); due > 0; --due) {
+            result.snapshots.push_back(cells_snapshot(layer, contact_radius, clock.time()));
         }
         return ends;
     };
@@ -55,34 +53,32 @@ IndentationResult run_layer_cells_impact(const ContactCase& contact_case, double
         return result;
     }
     for (std::size_t n = 1;; ++n) {
-        require_before_end(time, numerics.time_limit, velocity);
-        // Land exactly on snapshot times, as the half-space impact (ImpactStepping::step).
-        while (next_cut < cuts.size() && cuts[next_cut] <= time) ++next_cut;
-        const double step =
-            next_cut < cuts.size() ? std::min(numerics.time_step, cuts[next_cut] - time) : numerics.time_step;
+        require_before_end(clock.time(), numerics.time_limit, velocity);
+        const double step = clock.step();  // landing exactly on the snapshot times, as the half-space impact
         // Trapezoidal rule for m d'' = -F (eq. 37), as ImpactStepping: F(d1) + (4m/dt^2)(d1 - d0 - v0 dt) = -F0.
         const double spring = 4.0 * mass / (step * step);
         const LayerCellState state = layer.step_inertial(step, spring * (depth + velocity * step) - force, spring,
                                                          velocity);
         ++result.steps;
-        require_steps_within_bound(contact_case, numerics, result.steps, time);
+        require_steps_within_bound(contact_case, numerics, result.steps, clock.time());
         double new_velocity = 2.0 * (state.depth - depth) / step - velocity;
         if (state.force == 0.0 && force > 0.0) {
             // The contact shrinks to the axis and is lost where the edge function there (eq. L19) crosses zero,
             // located linearly over the step (LayerCellState::touching_part; the step's end if the axis still
             // touches without a cell in contact).
             const double fraction = state.touching ? 1.0 : state.touching_part.second;
-            result.impact = impact_outcome({.mass = mass, .approach = approach, .time = time, .time_step = step,
-                                            .velocity = velocity, .force = force, .fraction = fraction});
+            result.impact = impact_outcome({.mass = mass, .approach = approach, .time = clock.time(),
+                                            .time_step = step, .velocity = velocity, .force = force,
+                                            .fraction = fraction});
             new_velocity = -result.impact->rebound_velocity;
         }
-        time += step;
+        clock.advance();
         depth = state.depth;
         force = state.force;
         velocity = new_velocity;
         contact_radius = state.contact_radius;
         const bool ends = notify(n);
-        if (progress) progress(std::min(time / numerics.time_limit, 1.0));
+        if (progress) progress(std::min(clock.time() / numerics.time_limit, 1.0));
         if (ends) {
             result.stopped = observed.stopped();
             return result;
