@@ -1,12 +1,13 @@
 #include "impact_clock.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace mdr::drivers {
 
 namespace {
 
-// A snapshot time within this fraction of a step beyond a full step is landed on by that step.
+// A snapshot time within this fraction of a step after a step's end is that end (the summed steps' round-off).
 constexpr double landing_slack = 1e-9;
 
 }  // namespace
@@ -18,15 +19,12 @@ ImpactClock::ImpactClock(std::vector<double> snapshots, double time_step)
 }
 
 double ImpactClock::step() const {
-    if (next_cut_ < cuts_.size() && cuts_[next_cut_] - time_ <= (1.0 + landing_slack) * time_step_) {
-        return cuts_[next_cut_] - time_;
-    }
-    return time_step_;
+    return next_cut_ < cuts_.size() ? std::min(time_step_, cuts_[next_cut_] - time_) : time_step_;
 }
 
 void ImpactClock::advance() {
-    const bool lands = next_cut_ < cuts_.size() && cuts_[next_cut_] - time_ <= (1.0 + landing_slack) * time_step_;
-    time_ = lands ? cuts_[next_cut_] : time_ + time_step_;
+    time_ += step();
+    if (next_cut_ < cuts_.size() && cuts_[next_cut_] - time_ <= landing_slack * time_step_) time_ = cuts_[next_cut_];
     while (next_cut_ < cuts_.size() && cuts_[next_cut_] <= time_) ++next_cut_;
 }
 

@@ -7,10 +7,10 @@
 
 namespace mdr::drivers {
 
-/// Steps of `time_step` [s] from t = 0, each cut to end on the next snapshot time; a snapshot time within 1e-9 of a
-/// step beyond a full one is landed on by that step (the summed steps' round-off would otherwise leave a step of
-/// ~1e-19 s, whose trapezoidal rate 2 dd/dt - v0 turns the depth's round-off into any velocity), and a step that
-/// lands sets the time to the snapshot time itself.
+/// Steps of `time_step` [s] from t = 0, each cut to end on the next snapshot time, none longer; a step that ends
+/// within 1e-9 of a step before a snapshot time ends on it (the time set to it): the summed steps' round-off would
+/// otherwise leave a step of ~1e-19 s, whose trapezoidal rate 2 dd/dt - v0 turns the depth's round-off into any
+/// velocity.
 class ImpactClock {
 public:
     /// `snapshots` [s] in any order; `time_step` > 0 [s].
@@ -19,7 +19,7 @@ public:
     double time() const { return time_; }
     /// The length [s] of the next step from the current time.
     double step() const;
-    /// Ends the step of length step(): the time moves on by it, to the snapshot time itself where it lands on one.
+    /// Ends the step of length step(): the time moves on by it, to the snapshot time itself where it ends on one.
     void advance();
 
 private:
