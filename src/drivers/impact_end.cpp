@@ -4,7 +4,16 @@
 
 #include <stdexcept>
 
+#include "mdr/error.hpp"
+
 namespace mdr::drivers {
+
+void require_before_end(double time, double time_limit, double velocity) {
+    if (time < time_limit) return;
+    throw InvalidInput("load.end", format_value(time_limit),
+                       "the contact has not ended by then (velocity v = " + format_value(velocity) +
+                           "): the indenter does not rebound in time; give a later load.end");
+}
 
 ImpactOutcome impact_outcome(const ImpactEnd& end) {
     const double rebound = -(end.velocity - end.force * end.fraction * end.time_step / (2.0 * end.mass));

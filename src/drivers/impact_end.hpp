@@ -6,6 +6,10 @@
 
 namespace mdr::drivers {
 
+/// Throws mdr::InvalidInput (key `load.end`) when an impact at `time` [s] has reached `time_limit` [s] (the latest end,
+/// ResolvedNumerics::time_limit) still in contact, the indenter at `velocity` [m/s].
+void require_before_end(double time, double time_limit, double velocity);
+
 /// The step of an impact in which its last contact was lost.
 struct ImpactEnd {
     double mass = 0.0;       ///< m [kg]

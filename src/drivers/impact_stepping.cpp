@@ -103,9 +103,8 @@ ImpactStepping::ImpactStepping(const ContactCase& contact_case, const ResolvedNu
       mass_(impact.mass),
       approach_(impact.velocity),
       cache_(contact_case.material),
-      cuts_(contact_case.snapshots),
+      clock_(contact_case.snapshots, numerics.time_step),
       velocity_(impact.velocity) {
-    std::sort(cuts_.begin(), cuts_.end());
     if (impact.oblique) {
         oblique_.emplace(*impact.oblique, oblique_sphere(contact_case), mass_, contact_case.material, foundation);
     }
@@ -121,20 +120,15 @@ FoundationSnapshots::ShearStress ImpactStepping::shear_stress() {
 }
 
 StepState ImpactStepping::state(std::size_t step, bool ended) const {
-    return {.step = step, .time = time_, .depth = depth_, .force = force_, .velocity = velocity_,
-            .fraction = std::min(time_ / numerics_.time_limit, 1.0), .last = ended, .foundation = &foundation_};
+    return {.step = step, .time = clock_.time(), .depth = depth_, .force = force_, .velocity = velocity_,
+            .fraction = std::min(clock_.time() / numerics_.time_limit, 1.0), .last = ended,
+            .foundation = &foundation_};
 }
 
 StepState ImpactStepping::step(std::size_t n) {
-    if (time_ >= numerics_.time_limit) {
-        throw InvalidInput("load.end", format_value(numerics_.time_limit),
-                           "the contact has not ended by then (velocity v = " + format_value(velocity_) +
-                               "): the indenter does not rebound in time; give a later load.end");
-    }
+    require_before_end(clock_.time(), numerics_.time_limit, velocity_);
     // Land exactly on snapshot times (the recorder takes each at the first state at or after it).
-    while (next_cut_ < cuts_.size() && cuts_[next_cut_] <= time_) ++next_cut_;
-    const double step = next_cut_ < cuts_.size() ? std::min(numerics_.time_step, cuts_[next_cut_] - time_)
-                                                 : numerics_.time_step;
+    const double step = clock_.step();
     foundation_.begin_step(cache_.get(step), velocity_);
     // Trapezoidal rule for m d'' = -F (eq. 37): d1 = d0 + (v0 + v1) dt/2, v1 = v0 - (F0 + F1) dt/(2m), i.e.
     // F(d1) + (4m/dt^2)(d1 - d0 - v0 dt) = -F0, monotone in d1.
@@ -147,15 +141,15 @@ StepState ImpactStepping::step(std::size_t n) {
     const double new_depth = solve_depth(foundation_, depth_, guess, scale, -force_, spring, anchor);
     foundation_.advance(depth_, new_depth);
     for (std::size_t i = 0; i < inner_exits_.size(); ++i) {
-        if (foundation_.inner_exit(i) >= 0.0) inner_exits_[i] = time_ + foundation_.inner_exit(i) * step;
+        if (foundation_.inner_exit(i) >= 0.0) inner_exits_[i] = clock_.time() + foundation_.inner_exit(i) * step;
     }
     const double new_force = foundation_.total_force();
-    require_steps_within_bound(contact_case_, numerics_, n, time_);
+    require_steps_within_bound(contact_case_, numerics_, n, clock_.time());
     // The stop rule: every element has left (eq. 39).
     const bool ended = new_force == 0.0 && force_ > 0.0;
     const double new_velocity = ended ? end_contact(step) : 2.0 * (new_depth - depth_) / step - velocity_;
     if (oblique_ && !ended) oblique_->step(cache_.get(step), step);
-    time_ += step;
+    clock_.advance();
     depth_ = new_depth;
     force_ = new_force;
     velocity_ = new_velocity;
@@ -165,8 +159,9 @@ StepState ImpactStepping::step(std::size_t n) {
 double ImpactStepping::end_contact(double time_step) {
     // The last element left where its force crossed zero inside the step (located by the foundation).
     const double fraction = foundation_.latest_exit();
-    ImpactOutcome outcome = impact_outcome({.mass = mass_, .approach = approach_, .time = time_, .time_step = time_step,
-                                            .velocity = velocity_, .force = force_, .fraction = fraction});
+    ImpactOutcome outcome =
+        impact_outcome({.mass = mass_, .approach = approach_, .time = clock_.time(), .time_step = time_step,
+                        .velocity = velocity_, .force = force_, .fraction = fraction});
     // Where the contact shrinks to the axis, the exit times of the two innermost elements are linear in g near it,
     // so extrapolated there (Foundation::axis_weight) they give the end to O(dx^2), where the innermost element's
     // own exit is only O(dx) for a cone.

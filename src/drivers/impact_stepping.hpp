@@ -13,6 +13,7 @@
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/foundation/foundation.hpp"
+#include "impact_clock.hpp"
 #include "control_traits.hpp"
 #include "oblique_stepping.hpp"
 #include "observer_list.hpp"
@@ -53,11 +54,9 @@ private:
     double mass_;      ///< m [kg]
     double approach_;  ///< v0 [m/s]
     CoefficientCache cache_;
-    std::vector<double> cuts_;  ///< the snapshot times, ascending: each ends a step
-    std::size_t next_cut_ = 0;
+    ImpactClock clock_;  ///< the time, the steps landing on the snapshot times
     std::optional<ObliqueStepper> oblique_;
     std::optional<TangentialColumns<ObliqueStepper>> oblique_columns_;
-    double time_ = 0.0;
     double depth_ = 0.0;
     double velocity_;
     double force_ = 0.0;

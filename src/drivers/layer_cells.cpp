@@ -132,6 +132,19 @@ LayerCellState LayerCells::step_loaded(double time_step, double right_side, doub
     if (!(time_step > 0.0) && contact_ > 0 && material_->viscosity() > 0.0) {
         return jump(right_side - spring_constant * depth_);
     }
+    return solve_loaded(time_step, right_side, spring_constant, base, rate_, foundation::RateAtEntry::breaks);
+}
+
+LayerCellState LayerCells::step_inertial(double time_step, double right_side, double spring_constant,
+                                         double velocity) {
+    // Without contact F = 0 and d = right side / k; the dashpots see the indenter's own trapezoidal rate, continuous
+    // where a cell enters (the indenter's mass carries it, as in the half-space's impact).
+    return solve_loaded(time_step, right_side, spring_constant, right_side / spring_constant, velocity,
+                        foundation::RateAtEntry::continuous);
+}
+
+LayerCellState LayerCells::solve_loaded(double time_step, double right_side, double spring_constant, double base,
+                                        std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry) {
     // F(d) + k d = right side. On a contact set q is affine in d (eq. L17, L18): q(d) = q(0) + d slope u, u the
     // solution for Q = 4 on the set (unit_load) and slope = d(Q/4)/dd there, so F = F(0) + d slope 2 dx sum u.
     // Without contact F = 0: a spring's indenter hangs at its base; under force control it rests on the free
@@ -158,8 +171,7 @@ LayerCellState LayerCells::step_loaded(double time_step, double right_side, doub
         }
         return depth;
     };
-    return advance(time_step, load_for, spring_constant == 0.0 && right_side > 0.0, rate_,
-                   foundation::RateAtEntry::breaks);
+    return advance(time_step, load_for, spring_constant == 0.0 && right_side > 0.0, start_rate, rate_at_entry);
 }
 
 LayerCellState LayerCells::jump(double force) {

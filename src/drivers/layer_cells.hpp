@@ -68,6 +68,12 @@ public:
     /// dashpots take the change at one rate (jump); it throws mdr::InvalidInput (key `material.eta`) where that
     /// would pull the contact's edge off (a jump down) or where nothing was in contact before it.
     LayerCellState step_loaded(double time_step, double right_side, double spring_constant, double base);
+    /// Steps an indenter carried by its inertia (an impact) by `time_step` > 0 [s] to the depth at which F(d) + k d =
+    /// `right_side` [N], k = `spring_constant` > 0 [N/m] (the trapezoidal rule's 4m/dt^2, eq. 37); without contact
+    /// d = right side / k. A parallel dashpot sees the indenter's trapezoidal rate 2 dd/dt - `velocity` (its
+    /// velocity at the step's start [m/s], the equation of motion's own), in every cell in contact at the step's end,
+    /// one entering in the step too (foundation::RateAtEntry::continuous: the mass carries the rate).
+    LayerCellState step_inertial(double time_step, double right_side, double spring_constant, double velocity);
 
     /// The cells' width dx [m]: cell i is centred at (i + 1/2) dx.
     double spacing() const { return spacing_; }
@@ -85,6 +91,10 @@ private:
     template <class LoadRule>
     LayerCellState advance(double time_step, const LoadRule& load_for, bool needs_contact,
                            std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry);
+    // step_loaded and step_inertial: the depth at which F(d) + k d = `right_side`, `base` without contact (k > 0);
+    // the dashpots' start rate and what an entering cell sees as advance takes them.
+    LayerCellState solve_loaded(double time_step, double right_side, double spring_constant, double base,
+                                std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry);
     // A jump of the force to `force` [N] at the committed depth against a parallel dashpot, the contact's cells all
     // in contact before it (step_loaded).
     LayerCellState jump(double force);

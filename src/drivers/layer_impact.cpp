@@ -50,11 +50,7 @@ IndentationResult run_layer_impact(const ContactCase& contact_case, const contac
         return result;
     }
     for (std::size_t n = 1;; ++n) {
-        if (time >= numerics.time_limit) {
-            throw InvalidInput("load.end", format_value(numerics.time_limit),
-                               "the contact has not ended by then (velocity v = " + format_value(velocity) +
-                                   "): the indenter does not rebound in time; give a later load.end");
-        }
+        require_before_end(time, numerics.time_limit, velocity);
         const double next_time = time + step;
         // Trapezoidal rule for m d'' = -F (eq. 37), as ImpactStepping: F(d1) + (4m/dt^2)(d1 - d0 - v0 dt) = -F0,
         // increasing in d1 in either phase (the force increases with the depth, theory.md "Layers").

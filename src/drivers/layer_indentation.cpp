@@ -15,6 +15,7 @@
 #include "mdr/drivers/work_estimate.hpp"
 #include "mdr/error.hpp"
 #include "mdr/numerics/monotone_root.hpp"
+#include "layer_cells_impact.hpp"
 #include "layer_impact.hpp"
 #include "layer_regrowing.hpp"
 #include "layer_shore.hpp"
@@ -95,11 +96,6 @@ void validate_layer(const ContactCase& contact_case) {
     }
     if (contact_case.oblique()) refuse("load.tangential_velocity", "[...]", "an oblique impact");
     if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
-    if (!contact_case.snapshots.empty() && contact_case.impact()) {
-        refuse("output.snapshots", "[...]",
-               "a snapshot in an impact (its contact recedes after the turn, where only the cells carry the surface "
-               "outside the contact, and they do not run an impact)");
-    }
     layer_poisson_ratio(contact_case);
     const auto& elements = contact_case.numerics.elements;
     if (elements && (*elements < 2 || *elements > max_layer_nodes)) {  // LayerContact and LayerCells need 2
@@ -340,6 +336,11 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
 IndentationResult run_layer_indentation(const ContactCase& contact_case, const ProgressObserver& progress,
                                         const StepObservers& observers) {
     validate_layer(contact_case);
+    // An impact's contact recedes after the turn, where a snapshot needs the surface outside it, which only the cells
+    // carry (eq. L27): with snapshots (or NumericsOptions::layer_cells) it runs on the cells from the start.
+    if (contact_case.impact() && (!contact_case.snapshots.empty() || contact_case.numerics.layer_cells)) {
+        return run_layer_cells_impact(contact_case, largest_contact_radius(contact_case), progress, observers);
+    }
     // A harmonic load's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19); a
     // fit's model runs any history there (NumericsOptions::layer_cells).
     if (contact_case.load.harmonic || contact_case.numerics.layer_cells) {

@@ -238,13 +238,6 @@ BAD_CASES = [
      case_text(material=MATERIAL + '[material.bulk]\nmodel = "standard"\nK_inf = 3.0e6\nK1 = 6.0e6\ntau1 = 0.3\n',
                extra='[layer]\nthickness = 1.0e-3\ninterface = "bonded"\n'),
      ["material.bulk", "K(t)/G(t) must be constant in time on a [layer]"]),
-    # issue 28: snapshots on a layer are built, but not in an impact (its receding contact's surface is the cells'
-    # alone, which do not run an impact; docs/theory.md eq. L27)
-    ("layer-impact-snapshots",
-     case_text(indenter=INDENTER + "mass = 0.03\n", load='[load]\ncontrol = "impact"\nvelocity = 0.1\nend = 1.0e-3\n',
-               numerics='[numerics]\ntime_step = 1.0e-5\n',
-               extra='[layer]\nthickness = 1.0e-3\ninterface = "bonded"\n[output]\nsnapshots = [1.0e-4]\n'),
-     ["output.snapshots", "a snapshot in an impact", "not built on a [layer] yet"]),
     # issue 28: a jump of the force down in contact against a parallel dashpot on the cells pulls the contact's edge
     # off at once (not built; a jump up is), found when the run reaches it
     ("layer-cells-force-jump-down-against-a-dashpot",

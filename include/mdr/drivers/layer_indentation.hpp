@@ -18,9 +18,9 @@ namespace mdr::drivers {
 double layer_poisson_ratio(const ContactCase& contact_case);
 
 /// Throws mdr::InvalidInput (key `layer` or the offending key, its value and the rule) for a case with a `[layer]`
-/// that needs what is not built on a layer yet: an oblique impact, tangential loading, snapshots in an impact, a
-/// compressible body whose Poisson ratio changes in time, a deformable indenter (layer_poisson_ratio) or a Shore test
-/// against a parallel dashpot (`material.eta`). Does nothing for a case without a layer.
+/// that needs what is not built on a layer yet: an oblique impact, tangential loading, a compressible body whose
+/// Poisson ratio changes in time, a deformable indenter (layer_poisson_ratio) or a Shore test against a parallel
+/// dashpot (`material.eta`). Does nothing for a case without a layer.
 void validate_layer(const ContactCase& contact_case);
 
 /// Runs a displacement-, force- or spring-controlled case on its layer: the elastic layer's force F_el(d) at unit
@@ -35,7 +35,9 @@ void validate_layer(const ContactCase& contact_case);
 /// phase), spring control likewise F(d) + k d = k z (F = k (z - d)), and in a force pause F(d) = the force held
 /// (eq. L22; the base z = d + F / k, shifted after it as on the half-space, PausedBase); a parallel dashpot then sees
 /// the trapezoidal rate of the solved depth, and takes a force jump at a fixed depth (LayerStepper::jump). An impact
-/// runs run_layer_impact (src/drivers/layer_impact.hpp). `numerics.elements` is the least number of Gauss nodes over
+/// runs run_layer_impact (src/drivers/layer_impact.hpp), or with snapshots (or NumericsOptions::layer_cells)
+/// run_layer_cells_impact on cells from the start (src/drivers/layer_cells_impact.hpp: the surface outside its receding
+/// contact is theirs alone). `numerics.elements` is the least number of Gauss nodes over
 /// the contact (default contact::default_layer_nodes).
 /// A Shore test (`control = "shore"`) is that spring control with the durometer's spring, its base step at the
 /// landing and the half-space's reading columns (ShoreRecorder); the layer solves the durometer's tip
