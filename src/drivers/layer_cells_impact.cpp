@@ -25,14 +25,17 @@ IndentationResult run_layer_cells_impact(const ContactCase& contact_case, double
                      *contact_case.indenter, largest_radius, cells);
     const double mass = contact_case.impact()->mass, approach = contact_case.impact()->velocity;
     ImpactClock clock(contact_case.snapshots, numerics.time_step);
-    SnapshotSchedule snapshots(contact_case.snapshots);
     double depth = 0.0, velocity = approach, force = 0.0, contact_radius = 0.0;
-    // The rows by the half-space's recorder, then the caller's observers; a stop ends the run with its state.
+    // The rows and the snapshots (of the cells) by the half-space's recorders, then the caller's observers; a stop
+    // ends the run with its state.
     ObserverList observed(std::max<std::size_t>(contact_case.numerics.output_every, 1));
     RowRecorder rows(result, row_columns(contact_case.control));
     observed.add(rows);
+    CellSnapshots cell_snapshots(layer);
+    SnapshotRecorder snapshots(contact_case.snapshots, cell_snapshots, result);
+    observed.add(snapshots);
     observed.add(observers);
-    // Hands the state after step n to the observers, then takes the snapshots due; returns whether the run ends.
+    // Hands the state after step n to the observers; returns whether the run ends.
     const auto notify = [&](std::size_t n) {
         StepState state{.step = n,
                         .time = clock.time(),
@@ -42,11 +45,7 @@ IndentationResult run_layer_cells_impact(const ContactCase& contact_case, double
                         .fraction = std::min(clock.time() / numerics.time_limit, 1.0),
                         .last = result.impact.has_value(),
                         .layer_contact_radius = contact_radius};
-        const bool ends = observed.notify(state);
-        for (std::size_t due = snapshots.due(clock.time()); due > 0; --due) {
-            result.snapshots.push_back(cells_snapshot(layer, contact_radius, clock.time()));
-        }
-        return ends;
+        return observed.notify(state);
     };
     if (notify(0)) {
         result.stopped = true;
