@@ -37,34 +37,39 @@ std::size_t panel_points(double max_eta) {
     return points;
 }
 
-// values[j] = k(j spacing) = sum_n weighted_defect[n] cos(u_n j spacing) and slopes[j] = k'(j spacing), the
-// quadrature of eq. L4 and its derivative. cos(u eta_j) and sin(u eta_j) by rotating with exp(i u spacing) from
-// eta = 0 (rounding grows ~j 1e-16), four nodes at a time: four independent rotations per step of j (the rotation of
-// one node is a chain of dependent multiplications), and values and slopes read and written once per four nodes.
-// The node count is a multiple of lanes (whole panels of panel_points).
+// values[j] = k(j spacing) = sum_n weighted_defect[n] cos(u_n j spacing), slopes[j] = k'(j spacing) and curvatures[j]
+// = k''(j spacing), the quadrature of eq. L4 and its first two derivatives. cos(u eta_j) and sin(u eta_j) by rotating
+// with exp(i u spacing) from eta = 0 (rounding grows ~j 1e-16), four nodes at a time: four independent rotations per
+// step of j (the rotation of one node is a chain of dependent multiplications), and the table read and written once
+// per four nodes. The node count is a multiple of lanes (whole panels of panel_points).
 void tabulate(const std::vector<double>& nodes, const std::vector<double>& weighted_defect, double spacing,
-              std::vector<double>& values, std::vector<double>& slopes) {
+              std::vector<double>& values, std::vector<double>& slopes, std::vector<double>& curvatures) {
     for (std::size_t first = 0; first < nodes.size(); first += lanes) {
-        double step_cos[lanes], step_sin[lanes], cosine[lanes], sine[lanes], weight[lanes], slope_weight[lanes];
+        double step_cos[lanes], step_sin[lanes], cosine[lanes], sine[lanes], weight[lanes], slope_weight[lanes],
+            curvature_weight[lanes];
         for (std::size_t l = 0; l < lanes; ++l) {
-            step_cos[l] = std::cos(nodes[first + l] * spacing);
-            step_sin[l] = std::sin(nodes[first + l] * spacing);
+            const double u = nodes[first + l];
+            step_cos[l] = std::cos(u * spacing);
+            step_sin[l] = std::sin(u * spacing);
             cosine[l] = 1.0;
             sine[l] = 0.0;
             weight[l] = weighted_defect[first + l];
-            slope_weight[l] = weighted_defect[first + l] * nodes[first + l];
+            slope_weight[l] = weighted_defect[first + l] * u;
+            curvature_weight[l] = weighted_defect[first + l] * u * u;
         }
         for (std::size_t j = 0; j < values.size(); ++j) {
-            double value = 0.0, slope = 0.0;
+            double value = 0.0, slope = 0.0, curvature = 0.0;
             for (std::size_t l = 0; l < lanes; ++l) {
                 value += weight[l] * cosine[l];  // eq. L4
                 slope -= slope_weight[l] * sine[l];
+                curvature -= curvature_weight[l] * cosine[l];
                 const double next_cosine = cosine[l] * step_cos[l] - sine[l] * step_sin[l];
                 sine[l] = sine[l] * step_cos[l] + cosine[l] * step_sin[l];
                 cosine[l] = next_cosine;
             }
             values[j] += value;
             slopes[j] += slope;
+            curvatures[j] += curvature;
         }
     }
 }
@@ -120,21 +125,25 @@ LayerKernel::LayerKernel(LayerInterface interface, double poisson_ratio, double 
             weighted_defect.push_back(width * rule.weights[i] * layer_compliance_defect(interface, poisson_ratio, u));
         }
     }
-    std::vector<double> values(points, 0.0), slopes(points, 0.0);
-    tabulate(nodes, weighted_defect, table_spacing, values, slopes);
-    // The cubic Hermite polynomial on [eta_j, eta_j+1] in t = eta / spacing - j from the values v and the slopes
-    // times the spacing m at both ends: v_j + m_j t + (3 (v_j+1 - v_j) - 2 m_j - m_j+1) t^2 + (2 (v_j - v_j+1) + m_j
-    // + m_j+1) t^3.
+    std::vector<double> values(points, 0.0), slopes(points, 0.0), curvatures(points, 0.0);
+    tabulate(nodes, weighted_defect, table_spacing, values, slopes, curvatures);
+    // The quintic Hermite polynomial on [eta_j, eta_j+1] in t = eta / spacing - j from the values v, the slopes times
+    // the spacing m and the curvatures times its square c at both ends: v_j + m_j t + (c_j / 2) t^2 + b3 t^3 + b4 t^4
+    // + b5 t^5, b3..b5 from p(1) = v_j+1, p'(1) = m_j+1, p''(1) = c_j+1.
     last_interval_ = points - 2;
-    coefficients_.resize(4 * (points - 1));
+    coefficients_.resize(coefficients_per_interval * (points - 1));
     for (std::size_t j = 0; j + 1 < points; ++j) {
-        const double v0 = values[j], v1 = values[j + 1];
+        const double rise = values[j + 1] - values[j];
         const double m0 = table_spacing * slopes[j], m1 = table_spacing * slopes[j + 1];
-        double* c = &coefficients_[4 * j];
-        c[0] = v0;
-        c[1] = m0;
-        c[2] = 3.0 * (v1 - v0) - 2.0 * m0 - m1;
-        c[3] = 2.0 * (v0 - v1) + m0 + m1;
+        const double c0 = table_spacing * table_spacing * curvatures[j];
+        const double c1 = table_spacing * table_spacing * curvatures[j + 1];
+        double* b = &coefficients_[coefficients_per_interval * j];
+        b[0] = values[j];
+        b[1] = m0;
+        b[2] = 0.5 * c0;
+        b[3] = 10.0 * rise - 6.0 * m0 - 4.0 * m1 - 1.5 * c0 + 0.5 * c1;
+        b[4] = -15.0 * rise + 8.0 * m0 + 7.0 * m1 + 1.5 * c0 - c1;
+        b[5] = 6.0 * rise - 3.0 * m0 - 3.0 * m1 - 0.5 * c0 + 0.5 * c1;
     }
     inverse_spacing_ = 1.0 / table_spacing;
     max_eta_ = table_spacing * static_cast<double>(points - 1);

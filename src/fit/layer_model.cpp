@@ -37,7 +37,8 @@ LayerElasticForce::LayerElasticForce(const contact::Layer& layer, double poisson
     }
     // The nodes LayerContact takes for the widest contact, at every radius: Q(s) stays smooth (a count that changes
     // with the radius changes the force by its discretisation error).
-    const auto fixed_nodes = std::max(nodes, 6 * static_cast<std::size_t>(std::ceil(widest / layer.thickness)));
+    const auto fixed_nodes =
+        std::max(nodes, contact::nodes_per_thickness * static_cast<std::size_t>(std::ceil(widest / layer.thickness)));
     const contact::LayerContact solver(layer, poisson_ratio, indenter_, widest, fixed_nodes);
     // One solve per node at a given contact radius a (no root finding), the nodes Chebyshev's in log(1 + a/h) up to
     // the radius at largest_depth; s = the half-space's radius at each node's depth follows a closely, so the nodes

@@ -210,6 +210,26 @@ TEST(LayerContact, ForceConvergesInTheNumberOfNodes) {
     }
 }
 
+TEST(LayerContact, ThinFilmConvergesInTheNodesPerThickness) {
+    // A colloidal probe on a thin film (issue 28): sphere R = 1000 h, a = 64 h, bonded and sliding, incompressible.
+    // The thin layer's Nystroem matrix has a condition of ~(a/h)^3 (bonded: L(u) ~ u^3 at low u, eq. L1), which
+    // amplifies the kernel table's error: with the cubic Hermite table the default (then 6 per thickness) was 5.6e-6
+    // of the depth off. With the quintic table the default 5 per thickness is within 1e-9 of 10 per thickness, and
+    // more nodes are never worse (the default takes 5 x 64 = 320 here).
+    const std::shared_ptr<const mdr::profile::Profile> probe = mdr::profile::make_sphere(1000.0 * thickness);
+    const double a = 64.0 * thickness;
+    for (const auto interface : {LayerInterface::bonded, LayerInterface::sliding}) {
+        const auto at = [&](std::size_t nodes) {
+            return LayerContact(Layer{thickness, interface}, 0.5, probe, 1.5 * a, nodes).at_radius(a);
+        };
+        const auto reference = at(640), standard = at(mdr::contact::default_layer_nodes), finer = at(480);
+        const double depth_error = std::abs(standard.depth / reference.depth - 1.0);
+        EXPECT_LT(depth_error, 1e-9);
+        EXPECT_LT(std::abs(standard.force / reference.force - 1.0), 1e-9);
+        EXPECT_LE(std::abs(finer.depth / reference.depth - 1.0), depth_error + 1e-12);
+    }
+}
+
 TEST(LayerContact, StiffnessIsTheForcesDerivativeInDepth) {
     // dF/dd = 2 int q_d at the contact (the force-free edge moves F at second order): against a central difference
     // of the force at depths solved by radius, on a thick, a medium and a thin bonded layer (a/h = 0.1, 1, 4).
@@ -273,13 +293,15 @@ TEST(LayerContact, VeryThickLayerIsTheFlatTippedConesHalfSpace) {
 
 TEST(LayerContact, FlatTippedConeConvergesFastInTheNodes) {
     // The graded panel beyond the kink makes the line load smooth in its variable: at a = 3.5 b the force is within
-    // 1e-6 of the closed form at any node count (the panels' minimum), and on a bonded layer as thick as the contact
+    // 3e-6 of the closed form at the panels' minimum (4 + 4 nodes, below 5 per thickness: 2.8e-6; 4 + 5 below the
+    // former 6 per thickness: under 1e-6) and within 1e-6 from 8 nodes, and on a bonded layer as thick as the contact
     // it converges fast towards 256 nodes, to the kernel table's ~1e-9 (measured 7.6e-6 at 6 nodes, 2.4e-10 at 12).
     // (The plain rule over [0, a]: first order, oscillating, 1.9e-3 at 48.)
     const double a = 3.5 * flat_tip;
     for (const std::size_t nodes : {2u, 8u, 48u}) {
         const LayerContact contact(Layer{1e3, LayerInterface::bonded}, 0.5, flat_tipped_cone(), 12.0 * flat_tip, nodes);
-        EXPECT_NEAR(contact.at_radius(a).force / flat_tipped_force(a), 1.0, 1e-6) << nodes << " nodes";
+        EXPECT_NEAR(contact.at_radius(a).force / flat_tipped_force(a), 1.0, nodes == 2u ? 3e-6 : 1e-6)
+            << nodes << " nodes";
     }
     const auto force = [&](std::size_t nodes) {
         return LayerContact(Layer{a, LayerInterface::bonded}, 0.5, flat_tipped_cone(), 12.0 * flat_tip, nodes)

@@ -175,7 +175,7 @@ TEST(LayerShore, StandardSolidSheetConvergesInTheNodes) {
     for (const int nodes : {48, 96, 192}) {
         const double error = std::abs(sheet_reading("A", nodes, 0.12) - a_reference);
         RecordProperty("error_A_" + std::to_string(nodes), fmt::format("{:.3g}", error));
-        EXPECT_LE(error, previous) << nodes;
+        EXPECT_LE(error, previous + 1e-12) << nodes;  // round-off from 96 nodes (2.1e-13, 2.2e-13 at 192)
         if (nodes == 48) {
             EXPECT_LT(error, 2e-3);  // measured 1.8e-11 (then 1.1e-12, 2.5e-13 at 96, 192)
         }

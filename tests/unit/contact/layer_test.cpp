@@ -57,6 +57,33 @@ TEST(LayerKernel, MatchesAdaptiveQuadrature) {
     }
 }
 
+// Midway between the table's nodes (spacing 0.02), where the interpolation's error is largest, against scipy's quad of
+// eq. L4 with weight cos (QAWO on [0, 40], epsabs 1e-15): to 1e-12 of k(0). A thin film's Nystroem matrix amplifies
+// the kernel's error by its condition, ~(a/h)^3 for a bonded incompressible layer: the cubic Hermite table's 1e-9
+// of k(0) moved the depth at a/h 64 by 5.6e-6 (docs/performance.md, issue 28).
+TEST(LayerKernel, MatchesAdaptiveQuadratureBetweenTableNodes) {
+    constexpr std::array<double, 5> eta{0.01, 0.25, 1.37, 2.33, 5.55};
+    struct Case {
+        LayerInterface interface;
+        double poisson_ratio;
+        std::array<double, 5> expected;
+    };
+    const std::array<Case, 3> cases{{
+        {LayerInterface::bonded, 0.5, {1.7700252311705658, 1.6549236264643905, 0.28497269674500453,
+                                       0.02386354829587703, -0.002805365259002518}},
+        {LayerInterface::sliding, 0.5, {1.1674977645571234, 1.1194650713856242, 0.39518739778567535,
+                                        0.10669421547348802, 0.016164569499470857}},
+        {LayerInterface::bonded, 0.3, {1.3767286621912818, 1.3010967245244043, 0.33414209255112737,
+                                       0.07858126645499469, 0.013034326518504738}},
+    }};
+    for (const auto& [interface, poisson_ratio, expected] : cases) {
+        const LayerKernel kernel(interface, poisson_ratio, 10.0);
+        for (std::size_t i = 0; i < eta.size(); ++i) {
+            EXPECT_NEAR(kernel(eta[i]), expected[i], 1e-12 * expected[0]) << "eta " << eta[i];
+        }
+    }
+}
+
 // A wide table, as a thin film's (a/h 40): the rotations that give cos(u eta_j) run 4000 steps, with the quadrature's
 // 9600 nodes in u; the tail, k ~ eta^-4, against scipy's quad of eq. L4 with weight cos (QAWO, epsabs 1e-15).
 TEST(LayerKernel, WideTableMatchesAdaptiveQuadrature) {

@@ -43,11 +43,11 @@ TEST(LayerModel, InterpolationMatchesTheLayerSolutionAtEveryDepth) {
     for (const auto& setting : settings) {
         const LayerElasticForce elastic(setting.layer, 0.5, setting.indenter, setting.largest_depth,
                                         contact::default_layer_nodes);
-        // The same Gauss nodes as the model takes (6 per thickness of its widest contact, at least 48): the
+        // The same Gauss nodes as the model takes (5 per thickness of its widest contact, at least 48): the
         // difference is the interpolation's alone.
         const double widest = 3.0 * setting.indenter->contact_radius(setting.largest_depth);
-        const auto nodes = std::max<std::size_t>(48, 6 * static_cast<std::size_t>(std::ceil(widest /
-                                                                                             setting.layer.thickness)));
+        const auto nodes = std::max<std::size_t>(
+            48, contact::nodes_per_thickness * static_cast<std::size_t>(std::ceil(widest / setting.layer.thickness)));
         const contact::LayerContact exact(setting.layer, 0.5, setting.indenter, widest, nodes);
         // Exact solutions at given contact radii (at_radius, no root finding: at_depth meets the depth to 1e-8 only,
         // the force to ~1.5e-8), at 41 radii up to the largest depth's.
