@@ -141,15 +141,19 @@ template <class Control, class... Fields>
 void def_constructor(py::class_<Control>& bound, const std::tuple<Fields...>& fields) {
     const auto make = [fields](typename ValueOf<Fields>::Keyword... values) {
         Control control{};
-        std::apply([&](const auto&... field) { ((control.*field.member = ValueOf<Fields>::from_keyword(values)), ...); },
-                   fields);
+        std::apply(
+            [&](const auto&... field) { ((control.*field.member = ValueOf<Fields>::from_keyword(values)), ...); },
+            fields);
         return control;
     };
     if constexpr (sizeof...(Fields) == 0) {
         bound.def(py::init(make));
     } else {
-        std::apply([&](const auto&... field) { bound.def(py::init(make), py::kw_only(), ValueOf<Fields>::keyword(field.name)...); },
-                   fields);
+        std::apply(
+            [&](const auto&... field) {
+                bound.def(py::init(make), py::kw_only(), ValueOf<Fields>::keyword(field.name)...);
+            },
+            fields);
     }
 }
 
@@ -160,7 +164,8 @@ py::list field_table() {
     py::list table;
     std::apply(
         [&](const auto&... field) {
-            (table.append(py::dict("name"_a = field.name, "unit"_a = field.unit, "documentation"_a = field.documentation,
+            (table.append(py::dict("name"_a = field.name, "unit"_a = field.unit,
+                                   "documentation"_a = field.documentation,
                                    "keyword"_a = !is_part<std::remove_cvref_t<decltype(field)>>,
                                    "argument"_a = ValueOf<decltype(field)>::argument_stub(),
                                    "property"_a = ValueOf<decltype(field)>::property_stub())),
@@ -192,9 +197,10 @@ void bind_control(py::module_& module) {
         std::vector<std::string> keywords;
         std::apply(
             [&](const auto&... field) {
-                (keywords.push_back(fmt::format(
-                     "{}={}", field.name,
-                     py::repr(py::cast(ValueOf<decltype(field)>::read(control.*field.member))).template cast<std::string>())),
+                (keywords.push_back(
+                     fmt::format("{}={}", field.name,
+                                 py::repr(py::cast(ValueOf<decltype(field)>::read(control.*field.member)))
+                                     .template cast<std::string>())),
                  ...);
             },
             keyword_fields<Control>());

@@ -352,7 +352,8 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
         const bool one_run = std::any_of(observers.begin(), observers.end(), [](const StepObserver* observer) {
             return observer != nullptr && observer->needs_one_run();  // a null one is refused by ObserverList
         });
-        const Showing showing = one_run && loading.driven != LayerDriven::impact ? Showing::once_in_class : Showing::live;
+        const Showing showing =
+            one_run && loading.driven != LayerDriven::impact ? Showing::once_in_class : Showing::live;
         return run_one_maximum(contact_case, monotone, observers, showing);
     } catch (const SnapshotOnCells&) {
         // A durometer's contact only grows; the cells have no stop.

@@ -101,7 +101,8 @@ struct ImpactControl {
 
     /// mass, velocity and oblique.
     static constexpr auto fields() {
-        return std::tuple{control_field("mass", &ImpactControl::mass, "kg", "m of the rigid indenter (`indenter.mass`)"),
+        return std::tuple{control_field("mass", &ImpactControl::mass, "kg",
+                                        "m of the rigid indenter (`indenter.mass`)"),
                           control_field("velocity", &ImpactControl::velocity, "m/s",
                                         "the approach speed v0 > 0 at first contact (`load.velocity`)"),
                           control_field("oblique", &ImpactControl::oblique, "",
