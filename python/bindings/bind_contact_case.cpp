@@ -221,48 +221,9 @@ drivers::ContactCase contact_case(const CaseArguments& given) {
     });
 }
 
-void bind_controls(py::module_& module) {
-    py::class_<drivers::DisplacementControl>(module, "DisplacementControl",
-                                             "The history prescribes the depth d(t) [m]; the force follows (eq. 16).")
-        .def(py::init<>())
-        .def("__repr__", [](const drivers::DisplacementControl&) { return "DisplacementControl()"; });
-    py::class_<drivers::ForceControl>(module, "ForceControl",
-                                      "The history prescribes the force F(t) >= 0 [N]; the depth is solved for each "
-                                      "step (eq. 19).")
-        .def(py::init<>())
-        .def("__repr__", [](const drivers::ForceControl&) { return "ForceControl()"; });
-    py::class_<drivers::SpringControl>(module, "SpringControl", R"doc(The history prescribes the base z(t) [m] of a
-linear spring k on the massless indenter: F = k (z - d), the spring unloaded at first contact.
-
-Parameters
-----------
-spring_constant : float
-    k [N/m] > 0 (``load.spring_constant``).
-force_pauses : sequence of (float, float), optional
-    Pauses (start, end) [s] over which the instrument's feedback holds the force (``load.force_pauses``).
-)doc")
-        .def(py::init([](Number spring_constant, const Points& force_pauses) {
-                 drivers::SpringControl control{.spring_constant = spring_constant};
-                 for (const auto& [start, end] : force_pauses) control.force_pauses.push_back({start, end});
-                 return control;
-             }),
-             py::kw_only(), py::arg("spring_constant"), py::arg("force_pauses") = Points{})
-        .def_readonly("spring_constant", &drivers::SpringControl::spring_constant, "k [N/m]")
-        .def_property_readonly(
-            "force_pauses",
-            [](const drivers::SpringControl& control) {
-                Points pauses;
-                for (const drivers::ForcePause& pause : control.force_pauses) {
-                    pauses.emplace_back(pause.start, pause.end);
-                }
-                return pauses;
-            },
-            "The pauses (start, end) [s].")
-        .def_readonly("shore", &drivers::SpringControl::shore, "The Shore test of a durometer's spring, or None.")
-        .def("__repr__", [](const drivers::SpringControl& control) {
-            return fmt::format("SpringControl(spring_constant={}, force_pauses={})", control.spring_constant,
-                               control.force_pauses.size());
-        });
+// The parts of the load: a Shore test and an oblique impact (parts of controls), a harmonic, numerics, a tangential
+// load and a layer.
+void bind_load_parts(py::module_& module) {
     py::class_<drivers::ShoreTest>(module, "ShoreTest", R"doc(A Shore durometer test (control = "shore"): the
 durometer's spring and the standard's indenter; the foot lands at t = 0 and the readings are measured at 1, 3 and
 15 s (docs/case-format.md, "Shore durometer"). A case with it takes no indenter and no history.
@@ -317,32 +278,6 @@ moment_of_inertia : float, optional
                                float_repr(oblique.spin),
                                optional_repr(oblique.moment_of_inertia));
         });
-    py::class_<drivers::ImpactControl>(module, "ImpactControl", R"doc(A rigid indenter of mass m hits the surface at
-t = 0 with speed v0 (eq. 37); the run ends when the contact does (eq. 39).
-
-Parameters
-----------
-mass : float
-    m [kg] (``indenter.mass``).
-velocity : float
-    v0 [m/s] > 0 (``load.velocity``).
-oblique : mdr.ObliqueImpact, optional
-    The tangential part of an oblique impact.
-)doc")
-        .def(py::init([](Number mass, Number velocity, std::optional<drivers::ObliqueImpactLoad> oblique) {
-                 return drivers::ImpactControl{mass, velocity, std::move(oblique)};
-             }),
-             py::kw_only(), py::arg("mass"), py::arg("velocity"), py::arg("oblique") = py::none())
-        .def_readonly("mass", &drivers::ImpactControl::mass)
-        .def_readonly("velocity", &drivers::ImpactControl::velocity)
-        .def_readonly("oblique", &drivers::ImpactControl::oblique)
-        .def("__repr__", [](const drivers::ImpactControl& control) {
-            return fmt::format("ImpactControl(mass={}, velocity={}{})", control.mass, control.velocity,
-                               control.oblique ? ", oblique=..." : "");
-        });
-}
-
-void bind_load_parts(py::module_& module) {
     py::class_<drivers::HarmonicLoad>(module, "Harmonic", R"doc(A harmonic part of a load: amplitude sin(2 pi f
 (t - start)) from start to end, held at its end value after it (``load.harmonic``, or a harmonic tangential load).
 
@@ -453,9 +388,9 @@ interface : str, optional
 }  // namespace
 
 void bind_contact_case(py::module_& module) {
+    bind_load_parts(module);  // first: the parts a control's keywords take
     bind_controls(module);
     module.attr("_load_controls") = load_control_classes(std::type_identity<drivers::LoadControl>{});
-    bind_load_parts(module);
     py::class_<drivers::ContactCase>(module, "ContactCase", R"doc(A contact case as objects: the library's
 drivers::ContactCase, checked at construction by the rules of a case file (mdr.InvalidInput naming the key).
 

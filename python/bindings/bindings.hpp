@@ -51,6 +51,9 @@ void bind_run(pybind11::module_& module);
 void bind_profile(pybind11::module_& module);
 /// _mdr._controls(): the registry of controls as data (the docs are checked against it).
 void bind_control_registry(pybind11::module_& module);
+/// The class of each type of drivers::LoadControl (mdr.DisplacementControl, ...), from its declared fields; the
+/// classes of the parts its fields hold (mdr.ShoreTest, mdr.ObliqueImpact) are bound before.
+void bind_controls(pybind11::module_& module);
 /// mdr.sweep: a case over a grid of numeric keys.
 void bind_sweep(pybind11::module_& module);
 /// mdr.distributed: result directories with the rules of --out, for the files Python writes.

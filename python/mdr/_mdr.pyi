@@ -10,11 +10,12 @@ import numpy.typing as npt
 _Scalar = float | int | np.floating[Any] | np.integer[Any]
 
 __version__: str
-# The public classes, which the mdr package exports (`from ._mdr import *`); tests/python/test_bindings.py checks this
-# list against the module's.
-__all__ = ["InvalidInput", "Material", "ConvertedMaterial", "Indenter", "DisplacementControl", "ForceControl",
-           "SpringControl", "ShoreTest", "ObliqueImpact", "ImpactControl", "Harmonic", "Numerics", "Tangential", "Layer",
+# The public classes, which the mdr package exports (`from ._mdr import *`), written from _mdr.__all__.
+# public names (scripts/material-reference)
+__all__ = ["InvalidInput", "Material", "ConvertedMaterial", "Indenter", "ShoreTest", "ObliqueImpact", "Harmonic",
+           "Numerics", "Tangential", "Layer", "DisplacementControl", "ForceControl", "ImpactControl", "SpringControl",
            "ContactCase", "Step", "Curve"]
+# end of public names
 
 class InvalidInput(ValueError):
     """Bad input: the message names the key, the value and the rule (`key = value: rule`)."""
@@ -123,27 +124,6 @@ class Indenter:
     def table(self) -> dict[str, Any]: ...
 
 # the load programme and the contact case (python/bindings/bind_contact_case.cpp)
-class DisplacementControl:
-    """The history prescribes the depth d(t) [m]."""
-
-    def __init__(self) -> None: ...
-
-class ForceControl:
-    """The history prescribes the force F(t) [N]."""
-
-    def __init__(self) -> None: ...
-
-class SpringControl:
-    """The history prescribes the base z(t) [m] of a spring k on the indenter: F = k (z - d)."""
-
-    def __init__(self, *, spring_constant: float, force_pauses: Sequence[tuple[float, float]] = ()) -> None: ...
-    @property
-    def spring_constant(self) -> float: ...
-    @property
-    def force_pauses(self) -> list[tuple[float, float]]: ...
-    @property
-    def shore(self) -> Optional[ShoreTest]: ...
-
 class ShoreTest:
     """A Shore durometer test: the durometer's spring and the standard's indenter."""
 
@@ -169,8 +149,22 @@ class ObliqueImpact:
     def moment_of_inertia(self) -> Optional[float]: ...
     def __repr__(self) -> str: ...
 
+# load controls (scripts/material-reference)
+class DisplacementControl:
+    """The history prescribes the depth d(t); the force follows (eq. 16)."""
+
+    def __init__(self) -> None: ...
+    def __repr__(self) -> str: ...
+
+class ForceControl:
+    """The history prescribes the force F(t) >= 0; the depth is solved for at each step (eq. 19)."""
+
+    def __init__(self) -> None: ...
+    def __repr__(self) -> str: ...
+
 class ImpactControl:
-    """A rigid indenter of mass m hits the surface at t = 0 with speed v0 (eq. 37)."""
+    """A rigid indenter of mass m meets the surface at speed v0 at t = 0 and moves by m d'' = -F (eq. 37) until it
+    leaves."""
 
     def __init__(self, *, mass: float, velocity: float, oblique: Optional[ObliqueImpact] = None) -> None: ...
     @property
@@ -179,10 +173,24 @@ class ImpactControl:
     def velocity(self) -> float: ...
     @property
     def oblique(self) -> Optional[ObliqueImpact]: ...
+    def __repr__(self) -> str: ...
 
-# What case.control gives: the alternatives of drivers::LoadControl (checked against _load_controls); the
-# constructor also takes a Shore test.
+class SpringControl:
+    """The history prescribes the base z(t) of a spring k in series with the massless indenter: F = k (z - d)."""
+
+    def __init__(self, *, spring_constant: float, force_pauses: Sequence[tuple[float, float]] = ()) -> None: ...
+    @property
+    def spring_constant(self) -> float: ...
+    @property
+    def force_pauses(self) -> list[tuple[float, float]]: ...
+    @property
+    def shore(self) -> Optional[ShoreTest]: ...
+    def __repr__(self) -> str: ...
+
+# What case.control gives: the alternatives of drivers::LoadControl, in its order (_load_controls).
 _LoadControl = DisplacementControl | ForceControl | ImpactControl | SpringControl
+# end of load controls
+# The constructor's control also takes a Shore test.
 _Control = _LoadControl | ShoreTest
 _load_controls: tuple[type, ...]
 

@@ -4,7 +4,7 @@
 // impact_stepping.hpp for an impact; every_control.hpp includes them all). The one loop (indentation.cpp), the rules
 // of a case (case_validation.cpp) and the default numerics (contact_case.cpp) visit LoadControl by visit_control,
 // which hands the traits of the type it meets, so a control without its specialisation does not compile, and none
-// of them lists the controls.
+// of them lists the controls; the drivers of a [layer] ask its `on_layer` (layer_loading.hpp).
 
 #include <type_traits>
 #include <variant>
@@ -26,6 +26,8 @@ namespace mdr::drivers {
 ///   (drivers::resolve_numerics);
 /// - `static std::vector<GridNode> grid(const ContactCase&, const ResolvedNumerics&, const Control&)`, its time grid
 ///   (drivers::indentation_grid);
+/// - `static LayerLoading on_layer(const ContactCase&, const Control&)`, how the drivers of a [layer] run it
+///   (layer_loading.hpp), or its refusal there (refuse_on_layer);
 /// - `static std::vector<ControlKind> rows()`, its rows of the table of controls (drivers::controls: name, one-line
 ///   documentation, history column, `[load]` keys with units; a spring has two, spring and shore), and
 ///   `static const char* row_name(const Control&)`, the name of the row of a value (drivers::control_kind).

@@ -207,4 +207,9 @@ std::vector<GridNode> ControlTraits<ImpactControl>::grid(const ContactCase& /*co
     throw InvalidInput("load.control", "\"impact\"", "has no history grid (its steps end at the contact's end)");
 }
 
+LayerLoading ControlTraits<ImpactControl>::on_layer(const ContactCase& /*contact_case*/, const ImpactControl& impact) {
+    if (impact.oblique) refuse_on_layer("load.tangential_velocity", "[...]", "an oblique impact");
+    return {.driven = LayerDriven::impact};
+}
+
 }  // namespace mdr::drivers

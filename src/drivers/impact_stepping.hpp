@@ -15,6 +15,7 @@
 #include "mdr/foundation/foundation.hpp"
 #include "impact_clock.hpp"
 #include "control_traits.hpp"
+#include "layer_loading.hpp"
 #include "oblique_stepping.hpp"
 #include "observer_list.hpp"
 #include "recorders.hpp"
@@ -84,6 +85,8 @@ struct ControlTraits<ImpactControl> {
     /// Throws mdr::InvalidInput (`load.control`): an impact's steps end at the contact's end, not on a history grid.
     static std::vector<GridNode> grid(const ContactCase& contact_case, const ResolvedNumerics& numerics,
                                       const ImpactControl& impact);
+    /// The layer's impact (run_layer_impact); an oblique one is refused (refuse_on_layer).
+    static LayerLoading on_layer(const ContactCase& contact_case, const ImpactControl& impact);
 };
 
 }  // namespace mdr::drivers

@@ -5,7 +5,6 @@
 #include <cstddef>
 #include <optional>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "mdr/contact/layer_contact.hpp"
@@ -17,6 +16,7 @@
 #include "mdr/numerics/monotone_root.hpp"
 #include "layer_cells_impact.hpp"
 #include "layer_impact.hpp"
+#include "layer_loading.hpp"
 #include "layer_regrowing.hpp"
 #include "layer_shore.hpp"
 #include "layer_snapshot.hpp"
@@ -42,17 +42,13 @@ constexpr std::size_t max_layer_nodes = 512;
 double largest_contact_radius(const ContactCase& contact_case) {
     const auto& indenter = *contact_case.indenter;
     if (indenter.is_flat_punch()) return indenter.max_radius();
-    const bool paused = contact_case.spring() && !contact_case.spring()->force_pauses.empty();
-    const bool bounded_by_force =
-        contact_case.impact() || paused || std::holds_alternative<ForceControl>(contact_case.control);
+    const LayerLoading loading = layer_loading(contact_case);
+    const bool bounded_by_force = loading.driven == LayerDriven::impact || loading.driven == LayerDriven::force ||
+                                  loading.paused();
     const double largest = contact_case.load.largest_value();
     const double half_space =
         bounded_by_force ? resolve_numerics(contact_case).half_width : indenter.contact_radius(largest);
     return std::min(indenter.max_radius(), contact::layer_radius_margin * half_space);
-}
-
-[[noreturn]] void refuse(const std::string& key, const std::string& value, const std::string& what) {
-    throw InvalidInput(key, value, what + " is not built on a [layer] yet (issue 28)");
 }
 
 // A contact that grows again after it shrank (reloading, or the recovering surface reaching the indenter again):
@@ -64,7 +60,7 @@ struct ContactRegrows {};
 
 double layer_poisson_ratio(const ContactCase& contact_case) {
     if (!contact_case.tangential_exact && !contact_case.bulk_material) {
-        refuse("indenter.material", "[...]", "a deformable indenter (two bodies)");
+        refuse_on_layer("indenter.material", "[...]", "a deformable indenter (two bodies)");
     }
     if (const auto ratio = body_poisson_ratio(contact_case)) return *ratio;
     const auto& bulk = *contact_case.bulk_material;
@@ -77,25 +73,15 @@ double layer_poisson_ratio(const ContactCase& contact_case) {
                        "same times, the moduli in one ratio)");
 }
 
-// The controls the layer drivers run (run_one_maximum, run_layer_regrowing, run_layer_impact), which test the control
-// by its type: with no catch-all, a new type of LoadControl does not compile in validate_layer until it is run or
-// refused on a layer here (docs/architecture.md, "A control").
-struct LayerControls {
-    void operator()(const DisplacementControl&) const {}
-    void operator()(const ForceControl&) const {}
-    void operator()(const SpringControl&) const {}
-    void operator()(const ImpactControl&) const {}
-};
-
 void validate_layer(const ContactCase& contact_case) {
     if (!contact_case.layer) return;
-    std::visit(LayerControls{}, contact_case.control);
     const auto& layer = *contact_case.layer;
     if (!(layer.thickness > 0.0) || !std::isfinite(layer.thickness)) {
         throw InvalidInput("layer.thickness", format_value(layer.thickness), "must be finite and > 0");
     }
-    if (contact_case.oblique()) refuse("load.tangential_velocity", "[...]", "an oblique impact");
-    if (contact_case.tangential) refuse("tangential", "[...]", "tangential loading");
+    // How the control runs on a layer, or its refusal (ControlTraits::on_layer: an oblique impact's).
+    const LayerLoading loading = layer_loading(contact_case);
+    if (contact_case.tangential) refuse_on_layer("tangential", "[...]", "tangential loading");
     layer_poisson_ratio(contact_case);
     const auto& elements = contact_case.numerics.elements;
     if (elements && (*elements < 2 || *elements > max_layer_nodes)) {  // LayerContact and LayerCells need 2
@@ -106,9 +92,9 @@ void validate_layer(const ContactCase& contact_case) {
     const double largest_radius = largest_contact_radius(contact_case);
     contact::check_layer_contact_radius(layer, largest_radius);
     // A rule of the parts, not of the run's course: `mdr check` and a sweep's validation refuse it too.
-    if (contact_case.shore() && contact_case.material.viscosity() > 0.0) {
-        refuse("material.eta", format_value(contact_case.material.viscosity()),
-               "a durometer's landing against a parallel dashpot");
+    if (loading.shore && contact_case.material.viscosity() > 0.0) {
+        refuse_on_layer("material.eta", format_value(contact_case.material.viscosity()),
+                        "a durometer's landing against a parallel dashpot");
     }
 }
 
@@ -153,7 +139,8 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     // profile is flat: its radius then, so that the solves' brackets grow from a non-zero step).
     const double solved_depth_scale = profile_depth > 0.0 && std::isfinite(profile_depth) ? profile_depth
                                                                                            : largest_radius;
-    if (contact_case.impact()) {
+    const LayerLoading loading = layer_loading(contact_case);
+    if (loading.driven == LayerDriven::impact) {
         return run_layer_impact(contact_case, layer, unit_plane_modulus, solved_depth_scale, result.numerics,
                                 progress, extra_observers);
     }
@@ -164,16 +151,14 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     const auto grid = indentation_grid(contact_case, result.numerics);
 
     const auto& material = contact_case.material;
-    const bool force_control = std::holds_alternative<ForceControl>(contact_case.control);
-    const bool spring = contact_case.spring() != nullptr;
+    const bool force_control = loading.driven == LayerDriven::force;
+    const bool spring = loading.driven == LayerDriven::spring_base;
     // Spring control: F = k (z - d), i.e. F(d) + k d = k z; force control: F(d) = the force (k = 0).
-    const double stiffness = spring ? contact_case.spring()->spring_constant : 0.0;
+    const double stiffness = loading.spring_constant;
     // In a force pause the feedback holds the force reached at its start (F(d) = that force, as under force control:
     // eq. L22); after it the base history resumes shifted from the z reached (PausedBase, as on the half-space).
     std::optional<PausedBase> paused;
-    if (spring && !contact_case.spring()->force_pauses.empty()) {
-        paused.emplace(contact_case.spring()->force_pauses, stiffness);
-    }
+    if (loading.paused()) paused.emplace(*loading.force_pauses, stiffness);
     // The depth's scale: the largest prescribed (under spring control the base's: d <= z while F >= 0).
     const double largest_depth = force_control ? solved_depth_scale : std::max(history.max_value(), 0.0);
     // The force of a trial depth is exact to ~1.5e-8 (the contact solve's depth to 1e-8): the depth solves' force
@@ -182,15 +167,14 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
     // A parallel dashpot sees the trapezoidal rate of the solved depth (docs/theory.md, section 3): from rest under
     // force control, unknown where a spring's indenter first touches (it hung at the moving base).
     const bool dashpot = material.viscosity() > 0.0;
-    const DashpotRate dashpot_rate{.trapezoidal = dashpot && !std::holds_alternative<DisplacementControl>(
-                                                                 contact_case.control),
+    const DashpotRate dashpot_rate{.trapezoidal = dashpot && loading.driven != LayerDriven::depth,
                                    .start = force_control ? std::optional<double>(0.0) : std::nullopt};
     LayerStepper stepper(material, layer, unit_plane_modulus, grid.front().time, largest_depth, dashpot_rate);
     const bool by_radius = !indenter->is_flat_punch();
     // A Shore test: the readings as on the half-space (normal_control.hpp). Its indenter's stop at the full extension
     // is never reached on a layer: Type D's spring force vanishes there, and Type A's contact reaches the rod (refused)
     // at a shallower depth (about 1.76 mm on the half-space, less on a layer).
-    const ShoreTest* shore = contact_case.shore();
+    const ShoreTest* shore = loading.shore;
     RowRecorder rows(result, row_columns(contact_case.control));
     std::optional<ShoreRecorder> shore_recorder;
     if (shore) shore_recorder.emplace(shore->instrument, result);
@@ -226,7 +210,7 @@ IndentationResult run_one_maximum(const ContactCase& contact_case, const Progres
         const bool holding = paused && i > 0 && paused->holding(grid[i - 1].time, node.time);
         // The base z of a spring: the history shifted by the pauses passed.
         const double base = paused ? paused->base(node.value) : node.value;
-        if (std::holds_alternative<DisplacementControl>(contact_case.control)) {
+        if (loading.driven == LayerDriven::depth) {
             next = now.phase == LayerPhase::approach && depth <= 0.0 ? stepper.wait(node.time)
                    : now.phase <= LayerPhase::growing && depth >= now.centre ? stepper.grow(node.time, depth)
                    : now.phase != LayerPhase::lifted_off                     ? stepper.recede(node.time, depth)
@@ -338,7 +322,9 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     validate_layer(contact_case);
     // An impact's contact recedes after the turn, where a snapshot needs the surface outside it, which only the cells
     // carry (eq. L27): with snapshots (or NumericsOptions::layer_cells) it runs on the cells from the start.
-    if (contact_case.impact() && (!contact_case.snapshots.empty() || contact_case.numerics.layer_cells)) {
+    const LayerLoading loading = layer_loading(contact_case);
+    if (loading.driven == LayerDriven::impact &&
+        (!contact_case.snapshots.empty() || contact_case.numerics.layer_cells)) {
         return run_layer_cells_impact(contact_case, largest_contact_radius(contact_case), progress, observers);
     }
     // A harmonic load's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19); a
@@ -362,16 +348,17 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
         const bool one_run = std::any_of(observers.begin(), observers.end(), [](const StepObserver* observer) {
             return observer != nullptr && observer->needs_one_run();  // a null one is refused by ObserverList
         });
-        const Showing showing = one_run && !contact_case.impact() ? Showing::once_in_class : Showing::live;
+        const Showing showing =
+            one_run && loading.driven != LayerDriven::impact ? Showing::once_in_class : Showing::live;
         return run_one_maximum(contact_case, monotone, observers, showing);
     } catch (const SnapshotOnCells&) {
         // A durometer's contact only grows; the cells have no stop.
-        if (contact_case.shore()) refuse("output.snapshots", "[...]", "a snapshot of a durometer's receding contact");
+        if (loading.shore) refuse_on_layer("output.snapshots", "[...]", "a snapshot of a durometer's receding contact");
         return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), monotone, observers);
     } catch (const ContactRegrows&) {
         // A durometer's spring pushes a creeping body: its contact only grows (the stop holds the depth), so a
         // regrowth is not expected there; the cells have no stop, so refuse it rather than run another test.
-        if (contact_case.shore()) {
+        if (loading.shore) {
             throw InvalidInput("load.control", "\"shore\"",
                                "the contact would shrink and grow again on the [layer], which a durometer's test "
                                "is not built for (issue 28)");
@@ -379,7 +366,7 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
         return run_layer_regrowing(contact_case, largest_contact_radius(contact_case), monotone, observers);
     } catch (const InvalidInput& error) {
         // The contact beyond the largest radius prepared: in a Shore test, the durometer's rod.
-        if (contact_case.shore() && error.key() == "layer") throw layer_shore_refusal();
+        if (loading.shore && error.key() == "layer") throw layer_shore_refusal();
         throw;
     }
 }

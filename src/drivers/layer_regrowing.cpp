@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cstddef>
 #include <optional>
-#include <variant>
 
 #include "cycle_measure.hpp"
 #include "layer_cells.hpp"
+#include "layer_loading.hpp"
 #include "layer_snapshot.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/error.hpp"
@@ -29,13 +29,14 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
     std::optional<CycleMeasure> cycle;
     if (const auto& harmonic = contact_case.load.harmonic) cycle.emplace(*harmonic, contact_case.end_time);
     const auto grid = indentation_grid(contact_case, result.numerics);
-    const bool displacement = std::holds_alternative<DisplacementControl>(contact_case.control);
-    const SpringControl* spring = contact_case.spring();
-    const double spring_constant = spring ? spring->spring_constant : 0.0;
+    const LayerLoading loading = layer_loading(contact_case);
+    const bool displacement = loading.driven == LayerDriven::depth;
+    const bool spring = loading.driven == LayerDriven::spring_base;
+    const double spring_constant = loading.spring_constant;
     // A force pause holds the force reached at its start (k = 0, as under force control; eq. L22), and the base
     // history resumes shifted from the z reached (PausedBase, as on the half-space).
     std::optional<PausedBase> paused;
-    if (spring && !spring->force_pauses.empty()) paused.emplace(spring->force_pauses, spring_constant);
+    if (loading.paused()) paused.emplace(*loading.force_pauses, spring_constant);
     // The rows and the snapshots (of the cells) by the half-space's recorders, then the caller's observers; a stop
     // ends the run with its state.
     ObserverList observed(std::max<std::size_t>(contact_case.numerics.output_every, 1));

@@ -15,6 +15,7 @@
 #include "mdr/foundation/foundation.hpp"
 #include "control_traits.hpp"
 #include "history_stepping.hpp"
+#include "layer_loading.hpp"
 #include "observer_list.hpp"
 #include "paused_base.hpp"
 #include "recorders.hpp"
@@ -62,6 +63,10 @@ template <>
 struct ControlTraits<DisplacementControl> : HistoryControlTraits<DisplacementControl, DisplacementStepping> {
     static std::vector<ControlKind> rows();
     static const char* row_name(const DisplacementControl& /*control*/) { return "displacement"; }
+    /// The layer's drivers prescribe the depth.
+    static LayerLoading on_layer(const ContactCase& /*contact_case*/, const DisplacementControl& /*control*/) {
+        return {.driven = LayerDriven::depth};
+    }
     /// No jump in depth against a dashpot; a harmonic's rules.
     static void validate(const ContactCase& contact_case, const DisplacementControl& control);
     /// 1.1 times the Lee-Radok radius g^-1 at the largest depth (an upper bound under unloading too: the free
@@ -96,6 +101,10 @@ template <>
 struct ControlTraits<ForceControl> : HistoryControlTraits<ForceControl, ForceStepping> {
     static std::vector<ControlKind> rows();
     static const char* row_name(const ForceControl& /*control*/) { return "force"; }
+    /// The layer's drivers solve for the prescribed force.
+    static LayerLoading on_layer(const ContactCase& /*contact_case*/, const ForceControl& /*control*/) {
+        return {.driven = LayerDriven::force};
+    }
     /// No negative force in the history; a harmonic's rules, and it must not make the force pull.
     static void validate(const ContactCase& contact_case, const ForceControl& control);
     /// The force-control bound at the largest force.
@@ -177,6 +186,13 @@ struct ControlTraits<SpringControl> : HistoryControlTraits<SpringControl, Spring
     /// spring, then shore (a spring control with a durometer).
     static std::vector<ControlKind> rows();
     static const char* row_name(const SpringControl& control) { return control.shore ? "shore" : "spring"; }
+    /// The layer's drivers solve for the spring's base, its pauses and a durometer's test as on the half-space.
+    static LayerLoading on_layer(const ContactCase& /*contact_case*/, const SpringControl& control) {
+        return {.driven = LayerDriven::spring_base,
+                .spring_constant = control.spring_constant,
+                .force_pauses = &control.force_pauses,
+                .shore = control.shore ? &*control.shore : nullptr};
+    }
     /// A harmonic's rules; a spring constant > 0; a base history starting at or above the surface (z <= 0) without
     /// jumps, or a Shore test's rules (a duration > 0, the durometer's spring, no harmonic, no tangential load).
     static void validate(const ContactCase& contact_case, const SpringControl& control);

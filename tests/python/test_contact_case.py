@@ -443,6 +443,24 @@ def test_a_bool_is_not_a_number_as_in_a_case_file(changes, key):
     assert mdr.ContactCase(**keywords(end=1)).end == 1.0  # an int is a number
 
 
+def test_a_control_is_its_types_fields_and_its_repr_rebuilds_it():
+    """Each control's class is made from the fields its type declares (drivers::ControlField, load_control.hpp;
+    `_fields`): each is a property, each keyword field a keyword, and the repr is the constructor call that rebuilds
+    an equal control (before, SpringControl's repr gave the number of pauses and ImpactControl's `oblique=...`)."""
+    controls = [mdr.DisplacementControl(), mdr.ForceControl(),
+                mdr.ImpactControl(mass=1e-3, velocity=0.1, oblique=mdr.ObliqueImpact(friction=0.3, spin=2.0)),
+                mdr.SpringControl(spring_constant=1e3, force_pauses=[(1.0, 4.0)])]
+    assert [type(control) for control in controls] == list(mdr._mdr._load_controls)
+    assert repr(controls[3]) == "SpringControl(spring_constant=1000.0, force_pauses=[(1.0, 4.0)])"
+    for control in controls:
+        rebuilt = eval(repr(control), vars(mdr))  # noqa: S307 (the repr of our own object)
+        assert type(rebuilt) is type(control) and repr(rebuilt) == repr(control)
+        for field in type(control)._fields:
+            assert isinstance(getattr(type(control), field["name"]), property)
+            assert (f"{field['name']}:" in type(control).__init__.__doc__) == field["keyword"], field["name"]
+    assert mdr.SpringControl(spring_constant=1e3).shore is None  # a part the case brings: read back only
+
+
 def test_the_parts_show_their_values():
     harmonic = mdr.Harmonic(amplitude=1e-6, frequency=2.0, start=0.5, end=1.5)
     assert repr(harmonic) == "Harmonic(amplitude=1e-06, frequency=2.0, start=0.5, end=1.5)"

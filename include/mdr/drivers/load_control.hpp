@@ -5,6 +5,7 @@
 /// a velocity without an impact) cannot be written; each validates its own rules (drivers::validate, per type).
 
 #include <optional>
+#include <tuple>
 #include <variant>
 #include <vector>
 
@@ -13,11 +14,50 @@
 
 namespace mdr::drivers {
 
+/// One field of a control type, as its Python class shows it (python/bindings/bind_controls.cpp): a keyword of the
+/// constructor and a read-only property. The type of `member` says whether the keyword is required: a number is,
+/// an optional part defaults to None and a list to empty.
+template <class Control, class Value>
+struct ControlField {
+    using Type = Control;
+    using ValueType = Value;
+    const char* name;           ///< the keyword and property, e.g. "spring_constant"
+    Value Control::*member;     ///< the field it sets and reads
+    const char* unit;           ///< SI unit of its numbers, e.g. "N/m"; "" for none
+    const char* documentation;  ///< one line, naming the case file's key
+};
+
+/// A part of a control type that the case brings (a Shore test's, given as the control itself): a read-only
+/// property of its Python class, no keyword.
+template <class Control, class Value>
+struct ControlPart : ControlField<Control, Value> {};
+
+/// The ControlField of `member`.
+template <class Control, class Value>
+constexpr ControlField<Control, Value> control_field(const char* name, Value Control::*member, const char* unit,
+                                                     const char* documentation) {
+    return {name, member, unit, documentation};
+}
+
+/// The ControlPart of `member`.
+template <class Control, class Value>
+constexpr ControlPart<Control, Value> control_part(const char* name, Value Control::*member, const char* unit,
+                                                   const char* documentation) {
+    return {{name, member, unit, documentation}};
+}
+
+/// Every control type declares `static constexpr auto fields()`: a std::tuple of its ControlField and ControlPart
+/// values, in the order of its Python keywords (none: an empty tuple).
+
 /// The history prescribes the depth d(t); the force follows (eq. 16).
-struct DisplacementControl {};
+struct DisplacementControl {
+    static constexpr auto fields() { return std::tuple{}; }  ///< none
+};
 
 /// The history prescribes the force F(t) >= 0; the depth is solved for each step (eq. 19).
-struct ForceControl {};
+struct ForceControl {
+    static constexpr auto fields() { return std::tuple{}; }  ///< none
+};
 
 /// The history prescribes the base z(t) of a linear spring k acting on the massless rigid indenter: F = k (z - d),
 /// the spring unloaded at first contact; d is solved for each step.
@@ -28,6 +68,16 @@ struct SpringControl {
     /// A Shore durometer test (the durometer's spring and base history, a step at t = 0 and a stop at the full
     /// extension); the readings are measured (IndentationResult::shore). spring_constant is the durometer's.
     std::optional<ShoreTest> shore{};
+
+    /// spring_constant and force_pauses; shore, the part a Shore test brings.
+    static constexpr auto fields() {
+        return std::tuple{
+            control_field("spring_constant", &SpringControl::spring_constant, "N/m", "k > 0 (`load.spring_constant`)"),
+            control_field("force_pauses", &SpringControl::force_pauses, "s",
+                          "pauses (start, end) over which the instrument's feedback holds the force "
+                          "(`load.force_pauses`)"),
+            control_part("shore", &SpringControl::shore, "", "the Shore test of a durometer's spring, or None")};
+    }
 };
 
 /// The tangential part of an oblique impact of a rigid sphere (`[load] tangential_velocity`, `spin`,
@@ -48,11 +98,22 @@ struct ImpactControl {
     double mass = 0.0;      ///< m [kg] of the rigid indenter
     double velocity = 0.0;  ///< approach speed v0 [m/s] > 0 at first contact, t = 0
     std::optional<ObliqueImpactLoad> oblique{};  ///< an oblique impact: its tangential part
+
+    /// mass, velocity and oblique.
+    static constexpr auto fields() {
+        return std::tuple{control_field("mass", &ImpactControl::mass, "kg",
+                                        "m of the rigid indenter (`indenter.mass`)"),
+                          control_field("velocity", &ImpactControl::velocity, "m/s",
+                                        "the approach speed v0 > 0 at first contact (`load.velocity`)"),
+                          control_field("oblique", &ImpactControl::oblique, "",
+                                        "the tangential part of an oblique impact")};
+    }
 };
 
 /// What the load prescribes: one of the controls, in the order of the table of controls (controls.hpp). Adding a
-/// control is one new type here, its drivers' side (its ControlTraits: stepping, rules, numerics, rows of the table),
-/// its reader's row (src/io/control_readers.cpp) and its Python class: docs/architecture.md, "How to add a control".
+/// control is one new type here (its fields() make its Python class), its drivers' side (its ControlTraits: stepping,
+/// rules, numerics, rows of the table, its run on a [layer]) and its reader's row (src/io/control_readers.cpp):
+/// docs/architecture.md, "A control".
 using LoadControl = std::variant<DisplacementControl, ForceControl, ImpactControl, SpringControl>;
 
 }  // namespace mdr::drivers
