@@ -238,6 +238,7 @@ private:
 template <class Control, class Step>
 struct HistoryControlTraits {
     using Stepping = HistoryStepping<Step>;
+    static constexpr bool ends_by_stop_rule = false;  ///< the run ends at the case's end, on the history's grid
     /// t, d, F, a and z when the control has a base column.
     static RowRecorder::Columns columns(const Control& control) {
         return {.velocity = false, .base = Step(control).base_column()};

@@ -89,11 +89,13 @@ void validate_base_history(const ContactCase& contact_case) {
 // A Shore test is spring control with the durometer's spring and the base history of shore_base_history.
 void validate_shore(const ContactCase& contact_case, const SpringControl& spring) {
     const ShoreTest& shore = *spring.shore;
-    require_positive("load.duration", shore.duration);
     if (spring.spring_constant != shore.instrument.spring_rate) {
-        throw InvalidInput("load.control", "\"shore\"",
-                           "a Shore test is spring control with the durometer's own spring (no spring_constant)");
+        throw InvalidInput("load.spring_constant", format_value(spring.spring_constant),
+                           "a Shore test's spring is the durometer's, k = " +
+                               format_value(shore.instrument.spring_rate) +
+                               " (io::assemble_case sets it; control = \"shore\" takes no spring_constant)");
     }
+    require_positive("load.duration", shore.duration);
     if (contact_case.load.harmonic) throw InvalidInput("load.harmonic", "{...}", "not with control = \"shore\"");
     if (contact_case.tangential) throw InvalidInput("tangential", "[...]", "not with control = \"shore\"");
 }
@@ -197,10 +199,10 @@ std::vector<ControlKind> ControlTraits<SpringControl>::rows() {
 
 void ControlTraits<SpringControl>::validate(const ContactCase& contact_case, const SpringControl& control) {
     validate_harmonic(contact_case);
-    require_positive("load.spring_constant", control.spring_constant);
     if (control.shore) {
-        validate_shore(contact_case, control);
+        validate_shore(contact_case, control);  // the durometer's spring first: no spring_constant of its own
     } else {
+        require_positive("load.spring_constant", control.spring_constant);
         validate_base_history(contact_case);
     }
 }

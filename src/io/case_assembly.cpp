@@ -6,15 +6,16 @@
 #include <variant>
 
 #include "mdr/drivers/case_validation.hpp"
+#include "mdr/drivers/control_end.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/drivers/material_window.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::io {
 
-double default_end_time(const drivers::Load& load, bool impact,
+double default_end_time(const drivers::Load& load, bool stops_itself,
                         const std::optional<drivers::TangentialLoad>& tangential) {
-    if (impact) return std::numeric_limits<double>::infinity();
+    if (stops_itself) return std::numeric_limits<double>::infinity();
     return tangential ? std::max(load.end_time(), tangential->load.end_time()) : load.end_time();
 }
 
@@ -22,6 +23,13 @@ void refuse_indenter_beside_durometer(bool case_has_indenter) {
     if (case_has_indenter) {
         throw InvalidInput("indenter", "[...]",
                            "not with control = \"shore\": the durometer's indenter is the standard's");
+    }
+}
+
+void refuse_spring_beside_durometer(double spring_constant) {
+    if (spring_constant != 0.0) {
+        throw InvalidInput("load.spring_constant", format_value(spring_constant),
+                           "not with control = \"shore\": the durometer's spring is the standard's");
     }
 }
 
@@ -49,7 +57,7 @@ rheology::Body compressible_body(rheology::ModelMaterial shear, std::optional<do
 rheology::TimeWindow case_window(const CaseParts& parts) {
     return drivers::material_window(parts.load, parts.end.value_or(std::numeric_limits<double>::infinity()),
                                     parts.numerics, parts.tangential,
-                                    std::holds_alternative<drivers::ImpactControl>(parts.control));
+                                    drivers::ends_by_stop_rule(parts.control));
 }
 
 drivers::ContactCase assemble_case(CaseParts parts, const BodiesBuilder& bodies) {
@@ -60,14 +68,16 @@ drivers::ContactCase assemble_case(CaseParts parts, const BodiesBuilder& bodies)
             drivers::make_shore_test(spring->shore->scale, spring->shore->duration, system.length_size,
                                      system.force_size);
         refuse_indenter_beside_durometer(parts.indenter != nullptr);
+        refuse_spring_beside_durometer(spring->spring_constant);
         parts.indenter = drivers::durometer_indenter(test.scale, system.length_size);
-        *spring = drivers::SpringControl{.spring_constant = test.instrument.spring_rate, .shore = test};
+        spring->spring_constant = test.instrument.spring_rate;  // its pauses kept: drivers::validate refuses them
+        spring->shore = test;
         parts.load.history = drivers::shore_base_history(test);
     }
-    const bool impact = std::holds_alternative<drivers::ImpactControl>(parts.control);
-    if (impact) parts.load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
+    const bool stops_itself = drivers::ends_by_stop_rule(parts.control);
+    if (stops_itself) parts.load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
     if (!parts.end && parts.load.history) {  // without a history drivers::validate refuses the case
-        parts.end = default_end_time(parts.load, impact, parts.tangential);
+        parts.end = default_end_time(parts.load, stops_itself, parts.tangential);
     }
     rheology::ContactBodies given_bodies = bodies(parts);
     drivers::ContactCase contact_case{.title = std::move(parts.title),

@@ -34,15 +34,19 @@ struct CaseParts {
     std::optional<contact::Layer> layer{};
 };
 
-/// The last time simulated [s] of a case without `load.end`: an impact's is infinite (its contact's end stops it,
-/// eq. 39); otherwise the later of the normal load's end (drivers::Load::end_time; it has a history) and the
-/// tangential load's.
-double default_end_time(const drivers::Load& load, bool impact,
+/// The last time simulated [s] of a case without `load.end`: infinite for a run that `stops_itself`
+/// (drivers::ends_by_stop_rule: an impact's contact end stops it, eq. 39); otherwise the later of the normal load's
+/// end (drivers::Load::end_time; it has a history) and the tangential load's.
+double default_end_time(const drivers::Load& load, bool stops_itself,
                         const std::optional<drivers::TangentialLoad>& tangential);
 
 /// Throws mdr::InvalidInput (key `indenter`) when a case with a Shore test gives an indenter too
 /// (`case_has_indenter`): the durometer's is the standard's (docs/case-format.md, "Shore durometer").
 void refuse_indenter_beside_durometer(bool case_has_indenter);
+
+/// Throws mdr::InvalidInput (key `load.spring_constant`) when a Shore test's spring control comes with a spring
+/// constant (`spring_constant` not 0, its unset value): the durometer's spring is the standard's.
+void refuse_spring_beside_durometer(double spring_constant);
 
 /// The bodies of a case, built once its load is complete (`parts` as assemble_case completed it; a model converted
 /// to a series is converted over case_window(parts)). The reader also reads there what it has always read after
@@ -66,7 +70,8 @@ rheology::Body compressible_body(rheology::ModelMaterial shear, std::optional<do
 rheology::TimeWindow case_window(const CaseParts& parts);
 
 /// The case of `parts`: a Shore test's durometer in the case's units (drivers::make_shore_test; its spring, the
-/// standard's indenter, shore_indenter, and its base history), an impact's history the point (0, 0), the end
+/// standard's indenter, shore_indenter, and its base history), the history of a run its control's stop rule ends
+/// (drivers::ends_by_stop_rule: an impact) the point (0, 0), the end
 /// `load.end` or default_end_time; then the bodies (`bodies`, kept in the case: drivers::set_bodies) and the case's
 /// rules (drivers::validate, which checks a model converted to a series against the case's window, and
 /// drivers::validate_layer). Throws mdr::InvalidInput naming the key, the value and the rule.
