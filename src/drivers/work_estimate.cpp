@@ -56,7 +56,8 @@ WorkEstimate estimate_work(const ContactCase& contact_case, const ResolvedNumeri
     // and one memory value per branch.
     const double rows = estimate.steps / static_cast<double>(numerics.output_every);
     const double branches = static_cast<double>(contact_case.material.terms().size());
-    estimate.memory = (no_grid ? 0.0 : 16.0 * estimate.steps) + 64.0 * rows + layers * elements * 8.0 * (9.0 + branches);
+    estimate.memory =
+        (no_grid ? 0.0 : 16.0 * estimate.steps) + 64.0 * rows + layers * elements * 8.0 * (9.0 + branches);
     return estimate;
 }
 

@@ -26,10 +26,11 @@ void refuse_indenter_beside_durometer(bool case_has_indenter) {
     }
 }
 
-void refuse_spring_beside_durometer(double spring_constant) {
-    if (spring_constant != 0.0) {
+void refuse_spring_beside_durometer(double spring_constant, double spring_rate) {
+    if (spring_constant != 0.0 && spring_constant != spring_rate) {
         throw InvalidInput("load.spring_constant", format_value(spring_constant),
-                           "not with control = \"shore\": the durometer's spring is the standard's");
+                           "not with control = \"shore\": the durometer's spring is the standard's, k = " +
+                               format_value(spring_rate));
     }
 }
 
@@ -68,7 +69,7 @@ drivers::ContactCase assemble_case(CaseParts parts, const BodiesBuilder& bodies)
             drivers::make_shore_test(spring->shore->scale, spring->shore->duration, system.length_size,
                                      system.force_size);
         refuse_indenter_beside_durometer(parts.indenter != nullptr);
-        refuse_spring_beside_durometer(spring->spring_constant);
+        refuse_spring_beside_durometer(spring->spring_constant, test.instrument.spring_rate);
         parts.indenter = drivers::durometer_indenter(test.scale, system.length_size);
         spring->spring_constant = test.instrument.spring_rate;  // its pauses kept: drivers::validate refuses them
         spring->shore = test;

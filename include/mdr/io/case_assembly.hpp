@@ -45,8 +45,9 @@ double default_end_time(const drivers::Load& load, bool stops_itself,
 void refuse_indenter_beside_durometer(bool case_has_indenter);
 
 /// Throws mdr::InvalidInput (key `load.spring_constant`) when a Shore test's spring control comes with a spring
-/// constant (`spring_constant` not 0, its unset value): the durometer's spring is the standard's.
-void refuse_spring_beside_durometer(double spring_constant);
+/// constant of its own (`spring_constant` neither 0, its unset value, nor the durometer's `spring_rate`, as a case
+/// read back gives it): the durometer's spring is the standard's.
+void refuse_spring_beside_durometer(double spring_constant, double spring_rate);
 
 /// The bodies of a case, built once its load is complete (`parts` as assemble_case completed it; a model converted
 /// to a series is converted over case_window(parts)). The reader also reads there what it has always read after

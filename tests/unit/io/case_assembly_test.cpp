@@ -41,8 +41,12 @@ TEST(CaseAssembly, AShoreTestGetsTheDurometerInTheCasesUnits) {
 }
 
 // A Shore test's spring is the durometer's: a spring control with a durometer and a spring constant of its own is
-// refused naming load.spring_constant (before, the constant was replaced by the durometer's without a word).
+// refused naming load.spring_constant (before, the constant was replaced by the durometer's without a word); the
+// durometer's own, as a case reads it back (mdr.ContactCase(control=case.control)), is taken.
 TEST(CaseAssembly, AShoreTestTakesNoSpringOfItsOwn) {
+    const drivers::ContactCase assembled =
+        assemble_case(CaseParts{.control = drivers::SpringControl{.shore = drivers::ShoreTest{}}}, elastic);
+    EXPECT_NO_THROW(assemble_case(CaseParts{.control = assembled.control}, elastic));
     const CaseParts parts{.control = drivers::SpringControl{.spring_constant = 5.0, .shore = drivers::ShoreTest{}}};
     try {
         assemble_case(parts, elastic);
