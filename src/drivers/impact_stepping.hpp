@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/control_parts.hpp"
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/foundation/foundation.hpp"
@@ -70,6 +71,10 @@ struct ControlTraits<ImpactControl> {
     using Stepping = ImpactStepping;
     /// The contact's end (eq. 39) ends the run: load.end is the latest end allowed (control_end.hpp).
     static constexpr bool ends_by_stop_rule = true;
+    /// Its history: the first contact at t = 0, the single point (0, 0) (complete_control).
+    static BroughtParts bring(const ImpactControl& impact, double /*length_unit*/, double /*force_unit*/) {
+        return {.control = impact, .history = LoadHistory({{0.0, 0.0}}, "load.history")};
+    }
     static std::vector<ControlKind> rows();
     static const char* row_name(const ImpactControl& /*impact*/) { return "impact"; }
     /// t, d, F, a and v.

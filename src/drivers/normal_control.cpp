@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/contact_case.hpp"
@@ -205,6 +206,24 @@ void ControlTraits<SpringControl>::validate(const ContactCase& contact_case, con
         require_positive("load.spring_constant", control.spring_constant);
         validate_base_history(contact_case);
     }
+}
+
+BroughtParts ControlTraits<SpringControl>::bring(const SpringControl& control, double length_unit,
+                                                 double force_unit) {
+    if (!control.shore) return {.control = control};
+    const ShoreTest test = make_shore_test(control.shore->scale, control.shore->duration, length_unit, force_unit);
+    // 0 is the unset constant; the durometer's own is a case's read back (mdr.ContactCase(control=case.control)).
+    if (control.spring_constant != 0.0 && control.spring_constant != test.instrument.spring_rate) {
+        throw InvalidInput("load.spring_constant", format_value(control.spring_constant),
+                           "not with control = \"shore\": the durometer's spring is the standard's, k = " +
+                               format_value(test.instrument.spring_rate));
+    }
+    SpringControl completed = control;  // its pauses kept: validate refuses them
+    completed.spring_constant = test.instrument.spring_rate;
+    completed.shore = test;
+    return {.control = std::move(completed),
+            .indenter = durometer_indenter(test.scale, length_unit),
+            .history = shore_base_history(test)};
 }
 
 void ControlTraits<SpringControl>::validate_within_run(const ContactCase& contact_case, const SpringControl& control) {

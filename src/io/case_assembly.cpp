@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <limits>
 #include <utility>
-#include <variant>
 
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/control_end.hpp"
+#include "mdr/drivers/control_parts.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/drivers/material_window.hpp"
 #include "mdr/error.hpp"
@@ -23,14 +23,6 @@ void refuse_indenter_beside_durometer(bool case_has_indenter) {
     if (case_has_indenter) {
         throw InvalidInput("indenter", "[...]",
                            "not with control = \"shore\": the durometer's indenter is the standard's");
-    }
-}
-
-void refuse_spring_beside_durometer(double spring_constant, double spring_rate) {
-    if (spring_constant != 0.0 && spring_constant != spring_rate) {
-        throw InvalidInput("load.spring_constant", format_value(spring_constant),
-                           "not with control = \"shore\": the durometer's spring is the standard's, k = " +
-                               format_value(spring_rate));
     }
 }
 
@@ -63,22 +55,15 @@ rheology::TimeWindow case_window(const CaseParts& parts) {
 
 drivers::ContactCase assemble_case(CaseParts parts, const BodiesBuilder& bodies) {
     const UnitSystem& system = unit_system(parts.units);
-    auto* spring = std::get_if<drivers::SpringControl>(&parts.control);
-    if (spring && spring->shore) {
-        const drivers::ShoreTest test =
-            drivers::make_shore_test(spring->shore->scale, spring->shore->duration, system.length_size,
-                                     system.force_size);
+    drivers::BroughtParts brought = drivers::complete_control(parts.control, system.length_size, system.force_size);
+    parts.control = std::move(brought.control);
+    if (brought.indenter) {
         refuse_indenter_beside_durometer(parts.indenter != nullptr);
-        refuse_spring_beside_durometer(spring->spring_constant, test.instrument.spring_rate);
-        parts.indenter = drivers::durometer_indenter(test.scale, system.length_size);
-        spring->spring_constant = test.instrument.spring_rate;  // its pauses kept: drivers::validate refuses them
-        spring->shore = test;
-        parts.load.history = drivers::shore_base_history(test);
+        parts.indenter = std::move(brought.indenter);
     }
-    const bool stops_itself = drivers::ends_by_stop_rule(parts.control);
-    if (stops_itself) parts.load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
+    if (brought.history) parts.load.history = std::move(brought.history);
     if (!parts.end && parts.load.history) {  // without a history drivers::validate refuses the case
-        parts.end = default_end_time(parts.load, stops_itself, parts.tangential);
+        parts.end = default_end_time(parts.load, drivers::ends_by_stop_rule(parts.control), parts.tangential);
     }
     rheology::ContactBodies given_bodies = bodies(parts);
     drivers::ContactCase contact_case{.title = std::move(parts.title),

@@ -44,11 +44,6 @@ double default_end_time(const drivers::Load& load, bool stops_itself,
 /// (`case_has_indenter`): the durometer's is the standard's (docs/case-format.md, "Shore durometer").
 void refuse_indenter_beside_durometer(bool case_has_indenter);
 
-/// Throws mdr::InvalidInput (key `load.spring_constant`) when a Shore test's spring control comes with a spring
-/// constant of its own (`spring_constant` neither 0, its unset value, nor the durometer's `spring_rate`, as a case
-/// read back gives it): the durometer's spring is the standard's.
-void refuse_spring_beside_durometer(double spring_constant, double spring_rate);
-
 /// The bodies of a case, built once its load is complete (`parts` as assemble_case completed it; a model converted
 /// to a series is converted over case_window(parts)). The reader also reads there what it has always read after
 /// the bodies (a spring's force pauses, `[layer]`), into `parts`.
@@ -70,9 +65,9 @@ rheology::Body compressible_body(rheology::ModelMaterial shear, std::optional<do
 /// The time window of completed parts (drivers::material_window of their load, end, numerics and tangential load).
 rheology::TimeWindow case_window(const CaseParts& parts);
 
-/// The case of `parts`: a Shore test's durometer in the case's units (drivers::make_shore_test; its spring, the
-/// standard's indenter, shore_indenter, and its base history), the history of a run its control's stop rule ends
-/// (drivers::ends_by_stop_rule: an impact) the point (0, 0), the end
+/// The case of `parts`: its control completed in the case's units with the parts it brings
+/// (drivers::complete_control: a Shore test's durometer, the standard's indenter and base history; an impact's
+/// history, the point (0, 0)), the end
 /// `load.end` or default_end_time; then the bodies (`bodies`, kept in the case: drivers::set_bodies) and the case's
 /// rules (drivers::validate, which checks a model converted to a series against the case's window, and
 /// drivers::validate_layer). Throws mdr::InvalidInput naming the key, the value and the rule.
