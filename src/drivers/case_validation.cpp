@@ -2,13 +2,17 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
+#include "mdr/drivers/control_end.hpp"
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/material_window.hpp"
 #include "mdr/error.hpp"
 #include "mdr/foundation/foundation.hpp"
+#include "mdr/rheology/contact_bodies.hpp"
 #include "every_control.hpp"
 
 namespace mdr::drivers {
@@ -16,13 +20,14 @@ namespace {
 
 void validate_times(const ContactCase& contact_case) {
     const double start = contact_case.load.history->start_time();
-    const bool impact = contact_case.impact() != nullptr;
+    // A run its control's stop rule ends may have no end (infinite: the latest end allowed).
+    const bool open_end = ends_by_stop_rule(contact_case.control);
     // A history of jumps only (all points at one time) may end where it starts: no step has a length.
     const bool instant = contact_case.load.history->end_time() == start && contact_case.end_time == start;
-    if (!(contact_case.end_time > start || instant) || (!impact && !std::isfinite(contact_case.end_time))) {
+    if (!(contact_case.end_time > start || instant) || (!open_end && !std::isfinite(contact_case.end_time))) {
         throw InvalidInput("load.end", format_value(contact_case.end_time),
                            "must be after the first history time " + format_value(start) +
-                               (impact ? "" : " and finite"));
+                               (open_end ? "" : " and finite"));
     }
     for (std::size_t i = 0; i < contact_case.snapshots.size(); ++i) {
         const double t = contact_case.snapshots[i];
@@ -46,6 +51,35 @@ void validate_numerics(const NumericsOptions& numerics) {
     if (numerics.output_every < 1) throw InvalidInput("numerics.output_every", "0", "must be an integer >= 1");
     if (numerics.max_element_steps) require_positive("numerics.max_element_steps", *numerics.max_element_steps);
     if (numerics.max_memory) require_positive("numerics.max_memory", *numerics.max_memory);
+}
+
+bool same_series(const rheology::Rheology& first, const rheology::Rheology& second) {
+    const auto same_term = [](const rheology::RelaxationTerm& a, const rheology::RelaxationTerm& b) {
+        return a.modulus == b.modulus && a.relaxation_time == b.relaxation_time;
+    };
+    return first.equilibrium_modulus() == second.equilibrium_modulus() && first.viscosity() == second.viscosity() &&
+           std::equal(first.terms().begin(), first.terms().end(), second.terms().begin(), second.terms().end(),
+                      same_term);
+}
+
+// The bodies as given are what `material` and `material_origin` combine (set_bodies): a caller that replaced those
+// without the bodies leaves two materials in one case, the drivers running one, a reader of the bodies seeing the
+// other. (The combination is recomputed exactly: it is deterministic.)
+void validate_bodies(const ContactCase& contact_case) {
+    if (!contact_case.bodies) return;
+    const rheology::ContactMaterial combined = rheology::contact_material(*contact_case.bodies);
+    const std::string rule = "differs from the combination of the case's bodies (ContactCase::bodies): set the "
+                             "material with drivers::set_bodies, or clear the bodies with it";
+    if (!same_series(combined.material, contact_case.material)) throw InvalidInput("material", "[...]", rule);
+    const rheology::MaterialOrigin& origin = contact_case.material_origin;
+    const bool same_certificate =
+        combined.origin.certificate.has_value() == origin.certificate.has_value() &&
+        (!origin.certificate || (combined.origin.certificate->kind == origin.certificate->kind &&
+                                 combined.origin.certificate->error == origin.certificate->error));
+    if (combined.origin.description != origin.description || !same_certificate ||
+        combined.origin.times_from_conversion != origin.times_from_conversion) {
+        throw InvalidInput("material_origin", origin.description.empty() ? "\"\"" : origin.description, rule);
+    }
 }
 
 }  // namespace
@@ -85,6 +119,7 @@ void validate(const HarmonicLoad& harmonic, const std::string& prefix) {
 
 void validate(const ContactCase& contact_case) {
     if (!contact_case.indenter) throw InvalidInput("indenter", "(missing)", "is required");
+    validate_bodies(contact_case);
     if (!contact_case.load.history) {
         throw InvalidInput("load.history", "(missing)", "is required (under control = \"impact\" the point (0, 0))");
     }

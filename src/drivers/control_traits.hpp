@@ -24,6 +24,9 @@ namespace mdr::drivers {
 ///   (drivers::validate);
 /// - `static ResolvedNumerics resolve_numerics(const ContactCase&, const Control&)`, its default numerics
 ///   (drivers::resolve_numerics);
+/// - `static constexpr bool ends_by_stop_rule`, whether its own stop rule ends the run, not the case's end
+///   (drivers::ends_by_stop_rule), and `static BroughtParts bring(const Control&, double length_unit, double
+///   force_unit)`, itself completed in a case's units with the indenter and history it brings (complete_control);
 /// - `static std::vector<GridNode> grid(const ContactCase&, const ResolvedNumerics&, const Control&)`, its time grid
 ///   (drivers::indentation_grid);
 /// - `static LayerLoading on_layer(const ContactCase&, const Control&)`, how the drivers of a [layer] run it

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/control_parts.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/foundation/foundation.hpp"
@@ -238,6 +239,11 @@ private:
 template <class Control, class Step>
 struct HistoryControlTraits {
     using Stepping = HistoryStepping<Step>;
+    static constexpr bool ends_by_stop_rule = false;  ///< the run ends at the case's end, on the history's grid
+    /// Brings nothing: its history and indenter are the case's (complete_control).
+    static BroughtParts bring(const Control& control, double /*length_unit*/, double /*force_unit*/) {
+        return {.control = control};
+    }
     /// t, d, F, a and z when the control has a base column.
     static RowRecorder::Columns columns(const Control& control) {
         return {.velocity = false, .base = Step(control).base_column()};

@@ -1,5 +1,7 @@
 #include "impact_stepping.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -198,7 +200,14 @@ void ControlTraits<ImpactControl>::validate(const ContactCase& contact_case, con
 
 ResolvedNumerics ControlTraits<ImpactControl>::resolve_numerics(const ContactCase& contact_case,
                                                                const ImpactControl& impact) {
-    return resolve_impact_numerics(contact_case, impact);
+    ResolvedNumerics resolved = resolve_impact_numerics(contact_case, impact);
+    if (!(std::isfinite(resolved.time_limit) && resolved.time_step > 0.0)) {
+        throw InvalidInput("load.velocity", format_value(impact.velocity),
+                           fmt::format("the impact's time scales are not representable (time step {:.4g} s, contact "
+                                       "time limit {:.4g} s); give load.end and numerics.time_step",
+                                       resolved.time_step, resolved.time_limit));
+    }
+    return resolved;
 }
 
 std::vector<GridNode> ControlTraits<ImpactControl>::grid(const ContactCase& /*contact_case*/,

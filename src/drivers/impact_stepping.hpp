@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/control_parts.hpp"
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/foundation/foundation.hpp"
@@ -68,6 +69,12 @@ private:
 template <>
 struct ControlTraits<ImpactControl> {
     using Stepping = ImpactStepping;
+    /// The contact's end (eq. 39) ends the run: load.end is the latest end allowed (control_end.hpp).
+    static constexpr bool ends_by_stop_rule = true;
+    /// Its history: the first contact at t = 0, the single point (0, 0) (complete_control).
+    static BroughtParts bring(const ImpactControl& impact, double /*length_unit*/, double /*force_unit*/) {
+        return {.control = impact, .history = LoadHistory({{0.0, 0.0}}, "load.history")};
+    }
     static std::vector<ControlKind> rows();
     static const char* row_name(const ImpactControl& /*impact*/) { return "impact"; }
     /// t, d, F, a and v.
@@ -80,7 +87,8 @@ struct ControlTraits<ImpactControl> {
     static void validate_within_run(const ContactCase& /*contact_case*/, const ImpactControl& /*impact*/) {}
     /// The impact's defaults (resolve_numerics): the time step from the elastic impact with the stiffest spring
     /// modulus, at most the braking time over braking_steps with a parallel dashpot, scaled for a light contact
-    /// point of an oblique impact; the half-width from the elastic impact with the softest modulus.
+    /// point of an oblique impact; the half-width from the elastic impact with the softest modulus. Throws
+    /// mdr::InvalidInput (`load.velocity`) when these time scales are not representable.
     static ResolvedNumerics resolve_numerics(const ContactCase& contact_case, const ImpactControl& impact);
     /// Throws mdr::InvalidInput (`load.control`): an impact's steps end at the contact's end, not on a history grid.
     static std::vector<GridNode> grid(const ContactCase& contact_case, const ResolvedNumerics& numerics,

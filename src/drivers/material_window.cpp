@@ -10,17 +10,19 @@
 #include <vector>
 
 #include "mdr/drivers/case_validation.hpp"
+#include "mdr/drivers/control_end.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::drivers {
 
 rheology::TimeWindow material_window(const Load& load, double end_time, const NumericsOptions& numerics,
-                                     const std::optional<TangentialLoad>& tangential, bool impact) {
+                                     const std::optional<TangentialLoad>& tangential, bool stops_itself) {
     const char* rule = "a material converted to a Prony series needs the problem's time window";
-    if (impact && !std::isfinite(end_time)) {
+    // A run its control's stop rule ends has the history (0, 0), which sets no time scale: its end and step are given.
+    if (stops_itself && !std::isfinite(end_time)) {
         throw InvalidInput("load.end", "(missing)", std::string(rule) + ": give load.end for an impact");
     }
-    if (impact && !numerics.time_step) {
+    if (stops_itself && !numerics.time_step) {
         throw InvalidInput("numerics.time_step", "(missing)", std::string(rule) + ": give it for an impact");
     }
     if (!load.history) throw InvalidInput("load.history", "(missing)", "is required");
@@ -57,7 +59,7 @@ rheology::TimeWindow material_window(const Load& load, double end_time, const Nu
 
 rheology::TimeWindow material_window(const ContactCase& contact_case) {
     return material_window(contact_case.load, contact_case.end_time, contact_case.numerics, contact_case.tangential,
-                           contact_case.impact() != nullptr);
+                           ends_by_stop_rule(contact_case.control));
 }
 
 bool converted_model(const rheology::MaterialOrigin& origin) {

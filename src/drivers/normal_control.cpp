@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/contact_case.hpp"
@@ -89,11 +90,13 @@ void validate_base_history(const ContactCase& contact_case) {
 // A Shore test is spring control with the durometer's spring and the base history of shore_base_history.
 void validate_shore(const ContactCase& contact_case, const SpringControl& spring) {
     const ShoreTest& shore = *spring.shore;
-    require_positive("load.duration", shore.duration);
     if (spring.spring_constant != shore.instrument.spring_rate) {
-        throw InvalidInput("load.control", "\"shore\"",
-                           "a Shore test is spring control with the durometer's own spring (no spring_constant)");
+        throw InvalidInput("load.spring_constant", format_value(spring.spring_constant),
+                           "a Shore test's spring is the durometer's, k = " +
+                               format_value(shore.instrument.spring_rate) +
+                               " (io::assemble_case sets it; control = \"shore\" takes no spring_constant)");
     }
+    require_positive("load.duration", shore.duration);
     if (contact_case.load.harmonic) throw InvalidInput("load.harmonic", "{...}", "not with control = \"shore\"");
     if (contact_case.tangential) throw InvalidInput("tangential", "[...]", "not with control = \"shore\"");
 }
@@ -197,12 +200,30 @@ std::vector<ControlKind> ControlTraits<SpringControl>::rows() {
 
 void ControlTraits<SpringControl>::validate(const ContactCase& contact_case, const SpringControl& control) {
     validate_harmonic(contact_case);
-    require_positive("load.spring_constant", control.spring_constant);
     if (control.shore) {
-        validate_shore(contact_case, control);
+        validate_shore(contact_case, control);  // the durometer's spring first: no spring_constant of its own
     } else {
+        require_positive("load.spring_constant", control.spring_constant);
         validate_base_history(contact_case);
     }
+}
+
+BroughtParts ControlTraits<SpringControl>::bring(const SpringControl& control, double length_unit,
+                                                 double force_unit) {
+    if (!control.shore) return {.control = control};
+    const ShoreTest test = make_shore_test(control.shore->scale, control.shore->duration, length_unit, force_unit);
+    // 0 is the unset constant; the durometer's own is a case's read back (mdr.ContactCase(control=case.control)).
+    if (control.spring_constant != 0.0 && control.spring_constant != test.instrument.spring_rate) {
+        throw InvalidInput("load.spring_constant", format_value(control.spring_constant),
+                           "not with control = \"shore\": the durometer's spring is the standard's, k = " +
+                               format_value(test.instrument.spring_rate));
+    }
+    SpringControl completed = control;  // its pauses kept: validate refuses them
+    completed.spring_constant = test.instrument.spring_rate;
+    completed.shore = test;
+    return {.control = std::move(completed),
+            .indenter = durometer_indenter(test.scale, length_unit),
+            .history = shore_base_history(test)};
 }
 
 void ControlTraits<SpringControl>::validate_within_run(const ContactCase& contact_case, const SpringControl& control) {

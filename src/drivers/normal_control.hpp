@@ -193,6 +193,9 @@ struct ControlTraits<SpringControl> : HistoryControlTraits<SpringControl, Spring
                 .force_pauses = &control.force_pauses,
                 .shore = control.shore ? &*control.shore : nullptr};
     }
+    /// A Shore test: its durometer in the case's units (make_shore_test: the spring, refusing a constant of the
+    /// control's own, `load.spring_constant`), the standard's indenter and base history; a plain spring: nothing.
+    static BroughtParts bring(const SpringControl& control, double length_unit, double force_unit);
     /// A harmonic's rules; a spring constant > 0; a base history starting at or above the surface (z <= 0) without
     /// jumps, or a Shore test's rules (a duration > 0, the durometer's spring, no harmonic, no tangential load).
     static void validate(const ContactCase& contact_case, const SpringControl& control);

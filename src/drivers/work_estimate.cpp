@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "mdr/drivers/control_end.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::drivers {
@@ -47,10 +48,11 @@ double memory_bound(const ContactCase& contact_case) {
 
 WorkEstimate estimate_work(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
     WorkEstimate estimate;
-    const bool impact = contact_case.impact() != nullptr;
-    estimate.steps = impact ? numerics.time_limit / numerics.time_step +
-                                  static_cast<double>(contact_case.snapshots.size())
-                            : indentation_steps(contact_case, numerics);
+    // A run its control's stop rule ends has no grid: its steps of time_step up to the time limit, at most.
+    const bool no_grid = ends_by_stop_rule(contact_case.control);
+    estimate.steps = no_grid ? numerics.time_limit / numerics.time_step +
+                                   static_cast<double>(contact_case.snapshots.size())
+                             : indentation_steps(contact_case, numerics);
     const double elements = static_cast<double>(numerics.elements);
     const double layers = contact_case.tangential ? 2.0 : 1.0;
     estimate.element_steps = estimate.steps * elements * layers;
@@ -59,26 +61,21 @@ WorkEstimate estimate_work(const ContactCase& contact_case, const ResolvedNumeri
     // and one memory value per branch.
     const double rows = estimate.steps / static_cast<double>(numerics.output_every);
     const double branches = static_cast<double>(contact_case.material.terms().size());
-    estimate.memory = (impact ? 0.0 : 16.0 * estimate.steps) + 64.0 * rows + layers * elements * 8.0 * (9.0 + branches);
+    estimate.memory =
+        (no_grid ? 0.0 : 16.0 * estimate.steps) + 64.0 * rows + layers * elements * 8.0 * (9.0 + branches);
     return estimate;
 }
 
 void require_bounded_work(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
     const double start = contact_case.load.history->start_time();
-    const bool impact = contact_case.impact() != nullptr;
-    if (impact && !(std::isfinite(numerics.time_limit) && numerics.time_step > 0.0)) {
-        throw InvalidInput("load.velocity", format_value(contact_case.impact()->velocity),
-                           fmt::format("the impact's time scales are not representable (time step {:.4g} s, contact "
-                                       "time limit {:.4g} s); give load.end and numerics.time_step",
-                                       numerics.time_step, numerics.time_limit));
-    }
+    const bool open_end = ends_by_stop_rule(contact_case.control);
     if (!std::isfinite(numerics.time_limit - start)) {
-        throw InvalidInput(impact ? "load.end" : "load.history", fmt::format("[{}, {}]", start, numerics.time_limit),
+        throw InvalidInput(open_end ? "load.end" : "load.history", fmt::format("[{}, {}]", start, numerics.time_limit),
                            "the simulated time span is larger than a double can hold");
     }
-    // An impact given a late load.end usually ends long before it: its steps are counted while it runs
-    // (require_steps_within_bound), not refused from the upper bound here.
-    if (impact && std::isfinite(contact_case.end_time)) return;
+    // A run its stop rule ends (an impact) given a late load.end usually ends long before it: its steps are counted
+    // while it runs (require_steps_within_bound), not refused from the upper bound here.
+    if (open_end && std::isfinite(contact_case.end_time)) return;
     const WorkEstimate estimate = estimate_work(contact_case, numerics);
     const double max_element_steps = element_step_bound(contact_case);
     if (!(estimate.element_steps <= max_element_steps)) {

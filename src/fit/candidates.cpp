@@ -201,6 +201,7 @@ CandidateFit fit_material(const CandidateProblem& base, const Material& material
         rheology::ModelMaterial candidate = make_material(material, values.data() + offset);
         built.material = std::move(candidate.series);
         if (material.model) built.material_origin = std::move(candidate.origin);  // a converted one's certificate
+        built.bodies.reset();  // the base's elastic body is not the candidate's (drivers::validate)
         return built;
     };
     FitResult result;
@@ -304,6 +305,7 @@ std::vector<double> linear_start(const CandidateProblem& base, const Material& m
         for (Eigen::Index i = 0; i < n; ++i) b[i] = (curve.force[prepared.used[static_cast<std::size_t>(i)]] - baseline) / prepared.noise;
         for (Eigen::Index j = 0; j < columns; ++j) {
             drivers::ContactCase basis = built;
+            basis.bodies.reset();  // the basis material is no body's (drivers::validate)
             basis.material = j == 0 ? rheology::Rheology::elastic(1.0)
                                     : rheology::Rheology::prony(0.0, {{1.0, material.grid[static_cast<std::size_t>(j - 1)]}});
             auto force = run_curve(basis, prepared, contact, {}, elements, ForwardModel::continuum, {}, false);

@@ -3,18 +3,19 @@
 #include <algorithm>
 #include <limits>
 #include <utility>
-#include <variant>
 
 #include "mdr/drivers/case_validation.hpp"
+#include "mdr/drivers/control_end.hpp"
+#include "mdr/drivers/control_parts.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/drivers/material_window.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::io {
 
-double default_end_time(const drivers::Load& load, bool impact,
+double default_end_time(const drivers::Load& load, bool stops_itself,
                         const std::optional<drivers::TangentialLoad>& tangential) {
-    if (impact) return std::numeric_limits<double>::infinity();
+    if (stops_itself) return std::numeric_limits<double>::infinity();
     return tangential ? std::max(load.end_time(), tangential->load.end_time()) : load.end_time();
 }
 
@@ -49,25 +50,20 @@ rheology::Body compressible_body(rheology::ModelMaterial shear, std::optional<do
 rheology::TimeWindow case_window(const CaseParts& parts) {
     return drivers::material_window(parts.load, parts.end.value_or(std::numeric_limits<double>::infinity()),
                                     parts.numerics, parts.tangential,
-                                    std::holds_alternative<drivers::ImpactControl>(parts.control));
+                                    drivers::ends_by_stop_rule(parts.control));
 }
 
 drivers::ContactCase assemble_case(CaseParts parts, const BodiesBuilder& bodies) {
     const UnitSystem& system = unit_system(parts.units);
-    auto* spring = std::get_if<drivers::SpringControl>(&parts.control);
-    if (spring && spring->shore) {
-        const drivers::ShoreTest test =
-            drivers::make_shore_test(spring->shore->scale, spring->shore->duration, system.length_size,
-                                     system.force_size);
+    drivers::BroughtParts brought = drivers::complete_control(parts.control, system.length_size, system.force_size);
+    parts.control = std::move(brought.control);
+    if (brought.indenter) {
         refuse_indenter_beside_durometer(parts.indenter != nullptr);
-        parts.indenter = drivers::durometer_indenter(test.scale, system.length_size);
-        *spring = drivers::SpringControl{.spring_constant = test.instrument.spring_rate, .shore = test};
-        parts.load.history = drivers::shore_base_history(test);
+        parts.indenter = std::move(brought.indenter);
     }
-    const bool impact = std::holds_alternative<drivers::ImpactControl>(parts.control);
-    if (impact) parts.load.history = drivers::LoadHistory({{0.0, 0.0}}, "load.history");
+    if (brought.history) parts.load.history = std::move(brought.history);
     if (!parts.end && parts.load.history) {  // without a history drivers::validate refuses the case
-        parts.end = default_end_time(parts.load, impact, parts.tangential);
+        parts.end = default_end_time(parts.load, drivers::ends_by_stop_rule(parts.control), parts.tangential);
     }
     rheology::ContactBodies given_bodies = bodies(parts);
     drivers::ContactCase contact_case{.title = std::move(parts.title),

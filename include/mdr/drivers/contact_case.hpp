@@ -99,9 +99,9 @@ struct ContactCase {
     /// `[layer]`: a layer of finite thickness on a rigid substrate; absent: the half-space
     /// (drivers/layer_indentation.hpp).
     std::optional<contact::Layer> layer{};
-    /// The bodies as given (a compressible body's bulk part, the indenter's own body), of which set_bodies makes
-    /// `material`, `shear_material`, `bulk_material`, `tangential_exact` and `material_origin` (the drivers read those
-    /// only: a caller replacing them resets this). Absent: built from its combined material. mdr.ContactCase's parts.
+    /// The bodies as given (a bulk part, the indenter's own body; mdr.ContactCase's parts), of which set_bodies makes
+    /// the `material`, `shear_material`, `bulk_material`, `tangential_exact` and `material_origin` the drivers read;
+    /// whoever replaces those clears this (validate refuses a material or origin not theirs). Absent: none given.
     std::optional<rheology::ContactBodies> bodies{};
 };
 

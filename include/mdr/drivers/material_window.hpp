@@ -18,13 +18,13 @@ namespace mdr::drivers {
 /// period over default_steps_per_period), the smallest step resolve_numerics takes before snapshots (it shortens
 /// the default step to a fifth of a material time at most), and a fifth of the steps of a fast load change (the
 /// shortest time between fast_change_times over min_steps_per_segment); frequencies = the angular frequencies
-/// 2 pi f of the harmonic loads, at which the complex modulus is certified explicitly. An impact needs `load.end` and
-/// `numerics.time_step` (its time scales follow from the material). Throws mdr::InvalidInput naming the key that
-/// is missing or makes the window empty.
+/// 2 pi f of the harmonic loads, at which the complex modulus is certified explicitly. A run that `stops_itself`
+/// (ends_by_stop_rule: an impact) needs `load.end` and `numerics.time_step` (its time scales follow from the
+/// material). Throws mdr::InvalidInput naming the key that is missing or makes the window empty.
 rheology::TimeWindow material_window(const Load& load, double end_time, const NumericsOptions& numerics,
-                                     const std::optional<TangentialLoad>& tangential, bool impact);
+                                     const std::optional<TangentialLoad>& tangential, bool stops_itself);
 
-/// material_window of a case: its load, end time, numerics, tangential load and control (an impact or not).
+/// material_window of a case: its load, end time, numerics, tangential load and control (ends_by_stop_rule).
 rheology::TimeWindow material_window(const ContactCase& contact_case);
 
 /// True when `origin` is a model converted to a series (its certificate's kind "model": a power law, a springpot),

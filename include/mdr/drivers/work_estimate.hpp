@@ -29,11 +29,11 @@ struct WorkEstimate {
 /// Estimates the cost of running `contact_case` with `numerics` (as resolve_numerics gives them).
 WorkEstimate estimate_work(const ContactCase& contact_case, const ResolvedNumerics& numerics);
 
-/// Throws mdr::InvalidInput when the simulated time span is not finite (key `load.history` or `load.end`; for an
-/// impact whose time scales overflow, `load.velocity`), or when the estimate exceeds the bounds of
+/// Throws mdr::InvalidInput when the simulated time span is not finite (key `load.history`, or `load.end` for a run
+/// its control's stop rule ends, ends_by_stop_rule), or when the estimate exceeds the bounds of
 /// `contact_case.numerics` (keys `numerics.max_element_steps`, `numerics.max_memory`); the message names the
-/// estimate and the keys that change it. An impact with a given `load.end` is bounded while it runs instead
-/// (require_steps_within_bound): the end is only the latest time allowed.
+/// estimate and the keys that change it. A run its stop rule ends (an impact) with a given `load.end` is bounded while
+/// it runs instead (require_steps_within_bound): the end is only the latest time allowed.
 void require_bounded_work(const ContactCase& contact_case, const ResolvedNumerics& numerics);
 
 /// Throws mdr::InvalidInput (key `numerics.max_memory`) when the run's memory (estimate_work) with a copy of each of

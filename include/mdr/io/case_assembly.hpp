@@ -34,10 +34,10 @@ struct CaseParts {
     std::optional<contact::Layer> layer{};
 };
 
-/// The last time simulated [s] of a case without `load.end`: an impact's is infinite (its contact's end stops it,
-/// eq. 39); otherwise the later of the normal load's end (drivers::Load::end_time; it has a history) and the
-/// tangential load's.
-double default_end_time(const drivers::Load& load, bool impact,
+/// The last time simulated [s] of a case without `load.end`: infinite for a run that `stops_itself`
+/// (drivers::ends_by_stop_rule: an impact's contact end stops it, eq. 39); otherwise the later of the normal load's
+/// end (drivers::Load::end_time; it has a history) and the tangential load's.
+double default_end_time(const drivers::Load& load, bool stops_itself,
                         const std::optional<drivers::TangentialLoad>& tangential);
 
 /// Throws mdr::InvalidInput (key `indenter`) when a case with a Shore test gives an indenter too
@@ -65,8 +65,9 @@ rheology::Body compressible_body(rheology::ModelMaterial shear, std::optional<do
 /// The time window of completed parts (drivers::material_window of their load, end, numerics and tangential load).
 rheology::TimeWindow case_window(const CaseParts& parts);
 
-/// The case of `parts`: a Shore test's durometer in the case's units (drivers::make_shore_test; its spring, the
-/// standard's indenter, shore_indenter, and its base history), an impact's history the point (0, 0), the end
+/// The case of `parts`: its control completed in the case's units with the parts it brings
+/// (drivers::complete_control: a Shore test's durometer, the standard's indenter and base history; an impact's
+/// history, the point (0, 0)), the end
 /// `load.end` or default_end_time; then the bodies (`bodies`, kept in the case: drivers::set_bodies) and the case's
 /// rules (drivers::validate, which checks a model converted to a series against the case's window, and
 /// drivers::validate_layer). Throws mdr::InvalidInput naming the key, the value and the rule.

@@ -12,8 +12,10 @@
 
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/oblique_sphere.hpp"
+#include "mdr/drivers/shore.hpp"
 #include "mdr/error.hpp"
 #include "mdr/profile/profile.hpp"
+#include "mdr/rheology/contact_bodies.hpp"
 #include "mdr/rheology/power_law.hpp"
 
 namespace mdr::drivers {
@@ -178,6 +180,48 @@ TEST(CaseValidation, EveryRuleNamesItsKey) {
     expect_key("tangential.end", [](ContactCase& c) {
         c.tangential = TangentialLoad{.friction = 0.3, .load = {.harmonic = HarmonicLoad{1e-6, 10.0, 0.5, 0.5}}};
     });
+}
+
+// A case's material is its bodies' combination (set_bodies): replacing the material, or only its origin, without the
+// bodies leaves two materials in one case (the drivers run one, mdr.ContactCase reads the other) and is refused
+// naming the member replaced; clearing the bodies with it is the documented way, and is taken.
+TEST(CaseValidation, AMaterialApartFromItsBodiesIsRefused) {
+    ContactCase with_bodies = creep_test();
+    set_bodies(with_bodies, {rheology::Body{rheology::ModelMaterial{rheology::Rheology::standard(1e6, 2e6, 0.1),
+                                                                    {.description = "standard"}}}});
+    EXPECT_EQ(key_of([&] { validate(with_bodies); }), "");
+
+    ContactCase other_material = with_bodies;
+    other_material.material = rheology::Rheology::standard(1e6, 3e6, 0.1);
+    EXPECT_EQ(key_of([&] { validate(other_material); }), "material");
+
+    ContactCase other_origin = with_bodies;
+    other_origin.material_origin.description = "a fitted candidate";
+    EXPECT_EQ(key_of([&] { validate(other_origin); }), "material_origin");
+
+    other_material.bodies.reset();
+    EXPECT_EQ(key_of([&] { validate(other_material); }), "");
+}
+
+// A Shore test's spring is the durometer's (its ShoreTest's spring rate, ASTM D2240): another constant is refused
+// naming load.spring_constant and its value, before any other rule of the spring.
+TEST(CaseValidation, AShoreTestsSpringIsTheDurometers) {
+    const ShoreTest test = make_shore_test(ShoreScale::A, 1.0);
+    ContactCase shore_case = creep_test();
+    shore_case.indenter = durometer_indenter(ShoreScale::A);
+    shore_case.load.history = shore_base_history(test);
+    shore_case.control = SpringControl{.spring_constant = test.instrument.spring_rate, .shore = test};
+    EXPECT_EQ(key_of([&] { validate(shore_case); }), "");
+    for (const double spring_constant : {5.0, 0.0}) {
+        shore_case.control = SpringControl{.spring_constant = spring_constant, .shore = test};
+        try {
+            validate(shore_case);
+            ADD_FAILURE() << "a Shore test with the spring " << spring_constant << " N/m was taken";
+        } catch (const InvalidInput& error) {
+            EXPECT_EQ(error.key(), "load.spring_constant");
+            EXPECT_EQ(error.value(), format_value(spring_constant));
+        }
+    }
 }
 
 }  // namespace

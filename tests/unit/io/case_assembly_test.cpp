@@ -40,6 +40,23 @@ TEST(CaseAssembly, AShoreTestGetsTheDurometerInTheCasesUnits) {
     }
 }
 
+// A Shore test's spring is the durometer's: a spring control with a durometer and a spring constant of its own is
+// refused naming load.spring_constant (before, the constant was replaced by the durometer's without a word); the
+// durometer's own, as a case reads it back (mdr.ContactCase(control=case.control)), is taken.
+TEST(CaseAssembly, AShoreTestTakesNoSpringOfItsOwn) {
+    const drivers::ContactCase assembled =
+        assemble_case(CaseParts{.control = drivers::SpringControl{.shore = drivers::ShoreTest{}}}, elastic);
+    EXPECT_NO_THROW(assemble_case(CaseParts{.control = assembled.control}, elastic));
+    const CaseParts parts{.control = drivers::SpringControl{.spring_constant = 5.0, .shore = drivers::ShoreTest{}}};
+    try {
+        assemble_case(parts, elastic);
+        ADD_FAILURE() << "a spring constant beside a durometer was taken";
+    } catch (const InvalidInput& error) {
+        EXPECT_EQ(error.key(), "load.spring_constant");
+        EXPECT_EQ(error.value(), "5");
+    }
+}
+
 // An impact starts at the surface at rest, the history (0, 0), and runs until its contact ends (eq. 39): no end.
 TEST(CaseAssembly, AnImpactStartsAtTheSurfaceWithoutAnEnd) {
     const drivers::ContactCase assembled =

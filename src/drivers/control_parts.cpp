@@ -1,0 +1,12 @@
+#include "mdr/drivers/control_parts.hpp"
+
+#include "every_control.hpp"
+
+namespace mdr::drivers {
+
+BroughtParts complete_control(const LoadControl& control, double length_unit, double force_unit) {
+    return visit_control(control,
+                         [&](auto traits, const auto& data) { return traits.bring(data, length_unit, force_unit); });
+}
+
+}  // namespace mdr::drivers
