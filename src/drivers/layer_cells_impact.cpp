@@ -26,15 +26,8 @@ IndentationResult run_layer_cells_impact(const ContactCase& contact_case, double
     const double mass = contact_case.impact()->mass, approach = contact_case.impact()->velocity;
     ImpactClock clock(contact_case.snapshots, numerics.time_step);
     double depth = 0.0, velocity = approach, force = 0.0, contact_radius = 0.0;
-    // The rows and the snapshots (of the cells) by the half-space's recorders, then the caller's observers; a stop
-    // ends the run with its state.
-    ObserverList observed(std::max<std::size_t>(contact_case.numerics.output_every, 1));
-    RowRecorder rows(result, row_columns(contact_case.control));
-    observed.add(rows);
-    CellSnapshots cell_snapshots(layer);
-    SnapshotRecorder snapshots(contact_case.snapshots, cell_snapshots, result);
-    observed.add(snapshots);
-    observed.add(observers);
+    CellRunObservers run_observers(contact_case, layer, result, observers);
+    ObserverList& observed = run_observers.list();
     // Hands the state after step n to the observers; returns whether the run ends.
     const auto notify = [&](std::size_t n) {
         StepState state{.step = n,

@@ -37,15 +37,8 @@ IndentationResult run_layer_regrowing(const ContactCase& contact_case, double la
     // history resumes shifted from the z reached (PausedBase, as on the half-space).
     std::optional<PausedBase> paused;
     if (loading.paused()) paused.emplace(*loading.force_pauses, spring_constant);
-    // The rows and the snapshots (of the cells) by the half-space's recorders, then the caller's observers; a stop
-    // ends the run with its state.
-    ObserverList observed(std::max<std::size_t>(contact_case.numerics.output_every, 1));
-    RowRecorder rows(result, row_columns(contact_case.control));
-    observed.add(rows);
-    CellSnapshots cell_snapshots(layer);
-    SnapshotRecorder snapshots(contact_case.snapshots, cell_snapshots, result);
-    observed.add(snapshots);
-    observed.add(observers);
+    CellRunObservers run_observers(contact_case, layer, result, observers);
+    ObserverList& observed = run_observers.list();
     const std::size_t last_node = grid.size() - 1;
     const bool sine_rate = displacement && contact_case.load.harmonic && material.viscosity() > 0.0;
     std::size_t reported = 0;

@@ -63,6 +63,7 @@ fit::FitProblem layer_problem(const drivers::ContactCase& truth, fit::Curve curv
     problem.model = [truth](const std::vector<double>& values) {
         auto model = truth;
         model.material = rheology::Rheology::standard(values[0], values[1], values[2]);
+        model.bodies.reset();  // the material replaced is no body's (drivers::validate)
         model.layer->thickness = values[3];
         return model;
     };
@@ -141,6 +142,7 @@ std::pair<double, double> uniform_kernel_recovery(double chi_max) {
     problem.model = [](const std::vector<double>& values) {
         auto model = io::parse_case(layer_case("bonded"));
         model.material = rheology::Rheology::elastic(values[0]);
+        model.bodies.reset();  // the material replaced is no body's (drivers::validate)
         model.indenter = profile::make_sphere(R);
         model.layer->thickness = values[1];
         return model;
@@ -243,6 +245,7 @@ TEST(FitLayer, AForceDrivenCurveFitsTheDepthOnCells) {
     problem.model = [truth](const std::vector<double>& values) {
         auto model = truth;
         model.material = rheology::Rheology::standard(values[0], values[1], values[2]);
+        model.bodies.reset();  // the material replaced is no body's (drivers::validate)
         return model;
     };
     problem.settings.fitted = fit::Fitted::depth;

@@ -128,6 +128,7 @@ fit::FitProblem preloaded_problem(fit::Curve curve, bool thickness_free, double 
     problem.model = [base = io::parse_case(layer_case()), fixed](const std::vector<double>& values) {
         auto model = base;
         model.material = rheology::Rheology::standard(values[0], values[1], values[2]);
+        model.bodies.reset();  // the material replaced is no body's (drivers::validate)
         model.layer->thickness = values.size() > 3 ? values[3] : fixed;
         return model;
     };
