@@ -37,7 +37,7 @@ bench: build
 	@$(BUILD_DIR)/bin/mdr_bench --benchmark_counters_tabular=true
 
 # Byte identity of every example and fuzz-corpus output against a binary kept from before a change
-# (docs/architecture.md): make compare OLD=/tmp/mdr-old
+# (docs/extending.md): make compare OLD=/tmp/mdr-old
 compare:
 	@test -n "$(OLD)" || { echo "make compare: give OLD=path/to/the/old/mdr" >&2; exit 2; }
 	@cmake --build $(BUILD_DIR) -j $(JOBS) --target mdr

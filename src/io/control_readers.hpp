@@ -2,7 +2,7 @@
 // The io table of controls, internal to mdr_io: for each row of the drivers' table (mdr/drivers/controls.hpp), the
 // reader that builds its drivers::LoadControl and base history from `[load]`. The drivers' rows stay free of io;
 // adding a control is its type (load_control.hpp), its drivers' side (its ControlTraits, with its rows) and one row
-// here (docs/architecture.md, "How to add a control").
+// here (docs/architecture.md, "How to add a control"; docs/extending.md, "A control").
 
 #include <memory>
 #include <optional>

@@ -113,7 +113,7 @@ struct ImpactControl {
 /// What the load prescribes: one of the controls, in the order of the table of controls (controls.hpp). Adding a
 /// control is one new type here (its fields() make its Python class), its drivers' side (its ControlTraits: stepping,
 /// rules, numerics, rows of the table, its run on a [layer]) and its reader's row (src/io/control_readers.cpp):
-/// docs/architecture.md, "A control".
+/// docs/architecture.md, "How to add a control"; docs/extending.md, "A control".
 using LoadControl = std::variant<DisplacementControl, ForceControl, ImpactControl, SpringControl>;
 
 }  // namespace mdr::drivers
