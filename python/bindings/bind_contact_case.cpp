@@ -48,9 +48,21 @@ T argument(const py::handle& value, const std::string& key, const std::string& e
     }
 }
 
-// The history `points` (None: none) as the drivers' LoadHistory named `key` (its rules: drivers/load_history.hpp).
+// The numbers of a list or tuple `values` (`key`): refuses a bool among them, with the message of argument<Number>;
+// other sequences (arrays) are cast whole.
+void refuse_bools(const py::handle& values, const std::string& key, int depth) {
+    if (!py::isinstance<py::list>(values) && !py::isinstance<py::tuple>(values)) return;
+    for (const py::handle item : values) {
+        if (depth > 0) refuse_bools(item, key, depth - 1);
+        else if (PyBool_Check(item.ptr())) throw py::type_error(key + ": expected a number, got bool");
+    }
+}
+
+// The history `points` (None: none) as the drivers' LoadHistory named `key` (its rules: drivers/load_history.hpp);
+// a bool among its numbers refused, as a case file's reader refuses one.
 std::optional<drivers::LoadHistory> load_history(const py::object& points, const std::string& key) {
     if (points.is_none()) return std::nullopt;
+    refuse_bools(points, key, 1);
     std::vector<drivers::LoadPoint> history;
     for (const auto& [time, value] : argument<Points>(points, key, "a sequence of (t, value) pairs")) {
         history.push_back({time, value});
@@ -158,16 +170,6 @@ std::string value_text(const py::handle& value) {
     return py::module_::import("reprlib").attr("repr")(value).cast<std::string>();
 }
 
-// The numbers of a list or tuple `values` (`key`): refuses a bool among them, with the message of argument<Number>;
-// other sequences (arrays) are cast whole.
-void refuse_bools(const py::handle& values, const std::string& key, int depth) {
-    if (!py::isinstance<py::list>(values) && !py::isinstance<py::tuple>(values)) return;
-    for (const py::handle item : values) {
-        if (depth > 0) refuse_bools(item, key, depth - 1);
-        else if (PyBool_Check(item.ptr())) throw py::type_error(key + ": expected a number, got bool");
-    }
-}
-
 // A number as Python writes it (2.0, 1e-06), for the parts' __repr__.
 std::string float_repr(double value) { return py::repr(py::float_(value)).cast<std::string>(); }
 
@@ -194,7 +196,6 @@ drivers::ContactCase contact_case(const CaseArguments& given) {
     for (const auto& [key, value] : load_keys) {
         if (!value.is_none() && !kind.key_named(key)) io::require_control_takes(kind, key, value_text(value));
     }
-    refuse_bools(given.history, "load.history", 1);
     parts.load.history = load_history(given.history, "load.history");
     if (!given.harmonic.is_none()) {
         parts.load.harmonic = argument<drivers::HarmonicLoad>(given.harmonic, "load.harmonic", "an mdr.Harmonic");

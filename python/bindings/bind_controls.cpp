@@ -43,17 +43,18 @@ struct PythonValue<double> {
     static std::string parameter_type() { return "float"; }
 };
 
-// Force pauses: (start, end) pairs [s], none by default.
+// Force pauses: (start, end) pairs [s], none by default; a bool among them refused (Number), as a case file does.
 template <>
 struct PythonValue<std::vector<drivers::ForcePause>> {
-    using Keyword = std::vector<std::pair<double, double>>;
+    using Keyword = std::vector<std::pair<Number, Number>>;
+    using Pairs = std::vector<std::pair<double, double>>;
     static std::vector<drivers::ForcePause> from_keyword(const Keyword& pairs) {
         std::vector<drivers::ForcePause> pauses;
         for (const auto& [start, end] : pairs) pauses.push_back({start, end});
         return pauses;
     }
-    static Keyword read(const std::vector<drivers::ForcePause>& pauses) {
-        Keyword pairs;
+    static Pairs read(const std::vector<drivers::ForcePause>& pauses) {
+        Pairs pairs;
         for (const drivers::ForcePause& pause : pauses) pairs.emplace_back(pause.start, pause.end);
         return pairs;
     }

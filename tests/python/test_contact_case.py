@@ -501,3 +501,14 @@ def test_a_part_refuses_a_bool_for_a_number_and_names_it(make):
     with pytest.raises(TypeError, match=r"Invoked with: kwargs: .*=(True|False)"):
         make()
     assert mdr.Layer(thickness=1).thickness == 1.0 and mdr.Numerics(elements=10).elements == 10  # ints are numbers
+
+
+def test_a_pause_or_a_tangential_history_refuses_a_bool_as_a_case_file_does():
+    """`load.force_pauses = [[true, 2.0]]` and a tangential history's `true` are refused by the case file's reader
+    ("must be a number"); from Python they were taken as 1.0 (the pairs were cast as plain floats)."""
+    with pytest.raises(TypeError, match=r"Invoked with: kwargs: .*force_pauses=\[\(True, 2\.0\)\]"):
+        mdr.SpringControl(spring_constant=1.0, force_pauses=[(True, 2.0)])
+    with pytest.raises(TypeError, match="^tangential.history: expected a number, got bool"):
+        mdr.Tangential(friction=0.3, history=[(0.0, 0.0), (1.0, True)])
+    assert mdr.SpringControl(spring_constant=1.0, force_pauses=[(1, 2)]).force_pauses == [(1.0, 2.0)]  # ints are
+    assert mdr.Tangential(friction=0.3, history=[(0, 0), (1, 1e-6)]).history == [(0.0, 0.0), (1.0, 1e-6)]  # numbers
