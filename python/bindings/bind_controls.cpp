@@ -98,6 +98,26 @@ constexpr auto keyword_fields() {
         Control::fields());
 }
 
+// The repr of the part a case brought to `control` (a Shore test's ShoreTest), when one is set: the control= value
+// that rebuilds it (a part is no keyword, so that a repr of the control's keywords would rebuild another control).
+template <class Control>
+std::optional<std::string> brought_part_repr(const Control& control) {
+    std::optional<std::string> shown;
+    std::apply(
+        [&](const auto&... field) {
+            (
+                [&](const auto& one) {
+                    if constexpr (is_part<std::remove_cvref_t<decltype(one)>>) {
+                        const auto& part = control.*one.member;
+                        if (part && !shown) shown = py::repr(py::cast(*part)).template cast<std::string>();
+                    }
+                }(field),
+                ...);
+        },
+        Control::fields());
+    return shown;
+}
+
 // A field's line of documentation with its unit.
 template <class Field>
 std::string field_documentation(const Field& field) {
@@ -177,7 +197,7 @@ py::list field_table() {
 }
 
 // The Python class of control type `Control`: its constructor, a read-only property per field, `__repr__` (the
-// keywords with their values' repr) and `_fields`.
+// keywords with their values' repr, or the part a case brought) and `_fields`.
 template <class Control>
 void bind_control(py::module_& module) {
     const std::string name = control_class_name<Control>();
@@ -195,6 +215,7 @@ void bind_control(py::module_& module) {
         },
         Control::fields());
     bound.def("__repr__", [name](const Control& control) {
+        if (const auto brought = brought_part_repr(control)) return *brought;
         std::vector<std::string> keywords;
         std::apply(
             [&](const auto&... field) {

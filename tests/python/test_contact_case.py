@@ -461,6 +461,18 @@ def test_a_control_is_its_types_fields_and_its_repr_rebuilds_it():
     assert mdr.SpringControl(spring_constant=1e3).shore is None  # a part the case brings: read back only
 
 
+def test_a_shore_tests_control_reads_back_as_the_test_that_rebuilds_it():
+    """A Shore test's control is a SpringControl with the part the case brought (its ShoreTest), which is no keyword:
+    its repr is that ShoreTest, the control= that rebuilds the case's control. Before, the repr was a plain
+    SpringControl call, which rebuilt a spring without the durometer (a case without an indenter, refused)."""
+    material = mdr.Material.standard(G_inf=1e6, G1=2e6, tau1=0.5)
+    control = mdr.ContactCase(material=material, control=mdr.ShoreTest(scale="D", duration=3.0)).control
+    assert repr(control) == 'ShoreTest(scale="D", duration=3.0)'
+    rebuilt = mdr.ContactCase(material=material, control=eval(repr(control), vars(mdr))).control  # noqa: S307
+    assert (rebuilt.shore.scale, rebuilt.shore.duration) == ("D", 3.0)
+    assert rebuilt.spring_constant == control.spring_constant
+
+
 def test_the_parts_show_their_values():
     harmonic = mdr.Harmonic(amplitude=1e-6, frequency=2.0, start=0.5, end=1.5)
     assert repr(harmonic) == "Harmonic(amplitude=1e-06, frequency=2.0, start=0.5, end=1.5)"
