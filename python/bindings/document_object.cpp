@@ -36,12 +36,29 @@ py::object document_object(const Document& document) {
         document.value);
 }
 
+namespace {
+
+// A str as UTF-8; a lone surrogate (a byte of a file name that is not UTF-8, os.fsdecode) as Python's
+// backslashreplace writes it, so that every text of a document is UTF-8 that JSON can hold.
+std::string utf8_text(const py::handle& text) {
+    return text.attr("encode")("utf-8", "backslashreplace").cast<std::string>();
+}
+
+}  // namespace
+
 Document document_of(const py::handle& object) {
     if (object.is_none()) return {};
     if (py::isinstance<py::bool_>(object)) return {object.cast<bool>()};  // before int: a bool is an int in Python
-    if (py::isinstance<py::int_>(object)) return {object.cast<std::size_t>()};
+    if (py::isinstance<py::int_>(object)) {  // a count, as every int of mdr's documents
+        try {
+            return {object.cast<std::size_t>()};
+        } catch (const py::cast_error&) {
+            throw py::type_error("a result document holds an int as a count (0 to 2**64 - 1), not " +
+                                 py::repr(object).cast<std::string>());
+        }
+    }
     if (py::isinstance<py::float_>(object)) return {object.cast<double>()};
-    if (py::isinstance<py::str>(object)) return {object.cast<std::string>()};
+    if (py::isinstance<py::str>(object)) return {utf8_text(object)};
     if (py::isinstance<py::list>(object) || py::isinstance<py::tuple>(object)) {
         Document::List list;
         for (const auto& item : object) list.push_back(document_of(item));
@@ -50,7 +67,8 @@ Document document_of(const py::handle& object) {
     if (py::isinstance<py::dict>(object)) {
         Document::Table table;
         for (const auto& [key, item] : object.cast<py::dict>()) {
-            table.push_back({key.cast<std::string>(), document_of(item)});
+            table.push_back({py::isinstance<py::str>(key) ? utf8_text(key) : key.cast<std::string>(),
+                             document_of(item)});
         }
         return {std::move(table)};
     }

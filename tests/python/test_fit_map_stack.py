@@ -8,6 +8,7 @@ import csv
 import io
 import json
 import math
+import os
 import subprocess
 import sys
 
@@ -101,3 +102,26 @@ def test_the_sweep_helper_writes_json_the_command_line_parses(monkeypatch, capsy
     assert line.count("\n") == 1
     assert json.loads(line, parse_constant=lambda name: pytest.fail(f"{name} is no JSON")) == \
         {"first": 0, "rows": [[{"max_force": None, "steps": 3}, None]]}
+
+
+def test_the_sweep_helper_writes_an_error_naming_an_undecodable_file(capsys):
+    """An error naming a file whose name is not UTF-8 (Python holds its bytes as lone surrogates, os.fsdecode) is
+    still one line of JSON, the bytes shown as Python's backslashreplace shows them; before, io::to_json's caster
+    raised RuntimeError ('Unable to cast Python instance') and the helper wrote no line."""
+    from mdr import _sweep_rows
+
+    message = "--scheduler: OSError: cannot read " + os.fsdecode(b"/data/caf\xe9.toml")
+    _sweep_rows._emit({"error": message})
+    line = capsys.readouterr().out
+    assert line.count("\n") == 1
+    assert json.loads(line) == {"error": message.encode("utf-8", "backslashreplace").decode("utf-8")}
+    assert json.loads(line)["error"].endswith("/data/caf\\udce9.toml")
+
+
+def test_json_from_python_refuses_an_int_that_is_no_count_by_name():
+    """mdr's documents hold an int as a count (std::size_t): a negative or too large int is a TypeError that says
+    so; before, pybind11's RuntimeError 'Unable to cast Python instance to C++ type' named neither."""
+    for number in (-1, 2**64):
+        with pytest.raises(TypeError, match=rf"holds an int as a count .*, not {number}$"):
+            mdr._mdr._to_json({"steps": number}, -1)
+    assert mdr._mdr._to_json({"steps": 2**64 - 1}, -1) == '{"steps":18446744073709551615}'
