@@ -169,9 +169,9 @@ bool CaseObjects::has_number(const std::string& key) const {
 
 std::string CaseObjects::numbers_rule() const {
     return "no such numeric key among those a case of objects sweeps (the numbers of its material and indenter "
-           "definitions, load.history[i][j], load.harmonic.*, load.end, output.snapshots[i], tangential.friction, "
-           "layer.thickness, numerics.*; a control's own keys, the bulk's and a converted model's tolerance are swept "
-           "from the case file or dict)";
+           "definitions, load.history[i][j], load.harmonic.*, load.end, output.snapshots[i], tangential.friction of a "
+           "[tangential] load (an oblique impact's is its control's), layer.thickness, numerics.*; a control's own "
+           "keys, the bulk's and a converted model's tolerance are swept from the case file or dict)";
 }
 
 drivers::ContactCase CaseObjects::build(const std::vector<std::string>& keys, const std::vector<double>& values) const {

@@ -162,6 +162,17 @@ def test_a_key_the_objects_do_not_sweep_says_where_it_is_swept(tmp_path):
         mdr.sweep(mdr.ContactCase.from_file(path), {"load.spring_constant": [0.1]}, jobs=1)
 
 
+def test_an_oblique_impacts_friction_is_named_as_its_controls_key():
+    """An oblique impact's friction (`tangential.friction` in a file) is its control's (ImpactControl.oblique), which
+    the object sweep does not set: its message says so (before, it listed tangential.friction among the keys swept)."""
+    case = mdr.ContactCase(material=mdr.Material.elastic(G=1e6), indenter=mdr.Indenter.sphere(R=1e-3),
+                           control=mdr.ImpactControl(mass=1e-3, velocity=0.1,
+                                                     oblique=mdr.ObliqueImpact(friction=0.3, spin=2.0)))
+    with pytest.raises(mdr.InvalidInput, match=r"tangential\.friction of a \[tangential\] load \(an oblique "
+                                               r"impact's is its control's\)"):
+        mdr.sweep(case, {"tangential.friction": [0.1]}, jobs=1)
+
+
 def test_a_count_takes_integers_only():
     case = mdr.ContactCase(material=mdr.Material.elastic(G=1e3), indenter=mdr.Indenter.sphere(R=1e-5),
                            control=mdr.DisplacementControl(), history=RAMP_AND_HOLD,
