@@ -211,6 +211,12 @@ class CurveMap:
 
         names = []
         texts = [name for name, array in self.values.items() if array.dtype.kind != "f"]
+        for name in self.values:  # every check before the first file, so that a refusal writes nothing
+            if name not in texts and (name in ("", ".", "..", "status") or "/" in name or "\\" in name
+                                      or os.sep in name):
+                raise ValueError(f"values[{name!r}]: must be a plain file name (no '/' or '\\', not '.' or '..') "
+                                 "other than status (the codes' status.npy): write_files names NAME.npy by a value "
+                                 "that is a number")
         for name, array in self.values.items():
             if name not in texts:
                 np.save(os.path.join(directory, f"{name}.npy"), array)

@@ -125,3 +125,18 @@ def test_json_from_python_refuses_an_int_that_is_no_count_by_name():
         with pytest.raises(TypeError, match=rf"holds an int as a count .*, not {number}$"):
             mdr._mdr._to_json({"steps": number}, -1)
     assert mdr._mdr._to_json({"steps": 2**64 - 1}, -1) == '{"steps":18446744073709551615}'
+
+
+@pytest.mark.parametrize("name", ["../outside", "sub/dir", "..", "", "status"])
+def test_write_files_refuses_a_value_name_that_is_no_plain_file_name_and_writes_nothing(tmp_path, name):
+    """CurveMap.write_files names NAME.npy by each value: a name with a path in it wrote outside the directory (or
+    into a folder not there), and a number named "status" was overwritten by the codes' status.npy (a text value of
+    that name goes to texts.csv); now refused naming the value, before any file is written."""
+    from mdr.curve_maps import OK, CurveMap
+    out = tmp_path / "out"
+    out.mkdir()
+    curve_map = CurveMap(values={"G": np.ones((1, 1)), name: np.zeros((1, 1))}, status=np.full((1, 1), OK),
+                         reasons=np.full((1, 1), "", dtype=object))
+    with pytest.raises(ValueError, match=r"^values\[.*must be a plain file name"):
+        curve_map.write_files(str(out), figures=False)
+    assert sorted(os.listdir(tmp_path)) == ["out"] and os.listdir(out) == []
