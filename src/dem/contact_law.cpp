@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "mdr/error.hpp"
 
@@ -163,6 +164,18 @@ void ContactLaw::check(std::span<const double> state) const {
     if (state[counted] != static_cast<double>(contacts)) {
         throw InvalidInput(entry(counted), format_value(state[counted]),
                            "the header counts the " + std::to_string(contacts) + " elements in contact");
+    }
+    // Its summary of the written elements, which the steps read in their place (a copy of the elements: the
+    // summary is made on writable ones).
+    std::vector<double> written(state.begin() + static_cast<std::ptrdiff_t>(normal_offset_),
+                                state.begin() + static_cast<std::ptrdiff_t>(tangential_offset_));
+    double* w = written.data() + 3;
+    const std::size_t mismatch = composed_.summary_mismatch(state.subspan(header_offset, header_size_),
+                                                            {w, w + n, w + 2 * n, n, active});
+    if (mismatch < header_size_) {
+        throw InvalidInput(entry(header_offset + mismatch), format_value(state[header_offset + mismatch]),
+                           "the header's summary of the written elements (ComposedNormalStep::summarise) must be "
+                           "theirs");
     }
     for (std::size_t k = 0; k < branches_ && state[composed] != 0.0; ++k) {
         const std::size_t factor = header_offset + foundation::ComposedNormalStep::factors_offset + k;

@@ -64,7 +64,8 @@ public:
     void initialise(std::span<double> state) const;
     /// Throws mdr::InvalidInput (key `state[i]`) unless `state` is a state this law could have written: state_size()
     /// doubles, all finite, element counts within N, contact flags 0 or 1 and as many as the header counts, the
-    /// header's flag "composed" 0 or 1 with composition factors in (0, 1], a unit frame axis with handedness +-1
+    /// header's flag "composed" 0 or 1 with composition factors in (0, 1] and a summary of the written elements
+    /// that is theirs (ComposedNormalStep::summary_mismatch), a unit frame axis with handedness +-1
     /// (or all zero before the first advance_spatial). For states read back from a file (a restart).
     void check(std::span<const double> state) const;
     /// Turns a contact's state into the same contact seen with the two bodies swapped (a code that stores a

@@ -99,5 +99,33 @@ TEST(DemComposedNormalStep, AHeldContactsStepsLeaveItsElementsAsTheyWere) {
     EXPECT_GT(law.contact_count(), 0u);
 }
 
+// A DEM code may change its time step between steps (LAMMPS's fix dt/reset) while a contact is held in the composed
+// form: the header's maps are products of past steps' maps, each of its own dt, so the following steps compose with
+// the new step's map. The reference: the Foundation with each step's own coefficients (eq. 13-22).
+TEST(DemComposedNormalStep, AChangingTimeStepComposesAsTheFoundationSteps) {
+    for (const auto& material : materials()) {
+        for (const auto& motion : motions()) {
+            foundation::Foundation reference(material, *profile::make_sphere(radius), half_width / elements, elements);
+            ContactLaw law(material, radius, 0.0, elements, half_width, time_step);
+            std::vector<double> state(law.state_size());
+            law.initialise(state);
+            double depth = 0.0, largest = 0.0, deviation = 0.0;
+            for (int n = 1; n <= std::min(motion.steps, 3000); ++n) {
+                const double step = time_step * (n % 7 == 0 ? 2.5 : n % 3 == 0 ? 0.4 : 1.0);
+                const double overlap = motion.overlap(n);
+                reference.begin_step(foundation::step_coefficients(material, step));
+                reference.advance(depth, overlap);
+                depth = overlap;
+                law.set_time_step(step);
+                law.advance(state, overlap, {0.0, 0.0});
+                largest = std::max(largest, std::abs(reference.total_force()));
+                deviation = std::max(deviation, std::abs(law.normal_force() - reference.total_force()));
+                ASSERT_EQ(law.contact_count(), reference.contact_count()) << motion.name << " step " << n;
+            }
+            EXPECT_LE(deviation, 1e-12 * largest) << "M = " << material.terms().size() << ", " << motion.name;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace mdr::dem

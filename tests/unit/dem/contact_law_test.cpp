@@ -196,6 +196,16 @@ TEST(DemContactLaw, ACorruptedStateRaisesNamingTheEntry) {
     half_composed[law_header + foundation::ComposedNormalStep::composed_offset] = 0.5;
     EXPECT_EQ(thrown_key([&] { law.check(half_composed); }),
               "state[" + std::to_string(law_header + foundation::ComposedNormalStep::composed_offset) + "]");
+    // The header's summary of the written elements (their count in contact, the sum and the largest of their g_i,
+    // the sums and least values of their memories, the free ones' extremes; ComposedNormalStep::summarise) is
+    // derived from them: corrupted, check accepted it and the steps read it (the force off by the corruption).
+    const std::size_t summary_entries[] = {3, 4, 5, 6 + 2 * 2, 6 + 3 * 2 + 1, 6 + 4 * 2 + 9 + 1};
+    for (const std::size_t entry : summary_entries) {
+        auto missummarised = state;
+        missummarised[law_header + entry] += 1e-7;
+        EXPECT_EQ(thrown_key([&] { law.check(missummarised); }), "state[" + std::to_string(law_header + entry) + "]")
+            << entry;
+    }
     auto short_state = state;
     short_state.pop_back();
     EXPECT_EQ(thrown_key([&] { law.begin(short_state); }), "state");
