@@ -97,13 +97,15 @@ public:
     void advance_tangential(PlanarVector displacement);
     /// Writes the tangential displacement and the frame into the contact's state (the elements are already there).
     void end(std::span<double> state) const;
-    /// begin, advance_normal, advance_tangential, end.
+    /// begin, advance_normal, advance_tangential, end; a displacement that is not finite raises (key
+    /// `displacement`) before the normal step, the state unchanged.
     void advance(std::span<double> state, double overlap, PlanarVector displacement);
     /// One step for a code with three-dimensional vectors: `normal` the unit normal from the first body to the
     /// second at the end of the step, `increment` [m] the displacement of the first body's contact point relative
     /// to the second's over the step (its normal part is ignored). The contact frame, kept in the state, first
     /// turns into the new tangent plane (its axis projected and rescaled, as LAMMPS's granular history); at first
-    /// touch its axis is the increment's direction. Returns the tangential force [N] on the second body.
+    /// touch its axis is the increment's direction. Returns the tangential force [N] on the second body. Throws
+    /// mdr::InvalidInput (key `normal`, `increment`) for a vector that is not finite, the state unchanged.
     SpatialVector advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
                                   const SpatialVector& increment);
 
