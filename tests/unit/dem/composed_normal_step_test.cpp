@@ -101,9 +101,13 @@ TEST(DemComposedNormalStep, AHeldContactsStepsLeaveItsElementsAsTheyWere) {
 
 // A DEM code may change its time step between steps (LAMMPS's fix dt/reset) while a contact is held in the composed
 // form: the header's maps are products of past steps' maps, each of its own dt, so the following steps compose with
-// the new step's map. The reference: the Foundation with each step's own coefficients (eq. 13-22).
+// the new step's map. The reference: the Foundation with each step's own coefficients (eq. 13-22). M = 0 too (an
+// elastic and a Kelvin-Voigt contact: the free elements' map alone composes).
 TEST(DemComposedNormalStep, AChangingTimeStepComposesAsTheFoundationSteps) {
-    for (const auto& material : materials()) {
+    auto cases = materials();
+    cases.push_back(rheology::Rheology::elastic(1e6));
+    cases.push_back(rheology::Rheology::kelvin_voigt(1e6, 20.0));
+    for (const auto& material : cases) {
         for (const auto& motion : motions()) {
             foundation::Foundation reference(material, *profile::make_sphere(radius), half_width / elements, elements);
             ContactLaw law(material, radius, 0.0, elements, half_width, time_step);
