@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mdr/foundation/foundation.hpp"
+#include "mdr/foundation/planar_tangential_layer.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/profile/profile.hpp"
 
@@ -126,6 +127,39 @@ TEST(DemComposedNormalStep, AChangingTimeStepComposesAsTheFoundationSteps) {
                 deviation = std::max(deviation, std::abs(law.normal_force() - reference.total_force()));
                 ASSERT_EQ(law.contact_count(), reference.contact_count()) << motion.name << " step " << n;
             }
+            EXPECT_LE(deviation, 1e-12 * largest) << "M = " << material.terms().size() << ", " << motion.name;
+        }
+    }
+}
+
+// With friction the tangential layer reads the line loads the composed form derives (G_inf (d - g_i) + eta rate + sum
+// G_k (A_k h^_k + C_k), eq. 16, 22): the reference is the Foundation's line loads on its own buffers driving a
+// PlanarTangentialLayer of its own (eq. 41-50), every element every step; materials with a parallel dashpot.
+TEST(DemComposedNormalStep, TangentialForcesWithFrictionAreTheFoundationsToRoundOff) {
+    const auto all = materials();
+    for (const auto& material : {all[1], all[3]}) {
+        for (const auto& motion : motions()) {
+            foundation::Foundation reference(material, *profile::make_sphere(radius), half_width / elements, elements);
+            foundation::PlanarTangentialLayer layer(material, 0.3, half_width / elements, elements);
+            const auto coefficients = foundation::step_coefficients(material, time_step);
+            ContactLaw law(material, radius, 0.3, elements, half_width, time_step);
+            std::vector<double> state(law.state_size()), loads(elements);
+            law.initialise(state);
+            double depth = 0.0, shift = 0.0, largest = 0.0, deviation = 0.0;
+            for (int n = 1; n <= std::min(motion.steps, 3000); ++n) {
+                const double overlap = motion.overlap(n), displacement = 3e-6 * std::sin(2.0 * pi * n / 300.0);
+                reference.begin_step(coefficients);
+                reference.advance(depth, overlap);
+                reference.line_loads(loads);
+                layer.begin_step(coefficients, reference.entries());
+                layer.advance({displacement - shift, 0.0}, loads, reference.contact_flags());
+                depth = overlap;
+                shift = displacement;
+                law.advance(state, overlap, {displacement, 0.0});
+                largest = std::max(largest, std::abs(layer.total_force()[0]));
+                deviation = std::max(deviation, std::abs(law.tangential_force()[0] - layer.total_force()[0]));
+            }
+            EXPECT_GT(largest, 0.0);
             EXPECT_LE(deviation, 1e-12 * largest) << "M = " << material.terms().size() << ", " << motion.name;
         }
     }
