@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "mdr/error.hpp"
 
@@ -46,6 +47,14 @@ SpatialVector any_normal_to(const SpatialVector& normal) {
     const auto result = cross(normal, unit);
     const double length = std::sqrt(dot(result, result));
     return {result[0] / length, result[1] / length, result[2] / length};
+}
+
+// Throws mdr::InvalidInput naming `key` unless every component of `vector` is finite (the key's string only then).
+template <class Vector>
+void require_finite_components(const char* key, const Vector& vector) {
+    for (const double component : vector) {
+        if (!std::isfinite(component)) require_finite(key, component);
+    }
 }
 
 std::string entry(std::size_t index) { return "state[" + std::to_string(index) + "]"; }
@@ -163,6 +172,18 @@ void ContactLaw::check(std::span<const double> state) const {
     if (state[counted] != static_cast<double>(contacts)) {
         throw InvalidInput(entry(counted), format_value(state[counted]),
                            "the header counts the " + std::to_string(contacts) + " elements in contact");
+    }
+    // Its summary of the written elements, which the steps read in their place (a copy of the elements: the
+    // summary is made on writable ones).
+    std::vector<double> written(state.begin() + static_cast<std::ptrdiff_t>(normal_offset_),
+                                state.begin() + static_cast<std::ptrdiff_t>(tangential_offset_));
+    double* w = written.data() + 3;
+    const std::size_t mismatch = composed_.summary_mismatch(state.subspan(header_offset, header_size_),
+                                                            {w, w + n, w + 2 * n, n, active});
+    if (mismatch < header_size_) {
+        throw InvalidInput(entry(header_offset + mismatch), format_value(state[header_offset + mismatch]),
+                           "the header's summary of the written elements (ComposedNormalStep::summarise) must be "
+                           "theirs");
     }
     for (std::size_t k = 0; k < branches_ && state[composed] != 0.0; ++k) {
         const std::size_t factor = header_offset + foundation::ComposedNormalStep::factors_offset + k;
@@ -323,9 +344,7 @@ PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
 }
 
 void ContactLaw::advance_tangential(PlanarVector displacement) {
-    for (const double component : displacement) {
-        if (!std::isfinite(component)) require_finite("displacement", component);
-    }
+    require_finite_components("displacement", displacement);
     const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};
     if (tangential_at_rest(increment)) {  // the layer's state stays zero (its force too, as begin found it)
         tangential_work_ = 0.0;
@@ -353,6 +372,7 @@ void ContactLaw::skip_resting_layer(PlanarVector displacement) {
 }
 
 void ContactLaw::advance(std::span<double> state, double overlap, PlanarVector displacement) {
+    require_finite_components("displacement", displacement);  // before the normal step writes the state
     begin(state);
     skip_resting_layer(displacement);
     advance_normal(overlap);
@@ -372,6 +392,8 @@ SpatialVector ContactLaw::tangential_force(std::span<const double> state, const 
 
 SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
                                           const SpatialVector& increment) {
+    require_finite_components("normal", normal);  // before the normal step writes the state
+    require_finite_components("increment", increment);
     begin(state);
     const SpatialVector slip = in_plane(increment, normal);
     // The frame turns with the normal: its axis projected into the new tangent plane and rescaled (LAMMPS's

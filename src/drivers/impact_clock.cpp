@@ -7,7 +7,7 @@ namespace mdr::drivers {
 
 namespace {
 
-// A snapshot time within this fraction of a step after a step's end is that end (the summed steps' round-off).
+// A snapshot time within this fraction of a step after the current time is that time (the summed steps' round-off).
 constexpr double landing_slack = 1e-9;
 
 }  // namespace
@@ -15,7 +15,7 @@ constexpr double landing_slack = 1e-9;
 ImpactClock::ImpactClock(std::vector<double> snapshots, double time_step)
     : cuts_(std::move(snapshots)), time_step_(time_step) {
     std::sort(cuts_.begin(), cuts_.end());
-    while (next_cut_ < cuts_.size() && cuts_[next_cut_] <= time_) ++next_cut_;
+    land();
 }
 
 double ImpactClock::step() const {
@@ -24,8 +24,12 @@ double ImpactClock::step() const {
 
 void ImpactClock::advance() {
     time_ += step();
-    if (next_cut_ < cuts_.size() && cuts_[next_cut_] - time_ <= landing_slack * time_step_) time_ = cuts_[next_cut_];
-    while (next_cut_ < cuts_.size() && cuts_[next_cut_] <= time_) ++next_cut_;
+    land();
+}
+
+void ImpactClock::land() {
+    const double reach = time_ + landing_slack * time_step_;
+    while (next_cut_ < cuts_.size() && cuts_[next_cut_] <= reach) time_ = std::max(time_, cuts_[next_cut_++]);
 }
 
 }  // namespace mdr::drivers

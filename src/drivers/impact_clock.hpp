@@ -7,10 +7,11 @@
 
 namespace mdr::drivers {
 
-/// Steps of `time_step` [s] from t = 0, each cut to end on the next snapshot time, none longer; a step that ends
-/// within 1e-9 of a step before a snapshot time ends on it (the time set to it): the summed steps' round-off would
-/// otherwise leave a step of ~1e-19 s, whose trapezoidal rate 2 dd/dt - v0 turns the depth's round-off into any
-/// velocity.
+/// Steps of `time_step` [s] from t = 0, each cut to end on the next snapshot time, none longer; the time (the
+/// start's too) is set to the latest snapshot time within 1e-9 of a step after it: the summed steps' round-off, or
+/// two snapshot times within round-off of each other, or one within round-off of 0, would otherwise leave a step of
+/// ~1e-19 s, whose trapezoidal rate 2 dd/dt - v0 turns the depth's round-off into any velocity (or whose 4m/dt^2
+/// overflows).
 class ImpactClock {
 public:
     /// `snapshots` [s] in any order; `time_step` > 0 [s].
@@ -23,6 +24,9 @@ public:
     void advance();
 
 private:
+    /// Sets the time to the latest snapshot time within the slack after it and moves past those reached.
+    void land();
+
     std::vector<double> cuts_;  // ascending
     std::size_t next_cut_ = 0;  // the first snapshot time after the current time
     double time_step_;

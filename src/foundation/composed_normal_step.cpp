@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 #include <type_traits>
+#include <vector>
 
 namespace mdr::foundation {
 namespace {
@@ -337,6 +338,23 @@ void ComposedNormalStep::summarise(std::span<double> header, const AttachedEleme
     for (std::size_t r = 0; r < order; ++r) {
         for (std::size_t j = 0; j < order; ++j) map[r * order + j] = r == j ? 1.0 : 0.0;
     }
+}
+
+std::size_t ComposedNormalStep::summary_mismatch(std::span<const double> header,
+                                                 const AttachedElements& elements) const {
+    std::vector<double> derived(header.begin(), header.end());
+    summarise(derived, elements, header[rate_offset]);
+    const std::size_t m = branches_, free_floor = map_offset() + (m + 1) * (m + 1);
+    // The summary's entries: [2, 6), S_k and the least h^_k, the free elements' least and largest (w^, h^_k).
+    const std::size_t ranges[3][2] = {{contacts_offset, scale_offset},
+                                      {scale_offset + 2 * m, scale_offset + 4 * m},
+                                      {free_floor, free_floor + 2 * (m + 1)}};
+    for (const auto& range : ranges) {
+        for (std::size_t i = range[0]; i < range[1]; ++i) {
+            if (derived[i] != header[i]) return i;
+        }
+    }
+    return header.size();
 }
 
 void ComposedNormalStep::line_loads(std::span<const double> header, const AttachedElements& elements, double depth,

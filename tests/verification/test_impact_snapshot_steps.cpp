@@ -37,4 +37,28 @@ TEST(ImpactSnapshotSteps, ASnapshotOnTheSummedStepsLeavesTheImpactAsItIs) {
     }
 }
 
+TEST(ImpactSnapshotSteps, SnapshotTimesWithinRoundOffOfALandingLeaveTheImpactAsItIs) {
+    // Two snapshot times one unit in the last place apart (1.36e-20 s) left a step of that length after landing on
+    // the first: e = 1.41, refused as unresolved. A snapshot at 1e-200 s made the first step's 4m/dt^2 infinite: a
+    // NaN velocity, refused at load.end. A snapshot time within 1e-9 of a step after the time landed on is that time
+    // (ImpactClock), as one the summed steps reach up to round-off; both are taken there.
+    const std::string steps = "[numerics]\ntime_step = 5.0e-7\n";
+    const std::string layer = "[layer]\nthickness = 1.0e-3\ninterface = \"bonded\"\n";
+    for (const std::string& body : {std::string(), layer}) {
+        const std::string numerics = body.empty() ? steps : steps + "elements = 100\n";
+        const auto without =
+            mdr::testing::run_toml(flat_punch_impact(numerics + body + "[output]\nsnapshots = [1.0]\n"));
+        for (const std::string& times : {std::string("[1.0e-4, 1.0000000000000002e-4]"), std::string("[1.0e-200]")}) {
+            const auto with =
+                mdr::testing::run_toml(flat_punch_impact(numerics + body + "[output]\nsnapshots = " + times + "\n"));
+            ASSERT_TRUE(without.impact && with.impact) << times << body;
+            EXPECT_EQ(with.snapshots.size(), times.size() > 12 ? 2u : 1u) << times << body;
+            EXPECT_NEAR(with.impact->restitution, without.impact->restitution, 1e-10) << times << body;
+            EXPECT_NEAR(with.impact->contact_time, without.impact->contact_time,
+                        1e-10 * without.impact->contact_time)
+                << times << body;
+        }
+    }
+}
+
 }  // namespace

@@ -64,7 +64,8 @@ public:
     void initialise(std::span<double> state) const;
     /// Throws mdr::InvalidInput (key `state[i]`) unless `state` is a state this law could have written: state_size()
     /// doubles, all finite, element counts within N, contact flags 0 or 1 and as many as the header counts, the
-    /// header's flag "composed" 0 or 1 with composition factors in (0, 1], a unit frame axis with handedness +-1
+    /// header's flag "composed" 0 or 1 with composition factors in (0, 1] and a summary of the written elements
+    /// that is theirs (ComposedNormalStep::summary_mismatch), a unit frame axis with handedness +-1
     /// (or all zero before the first advance_spatial). For states read back from a file (a restart).
     void check(std::span<const double> state) const;
     /// Turns a contact's state into the same contact seen with the two bodies swapped (a code that stores a
@@ -96,13 +97,15 @@ public:
     void advance_tangential(PlanarVector displacement);
     /// Writes the tangential displacement and the frame into the contact's state (the elements are already there).
     void end(std::span<double> state) const;
-    /// begin, advance_normal, advance_tangential, end.
+    /// begin, advance_normal, advance_tangential, end; a displacement that is not finite raises (key
+    /// `displacement`) before the normal step, the state unchanged.
     void advance(std::span<double> state, double overlap, PlanarVector displacement);
     /// One step for a code with three-dimensional vectors: `normal` the unit normal from the first body to the
     /// second at the end of the step, `increment` [m] the displacement of the first body's contact point relative
     /// to the second's over the step (its normal part is ignored). The contact frame, kept in the state, first
     /// turns into the new tangent plane (its axis projected and rescaled, as LAMMPS's granular history); at first
-    /// touch its axis is the increment's direction. Returns the tangential force [N] on the second body.
+    /// touch its axis is the increment's direction. Returns the tangential force [N] on the second body. Throws
+    /// mdr::InvalidInput (key `normal`, `increment`) for a vector that is not finite, the state unchanged.
     SpatialVector advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
                                   const SpatialVector& increment);
 

@@ -42,8 +42,8 @@ void mdr_contact_law_initialise(const mdr_contact_law* law, double* state);
 /** One step of length `time_step` [s] of a contact: `overlap` [m] at the end of the step, `normal` the unit normal
  *  from the first body to the second, `increment` [m] the displacement of the first body's contact point relative
  *  to the second's over the step. Writes the total force [N] on the second body into `force` (the first feels its
- *  opposite). MDR_INVALID_INPUT (state unchanged) for a bad time step, a corrupted state or a contact beyond the
- *  half-width. */
+ *  opposite). MDR_INVALID_INPUT (state unchanged) for a bad time step, a corrupted state, an overlap, normal or
+ *  increment that is not finite, or a contact beyond the half-width. */
 int mdr_contact_law_step(mdr_contact_law* law, double* state, double time_step, double overlap, const double normal[3],
                          const double increment[3], double force[3], char* message, size_t message_size);
 /** Turns a contact's state into that of the same contact with the two bodies swapped. */

@@ -76,6 +76,11 @@ public:
     /// Summarises the written elements into the header (after the Foundation's step), `rate` the dashpots' rate
     /// at its end.
     void summarise(std::span<double> header, const AttachedElements& elements, double rate) const;
+    /// The index of the first entry of `header`'s summary of the written elements (as summarise makes it: the
+    /// elements in contact, the sum and the largest of their g_i, the least g_i of a free one, the sums and least
+    /// values of the memories in contact, the free ones' extremes) that is not the summary of `elements`, or
+    /// header.size() when none: the summary is derived, and a state read back (a restart) must hold its own.
+    std::size_t summary_mismatch(std::span<const double> header, const AttachedElements& elements) const;
     /// Element i's current displacement w [m] and memories h (M doubles) at depth `depth`.
     void element(std::span<const double> header, const double* w, const double* flags, const double* h,
                  std::size_t stride, std::size_t i, double depth, double& current_w, double* current_h) const;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mdr/foundation/foundation.hpp"
+#include "mdr/foundation/planar_tangential_layer.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/profile/profile.hpp"
 
@@ -97,6 +98,71 @@ TEST(DemComposedNormalStep, AHeldContactsStepsLeaveItsElementsAsTheyWere) {
     EXPECT_EQ(after, before);
     EXPECT_LT(law.normal_force(state), loaded);  // the standard solid relaxes (tau = 0.1 ms = 50 steps)
     EXPECT_GT(law.contact_count(), 0u);
+}
+
+// A DEM code may change its time step between steps (LAMMPS's fix dt/reset) while a contact is held in the composed
+// form: the header's maps are products of past steps' maps, each of its own dt, so the following steps compose with
+// the new step's map. The reference: the Foundation with each step's own coefficients (eq. 13-22). M = 0 too (an
+// elastic and a Kelvin-Voigt contact: the free elements' map alone composes).
+TEST(DemComposedNormalStep, AChangingTimeStepComposesAsTheFoundationSteps) {
+    auto cases = materials();
+    cases.push_back(rheology::Rheology::elastic(1e6));
+    cases.push_back(rheology::Rheology::kelvin_voigt(1e6, 20.0));
+    for (const auto& material : cases) {
+        for (const auto& motion : motions()) {
+            foundation::Foundation reference(material, *profile::make_sphere(radius), half_width / elements, elements);
+            ContactLaw law(material, radius, 0.0, elements, half_width, time_step);
+            std::vector<double> state(law.state_size());
+            law.initialise(state);
+            double depth = 0.0, largest = 0.0, deviation = 0.0;
+            for (int n = 1; n <= std::min(motion.steps, 3000); ++n) {
+                const double step = time_step * (n % 7 == 0 ? 2.5 : n % 3 == 0 ? 0.4 : 1.0);
+                const double overlap = motion.overlap(n);
+                reference.begin_step(foundation::step_coefficients(material, step));
+                reference.advance(depth, overlap);
+                depth = overlap;
+                law.set_time_step(step);
+                law.advance(state, overlap, {0.0, 0.0});
+                largest = std::max(largest, std::abs(reference.total_force()));
+                deviation = std::max(deviation, std::abs(law.normal_force() - reference.total_force()));
+                ASSERT_EQ(law.contact_count(), reference.contact_count()) << motion.name << " step " << n;
+            }
+            EXPECT_LE(deviation, 1e-12 * largest) << "M = " << material.terms().size() << ", " << motion.name;
+        }
+    }
+}
+
+// With friction the tangential layer reads the line loads the composed form derives (G_inf (d - g_i) + eta rate + sum
+// G_k (A_k h^_k + C_k), eq. 16, 22): the reference is the Foundation's line loads on its own buffers driving a
+// PlanarTangentialLayer of its own (eq. 41-50), every element every step; materials with a parallel dashpot.
+TEST(DemComposedNormalStep, TangentialForcesWithFrictionAreTheFoundationsToRoundOff) {
+    const auto all = materials();
+    for (const auto& material : {all[1], all[3]}) {
+        for (const auto& motion : motions()) {
+            foundation::Foundation reference(material, *profile::make_sphere(radius), half_width / elements, elements);
+            foundation::PlanarTangentialLayer layer(material, 0.3, half_width / elements, elements);
+            const auto coefficients = foundation::step_coefficients(material, time_step);
+            ContactLaw law(material, radius, 0.3, elements, half_width, time_step);
+            std::vector<double> state(law.state_size()), loads(elements);
+            law.initialise(state);
+            double depth = 0.0, shift = 0.0, largest = 0.0, deviation = 0.0;
+            for (int n = 1; n <= std::min(motion.steps, 3000); ++n) {
+                const double overlap = motion.overlap(n), displacement = 3e-6 * std::sin(2.0 * pi * n / 300.0);
+                reference.begin_step(coefficients);
+                reference.advance(depth, overlap);
+                reference.line_loads(loads);
+                layer.begin_step(coefficients, reference.entries());
+                layer.advance({displacement - shift, 0.0}, loads, reference.contact_flags());
+                depth = overlap;
+                shift = displacement;
+                law.advance(state, overlap, {displacement, 0.0});
+                largest = std::max(largest, std::abs(layer.total_force()[0]));
+                deviation = std::max(deviation, std::abs(law.tangential_force()[0] - layer.total_force()[0]));
+            }
+            EXPECT_GT(largest, 0.0);
+            EXPECT_LE(deviation, 1e-12 * largest) << "M = " << material.terms().size() << ", " << motion.name;
+        }
+    }
 }
 
 }  // namespace

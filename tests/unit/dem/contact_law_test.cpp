@@ -196,6 +196,16 @@ TEST(DemContactLaw, ACorruptedStateRaisesNamingTheEntry) {
     half_composed[law_header + foundation::ComposedNormalStep::composed_offset] = 0.5;
     EXPECT_EQ(thrown_key([&] { law.check(half_composed); }),
               "state[" + std::to_string(law_header + foundation::ComposedNormalStep::composed_offset) + "]");
+    // The header's summary of the written elements (their count in contact, the sum and the largest of their g_i,
+    // the sums and least values of their memories, the free ones' extremes; ComposedNormalStep::summarise) is
+    // derived from them: corrupted, check accepted it and the steps read it (the force off by the corruption).
+    const std::size_t summary_entries[] = {3, 4, 5, 6 + 2 * 2, 6 + 3 * 2 + 1, 6 + 4 * 2 + 9 + 1};
+    for (const std::size_t entry : summary_entries) {
+        auto missummarised = state;
+        missummarised[law_header + entry] += 1e-7;
+        EXPECT_EQ(thrown_key([&] { law.check(missummarised); }), "state[" + std::to_string(law_header + entry) + "]")
+            << entry;
+    }
     auto short_state = state;
     short_state.pop_back();
     EXPECT_EQ(thrown_key([&] { law.begin(short_state); }), "state");
@@ -216,6 +226,21 @@ TEST(DemContactLaw, MessagesNameTheLawsParameters) {
     EXPECT_EQ(thrown_key([&] { law.set_time_step(-1.0); }), "time_step");
     EXPECT_EQ(thrown_key([&] { law.advance(state, std::nan(""), {0.0, 0.0}); }), "overlap");
     EXPECT_EQ(thrown_key([&] { law.advance(state, 1e-6, {0.0, std::nan("")}); }), "displacement");
+    // A bad tangential input raises before the normal step: the contact's state stays as it was (the normal part
+    // was stepped, the displacement and frame not written).
+    std::vector<double> loaded(law.state_size());
+    law.initialise(loaded);
+    for (int n = 1; n < 100; ++n) law.advance(loaded, overlap_at(n, 1.0), {displacement_at(n, 1.0), 0.0});
+    const auto before = loaded;
+    EXPECT_EQ(thrown_key([&] { law.advance(loaded, overlap_at(100, 1.0), {std::nan(""), 0.0}); }), "displacement");
+    EXPECT_EQ(loaded, before);
+    const double nan = std::nan("");
+    EXPECT_EQ(thrown_key([&] { law.advance_spatial(loaded, overlap_at(100, 1.0), {0.0, 0.0, 1.0}, {nan, 0.0, 0.0}); }),
+              "increment");
+    EXPECT_EQ(loaded, before);
+    EXPECT_EQ(thrown_key([&] { law.advance_spatial(loaded, overlap_at(100, 1.0), {nan, 0.0, 1.0}, {0.0, 0.0, 0.0}); }),
+              "normal");
+    EXPECT_EQ(loaded, before);
     const auto material = rheology::Rheology::standard(1e6, 3e6, 1e-3);
     EXPECT_EQ(thrown_key([&] { ContactLaw(material, 0.01, 0.3, std::size_t{1} << 40, 1e-3, 1e-6); }), "elements");
 }
