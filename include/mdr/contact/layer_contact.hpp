@@ -79,7 +79,9 @@ public:
     /// As above, from the equilibria `nearby` solved before (such as the last steps', or the loading steps around
     /// d; their order the caller's, the last preferred): the start is a^2 interpolated in d through up to four of
     /// them with distinct depths (one: a^2 ~ d, a sphere's), so that one solve often meets the tolerance; then the
-    /// secant through the start and the one nearest in depth, then regula falsi.
+    /// secant through the start and the one nearest in depth, then regula falsi. Where d lies amid four of them (a
+    /// receding step's Ting depth amid the loading steps) and the cubic interpolants of a^2, F and dF/dd agree with
+    /// their quadratics well within the solve's tolerance, the interpolated equilibrium is returned without a solve.
     LayerContactState at_depth(double depth, std::span<const LayerContactState> nearby) const;
     /// As above, near the solution whose contact radius is `radius_hint` (> 0; else from max_contact_radius / 2).
     LayerContactState at_depth(double depth, double radius_hint = 0.0) const;
