@@ -160,11 +160,23 @@ LayerContact::Solution LayerContact::solve(double contact_radius) const {
         root_weight[i] = std::sqrt(w[i]);
         scaled_node[i] = x[i] / h;
     }
+    // On one mirrored panel k(x_i - x_j) = k(x_m - x_l) with m = n - 1 - i, l = n - 1 - j (x_m = a - x_i): an upper
+    // entry with i + j >= n takes the difference term of (l, m), whose i + j <= n - 2 was filled in an earlier row
+    // (l < i) and kept in the lower triangle (cholesky_factor reads only the upper one; the diagonal's k(0) is not
+    // kept). A quarter of the kernel's evaluations saved.
+    const bool mirrored = solution.quadrature.mirrored;
     std::vector<double> matrix(nodes * nodes);
     for (std::size_t i = 0; i < nodes; ++i) {
         const double row_factor = root_weight[i] / (std::numbers::pi * h);
         for (std::size_t j = i; j < nodes; ++j) {
-            const double kernel = kernel_(scaled_node[i] - scaled_node[j]) + kernel_(scaled_node[i] + scaled_node[j]);
+            double near = 0.0;
+            if (!mirrored || i + j < nodes || i == j) {
+                near = kernel_(scaled_node[i] - scaled_node[j]);
+                if (mirrored && i != j) matrix[j * nodes + i] = near;
+            } else {
+                near = matrix[(nodes - 1 - i) * nodes + (nodes - 1 - j)];
+            }
+            const double kernel = near + kernel_(scaled_node[i] + scaled_node[j]);
             matrix[i * nodes + j] = (i == j ? 1.0 : 0.0) - row_factor * root_weight[j] * kernel;
         }
     }
