@@ -17,6 +17,7 @@ ContactQuadrature contact_quadrature(double contact_radius, const std::vector<do
     }
     ends.push_back(a);
     ContactQuadrature quadrature;
+    quadrature.mirrored = ends.size() == 2;
     for (std::size_t panel = 0; panel + 1 < ends.size(); ++panel) {
         const double start = ends[panel], length = ends[panel + 1] - start;
         const std::size_t size =

@@ -17,6 +17,9 @@ inline constexpr std::size_t min_panel_nodes = 4;
 struct ContactQuadrature {
     std::vector<double> nodes;    ///< [m]
     std::vector<double> weights;  ///< [m]
+    /// One Gauss-Legendre panel (no kink inside): nodes[n - 1 - i] = a - nodes[i] up to round-off, so that a
+    /// difference kernel k(x_i - x_j) is persymmetric on them
+    bool mirrored = false;
 };
 
 /// The rule over [0, contact_radius] with about `points` nodes: without a kink inside, `points` Gauss-Legendre nodes;

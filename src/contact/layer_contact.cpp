@@ -18,15 +18,44 @@ namespace mdr::contact {
 
 namespace {
 
-// The contact radius at `depth` from the equilibria `nearby`: a^2 interpolated in d (Neville) through the last
-// nearest_points of them with distinct depths inside the prepared range (a profile touching at a point has a^2 ~ d
-// near the touch, a sphere on the half-space a^2 = R d exactly: a^2 is smoother in d than a). A single one is
-// joined by the touch (d, a) = (0, 0); none gives 0. `nearest` is the one closest in depth (none: radius 0).
+// The equilibrium at `depth` interpolated from the equilibria `nearby`: a^2, F and dF/dd interpolated in d (Neville)
+// through the last nearest_points of them with distinct depths inside the prepared range (a profile touching at a
+// point has a^2 ~ d near the touch, a sphere on the half-space a^2 = R d exactly: a^2 is smoother in d than a). A
+// single one is joined by the touch (d, a) = (0, 0); none gives radius 0. `nearest` is the one closest in depth (none:
+// radius 0). `exact` is set when all nearest_points were used, `depth` lies strictly between them, and each cubic
+// differs from both quadratics of its tableau (the quadratics' error, an estimate of the cubic's that overstates it
+// by about an order of the depths' spacing over d) by at most: for a^2 and dF/dd interpolation_tolerance of the
+// value, for F a tenth of what the solve's depth tolerance moves it (dF = (dF/dd) dd, eq. L5).
 constexpr std::size_t nearest_points = 4;
+/// The contact solve's tolerance on the depth, relative to d: the force to ~1.5e-8 (a sphere, F ~ d^1.5), below the
+/// default nodes' 1e-7.
+constexpr double depth_tolerance = 1e-8;
+/// Well below depth_tolerance: d ~ a^p with p <= 4 on a layer moves d by p/2 times a^2's relative error.
+constexpr double interpolation_tolerance = 1e-10;
 
-double interpolated_radius(std::span<const LayerContactState> nearby, double depth, double max_contact_radius,
-                           LayerContactState& nearest) {
-    double depths[nearest_points], squares[nearest_points];
+struct Interpolated {
+    LayerContactState state;
+    bool exact = false;
+};
+
+// Neville's scheme on values[0 .. count), count >= 2: the polynomial through all points at `at`, and in `estimate`
+// (for count >= 3) the larger difference to the two polynomials of one degree less.
+double neville(const double* abscissae, double* values, std::size_t count, double at, double& estimate) {
+    double lower[2] = {0.0, 0.0};
+    for (std::size_t level = 1; level < count; ++level) {
+        for (std::size_t i = 0; i + level < count; ++i) {
+            values[i] = ((at - abscissae[i + level]) * values[i] + (abscissae[i] - at) * values[i + 1]) /
+                        (abscissae[i] - abscissae[i + level]);
+        }
+        if (level + 2 == count) std::copy(values, values + 2, lower);
+    }
+    estimate = std::max(std::abs(values[0] - lower[0]), std::abs(values[0] - lower[1]));
+    return values[0];
+}
+
+Interpolated interpolated_state(std::span<const LayerContactState> nearby, double depth, double max_contact_radius,
+                                LayerContactState& nearest) {
+    double depths[nearest_points], squares[nearest_points], forces[nearest_points], stiffnesses[nearest_points];
     std::size_t count = 0;
     for (std::size_t i = nearby.size(); i-- > 0 && count < nearest_points;) {
         const LayerContactState& state = nearby[i];
@@ -38,21 +67,28 @@ double interpolated_radius(std::span<const LayerContactState> nearby, double dep
         if (!distinct) continue;
         if (count == 0 || std::abs(state.depth - depth) < std::abs(nearest.depth - depth)) nearest = state;
         depths[count] = state.depth;
+        forces[count] = state.force;
+        stiffnesses[count] = state.stiffness;
         squares[count++] = state.contact_radius * state.contact_radius;
     }
-    if (count == 0) return 0.0;
+    if (count == 0) return {};
+    const bool inside = count == nearest_points && std::any_of(depths, depths + count, [&](double d) {
+        return d < depth;
+    }) && std::any_of(depths, depths + count, [&](double d) { return d > depth; });
     if (count == 1) {
-        depths[1] = squares[1] = 0.0;
+        depths[1] = squares[1] = forces[1] = stiffnesses[1] = 0.0;
         count = 2;
     }
-    // Neville's scheme: squares[i] becomes the polynomial through points i .. i + level at `depth`.
-    for (std::size_t level = 1; level < count; ++level) {
-        for (std::size_t i = 0; i + level < count; ++i) {
-            squares[i] = ((depth - depths[i + level]) * squares[i] + (depths[i] - depth) * squares[i + 1]) /
-                         (depths[i] - depths[i + level]);
-        }
-    }
-    return squares[0] > 0.0 ? std::sqrt(squares[0]) : 0.0;
+    double square_error = 0.0, force_error = 0.0, stiffness_error = 0.0;
+    const double square = neville(depths, squares, count, depth, square_error);
+    Interpolated result{{square > 0.0 ? std::sqrt(square) : 0.0, depth, 0.0, 0.0}, false};
+    if (!inside) return result;
+    result.state.force = neville(depths, forces, count, depth, force_error);
+    result.state.stiffness = neville(depths, stiffnesses, count, depth, stiffness_error);
+    result.exact = square_error <= interpolation_tolerance * square &&
+                   force_error <= 0.1 * depth_tolerance * depth * result.state.stiffness &&
+                   stiffness_error <= interpolation_tolerance * result.state.stiffness;
+    return result;
 }
 
 }  // namespace
@@ -124,11 +160,23 @@ LayerContact::Solution LayerContact::solve(double contact_radius) const {
         root_weight[i] = std::sqrt(w[i]);
         scaled_node[i] = x[i] / h;
     }
+    // On one mirrored panel k(x_i - x_j) = k(x_m - x_l) with m = n - 1 - i, l = n - 1 - j (x_m = a - x_i): an upper
+    // entry with i + j >= n takes the difference term of (l, m), whose i + j <= n - 2 was filled in an earlier row
+    // (l < i) and kept in the lower triangle (cholesky_factor reads only the upper one; the diagonal's k(0) is not
+    // kept). A quarter of the kernel's evaluations saved.
+    const bool mirrored = solution.quadrature.mirrored;
     std::vector<double> matrix(nodes * nodes);
     for (std::size_t i = 0; i < nodes; ++i) {
         const double row_factor = root_weight[i] / (std::numbers::pi * h);
         for (std::size_t j = i; j < nodes; ++j) {
-            const double kernel = kernel_(scaled_node[i] - scaled_node[j]) + kernel_(scaled_node[i] + scaled_node[j]);
+            double near = 0.0;
+            if (!mirrored || i + j < nodes || i == j) {
+                near = kernel_(scaled_node[i] - scaled_node[j]);
+                if (mirrored && i != j) matrix[j * nodes + i] = near;
+            } else {
+                near = matrix[(nodes - 1 - i) * nodes + (nodes - 1 - j)];
+            }
+            const double kernel = near + kernel_(scaled_node[i] + scaled_node[j]);
             matrix[i * nodes + j] = (i == j ? 1.0 : 0.0) - row_factor * root_weight[j] * kernel;
         }
     }
@@ -223,8 +271,7 @@ LayerContactState LayerContact::at_depth(double depth, std::span<const LayerCont
         const LayerContactState unit = at_radius(max_contact_radius_);
         return {unit.contact_radius, depth, depth * unit.force, unit.force};
     }
-    // Depth to 1e-8: the force to ~1.5e-8 (a sphere, F ~ d^1.5), below the default nodes' 1e-7.
-    const double value_tolerance = 1e-8 * depth;
+    const double value_tolerance = depth_tolerance * depth;
     for (const LayerContactState& state : nearby) {
         if (state.contact_radius > 0.0 && std::abs(state.depth - depth) <= value_tolerance) return state;
     }
@@ -251,7 +298,9 @@ LayerContactState LayerContact::at_depth(double depth, std::span<const LayerCont
     // then the secant through the start and the nearest of them, then Illinois regula falsi bracketed by 1.5 times
     // the last secant's correction.
     LayerContactState nearest;
-    const double interpolated = interpolated_radius(nearby, depth, max_contact_radius_, nearest);
+    const Interpolated interpolated_start = interpolated_state(nearby, depth, max_contact_radius_, nearest);
+    if (interpolated_start.exact) return interpolated_start.state;
+    const double interpolated = interpolated_start.state.contact_radius;
     double start = interpolated > 0.0 ? std::min(interpolated, max_contact_radius_) : 0.5 * max_contact_radius_;
     double f_start = residual(start);
     if (std::abs(f_start) <= value_tolerance) return found(start);

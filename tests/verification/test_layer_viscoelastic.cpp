@@ -252,6 +252,40 @@ private:
     mutable std::size_t solves_ = 0;
 };
 
+TEST(LayerViscoelastic, ARecedingDepthAmidLoadingEquilibriaIsInterpolatedWithoutASolve) {
+    // While the contact recedes, Ting's d(t1) lies amid four loading steps' equilibria (depths ~1.5e-3 of d apart at
+    // the thin film's peak, a/h 15): a^2, F and dF/dd interpolated in d meet the solve's tolerance there, so no
+    // solve. Checked against the equilibrium solved at the interpolated radius: its depth is the one asked to a tenth
+    // of the solve's tolerance (1e-8 of d), its force and stiffness are the interpolated ones.
+    const auto contact_case = mdr::io::parse_case(R"(
+[material]
+model = "prony"
+G_inf = 300.0
+terms = [[700.0, 0.1], [400.0, 1.0]]
+[indenter]
+shape = "sphere"
+R = 500e-6
+[load]
+control = "displacement"
+history = [[0.0, 0.0], [1.0, 0.2e-6]]
+[layer]
+thickness = 1e-6
+interface = "bonded"
+)");
+    const auto counting = std::make_shared<const SolveCountingProfile>(contact_case.indenter);
+    const mdr::contact::LayerContact layer(*contact_case.layer, 0.5, counting, 30e-6);
+    std::vector<mdr::contact::LayerContactState> loading;
+    for (int k = 0; k < 4; ++k) loading.push_back(layer.at_radius(15e-6 * (1.0 + 4e-4 * k)));
+    const double depth = 0.5 * (loading[1].depth + loading[2].depth);
+    const std::size_t solves = counting->solves();
+    const mdr::contact::LayerContactState receding = layer.at_depth(depth, loading);
+    EXPECT_EQ(counting->solves(), solves);
+    const mdr::contact::LayerContactState solved = layer.at_radius(receding.contact_radius);
+    EXPECT_NEAR(solved.depth / depth, 1.0, 1e-9);
+    EXPECT_NEAR(receding.force / solved.force, 1.0, 1e-9);
+    EXPECT_NEAR(receding.stiffness / solved.stiffness, 1.0, 1e-9);
+}
+
 TEST(LayerViscoelastic, ThinFilmLoadUnloadSolvesTheContactAboutOnceAStep) {
     // Issue 28's thin film (docs/performance.md): a colloidal probe on a bonded layer, a/h up to 19, ramp, hold,
     // unload. Each step that moves the depth solves the contact at one depth (the loading's, or Ting's d(t1) while it

@@ -15,14 +15,14 @@
 namespace mdr::contact {
 
 /// Gauss-Legendre nodes on the contact [0, a] when `[numerics] elements` is not given: the line load is smooth, and
-/// the force with 48 nodes (5 per thickness beyond a/h = 9.6) is within 1e-7 of 512 nodes' for a/h up to 9
+/// the force with 48 nodes (4 per thickness beyond a/h = 12) is within 1e-7 of 512 nodes' for a/h up to 9
 /// (tests/verification/test_layer_contact.cpp, ForceConvergesInTheNumberOfNodes).
 inline constexpr std::size_t default_layer_nodes = 48;
 /// Gauss-Legendre nodes per thickness of the contact radius at least (the kernel's width is h): a contact wider than
-/// default_layer_nodes / 5 thicknesses takes more than the default nodes. The Nystroem solution converges spectrally
+/// default_layer_nodes / 4 thicknesses takes more than the default nodes. The Nystroem solution converges spectrally
 /// in them: at a/h 64 (bonded, incompressible) the depth at a radius is 1.8e-4 off with 3, 9e-8 with 4, 2.5e-10 with 5
-/// (tests/verification/test_layer_contact.cpp, ThinFilmConvergesInTheNodesPerThickness).
-inline constexpr std::size_t nodes_per_thickness = 5;
+/// (tests/verification/test_layer_contact.cpp, ThinFilmConvergesInTheNodesPerThickness): 4, the force 1.1e-8 off.
+inline constexpr std::size_t nodes_per_thickness = 4;
 
 /// The contact radius on a layer exceeds the half-space's at the same depth by at most 3 pi / 4 (a cone on a thin
 /// bonded incompressible layer, whose displaced volume stays under the indenter; a sphere: 2, docs/theory.md eq.
@@ -30,7 +30,7 @@ inline constexpr std::size_t nodes_per_thickness = 5;
 inline constexpr double layer_radius_margin = 3.0;
 
 /// Contacts wider than this many thicknesses are refused (key `layer.thickness`): they need too many Gauss nodes
-/// (5 per thickness, each solve O(n^3)).
+/// (4 per thickness, each solve O(n^3)).
 inline constexpr double max_layer_radius_over_thickness = 100.0;
 
 /// Throws mdr::InvalidInput (key `layer.thickness`) unless `largest_radius` [m], the widest contact a run or a fit
@@ -68,7 +68,7 @@ public:
                  double max_contact_radius, std::size_t nodes = default_layer_nodes);
 
     /// The equilibrium with contact radius 0 < a <= max_contact_radius (a flat punch: its radius, at depth 1), on
-    /// about max(nodes, 5 ceil(a/h)) Gauss-Legendre nodes (the kernel's width is h), in panels split at the indenter's
+    /// about max(nodes, 4 ceil(a/h)) Gauss-Legendre nodes (the kernel's width is h), in panels split at the indenter's
     /// kinks (contact_quadrature).
     LayerContactState at_radius(double contact_radius) const;
     /// The equilibrium at depth d (d <= 0: no contact): the contact radius solved from depth(a) = d (increasing in
@@ -79,7 +79,9 @@ public:
     /// As above, from the equilibria `nearby` solved before (such as the last steps', or the loading steps around
     /// d; their order the caller's, the last preferred): the start is a^2 interpolated in d through up to four of
     /// them with distinct depths (one: a^2 ~ d, a sphere's), so that one solve often meets the tolerance; then the
-    /// secant through the start and the one nearest in depth, then regula falsi.
+    /// secant through the start and the one nearest in depth, then regula falsi. Where d lies amid four of them (a
+    /// receding step's Ting depth amid the loading steps) and the cubic interpolants of a^2, F and dF/dd agree with
+    /// their quadratics well within the solve's tolerance, the interpolated equilibrium is returned without a solve.
     LayerContactState at_depth(double depth, std::span<const LayerContactState> nearby) const;
     /// As above, near the solution whose contact radius is `radius_hint` (> 0; else from max_contact_radius / 2).
     LayerContactState at_depth(double depth, double radius_hint = 0.0) const;

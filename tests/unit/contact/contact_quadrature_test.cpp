@@ -25,11 +25,18 @@ TEST(ContactQuadrature, WithoutAKinkInsideIsTheGaussRuleOverTheContact) {
     for (const std::vector<double>& kinks : {std::vector<double>{}, std::vector<double>{0.0, 2.0, 3.0}}) {
         const auto rule = contact_quadrature(2.0, kinks, 12, none);  // kinks at or beyond the edge are outside
         ASSERT_EQ(rule.nodes.size(), 12u);
+        EXPECT_TRUE(rule.mirrored);  // x_(n-1-i) = a - x_i: LayerContact fills k(x_i - x_j) from its mirror image
         for (std::size_t i = 0; i < 12; ++i) {
+            EXPECT_NEAR(rule.nodes[11 - i], 2.0 - rule.nodes[i], 1e-15);
             EXPECT_EQ(rule.nodes[i], 2.0 * gauss.nodes[i]);
             EXPECT_EQ(rule.weights[i], 2.0 * gauss.weights[i]);
         }
     }
+}
+
+TEST(ContactQuadrature, PanelsAtKinksAreNotMirrored) {
+    const std::vector<mdr::numerics::GaussRule> none;
+    EXPECT_FALSE(contact_quadrature(2.0, {1.0}, 12, none).mirrored);  // graded beyond the kink: not symmetric
 }
 
 TEST(ContactQuadrature, IntegratesASquareRootBeyondEachKinkExactly) {
