@@ -12,6 +12,7 @@
 #include "bindings.hpp"
 #include "mdr/error.hpp"
 #include "mdr/rheology/material_models.hpp"
+#include "number.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -25,11 +26,22 @@ using rheology::ParameterKind;
 void put(rheology::ModelParameters& parameters, const rheology::ModelParameter& parameter, const py::handle& value) {
     try {
         switch (parameter.kind) {
-            case ParameterKind::number: parameters.numbers[parameter.key] = value.cast<double>(); break;
-            case ParameterKind::pairs:
-                parameters.pairs[parameter.key] = value.cast<std::vector<std::pair<double, double>>>();
+            // Numbers as a case file takes them: a bool refused (Number).
+            case ParameterKind::number: parameters.numbers[parameter.key] = value.cast<Number>(); break;
+            case ParameterKind::pairs: {
+                auto& pairs = parameters.pairs[parameter.key];
+                pairs.clear();
+                for (const auto& [first, second] : value.cast<std::vector<std::pair<Number, Number>>>()) {
+                    pairs.emplace_back(first, second);
+                }
                 break;
-            case ParameterKind::numbers: parameters.arrays[parameter.key] = value.cast<std::vector<double>>(); break;
+            }
+            case ParameterKind::numbers: {
+                auto& numbers = parameters.arrays[parameter.key];
+                numbers.clear();
+                for (const Number number : value.cast<std::vector<Number>>()) numbers.push_back(number);
+                break;
+            }
             case ParameterKind::text: parameters.texts[parameter.key] = value.cast<std::string>(); break;
         }
     } catch (const py::cast_error&) {  // a wrong type is a TypeError in Python, as for any function

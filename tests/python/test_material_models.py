@@ -40,6 +40,15 @@ def test_factories_take_positional_and_keyword_arguments():
         mdr.Material.standard(1.0, -1.0, 1.0)
 
 
+@pytest.mark.parametrize("model, arguments, key", [("elastic", {"G": True}, "G"),
+                                                   ("prony", {"G_inf": 1e3, "terms": [(True, 1.0)]}, "terms")])
+def test_factories_refuse_a_bool_as_a_case_file_does(model, arguments, key):
+    """A bool is an int to Python and was taken as 1.0 (prony's terms [(True, 1.0)] a modulus of 1 Pa); a case file
+    refuses it where it wants a number, and so do the controls' keywords."""
+    with pytest.raises(TypeError, match=rf"^{key} = .*True.*: must be a "):
+        getattr(mdr.Material, model)(**arguments)
+
+
 @pytest.mark.parametrize("beta", [0.05, 0.3, 0.7])
 def test_power_law_series_is_certified_over_its_window(beta):
     G0, t0 = 2e3, 0.5
