@@ -1,10 +1,19 @@
 #pragma once
-// The end of an impact's contact (eq. 39) and its normal outcome: one rule for the half-space (ImpactStepping) and
-// the layer (run_layer_impact).
+// An impact's step by the trapezoidal rule (eq. 37), the end of its contact (eq. 39) and its normal outcome: one rule
+// for the half-space (ImpactStepping) and the layer (run_layer_impact, run_layer_cells_impact).
 
 #include "mdr/drivers/indentation.hpp"
 
 namespace mdr::drivers {
+
+/// The trapezoidal rule of eq. 37 for m d'' = -F over a step dt, d1 = d0 + (v0 + v1) dt/2, v1 = v0 - (F0 + F1)
+/// dt/(2m), solved as F(d1) + k (d1 - d0 - v0 dt) = -F0: its inertial stiffness k = 4m/dt^2 [N/m].
+inline double inertial_stiffness(double mass, double time_step) { return 4.0 * mass / (time_step * time_step); }
+
+/// The same rule's velocity at the step's end, v1 = 2 (d1 - d0)/dt - v0 [m/s].
+inline double trapezoidal_velocity(double depth, double new_depth, double velocity, double time_step) {
+    return 2.0 * (new_depth - depth) / time_step - velocity;
+}
 
 /// Throws mdr::InvalidInput (key `load.end`) when an impact at `time` [s] has reached `time_limit` [s] (the latest end,
 /// ResolvedNumerics::time_limit) still in contact, the indenter at `velocity` [m/s].

@@ -134,7 +134,7 @@ StepState ImpactStepping::step(std::size_t n) {
     foundation_.begin_step(cache_.get(step), velocity_);
     // Trapezoidal rule for m d'' = -F (eq. 37): d1 = d0 + (v0 + v1) dt/2, v1 = v0 - (F0 + F1) dt/(2m), i.e.
     // F(d1) + (4m/dt^2)(d1 - d0 - v0 dt) = -F0, monotone in d1.
-    const double spring = 4.0 * mass_ / (step * step);
+    const double spring = inertial_stiffness(mass_, step);
     const double anchor = depth_ + velocity_ * step;
     const double guess = anchor - force_ * step * step / (2.0 * mass_);
     // The depth increment of the step, never below a billionth of the approach increment: scales with the
@@ -149,7 +149,7 @@ StepState ImpactStepping::step(std::size_t n) {
     require_steps_within_bound(contact_case_, numerics_, n, clock_.time());
     // The stop rule: every element has left (eq. 39).
     const bool ended = new_force == 0.0 && force_ > 0.0;
-    const double new_velocity = ended ? end_contact(step) : 2.0 * (new_depth - depth_) / step - velocity_;
+    const double new_velocity = ended ? end_contact(step) : trapezoidal_velocity(depth_, new_depth, velocity_, step);
     if (oblique_ && !ended) oblique_->step(cache_.get(step), step);
     clock_.advance();
     depth_ = new_depth;

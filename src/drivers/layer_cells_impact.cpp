@@ -48,12 +48,12 @@ IndentationResult run_layer_cells_impact(const ContactCase& contact_case, double
         require_before_end(clock.time(), numerics.time_limit, velocity);
         const double step = clock.step();  // landing exactly on the snapshot times, as the half-space impact
         // Trapezoidal rule for m d'' = -F (eq. 37), as ImpactStepping: F(d1) + (4m/dt^2)(d1 - d0 - v0 dt) = -F0.
-        const double spring = 4.0 * mass / (step * step);
+        const double spring = inertial_stiffness(mass, step);
         const LayerCellState state = layer.step_inertial(step, spring * (depth + velocity * step) - force, spring,
                                                          velocity);
         ++result.steps;
         require_steps_within_bound(contact_case, numerics, result.steps, clock.time());
-        double new_velocity = 2.0 * (state.depth - depth) / step - velocity;
+        double new_velocity = trapezoidal_velocity(depth, state.depth, velocity, step);
         if (state.force == 0.0 && force > 0.0) {
             // The contact shrinks to the axis and is lost where the edge function there (eq. L19) crosses zero,
             // located linearly over the step (LayerCellState::touching_part; the step's end if the axis still

@@ -54,7 +54,7 @@ IndentationResult run_layer_impact(const ContactCase& contact_case, const contac
         const double next_time = time + step;
         // Trapezoidal rule for m d'' = -F (eq. 37), as ImpactStepping: F(d1) + (4m/dt^2)(d1 - d0 - v0 dt) = -F0,
         // increasing in d1 in either phase (the force increases with the depth, theory.md "Layers").
-        const double spring = 4.0 * mass / (step * step);
+        const double spring = inertial_stiffness(mass, step);
         const double anchor = depth + velocity * step;
         const auto solve = [&](auto&& trial) {
             const auto residual = [&](double d) { return trial(d).force + spring * (d - anchor) + force; };
@@ -83,7 +83,7 @@ IndentationResult run_layer_impact(const ContactCase& contact_case, const contac
         }
         ++result.steps;
         require_steps_within_bound(contact_case, numerics, result.steps, time);
-        double new_velocity = 2.0 * (next.centre - depth) / step - velocity;
+        double new_velocity = trapezoidal_velocity(depth, next.centre, velocity, step);
         if (next.phase == LayerPhase::lifted_off) {
             // The contact is lost inside the step where int_0^t G dd = 0 (eq. L12 with t1 at the start), the depth
             // linear over the step as in the stepper: the fraction found by bisection of that phase boundary; the

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "impact_end.hpp"
 #include "mdr/numerics/monotone_root.hpp"
 #include "tangential_stepping.hpp"
 
@@ -63,7 +64,7 @@ void ObliqueStepper::take_impulse(double impulse) {
 void ObliqueStepper::step(const foundation::StepCoefficients& coefficients, double time_step) {
     layer_.begin_step(coefficients, foundation_.entries());
     const double contact_velocity = velocity_ - radius_ * spin_;
-    const double spring = 4.0 * reduced_mass_ / (time_step * time_step);
+    const double spring = inertial_stiffness(reduced_mass_, time_step);
     const auto q = normal_line_loads();
     const auto contact = foundation_.contact_flags().first(q.size());
     const double increment = solve_increment(spring, contact_velocity * time_step, time_step, q, contact);
