@@ -1,7 +1,7 @@
 // A cone on a bonded incompressible layer at small depth/thickness (docs/theory.md, "Layers", "Cones" and "The
 // literature's series, at their sources"): the exact layer solution (contact::LayerContact) against the first-order
 // coefficient of the uniform-kernel model (eq. L7 for a cone) with k(0) from scipy, the bottom-effect series of
-// Garcia & Garcia (Biophys. J. 114, 2018) and Managuli et al.'s (Exp. Tech. 42, 2018) correction of Gavara &
+// Garcia & Garcia (Biophys. J. 114, 2018) and Managuli et al.'s (Exp. Tech., 2018) correction of Gavara &
 // Chadwick's (Nat. Nanotechnol. 7, 2012), whose series as coded in the open implementations has half the first-order
 // coefficient. The papers' coefficients as coded in PyFMRheo (jlopezalo/PyFMRheo, pyafmrheo/models/bec.py) and
 // AtomicJ (pawelHerm/AtomicJ, HertzianThinSampleConeChadwick.java); the papers themselves were not at hand.
