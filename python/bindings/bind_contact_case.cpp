@@ -359,7 +359,8 @@ harmonic : mdr.Harmonic, optional
         .def("__repr__", [](const drivers::TangentialLoad& load) {
             const std::string part = load.load.harmonic
                                          ? "harmonic=" + harmonic_repr(*load.load.harmonic)
-                                         : fmt::format("history={} points", history_points(load.load.history).size());
+                                         : "history=" + py::repr(py::cast(history_points(load.load.history)))
+                                                                .cast<std::string>();
             return fmt::format("Tangential(friction={}, control=\"{}\", {})", float_repr(load.friction),
                                drivers::tangential_control_kind(load.control).name, part);
         });
