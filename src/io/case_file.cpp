@@ -321,41 +321,7 @@ std::string describe(const drivers::ContactCase& contact_case) {
     const UnitSystem& units = unit_system(contact_case.units);
     const std::string rheology =
         material.terms().empty() && material.viscosity() == 0.0 ? "an elastic" : "a viscoelastic";
-    std::string load;
-    if (const drivers::ImpactControl* impact = contact_case.impact()) {
-        load = fmt::format("impact of m = {:.4g} {} at v0 = {:.4g} {}", impact->mass, units.mass, impact->velocity,
-                           units.velocity());
-        if (const drivers::ObliqueImpactLoad* oblique = contact_case.oblique()) {
-            load += fmt::format(", oblique: v_t0 = {:.4g} {}, omega0 = {:.4g} rad/s, I = {:.4g} {} {}^2, mu = {:.4g}",
-                                oblique->tangential_velocity, units.velocity(), oblique->spin,
-                                drivers::oblique_sphere(contact_case).moment_of_inertia, units.mass, units.length,
-                                oblique->friction);
-        }
-    } else if (const drivers::ShoreTest* shore = contact_case.shore()) {
-        const auto& instrument = shore->instrument;
-        load = fmt::format("Shore {} durometer (spring force {:.4g} {} at reading 100, falling {:.4g} {}/{}; one point "
-                           "= {:.4g} {}), the foot resting from t = 0 to {:.4g} {}",
-                           shore->scale == drivers::ShoreScale::A ? "A" : "D", instrument.reading_100_force,
-                           units.force, instrument.spring_rate, units.force, units.length, instrument.point_depth,
-                           units.length, shore->duration, units.time);
-    } else {
-        load = fmt::format("{} control, {} history points over t = {:.4g} .. {:.4g} {}",
-                           drivers::control_kind(contact_case.control).name,
-                           contact_case.load.history->points().size(), contact_case.load.history->start_time(),
-                           contact_case.end_time, units.time);
-        const drivers::SpringControl* spring = contact_case.spring();
-        if (spring) {
-            load += fmt::format(" (spring k = {:.4g} {}/{})", spring->spring_constant, units.force, units.length);
-        }
-        if (const auto& harmonic = contact_case.load.harmonic) {
-            load += fmt::format(", harmonic of amplitude {:.4g} at {:.4g} 1/{} over t = {:.4g} .. {:.4g} {}",
-                                harmonic->amplitude, harmonic->frequency, units.time, harmonic->start, harmonic->end,
-                                units.time);
-        }
-        for (const auto& pause : spring ? spring->force_pauses : std::vector<drivers::ForcePause>{}) {
-            load += fmt::format(", force held from t = {:.4g} to {:.4g} {}", pause.start, pause.end, units.time);
-        }
-    }
+    std::string load = drivers::describe_load(contact_case, unit_names(units));
     if (const auto& tangential = contact_case.tangential) {
         load += fmt::format("; tangential {} control, mu = {:.4g}, {}",
                             drivers::tangential_control_kind(tangential->control).name,
