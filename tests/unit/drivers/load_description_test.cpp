@@ -21,7 +21,8 @@ namespace {
 std::string marked(const std::string& si_unit) { return "[" + si_unit + "]"; }
 
 ContactCase history_case(LoadControl control) {
-    return {.material = rheology::Rheology::standard(1e6, 2e6, 0.1),
+    return {.title = "",
+            .material = rheology::Rheology::standard(1e6, 2e6, 0.1),
             .indenter = profile::make_sphere(0.01),
             .control = std::move(control),
             .load = {.history = LoadHistory({{0.0, 0.0}, {1.0, 1e-5}, {2.0, 1e-5}}, "load.history")},
@@ -64,7 +65,8 @@ TEST(LoadDescription, AShoreTestDescribesItsDurometerAndBringsItsIndenter) {
 
 // A solid sphere's I = 2/5 m R^2 = 0.4 x 0.03 kg x (0.01 m)^2 = 1.2e-6 kg m^2.
 TEST(LoadDescription, AnImpactGivesItsMassAndSpeedAndItsObliquePartItsSphere) {
-    ContactCase contact_case{.material = rheology::Rheology::standard(1e6, 2e6, 0.1),
+    ContactCase contact_case{.title = "",
+                             .material = rheology::Rheology::standard(1e6, 2e6, 0.1),
                              .indenter = profile::make_sphere(0.01),
                              .control = ImpactControl{.mass = 0.03, .velocity = 0.1},
                              .load = {.history = LoadHistory({{0.0, 0.0}}, "load.history")},
