@@ -26,14 +26,18 @@ namespace mdr::drivers {
 ///   (drivers::resolve_numerics);
 /// - `static constexpr bool ends_by_stop_rule`, whether its own stop rule ends the run, not the case's end
 ///   (drivers::ends_by_stop_rule), and `static BroughtParts bring(const Control&, double length_unit, double
-///   force_unit)`, itself completed in a case's units with the indenter and history it brings (complete_control);
+///   force_unit)`, itself completed in a case's units with the indenter and history it brings (complete_control),
+///   and `static ControlBrings brings(const Control&)`, which of a case's parts it brings (brought_by: a durometer's
+///   indenter, an oblique impact's tangential part), known from its data alone;
 /// - `static std::vector<GridNode> grid(const ContactCase&, const ResolvedNumerics&, const Control&)`, its time grid
 ///   (drivers::indentation_grid);
 /// - `static LayerLoading on_layer(const ContactCase&, const Control&)`, how the drivers of a [layer] run it
 ///   (layer_loading.hpp), or its refusal there (refuse_on_layer);
 /// - `static std::vector<ControlKind> rows()`, its rows of the table of controls (drivers::controls: name, one-line
 ///   documentation, history column, `[load]` keys with units; a spring has two, spring and shore), and
-///   `static const char* row_name(const Control&)`, the name of the row of a value (drivers::control_kind).
+///   `static const char* row_name(const Control&)`, the name of the row of a value (drivers::control_kind);
+/// - `static std::string describe(const ContactCase&, const Control&, const rheology::UnitNames&)`, its load in one
+///   phrase (drivers::describe_load, for io::describe).
 template <class Control>
 struct ControlTraits;
 

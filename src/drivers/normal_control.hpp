@@ -196,6 +196,12 @@ struct ControlTraits<SpringControl> : HistoryControlTraits<SpringControl, Spring
     /// A Shore test: its durometer in the case's units (make_shore_test: the spring, refusing a constant of the
     /// control's own, `load.spring_constant`), the standard's indenter and base history; a plain spring: nothing.
     static BroughtParts bring(const SpringControl& control, double length_unit, double force_unit);
+    /// A Shore test: the durometer's standard indenter, which the case does not give.
+    static ControlBrings brings(const SpringControl& control) { return {.indenter = control.shore.has_value()}; }
+    /// A Shore test: its durometer (spring force at reading 100, its rate, one point's depth) and duration; a plain
+    /// spring: its history with the spring constant, harmonic and force pauses.
+    static std::string describe(const ContactCase& contact_case, const SpringControl& control,
+                                const rheology::UnitNames& unit_names);
     /// A harmonic's rules; a spring constant > 0; a base history starting at or above the surface (z <= 0) without
     /// jumps, or a Shore test's rules (a duration > 0, the durometer's spring, no harmonic, no tangential load).
     static void validate(const ContactCase& contact_case, const SpringControl& control);

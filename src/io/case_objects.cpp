@@ -8,6 +8,8 @@
 #include "layer_reader.hpp"
 #include "material_reader.hpp"
 #include "mdr/drivers/case_validation.hpp"
+#include "mdr/drivers/control_end.hpp"
+#include "mdr/drivers/control_parts.hpp"
 #include "mdr/drivers/controls.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_assembly.hpp"
@@ -51,8 +53,9 @@ MaterialSpec material_spec(const rheology::ModelMaterial& material, const std::s
 // follows the load as it is changed, as a case file without `load.end`.
 std::optional<double> given_end(const drivers::ContactCase& base) {
     if (!base.load.history) return base.end_time;
-    const bool impact = base.impact() != nullptr;
-    if (base.end_time == default_end_time(base.load, impact, base.tangential)) return std::nullopt;
+    if (base.end_time == default_end_time(base.load, drivers::ends_by_stop_rule(base.control), base.tangential)) {
+        return std::nullopt;
+    }
     return base.end_time;
 }
 
@@ -61,7 +64,7 @@ Edits edits_of(const drivers::ContactCase& base) {
     CaseParts& parts = edits.parts;
     parts.title = base.title;
     parts.units = base.units;
-    parts.indenter = base.shore() ? nullptr : base.indenter;  // a Shore test brings the standard's
+    parts.indenter = drivers::brought_by(base.control).indenter ? nullptr : base.indenter;  // a durometer's standard
     parts.control = base.control;
     parts.load = base.load;
     parts.end = given_end(base);
