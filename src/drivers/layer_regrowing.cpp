@@ -19,7 +19,12 @@ LayerCellsStepping::LayerCellsStepping(const ContactCase& contact_case, const La
     // A force pause holds the force reached at its start (k = 0, as under force control; eq. L22), and the base
     // history resumes shifted from the z reached (PausedBase, as on the half-space).
     if (loading.paused()) paused_.emplace(*loading.force_pauses, loading.spring_constant);
-    if (const auto& harmonic = contact_case.load.harmonic) cycle_.emplace(*harmonic, contact_case.end_time);
+}
+
+void LayerCellsStepping::add_observers(ObserverList& observers, IndentationResult& /*result*/) {
+    if (const auto& harmonic = contact_case_.load.harmonic) {
+        observers.add(cycle_.emplace(*harmonic, contact_case_.end_time, last_));
+    }
 }
 
 StepState LayerCellsStepping::step(std::size_t n) {
@@ -36,7 +41,7 @@ StepState LayerCellsStepping::step(std::size_t n) {
     }
     // A force's round-off below zero is no pull; a spring's right side is k z.
     const double k = loading_.spring_constant;
-    const LayerCellState state =
+    const LayerCellState& state = last_ =
         loading_.prescribes_depth ? cells_.step(time_step, value, start_rate)
         : holding                 ? cells_.step_loaded(time_step, paused_->held_force(), 0.0, value)
                   : cells_.step_loaded(time_step, loading_.spring() ? k * value : std::max(value, 0.0), k, value);
@@ -44,7 +49,6 @@ StepState LayerCellsStepping::step(std::size_t n) {
     const bool settled = n == last_node || grid_[n + 1].time != node.time;
     const double shown_base = holding ? paused_->base_in_pause(state.depth) : value;
     if (paused_ && settled) paused_->passed(node.time, state.force, state.depth, node.value);
-    if (cycle_) cycle_->record(node.time, state.depth, state.force, state.touching, state.touching_part);
     return {.step = n,
             .time = node.time,
             .depth = state.depth,

@@ -22,7 +22,7 @@ namespace mdr::drivers {
 /// harmonic part added): a prescribed depth goes to it, a force or a spring's base solves F(d) + k d = the right side
 /// (LayerCells::step_loaded; in a force pause with k = 0 and the force held, docs/theory.md eq. L22, and the base
 /// history resumes shifted from the z reached, PausedBase, as on the half-space); a harmonic load's last full cycle
-/// measured as on the half-space (CycleMeasure), its outcome.
+/// measured as on the half-space (CycleMeasure, its own observer), its outcome.
 class LayerCellsStepping {
 public:
     /// `contact_case`, `loading` and `cells` must outlive the stepping; `numerics` are the run's.
@@ -31,8 +31,8 @@ public:
     LayerCellsStepping(const LayerCellsStepping&) = delete;
     LayerCellsStepping& operator=(const LayerCellsStepping&) = delete;
 
-    /// None of its own.
-    void add_observers(ObserverList& /*observers*/, IndentationResult& /*result*/) {}
+    /// A harmonic load's cycle measure (as HistoryStepping's).
+    void add_observers(ObserverList& observers, IndentationResult& result);
     /// The state at the grid's first node.
     StepState first_state() { return step(0); }
     /// The step to node `n` (1, 2, ...); the last node ends the run.
@@ -41,14 +41,31 @@ public:
     void add_outcomes(IndentationResult& result) const;
 
 private:
+    // The cycle measure of the states observed, with the cells' contact over each step (LayerCellState::touching,
+    // touching_part: the cells have no foundation for CycleMeasure::observe to read).
+    class CellCycle final : public StepObserver {
+    public:
+        CellCycle(const HarmonicLoad& harmonic, double simulated_end, const LayerCellState& cells)
+            : measure_(harmonic, simulated_end), cells_(cells) {}
+        void observe(const StepState& state) override {
+            measure_.record(state.time, state.depth, state.force, cells_.touching, cells_.touching_part);
+        }
+        std::optional<HarmonicOutcome> outcome() const { return measure_.outcome(); }
+
+    private:
+        CycleMeasure measure_;
+        const LayerCellState& cells_;
+    };
+
     const ContactCase& contact_case_;
     const LayerLoading& loading_;
     LayerCells& cells_;
+    LayerCellState last_;  // the cells after the last step
     std::vector<GridNode> grid_;
     // A prescribed depth under a harmonic with a parallel dashpot: its rate inside a step.
     bool sine_rate_;
     std::optional<PausedBase> paused_;
-    std::optional<CycleMeasure> cycle_;
+    std::optional<CellCycle> cycle_;
 };
 
 /// Runs a displacement-, force- or spring-controlled case with a `[layer]` (`loading`, what its control brings) on
