@@ -29,9 +29,9 @@ struct LayerLoading {
     const ImpactControl* impact = nullptr;
 
     /// True when the history is a spring's base z.
-    bool spring() const { return spring_constant > 0.0; }
+    bool spring_base() const { return spring_constant > 0.0; }
     /// True when the history is the force.
-    bool prescribes_force() const { return impact == nullptr && !prescribes_depth && !spring(); }
+    bool prescribes_force() const { return impact == nullptr && !prescribes_depth && !spring_base(); }
     /// True when a force pause holds the force somewhere in the run.
     bool paused() const { return force_pauses != nullptr && !force_pauses->empty(); }
     /// True when the force, not the history's depth or base, bounds the contact: under force control, in an impact and

@@ -41,10 +41,11 @@ StepState LayerCellsStepping::step(std::size_t n) {
     }
     // A force's round-off below zero is no pull; a spring's right side is k z.
     const double k = loading_.spring_constant;
+    const double right_side = loading_.spring_base() ? k * value : std::max(value, 0.0);
     const LayerCellState& state = last_ =
         loading_.prescribes_depth ? cells_.step(time_step, value, start_rate)
         : holding                 ? cells_.step_loaded(time_step, paused_->held_force(), 0.0, value)
-                  : cells_.step_loaded(time_step, loading_.spring() ? k * value : std::max(value, 0.0), k, value);
+                                  : cells_.step_loaded(time_step, right_side, k, value);
     const std::size_t last_node = grid_.size() - 1;
     const bool settled = n == last_node || grid_[n + 1].time != node.time;
     const double shown_base = holding ? paused_->base_in_pause(state.depth) : value;
@@ -53,7 +54,7 @@ StepState LayerCellsStepping::step(std::size_t n) {
             .time = node.time,
             .depth = state.depth,
             .force = state.force,
-            .load = loading_.spring() ? shown_base : value,
+            .load = loading_.spring_base() ? shown_base : value,
             .fraction = static_cast<double>(n) / static_cast<double>(std::max<std::size_t>(last_node, 1)),
             .settled = settled,
             .last = n == last_node,

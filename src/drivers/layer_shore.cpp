@@ -29,7 +29,8 @@ private:
 
 }  // namespace
 
-std::shared_ptr<const profile::Profile> layer_indenter(const ContactCase& contact_case, const LayerLoading& loading) {
+std::shared_ptr<const profile::Profile> layer_indenter(const ContactCase& contact_case,
+                                                       const LayerLoading& loading) {
     if (!loading.shore) return contact_case.indenter;
     return std::make_shared<const DurometerTip>(contact_case.indenter);
 }

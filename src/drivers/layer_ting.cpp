@@ -22,7 +22,7 @@ LayerTingStepping::LayerTingStepping(const ContactCase& contact_case, const Laye
       loading_(loading),
       grid_(indentation_grid(contact_case, numerics)),
       largest_depth_(largest_depth(contact_case, loading, solved_depth_scale)),
-      force_tolerance_(5e-8 * (loading.spring() ? loading.spring_constant * largest_depth_
+      force_tolerance_(5e-8 * (loading.spring_base() ? loading.spring_constant * largest_depth_
                                                 : contact_case.load.history->max_value())),
       // A parallel dashpot sees the trapezoidal rate of the solved depth (docs/theory.md, section 3): from rest under
       // force control, unknown where a spring's indenter first touches (it hung at the moving base).
@@ -50,7 +50,7 @@ StepState LayerTingStepping::step(std::size_t n) {
     const bool holding = paused_ && n > 0 && paused_->holding(grid_[n - 1].time, node.time);
     // The base z of a spring: the history shifted by the pauses passed.
     const double base = paused_ ? paused_->base(node.value) : node.value;
-    const bool spring = loading_.spring();
+    const bool spring = loading_.spring_base();
     if (loading_.prescribes_depth) {
         next = now.phase == LayerPhase::approach && depth <= 0.0 ? stepper_.wait(node.time)
                : now.phase <= LayerPhase::growing && depth >= now.centre ? stepper_.grow(node.time, depth)

@@ -14,8 +14,8 @@
 
 namespace mdr::drivers {
 
-/// What the one loop (run_stepping) asks of a stepping class: the half-space's (ControlTraits::Stepping: HistoryStepping,
-/// ImpactStepping) and a [layer]'s (LayerTingStepping, LayerImpactStepping, LayerCellsStepping,
+/// What the one loop (run_stepping) asks of a stepping class: the half-space's (ControlTraits::Stepping:
+/// HistoryStepping, ImpactStepping) and a [layer]'s (LayerTingStepping, LayerImpactStepping, LayerCellsStepping,
 /// LayerCellsImpactStepping), each made by its driver from the case, its numerics and what its control brings.
 template <class Stepping>
 concept SteppingClass = requires(Stepping stepping, ObserverList& observers, IndentationResult& result,
