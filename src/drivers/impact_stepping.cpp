@@ -232,7 +232,7 @@ std::vector<GridNode> ControlTraits<ImpactControl>::grid(const ContactCase& /*co
 
 LayerLoading ControlTraits<ImpactControl>::on_layer(const ContactCase& /*contact_case*/, const ImpactControl& impact) {
     if (impact.oblique) refuse_on_layer("load.tangential_velocity", "[...]", "an oblique impact");
-    return {.driven = LayerDriven::impact};
+    return {.impact = &impact};
 }
 
 }  // namespace mdr::drivers

@@ -101,7 +101,8 @@ struct ControlTraits<ImpactControl> {
     /// Throws mdr::InvalidInput (`load.control`): an impact's steps end at the contact's end, not on a history grid.
     static std::vector<GridNode> grid(const ContactCase& contact_case, const ResolvedNumerics& numerics,
                                       const ImpactControl& impact);
-    /// The layer's impact (run_layer_impact); an oblique one is refused (refuse_on_layer).
+    /// The layer's impact: its mass and approach speed (LayerImpactStepping, LayerCellsImpactStepping); an oblique
+    /// one is refused (refuse_on_layer).
     static LayerLoading on_layer(const ContactCase& contact_case, const ImpactControl& impact);
 };
 

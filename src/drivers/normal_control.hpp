@@ -65,7 +65,7 @@ struct ControlTraits<DisplacementControl> : HistoryControlTraits<DisplacementCon
     static const char* row_name(const DisplacementControl& /*control*/) { return "displacement"; }
     /// The layer's drivers prescribe the depth.
     static LayerLoading on_layer(const ContactCase& /*contact_case*/, const DisplacementControl& /*control*/) {
-        return {.driven = LayerDriven::depth};
+        return {.prescribes_depth = true};
     }
     /// No jump in depth against a dashpot; a harmonic's rules.
     static void validate(const ContactCase& contact_case, const DisplacementControl& control);
@@ -103,7 +103,7 @@ struct ControlTraits<ForceControl> : HistoryControlTraits<ForceControl, ForceSte
     static const char* row_name(const ForceControl& /*control*/) { return "force"; }
     /// The layer's drivers solve for the prescribed force.
     static LayerLoading on_layer(const ContactCase& /*contact_case*/, const ForceControl& /*control*/) {
-        return {.driven = LayerDriven::force};
+        return {};
     }
     /// No negative force in the history; a harmonic's rules, and it must not make the force pull.
     static void validate(const ContactCase& contact_case, const ForceControl& control);
@@ -188,8 +188,7 @@ struct ControlTraits<SpringControl> : HistoryControlTraits<SpringControl, Spring
     static const char* row_name(const SpringControl& control) { return control.shore ? "shore" : "spring"; }
     /// The layer's drivers solve for the spring's base, its pauses and a durometer's test as on the half-space.
     static LayerLoading on_layer(const ContactCase& /*contact_case*/, const SpringControl& control) {
-        return {.driven = LayerDriven::spring_base,
-                .spring_constant = control.spring_constant,
+        return {.spring_constant = control.spring_constant,
                 .force_pauses = &control.force_pauses,
                 .shore = control.shore ? &*control.shore : nullptr};
     }
