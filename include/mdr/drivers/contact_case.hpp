@@ -83,20 +83,6 @@ struct ContactCase {
     bool tangential_approximate() const {
         return !tangential_exact && (tangential || brought_by(control).tangential_part);
     }
-    /// The impact's control, or none under another control.
-    const ImpactControl* impact() const { return std::get_if<ImpactControl>(&control); }
-    /// The spring's control (with its pauses or durometer), or none under another control.
-    const SpringControl* spring() const { return std::get_if<SpringControl>(&control); }
-    /// The Shore test of a spring control, or none.
-    const ShoreTest* shore() const {
-        const SpringControl* spring_control = spring();
-        return spring_control && spring_control->shore ? &*spring_control->shore : nullptr;
-    }
-    /// The oblique part of an impact, or none.
-    const ObliqueImpactLoad* oblique() const {
-        const ImpactControl* impact_control = impact();
-        return impact_control && impact_control->oblique ? &*impact_control->oblique : nullptr;
-    }
     /// The declared unit system (mdr/io/units.hpp): the names printed beside the numbers; nothing is converted.
     std::string units = "SI";
     /// `[layer]`: a layer of finite thickness on a rigid substrate; absent: the half-space
