@@ -3,7 +3,8 @@ model, with friction (mu = 0.3, hertz/material's tangential model Mindlin's) and
 model linear_nohistory with mu = 0), each ratio to the hertz/material variant of the same friction, in one run on the
 same machine: a periodic simple-cubic lattice of 8000 spheres, each pressed into its six
 neighbours (24000 contacts, all alive every step), with random velocities but no integrator, so that every contact
-is stepped with a sliding tangential increment and the contact set never changes. Pair time from LAMMPS's timing
+is stepped with a tangential increment and the contact set never changes (a tiny one: `velocity all create 1e-6` is
+1 uK, about 1e-13 m/s, so every contact sticks; docs/dem.md). Pair time from LAMMPS's timing
 breakdown over steps x contacts; memory per rank from its log.
 
     LMP=.../lmp MDR_LAMMPS_PLUGIN=.../mdrviscoplugin.so python3 bench/lammps_pair_cost.py [N] [M] [--callgrind]
