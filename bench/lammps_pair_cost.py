@@ -1,7 +1,10 @@
 """Cost per contact-step of the LAMMPS pair style mdr/visco against LAMMPS's `granular hertz/material` with a damping
-model, in one run on the same machine: a periodic simple-cubic lattice of 8000 spheres, each pressed into its six
+model, with friction (mu = 0.3, hertz/material's tangential model Mindlin's) and without (mu = 0, its tangential
+model linear_nohistory with mu = 0), each ratio to the hertz/material variant of the same friction, in one run on the
+same machine: a periodic simple-cubic lattice of 8000 spheres, each pressed into its six
 neighbours (24000 contacts, all alive every step), with random velocities but no integrator, so that every contact
-is stepped with a sliding tangential increment and the contact set never changes. Pair time from LAMMPS's timing
+is stepped with a tangential increment and the contact set never changes (a tiny one: `velocity all create 1e-6` is
+1 uK, about 1e-13 m/s, so every contact sticks; docs/dem.md). Pair time from LAMMPS's timing
 breakdown over steps x contacts; memory per rank from its log.
 
     LMP=.../lmp MDR_LAMMPS_PLUGIN=.../mdrviscoplugin.so python3 bench/lammps_pair_cost.py [N] [M] [--callgrind]
@@ -46,15 +49,24 @@ thermo_style custom step c_contacts
 """
 
 COMPUTES = {"granular": "*PairGranular::compute*", "mdr/visco": "*PairMdrVisco::compute*"}
-LAWS = {
-    "granular hertz/material, damping tsuji, tangential mindlin": (
-        "pair_style granular\npair_coeff * * hertz/material 3e6 0.5 0.49 tangential mindlin NULL 1.0 0.3 "
-        "damping tsuji\n"),
-    f"mdr/visco, N = {ELEMENTS}, M = {TERMS}": (
-        "pair_style mdr/visco\npair_coeff 1 1 G_inf 1e6 "
-        + " ".join(f"term 1e6 {1e-4 * 10 ** k}" for k in range(TERMS))
-        + f" friction 0.3 elements {ELEMENTS} half_width 0.2\n"),
-}
+TERM_LIST = " ".join(f"term 1e6 {1e-4 * 10 ** k}" for k in range(TERMS))
+# Each mdr/visco law beside the hertz/material variant that does the same work: with friction, its damping and
+# Mindlin's tangential model with the same mu; without, its damping and a tangential model of mu = 0 (pair granular
+# needs one; linear_nohistory keeps no history). The ratio of each row is to the hertz/material row of its pair.
+PAIRS = [
+    (("granular hertz/material, damping tsuji, tangential mindlin mu 0.3",
+      "pair_style granular\npair_coeff * * hertz/material 3e6 0.5 0.49 tangential mindlin NULL 1.0 0.3 "
+      "damping tsuji\n"),
+     (f"mdr/visco, N = {ELEMENTS}, M = {TERMS}, friction 0.3",
+      f"pair_style mdr/visco\npair_coeff 1 1 G_inf 1e6 {TERM_LIST} friction 0.3 elements {ELEMENTS} "
+      "half_width 0.2\n")),
+    (("granular hertz/material, damping tsuji, tangential linear_nohistory mu 0",
+      "pair_style granular\npair_coeff * * hertz/material 3e6 0.5 0.49 tangential linear_nohistory 0.0 0.0 "
+      "damping tsuji\n"),
+     (f"mdr/visco, N = {ELEMENTS}, M = {TERMS}, friction 0",
+      f"pair_style mdr/visco\npair_coeff 1 1 G_inf 1e6 {TERM_LIST} friction 0 elements {ELEMENTS} "
+      "half_width 0.2\n")),
+]
 
 
 def run(law):
@@ -81,11 +93,11 @@ def run(law):
     return pair / (STEPS * contacts), contacts, float(memory)
 
 
-results = {name: run(law) for name, law in LAWS.items()}
-base = results[next(iter(LAWS))][0]
 state = TERMS * TERMS + 8 * TERMS + 21 + ELEMENTS * (3 * TERMS + 4)
 unit, scale = ("instructions", 1.0) if CALLGRIND else ("ns", 1e9)
-print(f"{'law':62s} {unit + '/contact-step':>24s} {'ratio':>6s} {'contacts':>9s} {'MB/rank':>8s}")
-for name, (cost, contacts, memory) in results.items():
-    print(f"{name:62s} {cost * scale:24.1f} {cost / base:6.2f} {contacts:9.0f} {memory:8.1f}")
+print(f"{'law':72s} {unit + '/contact-step':>24s} {'ratio':>6s} {'contacts':>9s} {'MB/rank':>8s}")
+for (base_name, base_law), (name, law) in PAIRS:
+    base = run(base_law)
+    for label, (cost, contacts, memory) in ((base_name, base), (name, run(law))):
+        print(f"{label:72s} {cost * scale:24.1f} {cost / base[0]:6.2f} {contacts:9.0f} {memory:8.1f}")
 print(f"mdr/visco history per contact: {state} doubles = {state * 8} bytes (M^2 + 8M + 21 + N (3M + 4))")

@@ -40,6 +40,10 @@ target_include_directories(mdrviscoplugin PRIVATE ${mdr_lammps_source}/src ${mdr
 target_compile_definitions(mdrviscoplugin PRIVATE LAMMPS_EXCEPTIONS LAMMPS_SMALLBIG)
 target_link_libraries(mdrviscoplugin PRIVATE mdr::core MPI::MPI_CXX ${mdr_lammps_prefix}/lib/liblammps.so)
 set_target_properties(mdrviscoplugin PROPERTIES PREFIX "")
+# mdr's functions in the plugin are the plugin's own: bound inside it (no calls through the PLT; the static library's
+# symbols hidden) and, within a file, inlined where GCC would (not interposable).
+target_compile_options(mdrviscoplugin PRIVATE -fno-semantic-interposition)
+target_link_options(mdrviscoplugin PRIVATE -Wl,--exclude-libs,ALL)
 add_dependencies(mdrviscoplugin mdr_lammps)
 set(MDR_LAMMPS_BINARY ${mdr_lammps_prefix}/bin/lmp)
 set(MDR_LAMMPS_LIBRARY_DIR ${mdr_lammps_prefix}/lib)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -49,12 +50,20 @@ SpatialVector any_normal_to(const SpatialVector& normal) {
     return {result[0] / length, result[1] / length, result[2] / length};
 }
 
-// Throws mdr::InvalidInput naming `key` unless every component of `vector` is finite (the key's string only then).
+// Throws mdr::InvalidInput naming `key` for the first component of `vector` that is not finite.
+template <class Vector>
+[[noreturn, gnu::noinline, gnu::cold]] void refuse_non_finite(const char* key, const Vector& vector) {
+    for (const double component : vector) require_finite(key, component);
+    __builtin_unreachable();  // a component was not finite: require_finite threw
+}
+
+// Throws mdr::InvalidInput naming `key` unless every component of `vector` is finite (the key's string only then;
+// one branch a call, as every step calls this).
 template <class Vector>
 void require_finite_components(const char* key, const Vector& vector) {
-    for (const double component : vector) {
-        if (!std::isfinite(component)) require_finite(key, component);
-    }
+    bool finite = true;
+    for (const double component : vector) finite &= std::isfinite(component);
+    if (!finite) refuse_non_finite(key, vector);
 }
 
 std::string entry(std::size_t index) { return "state[" + std::to_string(index) + "]"; }
@@ -114,14 +123,18 @@ void ContactLaw::require_state_size(std::span<const double> state) const {
 std::size_t ContactLaw::count_at(std::span<const double> state, std::size_t offset) const {
     const double count = state[offset];
     // A whole number in range: its conversion back is exact (no call of floor, which is not inlined for x86-64's
-    // baseline instruction set; this runs twice a step).
-    if (!(count >= 0.0 && count <= static_cast<double>(loads_.size()) &&
-          static_cast<double>(static_cast<std::size_t>(count)) == count)) {
-        throw InvalidInput(entry(offset), format_value(count),
-                           "a contact state's element count must be a whole number in [0, " +
-                               std::to_string(loads_.size()) + "] (a corrupted or foreign state)");
+    // baseline instruction set, and a signed conversion, one instruction there; this runs twice a step).
+    if (count >= 0.0 && count <= static_cast<double>(loads_.size()) &&
+        static_cast<double>(static_cast<std::int64_t>(count)) == count) [[likely]] {
+        return static_cast<std::size_t>(static_cast<std::int64_t>(count));
     }
-    return static_cast<std::size_t>(count);
+    refuse_count(offset, count);
+}
+
+void ContactLaw::refuse_count(std::size_t offset, double count) const {
+    throw InvalidInput(entry(offset), format_value(count),
+                       "a contact state's element count must be a whole number in [0, " +
+                           std::to_string(loads_.size()) + "] (a corrupted or foreign state)");
 }
 
 void ContactLaw::check(std::span<const double> state) const {

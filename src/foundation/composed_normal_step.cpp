@@ -4,8 +4,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <type_traits>
 #include <vector>
+
+#include "with_branches.hpp"
 
 namespace mdr::foundation {
 namespace {
@@ -16,18 +17,6 @@ constexpr double smallest_factor = 1e-150;       // a composition factor below: 
 // Header entries (see the class's comment).
 constexpr std::size_t profile_sum_offset = 3, outermost_offset = 4, innermost_free_offset = 5;
 constexpr std::size_t scale_offset = ComposedNormalStep::factors_offset;
-
-// Calls `kernel` with the branch count as a constant for M = 1, 2, 3 (its loops over the branches unrolled, the loop
-// over the elements vectorised), else as a number.
-template <class Kernel>
-inline __attribute__((always_inline)) auto with_branches(std::size_t branches, Kernel kernel) {
-    switch (branches) {
-        case 1: return kernel(std::integral_constant<std::size_t, 1>{});
-        case 2: return kernel(std::integral_constant<std::size_t, 2>{});
-        case 3: return kernel(std::integral_constant<std::size_t, 3>{});
-        default: return kernel(branches);
-    }
-}
 
 // Whether no element i < count enters or leaves contact over the step: one in contact keeps a compressive end
 // stress, common - G_inf g_i + sum_k weight_k h^_k,i >= 0 (eq. 20), a free one stays clear of the indenter,

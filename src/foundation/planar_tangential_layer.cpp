@@ -3,42 +3,69 @@
 #include <algorithm>
 #include <cmath>
 
-#include "branch_sums.hpp"
+#include "with_branches.hpp"
 
 namespace mdr::foundation {
 namespace {
 
 constexpr double tangential_stiffness_factor = 8.0 / 3.0;  // k_x = (8/3) G dx, eq. (11), (41)
 
-// Eq. (50) with vectors over `count` elements, one branch-free pass (selects, so that it vectorises with
-// -fno-trapping-math and -fno-math-errno): an element in contact (mask 1) sticks while its trial stays inside the
-// friction circle of radius per_load q_i and slips along its trial otherwise; out of contact (mask 0) it is
-// force-free. Writes the new stress t and increment du and adds du to u. A free function of restrict pointers:
-// inside the member function GCC 12 leaves this loop scalar.
-__attribute__((target_clones("avx2", "default"))) void stick_or_slip(
-    std::size_t count, PlanarVector increment, double stiffness, double per_load, const double* __restrict mask,
-    const double* __restrict q, const double* __restrict share, const double* __restrict relaxed_x,
-    const double* __restrict relaxed_y, double* __restrict u_x, double* __restrict u_y, double* __restrict t_x,
-    double* __restrict t_y, double* __restrict du_x, double* __restrict du_y) {
-    const double compliance = 1.0 / stiffness;
-    const double along_x = increment[0], along_y = increment[1];
-    for (std::size_t i = 0; i < count; ++i) {
-        const double in = mask[i];
-        const double bound = in * per_load * std::max(q[i], 0.0);
-        const double moved_x = along_x * share[i], moved_y = along_y * share[i];
-        const double trial_x = relaxed_x[i] + stiffness * moved_x;
-        const double trial_y = relaxed_y[i] + stiffness * moved_y;
-        const double magnitude = std::sqrt(trial_x * trial_x + trial_y * trial_y);
-        const bool sticks = in != 0.0 && magnitude <= bound;
-        const double scale = sticks ? 1.0 : (in != 0.0 ? bound / magnitude : 0.0);
-        const double stress_x = trial_x * scale, stress_y = trial_y * scale;
-        du_x[i] = sticks ? moved_x : (stress_x - relaxed_x[i]) * compliance;
-        du_y[i] = sticks ? moved_y : (stress_y - relaxed_y[i]) * compliance;
-        u_x[i] += du_x[i];
-        u_y[i] += du_y[i];
-        t_x[i] = stress_x;
-        t_y[i] = stress_y;
+// Element i's stress at the end of a step with no increment, G_inf u_i + sum_k G_k E_k h_k,i (`weight` G_k E_k;
+// memory branch-major, x then y: h_k,x at memory[2 k n + i], h_k,y at memory[(2 k + 1) n + i]); the order of
+// relaxed_sums (branch_sums.hpp), so that every value is the same.
+template <class Branches>
+inline PlanarVector relaxed_stress(std::size_t i, Branches branches, std::size_t n, double g_inf,
+                                   const double* __restrict weight, const double* __restrict u_x,
+                                   const double* __restrict u_y, const double* __restrict memory) {
+    double x = g_inf * u_x[i], y = g_inf * u_y[i];
+    for (std::size_t k = 0; k < branches; ++k) {
+        x += weight[k] * memory[2 * k * n + i];
+        y += weight[k] * memory[(2 * k + 1) * n + i];
     }
+    return {x, y};
+}
+
+// Eq. (50) with vectors over `count` elements, one branch-free pass (selects, so that it vectorises with
+// -fno-trapping-math and -fno-math-errno): an element in contact (mask 1) sticks while its trial, its relaxed stress
+// plus k du, stays inside the friction circle of radius per_load q_i and slips along its trial otherwise; out of
+// contact (mask 0) it is force-free. Writes the new stress t, adds the element's increment du to u and updates its
+// memories, h <- E h + B du (step_coefficients.hpp; `decay` E_k, `gain` B_k). The relaxed stresses are formed here,
+// not in a pass of their own. A free function of restrict pointers: inside the member function GCC 12 leaves this
+// loop scalar.
+__attribute__((target_clones("avx2", "default"))) void stick_or_slip(
+    std::size_t count, std::size_t branches, std::size_t n, PlanarVector increment, double g_inf, double stiffness,
+    double per_load, const double* __restrict weight, const double* __restrict decay, const double* __restrict gain,
+    const double* __restrict mask, const double* __restrict q, const double* __restrict share,
+    double* __restrict u_x, double* __restrict u_y, double* __restrict memory, double* __restrict t_x,
+    double* __restrict t_y) {
+    with_branches(branches, [&](auto m) {
+        const double compliance = 1.0 / stiffness;
+        const double along_x = increment[0], along_y = increment[1];
+        for (std::size_t i = 0; i < count; ++i) {
+            const PlanarVector relaxed = relaxed_stress(i, m, n, g_inf, weight, u_x, u_y, memory);
+            const double in = mask[i];
+            const double bound = in * per_load * std::max(q[i], 0.0);
+            const double moved_x = along_x * share[i], moved_y = along_y * share[i];
+            const double trial_x = relaxed[0] + stiffness * moved_x;
+            const double trial_y = relaxed[1] + stiffness * moved_y;
+            const double magnitude = std::sqrt(trial_x * trial_x + trial_y * trial_y);
+            const bool sticks = in != 0.0 && magnitude <= bound;
+            const double scale = sticks ? 1.0 : (in != 0.0 ? bound / magnitude : 0.0);
+            const double stress_x = trial_x * scale, stress_y = trial_y * scale;
+            const double du_x = sticks ? moved_x : (stress_x - relaxed[0]) * compliance;
+            const double du_y = sticks ? moved_y : (stress_y - relaxed[1]) * compliance;
+            u_x[i] += du_x;
+            u_y[i] += du_y;
+            for (std::size_t k = 0; k < m; ++k) {
+                double& h_x = memory[2 * k * n + i];
+                double& h_y = memory[(2 * k + 1) * n + i];
+                h_x = decay[k] * h_x + gain[k] * du_x;
+                h_y = decay[k] * h_y + gain[k] * du_y;
+            }
+            t_x[i] = stress_x;
+            t_y[i] = stress_y;
+        }
+    });
 }
 
 }  // namespace
@@ -52,17 +79,14 @@ PlanarTangentialLayer::PlanarTangentialLayer(const rheology::Rheology& material,
       displacement_(2 * count, 0.0),
       stress_(2 * count, 0.0),
       memory_(2 * count * material.terms().size(), 0.0),
-      relaxed_(2 * count, 0.0),
-      increment_(2 * count, 0.0),
+      weight_(material.terms().size(), 0.0),
       share_(count) {}
 
-__attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::begin_step(
-    const StepCoefficients& coefficients, std::span<const Entry> entries) {
+void PlanarTangentialLayer::begin_step(const StepCoefficients& coefficients, std::span<const Entry> entries) {
     copy_step_coefficients(coefficients, step_);
     share_.set(entries);
-    // Both components in one pass over [0, n + touched): the x block's elements in [touched, n) hold zeros (never
-    // touched), so their sums are the zeros relaxed_ must hold there; one pass costs half the loop overhead of two.
-    relaxed_sums(material_, step_, displacements(), memories(), 2 * count_, count_ + touched_, relaxed_.data());
+    const auto& terms = material_.terms();
+    for (std::size_t k = 0; k < terms.size(); ++k) weight_[k] = terms[k].modulus * step_.decay[k];
 }
 
 PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, std::span<const double> normal_line_loads,
@@ -72,8 +96,10 @@ PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, std::spa
     for (std::size_t i = 0; i < contact.size(); ++i) {
         if (contact[i] == 0.0) continue;
         const double bound = per_load_ * std::max(normal_line_loads[i], 0.0);  // eq. (50), a circle
-        const double trial_x = relaxed_[i] + step_.stiffness * (increment[0] * share_[i]);
-        const double trial_y = relaxed_[n + i] + step_.stiffness * (increment[1] * share_[i]);
+        const PlanarVector relaxed = relaxed_stress(i, weight_.size(), n, material_.equilibrium_modulus(),
+                                                    weight_.data(), displacements(), displacements() + n, memories());
+        const double trial_x = relaxed[0] + step_.stiffness * (increment[0] * share_[i]);
+        const double trial_y = relaxed[1] + step_.stiffness * (increment[1] * share_[i]);
         const double magnitude = std::sqrt(trial_x * trial_x + trial_y * trial_y);
         const double scale = magnitude <= bound ? 1.0 : bound / magnitude;
         sum_x += trial_x * scale;
@@ -83,32 +109,23 @@ PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, std::spa
     return {factor * sum_x, factor * sum_y};
 }
 
-__attribute__((target_clones("avx2", "default"))) void PlanarTangentialLayer::advance(
-    PlanarVector increment, std::span<const double> normal_line_loads, std::span<const double> contact) {
+void PlanarTangentialLayer::advance(PlanarVector increment, std::span<const double> normal_line_loads,
+                                    std::span<const double> contact) {
     touched_ = std::max(touched_, contact.size());
     high_water_ = std::max(high_water_, touched_);
     const std::size_t n = count_, count = touched_;
-    const auto& terms = material_.terms();
     // As TangentialLayer: the loads and flags cover every element ever touched (count = contact.size()); the flags
     // are the mask of the stick-or-slip pass (1 or 0).
     double* u = displacements();
     const double* t_x = stress_.data();
     const double* t_y = stress_.data() + n;
-    const double* du_x = increment_.data();
-    const double* du_y = increment_.data() + n;
-    stick_or_slip(count, increment, step_.stiffness, per_load_, contact.data(), normal_line_loads.data(), share_.data(),
-                  relaxed_.data(), relaxed_.data() + n, u, u + n, stress_.data(), stress_.data() + n,
-                  increment_.data(), increment_.data() + n);
+    stick_or_slip(count, weight_.size(), n, increment, material_.equilibrium_modulus(), step_.stiffness, per_load_,
+                  weight_.data(), step_.decay.data(), step_.gain.data(), contact.data(), normal_line_loads.data(),
+                  share_.data(), u, u + n, memories(), stress_.data(), stress_.data() + n);
     double sum_x = 0.0, sum_y = 0.0;
     for (std::size_t i = 0; i < count; ++i) {
         sum_x += t_x[i];
         sum_y += t_y[i];
-    }
-    for (std::size_t k = 0; k < terms.size(); ++k) {  // h <- E h + B du (step_coefficients.hpp)
-        const double decay = step_.decay[k], gain = step_.gain[k];
-        double* __restrict h = memories() + 2 * k * n;
-        for (std::size_t i = 0; i < count; ++i) h[i] = decay * h[i] + gain * du_x[i];
-        for (std::size_t i = 0; i < count; ++i) h[n + i] = decay * h[n + i] + gain * du_y[i];
     }
     const double factor = 2.0 * tangential_stiffness_factor * spacing_;
     total_force_ = {factor * sum_x, factor * sum_y};
@@ -144,7 +161,8 @@ void PlanarTangentialLayer::load_state(std::span<const double> in) {
         std::copy_n(base + b * n, touched, to);
         std::fill(to + touched, to + std::max(touched, high_water_), 0.0);  // zeros beyond the loaded elements
     }
-    adopt_touched(touched);
+    touched_ = touched;
+    high_water_ = std::max(high_water_, touched_);
 }
 
 void PlanarTangentialLayer::attach(std::span<double> state) {
@@ -152,15 +170,7 @@ void PlanarTangentialLayer::attach(std::span<double> state) {
     // branch), and hold zeros beyond its touched elements (initialised so, written only below the touched count).
     header_ = state.data();
     total_force_ = {state[0], state[1]};
-    adopt_touched(static_cast<std::size_t>(state[touched_offset]));
-}
-
-void PlanarTangentialLayer::adopt_touched(std::size_t touched) {
-    const std::size_t n = count_;
-    for (std::size_t c = 0; c < 2; ++c) {
-        std::fill(relaxed_.data() + c * n + touched, relaxed_.data() + c * n + std::max(touched, high_water_), 0.0);
-    }
-    touched_ = touched;
+    touched_ = static_cast<std::size_t>(state[touched_offset]);
     high_water_ = std::max(high_water_, touched_);
 }
 

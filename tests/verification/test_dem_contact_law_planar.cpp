@@ -33,15 +33,17 @@ dem::PlanarVector path_at(int n) {
 
 // Eq. 50 in one dimension by the library's own TangentialLayer beside a Foundation: the reference.
 struct LineReference {
+    rheology::Rheology rheology;
     foundation::Foundation normal;
     foundation::TangentialLayer layer;
-    foundation::StepCoefficients coefficients = foundation::step_coefficients(material, time_step);
+    foundation::StepCoefficients coefficients = foundation::step_coefficients(rheology, time_step);
     std::vector<double> loads = std::vector<double>(elements);
     double overlap = 0.0, displacement = 0.0;
 
-    explicit LineReference(double friction)
-        : normal(material, *profile::make_sphere(radius), half_width / elements, elements),
-          layer(material, friction, half_width / elements, elements) {}
+    explicit LineReference(double friction, const rheology::Rheology& of = material)
+        : rheology(of),
+          normal(rheology, *profile::make_sphere(radius), half_width / elements, elements),
+          layer(rheology, friction, half_width / elements, elements) {}
     double step(double new_overlap, double new_displacement) {
         normal.begin_step(coefficients);
         normal.advance(overlap, new_overlap);
@@ -73,6 +75,36 @@ TEST(DemContactLawPlanar, AlongAnyFixedDirectionIsTheLineLaw) {
         ASSERT_NEAR(force[1], expected * std::sin(angle), 1e-12 * largest + 1e-300) << "step " << n;
     }
     EXPECT_GT(largest, 0.0);
+}
+
+TEST(DemContactLawPlanar, AlongAFixedDirectionIsTheLineLawForEveryBranchCount) {
+    // The planar layer's element pass takes M = 1, 2, 3 as constants and any other M as a number (with_branches.hpp);
+    // each, with stick and slip, is the independent line law along a fixed direction.
+    const double friction = 0.3, angle = -2.1;
+    for (std::size_t branches = 1; branches <= 5; ++branches) {
+        std::vector<rheology::RelaxationTerm> terms;
+        for (std::size_t k = 0; k < branches; ++k) {
+            const auto order = static_cast<double>(k);
+            terms.push_back({1e6 * (1.0 + order), 2e-5 * std::pow(4.0, order)});
+        }
+        const auto prony = rheology::Rheology::prony(1e6, terms);
+        dem::ContactLaw law(prony, radius, friction, elements, half_width, time_step);
+        std::vector<double> state(law.state_size());
+        law.initialise(state);
+        LineReference line(friction, prony);
+        double largest = 0.0;
+        for (int n = 1; n < 600; ++n) {
+            const double along = 1.2e-6 * std::sin(2.0 * std::numbers::pi * n / 500.0);
+            law.advance(state, overlap_at(n), {along * std::cos(angle), along * std::sin(angle)});
+            const double expected = line.step(overlap_at(n), along);
+            largest = std::max(largest, std::abs(expected));
+            const auto force = law.tangential_force(state);
+            const double tolerance = 1e-12 * largest + 1e-300;
+            ASSERT_NEAR(force[0], expected * std::cos(angle), tolerance) << "M = " << branches << ", step " << n;
+            ASSERT_NEAR(force[1], expected * std::sin(angle), tolerance) << "M = " << branches << ", step " << n;
+        }
+        EXPECT_GT(largest, 0.0);
+    }
 }
 
 TEST(DemContactLawPlanar, WithoutSlipTheComponentsAreIndependentLines) {

@@ -158,6 +158,7 @@ private:
     std::span<const double> loads() const;
     std::span<const double> contact_flags() const;
     std::size_t count_at(std::span<const double> state, std::size_t offset) const;
+    [[noreturn, gnu::noinline, gnu::cold]] void refuse_count(std::size_t offset, double count) const;
     bool tangential_at_rest(PlanarVector increment) const;
     void skip_resting_layer(PlanarVector displacement);
     void require_state_size(std::span<const double> state) const;

@@ -72,7 +72,6 @@ public:
     void attach(std::span<double> state);
 
 private:
-    void adopt_touched(std::size_t touched);  // a loaded state's touched count; relaxed_ zero beyond it
     // u_i and h_{k,i}: the attached state's, else the layer's own (found per call, so that a copy of the layer
     // never points into the original's buffers).
     double* displacements() { return header_ != nullptr ? header_ + 3 : displacement_.data(); }
@@ -89,8 +88,7 @@ private:
     std::vector<double> stress_;        ///< t_i of the step being taken (not part of the state)
     std::vector<double> memory_;        ///< h_{k,i} when no state is attached
     double* header_ = nullptr;          ///< the attached state (force, touched count, u_i, h_{k,i}), else null
-    std::vector<double> relaxed_;       ///< G_inf u_i + sum_k G_k E_k h_{k,i} for the prepared step
-    std::vector<double> increment_;     ///< du_i of the step being taken
+    std::vector<double> weight_;        ///< G_k E_k of the prepared step: h_k's share of the relaxed stress
     EntryShares share_;                 ///< part of the prepared step's increment each element takes
     StepCoefficients step_;
     std::size_t touched_ = 0;           ///< elements [touched_, n) have never been in contact: u = h = 0
