@@ -31,6 +31,7 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
       trial_load_(cells, 0.0),
       trial_displacement_(cells, 0.0),
       trial_stress_(cells, 0.0),
+      start_load_(cells, 0.0),
       tried_(cells + 1, false),
       unit_loads_(cells + 1),
       history_offsets_{0} {
@@ -372,6 +373,100 @@ void LayerCells::keep(std::size_t count, double dashpot) {
     }
 }
 
+bool LayerCells::locates_events(double time_step) const {
+    return time_step > 0.0 && !(material_->viscosity() > 0.0) && !material_->terms().empty();
+}
+
+double LayerCells::split_path(std::size_t i, double fraction, double at_break) {
+    // w1 linear from its committed value to `at_break` over the first part of the step, then (held) over the second:
+    // each branch stepped exactly on each part (eq. L16; E_k, B_k of the part), kept with the second part's B_k so
+    // that the end's w1 adds B_k (w1 - at_break) (commit_splits).
+    const auto& terms = material_->terms();
+    const std::size_t branches = terms.size();
+    const double time_step = coefficients_.time_step;
+    const std::size_t offset = split_state_.size();
+    split_state_.resize(offset + 2 * branches);
+    double memory = 0.0;
+    for (std::size_t k = 0; k < branches; ++k) {
+        const double first = fraction * time_step / terms[k].relaxation_time;
+        const double second = (1.0 - fraction) * time_step / terms[k].relaxation_time;
+        const double at_break_branch = std::exp(-first) * branches_[i * branches + k] +
+                                       foundation::branch_gain(first) * (at_break - displacement_[i]);
+        split_state_[offset + k] = std::exp(-second) * at_break_branch;
+        split_state_[offset + branches + k] = foundation::branch_gain(second);
+        memory += terms[k].modulus * split_state_[offset + k];
+    }
+    return memory;
+}
+
+double LayerCells::split_gain(std::size_t split) const {
+    const auto& terms = material_->terms();
+    const std::size_t branches = terms.size();
+    const double* gain = &split_state_[split * 2 * branches + branches];
+    double sum = 0.0;
+    for (std::size_t k = 0; k < branches; ++k) sum += terms[k].modulus * gain[k];
+    return sum;
+}
+
+double LayerCells::depth_at(double fraction, double depth) const {
+    return depth_ + fraction * (depth - depth_);
+}
+
+bool LayerCells::locate_entries(std::size_t contact, double depth) {
+    // A cell free at the step's start and in contact at its end touches where its edge function (eq. L19: minus
+    // the free stiffness times the gap while free, q/4 in contact; one C1 function) crosses zero, linear over the
+    // step (as the half-space foundation locates an element's entry, Foundation::evaluate), at the depth there: w1
+    // follows its free surface to the touch, w1 = d - g there, then the indenter to the step's end; its Q/4 is
+    // G_inf w1 + sum_k G_k h_k for that path (relaxed_ takes the difference to the whole step's, solve_load).
+    splits_.clear();
+    split_state_.clear();
+    const double equilibrium = material_->equilibrium_modulus();
+    bool changed = false;
+    for (std::size_t i = contact_; i < contact; ++i) {
+        const double before = free_stiffness_ * (depth_ - profile_[i] - displacement_[i]);
+        const double after = trial_load_[i] / plane_modulus_per_shear;
+        const double fraction = before < 0.0 && after > 0.0 ? before / (before - after) : 0.0;
+        const double end = depth - profile_[i];
+        const double at_break = depth_at(fraction, depth) - profile_[i];
+        const double stress = equilibrium * end + split_path(i, fraction, at_break) +
+                              split_gain(splits_.size()) * (end - at_break);
+        splits_.push_back({i, fraction, at_break});
+        const double relaxed = stress - springs_ * end;
+        changed = changed || relaxed != relaxed_[i];
+        relaxed_[i] = relaxed;
+        free_relaxed_[i] = relaxed;
+    }
+    return changed;
+}
+
+void LayerCells::locate_exits(std::size_t contact, double depth) {
+    // A cell in contact at the step's start and free at its end lifts off where its edge function (q/4, then minus
+    // the free stiffness times the gap) crosses zero, linear over the step (as Foundation::evaluate locates an
+    // exit): w1 follows the indenter to there, w1 = d - g at the lift-off's depth, then the free law to the step's
+    // end, Q/4 = G_inf w1 + sum_k G_k h_k with Q from the contact's q (eq. L16, L18).
+    const double equilibrium = material_->equilibrium_modulus();
+    for (std::size_t i = contact; i < contact_; ++i) {
+        const double before = start_load_[i] / plane_modulus_per_shear;
+        const double after = free_stiffness_ * (depth - profile_[i] - trial_displacement_[i]);
+        const double fraction = before > 0.0 && after < 0.0 ? before / (before - after) : 0.0;
+        const double at_break = depth_at(fraction, depth) - profile_[i];
+        const double memory = split_path(i, fraction, at_break);
+        const double gain = split_gain(splits_.size());
+        trial_displacement_[i] = (trial_stress_[i] - memory + gain * at_break) / (equilibrium + gain);
+        splits_.push_back({i, fraction, at_break});
+    }
+}
+
+void LayerCells::commit_splits() {
+    const std::size_t branches = material_->terms().size();
+    for (std::size_t s = 0; s < splits_.size(); ++s) {
+        const std::size_t i = splits_[s].cell;
+        const double* held = &split_state_[s * 2 * branches];
+        const double change = trial_displacement_[i] - splits_[s].at_break;
+        for (std::size_t k = 0; k < branches; ++k) branches_[i * branches + k] = held[k] + held[branches + k] * change;
+    }
+}
+
 template <class LoadRule>
 LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, bool needs_contact,
                                    std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry) {
@@ -403,6 +498,10 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     // would penetrate it, never returning to a set already tried.
     // A force with no contact (`needs_contact`) adds the innermost cell.
     std::fill(tried_.begin(), tried_.end(), false);
+    const bool splits = locates_events(time_step);
+    if (splits) std::copy_n(trial_load_.begin(), contact_, start_load_.begin());  // the committed q, for exits
+    splits_.clear();
+    split_state_.clear();
     std::size_t contact = contact_;
     double depth = 0.0;
     for (;;) {
@@ -425,6 +524,16 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
                            "a jump of the load onto the surface (nothing in contact before it) against a parallel "
                            "dashpot, with a contact that grows again, is not built on a [layer] yet (issue 28)");
     }
+    if (splits && contact > contact_) {
+        // Entries located inside the step change the entering cells' Q, so q and (solved) the depth: the entries
+        // are located again on the new q, a fixed point (the depth's change a cell's share of F; two or three passes).
+        for (int pass = 0; pass < 4 && locate_entries(contact, depth); ++pass) {
+            const double previous = depth;
+            depth = load_for(contact);
+            if (pass > 0 && !(std::abs(depth - previous) > 1e-14 * std::abs(depth))) break;
+        }
+        free_surface(contact, depth, 1);
+    }
     if (contact == cells_ && !flat_punch_) {
         throw InvalidInput("layer", "depth " + format_value(depth),
                            "the contact radius would exceed " + format_value(spacing_ * static_cast<double>(cells_)) +
@@ -433,6 +542,7 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     LayerCellState state;
     for (std::size_t i = 0; i < contact; ++i) state.force += 2.0 * spacing_ * trial_load_[i];  // eq. L5
     free_surface(contact, depth, kept_ - std::min(contact, kept_));  // every kept free cell's, for its branches
+    if (splits && contact < contact_) locate_exits(contact, depth);
     // q/4 inside and minus the stiffness times the gap outside (E*/4 = the step's stiffness) meet with the same slope
     // at the edge (w1 jumps in slope by q'/E* there): one C1 function (eq. L19).
     const auto edge_function = [&](std::size_t i) {
@@ -464,6 +574,7 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     axis_ = axis;
     state.depth = depth;
     for (std::size_t i = 0; i < kept_; ++i) commit_cell(i, coefficients_.decay.data(), coefficients_.gain.data());
+    commit_splits();
     record(contact, dashpot);
     if (time_step > 0.0) {  // the indenter's rate the dashpots saw; unknown after a step without contact
         const double secant = (depth - depth_) / time_step;
