@@ -423,8 +423,14 @@ bool LayerCells::locate_entries(std::size_t contact, double depth) {
     const double equilibrium = material_->equilibrium_modulus();
     bool changed = false;
     for (std::size_t i = contact_; i < contact; ++i) {
-        const double before = free_stiffness_ * (depth_ - profile_[i] - displacement_[i]);
-        const double after = trial_load_[i] / plane_modulus_per_shear;
+        prepare_cell(i, coefficients_.decay.data(), coefficients_.gain.data(), 0.0);  // the whole step's, free
+        // The gap at the step's end were the cell free: its Q from the others' q (eq. L18), as the foundation's
+        // free element (Foundation::evaluate).
+        const double* row = &operator_->matrix[i * cells_];
+        const double load = numerics::dot_product(row, trial_load_.data(), contact) - row[i] * trial_load_[i];
+        const double free_end = (load / plane_modulus_per_shear - free_relaxed_[i]) * free_compliance_;
+        const double before = depth_ - profile_[i] - displacement_[i];
+        const double after = depth - profile_[i] - free_end;
         const double fraction = before < 0.0 && after > 0.0 ? before / (before - after) : 0.0;
         const double end = depth - profile_[i];
         const double at_break = depth_at(fraction, depth) - profile_[i];
