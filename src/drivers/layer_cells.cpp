@@ -531,12 +531,13 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
                            "dashpot, with a contact that grows again, is not built on a [layer] yet (issue 28)");
     }
     if (splits && contact > contact_) {
-        // Entries located inside the step change the entering cells' Q, so q and (solved) the depth: the entries
-        // are located again on the new q, a fixed point (the depth's change a cell's share of F; two or three passes).
+        // Entries located inside the step change the entering cells' Q, so q and (solved) the depth: a solved depth
+        // is followed by locating the entries again, a fixed point (the depth's change a cell's share of F; two or
+        // three passes); a prescribed one takes one pass (the touches located on the whole step's q).
         for (int pass = 0; pass < 4 && locate_entries(contact, depth); ++pass) {
             const double previous = depth;
             depth = load_for(contact);
-            if (pass > 0 && !(std::abs(depth - previous) > 1e-14 * std::abs(depth))) break;
+            if (!(std::abs(depth - previous) > 1e-14 * std::abs(depth))) break;
         }
         free_surface(contact, depth, 1);
     }
