@@ -412,37 +412,33 @@ double LayerCells::depth_at(double fraction, double depth) const {
     return depth_ + fraction * (depth - depth_);
 }
 
-bool LayerCells::locate_entries(std::size_t contact, double depth) {
-    // A cell free at the step's start and in contact at its end touches where its edge function (eq. L19: minus
-    // the free stiffness times the gap while free, q/4 in contact; one C1 function) crosses zero, linear over the
-    // step (as the half-space foundation locates an element's entry, Foundation::evaluate), at the depth there: w1
-    // follows its free surface to the touch, w1 = d - g there, then the indenter to the step's end; its Q/4 is
-    // G_inf w1 + sum_k G_k h_k for that path (relaxed_ takes the difference to the whole step's, solve_load).
-    splits_.clear();
-    split_state_.clear();
-    const double equilibrium = material_->equilibrium_modulus();
-    bool changed = false;
-    for (std::size_t i = contact_; i < contact; ++i) {
-        prepare_cell(i, coefficients_.decay.data(), coefficients_.gain.data(), 0.0);  // the whole step's, free
-        // The gap at the step's end were the cell free: its Q from the others' q (eq. L18), as the foundation's
-        // free element (Foundation::evaluate).
-        const double* row = &operator_->matrix[i * cells_];
-        const double load = numerics::dot_product(row, trial_load_.data(), contact) - row[i] * trial_load_[i];
-        const double free_end = (load / plane_modulus_per_shear - free_relaxed_[i]) * free_compliance_;
-        const double before = depth_ - profile_[i] - displacement_[i];
-        const double after = depth - profile_[i] - free_end;
-        const double fraction = before < 0.0 && after > 0.0 ? before / (before - after) : 0.0;
-        const double end = depth - profile_[i];
-        const double at_break = depth_at(fraction, depth) - profile_[i];
-        const double stress = equilibrium * end + split_path(i, fraction, at_break) +
-                              split_gain(splits_.size()) * (end - at_break);
-        splits_.push_back({i, fraction, at_break});
-        const double relaxed = stress - springs_ * end;
-        changed = changed || relaxed != relaxed_[i];
-        relaxed_[i] = relaxed;
-        free_relaxed_[i] = relaxed;
-    }
-    return changed;
+void LayerCells::locate_entry(std::size_t i, double depth) {
+    // A free cell the indenter would penetrate at the step's end touches where its gap d - g - w1, w1 its surface
+    // were it free (L18: from the trial just solved without it), crosses zero, linear over the step (as the
+    // half-space foundation locates an element's entry, Foundation::evaluate), at the depth there: w1 follows its
+    // free surface to the touch, w1 = d - g there, then the indenter to the step's end. Its Q/4 is G_inf w1 +
+    // sum_k G_k h_k for that path, affine in the end's w1 = d - g with the second part's B_k: relaxed_ takes the
+    // difference to the whole step's (solve_load; under force and spring control the depth's slope stays the whole
+    // step's, the entry located at the trial's depth).
+    const double before = depth_ - profile_[i] - displacement_[i];
+    const double after = depth - profile_[i] - trial_displacement_[i];
+    const double fraction = before < 0.0 && after > 0.0 ? before / (before - after) : 0.0;
+    const double at_break = depth_at(fraction, depth) - profile_[i];
+    const double memory = split_path(i, fraction, at_break);
+    const double gain = split_gain(splits_.size());
+    splits_.push_back({i, fraction, at_break});
+    // Q/4 = G_inf w1 + memory + gain (w1 - at_break) = springs w1 + relaxed.
+    const double relaxed = memory - gain * at_break + (material_->equilibrium_modulus() + gain - springs_) *
+                                                          (depth - profile_[i]);
+    relaxed_[i] = relaxed;
+    free_relaxed_[i] = relaxed;
+}
+
+void LayerCells::drop_entry() {
+    const std::size_t i = splits_.back().cell;
+    splits_.pop_back();
+    split_state_.resize(split_state_.size() - 2 * material_->terms().size());
+    prepare_cell(i, coefficients_.decay.data(), coefficients_.gain.data(), 0.0);  // the whole step's, free
 }
 
 void LayerCells::locate_exits(std::size_t contact, double depth) {
@@ -516,9 +512,11 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
         tried_[contact] = true;
         if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried_[contact - 1]) {
             --contact;
+            if (!splits_.empty() && splits_.back().cell == contact) drop_entry();
         } else if (contact < cells_ &&
                    (trial_displacement_[contact] < depth - profile_[contact] || (needs_contact && contact == 0)) &&
                    !tried_[contact + 1]) {
+            if (splits && contact >= contact_) locate_entry(contact, depth);
             ++contact;
             keep(contact + 1, dashpot);
         } else {
@@ -529,17 +527,6 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
         throw InvalidInput("material.eta", format_value(material_->viscosity()),
                            "a jump of the load onto the surface (nothing in contact before it) against a parallel "
                            "dashpot, with a contact that grows again, is not built on a [layer] yet (issue 28)");
-    }
-    if (splits && contact > contact_) {
-        // Entries located inside the step change the entering cells' Q, so q and (solved) the depth: a solved depth
-        // is followed by locating the entries again, a fixed point (the depth's change a cell's share of F; two or
-        // three passes); a prescribed one takes one pass (the touches located on the whole step's q).
-        for (int pass = 0; pass < 4 && locate_entries(contact, depth); ++pass) {
-            const double previous = depth;
-            depth = load_for(contact);
-            if (!(std::abs(depth - previous) > 1e-14 * std::abs(depth))) break;
-        }
-        free_surface(contact, depth, 1);
     }
     if (contact == cells_ && !flat_punch_) {
         throw InvalidInput("layer", "depth " + format_value(depth),

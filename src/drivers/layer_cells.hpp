@@ -112,12 +112,14 @@ private:
     // Whether edge_correction applies: no dashpot (its line load jumps at a growing edge, which the correction's
     // linear edge does not describe; first order there as before), and an edge between two cells.
     bool corrects_edge(std::size_t contact) const;
-    // Whether a cell's entry into or exit from the contact is located inside the step (locate_entries,
+    // Whether a cell's entry into or exit from the contact is located inside the step (locate_entry,
     // locate_exits): a step of some duration, a memory and no parallel dashpot.
     bool locates_events(double time_step) const;
-    // The entering cells [contact_, contact) of the solved set at `depth`: each one's touch located inside the step,
-    // and its relaxed part set to give its Q/4 on the split path; whether any changed (then q is solved again).
-    bool locate_entries(std::size_t contact, double depth);
+    // Free cell i, about to enter the contact set (its free surface at `depth` just solved): its touch located inside
+    // the step, and its relaxed part set to give its Q/4 on the split path (solve_load).
+    void locate_entry(std::size_t i, double depth);
+    // Undoes the last locate_entry (its cell dropped from the set again).
+    void drop_entry();
     // The cells [contact, contact_) that left the contact in the step: the lift-off located inside it, and their
     // free surface at the end (trial_displacement_) on the split path.
     void locate_exits(std::size_t contact, double depth);
