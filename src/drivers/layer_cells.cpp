@@ -486,8 +486,8 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     dashpot_offset_ = start_rate && time_step > 0.0 ? -viscosity * *start_rate : 0.0;
     // Where the indenter's rate breaks, a cell entering contact takes its own rate (solve_load), in a step with a
     // start rate (all but the step after one without contact). That step keeps the indenter's secant rate in every
-    // cell: without the touch located inside it (as the half-space's spring control does) the cells' own rates put
-    // its depth about twice as far off (docs/theory.md, "A parallel dashpot on the cells").
+    // cell: the cells' own rates put its depth farther off the answer converged in the time step, with the touch
+    // located inside the step too (docs/theory.md, "A parallel dashpot on the cells").
     const bool trapezoidal = start_rate && time_step > 0.0;
     entering_from_ = rate_at_entry == foundation::RateAtEntry::breaks && trapezoidal ? contact_ : cells_;
     // The kept cells (keep) step here; the others, free from the start and not yet needed, later (catch_up).
