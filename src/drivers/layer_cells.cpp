@@ -62,7 +62,12 @@ double LayerCells::edge_correction(std::size_t contact, double inside, double ou
     // and by Euler-Maclaurin misses dx^2/24 (q'(b) - q'(0+)) of int_0^b q otherwise. So int_0^a q = dx sum q_i +
     // s (a - b)^2 / 2 - s dx^2/24 - dx^2 q'(0+)/24 + O(dx^3) (eq. L19a), with a - b = dx (inside + outside) / (2
     // (inside - outside)) (a as located in L19) and q'(0+) from the quadratic through the three innermost cells,
-    // (-2 q_0 + 3 q_1 - q_2)/dx (zero for a sphere's even q, a cone's slope for its linear one).
+    // (-2 q_0 + 3 q_1 - q_2)/dx (zero for a sphere's even q, a cone's slope for its linear one). A trial set that
+    // is not complementary (q_{m-1} < 0, or the next cell penetrated: outside > 0) puts the edge beyond the two
+    // centres, where sum^2 / fall grows without bound and F(d) + k d = the right side finds spurious roots: the
+    // edge function is taken at its bounds there (inside >= 0 >= outside, the edge between the centres).
+    inside = std::max(inside, 0.0);
+    outside = std::min(outside, 0.0);
     const double fall = inside - outside;
     if (!(fall > 0.0)) return 0.0;
     const double sum = inside + outside;
@@ -73,6 +78,8 @@ double LayerCells::edge_correction(std::size_t contact, double inside, double ou
 
 double LayerCells::edge_correction_slope(std::size_t contact, double inside, double outside, double inside_slope,
                                          double outside_slope, const double* innermost_slope) const {
+    if (!(inside > 0.0)) inside = 0.0, inside_slope = 0.0;  // at its bounds as edge_correction takes it
+    if (!(outside < 0.0)) outside = 0.0, outside_slope = 0.0;
     const double fall = inside - outside;
     if (!(fall > 0.0)) return 0.0;
     const double sum = inside + outside, sum_slope = inside_slope + outside_slope;
