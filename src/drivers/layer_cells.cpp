@@ -31,7 +31,6 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
       trial_load_(cells, 0.0),
       trial_displacement_(cells, 0.0),
       trial_stress_(cells, 0.0),
-      start_load_(cells, 0.0),
       tried_(cells + 1, false),
       unit_loads_(cells + 1),
       history_offsets_{0} {
@@ -380,102 +379,6 @@ void LayerCells::keep(std::size_t count, double dashpot) {
     }
 }
 
-bool LayerCells::locates_events(double time_step) const {
-    return time_step > 0.0 && !(material_->viscosity() > 0.0) && !material_->terms().empty();
-}
-
-double LayerCells::split_path(std::size_t i, double fraction, double at_break) {
-    // w1 linear from its committed value to `at_break` over the first part of the step, then (held) over the second:
-    // each branch stepped exactly on each part (eq. L16; E_k, B_k of the part), kept with the second part's B_k so
-    // that the end's w1 adds B_k (w1 - at_break) (commit_splits).
-    const auto& terms = material_->terms();
-    const std::size_t branches = terms.size();
-    const double time_step = coefficients_.time_step;
-    const std::size_t offset = split_state_.size();
-    split_state_.resize(offset + 2 * branches);
-    double memory = 0.0;
-    for (std::size_t k = 0; k < branches; ++k) {
-        const double first = fraction * time_step / terms[k].relaxation_time;
-        const double second = (1.0 - fraction) * time_step / terms[k].relaxation_time;
-        const double at_break_branch = std::exp(-first) * branches_[i * branches + k] +
-                                       foundation::branch_gain(first) * (at_break - displacement_[i]);
-        split_state_[offset + k] = std::exp(-second) * at_break_branch;
-        split_state_[offset + branches + k] = foundation::branch_gain(second);
-        memory += terms[k].modulus * split_state_[offset + k];
-    }
-    return memory;
-}
-
-double LayerCells::split_gain(std::size_t split) const {
-    const auto& terms = material_->terms();
-    const std::size_t branches = terms.size();
-    const double* gain = &split_state_[split * 2 * branches + branches];
-    double sum = 0.0;
-    for (std::size_t k = 0; k < branches; ++k) sum += terms[k].modulus * gain[k];
-    return sum;
-}
-
-double LayerCells::depth_at(double fraction, double depth) const {
-    return depth_ + fraction * (depth - depth_);
-}
-
-void LayerCells::locate_entry(std::size_t i, double depth) {
-    // A free cell the indenter would penetrate at the step's end touches where its gap d - g - w1, w1 its surface
-    // were it free (L18: from the trial just solved without it), crosses zero, linear over the step (as the
-    // half-space foundation locates an element's entry, Foundation::evaluate), at the depth there: w1 follows its
-    // free surface to the touch, w1 = d - g there, then the indenter to the step's end. Its Q/4 is G_inf w1 +
-    // sum_k G_k h_k for that path, affine in the end's w1 = d - g with the second part's B_k: relaxed_ takes the
-    // difference to the whole step's (solve_load; under force and spring control the depth's slope stays the whole
-    // step's, the entry located at the trial's depth).
-    const double before = depth_ - profile_[i] - displacement_[i];
-    const double after = depth - profile_[i] - trial_displacement_[i];
-    const double fraction = before < 0.0 && after > 0.0 ? before / (before - after) : 0.0;
-    const double at_break = depth_at(fraction, depth) - profile_[i];
-    const double memory = split_path(i, fraction, at_break);
-    const double gain = split_gain(splits_.size());
-    splits_.push_back({i, fraction, at_break});
-    // Q/4 = G_inf w1 + memory + gain (w1 - at_break) = springs w1 + relaxed.
-    const double relaxed = memory - gain * at_break + (material_->equilibrium_modulus() + gain - springs_) *
-                                                          (depth - profile_[i]);
-    relaxed_[i] = relaxed;
-    free_relaxed_[i] = relaxed;
-}
-
-void LayerCells::drop_entry() {
-    const std::size_t i = splits_.back().cell;
-    splits_.pop_back();
-    split_state_.resize(split_state_.size() - 2 * material_->terms().size());
-    prepare_cell(i, coefficients_.decay.data(), coefficients_.gain.data(), 0.0);  // the whole step's, free
-}
-
-void LayerCells::locate_exits(std::size_t contact, double depth) {
-    // A cell in contact at the step's start and free at its end lifts off where its edge function (q/4, then minus
-    // the free stiffness times the gap) crosses zero, linear over the step (as Foundation::evaluate locates an
-    // exit): w1 follows the indenter to there, w1 = d - g at the lift-off's depth, then the free law to the step's
-    // end, Q/4 = G_inf w1 + sum_k G_k h_k with Q from the contact's q (eq. L16, L18).
-    const double equilibrium = material_->equilibrium_modulus();
-    for (std::size_t i = contact; i < contact_; ++i) {
-        const double before = start_load_[i] / plane_modulus_per_shear;
-        const double after = free_stiffness_ * (depth - profile_[i] - trial_displacement_[i]);
-        const double fraction = before > 0.0 && after < 0.0 ? before / (before - after) : 0.0;
-        const double at_break = depth_at(fraction, depth) - profile_[i];
-        const double memory = split_path(i, fraction, at_break);
-        const double gain = split_gain(splits_.size());
-        trial_displacement_[i] = (trial_stress_[i] - memory + gain * at_break) / (equilibrium + gain);
-        splits_.push_back({i, fraction, at_break});
-    }
-}
-
-void LayerCells::commit_splits() {
-    const std::size_t branches = material_->terms().size();
-    for (std::size_t s = 0; s < splits_.size(); ++s) {
-        const std::size_t i = splits_[s].cell;
-        const double* held = &split_state_[s * 2 * branches];
-        const double change = trial_displacement_[i] - splits_[s].at_break;
-        for (std::size_t k = 0; k < branches; ++k) branches_[i * branches + k] = held[k] + held[branches + k] * change;
-    }
-}
-
 template <class LoadRule>
 LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, bool needs_contact,
                                    std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry) {
@@ -507,10 +410,6 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     // would penetrate it, never returning to a set already tried.
     // A force with no contact (`needs_contact`) adds the innermost cell.
     std::fill(tried_.begin(), tried_.end(), false);
-    const bool splits = locates_events(time_step);
-    if (splits) std::copy_n(trial_load_.begin(), contact_, start_load_.begin());  // the committed q, for exits
-    splits_.clear();
-    split_state_.clear();
     std::size_t contact = contact_;
     double depth = 0.0;
     for (;;) {
@@ -519,11 +418,9 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
         tried_[contact] = true;
         if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried_[contact - 1]) {
             --contact;
-            if (!splits_.empty() && splits_.back().cell == contact) drop_entry();
         } else if (contact < cells_ &&
                    (trial_displacement_[contact] < depth - profile_[contact] || (needs_contact && contact == 0)) &&
                    !tried_[contact + 1]) {
-            if (splits && contact >= contact_) locate_entry(contact, depth);
             ++contact;
             keep(contact + 1, dashpot);
         } else {
@@ -543,7 +440,6 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     LayerCellState state;
     for (std::size_t i = 0; i < contact; ++i) state.force += 2.0 * spacing_ * trial_load_[i];  // eq. L5
     free_surface(contact, depth, kept_ - std::min(contact, kept_));  // every kept free cell's, for its branches
-    if (splits && contact < contact_) locate_exits(contact, depth);
     // q/4 inside and minus the stiffness times the gap outside (E*/4 = the step's stiffness) meet with the same slope
     // at the edge (w1 jumps in slope by q'/E* there): one C1 function (eq. L19).
     const auto edge_function = [&](std::size_t i) {
@@ -575,7 +471,6 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     axis_ = axis;
     state.depth = depth;
     for (std::size_t i = 0; i < kept_; ++i) commit_cell(i, coefficients_.decay.data(), coefficients_.gain.data());
-    commit_splits();
     record(contact, dashpot);
     if (time_step > 0.0) {  // the indenter's rate the dashpots saw; unknown after a step without contact
         const double secant = (depth - depth_) / time_step;

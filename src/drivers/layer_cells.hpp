@@ -21,10 +21,9 @@
 
 namespace mdr::drivers {
 
-/// Cells on the contact's widest range when `[numerics] elements` is not given: the force within ~4e-6 of the peak
-/// with the contact over a third of the range (third order in the cell without memory, eq. L19a; with memory a cell's
-/// entry and exit located inside the step; tests/verification/test_layer_regrowing.cpp,
-/// tests/python/test_layer_unloading.py).
+/// Cells on the contact's widest range when `[numerics] elements` is not given: the force within ~1e-5 of the peak
+/// with the contact over a third of the range (third order in the cell without memory, eq. L19a; with memory the time
+/// step's part remains; tests/verification/test_layer_regrowing.cpp, tests/python/test_layer_unloading.py).
 inline constexpr std::size_t default_layer_cells = 400;
 
 /// The state after a step of LayerCells.
@@ -113,26 +112,6 @@ private:
     // Whether edge_correction applies: no dashpot (its line load jumps at a growing edge, which the correction's
     // linear edge does not describe; first order there as before), and an edge between two cells.
     bool corrects_edge(std::size_t contact) const;
-    // Whether a cell's entry into or exit from the contact is located inside the step (locate_entry,
-    // locate_exits): a step of some duration, a memory and no parallel dashpot.
-    bool locates_events(double time_step) const;
-    // Free cell i, about to enter the contact set (its free surface at `depth` just solved): its touch located inside
-    // the step, and its relaxed part set to give its Q/4 on the split path (solve_load).
-    void locate_entry(std::size_t i, double depth);
-    // Undoes the last locate_entry (its cell dropped from the set again).
-    void drop_entry();
-    // The cells [contact, contact_) that left the contact in the step: the lift-off located inside it, and their
-    // free surface at the end (trial_displacement_) on the split path.
-    void locate_exits(std::size_t contact, double depth);
-    // Steps cell i's branches over the first part `fraction` of the step with w1 linear to `at_break` and keeps
-    // them, held over the second part, with the second part's B_k (split_state_); returns sum_k G_k h_k held.
-    double split_path(std::size_t i, double fraction, double at_break);
-    // sum_k G_k B_k of the second part of split `split`.
-    double split_gain(std::size_t split) const;
-    // The depth at `fraction` of the step to `depth` (linear over the step).
-    double depth_at(double fraction, double depth) const;
-    // The split cells' branches at the step's end (their w1 committed by commit_cell).
-    void commit_splits();
     // eta dw1_i/dt at the committed node: Q_i/4 - (G_inf w1_i + sum_k G_k h_ki) (eq. L16).
     double committed_dashpot_stress(std::size_t i) const;
     // The rate [m/s] that, seen by every dashpot of the committed contact of `contact` cells, carries the force they
@@ -188,15 +167,6 @@ private:
     // rate, RateAtEntry::breaks in a step with a start rate: the committed contact's count), else cells_.
     std::size_t entering_from_ = 0;
     std::vector<double> relaxed_, free_relaxed_, trial_load_, trial_displacement_, trial_stress_;
-    std::vector<double> start_load_;  // q of the committed contact at the step's start (an exit's edge function)
-    // A cell entering or leaving the contact inside the step: where (fraction), and w1 there (d - g).
-    struct SplitCell {
-        std::size_t cell;
-        double fraction;
-        double at_break;
-    };
-    std::vector<SplitCell> splits_;
-    std::vector<double> split_state_;  // per split cell its held branches, then its second part's B_k
     std::vector<bool> tried_;                      // the contact sets tried in a step
     std::vector<std::vector<double>> unit_loads_;  // unit_load per contact set, empty until first needed
     // A free cell's surface changes nothing until the contact reaches it, or its neighbour: only the cells [0, kept_)

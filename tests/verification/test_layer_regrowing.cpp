@@ -75,25 +75,15 @@ TEST(LayerRegrowing, AThickLayerMeetsTheHalfSpaceUnderAHarmonicDepth) {
         loss_errors.push_back(std::abs(layer.harmonic->contact_loss_fraction -
                                        half_space.harmonic->contact_loss_fraction));
     }
-    // Observed 8.8e-5, 2.0e-5, 3.4e-6 of the peak force, second order in the cell or better (the default, 400 cells on
-    // three half-space radii, is the last). Before a cell's entry into and exit from the contact were located inside
-    // the step (as the half-space driver locates them; docs/theory.md, section 4c): 9.3e-5, 1.6e-5, 9.1e-6, of
-    // which a part second order in the time step (7.3e-6, 1.8e-6, 4.6e-7 at 1600 cells at this step, its half and
-    // its quarter); now no part of the time step is left (below). Without the edge's correction (eq. L19a) 3.7e-4,
-    // 1.0e-4, 2.6e-5. k' and k'' within 2.6e-5 for every cell count; the fraction of the cycle without contact 2.3e-6
-    // apart at every cell count (the axis's edge function, eq. L19).
-    EXPECT_LT(errors.back(), 4.5e-6) << errors[0] << " " << errors[1] << " " << errors.back();
-    expect_second_order(errors);
-    // At half the time step, against the half-space driver at it: 3.4e-6 at 400 cells as well (observed within 1 %),
-    // so what is left is the cells' (with the touches at the step's end the half step removed three quarters of
-    // the time step's part).
-    const std::string half_step = "[numerics]\ntime_step = 8.741258741258741e-4\n";
-    const auto half_space_half_step = run(regrowing_case(standard_solid, harmonic_load, half_step + "elements = 8000\n"));
-    auto layer_half_step = regrowing_case(standard_solid, harmonic_load,
-                                          "[layer]\nthickness = 1000.0\ninterface = \"bonded\"\n" + half_step +
-                                              "elements = 400\n");
-    const double half_step_error = force_difference(run(layer_half_step), half_space_half_step);
-    EXPECT_NEAR(half_step_error, errors.back(), 0.05 * errors.back()) << half_step_error;
+    // Observed 9.3e-5, 1.6e-5, 9.1e-6 of the peak force (without the edge's correction, eq. L19a: 3.7e-4, 1.0e-4,
+    // 2.6e-5, second order in the cell; the default, 400 cells on three half-space radii, is the last). What remains
+    // at 400 cells is the time step's: the cells take a cell's entry into and exit from the contact at the step's end,
+    // the half-space driver locates them inside the step; at 1600 cells 7.3e-6, 1.8e-6, 4.6e-7 at this time step,
+    // its half and its quarter (docs/theory.md, section 4c; the elastic layer without memory, below, has no such
+    // part). k' and k'' within 2.6e-5 for every cell count; the fraction of the cycle without contact 2.3e-6 apart
+    // at every cell count (the axis's edge function, eq. L19).
+    EXPECT_LT(errors.back(), 1.2e-5);
+    EXPECT_GT(std::log2(errors[0] / errors[1]), 2.0) << errors[0] << " " << errors[1];
     EXPECT_LT(stiffness_errors.back(), 1e-4) << stiffness_errors.front();
     EXPECT_LT(*std::max_element(loss_errors.begin(), loss_errors.end()), 1e-5);
 }
@@ -122,8 +112,7 @@ TEST(LayerRegrowing, AConesContactLossIsLocatedAtTheAxis) {
     // A cone's g has a kink at the axis, which the innermost cell (at dx/2) misses by g(dx/2): the axis's edge
     // function is extrapolated there linearly in g (eq. L19). The half-space driver's fraction converges at first
     // order in its elements (0.15749, 0.15724, 0.15712, 0.15706 at 1000 to 8000, towards ~0.15699); the layer's
-    // (h = 1 km) 0.156978 at 400 cells (0.156749, 0.156935, 0.156984 at 100, 200, 400 with the cells' touches at the
-    // step's end).
+    // (h = 1 km) 0.156984 at 400 cells (0.156749, 0.156935, 0.156984 at 100, 200, 400 without L19a).
     const std::string cone = "model = \"standard\"\nG_inf = 1.0e3\nG1 = 3.0e3\ntau1 = 0.2\n";
     const auto with_cone = [](std::string text) {
         const std::string sphere = "shape = \"sphere\"\nR = 1.0e-5";
@@ -143,8 +132,8 @@ TEST(LayerRegrowing, AThickLayerMeetsTheHalfSpaceOnAReload) {
         errors.push_back(force_difference(run(regrowing_case(standard_solid, reload, layer_with_cells(1.0e3, cells))),
                                           half_space));
     }
-    // Observed 5.6e-4, 9.1e-5, 1.3e-5 (orders 2.6, 2.8; 1.9e-3, 4.8e-4, 1.2e-4 before the edge's correction, eq.
-    // L19a, and the touches located inside the step).
+    // Observed 5.6e-4, 9.0e-5, 1.3e-5 (orders 2.6, 2.8; 1.9e-3, 4.8e-4, 1.2e-4 without the edge's correction, eq.
+    // L19a).
     EXPECT_LT(errors.back(), 2e-5);
     expect_second_order(errors);
 }
@@ -172,14 +161,14 @@ TEST(LayerRegrowing, AThickLayerMeetsTheHalfSpaceUnderForceAndSpringControl) {
         for (std::size_t i = 0; i < layer.time.size(); ++i) {
             largest = std::max(largest, std::abs(layer.depth[i] - half_space.depth[i]));
         }
-        // Observed 4.5e-6, 4.2e-6, 3.7e-6, 5.7e-7 of the largest depth (in this order; 2.1e-5, 2.6e-5, 1.9e-5,
-        // 1.1e-5 before the edge's correction, eq. L19a, and the touches located inside the step).
+        // Observed 4.3e-6, 4.7e-6, 4.2e-6, 6.7e-7 of the largest depth (in this order; 2.1e-5, 2.6e-5, 1.9e-5,
+        // 1.1e-5 without the edge's correction, eq. L19a).
         EXPECT_LT(largest / deepest, 8e-6) << load;
         if (half_space.harmonic) {
             ASSERT_TRUE(layer.harmonic);
-            // Observed k' 4.0e-6, k'' 4.0e-6 of themselves (7.1e-6, 1.1e-5 before).
-            EXPECT_NEAR(*layer.harmonic->storage_stiffness / *half_space.harmonic->storage_stiffness, 1.0, 1e-5);
-            EXPECT_NEAR(*layer.harmonic->loss_stiffness / *half_space.harmonic->loss_stiffness, 1.0, 1e-5);
+            // Observed k' 2.8e-6, k'' 8.1e-6 of themselves (7.1e-6, 1.1e-5 without L19a).
+            EXPECT_NEAR(*layer.harmonic->storage_stiffness / *half_space.harmonic->storage_stiffness, 1.0, 1.5e-5);
+            EXPECT_NEAR(*layer.harmonic->loss_stiffness / *half_space.harmonic->loss_stiffness, 1.0, 1.5e-5);
         }
     }
 }
@@ -274,51 +263,34 @@ TEST(LayerRegrowing, CellsFromTheStartMeetTingsSolutionOnALoadUnload) {
     expect_second_order(errors);
 }
 
-TEST(LayerRegrowing, CellsMeetTingsSolutionWhereTheContactJumpsOutward) {
+TEST(LayerRegrowing, CellsMeetTingsSolutionWhereTheContactJumpsOutwardInOneStep) {
     // A depth held at 0.3 um for a second (the free surface beside the contact creeps under the layer's coupling),
-    // then stepped to 1.2 um within 1 ms: the contact radius doubles, ~65 of 400 cells enter, most beyond the cells
-    // stepped so far (docs/theory.md, "A contact that grows again": each is first stepped through the steps it
-    // missed), each touch located inside its step. Monotone in depth, so Ting's class (Lee-Radok on the layer, eq.
-    // L11) is exact: on cells from the start against the run of Ting's class with the jump in 64 steps (converged
-    // in time), h = 2 um, row by row at the times both runs have.
+    // then stepped to 1.2 um within one step of 1 ms: the contact radius doubles, ~65 of 400 cells enter at once, most
+    // beyond the cells stepped so far (docs/theory.md, "A contact that grows again": each is first stepped through
+    // the steps it missed). Monotone in depth, so Ting's class (Lee-Radok on the layer, eq. L11) is exact: on cells
+    // from the start against the run of Ting's class on the same grid, h = 2 um.
     const std::string jump = "history = [[0.0, 0.0], [1.0, 0.3e-6], [2.0, 0.3e-6], [2.001, 1.2e-6], [3.0, 1.2e-6]]\n";
     const std::string bonded = "[layer]\nthickness = 2.0e-6\ninterface = \"bonded\"\n";
-    const auto with_cells = [&](std::size_t cells, std::size_t jump_steps) {
+    const auto with_cells = [&](std::size_t cells) {
         auto contact_case = mdr::io::parse_case(regrowing_case(standard_solid, jump, bonded));
         contact_case.numerics.elements = cells;
         contact_case.numerics.time_step = 0.01;
-        contact_case.numerics.min_segment_steps = jump_steps;
+        contact_case.numerics.min_segment_steps = 1;  // the jump in one step
         return contact_case;
     };
-    const auto ting = mdr::drivers::run_case(with_cells(96, 64));
-    const auto at_common_times = [&](const mdr::drivers::IndentationResult& result) {
-        double largest = 0.0, peak = 0.0;
-        std::size_t j = 0, rows = 0;
-        for (std::size_t i = 0; i < result.time.size(); ++i) {
-            while (j < ting.time.size() && ting.time[j] < result.time[i] - 1e-12) ++j;
-            if (j == ting.time.size() || std::abs(ting.time[j] - result.time[i]) > 1e-12) continue;
-            largest = std::max(largest, std::abs(result.force[i] - ting.force[j]));
-            ++rows;
-        }
-        for (const double force : ting.force) peak = std::max(peak, std::abs(force));
-        EXPECT_EQ(rows, result.time.size());
-        return largest / peak;
-    };
+    const auto ting = mdr::drivers::run_case(with_cells(96));
     std::vector<double> errors;
     for (const std::size_t cells : {100u, 200u, 400u}) {
-        auto on_cells = with_cells(cells, 8);
+        auto on_cells = with_cells(cells);
         on_cells.numerics.layer_cells = true;
-        errors.push_back(at_common_times(mdr::drivers::run_case(on_cells)));
+        const auto result = mdr::drivers::run_case(on_cells);
+        errors.push_back(force_difference(result, ting));
     }
-    // The jump in 8 steps, ~8 cells entering in each: observed 1.8e-4, 4.0e-5, 1.4e-5 of the peak force.
-    EXPECT_LT(errors.back(), 2e-5) << errors[0] << " " << errors[1] << " " << errors[2];
-    expect_second_order({errors[0], errors[1]});
-    // In one step of 1 ms the jump's own time discretization: 5.2e-4 at 400 cells (Ting's class with the jump in
-    // one step is 5.0e-4 from its own with 64; the cells with the touches taken at the step's end had met that one
-    // to 3.1e-6, so were as far from the converged one).
-    auto one_step = with_cells(400, 1);
-    one_step.numerics.layer_cells = true;
-    EXPECT_LT(at_common_times(mdr::drivers::run_case(one_step)), 6e-4);
+    // Observed 2.0e-4, 2.7e-5, 2.1e-6 of the peak force (the cells' error; 2.3e-4, 3.3e-5, 3.1e-6 without the edge's
+    // correction, eq. L19a); the cells entering at the jump left out of the stepping until the next step, 6.6e-2 to
+    // 7.2e-2 and no order.
+    EXPECT_LT(errors.back(), 4e-6) << errors[0] << " " << errors[1] << " " << errors[2];
+    expect_second_order(errors);
 }
 
 }  // namespace
