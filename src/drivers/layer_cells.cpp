@@ -50,6 +50,46 @@ double LayerCells::dashpot_stress(double depth) const {
     return dashpot_gain_ * (depth - depth_) + dashpot_offset_;
 }
 
+bool LayerCells::corrects_edge(std::size_t contact) const {
+    return contact > 0 && contact < cells_ && !flat_punch_ && !(material_->viscosity() > 0.0);
+}
+
+double LayerCells::edge_correction(std::size_t contact, double inside, double outside,
+                                   const double* innermost) const {
+    // q falls linearly to zero at the edge a, with slope -s = -4 (inside - outside)/dx (the edge function, C1 across
+    // a, eq. L19); the midpoint rule integrates q exactly up to the contact's last face b = m dx were q linear there,
+    // and by Euler-Maclaurin misses dx^2/24 (q'(b) - q'(0+)) of int_0^b q otherwise. So int_0^a q = dx sum q_i +
+    // s (a - b)^2 / 2 - s dx^2/24 - dx^2 q'(0+)/24 + O(dx^3) (eq. L19a), with a - b = dx (inside + outside) / (2
+    // (inside - outside)) (a as located in L19) and q'(0+) from the quadratic through the three innermost cells,
+    // (-2 q_0 + 3 q_1 - q_2)/dx (zero for a sphere's even q, a cone's slope for its linear one). A trial set that
+    // is not complementary (q_{m-1} < 0, or the next cell penetrated: outside > 0) puts the edge beyond the two
+    // centres, where sum^2 / fall grows without bound and F(d) + k d = the right side finds spurious roots: the
+    // edge function is taken at its bounds there (inside >= 0 >= outside, the edge between the centres).
+    inside = std::max(inside, 0.0);
+    outside = std::min(outside, 0.0);
+    const double fall = inside - outside;
+    if (!(fall > 0.0)) return 0.0;
+    const double sum = inside + outside;
+    double correction = spacing_ * (sum * sum / fall - fall / 3.0);
+    if (contact >= 3) correction -= spacing_ / 12.0 * (-2.0 * innermost[0] + 3.0 * innermost[1] - innermost[2]);
+    return correction;
+}
+
+double LayerCells::edge_correction_slope(std::size_t contact, double inside, double outside, double inside_slope,
+                                         double outside_slope, const double* innermost_slope) const {
+    if (!(inside > 0.0)) inside = 0.0, inside_slope = 0.0;  // at its bounds as edge_correction takes it
+    if (!(outside < 0.0)) outside = 0.0, outside_slope = 0.0;
+    const double fall = inside - outside;
+    if (!(fall > 0.0)) return 0.0;
+    const double sum = inside + outside, sum_slope = inside_slope + outside_slope;
+    const double fall_slope = inside_slope - outside_slope;
+    double slope = spacing_ * (2.0 * sum * sum_slope / fall - sum * sum * fall_slope / (fall * fall) - fall_slope / 3.0);
+    if (contact >= 3) {
+        slope -= spacing_ / 12.0 * (-2.0 * innermost_slope[0] + 3.0 * innermost_slope[1] - innermost_slope[2]);
+    }
+    return slope;
+}
+
 double LayerCells::committed_dashpot_stress(std::size_t i) const {
     const auto& terms = material_->terms();
     const std::size_t branches = terms.size();
@@ -164,7 +204,38 @@ LayerCellState LayerCells::solve_loaded(double time_step, double right_side, dou
             at_zero += 2.0 * spacing_ * trial_load_[i];
             per_depth += 2.0 * spacing_ * slope * unit[i];
         }
-        const double depth = (right_side - at_zero) / (per_depth + spring_constant);
+        double depth = (right_side - at_zero) / (per_depth + spring_constant);
+        if (corrects_edge(contact)) {
+            // F(d) with the edge's correction (eq. L19a) is not affine in d: its pieces are (the edge function inside
+            // and outside, the innermost q), so Newton from the affine solution, the correction ~(dx/a)^2 of F
+            // (converged to round-off in two or three iterations).
+            const double* row = &operator_->matrix[contact * cells_];
+            const double coupled = numerics::dot_product(row, trial_load_.data(), contact) / plane_modulus_per_shear;
+            const double coupled_slope = slope * numerics::dot_product(row, unit.data(), contact) /
+                                         plane_modulus_per_shear;
+            // outside = -S_free (w1_m - (d - g_m)) with w1_m = (coupled - free relaxed_m) / S_free (L18).
+            const double outside_at_zero = free_relaxed_[contact] - coupled - free_stiffness_ * profile_[contact];
+            const double outside_slope = free_stiffness_ - coupled_slope;
+            const double inside_slope = slope * unit[contact - 1] / plane_modulus_per_shear;
+            double innermost[3] = {}, innermost_slope[3] = {};
+            for (std::size_t i = 0; i < std::min<std::size_t>(contact, 3); ++i) innermost_slope[i] = slope * unit[i];
+            for (int iteration = 0; iteration < 8; ++iteration) {
+                const double inside = (trial_load_[contact - 1] + depth * slope * unit[contact - 1]) /
+                                      plane_modulus_per_shear;
+                const double outside = outside_at_zero + depth * outside_slope;
+                for (std::size_t i = 0; i < std::min<std::size_t>(contact, 3); ++i) {
+                    innermost[i] = trial_load_[i] + depth * innermost_slope[i];
+                }
+                const double residual = at_zero + depth * (per_depth + spring_constant) - right_side +
+                                        edge_correction(contact, inside, outside, innermost);
+                const double change =
+                    residual / (per_depth + spring_constant +
+                                edge_correction_slope(contact, inside, outside, inside_slope, outside_slope,
+                                                      innermost_slope));
+                depth -= change;
+                if (!(std::abs(change) > 1e-15 * std::abs(depth))) break;
+            }
+        }
         for (std::size_t i = 0; i < contact; ++i) {
             trial_load_[i] += depth * slope * unit[i];
             trial_stress_[i] += slope * depth;
@@ -325,8 +396,8 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     dashpot_offset_ = start_rate && time_step > 0.0 ? -viscosity * *start_rate : 0.0;
     // Where the indenter's rate breaks, a cell entering contact takes its own rate (solve_load), in a step with a
     // start rate (all but the step after one without contact). That step keeps the indenter's secant rate in every
-    // cell: without the touch located inside it (as the half-space's spring control does) the cells' own rates put
-    // its depth about twice as far off (docs/theory.md, "A parallel dashpot on the cells").
+    // cell: the cells' own rates put its depth farther off the answer converged in the time step, with the touch
+    // located inside the step too (docs/theory.md, "A parallel dashpot on the cells").
     const bool trapezoidal = start_rate && time_step > 0.0;
     entering_from_ = rate_at_entry == foundation::RateAtEntry::breaks && trapezoidal ? contact_ : cells_;
     // The kept cells (keep) step here; the others, free from the start and not yet needed, later (catch_up).
@@ -375,6 +446,9 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
         return i < contact ? trial_load_[i] / plane_modulus_per_shear
                            : -free_stiffness_ * (trial_displacement_[i] - (depth - profile_[i]));
     };
+    if (corrects_edge(contact)) {
+        state.force += edge_correction(contact, edge_function(contact - 1), edge_function(contact), trial_load_.data());
+    }
     if (contact == cells_) {
         state.contact_radius = spacing_ * static_cast<double>(cells_);
     } else if (contact > 0) {  // its zero, interpolated linearly between the two centres (second order)

@@ -21,15 +21,15 @@
 
 namespace mdr::drivers {
 
-/// Cells on the contact's widest range when `[numerics] elements` is not given: the force within ~4e-5 of the peak
-/// with the contact over a third of the range (second order in the cell; tests/verification/test_layer_regrowing.cpp,
-/// tests/python/test_layer_unloading.py).
+/// Cells on the contact's widest range when `[numerics] elements` is not given: the force within ~1e-5 of the peak
+/// with the contact over a third of the range (third order in the cell without memory, eq. L19a; with memory the time
+/// step's part remains; tests/verification/test_layer_regrowing.cpp, tests/python/test_layer_unloading.py).
 inline constexpr std::size_t default_layer_cells = 400;
 
 /// The state after a step of LayerCells.
 struct LayerCellState {
     double depth = 0.0;           ///< d [m]: prescribed, or solved (force and spring control)
-    double force = 0.0;           ///< F = 2 dx sum q_i [N] (eq. L5, midpoint rule)
+    double force = 0.0;           ///< F = 2 dx sum q_i + the edge's and axis's corrections [N] (eq. L5, L19a)
     double contact_radius = 0.0;  ///< a [m], located between the outermost cell in contact and its free neighbour
     bool touching = false;        ///< the axis in contact (docs/theory.md eq. L19: the edge function at x = 0)
     /// The part [first, second] (fractions 0..1) of the last step with the axis in contact: a loss or a regain
@@ -100,6 +100,18 @@ private:
     LayerCellState jump(double force);
     // eta times the indenter's rate at the step's end, at the end depth `depth` (eq. L16 in contact: w1 = d - g).
     double dashpot_stress(double depth) const;
+    // What the midpoint rule F = 2 dx sum q_i misses of F = 2 int_0^a q dx on a contact set of `contact` cells (eq.
+    // L19a): the part of the edge cell in contact, from the edge function inside (`inside`, q_{m-1}/4) and outside
+    // (`outside`, minus the free stiffness times the gap of cell m), and the axis's slope of q from `innermost`, the
+    // first three cells' q. Zero where the edge is not between two cells (a flat punch, the last cell) or the
+    // edge function does not fall across it.
+    double edge_correction(std::size_t contact, double inside, double outside, const double* innermost) const;
+    // Its derivative in the depth where inside, outside and the first three q are affine in it with these slopes.
+    double edge_correction_slope(std::size_t contact, double inside, double outside, double inside_slope,
+                                 double outside_slope, const double* innermost_slope) const;
+    // Whether edge_correction applies: no dashpot (its line load jumps at a growing edge, which the correction's
+    // linear edge does not describe; first order there as before), and an edge between two cells.
+    bool corrects_edge(std::size_t contact) const;
     // eta dw1_i/dt at the committed node: Q_i/4 - (G_inf w1_i + sum_k G_k h_ki) (eq. L16).
     double committed_dashpot_stress(std::size_t i) const;
     // The rate [m/s] that, seen by every dashpot of the committed contact of `contact` cells, carries the force they
