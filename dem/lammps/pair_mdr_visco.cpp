@@ -271,9 +271,21 @@ void PairMdrVisco::compute(int eflag, int vflag)
   const int *type = atom->type;
   const tagint *tag = atom->tag;
   const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
   const double dt = update->dt;
   int **firsttouch = fix_history->firstflag;
   double **firsthistory = fix_history->firstvalue;
+  // the time step is the same for every contact of a step: each type pair's law takes it once, here
+  if (history_update) {
+    for (const auto &law : laws) {
+      if (!law) continue;
+      try {
+        law->set_time_step(dt);
+      } catch (const mdr::InvalidInput &e) {
+        error->all(FLERR, "pair mdr/visco: {}", e.what());
+      }
+    }
+  }
   // the contacts' energy for compute pair (docs/dem.md): a contact computed on two ranks (newton off, j a ghost)
   // counts half on each
   double work = 0.0, stored = 0.0;
@@ -283,12 +295,21 @@ void PairMdrVisco::compute(int eflag, int vflag)
     int *touch = firsttouch[i];
     double *allhistory = firsthistory[i];
     const int *jlist = list->firstneigh[i];
+    // atom i's values, read once for its neighbours (the law's calls could otherwise make the compiler read them
+    // again for each); its force and torque summed here in the same order and stored after its neighbours
+    const double xi[3] = {x[i][0], x[i][1], x[i][2]};
+    const double vi[3] = {v[i][0], v[i][1], v[i][2]};
+    const double omegai[3] = {omega[i][0], omega[i][1], omega[i][2]};
+    double fi[3] = {f[i][0], f[i][1], f[i][2]};
+    double torquei[3] = {torque[i][0], torque[i][1], torque[i][2]};
+    const double radiusi = radius[i];
+    const int itype = type[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       double *history = &allhistory[size_history * jj];
-      const double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      const double del[3] = {x[j][0] - xi[0], x[j][1] - xi[1], x[j][2] - xi[2]};
       const double rsq = dot(del, del);
-      const double radsum = radius[i] + radius[j];
+      const double radsum = radiusi + radius[j];
       if (rsq >= radsum * radsum) {
         touch[jj] = 0;
         std::fill(history, history + size_history, 0.0);
@@ -297,29 +318,30 @@ void PairMdrVisco::compute(int eflag, int vflag)
       touch[jj] = 1;
       const double r = std::sqrt(rsq);
       const double normal[3] = {del[0] / r, del[1] / r, del[2] / r};    // from i to j
-      const double scale = radius[i] * radius[j] / radsum;               // R: the law is that of R = 1
+      const double scale = radiusi * radius[j] / radsum;                 // R: the law is that of R = 1
       // the contact points' relative velocity: v_i + w_i x (r_i n) - v_j - w_j x (-r_j n)
       double spin[3], turned[3];
-      for (int k = 0; k < 3; k++) spin[k] = radius[i] * omega[i][k] + radius[j] * omega[j][k];
+      for (int k = 0; k < 3; k++) spin[k] = radiusi * omegai[k] + radius[j] * omega[j][k];
       cross(spin, normal, turned);
-      mdr::dem::ContactLaw &contact = *laws[pair_index(std::min(type[i], type[j]), std::max(type[i], type[j]))];
+      const int jtype = type[j];
+      mdr::dem::ContactLaw &contact = *laws[pair_index(std::min(itype, jtype), std::max(itype, jtype))];
       const std::span<double> state(history, contact.state_size());
       mdr::dem::SpatialVector tangential;
       double normal_force = 0.0;
       const mdr::dem::SpatialVector n{normal[0], normal[1], normal[2]};
+      const bool whole = newton_pair || j < nlocal;    // this rank applies the contact to j as well
       try {
         if (history_update) {
-          const mdr::dem::SpatialVector increment{(v[i][0] - v[j][0] + turned[0]) * dt / scale,
-                                                  (v[i][1] - v[j][1] + turned[1]) * dt / scale,
-                                                  (v[i][2] - v[j][2] + turned[2]) * dt / scale};
-          contact.set_time_step(dt);
+          const mdr::dem::SpatialVector increment{(vi[0] - v[j][0] + turned[0]) * dt / scale,
+                                                  (vi[1] - v[j][1] + turned[1]) * dt / scale,
+                                                  (vi[2] - v[j][2] + turned[2]) * dt / scale};
           tangential = contact.advance_spatial(state, (radsum - r) / scale, n, increment);
         } else {
           contact.check(state);    // a state read from a restart file is checked once
           tangential = contact.tangential_force(state, n);
         }
         normal_force = contact.normal_force(state);
-        const double share = (force->newton_pair || j < nlocal) ? 1.0 : 0.5;
+        const double share = whole ? 1.0 : 0.5;
         const double volume = scale * scale * scale;    // the unit contact's energies are times R^3
         if (history_update) work += share * volume * contact.step_work();
         if (eflag_global) stored += share * volume * contact.stored_energy(state);
@@ -329,7 +351,7 @@ void PairMdrVisco::compute(int eflag, int vflag)
           error->one(FLERR,
                      "pair mdr/visco: atoms {} and {} overlap by d/R = {:.4g} (R = {:.4g}): beyond the law's "
                      "half_width {} of types {} {}; give pair_coeff ... half_width >= sqrt(d/R) = {:.3g}",
-                     tag[i], tag[j], relative, scale, e.value(), type[i], type[j], std::sqrt(relative));
+                     tag[i], tag[j], relative, scale, e.value(), itype, jtype, std::sqrt(relative));
         error->one(FLERR, "pair mdr/visco: atoms {} and {}: {}", tag[i], tag[j], e.what());
       }
       const double area = scale * scale;
@@ -338,17 +360,21 @@ void PairMdrVisco::compute(int eflag, int vflag)
       const double tangential_force[3] = {area * tangential[0], area * tangential[1], area * tangential[2]};
       cross(normal, tangential_force, tj);    // n x F_t; the torques are -r_i n x F_t and -r_j n x F_t
       for (int k = 0; k < 3; k++) {
-        f[i][k] -= fj[k];
-        torque[i][k] -= radius[i] * tj[k];
+        fi[k] -= fj[k];
+        torquei[k] -= radiusi * tj[k];
       }
-      if (force->newton_pair || j < nlocal) {
+      if (whole) {
         for (int k = 0; k < 3; k++) {
           f[j][k] += fj[k];
           torque[j][k] -= radius[j] * tj[k];
         }
       }
       if (evflag)    // the force on i and x_i - x_j
-        ev_tally_xyz(i, j, nlocal, force->newton_pair, 0.0, 0.0, -fj[0], -fj[1], -fj[2], -del[0], -del[1], -del[2]);
+        ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, -fj[0], -fj[1], -fj[2], -del[0], -del[1], -del[2]);
+    }
+    for (int k = 0; k < 3; k++) {
+      f[i][k] = fi[k];
+      torque[i][k] = torquei[k];
     }
   }
   if (eflag_global) pvector[0] = stored;
