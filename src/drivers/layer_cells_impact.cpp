@@ -2,11 +2,9 @@
 
 #include <algorithm>
 
-#include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/drivers/work_estimate.hpp"
 #include "impact_end.hpp"
-#include "layer_snapshot.hpp"
-#include "run_loop.hpp"
+#include "layer_cells_run.hpp"
 
 namespace mdr::drivers {
 
@@ -60,17 +58,7 @@ StepState LayerCellsImpactStepping::step(std::size_t n) {
 IndentationResult run_layer_cells_impact(const ContactCase& contact_case, const ImpactControl& impact,
                                          double largest_radius, const ProgressObserver& progress,
                                          const StepObservers& observers) {
-    IndentationResult result;
-    result.numerics = resolve_numerics(contact_case);
-    const std::size_t cells = contact_case.numerics.elements.value_or(default_layer_cells);
-    result.numerics.elements = cells;
-    result.numerics.half_width = largest_radius;  // reported: the cells' range
-    LayerCells layer(contact_case.material, *contact_case.layer, layer_poisson_ratio(contact_case),
-                     *contact_case.indenter, largest_radius, cells);
-    LayerCellsImpactStepping stepping(contact_case, impact, layer, result.numerics);
-    CellSnapshots snapshot_source(layer);
-    run_stepping(stepping, contact_case, snapshot_source, progress, observers, result);
-    return result;
+    return run_on_layer_cells<LayerCellsImpactStepping>(contact_case, impact, largest_radius, progress, observers);
 }
 
 }  // namespace mdr::drivers

@@ -2,9 +2,7 @@
 
 #include <algorithm>
 
-#include "mdr/drivers/layer_indentation.hpp"
-#include "layer_snapshot.hpp"
-#include "run_loop.hpp"
+#include "layer_cells_run.hpp"
 
 namespace mdr::drivers {
 
@@ -68,17 +66,7 @@ void LayerCellsStepping::add_outcomes(IndentationResult& result) const {
 IndentationResult run_layer_regrowing(const ContactCase& contact_case, const LayerLoading& loading,
                                       double largest_radius, const ProgressObserver& progress,
                                       const StepObservers& observers) {
-    IndentationResult result;
-    result.numerics = resolve_numerics(contact_case);
-    const std::size_t cells = contact_case.numerics.elements.value_or(default_layer_cells);
-    result.numerics.elements = cells;
-    result.numerics.half_width = largest_radius;  // reported: the cells' range
-    LayerCells layer(contact_case.material, *contact_case.layer, layer_poisson_ratio(contact_case),
-                     *contact_case.indenter, largest_radius, cells);
-    LayerCellsStepping stepping(contact_case, loading, layer, result.numerics);
-    CellSnapshots snapshot_source(layer);
-    run_stepping(stepping, contact_case, snapshot_source, progress, observers, result);
-    return result;
+    return run_on_layer_cells<LayerCellsStepping>(contact_case, loading, largest_radius, progress, observers);
 }
 
 }  // namespace mdr::drivers

@@ -1,6 +1,7 @@
 #include "recorders.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "mdr/foundation/foundation.hpp"
@@ -56,9 +57,12 @@ void ShoreRecorder::observe(const StepState& state) {
 }
 
 void ProgressReport::observe(const StepState& state) {
-    if (state.fraction < next_) return;
-    while (next_ <= state.fraction) next_ += 0.01;
-    progress_(std::min(state.fraction, 1.0));
+    // Whole hundredths, not a sum of 0.01s (a hundred of them exceed 1: a fraction past 0.99 left 1 unreported).
+    const double fraction = std::min(state.fraction, 1.0);
+    const auto hundredths = static_cast<long>(std::floor(100.0 * fraction));
+    if (hundredths < next_) return;
+    next_ = hundredths + 1;
+    progress_(fraction);
 }
 
 }  // namespace mdr::drivers

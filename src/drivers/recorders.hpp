@@ -104,7 +104,8 @@ private:
     IndentationResult& result_;
 };
 
-/// Calls `progress` with the fraction done each time the run has done another hundredth of it.
+/// Calls `progress` with the fraction done each time the run has done another hundredth of it (counted in whole
+/// hundredths: a run whose fraction reaches 1 reports 1).
 class ProgressReport final : public StepObserver {
 public:
     /// `progress` must be callable and outlive the report.
@@ -113,7 +114,7 @@ public:
 
 private:
     const ProgressObserver& progress_;
-    double next_ = 0.01;
+    long next_ = 1;  // the next hundredth to report
 };
 
 }  // namespace mdr::drivers

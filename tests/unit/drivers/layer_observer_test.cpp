@@ -135,6 +135,23 @@ TEST(LayerProgress, ReportsTheObservedFractionEachHundredthAsOnTheHalfSpace) {
     }
 }
 
+// A history's last state has fraction 1, which the report reaches: on a layer (Ting's path, the cells) and on the
+// half-space, with more than 100 states (a sum of hundredths, 0.01 added 100 times, exceeds 1: the report counted
+// that way left 1 out after a state past 0.99).
+TEST(LayerProgress, EndsAtOneWhereTheRunEnds) {
+    auto on_cells = reloading();
+    on_cells.numerics.layer_cells = true;
+    auto half_space = loading();
+    half_space.layer.reset();
+    for (const ContactCase& contact_case : {loading(), on_cells, half_space}) {
+        std::vector<double> fractions;
+        const auto result = run_case(contact_case, [&](double fraction) { fractions.push_back(fraction); });
+        ASSERT_GT(result.steps, 100u);
+        ASSERT_FALSE(fractions.empty());
+        EXPECT_EQ(fractions.back(), 1.0) << contact_case.title;
+    }
+}
+
 // Only asks to stop, as a sweep's observer: it may see the abandoned run of Ting's class before the cells' run.
 class StopOnly final : public StepObserver {
 public:
