@@ -13,9 +13,9 @@ from test_sweep_contact_case import STANDARD_CASE, assert_same_tables, case_file
 from test_sweep_contact_case_keys import (BULK_MODULUS, BULK_TABLE, FRETTING, HARMONIC, OBLIQUE, POWER_LAW, SHORE,
                                           SPRING, TANGENTIAL_HISTORY)
 
-LAYER = STANDARD_CASE + "[layer]\nthickness = 2.0e-6\n"
+LAYER = STANDARD_CASE + '[layer]\nthickness = 2.0e-6\ninterface = "bonded"\n'
 TWO_BODIES = STANDARD_CASE.replace('[load]', '[indenter.material]\nmodel = "elastic"\nG = 5.0e3\n[load]')
-UNITS = SPRING.replace("[numerics]", "end = 10.0\n[numerics]")
+UNITS = SPRING.replace("[numerics]", "end = 12.0\n[numerics]")  # given, equal to the default
 
 
 def round_trip(value):
@@ -43,7 +43,8 @@ def same_summary(a: dict, b: dict) -> None:
     (POWER_LAW, {"material.beta": [0.2, 0.3]}),
     (FRETTING, {"tangential.amplitude": [1.5e-5, 3e-5]}),
     (TANGENTIAL_HISTORY, {"tangential.history[2][1]": [1e-5, 2e-5]}),
-])
+], ids=["standard", "layer", "two_bodies", "spring", "units_end", "oblique", "shore", "harmonic", "bulk_modulus",
+        "bulk_table", "power_law", "fretting", "tangential_history"])
 def test_a_pickled_case_is_the_case(tmp_path, text, vary):
     """The case read back describes itself alike, runs the same summary and sweeps the same table, bit for bit."""
     case = mdr.ContactCase.from_file(case_file(tmp_path, text))

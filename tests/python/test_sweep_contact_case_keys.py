@@ -147,7 +147,8 @@ TANGENTIAL_HISTORY = FRETTING.replace("amplitude = 1.5e-5\nfrequency = 10.0\nsta
     (POWER_LAW, {"material.tolerance": [1e-3, 1e-2]}, set()),
     (FRETTING, {"tangential.amplitude": [1.5e-5, 3e-5], "tangential.friction": [0.3, -0.1]}, None),
     (TANGENTIAL_HISTORY, {"tangential.history[2][1]": [1e-5, 2e-5], "tangential.history[1][0]": [0.1, 0.3]}, None),
-])
+], ids=["spring", "pause_start", "impact", "oblique", "shore", "harmonic", "bulk_modulus", "bulk_table", "tolerance",
+        "fretting", "tangential_history"])
 def test_the_objects_sweep_every_key_of_the_file_bit_for_bit(tmp_path, text, vary, errors):
     """The case as a file and as its objects (mdr.ContactCase.from_file): identical tables, failed points included;
     `errors` (where given) the set of the failed points' messages."""
@@ -180,7 +181,8 @@ def test_the_control_keys_change_the_run():
     (FRETTING, "tangential.history[0][0]"),
     (TANGENTIAL_HISTORY, "tangential.amplitude"),
     (HARMONIC, "material.tolerance"),
-])
+], ids=["shore_spring", "bulk_table_of_K", "K_of_bulk_table", "velocity", "pause", "mass", "tangential_history",
+        "tangential_harmonic", "tolerance"])
 def test_a_key_the_case_lacks_is_refused_on_the_objects_as_on_the_file(tmp_path, text, key):
     path = case_file(tmp_path, text)
     with pytest.raises(mdr.InvalidInput) as from_file:
