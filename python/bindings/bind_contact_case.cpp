@@ -461,7 +461,8 @@ void bind_contact_case(py::module_& module) {
     bind_controls(module);
     module.attr("_load_controls") = load_control_classes(std::type_identity<drivers::LoadControl>{});
     py::class_<drivers::ContactCase>(module, "ContactCase", R"doc(A contact case as objects: the library's
-drivers::ContactCase, checked at construction by the rules of a case file (mdr.InvalidInput naming the key).
+drivers::ContactCase, checked at construction by the rules of a case file (mdr.InvalidInput naming the key). It
+pickles over its typed parts, without text (so it travels to Dask's workers: mdr.sweep(case, vary, scheduler=...)).
 
 Parameters
 ----------

@@ -40,8 +40,8 @@ struct Edits {
     std::optional<BodyEdits> half_space, second;  // `[material]`, `[indenter.material]`
     std::optional<profile::ProfileDefinition> indenter;
     std::vector<drivers::LoadPoint> history, tangential_history;
-    bool tangential_history_changed = false;
-    bool indenter_changed = false, history_changed = false, tangential_changed = false, layer_changed = false;
+    bool indenter_changed = false, history_changed = false, tangential_changed = false,
+         tangential_history_changed = false, layer_changed = false;
 };
 
 // Where a key's number lives: a real number, or a count (an integer >= 1), and the flag of the part it rebuilds (none:
