@@ -22,6 +22,7 @@
 #include "mdr/contact/layer.hpp"
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/control_parts.hpp"
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/shore.hpp"
 #include "mdr/error.hpp"
@@ -418,7 +419,8 @@ harmonic : mdr.Harmonic, optional
         .def("__repr__", [](const drivers::TangentialLoad& load) {
             const std::string part = load.load.harmonic
                                          ? "harmonic=" + harmonic_repr(*load.load.harmonic)
-                                         : fmt::format("history={} points", history_points(load.load.history).size());
+                                         : "history=" + py::repr(py::cast(history_points(load.load.history)))
+                                                                .cast<std::string>();
             return fmt::format("Tangential(friction={}, control=\"{}\", {})", float_repr(load.friction),
                                drivers::tangential_control_kind(load.control).name, part);
         });
@@ -546,7 +548,7 @@ Examples
         .def_property_readonly(
             "indenter",
             [](const drivers::ContactCase& contact_case) -> std::shared_ptr<profile::Profile> {
-                if (contact_case.shore()) return nullptr;  // the durometer's: the Shore test brings it
+                if (drivers::brought_by(contact_case.control).indenter) return nullptr;  // a durometer's standard
                 return std::const_pointer_cast<profile::Profile>(contact_case.indenter);
             },
             "The indenter as given; None with a Shore test, which brings the standard's.")

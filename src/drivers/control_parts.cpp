@@ -9,4 +9,8 @@ BroughtParts complete_control(const LoadControl& control, double length_unit, do
                          [&](auto traits, const auto& data) { return traits.bring(data, length_unit, force_unit); });
 }
 
+ControlBrings brought_by(const LoadControl& control) {
+    return visit_control(control, [](auto traits, const auto& data) { return traits.brings(data); });
+}
+
 }  // namespace mdr::drivers

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
@@ -16,6 +17,7 @@
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/foundation/foundation.hpp"
+#include "mdr/rheology/material_models.hpp"
 #include "control_traits.hpp"
 #include "cycle_measure.hpp"
 #include "default_numerics.hpp"
@@ -232,10 +234,16 @@ private:
     std::optional<CycleMeasure> cycle_;
 };
 
+/// The load of a history-driven control named `name` (describe_load): its history's points and times, then `own`
+/// (the control's own data, " (spring k = ...)"; "" for none), then its harmonic.
+std::string describe_history(const ContactCase& contact_case, const std::string& name, const std::string& own,
+                             const rheology::UnitNames& unit_names);
+
 /// What the ControlTraits (control_traits.hpp) of every history-driven control `Control` share: HistoryStepping over
 /// its step class `Step` (normal_control.hpp, made from the control's data), its grid (history_grid), its default
 /// numerics (resolve_history_numerics: graded steps when Step solves for the depth, the half-width from
-/// `ControlTraits<Control>::largest_contact_radius`) and no rules within the run unless its traits have some.
+/// `ControlTraits<Control>::largest_contact_radius`), its description by its row's name (describe_history) and no
+/// rules within the run unless its traits have some.
 template <class Control, class Step>
 struct HistoryControlTraits {
     using Stepping = HistoryStepping<Step>;
@@ -243,6 +251,13 @@ struct HistoryControlTraits {
     /// Brings nothing: its history and indenter are the case's (complete_control).
     static BroughtParts bring(const Control& control, double /*length_unit*/, double /*force_unit*/) {
         return {.control = control};
+    }
+    /// Nothing of its own: the case's indenter, no tangential part (brought_by).
+    static ControlBrings brings(const Control& /*control*/) { return {}; }
+    /// Its row's name, its history and harmonic (describe_history).
+    static std::string describe(const ContactCase& contact_case, const Control& control,
+                                const rheology::UnitNames& unit_names) {
+        return describe_history(contact_case, ControlTraits<Control>::row_name(control), "", unit_names);
     }
     /// t, d, F, a and z when the control has a base column.
     static RowRecorder::Columns columns(const Control& control) {

@@ -1,6 +1,6 @@
 #pragma once
 // An impact's step by the trapezoidal rule (eq. 37), the end of its contact (eq. 39) and its normal outcome: one rule
-// for the half-space (ImpactStepping) and the layer (run_layer_impact, run_layer_cells_impact).
+// for the half-space (ImpactStepping) and the layer (LayerImpactStepping, LayerCellsImpactStepping).
 
 #include "mdr/drivers/indentation.hpp"
 

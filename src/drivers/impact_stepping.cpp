@@ -31,21 +31,21 @@ void validate_impact(const ContactCase& contact_case, const ImpactControl& impac
     }
 }
 
-void validate_oblique(const ContactCase& contact_case) {
-    const ObliqueImpactLoad* oblique = contact_case.oblique();
-    if (!oblique) return;
-    require_non_negative("tangential.friction", oblique->friction);
-    require_finite("load.tangential_velocity", oblique->tangential_velocity);
-    require_finite("load.spin", oblique->spin);
+void validate_oblique(const ContactCase& contact_case, const ImpactControl& impact) {
+    if (!impact.oblique) return;
+    const ObliqueImpactLoad& oblique = *impact.oblique;
+    require_non_negative("tangential.friction", oblique.friction);
+    require_finite("load.tangential_velocity", oblique.tangential_velocity);
+    require_finite("load.spin", oblique.spin);
     if (!contact_case.indenter->tip_radius()) {  // the capability of the type, not its name (issue 27)
         throw InvalidInput("indenter.shape", "\"" + contact_case.indenter->definition().shape + "\"",
                            "an oblique impact needs shape = \"sphere\" (its radius is the lever of the friction)");
     }
-    if (oblique->moment_of_inertia) require_positive("indenter.moment_of_inertia", *oblique->moment_of_inertia);
+    if (oblique.moment_of_inertia) require_positive("indenter.moment_of_inertia", *oblique.moment_of_inertia);
     // Section 6 maps the tangential problem exactly for an incompressible body only: with a compressible body (or
     // two bodies, whose elastic mismatch couples them) the normal and tangential problems are coupled (section 7).
     if (contact_case.tangential_approximate()) {
-        throw InvalidInput("load.tangential_velocity", format_value(oblique->tangential_velocity),
+        throw InvalidInput("load.tangential_velocity", format_value(oblique.tangential_velocity),
                            "an oblique impact needs an incompressible half-space and a rigid sphere: with a "
                            "compressible body or two bodies the normal and tangential problems are coupled (section "
                            "7) and the tangential mapping is not exact");
@@ -81,7 +81,7 @@ ResolvedNumerics resolve_impact_numerics(const ContactCase& contact_case, const 
     if (impact.oblique) {
         // The contact point's motion has the effective mass m_t, 1/m_t = 1/m + R^2/I (2/7 m for a solid sphere, for
         // which the normal steps resolve it): a lighter m_t oscillates faster, as sqrt(m_t).
-        const auto [radius, inertia] = oblique_sphere(contact_case);
+        const auto [radius, inertia] = oblique_sphere(indenter, impact);
         const double tangential_mass = 1.0 / (1.0 / impact.mass + radius * radius / inertia);
         step *= std::min(1.0, std::sqrt(tangential_mass / (2.0 / 7.0 * impact.mass)));
     }
@@ -108,7 +108,8 @@ ImpactStepping::ImpactStepping(const ContactCase& contact_case, const ResolvedNu
       clock_(contact_case.snapshots, numerics.time_step),
       velocity_(impact.velocity) {
     if (impact.oblique) {
-        oblique_.emplace(*impact.oblique, oblique_sphere(contact_case), mass_, contact_case.material, foundation);
+        oblique_.emplace(*impact.oblique, oblique_sphere(*contact_case.indenter, impact), mass_, contact_case.material,
+                         foundation);
     }
 }
 
@@ -194,8 +195,21 @@ std::vector<ControlKind> ControlTraits<ImpactControl>::rows() {
 
 void ControlTraits<ImpactControl>::validate(const ContactCase& contact_case, const ImpactControl& impact) {
     validate_impact(contact_case, impact);
-    validate_oblique(contact_case);
+    validate_oblique(contact_case, impact);
     if (contact_case.load.harmonic) throw InvalidInput("load.harmonic", "{...}", "not with control = \"impact\"");
+}
+
+std::string ControlTraits<ImpactControl>::describe(const ContactCase& contact_case, const ImpactControl& impact,
+                                                   const rheology::UnitNames& unit_names) {
+    std::string load = fmt::format("impact of m = {:.4g} {} at v0 = {:.4g} {}", impact.mass, unit_names("kg"),
+                                   impact.velocity, unit_names("m/s"));
+    if (const auto& oblique = impact.oblique) {
+        load += fmt::format(", oblique: v_t0 = {:.4g} {}, omega0 = {:.4g} {}, I = {:.4g} {}, mu = {:.4g}",
+                            oblique->tangential_velocity, unit_names("m/s"), oblique->spin, unit_names("rad/s"),
+                            oblique_sphere(*contact_case.indenter, impact).moment_of_inertia, unit_names("kg m^2"),
+                            oblique->friction);
+    }
+    return load;
 }
 
 ResolvedNumerics ControlTraits<ImpactControl>::resolve_numerics(const ContactCase& contact_case,
@@ -218,7 +232,7 @@ std::vector<GridNode> ControlTraits<ImpactControl>::grid(const ContactCase& /*co
 
 LayerLoading ControlTraits<ImpactControl>::on_layer(const ContactCase& /*contact_case*/, const ImpactControl& impact) {
     if (impact.oblique) refuse_on_layer("load.tangential_velocity", "[...]", "an oblique impact");
-    return {.driven = LayerDriven::impact};
+    return {.impact = &impact};
 }
 
 }  // namespace mdr::drivers

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "mdr/drivers/contact_case.hpp"
@@ -14,6 +15,7 @@
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/foundation/foundation.hpp"
+#include "mdr/rheology/material_models.hpp"
 #include "impact_clock.hpp"
 #include "control_traits.hpp"
 #include "layer_loading.hpp"
@@ -75,6 +77,12 @@ struct ControlTraits<ImpactControl> {
     static BroughtParts bring(const ImpactControl& impact, double /*length_unit*/, double /*force_unit*/) {
         return {.control = impact, .history = LoadHistory({{0.0, 0.0}}, "load.history")};
     }
+    /// The case's indenter; an oblique impact's tangential part (brought_by).
+    static ControlBrings brings(const ImpactControl& impact) { return {.tangential_part = impact.oblique.has_value()}; }
+    /// Its mass and approach speed; an oblique impact's tangential speed, spin, moment of inertia (oblique_sphere) and
+    /// friction.
+    static std::string describe(const ContactCase& contact_case, const ImpactControl& impact,
+                                const rheology::UnitNames& unit_names);
     static std::vector<ControlKind> rows();
     static const char* row_name(const ImpactControl& /*impact*/) { return "impact"; }
     /// t, d, F, a and v.
@@ -93,7 +101,8 @@ struct ControlTraits<ImpactControl> {
     /// Throws mdr::InvalidInput (`load.control`): an impact's steps end at the contact's end, not on a history grid.
     static std::vector<GridNode> grid(const ContactCase& contact_case, const ResolvedNumerics& numerics,
                                       const ImpactControl& impact);
-    /// The layer's impact (run_layer_impact); an oblique one is refused (refuse_on_layer).
+    /// The layer's impact: its mass and approach speed (LayerImpactStepping, LayerCellsImpactStepping); an oblique
+    /// one is refused (refuse_on_layer).
     static LayerLoading on_layer(const ContactCase& contact_case, const ImpactControl& impact);
 };
 

@@ -29,8 +29,9 @@ private:
 
 }  // namespace
 
-std::shared_ptr<const profile::Profile> layer_indenter(const ContactCase& contact_case) {
-    if (!contact_case.shore()) return contact_case.indenter;
+std::shared_ptr<const profile::Profile> layer_indenter(const ContactCase& contact_case,
+                                                       const LayerLoading& loading) {
+    if (!loading.shore) return contact_case.indenter;
     return std::make_shared<const DurometerTip>(contact_case.indenter);
 }
 

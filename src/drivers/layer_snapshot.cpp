@@ -131,15 +131,4 @@ Snapshot GrowingSnapshots::take(const StepState& /*state*/) {
     return snapshot;
 }
 
-CellRunObservers::CellRunObservers(const ContactCase& contact_case, LayerCells& cells, IndentationResult& result,
-                                   const StepObservers& observers)
-    : observed_(std::max<std::size_t>(contact_case.numerics.output_every, 1)),
-      rows_(result, row_columns(contact_case.control)),
-      source_(cells),
-      snapshots_(contact_case.snapshots, source_, result) {
-    observed_.add(rows_);
-    observed_.add(snapshots_);
-    observed_.add(observers);
-}
-
 }  // namespace mdr::drivers

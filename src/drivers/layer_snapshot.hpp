@@ -13,7 +13,6 @@
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/rheology/rheology.hpp"
-#include "observer_list.hpp"
 #include "recorders.hpp"
 
 namespace mdr::drivers {
@@ -56,25 +55,6 @@ private:
     const contact::LayerContact* layer_;
     double unit_modulus_;
     const LayerStepper* stepper_;
-};
-
-/// The observers of a run on the cells (run_layer_regrowing, run_layer_cells_impact): the rows and the snapshots (of
-/// the cells) by the half-space's recorders, then the caller's; a stop ends the run with its state.
-class CellRunObservers {
-public:
-    /// `contact_case`, `cells`, `result` and `observers` must outlive these.
-    CellRunObservers(const ContactCase& contact_case, LayerCells& cells, IndentationResult& result,
-                     const StepObservers& observers);
-    CellRunObservers(const CellRunObservers&) = delete;
-    CellRunObservers& operator=(const CellRunObservers&) = delete;
-    /// The list, in that order.
-    ObserverList& list() { return observed_; }
-
-private:
-    ObserverList observed_;
-    RowRecorder rows_;
-    CellSnapshots source_;
-    SnapshotRecorder snapshots_;
 };
 
 }  // namespace mdr::drivers

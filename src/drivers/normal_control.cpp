@@ -103,9 +103,10 @@ void validate_shore(const ContactCase& contact_case, const SpringControl& spring
 
 // Constant-force pauses (ForcePause): spring control only, in time order and apart, inside the simulated time after
 // the history's first point, and not during a harmonic.
-void validate_force_pauses(const ContactCase& contact_case, const std::vector<ForcePause>& pauses) {
+void validate_force_pauses(const ContactCase& contact_case, const SpringControl& control) {
+    const std::vector<ForcePause>& pauses = control.force_pauses;
     if (pauses.empty()) return;
-    if (contact_case.shore()) {
+    if (control.shore) {
         throw InvalidInput("load.force_pauses", "[...]",
                            "only with control = \"spring\" (the feedback moves the base)");
     }
@@ -226,8 +227,27 @@ BroughtParts ControlTraits<SpringControl>::bring(const SpringControl& control, d
             .history = shore_base_history(test)};
 }
 
+std::string ControlTraits<SpringControl>::describe(const ContactCase& contact_case, const SpringControl& control,
+                                                   const rheology::UnitNames& unit_names) {
+    if (const auto& shore = control.shore) {
+        const Durometer& instrument = shore->instrument;
+        return fmt::format("Shore {} durometer (spring force {:.4g} {} at reading 100, falling {:.4g} {}; one point = "
+                           "{:.4g} {}), the foot resting from t = 0 to {:.4g} {}",
+                           shore->scale == ShoreScale::A ? "A" : "D", instrument.reading_100_force, unit_names("N"),
+                           instrument.spring_rate, unit_names("N/m"), instrument.point_depth, unit_names("m"),
+                           shore->duration, unit_names("s"));
+    }
+    std::string load = describe_history(
+        contact_case, row_name(control),
+        fmt::format(" (spring k = {:.4g} {})", control.spring_constant, unit_names("N/m")), unit_names);
+    for (const ForcePause& pause : control.force_pauses) {
+        load += fmt::format(", force held from t = {:.4g} to {:.4g} {}", pause.start, pause.end, unit_names("s"));
+    }
+    return load;
+}
+
 void ControlTraits<SpringControl>::validate_within_run(const ContactCase& contact_case, const SpringControl& control) {
-    validate_force_pauses(contact_case, control.force_pauses);
+    validate_force_pauses(contact_case, control);
 }
 
 double ControlTraits<SpringControl>::largest_contact_radius(const ContactCase& contact_case,

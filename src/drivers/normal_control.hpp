@@ -65,7 +65,7 @@ struct ControlTraits<DisplacementControl> : HistoryControlTraits<DisplacementCon
     static const char* row_name(const DisplacementControl& /*control*/) { return "displacement"; }
     /// The layer's drivers prescribe the depth.
     static LayerLoading on_layer(const ContactCase& /*contact_case*/, const DisplacementControl& /*control*/) {
-        return {.driven = LayerDriven::depth};
+        return {.prescribes_depth = true};
     }
     /// No jump in depth against a dashpot; a harmonic's rules.
     static void validate(const ContactCase& contact_case, const DisplacementControl& control);
@@ -103,7 +103,7 @@ struct ControlTraits<ForceControl> : HistoryControlTraits<ForceControl, ForceSte
     static const char* row_name(const ForceControl& /*control*/) { return "force"; }
     /// The layer's drivers solve for the prescribed force.
     static LayerLoading on_layer(const ContactCase& /*contact_case*/, const ForceControl& /*control*/) {
-        return {.driven = LayerDriven::force};
+        return {};
     }
     /// No negative force in the history; a harmonic's rules, and it must not make the force pull.
     static void validate(const ContactCase& contact_case, const ForceControl& control);
@@ -188,14 +188,19 @@ struct ControlTraits<SpringControl> : HistoryControlTraits<SpringControl, Spring
     static const char* row_name(const SpringControl& control) { return control.shore ? "shore" : "spring"; }
     /// The layer's drivers solve for the spring's base, its pauses and a durometer's test as on the half-space.
     static LayerLoading on_layer(const ContactCase& /*contact_case*/, const SpringControl& control) {
-        return {.driven = LayerDriven::spring_base,
-                .spring_constant = control.spring_constant,
+        return {.spring_constant = control.spring_constant,
                 .force_pauses = &control.force_pauses,
                 .shore = control.shore ? &*control.shore : nullptr};
     }
     /// A Shore test: its durometer in the case's units (make_shore_test: the spring, refusing a constant of the
     /// control's own, `load.spring_constant`), the standard's indenter and base history; a plain spring: nothing.
     static BroughtParts bring(const SpringControl& control, double length_unit, double force_unit);
+    /// A Shore test: the durometer's standard indenter, which the case does not give.
+    static ControlBrings brings(const SpringControl& control) { return {.indenter = control.shore.has_value()}; }
+    /// A Shore test: its durometer (spring force at reading 100, its rate, one point's depth) and duration; a plain
+    /// spring: its history with the spring constant, harmonic and force pauses.
+    static std::string describe(const ContactCase& contact_case, const SpringControl& control,
+                                const rheology::UnitNames& unit_names);
     /// A harmonic's rules; a spring constant > 0; a base history starting at or above the surface (z <= 0) without
     /// jumps, or a Shore test's rules (a duration > 0, the durometer's spring, no harmonic, no tangential load).
     static void validate(const ContactCase& contact_case, const SpringControl& control);

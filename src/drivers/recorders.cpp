@@ -41,6 +41,12 @@ void SnapshotRecorder::observe(const StepState& state) {
     }
 }
 
+void drop_snapshots_after(std::vector<Snapshot>& snapshots, const StepState& end) {
+    std::erase_if(snapshots, [&](const Snapshot& snapshot) {
+        return snapshot.time > end.time || (snapshot.time == end.time && !end.settled);
+    });
+}
+
 void ShoreRecorder::observe(const StepState& state) {
     if (state.row) result_.shore.push_back(instrument_.reading(state.depth));
     if (state.settled &&

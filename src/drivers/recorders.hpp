@@ -74,6 +74,10 @@ private:
     IndentationResult& result_;
 };
 
+/// Leaves out the snapshots taken after state `end` (a stop in a replay, StateLog): each is taken at the first settled
+/// state at or after its time, which is `end` itself only when `end` is settled.
+void drop_snapshots_after(std::vector<Snapshot>& snapshots, const StepState& end);
+
 /// A Shore test: the reading column H at every row, and the readings at shore_reading_times (settled states on
 /// those times; the driver puts nodes there).
 class ShoreRecorder final : public StepObserver {

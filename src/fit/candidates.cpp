@@ -67,13 +67,15 @@ rheology::ModelParameters registry_parameters(const Material& material, const do
 }
 
 // G(t) = G_inf + sum G_k exp(-t / tau_k) (Table 1) of the values; a spectrum drops its zero moduli. A registry
-// model with what it stands for (a converted one with its certificate).
+// model with what it stands for (a converted one with its certificate). Each with its own origin, which sets the
+// default time step (drivers::resolve_numerics): a Prony series' times are the material's (exact_material), a
+// spectrum's are the nodes of a continuous spectrum on a fixed grid (MaterialOrigin::times_from_conversion).
 rheology::ModelMaterial make_material(const Material& material, const double* values) {
     if (material.model) {
         const rheology::ConversionOptions options{.window = material.window};
         return rheology::build_material(*material.model, registry_parameters(material, values), options);
     }
-    if (material.parameters.size() == 1) return {rheology::Rheology::elastic(values[0]), {}};
+    if (material.parameters.size() == 1) return rheology::exact_material(rheology::Rheology::elastic(values[0]));
     std::vector<rheology::RelaxationTerm> terms;
     if (material.spectrum()) {
         for (std::size_t j = 0; j < material.grid.size(); ++j) {
@@ -82,7 +84,9 @@ rheology::ModelMaterial make_material(const Material& material, const double* va
     } else {
         for (std::size_t k = 0; k < material.terms; ++k) terms.push_back({values[1 + 2 * k], values[2 + 2 * k]});
     }
-    return {rheology::Rheology::prony(values[0], std::move(terms)), {}};
+    rheology::ModelMaterial built = rheology::exact_material(rheology::Rheology::prony(values[0], std::move(terms)));
+    if (material.spectrum()) built.origin.times_from_conversion = true;
+    return built;
 }
 
 // The `[material]` body of the values, as make_material builds it.
@@ -200,7 +204,7 @@ CandidateFit fit_material(const CandidateProblem& base, const Material& material
         auto built = model(std::vector<double>(values.begin(), indenter_end));
         rheology::ModelMaterial candidate = make_material(material, values.data() + offset);
         built.material = std::move(candidate.series);
-        if (material.model) built.material_origin = std::move(candidate.origin);  // a converted one's certificate
+        built.material_origin = std::move(candidate.origin);  // not the base's: its times and certificate are not
         built.bodies.reset();  // the base's elastic body is not the candidate's (drivers::validate)
         return built;
     };

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -10,7 +9,7 @@
 #include "mdr/drivers/case_validation.hpp"
 #include "mdr/drivers/controls.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
-#include "mdr/drivers/oblique_sphere.hpp"
+#include "mdr/drivers/load_description.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_assembly.hpp"
 #include "mdr/rheology/contact_bodies.hpp"
@@ -23,85 +22,10 @@
 #include "mdr/io/units.hpp"
 #include "indenter_reader.hpp"
 #include "layer_reader.hpp"
+#include "tangential_reader.hpp"
 #include "toml_reader.hpp"
 
 namespace mdr::io {
-namespace {
-
-// The harmonic part of a load (normal or tangential); its history is read_history's.
-drivers::HarmonicLoad read_harmonic(TableReader& table) {
-    return drivers::HarmonicLoad{table.number("amplitude"), table.number("frequency"), table.number("start"),
-                                 table.number("end")};
-}
-
-// The keys of `[tangential]` that describe a load (all but friction): control, history and the harmonic's.
-std::vector<std::string> tangential_load_keys() {
-    std::vector<std::string> keys{"control", "history"};
-    for (auto& key : drivers::harmonic_key_names()) keys.push_back(std::move(key));
-    return keys;
-}
-
-drivers::TangentialLoad read_tangential(TableReader& table) {
-    std::vector<std::string> known{"friction"};
-    for (auto& key : tangential_load_keys()) known.push_back(std::move(key));
-    table.reject_unknown(known);
-    const std::vector<std::string> harmonic_keys = drivers::harmonic_key_names();
-    drivers::TangentialLoad load;
-    load.friction = table.number("friction");
-    const auto& control = drivers::tangential_control_named(
-        table.optional_string("control").value_or(drivers::tangential_controls().front().name));
-    load.control = control.control;
-    const bool harmonic =
-        std::any_of(harmonic_keys.begin(), harmonic_keys.end(), [&table](const auto& key) { return table.has(key); });
-    if (table.has("history") == harmonic) {
-        throw InvalidInput("tangential", "[...]",
-                           fmt::format("give either history or {}", fmt::join(harmonic_keys, ", ")));
-    }
-    if (table.has("history")) {
-        load.load.history = read_history(table, control.column);
-    } else {
-        load.load.harmonic = read_harmonic(table);
-    }
-    drivers::validate(load);  // before its end time is used
-    return load;
-}
-
-bool is_oblique(const TableReader& load) {
-    const auto& keys = drivers::oblique_impact_keys();
-    return std::any_of(keys.begin(), keys.end(), [&load](const drivers::ControlKey& key) { return load.has(key.key); });
-}
-
-// The tangential part of an impact: `[load] tangential_velocity` (or `incidence_deg`) and `spin`, `[indenter]
-// moment_of_inertia` (optional: drivers::oblique_sphere) and `[tangential] friction`.
-drivers::ObliqueImpactLoad read_oblique(TableReader& load, TableReader& indenter,
-                                        std::optional<TableReader>& tangential, const drivers::ImpactControl& impact) {
-    if (!tangential || !tangential->has("friction")) {
-        throw InvalidInput("tangential.friction", "(missing)", "is required for an oblique impact");
-    }
-    for (const auto& key : tangential_load_keys()) {
-        if (tangential->has(key)) {
-            throw InvalidInput("tangential." + key, tangential->text(key),
-                               "a tangential load history is not for an impact; an oblique impact takes only "
-                               "tangential.friction, with load.tangential_velocity or load.spin");
-        }
-    }
-    tangential->reject_unknown({"friction"});
-    if (load.has("tangential_velocity") && load.has("incidence_deg")) {
-        throw InvalidInput("load.incidence_deg", load.text("incidence_deg"), "give either it or tangential_velocity");
-    }
-    drivers::ObliqueImpactLoad oblique;
-    oblique.friction = tangential->number("friction");
-    oblique.tangential_velocity = load.optional_number("tangential_velocity").value_or(0.0);
-    if (auto incidence = load.optional_number("incidence_deg")) {
-        oblique.tangential_velocity = drivers::incidence_velocity(impact.velocity, *incidence);
-    }
-    oblique.spin = load.optional_number("spin").value_or(0.0);
-    oblique.moment_of_inertia = indenter.optional_number("moment_of_inertia");
-    return oblique;
-}
-
-}  // namespace
-
 namespace {
 
 // The text of the number that begins at `where` (line and column from 1, as toml++ counts them).
@@ -251,18 +175,17 @@ drivers::ContactCase read_case(const toml::table& root_table,
     ControlLoad control = control_reading->load(*load, *indenter_table);
     parts.load.history = std::move(control.history);
     parts.control = std::move(control.control);
-    drivers::ImpactControl* const impact = std::get_if<drivers::ImpactControl>(&parts.control);
     parts.end = load->optional_number("end");
 
     auto tangential_table = root.table("tangential");
-    const bool oblique_keys = is_oblique(*load) || indenter_table->has("moment_of_inertia");
-    if (impact && (tangential_table || oblique_keys)) {
-        impact->oblique = read_oblique(*load, *indenter_table, tangential_table, *impact);
-    } else if (oblique_keys) {  // the oblique keys of [load] are the impact's (read_control)
-        throw InvalidInput("indenter.moment_of_inertia", indenter_table->text("moment_of_inertia"),
-                           "only with control = \"impact\" (an oblique impact)");
-    } else if (auto table = std::move(tangential_table)) {
-        parts.tangential = read_tangential(*table);
+    // [tangential] and the oblique keys are the control's tangential part (an impact's oblique part), or else
+    // [tangential] is the case's tangential load.
+    if (!control_reading->read_tangential_part(*load, *indenter_table, tangential_table, parts.control)) {
+        if (has_oblique_keys(*load, *indenter_table)) {  // the oblique keys of [load] are the impact's (read_control)
+            throw InvalidInput("indenter.moment_of_inertia", indenter_table->text("moment_of_inertia"),
+                               "only with control = \"impact\" (an oblique impact)");
+        }
+        if (tangential_table) parts.tangential = read_tangential(*tangential_table);
     }
 
     if (auto output = root.table("output")) {
@@ -321,41 +244,7 @@ std::string describe(const drivers::ContactCase& contact_case) {
     const UnitSystem& units = unit_system(contact_case.units);
     const std::string rheology =
         material.terms().empty() && material.viscosity() == 0.0 ? "an elastic" : "a viscoelastic";
-    std::string load;
-    if (const drivers::ImpactControl* impact = contact_case.impact()) {
-        load = fmt::format("impact of m = {:.4g} {} at v0 = {:.4g} {}", impact->mass, units.mass, impact->velocity,
-                           units.velocity());
-        if (const drivers::ObliqueImpactLoad* oblique = contact_case.oblique()) {
-            load += fmt::format(", oblique: v_t0 = {:.4g} {}, omega0 = {:.4g} rad/s, I = {:.4g} {} {}^2, mu = {:.4g}",
-                                oblique->tangential_velocity, units.velocity(), oblique->spin,
-                                drivers::oblique_sphere(contact_case).moment_of_inertia, units.mass, units.length,
-                                oblique->friction);
-        }
-    } else if (const drivers::ShoreTest* shore = contact_case.shore()) {
-        const auto& instrument = shore->instrument;
-        load = fmt::format("Shore {} durometer (spring force {:.4g} {} at reading 100, falling {:.4g} {}/{}; one point "
-                           "= {:.4g} {}), the foot resting from t = 0 to {:.4g} {}",
-                           shore->scale == drivers::ShoreScale::A ? "A" : "D", instrument.reading_100_force,
-                           units.force, instrument.spring_rate, units.force, units.length, instrument.point_depth,
-                           units.length, shore->duration, units.time);
-    } else {
-        load = fmt::format("{} control, {} history points over t = {:.4g} .. {:.4g} {}",
-                           drivers::control_kind(contact_case.control).name,
-                           contact_case.load.history->points().size(), contact_case.load.history->start_time(),
-                           contact_case.end_time, units.time);
-        const drivers::SpringControl* spring = contact_case.spring();
-        if (spring) {
-            load += fmt::format(" (spring k = {:.4g} {}/{})", spring->spring_constant, units.force, units.length);
-        }
-        if (const auto& harmonic = contact_case.load.harmonic) {
-            load += fmt::format(", harmonic of amplitude {:.4g} at {:.4g} 1/{} over t = {:.4g} .. {:.4g} {}",
-                                harmonic->amplitude, harmonic->frequency, units.time, harmonic->start, harmonic->end,
-                                units.time);
-        }
-        for (const auto& pause : spring ? spring->force_pauses : std::vector<drivers::ForcePause>{}) {
-            load += fmt::format(", force held from t = {:.4g} to {:.4g} {}", pause.start, pause.end, units.time);
-        }
-    }
+    std::string load = drivers::describe_load(contact_case, unit_names(units));
     if (const auto& tangential = contact_case.tangential) {
         load += fmt::format("; tangential {} control, mu = {:.4g}, {}",
                             drivers::tangential_control_kind(tangential->control).name,

@@ -12,6 +12,7 @@
 #include "layer_reader.hpp"
 #include "material_reader.hpp"
 #include "mdr/drivers/case_validation.hpp"
+#include "mdr/drivers/control_parts.hpp"
 #include "mdr/drivers/controls.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_assembly.hpp"
@@ -315,7 +316,8 @@ CaseParts case_parts(const drivers::ContactCase& contact_case) {
     CaseParts parts;
     parts.title = contact_case.title;
     parts.units = contact_case.units;
-    parts.indenter = contact_case.shore() ? nullptr : contact_case.indenter;  // a Shore test brings the standard's
+    // A durometer's standard indenter is brought again by its control.
+    parts.indenter = drivers::brought_by(contact_case.control).indenter ? nullptr : contact_case.indenter;
     parts.control = contact_case.control;
     parts.load = contact_case.load;
     if (contact_case.end_given) parts.end = contact_case.end_time;  // else the default end, which follows the load

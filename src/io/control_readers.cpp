@@ -10,6 +10,7 @@
 #include "mdr/io/case_assembly.hpp"
 #include "history_reader.hpp"
 #include "shore_reader.hpp"
+#include "tangential_reader.hpp"
 
 namespace mdr::io {
 namespace {
@@ -59,6 +60,14 @@ public:
         }
         return {drivers::ImpactControl{.mass = indenter.number("mass"), .velocity = velocity}, std::nullopt};
     }
+    // Its oblique part, when `[tangential]` (its friction) or an oblique key is given.
+    bool read_tangential_part(TableReader& load, TableReader& indenter, std::optional<TableReader>& tangential,
+                              drivers::LoadControl& control) const override {
+        if (!tangential && !has_oblique_keys(load, indenter)) return false;
+        auto& impact = std::get<drivers::ImpactControl>(control);
+        impact.oblique = read_oblique(load, indenter, tangential, impact);
+        return true;
+    }
 
 private:
     std::vector<std::string> other_keys_;
@@ -90,6 +99,11 @@ std::unique_ptr<ControlReading> start(const drivers::ControlKind& kind, TableRea
 }  // namespace
 
 bool ControlReading::brings_indenter(bool) const { return false; }
+
+bool ControlReading::read_tangential_part(TableReader&, TableReader&, std::optional<TableReader>&,
+                                          drivers::LoadControl&) const {
+    return false;
+}
 
 void ControlReading::finish(TableReader&, drivers::LoadControl&) const {}
 

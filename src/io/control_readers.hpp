@@ -17,7 +17,8 @@
 
 namespace mdr::io {
 
-/// A control and its base history as read (the harmonic, the end and an impact's oblique part are the case's);
+/// A control and its base history as read (the harmonic and the end are the case's; an impact's oblique part is
+/// read_tangential_part's);
 /// an impact's and a Shore test's history are io::assemble_case's.
 struct ControlLoad {
     drivers::LoadControl control;
@@ -26,7 +27,8 @@ struct ControlLoad {
 
 /// One control being read. read_case calls its steps where it has always met the control's keys, so a case with
 /// several errors reports the same first one: the reading is made after `[load]`'s keys are checked (read_control,
-/// require_control_keys), then brings_indenter, then load, then finish once the rest of the case is read.
+/// require_control_keys), then brings_indenter, then load, then read_tangential_part after `load.end`, then finish
+/// once the rest of the case is read.
 class ControlReading {
 public:
     virtual ~ControlReading() = default;
@@ -37,6 +39,12 @@ public:
 
     /// The control and its base history from `[load]` and `[indenter]`, after the indenter and `load.harmonic`.
     virtual ControlLoad load(TableReader& load, TableReader& indenter) = 0;
+
+    /// Whether the control takes `[tangential]` and the oblique keys (tangential_reader.hpp) as a tangential part of
+    /// its own, read into `control` (an impact's oblique part, when either is given); false: `[tangential]` is the
+    /// case's tangential load and an oblique key is refused.
+    virtual bool read_tangential_part(TableReader& load, TableReader& indenter, std::optional<TableReader>& tangential,
+                                      drivers::LoadControl& control) const;
 
     /// The keys read after the rest of the case (a spring's force_pauses), added to `control`.
     virtual void finish(TableReader& load, drivers::LoadControl& control) const;

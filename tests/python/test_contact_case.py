@@ -484,8 +484,10 @@ def test_the_parts_show_their_values():
         "ObliqueImpact(friction=0.3, tangential_velocity=0.0, spin=2.0, moment_of_inertia=None)")
     assert repr(mdr.Tangential(friction=0.2, harmonic=harmonic)) == (
         'Tangential(friction=0.2, control="displacement", harmonic=' + repr(harmonic) + ")")
-    assert repr(mdr.Tangential(friction=0.2, control="force", history=[(0.0, 0.0), (1.0, 1e-3)])) == (
-        'Tangential(friction=0.2, control="force", history=2 points)')
+    tangential = mdr.Tangential(friction=0.2, control="force", history=[(0.0, 0.0), (1.0, 1e-3)])
+    assert repr(tangential) == 'Tangential(friction=0.2, control="force", history=[(0.0, 0.0), (1.0, 0.001)])'
+    rebuilt = eval(repr(tangential), {"Tangential": mdr.Tangential})  # the repr is the constructor call
+    assert (rebuilt.friction, rebuilt.control, rebuilt.history) == (0.2, "force", tangential.history)
 
 
 def test_a_converted_material_pickle_of_another_version_is_refused_naming_the_rule():

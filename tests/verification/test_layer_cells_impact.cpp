@@ -1,5 +1,5 @@
 // An impact on a layer on the cells (docs/theory.md, "Layers", eq. L16 to L19; drivers::run_layer_cells_impact, run
-// where snapshots are asked): against the impact of Ting's class on the same layer (drivers::run_layer_impact: the
+// where snapshots are asked): against the impact of Ting's class on the same layer (drivers::LayerImpactStepping: the
 // elastic layer's Gauss solution with Lee-Radok and Ting, eq. L11 to L14, no cells), in the cell's order; a very thick
 // layer against the half-space impact; snapshots before and after the turn against the half-space impact's.
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -195,6 +196,41 @@ TEST(LayerContact, ThinSlidingAndCompressibleBondedLayersApproachTheirWinklerBed
     EXPECT_NEAR(sliding_coarse / sliding_fine, 8.0, 1.5);
     EXPECT_LT(std::abs(bonded_fine), 1.5e-4);
     EXPECT_NEAR(bonded_coarse / bonded_fine, 4.0, 0.5);
+}
+
+TEST(LayerContact, ThinLayersUnderAConeApproachTheirAsymptotesAtTheirOrders) {
+    // A cone, f = r / tan(theta), on thin layers (theory.md eq. L8 to L10 for a cone): lubrication of the bonded
+    // incompressible layer, p = (3 G / h^3) [d (a^2 - r^2)/4 - (a^3 - r^3)/(9 tan(theta))], dp/dr = 0 at the edge:
+    // a = (3/2) tan(theta) d, F = (243 pi / 640) G tan^4(theta) d^5 / h^3 (E* = 4 G); the Winkler beds p = k w:
+    // a = tan(theta) d, F = (pi/3) k tan^2(theta) d^3. AtomicJ's fits for the thin layer (pawelHerm/AtomicJ,
+    // ReducedLoadVsReducedIndentationApproximationThin*Layer.CONE) end in the same terms: 0.2982 t^5 bonded and
+    // pi t^3 / 3 loose, t = tan(theta) d / h. F / asymptote depends on a/h alone; measured (force / asymptote - 1) at
+    // a/h = 20, 40: bonded 4.2e-2, 1.09e-2 (O((h/a)^2)); sliding 6.7e-6, 8.1e-7 (O((h/a)^3), as for the sphere);
+    // bonded nu = 0.3 -5.1e-4, -1.3e-4 (O((h/a)^2)). The radius approaches at O(h/a) (bonded 6.6 %, 3.5 % short).
+    const double tangent = std::tan(35.0 * std::numbers::pi / 180.0), nu = 0.3;
+    const auto cone = std::shared_ptr<const mdr::profile::Profile>(mdr::profile::make_cone_from_half_angle(35.0));
+    const auto errors = [&](double a_over_h) {
+        const double a = a_over_h * thickness, d_bonded = a / (1.5 * tangent), d = a / tangent;
+        const auto at = [&](LayerInterface interface, double poisson_ratio, double depth) {
+            return LayerContact(Layer{thickness, interface}, poisson_ratio, cone, 3.0 * a).at_depth(depth, a);
+        };
+        const auto bonded = at(LayerInterface::bonded, 0.5, d_bonded);
+        const double bed = (1.0 - nu) * (1.0 - nu) / ((1.0 - 2.0 * nu) * thickness);
+        const double winkler = std::numbers::pi / 3.0 * tangent * tangent * d * d * d;
+        return std::array{bonded.force / (243.0 * std::numbers::pi / 2560.0 * std::pow(tangent, 4) *
+                                          std::pow(d_bonded, 5) / std::pow(thickness, 3)) - 1.0,
+                          at(LayerInterface::sliding, 0.5, d).force / (winkler / thickness) - 1.0,
+                          at(LayerInterface::bonded, nu, d).force / (bed * winkler) - 1.0,
+                          bonded.contact_radius / a - 1.0};
+    };
+    const auto coarse = errors(20.0), fine = errors(40.0);
+    EXPECT_LT(std::abs(fine[0]), 0.015);
+    EXPECT_NEAR(coarse[0] / fine[0], 4.0, 0.5);
+    EXPECT_LT(std::abs(fine[1]), 1.5e-6);
+    EXPECT_NEAR(coarse[1] / fine[1], 8.0, 1.5);
+    EXPECT_LT(std::abs(fine[2]), 2e-4);
+    EXPECT_NEAR(coarse[2] / fine[2], 4.0, 0.5);
+    EXPECT_NEAR(coarse[3] / fine[3], 2.0, 0.3);
 }
 
 TEST(LayerContact, ForceConvergesInTheNumberOfNodes) {

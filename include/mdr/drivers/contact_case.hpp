@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mdr/contact/layer.hpp"
+#include "mdr/drivers/control_parts.hpp"
 #include "mdr/drivers/load.hpp"
 #include "mdr/drivers/load_control.hpp"
 #include "mdr/drivers/tangential_load.hpp"
@@ -79,7 +80,9 @@ struct ContactCase {
 
     /// True when tangential loading (or an oblique impact) meets a material that is not tangential_exact: the
     /// tangential result is then an approximation.
-    bool tangential_approximate() const { return !tangential_exact && (tangential || oblique()); }
+    bool tangential_approximate() const {
+        return !tangential_exact && (tangential || brought_by(control).tangential_part);
+    }
     /// The impact's control, or none under another control.
     const ImpactControl* impact() const { return std::get_if<ImpactControl>(&control); }
     /// The spring's control (with its pauses or durometer), or none under another control.

@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// The parts of a case that its control brings (io::assemble_case asks them instead of the control's name): a Shore
-/// test's standard indenter and base history, an impact's history (0, 0); the control's own data completed in the
-/// case's units.
+/// test's standard indenter and base history, an impact's history (0, 0) and an oblique impact's tangential part; the
+/// control's own data completed in the case's units.
 
 #include <memory>
 #include <optional>
@@ -25,5 +25,14 @@ struct BroughtParts {
 /// of the control's data that the completion refuses (a Shore test's spring constant of its own,
 /// `load.spring_constant`; a durometer's scale or duration).
 BroughtParts complete_control(const LoadControl& control, double length_unit, double force_unit);
+
+/// Which parts a control brings that a case could otherwise have of its own, known from its data, completed or not.
+struct ControlBrings {
+    bool indenter = false;         ///< its own indenter (a durometer's standard one): the case's is not given
+    bool tangential_part = false;  ///< a tangential part of its load (an oblique impact's), beside `[tangential]`
+};
+
+/// What `control` brings: its ControlTraits' `brings` (a case read back asks it instead of the control's name).
+ControlBrings brought_by(const LoadControl& control);
 
 }  // namespace mdr::drivers

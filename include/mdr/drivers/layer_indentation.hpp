@@ -35,9 +35,10 @@ void validate_layer(const ContactCase& contact_case);
 /// phase), spring control likewise F(d) + k d = k z (F = k (z - d)), and in a force pause F(d) = the force held
 /// (eq. L22; the base z = d + F / k, shifted after it as on the half-space, PausedBase); a parallel dashpot then sees
 /// the trapezoidal rate of the solved depth, and takes a force jump at a fixed depth (LayerStepper::jump). An impact
-/// runs run_layer_impact (src/drivers/layer_impact.hpp), or with snapshots (or NumericsOptions::layer_cells)
-/// run_layer_cells_impact on cells from the start (src/drivers/layer_cells_impact.hpp: the surface outside its receding
-/// contact is theirs alone). `numerics.elements` is the least number of Gauss nodes over
+/// runs LayerImpactStepping (src/drivers/layer_impact.hpp), or with snapshots (or NumericsOptions::layer_cells)
+/// LayerCellsImpactStepping on cells from the start (src/drivers/layer_cells_impact.hpp: the surface outside its
+/// receding contact is theirs alone). Every way runs its stepping class in the half-space's one loop
+/// (src/drivers/run_loop.hpp), with its observers and progress report. `numerics.elements` is the least number of Gauss nodes over
 /// the contact (default contact::default_layer_nodes).
 /// A Shore test (`control = "shore"`) is that spring control with the durometer's spring, its base step at the
 /// landing and the half-space's reading columns (ShoreRecorder); the layer solves the durometer's tip

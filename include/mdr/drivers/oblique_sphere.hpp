@@ -1,9 +1,10 @@
 #pragma once
 /// \file
 /// The sphere of an oblique impact (handbook section 6 with m v_t' = -F_x, I omega' = R F_x): its lever and its
-/// moment of inertia, from the case.
+/// moment of inertia, from the indenter and the impact.
 
-#include "mdr/drivers/contact_case.hpp"
+#include "mdr/drivers/load_control.hpp"
+#include "mdr/profile/profile.hpp"
 
 namespace mdr::drivers {
 
@@ -13,8 +14,8 @@ struct ObliqueSphere {
     double moment_of_inertia;  ///< I [kg m^2] about the centre
 };
 
-/// The sphere of `contact_case`, an oblique impact on a sphere (drivers::validate): R the indenter's tip_radius(), I as
-/// given (ObliqueImpactLoad::moment_of_inertia) or a solid sphere's 2/5 m R^2.
-ObliqueSphere oblique_sphere(const ContactCase& contact_case);
+/// The sphere of an oblique `impact` (its `oblique` part given) of `indenter`, a sphere (drivers::validate): R the
+/// indenter's tip_radius(), I as given (ObliqueImpactLoad::moment_of_inertia) or a solid sphere's 2/5 m R^2.
+ObliqueSphere oblique_sphere(const profile::Profile& indenter, const ImpactControl& impact);
 
 }  // namespace mdr::drivers

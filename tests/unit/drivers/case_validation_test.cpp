@@ -113,15 +113,20 @@ ContactCase oblique_impact(std::shared_ptr<const profile::Profile> indenter) {
     return contact_case;
 }
 
+// The sphere of an oblique impact's case: its indenter's lever and its impact's moment of inertia.
+ObliqueSphere sphere_of(const ContactCase& contact_case) {
+    return oblique_sphere(*contact_case.indenter, std::get<ImpactControl>(contact_case.control));
+}
+
 TEST(CaseValidation, AnObliqueImpactTakesItsLeverFromTheSphereAndRefusesOtherShapes) {
     auto contact_case = oblique_impact(profile::make_sphere(0.01));
     EXPECT_EQ(key_of([&] { validate(contact_case); }), "");
-    EXPECT_DOUBLE_EQ(oblique_sphere(contact_case).radius, 0.01);
-    EXPECT_DOUBLE_EQ(oblique_sphere(contact_case).moment_of_inertia, 0.4 * 0.03 * 0.01 * 0.01);  // a solid sphere
+    EXPECT_DOUBLE_EQ(sphere_of(contact_case).radius, 0.01);
+    EXPECT_DOUBLE_EQ(sphere_of(contact_case).moment_of_inertia, 0.4 * 0.03 * 0.01 * 0.01);  // a solid sphere
     EXPECT_GT(run_case(contact_case).impact->oblique->impulse_ratio, 0.0);
     auto& oblique = *std::get<ImpactControl>(contact_case.control).oblique;
     oblique.moment_of_inertia = 2e-6;
-    EXPECT_DOUBLE_EQ(oblique_sphere(contact_case).moment_of_inertia, 2e-6);
+    EXPECT_DOUBLE_EQ(sphere_of(contact_case).moment_of_inertia, 2e-6);
     oblique.moment_of_inertia = 0.0;
     EXPECT_EQ(key_of([&] { validate(contact_case); }), "indenter.moment_of_inertia");
     EXPECT_EQ(key_of([&] { validate(oblique_impact(profile::make_cone(10.0))); }), "indenter.shape");
@@ -149,7 +154,7 @@ private:
 TEST(CaseValidation, AnObliqueImpactAsksTheIndentersTypeForItsLeverNotItsName) {
     const auto renamed = oblique_impact(std::make_shared<RenamedSphere>(0.01));
     EXPECT_EQ(key_of([&] { validate(renamed); }), "");
-    EXPECT_DOUBLE_EQ(oblique_sphere(renamed).radius, 0.01);
+    EXPECT_DOUBLE_EQ(sphere_of(renamed).radius, 0.01);
     const auto outcome = run_case(renamed).impact->oblique;  // the same profile under its own name: the same run
     const auto expected = run_case(oblique_impact(profile::make_sphere(0.01))).impact->oblique;
     ASSERT_TRUE(outcome && expected);

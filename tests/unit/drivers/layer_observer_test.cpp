@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -109,6 +110,29 @@ TEST_P(LayerObserver, StopsTheRunWithTheRowsOfTheFullRunUpToThen) {
     }
     ASSERT_EQ(watcher.states.size(), middle + 1);
     EXPECT_TRUE(watcher.states.back().last);
+}
+
+// The progress of a run on a layer is the half-space's report (ProgressReport, in the one loop run_stepping): the
+// fraction of the state observed (StepState::fraction), each time another hundredth of the run is done (an impact's
+// fraction is of its time limit: none here, where the contact ends within 1 % of it). Before, the layer's drivers
+// reported their own way: an impact at every step, a history (i + 1) / nodes after state i, which no state says.
+TEST(LayerProgress, ReportsTheObservedFractionEachHundredthAsOnTheHalfSpace) {
+    auto on_cells = reloading();
+    on_cells.numerics.layer_cells = true;
+    for (const ContactCase& contact_case : {loading(), on_cells, impact()}) {
+        Watcher watcher;
+        std::vector<double> fractions;
+        const auto result = run_case(contact_case, [&](double fraction) { fractions.push_back(fraction); }, {&watcher});
+        ASSERT_GT(result.steps, 100u);  // more states than reports
+        EXPECT_EQ(fractions.empty(), result.impact.has_value());
+        EXPECT_LE(fractions.size(), 100u);
+        EXPECT_EQ(std::adjacent_find(fractions.begin(), fractions.end(), std::greater_equal<>()), fractions.end());
+        for (const double fraction : fractions) {
+            EXPECT_TRUE(std::any_of(watcher.states.begin(), watcher.states.end(),
+                                    [&](const StepState& state) { return state.fraction == fraction; }))
+                << fraction;
+        }
+    }
 }
 
 // Only asks to stop, as a sweep's observer: it may see the abandoned run of Ting's class before the cells' run.

@@ -25,8 +25,9 @@ rheology::ContactBodies elastic(CaseParts&) {
 TEST(CaseAssembly, AShoreTestGetsTheDurometerInTheCasesUnits) {
     CaseParts parts{.units = "mm-N-s", .control = drivers::SpringControl{.shore = drivers::ShoreTest{}}};
     const drivers::ContactCase assembled = assemble_case(parts, elastic);
-    ASSERT_NE(assembled.spring(), nullptr);
-    EXPECT_NEAR(assembled.spring()->spring_constant, 3.0, 1e-12);
+    const auto* spring = std::get_if<drivers::SpringControl>(&assembled.control);
+    ASSERT_NE(spring, nullptr);
+    EXPECT_NEAR(spring->spring_constant, 3.0, 1e-12);
     EXPECT_NE(assembled.indenter, nullptr);
     EXPECT_EQ(assembled.load.history->start_time(), 0.0);
     EXPECT_EQ(assembled.end_time, 15.0);

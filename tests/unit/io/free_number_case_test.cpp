@@ -193,7 +193,7 @@ time_step = 1e-6
     const FreeNumberCase free(CaseTemplate(impact, "case"), {"indenter.mass", "indenter.R"});
     EXPECT_FALSE(free.typed());
     const auto built = free.build({2e-3, 2e-3});
-    EXPECT_EQ(built.impact()->mass, 2e-3);
+    EXPECT_EQ(std::get<mdr::drivers::ImpactControl>(built.control).mass, 2e-3);
     EXPECT_EQ(built.indenter->definition().numbers.at("R"), 2e-3);
     EXPECT_THROW(FreeNumberCase(CaseTemplate(impact, "case"), {"material.G2"}), mdr::InvalidInput);
 }
