@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "case_state.hpp"
 #include "number.hpp"
 #include "case_tree.hpp"
 #include "mdr/contact/layer.hpp"
@@ -246,6 +247,18 @@ duration : float, optional
                                    return test.scale == drivers::ShoreScale::A ? "A" : "D";
                                })
         .def_readonly("duration", &drivers::ShoreTest::duration, "[s]")
+        .def(py::pickle(
+            [](const drivers::ShoreTest& test) {  // its durometer as it is (in the units of the case it came from)
+                const drivers::Durometer& instrument = test.instrument;
+                return py::make_tuple(test.scale == drivers::ShoreScale::A ? "A" : "D", test.duration,
+                                      instrument.spring_rate, instrument.reading_100_force, instrument.point_depth);
+            },
+            [](const py::tuple& state) {
+                const drivers::ShoreScale scale = drivers::shore_scale_named(state[0].cast<std::string>());
+                return drivers::ShoreTest{scale, state[1].cast<double>(),
+                                          drivers::Durometer{scale, state[2].cast<double>(), state[3].cast<double>(),
+                                                             state[4].cast<double>()}};
+            }))
         .def("__repr__", [](const drivers::ShoreTest& test) {
             return fmt::format("ShoreTest(scale=\"{}\", duration={})", test.scale == drivers::ShoreScale::A ? "A" : "D",
                                float_repr(test.duration));
@@ -274,6 +287,15 @@ moment_of_inertia : float, optional
         .def_readonly("tangential_velocity", &drivers::ObliqueImpactLoad::tangential_velocity)
         .def_readonly("spin", &drivers::ObliqueImpactLoad::spin)
         .def_readonly("moment_of_inertia", &drivers::ObliqueImpactLoad::moment_of_inertia)
+        .def(py::pickle(
+            [](const drivers::ObliqueImpactLoad& oblique) {
+                return py::make_tuple(oblique.friction, oblique.tangential_velocity, oblique.spin,
+                                      oblique.moment_of_inertia);
+            },
+            [](const py::tuple& state) {
+                return drivers::ObliqueImpactLoad{state[0].cast<double>(), state[1].cast<double>(),
+                                                  state[2].cast<double>(), state[3].cast<std::optional<double>>()};
+            }))
         .def("__repr__", [](const drivers::ObliqueImpactLoad& oblique) {
             return fmt::format("ObliqueImpact(friction={}, tangential_velocity={}, spin={}, moment_of_inertia={})",
                                float_repr(oblique.friction), float_repr(oblique.tangential_velocity),
@@ -296,6 +318,14 @@ amplitude, frequency, start, end : float
         .def_readonly("frequency", &drivers::HarmonicLoad::frequency)
         .def_readonly("start", &drivers::HarmonicLoad::start)
         .def_readonly("end", &drivers::HarmonicLoad::end)
+        .def(py::pickle(
+            [](const drivers::HarmonicLoad& harmonic) {
+                return py::make_tuple(harmonic.amplitude, harmonic.frequency, harmonic.start, harmonic.end);
+            },
+            [](const py::tuple& state) {
+                return drivers::HarmonicLoad{state[0].cast<double>(), state[1].cast<double>(), state[2].cast<double>(),
+                                             state[3].cast<double>()};
+            }))
         .def("__repr__", &harmonic_repr);
     py::class_<drivers::NumericsOptions>(module, "Numerics", R"doc(The choices of ``[numerics]``; None: the default
 from the problem's scales (docs/case-format.md).
@@ -322,6 +352,22 @@ max_element_steps, max_memory : float, optional
         .def_readonly("output_every", &drivers::NumericsOptions::output_every)
         .def_readonly("max_element_steps", &drivers::NumericsOptions::max_element_steps)
         .def_readonly("max_memory", &drivers::NumericsOptions::max_memory)
+        .def(py::pickle(
+            [](const drivers::NumericsOptions& numerics) {  // with the choices a fit makes (no case-file keys)
+                return py::make_tuple(numerics.elements, numerics.time_step, numerics.half_width,
+                                      numerics.output_every, numerics.max_element_steps, numerics.max_memory,
+                                      numerics.min_segment_steps, numerics.layer_cells);
+            },
+            [](const py::tuple& state) {
+                return drivers::NumericsOptions{state[0].cast<std::optional<std::size_t>>(),
+                                                state[1].cast<std::optional<double>>(),
+                                                state[2].cast<std::optional<double>>(),
+                                                state[3].cast<std::size_t>(),
+                                                state[4].cast<std::optional<double>>(),
+                                                state[5].cast<std::optional<double>>(),
+                                                state[6].cast<std::optional<std::size_t>>(),
+                                                state[7].cast<bool>()};
+            }))
         .def("__repr__", [](const drivers::NumericsOptions& numerics) {
             return fmt::format("Numerics(elements={}, time_step={}, half_width={}, output_every={}, "
                                "max_element_steps={}, max_memory={})",
@@ -357,6 +403,19 @@ harmonic : mdr.Harmonic, optional
         .def_property_readonly("history",
                                [](const drivers::TangentialLoad& load) { return history_points(load.load.history); })
         .def_property_readonly("harmonic", [](const drivers::TangentialLoad& load) { return load.load.harmonic; })
+        .def(py::pickle(
+            [](const drivers::TangentialLoad& load) {
+                return py::make_tuple(load.friction, drivers::tangential_control_kind(load.control).name,
+                                      load.load.history ? py::cast(history_points(load.load.history)) : py::none(),
+                                      load.load.harmonic);
+            },
+            [](const py::tuple& state) {
+                return drivers::TangentialLoad{
+                    state[0].cast<double>(),
+                    drivers::tangential_control_named(state[1].cast<std::string>()).control,
+                    drivers::Load{load_history(state[2], "tangential.history"),
+                                  state[3].cast<std::optional<drivers::HarmonicLoad>>()}};
+            }))
         .def("__repr__", [](const drivers::TangentialLoad& load) {
             const std::string part = load.load.harmonic
                                          ? "harmonic=" + harmonic_repr(*load.load.harmonic)
@@ -382,6 +441,15 @@ interface : str, optional
         .def_readonly("thickness", &contact::Layer::thickness)
         .def_property_readonly("interface",
                                [](const contact::Layer& layer) { return contact::interface_name(layer.interface); })
+        .def(py::pickle(
+            [](const contact::Layer& layer) {
+                return py::make_tuple(layer.thickness, contact::interface_name(layer.interface));
+            },
+            [](const py::tuple& state) {
+                const auto name = state[1].cast<std::string>();
+                return contact::Layer{state[0].cast<double>(),
+                                      contact::interface_named(name, "layer.interface", "\"" + name + "\"")};
+            }))
         .def("__repr__", [](const contact::Layer& layer) {
             return fmt::format("Layer(thickness={}, interface=\"{}\")", float_repr(layer.thickness),
                                contact::interface_name(layer.interface));
@@ -395,7 +463,8 @@ void bind_contact_case(py::module_& module) {
     bind_controls(module);
     module.attr("_load_controls") = load_control_classes(std::type_identity<drivers::LoadControl>{});
     py::class_<drivers::ContactCase>(module, "ContactCase", R"doc(A contact case as objects: the library's
-drivers::ContactCase, checked at construction by the rules of a case file (mdr.InvalidInput naming the key).
+drivers::ContactCase, checked at construction by the rules of a case file (mdr.InvalidInput naming the key). It
+pickles over its typed parts, without text (so it travels to Dask's workers: mdr.sweep(case, vary, scheduler=...)).
 
 Parameters
 ----------
@@ -522,6 +591,7 @@ Examples
                 return std::pair{certificate->window.shortest, certificate->window.longest};
             },
             "The lags (shortest, longest) [s] over which a converted material's series is certified (None: exact).")
+        .def(py::pickle(&contact_case_state, &contact_case_of_state))
         .def("__repr__", [](const drivers::ContactCase& contact_case) {
             return "ContactCase(" + io::describe(contact_case) + ")";
         });

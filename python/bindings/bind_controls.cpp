@@ -1,5 +1,5 @@
 // _mdr._controls(), _tangential_controls(): the registries of controls (drivers/controls.hpp) as data, for the docs;
-// and the Python class of each control type, made from its declared fields (drivers::ControlField, load_control.hpp)
+// and the Python class of each control type, made from its declared fields (drivers::ControlField, control_field.hpp)
 // by folding over the alternatives of drivers::LoadControl: no control has code of its own here.
 
 #include <fmt/format.h>
@@ -118,10 +118,16 @@ std::optional<std::string> brought_part_repr(const Control& control) {
     return shown;
 }
 
-// A field's line of documentation with its unit.
+// A field's line of documentation naming its case file key, as the stub and the docs show it.
+template <class Field>
+std::string keyed_documentation(const Field& field) {
+    return *field.key ? fmt::format("{} (`{}`)", field.documentation, field.key) : std::string(field.documentation);
+}
+
+// A field's line of documentation with its key and unit.
 template <class Field>
 std::string field_documentation(const Field& field) {
-    return *field.unit ? fmt::format("{} [{}]", field.documentation, field.unit) : std::string(field.documentation);
+    return *field.unit ? fmt::format("{} [{}]", keyed_documentation(field), field.unit) : keyed_documentation(field);
 }
 
 // The row of the table of controls that a default value of `Control` has (drivers::control_kind).
@@ -186,7 +192,7 @@ py::list field_table() {
     std::apply(
         [&](const auto&... field) {
             (table.append(py::dict("name"_a = field.name, "unit"_a = field.unit,
-                                   "documentation"_a = field.documentation,
+                                   "documentation"_a = keyed_documentation(field),
                                    "keyword"_a = !is_part<std::remove_cvref_t<decltype(field)>>,
                                    "argument"_a = ValueOf<decltype(field)>::argument_stub(),
                                    "property"_a = ValueOf<decltype(field)>::property_stub())),
@@ -197,7 +203,7 @@ py::list field_table() {
 }
 
 // The Python class of control type `Control`: its constructor, a read-only property per field, `__repr__` (the
-// keywords with their values' repr, or the part a case brought) and `_fields`.
+// keywords with their values' repr, or the part a case brought), `_fields` and its pickle.
 template <class Control>
 void bind_control(py::module_& module) {
     const std::string name = control_class_name<Control>();
@@ -229,6 +235,31 @@ void bind_control(py::module_& module) {
         return fmt::format("{}({})", name, fmt::join(keywords, ", "));
     });
     bound.attr("_fields") = field_table<Control>();
+    // The pickle: every field's value (its parts' objects pickle), in a tuple that is never empty (a control without
+    // fields would otherwise not be restored).
+    bound.def(py::pickle(
+        [](const Control& control) {
+            py::list values;
+            std::apply(
+                [&](const auto&... field) {
+                    (values.append(py::cast(ValueOf<decltype(field)>::read(control.*field.member))), ...);
+                },
+                Control::fields());
+            return py::make_tuple(py::tuple(values));
+        },
+        [](const py::tuple& state) {
+            const auto values = state[0].cast<py::tuple>();
+            Control control{};
+            std::size_t next = 0;
+            std::apply(
+                [&](const auto&... field) {
+                    ((control.*field.member = ValueOf<decltype(field)>::from_keyword(
+                          values[next++].template cast<typename ValueOf<decltype(field)>::Keyword>())),
+                     ...);
+                },
+                Control::fields());
+            return control;
+        }));
 }
 
 template <class... Controls>

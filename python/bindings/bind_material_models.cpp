@@ -110,42 +110,6 @@ py::object build(const MaterialModel& model, const py::args& args, const py::kwa
     return material_object(rheology::build_material(model, parameters, options));
 }
 
-// The [material] table of a model's definition: what a case builds (converts) again.
-py::dict model_table(const rheology::ModelDefinition& definition) {
-    py::dict table;
-    table["model"] = definition.model;
-    for (const auto& [key, value] : definition.parameters.numbers) table[key.c_str()] = value;
-    for (const auto& [key, value] : definition.parameters.pairs) {
-        py::list pairs;
-        for (const auto& [a, b] : value) pairs.append(py::make_tuple(a, b));
-        table[key.c_str()] = pairs;
-    }
-    for (const auto& [key, value] : definition.parameters.arrays) table[key.c_str()] = value;
-    for (const auto& [key, value] : definition.parameters.texts) table[key.c_str()] = value;
-    if (definition.tolerance) table["tolerance"] = *definition.tolerance;
-    return table;
-}
-
-// The [material] table of a converted material's model (ConvertedMaterial::_definition, its pickle).
-py::dict definition_table(const ConvertedMaterial& material) { return model_table(material.definition); }
-
-// The model and parameters of a definition table (a pickle's), inverse of definition_table.
-void restore_definition(ConvertedMaterial& material, const py::dict& table) {
-    const MaterialModel& model = rheology::material_model(table["model"].cast<std::string>());
-    rheology::ModelDefinition& definition = material.definition;
-    definition.model = model.name;
-    for (const auto& [name, value] : table) {
-        const auto key = name.cast<std::string>();
-        if (key == "tolerance") {
-            definition.tolerance = value.cast<double>();
-        } else if (key != "model") {
-            const rheology::ModelParameter* parameter = find_parameter(model, key);
-            if (parameter == nullptr) throw InvalidInput(key, "(given)", "not a key of model " + model.name);
-            put(definition.parameters, *parameter, value);
-        }
-    }
-}
-
 // The models whose factory returns an mdr.ConvertedMaterial: those converted to a series over a window, and tables.
 bool converted(const MaterialModel& model) { return model.needs_window || model.name == "table"; }
 
@@ -174,6 +138,43 @@ std::string docstring(const MaterialModel& model) {
                        model.name, keywords, model.name);
 }
 
+}  // namespace
+
+py::dict model_table(const rheology::ModelDefinition& definition) {
+    py::dict table;
+    table["model"] = definition.model;
+    for (const auto& [key, value] : definition.parameters.numbers) table[key.c_str()] = value;
+    for (const auto& [key, value] : definition.parameters.pairs) {
+        py::list pairs;
+        for (const auto& [a, b] : value) pairs.append(py::make_tuple(a, b));
+        table[key.c_str()] = pairs;
+    }
+    for (const auto& [key, value] : definition.parameters.arrays) table[key.c_str()] = value;
+    for (const auto& [key, value] : definition.parameters.texts) table[key.c_str()] = value;
+    if (definition.tolerance) table["tolerance"] = *definition.tolerance;
+    return table;
+}
+
+rheology::ModelDefinition model_definition(const py::dict& table) {
+    const MaterialModel& model = rheology::material_model(table["model"].cast<std::string>());
+    rheology::ModelDefinition definition;
+    definition.model = model.name;
+    for (const auto& [name, value] : table) {
+        const auto key = name.cast<std::string>();
+        if (key == "tolerance") {
+            definition.tolerance = value.cast<double>();
+        } else if (key != "model") {
+            const rheology::ModelParameter* parameter = find_parameter(model, key);
+            if (parameter == nullptr) throw InvalidInput(key, "(given)", "not a key of model " + model.name);
+            put(definition.parameters, *parameter, value);
+        }
+    }
+    return definition;
+}
+
+namespace {
+// The [material] table of a converted material's model (ConvertedMaterial::_definition, its pickle).
+py::dict definition_table(const ConvertedMaterial& material) { return model_table(material.definition); }
 }  // namespace
 
 py::object material_object(rheology::ModelMaterial material) {
@@ -234,7 +235,7 @@ void bind_converted_material(py::module_& module) {
             rheology::Rheology(s[0].cast<double>(), s[1].cast<double>(), std::move(terms)),
             Certificate{s[3].cast<double>(), std::move(window), s[7].cast<double>(), s[8].cast<std::string>()},
             {}, s[10].cast<bool>()};
-        restore_definition(material, s[9].cast<py::dict>());
+        material.definition = model_definition(s[9].cast<py::dict>());
         return material;
     };
     py::class_<ConvertedMaterial, rheology::Rheology>(module, "ConvertedMaterial",

@@ -1,6 +1,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <thread>
@@ -70,6 +71,36 @@ py::dict sweep_table(const Model& model, const py::list& specs, unsigned jobs, c
     return out;
 }
 
+using Points = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// The rows (summaries, errors) of `model` (an io::CaseTemplate or io::SweepCase) at the points (rows x keys) on `jobs`
+// threads, as _sweep_points returns them; the keys checked first (validate_sweep).
+template <class Model>
+py::tuple points_rows(const Model& model, const std::vector<std::string>& keys, const Points& points, unsigned jobs) {
+    if (points.ndim() != 2 || static_cast<std::size_t>(points.shape(1)) != keys.size()) {
+        throw InvalidInput("points", "array", "must have one column per key");
+    }
+    std::vector<io::SweepAxis> axes;
+    for (const auto& key : keys) axes.push_back({key, {}});
+    io::validate_sweep(model, axes);
+    const auto view = points.unchecked<2>();
+    std::vector<std::vector<double>> rows_in(static_cast<std::size_t>(points.shape(0)));
+    for (std::size_t r = 0; r < rows_in.size(); ++r) {
+        for (std::size_t a = 0; a < keys.size(); ++a) rows_in[r].push_back(view(r, a));
+    }
+    std::vector<io::SweepRow> rows;
+    {
+        py::gil_scoped_release release;
+        rows = io::run_sweep_points(model, keys, std::move(rows_in), std::max(jobs, 1u), {});
+    }
+    py::list summaries, errors;
+    for (const auto& row : rows) {
+        summaries.append(document_object(Document{row.summary}));
+        errors.append(row.error);
+    }
+    return py::make_tuple(summaries, errors);
+}
+
 }  // namespace
 
 void bind_sweep(py::module_& module) {
@@ -126,36 +157,20 @@ void bind_sweep(py::module_& module) {
     module.def(
         "_sweep_points",
         [](const py::object& case_, const std::string& source, const std::vector<std::string>& keys,
-           const py::array_t<double, py::array::c_style | py::array::forcecast>& points, unsigned jobs) {
-            if (points.ndim() != 2 || static_cast<std::size_t>(points.shape(1)) != keys.size()) {
-                throw InvalidInput("points", "array", "must have one column per key");
-            }
-            std::vector<io::SweepAxis> axes;
-            for (const auto& key : keys) axes.push_back({key, {}});
-            const auto model = case_template(case_, source);
-            io::validate_sweep(model, axes);
-            const auto view = points.unchecked<2>();
-            std::vector<std::vector<double>> rows_in(static_cast<std::size_t>(points.shape(0)));
-            for (std::size_t r = 0; r < rows_in.size(); ++r) {
-                for (std::size_t a = 0; a < keys.size(); ++a) rows_in[r].push_back(view(r, a));
-            }
-            std::vector<io::SweepRow> rows;
-            {
-                py::gil_scoped_release release;
-                rows = io::run_sweep_points(model, keys, std::move(rows_in), std::max(jobs, 1u), {});
-            }
-            py::list summaries, errors;
-            for (const auto& row : rows) {
-                summaries.append(document_object(Document{row.summary}));
-                errors.append(row.error);
-            }
-            return py::make_tuple(summaries, errors);
+           const Points& points, unsigned jobs) {
+            return points_rows(case_template(case_, source), keys, points, jobs);
         },
         py::arg("case"), py::arg("source"), py::arg("keys"), py::arg("points"), py::arg("jobs") = 1,
         "Runs a case (TOML text or a dict tree) at the given points (rows x keys); returns (summaries, errors) in "
-        "row order, a summary a dict "
-        "({} where the point failed). The rows are those "
-        "of _sweep_case, bit for bit (mdr.distributed runs chunks of a sweep with it).");
+        "row order, a summary a dict ({} where the point failed). The rows are those of _sweep_case, bit for bit "
+        "(mdr.distributed runs chunks of a sweep with it).");
+    module.def(
+        "_sweep_contact_case_points",
+        [](const drivers::ContactCase& contact_case, const std::vector<std::string>& keys, const Points& points,
+           unsigned jobs) { return points_rows(io::CaseObjects(contact_case), keys, points, jobs); },
+        py::arg("case"), py::arg("keys"), py::arg("points"), py::arg("jobs") = 1,
+        "_sweep_points of an mdr.ContactCase, on its objects: the rows of _sweep_contact_case, bit for bit "
+        "(mdr.distributed runs chunks of a sweep of a case's objects with it, the case pickled).");
 }
 
 }  // namespace mdr::python

@@ -35,6 +35,11 @@ struct ConvertedMaterial : rheology::Rheology {
 /// and definition: a factory's, or a case body's as the reader built it), else an mdr.Material, its series.
 pybind11::object material_object(rheology::ModelMaterial material);
 
+/// The [material] table of a model's definition (model, parameters, tolerance): what a case builds (converts) again.
+pybind11::dict model_table(const rheology::ModelDefinition& definition);
+/// The definition of a model_table (a pickle's), its inverse; mdr::InvalidInput for a key its model lacks.
+rheology::ModelDefinition model_definition(const pybind11::dict& table);
+
 /// mdr.Material: the canonical rheology and its factories.
 void bind_rheology(pybind11::module_& module);
 /// The factories of mdr.Material, one per registered material model, and its material_* properties (None).

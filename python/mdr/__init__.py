@@ -273,8 +273,8 @@ def sweep(case: Optional[RunCase] = None, vary: Optional[Mapping[str, Any]] = No
         every 0.2 s. An exception it raises stops the sweep and propagates (local sweeps).
     scheduler : str or distributed.Client, optional
         A Dask scheduler address ``"tcp://HOST:PORT"`` or a client: the points run in chunks on its workers
-        (docs/distributed.md), with the same rows bit for bit. Not with an ``mdr.ContactCase`` (its objects do not
-        travel to the workers; give its file or dict).
+        (docs/distributed.md), with the same rows bit for bit; an ``mdr.ContactCase`` travels to the workers
+        pickled with its typed parts (no text), each point set on its objects as locally.
     material, indenter, load, numerics, tangential, output, title
         The case's tables as keywords, as for `run` (``mdr.Material`` and ``mdr.Indenter`` objects or dicts).
 
@@ -293,7 +293,7 @@ def sweep(case: Optional[RunCase] = None, vary: Optional[Mapping[str, Any]] = No
     ValueError
         For `jobs` not an integer >= 1 (a bool included), or given with a scheduler.
     TypeError
-        For a case given both ways, or none, or an ``mdr.ContactCase`` with a scheduler.
+        For a case given both ways, or none.
 
     Examples
     --------
@@ -316,9 +316,6 @@ def sweep(case: Optional[RunCase] = None, vary: Optional[Mapping[str, Any]] = No
     progress = _callable_or_none(progress)
     given = _case_of(case, dict(title=title, material=material, indenter=indenter, load=load, tangential=tangential,
                                 output=output, numerics=numerics))
-    if isinstance(given, ContactCase) and scheduler is not None:
-        raise TypeError("scheduler: an mdr.ContactCase runs on the local cores only; give its case file or dict to "
-                        "run on a scheduler")
     specs = [_axis_spec(key, values) for key, values in vary.items()]
     batch = threads = None
     if scheduler is None:
@@ -329,9 +326,9 @@ def sweep(case: Optional[RunCase] = None, vary: Optional[Mapping[str, Any]] = No
             case_input, source = _case_input(given)
             raw = _mdr._sweep_case(case_input, source, specs, threads, progress)
     else:
-        case_input, source = _case_input(given)
         from . import distributed
 
+        case_input, source = (given, "") if isinstance(given, ContactCase) else _case_input(given)
         _, points, batch = distributed.sweep_rows(case_input, source, specs, scheduler)
         summaries = [row[0] for row in batch.outputs]
         raw = {"points": points, "summaries": summaries, "errors": [row[1] for row in batch.outputs],

@@ -359,16 +359,17 @@ def _each_item(function: Callable[[Any], Any], items: list) -> list[tuple[Any, s
     return outputs
 
 
-def sweep_chunk(case: str | dict[str, Any], source: str, keys: list[str],
+def sweep_chunk(case: str | dict[str, Any] | _mdr.ContactCase, source: str, keys: list[str],
                 points: Any) -> list[tuple[dict[str, Any], str]]:
     r"""The rows (summary, error) of a sweep at the given points, on one thread (the chunk task of a sweep).
 
     Parameters
     ----------
-    case : str or dict
-        The case as TOML text (a file's) or as its plain tree of dicts, lists and numbers (what `mdr.sweep` sends).
+    case : str or dict or mdr.ContactCase
+        The case as TOML text (a file's), as its plain tree of dicts, lists and numbers, or as objects (an
+        ``mdr.ContactCase``, pickled with its typed parts: each point set on its objects, as `mdr.sweep` does).
     source : str
-        The case's name in messages (its file name).
+        The case's name in messages (its file name; not used with an ``mdr.ContactCase``).
     keys : list of str
         The varied dotted keys, e.g. ``"material.G"`` or ``"load.history[1][1]"``.
     points : array-like
@@ -393,21 +394,30 @@ def sweep_chunk(case: str | dict[str, Any], source: str, keys: list[str],
     >>> [round(summary["max_force"] / rows[0][0]["max_force"], 6) for summary, _ in rows], [e for _, e in rows]
     ([1.0, 4.0], ['', ''])
     """
-    summaries, errors = _mdr._sweep_points(case, source, keys, points, 1)
+    summaries, errors = _points_rows(case, source, keys, points)
     return list(zip(summaries, errors))
 
 
-def sweep_rows(case: str | dict[str, Any], source: str, specs: list[str], scheduler: Any,
+def _points_rows(case: str | dict[str, Any] | _mdr.ContactCase, source: str, keys: list[str],
+                 points: Any) -> tuple[list, list]:
+    """(summaries, errors) of the case at the points on one thread: of its objects for an mdr.ContactCase."""
+    if isinstance(case, _mdr.ContactCase):
+        return _mdr._sweep_contact_case_points(case, keys, points, 1)
+    return _mdr._sweep_points(case, source, keys, points, 1)
+
+
+def sweep_rows(case: str | dict[str, Any] | _mdr.ContactCase, source: str, specs: list[str], scheduler: Any,
                progress: Callable[[int, int], None] | None = None) -> tuple[list[str], Any, MapOutcome]:
     r"""The rows of a sweep run in chunks through a Dask scheduler (`mdr.sweep` with ``scheduler=``), the same rows
     as the local sweep's, bit for bit.
 
     Parameters
     ----------
-    case : str or dict
-        The case as TOML text (a file's) or as its plain tree of dicts, lists and numbers (what `mdr.sweep` sends).
+    case : str or dict or mdr.ContactCase
+        The case as TOML text (a file's), as its plain tree of dicts, lists and numbers, or as objects (an
+        ``mdr.ContactCase``, which pickles with its typed parts; the rows of its local sweep, bit for bit).
     source : str
-        The case's name in messages (its file name).
+        The case's name in messages (its file name; not used with an ``mdr.ContactCase``).
     specs : list of str or (str, list of float)
         One axis each, ``"KEY=V1,V2,..."``, ``"KEY=START:STOP:COUNT[:log]"`` or ``(KEY, [V1, V2, ...])`` (the last
         varies fastest).
@@ -446,7 +456,7 @@ def sweep_rows(case: str | dict[str, Any], source: str, specs: list[str], schedu
     ...                                   "tcp://127.0.0.1:8786")      # doctest: +SKIP
     """
     keys, points = _mdr._sweep_grid(specs)
-    _mdr._sweep_points(case, source, keys, points[:0], 1)  # validates the case and the keys here, first
+    _points_rows(case, source, keys, points[:0])  # validates the case and the keys here, first
     outcome = ordered_map(functools.partial(sweep_chunk, case, source, keys),
                           lambda start, stop: points[start:stop], len(points), scheduler=scheduler, progress=progress)
     return keys, points, outcome

@@ -62,6 +62,7 @@ drivers::ContactCase assemble_case(CaseParts parts, const BodiesBuilder& bodies)
         parts.indenter = std::move(brought.indenter);
     }
     if (brought.history) parts.load.history = std::move(brought.history);
+    const bool end_given = parts.end.has_value();
     if (!parts.end && parts.load.history) {  // without a history drivers::validate refuses the case
         parts.end = default_end_time(parts.load, drivers::ends_by_stop_rule(parts.control), parts.tangential);
     }
@@ -76,7 +77,8 @@ drivers::ContactCase assemble_case(CaseParts parts, const BodiesBuilder& bodies)
                                       .numerics = parts.numerics,
                                       .tangential = std::move(parts.tangential),
                                       .units = std::string(system.name),
-                                      .layer = parts.layer};
+                                      .layer = parts.layer,
+                                      .end_given = end_given};
     drivers::set_bodies(contact_case, std::move(given_bodies));
     drivers::validate(contact_case);
     drivers::validate_layer(contact_case);

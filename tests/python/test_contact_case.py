@@ -444,7 +444,7 @@ def test_a_bool_is_not_a_number_as_in_a_case_file(changes, key):
 
 
 def test_a_control_is_its_types_fields_and_its_repr_rebuilds_it():
-    """Each control's class is made from the fields its type declares (drivers::ControlField, load_control.hpp;
+    """Each control's class is made from the fields its type declares (drivers::ControlField, control_field.hpp;
     `_fields`): each is a property, each keyword field a keyword, and the repr is the constructor call that rebuilds
     an equal control (before, SpringControl's repr gave the number of pauses and ImpactControl's `oblique=...`)."""
     controls = [mdr.DisplacementControl(), mdr.ForceControl(),

@@ -152,25 +152,39 @@ def test_a_key_the_case_lacks_is_refused_as_by_the_file_sweep(tmp_path, key):
     assert str(from_objects.value).startswith(f"--vary = {key}: no such numeric key among those a case of objects")
 
 
-def test_a_key_the_objects_do_not_sweep_says_where_it_is_swept(tmp_path):
-    """A spring's constant is a number of the case, which the object sweep does not set yet: its message says so and
-    where it is swept (it said "no such numeric key in the case file" of a case whose file has it)."""
-    path = case_file(tmp_path, STANDARD_CASE.replace('control = "displacement"',
-                                                     'control = "spring"\nspring_constant = 0.1'))
-    mdr.sweep(path, {"load.spring_constant": [0.1]}, jobs=1)
-    with pytest.raises(mdr.InvalidInput, match="a control's own keys.* are swept from the case file or dict"):
-        mdr.sweep(mdr.ContactCase.from_file(path), {"load.spring_constant": [0.1]}, jobs=1)
+def test_an_end_given_equal_to_the_default_stays_given(tmp_path):
+    """`load.end = 1` equal to the history's last time: the file sweep stops there when the last point moves later,
+    and so do the objects (the case records that its end was given, ContactCase::end_given; before, the objects took
+    it for the default and ran to the new last time); `load.end` is then a key of both. Without `load.end` both run
+    to the history's new end."""
+    given = case_file(tmp_path, STANDARD_CASE.replace("[output]", "end = 1.0\n[output]"))
+    vary = {"load.history[2][0]": [1.0, 2.0]}
+    from_file = mdr.sweep(given, vary, jobs=1)
+    assert from_file["steps"][1] == pytest.approx(from_file["steps"][0], rel=0.2)  # both stop at 1 s
+    assert_same_tables(from_file, mdr.sweep(mdr.ContactCase.from_file(given), vary, jobs=1))
+    assert_same_tables(mdr.sweep(given, {"load.end": [0.8, 1.0]}, jobs=1),
+                       mdr.sweep(mdr.ContactCase.from_file(given), {"load.end": [0.8, 1.0]}, jobs=1))
+    as_objects = mdr.ContactCase(material=mdr.Material.elastic(G=1e3), indenter=mdr.Indenter.sphere(R=1e-5),
+                                 control=mdr.DisplacementControl(), history=RAMP_AND_HOLD, end=1.0,
+                                 numerics=mdr.Numerics(elements=300, time_step=0.01))
+    steps = mdr.sweep(as_objects, vary, jobs=1)["steps"]
+    assert steps[1] == pytest.approx(steps[0], rel=0.2)
+    default = case_file(tmp_path, STANDARD_CASE)
+    from_file = mdr.sweep(default, vary, jobs=1)
+    assert from_file["steps"][1] > 1.5 * from_file["steps"][0]  # the second runs to 2 s
+    assert_same_tables(from_file, mdr.sweep(mdr.ContactCase.from_file(default), vary, jobs=1))
 
 
-def test_an_oblique_impacts_friction_is_named_as_its_controls_key():
+def test_an_oblique_impacts_friction_is_its_controls():
     """An oblique impact's friction (`tangential.friction` in a file) is its control's (ImpactControl.oblique), which
-    the object sweep does not set: its message says so (before, it listed tangential.friction among the keys swept)."""
+    the object sweep sets by the key its part declares (before, it was refused)."""
     case = mdr.ContactCase(material=mdr.Material.elastic(G=1e6), indenter=mdr.Indenter.sphere(R=1e-3),
                            control=mdr.ImpactControl(mass=1e-3, velocity=0.1,
-                                                     oblique=mdr.ObliqueImpact(friction=0.3, spin=2.0)))
-    with pytest.raises(mdr.InvalidInput, match=r"tangential\.friction of a \[tangential\] load \(an oblique "
-                                               r"impact's is its control's\)"):
-        mdr.sweep(case, {"tangential.friction": [0.1]}, jobs=1)
+                                                     oblique=mdr.ObliqueImpact(friction=0.3, spin=2.0)),
+                           numerics=mdr.Numerics(elements=100))
+    table = mdr.sweep(case, {"tangential.friction": [0.3, 0.0]}, jobs=1)
+    assert list(table["error"]) == ["", ""]
+    assert table["max_force"][0] == mdr.run(case).summary["max_force"]
 
 
 def test_a_count_takes_integers_only():
@@ -180,10 +194,3 @@ def test_a_count_takes_integers_only():
     table = mdr.sweep(case, {"numerics.elements": [300, 600, 2.5]}, jobs=1)
     assert list(table["elements"][:2]) == [300, 600]
     assert list(table["error"]) == ["", "", "numerics.elements = 2.5: must be an integer >= 1"]
-
-
-def test_an_object_case_runs_on_local_cores_only():
-    case = mdr.ContactCase(material=mdr.Material.elastic(G=1e3), indenter=mdr.Indenter.sphere(R=1e-5),
-                           control=mdr.DisplacementControl(), history=RAMP_AND_HOLD)
-    with pytest.raises(TypeError, match="scheduler"):
-        mdr.sweep(case, {"indenter.R": [1e-5]}, scheduler="tcp://127.0.0.1:1")

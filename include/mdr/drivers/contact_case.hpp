@@ -92,6 +92,9 @@ struct ContactCase {
     /// the `material`, `shear_material`, `bulk_material`, `tangential_exact` and `material_origin` the drivers read;
     /// whoever replaces those clears this (validate refuses a material or origin not theirs). Absent: none given.
     std::optional<rheology::ContactBodies> bodies{};
+    /// True when `end_time` was given (`load.end`, io::assemble_case); false: it is the load's default end
+    /// (io::default_end_time), which follows the load when a sweep changes it, as a case file without `load.end`.
+    bool end_given = false;
 };
 
 /// Sets the material of `contact_case` from its bodies: `material`, `shear_material`, `bulk_material`,

@@ -9,45 +9,15 @@
 #include <variant>
 #include <vector>
 
+#include "mdr/drivers/control_field.hpp"
 #include "mdr/drivers/force_pause.hpp"
 #include "mdr/drivers/shore.hpp"
 
 namespace mdr::drivers {
 
-/// One field of a control type, as its Python class shows it (python/bindings/bind_controls.cpp): a keyword of the
-/// constructor and a read-only property. The type of `member` says whether the keyword is required: a number is,
-/// an optional part defaults to None and a list to empty.
-template <class Control, class Value>
-struct ControlField {
-    using Type = Control;
-    using ValueType = Value;
-    const char* name;           ///< the keyword and property, e.g. "spring_constant"
-    Value Control::*member;     ///< the field it sets and reads
-    const char* unit;           ///< SI unit of its numbers, e.g. "N/m"; "" for none
-    const char* documentation;  ///< one line, naming the case file's key
-};
-
-/// A part of a control type that the case brings (a Shore test's, given as the control itself): a read-only
-/// property of its Python class, no keyword.
-template <class Control, class Value>
-struct ControlPart : ControlField<Control, Value> {};
-
-/// The ControlField of `member`.
-template <class Control, class Value>
-constexpr ControlField<Control, Value> control_field(const char* name, Value Control::*member, const char* unit,
-                                                     const char* documentation) {
-    return {name, member, unit, documentation};
-}
-
-/// The ControlPart of `member`.
-template <class Control, class Value>
-constexpr ControlPart<Control, Value> control_part(const char* name, Value Control::*member, const char* unit,
-                                                   const char* documentation) {
-    return {{name, member, unit, documentation}};
-}
-
 /// Every control type declares `static constexpr auto fields()`: a std::tuple of its ControlField and ControlPart
-/// values, in the order of its Python keywords (none: an empty tuple).
+/// values (control_field.hpp), in the order of its Python keywords (none: an empty tuple); so does a part that holds
+/// numbers of the case file (ObliqueImpactLoad, ShoreTest), for their keys.
 
 /// The history prescribes the depth d(t); the force follows (eq. 16).
 struct DisplacementControl {
@@ -72,10 +42,10 @@ struct SpringControl {
     /// spring_constant and force_pauses; shore, the part a Shore test brings.
     static constexpr auto fields() {
         return std::tuple{
-            control_field("spring_constant", &SpringControl::spring_constant, "N/m", "k > 0 (`load.spring_constant`)"),
+            control_field("spring_constant", &SpringControl::spring_constant, "N/m", "k > 0", "load.spring_constant"),
             control_field("force_pauses", &SpringControl::force_pauses, "s",
-                          "pauses (start, end) over which the instrument's feedback holds the force "
-                          "(`load.force_pauses`)"),
+                          "pauses (start, end) over which the instrument's feedback holds the force",
+                          "load.force_pauses"),
             control_part("shore", &SpringControl::shore, "", "the Shore test of a durometer's spring, or None")};
     }
 };
@@ -90,6 +60,17 @@ struct ObliqueImpactLoad {
     /// I [kg m^2] about the centre; absent: a solid sphere's 2/5 m R^2 (oblique_sphere). The lever R is the
     /// indenter's: an oblique impact needs a sphere (drivers::validate).
     std::optional<double> moment_of_inertia{};
+
+    /// Its numbers and their keys (not its Python class's: mdr.ObliqueImpact is bound by hand).
+    static constexpr auto fields() {
+        return std::tuple{
+            control_field("friction", &ObliqueImpactLoad::friction, "", "mu >= 0", "tangential.friction"),
+            control_field("tangential_velocity", &ObliqueImpactLoad::tangential_velocity, "m/s",
+                          "v_t0 of the centre at first contact", "load.tangential_velocity"),
+            control_field("spin", &ObliqueImpactLoad::spin, "rad/s", "omega0 at first contact", "load.spin"),
+            control_field("moment_of_inertia", &ObliqueImpactLoad::moment_of_inertia, "kg m^2",
+                          "I about the centre", "indenter.moment_of_inertia")};
+    }
 };
 
 /// A rigid indenter of given mass and approach speed hits the surface at t = 0 (eq. 37); the case's history is
@@ -101,12 +82,11 @@ struct ImpactControl {
 
     /// mass, velocity and oblique.
     static constexpr auto fields() {
-        return std::tuple{control_field("mass", &ImpactControl::mass, "kg",
-                                        "m of the rigid indenter (`indenter.mass`)"),
+        return std::tuple{control_field("mass", &ImpactControl::mass, "kg", "m of the rigid indenter", "indenter.mass"),
                           control_field("velocity", &ImpactControl::velocity, "m/s",
-                                        "the approach speed v0 > 0 at first contact (`load.velocity`)"),
+                                        "the approach speed v0 > 0 at first contact", "load.velocity"),
                           control_field("oblique", &ImpactControl::oblique, "",
-                                        "the tangential part of an oblique impact")};
+                                        "the tangential part of an oblique impact", "")};
     }
 };
 

@@ -9,7 +9,9 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <tuple>
 
+#include "mdr/drivers/control_field.hpp"
 #include "mdr/drivers/load_history.hpp"
 #include "mdr/profile/profile.hpp"
 
@@ -69,6 +71,12 @@ struct ShoreTest {
     ShoreScale scale = ShoreScale::A;
     double duration = shore_default_duration;  ///< [s] > 0
     Durometer instrument{};                    ///< in the case's units
+
+    /// Its number and its key (the scale is a name; not its Python class's: mdr.ShoreTest is bound by hand).
+    static constexpr auto fields() {
+        return std::tuple{control_field("duration", &ShoreTest::duration, "s", "the test's duration > 0",
+                                        "load.duration")};
+    }
 };
 
 /// The Shore test of `scale` lasting `duration` [s] in the case's units (durometer). Throws mdr::InvalidInput

@@ -62,6 +62,32 @@ def test_chunks_keep_the_overhead_below_ten_percent(cluster, light_case):
     assert overhead < 0.1 * remote.batch.compute_seconds, (remote.batch.tasks, remote.batch.compute_seconds)
 
 
+def test_a_case_of_objects_through_the_scheduler_is_its_local_sweep(cluster, light_case):
+    """An mdr.ContactCase travels to the workers pickled over its typed parts (no text) and each point is set on its
+    objects there: the table of its local sweep bit for bit, and of its dict's (before, a ContactCase with a
+    scheduler was refused: it did not pickle)."""
+    case = mdr.ContactCase.from_dict(light_case)
+    vary = {"material.tau1": "1e-5:1e-1:40:log", "indenter.mass": [3.27e-2, -1.0, 6.5e-2]}
+    local = mdr.sweep(case, vary)
+    assert np.count_nonzero(local["error"] == "") == 80
+    remote = mdr.sweep(case, vary, scheduler=cluster.address)
+    assert_same_table(local, remote)
+    assert remote.batch.workers == 2 and remote.batch.tasks > 1
+    assert_same_table(mdr.sweep(light_case, vary), remote)
+
+
+def test_a_converted_material_keeps_its_certificate_on_the_workers(cluster):
+    """The factory's power law (converted over (1e-5, 100) s, tolerance 1e-3) runs on the workers on that series with
+    that certificate, as locally."""
+    cell = mdr.Material.power_law(G0=1e3, beta=0.2, window=(1e-5, 100.0), tolerance=1e-3)
+    case = mdr.ContactCase(material=cell, indenter=mdr.Indenter.sphere(R=1e-5), control=mdr.DisplacementControl(),
+                           history=[(0.0, 0.0), (0.5, 1e-6), (1.0, 1e-6)], numerics=mdr.Numerics(elements=100))
+    vary = {"indenter.R": [1e-5, 2e-5, 3e-5]}
+    remote = mdr.sweep(case, vary, scheduler=cluster.address)
+    assert list(remote["material_error"]) == [cell.material_error] * 3
+    assert_same_table(mdr.sweep(case, vary), remote)
+
+
 def test_bad_input_is_refused_before_anything_is_sent(cluster, light_case):
     with pytest.raises(ValueError, match="no such numeric key"):
         mdr.sweep(light_case, {"material.nope": [1.0]}, scheduler=cluster.address)
