@@ -6,11 +6,12 @@
 #include <filesystem>
 
 #include "mdr/fit/curve.hpp"
+#include "mdr/fitcase/curve_source.hpp"
 
 namespace {
 
-mdr::fit::CurveSource chiaro() {
-    mdr::fit::CurveSource source;
+mdr::fitcase::CurveSource chiaro() {
+    mdr::fitcase::CurveSource source;
     source.file = std::filesystem::path(MDR_MEASURED_DATA) / "chiaro_AEBP1_002.csv";
     source.time_column = "t_s";
     source.piezo_column = "z_piezo_m";
@@ -20,18 +21,18 @@ mdr::fit::CurveSource chiaro() {
 }
 
 void fit_load_curve(benchmark::State& state) {
-    const mdr::fit::CurveSource source = chiaro();
+    const mdr::fitcase::CurveSource source = chiaro();
     if (!std::filesystem::exists(source.file)) return state.SkipWithError("no shared data");
     std::size_t rows = 0;
-    for (auto _ : state) rows = mdr::fit::load_curve(source).time.size();
+    for (auto _ : state) rows = mdr::fitcase::load_curve(source).time.size();
     state.counters["rows"] = static_cast<double>(rows);
 }
 BENCHMARK(fit_load_curve)->Unit(benchmark::kMillisecond);
 
 void fit_estimate_contact(benchmark::State& state) {
-    const mdr::fit::CurveSource source = chiaro();
+    const mdr::fitcase::CurveSource source = chiaro();
     if (!std::filesystem::exists(source.file)) return state.SkipWithError("no shared data");
-    mdr::fit::Curve curve = mdr::fit::load_curve(source);
+    mdr::fit::Curve curve = mdr::fitcase::load_curve(source);
     for (auto _ : state) {
         mdr::fit::estimate_contact(curve);
         benchmark::DoNotOptimize(curve.contact_depth);

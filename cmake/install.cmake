@@ -14,8 +14,8 @@ set(MDR_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/mdr CACHE STRING
 install(TARGETS mdr RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS mdr_core mdr_io EXPORT mdrTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 # mdr::fit links Ceres: its own export set, loaded only for find_package(mdr COMPONENTS fit) (mdrConfig.cmake.in).
-# It links mdr_instrument (the instrument readers) and through it libzip and libdeflate (Debian: libzip-dev,
-# libdeflate-dev). mdr::fitcase (fit cases: mdr::io and mdr::fit together) needs what both need, so it is in that set.
+# mdr::fitcase (fit cases: mdr::io and mdr::fit together) needs what both need, so it is in that set; it links
+# mdr_instrument (the instrument readers) and through it libzip and libdeflate (Debian: libzip-dev, libdeflate-dev).
 install(TARGETS mdr_fit mdr_fitcase mdr_instrument mdr_libzip mdr_libdeflate EXPORT mdrFitTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY include/mdr DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")

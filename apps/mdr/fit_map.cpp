@@ -7,7 +7,7 @@
 
 #include "interrupt.hpp"
 #include "mdr/error.hpp"
-#include "mdr/fit/instrument_curve.hpp"
+#include "mdr/fitcase/instrument_curve.hpp"
 #include "mdr/fitcase/map_fit.hpp"
 #include "mdr/instrument/read_curves.hpp"
 #include "mdr/parallel/run_on_threads.hpp"
@@ -21,7 +21,7 @@ bool run_map(const fitcase::FitCase& fit_case, const std::string& map, const io:
     const std::filesystem::path path = std::filesystem::absolute(map);
     instrument::CurveFile file = [&] {
         try {
-            return instrument::CurveFile(path, fit::read_options(fit_case.data.front()));
+            return instrument::CurveFile(path, fitcase::read_options(fit_case.data.front()));
         } catch (const InvalidInput& error) {
             throw InvalidInput("--map", error.key() + ": " + error.value(), error.rule());
         }

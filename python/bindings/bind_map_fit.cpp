@@ -22,7 +22,7 @@
 #include "python_interrupt.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/curve.hpp"
-#include "mdr/fit/instrument_curve.hpp"
+#include "mdr/fitcase/instrument_curve.hpp"
 #include "mdr/fitcase/map_fit.hpp"
 #include "mdr/instrument/read_curves.hpp"
 #include "mdr/io/document.hpp"
@@ -41,7 +41,7 @@ py::tuple fit_map_file(const py::object& case_, const std::string& source, const
                        const std::string& map, const py::object& workers, const py::object& progress) {
     auto fit_case = fitcase::parse_fit_case(case_template(case_, source), directory);
     fitcase::require_map_case(fit_case);
-    instrument::CurveFile file(map, fit::read_options(fit_case.data.front()));
+    instrument::CurveFile file(map, fitcase::read_options(fit_case.data.front()));
     fitcase::require_map_time(file, fit_case, map);
     const fitcase::MapLayout layout = fitcase::map_layout(file, fit_case);
     const auto threads = workers(file.size()).cast<unsigned>();

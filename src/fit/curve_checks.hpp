@@ -1,5 +1,6 @@
 #pragma once
-// The rules every measured curve obeys, shared by make_curve (arrays) and load_curve (a CSV file).
+// The rules every measured curve obeys, shared by make_curve (arrays) and the fit case's readers of files
+// (src/fitcase: fitcase::load_curve, fitcase::instrument_fit_curve), which include this header of fit.
 
 #include <functional>
 #include <string>

@@ -12,7 +12,7 @@ std::vector<fit::Curve> load_curves(const FitCase& fit_case) {
     std::vector<fit::Curve> curves;
     for (std::size_t i = 0; i < fit_case.data.size(); ++i) {
         try {
-            curves.push_back(fit::load_curve(fit_case.data[i]));
+            curves.push_back(load_curve(fit_case.data[i]));
         } catch (const InvalidInput& error) {
             const std::string key =
                 i < fit_case.data_keys.size() ? fit_case.data_keys[i] : fmt::format("fit.data[{}]", i);

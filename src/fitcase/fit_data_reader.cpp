@@ -46,7 +46,7 @@ namespace {
 // The keys of a [[fit.data]] table for an instrument file: curve, and the calibration of a file that records none
 // (spring_constant in N/m, sensitivity in m/V, as instrument::ReadOptions; the reader refuses them for a file that
 // states its own); units are the file's.
-void read_instrument_keys(TableReader& table, const UnitSystem& system, fit::CurveSource& source) {
+void read_instrument_keys(TableReader& table, const UnitSystem& system, CurveSource& source) {
     if (table.has("units")) {
         throw InvalidInput(table.key_path("units"), table.text("units"),
                            "is stated by the instrument file (its numbers are SI; spring_constant in N/m, "
@@ -67,7 +67,7 @@ void read_instrument_keys(TableReader& table, const UnitSystem& system, fit::Cur
 }
 
 // The keys of a [[fit.data]] table for a CSV file: its columns, units and spring constant.
-void read_column_keys(TableReader& table, const UnitSystem& system, fit::CurveSource& source) {
+void read_column_keys(TableReader& table, const UnitSystem& system, CurveSource& source) {
     source.time_column = table.string("time");
     source.depth_column = table.optional_string("depth").value_or("");
     source.force_column = table.optional_string("force").value_or("");
@@ -95,12 +95,12 @@ void read_column_keys(TableReader& table, const UnitSystem& system, fit::CurveSo
 
 }  // namespace
 
-fit::CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory,
+CurveSource read_fit_data(TableReader& table, const std::filesystem::path& case_directory,
                                const UnitSystem& system) {
     table.reject_unknown({"kind", "file", "name", "time", "depth", "force", "piezo", "deflection", "spring_constant",
                           "units", "segment_column", "segments", "fitted", "until", "window", "curve",
                           "sensitivity", "start"});
-    fit::CurveSource source;
+    CurveSource source;
     const std::filesystem::path file = table.string("file");
     source.file = file.is_absolute() ? file : case_directory / file;
     source.name = table.optional_string("name").value_or("");

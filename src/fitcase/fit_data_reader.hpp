@@ -8,6 +8,7 @@
 
 #include "mdr/fit/curve.hpp"
 #include "mdr/fit/rebound.hpp"
+#include "mdr/fitcase/curve_source.hpp"
 #include "mdr/io/units.hpp"
 #include "io/toml_reader.hpp"
 
@@ -20,8 +21,8 @@ namespace mdr::fitcase {
 /// `spring_constant` and `segment_column` are refused (the file states them). Refuses unknown
 /// keys (suggesting the nearest) and values of the wrong type; the rules that relate the keys (one depth source,
 /// the spring constant with the AFM columns, ...) are load_curve's, checked when the curve is loaded.
-fit::CurveSource read_fit_data(io::TableReader& table, const std::filesystem::path& case_directory,
-                               const io::UnitSystem& system);
+CurveSource read_fit_data(io::TableReader& table, const std::filesystem::path& case_directory,
+                          const io::UnitSystem& system);
 
 /// The ReboundSource of a `[[fit.data]]` table with `kind = "rebound"`: `file`, `name`, the column keys
 /// `velocity`, `restitution`, `contact_time`, the uncertainties `restitution_error` and `contact_time_error` (a

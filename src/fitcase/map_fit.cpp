@@ -13,10 +13,10 @@
 #include <variant>
 
 #include "mdr/error.hpp"
-#include "mdr/fit/instrument_curve.hpp"
 #include "mdr/fit/plausibility.hpp"
 #include "mdr/document.hpp"
 #include "mdr/fitcase/fit_case_run.hpp"
+#include "mdr/fitcase/instrument_curve.hpp"
 #include "mdr/io/csv_field.hpp"
 #include "mdr/io/document.hpp"
 #include "mdr/io/free_key_units.hpp"
@@ -117,12 +117,12 @@ PixelFit fit_map_pixel(const FitCase& fit_case, const std::filesystem::path& pat
             pixel.row = raw.position.row;
         }
         FitCase one = fit_case;
-        fit::CurveSource& source = one.data.front();
+        CurveSource& source = one.data.front();
         source.file = path;
         source.instrument = true;
         source.curve = index;
         double tip_height_zero = 0.0;
-        fit::Curve curve = fit::instrument_fit_curve(raw, source, &tip_height_zero);
+        fit::Curve curve = instrument_fit_curve(raw, source, &tip_height_zero);
         fit_pixel(one, std::move(curve), tip_height_zero, pixel);
     } catch (const Interrupted&) {
         throw;
@@ -165,7 +165,7 @@ std::vector<PixelFit> fit_map_pixels(const FitCase& fit_case, const std::filesys
         [&](std::size_t index, unsigned worker, const std::atomic<bool>& stop) {
             Worker& own = workers[worker];
             if (!own.fit_case) {
-                own.file.emplace(path, fit::read_options(fit_case.data.front()));
+                own.file.emplace(path, read_options(fit_case.data.front()));
                 own.fit_case = fit_case;
                 own.fit_case->settings.on_iteration = nullptr;  // a map reports pixels, not the iterations of each
                 own.fit_case->settings.check_interrupt = [&stop, check = fit_case.settings.check_interrupt] {

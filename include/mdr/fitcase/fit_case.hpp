@@ -13,6 +13,7 @@
 #include "mdr/fit/curve.hpp"
 #include "mdr/fit/fit.hpp"
 #include "mdr/fit/rebound.hpp"
+#include "mdr/fitcase/curve_source.hpp"
 #include "mdr/io/case_template.hpp"
 
 namespace mdr::fitcase {
@@ -24,7 +25,7 @@ struct FitCase {
     std::vector<fit::FreeParameter> parameters;  ///< `fit.free`, with `fit.bounds` and `fit.start`
     fit::FitSettings settings;                   ///< `fit.fitted`, `contact_point`, `baseline`, `max_iterations`,
                                                  ///< `elements`
-    std::vector<fit::CurveSource> data;          ///< `[[fit.data]]`, paths relative to the case file's directory
+    std::vector<CurveSource> data;               ///< `[[fit.data]]`, paths relative to the case file's directory
     bool had_load = false;                       ///< the case gave its own `[load]`
     fit::CandidateSettings model_choice{};       ///< `fit.candidates` and `[fit.spectrum]` (fit_candidates)
     std::vector<fit::ReboundSource> rebounds{};  ///< `[[fit.data]]` with `kind = "rebound"`

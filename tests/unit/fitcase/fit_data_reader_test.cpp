@@ -11,7 +11,7 @@
 namespace mdr::fitcase {
 namespace {
 
-fit::CurveSource read(const std::string& text, const std::filesystem::path& directory = "/cases",
+CurveSource read(const std::string& text, const std::filesystem::path& directory = "/cases",
                       const std::string& units = "SI") {
     const toml::table table = toml::parse(text);
     io::TableReader reader(table, "fit.data[0]");
@@ -28,7 +28,7 @@ std::string message(const std::string& text) {
 }
 
 TEST(FitDataReader, MapsEveryKey) {
-    const fit::CurveSource source = read(R"(
+    const CurveSource source = read(R"(
         file = "data/curve.csv"
         name = "cell 1"
         time = "t"
@@ -55,7 +55,7 @@ TEST(FitDataReader, MapsEveryKey) {
 }
 
 TEST(FitDataReader, DefaultsAndAbsolutePaths) {
-    const fit::CurveSource source = read(R"(
+    const CurveSource source = read(R"(
         file = "/data/curve.csv"
         time = "t_s"
         depth = "indentation_m"
@@ -100,7 +100,7 @@ TEST(FitDataReader, UnitsConvertToTheCasesSystem) {
         return read("file = \"c.csv\"\ntime = \"t\"\nspring_constant = 0.02\nunits = " + units + "\n", "/cases",
                     "um-nN-s");
     };
-    const fit::CurveSource named =
+    const CurveSource named =
         in_cells("{ time = \"ms\", length = \"nm\", force = \"pN\", spring_constant = \"N/m\" }");
     EXPECT_DOUBLE_EQ(named.time_unit, 1e-3);
     EXPECT_DOUBLE_EQ(named.length_unit, 1e-3);
@@ -110,7 +110,7 @@ TEST(FitDataReader, UnitsConvertToTheCasesSystem) {
     EXPECT_DOUBLE_EQ(in_cells("{ spring_constant = \"nN/um\" }").spring_constant_unit, 1.0);
     EXPECT_DOUBLE_EQ(in_cells("{ spring_constant = \"pN/nm\" }").spring_constant_unit, 1.0);  // 1e-12 / 1e-9 N/m
     EXPECT_DOUBLE_EQ(in_cells("{ spring_constant = \"mN/m\" }").spring_constant_unit, 1.0);   // 1 mN/m = 1 nN/um
-    const fit::CurveSource si = in_cells("{ length = \"m\", force = 1.0, spring_constant = \"N/m\" }");
+    const CurveSource si = in_cells("{ length = \"m\", force = 1.0, spring_constant = \"N/m\" }");
     EXPECT_DOUBLE_EQ(si.length_unit, 1e6);
     EXPECT_DOUBLE_EQ(si.force_unit, 1e9);
     EXPECT_EQ(in_cells("{ spring_constant = \"N/m\" }").length_unit, 1.0);

@@ -10,10 +10,12 @@
 
 #include "mdr/error.hpp"
 #include "mdr/fit/curve.hpp"
+#include "mdr/fitcase/curve_source.hpp"
 
-namespace mdr::fit {
+namespace mdr::fitcase {
 namespace {
 namespace fs = std::filesystem;
+using fit::Curve;
 
 class LoadCurveTest : public ::testing::Test {
 protected:
@@ -266,9 +268,9 @@ TEST_F(LoadCurveTest, RefusesUnitsThatAreNotPositive) {
 }
 
 }  // namespace
-}  // namespace mdr::fit
+}  // namespace mdr::fitcase
 
-namespace mdr::fit {
+namespace mdr::fitcase {
 namespace {
 
 // A unit or spring constant that takes a file's values out of what the fit can weigh (curve_value_in_range) is named
@@ -297,4 +299,4 @@ TEST_F(LoadCurveTest, NamesTheFactorThatTakesValuesOutOfRange) {
 }
 
 }  // namespace
-}  // namespace mdr::fit
+}  // namespace mdr::fitcase

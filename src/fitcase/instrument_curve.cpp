@@ -1,14 +1,15 @@
-#include "mdr/fit/instrument_curve.hpp"
+#include "mdr/fitcase/instrument_curve.hpp"
 
 #include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "curve_checks.hpp"
+#include "fit/curve_checks.hpp"
 #include "mdr/error.hpp"
+#include "mdr/fit/curve.hpp"
 
-namespace mdr::fit {
+namespace mdr::fitcase {
 namespace {
 
 std::string in_quotes(const std::string& text) { return "\"" + message_text(text) + "\""; }
@@ -67,7 +68,7 @@ void check_instrument_source(const CurveSource& source) {
     }
 }
 
-Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& source, double* tip_height_zero) {
+fit::Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& source, double* tip_height_zero) {
     check_instrument_source(source);
     const std::string file_name = source.file.filename().string();
     const bool has_time = !raw.time.empty();
@@ -89,7 +90,7 @@ Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& sour
         deflection.push_back(raw.deflection[i]);
     }
     // The CSV path's rule for raw AFM columns (load_curve): force = k x deflection, depth from the tip height.
-    DepthAndForce converted = afm_depth_and_force(height, deflection, raw.spring_constant);
+    fit::DepthAndForce converted = fit::afm_depth_and_force(height, deflection, raw.spring_constant);
     if (tip_height_zero && !height.empty()) *tip_height_zero = (height[0] + deflection[0]) * source.length_unit;
     for (double& depth : converted.depth) depth *= source.length_unit;
     for (double& force : converted.force) force *= source.force_unit;
@@ -101,17 +102,17 @@ Curve instrument_fit_curve(const instrument::Curve& raw, const CurveSource& sour
         name = source.file.stem().string();
         if (source.curve) name += '#' + std::to_string(*source.curve);
     }
-    Curve curve = checked_curve(std::move(name), std::move(time), std::move(converted.depth),
-                                std::move(converted.force), origin, [&](std::size_t i) {
-                                    return "in " + origin + ", sample " + std::to_string(samples[i]);
-                                });
+    fit::Curve curve = fit::checked_curve(std::move(name), std::move(time), std::move(converted.depth),
+                                          std::move(converted.force), origin, [&](std::size_t i) {
+                                              return "in " + origin + ", sample " + std::to_string(samples[i]);
+                                          });
     curve.fitted = source.fitted;
     curve.preloaded = source.preloaded;
     if (!has_time) {
         curve.file_without_time = file_name;
         curve.notes.push_back("no time recorded: fitted as elastic, rows in measurement order (time = row number)");
     }
-    select_rows(curve, source.rows);
+    fit::select_rows(curve, source.rows);
     return curve;
 }
 
@@ -132,7 +133,7 @@ std::size_t instrument_curve_index(const CurveSource& source, const instrument::
     return *source.curve;
 }
 
-Curve load_instrument_curve(const CurveSource& source) {
+fit::Curve load_instrument_curve(const CurveSource& source) {
     check_instrument_source(source);
     instrument::Curve raw;
     try {
@@ -150,4 +151,4 @@ Curve load_instrument_curve(const CurveSource& source) {
     return instrument_fit_curve(raw, source);
 }
 
-}  // namespace mdr::fit
+}  // namespace mdr::fitcase

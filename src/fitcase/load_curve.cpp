@@ -1,13 +1,14 @@
 #include <algorithm>
 #include <string>
 
-#include "curve_checks.hpp"
+#include "fit/curve_checks.hpp"
 #include "mdr/csv_columns.hpp"
 #include "mdr/error.hpp"
 #include "mdr/fit/curve.hpp"
-#include "mdr/fit/instrument_curve.hpp"
+#include "mdr/fitcase/curve_source.hpp"
+#include "mdr/fitcase/instrument_curve.hpp"
 
-namespace mdr::fit {
+namespace mdr::fitcase {
 namespace {
 
 std::string in_quotes(const std::string& text) { return "\"" + text + "\""; }
@@ -66,11 +67,11 @@ struct ColumnOrigin {
 /// curve_value_in_range to one that is not: the value itself is refused later by checked_curve, naming its column.
 void require_kept_in_range(double read, double converted, std::size_t row, const std::string& factor_key,
                            double factor, const ColumnOrigin& origin) {
-    if (!curve_value_in_range(read) || curve_value_in_range(converted)) return;
+    if (!fit::curve_value_in_range(read) || fit::curve_value_in_range(converted)) return;
     throw InvalidInput(factor_key, format_value(factor),
                        "takes " + format_value(read) + " of column " + in_quotes(origin.column) + " (in " +
                            origin.file_name + ", line " + std::to_string(origin.lines[row]) + ") to " +
-                           format_value(converted) + ", and a curve's value " + curve_value_rule());
+                           format_value(converted) + ", and a curve's value " + fit::curve_value_rule());
 }
 
 void scale(std::vector<double>& values, double factor, const std::string& factor_key, const ColumnOrigin& origin) {
@@ -83,23 +84,7 @@ void scale(std::vector<double>& values, double factor, const std::string& factor
 
 }  // namespace
 
-DepthAndForce afm_depth_and_force(const std::vector<double>& piezo, const std::vector<double>& deflection,
-                                  double spring_constant) {
-    require_positive("spring_constant", spring_constant);
-    if (deflection.size() != piezo.size()) {
-        throw InvalidInput("deflection", std::to_string(deflection.size()) + " values",
-                           "needs as many values as piezo (" + std::to_string(piezo.size()) + ")");
-    }
-    DepthAndForce curve{std::vector<double>(piezo.size()), std::vector<double>(piezo.size())};
-    const double first_height = piezo.empty() ? 0.0 : piezo[0] + deflection[0];
-    for (std::size_t i = 0; i < piezo.size(); ++i) {
-        curve.depth[i] = first_height - (piezo[i] + deflection[i]);
-        curve.force[i] = spring_constant * deflection[i];
-    }
-    return curve;
-}
-
-Curve load_curve(const CurveSource& source) {
+fit::Curve load_curve(const CurveSource& source) {
     if (source.instrument) return load_instrument_curve(source);
     check_source(source);
     const bool afm = is_afm(source);
@@ -122,7 +107,7 @@ Curve load_curve(const CurveSource& source) {
         scale(table.values[1], source.length_unit, "units.length", origin(source.piezo_column));
         scale(table.values[2], source.length_unit, "units.length", origin(source.deflection_column));
         const double spring_constant = *source.spring_constant * source.spring_constant_unit;
-        auto converted = afm_depth_and_force(table.values[1], table.values[2], spring_constant);
+        auto converted = fit::afm_depth_and_force(table.values[1], table.values[2], spring_constant);
         for (std::size_t i = 0; i < converted.force.size(); ++i) {
             require_kept_in_range(table.values[2][i], converted.force[i], i, "spring_constant",
                                   *source.spring_constant, origin(source.deflection_column));
@@ -140,14 +125,15 @@ Curve load_curve(const CurveSource& source) {
         origin_text += ", segments";
         for (const auto& segment : source.segments) origin_text += " " + segment;
     }
-    Curve curve = checked_curve(source.name.empty() ? source.file.stem().string() : source.name, std::move(time),
-                                std::move(depth), std::move(force), origin_text, [&](std::size_t i) {
-                                    return "in " + file_name + ", line " + std::to_string(lines[i]);
-                                });
+    fit::Curve curve = fit::checked_curve(source.name.empty() ? source.file.stem().string() : source.name,
+                                          std::move(time), std::move(depth), std::move(force), origin_text,
+                                          [&](std::size_t i) {
+                                              return "in " + file_name + ", line " + std::to_string(lines[i]);
+                                          });
     curve.fitted = source.fitted;
     curve.preloaded = source.preloaded;
-    select_rows(curve, source.rows);
+    fit::select_rows(curve, source.rows);
     return curve;
 }
 
-}  // namespace mdr::fit
+}  // namespace mdr::fitcase

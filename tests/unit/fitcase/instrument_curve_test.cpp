@@ -1,4 +1,4 @@
-// A fit's curve from an instrument file (mdr/fit/instrument_curve.hpp) against the CSV export of the same record:
+// A fit's curve from an instrument file (mdr/fitcase/instrument_curve.hpp) against the CSV export of the same record:
 // examples/data/jpk_sr_cell1-0001.csv was converted from the same member cell1-0001.jpk-force of afmformats'
 // 10.1002_btm2.10294_fig5d-cell1.zip by a script of its own (examples/data/README.md, the .json sidecar), not by mdr.
 #include <gtest/gtest.h>
@@ -10,12 +10,13 @@
 
 #include "mdr/error.hpp"
 #include "mdr/fit/curve.hpp"
-#include "mdr/fit/instrument_curve.hpp"
+#include "mdr/fitcase/curve_source.hpp"
+#include "mdr/fitcase/instrument_curve.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-using mdr::fit::CurveSource;
+using mdr::fitcase::CurveSource;
 
 CurveSource instrument_source(const std::string& name) {
     CurveSource source;
@@ -26,7 +27,7 @@ CurveSource instrument_source(const std::string& name) {
 
 std::string key_of(const CurveSource& source) {
     try {
-        mdr::fit::load_curve(source);
+        mdr::fitcase::load_curve(source);
     } catch (const mdr::InvalidInput& error) {
         return error.key() + " = " + error.value() + ": " + error.rule();
     }
@@ -47,8 +48,8 @@ TEST_P(InstrumentCurveRecord, RowsEqualTheCsvExportOfTheSameRecord) {
     csv.segments = {"pause", "extend"};
     CurveSource file = instrument_source("cell1-" + record + ".jpk-force");
     file.segments = {"pause", "extend"};
-    const auto expected = mdr::fit::load_curve(csv);
-    const auto actual = mdr::fit::load_curve(file);
+    const auto expected = mdr::fitcase::load_curve(csv);
+    const auto actual = mdr::fitcase::load_curve(file);
     ASSERT_EQ(actual.time.size(), expected.time.size());
     for (std::size_t i = 0; i < actual.time.size(); ++i) {
         // The CSV writes heights to 1e-13 m and deflections to 8 significant digits (the force within 1e-7).
@@ -68,8 +69,8 @@ TEST(InstrumentCurve, TheCaseUnitsScaleTheSiValues) {
     CurveSource micro = si;  // um-nN-s: 1e6 um per m, 1e9 nN per N
     micro.length_unit = 1e6;
     micro.force_unit = 1e9;
-    const auto a = mdr::fit::load_curve(si);
-    const auto b = mdr::fit::load_curve(micro);
+    const auto a = mdr::fitcase::load_curve(si);
+    const auto b = mdr::fitcase::load_curve(micro);
     ASSERT_EQ(a.depth.size(), b.depth.size());
     EXPECT_NEAR(b.depth.back(), a.depth.back() * 1e6, 1e-9 * std::abs(b.depth.back()));
     EXPECT_NEAR(b.force.back(), a.force.back() * 1e9, 1e-9 * std::abs(b.force.back()));
@@ -111,7 +112,7 @@ TEST(InstrumentCurve, AFileWithoutCalibrationTakesTheCasesAndAFileWithoutTimeGet
     source.rows.until = mdr::fit::Until::end;
     // Without time the rows' index in the file stands in for it (0, 1, 2, ...), and the curve names its file so
     // that a fit of a time-dependent material can refuse it (mdr::fit::validate).
-    const mdr::fit::Curve curve = mdr::fit::load_curve(source);
+    const mdr::fit::Curve curve = mdr::fitcase::load_curve(source);
     EXPECT_EQ(curve.file_without_time, "fmt-afm-workshop-fd_single_2018-08-01_13.06.09.csv");
     ASSERT_GE(curve.time.size(), 10u);
     for (std::size_t i = 0; i < curve.time.size(); ++i) EXPECT_EQ(curve.time[i], static_cast<double>(i)) << i;
@@ -128,7 +129,7 @@ TEST(InstrumentCurve, AFileWithoutCalibrationTakesTheCasesAndAFileWithoutTimeGet
     nova.spring_constant = 0.055;
     nova.sensitivity = 61.0;
     nova.rows.until = mdr::fit::Until::end;
-    const mdr::fit::Curve nova_curve = mdr::fit::load_curve(nova);
+    const mdr::fit::Curve nova_curve = mdr::fitcase::load_curve(nova);
     EXPECT_FALSE(nova_curve.file_without_time.empty());
     EXPECT_EQ(nova_curve.time.size(), 2000u);  // 1000 rows, each an extend and a retract sample
 }

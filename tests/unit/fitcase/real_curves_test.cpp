@@ -13,10 +13,13 @@
 #include <sstream>
 
 #include "mdr/fit/curve.hpp"
+#include "mdr/fitcase/curve_source.hpp"
 
-namespace mdr::fit {
+namespace mdr::fitcase {
 namespace {
 namespace fs = std::filesystem;
+using fit::Curve;
+using fit::Until;
 
 struct RealCurve {
     const char* name;
@@ -150,4 +153,4 @@ INSTANTIATE_TEST_SUITE_P(SharedData, RealCurves, ::testing::ValuesIn(real_curves
                          });
 
 }  // namespace
-}  // namespace mdr::fit
+}  // namespace mdr::fitcase
