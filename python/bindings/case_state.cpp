@@ -88,12 +88,9 @@ py::tuple contact_case_state(const drivers::ContactCase& contact_case) {
         body_state(contact_case.bodies->indenter));
 }
 
-drivers::ContactCase contact_case_of_state(const py::tuple& state) {
-    if (state.size() != case_fields) {
-        throw py::value_error(fmt::format("mdr.ContactCase pickle: {} fields, this mdr {} reads {}: a pickle is read "
-                                          "by the version of mdr that wrote it",
-                                          state.size(), MDR_VERSION, case_fields));
-    }
+namespace {
+
+drivers::ContactCase case_of_state(const py::tuple& state) {
     io::CaseParts parts{.title = state[0].cast<std::string>(), .units = state[1].cast<std::string>()};
     if (!state[2].is_none()) parts.indenter = state[2].cast<std::shared_ptr<profile::Profile>>();
     parts.control = state[3].cast<drivers::LoadControl>();
@@ -110,8 +107,26 @@ drivers::ContactCase contact_case_of_state(const py::tuple& state) {
     parts.numerics = state[8].cast<drivers::NumericsOptions>();
     parts.tangential = state[9].cast<std::optional<drivers::TangentialLoad>>();
     parts.layer = state[10].cast<std::optional<contact::Layer>>();
-    rheology::ContactBodies bodies{*body_of_state(state[11]), body_of_state(state[12])};
+    std::optional<rheology::Body> half_space = body_of_state(state[11]);
+    if (!half_space) throw py::value_error("mdr.ContactCase pickle: field 12 (the half-space's body) is None: not a "
+                                           "pickle that mdr wrote");
+    rheology::ContactBodies bodies{std::move(*half_space), body_of_state(state[12])};
     return io::assemble_case(std::move(parts), [&bodies](io::CaseParts&) { return std::move(bodies); });
+}
+
+}  // namespace
+
+drivers::ContactCase contact_case_of_state(const py::tuple& state) {
+    if (state.size() != case_fields) {
+        throw py::value_error(fmt::format("mdr.ContactCase pickle: {} fields, this mdr {} reads {}: a pickle is read "
+                                          "by the version of mdr that wrote it",
+                                          state.size(), MDR_VERSION, case_fields));
+    }
+    try {
+        return case_of_state(state);
+    } catch (const py::cast_error& error) {  // a field of another type: named as the case's other refusals are
+        throw py::value_error(fmt::format("mdr.ContactCase pickle: {}: not a pickle that mdr wrote", error.what()));
+    }
 }
 
 }  // namespace mdr::python

@@ -105,4 +105,10 @@ def test_a_pickle_of_another_layout_is_refused():
     copy = mdr.ContactCase.__new__(mdr.ContactCase)
     with pytest.raises(ValueError, match="mdr.ContactCase pickle: 12 fields"):
         copy.__setstate__(state[:-1])
+    # A state of the right length with a field mdr never writes: a ValueError naming the pickle, not a crash (the
+    # half-space's body was dereferenced unchecked) nor pybind11's bare "Unable to cast".
+    with pytest.raises(ValueError, match="mdr.ContactCase pickle: field 12 .* is None"):
+        mdr.ContactCase.__new__(mdr.ContactCase).__setstate__(state[:11] + (None,) + state[12:])
+    with pytest.raises(ValueError, match="mdr.ContactCase pickle: .*not a pickle that mdr wrote"):
+        mdr.ContactCase.__new__(mdr.ContactCase).__setstate__(state[:8] + ("many",) + state[9:])
     assert np.isfinite(mdr.run(round_trip(case)).summary["max_force"])
