@@ -9,6 +9,21 @@
 
 namespace mdr::drivers {
 
+/// Cells on the contact's widest range when neither `[numerics] layer_cells` nor `elements` is given: the force
+/// within ~1e-5 of the peak with the contact over a third of the range (third order in the cell without memory, eq.
+/// L19a; with memory the time step's part remains; tests/verification/test_layer_regrowing.cpp,
+/// tests/python/test_layer_unloading.py).
+inline constexpr std::size_t default_layer_cells = 400;
+
+/// The most cells `[numerics] layer_cells` may ask: I - K and its factor are dense (O(m^2) doubles, its factoring
+/// O(m^3)), 4096 cells about 1 GB and 2.3e10 multiply-adds, a fifth of the default numerics.max_element_steps before
+/// the first step (estimate_work, work_estimate.hpp).
+inline constexpr std::size_t max_layer_cells = 4096;
+
+/// The cells of a layer's coupled time-stepping (eq. L16 to L19): `numerics.layer_cells`, else `numerics.elements`
+/// (so that a case without the key runs as before it existed), else default_layer_cells.
+std::size_t layer_cell_count(const NumericsOptions& numerics);
+
 /// The Poisson ratio of the layer's body, on which its kernel depends (docs/theory.md eq. L1): 0.5 for one
 /// incompressible body; for one compressible body whose bulk relaxation is proportional to its shear relaxation
 /// (K(t)/G(t) constant: an elastic G with an elastic K, or the same relaxation times with the moduli in one ratio),
@@ -35,7 +50,7 @@ void validate_layer(const ContactCase& contact_case);
 /// phase), spring control likewise F(d) + k d = k z (F = k (z - d)), and in a force pause F(d) = the force held
 /// (eq. L22; the base z = d + F / k, shifted after it as on the half-space, PausedBase); a parallel dashpot then sees
 /// the trapezoidal rate of the solved depth, and takes a force jump at a fixed depth (LayerStepper::jump). An impact
-/// runs LayerImpactStepping (src/drivers/layer_impact.hpp), or with snapshots (or NumericsOptions::layer_cells)
+/// runs LayerImpactStepping (src/drivers/layer_impact.hpp), or with snapshots (or NumericsOptions::cells_from_start)
 /// LayerCellsImpactStepping on cells from the start (src/drivers/layer_cells_impact.hpp: the surface outside its
 /// receding contact is theirs alone). Every way runs its stepping class in the half-space's one loop
 /// (src/drivers/run_loop.hpp), with its observers and progress report. `numerics.elements` is the least number of Gauss nodes over
@@ -49,8 +64,8 @@ void validate_layer(const ContactCase& contact_case);
 /// cells instead, from the start
 /// (Ting 1968's general case; eq. L16 to L19, src/drivers/layer_cells.hpp): a history once the run of Ting's class
 /// finds the regrowth (the progress then held at the fraction reached), a harmonic (or any history with
-/// NumericsOptions::layer_cells) at once; `numerics.elements` is then its number of cells (default
-/// default_layer_cells). Snapshots (`output.snapshots`, eq. L25 to L27): of a growing contact in the run of Ting's
+/// NumericsOptions::cells_from_start) at once; its number of cells is layer_cell_count (`numerics.layer_cells`, else
+/// `numerics.elements`, else default_layer_cells). Snapshots (`output.snapshots`, eq. L25 to L27): of a growing contact in the run of Ting's
 /// class (GrowingSnapshots, src/drivers/layer_snapshot.hpp), and on the cells; one due while the contact recedes or
 /// after it was lost runs the case on the cells from the start (the surface outside a receding contact is theirs
 /// alone). The rows and a Shore test's readings are recorded by the half-space's recorders (RowRecorder,
