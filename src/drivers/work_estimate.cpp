@@ -49,7 +49,7 @@ double memory_bound(const ContactCase& contact_case) {
 // What a run's work is counted in, for the messages: the half-space's elements (x 2 layers with tangential loading),
 // or the cells of a layer's coupled time-stepping.
 std::string counted_in(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
-    if (contact_case.layer) return fmt::format("{} cells of the [layer]", layer_cell_count(contact_case.numerics));
+    if (contact_case.layer) return fmt::format("m = {} cells of the [layer]", layer_cell_count(contact_case.numerics));
     return fmt::format("{} elements{}", numerics.elements, contact_case.tangential ? " x 2 layers" : "");
 }
 
@@ -128,7 +128,7 @@ void require_bounded_work(const ContactCase& contact_case, const ResolvedNumeric
                         "{}, or raise numerics.max_element_steps if that is meant",
                         estimate.steps, numerics.time_step, start, numerics.time_limit,
                         counted_in(contact_case, numerics),
-                        contact_case.layer ? " (m^2 a step's solve, m^3/3 the factoring of I - K)" : "",
+                        contact_case.layer ? " (m^2 a step for its solve, m^3/3 for the factoring of I - K)" : "",
                         estimate.element_steps, count_key(contact_case)));
     }
     const double max_memory = memory_bound(contact_case);

@@ -16,7 +16,7 @@ namespace mdr::drivers {
 inline constexpr std::size_t default_layer_cells = 400;
 
 /// The most cells `[numerics] layer_cells` may ask: I - K and its factor are dense (O(m^2) doubles, its factoring
-/// O(m^3)), 4096 cells about 1 GB and 2.3e10 multiply-adds, a fifth of the default numerics.max_element_steps before
+/// O(m^3)), 4096 cells at most about 1 GB (540 MB measured) and 2.3e10 multiply-adds (3 s), a fifth of the default numerics.max_element_steps before
 /// the first step (estimate_work, work_estimate.hpp).
 inline constexpr std::size_t max_layer_cells = 4096;
 

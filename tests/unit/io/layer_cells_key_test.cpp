@@ -68,7 +68,7 @@ TEST(LayerCellsKey, TheBoundsCountTheDenseOperatorAndItsSolves) {
     // 4096 cells: I - K, its factor and transpose, the record and the unit loads, 7.5 m^2 doubles (~1.0e9 bytes).
     const auto memory = refusal(on_layer("layer_cells = 4096\nmax_memory = 5.0e8\n"));
     EXPECT_EQ(memory.key(), "numerics.max_memory");
-    EXPECT_NE(std::string(memory.what()).find("4096 cells of the [layer]"), std::string::npos) << memory.what();
+    EXPECT_NE(std::string(memory.what()).find("m = 4096 cells of the [layer], its dense I - K"), std::string::npos) << memory.what();
     EXPECT_EQ(refusal(on_layer("layer_cells = 2048\nmax_memory = 5.0e8\n")).key(), "(accepted)");  // ~2.5e8
     // ~2000 steps x 4096^2 + 4096^3 / 3 = 5.7e10 element-steps (a step's solve and the factoring).
     const auto work = refusal(on_layer("layer_cells = 4096\nmax_element_steps = 1.0e10\n"));
