@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "mdr/drivers/indentation.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
@@ -40,6 +41,20 @@ TEST(LayerCellsKey, IsReadAndDefaultsToTheElementsElseFourHundred) {
     EXPECT_EQ(count("elements = 300\n"), 300u);                       // every case written before the key
     EXPECT_EQ(count(""), mdr::drivers::default_layer_cells);
     EXPECT_EQ(mdr::drivers::default_layer_cells, 400u);
+}
+
+TEST(LayerCellsKey, EveryRunOnCellsTakesIt) {
+    // A harmonic (on the cells from the start), and a history run on cells from the start as a fit's model runs it
+    // (NumericsOptions::cells_from_start): the cells are the key's, the Gauss nodes `elements`' (reported: the cells).
+    auto harmonic = mdr::io::parse_case(on_layer("elements = 30\nlayer_cells = 50\ntime_step = 0.05\n"));
+    EXPECT_EQ(mdr::drivers::run_case(harmonic).numerics.elements, 50u);
+    auto unloading = mdr::io::parse_case(
+        "[material]\nmodel = \"standard\"\nG_inf = 1.0e3\nG1 = 3.0e3\ntau1 = 0.2\n[indenter]\nshape = \"sphere\"\n"
+        "R = 1.0e-5\n[load]\ncontrol = \"displacement\"\nhistory = [[0.0, 0.0], [0.5, 1.0e-6], [1.0, 0.0]]\n[layer]\n"
+        "thickness = 5.0e-6\ninterface = \"bonded\"\n[numerics]\nelements = 30\nlayer_cells = 70\ntime_step = 0.05\n");
+    EXPECT_EQ(mdr::drivers::run_case(unloading).numerics.elements, 30u);  // Ting's class: the Gauss nodes
+    unloading.numerics.cells_from_start = true;
+    EXPECT_EQ(mdr::drivers::run_case(unloading).numerics.elements, 70u);
 }
 
 TEST(LayerCellsKey, RefusesACountOutOfItsRangeOrNotAnInteger) {
