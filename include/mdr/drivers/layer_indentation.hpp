@@ -16,8 +16,8 @@ namespace mdr::drivers {
 inline constexpr std::size_t default_layer_cells = 400;
 
 /// The most cells `[numerics] layer_cells` may ask: I - K and its factor are dense (O(m^2) doubles, its factoring
-/// O(m^3)), 4096 cells at most about 1 GB (540 MB measured) and 2.3e10 multiply-adds (3 s), a fifth of the default numerics.max_element_steps before
-/// the first step (estimate_work, work_estimate.hpp).
+/// O(m^3)), 4096 cells at most about 1 GB (540 MB measured) and 2.3e10 multiply-adds (3 s), a fifth of the default
+/// numerics.max_element_steps before the first step (estimate_work, work_estimate.hpp).
 inline constexpr std::size_t max_layer_cells = 4096;
 
 /// The cells of a layer's coupled time-stepping (eq. L16 to L19): `numerics.layer_cells`, else `numerics.elements`
@@ -65,11 +65,11 @@ void validate_layer(const ContactCase& contact_case);
 /// (Ting 1968's general case; eq. L16 to L19, src/drivers/layer_cells.hpp): a history once the run of Ting's class
 /// finds the regrowth (the progress then held at the fraction reached), a harmonic (or any history with
 /// NumericsOptions::cells_from_start) at once; its number of cells is layer_cell_count (`numerics.layer_cells`, else
-/// `numerics.elements`, else default_layer_cells). Snapshots (`output.snapshots`, eq. L25 to L27): of a growing contact in the run of Ting's
-/// class (GrowingSnapshots, src/drivers/layer_snapshot.hpp), and on the cells; one due while the contact recedes or
-/// after it was lost runs the case on the cells from the start (the surface outside a receding contact is theirs
-/// alone). The rows and a Shore test's readings are recorded by the half-space's recorders (RowRecorder,
-/// ShoreRecorder). The caller's `observers` see every state of the run that gives the result after them, as on the
+/// `numerics.elements`, else default_layer_cells). Snapshots (`output.snapshots`, eq. L25 to L27): of a growing
+/// contact in the run of Ting's class (GrowingSnapshots, src/drivers/layer_snapshot.hpp), and on the cells; one due
+/// while the contact recedes or after it was lost runs the case on the cells from the start (the surface outside a
+/// receding contact is theirs alone). The rows and a Shore test's readings are recorded by the half-space's
+/// recorders (RowRecorder, ShoreRecorder). The caller's `observers` see every state of the run that gives the result after them, as on the
 /// half-space (step_observer.hpp; StepState::layer_contact_radius filled, foundation null); a stop ends the run there
 /// (IndentationResult::stopped, no harmonic outcome). With an observer that needs one run
 /// (StepObserver::needs_one_run), a run of Ting's class keeps its states and shows them once it has ended in that class
