@@ -1,7 +1,8 @@
 // A jump of the force down against a parallel dashpot on a layer's cells (docs/theory.md, "A jump of the force on the
 // cells", eq. L28 to L30): the contact recedes at once to the set that solves the complementarity in the rates. A very
 // thick layer against the half-space driver (which builds the jump down, L12-L13), a flat punch against its closed
-// form on a finite layer, and the orders in the cell and in the time step on a finite layer.
+// form on a finite layer, and the orders in the cell and in the time step on a finite layer; a jump onto the surface
+// (nothing in contact before it) against the half-space driver.
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/indentation.hpp"
+#include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
 #include "run_case.hpp"
 
@@ -186,6 +188,51 @@ TEST(LayerForceJumpDown, ConvergesInTheCellAndTheTimeStepOnAFiniteLayer) {
     }
     for (std::size_t k = 1; k < runs.size(); ++k) {
         EXPECT_LT(depth_difference_at_common_rows(runs[k - 1], runs[k], 0.5), 3e-6) << k;
+    }
+}
+
+TEST(LayerForceJumpDown, AJumpOntoTheSurfaceMeetsTheHalfSpace) {
+    // The force ramped to 30 nN and back to zero (the contact lost: the indenter rides on the recovering surface),
+    // then a jump to 20 nN with nothing in contact: a sphere meets the surface at the axis alone, so the depth holds
+    // and the next step carries the force (the half-space driver: F_el's rate jumps by dF / eta). Against the
+    // half-space driver converged in its time step (1.25e-4 s, 8000 elements; at 2, 1, 0.5 ms its own rows after the
+    // jump are 1.9e-4, 9.4e-5, 4.2e-5 (Kelvin-Voigt) and 5.7e-5, 3.3e-5, 1.7e-5 (standard solid) of the largest depth
+    // off that, first order in its step), the cells at 0.5 ms, the rows from the jump on. Refused naming material.eta before it was built.
+    const std::string history =
+        "history = [[0.0, 0.0], [0.3, 3.0e-8], [0.6, 0.0], [0.8, 0.0], [0.8, 2.0e-8], [1.2, 2.0e-8]]\n";
+    const std::vector<std::pair<std::string, std::vector<double>>> tolerances = {
+        {kelvin_voigt, {6e-4, 1.6e-4, 5e-5}}, {standard_dashpot, {4.5e-4, 1.1e-4, 3e-5}}};
+    for (const auto& [material, tolerance] : tolerances) {
+        const std::string text = force_case(material, sphere, history);
+        const auto converged = run_toml(text + "[numerics]\nelements = 8000\ntime_step = 1.25e-4\n");
+        std::vector<double> errors;
+        for (const int cells : {100, 200, 400}) {
+            const auto layer = run_on_cells(
+                text + fmt::format("[layer]\nthickness = 1.0e3\ninterface = \"bonded\"\n[numerics]\nelements = {}\n"
+                                   "time_step = 5.0e-4\n",
+                                   cells));
+            errors.push_back(depth_difference_at_common_rows(layer, converged, 0.8));
+        }
+        // Observed 5.0e-4, 1.3e-4, 3.7e-5 (Kelvin-Voigt) and 3.5e-4, 8.8e-5, 2.2e-5 (standard solid) at 100, 200,
+        // 400 cells: second order.
+        for (std::size_t k = 0; k < errors.size(); ++k) EXPECT_LT(errors[k], tolerance[k]) << k;
+    }
+}
+
+TEST(LayerForceJumpDown, AJumpOntoTheSurfaceUnderAFlatEndIsRefusedNamingEta) {
+    // A flat end lifted off by a jump to zero force rides on the recovering surface, which meets its face: its
+    // dashpots would take a jump up at once, which the cells do not build (only a touch at a point). Nothing is
+    // written by the caller.
+    const std::string text = force_case(standard_dashpot, "shape = \"flat\"\na = 3.0e-6\n",
+                                        "history = [[0.0, 0.0], [0.3, 3.0e-8], [0.5, 3.0e-8], [0.5, 0.0], [0.8, 0.0], "
+                                        "[0.8, 2.0e-8], [1.2, 2.0e-8]]\n") +
+                             "[layer]\nthickness = 2.0e-6\ninterface = \"bonded\"\n";
+    try {
+        run_on_cells(text);
+        ADD_FAILURE() << "accepted";
+    } catch (const InvalidInput& error) {
+        EXPECT_EQ(error.key(), "material.eta");
+        EXPECT_NE(std::string(error.what()).find("flat-ended indenter"), std::string::npos) << error.what();
     }
 }
 
