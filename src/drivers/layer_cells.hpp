@@ -67,8 +67,9 @@ public:
     /// step of no duration in contact (a jump of the force) keeps the depth and every cell's w1, only the rates jump:
     /// the cells staying in contact take the change at one change of the indenter's rate, and a jump down lets the
     /// contact recede at once to the cells that keep q >= 0 while the others rise no faster than the indenter (jump;
-    /// to zero force: no contact). It throws mdr::InvalidInput (key `material.eta`) for a jump with nothing in contact
-    /// before it whose contact would grow in the step.
+    /// to zero force: no contact). A jump onto the surface (nothing in contact before it) holds the depth with no
+    /// cell in contact (a touch at a point), the next step carrying the force; under a flat end (its face meeting
+    /// the surface at once) it throws mdr::InvalidInput (key `material.eta`).
     LayerCellState step_loaded(double time_step, double right_side, double spring_constant, double base);
     /// Steps an indenter carried by its inertia (an impact) by `time_step` > 0 [s] to the depth at which F(d) + k d =
     /// `right_side` [N], k = `spring_constant` > 0 [N/m] (the trapezoidal rule's 4m/dt^2, eq. 37); without contact
