@@ -305,9 +305,8 @@ LayerCellState LayerCells::jump(double force) {
     if (contact == 0) {
         if (force > 0.0) {  // not met: the one solution's contact set is then not a disc
             throw InvalidInput("material.eta", format_value(viscosity),
-                               "a jump of the force down to " + format_value(force) +
-                                   " N against a parallel dashpot on a [layer] leaves a contact that is not a "
-                                   "disc, which the cells do not solve");
+                               "a jump of the force down against a parallel dashpot on a [layer] leaves a "
+                               "contact that is not a disc, which the cells do not solve");
         }
         std::fill(trial_load_.begin(), trial_load_.end(), 0.0);
     }
