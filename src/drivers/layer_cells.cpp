@@ -274,7 +274,8 @@ LayerCellState LayerCells::jump(double force) {
     // The cells not stepped yet are stepped up to now first, and every cell is stepped from here on.
     const double viscosity = material_->viscosity();
     catch_up(cells_);
-    const std::vector<double> committed(trial_load_.begin(), trial_load_.begin() + static_cast<std::ptrdiff_t>(contact_));
+    const std::vector<double> committed(trial_load_.begin(),
+                                        trial_load_.begin() + static_cast<std::ptrdiff_t>(contact_));
     std::size_t contact = force > 0.0 ? contact_ : 0;
     double rate_change = 0.0;
     for (; contact > 0; --contact) {

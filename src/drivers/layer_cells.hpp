@@ -98,9 +98,9 @@ private:
     // the dashpots' start rate and what an entering cell sees as advance takes them.
     LayerCellState solve_loaded(double time_step, double right_side, double spring_constant, double base,
                                 std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry);
-    // A jump of the force to `force` [N] at the committed depth against a parallel dashpot, from a contact (step_loaded):
-    // up, the whole contact takes it; down, the contact recedes at once to the set that solves the complementarity in
-    // the rates (docs/theory.md eq. L28 to L30).
+    // A jump of the force to `force` [N] at the committed depth against a parallel dashpot, from a contact
+    // (step_loaded): up, the whole contact takes it; down, the contact recedes at once to the set that solves the
+    // complementarity in the rates (docs/theory.md eq. L28 to L30).
     LayerCellState jump(double force);
     // eta times how much faster than the indenter cell `cell` (free after a jump) moves into the body, q the trial
     // line load on [0, contact) and the indenter's rate changed by `rate_change` [m/s] (eq. L29: >= 0 where it left).

@@ -221,12 +221,13 @@ TEST(LayerForceJumpDown, ConvergesInTheCellAndTheTimeStepOnAFiniteLayer) {
 }
 
 TEST(LayerForceJumpDown, AJumpOntoTheSurfaceMeetsTheHalfSpace) {
-    // The force ramped to 30 nN and back to zero (the contact lost: the indenter rides on the recovering surface),
-    // then a jump to 20 nN with nothing in contact: a sphere meets the surface at the axis alone, so the depth holds
-    // and the next step carries the force (the half-space driver: F_el's rate jumps by dF / eta). Against the
-    // half-space driver converged in its time step (1.25e-4 s, 8000 elements; at 2, 1, 0.5 ms its own rows after the
-    // jump are 1.9e-4, 9.4e-5, 4.2e-5 (Kelvin-Voigt) and 5.7e-5, 3.3e-5, 1.7e-5 (standard solid) of the largest depth
-    // off that, first order in its step), the cells at 0.5 ms, the rows from the jump on. Refused naming material.eta before it was built.
+    // The force ramped to 30 nN and back to zero (the contact lost: the indenter rides on the recovering surface), then
+    // a jump to 20 nN with nothing in contact: a sphere meets the surface at the axis alone, so the depth holds and the
+    // next step carries the force (the half-space driver: F_el's rate jumps by dF / eta). Against the half-space driver
+    // converged in its time step (1.25e-4 s, 8000 elements; at 2, 1, 0.5 ms its own rows after the jump are 1.9e-4,
+    // 9.4e-5, 4.2e-5 (Kelvin-Voigt) and 5.7e-5, 3.3e-5, 1.7e-5 (standard solid) of the largest depth off that, first
+    // order in its step), the cells at 0.5 ms, the rows from the jump on. Refused naming material.eta before it was
+    // built.
     const std::string history =
         "history = [[0.0, 0.0], [0.3, 3.0e-8], [0.6, 0.0], [0.8, 0.0], [0.8, 2.0e-8], [1.2, 2.0e-8]]\n";
     const std::vector<std::pair<std::string, std::vector<double>>> tolerances = {
