@@ -169,8 +169,24 @@ LayerCellState LayerCells::step(double time_step, double depth, std::optional<do
 }
 
 LayerCellState LayerCells::step_loaded(double time_step, double right_side, double spring_constant, double base) {
-    if (!(time_step > 0.0) && contact_ > 0 && material_->viscosity() > 0.0) {
-        return jump(right_side - spring_constant * depth_);
+    if (!(time_step > 0.0) && material_->viscosity() > 0.0) {
+        if (contact_ > 0) return jump(right_side - spring_constant * depth_);
+        const double force = right_side - spring_constant * depth_;
+        if (force > 0.0) {
+            if (profile_[1] == profile_[0]) {
+                throw InvalidInput("material.eta", format_value(material_->viscosity()),
+                                   "a jump of the force onto the surface (nothing in contact before it) against a "
+                                   "parallel dashpot under a flat-ended indenter is not built on a [layer] yet "
+                                   "(issue 28)");
+            }
+            // Onto the surface: an indenter that touches at a point meets the recovering surface at the axis alone
+            // (every cell apart from it), and in no time no w1 moves, so no cell takes the force: the depth holds
+            // and the dashpots' rates are unbounded at the touch (on the half-space F_el ~ t: a^3 ~ t). The next
+            // step carries the force from its start, the indenter's secant rate in every cell, as after any step
+            // without contact (docs/theory.md, "A jump of the force on the cells").
+            last_.force = force;
+            return last_;
+        }
     }
     return solve_loaded(time_step, right_side, spring_constant, base, rate_, foundation::RateAtEntry::breaks);
 }
@@ -246,40 +262,93 @@ LayerCellState LayerCells::solve_loaded(double time_step, double right_side, dou
 }
 
 LayerCellState LayerCells::jump(double force) {
-    // A dashpot does not move in no time: the depth and every cell's w1 and branches stay, and each cell in contact
-    // follows the indenter, so the contact's dashpots take the force's change at one change of the indenter's rate,
-    // Q/4 += eta dr on the set, q += eta dr u (unit_load), dF = eta dr 2 dx sum u (the half-space's dF = 8 dx eta n
-    // dr where K = 0, u = 4). The free cells' Q = ((I - K) q)_i follows q at once (their rates jump), every cell's:
-    // the cells not stepped yet are stepped up to now first, and every cell is stepped from here on.
+    // A dashpot does not move in no time (docs/theory.md, "A jump of the force on the cells", eq. L28 to L30): the
+    // depth and every cell's w1 and branches stay, only the rates jump. A cell that stays in contact follows the
+    // indenter, its rate changed by the indenter's dr: Q/4 += eta dr (eq. L16); a cell that leaves carries q = 0, its
+    // Q = ((I - K) q)_i following the contact's q, and its surface rises no faster than the indenter leaves (its rate
+    // change at least dr: eq. L29). With the contact the cells [0, m), m <= the committed contact m0: q = (I - K)_mm^-1
+    // 4 (Q_old/4 + eta dr) = q_base + eta dr u (u the set's unit load), and the force 2 dx sum q fixes dr (eq. L28).
+    // Each set that satisfies both q >= 0 and eq. L29 solves the rate complementarity, which has one solution (its
+    // matrix (I - K)/(4 eta) is positive definite and F increases with dr): the sets are tried from m0 down. A jump
+    // up keeps the whole contact (q only grows); a jump to zero force leaves no contact (q >= 0 summing to zero).
+    // The cells not stepped yet are stepped up to now first, and every cell is stepped from here on.
     const double viscosity = material_->viscosity();
-    const auto& unit = unit_load(contact_);
-    double current = 0.0, per_rate = 0.0;
-    for (std::size_t i = 0; i < contact_; ++i) {
-        current += 2.0 * spacing_ * trial_load_[i];
-        per_rate += 2.0 * spacing_ * viscosity * unit[i];
-    }
-    const double rate_change = (force - current) / per_rate;
-    for (std::size_t i = 0; i < contact_; ++i) {  // a cell it pulls below zero (not one below it already)
-        if (trial_load_[i] >= 0.0 && trial_load_[i] + viscosity * rate_change * unit[i] < 0.0) {
-            throw InvalidInput("material.eta", format_value(viscosity),
-                               "a jump of the force down to " + format_value(force) +
-                                   " N in contact pulls the contact's edge off at once against a parallel dashpot, "
-                                   "which is not built on a [layer] yet (issue 28)");
-        }
-    }
     catch_up(cells_);
-    for (std::size_t i = 0; i < contact_; ++i) {
-        trial_load_[i] += viscosity * rate_change * unit[i];
-        stress_[i] += viscosity * rate_change;
+    const std::vector<double> committed(trial_load_.begin(),
+                                        trial_load_.begin() + static_cast<std::ptrdiff_t>(contact_));
+    std::size_t contact = force > 0.0 ? contact_ : 0;
+    double rate_change = 0.0;
+    for (; contact > 0; --contact) {
+        if (contact == contact_) {
+            std::copy(committed.begin(), committed.end(), trial_load_.begin());
+        } else {
+            for (std::size_t i = 0; i < contact; ++i) trial_load_[i] = plane_modulus_per_shear * stress_[i];
+            solve_contact(contact, trial_load_.data());
+        }
+        std::fill(trial_load_.begin() + static_cast<std::ptrdiff_t>(contact), trial_load_.end(), 0.0);
+        const auto& unit = unit_load(contact);
+        double current = 0.0, per_rate = 0.0;
+        for (std::size_t i = 0; i < contact; ++i) {
+            current += 2.0 * spacing_ * trial_load_[i];
+            per_rate += 2.0 * spacing_ * viscosity * unit[i];
+        }
+        rate_change = (force - current) / per_rate;
+        bool complementary = true;
+        for (std::size_t i = 0; i < contact; ++i) {  // q >= 0: a cell the jump pulls below zero (not one below before)
+            trial_load_[i] += viscosity * rate_change * unit[i];
+            if (trial_load_[i] < 0.0 && trial_load_[i] < committed[i]) complementary = false;
+        }
+        for (std::size_t j = contact; complementary && j < contact_; ++j) {  // eq. L29 on the cells that left
+            complementary = leaving_rate_margin(j, contact, rate_change) >= 0.0;
+        }
+        if (complementary) break;
     }
-    for (std::size_t i = contact_; i < cells_; ++i) {
-        const double load = numerics::dot_product(&operator_->matrix[i * cells_], trial_load_.data(), contact_);
-        stress_[i] = load / plane_modulus_per_shear;
+    if (contact == 0) {
+        if (force > 0.0) {  // not met: the one solution's contact set is then not a disc
+            throw InvalidInput("material.eta", format_value(viscosity),
+                               "a jump of the force down against a parallel dashpot on a [layer] leaves a "
+                               "contact that is not a disc, which the cells do not solve");
+        }
+        std::fill(trial_load_.begin(), trial_load_.end(), 0.0);
     }
-    if (rate_) *rate_ += rate_change;
+    // The edge (eq. L30): the edge function in the rates, q/4 inside and minus the cell's rate margin (eq. L29)
+    // outside, interpolated linearly between the two centres; a jump up keeps the committed radius.
+    double outside = 0.0;
+    if (contact > 0 && contact < contact_) {
+        outside = -leaving_rate_margin(contact, contact, rate_change);
+        const double inside = trial_load_[contact - 1] / plane_modulus_per_shear;
+        last_.contact_radius = centre_[contact - 1] + spacing_ * inside / (inside - outside);
+    } else if (contact == 0) {
+        last_.contact_radius = 0.0;
+    }
+    for (std::size_t i = 0; i < cells_; ++i) {
+        stress_[i] = i < contact ? stress_[i] + viscosity * rate_change
+                                 : numerics::dot_product(&operator_->matrix[i * cells_], trial_load_.data(), contact) /
+                                       plane_modulus_per_shear;
+    }
+    if (contact < contact_) {  // the axis: as the edge (eq. L19), in the rates
+        const double inner = contact > 0 ? trial_load_[0] / plane_modulus_per_shear : 0.0;
+        const double next = contact > 1 ? trial_load_[1] / plane_modulus_per_shear : contact == 1 ? outside : 0.0;
+        axis_ = contact > 0 ? inner + axis_weight_ * (next - inner) : 0.0;
+        last_.touching = axis_ > 0.0;
+    }
+    if (contact == 0) {
+        rate_ = std::nullopt;  // the indenter's rate is its own, as after a step without contact
+    } else if (rate_) {
+        *rate_ += rate_change;
+    }
+    contact_ = contact;
     last_.force = force;
     last_.touching_part = {0.0, last_.touching ? 1.0 : 0.0};
     return last_;
+}
+
+double LayerCells::leaving_rate_margin(std::size_t cell, std::size_t contact, double rate_change) const {
+    // eta times the rate by which cell `cell`'s surface, free after the jump, moves into the body faster than the
+    // indenter does (eq. L29): its change of Q/4 ((I - K) q, q on [0, contact), against the committed Q/4) less the
+    // contact's eta dr.
+    const double load = numerics::dot_product(&operator_->matrix[cell * cells_], trial_load_.data(), contact);
+    return load / plane_modulus_per_shear - stress_[cell] - material_->viscosity() * rate_change;
 }
 
 double LayerCells::regain_fraction(double time_step, double depth, double axis) const {
@@ -426,11 +495,6 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
         } else {
             break;
         }
-    }
-    if (!(time_step > 0.0) && contact > 0 && material_->viscosity() > 0.0) {
-        throw InvalidInput("material.eta", format_value(material_->viscosity()),
-                           "a jump of the load onto the surface (nothing in contact before it) against a parallel "
-                           "dashpot, with a contact that grows again, is not built on a [layer] yet (issue 28)");
     }
     if (contact == cells_ && !flat_punch_) {
         throw InvalidInput("layer", "depth " + format_value(depth),

@@ -59,9 +59,12 @@ public:
     /// motion from its own start rate, the law it was stepped by while free, so that its line load grows from zero
     /// and F(d) is continuous; the rate carried on is then the one that keeps the force the contact's dashpots
     /// carried. The step after one without contact keeps the indenter's secant rate in every cell. With a dashpot a
-    /// step of no duration in contact (a jump of the force) keeps the depth and every cell's w1, and the contact's
-    /// dashpots take the change at one rate (jump); it throws mdr::InvalidInput (key `material.eta`) where that
-    /// would pull the contact's edge off (a jump down) or where nothing was in contact before it.
+    /// step of no duration in contact (a jump of the force) keeps the depth and every cell's w1, only the rates jump:
+    /// the cells staying in contact take the change at one change of the indenter's rate, and a jump down lets the
+    /// contact recede at once to the cells that keep q >= 0 while the others rise no faster than the indenter (jump;
+    /// to zero force: no contact). A jump onto the surface (nothing in contact before it) holds the depth with no
+    /// cell in contact (a touch at a point), the next step carrying the force; under a flat end (its face meeting
+    /// the surface at once) it throws mdr::InvalidInput (key `material.eta`).
     LayerCellState step_loaded(double time_step, double right_side, double spring_constant, double base);
     /// Steps an indenter carried by its inertia (an impact) by `time_step` > 0 [s] to the depth at which F(d) + k d =
     /// `right_side` [N], k = `spring_constant` > 0 [N/m] (the trapezoidal rule's 4m/dt^2, eq. 37); without contact
@@ -90,9 +93,13 @@ private:
     // the dashpots' start rate and what an entering cell sees as advance takes them.
     LayerCellState solve_loaded(double time_step, double right_side, double spring_constant, double base,
                                 std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry);
-    // A jump of the force to `force` [N] at the committed depth against a parallel dashpot, the contact's cells all
-    // in contact before it (step_loaded).
+    // A jump of the force to `force` [N] at the committed depth against a parallel dashpot, from a contact
+    // (step_loaded): up, the whole contact takes it; down, the contact recedes at once to the set that solves the
+    // complementarity in the rates (docs/theory.md eq. L28 to L30).
     LayerCellState jump(double force);
+    // eta times how much faster than the indenter cell `cell` (free after a jump) moves into the body, q the trial
+    // line load on [0, contact) and the indenter's rate changed by `rate_change` [m/s] (eq. L29: >= 0 where it left).
+    double leaving_rate_margin(std::size_t cell, std::size_t contact, double rate_change) const;
     // eta times the indenter's rate at the step's end, at the end depth `depth` (eq. L16 in contact: w1 = d - g).
     double dashpot_stress(double depth) const;
     // What the midpoint rule F = 2 dx sum q_i misses of F = 2 int_0^a q dx on a contact set of `contact` cells (eq.

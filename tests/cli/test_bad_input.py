@@ -238,15 +238,6 @@ BAD_CASES = [
      case_text(material=MATERIAL + '[material.bulk]\nmodel = "standard"\nK_inf = 3.0e6\nK1 = 6.0e6\ntau1 = 0.3\n',
                extra='[layer]\nthickness = 1.0e-3\ninterface = "bonded"\n'),
      ["material.bulk", "K(t)/G(t) must be constant in time on a [layer]"]),
-    # issue 28: a jump of the force down in contact against a parallel dashpot on the cells pulls the contact's edge
-    # off at once (not built; a jump up is), found when the run reaches it
-    ("layer-cells-force-jump-down-against-a-dashpot",
-     case_text(material='[material]\nmodel = "prony"\nG_inf = 1.0e3\nterms = [[3.0e3, 0.2]]\neta = 50.0\n',
-               indenter='[indenter]\nshape = "sphere"\nR = 1.0e-5\n',
-               load='[load]\ncontrol = "force"\nhistory = [[0.0, 0.0], [0.5, 3.0e-8], [0.75, 1.0e-8], [1.0, 3.0e-8], '
-                    '[1.0, 1.0e-8], [1.5, 1.0e-8]]\n',
-               numerics="", extra='[layer]\nthickness = 2.0e-6\ninterface = "bonded"\n'),
-     ["material.eta = 50", "jump of the force down to 1e-08 N", "pulls the contact's edge off", "[layer]"]),
     # impact
     ("impact-with-history", case_text(indenter=INDENTER + "mass = 0.03\n",
                                       load='[load]\ncontrol = "impact"\nvelocity = 1.0\n'
