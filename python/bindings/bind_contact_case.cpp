@@ -336,27 +336,32 @@ elements : int, optional
 time_step, half_width : float, optional
 output_every : int, optional
 max_element_steps, max_memory : float, optional
+layer_cells : int, optional
+    On a layer: the cells of its coupled time-stepping (default: ``elements``, else 400).
 )doc")
         .def(py::init([](std::optional<Count> elements, std::optional<Number> time_step,
                          std::optional<Number> half_width, Count output_every,
-                         std::optional<Number> max_element_steps, std::optional<Number> max_memory) {
-                 return drivers::NumericsOptions{elements, time_step, half_width, output_every, max_element_steps,
-                                                 max_memory};
+                         std::optional<Number> max_element_steps, std::optional<Number> max_memory,
+                         std::optional<Count> layer_cells) {
+                 return drivers::NumericsOptions{elements,          time_step,  half_width, output_every,
+                                                 max_element_steps, max_memory, layer_cells};
              }),
              py::kw_only(), py::arg("elements") = py::none(), py::arg("time_step") = py::none(),
              py::arg("half_width") = py::none(), py::arg("output_every") = 1,
-             py::arg("max_element_steps") = py::none(), py::arg("max_memory") = py::none())
+             py::arg("max_element_steps") = py::none(), py::arg("max_memory") = py::none(),
+             py::arg("layer_cells") = py::none())
         .def_readonly("elements", &drivers::NumericsOptions::elements)
         .def_readonly("time_step", &drivers::NumericsOptions::time_step)
         .def_readonly("half_width", &drivers::NumericsOptions::half_width)
         .def_readonly("output_every", &drivers::NumericsOptions::output_every)
         .def_readonly("max_element_steps", &drivers::NumericsOptions::max_element_steps)
         .def_readonly("max_memory", &drivers::NumericsOptions::max_memory)
+        .def_readonly("layer_cells", &drivers::NumericsOptions::layer_cells)
         .def(py::pickle(
             [](const drivers::NumericsOptions& numerics) {  // with the choices a fit makes (no case-file keys)
                 return py::make_tuple(numerics.elements, numerics.time_step, numerics.half_width,
                                       numerics.output_every, numerics.max_element_steps, numerics.max_memory,
-                                      numerics.min_segment_steps, numerics.layer_cells);
+                                      numerics.layer_cells, numerics.min_segment_steps, numerics.cells_from_start);
             },
             [](const py::tuple& state) {
                 return drivers::NumericsOptions{state[0].cast<std::optional<std::size_t>>(),
@@ -366,14 +371,16 @@ max_element_steps, max_memory : float, optional
                                                 state[4].cast<std::optional<double>>(),
                                                 state[5].cast<std::optional<double>>(),
                                                 state[6].cast<std::optional<std::size_t>>(),
-                                                state[7].cast<bool>()};
+                                                state[7].cast<std::optional<std::size_t>>(),
+                                                state[8].cast<bool>()};
             }))
         .def("__repr__", [](const drivers::NumericsOptions& numerics) {
             return fmt::format("Numerics(elements={}, time_step={}, half_width={}, output_every={}, "
-                               "max_element_steps={}, max_memory={})",
+                               "max_element_steps={}, max_memory={}, layer_cells={})",
                                optional_repr(numerics.elements), optional_repr(numerics.time_step),
                                optional_repr(numerics.half_width), numerics.output_every,
-                               optional_repr(numerics.max_element_steps), optional_repr(numerics.max_memory));
+                               optional_repr(numerics.max_element_steps), optional_repr(numerics.max_memory),
+                               optional_repr(numerics.layer_cells));
         });
     py::class_<drivers::TangentialLoad>(module, "Tangential", R"doc(Tangential loading superimposed on the normal
 contact (``[tangential]``, handbook section 6): local Coulomb friction and a history or a harmonic.

@@ -34,7 +34,7 @@ LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer&
       tried_(cells + 1, false),
       unit_loads_(cells + 1),
       history_offsets_{0} {
-    if (cells < 2) throw InvalidInput("numerics.elements", std::to_string(cells), "must be >= 2 on a layer");
+    if (cells < 2) throw InvalidInput("numerics.layer_cells", std::to_string(cells), "must be >= 2 on a layer");
     for (std::size_t i = 0; i < cells; ++i) {
         centre_[i] = (static_cast<double>(i) + 0.5) * spacing_;
         profile_[i] = indenter.equivalent(centre_[i]);

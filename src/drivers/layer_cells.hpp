@@ -21,11 +21,6 @@
 
 namespace mdr::drivers {
 
-/// Cells on the contact's widest range when `[numerics] elements` is not given: the force within ~1e-5 of the peak
-/// with the contact over a third of the range (third order in the cell without memory, eq. L19a; with memory the time
-/// step's part remains; tests/verification/test_layer_regrowing.cpp, tests/python/test_layer_unloading.py).
-inline constexpr std::size_t default_layer_cells = 400;
-
 /// The state after a step of LayerCells.
 struct LayerCellState {
     double depth = 0.0;           ///< d [m]: prescribed, or solved (force and spring control)

@@ -56,8 +56,7 @@ private:
 };
 
 /// Runs the impact of `contact_case` (with a `[layer]`; `impact`, what its control brings) on LayerCellsImpactStepping:
-/// `numerics.elements` cells (default default_layer_cells) of [0, `largest_radius`] (the widest contact prepared for,
-/// [m]); snapshots from the cells (CellSnapshots). Throws as LayerCellsImpactStepping::step.
+/// layer_cell_count cells of [0, `largest_radius`] (the widest contact prepared for, [m]); snapshots from the cells (CellSnapshots). Throws as LayerCellsImpactStepping::step.
 IndentationResult run_layer_cells_impact(const ContactCase& contact_case, const ImpactControl& impact,
                                          double largest_radius, const ProgressObserver& progress,
                                          const StepObservers& observers = {});

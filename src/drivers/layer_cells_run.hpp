@@ -15,14 +15,14 @@ namespace mdr::drivers {
 
 /// Runs `contact_case` (with a `[layer]`) on a `Stepping` (LayerCellsStepping, LayerCellsImpactStepping) made from the
 /// case, what its control brings (`brought`: its LayerLoading or ImpactControl), the cells and the run's numerics:
-/// `numerics.elements` cells (default default_layer_cells) on [0, `largest_radius`] (the widest contact prepared for,
+/// layer_cell_count cells on [0, `largest_radius`] (the widest contact prepared for,
 /// [m], reported as the numerics' half-width); snapshots from the cells (CellSnapshots).
 template <class Stepping, class Brought>
 IndentationResult run_on_layer_cells(const ContactCase& contact_case, const Brought& brought, double largest_radius,
                                      const ProgressObserver& progress, const StepObservers& observers) {
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
-    const std::size_t cells = contact_case.numerics.elements.value_or(default_layer_cells);
+    const std::size_t cells = layer_cell_count(contact_case.numerics);
     result.numerics.elements = cells;
     result.numerics.half_width = largest_radius;  // reported: the cells' range
     LayerCells layer(contact_case.material, *contact_case.layer, layer_poisson_ratio(contact_case),

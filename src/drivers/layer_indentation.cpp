@@ -23,8 +23,8 @@ namespace mdr::drivers {
 
 namespace {
 
-// `numerics.elements` on a layer is a number of Gauss nodes, each solve O(n^3), or of cells (LayerCells: I - K
-// factored once, O(n^3), each solve O(m^2)).
+// `numerics.elements` on a layer is a number of Gauss nodes, each solve O(n^3) (the cells have their own count,
+// layer_cell_count, at most max_layer_cells).
 constexpr std::size_t max_layer_nodes = 512;
 
 // The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius
@@ -44,6 +44,10 @@ double largest_contact_radius(const ContactCase& contact_case, const LayerLoadin
 
 }  // namespace
 
+std::size_t layer_cell_count(const NumericsOptions& numerics) {
+    return numerics.layer_cells.value_or(numerics.elements.value_or(default_layer_cells));
+}
+
 double layer_poisson_ratio(const ContactCase& contact_case) {
     if (!contact_case.tangential_exact && !contact_case.bulk_material) {
         refuse_on_layer("indenter.material", "[...]", "a deformable indenter (two bodies)");
@@ -60,7 +64,14 @@ double layer_poisson_ratio(const ContactCase& contact_case) {
 }
 
 void validate_layer(const ContactCase& contact_case) {
-    if (!contact_case.layer) return;
+    const auto& cells = contact_case.numerics.layer_cells;
+    if (!contact_case.layer) {
+        if (cells) {
+            throw InvalidInput("numerics.layer_cells", std::to_string(*cells),
+                               "only with a [layer] (the cells of its coupled time-stepping)");
+        }
+        return;
+    }
     const auto& layer = *contact_case.layer;
     if (!(layer.thickness > 0.0) || !std::isfinite(layer.thickness)) {
         throw InvalidInput("layer.thickness", format_value(layer.thickness), "must be finite and > 0");
@@ -72,8 +83,14 @@ void validate_layer(const ContactCase& contact_case) {
     const auto& elements = contact_case.numerics.elements;
     if (elements && (*elements < 2 || *elements > max_layer_nodes)) {  // LayerContact and LayerCells need 2
         throw InvalidInput("numerics.elements", std::to_string(*elements),
-                           "must be from 2 to " + std::to_string(max_layer_nodes) + " on a [layer] (Gauss nodes on "
-                           "the contact, or cells where it grows again)");
+                           "must be an integer from 2 to " + std::to_string(max_layer_nodes) + " on a [layer] (Gauss "
+                           "nodes on the contact; the cells where it grows again are numerics.layer_cells, up to " +
+                           std::to_string(max_layer_cells) + ")");
+    }
+    if (cells && (*cells < 2 || *cells > max_layer_cells)) {  // LayerCells needs 2
+        throw InvalidInput("numerics.layer_cells", std::to_string(*cells),
+                           "must be an integer from 2 to " + std::to_string(max_layer_cells) + " (the cells of the "
+                           "[layer]'s coupled time-stepping)");
     }
     const double largest_radius = largest_contact_radius(contact_case, loading);
     contact::check_layer_contact_radius(layer, largest_radius);
@@ -152,16 +169,16 @@ IndentationResult run_layer_indentation(const ContactCase& contact_case, const P
     const double largest_radius = largest_contact_radius(contact_case, loading);
     if (loading.impact) {
         // An impact's contact recedes after the turn, where a snapshot needs the surface outside it, which only the
-        // cells carry (eq. L27): with snapshots (or NumericsOptions::layer_cells) it runs on the cells from the start.
+        // cells carry (eq. L27): with snapshots (or NumericsOptions::cells_from_start) it runs on the cells from the start.
         // Its regrowth is refused, not rerun: its states are shown live.
-        if (!contact_case.snapshots.empty() || contact_case.numerics.layer_cells) {
+        if (!contact_case.snapshots.empty() || contact_case.numerics.cells_from_start) {
             return run_layer_cells_impact(contact_case, *loading.impact, largest_radius, progress, observers);
         }
         return run_tings_class(contact_case, loading, largest_radius, progress, observers, Showing::live);
     }
     // A harmonic load's contact shrinks and grows again every cycle: Ting's general case (1968, eq. L16 to L19); a
-    // fit's model runs any history there (NumericsOptions::layer_cells).
-    if (contact_case.load.harmonic || contact_case.numerics.layer_cells) {
+    // fit's model runs any history there (NumericsOptions::cells_from_start).
+    if (contact_case.load.harmonic || contact_case.numerics.cells_from_start) {
         return run_layer_regrowing(contact_case, loading, largest_radius, progress, observers);
     }
     // The run again on cells reports no less than the first run reached (each call still lets the caller abandon).

@@ -69,9 +69,9 @@ private:
 };
 
 /// Runs a displacement-, force- or spring-controlled case with a `[layer]` (`loading`, what its control brings) on
-/// LayerCellsStepping: `numerics.elements` cells (default default_layer_cells) on [0, `largest_radius`] (the widest
-/// contact prepared for, [m]), on the half-space driver's time grid; snapshots from the cells (CellSnapshots). A
-/// parallel dashpot sees the indenter's rates as on the half-space (LayerCells). Throws mdr::InvalidInput naming key
+/// LayerCellsStepping: layer_cell_count cells on [0, `largest_radius`] (the widest contact prepared for, [m]), on
+/// the half-space driver's time grid; snapshots from the cells (CellSnapshots). A parallel dashpot sees the
+/// indenter's rates as on the half-space (LayerCells). Throws mdr::InvalidInput naming key
 /// `layer` when the contact outgrows the range, `material.eta` for a jump of the force against a dashpot that pulls
 /// the contact's edge off or lands on the surface (LayerCells::step_loaded).
 IndentationResult run_layer_regrowing(const ContactCase& contact_case, const LayerLoading& loading,

@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <string>
 
 #include "mdr/drivers/control_end.hpp"
+#include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::drivers {
@@ -44,6 +46,38 @@ double memory_bound(const ContactCase& contact_case) {
     return contact_case.numerics.max_memory.value_or(default_max_memory);
 }
 
+// What a run's work is counted in, for the messages: the half-space's elements (x 2 layers with tangential loading),
+// or the cells of a layer's coupled time-stepping.
+std::string counted_in(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
+    if (contact_case.layer) return fmt::format("m = {} cells of the [layer]", layer_cell_count(contact_case.numerics));
+    return fmt::format("{} elements{}", numerics.elements, contact_case.tangential ? " x 2 layers" : "");
+}
+
+// The key that sets the count of counted_in.
+const char* count_key(const ContactCase& contact_case) {
+    return contact_case.layer ? "numerics.layer_cells" : "numerics.elements";
+}
+
+// The element-steps a run counts: `per_step` each step, and `once` before its first.
+struct StepWork {
+    double per_step = 0.0;
+    double once = 0.0;
+};
+
+// Every element a step (x 2 layers with tangential loading: its layer steps every element). On a [layer], its coupled
+// time-stepping on m cells (LayerCells, eq. L16 to L19), which a harmonic load and a contact that grows again run
+// (the run of Ting's class costs less: its Gauss nodes are at most 512): I - K factored once (Cholesky, m^3 / 3
+// multiply-adds), then a step's solve on its contact's cells (forward and back substitution, at most m^2
+// multiply-adds; the trial sets of a step share most of it, and a step's updates of the cells' branches, O(m), are
+// smaller), each multiply-add counted as an element-step.
+StepWork step_work(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
+    if (contact_case.layer) {
+        const double cells = static_cast<double>(layer_cell_count(contact_case.numerics));
+        return {cells * cells, cells * cells * cells / 3.0};
+    }
+    return {static_cast<double>(numerics.elements) * (contact_case.tangential ? 2.0 : 1.0), 0.0};
+}
+
 }  // namespace
 
 WorkEstimate estimate_work(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
@@ -53,16 +87,24 @@ WorkEstimate estimate_work(const ContactCase& contact_case, const ResolvedNumeri
     estimate.steps = no_grid ? numerics.time_limit / numerics.time_step +
                                    static_cast<double>(contact_case.snapshots.size())
                              : indentation_steps(contact_case, numerics);
-    const double elements = static_cast<double>(numerics.elements);
-    const double layers = contact_case.tangential ? 2.0 : 1.0;
-    estimate.element_steps = estimate.steps * elements * layers;
-    // Per step: a grid node (t, value) and a history row of up to 8 columns every output_every steps. Per element
-    // and layer: displacement, stress, next displacement and stress, increment, relaxed sums, event, profile, flag,
-    // and one memory value per branch.
+    // Per step: a grid node (t, value) and a history row of up to 8 columns every output_every steps.
     const double rows = estimate.steps / static_cast<double>(numerics.output_every);
     const double branches = static_cast<double>(contact_case.material.terms().size());
-    estimate.memory =
-        (no_grid ? 0.0 : 16.0 * estimate.steps) + 64.0 * rows + layers * elements * 8.0 * (9.0 + branches);
+    estimate.memory = (no_grid ? 0.0 : 16.0 * estimate.steps) + 64.0 * rows;
+    const StepWork work = step_work(contact_case, numerics);
+    estimate.element_steps = estimate.steps * work.per_step + work.once;
+    if (contact_case.layer) {
+        // The layer's cells (step_work): I - K, its factor and the factor's transpose (3 m^2 doubles), the record of
+        // the steps of the free cells (at most 4 m^2, LayerCells::record), the unit loads of the contact sets (at most
+        // m^2 / 2), and per cell the stepping's vectors (8) and a memory value per branch.
+        const double cells = static_cast<double>(layer_cell_count(contact_case.numerics));
+        estimate.memory += 8.0 * (7.5 * cells * cells + cells * (8.0 + branches));
+        return estimate;
+    }
+    // Per element and layer: displacement, stress, next displacement and stress, increment, relaxed sums, event,
+    // profile, flag, and one memory value per branch.
+    const double layers = contact_case.tangential ? 2.0 : 1.0;
+    estimate.memory += layers * static_cast<double>(numerics.elements) * 8.0 * (9.0 + branches);
     return estimate;
 }
 
@@ -81,19 +123,23 @@ void require_bounded_work(const ContactCase& contact_case, const ResolvedNumeric
     if (!(estimate.element_steps <= max_element_steps)) {
         throw InvalidInput(
             "numerics.max_element_steps", fmt::format("{:.3g}", max_element_steps),
-            fmt::format("exceeded: {:.3g} steps (time step {:.4g} s over [{}, {}] s) x {} elements{} = {:.3g} "
+            fmt::format("exceeded: {:.3g} steps (time step {:.4g} s over [{}, {}] s) on {}{} = {:.3g} "
                         "element-steps; lengthen numerics.time_step, shorten the simulated time, use fewer "
-                        "numerics.elements, or raise numerics.max_element_steps if that is meant",
-                        estimate.steps, numerics.time_step, start, numerics.time_limit, numerics.elements,
-                        contact_case.tangential ? " x 2 layers" : "", estimate.element_steps));
+                        "{}, or raise numerics.max_element_steps if that is meant",
+                        estimate.steps, numerics.time_step, start, numerics.time_limit,
+                        counted_in(contact_case, numerics),
+                        contact_case.layer ? " (m^2 a step for its solve, m^3/3 for the factoring of I - K)" : "",
+                        estimate.element_steps, count_key(contact_case)));
     }
     const double max_memory = memory_bound(contact_case);
     if (!(estimate.memory <= max_memory)) {
         throw InvalidInput("numerics.max_memory", fmt::format("{:.3g}", max_memory),
-                           fmt::format("exceeded: the run would hold about {:.3g} bytes ({:.3g} steps, {} elements); "
-                                       "write fewer rows (numerics.output_every), lengthen numerics.time_step, or "
+                           fmt::format("exceeded: the run would hold about {:.3g} bytes ({:.3g} steps, {}{}); "
+                                       "write fewer rows (numerics.output_every), lengthen numerics.time_step, {}or "
                                        "raise numerics.max_memory if the machine has it",
-                                       estimate.memory, estimate.steps, numerics.elements));
+                                       estimate.memory, estimate.steps, counted_in(contact_case, numerics),
+                                       contact_case.layer ? ", its dense I - K and factor" : "",
+                                       contact_case.layer ? "use fewer numerics.layer_cells, " : ""));
     }
 }
 
@@ -104,11 +150,12 @@ void require_kept_states_within_bound(const ContactCase& contact_case, const Res
     const double max_memory = memory_bound(contact_case);
     if (memory <= max_memory) return;
     throw InvalidInput("numerics.max_memory", fmt::format("{:.3g}", max_memory),
-                       fmt::format("exceeded: the run would hold about {:.3g} bytes ({:.3g} steps, {} elements, and "
+                       fmt::format("exceeded: the run would hold about {:.3g} bytes ({:.3g} steps, {}, and "
                                    "a copy of each of its {} states, {} bytes each, kept for an observer that sees "
                                    "one run on the [layer]); lengthen numerics.time_step, or raise "
                                    "numerics.max_memory if the machine has it",
-                                   memory, estimate.steps, numerics.elements, states, state_bytes));
+                                   memory, estimate.steps, counted_in(contact_case, numerics), states,
+                                   state_bytes));
 }
 
 double element_step_bound(const ContactCase& contact_case) {
@@ -118,12 +165,13 @@ double element_step_bound(const ContactCase& contact_case) {
 void require_steps_within_bound(const ContactCase& contact_case, const ResolvedNumerics& numerics,
                                 std::size_t steps, double time) {
     const double bound = element_step_bound(contact_case);
-    if (static_cast<double>(steps) * static_cast<double>(numerics.elements) <= bound) return;
+    const StepWork work = step_work(contact_case, numerics);
+    if (static_cast<double>(steps) * work.per_step + work.once <= bound) return;
     throw InvalidInput("numerics.max_element_steps", fmt::format("{:.3g}", bound),
-                       fmt::format("reached after {} steps x {} elements at t = {:.4g} s, before the run ended "
+                       fmt::format("reached after {} steps on {} at t = {:.4g} s, before the run ended "
                                    "(at the latest at {:.4g} s); give an earlier load.end, a longer "
                                    "numerics.time_step, or raise numerics.max_element_steps if that is meant",
-                                   steps, numerics.elements, time, numerics.time_limit));
+                                   steps, counted_in(contact_case, numerics), time, numerics.time_limit));
 }
 
 }  // namespace mdr::drivers

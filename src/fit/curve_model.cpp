@@ -154,7 +154,7 @@ std::optional<ModelValues> run_curve(drivers::ContactCase model_case, const Curv
         // Ting's exact solution and the cells (second order in the cell) as the parameters move; `numerics.elements`
         // is the number of cells, as for a run (a parallel dashpot included: the cells step it at second order in
         // time; a force jump in contact, which a measured record does not have, stays refused naming material.eta).
-        model_case.numerics.layer_cells = true;
+        model_case.numerics.cells_from_start = true;
     } else {
         model_case.numerics.elements = elements;
     }

@@ -84,7 +84,7 @@ struct ModelValues {
 /// baseline, and 0 below it, under force control; the baseline at each row's time). ForwardModel::elements runs the
 /// drivers with `elements` elements and the curve's own points as time steps (the depth model is the depth below the
 /// contact point), as the band model where it applies (band_forces, band_depths: the same values); on a `[layer]` the
-/// layer's drivers on cells from the start (drivers::NumericsOptions::layer_cells; `numerics.elements` cells,
+/// layer's drivers on cells from the start (drivers::NumericsOptions::cells_from_start; drivers::layer_cell_count cells,
 /// `elements` unused); ForwardModel::continuum computes the force of a depth-driven curve exactly (ting_forces, on a
 /// layer layer_forces) and gives nullopt where that model does not apply. `check_interrupt`, when set, is called at
 /// the drivers' progress reports (it may throw mdr::Interrupted). Without `modulus_derivatives` the continuum model

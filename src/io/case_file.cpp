@@ -194,14 +194,15 @@ drivers::ContactCase read_case(const toml::table& root_table,
     }
 
     if (auto table = root.table("numerics")) {
-        table->reject_unknown(
-            {"elements", "time_step", "output_every", "half_width", "max_element_steps", "max_memory"});
+        table->reject_unknown({"elements", "time_step", "output_every", "half_width", "max_element_steps", "max_memory",
+                               "layer_cells"});
         parts.numerics.elements = table->optional_count("elements");
         parts.numerics.time_step = table->optional_number("time_step");
         parts.numerics.half_width = table->optional_number("half_width");
         parts.numerics.output_every = table->optional_count("output_every").value_or(1);
         parts.numerics.max_element_steps = table->optional_number("max_element_steps");
         parts.numerics.max_memory = table->optional_number("max_memory");
+        parts.numerics.layer_cells = table->optional_count("layer_cells");
     }
 
     // Files a material names (a table's `file`) are found next to the case file (the parsed table's source).

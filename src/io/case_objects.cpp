@@ -98,9 +98,10 @@ Edits edits_of(const drivers::ContactCase& base) {
 
 double* optional_number(std::optional<double>& value) { return value ? &*value : nullptr; }
 
-// The number of `[numerics]` under `name` (`elements` and `output_every` are counts).
+// The number of `[numerics]` under `name` (`elements`, `layer_cells` and `output_every` are counts).
 Slot numerics_slot(drivers::NumericsOptions& numerics, const std::string& name) {
     if (name == "elements") return {nullptr, numerics.elements ? &*numerics.elements : nullptr};
+    if (name == "layer_cells") return {nullptr, numerics.layer_cells ? &*numerics.layer_cells : nullptr};
     if (name == "output_every") return {nullptr, &numerics.output_every};
     if (name == "time_step") return {optional_number(numerics.time_step)};
     if (name == "half_width") return {optional_number(numerics.half_width)};

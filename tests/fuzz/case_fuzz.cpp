@@ -77,13 +77,15 @@ void require_finite_output(const mdr::drivers::ContactCase& contact_case,
     }
 }
 
-// Parses and checks the case; then runs it on at most 100 elements when that stays below 2e6 element-steps, for
-// at most a second.
+// Parses and checks the case; then runs it on at most 100 elements (on a [layer] at most 30 cells, which count m^2 a
+// step) when that stays below 2e6 element-steps, for at most a second.
 void exercise(const std::string& text) {
     auto contact_case = mdr::io::parse_case(text, "fuzz");
     mdr::io::describe(contact_case);
     mdr::drivers::resolve_numerics(contact_case);
     if (!contact_case.numerics.elements || *contact_case.numerics.elements > 100) contact_case.numerics.elements = 100;
+    auto& cells = contact_case.numerics.layer_cells;
+    if (contact_case.layer && (!cells || *cells > 30)) cells = 30;
     contact_case.numerics.max_element_steps = 2e6;
     contact_case.numerics.max_memory = 2e8;
     try {

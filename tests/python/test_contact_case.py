@@ -478,7 +478,7 @@ def test_the_parts_show_their_values():
     assert repr(harmonic) == "Harmonic(amplitude=1e-06, frequency=2.0, start=0.5, end=1.5)"
     assert repr(mdr.ShoreTest(scale="D", duration=3.0)) == 'ShoreTest(scale="D", duration=3.0)'
     assert repr(mdr.Numerics(elements=200)) == ("Numerics(elements=200, time_step=None, half_width=None, "
-                                                "output_every=1, max_element_steps=None, max_memory=None)")
+                                                "output_every=1, max_element_steps=None, max_memory=None, layer_cells=None)")
     assert repr(mdr.Layer(thickness=1e-3, interface="sliding")) == 'Layer(thickness=0.001, interface="sliding")'
     assert repr(mdr.ObliqueImpact(friction=0.3, spin=2.0)) == (
         "ObliqueImpact(friction=0.3, tangential_velocity=0.0, spin=2.0, moment_of_inertia=None)")

@@ -33,10 +33,10 @@ std::string bonded_layer(double thickness, int cells) {
            std::to_string(cells) + "\n";
 }
 
-// The case on the cells (NumericsOptions::layer_cells, as snapshots ask) or in Ting's class.
+// The case on the cells (NumericsOptions::cells_from_start, as snapshots ask) or in Ting's class.
 mdr::drivers::IndentationResult run(const std::string& text, bool on_cells) {
     auto contact_case = mdr::io::parse_case(text);
-    contact_case.numerics.layer_cells = on_cells;
+    contact_case.numerics.cells_from_start = on_cells;
     return mdr::drivers::run_case(contact_case);
 }
 

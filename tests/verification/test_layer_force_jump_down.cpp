@@ -42,10 +42,10 @@ std::string force_case(const std::string& material, const std::string& shape, co
 
 const std::string sphere = "shape = \"sphere\"\nR = 1.0e-5\n";
 
-// Runs `text` on the layer's cells from the start (NumericsOptions::layer_cells, as a fit runs them).
+// Runs `text` on the layer's cells from the start (NumericsOptions::cells_from_start, as a fit runs them).
 drivers::IndentationResult run_on_cells(const std::string& text) {
     auto contact_case = io::parse_case(text, "test case");
-    contact_case.numerics.layer_cells = true;
+    contact_case.numerics.cells_from_start = true;
     return drivers::run_case(contact_case);
 }
 

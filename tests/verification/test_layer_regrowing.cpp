@@ -245,7 +245,7 @@ TEST(LayerRegrowing, ACompressibleBodyOfConstantPoissonRatioRegrowsAsTheIncompre
 }
 
 TEST(LayerRegrowing, CellsFromTheStartMeetTingsSolutionOnALoadUnload) {
-    // NumericsOptions::layer_cells (a fit's model): a load-unload in Ting's class, past the loss of contact, on cells
+    // NumericsOptions::cells_from_start (a fit's model): a load-unload in Ting's class, past the loss of contact, on cells
     // from the start against the run of Ting's class (eq. L11 to L14, exact in time and to ~1e-8 in space) on the
     // same grid, h = 2 um.
     const std::string triangle = "history = [[0.0, 0.0], [1.0, 1.0e-6], [2.0, 0.0]]\n";
@@ -254,7 +254,7 @@ TEST(LayerRegrowing, CellsFromTheStartMeetTingsSolutionOnALoadUnload) {
     std::vector<double> errors;
     for (const int cells : {100, 200, 400}) {
         auto on_cells = mdr::io::parse_case(regrowing_case(standard_solid, triangle, layer_with_cells(2.0e-6, cells)));
-        on_cells.numerics.layer_cells = true;
+        on_cells.numerics.cells_from_start = true;
         errors.push_back(force_difference(mdr::drivers::run_case(on_cells), ting));
     }
     // Observed 6.5e-4, 1.7e-4, 4.3e-5 of the peak force: the cells' error, second order (were the flag ignored, the
@@ -282,7 +282,7 @@ TEST(LayerRegrowing, CellsMeetTingsSolutionWhereTheContactJumpsOutwardInOneStep)
     std::vector<double> errors;
     for (const std::size_t cells : {100u, 200u, 400u}) {
         auto on_cells = with_cells(cells);
-        on_cells.numerics.layer_cells = true;
+        on_cells.numerics.cells_from_start = true;
         const auto result = mdr::drivers::run_case(on_cells);
         errors.push_back(force_difference(result, ting));
     }

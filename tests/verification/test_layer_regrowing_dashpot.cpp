@@ -177,7 +177,7 @@ double kelvin_voigt_elastic_force(double time, double force, double held, double
 }
 
 // The largest |F_el(d) - the closed form| over the rows of a Kelvin-Voigt sphere on a bonded layer h = 2 um run on the
-// cells (NumericsOptions::layer_cells, as a fit runs them) under the force ramped to `force` in 0.2 s, then `held` to
+// cells (NumericsOptions::cells_from_start, as a fit runs them) under the force ramped to `force` in 0.2 s, then `held` to
 // 1 s, over held / G.
 double kelvin_voigt_error_on_cells(double force, double held, int cells) {
     const double modulus = 1.0e3, viscosity = 50.0, ramp = 0.2;
@@ -187,7 +187,7 @@ double kelvin_voigt_error_on_cells(double force, double held, int cells) {
         "\"bonded\"\n[numerics]\nelements = {}\n",
         kelvin_voigt, ramp, force, ramp, held, held, cells);
     auto contact_case = io::parse_case(text, "test case");
-    contact_case.numerics.layer_cells = true;
+    contact_case.numerics.cells_from_start = true;
     const auto result = drivers::run_case(contact_case);
     const contact::LayerContact elastic(*contact_case.layer, 0.5, contact_case.indenter, 6.0e-6);
     double error = 0.0;

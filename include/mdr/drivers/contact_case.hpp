@@ -28,13 +28,16 @@ struct NumericsOptions {
     std::size_t output_every = 1;          ///< write every n-th step
     std::optional<double> max_element_steps;  ///< bound on steps x elements (default_max_element_steps)
     std::optional<double> max_memory;         ///< bound on the run's memory [bytes] (default_max_memory)
+    /// On a `[layer]`: the cells of the coupled time-stepping (eq. L16 to L19; default: `elements`, else
+    /// default_layer_cells; layer_cell_count, include/mdr/drivers/layer_indentation.hpp).
+    std::optional<std::size_t> layer_cells;
     /// Smallest number of steps per history segment (ResolvedNumerics::min_segment_steps); a fit sets 1, as its
     /// measured points under displacement control are exact steps (not a case-file key).
     std::optional<std::size_t> min_segment_steps{};
     /// On a `[layer]`: run a history on cells from the start (eq. L16 to L19), not Ting's class first and cells only
     /// where its contact grows again; a fit sets it, so that its model does not switch between the two solutions
     /// (exact, and second order in the cell) as its parameters move (not a case-file key).
-    bool layer_cells = false;
+    bool cells_from_start = false;
 };
 
 /// The numerics actually used, after defaults.

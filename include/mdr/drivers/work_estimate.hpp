@@ -22,8 +22,10 @@ inline constexpr double default_max_memory = 8e9;
 /// The estimated cost of a run.
 struct WorkEstimate {
     double steps = 0.0;          ///< time steps; for an impact, up to its time limit (an upper bound)
-    double element_steps = 0.0;  ///< steps x elements, x 2 with tangential loading (its layer steps every element)
-    double memory = 0.0;         ///< bytes: time grid, history rows, element state
+    /// steps x elements, x 2 with tangential loading (its layer steps every element); on a `[layer]` of m cells
+    /// (layer_cell_count) steps x m^2 (a step's solve on the contact's cells) + m^3 / 3 (I - K factored once)
+    double element_steps = 0.0;
+    double memory = 0.0;  ///< bytes: time grid, history rows, element state (on a `[layer]` its cells' dense I - K)
 };
 
 /// Estimates the cost of running `contact_case` with `numerics` (as resolve_numerics gives them).

@@ -118,7 +118,7 @@ TEST_P(LayerObserver, StopsTheRunWithTheRowsOfTheFullRunUpToThen) {
 // reported their own way: an impact at every step, a history (i + 1) / nodes after state i, which no state says.
 TEST(LayerProgress, ReportsTheObservedFractionEachHundredthAsOnTheHalfSpace) {
     auto on_cells = reloading();
-    on_cells.numerics.layer_cells = true;
+    on_cells.numerics.cells_from_start = true;
     for (const ContactCase& contact_case : {loading(), on_cells, impact()}) {
         Watcher watcher;
         std::vector<double> fractions;
@@ -140,7 +140,7 @@ TEST(LayerProgress, ReportsTheObservedFractionEachHundredthAsOnTheHalfSpace) {
 // that way left 1 out after a state past 0.99).
 TEST(LayerProgress, EndsAtOneWhereTheRunEnds) {
     auto on_cells = reloading();
-    on_cells.numerics.layer_cells = true;
+    on_cells.numerics.cells_from_start = true;
     auto half_space = loading();
     half_space.layer.reset();
     for (const ContactCase& contact_case : {loading(), on_cells, half_space}) {
