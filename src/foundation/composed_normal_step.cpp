@@ -27,7 +27,8 @@ __attribute__((target_clones("avx2", "default"))) bool no_event(
     const double* __restrict h, std::size_t stride, double g_inf, double common, double depth,
     const double* __restrict g, const double* __restrict weight, const double* __restrict row) {
     return with_branches(branches, [&](auto m) {
-        const double* __restrict profile = g;  // local restrict pointers, as in stress_pass
+        // Local restrict pointers: the lambda's captures lose the parameters' (and the loop would stay scalar).
+        const double* __restrict profile = g;
         const double* __restrict displacement = w;
         const double* __restrict contact_flags = flags;
         const double* __restrict memory = h;
@@ -42,28 +43,6 @@ __attribute__((target_clones("avx2", "default"))) bool no_event(
             events += (contact_flags[i] != 0.0 ? contact : free) >= 0.0 ? 0 : 1;
         }
         return events == 0;
-    });
-}
-
-// Line loads 4 sigma_i (eq. 16, 22) of elements i < count: in contact G_inf w + eta rate + sum_k G_k (A_k h^_k + C_k)
-// with w = d - g_i when `composed` is 1, the written w_i when 0 (A_k = 1, C_k = 0 then); 0 out of contact.
-__attribute__((target_clones("avx2", "default"))) void stress_pass(
-    std::size_t count, std::size_t branches, double composed, double depth, double g_inf, double dashpot,
-    const double* __restrict g, const double* __restrict w, const double* __restrict flags,
-    const double* __restrict h, std::size_t stride, const double* __restrict moduli, const double* __restrict scale,
-    const double* __restrict shift, double* __restrict out) {
-    with_branches(branches, [&](auto m) {
-        // Local restrict pointers: the lambda's captures lose the parameters' (and the loop would stay scalar).
-        const double* __restrict profile = g;
-        const double* __restrict displacement = w;
-        const double* __restrict contact = flags;
-        const double* __restrict memory = h;
-        double* __restrict loads = out;
-        for (std::size_t i = 0; i < count; ++i) {
-            double stress = g_inf * (composed * (depth - profile[i]) + (1.0 - composed) * displacement[i]) + dashpot;
-            for (std::size_t k = 0; k < m; ++k) stress += moduli[k] * (scale[k] * memory[k * stride + i] + shift[k]);
-            loads[i] = contact[i] != 0.0 ? normal_stiffness_factor * stress : 0.0;
-        }
     });
 }
 
@@ -346,13 +325,23 @@ std::size_t ComposedNormalStep::summary_mismatch(std::span<const double> header,
     return header.size();
 }
 
-void ComposedNormalStep::line_loads(std::span<const double> header, const AttachedElements& elements, double depth,
-                                    std::span<double> out) const {
+LineLoadForm ComposedNormalStep::line_load_form(std::span<const double> header, const AttachedElements& elements,
+                                                double depth) const {
     const bool composed = header[composed_offset] != 0.0;
     const double* scale = composed ? header.data() + scale_offset : unit_.data();
-    stress_pass(elements.touched, branches_, composed ? 1.0 : 0.0, depth, g_inf_, viscosity_ * header[rate_offset],
-                profile_.data(), elements.w, elements.flags, elements.h, elements.stride, moduli_.data(), scale,
-                scale + branches_, out.data());
+    LineLoadForm form;
+    form.composed = composed ? 1.0 : 0.0;
+    form.depth = depth;
+    form.g_inf = g_inf_;
+    form.dashpot = viscosity_ * header[rate_offset];
+    form.profile = profile_.data();
+    form.w = elements.w;
+    form.h = elements.h;
+    form.stride = elements.stride;
+    form.moduli = moduli_.data();
+    form.scale = scale;
+    form.shift = scale + branches_;
+    return form;
 }
 
 }  // namespace mdr::foundation

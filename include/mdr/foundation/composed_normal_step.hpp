@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "mdr/foundation/line_load_form.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/rheology/rheology.hpp"
 
@@ -84,9 +85,11 @@ public:
     /// Element i's current displacement w [m] and memories h (M doubles) at depth `depth`.
     void element(std::span<const double> header, const double* w, const double* flags, const double* h,
                  std::size_t stride, std::size_t i, double depth, double& current_w, double* current_h) const;
-    /// Line loads q_z,i = 4 sigma_i [N/m] (eq. 22) of the touched elements at depth `depth` into `out`.
-    void line_loads(std::span<const double> header, const AttachedElements& elements, double depth,
-                    std::span<double> out) const;
+    /// The line loads q_z,i = 4 sigma_i [N/m] (eq. 22) of the touched elements in contact at depth `depth`, as a
+    /// formula over the header and the written elements (composed_line_load); it reads them in place, so it holds
+    /// while they and the header stay as they are.
+    LineLoadForm line_load_form(std::span<const double> header, const AttachedElements& elements,
+                                double depth) const;
 
 private:
     struct Step;
