@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "with_branches.hpp"
 
@@ -25,17 +26,28 @@ inline PlanarVector relaxed_stress(std::size_t i, Branches branches, std::size_t
     return {x, y};
 }
 
-// sum_i values[i] over i < count in four interleaved partial sums, s_j over i = j mod 4, added as (s_0 + s_1) +
-// (s_2 + s_3): an order fixed whatever the instruction set (so that every clone gives the same bits) that compiles to
-// one vector addition per four elements where a sum in element order is a chain of scalar additions.
-inline __attribute__((always_inline)) double interleaved_sum(const double* __restrict values, std::size_t count) {
-    double partial[4] = {0.0, 0.0, 0.0, 0.0};
-    std::size_t i = 0;
-    for (; i + 4 <= count; i += 4) {
-        for (std::size_t j = 0; j < 4; ++j) partial[j] += values[i + j];
+// The stress buffers' length for `count` elements: a multiple of four (interleaved_sums).
+constexpr std::size_t padded(std::size_t count) { return (count + 3) / 4 * 4; }
+
+// (sum_i t_x,i, sum_i t_y,i) over i < count, each in four interleaved partial sums, s_j over i = j mod 4, added as
+// (s_0 + s_1) + (s_2 + s_3): an order fixed whatever the instruction set (so that every clone gives the same bits)
+// that compiles to one vector addition per four elements where a sum in element order is a chain of scalar
+// additions. The buffers hold padded(count) values; those from `count` on are set to zero first, so that the sum
+// needs no tail.
+inline __attribute__((always_inline)) PlanarVector interleaved_sums(double* __restrict t_x, double* __restrict t_y,
+                                                                    std::size_t count) {
+    const std::size_t end = padded(count);
+    for (std::size_t i = count; i < end; ++i) t_x[i] = t_y[i] = 0.0;
+    using Lanes = double __attribute__((vector_size(4 * sizeof(double))));  // s_0..s_3 (two registers without AVX)
+    Lanes x = {0.0, 0.0, 0.0, 0.0}, y = {0.0, 0.0, 0.0, 0.0};
+    for (std::size_t i = 0; i < end; i += 4) {
+        Lanes block_x, block_y;
+        std::memcpy(&block_x, t_x + i, sizeof block_x);
+        std::memcpy(&block_y, t_y + i, sizeof block_y);
+        x += block_x;
+        y += block_y;
     }
-    for (std::size_t j = 0; i + j < count; ++j) partial[j] += values[i + j];
-    return (partial[0] + partial[1]) + (partial[2] + partial[3]);
+    return {(x[0] + x[1]) + (x[2] + x[3]), (y[0] + y[1]) + (y[2] + y[3])};
 }
 
 // Eq. (50) with vectors over `count` elements, one branch-free pass (selects, so that it vectorises with
@@ -45,7 +57,7 @@ inline __attribute__((always_inline)) double interleaved_sum(const double* __res
 // memories, h <- E h + B du (step_coefficients.hpp; `decay` E_k, `gain` B_k). The relaxed stresses are formed here,
 // not in a pass of their own, and so are the line loads q_i where they are the composed normal step's (`Composed`:
 // composed_line_load of `loads`, ComposedNormalStep::line_load_form; else loads.written). Returns sum_i t_i
-// (interleaved_sum). The arrays as restrict parameters, used by the lambda directly: copied into a structure, or
+// (interleaved_sums). The arrays as restrict parameters, used by the lambda directly: copied into a structure, or
 // inside the member function, GCC 12 leaves this loop scalar.
 template <bool Composed>
 inline __attribute__((always_inline)) void stick_or_slip(
@@ -112,11 +124,11 @@ inline __attribute__((always_inline)) void stick_or_slip(
         profile, normal_w, normal_h, moduli, scale, shift, u_x, u_y, memory, t_x, t_y
 __attribute__((target_clones("avx2", "default"))) PlanarVector stick_or_slip_written(MDR_STICK_OR_SLIP_PARAMETERS) {
     stick_or_slip<false>(MDR_STICK_OR_SLIP_ARGUMENTS);
-    return {interleaved_sum(t_x, count), interleaved_sum(t_y, count)};
+    return interleaved_sums(t_x, t_y, count);
 }
 __attribute__((target_clones("avx2", "default"))) PlanarVector stick_or_slip_composed(MDR_STICK_OR_SLIP_PARAMETERS) {
     stick_or_slip<true>(MDR_STICK_OR_SLIP_ARGUMENTS);
-    return {interleaved_sum(t_x, count), interleaved_sum(t_y, count)};
+    return interleaved_sums(t_x, t_y, count);
 }
 #undef MDR_STICK_OR_SLIP_PARAMETERS
 #undef MDR_STICK_OR_SLIP_ARGUMENTS
@@ -137,7 +149,7 @@ PlanarTangentialLayer::PlanarTangentialLayer(const rheology::Rheology& material,
       spacing_(spacing),
       count_(count),
       displacement_(2 * count, 0.0),
-      stress_(2 * count, 0.0),
+      stress_(2 * padded(count), 0.0),
       memory_(2 * count * material.terms().size(), 0.0),
       weight_(material.terms().size(), 0.0),
       share_(count) {}
@@ -157,10 +169,10 @@ PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, std::spa
 PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, const LineLoadForm& normal_line_loads,
                                                 std::span<const double> contact) const {
     const std::size_t n = count_;
-    // The stresses of advance's pass, summed in its order (interleaved_sum), so that a trial of the increment a step
+    // The stresses of advance's pass, summed in its order (interleaved_sums), so that a trial of the increment a step
     // then takes gives that step's force to the bit.
     double* t_x = stress_.data();
-    double* t_y = stress_.data() + n;
+    double* t_y = stress_.data() + padded(n);
     for (std::size_t i = 0; i < contact.size(); ++i) {
         t_x[i] = t_y[i] = 0.0;
         if (contact[i] == 0.0) continue;
@@ -176,7 +188,8 @@ PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, const Li
         t_y[i] = trial_y * scale;
     }
     const double factor = 2.0 * tangential_stiffness_factor * spacing_;
-    return {factor * interleaved_sum(t_x, contact.size()), factor * interleaved_sum(t_y, contact.size())};
+    const PlanarVector sum = interleaved_sums(t_x, t_y, contact.size());
+    return {factor * sum[0], factor * sum[1]};
 }
 
 void PlanarTangentialLayer::advance(PlanarVector increment, std::span<const double> normal_line_loads,
@@ -197,7 +210,7 @@ void PlanarTangentialLayer::advance(PlanarVector increment, const LineLoadForm& 
         pass(touched_, weight_.size(), count_, increment, material_.equilibrium_modulus(), step_.stiffness, per_load_,
              weight_.data(), step_.decay.data(), step_.gain.data(), contact.data(), share_.data(), q, q.written,
              q.profile, q.w, q.h, q.moduli, q.scale, q.shift, u, u + count_, memories(), stress_.data(),
-             stress_.data() + count_);
+             stress_.data() + padded(count_));
     const double factor = 2.0 * tangential_stiffness_factor * spacing_;
     total_force_ = {factor * sum[0], factor * sum[1]};
     if (header_ != nullptr) {
