@@ -116,6 +116,32 @@ TEST(DemContactLaw, AFrictionlessOrHeadOnContactLeavesItsTangentialElementsUnloa
     EXPECT_NE(rough.tangential_force(head_on)[0], 0.0);
 }
 
+// A trial of the displacement a step then takes gives that step's tangential force to the bit: the layer's trial
+// forms the same element stresses and sums them in the order of the step's pass (four interleaved partial sums,
+// planar_tangential_layer.cpp), with the line loads a Foundation's step wrote and with those the tangential pass
+// forms from the composed normal step's header (foundation::LineLoadForm) alike.
+TEST(DemContactLaw, ATangentialTrialIsTheStepsForceToTheBit) {
+    auto law = make_law();
+    std::vector<double> state(law.state_size());
+    law.initialise(state);
+    const std::size_t composed_flag = law_header + foundation::ComposedNormalStep::composed_offset;
+    int composed = 0, written = 0;
+    for (int n = 1; n < 900; ++n) {
+        const double overlap = overlap_at(std::min(n, 250), 1.0);  // rising, then held from step 250
+        const PlanarVector displacement{displacement_at(n, 1.0), displacement_at(n, 0.5)};
+        law.begin(state);
+        law.advance_normal(overlap);
+        const PlanarVector trial = law.tangential_trial(displacement);
+        law.advance_tangential(displacement);
+        law.end(state);
+        ASSERT_EQ(trial, law.tangential_force()) << "step " << n;
+        (state[composed_flag] != 0.0 ? composed : written) += 1;
+    }
+    EXPECT_GT(composed, 500);  // both forms of the line loads were read
+    EXPECT_GT(written, 10);
+    EXPECT_NE(law.tangential_force()[0], 0.0);
+}
+
 #if MDR_COUNTS_ALLOCATIONS
 TEST(DemContactLaw, AStepAllocatesNothing) {
     auto law = make_law();
