@@ -325,23 +325,4 @@ std::size_t ComposedNormalStep::summary_mismatch(std::span<const double> header,
     return header.size();
 }
 
-LineLoadForm ComposedNormalStep::line_load_form(std::span<const double> header, const AttachedElements& elements,
-                                                double depth) const {
-    const bool composed = header[composed_offset] != 0.0;
-    const double* scale = composed ? header.data() + scale_offset : unit_.data();
-    LineLoadForm form;
-    form.composed = composed ? 1.0 : 0.0;
-    form.depth = depth;
-    form.g_inf = g_inf_;
-    form.dashpot = viscosity_ * header[rate_offset];
-    form.profile = profile_.data();
-    form.w = elements.w;
-    form.h = elements.h;
-    form.stride = elements.stride;
-    form.moduli = moduli_.data();
-    form.scale = scale;
-    form.shift = scale + branches_;
-    return form;
-}
-
 }  // namespace mdr::foundation

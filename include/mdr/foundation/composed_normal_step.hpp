@@ -88,8 +88,15 @@ public:
     /// The line loads q_z,i = 4 sigma_i [N/m] (eq. 22) of the touched elements in contact at depth `depth`, as a
     /// formula over the header and the written elements (composed_line_load); it reads them in place, so it holds
     /// while they and the header stay as they are.
+    /// Inline: a step with friction takes it every time.
     LineLoadForm line_load_form(std::span<const double> header, const AttachedElements& elements,
-                                double depth) const;
+                                double depth) const {
+        const bool composed = header[composed_offset] != 0.0;
+        const double* scale = composed ? header.data() + factors_offset : unit_.data();
+        return {nullptr,    composed ? 1.0 : 0.0, depth, g_inf_,        viscosity_ * header[rate_offset],
+                profile_.data(), elements.w,      elements.h, elements.stride, moduli_.data(),
+                scale,      scale + branches_};
+    }
 
 private:
     struct Step;
