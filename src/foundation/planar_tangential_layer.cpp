@@ -26,28 +26,29 @@ inline PlanarVector relaxed_stress(std::size_t i, Branches branches, std::size_t
     return {x, y};
 }
 
-// The stress buffers' length for `count` elements: a multiple of four (interleaved_sums).
-constexpr std::size_t padded(std::size_t count) { return (count + 3) / 4 * 4; }
-
-// (sum_i t_x,i, sum_i t_y,i) over i < count, each in four interleaved partial sums, s_j over i = j mod 4, added as
-// (s_0 + s_1) + (s_2 + s_3): an order fixed whatever the instruction set (so that every clone gives the same bits)
-// that compiles to one vector addition per four elements where a sum in element order is a chain of scalar
-// additions. The buffers hold padded(count) values; those from `count` on are set to zero first, so that the sum
-// needs no tail.
-inline __attribute__((always_inline)) PlanarVector interleaved_sums(double* __restrict t_x, double* __restrict t_y,
-                                                                    std::size_t count) {
-    const std::size_t end = padded(count);
-    for (std::size_t i = count; i < end; ++i) t_x[i] = t_y[i] = 0.0;
+// (sum_i t_x,i, sum_i t_y,i) over i < count, each in four interleaved partial sums, s_j over i = j mod 4 in element
+// order, added as (s_0 + s_1) + (s_2 + s_3): an order fixed whatever the instruction set (so that every clone gives
+// the same bits) that takes one vector addition per four elements where a sum in element order is a chain of scalar
+// additions. The blocks of four are read as the element pass's vector stores wrote them and the last count mod 4
+// one by one (a load spanning several stores would wait for them: no padding with zeros).
+inline __attribute__((always_inline)) PlanarVector interleaved_sums(const double* __restrict t_x,
+                                                                    const double* __restrict t_y, std::size_t count) {
     using Lanes = double __attribute__((vector_size(4 * sizeof(double))));  // s_0..s_3 (two registers without AVX)
     Lanes x = {0.0, 0.0, 0.0, 0.0}, y = {0.0, 0.0, 0.0, 0.0};
-    for (std::size_t i = 0; i < end; i += 4) {
+    std::size_t i = 0;
+    for (; i + 4 <= count; i += 4) {
         Lanes block_x, block_y;
         std::memcpy(&block_x, t_x + i, sizeof block_x);
         std::memcpy(&block_y, t_y + i, sizeof block_y);
         x += block_x;
         y += block_y;
     }
-    return {(x[0] + x[1]) + (x[2] + x[3]), (y[0] + y[1]) + (y[2] + y[3])};
+    double lane_x[4] = {x[0], x[1], x[2], x[3]}, lane_y[4] = {y[0], y[1], y[2], y[3]};
+    for (std::size_t j = 0; i + j < count; ++j) {
+        lane_x[j] += t_x[i + j];
+        lane_y[j] += t_y[i + j];
+    }
+    return {(lane_x[0] + lane_x[1]) + (lane_x[2] + lane_x[3]), (lane_y[0] + lane_y[1]) + (lane_y[2] + lane_y[3])};
 }
 
 // Eq. (50) with vectors over `count` elements, one branch-free pass (selects, so that it vectorises with
@@ -149,7 +150,7 @@ PlanarTangentialLayer::PlanarTangentialLayer(const rheology::Rheology& material,
       spacing_(spacing),
       count_(count),
       displacement_(2 * count, 0.0),
-      stress_(2 * padded(count), 0.0),
+      stress_(2 * count, 0.0),
       memory_(2 * count * material.terms().size(), 0.0),
       weight_(material.terms().size(), 0.0),
       share_(count) {}
@@ -176,7 +177,7 @@ PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, const Li
     // The stresses of advance's pass, summed in its order (interleaved_sums), so that a trial of the increment a step
     // then takes gives that step's force to the bit.
     double* t_x = stress_.data();
-    double* t_y = stress_.data() + padded(n);
+    double* t_y = stress_.data() + n;
     for (std::size_t i = 0; i < contact.size(); ++i) {
         t_x[i] = t_y[i] = 0.0;
         if (contact[i] == 0.0) continue;
@@ -214,7 +215,7 @@ void PlanarTangentialLayer::advance(PlanarVector increment, const LineLoadForm& 
         pass(touched_, weight_.size(), count_, increment, material_.equilibrium_modulus(), step_.stiffness, per_load_,
              weight_.data(), step_.decay.data(), step_.gain.data(), contact.data(), share_.data(), q, q.written,
              q.profile, q.w, q.h, q.moduli, q.scale, q.shift, u, u + count_, memories(), stress_.data(),
-             stress_.data() + padded(count_));
+             stress_.data() + count_);
     const double factor = 2.0 * tangential_stiffness_factor * spacing_;
     total_force_ = {factor * sum[0], factor * sum[1]};
     if (header_ != nullptr) {

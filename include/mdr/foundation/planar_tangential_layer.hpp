@@ -93,7 +93,7 @@ private:
     double spacing_;
     std::size_t count_;
     std::vector<double> displacement_;  ///< u_i when no state is attached
-    mutable std::vector<double> stress_;  ///< t_x, then t_y (padded to a multiple of 4 each) of the last step or trial
+    mutable std::vector<double> stress_;  ///< t_x, then t_y of the last step or trial (scratch, not part of the state)
     std::vector<double> memory_;        ///< h_{k,i} when no state is attached
     double* header_ = nullptr;          ///< the attached state (force, touched count, u_i, h_{k,i}), else null
     std::vector<double> weight_;        ///< G_k E_k of the prepared step: h_k's share of the relaxed stress
