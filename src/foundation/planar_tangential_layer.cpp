@@ -65,22 +65,21 @@ inline __attribute__((always_inline)) void stick_or_slip(
     std::size_t count, std::size_t branches, std::size_t n, PlanarVector increment, double g_inf, double stiffness,
     double per_load, const double* __restrict weight, const double* __restrict decay, const double* __restrict gain,
     const double* __restrict mask, const double* __restrict share, const LineLoadForm& loads,
-    const double* __restrict written, const double* __restrict profile, const double* __restrict normal_w,
-    const double* __restrict normal_h, const double* __restrict moduli, const double* __restrict scale,
+    const double* __restrict written, const double* __restrict profile, const double* __restrict normal_h, const double* __restrict moduli, const double* __restrict scale,
     const double* __restrict shift, double* __restrict u_x, double* __restrict u_y, double* __restrict memory,
     double* __restrict t_x, double* __restrict t_y) {
     with_branches(branches, [&](auto m) __attribute__((always_inline)) {
         const double compliance = 1.0 / stiffness;
         const double along_x = increment[0], along_y = increment[1];
-        const double composed = loads.composed, depth = loads.depth, normal_g_inf = loads.g_inf;
+        const double depth = loads.depth, normal_g_inf = loads.g_inf;
         const double dashpot = loads.dashpot;
         const std::size_t normal_stride = loads.stride;
         for (std::size_t i = 0; i < count; ++i) {
             const PlanarVector relaxed = relaxed_stress(i, m, n, g_inf, weight, u_x, u_y, memory);
             double q;
             if constexpr (Composed) {
-                q = composed_line_load(i, m, composed, depth, normal_g_inf, dashpot, profile, normal_w, normal_h,
-                                       normal_stride, moduli, scale, shift);
+                q = composed_line_load(i, m, depth, normal_g_inf, dashpot, profile, normal_h, normal_stride, moduli,
+                                       scale, shift);
             } else {
                 q = written[i];
             }
@@ -117,12 +116,12 @@ inline __attribute__((always_inline)) void stick_or_slip(
         double per_load, const double* __restrict weight, const double* __restrict decay,                              \
         const double* __restrict gain, const double* __restrict mask, const double* __restrict share,                  \
         const LineLoadForm& loads, const double* __restrict written, const double* __restrict profile,                \
-        const double* __restrict normal_w, const double* __restrict normal_h, const double* __restrict moduli,         \
+        const double* __restrict normal_h, const double* __restrict moduli,                                            \
         const double* __restrict scale, const double* __restrict shift, double* __restrict u_x,                        \
         double* __restrict u_y, double* __restrict memory, double* __restrict t_x, double* __restrict t_y
 #define MDR_STICK_OR_SLIP_ARGUMENTS                                                                                    \
     count, branches, n, increment, g_inf, stiffness, per_load, weight, decay, gain, mask, share, loads, written,       \
-        profile, normal_w, normal_h, moduli, scale, shift, u_x, u_y, memory, t_x, t_y
+        profile, normal_h, moduli, scale, shift, u_x, u_y, memory, t_x, t_y
 __attribute__((target_clones("avx2", "default"))) PlanarVector stick_or_slip_written(MDR_STICK_OR_SLIP_PARAMETERS) {
     stick_or_slip<false>(MDR_STICK_OR_SLIP_ARGUMENTS);
     return interleaved_sums(t_x, t_y, count);
@@ -137,8 +136,8 @@ __attribute__((target_clones("avx2", "default"))) PlanarVector stick_or_slip_com
 // q_z,i of element i (not vectorised: trials only).
 double line_load(const LineLoadForm& loads, std::size_t branches, std::size_t i) {
     if (loads.written != nullptr) return loads.written[i];
-    return composed_line_load(i, branches, loads.composed, loads.depth, loads.g_inf, loads.dashpot, loads.profile,
-                              loads.w, loads.h, loads.stride, loads.moduli, loads.scale, loads.shift);
+    return composed_line_load(i, branches, loads.depth, loads.g_inf, loads.dashpot, loads.profile, loads.h,
+                              loads.stride, loads.moduli, loads.scale, loads.shift);
 }
 
 }  // namespace
@@ -214,7 +213,7 @@ void PlanarTangentialLayer::advance(PlanarVector increment, const LineLoadForm& 
     const PlanarVector sum =
         pass(touched_, weight_.size(), count_, increment, material_.equilibrium_modulus(), step_.stiffness, per_load_,
              weight_.data(), step_.decay.data(), step_.gain.data(), contact.data(), share_.data(), q, q.written,
-             q.profile, q.w, q.h, q.moduli, q.scale, q.shift, u, u + count_, memories(), stress_.data(),
+             q.profile, q.h, q.moduli, q.scale, q.shift, u, u + count_, memories(), stress_.data(),
              stress_.data() + count_);
     const double factor = 2.0 * tangential_stiffness_factor * spacing_;
     total_force_ = {factor * sum[0], factor * sum[1]};
