@@ -327,11 +327,10 @@ void ContactLaw::advance_normal(double overlap) {
     normal_work_ = 0.5 * (start_normal_force_ + normal_force_) * (overlap - overlap_);
     if (tangential_idle_) return;
     if (composed_step_) {
-        line_loads_ = composed_.line_load_form(header(), start, overlap);  // formed by the tangential pass
+        composed_.line_loads(header(), start, overlap, std::span<double>(loads_).first(touched_));
         layer_.begin_step(coefficients_);
     } else {
         foundation_.line_loads(loads_);
-        line_loads_ = foundation::LineLoadForm{.written = loads_.data()};
         layer_.begin_step(coefficients_, foundation_.entries());
     }
 }
@@ -344,6 +343,8 @@ bool ContactLaw::tangential_at_rest(PlanarVector increment) const {
     return tangential_idle_ || (layer_.touched() == 0 && increment[0] == 0.0 && increment[1] == 0.0);
 }
 
+std::span<const double> ContactLaw::loads() const { return std::span<const double>(loads_).first(touched_); }
+
 std::span<const double> ContactLaw::contact_flags() const {
     return {state_ + normal_offset_ + 3 + loads_.size(), touched_};  // the Foundation's flags (elements())
 }
@@ -351,7 +352,8 @@ std::span<const double> ContactLaw::contact_flags() const {
 PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
     const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};
     if (tangential_at_rest(increment)) return {0.0, 0.0};
-    return layer_.trial_force(increment, line_loads_, contact_flags());
+    return layer_.trial_force(increment, loads(),
+                              contact_flags());
 }
 
 void ContactLaw::advance_tangential(PlanarVector displacement) {
@@ -362,7 +364,7 @@ void ContactLaw::advance_tangential(PlanarVector displacement) {
         displacement_ = displacement;
         return;
     }
-    layer_.advance(increment, line_loads_, contact_flags());
+    layer_.advance(increment, loads(), contact_flags());
     const PlanarVector end_force = layer_.total_force();
     tangential_work_ = 0.5 * ((start_tangential_force_[0] + end_force[0]) * increment[0] +
                               (start_tangential_force_[1] + end_force[1]) * increment[1]);

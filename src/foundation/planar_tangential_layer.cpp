@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include "with_branches.hpp"
 
@@ -26,72 +25,33 @@ inline PlanarVector relaxed_stress(std::size_t i, Branches branches, std::size_t
     return {x, y};
 }
 
-// (sum_i t_x,i, sum_i t_y,i) over i < count, each in four interleaved partial sums, s_j over i = j mod 4 in element
-// order, added as (s_0 + s_1) + (s_2 + s_3): an order fixed whatever the instruction set (so that every clone gives
-// the same bits) that takes one vector addition per four elements where a sum in element order is a chain of scalar
-// additions. The blocks of four are read as the element pass's vector stores wrote them and the last count mod 4
-// one by one (a load spanning several stores would wait for them: no padding with zeros).
-inline __attribute__((always_inline)) PlanarVector interleaved_sums(const double* __restrict t_x,
-                                                                    const double* __restrict t_y, std::size_t count) {
-    using Lanes = double __attribute__((vector_size(4 * sizeof(double))));  // s_0..s_3 (two registers without AVX)
-    Lanes x = {0.0, 0.0, 0.0, 0.0}, y = {0.0, 0.0, 0.0, 0.0};
-    std::size_t i = 0;
-    for (; i + 4 <= count; i += 4) {
-        Lanes block_x, block_y;
-        std::memcpy(&block_x, t_x + i, sizeof block_x);
-        std::memcpy(&block_y, t_y + i, sizeof block_y);
-        x += block_x;
-        y += block_y;
-    }
-    double lane_x[4] = {x[0], x[1], x[2], x[3]}, lane_y[4] = {y[0], y[1], y[2], y[3]};
-    for (std::size_t j = 0; i + j < count; ++j) {
-        lane_x[j] += t_x[i + j];
-        lane_y[j] += t_y[i + j];
-    }
-    return {(lane_x[0] + lane_x[1]) + (lane_x[2] + lane_x[3]), (lane_y[0] + lane_y[1]) + (lane_y[2] + lane_y[3])};
-}
-
 // Eq. (50) with vectors over `count` elements, one branch-free pass (selects, so that it vectorises with
 // -fno-trapping-math and -fno-math-errno): an element in contact (mask 1) sticks while its trial, its relaxed stress
 // plus k du, stays inside the friction circle of radius per_load q_i and slips along its trial otherwise; out of
 // contact (mask 0) it is force-free. Writes the new stress t, adds the element's increment du to u and updates its
 // memories, h <- E h + B du (step_coefficients.hpp; `decay` E_k, `gain` B_k). The relaxed stresses are formed here,
-// not in a pass of their own, and so are the line loads q_i where they are the composed normal step's (`Composed`:
-// composed_line_load of `loads`, ComposedNormalStep::line_load_form; else loads.written). Returns sum_i t_i
-// (interleaved_sums). The arrays as restrict parameters, used by the lambda directly: copied into a structure, or
-// inside the member function, GCC 12 leaves this loop scalar.
-template <bool Composed>
-inline __attribute__((always_inline)) void stick_or_slip(
+// not in a pass of their own. A free function of restrict pointers: inside the member function GCC 12 leaves this
+// loop scalar.
+__attribute__((target_clones("avx2", "default"))) void stick_or_slip(
     std::size_t count, std::size_t branches, std::size_t n, PlanarVector increment, double g_inf, double stiffness,
     double per_load, const double* __restrict weight, const double* __restrict decay, const double* __restrict gain,
-    const double* __restrict mask, const double* __restrict share, const LineLoadForm& loads,
-    const double* __restrict written, const double* __restrict profile, const double* __restrict normal_h, const double* __restrict moduli, const double* __restrict scale,
-    const double* __restrict shift, double* __restrict u_x, double* __restrict u_y, double* __restrict memory,
-    double* __restrict t_x, double* __restrict t_y) {
-    with_branches(branches, [&](auto m) __attribute__((always_inline)) {
+    const double* __restrict mask, const double* __restrict q, const double* __restrict share,
+    double* __restrict u_x, double* __restrict u_y, double* __restrict memory, double* __restrict t_x,
+    double* __restrict t_y) {
+    with_branches(branches, [&](auto m) {
         const double compliance = 1.0 / stiffness;
         const double along_x = increment[0], along_y = increment[1];
-        const double depth = loads.depth, normal_g_inf = loads.g_inf;
-        const double dashpot = loads.dashpot;
-        const std::size_t normal_stride = loads.stride;
         for (std::size_t i = 0; i < count; ++i) {
             const PlanarVector relaxed = relaxed_stress(i, m, n, g_inf, weight, u_x, u_y, memory);
-            double q;
-            if constexpr (Composed) {
-                q = composed_line_load(i, m, depth, normal_g_inf, dashpot, profile, normal_h, normal_stride, moduli,
-                                       scale, shift);
-            } else {
-                q = written[i];
-            }
             const double in = mask[i];
-            const double bound = in * per_load * std::max(q, 0.0);
+            const double bound = in * per_load * std::max(q[i], 0.0);
             const double moved_x = along_x * share[i], moved_y = along_y * share[i];
             const double trial_x = relaxed[0] + stiffness * moved_x;
             const double trial_y = relaxed[1] + stiffness * moved_y;
             const double magnitude = std::sqrt(trial_x * trial_x + trial_y * trial_y);
             const bool sticks = in != 0.0 && magnitude <= bound;
-            const double factor = sticks ? 1.0 : (in != 0.0 ? bound / magnitude : 0.0);
-            const double stress_x = trial_x * factor, stress_y = trial_y * factor;
+            const double scale = sticks ? 1.0 : (in != 0.0 ? bound / magnitude : 0.0);
+            const double stress_x = trial_x * scale, stress_y = trial_y * scale;
             const double du_x = sticks ? moved_x : (stress_x - relaxed[0]) * compliance;
             const double du_y = sticks ? moved_y : (stress_y - relaxed[1]) * compliance;
             u_x[i] += du_x;
@@ -106,38 +66,6 @@ inline __attribute__((always_inline)) void stick_or_slip(
             t_y[i] = stress_y;
         }
     });
-}
-
-// The pass and its sum for each form of the line loads, each compiled for AVX2 and for x86-64's baseline (a plugin
-// cannot assume the host's instruction set), the better chosen when the library is loaded; the parameters of
-// stick_or_slip, restrict here as well (else the composed form's loop stays scalar).
-#define MDR_STICK_OR_SLIP_PARAMETERS                                                                                   \
-    std::size_t count, std::size_t branches, std::size_t n, PlanarVector increment, double g_inf, double stiffness,   \
-        double per_load, const double* __restrict weight, const double* __restrict decay,                              \
-        const double* __restrict gain, const double* __restrict mask, const double* __restrict share,                  \
-        const LineLoadForm& loads, const double* __restrict written, const double* __restrict profile,                \
-        const double* __restrict normal_h, const double* __restrict moduli,                                            \
-        const double* __restrict scale, const double* __restrict shift, double* __restrict u_x,                        \
-        double* __restrict u_y, double* __restrict memory, double* __restrict t_x, double* __restrict t_y
-#define MDR_STICK_OR_SLIP_ARGUMENTS                                                                                    \
-    count, branches, n, increment, g_inf, stiffness, per_load, weight, decay, gain, mask, share, loads, written,       \
-        profile, normal_h, moduli, scale, shift, u_x, u_y, memory, t_x, t_y
-__attribute__((target_clones("avx2", "default"))) PlanarVector stick_or_slip_written(MDR_STICK_OR_SLIP_PARAMETERS) {
-    stick_or_slip<false>(MDR_STICK_OR_SLIP_ARGUMENTS);
-    return interleaved_sums(t_x, t_y, count);
-}
-__attribute__((target_clones("avx2", "default"))) PlanarVector stick_or_slip_composed(MDR_STICK_OR_SLIP_PARAMETERS) {
-    stick_or_slip<true>(MDR_STICK_OR_SLIP_ARGUMENTS);
-    return interleaved_sums(t_x, t_y, count);
-}
-#undef MDR_STICK_OR_SLIP_PARAMETERS
-#undef MDR_STICK_OR_SLIP_ARGUMENTS
-
-// q_z,i of element i (not vectorised: trials only).
-double line_load(const LineLoadForm& loads, std::size_t branches, std::size_t i) {
-    if (loads.written != nullptr) return loads.written[i];
-    return composed_line_load(i, branches, loads.depth, loads.g_inf, loads.dashpot, loads.profile, loads.h,
-                              loads.stride, loads.moduli, loads.scale, loads.shift);
 }
 
 }  // namespace
@@ -167,56 +95,44 @@ void PlanarTangentialLayer::begin_step(const StepCoefficients& coefficients, std
 
 PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, std::span<const double> normal_line_loads,
                                                 std::span<const double> contact) const {
-    return trial_force(increment, LineLoadForm{.written = normal_line_loads.data()}, contact);
-}
-
-PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, const LineLoadForm& normal_line_loads,
-                                                std::span<const double> contact) const {
     const std::size_t n = count_;
-    // The stresses of advance's pass, summed in its order (interleaved_sums), so that a trial of the increment a step
-    // then takes gives that step's force to the bit.
-    double* t_x = stress_.data();
-    double* t_y = stress_.data() + n;
+    double sum_x = 0.0, sum_y = 0.0;
     for (std::size_t i = 0; i < contact.size(); ++i) {
-        t_x[i] = t_y[i] = 0.0;
         if (contact[i] == 0.0) continue;
-        const double q = line_load(normal_line_loads, weight_.size(), i);
-        const double bound = per_load_ * std::max(q, 0.0);  // eq. (50), a circle
+        const double bound = per_load_ * std::max(normal_line_loads[i], 0.0);  // eq. (50), a circle
         const PlanarVector relaxed = relaxed_stress(i, weight_.size(), n, material_.equilibrium_modulus(),
                                                     weight_.data(), displacements(), displacements() + n, memories());
         const double trial_x = relaxed[0] + step_.stiffness * (increment[0] * share_[i]);
         const double trial_y = relaxed[1] + step_.stiffness * (increment[1] * share_[i]);
         const double magnitude = std::sqrt(trial_x * trial_x + trial_y * trial_y);
         const double scale = magnitude <= bound ? 1.0 : bound / magnitude;
-        t_x[i] = trial_x * scale;
-        t_y[i] = trial_y * scale;
+        sum_x += trial_x * scale;
+        sum_y += trial_y * scale;
     }
     const double factor = 2.0 * tangential_stiffness_factor * spacing_;
-    const PlanarVector sum = interleaved_sums(t_x, t_y, contact.size());
-    return {factor * sum[0], factor * sum[1]};
+    return {factor * sum_x, factor * sum_y};
 }
 
 void PlanarTangentialLayer::advance(PlanarVector increment, std::span<const double> normal_line_loads,
                                     std::span<const double> contact) {
-    advance(increment, LineLoadForm{.written = normal_line_loads.data()}, contact);
-}
-
-void PlanarTangentialLayer::advance(PlanarVector increment, const LineLoadForm& normal_line_loads,
-                                    std::span<const double> contact) {
     touched_ = std::max(touched_, contact.size());
     high_water_ = std::max(high_water_, touched_);
+    const std::size_t n = count_, count = touched_;
     // As TangentialLayer: the loads and flags cover every element ever touched (count = contact.size()); the flags
     // are the mask of the stick-or-slip pass (1 or 0).
-    const auto pass = normal_line_loads.written != nullptr ? stick_or_slip_written : stick_or_slip_composed;
-    const LineLoadForm& q = normal_line_loads;
     double* u = displacements();
-    const PlanarVector sum =
-        pass(touched_, weight_.size(), count_, increment, material_.equilibrium_modulus(), step_.stiffness, per_load_,
-             weight_.data(), step_.decay.data(), step_.gain.data(), contact.data(), share_.data(), q, q.written,
-             q.profile, q.h, q.moduli, q.scale, q.shift, u, u + count_, memories(), stress_.data(),
-             stress_.data() + count_);
+    const double* t_x = stress_.data();
+    const double* t_y = stress_.data() + n;
+    stick_or_slip(count, weight_.size(), n, increment, material_.equilibrium_modulus(), step_.stiffness, per_load_,
+                  weight_.data(), step_.decay.data(), step_.gain.data(), contact.data(), normal_line_loads.data(),
+                  share_.data(), u, u + n, memories(), stress_.data(), stress_.data() + n);
+    double sum_x = 0.0, sum_y = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        sum_x += t_x[i];
+        sum_y += t_y[i];
+    }
     const double factor = 2.0 * tangential_stiffness_factor * spacing_;
-    total_force_ = {factor * sum[0], factor * sum[1]};
+    total_force_ = {factor * sum_x, factor * sum_y};
     if (header_ != nullptr) {
         header_[0] = total_force_[0];
         header_[1] = total_force_[1];

@@ -155,6 +155,7 @@ private:
     std::span<double> header() const { return {state_ + header_offset, header_size_}; }
     foundation::AttachedElements elements() const;
     void prepare_foundation(bool summarise);
+    std::span<const double> loads() const;
     std::span<const double> contact_flags() const;
     std::size_t count_at(std::span<const double> state, std::size_t offset) const;
     [[noreturn, gnu::noinline, gnu::cold]] void refuse_count(std::size_t offset, double count) const;
@@ -167,8 +168,7 @@ private:
     foundation::PlanarTangentialLayer layer_;
     foundation::StepCoefficients coefficients_;
     rheology::Rheology material_;
-    std::vector<double> loads_;  ///< q_z,i of the last normal step when it was the Foundation's
-    foundation::LineLoadForm line_loads_;  ///< q_z,i of the last normal step (loads_, or the composed form)
+    std::vector<double> loads_;  ///< q_z,i of the last normal step
     double friction_;
     bool tangential_idle_ = false;  ///< the layer stays at rest this step (tangential_at_rest): nothing to step
     std::size_t branches_;

@@ -7,7 +7,6 @@
 #include <span>
 #include <vector>
 
-#include "mdr/foundation/line_load_form.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/rheology/rheology.hpp"
 
@@ -85,16 +84,10 @@ public:
     /// Element i's current displacement w [m] and memories h (M doubles) at depth `depth`.
     void element(std::span<const double> header, const double* w, const double* flags, const double* h,
                  std::size_t stride, std::size_t i, double depth, double& current_w, double* current_h) const;
-    /// The line loads q_z,i = 4 sigma_i [N/m] (eq. 22) of the touched elements in contact at depth `depth` after a
-    /// step advance took, as a formula over the header and the written memories (composed_line_load); it reads them
-    /// in place, so it holds while they and the header stay as they are. Inline: a step with friction takes it every
-    /// time.
-    LineLoadForm line_load_form(std::span<const double> header, const AttachedElements& elements,
-                                double depth) const {
-        const double* scale = header[composed_offset] != 0.0 ? header.data() + factors_offset : unit_.data();
-        return {nullptr,        depth,          g_inf_, viscosity_ * header[rate_offset], profile_.data(), elements.h,
-                elements.stride, moduli_.data(), scale,  scale + branches_};
-    }
+    /// Line loads q_z,i = 4 sigma_i [N/m] (eq. 22) of the touched elements at depth `depth` into `out`, after a step
+    /// advance took to `depth` (the elements in contact then have w_i = d - g_i; their written w_i are not read).
+    void line_loads(std::span<const double> header, const AttachedElements& elements, double depth,
+                    std::span<double> out) const;
 
 private:
     struct Step;

@@ -12,7 +12,6 @@
 
 #include "mdr/foundation/entry_shares.hpp"
 #include "mdr/foundation/foundation.hpp"
-#include "mdr/foundation/line_load_form.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/rheology/rheology.hpp"
 
@@ -46,15 +45,9 @@ public:
     /// TangentialLayer::trial_force. The state is not changed.
     PlanarVector trial_force(PlanarVector increment, std::span<const double> normal_line_loads,
                              std::span<const double> contact) const;
-    /// trial_force with the line loads in a LineLoadForm (ComposedNormalStep::line_load_form: formed element by
-    /// element, no pass of their own); `contact.size()` elements.
-    PlanarVector trial_force(PlanarVector increment, const LineLoadForm& normal_line_loads,
-                             std::span<const double> contact) const;
     /// Advances the state over the prepared step (arguments as for trial_force).
     void advance(PlanarVector increment, std::span<const double> normal_line_loads,
                  std::span<const double> contact);
-    /// advance with the line loads in a LineLoadForm.
-    void advance(PlanarVector increment, const LineLoadForm& normal_line_loads, std::span<const double> contact);
     /// Total tangential force [N] after the last step (eq. 46, both halves).
     PlanarVector total_force() const { return total_force_; }
     /// Number of elements.
@@ -93,7 +86,7 @@ private:
     double spacing_;
     std::size_t count_;
     std::vector<double> displacement_;  ///< u_i when no state is attached
-    mutable std::vector<double> stress_;  ///< t_x, then t_y of the last step or trial (scratch, not part of the state)
+    std::vector<double> stress_;        ///< t_i of the step being taken (not part of the state)
     std::vector<double> memory_;        ///< h_{k,i} when no state is attached
     double* header_ = nullptr;          ///< the attached state (force, touched count, u_i, h_{k,i}), else null
     std::vector<double> weight_;        ///< G_k E_k of the prepared step: h_k's share of the relaxed stress

@@ -116,10 +116,9 @@ TEST(DemContactLaw, AFrictionlessOrHeadOnContactLeavesItsTangentialElementsUnloa
     EXPECT_NE(rough.tangential_force(head_on)[0], 0.0);
 }
 
-// A trial of the displacement a step then takes gives that step's tangential force to the bit: the layer's trial
-// forms the same element stresses and sums them in the order of the step's pass (four interleaved partial sums,
-// planar_tangential_layer.cpp), with the line loads a Foundation's step wrote and with those the tangential pass
-// forms from the composed normal step's header (foundation::LineLoadForm) alike.
+// A trial of the displacement a step then takes gives that step's tangential force to the bit (the layer's trial
+// forms the same element stresses and sums them in the step's order), with the line loads of a Foundation's step and
+// with those the composed normal step derives from its header (ComposedNormalStep::line_loads) alike.
 TEST(DemContactLaw, ATangentialTrialIsTheStepsForceToTheBit) {
     auto law = make_law();
     std::vector<double> state(law.state_size());
