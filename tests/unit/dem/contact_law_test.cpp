@@ -141,6 +141,29 @@ TEST(DemContactLaw, ATangentialTrialIsTheStepsForceToTheBit) {
     EXPECT_NE(law.tangential_force()[0], 0.0);
 }
 
+// Without friction advance_spatial steps the normal problem only: the tangential force is zero, the state's
+// displacement and frame stay zero (no frame is turned: the tangential layer never carries a force), and the normal
+// force and the work are those of the planar step of the same overlaps, bit for bit.
+TEST(DemContactLaw, AFrictionlessSpatialStepIsTheNormalStepAlone) {
+    const auto material = rheology::Rheology::prony(1e6, {{3e6, 1e-3}, {1e6, 3e-5}});
+    ContactLaw spatial(material, 0.005, 0.0, 50, 1e-3, 2e-6), planar(material, 0.005, 0.0, 50, 1e-3, 2e-6);
+    std::vector<double> a(spatial.state_size()), b(planar.state_size());
+    spatial.initialise(a);
+    planar.initialise(b);
+    for (int n = 1; n < 500; ++n) {
+        const double angle = 0.01 * n;
+        const SpatialVector normal{std::cos(angle), std::sin(angle), 0.0};
+        const SpatialVector force = spatial.advance_spatial(a, overlap_at(n, 1.0), normal, {1e-7, -2e-7, 3e-7});
+        planar.advance(b, overlap_at(n, 1.0), {0.0, 0.0});
+        ASSERT_EQ(force, (SpatialVector{0.0, 0.0, 0.0})) << "step " << n;
+        ASSERT_EQ(spatial.normal_force(a), planar.normal_force(b)) << "step " << n;
+        ASSERT_EQ(spatial.step_work(), planar.step_work()) << "step " << n;
+        for (std::size_t i = 0; i < law_header; ++i) ASSERT_EQ(a[i], 0.0) << "state[" << i << "], step " << n;
+    }
+    EXPECT_GT(planar.normal_force(b), 0.0);
+    EXPECT_NO_THROW(spatial.check(a));
+}
+
 #if MDR_COUNTS_ALLOCATIONS
 TEST(DemContactLaw, AStepAllocatesNothing) {
     auto law = make_law();
