@@ -408,6 +408,11 @@ SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overla
     require_finite_components("normal", normal);  // before the normal step writes the state
     require_finite_components("increment", increment);
     begin(state);
+    if (tangential_idle_) {  // no friction (begin): the layer stays at rest and carries no force, so no frame is needed
+        advance_normal(overlap);
+        tangential_work_ = 0.0;
+        return {0.0, 0.0, 0.0};
+    }
     const SpatialVector slip = in_plane(increment, normal);
     // The frame turns with the normal: its axis projected into the new tangent plane and rescaled (LAMMPS's
     // granular history does the same to its tangential vector). At first touch, or should the normal have turned

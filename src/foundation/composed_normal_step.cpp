@@ -45,22 +45,21 @@ __attribute__((target_clones("avx2", "default"))) bool no_event(
     });
 }
 
-// Line loads 4 sigma_i (eq. 16, 22) of elements i < count: in contact G_inf w + eta rate + sum_k G_k (A_k h^_k + C_k)
-// with w = d - g_i when `composed` is 1, the written w_i when 0 (A_k = 1, C_k = 0 then); 0 out of contact.
+// Line loads 4 sigma_i (eq. 16, 22) of elements i < count at the end of a step advance took: in contact G_inf (d - g_i)
+// + eta rate + sum_k G_k (A_k h^_k + C_k) (eq. 13: w_i = d - g_i whether the header composes the element or write has
+// just written it at d, A_k = 1 and C_k = 0 then; the written w_i is not read), 0 out of contact.
 __attribute__((target_clones("avx2", "default"))) void stress_pass(
-    std::size_t count, std::size_t branches, double composed, double depth, double g_inf, double dashpot,
-    const double* __restrict g, const double* __restrict w, const double* __restrict flags,
-    const double* __restrict h, std::size_t stride, const double* __restrict moduli, const double* __restrict scale,
-    const double* __restrict shift, double* __restrict out) {
+    std::size_t count, std::size_t branches, double depth, double g_inf, double dashpot, const double* __restrict g,
+    const double* __restrict flags, const double* __restrict h, std::size_t stride, const double* __restrict moduli,
+    const double* __restrict scale, const double* __restrict shift, double* __restrict out) {
     with_branches(branches, [&](auto m) {
         // Local restrict pointers: the lambda's captures lose the parameters' (and the loop would stay scalar).
         const double* __restrict profile = g;
-        const double* __restrict displacement = w;
         const double* __restrict contact = flags;
         const double* __restrict memory = h;
         double* __restrict loads = out;
         for (std::size_t i = 0; i < count; ++i) {
-            double stress = g_inf * (composed * (depth - profile[i]) + (1.0 - composed) * displacement[i]) + dashpot;
+            double stress = g_inf * (depth - profile[i]) + dashpot;
             for (std::size_t k = 0; k < m; ++k) stress += moduli[k] * (scale[k] * memory[k * stride + i] + shift[k]);
             loads[i] = contact[i] != 0.0 ? normal_stiffness_factor * stress : 0.0;
         }
@@ -348,11 +347,9 @@ std::size_t ComposedNormalStep::summary_mismatch(std::span<const double> header,
 
 void ComposedNormalStep::line_loads(std::span<const double> header, const AttachedElements& elements, double depth,
                                     std::span<double> out) const {
-    const bool composed = header[composed_offset] != 0.0;
-    const double* scale = composed ? header.data() + scale_offset : unit_.data();
-    stress_pass(elements.touched, branches_, composed ? 1.0 : 0.0, depth, g_inf_, viscosity_ * header[rate_offset],
-                profile_.data(), elements.w, elements.flags, elements.h, elements.stride, moduli_.data(), scale,
-                scale + branches_, out.data());
+    const double* scale = header[composed_offset] != 0.0 ? header.data() + scale_offset : unit_.data();
+    stress_pass(elements.touched, branches_, depth, g_inf_, viscosity_ * header[rate_offset], profile_.data(),
+                elements.flags, elements.h, elements.stride, moduli_.data(), scale, scale + branches_, out.data());
 }
 
 }  // namespace mdr::foundation

@@ -83,10 +83,14 @@ PlanarTangentialLayer::PlanarTangentialLayer(const rheology::Rheology& material,
       share_(count) {}
 
 void PlanarTangentialLayer::begin_step(const StepCoefficients& coefficients, std::span<const Entry> entries) {
-    copy_step_coefficients(coefficients, step_);
     share_.set(entries);
+    // The coefficients are the material's for the time step (fill_step_coefficients): the same step length, the
+    // same coefficients and weights (a DEM code's every step).
+    if (prepared_ && coefficients.time_step == step_.time_step) return;
+    copy_step_coefficients(coefficients, step_);
     const auto& terms = material_.terms();
     for (std::size_t k = 0; k < terms.size(); ++k) weight_[k] = terms[k].modulus * step_.decay[k];
+    prepared_ = true;
 }
 
 PlanarVector PlanarTangentialLayer::trial_force(PlanarVector increment, std::span<const double> normal_line_loads,

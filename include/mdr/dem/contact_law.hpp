@@ -104,8 +104,10 @@ public:
     /// second at the end of the step, `increment` [m] the displacement of the first body's contact point relative
     /// to the second's over the step (its normal part is ignored). The contact frame, kept in the state, first
     /// turns into the new tangent plane (its axis projected and rescaled, as LAMMPS's granular history); at first
-    /// touch its axis is the increment's direction. Returns the tangential force [N] on the second body. Throws
-    /// mdr::InvalidInput (key `normal`, `increment`) for a vector that is not finite, the state unchanged.
+    /// touch its axis is the increment's direction. Returns the tangential force [N] on the second body. A law
+    /// without friction (mu = 0) steps the normal problem only: its tangential force is zero, and the state's
+    /// displacement and frame stay as they are (zero from initialise). Throws mdr::InvalidInput (key `normal`,
+    /// `increment`) for a vector that is not finite, the state unchanged.
     SpatialVector advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
                                   const SpatialVector& increment);
 

@@ -84,7 +84,8 @@ public:
     /// Element i's current displacement w [m] and memories h (M doubles) at depth `depth`.
     void element(std::span<const double> header, const double* w, const double* flags, const double* h,
                  std::size_t stride, std::size_t i, double depth, double& current_w, double* current_h) const;
-    /// Line loads q_z,i = 4 sigma_i [N/m] (eq. 22) of the touched elements at depth `depth` into `out`.
+    /// Line loads q_z,i = 4 sigma_i [N/m] (eq. 22) of the touched elements at depth `depth` into `out`, after a step
+    /// advance took to `depth` (the elements in contact then have w_i = d - g_i; their written w_i are not read).
     void line_loads(std::span<const double> header, const AttachedElements& elements, double depth,
                     std::span<double> out) const;
 

@@ -37,7 +37,8 @@ public:
     PlanarTangentialLayer(const rheology::Rheology& material, double friction, double spacing, std::size_t count);
 
     /// Prepares a step of the given coefficients from the current state, with the elements that enter normal
-    /// contact inside it (Foundation::entries after its step).
+    /// contact inside it (Foundation::entries after its step). The coefficients must be this layer's material's
+    /// (step_coefficients): they are copied only when the time step changes.
     void begin_step(const StepCoefficients& coefficients, std::span<const Entry> entries = {});
     /// Total tangential force [N] (eq. 46, both halves) the layer would carry after the prepared step with the
     /// indenter moving by `increment` [m]; `normal_line_loads` q_z,i [N/m] and `contact` as for
@@ -91,6 +92,7 @@ private:
     std::vector<double> weight_;        ///< G_k E_k of the prepared step: h_k's share of the relaxed stress
     EntryShares share_;                 ///< part of the prepared step's increment each element takes
     StepCoefficients step_;
+    bool prepared_ = false;             ///< step_ and weight_ hold a step's (begin_step)
     std::size_t touched_ = 0;           ///< elements [touched_, n) have never been in contact: u = h = 0
     std::size_t high_water_ = 0;        ///< the largest touched_ any loaded or stepped state had
     PlanarVector total_force_{0.0, 0.0};

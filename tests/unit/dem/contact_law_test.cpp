@@ -116,6 +116,54 @@ TEST(DemContactLaw, AFrictionlessOrHeadOnContactLeavesItsTangentialElementsUnloa
     EXPECT_NE(rough.tangential_force(head_on)[0], 0.0);
 }
 
+// A trial of the displacement a step then takes gives that step's tangential force to the bit (the layer's trial
+// forms the same element stresses and sums them in the step's order), with the line loads of a Foundation's step and
+// with those the composed normal step derives from its header (ComposedNormalStep::line_loads) alike.
+TEST(DemContactLaw, ATangentialTrialIsTheStepsForceToTheBit) {
+    auto law = make_law();
+    std::vector<double> state(law.state_size());
+    law.initialise(state);
+    const std::size_t composed_flag = law_header + foundation::ComposedNormalStep::composed_offset;
+    int composed = 0, written = 0;
+    for (int n = 1; n < 900; ++n) {
+        const double overlap = overlap_at(std::min(n, 250), 1.0);  // rising, then held from step 250
+        const PlanarVector displacement{displacement_at(n, 1.0), displacement_at(n, 0.5)};
+        law.begin(state);
+        law.advance_normal(overlap);
+        const PlanarVector trial = law.tangential_trial(displacement);
+        law.advance_tangential(displacement);
+        law.end(state);
+        ASSERT_EQ(trial, law.tangential_force()) << "step " << n;
+        (state[composed_flag] != 0.0 ? composed : written) += 1;
+    }
+    EXPECT_GT(composed, 500);  // both forms of the line loads were read
+    EXPECT_GT(written, 10);
+    EXPECT_NE(law.tangential_force()[0], 0.0);
+}
+
+// Without friction advance_spatial steps the normal problem only: the tangential force is zero, the state's
+// displacement and frame stay zero (no frame is turned: the tangential layer never carries a force), and the normal
+// force and the work are those of the planar step of the same overlaps, bit for bit.
+TEST(DemContactLaw, AFrictionlessSpatialStepIsTheNormalStepAlone) {
+    const auto material = rheology::Rheology::prony(1e6, {{3e6, 1e-3}, {1e6, 3e-5}});
+    ContactLaw spatial(material, 0.005, 0.0, 50, 1e-3, 2e-6), planar(material, 0.005, 0.0, 50, 1e-3, 2e-6);
+    std::vector<double> a(spatial.state_size()), b(planar.state_size());
+    spatial.initialise(a);
+    planar.initialise(b);
+    for (int n = 1; n < 500; ++n) {
+        const double angle = 0.01 * n;
+        const SpatialVector normal{std::cos(angle), std::sin(angle), 0.0};
+        const SpatialVector force = spatial.advance_spatial(a, overlap_at(n, 1.0), normal, {1e-7, -2e-7, 3e-7});
+        planar.advance(b, overlap_at(n, 1.0), {0.0, 0.0});
+        ASSERT_EQ(force, (SpatialVector{0.0, 0.0, 0.0})) << "step " << n;
+        ASSERT_EQ(spatial.normal_force(a), planar.normal_force(b)) << "step " << n;
+        ASSERT_EQ(spatial.step_work(), planar.step_work()) << "step " << n;
+        for (std::size_t i = 0; i < law_header; ++i) ASSERT_EQ(a[i], 0.0) << "state[" << i << "], step " << n;
+    }
+    EXPECT_GT(planar.normal_force(b), 0.0);
+    EXPECT_NO_THROW(spatial.check(a));
+}
+
 #if MDR_COUNTS_ALLOCATIONS
 TEST(DemContactLaw, AStepAllocatesNothing) {
     auto law = make_law();
