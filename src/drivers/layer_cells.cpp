@@ -54,6 +54,28 @@ bool LayerCells::corrects_edge(std::size_t contact) const {
     return contact > 0 && contact < cells_ && !flat_punch_ && !(material_->viscosity() > 0.0);
 }
 
+bool LayerCells::corrects_dashpot_edge(std::size_t contact) const {
+    return contact > 0 && contact < cells_ && !flat_punch_ && material_->viscosity() > 0.0;
+}
+
+std::pair<double, double> LayerCells::dashpot_edge(std::size_t contact, double depth, double outside_displacement,
+                                                   double outside_slope) const {
+    // g piecewise linear through (0, g(0)) (the axis, extrapolated with lambda as below eq. L19) and the centres;
+    // the edge between the last centre in contact and the first free one (from the axis for one cell).
+    const double target = depth - outside_displacement;
+    const std::size_t last = contact - 1;
+    const double axis = profile_[0] + axis_weight_ * (profile_[1] - profile_[0]);
+    double left = centre_[last], left_profile = profile_[last];
+    if (contact == 1 && target < profile_[0]) left = 0.0, left_profile = axis;
+    const double right = contact == 1 && target < profile_[0] ? centre_[0] : centre_[contact];
+    const double right_profile = contact == 1 && target < profile_[0] ? profile_[0] : profile_[contact];
+    if (!(right_profile > left_profile)) return {left, 0.0};
+    const double per_profile = (right - left) / (right_profile - left_profile);
+    if (target <= left_profile) return {left, 0.0};
+    if (target >= profile_[contact]) return {centre_[contact], 0.0};
+    return {left + (target - left_profile) * per_profile, (1.0 - outside_slope) * per_profile};
+}
+
 double LayerCells::edge_correction(std::size_t contact, double inside, double outside,
                                    const double* innermost) const {
     // q falls linearly to zero at the edge a, with slope -s = -4 (inside - outside)/dx (the edge function, C1 across
@@ -221,10 +243,11 @@ LayerCellState LayerCells::solve_loaded(double time_step, double right_side, dou
             per_depth += 2.0 * spacing_ * slope * unit[i];
         }
         double depth = (right_side - at_zero) / (per_depth + spring_constant);
-        if (corrects_edge(contact)) {
-            // F(d) with the edge's correction (eq. L19a) is not affine in d: its pieces are (the edge function inside
-            // and outside, the innermost q), so Newton from the affine solution, the correction ~(dx/a)^2 of F
-            // (converged to round-off in two or three iterations).
+        if (corrects_edge(contact) || corrects_dashpot_edge(contact)) {
+            // F(d) with the edge's correction (eq. L19a, or L19b with a dashpot) is not affine in d: its pieces are
+            // (the edge function inside and outside, the innermost q; the edge cell's q and cell m's free w1), so
+            // Newton from the affine solution, the correction ~(dx/a)^2 of F (~dx/a with a dashpot; converged to
+            // round-off in a few iterations).
             const double* row = &operator_->matrix[contact * cells_];
             const double coupled = numerics::dot_product(row, trial_load_.data(), contact) / plane_modulus_per_shear;
             const double coupled_slope = slope * numerics::dot_product(row, unit.data(), contact) /
@@ -242,12 +265,22 @@ LayerCellState LayerCells::solve_loaded(double time_step, double right_side, dou
                 for (std::size_t i = 0; i < std::min<std::size_t>(contact, 3); ++i) {
                     innermost[i] = trial_load_[i] + depth * innermost_slope[i];
                 }
-                const double residual = at_zero + depth * (per_depth + spring_constant) - right_side +
-                                        edge_correction(contact, inside, outside, innermost);
-                const double change =
-                    residual / (per_depth + spring_constant +
-                                edge_correction_slope(contact, inside, outside, inside_slope, outside_slope,
-                                                      innermost_slope));
+                double correction = 0.0, correction_slope = 0.0;
+                if (corrects_edge(contact)) {
+                    correction = edge_correction(contact, inside, outside, innermost);
+                    correction_slope = edge_correction_slope(contact, inside, outside, inside_slope, outside_slope,
+                                                             innermost_slope);
+                } else {  // eq. L19b: 2 (a - m dx) q_{m-1}, w1_m = (coupled - free relaxed_m) / S_free (L18)
+                    const double free_at_zero = (coupled - free_relaxed_[contact]) * free_compliance_;
+                    const auto [edge, edge_slope] =
+                        dashpot_edge(contact, depth, free_at_zero + depth * coupled_slope * free_compliance_,
+                                     coupled_slope * free_compliance_);
+                    const double face = spacing_ * static_cast<double>(contact);
+                    correction = 2.0 * (edge - face) * plane_modulus_per_shear * inside;
+                    correction_slope = 2.0 * plane_modulus_per_shear * (edge_slope * inside + (edge - face) * inside_slope);
+                }
+                const double residual = at_zero + depth * (per_depth + spring_constant) - right_side + correction;
+                const double change = residual / (per_depth + spring_constant + correction_slope);
                 depth -= change;
                 if (!(std::abs(change) > 1e-15 * std::abs(depth))) break;
             }
@@ -512,6 +545,9 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     };
     if (corrects_edge(contact)) {
         state.force += edge_correction(contact, edge_function(contact - 1), edge_function(contact), trial_load_.data());
+    } else if (corrects_dashpot_edge(contact)) {  // eq. L19b
+        const double edge = dashpot_edge(contact, depth, trial_displacement_[contact], 0.0).first;
+        state.force += 2.0 * (edge - spacing_ * static_cast<double>(contact)) * trial_load_[contact - 1];
     }
     if (contact == cells_) {
         state.contact_radius = spacing_ * static_cast<double>(cells_);
