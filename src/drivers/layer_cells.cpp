@@ -55,7 +55,7 @@ bool LayerCells::corrects_edge(std::size_t contact) const {
 }
 
 bool LayerCells::corrects_dashpot_edge(std::size_t contact) const {
-    return contact > 0 && contact < cells_ && !flat_punch_ && material_->viscosity() > 0.0;
+    return contact == 1 && cells_ > 1 && !flat_punch_ && material_->viscosity() > 0.0;
 }
 
 std::pair<double, double> LayerCells::dashpot_edge(std::size_t contact, double depth, double outside_displacement,
@@ -187,7 +187,7 @@ LayerCellState LayerCells::step(double time_step, double depth, std::optional<do
         solve_load(contact, depth);
         return depth;
     };
-    return advance(time_step, load_for, false, start_rate, foundation::RateAtEntry::continuous);
+    return advance(time_step, load_for, ContactRule::any, start_rate, foundation::RateAtEntry::continuous);
 }
 
 LayerCellState LayerCells::step_loaded(double time_step, double right_side, double spring_constant, double base) {
@@ -231,9 +231,13 @@ LayerCellState LayerCells::solve_loaded(double time_step, double right_side, dou
         solve_load(contact, 0.0);
         if (contact == 0) {
             if (spring_constant > 0.0) return base;
-            free_surface(0, 0.0, 2);
+            // At rest on the free surface: at the axis, or lower where a kept cell's surface is (a flat face on a
+            // surface recovering unevenly), so that no cell is penetrated (the cells beyond are at rest, below g).
+            free_surface(0, 0.0, kept_);
             const double inner = profile_[0] + trial_displacement_[0], next = profile_[1] + trial_displacement_[1];
-            return inner + axis_weight_ * (next - inner);
+            double rest = inner + axis_weight_ * (next - inner);
+            for (std::size_t i = 0; i < kept_; ++i) rest = std::min(rest, profile_[i] + trial_displacement_[i]);
+            return rest;
         }
         const auto& unit = unit_load(contact);
         const double slope = springs_ + dashpot_gain_;
@@ -275,9 +279,10 @@ LayerCellState LayerCells::solve_loaded(double time_step, double right_side, dou
                     const auto [edge, edge_slope] =
                         dashpot_edge(contact, depth, free_at_zero + depth * coupled_slope * free_compliance_,
                                      coupled_slope * free_compliance_);
-                    const double face = spacing_ * static_cast<double>(contact);
-                    correction = 2.0 * (edge - face) * plane_modulus_per_shear * inside;
-                    correction_slope = 2.0 * plane_modulus_per_shear * (edge_slope * inside + (edge - face) * inside_slope);
+                    const double covered = std::min(edge, spacing_), covered_slope = edge < spacing_ ? edge_slope : 0.0;
+                    correction = 2.0 * (covered - spacing_) * plane_modulus_per_shear * inside;
+                    correction_slope =
+                        2.0 * plane_modulus_per_shear * (covered_slope * inside + (covered - spacing_) * inside_slope);
                 }
                 const double residual = at_zero + depth * (per_depth + spring_constant) - right_side + correction;
                 const double change = residual / (per_depth + spring_constant + correction_slope);
@@ -291,7 +296,12 @@ LayerCellState LayerCells::solve_loaded(double time_step, double right_side, dou
         }
         return depth;
     };
-    return advance(time_step, load_for, spring_constant == 0.0 && right_side > 0.0, start_rate, rate_at_entry);
+    // Under force control a positive force needs a contact, and zero force has none: q >= 0 summing to zero is zero
+    // (the search would end on a set whose q is round-off, its edge anywhere).
+    const ContactRule rule = spring_constant > 0.0 ? ContactRule::any
+                             : right_side > 0.0    ? ContactRule::needed
+                                                   : ContactRule::none;
+    return advance(time_step, load_for, rule, start_rate, rate_at_entry);
 }
 
 LayerCellState LayerCells::jump(double force) {
@@ -482,7 +492,7 @@ void LayerCells::keep(std::size_t count, double dashpot) {
 }
 
 template <class LoadRule>
-LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, bool needs_contact,
+LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, ContactRule rule,
                                    std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry) {
     foundation::fill_step_coefficients(*material_, time_step, coefficients_);
     const double viscosity = material_->viscosity(), dashpot = time_step > 0.0 ? viscosity / time_step : 0.0;
@@ -510,18 +520,20 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     // Complementarity (Ting 1968; eq. L18): q >= 0 in contact, the free surface not below the indenter outside.
     // From the last contact set, a cell is dropped while its line load is negative and added while the indenter
     // would penetrate it, never returning to a set already tried.
-    // A force with no contact (`needs_contact`) adds the innermost cell.
+    // A force with no contact (ContactRule::needed) adds the innermost cell; zero force (ContactRule::none) has none.
     std::fill(tried_.begin(), tried_.end(), false);
-    std::size_t contact = contact_;
+    std::size_t contact = rule == ContactRule::none ? 0 : contact_;
     double depth = 0.0;
     for (;;) {
         depth = load_for(contact);
         free_surface(contact, depth, 1);  // the free cell next to the contact decides
         tried_[contact] = true;
-        if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried_[contact - 1]) {
+        if (rule == ContactRule::none) {
+            break;
+        } else if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried_[contact - 1]) {
             --contact;
         } else if (contact < cells_ &&
-                   (trial_displacement_[contact] < depth - profile_[contact] || (needs_contact && contact == 0)) &&
+                   (trial_displacement_[contact] < depth - profile_[contact] || (rule == ContactRule::needed && contact == 0)) &&
                    !tried_[contact + 1]) {
             ++contact;
             keep(contact + 1, dashpot);
@@ -547,12 +559,15 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
         state.force += edge_correction(contact, edge_function(contact - 1), edge_function(contact), trial_load_.data());
     } else if (corrects_dashpot_edge(contact)) {  // eq. L19b
         const double edge = dashpot_edge(contact, depth, trial_displacement_[contact], 0.0).first;
-        state.force += 2.0 * (edge - spacing_ * static_cast<double>(contact)) * trial_load_[contact - 1];
+        state.force += 2.0 * (std::min(edge, spacing_) - spacing_) * trial_load_[0];
     }
     if (contact == cells_) {
         state.contact_radius = spacing_ * static_cast<double>(cells_);
     } else if (contact > 0) {  // its zero, interpolated linearly between the two centres (second order)
-        const double inside = edge_function(contact - 1), outside = edge_function(contact);
+        // At their bounds, inside >= 0 >= outside (a set that solves the complementarity within round-off), so that
+        // the edge stays between the two centres.
+        const double inside = std::max(edge_function(contact - 1), 0.0);
+        const double outside = std::min(edge_function(contact), 0.0);
         state.contact_radius =
             centre_[contact - 1] + (inside > outside ? spacing_ * inside / (inside - outside) : 0.5 * spacing_);
     }

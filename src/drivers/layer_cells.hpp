@@ -88,11 +88,14 @@ public:
     std::span<const double> surface();
 
 private:
-    // One step: `load_for(m)` solves q on the contact set [0, m) (solve_load) and gives its depth; `needs_contact`: a
-    // force without contact. `start_rate`: the indenter's rate at the step's start that its dashpot term takes
+    // One step: `load_for(m)` solves q on the contact set [0, m) (solve_load) and gives its depth; `rule`: the sets
+    // the search may end on. `start_rate`: the indenter's rate at the step's start that its dashpot term takes
     // (trapezoidal), or none (the secant rate); `rate_at_entry`: what a cell entering contact in the step sees.
+    // Which contact sets a step's search may end on: any, one with a cell (a force under force control), none (zero
+    // force under force control).
+    enum class ContactRule { any, needed, none };
     template <class LoadRule>
-    LayerCellState advance(double time_step, const LoadRule& load_for, bool needs_contact,
+    LayerCellState advance(double time_step, const LoadRule& load_for, ContactRule rule,
                            std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry);
     // step_loaded and step_inertial: the depth at which F(d) + k d = `right_side`, `base` without contact (k > 0);
     // the dashpots' start rate and what an entering cell sees as advance takes them.
