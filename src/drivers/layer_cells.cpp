@@ -557,12 +557,16 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, C
     };
     if (corrects_edge(contact)) {
         state.force += edge_correction(contact, edge_function(contact - 1), edge_function(contact), trial_load_.data());
-    } else if (corrects_dashpot_edge(contact)) {  // eq. L19b
-        const double edge = dashpot_edge(contact, depth, trial_displacement_[contact], 0.0).first;
-        state.force += 2.0 * (std::min(edge, spacing_) - spacing_) * trial_load_[0];
+    }
+    double point_edge = 0.0;  // a point contact's edge with a dashpot, located by eq. L19b
+    if (corrects_dashpot_edge(contact)) {
+        point_edge = dashpot_edge(contact, depth, trial_displacement_[contact], 0.0).first;
+        state.force += 2.0 * (std::min(point_edge, spacing_) - spacing_) * trial_load_[0];
     }
     if (contact == cells_) {
         state.contact_radius = spacing_ * static_cast<double>(cells_);
+    } else if (corrects_dashpot_edge(contact)) {
+        state.contact_radius = point_edge;
     } else if (contact > 0) {  // its zero, interpolated linearly between the two centres (second order)
         // At their bounds, inside >= 0 >= outside (a set that solves the complementarity within round-off), so that
         // the edge stays between the two centres.
