@@ -533,7 +533,8 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, C
         } else if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried_[contact - 1]) {
             --contact;
         } else if (contact < cells_ &&
-                   (trial_displacement_[contact] < depth - profile_[contact] || (rule == ContactRule::needed && contact == 0)) &&
+                   (trial_displacement_[contact] < depth - profile_[contact] ||
+                    (rule == ContactRule::needed && contact == 0)) &&
                    !tried_[contact + 1]) {
             ++contact;
             keep(contact + 1, dashpot);

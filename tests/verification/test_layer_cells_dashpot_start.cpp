@@ -44,8 +44,9 @@ TEST(LayerCellsDashpotStart, AConeFromRestMeetsTheHalfSpace) {
     const double deepest = *std::max_element(half_space.depth.begin(), half_space.depth.end());
     std::vector<double> errors;
     for (const int cells : {100, 200, 400}) {
-        const auto layer = run_on_cells(
-            text + fmt::format("[layer]\nthickness = 1.0e3\ninterface = \"bonded\"\n[numerics]\nelements = {}\n", cells));
+        const auto layer = run_on_cells(text + fmt::format("[layer]\nthickness = 1.0e3\ninterface = \"bonded\"\n"
+                                                           "[numerics]\nelements = {}\n",
+                                                           cells));
         double largest = 0.0;
         for (std::size_t i = 0; i < layer.time.size(); ++i) {
             const double expected = interpolate(half_space.time, half_space.depth, layer.time[i]);
