@@ -251,7 +251,9 @@ LayerCellState LayerCells::solve_loaded(double time_step, double right_side, dou
             // F(d) with the edge's correction (eq. L19a, or L19b with a dashpot) is not affine in d: its pieces are
             // (the edge function inside and outside, the innermost q; the edge cell's q and cell m's free w1), so
             // Newton from the affine solution, the correction ~(dx/a)^2 of F (~dx/a with a dashpot; converged to
-            // round-off in a few iterations).
+            // round-off in a few iterations; L19b's F ~ d^2 of a point contact, from an affine start far too shallow,
+            // comes down from above halving its distance each time: 8 iterations left a sphere's first step's force
+            // 12 times the prescribed one, so up to 64).
             const double* row = &operator_->matrix[contact * cells_];
             const double coupled = numerics::dot_product(row, trial_load_.data(), contact) / plane_modulus_per_shear;
             const double coupled_slope = slope * numerics::dot_product(row, unit.data(), contact) /
@@ -262,7 +264,7 @@ LayerCellState LayerCells::solve_loaded(double time_step, double right_side, dou
             const double inside_slope = slope * unit[contact - 1] / plane_modulus_per_shear;
             double innermost[3] = {}, innermost_slope[3] = {};
             for (std::size_t i = 0; i < std::min<std::size_t>(contact, 3); ++i) innermost_slope[i] = slope * unit[i];
-            for (int iteration = 0; iteration < 8; ++iteration) {
+            for (int iteration = 0; iteration < 64; ++iteration) {
                 const double inside = (trial_load_[contact - 1] + depth * slope * unit[contact - 1]) /
                                       plane_modulus_per_shear;
                 const double outside = outside_at_zero + depth * outside_slope;
