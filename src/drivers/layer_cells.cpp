@@ -54,6 +54,28 @@ bool LayerCells::corrects_edge(std::size_t contact) const {
     return contact > 0 && contact < cells_ && !flat_punch_ && !(material_->viscosity() > 0.0);
 }
 
+bool LayerCells::corrects_dashpot_edge(std::size_t contact) const {
+    return contact == 1 && cells_ > 1 && !flat_punch_ && material_->viscosity() > 0.0;
+}
+
+std::pair<double, double> LayerCells::dashpot_edge(std::size_t contact, double depth, double outside_displacement,
+                                                   double outside_slope) const {
+    // g piecewise linear through (0, g(0)) (the axis, extrapolated with lambda as below eq. L19) and the centres;
+    // the edge between the last centre in contact and the first free one (from the axis for one cell).
+    const double target = depth - outside_displacement;
+    const std::size_t last = contact - 1;
+    const double axis = profile_[0] + axis_weight_ * (profile_[1] - profile_[0]);
+    double left = centre_[last], left_profile = profile_[last];
+    if (contact == 1 && target < profile_[0]) left = 0.0, left_profile = axis;
+    const double right = contact == 1 && target < profile_[0] ? centre_[0] : centre_[contact];
+    const double right_profile = contact == 1 && target < profile_[0] ? profile_[0] : profile_[contact];
+    if (!(right_profile > left_profile)) return {left, 0.0};
+    const double per_profile = (right - left) / (right_profile - left_profile);
+    if (target <= left_profile) return {left, 0.0};
+    if (target >= profile_[contact]) return {centre_[contact], 0.0};
+    return {left + (target - left_profile) * per_profile, (1.0 - outside_slope) * per_profile};
+}
+
 double LayerCells::edge_correction(std::size_t contact, double inside, double outside,
                                    const double* innermost) const {
     // q falls linearly to zero at the edge a, with slope -s = -4 (inside - outside)/dx (the edge function, C1 across
@@ -165,7 +187,7 @@ LayerCellState LayerCells::step(double time_step, double depth, std::optional<do
         solve_load(contact, depth);
         return depth;
     };
-    return advance(time_step, load_for, false, start_rate, foundation::RateAtEntry::continuous);
+    return advance(time_step, load_for, ContactRule::any, start_rate, foundation::RateAtEntry::continuous);
 }
 
 LayerCellState LayerCells::step_loaded(double time_step, double right_side, double spring_constant, double base) {
@@ -209,9 +231,13 @@ LayerCellState LayerCells::solve_loaded(double time_step, double right_side, dou
         solve_load(contact, 0.0);
         if (contact == 0) {
             if (spring_constant > 0.0) return base;
-            free_surface(0, 0.0, 2);
+            // At rest on the free surface: at the axis, or lower where a kept cell's surface is (a flat face on a
+            // surface recovering unevenly), so that no cell is penetrated (the cells beyond are at rest, below g).
+            free_surface(0, 0.0, kept_);
             const double inner = profile_[0] + trial_displacement_[0], next = profile_[1] + trial_displacement_[1];
-            return inner + axis_weight_ * (next - inner);
+            double rest = inner + axis_weight_ * (next - inner);
+            for (std::size_t i = 0; i < kept_; ++i) rest = std::min(rest, profile_[i] + trial_displacement_[i]);
+            return rest;
         }
         const auto& unit = unit_load(contact);
         const double slope = springs_ + dashpot_gain_;
@@ -221,10 +247,13 @@ LayerCellState LayerCells::solve_loaded(double time_step, double right_side, dou
             per_depth += 2.0 * spacing_ * slope * unit[i];
         }
         double depth = (right_side - at_zero) / (per_depth + spring_constant);
-        if (corrects_edge(contact)) {
-            // F(d) with the edge's correction (eq. L19a) is not affine in d: its pieces are (the edge function inside
-            // and outside, the innermost q), so Newton from the affine solution, the correction ~(dx/a)^2 of F
-            // (converged to round-off in two or three iterations).
+        if (corrects_edge(contact) || corrects_dashpot_edge(contact)) {
+            // F(d) with the edge's correction (eq. L19a, or L19b with a dashpot) is not affine in d: its pieces are
+            // (the edge function inside and outside, the innermost q; the edge cell's q and cell m's free w1), so
+            // Newton from the affine solution, the correction ~(dx/a)^2 of F (~dx/a with a dashpot; converged to
+            // round-off in a few iterations; L19b's F ~ d^2 of a point contact, from an affine start far too shallow,
+            // comes down from above halving its distance each time: 8 iterations left a sphere's first step's force
+            // 12 times the prescribed one, so up to 64).
             const double* row = &operator_->matrix[contact * cells_];
             const double coupled = numerics::dot_product(row, trial_load_.data(), contact) / plane_modulus_per_shear;
             const double coupled_slope = slope * numerics::dot_product(row, unit.data(), contact) /
@@ -235,19 +264,30 @@ LayerCellState LayerCells::solve_loaded(double time_step, double right_side, dou
             const double inside_slope = slope * unit[contact - 1] / plane_modulus_per_shear;
             double innermost[3] = {}, innermost_slope[3] = {};
             for (std::size_t i = 0; i < std::min<std::size_t>(contact, 3); ++i) innermost_slope[i] = slope * unit[i];
-            for (int iteration = 0; iteration < 8; ++iteration) {
+            for (int iteration = 0; iteration < 64; ++iteration) {
                 const double inside = (trial_load_[contact - 1] + depth * slope * unit[contact - 1]) /
                                       plane_modulus_per_shear;
                 const double outside = outside_at_zero + depth * outside_slope;
                 for (std::size_t i = 0; i < std::min<std::size_t>(contact, 3); ++i) {
                     innermost[i] = trial_load_[i] + depth * innermost_slope[i];
                 }
-                const double residual = at_zero + depth * (per_depth + spring_constant) - right_side +
-                                        edge_correction(contact, inside, outside, innermost);
-                const double change =
-                    residual / (per_depth + spring_constant +
-                                edge_correction_slope(contact, inside, outside, inside_slope, outside_slope,
-                                                      innermost_slope));
+                double correction = 0.0, correction_slope = 0.0;
+                if (corrects_edge(contact)) {
+                    correction = edge_correction(contact, inside, outside, innermost);
+                    correction_slope = edge_correction_slope(contact, inside, outside, inside_slope, outside_slope,
+                                                             innermost_slope);
+                } else {  // eq. L19b: 2 (a - m dx) q_{m-1}, w1_m = (coupled - free relaxed_m) / S_free (L18)
+                    const double free_at_zero = (coupled - free_relaxed_[contact]) * free_compliance_;
+                    const auto [edge, edge_slope] =
+                        dashpot_edge(contact, depth, free_at_zero + depth * coupled_slope * free_compliance_,
+                                     coupled_slope * free_compliance_);
+                    const double covered = std::min(edge, spacing_), covered_slope = edge < spacing_ ? edge_slope : 0.0;
+                    correction = 2.0 * (covered - spacing_) * plane_modulus_per_shear * inside;
+                    correction_slope =
+                        2.0 * plane_modulus_per_shear * (covered_slope * inside + (covered - spacing_) * inside_slope);
+                }
+                const double residual = at_zero + depth * (per_depth + spring_constant) - right_side + correction;
+                const double change = residual / (per_depth + spring_constant + correction_slope);
                 depth -= change;
                 if (!(std::abs(change) > 1e-15 * std::abs(depth))) break;
             }
@@ -258,7 +298,12 @@ LayerCellState LayerCells::solve_loaded(double time_step, double right_side, dou
         }
         return depth;
     };
-    return advance(time_step, load_for, spring_constant == 0.0 && right_side > 0.0, start_rate, rate_at_entry);
+    // Under force control a positive force needs a contact, and zero force has none: q >= 0 summing to zero is zero
+    // (the search would end on a set whose q is round-off, its edge anywhere).
+    const ContactRule rule = spring_constant > 0.0 ? ContactRule::any
+                             : right_side > 0.0    ? ContactRule::needed
+                                                   : ContactRule::none;
+    return advance(time_step, load_for, rule, start_rate, rate_at_entry);
 }
 
 LayerCellState LayerCells::jump(double force) {
@@ -449,7 +494,7 @@ void LayerCells::keep(std::size_t count, double dashpot) {
 }
 
 template <class LoadRule>
-LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, bool needs_contact,
+LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, ContactRule rule,
                                    std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry) {
     foundation::fill_step_coefficients(*material_, time_step, coefficients_);
     const double viscosity = material_->viscosity(), dashpot = time_step > 0.0 ? viscosity / time_step : 0.0;
@@ -477,18 +522,21 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     // Complementarity (Ting 1968; eq. L18): q >= 0 in contact, the free surface not below the indenter outside.
     // From the last contact set, a cell is dropped while its line load is negative and added while the indenter
     // would penetrate it, never returning to a set already tried.
-    // A force with no contact (`needs_contact`) adds the innermost cell.
+    // A force with no contact (ContactRule::needed) adds the innermost cell; zero force (ContactRule::none) has none.
     std::fill(tried_.begin(), tried_.end(), false);
-    std::size_t contact = contact_;
+    std::size_t contact = rule == ContactRule::none ? 0 : contact_;
     double depth = 0.0;
     for (;;) {
         depth = load_for(contact);
         free_surface(contact, depth, 1);  // the free cell next to the contact decides
         tried_[contact] = true;
-        if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried_[contact - 1]) {
+        if (rule == ContactRule::none) {
+            break;
+        } else if (contact > 0 && trial_load_[contact - 1] < 0.0 && !tried_[contact - 1]) {
             --contact;
         } else if (contact < cells_ &&
-                   (trial_displacement_[contact] < depth - profile_[contact] || (needs_contact && contact == 0)) &&
+                   (trial_displacement_[contact] < depth - profile_[contact] ||
+                    (rule == ContactRule::needed && contact == 0)) &&
                    !tried_[contact + 1]) {
             ++contact;
             keep(contact + 1, dashpot);
@@ -513,10 +561,20 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, b
     if (corrects_edge(contact)) {
         state.force += edge_correction(contact, edge_function(contact - 1), edge_function(contact), trial_load_.data());
     }
+    double point_edge = 0.0;  // a point contact's edge with a dashpot, located by eq. L19b
+    if (corrects_dashpot_edge(contact)) {
+        point_edge = dashpot_edge(contact, depth, trial_displacement_[contact], 0.0).first;
+        state.force += 2.0 * (std::min(point_edge, spacing_) - spacing_) * trial_load_[0];
+    }
     if (contact == cells_) {
         state.contact_radius = spacing_ * static_cast<double>(cells_);
+    } else if (corrects_dashpot_edge(contact)) {
+        state.contact_radius = point_edge;
     } else if (contact > 0) {  // its zero, interpolated linearly between the two centres (second order)
-        const double inside = edge_function(contact - 1), outside = edge_function(contact);
+        // At their bounds, inside >= 0 >= outside (a set that solves the complementarity within round-off), so that
+        // the edge stays between the two centres.
+        const double inside = std::max(edge_function(contact - 1), 0.0);
+        const double outside = std::min(edge_function(contact), 0.0);
         state.contact_radius =
             centre_[contact - 1] + (inside > outside ? spacing_ * inside / (inside - outside) : 0.5 * spacing_);
     }

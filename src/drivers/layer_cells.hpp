@@ -83,11 +83,14 @@ public:
     std::span<const double> surface();
 
 private:
-    // One step: `load_for(m)` solves q on the contact set [0, m) (solve_load) and gives its depth; `needs_contact`: a
-    // force without contact. `start_rate`: the indenter's rate at the step's start that its dashpot term takes
+    // One step: `load_for(m)` solves q on the contact set [0, m) (solve_load) and gives its depth; `rule`: the sets
+    // the search may end on. `start_rate`: the indenter's rate at the step's start that its dashpot term takes
     // (trapezoidal), or none (the secant rate); `rate_at_entry`: what a cell entering contact in the step sees.
+    // Which contact sets a step's search may end on: any, one with a cell (a force under force control), none (zero
+    // force under force control).
+    enum class ContactRule { any, needed, none };
     template <class LoadRule>
-    LayerCellState advance(double time_step, const LoadRule& load_for, bool needs_contact,
+    LayerCellState advance(double time_step, const LoadRule& load_for, ContactRule rule,
                            std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry);
     // step_loaded and step_inertial: the depth at which F(d) + k d = `right_side`, `base` without contact (k > 0);
     // the dashpots' start rate and what an entering cell sees as advance takes them.
@@ -111,6 +114,15 @@ private:
     // Its derivative in the depth where inside, outside and the first three q are affine in it with these slopes.
     double edge_correction_slope(std::size_t contact, double inside, double outside, double inside_slope,
                                  double outside_slope, const double* innermost_slope) const;
+    // With a parallel dashpot q jumps at the edge (by 4 eta times the rate's jump there, eq. L16), so the midpoint
+    // rule's error is first order in the edge's place: what F = 2 dx sum q_i misses is 2 (a - m dx) q_{m-1}, the edge
+    // a where the indenter meets the free surface, g(a) = d - w1_m (`outside_displacement`, cell m's free w1), on g
+    // linear between the centres (and the axis), within [x_{m-1}, x_m] ([0, x_1] for one cell) (eq. L19b). Returns
+    // a and its derivative in d for a w1_m of slope `outside_slope` in d. Zero where corrects_dashpot_edge does not.
+    std::pair<double, double> dashpot_edge(std::size_t contact, double depth, double outside_displacement,
+                                           double outside_slope) const;
+    // Whether dashpot_edge applies: a dashpot, an edge between two cells, not a flat punch.
+    bool corrects_dashpot_edge(std::size_t contact) const;
     // Whether edge_correction applies: no dashpot (its line load jumps at a growing edge, which the correction's
     // linear edge does not describe; first order there as before), and an edge between two cells.
     bool corrects_edge(std::size_t contact) const;
@@ -153,7 +165,7 @@ private:
     std::vector<double> stress_;            // Q_i / 4 = ((I - K) q)_i / 4, committed (a free cell's dashpot rate)
     std::size_t contact_ = 0;               // committed contact cells
     double depth_ = 0.0;                    // d, committed
-    std::optional<double> rate_ = 0.0;      // dd/dt the dashpots saw at the committed node (solved depths)
+    std::optional<double> rate_;            // dd/dt the dashpots saw at the committed node (solved depths)
     LayerCellState last_;                   // the state after the last step
     double axis_weight_ = 0.0;              // lambda: the axis from the two innermost cells, linear in g
     double axis_ = 0.0;                     // the committed edge function at the axis (> 0: touching)
