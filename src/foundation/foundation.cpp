@@ -189,10 +189,12 @@ Foundation::Outcome Foundation::evaluate(std::size_t i, double w0, double sigma0
         const double before = sigma0;
         outcome.fraction = before > 0.0 ? before / (before - plain.stress) : 0.0;
     } else {
-        // Entry (eq. 14): the indenter reaches the creeping surface inside the step.
+        // Entry (eq. 14): the indenter reaches the creeping surface inside the step; at its start where it touched
+        // it then (an indenter riding on the recovering surface: gap_start = 0, and gap_end, rounded apart from
+        // plain_step's, may be 0 too).
         const double gap_start = std::min(depth_start - g - w, 0.0);
         const double gap_end = depth_end - g - (w + plain.increment);
-        outcome.fraction = gap_start / (gap_start - gap_end);
+        outcome.fraction = gap_start < gap_end ? gap_start / (gap_start - gap_end) : 0.0;
     }
     return outcome;
 }
