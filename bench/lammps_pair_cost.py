@@ -12,6 +12,12 @@ breakdown over steps x contacts; memory per rank from its log.
 --callgrind counts instructions instead (valgrind's callgrind, deterministic, so comparable on a loaded host): the
 pair styles' compute functions, inclusive, on an 8^3 lattice (1536 contacts) over 50 steps (51 computes with the
 setup's), per contact-step.
+
+--side=S --steps=T time an S^3 lattice (3 S^3 contacts) over T steps instead of the 20^3 one over 200: with S = 5
+(375 contacts, 0.5 MB of mdr/visco history at N = 20, M = 1) every contact's state stays in a core's 2 MB L2
+cache, with S = 20 (33 MB) it does not, with S = 40 (261 MB) it exceeds the L3 too (docs/dem.md, "Is the step
+memory-bound?"). --warmup=K runs K steps before the timed ones (every contact's first, non-composed steps and the
+history pages' first touch then fall outside the timing: a held contact's step). --plugin=PATH times that mdr/visco plugin instead of $MDR_LAMMPS_PLUGIN.
 """
 
 import os
@@ -21,12 +27,15 @@ import sys
 import tempfile
 from pathlib import Path
 
-LMP, PLUGIN = os.environ["LMP"], os.environ["MDR_LAMMPS_PLUGIN"]
 CALLGRIND = "--callgrind" in sys.argv
-ARGS = [a for a in sys.argv[1:] if a != "--callgrind"]
+OPTIONS = dict(a[2:].split("=", 1) for a in sys.argv[1:] if a.startswith("--") and "=" in a)
+ARGS = [a for a in sys.argv[1:] if not a.startswith("--")]
+LMP, PLUGIN = os.environ["LMP"], OPTIONS.get("plugin", os.environ["MDR_LAMMPS_PLUGIN"])
 ELEMENTS = int(ARGS[0]) if len(ARGS) > 0 else 20
 TERMS = int(ARGS[1]) if len(ARGS) > 1 else 1
 STEPS, SIDE = (50, 8) if CALLGRIND else (200, 20)
+STEPS, SIDE = int(OPTIONS.get("steps", STEPS)), int(OPTIONS.get("side", SIDE))
+WARMUP = f"run {OPTIONS['warmup']}\n" if "warmup" in OPTIONS else ""
 
 LATTICE = f"""
 units si
@@ -72,7 +81,7 @@ PAIRS = [
 def run(law):
     with tempfile.TemporaryDirectory() as folder:
         path = Path(folder) / "in.lmp"
-        path.write_text(f"plugin load {PLUGIN}\n" + LATTICE + law + f"run {STEPS}\n")
+        path.write_text(f"plugin load {PLUGIN}\n" + LATTICE + law + WARMUP + f"run {STEPS}\n")
         command = [LMP, "-in", str(path), "-log", str(Path(folder) / "log"), "-screen", "none"]
         counts = Path(folder) / "callgrind.out"
         if CALLGRIND:
@@ -89,7 +98,7 @@ def run(law):
     memory = re.search(r"Per MPI rank memory allocation \(min/avg/max\) = [\d.]+ \| ([\d.]+)", log).group(1)
     if CALLGRIND:
         return instructions / ((STEPS + 1) * contacts), contacts, float(memory)
-    pair = float(re.search(r"^Pair\s*\|\s*[\d.e+-]+\s*\|\s*([\d.e+-]+)", log, re.M).group(1))
+    pair = float(re.findall(r"^Pair\s*\|\s*[\d.e+-]+\s*\|\s*([\d.e+-]+)", log, re.M)[-1])
     return pair / (STEPS * contacts), contacts, float(memory)
 
 
