@@ -17,7 +17,9 @@ setup's), per contact-step.
 (375 contacts, 0.5 MB of mdr/visco history at N = 20, M = 1) every contact's state stays in a core's 2 MB L2
 cache, with S = 20 (33 MB) it does not, with S = 40 (261 MB) it exceeds the L3 too (docs/dem.md, "Is the step
 memory-bound?"). --warmup=K runs K steps before the timed ones (every contact's first, non-composed steps and the
-history pages' first touch then fall outside the timing: a held contact's step). --plugin=PATH times that mdr/visco plugin instead of $MDR_LAMMPS_PLUGIN.
+history pages' first touch then fall outside the timing: a held contact's step). --skin=S sets the
+neighbour skin [m] (0.0005: only the six touching neighbours are listed; 0.005 lists the twelve face-diagonal ones
+too, out of contact, as a packing lists more neighbours than contacts). --plugin=PATH times that mdr/visco plugin instead of $MDR_LAMMPS_PLUGIN.
 """
 
 import os
@@ -35,6 +37,7 @@ ELEMENTS = int(ARGS[0]) if len(ARGS) > 0 else 20
 TERMS = int(ARGS[1]) if len(ARGS) > 1 else 1
 STEPS, SIDE = (50, 8) if CALLGRIND else (200, 20)
 STEPS, SIDE = int(OPTIONS.get("steps", STEPS)), int(OPTIONS.get("side", SIDE))
+SKIN = OPTIONS.get("skin", "0.0005")
 WARMUP = f"run {OPTIONS['warmup']}\n" if "warmup" in OPTIONS else ""
 
 LATTICE = f"""
@@ -49,7 +52,7 @@ create_atoms 1 box
 set type 1 diameter 0.01 density 1100
 velocity all create 1e-6 4928 loop geom
 comm_modify vel yes
-neighbor 0.0005 bin
+neighbor {SKIN} bin
 neigh_modify one 50 page 5000
 timestep 1e-6
 compute touching all contact/atom

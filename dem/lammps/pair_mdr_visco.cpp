@@ -311,8 +311,11 @@ void PairMdrVisco::compute(int eflag, int vflag)
       const double rsq = dot(del, del);
       const double radsum = radiusi + radius[j];
       if (rsq >= radsum * radsum) {
+        // a neighbour out of contact: its state is zeroed where the contact ends (fix neigh/history zeroes every
+        // unflagged entry when it builds the lists), so a pair that was not touching is not written again (its
+        // 8 size_history bytes each step, where a packing has more such neighbours than contacts)
+        if (touch[jj]) std::fill(history, history + size_history, 0.0);
         touch[jj] = 0;
-        std::fill(history, history + size_history, 0.0);
         continue;
       }
       touch[jj] = 1;
