@@ -37,7 +37,7 @@ CACHE_SIM = "--cache-sim" in sys.argv
 CALLGRIND = "--callgrind" in sys.argv or CACHE_SIM
 OPTIONS = dict(a[2:].split("=", 1) for a in sys.argv[1:] if a.startswith("--") and "=" in a)
 ARGS = [a for a in sys.argv[1:] if not a.startswith("--")]
-LMP, PLUGIN = os.environ["LMP"], OPTIONS.get("plugin", os.environ["MDR_LAMMPS_PLUGIN"])
+LMP, PLUGIN = os.environ["LMP"], OPTIONS.get("plugin") or os.environ["MDR_LAMMPS_PLUGIN"]
 ELEMENTS = int(ARGS[0]) if len(ARGS) > 0 else 20
 TERMS = int(ARGS[1]) if len(ARGS) > 1 else 1
 STEPS, SIDE = (50, 8) if CALLGRIND else (200, 20)
