@@ -9,6 +9,7 @@
 #include "pair_mdr_visco.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -290,7 +291,7 @@ void PairMdrVisco::compute(int eflag, int vflag)
   std::size_t leading = 1;
   for (const auto &law : laws)
     if (law) leading = std::max(leading, law->held_step_size());
-  constexpr int prefetch_distance = 4;
+  const std::uintptr_t ahead_bytes = 4 * static_cast<std::uintptr_t>(size_history) * sizeof(double);
   // the contacts' energy for compute pair (docs/dem.md): a contact computed on two ranks (newton off, j a ghost)
   // counts half on each
   double work = 0.0, stored = 0.0;
@@ -313,10 +314,12 @@ void PairMdrVisco::compute(int eflag, int vflag)
       const int j = jlist[jj] & NEIGHMASK;
       double *history = &allhistory[size_history * jj];
       // the held step's leading doubles of the state four entries on, a cache line (8 doubles) at a time: beyond
-      // the L3 the hardware prefetchers miss them (4 lines of every 22), docs/dem.md; a prefetch never faults
-      const double *ahead = history + prefetch_distance * size_history;
-      for (std::size_t k = 0; k < leading; k += 8) __builtin_prefetch(ahead + k, 1);
-      __builtin_prefetch(ahead + leading - 1, 1);
+      // the L3 the hardware prefetchers miss them (4 lines of every 22), docs/dem.md; a prefetch never faults, and
+      // its address is formed as an integer, since it may lie past the history page
+      const std::uintptr_t ahead = reinterpret_cast<std::uintptr_t>(history) + ahead_bytes;
+      for (std::size_t k = 0; k < leading; k += 8)
+        __builtin_prefetch(reinterpret_cast<const void *>(ahead + k * sizeof(double)), 1);
+      __builtin_prefetch(reinterpret_cast<const void *>(ahead + (leading - 1) * sizeof(double)), 1);
       const double del[3] = {x[j][0] - xi[0], x[j][1] - xi[1], x[j][2] - xi[2]};
       const double rsq = dot(del, del);
       const double radsum = radiusi + radius[j];
