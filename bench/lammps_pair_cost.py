@@ -12,6 +12,18 @@ breakdown over steps x contacts; memory per rank from its log.
 --callgrind counts instructions instead (valgrind's callgrind, deterministic, so comparable on a loaded host): the
 pair styles' compute functions, inclusive, on an 8^3 lattice (1536 contacts) over 50 steps (51 computes with the
 setup's), per contact-step.
+
+--cache-sim counts, with callgrind's cache simulation of this host's L1d (48 kB) and L2 (2 MB) as its last
+level and no prefetching, the bytes the compute functions bring from beyond the L2 (64 bytes a missed line, reads and
+write-allocates) per contact-step: the bytes a step touches where its data is not cached.
+
+--side=S --steps=T time an S^3 lattice (3 S^3 contacts) over T steps instead of the 20^3 one over 200: with S = 5
+(375 contacts, 0.5 MB of mdr/visco history at N = 20, M = 1) every contact's state stays in a core's 2 MB L2
+cache, with S = 20 (33 MB) it does not, with S = 40 (261 MB) it exceeds the L3 too (docs/dem.md, "Is the step
+memory-bound?"). --warmup=K runs K steps before the timed ones (every contact's first, non-composed steps and the
+history pages' first touch then fall outside the timing: a held contact's step). --skin=S sets the
+neighbour skin [m] (0.0005: only the six touching neighbours are listed; 0.005 lists the twelve face-diagonal ones
+too, out of contact, as a packing lists more neighbours than contacts). --plugin=PATH times that mdr/visco plugin instead of $MDR_LAMMPS_PLUGIN.
 """
 
 import os
@@ -21,12 +33,17 @@ import sys
 import tempfile
 from pathlib import Path
 
-LMP, PLUGIN = os.environ["LMP"], os.environ["MDR_LAMMPS_PLUGIN"]
-CALLGRIND = "--callgrind" in sys.argv
-ARGS = [a for a in sys.argv[1:] if a != "--callgrind"]
+CACHE_SIM = "--cache-sim" in sys.argv
+CALLGRIND = "--callgrind" in sys.argv or CACHE_SIM
+OPTIONS = dict(a[2:].split("=", 1) for a in sys.argv[1:] if a.startswith("--") and "=" in a)
+ARGS = [a for a in sys.argv[1:] if not a.startswith("--")]
+LMP, PLUGIN = os.environ["LMP"], OPTIONS.get("plugin") or os.environ["MDR_LAMMPS_PLUGIN"]
 ELEMENTS = int(ARGS[0]) if len(ARGS) > 0 else 20
 TERMS = int(ARGS[1]) if len(ARGS) > 1 else 1
 STEPS, SIDE = (50, 8) if CALLGRIND else (200, 20)
+STEPS, SIDE = int(OPTIONS.get("steps", STEPS)), int(OPTIONS.get("side", SIDE))
+SKIN = OPTIONS.get("skin", "0.0005")
+WARMUP = f"run {OPTIONS['warmup']}\n" if "warmup" in OPTIONS else ""
 
 LATTICE = f"""
 units si
@@ -40,7 +57,7 @@ create_atoms 1 box
 set type 1 diameter 0.01 density 1100
 velocity all create 1e-6 4928 loop geom
 comm_modify vel yes
-neighbor 0.0005 bin
+neighbor {SKIN} bin
 neigh_modify one 50 page 5000
 timestep 1e-6
 compute touching all contact/atom
@@ -72,29 +89,37 @@ PAIRS = [
 def run(law):
     with tempfile.TemporaryDirectory() as folder:
         path = Path(folder) / "in.lmp"
-        path.write_text(f"plugin load {PLUGIN}\n" + LATTICE + law + f"run {STEPS}\n")
+        path.write_text(f"plugin load {PLUGIN}\n" + LATTICE + law + WARMUP + f"run {STEPS}\n")
         command = [LMP, "-in", str(path), "-log", str(Path(folder) / "log"), "-screen", "none"]
         counts = Path(folder) / "callgrind.out"
         if CALLGRIND:
             style = law.split()[1]
             command = ["valgrind", "--tool=callgrind", f"--callgrind-out-file={counts}",
                        f"--toggle-collect={COMPUTES[style]}"] + command
+            if CACHE_SIM:
+                command[2:2] = ["--cache-sim=yes", "--D1=49152,12,64", "--LL=2097152,16,64"]
         subprocess.run(command, check=True, cwd=folder, stderr=subprocess.DEVNULL if CALLGRIND else None)
         log = (Path(folder) / "log").read_text()
         if CALLGRIND:
             totals = re.search(r"^totals: (\d+)", counts.read_text(), re.M) or re.search(
                 r"^summary: (\d+)", counts.read_text(), re.M)
             instructions = float(totals.group(1))
+            if CACHE_SIM:  # the last level's data misses, read and write, in lines of 64 bytes
+                text = counts.read_text()
+                events = re.search(r"^events: (.*)$", text, re.M).group(1).split()
+                values = (re.search(r"^totals: (.*)$", text, re.M) or re.search(r"^summary: (.*)$", text, re.M))
+                value = dict(zip(events, map(float, values.group(1).split())))
+                instructions = 64.0 * (value.get("DLmr", 0.0) + value.get("DLmw", 0.0))
     contacts = float(re.findall(r"^\s*\d+\s+([\d.e+-]+)\s*$", log, re.M)[-1]) / 2
     memory = re.search(r"Per MPI rank memory allocation \(min/avg/max\) = [\d.]+ \| ([\d.]+)", log).group(1)
     if CALLGRIND:
         return instructions / ((STEPS + 1) * contacts), contacts, float(memory)
-    pair = float(re.search(r"^Pair\s*\|\s*[\d.e+-]+\s*\|\s*([\d.e+-]+)", log, re.M).group(1))
+    pair = float(re.findall(r"^Pair\s*\|\s*[\d.e+-]+\s*\|\s*([\d.e+-]+)", log, re.M)[-1])
     return pair / (STEPS * contacts), contacts, float(memory)
 
 
 state = TERMS * TERMS + 8 * TERMS + 21 + ELEMENTS * (3 * TERMS + 4)
-unit, scale = ("instructions", 1.0) if CALLGRIND else ("ns", 1e9)
+unit, scale = ("L2-missed bytes", 1.0) if CACHE_SIM else ("instructions", 1.0) if CALLGRIND else ("ns", 1e9)
 print(f"{'law':72s} {unit + '/contact-step':>24s} {'ratio':>6s} {'contacts':>9s} {'MB/rank':>8s}")
 for (base_name, base_law), (name, law) in PAIRS:
     base = run(base_law)

@@ -60,6 +60,10 @@ public:
     static std::size_t state_size(std::size_t elements, std::size_t branches);
     /// state_size for this law's N and M.
     std::size_t state_size() const { return state_size_; }
+    /// Doubles at the start of a contact's state that every step reads and writes (the displacement, the frame, the
+    /// composed normal step's header, the overlap, normal force and element count): all that a held step without
+    /// friction touches (a code may prefetch them; docs/dem.md, "Is the step memory-bound?").
+    std::size_t held_step_size() const { return normal_offset_ + 3; }
     /// Zeroes a contact's state at first touch (state_size() doubles).
     void initialise(std::span<double> state) const;
     /// Throws mdr::InvalidInput (key `state[i]`) unless `state` is a state this law could have written: state_size()

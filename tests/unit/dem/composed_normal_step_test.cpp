@@ -100,6 +100,24 @@ TEST(DemComposedNormalStep, AHeldContactsStepsLeaveItsElementsAsTheyWere) {
     EXPECT_GT(law.contact_count(), 0u);
 }
 
+// held_step_size() names every double a held step without friction touches (what a pair style prefetches): the rest
+// of the state stays bit for bit, while the force within it relaxes.
+TEST(DemComposedNormalStep, AHeldFrictionlessStepTouchesItsLeadingDoublesOnly) {
+    const auto material = rheology::Rheology::standard(1e6, 1e6, 1e-4);
+    ContactLaw law(material, radius, 0.0, elements, half_width, time_step);
+    std::vector<double> state(law.state_size());
+    law.initialise(state);
+    for (int n = 1; n <= 100; ++n) {
+        law.advance_spatial(state, peak_overlap * n / 100.0, {0.0, 0.0, 1.0}, {0.0, 0.0, 0.0});
+    }
+    const std::vector<double> before = state;
+    for (int n = 0; n < 50; ++n) law.advance_spatial(state, peak_overlap, {0.0, 0.0, 1.0}, {1e-9, 0.0, 0.0});
+    ASSERT_LT(law.held_step_size(), state.size());
+    for (std::size_t i = law.held_step_size(); i < state.size(); ++i) EXPECT_EQ(state[i], before[i]) << i;
+    EXPECT_LT(law.normal_force(state), law.normal_force(std::span<const double>(before)));  // relaxed
+    EXPECT_EQ(law.held_step_size(), 6 + foundation::ComposedNormalStep::header_size(1) + 3);  // contact_law.hpp
+}
+
 // A DEM code may change its time step between steps (LAMMPS's fix dt/reset) while a contact is held in the composed
 // form: the header's maps are products of past steps' maps, each of its own dt, so the following steps compose with
 // the new step's map. The reference: the Foundation with each step's own coefficients (eq. 13-22). M = 0 too (an
