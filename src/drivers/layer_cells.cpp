@@ -18,6 +18,7 @@ constexpr double plane_modulus_per_shear = 4.0;
 LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer& layer, double poisson_ratio,
                        const profile::Profile& indenter, double width, std::size_t cells)
     : material_(&material),
+      indenter_(&indenter),
       flat_punch_(indenter.is_flat_punch()),
       spacing_(width / static_cast<double>(cells)),
       cells_(cells),
@@ -508,24 +509,28 @@ double LayerCells::edge_radius(std::size_t contact, double depth) const {
     // jumps (eta times the indenter's rate less the free surface's), while the gap outside, set by the smooth
     // coupling of the whole contact's q, leaves zero with a slope; a receding edge's q falls to zero with a slope,
     // while the gap outside opens from zero with none (the cell leaves with its rate continuous). Each side's line
-    // through its two cells next to the edge meets zero at the edge to second order where it leaves with a slope,
-    // and beyond the edge where it does not (a jump inside; a gap quadratic in r - a outside): the nearer zero is
-    // the edge. Where neither line falls towards the edge within the two centres, the interpolated zero stays.
+    // through its two cells next to the edge, in g (q and the gap are linear in g where the contact is a few cells:
+    // q = E* (g(a) - g) on the half-space, the free w1 even in x), meets zero at the edge to second order where it
+    // leaves with a slope, and beyond the edge where it does not (a jump inside; a gap quadratic in x - a outside):
+    // the nearer zero, g^-1 of it, is the edge. Where neither line falls towards the edge within the two centres,
+    // the interpolated zero stays.
     double radius = interpolated;
     bool extrapolated = false;
-    const auto take = [&](double zero) {
+    const auto take = [&](double g_zero) {
+        const double zero = indenter_->contact_radius(g_zero);
         if (!(zero >= centre_[contact - 1] && zero <= centre_[contact])) return;
         radius = extrapolated ? std::min(radius, zero) : zero;
         extrapolated = true;
     };
-    if (contact >= 2) {  // q: decreasing through the edge cell
-        const double before = trial_load_[contact - 2] / plane_modulus_per_shear;
-        if (before > inside) take(centre_[contact - 1] + spacing_ * inside / (before - inside));
+    const std::size_t m = contact;
+    if (m >= 2 && profile_[m - 1] > profile_[m - 2]) {  // q: falling through the edge cell
+        const double before = trial_load_[m - 2] / plane_modulus_per_shear;
+        if (before > inside) take(profile_[m - 1] + (profile_[m - 1] - profile_[m - 2]) * inside / (before - inside));
     }
-    if (contact + 1 < cells_) {  // the gap: growing from the first free cell
+    if (m + 1 < cells_ && profile_[m + 1] > profile_[m]) {  // the gap: growing from the first free cell
         const auto gap = [&](std::size_t i) { return trial_displacement_[i] - (depth - profile_[i]); };
-        const double first = gap(contact), second = gap(contact + 1);
-        if (second > first) take(centre_[contact] - spacing_ * first / (second - first));
+        const double first = gap(m), second = gap(m + 1);
+        if (second > first) take(profile_[m] - (profile_[m + 1] - profile_[m]) * first / (second - first));
     }
     return radius;
 }

@@ -114,7 +114,7 @@ private:
     // The contact radius of a step's contact set of `contact` cells (0 < contact < cells) at depth `depth`, the trial
     // state solved with cells contact and contact + 1 free: the zero of the edge function (eq. L19) interpolated
     // between the two centres, or, with a dashpot, the nearer of the zeros of q inside and of the gap outside, each
-    // extrapolated linearly from its two cells next to the edge (eq. L19b).
+    // extrapolated linearly in g from its two cells next to the edge (eq. L19b).
     double edge_radius(std::size_t contact, double depth) const;
     // Its derivative in the depth where inside, outside and the first three q are affine in it with these slopes.
     double edge_correction_slope(std::size_t contact, double inside, double outside, double inside_slope,
@@ -160,6 +160,7 @@ private:
     const std::vector<double>& unit_load(std::size_t contact);
 
     const rheology::Rheology* material_;
+    const profile::Profile* indenter_;  // its g^-1 (contact_radius) for edge_radius
     bool flat_punch_;
     double spacing_;
     std::size_t cells_;
