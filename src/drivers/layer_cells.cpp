@@ -505,7 +505,7 @@ double LayerCells::edge_radius(std::size_t contact, double depth) const {
     const double interpolated =
         centre_[contact - 1] + (inside > outside ? spacing_ * inside / (inside - outside) : 0.5 * spacing_);
     if (!(material_->viscosity() > 0.0)) return interpolated;
-    // With a dashpot it is not C1 (docs/theory.md, "A parallel dashpot on the cells", eq. L19b): a growing edge's q
+    // With a dashpot it is not C1 (docs/theory.md, "A parallel dashpot on the cells", eq. L19c): a growing edge's q
     // jumps (eta times the indenter's rate less the free surface's), while the gap outside, set by the smooth
     // coupling of the whole contact's q, leaves zero with a slope; a receding edge's q falls to zero with a slope,
     // while the gap outside opens from zero with none (the cell leaves with its rate continuous). Each side's line

@@ -1,5 +1,5 @@
 // The contact radius on a layer's cells with a parallel dashpot (docs/theory.md, "A parallel dashpot on the cells",
-// eq. L19b): a growing contact's line load jumps at the edge (eta dd/dt on [0, a]), so the edge function of eq. L19
+// eq. L19c): a growing contact's line load jumps at the edge (eta dd/dt on [0, a]), so the edge function of eq. L19
 // is not C1 there and its zero interpolated between two centres is first order in the cell; the radius located from
 // the gap outside (a growing edge) or from q inside (a receding one) is second order. A creep-recovery under ramps
 // of the force (the example afm_creep_recovery_layer.toml with ramps for its jumps) on 400 cells (the default)
