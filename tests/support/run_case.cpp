@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <gtest/gtest.h>
+
 #include "mdr/io/case_file.hpp"
 
 namespace mdr::testing {
@@ -18,6 +20,16 @@ double interpolate(const std::vector<double>& x, const std::vector<double>& y, d
     const auto i = static_cast<std::size_t>(upper - x.begin());
     const double weight = (at - x[i - 1]) / (x[i] - x[i - 1]);
     return y[i - 1] + weight * (y[i] - y[i - 1]);
+}
+
+double force_difference(const drivers::IndentationResult& result, const drivers::IndentationResult& reference) {
+    EXPECT_EQ(result.time.size(), reference.time.size());
+    double largest = 0.0, peak = 0.0;
+    for (std::size_t i = 0; i < std::min(result.time.size(), reference.time.size()); ++i) {
+        largest = std::max(largest, std::abs(result.force[i] - reference.force[i]));
+        peak = std::max(peak, std::abs(reference.force[i]));
+    }
+    return largest / peak;
 }
 
 double observed_order(double coarse_error, double fine_error) { return std::log2(coarse_error / fine_error); }

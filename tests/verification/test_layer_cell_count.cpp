@@ -11,8 +11,11 @@
 
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/io/case_file.hpp"
+#include "run_case.hpp"
 
 namespace {
+
+using mdr::testing::force_difference;
 
 // A standard solid (G_inf = 1 kPa, G1 = 3 kPa, tau1 = 0.2 s) under a sphere (R = 10 um), its depth 1 um +- 0.3 um at
 // 2 Hz, the contact lost for ~16 % of each cycle (tests/verification/test_layer_regrowing.cpp), at a quarter of the
@@ -37,17 +40,6 @@ const std::string quarter_step = "time_step = 4.375e-4\n";
 
 mdr::drivers::IndentationResult run(const std::string& text) {
     return mdr::drivers::run_case(mdr::io::parse_case(text));
-}
-
-// max |F - F_ref| over the peak of F_ref, row by row (both runs on the same grid).
-double force_difference(const mdr::drivers::IndentationResult& result, const mdr::drivers::IndentationResult& ref) {
-    EXPECT_EQ(result.time.size(), ref.time.size());
-    double largest = 0.0, peak = 0.0;
-    for (std::size_t i = 0; i < std::min(result.time.size(), ref.time.size()); ++i) {
-        largest = std::max(largest, std::abs(result.force[i] - ref.force[i]));
-        peak = std::max(peak, std::abs(ref.force[i]));
-    }
-    return largest / peak;
 }
 
 TEST(LayerCellCount, AThickLayerMeetsTheHalfSpaceToAMillionthWithMemory) {

@@ -13,8 +13,11 @@
 #include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/indentation.hpp"
 #include "mdr/io/case_file.hpp"
+#include "run_case.hpp"
 
 namespace {
+
+using mdr::testing::force_difference;
 
 const std::string harmonic_load = R"(history = [[0.0, 0.0], [0.5, 1.0e-6], [3.5, 1.0e-6]]
 harmonic = { amplitude = 0.3e-6, frequency = 2.0, start = 0.5, end = 3.5 }
@@ -35,17 +38,6 @@ std::string layer_with_cells(double thickness, int cells) {
 
 mdr::drivers::IndentationResult run(const std::string& text) {
     return mdr::drivers::run_case(mdr::io::parse_case(text));
-}
-
-// max |F - F_ref| over the peak of F_ref, row by row (both runs on the same grid).
-double force_difference(const mdr::drivers::IndentationResult& result, const mdr::drivers::IndentationResult& ref) {
-    EXPECT_EQ(result.time.size(), ref.time.size());
-    double largest = 0.0, peak = 0.0;
-    for (std::size_t i = 0; i < std::min(result.time.size(), ref.time.size()); ++i) {
-        largest = std::max(largest, std::abs(result.force[i] - ref.force[i]));
-        peak = std::max(peak, std::abs(ref.force[i]));
-    }
-    return largest / peak;
 }
 
 void expect_second_order(const std::vector<double>& errors) {

@@ -22,6 +22,7 @@
 namespace mdr {
 namespace {
 
+using testing::force_difference;
 using testing::run_toml;
 
 const std::string harmonic_load = R"(history = [[0.0, 0.0], [0.5, 1.0e-6], [3.5, 1.0e-6]]
@@ -39,17 +40,6 @@ std::string displacement_case(const std::string& material, const std::string& lo
 
 std::string thick_layer(int cells) {
     return fmt::format("[layer]\nthickness = 1.0e3\ninterface = \"bonded\"\n[numerics]\nelements = {}\n", cells);
-}
-
-// max |F - F_ref| over the peak of F_ref, row by row (both runs on the same grid).
-double force_difference(const drivers::IndentationResult& result, const drivers::IndentationResult& ref) {
-    EXPECT_EQ(result.time.size(), ref.time.size());
-    double largest = 0.0, peak = 0.0;
-    for (std::size_t i = 0; i < std::min(result.time.size(), ref.time.size()); ++i) {
-        largest = std::max(largest, std::abs(result.force[i] - ref.force[i]));
-        peak = std::max(peak, std::abs(ref.force[i]));
-    }
-    return largest / peak;
 }
 
 // The larger of |k'/k'_ref - 1| and |k''/k''_ref - 1| (the last cycle's first harmonics).
