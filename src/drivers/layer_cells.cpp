@@ -18,6 +18,7 @@ constexpr double plane_modulus_per_shear = 4.0;
 LayerCells::LayerCells(const rheology::Rheology& material, const contact::Layer& layer, double poisson_ratio,
                        const profile::Profile& indenter, double width, std::size_t cells)
     : material_(&material),
+      indenter_(&indenter),
       flat_punch_(indenter.is_flat_punch()),
       spacing_(width / static_cast<double>(cells)),
       cells_(cells),
@@ -520,6 +521,47 @@ void LayerCells::keep(std::size_t count, double dashpot) {
     }
 }
 
+double LayerCells::edge_radius(std::size_t contact, double depth) const {
+    // q/4 inside and minus the free stiffness times the gap outside: the edge function (eq. L19), C1 at the edge
+    // without a dashpot, so its zero interpolated linearly between the two centres is second order.
+    // At their bounds, inside >= 0 >= outside (a set that solves the complementarity within round-off), so that the
+    // edge stays between the two centres.
+    const double inside = std::max(trial_load_[contact - 1] / plane_modulus_per_shear, 0.0);
+    const double outside =
+        std::min(-free_stiffness_ * (trial_displacement_[contact] - (depth - profile_[contact])), 0.0);
+    const double interpolated =
+        centre_[contact - 1] + (inside > outside ? spacing_ * inside / (inside - outside) : 0.5 * spacing_);
+    if (!(material_->viscosity() > 0.0)) return interpolated;
+    // With a dashpot it is not C1 (docs/theory.md, "A parallel dashpot on the cells", eq. L19c): a growing edge's q
+    // jumps (eta times the indenter's rate less the free surface's), while the gap outside, set by the smooth
+    // coupling of the whole contact's q, leaves zero with a slope; a receding edge's q falls to zero with a slope,
+    // while the gap outside opens from zero with none (the cell leaves with its rate continuous). Each side's line
+    // through its two cells next to the edge, in g (q and the gap are linear in g where the contact is a few cells:
+    // q = E* (g(a) - g) on the half-space, the free w1 even in x), meets zero at the edge to second order where it
+    // leaves with a slope, and beyond the edge where it does not (a jump inside; a gap quadratic in x - a outside):
+    // the nearer zero, g^-1 of it, is the edge. Where neither line falls towards the edge within the two centres,
+    // the interpolated zero stays.
+    double radius = interpolated;
+    bool extrapolated = false;
+    const auto take = [&](double g_zero) {
+        const double zero = indenter_->contact_radius(g_zero);
+        if (!(zero >= centre_[contact - 1] && zero <= centre_[contact])) return;
+        radius = extrapolated ? std::min(radius, zero) : zero;
+        extrapolated = true;
+    };
+    const std::size_t m = contact;
+    if (m >= 2 && profile_[m - 1] > profile_[m - 2]) {  // q: falling through the edge cell
+        const double before = trial_load_[m - 2] / plane_modulus_per_shear;
+        if (before > inside) take(profile_[m - 1] + (profile_[m - 1] - profile_[m - 2]) * inside / (before - inside));
+    }
+    if (m + 1 < cells_ && profile_[m + 1] > profile_[m]) {  // the gap: growing from the first free cell
+        const auto gap = [&](std::size_t i) { return trial_displacement_[i] - (depth - profile_[i]); };
+        const double first = gap(m), second = gap(m + 1);
+        if (second > first) take(profile_[m] - (profile_[m + 1] - profile_[m]) * first / (second - first));
+    }
+    return radius;
+}
+
 template <class LoadRule>
 LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, ContactRule rule,
                                    std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry) {
@@ -578,6 +620,7 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, C
     }
     LayerCellState state;
     for (std::size_t i = 0; i < contact; ++i) state.force += 2.0 * spacing_ * trial_load_[i];  // eq. L5
+    if (viscosity > 0.0) keep(contact + 2, dashpot);  // the edge's two free cells (edge_radius)
     free_surface(contact, depth, kept_ - std::min(contact, kept_));  // every kept free cell's, for its branches
     // q/4 inside and minus the stiffness times the gap outside (E*/4 = the step's stiffness) meet with the same slope
     // at the edge (w1 jumps in slope by q'/E* there): one C1 function (eq. L19).
@@ -597,13 +640,8 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, C
         state.contact_radius = spacing_ * static_cast<double>(cells_);
     } else if (corrects_dashpot_edge(contact)) {
         state.contact_radius = point_edge;
-    } else if (contact > 0) {  // its zero, interpolated linearly between the two centres (second order)
-        // At their bounds, inside >= 0 >= outside (a set that solves the complementarity within round-off), so that
-        // the edge stays between the two centres.
-        const double inside = std::max(edge_function(contact - 1), 0.0);
-        const double outside = std::min(edge_function(contact), 0.0);
-        state.contact_radius =
-            centre_[contact - 1] + (inside > outside ? spacing_ * inside / (inside - outside) : 0.5 * spacing_);
+    } else if (contact > 0) {
+        state.contact_radius = edge_radius(contact, depth);
     }
     // The same function at the axis, extrapolated linearly in g from the two innermost cells (q - E*(d - g) is
     // smooth and even there; g has a cone's kink): the axis touches while it is positive, and a loss or a regain

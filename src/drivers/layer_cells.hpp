@@ -120,6 +120,12 @@ private:
     // Its derivative in the depth where inside, outside and the first three q are affine in it with these slopes.
     double edge_correction_slope(std::size_t contact, double inside, double outside, double inside_slope,
                                  double outside_slope, const double* innermost_slope) const;
+    // The contact radius of a step's contact set of `contact` cells (0 < contact < cells; not a point contact with
+    // a dashpot: dashpot_edge) at depth `depth`, the trial state solved with cells contact and contact + 1 free: the
+    // zero of the edge function (eq. L19) interpolated between the two centres, or, with a dashpot, the nearer of the
+    // zeros of q inside and of the gap outside, each extrapolated linearly in g from its two cells next to the edge
+    // (eq. L19c).
+    double edge_radius(std::size_t contact, double depth) const;
     // With a parallel dashpot q jumps at the edge (by 4 eta times the rate's jump there, eq. L16), so the midpoint
     // rule's error is first order in the edge's place: what F = 2 dx sum q_i misses is 2 (a - m dx) q_{m-1}, the edge
     // a where the indenter meets the free surface, g(a) = d - w1_m (`outside_displacement`, cell m's free w1), on g
@@ -161,6 +167,7 @@ private:
     const std::vector<double>& unit_load(std::size_t contact);
 
     const rheology::Rheology* material_;
+    const profile::Profile* indenter_;  // its g^-1 (contact_radius) for edge_radius
     bool flat_punch_;
     double spacing_;
     std::size_t cells_;
