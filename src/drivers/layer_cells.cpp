@@ -193,15 +193,10 @@ LayerCellState LayerCells::step(double time_step, double depth, std::optional<do
 
 LayerCellState LayerCells::step_loaded(double time_step, double right_side, double spring_constant, double base) {
     if (!(time_step > 0.0) && material_->viscosity() > 0.0) {
-        if (contact_ > 0) return jump(right_side - spring_constant * depth_);
+        if (contact_ > 0) return jump(right_side - spring_constant * depth_, contact_);
         const double force = right_side - spring_constant * depth_;
         if (force > 0.0) {
-            if (profile_[1] == profile_[0]) {
-                throw InvalidInput("material.eta", format_value(material_->viscosity()),
-                                   "a jump of the force onto the surface (nothing in contact before it) against a "
-                                   "parallel dashpot under a flat-ended indenter is not built on a [layer] yet "
-                                   "(issue 28)");
-            }
+            if (profile_[1] == profile_[0]) return jump_onto_face(force);
             // Onto the surface: an indenter that touches at a point meets the recovering surface at the axis alone
             // (every cell apart from it), and in no time no w1 moves, so no cell takes the force: the depth holds
             // and the dashpots' rates are unbounded at the touch (on the half-space F_el ~ t: a^3 ~ t). The next
@@ -307,7 +302,35 @@ LayerCellState LayerCells::solve_loaded(double time_step, double right_side, dou
     return advance(time_step, load_for, rule, start_rate, rate_at_entry);
 }
 
-LayerCellState LayerCells::jump(double force) {
+LayerCellState LayerCells::jump_onto_face(double force) {
+    // Nothing in contact: Q = (I - K) q = 0 on every cell, so each cell's w1 and branches evolve alone (eq. L16 with
+    // Q = 0). The face's cells entered together with one w1 and one branch state and stay identical, so the indenter,
+    // riding on them, still touches them all: their dashpots take the jump as in contact (eq. L28 with the committed
+    // q = 0; docs/theory.md, "A jump of the force on the cells"). The touching cells are those at zero gap g + w1 - d
+    // within 1e-12 of the depth scale (the identical states' round-off; such a gap would close in 1e-12 of the depth
+    // over the jump's rate change, negligible against the run's time scales); they must be a disc [0, m).
+    catch_up(cells_);
+    double scale = std::abs(depth_);
+    for (std::size_t i = 0; i < cells_; ++i) scale = std::max(scale, std::abs(profile_[i] + displacement_[i]));
+    const double tolerance = 1e-12 * scale;
+    const auto touches = [&](std::size_t i) { return profile_[i] + displacement_[i] - depth_ <= tolerance; };
+    std::size_t touching = 0;
+    while (touching < cells_ && touches(touching)) ++touching;
+    bool disc = touching > 0;
+    for (std::size_t i = touching; disc && i < cells_; ++i) disc = !touches(i);
+    if (!disc) {
+        throw InvalidInput("material.eta", format_value(material_->viscosity()),
+                           "a jump of the force onto the surface (nothing in contact before it) against a parallel "
+                           "dashpot under a flat-ended indenter touching the surface on a ring, not a disc about the "
+                           "axis, is not built on a [layer]");
+    }
+    // The indenter rode on the touching cells at their own rate (eq. L16 with Q = 0: eta w1' = -(G_inf w1 + sum_k
+    // G_k h_k)); the jump raises it by jump's dr, as in contact.
+    rate_ = force_keeping_rate(touching);
+    return jump(force, touching);
+}
+
+LayerCellState LayerCells::jump(double force, std::size_t from) {
     // A dashpot does not move in no time (docs/theory.md, "A jump of the force on the cells", eq. L28 to L30): the
     // depth and every cell's w1 and branches stay, only the rates jump. A cell that stays in contact follows the
     // indenter, its rate changed by the indenter's dr: Q/4 += eta dr (eq. L16); a cell that leaves carries q = 0, its
@@ -320,12 +343,12 @@ LayerCellState LayerCells::jump(double force) {
     // The cells not stepped yet are stepped up to now first, and every cell is stepped from here on.
     const double viscosity = material_->viscosity();
     catch_up(cells_);
-    const std::vector<double> committed(trial_load_.begin(),
-                                        trial_load_.begin() + static_cast<std::ptrdiff_t>(contact_));
-    std::size_t contact = force > 0.0 ? contact_ : 0;
+    std::vector<double> committed(from, 0.0);  // q on [0, from): zero beyond the committed contact
+    std::copy_n(trial_load_.begin(), contact_, committed.begin());
+    std::size_t contact = force > 0.0 ? from : 0;
     double rate_change = 0.0;
     for (; contact > 0; --contact) {
-        if (contact == contact_) {
+        if (contact == from) {
             std::copy(committed.begin(), committed.end(), trial_load_.begin());
         } else {
             for (std::size_t i = 0; i < contact; ++i) trial_load_[i] = plane_modulus_per_shear * stress_[i];
@@ -344,7 +367,7 @@ LayerCellState LayerCells::jump(double force) {
             trial_load_[i] += viscosity * rate_change * unit[i];
             if (trial_load_[i] < 0.0 && trial_load_[i] < committed[i]) complementary = false;
         }
-        for (std::size_t j = contact; complementary && j < contact_; ++j) {  // eq. L29 on the cells that left
+        for (std::size_t j = contact; complementary && j < from; ++j) {  // eq. L29 on the cells that left
             complementary = leaving_rate_margin(j, contact, rate_change) >= 0.0;
         }
         if (complementary) break;
@@ -352,16 +375,20 @@ LayerCellState LayerCells::jump(double force) {
     if (contact == 0) {
         if (force > 0.0) {  // not met: the one solution's contact set is then not a disc
             throw InvalidInput("material.eta", format_value(viscosity),
-                               "a jump of the force down against a parallel dashpot on a [layer] leaves a "
+                               "a jump of the force against a parallel dashpot on a [layer] leaves a "
                                "contact that is not a disc, which the cells do not solve");
         }
         std::fill(trial_load_.begin(), trial_load_.end(), 0.0);
     }
     // The edge (eq. L30): the edge function in the rates, q/4 inside and minus the cell's rate margin (eq. L29)
-    // outside, interpolated linearly between the two centres; a jump up keeps the committed radius.
+    // outside, interpolated linearly between the two centres; a jump up keeps the committed radius. Onto a face
+    // the first cell beyond the touching ones is at a positive gap, its margin of either sign: taken at its bound
+    // (as advance takes the edge function), the edge then at its centre.
     double outside = 0.0;
-    if (contact > 0 && contact < contact_) {
-        outside = -leaving_rate_margin(contact, contact, rate_change);
+    if (contact == cells_) {
+        last_.contact_radius = spacing_ * static_cast<double>(cells_);
+    } else if (contact > 0 && contact != contact_) {
+        outside = std::min(-leaving_rate_margin(contact, contact, rate_change), 0.0);
         const double inside = trial_load_[contact - 1] / plane_modulus_per_shear;
         last_.contact_radius = centre_[contact - 1] + spacing_ * inside / (inside - outside);
     } else if (contact == 0) {
@@ -372,7 +399,7 @@ LayerCellState LayerCells::jump(double force) {
                                  : numerics::dot_product(&operator_->matrix[i * cells_], trial_load_.data(), contact) /
                                        plane_modulus_per_shear;
     }
-    if (contact < contact_) {  // the axis: as the edge (eq. L19), in the rates
+    if (contact != contact_) {  // the axis: as the edge (eq. L19), in the rates
         const double inner = contact > 0 ? trial_load_[0] / plane_modulus_per_shear : 0.0;
         const double next = contact > 1 ? trial_load_[1] / plane_modulus_per_shear : contact == 1 ? outside : 0.0;
         axis_ = contact > 0 ? inner + axis_weight_ * (next - inner) : 0.0;

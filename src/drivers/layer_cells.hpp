@@ -64,7 +64,8 @@ public:
     /// contact recede at once to the cells that keep q >= 0 while the others rise no faster than the indenter (jump;
     /// to zero force: no contact). A jump onto the surface (nothing in contact before it) holds the depth with no
     /// cell in contact (a touch at a point), the next step carrying the force; under a flat end (its face meeting
-    /// the surface at once) it throws mdr::InvalidInput (key `material.eta`).
+    /// the surface at once) the cells at zero gap take it as a contact does (jump_onto_face), and where those are
+    /// a ring, not a disc about the axis, it throws mdr::InvalidInput (key `material.eta`).
     LayerCellState step_loaded(double time_step, double right_side, double spring_constant, double base);
     /// Steps an indenter carried by its inertia (an impact) by `time_step` > 0 [s] to the depth at which F(d) + k d =
     /// `right_side` [N], k = `spring_constant` > 0 [N/m] (the trapezoidal rule's 4m/dt^2, eq. 37); without contact
@@ -98,8 +99,13 @@ private:
                                 std::optional<double> start_rate, foundation::RateAtEntry rate_at_entry);
     // A jump of the force to `force` [N] at the committed depth against a parallel dashpot, from a contact
     // (step_loaded): up, the whole contact takes it; down, the contact recedes at once to the set that solves the
-    // complementarity in the rates (docs/theory.md eq. L28 to L30).
-    LayerCellState jump(double force);
+    // complementarity in the rates (docs/theory.md eq. L28 to L30). `from`: the cells [0, from) the indenter
+    // touches before it, the committed contact, or a face's touching cells (jump_onto_face; q = 0 beyond contact_).
+    LayerCellState jump(double force, std::size_t from);
+    // A jump of the force to `force` > 0 [N] with nothing in contact under a flat end (step_loaded): the cells at
+    // zero gap under the face (a disc [0, m), else mdr::InvalidInput naming `material.eta`) take it as jump does,
+    // the indenter's rate before it their own free rate (docs/theory.md, "A jump of the force on the cells").
+    LayerCellState jump_onto_face(double force);
     // eta times how much faster than the indenter cell `cell` (free after a jump) moves into the body, q the trial
     // line load on [0, contact) and the indenter's rate changed by `rate_change` [m/s] (eq. L29: >= 0 where it left).
     double leaving_rate_margin(std::size_t cell, std::size_t contact, double rate_change) const;
