@@ -203,11 +203,15 @@ private:
     }
     // The rate at the end of a force-controlled step: what the dashpots in contact saw, so that the next step starts
     // in equilibrium (Foundation::contact_rate: the trapezoidal 2 dd/dt - rate0, or the secant dd/dt after a step
-    // without a known start rate, with an element that entered in the step taking its own rate).
-    std::optional<double> next_rate() const {
-        if (foundation_.contact_count() == 0) return std::nullopt;
-        return foundation_.contact_rate();
-    }
+    // without a known start rate, with an element that entered in the step taking its own rate). A step that ends
+    // without contact (force control at zero force: the indenter rides on the recovering surface; a spring's
+    // indenter hanging free) carries the indenter's own end rate: an element it reaches in the next step then takes
+    // the trapezoidal rate from its own start rate, the law of a free element, so that it enters with a force >= 0
+    // exactly where the indenter reaches its free surface. (Unknown there, the entering element took the secant, a
+    // different law: riding at zero force it entered past its free surface at a negative force clamped to zero, the
+    // indenter sank past the surface by the gap between the two laws, first order in the step, and the elements were
+    // flagged in contact on alternate rows; docs/theory.md section 3.)
+    std::optional<double> next_rate() const { return foundation_.contact_rate(); }
 
     const ContactCase& contact_case_;
     foundation::Foundation& foundation_;
@@ -223,8 +227,8 @@ private:
     bool sine_rate_;    // a prescribed depth under a harmonic, with a parallel dashpot
     // The rate dd/dt at the current node that the dashpots in contact see (Foundation::begin_step, contact_rate):
     // trapezoidal (second order) when the control solves for the depth, zero from rest (the start, a touch); unknown
-    // (the secant rate is used for one step) after a force jump with nothing in contact or a step that ends without
-    // contact, as the rate is then not tied to the force.
+    // (the secant rate is used for one step) after a force jump with nothing in contact, as the rate is then not
+    // tied to the force.
     std::optional<double> rate_;
     double depth_;
     double previous_depth_;

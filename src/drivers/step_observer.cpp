@@ -5,7 +5,10 @@
 namespace mdr::drivers {
 
 double StepState::contact_radius() const {
-    return foundation ? foundation->contact_radius() : layer_contact_radius;
+    if (!foundation) return layer_contact_radius;
+    // Without force nothing carries a load (Foundation::contact_radius); at a force jump to zero the foundation still
+    // holds its state from before the jump (the dashpots take the jump), so the row's force decides.
+    return force > 0.0 ? foundation->contact_radius() : 0.0;
 }
 
 }  // namespace mdr::drivers

@@ -455,6 +455,9 @@ double Foundation::touching_depth() const {
 }
 
 double Foundation::contact_radius() const {
+    // Without force no element carries one: the load-bearing contact is empty (an element that entered at zero
+    // force, clamped there, is no contact), as on a [layer]'s cells.
+    if (!(total_force_ > 0.0)) return 0.0;
     const double* flags = element_flags();
     std::size_t outer = active_;
     while (outer > 0 && flags[outer - 1] == 0.0) --outer;

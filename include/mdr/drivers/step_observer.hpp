@@ -34,8 +34,8 @@ struct StepState {
                                         ///< half-space: read contact_radius()
     const foundation::Foundation* foundation = nullptr;  ///< the MDR foundation after the step (null only on a
                                                          ///< [layer]): contact radius, elements in contact, line loads
-    /// The contact radius a [m]: the foundation's (Foundation::contact_radius, a scan of its elements), or on a
-    /// [layer] layer_contact_radius.
+    /// The contact radius a [m]: the foundation's (Foundation::contact_radius, a scan of its elements; 0 at zero
+    /// force), or on a [layer] layer_contact_radius.
     double contact_radius() const;
 };
 
