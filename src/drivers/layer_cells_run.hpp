@@ -22,7 +22,7 @@ IndentationResult run_on_layer_cells(const ContactCase& contact_case, const Brou
                                      const ProgressObserver& progress, const StepObservers& observers) {
     IndentationResult result;
     result.numerics = resolve_numerics(contact_case);
-    const std::size_t cells = layer_cell_count(contact_case.numerics);
+    const std::size_t cells = layer_cell_count(contact_case);
     result.numerics.elements = cells;
     result.numerics.half_width = largest_radius;  // reported: the cells' range
     LayerCells layer(contact_case.material, *contact_case.layer, layer_poisson_ratio(contact_case),

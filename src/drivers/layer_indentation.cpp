@@ -44,8 +44,11 @@ double largest_contact_radius(const ContactCase& contact_case, const LayerLoadin
 
 }  // namespace
 
-std::size_t layer_cell_count(const NumericsOptions& numerics) {
-    return numerics.layer_cells.value_or(numerics.elements.value_or(default_layer_cells));
+std::size_t layer_cell_count(const ContactCase& contact_case) {
+    const auto& numerics = contact_case.numerics;
+    const std::size_t default_cells =
+        contact_case.material.viscosity() > 0.0 ? default_layer_cells_with_dashpot : default_layer_cells;
+    return numerics.layer_cells.value_or(numerics.elements.value_or(default_cells));
 }
 
 double layer_poisson_ratio(const ContactCase& contact_case) {

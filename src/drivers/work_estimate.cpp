@@ -49,7 +49,7 @@ double memory_bound(const ContactCase& contact_case) {
 // What a run's work is counted in, for the messages: the half-space's elements (x 2 layers with tangential loading),
 // or the cells of a layer's coupled time-stepping.
 std::string counted_in(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
-    if (contact_case.layer) return fmt::format("m = {} cells of the [layer]", layer_cell_count(contact_case.numerics));
+    if (contact_case.layer) return fmt::format("m = {} cells of the [layer]", layer_cell_count(contact_case));
     return fmt::format("{} elements{}", numerics.elements, contact_case.tangential ? " x 2 layers" : "");
 }
 
@@ -72,7 +72,7 @@ struct StepWork {
 // smaller), each multiply-add counted as an element-step.
 StepWork step_work(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
     if (contact_case.layer) {
-        const double cells = static_cast<double>(layer_cell_count(contact_case.numerics));
+        const double cells = static_cast<double>(layer_cell_count(contact_case));
         return {cells * cells, cells * cells * cells / 3.0};
     }
     return {static_cast<double>(numerics.elements) * (contact_case.tangential ? 2.0 : 1.0), 0.0};
@@ -97,7 +97,7 @@ WorkEstimate estimate_work(const ContactCase& contact_case, const ResolvedNumeri
         // The layer's cells (step_work): I - K, its factor and the factor's transpose (3 m^2 doubles), the record of
         // the steps of the free cells (at most 4 m^2, LayerCells::record), the unit loads of the contact sets (at most
         // m^2 / 2), and per cell the stepping's vectors (8) and a memory value per branch.
-        const double cells = static_cast<double>(layer_cell_count(contact_case.numerics));
+        const double cells = static_cast<double>(layer_cell_count(contact_case));
         estimate.memory += 8.0 * (7.5 * cells * cells + cells * (8.0 + branches));
         return estimate;
     }

@@ -15,14 +15,21 @@ namespace mdr::drivers {
 /// tests/python/test_layer_unloading.py).
 inline constexpr std::size_t default_layer_cells = 400;
 
+/// The same with a parallel dashpot (`material.eta`): its line load jumps at a growing edge, so the cells are first
+/// order in the cell where the contact's edge turns and where a cone's point contact starts from rest (the radius
+/// 1.5e-3 and a cone's depth 1.0e-3 of their peaks at 400 cells, 4.6e-4 and ~5e-4 at 800; docs/theory.md 4c, eq.
+/// L19b, L19c): twice the cells keep every output within 1e-3 of its peak.
+inline constexpr std::size_t default_layer_cells_with_dashpot = 800;
+
 /// The most cells `[numerics] layer_cells` may ask: I - K and its factor are dense (O(m^2) doubles, its factoring
 /// O(m^3)), 4096 cells at most about 1 GB (540 MB measured) and 2.3e10 multiply-adds (3 s), a fifth of the default
 /// numerics.max_element_steps before the first step (estimate_work, work_estimate.hpp).
 inline constexpr std::size_t max_layer_cells = 4096;
 
 /// The cells of a layer's coupled time-stepping (eq. L16 to L19): `numerics.layer_cells`, else `numerics.elements`
-/// (so that a case without the key runs as before it existed), else default_layer_cells.
-std::size_t layer_cell_count(const NumericsOptions& numerics);
+/// (so that a case without the key runs as before it existed), else default_layer_cells, or
+/// default_layer_cells_with_dashpot for a material with a parallel dashpot.
+std::size_t layer_cell_count(const ContactCase& contact_case);
 
 /// The Poisson ratio of the layer's body, on which its kernel depends (docs/theory.md eq. L1): 0.5 for one
 /// incompressible body; for one compressible body whose bulk relaxation is proportional to its shear relaxation

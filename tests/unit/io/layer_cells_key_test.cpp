@@ -1,4 +1,5 @@
-// `[numerics] layer_cells`: the cells of a layer's coupled time-stepping, read, defaulted (to `elements`, else 400),
+// `[numerics] layer_cells`: the cells of a layer's coupled time-stepping, read, defaulted (to `elements`, else 400,
+// 800 with a parallel dashpot),
 // refused with the key, the value and the rule, and counted in the bounds of work and memory.
 
 #include <gtest/gtest.h>
@@ -31,16 +32,26 @@ mdr::InvalidInput refusal(const std::string& text) {
     return mdr::InvalidInput("(accepted)", "", "");
 }
 
-TEST(LayerCellsKey, IsReadAndDefaultsToTheElementsElseFourHundred) {
+TEST(LayerCellsKey, IsReadAndDefaultsToTheElementsElseFourHundredElseEightHundredWithADashpot) {
     EXPECT_EQ(mdr::io::parse_case(on_layer("layer_cells = 1600\n")).numerics.layer_cells, 1600u);
     const auto count = [](const std::string& numerics) {
-        return mdr::drivers::layer_cell_count(mdr::io::parse_case(on_layer(numerics)).numerics);
+        return mdr::drivers::layer_cell_count(mdr::io::parse_case(on_layer(numerics)));
     };
     EXPECT_EQ(count("layer_cells = 1600\n"), 1600u);
     EXPECT_EQ(count("layer_cells = 1600\nelements = 300\n"), 1600u);  // the nodes stay 300
     EXPECT_EQ(count("elements = 300\n"), 300u);                       // every case written before the key
     EXPECT_EQ(count(""), mdr::drivers::default_layer_cells);
     EXPECT_EQ(mdr::drivers::default_layer_cells, 400u);
+    const auto with_dashpot = [](const std::string& numerics) {
+        auto text = on_layer(numerics);
+        const std::string standard = "model = \"standard\"\nG_inf = 1.0e3\nG1 = 3.0e3\ntau1 = 0.2\n";
+        text.replace(text.find(standard), standard.size(),
+                     "model = \"prony\"\nG_inf = 1.0e3\nterms = [[3.0e3, 0.2]]\neta = 50.0\n");
+        return mdr::drivers::layer_cell_count(mdr::io::parse_case(text));
+    };
+    EXPECT_EQ(with_dashpot(""), 800u);
+    EXPECT_EQ(with_dashpot("elements = 300\n"), 300u);
+    EXPECT_EQ(with_dashpot("layer_cells = 200\n"), 200u);
 }
 
 TEST(LayerCellsKey, EveryRunOnCellsTakesIt) {
