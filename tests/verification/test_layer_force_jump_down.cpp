@@ -393,14 +393,12 @@ TEST(LayerForceJumpDown, AJumpOntoTheFaceOfAFlatPunchMeetsTheHalfSpace) {
         if (branch == 0.0) {
             EXPECT_GT(testing::observed_order(errors[1], errors[2]), 1.5);
         }
-        // The half-space driver at the same steps: observed 1.0e-3, 6.0e-4, 3.2e-4 (Kelvin-Voigt, first order in its
-        // step, as before the jumps: 7.2e-4 at 0.5 ms) and 1.1e-4, 9.0e-5, 6.4e-5 (standard solid), converging onto
-        // the ODE the cells meet: its difference from the cells is its own error in the time step.
+        // The half-space driver at the same steps meets the ODE as the cells do, to 0.1 % of their errors (observed
+        // 6.38e-6, 1.92e-6, 5.22e-7 and 5.57e-6, 4.63e-6, 2.12e-6) since the ride at zero force before the jump
+        // carries the indenter's rate (docs/theory.md section 3; first order before it: 1.0e-3, 6.0e-4, 3.2e-4 and
+        // 1.1e-4, 9.0e-5, 6.4e-5).
         for (std::size_t k = 0; k < errors.size(); ++k) {
-            if (k > 0) {
-                EXPECT_LT(driver_errors[k], driver_errors[k - 1]) << k;
-            }
-            EXPECT_LT(errors[k], driver_errors[k] / 10.0) << k;
+            EXPECT_NEAR(driver_errors[k], errors[k], 0.01 * errors[k]) << k;
         }
     }
 }
