@@ -65,11 +65,12 @@ std::pair<double, double> LayerCells::dashpot_edge(std::size_t contact, double d
     // the edge between the last centre in contact and the first free one (from the axis for one cell).
     const double target = depth - outside_displacement;
     const std::size_t last = contact - 1;
-    const double axis = profile_[0] + axis_weight_ * (profile_[1] - profile_[0]);
-    double left = centre_[last], left_profile = profile_[last];
-    if (contact == 1 && target < profile_[0]) left = 0.0, left_profile = axis;
-    const double right = contact == 1 && target < profile_[0] ? centre_[0] : centre_[contact];
-    const double right_profile = contact == 1 && target < profile_[0] ? profile_[0] : profile_[contact];
+    double left = centre_[last], left_profile = profile_[last], right = centre_[contact],
+           right_profile = profile_[contact];
+    if (contact == 1 && target < profile_[0]) {  // inside the first cell: from the axis to its centre
+        left = 0.0, left_profile = profile_[0] + axis_weight_ * (profile_[1] - profile_[0]);
+        right = centre_[0], right_profile = profile_[0];
+    }
     if (!(right_profile > left_profile)) return {left, 0.0};
     const double per_profile = (right - left) / (right_profile - left_profile);
     if (target <= left_profile) return {left, 0.0};
@@ -389,8 +390,8 @@ LayerCellState LayerCells::jump(double force, std::size_t from) {
         last_.contact_radius = spacing_ * static_cast<double>(cells_);
     } else if (contact > 0 && contact != contact_) {
         outside = std::min(-leaving_rate_margin(contact, contact, rate_change), 0.0);
-        const double inside = trial_load_[contact - 1] / plane_modulus_per_shear;
-        last_.contact_radius = centre_[contact - 1] + spacing_ * inside / (inside - outside);
+        last_.contact_radius =
+            interpolated_edge(contact, trial_load_[contact - 1] / plane_modulus_per_shear, outside);
     } else if (contact == 0) {
         last_.contact_radius = 0.0;
     }
@@ -521,16 +522,20 @@ void LayerCells::keep(std::size_t count, double dashpot) {
     }
 }
 
+double LayerCells::interpolated_edge(std::size_t contact, double inside, double outside) const {
+    // At their bounds, inside >= 0 >= outside (a set that solves the complementarity within round-off), so that the
+    // edge stays between the two centres.
+    inside = std::max(inside, 0.0);
+    outside = std::min(outside, 0.0);
+    return centre_[contact - 1] + (inside > outside ? spacing_ * inside / (inside - outside) : 0.5 * spacing_);
+}
+
 double LayerCells::edge_radius(std::size_t contact, double depth) const {
     // q/4 inside and minus the free stiffness times the gap outside: the edge function (eq. L19), C1 at the edge
     // without a dashpot, so its zero interpolated linearly between the two centres is second order.
-    // At their bounds, inside >= 0 >= outside (a set that solves the complementarity within round-off), so that the
-    // edge stays between the two centres.
     const double inside = std::max(trial_load_[contact - 1] / plane_modulus_per_shear, 0.0);
-    const double outside =
-        std::min(-free_stiffness_ * (trial_displacement_[contact] - (depth - profile_[contact])), 0.0);
-    const double interpolated =
-        centre_[contact - 1] + (inside > outside ? spacing_ * inside / (inside - outside) : 0.5 * spacing_);
+    const double interpolated = interpolated_edge(
+        contact, inside, -free_stiffness_ * (trial_displacement_[contact] - (depth - profile_[contact])));
     if (!(material_->viscosity() > 0.0)) return interpolated;
     // With a dashpot it is not C1 (docs/theory.md, "A parallel dashpot on the cells", eq. L19c): a growing edge's q
     // jumps (eta times the indenter's rate less the free surface's), while the gap outside, set by the smooth

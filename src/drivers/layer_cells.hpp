@@ -126,6 +126,9 @@ private:
     // zeros of q inside and of the gap outside, each extrapolated linearly in g from its two cells next to the edge
     // (eq. L19c).
     double edge_radius(std::size_t contact, double depth) const;
+    // The zero of an edge function with the values `inside` at cell contact - 1 and `outside` at cell contact, each
+    // taken at its bound (inside >= 0 >= outside), interpolated linearly between the two centres (eq. L19, L30).
+    double interpolated_edge(std::size_t contact, double inside, double outside) const;
     // With a parallel dashpot q jumps at the edge (by 4 eta times the rate's jump there, eq. L16), so the midpoint
     // rule's error is first order in the edge's place: what F = 2 dx sum q_i misses is 2 (a - m dx) q_{m-1}, the edge
     // a where the indenter meets the free surface, g(a) = d - w1_m (`outside_displacement`, cell m's free w1), on g
