@@ -201,8 +201,9 @@ LayerCellState LayerCells::step_loaded(double time_step, double right_side, doub
             // Onto the surface: an indenter that touches at a point meets the recovering surface at the axis alone
             // (every cell apart from it), and in no time no w1 moves, so no cell takes the force: the depth holds
             // and the dashpots' rates are unbounded at the touch (on the half-space F_el ~ t: a^3 ~ t). The next
-            // step carries the force from its start, the indenter's secant rate in every cell, as after any step
-            // without contact (docs/theory.md, "A jump of the force on the cells").
+            // step carries the force from its start, the indenter's secant rate in every cell, as any step
+            // without a known start rate (docs/theory.md, "A jump of the force on the cells").
+            rate_ = std::nullopt;
             last_.force = force;
             return last_;
         }
@@ -407,7 +408,7 @@ LayerCellState LayerCells::jump(double force, std::size_t from) {
         last_.touching = axis_ > 0.0;
     }
     if (contact == 0) {
-        rate_ = std::nullopt;  // the indenter's rate is its own, as after a step without contact
+        rate_ = std::nullopt;  // no dashpot holds the indenter's rate: the next step takes its secant rate
     } else if (rate_) {
         *rate_ += rate_change;
     }
@@ -583,9 +584,8 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, C
     dashpot_gain_ = (start_rate ? 2.0 : 1.0) * dashpot;
     dashpot_offset_ = start_rate && time_step > 0.0 ? -viscosity * *start_rate : 0.0;
     // Where the indenter's rate breaks, a cell entering contact takes its own rate (solve_load), in a step with a
-    // start rate (all but the step after one without contact). That step keeps the indenter's secant rate in every
-    // cell: the cells' own rates put its depth farther off the answer converged in the time step, with the touch
-    // located inside the step too (docs/theory.md, "A parallel dashpot on the cells").
+    // start rate: every step but the first from rest and the one after a jump onto the surface, which keep the
+    // indenter's secant rate in every cell (docs/theory.md, "A parallel dashpot on the cells").
     const bool trapezoidal = start_rate && time_step > 0.0;
     entering_from_ = rate_at_entry == foundation::RateAtEntry::breaks && trapezoidal ? contact_ : cells_;
     // The kept cells (keep) step here; the others, free from the start and not yet needed, later (catch_up).
@@ -664,9 +664,19 @@ LayerCellState LayerCells::advance(double time_step, const LoadRule& load_for, C
     state.depth = depth;
     for (std::size_t i = 0; i < kept_; ++i) commit_cell(i, coefficients_.decay.data(), coefficients_.gain.data());
     record(contact, dashpot);
-    if (time_step > 0.0) {  // the indenter's rate the dashpots saw; unknown after a step without contact
+    if (time_step > 0.0) {
+        // The indenter's rate the dashpots saw: its end rate, trapezoidal from its start rate (the secant without
+        // one). Riding on the recovering surface (zero force under force control) it is carried across the step
+        // without contact, as on the half-space (Foundation::contact_rate): a cell the indenter reaches in the next
+        // step then takes the free law's trapezoidal rate from its own start rate (solve_load), the law its surface
+        // moved by, so that its q grows from zero where the riding indenter meets it. Off the surface (a spring's
+        // indenter hanging free, touching inside a later step, which the cells do not split as the half-space
+        // does) it is unknown, and the step after it takes the indenter's secant rate in every cell (docs/theory.md,
+        // "A parallel dashpot on the cells").
         const double secant = (depth - depth_) / time_step;
-        rate_ = contact > 0 ? std::optional<double>(start_rate ? 2.0 * secant - *start_rate : secant) : std::nullopt;
+        const bool riding = contact == 0 && rule == ContactRule::none;
+        rate_ = contact > 0 || riding ? std::optional<double>(start_rate ? 2.0 * secant - *start_rate : secant)
+                                      : std::nullopt;
         // Cells that entered with their own rates: the next step starts with the force their dashpots carried (as
         // the half-space's Foundation::contact_rate; on a layer each cell's part of F weighs by its unit load).
         if (contact > entering_from_ && viscosity > 0.0) rate_ = force_keeping_rate(contact);
