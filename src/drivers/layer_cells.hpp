@@ -53,12 +53,14 @@ public:
     /// Steps by `time_step` >= 0 [s] to the depth at which F(d) + k d = `right_side` [N], k = `spring_constant` >= 0
     /// [N/m]: force control (k = 0, the force), or spring control (k z, z = `base` [m], where the indenter hangs
     /// without contact). Under force control at zero force the indenter rests on the free surface at the axis. A
-    /// parallel dashpot in contact sees the indenter's trapezoidal rate, carried from step to step (from rest; the
-    /// secant rate for the step after one without contact); a cell entering contact in the step sees its own
+    /// parallel dashpot in contact sees the indenter's trapezoidal rate, carried from step to step and across a ride
+    /// at zero force (as on the half-space); a cell entering contact in the step sees its own
     /// (foundation::RateAtEntry::breaks: the massless indenter's rate breaks there), the trapezoidal rate of its own
     /// motion from its own start rate, the law it was stepped by while free, so that its line load grows from zero
     /// and F(d) is continuous; the rate carried on is then the one that keeps the force the contact's dashpots
-    /// carried. The step after one without contact keeps the indenter's secant rate in every cell. With a dashpot a
+    /// carried. Where no start rate is known (the first step from rest, the step after a spring's indenter hung
+    /// free, after a jump onto the surface or to zero force) the step takes the indenter's secant rate in every
+    /// cell. With a dashpot a
     /// step of no duration in contact (a jump of the force) keeps the depth and every cell's w1, only the rates jump:
     /// the cells staying in contact take the change at one change of the indenter's rate, and a jump down lets the
     /// contact recede at once to the cells that keep q >= 0 while the others rise no faster than the indenter (jump;
@@ -181,7 +183,9 @@ private:
     std::vector<double> stress_;            // Q_i / 4 = ((I - K) q)_i / 4, committed (a free cell's dashpot rate)
     std::size_t contact_ = 0;               // committed contact cells
     double depth_ = 0.0;                    // d, committed
-    std::optional<double> rate_;            // dd/dt the dashpots saw at the committed node (solved depths)
+    // dd/dt the dashpots saw at the committed node (solved depths), the riding indenter's own at zero force; none
+    // where not known (from rest, after a spring's free hang or a jump onto the surface or to zero force)
+    std::optional<double> rate_;
     LayerCellState last_;                   // the state after the last step
     double axis_weight_ = 0.0;              // lambda: the axis from the two innermost cells, linear in g
     double axis_ = 0.0;                     // the committed edge function at the axis (> 0: touching)
