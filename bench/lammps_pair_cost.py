@@ -40,6 +40,7 @@ damping alone above mu F_N); with --slide=0.07 they stick for 27 steps and slip 
 (hertz/material's stick until step 24 and slip grossly from step 25).
 """
 
+import math
 import os
 import re
 import subprocess
@@ -58,7 +59,20 @@ STEPS, SIDE = (50, 8) if CALLGRIND else (200, 20)
 STEPS, SIDE = int(OPTIONS.get("steps", STEPS)), int(OPTIONS.get("side", SIDE))
 SKIN = OPTIONS.get("skin", "0.0005")
 WARMUP = f"run {OPTIONS['warmup']}\n" if "warmup" in OPTIONS else ""
-SLIDE = float(OPTIONS["slide"]) if "slide" in OPTIONS else None
+
+
+def sliding_speed(text):
+    """--slide's V [m/s]: a finite number; otherwise one line on stderr and a non-zero exit."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value):
+        sys.exit(f"--slide={text}: must be a finite speed in m/s")
+    return value
+
+
+SLIDE = sliding_speed(OPTIONS["slide"]) if "slide" in OPTIONS else None
 RADIUS, SPACING, FRICTION = 0.005, 0.00995, 0.3    # [m], [m]: each sphere pressed 50 um into its six neighbours
 # --slide: every sphere's spin [rad/s] and the pressure tensor's columns, which give F_N and |F_t| (the docstring)
 SPIN = "" if SLIDE is None else ("set type 1 omega {0} {0} {0}\n".format(SLIDE / (2 * 2 ** 0.5 * RADIUS))
