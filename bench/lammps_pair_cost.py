@@ -7,7 +7,8 @@ is stepped with a tangential increment and the contact set never changes (a tiny
 1 uK, about 1e-13 m/s, so every contact sticks; docs/dem.md). Pair time from LAMMPS's timing
 breakdown over steps x contacts; memory per rank from its log.
 
-    LMP=.../lmp MDR_LAMMPS_PLUGIN=.../mdrviscoplugin.so python3 bench/lammps_pair_cost.py [N] [M] [--callgrind] [--slide=V]
+    LMP=.../lmp MDR_LAMMPS_PLUGIN=.../mdrviscoplugin.so python3 bench/lammps_pair_cost.py [N] [M] [--callgrind]
+        [--slide=V]
 
 --callgrind counts instructions instead (valgrind's callgrind, deterministic, so comparable on a loaded host): the
 pair styles' compute functions, inclusive, on an 8^3 lattice (1536 contacts) over 50 steps (51 computes with the
