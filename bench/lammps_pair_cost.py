@@ -61,7 +61,7 @@ STEPS, SIDE = int(OPTIONS.get("steps", STEPS)), int(OPTIONS.get("side", SIDE))
 SKIN = OPTIONS.get("skin", "0.0005")
 WARMUP = f"run {OPTIONS['warmup']}\n" if "warmup" in OPTIONS else ""
 # The pair's computes in a callgrind run: each `run K` computes once at its setup and once a step.
-COMPUTES = STEPS + 1 + (int(OPTIONS["warmup"]) + 1 if "warmup" in OPTIONS else 0)
+PAIR_COMPUTES = STEPS + 1 + (int(OPTIONS["warmup"]) + 1 if "warmup" in OPTIONS else 0)
 
 
 def sliding_speed(text):
@@ -156,7 +156,7 @@ def run(law):
                                          2 ** 0.5 * SPACING ** 2 * sum(abs(p) for p in last[4:7]) / 3)
     memory = float(re.search(r"Per MPI rank memory allocation \(min/avg/max\) = [\d.]+ \| ([\d.]+)", log).group(1))
     if CALLGRIND:
-        return instructions / (COMPUTES * contacts), contacts, memory, forces
+        return instructions / (PAIR_COMPUTES * contacts), contacts, memory, forces
     pair = float(re.findall(r"^Pair\s*\|\s*[\d.e+-]+\s*\|\s*([\d.e+-]+)", log, re.M)[-1])
     return pair / (STEPS * contacts), contacts, memory, forces
 
