@@ -116,8 +116,8 @@ TEST(ForceJumpRecedes, KelvinVoigtIsTheElasticRadiusOfTheNewForce) {
     // 2003 elements, the rows after within 0.01 of it; the depth from the jump on against the closed form 1.5e-6,
     // 1.2e-6, 1.2e-6 (sphere) and 1.2e-6, 9.6e-7, 9.6e-7 (cone) of d0 (the time step's error). Fails before
     // Foundation::jump: the jump's row kept the radius before the jump (0.44 too large for the sphere, 0.73 for the
-    // cone), and the rows after it were up to 5.6e-4, 1.5e-3, 1.1e-4 (sphere) and 2.4e-3, 1.3e-3, 8.0e-4 (cone) off
-    // at 500, 1000, 2000 elements, the elements that would pull carried in contact into the next step (the depth was
+    // cone), and the rows after it were up to 2.6e-3, 1.5e-3, 4.1e-4 (sphere) and 9.4e-5, 9.9e-4, 3.8e-4 (cone) off
+    // at 499, 1009, 2003 elements, the elements that would pull carried in contact into the next step (the depth was
     // as close as now).
     const std::vector<int> elements = {499, 1009, 2003};
     for (const bool cone : {false, true}) {
