@@ -8,6 +8,7 @@ is stepped with a tangential increment and the contact set never changes (a tiny
 breakdown over steps x contacts; memory per rank from its log.
 
     LMP=.../lmp MDR_LAMMPS_PLUGIN=.../mdrviscoplugin.so python3 bench/lammps_pair_cost.py [N] [M] [--callgrind]
+        [--slide=V]
 
 --callgrind counts instructions instead (valgrind's callgrind, deterministic, so comparable on a loaded host): the
 pair styles' compute functions, inclusive, on an 8^3 lattice (1536 contacts) over 50 steps (51 computes with the
@@ -24,8 +25,23 @@ memory-bound?"). --warmup=K runs K steps before the timed ones (every contact's 
 history pages' first touch then fall outside the timing: a held contact's step). --skin=S sets the
 neighbour skin [m] (0.0005: only the six touching neighbours are listed; 0.005 lists the twelve face-diagonal ones
 too, out of contact, as a packing lists more neighbours than contacts). --plugin=PATH times that mdr/visco plugin instead of $MDR_LAMMPS_PLUGIN.
+
+--slide=V makes every contact slide at V [m/s]: each sphere spins at omega = V / (2 sqrt(2) R) (1, 1, 1), R its
+radius (`set type 1 omega`; still no integrator, so the overlaps stay fixed). Both pair styles step a contact with
+the contact points' relative velocity v_i - v_j + (r_i w_i + r_j w_j) x n, n from i to j (pair granular's vtr,
+pair mdr/visco's `turned`), here (2 R w) x n: a tangential velocity of magnitude V at each of the three lattice
+directions (its twist, w . n, neither style reads). The table then adds, at the last step, a contact's normal force
+F_N and, with friction, |F_t| / (mu F_N) (1: gross slip; below 1: stick or partial slip), both from the pressure
+tensor and the lattice's symmetry (spacing d, S^3 contacts along each axis in a volume S^3 d^3): the contacts along
+x alone give P_xx = F_N / d^2 and |P_xy| = |P_xz| = |F_t| / (sqrt(2) d^2), the tangential force being along
+(0, 1, -1) / sqrt(2) (so F_N = d^2 (P_xx + P_yy + P_zz) / 3, |F_t| = sqrt(2) d^2 (|P_xy| + |P_xz| + |P_yz|) / 3).
+With mu = 0.3, N = 20, M = 1 (docs/dem.md, "Sliding contacts"), mdr/visco's contacts with --slide=1 stick for two
+steps, slip partially in steps 3-21 and slip grossly from step 22 (hertz/material's from step 1, its tangential
+damping alone above mu F_N); with --slide=0.07 they stick for 27 steps and slip partially from step 28 to step 254
+(hertz/material's stick until step 24 and slip grossly from step 25).
 """
 
+import math
 import os
 import re
 import subprocess
@@ -44,17 +60,37 @@ STEPS, SIDE = (50, 8) if CALLGRIND else (200, 20)
 STEPS, SIDE = int(OPTIONS.get("steps", STEPS)), int(OPTIONS.get("side", SIDE))
 SKIN = OPTIONS.get("skin", "0.0005")
 WARMUP = f"run {OPTIONS['warmup']}\n" if "warmup" in OPTIONS else ""
+# The pair's computes in a callgrind run: each `run K` computes once at its setup and once a step.
+PAIR_COMPUTES = STEPS + 1 + (int(OPTIONS["warmup"]) + 1 if "warmup" in OPTIONS else 0)
+
+
+def sliding_speed(text):
+    """--slide's V [m/s]: a finite number; otherwise one line on stderr and a non-zero exit."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value):
+        sys.exit(f"--slide={text}: must be a finite speed in m/s")
+    return value
+
+
+SLIDE = sliding_speed(OPTIONS["slide"]) if "slide" in OPTIONS else None
+RADIUS, SPACING, FRICTION = 0.005, 0.00995, 0.3    # [m], [m]: each sphere pressed 50 um into its six neighbours
+# --slide: every sphere's spin [rad/s] and the pressure tensor's columns, which give F_N and |F_t| (the docstring)
+SPIN = "" if SLIDE is None else ("set type 1 omega {0} {0} {0}\n".format(SLIDE / (2 * 2 ** 0.5 * RADIUS))
+                                 + "thermo_style custom step c_contacts pxx pyy pzz pxy pxz pyz\n")
 
 LATTICE = f"""
 units si
 atom_style sphere
 boundary p p p
 newton on
-lattice sc 0.00995
+lattice sc {SPACING}
 region box block 0 {SIDE} 0 {SIDE} 0 {SIDE} units lattice
 create_box 1 box
 create_atoms 1 box
-set type 1 diameter 0.01 density 1100
+set type 1 diameter {2 * RADIUS} density 1100
 velocity all create 1e-6 4928 loop geom
 comm_modify vel yes
 neighbor {SKIN} bin
@@ -63,7 +99,7 @@ timestep 1e-6
 compute touching all contact/atom
 compute contacts all reduce sum c_touching
 thermo_style custom step c_contacts
-"""
+""" + SPIN
 
 COMPUTES = {"granular": "*PairGranular::compute*", "mdr/visco": "*PairMdrVisco::compute*"}
 TERM_LIST = " ".join(f"term 1e6 {1e-4 * 10 ** k}" for k in range(TERMS))
@@ -71,13 +107,15 @@ TERM_LIST = " ".join(f"term 1e6 {1e-4 * 10 ** k}" for k in range(TERMS))
 # Mindlin's tangential model with the same mu; without, its damping and a tangential model of mu = 0 (pair granular
 # needs one; linear_nohistory keeps no history). The ratio of each row is to the hertz/material row of its pair.
 PAIRS = [
-    (("granular hertz/material, damping tsuji, tangential mindlin mu 0.3",
-      "pair_style granular\npair_coeff * * hertz/material 3e6 0.5 0.49 tangential mindlin NULL 1.0 0.3 "
+    (FRICTION,
+     (f"granular hertz/material, damping tsuji, tangential mindlin mu {FRICTION}",
+      f"pair_style granular\npair_coeff * * hertz/material 3e6 0.5 0.49 tangential mindlin NULL 1.0 {FRICTION} "
       "damping tsuji\n"),
-     (f"mdr/visco, N = {ELEMENTS}, M = {TERMS}, friction 0.3",
-      f"pair_style mdr/visco\npair_coeff 1 1 G_inf 1e6 {TERM_LIST} friction 0.3 elements {ELEMENTS} "
+     (f"mdr/visco, N = {ELEMENTS}, M = {TERMS}, friction {FRICTION}",
+      f"pair_style mdr/visco\npair_coeff 1 1 G_inf 1e6 {TERM_LIST} friction {FRICTION} elements {ELEMENTS} "
       "half_width 0.2\n")),
-    (("granular hertz/material, damping tsuji, tangential linear_nohistory mu 0",
+    (0.0,
+     ("granular hertz/material, damping tsuji, tangential linear_nohistory mu 0",
       "pair_style granular\npair_coeff * * hertz/material 3e6 0.5 0.49 tangential linear_nohistory 0.0 0.0 "
       "damping tsuji\n"),
      (f"mdr/visco, N = {ELEMENTS}, M = {TERMS}, friction 0",
@@ -110,19 +148,29 @@ def run(law):
                 values = (re.search(r"^totals: (.*)$", text, re.M) or re.search(r"^summary: (.*)$", text, re.M))
                 value = dict(zip(events, map(float, values.group(1).split())))
                 instructions = 64.0 * (value.get("DLmr", 0.0) + value.get("DLmw", 0.0))
-    contacts = float(re.findall(r"^\s*\d+\s+([\d.e+-]+)\s*$", log, re.M)[-1]) / 2
-    memory = re.search(r"Per MPI rank memory allocation \(min/avg/max\) = [\d.]+ \| ([\d.]+)", log).group(1)
+    # the last thermo row: step, touching flags (two per contact), and with --slide the pressure tensor
+    last = [float(value) for value in re.findall(r"^[ \t]*\d+((?:[ \t]+[\d.e+-]+)+)[ \t]*$", log, re.M)[-1].split()]
+    contacts = last[0] / 2
+    # with --slide, a contact's F_N and |F_t| at the last step from the pressure tensor (the docstring)
+    forces = None if SLIDE is None else (SPACING ** 2 * sum(last[1:4]) / 3,
+                                         2 ** 0.5 * SPACING ** 2 * sum(abs(p) for p in last[4:7]) / 3)
+    memory = float(re.search(r"Per MPI rank memory allocation \(min/avg/max\) = [\d.]+ \| ([\d.]+)", log).group(1))
     if CALLGRIND:
-        return instructions / ((STEPS + 1) * contacts), contacts, float(memory)
+        return instructions / (PAIR_COMPUTES * contacts), contacts, memory, forces
     pair = float(re.findall(r"^Pair\s*\|\s*[\d.e+-]+\s*\|\s*([\d.e+-]+)", log, re.M)[-1])
-    return pair / (STEPS * contacts), contacts, float(memory)
+    return pair / (STEPS * contacts), contacts, memory, forces
 
 
 state = TERMS * TERMS + 8 * TERMS + 21 + ELEMENTS * (3 * TERMS + 4)
 unit, scale = ("L2-missed bytes", 1.0) if CACHE_SIM else ("instructions", 1.0) if CALLGRIND else ("ns", 1e9)
-print(f"{'law':72s} {unit + '/contact-step':>24s} {'ratio':>6s} {'contacts':>9s} {'MB/rank':>8s}")
-for (base_name, base_law), (name, law) in PAIRS:
+sliding = f" {'F_N [N]':>9s} {'|F_t|/(mu F_N)':>14s}" if SLIDE is not None else ""
+print(f"{'law':72s} {unit + '/contact-step':>24s} {'ratio':>6s} {'contacts':>9s} {'MB/rank':>8s}" + sliding)
+for mu, (base_name, base_law), (name, law) in PAIRS:
     base = run(base_law)
-    for label, (cost, contacts, memory) in ((base_name, base), (name, run(law))):
-        print(f"{label:72s} {cost * scale:24.1f} {cost / base[0]:6.2f} {contacts:9.0f} {memory:8.1f}")
+    for label, (cost, contacts, memory, forces) in ((base_name, base), (name, run(law))):
+        row = f"{label:72s} {cost * scale:24.1f} {cost / base[0]:6.2f} {contacts:9.0f} {memory:8.1f}"
+        if forces:  # 1: gross slip; below: stick or partial slip; "-" without friction
+            normal, tangential = forces
+            row += f" {normal:9.4g} {f'{tangential / (mu * normal):.4f}' if mu else '-':>14s}"
+        print(row)
 print(f"mdr/visco history per contact: {state} doubles = {state * 8} bytes (M^2 + 8M + 21 + N (3M + 4))")

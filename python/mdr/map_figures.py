@@ -1,7 +1,7 @@
 """Heat maps of a map fit's result directory (``mdr fit CASE --map FILE --out DIR``: map.csv and map.json), drawn
 by ``python3 -m mdr plot DIR``: one figure per output on the map's physical grid, axes in µm, colour bars with the
 output's unit (map.json's ``column_units``, which the C++ takes from the registry that defines each key), failed
-pixels hatched."""
+pixels crossed and pixels whose fit did not converge marked."""
 
 from __future__ import annotations
 
@@ -21,7 +21,9 @@ def map_heat_maps(directory: str) -> list[tuple[str, object]]:
     left out). Each pixel is drawn where its ``column`` and ``row`` put it on the grid of map.json; the axes are
     the positions in µm (the pixel centres taken from map.csv's x, y); a pixel the file lacks is left white, a
     failed pixel is marked with a red cross where its place is known (a curve that could not be read has none:
-    the title counts every failed pixel)."""
+    the title counts every failed pixel), and a pixel whose fit stopped without converging (its ``status`` says
+    why; its values are where the fit stopped, not a result) with an orange plus over its colour, counted in the
+    title as "not converged"."""
     from matplotlib.figure import Figure  # no pyplot: no GUI backend, safe in any thread
     from .plot import read_csv
 
@@ -44,8 +46,13 @@ def map_heat_maps(directory: str) -> list[tuple[str, object]]:
     y0 = float(np.median(y - row_index * pixel_y)) if pixel_y > 0 else 0.0
     extent = (x0 - pixel_x / 2, x0 + (columns - 0.5) * pixel_x, y0 - pixel_y / 2, y0 + (rows - 0.5) * pixel_y) \
         if pixel_x > 0 and pixel_y > 0 else None
-    all_failed = np.asarray(table["status"]) == "failed"
+    status = np.asarray(table["status"])
+    all_failed = status == "failed"
     failed = all_failed[placed]
+    # "converged" and "converged, misfit" are results (the misfit's flag says so); any other status is why the fit
+    # stopped short.
+    stopped = ~all_failed & ~np.char.startswith(status.astype(str), "converged")
+    marks = ((failed, "x", "red", "failed"), (stopped[placed], "+", "orange", "not converged"))
     figures = []
     for name, values in table.items():
         if name in NOT_DRAWN or name.endswith("_stderr"):
@@ -58,14 +65,16 @@ def map_heat_maps(directory: str) -> list[tuple[str, object]]:
                             extent=extent)
         unit = units.get(name, "")  # "1": a ratio or an exponent, drawn without a unit
         figure.colorbar(image, ax=axes, label=f"{name} [{unit}]" if unit not in ("", "1") else name)
-        if failed.any():
-            fx = x[failed] if extent else column_index[failed]
-            fy = y[failed] if extent else row_index[failed]
-            axes.scatter(fx, fy, marker="x", color="red", s=30, label="failed")
+        for where, marker, colour, label in marks:
+            if where.any():
+                axes.scatter(x[where] if extent else column_index[where], y[where] if extent else row_index[where],
+                             marker=marker, color=colour, s=30, label=label)
+        if failed.any() or stopped.any():
             axes.legend(loc="upper right", fontsize="small")
         drawn = np.count_nonzero(np.isfinite(grid))
+        short = f", {int(stopped.sum())} not converged" if stopped.any() else ""
         axes.set(xlabel="x [µm]" if extent else "column", ylabel="y [µm]" if extent else "row",
-                 title=f"{name} ({drawn} of {rows * columns} pixels, {int(all_failed.sum())} failed)")
+                 title=f"{name} ({drawn} of {rows * columns} pixels, {int(all_failed.sum())} failed{short})")
         figure.tight_layout()
         figures.append((name, figure))
     return figures

@@ -125,9 +125,13 @@ public:
         double force = 0.0;
         double shown_depth = depth_;  // a jump keeps it
         if (time_step == 0.0 && has_dashpot_) {
-            // A jump against a dashpot: the dashpot takes the force at once and the depth does not move.
+            // A jump against a dashpot: the dashpots take the force at once and the depth does not move; under a
+            // force the contact may recede at once (Foundation::jump, eq. J1), and the rate is unknown without one.
             force = control_.jump_force(target, depth_, foundation_);
-            if (rate_) rate_ = jumped_rate(*rate_, force - last_force_);
+            if (rate_) {
+                const auto rate_change = foundation_.jump(force);
+                rate_ = rate_change ? std::optional<double>(*rate_ + *rate_change) : std::nullopt;
+            }
         } else {
             if (sine_rate_) {
                 // A prescribed depth under a harmonic with a dashpot: the depth is not linear inside a step, and
@@ -153,7 +157,6 @@ public:
             shown_depth = control_.shown_depth(depth_, target, foundation_);
             load = control_.shown_load(target, depth_);
         }
-        last_force_ = force;
         const bool settled = n == last_node_ || nodes_[n + 1].time != nodes_[n].time;
         if (settled) control_.settled(nodes_[n].time, force, depth_, nodes_[n].value);
         return {.step = n, .time = nodes_[n].time, .depth = shown_depth, .force = force, .load = load,
@@ -194,13 +197,6 @@ private:
         rate_ = 0.0;
         return touch_time;
     }
-    // The indenter's rate after a force jump dF at fixed depth: the dashpots of the n elements in contact take it,
-    // dF = 8 dx eta n d(rate) (eq. 16, 21); unknown without contact.
-    std::optional<double> jumped_rate(double rate, double force_jump) const {
-        const auto contacts = static_cast<double>(foundation_.contact_count());
-        if (contacts == 0.0) return std::nullopt;
-        return rate + force_jump / (8.0 * foundation_.spacing() * contact_case_.material.viscosity() * contacts);
-    }
     // The rate at the end of a force-controlled step: what the dashpots in contact saw, so that the next step starts
     // in equilibrium (Foundation::contact_rate: the trapezoidal 2 dd/dt - rate0, or the secant dd/dt after a step
     // without a known start rate, with an element that entered in the step taking its own rate). A step that ends
@@ -232,7 +228,6 @@ private:
     std::optional<double> rate_;
     double depth_;
     double previous_depth_;
-    double last_force_ = 0.0;
     std::optional<TangentialStepper> tangential_;
     std::optional<TangentialColumns<TangentialStepper>> tangential_columns_;
     std::optional<CycleMeasure> cycle_;

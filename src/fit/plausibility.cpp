@@ -67,6 +67,20 @@ std::optional<std::string> depth_flag(const profile::Profile& indenter, double d
     return std::nullopt;
 }
 
+constexpr const char* units_question = "are the data's units those of the case?";
+
+// What a modulus outside the moduli of materials asks: the data's units; on a power-law probe f = c r^n first its
+// scale, since the force sets G (kappa_n c)^(-1/n) alone (eq. 9, 15, 21: F = 8 G n / (n + 1) (kappa_n c)^(-1/n)
+// d^(1 + 1/n) on an elastic body), so that a stand-in c (a probe of unknown shape, its exponent fitted) scales every
+// modulus by (c / c_probe)^(1/n) while the fit stays as good.
+std::string modulus_question(const profile::ProfileDefinition& indenter, const PlausibilityUnits& units) {
+    if (indenter.shape != "power") return units_question;
+    return fmt::format(
+        "on the power-law probe (indenter.c = {:.4g}, n = {:.4g}) the force sets G (kappa_n c)^(-1/n), not G: is c the "
+        "probe's, in {}^(1-n) (a stand-in c scales every modulus by (c / c_probe)^(1/n))? And {}",
+        indenter.numbers.at("c"), indenter.numbers.at("n"), units.length, units_question);
+}
+
 void add_depth_flags(const FitProblem& problem, const profile::Profile& indenter, const PlausibilityUnits& units,
                      FitResult& result) {
     for (std::size_t c = 0; c < problem.curves.size() && c < result.curves.size(); ++c) {
@@ -78,7 +92,7 @@ void add_depth_flags(const FitProblem& problem, const profile::Profile& indenter
     }
 }
 
-void add_modulus_flag(const PlausibilityUnits& units, FitResult& result) {
+void add_modulus_flag(const PlausibilityUnits& units, const std::string& question, FitResult& result) {
     const auto& relaxation = result.material.relaxation.value;
     double least = std::numeric_limits<double>::infinity();
     double greatest = 0.0;
@@ -92,16 +106,17 @@ void add_modulus_flag(const PlausibilityUnits& units, FitResult& result) {
     if (least * pascal < least_modulus_pa || greatest * pascal > greatest_modulus_pa) {
         result.flags.push_back(fmt::format(
             "the fitted G(t) spans {:.3g} to {:.3g} {} ({:.3g} to {:.3g} Pa) over the data's window, outside the "
-            "moduli of materials ({:g} Pa to {:g} Pa): are the data's units those of the case?",
+            "moduli of materials ({:g} Pa to {:g} Pa): {}",
             least, greatest, units.pressure, least * pascal, greatest * pascal, least_modulus_pa,
-            greatest_modulus_pa));
+            greatest_modulus_pa, question));
     }
 }
 
 // A start or fitted value of a shear-modulus key (is_shear_modulus; a spectrum's moduli, which may be 0 or tiny
 // by design, aside) outside least_modulus_pa to greatest_modulus_pa: one flag naming the key. A fitted value that the
 // data do not determine (FitResult::undetermined, e.g. a term driven to its bound) is reported there instead.
-void add_modulus_key_flags(const FitProblem& problem, const PlausibilityUnits& units, FitResult& result) {
+void add_modulus_key_flags(const FitProblem& problem, const PlausibilityUnits& units, const std::string& question,
+                           FitResult& result) {
     const double pascal = units.force_size / (units.length_size * units.length_size);  // one pressure unit [Pa]
     auto implausible = [&](double value) {
         return value > 0.0 && (value * pascal < least_modulus_pa || value * pascal > greatest_modulus_pa);
@@ -117,9 +132,9 @@ void add_modulus_key_flags(const FitProblem& problem, const PlausibilityUnits& u
         for (const auto& [which, value] : checked) {
             if (!implausible(value)) continue;
             result.flags.push_back(fmt::format(
-                "{}: the {} {:.4g} {} ({:.3g} Pa) is outside the moduli of materials ({:g} Pa to {:g} Pa): are the "
-                "data's units those of the case?",
-                name, which, value, units.pressure, value * pascal, least_modulus_pa, greatest_modulus_pa));
+                "{}: the {} {:.4g} {} ({:.3g} Pa) is outside the moduli of materials ({:g} Pa to {:g} Pa): {}",
+                name, which, value, units.pressure, value * pascal, least_modulus_pa, greatest_modulus_pa,
+                question));
         }
     }
 }
@@ -127,12 +142,14 @@ void add_modulus_key_flags(const FitProblem& problem, const PlausibilityUnits& u
 }  // namespace
 
 void add_plausibility_flags(const FitProblem& problem, const PlausibilityUnits& units, FitResult& result) {
+    std::string question = units_question;
     if (!result.curves.empty() && problem.model) {
         const auto model = problem.model(result.values);
         add_depth_flags(problem, *model.indenter, units, result);
+        question = modulus_question(model.indenter->definition(), units);
     }
-    add_modulus_flag(units, result);
-    add_modulus_key_flags(problem, units, result);
+    add_modulus_flag(units, question, result);
+    add_modulus_key_flags(problem, units, question, result);
 }
 
 }  // namespace mdr::fit

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <new>
 #include <optional>
@@ -365,6 +366,7 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
     split_state_.clear();
     latest_exit_ = 0.0;
     inner_exit_ = {-1.0, -1.0};
+    receded_stress_.reset();
     for (std::size_t i = split_first_; i < split_end_; ++i) {
         if (event_[i] == 0.0) continue;
         const Outcome outcome = evaluate(i, start_displacement_[i], start_stress_[i], depth_start, depth_end);
@@ -421,6 +423,62 @@ __attribute__((target_clones("avx2", "default"))) void Foundation::advance(doubl
     }
 }
 
+std::optional<double> Foundation::jump(double force) {
+    // eq. J1 (docs/theory.md section 3): force = 8 dx sum_{i in contact} max(sigma_i + eta dr, 0), continuous,
+    // piecewise linear and increasing in dr where positive.
+    const double contacts = static_cast<double>(contact_count());
+    if (contacts == 0.0) return std::nullopt;
+    const double eta = material_.viscosity();
+    const double per_stress = 2.0 * normal_stiffness_factor * spacing_;  // F = 8 dx sum sigma (eq. 21)
+    double* flags = element_flags();
+    double* stress = element_stresses();
+    // Every element kept: the force's change shared by the n dashpots, dF = 8 dx eta n dr (eq. 16, 21).
+    double rate_change = (force - total_force_) / (per_stress * eta * contacts);
+    total_force_ = force;
+    if (attached_ != nullptr) attached_[1] = total_force_;
+    receded_stress_.reset();
+    if (force == 0.0) return rate_change;  // the state kept (see the declaration)
+    double lowest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < active_; ++i) {
+        if (flags[i] != 0.0) lowest = std::min(lowest, stress[i]);
+    }
+    // The kept set, where some would pull: the m largest stresses v_1 >= v_2 >= ... (prefix sums P_m), the rate
+    // change dr_m = (force/(8 dx) - P_m)/(eta m); v_m + eta dr_m >= 0 holds exactly for m up to the solution's m*
+    // (it reads force/(8 dx) >= P_m - m v_m, which grows with m), and then v_{m*+1} + eta dr_{m*} < 0.
+    double threshold = lowest;
+    if (lowest + eta * rate_change < 0.0) {
+        std::vector<double> sorted;
+        sorted.reserve(static_cast<std::size_t>(contacts));
+        for (std::size_t i = 0; i < active_; ++i) {
+            if (flags[i] != 0.0) sorted.push_back(stress[i]);
+        }
+        std::sort(sorted.begin(), sorted.end(), std::greater<>());
+        const double target = force / per_stress;
+        double prefix = 0.0;
+        for (std::size_t m = 0; m < sorted.size(); ++m) {
+            if (target < prefix - static_cast<double>(m) * sorted[m]) break;
+            prefix += sorted[m];
+            threshold = sorted[m];
+            rate_change = (target - prefix) / (eta * static_cast<double>(m + 1));
+        }
+    }
+    // The elements below the threshold leave with force 0, keeping w and h; the others carry sigma + eta dr. The
+    // first element beyond the contact, where it left at the jump, keeps for the edge (contact_radius, eq. J2) the
+    // stress it would have had in contact.
+    std::size_t outer = 0;  // one past the outermost element kept
+    for (std::size_t i = 0; i < active_; ++i) {
+        if (flags[i] != 0.0 && stress[i] >= threshold) outer = i + 1;
+    }
+    if (outer < active_ && flags[outer] != 0.0) receded_stress_ = stress[outer] + eta * rate_change;
+    for (std::size_t i = 0; i < active_; ++i) {
+        if (flags[i] == 0.0) continue;
+        const bool kept = stress[i] >= threshold;
+        stress[i] = kept ? stress[i] + eta * rate_change : 0.0;
+        flags[i] = kept ? 1.0 : 0.0;
+    }
+    return rate_change;
+}
+
 std::size_t Foundation::contact_count() const {
     const double* flags = element_flags();
     return static_cast<std::size_t>(std::count(flags, flags + active_, 1.0));
@@ -463,6 +521,13 @@ double Foundation::contact_radius() const {
     while (outer > 0 && flags[outer - 1] == 0.0) --outer;
     if (outer == 0) return 0.0;
     const std::size_t j = outer - 1;
+    if (receded_stress_) {
+        // Just after a jump that receded the contact (eq. J2): the stress after the jump, sigma_j + eta dr >= 0 in
+        // contact and the would-be one < 0 of its neighbour that left, crosses zero between the two centres.
+        const double inside = element_stresses()[j];
+        const double outside = std::min(*receded_stress_, 0.0);
+        return position(j) + (inside > 0.0 ? inside / (inside - outside) : 0.0) * spacing_;
+    }
     if (j + 1 >= size() || !std::isfinite(equivalent_[j + 1])) return position(j) + 0.5 * spacing_;
     const double g_in = equivalent_[j], g_out = equivalent_[j + 1];
     const double outside = std::min(free_gap(j + 1), 0.0);
@@ -514,6 +579,7 @@ void Foundation::load_state(std::span<const double> in) {
     const std::size_t n = size();
     const std::size_t branches = material_.terms().size();
     attached_ = nullptr;
+    receded_stress_.reset();
     last_depth_ = in[0];
     total_force_ = in[1];
     const std::size_t active = static_cast<std::size_t>(in[2]);
@@ -540,6 +606,7 @@ void Foundation::load_state(std::span<const double> in) {
 
 void Foundation::attach(std::span<double> state) {
     attached_ = nullptr;
+    receded_stress_.reset();
     last_depth_ = state[0];
     total_force_ = state[1];
     const std::size_t active = static_cast<std::size_t>(state[2]);

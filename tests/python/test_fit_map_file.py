@@ -176,6 +176,19 @@ def test_heat_maps_on_the_physical_grid_with_units_and_failed_pixels(mdr_binary,
     assert sorted(os.path.basename(p) for p in written) == sorted(f"map_{name}.png" for name in figures)
 
 
+def test_heat_maps_mark_the_pixels_whose_fit_did_not_converge(tmp_path):
+    # One iteration: the two readable pixels stop short, their values where the fit stopped; drawn, but marked
+    # and counted, never passed off as results beside the converged ones.
+    from mdr.map_figures import map_heat_maps
+
+    mdr.fit_map(dict(CASE, fit=dict(CASE["fit"], max_iterations=1)), BROKEN, out=tmp_path / "out", figures=False,
+                jobs=1)
+    axes = dict(map_heat_maps(str(tmp_path / "out")))["material.G"].axes[0]
+    assert axes.get_title().endswith("(2 of 625 pixels, 1 failed, 2 not converged)")
+    marks = {collection.get_label(): len(collection.get_offsets()) for collection in axes.collections}
+    assert marks == {"not converged": 2}  # the failed curve could not be read: no place, no cross
+
+
 def test_out_holding_a_file_mdr_did_not_write_is_refused_and_left_as_it_was(tmp_path):
     out = tmp_path / "out"
     out.mkdir()

@@ -63,7 +63,7 @@ double depth_difference(const drivers::IndentationResult& result, const drivers:
 
 TEST(LayerForceJumpDown, AThickLayerMeetsTheHalfSpace) {
     // h = 1 km: K = O(1/h), the half-space's MDR (eq. L3); the half-space driver on 8000 elements recedes at the jump
-    // by L12-L13 (its rate solved for the force), the cells by L28-L29. The rows from the jump on: the contact
+    // by eq. J1 (Foundation::jump, its rate solved for the force), the cells by L28-L29. The rows from the jump on: the contact
     // recedes at once, then creeps under the 10 nN held (on the cells throughout here, as a fit runs them). Fails
     // before the jump down was built (refused naming material.eta).
     const std::vector<std::pair<std::string, std::vector<double>>> tolerances = {
@@ -81,7 +81,8 @@ TEST(LayerForceJumpDown, AThickLayerMeetsTheHalfSpace) {
                                    cells));
             errors.push_back(depth_difference(layer, half_space, 0.5));
             // The contact recedes at once: its radius at the jump's row against the half-space driver's at the next
-            // row, 0.066 us later (the driver writes the jump's row with the radius before it). Observed 2.3e-4,
+            // row, 0.066 us later (its own jump's row, receded by Foundation::jump, in test_force_jump_recedes.cpp).
+            // Observed 2.3e-4,
             // 9e-5, 3e-5 (Kelvin-Voigt) and 7.8e-4, 1.9e-4, 4e-5 (standard solid) relative at 100, 200, 400 cells.
             EXPECT_NEAR(layer.force[after], 1.0e-8, 1e-20);
             EXPECT_EQ(layer.depth[after], layer.depth[after - 1]);

@@ -102,10 +102,23 @@ public:
     /// or of a tabulated profile (key `indenter.r`).
     void advance(double depth_start, double depth_end);
 
-    /// Total normal force [N] after the last step (eq. 21, both halves).
+    /// A jump of the total force to `force` [N] >= 0 in no time (two points of a force history at one time) against
+    /// the parallel dashpot: a dashpot does not move in no time, so the depth, every w_i and h_{k,i} stay and only
+    /// the rates jump (docs/theory.md section 3, eq. J1). An element that stays in contact follows the indenter, its
+    /// stress sigma_i + eta dr (dr the indenter's change of rate); one whose stress would be negative leaves at once
+    /// (flag 0, force 0: the next step takes it as force-free, at its own rate -(G_inf w + sum_k G_k h_k)/eta). The
+    /// kept set {i in contact : sigma_i + eta dr >= 0} and dr solve force = 8 dx sum_set (sigma_i + eta dr). A jump
+    /// up keeps every element in contact. A jump to zero force keeps the state (every element would leave and the
+    /// rate is not tied to the force; the force rule's dr = -F/(8 dx eta n) is returned, the total force set to
+    /// zero). Returns dr [m/s]; none, the state unchanged, when nothing is in contact (the rate is then unknown).
+    /// Call after a step (advance), with a parallel dashpot.
+    std::optional<double> jump(double force);
+    /// Total normal force [N] after the last step or jump (eq. 21, both halves).
     double total_force() const { return total_force_; }
-    /// Contact radius a [m] after the last step: the edge between the outermost element in contact and its free
-    /// neighbour, where the free gap d - g - w, extrapolated linearly in g from the two free neighbours, reaches
+    /// Contact radius a [m] after the last step or jump: at a jump that receded the contact (jump), between the
+    /// outermost element in contact and its neighbour that left, where the stress after the jump (the neighbour's
+    /// sigma + eta dr < 0) crosses zero, interpolated linearly (eq. J2). Otherwise the edge between the outermost
+    /// element in contact and its free neighbour, where the free gap d - g - w, extrapolated linearly in g from the two free neighbours, reaches
     /// zero (exact in g where the surface was never touched, second order in dx where it left contact); x is
     /// interpolated linearly in g between the two centres. 0 when the total force is 0: nothing carries a load.
     double contact_radius() const;
@@ -244,6 +257,9 @@ private:
     double profile_end_ = 0.0;                 ///< the profile's last radius (for the message)
     double last_depth_ = 0.0;                  ///< depth at the end of the last step
     double latest_exit_ = 0.0;                 ///< see latest_exit()
+    /// After a jump that receded the contact: the stress sigma + eta dr < 0 the first element beyond the outermost
+    /// one in contact would have had (it left at the jump); none after a step (contact_radius).
+    std::optional<double> receded_stress_;
     StepCoefficients step_;
     std::size_t active_ = 0;                   ///< elements [active_, n) have never been touched: w = h = 0
     std::size_t high_water_ = 0;               ///< the largest active_ any loaded or stepped state had

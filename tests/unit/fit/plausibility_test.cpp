@@ -101,5 +101,45 @@ TEST(Plausibility, ASphereIsHeldToItsRadiusWithOneFlag) {
     EXPECT_NE(deep[0].find("exceeds the sphere's R"), std::string::npos) << deep[0];
 }
 
+// The flags of a start value `start` [Pa] of material.G on `indenter` (one curve, an AFM indentation of 1 um).
+std::vector<std::string> modulus_flags(std::shared_ptr<const profile::Profile> indenter, double start) {
+    FitProblem problem;
+    problem.model = [indenter](const std::vector<double>&) {
+        return drivers::ContactCase{.title = "plausibility",
+                                    .material = rheology::Rheology::elastic(1e3),
+                                    .indenter = indenter,
+                                    .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
+                                    .end_time = 1.0};
+    };
+    problem.parameters = {{.name = "material.G", .start = start, .lower = 1e-6 * start, .upper = 1e6 * start}};
+    Curve curve;
+    curve.depth = {0.0, 1e-6};
+    problem.curves = {curve};
+    FitResult result;
+    result.names = {"material.G"};
+    result.values = {1e3};
+    result.curves.resize(1);
+    result.curves[0].drive = curve.depth;
+    add_plausibility_flags(problem, si, result);
+    return result.flags;
+}
+
+// On a power-law probe f = c r^n the force sets G (kappa_n c)^(-1/n) alone (a stand-in c scales every modulus), so
+// a modulus out of the materials' range asks for c first; on any other indenter for the units only.
+TEST(Plausibility, AModulusOnAPowerLawProbeAsksForItsScale) {
+    const auto power = modulus_flags(profile::make_power_law(5e4, 3.9), 0.0233);
+    ASSERT_EQ(power.size(), 1u);
+    EXPECT_EQ(power[0].rfind("material.G: the start value 0.0233 Pa (0.0233 Pa) is outside the moduli of materials", 0),
+              0u)
+        << power[0];
+    EXPECT_NE(power[0].find("power-law probe (indenter.c = 5e+04, n = 3.9)"), std::string::npos) << power[0];
+    EXPECT_NE(power[0].find("those of the case?"), std::string::npos) << power[0];
+    const auto sphere = modulus_flags(profile::make_sphere(5e-6), 0.0233);
+    ASSERT_EQ(sphere.size(), 1u);
+    EXPECT_EQ(sphere[0].find("indenter.c"), std::string::npos) << sphere[0];
+    EXPECT_NE(sphere[0].find("are the data's units those of the case?"), std::string::npos) << sphere[0];
+    EXPECT_TRUE(modulus_flags(profile::make_power_law(5e4, 3.9), 300.0).empty());
+}
+
 }  // namespace
 }  // namespace mdr::fit
