@@ -19,17 +19,22 @@ namespace {
 const PlausibilityUnits si{};
 const PlausibilityUnits micrometres{"µm", "kPa", 1e-6, 1e-9};  // um-nN-s
 
-// The curve flags of one curve pressed `depth` deep (from contact at 0) by `indenter`, in `units`.
-std::vector<std::string> depth_flags(std::shared_ptr<const profile::Profile> indenter, double depth,
-                                     const PlausibilityUnits& units = si) {
-    FitProblem problem;
-    problem.model = [indenter](const std::vector<double>&) {
+// A fit problem's model: an elastic body under `indenter` (the flags read the indenter only).
+ModelBuilder model_on(std::shared_ptr<const profile::Profile> indenter) {
+    return [indenter](const std::vector<double>&) {
         return drivers::ContactCase{.title = "plausibility",
                                     .material = rheology::Rheology::elastic(1e3),
                                     .indenter = indenter,
                                     .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
                                     .end_time = 1.0};
     };
+}
+
+// The curve flags of one curve pressed `depth` deep (from contact at 0) by `indenter`, in `units`.
+std::vector<std::string> depth_flags(std::shared_ptr<const profile::Profile> indenter, double depth,
+                                     const PlausibilityUnits& units = si) {
+    FitProblem problem;
+    problem.model = model_on(indenter);
     Curve curve;
     curve.depth = {-0.5 * depth, 0.0, depth};
     problem.curves = {curve};
@@ -104,13 +109,7 @@ TEST(Plausibility, ASphereIsHeldToItsRadiusWithOneFlag) {
 // The flags of a start value `start` [Pa] of material.G on `indenter` (one curve, an AFM indentation of 1 um).
 std::vector<std::string> modulus_flags(std::shared_ptr<const profile::Profile> indenter, double start) {
     FitProblem problem;
-    problem.model = [indenter](const std::vector<double>&) {
-        return drivers::ContactCase{.title = "plausibility",
-                                    .material = rheology::Rheology::elastic(1e3),
-                                    .indenter = indenter,
-                                    .load = {.history = drivers::LoadHistory({{0.0, 0.0}, {1.0, 0.0}}, "load.history")},
-                                    .end_time = 1.0};
-    };
+    problem.model = model_on(indenter);
     problem.parameters = {{.name = "material.G", .start = start, .lower = 1e-6 * start, .upper = 1e6 * start}};
     Curve curve;
     curve.depth = {0.0, 1e-6};
