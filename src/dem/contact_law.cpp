@@ -308,14 +308,14 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
 void ContactLaw::begin(std::span<double> state) {
     require_state_size(state);
     count_at(state, normal_offset_ + 2);  // the two element counts decide where the loads below read and write
-    count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
+    layer_touched_ = count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
     state_ = state.data();
     displacement_ = {state[0], state[1]};
     frame_ = {state[frame_offset], state[frame_offset + 1], state[frame_offset + 2]};
     handedness_ = state[handedness_offset];
     overlap_ = state[normal_offset_];
-    layer_.attach(state.subspan(tangential_offset_));  // the elements step in place there
-    tangential_idle_ = friction_ == 0.0 && layer_.touched() == 0;
+    layer_ready_ = false;  // attached where a step needs it (require_layer): a composed tangential step does not
+    tangential_idle_ = friction_ == 0.0 && layer_touched_ == 0;
     start_normal_force_ = state[normal_offset_ + 1];
     start_tangential_force_ = tangential_force(state);
     tangential_force_ = start_tangential_force_;
@@ -376,13 +376,24 @@ void ContactLaw::advance_normal(double overlap) {
     loads_ready_ = false;
     if (tangential_idle_) return;
     if (composed_step_) {
-        layer_.begin_step(coefficients_);
         if (!tangential_composes()) require_loads();  // else only where the composed step's bound fails
     } else {
         foundation_.line_loads(loads_);
         loads_ready_ = true;
+    }
+}
+
+// The layer attached to the contact's state (the elements step in place there) and its step prepared, with the
+// elements that entered contact in the normal step (none when it was composed).
+void ContactLaw::require_layer() const {
+    if (layer_ready_) return;
+    layer_.attach({state_ + tangential_offset_, state_size_ - tangential_offset_});
+    if (composed_step_) {
+        layer_.begin_step(coefficients_);
+    } else {
         layer_.begin_step(coefficients_, foundation_.entries());
     }
+    layer_ready_ = true;
 }
 
 // The composed normal step's line loads (eq. 22), derived once a step and only where they are read.
@@ -413,8 +424,7 @@ bool ContactLaw::tangential_composes() const {
 // element against the line loads.
 bool ContactLaw::tangential_sticks(PlanarVector increment, foundation::ComposedTangentialStep::Step& step) const {
     constexpr double line_load_factor = 4.0;  // q_z = 4 sigma, eq. (22)
-    tangential_.prepare(tangential_header(), increment, step);
-    if (tangential_.sticks_by_bound(tangential_header(), step, line_load_factor * least_stress_)) return true;
+    if (tangential_.prepare(tangential_header(), increment, line_load_factor * least_stress_, step)) return true;
     require_loads();
     return tangential_.sticks(tangential_elements(), step, loads_.data());
 }
@@ -424,7 +434,7 @@ bool ContactLaw::tangential_sticks(PlanarVector increment, foundation::ComposedT
 // stays zero and, starting unloaded, so do u and h) or the step moves the elements by nothing (a stuck element's
 // stress is relaxed + k du = 0, a free one's zero). Head-on collisions and frictionless contacts skip the layer.
 bool ContactLaw::tangential_at_rest(PlanarVector increment) const {
-    return tangential_idle_ || (layer_.touched() == 0 && increment[0] == 0.0 && increment[1] == 0.0);
+    return tangential_idle_ || (layer_touched_ == 0 && increment[0] == 0.0 && increment[1] == 0.0);
 }
 
 std::span<const double> ContactLaw::loads() const { return std::span<const double>(loads_).first(touched_); }
@@ -443,6 +453,7 @@ PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
         tangential_.write(tangential_header(), tangential_elements());
     }
     require_loads();
+    require_layer();
     return layer_.trial_force(increment, loads(), contact_flags());
 }
 
@@ -460,6 +471,7 @@ void ContactLaw::advance_tangential(PlanarVector displacement) {
     } else {
         tangential_.write(tangential_header(), tangential_elements());
         require_loads();
+        require_layer();
         layer_.advance(increment, loads(), contact_flags());
         // After a step in which every element in contact stuck (and no element entered or left) the following
         // steps are composed; a sliding contact's are not (nothing to summarise).

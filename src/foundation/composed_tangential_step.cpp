@@ -73,30 +73,28 @@ void ComposedTangentialStep::set_step(const StepCoefficients& coefficients) {
     }
 }
 
-void ComposedTangentialStep::prepare(std::span<const double> header, PlanarVector increment, Step& step) const {
+bool ComposedTangentialStep::prepare(std::span<const double> header, PlanarVector increment, double least_load,
+                                     Step& step) const {
     const std::size_t m = branches_;
-    const double* scale = header.data() + scale_offset;
-    const double* shift = scale + m;  // C_k,x then C_k,y
-    double* weight = scratch_.data();
+    const double* __restrict scale = header.data() + scale_offset;
+    const double* __restrict shift = scale + m;  // C_k,x then C_k,y
+    const double* __restrict largest = scale + 5 * m;
+    const double* __restrict weight = weight_.data();
+    double* __restrict composed_weight = scratch_.data();
     // S = G_inf U + sum_k G_k E_k C_k + k du: the relaxed stress of u = u^ + U, h_k = A_k h^_k + C_k less its
-    // element's part, plus the stick branch's k du (eq. 50; the layer's relaxed_stress in its order).
+    // element's part, plus the stick branch's k du (eq. 50; the layer's relaxed_stress in its order); the bound of
+    // |t_i|: |S| + G_inf max |u^| + sum_k G_k E_k A_k max |h^_k|.
     double x = g_inf_ * header[shift_offset], y = g_inf_ * header[shift_offset + 1];
+    double bound = g_inf_ * header[hat_largest_offset];
     for (std::size_t k = 0; k < m; ++k) {
-        x += weight_[k] * shift[k];
-        y += weight_[k] * shift[m + k];
-        weight[k] = weight_[k] * scale[k];
+        x += weight[k] * shift[k];
+        y += weight[k] * shift[m + k];
+        composed_weight[k] = weight[k] * scale[k];
+        bound += composed_weight[k] * largest[k];
     }
     step.increment = increment;
     step.common = {x + coefficients_.stiffness * increment[0], y + coefficients_.stiffness * increment[1]};
-}
-
-bool ComposedTangentialStep::sticks_by_bound(std::span<const double> header, const Step& step,
-                                             double least_load) const {
-    const std::size_t m = branches_;
-    const double* largest = header.data() + scale_offset + 5 * m;
-    double bound = std::sqrt(step.common[0] * step.common[0] + step.common[1] * step.common[1]) +
-                   g_inf_ * header[hat_largest_offset];
-    for (std::size_t k = 0; k < m; ++k) bound += scratch_[k] * largest[k];
+    bound += std::sqrt(step.common[0] * step.common[0] + step.common[1] * step.common[1]);
     return bound <= per_load_ * least_load;
 }
 

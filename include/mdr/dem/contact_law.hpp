@@ -173,6 +173,7 @@ private:
     bool tangential_composes() const;
     bool tangential_sticks(PlanarVector increment, foundation::ComposedTangentialStep::Step& step) const;
     void require_loads() const;
+    void require_layer() const;
     void check_tangential_header(std::span<const double> state, std::size_t active, std::size_t touched,
                                  std::size_t contacts) const;
     void prepare_foundation(bool summarise);
@@ -187,11 +188,13 @@ private:
     foundation::Foundation foundation_;
     foundation::ComposedNormalStep composed_;
     foundation::ComposedTangentialStep tangential_;
-    foundation::PlanarTangentialLayer layer_;
+    mutable foundation::PlanarTangentialLayer layer_;  ///< attached and prepared where a step needs it
     foundation::StepCoefficients coefficients_;
     rheology::Rheology material_;
     mutable std::vector<double> loads_;  ///< q_z,i of the last normal step (derived when needed: require_loads)
     mutable bool loads_ready_ = false;   ///< loads_ holds the last normal step's
+    mutable bool layer_ready_ = false;   ///< layer_ is attached to this step's state and prepared (require_layer)
+    std::size_t layer_touched_ = 0;      ///< the layer's touched elements at begin
     double friction_;
     bool tangential_idle_ = false;  ///< the layer stays at rest this step (tangential_at_rest): nothing to step
     std::size_t branches_;

@@ -68,11 +68,10 @@ public:
     /// Sets the coefficients of the following steps (the material's for the time step).
     void set_step(const StepCoefficients& coefficients);
     /// Derives a step with increment `increment` [m] from a header that composes (flag 1): S, and the weights
-    /// G_k E_k A_k that sticks_by_bound, sticks and force read (kept in this object until the next prepare).
-    void prepare(std::span<const double> header, PlanarVector increment, Step& step) const;
-    /// Whether every element in contact certainly sticks (the bound above) when every normal line load in contact
-    /// is at least `least_load` [N/m].
-    bool sticks_by_bound(std::span<const double> header, const Step& step, double least_load) const;
+    /// G_k E_k A_k that sticks and force read (kept in this object until the next prepare). Returns whether every
+    /// element in contact certainly sticks (the bound above) when every normal line load in contact is at least
+    /// `least_load` [N/m]; where not, sticks decides.
+    bool prepare(std::span<const double> header, PlanarVector increment, double least_load, Step& step) const;
     /// Whether every element in contact sticks, each against its line load `loads[i]` q_z,i [N/m] (read only).
     bool sticks(const PlanarElements& elements, const Step& step, const double* loads) const;
     /// F_t [N] (eq. 46, both halves) at the end of the prepared step, every element in contact sticking.
