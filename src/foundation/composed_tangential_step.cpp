@@ -75,7 +75,12 @@ void ComposedTangentialStep::set_step(const StepCoefficients& coefficients) {
 
 bool ComposedTangentialStep::prepare(std::span<const double> header, PlanarVector increment, double least_load,
                                      Step& step) const {
-    const std::size_t m = branches_;
+    return with_branches(branches_, [&](auto m) { return prepare_with(header, increment, least_load, step, m); });
+}
+
+template <class Branches>
+bool ComposedTangentialStep::prepare_with(std::span<const double> header, PlanarVector increment, double least_load,
+                                          Step& step, Branches m) const {
     const double* __restrict scale = header.data() + scale_offset;
     const double* __restrict shift = scale + m;  // C_k,x then C_k,y
     const double* __restrict largest = scale + 5 * m;
@@ -104,7 +109,11 @@ bool ComposedTangentialStep::sticks(const PlanarElements& elements, const Step& 
 }
 
 PlanarVector ComposedTangentialStep::force(std::span<const double> header, const Step& step) const {
-    const std::size_t m = branches_;
+    return with_branches(branches_, [&](auto m) { return force_with(header, step, m); });
+}
+
+template <class Branches>
+PlanarVector ComposedTangentialStep::force_with(std::span<const double> header, const Step& step, Branches m) const {
     const double* hat_sum = header.data() + scale_offset + 3 * m;  // x then y
     const double contacts = header[contacts_offset];
     double x = contacts * step.common[0] + g_inf_ * header[hat_sum_offset];
@@ -119,8 +128,14 @@ PlanarVector ComposedTangentialStep::force(std::span<const double> header, const
 
 void ComposedTangentialStep::advance(std::span<double> header, const PlanarElements& elements,
                                      const Step& step) const {
-    const std::size_t m = branches_, order = m + 1;
-    const PlanarVector total = force(header, step);
+    with_branches(branches_, [&](auto m) { advance_with(header, elements, step, m); });
+}
+
+template <class Branches>
+void ComposedTangentialStep::advance_with(std::span<double> header, const PlanarElements& elements, const Step& step,
+                                          Branches m) const {
+    const std::size_t order = m + 1;
+    const PlanarVector total = force_with(header, step, m);
     header[force_offset] = total[0];
     header[force_offset + 1] = total[1];
     header[shift_offset] += step.increment[0];

@@ -97,6 +97,15 @@ public:
                  std::size_t stride, std::size_t i, double* current) const;
 
 private:
+    // The steps with the branch count M a constant for M = 1, 2, 3 (with_branches.hpp).
+    template <class Branches>
+    bool prepare_with(std::span<const double> header, PlanarVector increment, double least_load, Step& step,
+                      Branches branches) const;
+    template <class Branches>
+    PlanarVector force_with(std::span<const double> header, const Step& step, Branches branches) const;
+    template <class Branches>
+    void advance_with(std::span<double> header, const PlanarElements& elements, const Step& step,
+                      Branches branches) const;
     std::size_t map_offset() const { return factors_offset + 6 * branches_; }
 
     std::size_t branches_;
