@@ -90,9 +90,9 @@ ContactLaw::ContactLaw(const rheology::Rheology& material, double radius, double
       branches_(material.terms().size()),
       header_size_(foundation::ComposedNormalStep::header_size(branches_)),
       tangential_size_(foundation::ComposedTangentialStep::header_size(branches_)),
-      tangential_header_offset_(header_offset + header_size_),
-      normal_offset_(tangential_header_offset_ + tangential_size_),
-      tangential_offset_(normal_offset_ + foundation::Foundation::attached_size(elements, branches_)),
+      normal_offset_(header_offset + header_size_),
+      tangential_header_offset_(normal_offset_ + foundation::Foundation::attached_size(elements, branches_)),
+      tangential_offset_(tangential_header_offset_ + tangential_size_),
       state_size_(state_size(elements, branches_)),
       memories_(2 * branches_ + 2, 0.0) {
     require_non_negative("friction", friction);
@@ -317,7 +317,8 @@ void ContactLaw::begin(std::span<double> state) {
     layer_ready_ = false;  // attached where a step needs it (require_layer): a composed tangential step does not
     tangential_idle_ = friction_ == 0.0 && layer_touched_ == 0;
     start_normal_force_ = state[normal_offset_ + 1];
-    start_tangential_force_ = tangential_force(state);
+    // An idle layer was never touched: its force is zero, and a frictionless step need not read its header's line.
+    start_tangential_force_ = tangential_idle_ ? PlanarVector{0.0, 0.0} : tangential_force(state);
     tangential_force_ = start_tangential_force_;
     normal_work_ = tangential_work_ = 0.0;
 }

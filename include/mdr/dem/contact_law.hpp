@@ -64,10 +64,15 @@ public:
     /// state_size for this law's N and M.
     std::size_t state_size() const { return state_size_; }
     /// Doubles at the start of a contact's state that every step reads and writes (the displacement, the frame, the
-    /// composed normal and tangential steps' headers, the overlap, normal force and element count): all that a held
-    /// step touches, without friction or with every element sticking (a code may prefetch them; docs/dem.md, "Is
-    /// the step memory-bound?").
+    /// composed normal step's header, the overlap, normal force and element count): all that a held step without
+    /// friction touches (a code may prefetch them; docs/dem.md, "Is the step memory-bound?").
     std::size_t held_step_size() const { return normal_offset_ + 3; }
+    /// With friction, a held step whose elements all stick touches besides these held_tangential_size() doubles
+    /// from held_tangential_offset(): the composed tangential step's header, the layer's force and element count
+    /// (0 doubles for a law without friction, whose layer stays at rest).
+    std::size_t held_tangential_offset() const { return tangential_header_offset_; }
+    /// See held_tangential_offset().
+    std::size_t held_tangential_size() const { return friction_ > 0.0 ? tangential_size_ + 3 : 0; }
     /// Zeroes a contact's state at first touch (state_size() doubles).
     void initialise(std::span<double> state) const;
     /// Throws mdr::InvalidInput (key `state[i]`) unless `state` is a state this law could have written: state_size()
@@ -159,10 +164,12 @@ public:
 
 private:
     // The state: [0, 2) the tangential displacement, [2, 5) the frame's first axis, [5] its handedness (e2 =
-    // handedness normal x e1; 0 before the first advance_spatial), then the composed normal step's header and the
-    // composed tangential step's (first, so that a step without an entry, an exit or a slip touches the state's
-    // first cache lines only), the Foundation's attached state and the layer's (whose own force is that of its last
-    // element-by-element step; the contact's is in the tangential header).
+    // handedness normal x e1; 0 before the first advance_spatial), then the composed normal step's header (first, so
+    // that a step without an entry or exit touches the state's first cache lines only), the Foundation's attached
+    // state, the composed tangential step's header (just before the layer's force and count, which every step reads:
+    // a held step with every element sticking touches those lines besides the first, one without friction not) and
+    // the layer's state (whose own force is that of its last element-by-element step; the contact's is in the
+    // tangential header).
     static constexpr std::size_t frame_offset = 2;
     static constexpr std::size_t handedness_offset = 5;
     static constexpr std::size_t header_offset = 6;
@@ -200,8 +207,8 @@ private:
     std::size_t branches_;
     std::size_t header_size_;
     std::size_t tangential_size_;           ///< the composed tangential step's header
-    std::size_t tangential_header_offset_;
     std::size_t normal_offset_;  ///< the Foundation's attached state: depth, force, touched count, the elements
+    std::size_t tangential_header_offset_;  ///< the composed tangential step's header, before the layer's state
     std::size_t tangential_offset_;
     std::size_t state_size_;
     PlanarVector displacement_{0.0, 0.0};  ///< tangential displacement at the start of the step

@@ -88,8 +88,7 @@ TEST(DemComposedNormalStep, AHeldContactsStepsLeaveItsElementsAsTheyWere) {
     std::vector<double> state(law.state_size());
     law.initialise(state);
     for (int n = 1; n <= 100; ++n) law.advance(state, peak_overlap * n / 100.0, {0.0, 0.0});
-    const std::size_t start = 6 + foundation::ComposedNormalStep::header_size(1) +
-                              foundation::ComposedTangentialStep::header_size(1) + 3;  // w_0 (contact_law.hpp)
+    const std::size_t start = 6 + foundation::ComposedNormalStep::header_size(1) + 3;  // w_0 (contact_law.hpp)
     const std::vector<double> before(state.begin() + static_cast<std::ptrdiff_t>(start),
                                      state.begin() + static_cast<std::ptrdiff_t>(start + elements * 3));
     const double loaded = law.normal_force(state);
@@ -116,8 +115,7 @@ TEST(DemComposedNormalStep, AHeldFrictionlessStepTouchesItsLeadingDoublesOnly) {
     ASSERT_LT(law.held_step_size(), state.size());
     for (std::size_t i = law.held_step_size(); i < state.size(); ++i) EXPECT_EQ(state[i], before[i]) << i;
     EXPECT_LT(law.normal_force(state), law.normal_force(std::span<const double>(before)));  // relaxed
-    EXPECT_EQ(law.held_step_size(), 6 + foundation::ComposedNormalStep::header_size(1) +
-                                        foundation::ComposedTangentialStep::header_size(1) + 3);  // contact_law.hpp
+    EXPECT_EQ(law.held_step_size(), 6 + foundation::ComposedNormalStep::header_size(1) + 3);  // contact_law.hpp
 }
 
 // A DEM code may change its time step between steps (LAMMPS's fix dt/reset) while a contact is held in the composed

@@ -26,7 +26,6 @@ constexpr double radius = 0.005, peak = 4e-5, time_step = 2e-6, friction = 0.3, 
 constexpr std::size_t elements = 20;
 const double half_width = 1.2 * std::sqrt(radius * peak);
 const double spacing = half_width / elements;
-constexpr std::size_t law_header = 6;  // the displacement and the frame (contact_law.hpp)
 
 // M = 0 to 3, with and without a parallel dashpot.
 std::vector<rheology::Rheology> materials() {
@@ -98,8 +97,7 @@ Deviations run(const rheology::Rheology& material, bool changing, double wobble)
     normal_saved.resize(foundation::Foundation::state_size(elements, material.terms().size()));
     layer_saved.resize(foundation::PlanarTangentialLayer::state_size(elements, material.terms().size()));
     law->initialise(state);
-    const std::size_t flag = law_header + foundation::ComposedNormalStep::header_size(material.terms().size()) +
-                             foundation::ComposedTangentialStep::composed_offset;
+    const std::size_t flag = law->held_tangential_offset() + foundation::ComposedTangentialStep::composed_offset;
     Deviations result;
     double depth = 0.0;
     PlanarVector shift{0.0, 0.0};
@@ -159,9 +157,10 @@ TEST(DemComposedTangentialStep, ForcesAndEnergiesAreTheLayersToRoundOff) {
     }
 }
 
-// The composed tangential step reads and writes the leading doubles only (held_step_size: the headers, the
-// Foundation's overlap, force and count): a held contact whose elements all stick leaves the rest of its state as
-// it was, bit for bit, while its tangential force changes.
+// The composed tangential step reads and writes the leading doubles (held_step_size: the normal header, the
+// Foundation's overlap, force and count) and the tangential header only (held_tangential_offset and _size): a held
+// contact whose elements all stick leaves the rest of its state as it was, bit for bit, while its tangential force
+// changes.
 TEST(DemComposedTangentialStep, AHeldStickingStepTouchesItsLeadingDoublesOnly) {
     for (const auto& material : materials()) {
         ContactLaw law(material, radius, friction, elements, half_width, time_step);
@@ -170,7 +169,10 @@ TEST(DemComposedTangentialStep, AHeldStickingStepTouchesItsLeadingDoublesOnly) {
         for (int n = 1; n <= 120; ++n) law.advance(state, overlap_at(n), displacement_at(n, 2e-8));
         const std::vector<double> before = state;
         for (int n = 121; n <= 220; ++n) law.advance(state, overlap_at(n), displacement_at(n, 2e-8));
+        const std::size_t tangential = law.held_tangential_offset();
+        ASSERT_GT(tangential, law.held_step_size());
         for (std::size_t i = law.held_step_size(); i < state.size(); ++i) {
+            if (i >= tangential && i < tangential + law.held_tangential_size()) continue;
             ASSERT_EQ(state[i], before[i]) << "M = " << material.terms().size() << ", state[" << i << "]";
         }
         EXPECT_NE(law.tangential_force(state), law.tangential_force(std::span<const double>(before)));
@@ -197,7 +199,7 @@ TEST(DemComposedTangentialStep, ACorruptedTangentialHeaderRaisesNamingTheEntry) 
     std::vector<double> state(law.state_size());
     law.initialise(state);
     for (int n = 1; n <= 300; ++n) law.advance(state, overlap_at(n), displacement_at(n, 2e-8));
-    const std::size_t header = law_header + foundation::ComposedNormalStep::header_size(2);
+    const std::size_t header = law.held_tangential_offset();
     ASSERT_EQ(state[header + foundation::ComposedTangentialStep::composed_offset], 1.0);
     EXPECT_NO_THROW(law.check(state));
     const auto key = [](std::size_t i) { return "state[" + std::to_string(i) + "]"; };

@@ -78,9 +78,8 @@ TEST(DemContactLawC, BadInputIsACodeAndAMessage) {
               MDR_INVALID_INPUT);
     EXPECT_EQ(std::string(message).rfind("half_width = ", 0), 0u) << message;
     EXPECT_EQ(state, before);
-    // A corrupted element count: the Foundation's, after the law's 6 doubles and the composed steps' headers (M = 1).
-    const std::size_t count = 6 + mdr::foundation::ComposedNormalStep::header_size(1) +
-                              mdr::foundation::ComposedTangentialStep::header_size(1) + 2;
+    // A corrupted element count: the Foundation's, after the law's 6 doubles and the composed step's header (M = 1).
+    const std::size_t count = 6 + mdr::foundation::ComposedNormalStep::header_size(1) + 2;
     const std::string count_key = "state[" + std::to_string(count) + "] = ";
     state[count] = 1e12;
     EXPECT_EQ(mdr_contact_law_check(law, state.data(), state.size(), message, sizeof message), MDR_INVALID_INPUT);

@@ -45,13 +45,12 @@ namespace mdr::dem {
 namespace {
 
 // The state's layout for make_law's N = 50, M = 2 (contact_law.hpp): the law's 6 doubles, the composed normal step's
-// header, the composed tangential step's, the Foundation's depth, force and touched count, then its w, flags and h
-// (50 (2 + 2)), then the layer's.
+// header, the Foundation's depth, force and touched count, then its w, flags and h (50 (2 + 2)), the composed
+// tangential step's header, then the layer's.
 constexpr std::size_t law_header = 6;
-const std::size_t tangential_header = law_header + foundation::ComposedNormalStep::header_size(2);
-const std::size_t normal_start = tangential_header + foundation::ComposedTangentialStep::header_size(2);
+const std::size_t normal_start = law_header + foundation::ComposedNormalStep::header_size(2);
 const std::size_t normal_touched = normal_start + 2;
-const std::size_t layer_start = normal_start + 3 + 50 * 4;
+const std::size_t layer_start = normal_start + 3 + 50 * 4 + foundation::ComposedTangentialStep::header_size(2);
 
 ContactLaw make_law() {
     return ContactLaw(rheology::Rheology::prony(1e6, {{3e6, 1e-3}, {1e6, 3e-5}}), 0.005, 0.3, 50, 1e-3, 2e-6);
