@@ -161,7 +161,7 @@ TEST(DemComposedTangentialStep, ForcesAndEnergiesAreTheLayersToRoundOff) {
 // Foundation's overlap, force and count) and the tangential header only (held_tangential_offset and _size): a held
 // contact whose elements all stick leaves the rest of its state as it was, bit for bit, while its tangential force
 // changes.
-TEST(DemComposedTangentialStep, AHeldStickingStepTouchesItsLeadingDoublesOnly) {
+TEST(DemComposedTangentialStep, AHeldStickingStepTouchesItsHeldRangesOnly) {
     for (const auto& material : materials()) {
         ContactLaw law(material, radius, friction, elements, half_width, time_step);
         std::vector<double> state(law.state_size());
