@@ -53,7 +53,8 @@ __attribute__((target_clones("avx2", "default"))) std::int64_t stick_or_slip(
             const double trial_y = relaxed[1] + stiffness * moved_y;
             const double magnitude = std::sqrt(trial_x * trial_x + trial_y * trial_y);
             const bool sticks = in != 0.0 && magnitude <= bound;
-            slips += in != 0.0 && !sticks ? 1 : 0;
+            // bitwise, not &&: GCC 12 leaves the loop scalar with the conditional form of this count
+            slips += static_cast<std::int64_t>(in != 0.0) & static_cast<std::int64_t>(!sticks);
             const double scale = sticks ? 1.0 : (in != 0.0 ? bound / magnitude : 0.0);
             const double stress_x = trial_x * scale, stress_y = trial_y * scale;
             const double du_x = sticks ? moved_x : (stress_x - relaxed[0]) * compliance;
