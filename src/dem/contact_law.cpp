@@ -365,7 +365,7 @@ void ContactLaw::advance_normal(double overlap) {
                                    "; give a larger half-width (at least sqrt(R d) for the largest overlap d)");
         }
         // The tangential elements are written while the flags are still those of the steps they compose.
-        tangential_.write(tangential_header(), tangential_elements());
+        write_tangential();
         prepare_foundation(false);
         foundation_.advance(overlap_, overlap);
         composed_.summarise(header(), elements(), (overlap - overlap_) / coefficients_.time_step);
@@ -412,6 +412,13 @@ foundation::PlanarElements ContactLaw::tangential_elements() const {
     return {u, u + 2 * n, state_ + normal_offset_ + 3 + n, n, static_cast<std::size_t>(state_[normal_offset_ + 2])};
 }
 
+// The tangential elements written (the header's maps applied) where the header composes.
+void ContactLaw::write_tangential() const {
+    if (state_[tangential_header_offset_ + foundation::ComposedTangentialStep::composed_offset] != 0.0) {
+        tangential_.write(tangential_header(), tangential_elements());
+    }
+}
+
 // The tangential step may be composed: the normal step was (every element in contact takes the whole increment,
 // the flags are those of the header's composed steps) and the header composes (the elements all stuck since it
 // summarised them).
@@ -451,7 +458,7 @@ PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
         foundation::ComposedTangentialStep::Step step;
         if (tangential_sticks(increment, step)) return tangential_.force(tangential_header(), step);
         // An element would slip: the elements written (the state's values unchanged), as advance_tangential will.
-        tangential_.write(tangential_header(), tangential_elements());
+        write_tangential();
     }
     require_loads();
     require_layer();
@@ -469,20 +476,21 @@ void ContactLaw::advance_tangential(PlanarVector displacement) {
     foundation::ComposedTangentialStep::Step step;
     if (tangential_composes() && tangential_sticks(increment, step)) {
         tangential_.advance(tangential_header(), tangential_elements(), step);
+        tangential_force_ = tangential_force(std::span<const double>(state_, state_size_));
     } else {
-        tangential_.write(tangential_header(), tangential_elements());
+        write_tangential();
         require_loads();
         require_layer();
         layer_.advance(increment, loads(), contact_flags());
+        tangential_force_ = layer_.total_force();
         // After a step in which every element in contact stuck (and no element entered or left) the following
         // steps are composed; a sliding contact's are not (nothing to summarise).
         if (composed_step_ && layer_.stuck()) {
-            tangential_.summarise(tangential_header(), tangential_elements(), layer_.total_force());
+            tangential_.summarise(tangential_header(), tangential_elements(), tangential_force_);
         } else {
-            foundation::ComposedTangentialStep::keep(tangential_header(), layer_.total_force());
+            foundation::ComposedTangentialStep::keep(tangential_header(), tangential_force_);
         }
     }
-    tangential_force_ = tangential_force(std::span<const double>(state_, state_size_));
     const PlanarVector& end_force = tangential_force_;
     tangential_work_ = 0.5 * ((start_tangential_force_[0] + end_force[0]) * increment[0] +
                               (start_tangential_force_[1] + end_force[1]) * increment[1]);

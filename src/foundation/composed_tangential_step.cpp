@@ -265,12 +265,6 @@ void ComposedTangentialStep::summarise(std::span<double> header, const PlanarEle
     }
 }
 
-void ComposedTangentialStep::keep(std::span<double> header, PlanarVector force) {
-    header[composed_offset] = 0.0;
-    header[force_offset] = force[0];
-    header[force_offset + 1] = force[1];
-}
-
 std::size_t ComposedTangentialStep::summary_mismatch(std::span<const double> header,
                                                      const PlanarElements& elements) const {
     std::vector<double> derived(header.begin(), header.end());

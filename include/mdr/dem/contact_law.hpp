@@ -181,6 +181,7 @@ private:
     bool tangential_sticks(PlanarVector increment, foundation::ComposedTangentialStep::Step& step) const;
     void require_loads() const;
     void require_layer() const;
+    void write_tangential() const;
     void check_tangential_header(std::span<const double> state, std::size_t active, std::size_t touched,
                                  std::size_t contacts) const;
     void prepare_foundation(bool summarise);

@@ -87,7 +87,11 @@ public:
     /// step in which every element in contact stuck), with `force` the force after that step.
     void summarise(std::span<double> header, const PlanarElements& elements, PlanarVector force) const;
     /// Stores `force`, the force after a layer's step, in a header that does not compose (some element slipped).
-    static void keep(std::span<double> header, PlanarVector force);
+    static void keep(std::span<double> header, PlanarVector force) {
+        header[composed_offset] = 0.0;
+        header[force_offset] = force[0];
+        header[force_offset + 1] = force[1];
+    }
     /// The index of the first entry of `header`'s summary (the elements in contact, the sums and largest values of
     /// u^ and h^_k there) that is not the summary of `elements`, or header.size() when none (a restart's check).
     std::size_t summary_mismatch(std::span<const double> header, const PlanarElements& elements) const;
