@@ -104,7 +104,9 @@ public:
     /// when the contact would grow beyond the half-width, (key `overlap`) for an overlap that is not finite.
     void advance_normal(double overlap);
     /// Tangential force [N] if the step ended at tangential displacement `displacement` [m] (after
-    /// advance_normal); the state is not changed.
+    /// advance_normal), to the bit the force advance_tangential would give. The state keeps its values; where an
+    /// element would slip out of a composed tangential step the elements are brought up to date first (the maps
+    /// applied, as advance_tangential does).
     PlanarVector tangential_trial(PlanarVector displacement) const;
     /// Advances the tangential problem to `displacement` [m] (after advance_normal); throws mdr::InvalidInput (key
     /// `displacement`) unless it is finite. A layer never touched stays at rest, unstepped, while the law has no
