@@ -377,7 +377,11 @@ void ContactLaw::advance_normal(double overlap) {
     loads_ready_ = false;
     if (tangential_idle_) return;
     if (composed_step_) {
-        if (!tangential_composes()) require_loads();  // else only where the composed step's bound fails
+        // The line loads now unless the tangential step may be composed (then only where its bound fails).
+        if (!tangential_composes()) {
+            composed_.line_loads(header(), start, overlap, std::span<double>(loads_).first(touched_));
+            loads_ready_ = true;
+        }
     } else {
         foundation_.line_loads(loads_);
         loads_ready_ = true;
