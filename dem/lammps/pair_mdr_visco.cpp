@@ -291,6 +291,14 @@ void PairMdrVisco::compute(int eflag, int vflag)
   std::size_t leading = 1;
   for (const auto &law : laws)
     if (law) leading = std::max(leading, law->held_step_size());
+  // with friction also the composed tangential step's header and the layer's count (ContactLaw::
+  // held_tangential_offset and _size): the span that covers every law's, empty without friction
+  std::size_t tangential_first = static_cast<std::size_t>(size_history), tangential_last = 0;
+  for (const auto &law : laws) {
+    if (!law || law->held_tangential_size() == 0) continue;
+    tangential_first = std::min(tangential_first, law->held_tangential_offset());
+    tangential_last = std::max(tangential_last, law->held_tangential_offset() + law->held_tangential_size());
+  }
   const std::uintptr_t ahead_bytes = 4 * static_cast<std::uintptr_t>(size_history) * sizeof(double);
   // the contacts' energy for compute pair (docs/dem.md): a contact computed on two ranks (newton off, j a ghost)
   // counts half on each
@@ -320,6 +328,10 @@ void PairMdrVisco::compute(int eflag, int vflag)
       for (std::size_t k = 0; k < leading; k += 8)
         __builtin_prefetch(reinterpret_cast<const void *>(ahead + k * sizeof(double)), 1);
       __builtin_prefetch(reinterpret_cast<const void *>(ahead + (leading - 1) * sizeof(double)), 1);
+      for (std::size_t k = tangential_first; k < tangential_last; k += 8)
+        __builtin_prefetch(reinterpret_cast<const void *>(ahead + k * sizeof(double)), 1);
+      if (tangential_last > 0)
+        __builtin_prefetch(reinterpret_cast<const void *>(ahead + (tangential_last - 1) * sizeof(double)), 1);
       const double del[3] = {x[j][0] - xi[0], x[j][1] - xi[1], x[j][2] - xi[2]};
       const double rsq = dot(del, del);
       const double radsum = radiusi + radius[j];

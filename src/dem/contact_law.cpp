@@ -72,6 +72,7 @@ std::string entry(std::size_t index) { return "state[" + std::to_string(index) +
 
 std::size_t ContactLaw::state_size(std::size_t elements, std::size_t branches) {
     return header_offset + foundation::ComposedNormalStep::header_size(branches) +
+           foundation::ComposedTangentialStep::header_size(branches) +
            foundation::Foundation::attached_size(elements, branches) +
            foundation::PlanarTangentialLayer::state_size(elements, branches);
 }
@@ -81,16 +82,19 @@ ContactLaw::ContactLaw(const rheology::Rheology& material, double radius, double
     : foundation_(sphere_foundation(material, radius, elements, half_width)),
       composed_(material, foundation_.equivalent_profile(), foundation_.spacing(),
                 foundation::deepest_depth(*profile::make_sphere(radius), foundation_.half_width())),
+      tangential_(material, friction, half_width / static_cast<double>(elements)),
       layer_(material, friction, half_width / static_cast<double>(elements), elements),
       material_(material),
       loads_(elements, 0.0),
       friction_(friction),
       branches_(material.terms().size()),
       header_size_(foundation::ComposedNormalStep::header_size(branches_)),
+      tangential_size_(foundation::ComposedTangentialStep::header_size(branches_)),
       normal_offset_(header_offset + header_size_),
-      tangential_offset_(normal_offset_ + foundation::Foundation::attached_size(elements, branches_)),
+      tangential_header_offset_(normal_offset_ + foundation::Foundation::attached_size(elements, branches_)),
+      tangential_offset_(tangential_header_offset_ + tangential_size_),
       state_size_(state_size(elements, branches_)),
-      memories_(branches_, 0.0) {
+      memories_(2 * branches_ + 2, 0.0) {
     require_non_negative("friction", friction);
     set_time_step(time_step);
     foundation_.reserve_events();
@@ -101,6 +105,7 @@ void ContactLaw::set_time_step(double time_step) {
     require_positive("time_step", time_step);
     foundation::fill_step_coefficients(material_, time_step, coefficients_);
     composed_.set_step(coefficients_);
+    tangential_.set_step(coefficients_);
 }
 
 void ContactLaw::initialise(std::span<double> state) const {
@@ -205,6 +210,7 @@ void ContactLaw::check(std::span<const double> state) const {
                                "a composition factor lies in (0, 1] (a product of exp(-dt/tau_k))");
         }
     }
+    check_tangential_header(state, active, touched, contacts);
     const double handedness = state[handedness_offset];
     const SpatialVector axis{state[frame_offset], state[frame_offset + 1], state[frame_offset + 2]};
     const double length = std::sqrt(dot(axis, axis));
@@ -217,27 +223,55 @@ void ContactLaw::check(std::span<const double> state) const {
     }
 }
 
+// The composed tangential step's header (foundation::ComposedTangentialStep): its flag; while it composes, the layer's
+// touched elements are the Foundation's `active` ones (the composed steps step those), its count of the elements in
+// contact is the normal one (`contacts`), its composition factors lie in (0, 1] and its summary is the written
+// elements'.
+void ContactLaw::check_tangential_header(std::span<const double> state, std::size_t active, std::size_t touched,
+                                         std::size_t contacts) const {
+    const std::size_t composed = tangential_header_offset_ + foundation::ComposedTangentialStep::composed_offset;
+    if (state[composed] != 0.0 && state[composed] != 1.0) {
+        throw InvalidInput(entry(composed), format_value(state[composed]),
+                           "the tangential header's flag \"composed\" must be 0 or 1");
+    }
+    if (state[composed] == 0.0) return;
+    const std::size_t layer_count = tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset;
+    if (touched != active) {
+        throw InvalidInput(entry(layer_count), format_value(state[layer_count]),
+                           "while the tangential header composes, the layer touched the Foundation's " +
+                               std::to_string(active) + " elements");
+    }
+    const std::size_t counted = tangential_header_offset_ + foundation::ComposedTangentialStep::contacts_offset;
+    if (state[counted] != static_cast<double>(contacts)) {
+        throw InvalidInput(entry(counted), format_value(state[counted]),
+                           "the tangential header counts the " + std::to_string(contacts) + " elements in contact");
+    }
+    for (std::size_t k = 0; k < branches_; ++k) {
+        const std::size_t factor = tangential_header_offset_ + foundation::ComposedTangentialStep::factors_offset + k;
+        if (!(state[factor] > 0.0 && state[factor] <= 1.0)) {
+            throw InvalidInput(entry(factor), format_value(state[factor]),
+                               "a composition factor lies in (0, 1] (a product of exp(-dt/tau_k))");
+        }
+    }
+    // A copy of the elements: the summary is made on writable ones.
+    const std::size_t n = loads_.size();
+    std::vector<double> written(state.begin() + static_cast<std::ptrdiff_t>(tangential_offset_ + 3),
+                                state.begin() + static_cast<std::ptrdiff_t>(state_size_));
+    const double* flags = state.data() + normal_offset_ + 3 + n;
+    const std::size_t mismatch = tangential_.summary_mismatch(
+        state.subspan(tangential_header_offset_, tangential_size_), {written.data(), written.data() + 2 * n, flags, n, active});
+    if (mismatch < tangential_size_) {
+        throw InvalidInput(entry(tangential_header_offset_ + mismatch),
+                           format_value(state[tangential_header_offset_ + mismatch]),
+                           "the tangential header's summary of the written elements "
+                           "(ComposedTangentialStep::summarise) must be theirs");
+    }
+}
+
 double ContactLaw::stored_energy(std::span<const double> state) const {
     require_state_size(state);
     const std::size_t n = loads_.size();
     const auto& terms = material_.terms();
-    // sum_i (G_inf |w_i|^2 + sum_k G_k |h_k,i|^2) over `count` elements of `components` displacement blocks at
-    // `displacements` and branch blocks at `memories` (component-major within a branch).
-    const auto spring_sum = [&](const double* displacements, const double* memories, std::size_t components,
-                                std::size_t count) {
-        double sum = 0.0;
-        for (std::size_t c = 0; c < components; ++c) {
-            for (std::size_t i = 0; i < count; ++i) {
-                const double w = displacements[c * n + i];
-                sum += material_.equilibrium_modulus() * w * w;
-                for (std::size_t k = 0; k < terms.size(); ++k) {
-                    const double h = memories[(k * components + c) * n + i];
-                    sum += terms[k].modulus * h * h;
-                }
-            }
-        }
-        return sum;
-    };
     // The Foundation's attached state: depth, force, count, then w_i, flags, h_k,i, composed (the header's maps
     // applied, foundation::ComposedNormalStep::element); the layer's: force (2), count, then u_x, u_y, and h_x, h_y
     // per branch (foundation.cpp, planar_tangential_layer.cpp).
@@ -253,9 +287,20 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
         for (std::size_t k = 0; k < terms.size(); ++k) sum += terms[k].modulus * memories_[k] * memories_[k];
         normal_sum += sum;
     }
-    const double tangential_sum = spring_sum(
-        tangential + 3, tangential + 3 + 2 * n, 2,
-        count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset));
+    // The layer's elements, the tangential header's maps applied (ComposedTangentialStep::element: u_x, u_y, then
+    // h_k,x, h_k,y; the Foundation's flags).
+    const std::span<const double> planar = state.subspan(tangential_header_offset_, tangential_size_);
+    const std::size_t touched = count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
+    double tangential_sum = 0.0;
+    for (std::size_t i = 0; i < touched; ++i) {
+        tangential_.element(planar, tangential + 3, tangential + 3 + 2 * n, normal + 3 + n, n, i, memories_.data());
+        for (std::size_t c = 0; c < 2; ++c) {
+            tangential_sum += material_.equilibrium_modulus() * memories_[c] * memories_[c];
+            for (std::size_t k = 0; k < terms.size(); ++k) {
+                tangential_sum += terms[k].modulus * memories_[2 * (k + 1) + c] * memories_[2 * (k + 1) + c];
+            }
+        }
+    }
     constexpr double normal_factor = 4.0, tangential_factor = 8.0 / 3.0;  // k = c G dx, eq. (11), (41)
     return foundation_.spacing() * (normal_factor * normal_sum + tangential_factor * tangential_sum);
 }
@@ -263,16 +308,18 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
 void ContactLaw::begin(std::span<double> state) {
     require_state_size(state);
     count_at(state, normal_offset_ + 2);  // the two element counts decide where the loads below read and write
-    count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
+    layer_touched_ = count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
     state_ = state.data();
     displacement_ = {state[0], state[1]};
     frame_ = {state[frame_offset], state[frame_offset + 1], state[frame_offset + 2]};
     handedness_ = state[handedness_offset];
     overlap_ = state[normal_offset_];
-    layer_.attach(state.subspan(tangential_offset_));  // the elements step in place there
-    tangential_idle_ = friction_ == 0.0 && layer_.touched() == 0;
+    layer_ready_ = false;  // attached where a step needs it (require_layer): a composed tangential step does not
+    tangential_idle_ = friction_ == 0.0 && layer_touched_ == 0;
     start_normal_force_ = state[normal_offset_ + 1];
-    start_tangential_force_ = layer_.total_force();
+    // An idle layer was never touched: its force is zero, and a frictionless step need not read its header's line.
+    start_tangential_force_ = tangential_idle_ ? PlanarVector{0.0, 0.0} : tangential_force(state);
+    tangential_force_ = start_tangential_force_;
     normal_work_ = tangential_work_ = 0.0;
 }
 
@@ -306,7 +353,7 @@ void ContactLaw::advance_normal(double overlap) {
     if (!std::isfinite(overlap)) require_finite("overlap", overlap);  // the key's string only when it throws
     double force = 0.0;
     const foundation::AttachedElements start = elements();
-    composed_step_ = composed_.advance(header(), start, overlap_, overlap, force);
+    composed_step_ = composed_.advance(header(), start, overlap_, overlap, force, least_stress_);
     if (composed_step_) {
         state_[normal_offset_] = overlap;
         state_[normal_offset_ + 1] = force;
@@ -317,6 +364,8 @@ void ContactLaw::advance_normal(double overlap) {
                                "the contact grows beyond the law's half-width at overlap " + format_value(overlap) +
                                    "; give a larger half-width (at least sqrt(R d) for the largest overlap d)");
         }
+        // The tangential elements are written while the flags are still those of the steps they compose.
+        write_tangential();
         prepare_foundation(false);
         foundation_.advance(overlap_, overlap);
         composed_.summarise(header(), elements(), (overlap - overlap_) / coefficients_.time_step);
@@ -325,14 +374,71 @@ void ContactLaw::advance_normal(double overlap) {
     touched_ = static_cast<std::size_t>(state_[normal_offset_ + 2]);
     contact_count_ = static_cast<std::size_t>(header()[foundation::ComposedNormalStep::contacts_offset]);
     normal_work_ = 0.5 * (start_normal_force_ + normal_force_) * (overlap - overlap_);
+    loads_ready_ = false;
     if (tangential_idle_) return;
     if (composed_step_) {
-        composed_.line_loads(header(), start, overlap, std::span<double>(loads_).first(touched_));
-        layer_.begin_step(coefficients_);
+        // The line loads now unless the tangential step may be composed (then only where its bound fails).
+        if (!tangential_composes()) {
+            composed_.line_loads(header(), start, overlap, std::span<double>(loads_).first(touched_));
+            loads_ready_ = true;
+        }
     } else {
         foundation_.line_loads(loads_);
+        loads_ready_ = true;
+    }
+}
+
+// The layer attached to the contact's state (the elements step in place there) and its step prepared, with the
+// elements that entered contact in the normal step (none when it was composed).
+void ContactLaw::require_layer() const {
+    if (layer_ready_) return;
+    layer_.attach({state_ + tangential_offset_, state_size_ - tangential_offset_});
+    if (composed_step_) {
+        layer_.begin_step(coefficients_);
+    } else {
         layer_.begin_step(coefficients_, foundation_.entries());
     }
+    layer_ready_ = true;
+}
+
+// The composed normal step's line loads (eq. 22), derived once a step and only where they are read.
+void ContactLaw::require_loads() const {
+    if (loads_ready_) return;
+    composed_.line_loads(header(), elements(), state_[normal_offset_], std::span<double>(loads_).first(touched_));
+    loads_ready_ = true;
+}
+
+foundation::PlanarElements ContactLaw::tangential_elements() const {
+    const std::size_t n = loads_.size();
+    double* u = state_ + tangential_offset_ + 3;
+    // The Foundation's touched count in the state: that of the steps the header composes until the normal step
+    // writes it (the layer's is the same while the header composes).
+    return {u, u + 2 * n, state_ + normal_offset_ + 3 + n, n, static_cast<std::size_t>(state_[normal_offset_ + 2])};
+}
+
+// The tangential elements written (the header's maps applied) where the header composes.
+void ContactLaw::write_tangential() const {
+    if (state_[tangential_header_offset_ + foundation::ComposedTangentialStep::composed_offset] != 0.0) {
+        tangential_.write(tangential_header(), tangential_elements());
+    }
+}
+
+// The tangential step may be composed: the normal step was (every element in contact takes the whole increment,
+// the flags are those of the header's composed steps) and the header composes (the elements all stuck since it
+// summarised them).
+bool ContactLaw::tangential_composes() const {
+    return composed_step_ &&
+           state_[tangential_header_offset_ + foundation::ComposedTangentialStep::composed_offset] != 0.0;
+}
+
+// Prepares the composed tangential step of `increment` and returns whether every element in contact sticks: by the
+// bound against the least line load 4 sigma_min (eq. 22; the composed normal step's lower bound), else element by
+// element against the line loads.
+bool ContactLaw::tangential_sticks(PlanarVector increment, foundation::ComposedTangentialStep::Step& step) const {
+    constexpr double line_load_factor = 4.0;  // q_z = 4 sigma, eq. (22)
+    if (tangential_.prepare(tangential_header(), increment, line_load_factor * least_stress_, step)) return true;
+    require_loads();
+    return tangential_.sticks(tangential_elements(), step, loads_.data());
 }
 
 // Whether a tangential step with this increment leaves every element as it is, unloaded: none was ever touched (u =
@@ -340,7 +446,7 @@ void ContactLaw::advance_normal(double overlap) {
 // stays zero and, starting unloaded, so do u and h) or the step moves the elements by nothing (a stuck element's
 // stress is relaxed + k du = 0, a free one's zero). Head-on collisions and frictionless contacts skip the layer.
 bool ContactLaw::tangential_at_rest(PlanarVector increment) const {
-    return tangential_idle_ || (layer_.touched() == 0 && increment[0] == 0.0 && increment[1] == 0.0);
+    return tangential_idle_ || (layer_touched_ == 0 && increment[0] == 0.0 && increment[1] == 0.0);
 }
 
 std::span<const double> ContactLaw::loads() const { return std::span<const double>(loads_).first(touched_); }
@@ -352,8 +458,15 @@ std::span<const double> ContactLaw::contact_flags() const {
 PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
     const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};
     if (tangential_at_rest(increment)) return {0.0, 0.0};
-    return layer_.trial_force(increment, loads(),
-                              contact_flags());
+    if (tangential_composes()) {
+        foundation::ComposedTangentialStep::Step step;
+        if (tangential_sticks(increment, step)) return tangential_.force(tangential_header(), step);
+        // An element would slip: the elements written (the state's values unchanged), as advance_tangential will.
+        write_tangential();
+    }
+    require_loads();
+    require_layer();
+    return layer_.trial_force(increment, loads(), contact_flags());
 }
 
 void ContactLaw::advance_tangential(PlanarVector displacement) {
@@ -364,8 +477,25 @@ void ContactLaw::advance_tangential(PlanarVector displacement) {
         displacement_ = displacement;
         return;
     }
-    layer_.advance(increment, loads(), contact_flags());
-    const PlanarVector end_force = layer_.total_force();
+    foundation::ComposedTangentialStep::Step step;
+    if (tangential_composes() && tangential_sticks(increment, step)) {
+        tangential_.advance(tangential_header(), tangential_elements(), step);
+        tangential_force_ = tangential_force(std::span<const double>(state_, state_size_));
+    } else {
+        write_tangential();
+        require_loads();
+        require_layer();
+        layer_.advance(increment, loads(), contact_flags());
+        tangential_force_ = layer_.total_force();
+        // After a step in which every element in contact stuck (and no element entered or left) the following
+        // steps are composed; a sliding contact's are not (nothing to summarise).
+        if (composed_step_ && layer_.stuck()) {
+            tangential_.summarise(tangential_header(), tangential_elements(), tangential_force_);
+        } else {
+            foundation::ComposedTangentialStep::keep(tangential_header(), tangential_force_);
+        }
+    }
+    const PlanarVector& end_force = tangential_force_;
     tangential_work_ = 0.5 * ((start_tangential_force_[0] + end_force[0]) * increment[0] +
                               (start_tangential_force_[1] + end_force[1]) * increment[1]);
     displacement_ = displacement;
@@ -433,7 +563,7 @@ SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overla
     advance_normal(overlap);
     advance_tangential(displacement);
     end(state);
-    const PlanarVector force = layer_.total_force();
+    const PlanarVector force = tangential_force_;
     return {force[0] * frame_[0] + force[1] * second[0], force[0] * frame_[1] + force[1] * second[1],
             force[0] * frame_[2] + force[1] * second[2]};
 }

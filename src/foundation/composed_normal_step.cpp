@@ -74,6 +74,7 @@ struct ComposedNormalStep::Step {
     double increment = 0.0;  ///< d1 - d0
     double rate = 0.0;       ///< the dashpots' (secant) rate
     bool free = false;       ///< some touched element is out of contact
+    double least_stress = std::numeric_limits<double>::infinity();  ///< a lower bound of the end stresses in contact
     double* weight = nullptr;  ///< G_k E_k A_k (M)
     double* next = nullptr;    ///< F P, row-major (order M + 1)
 };
@@ -152,6 +153,7 @@ bool ComposedNormalStep::prepare_with(std::span<const double> header, const Atta
         const double* __restrict floor = header.data() + scale_offset + 3 * m;
         double lower = common - g_inf_ * header[outermost_offset];
         for (std::size_t k = 0; k < m; ++k) lower += weight[k] * floor[k];
+        step.least_stress = lower;
         certain = lower >= 0.0;
     }
     if (step.free) {
@@ -196,10 +198,11 @@ double ComposedNormalStep::sum_force(std::span<const double> header, const Step&
 }
 
 bool ComposedNormalStep::advance(std::span<double> header, const AttachedElements& elements, double depth_start,
-                                 double depth_end, double& force) const {
+                                 double depth_end, double& force, double& least_stress) const {
     Step step;
     if (!prepare(header, elements, depth_start, depth_end, step)) return false;
     force = sum_force(header, step);
+    least_stress = step.least_stress;
     const std::size_t m = branches_, order = m + 1;
     const bool composed = header[composed_offset] != 0.0;
     double* scale = header.data() + scale_offset;

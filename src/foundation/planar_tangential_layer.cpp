@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "with_branches.hpp"
 
@@ -30,16 +31,18 @@ inline PlanarVector relaxed_stress(std::size_t i, Branches branches, std::size_t
 // plus k du, stays inside the friction circle of radius per_load q_i and slips along its trial otherwise; out of
 // contact (mask 0) it is force-free. Writes the new stress t, adds the element's increment du to u and updates its
 // memories, h <- E h + B du (step_coefficients.hpp; `decay` E_k, `gain` B_k). The relaxed stresses are formed here,
-// not in a pass of their own. A free function of restrict pointers: inside the member function GCC 12 leaves this
+// not in a pass of their own. Returns the number of elements in contact that slipped (an integer count, so that the
+// pass still vectorises). A free function of restrict pointers: inside the member function GCC 12 leaves this
 // loop scalar.
-__attribute__((target_clones("avx2", "default"))) void stick_or_slip(
+__attribute__((target_clones("avx2", "default"))) std::int64_t stick_or_slip(
     std::size_t count, std::size_t branches, std::size_t n, PlanarVector increment, double g_inf, double stiffness,
     double per_load, const double* __restrict weight, const double* __restrict decay, const double* __restrict gain,
     const double* __restrict mask, const double* __restrict q, const double* __restrict share,
     double* __restrict u_x, double* __restrict u_y, double* __restrict memory, double* __restrict t_x,
     double* __restrict t_y) {
-    with_branches(branches, [&](auto m) {
+    return with_branches(branches, [&](auto m) {
         const double compliance = 1.0 / stiffness;
+        std::int64_t slips = 0;
         const double along_x = increment[0], along_y = increment[1];
         for (std::size_t i = 0; i < count; ++i) {
             const PlanarVector relaxed = relaxed_stress(i, m, n, g_inf, weight, u_x, u_y, memory);
@@ -50,6 +53,8 @@ __attribute__((target_clones("avx2", "default"))) void stick_or_slip(
             const double trial_y = relaxed[1] + stiffness * moved_y;
             const double magnitude = std::sqrt(trial_x * trial_x + trial_y * trial_y);
             const bool sticks = in != 0.0 && magnitude <= bound;
+            // bitwise, not &&: GCC 12 leaves the loop scalar with the conditional form of this count
+            slips += static_cast<std::int64_t>(in != 0.0) & static_cast<std::int64_t>(!sticks);
             const double scale = sticks ? 1.0 : (in != 0.0 ? bound / magnitude : 0.0);
             const double stress_x = trial_x * scale, stress_y = trial_y * scale;
             const double du_x = sticks ? moved_x : (stress_x - relaxed[0]) * compliance;
@@ -65,6 +70,7 @@ __attribute__((target_clones("avx2", "default"))) void stick_or_slip(
             t_x[i] = stress_x;
             t_y[i] = stress_y;
         }
+        return slips;
     });
 }
 
@@ -123,9 +129,9 @@ void PlanarTangentialLayer::advance(PlanarVector increment, std::span<const doub
     double* u = displacements();
     const double* t_x = stress_.data();
     const double* t_y = stress_.data() + n;
-    stick_or_slip(count, weight_.size(), n, increment, material_.equilibrium_modulus(), step_.stiffness, per_load_,
+    stuck_ = stick_or_slip(count, weight_.size(), n, increment, material_.equilibrium_modulus(), step_.stiffness, per_load_,
                   weight_.data(), step_.decay.data(), step_.gain.data(), contact.data(), normal_line_loads.data(),
-                  share_.data(), u, u + n, memories(), stress_.data(), stress_.data() + n);
+                  share_.data(), u, u + n, memories(), stress_.data(), stress_.data() + n) == 0;
     double sum_x = 0.0, sum_y = 0.0;
     for (std::size_t i = 0; i < count; ++i) {
         sum_x += t_x[i];

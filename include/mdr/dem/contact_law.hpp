@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mdr/foundation/composed_normal_step.hpp"
+#include "mdr/foundation/composed_tangential_step.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/planar_tangential_layer.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
@@ -30,7 +31,9 @@ using SpatialVector = std::array<double, 3>;
 /// initialise() at first touch; the elements are stepped in place there (no copy into the workspace and back),
 /// the workspace keeps only what a step derives. While no element enters or leaves normal contact the normal step
 /// is composed in the state's header (foundation::ComposedNormalStep, O(M)): it reads and writes the header only,
-/// not the elements. A step of one contact:
+/// not the elements; while, besides, every element in contact sticks, so is the tangential step (a second header,
+/// foundation::ComposedTangentialStep), from the step after one in which the layer's elements all stuck. A step of
+/// one contact:
 ///
 ///     law.begin(state);                      // attaches the contact's state (its header checked)
 ///     law.normal_trial(overlap);             // optional: F_N for a trial overlap (an implicit integrator's solve)
@@ -56,7 +59,7 @@ public:
     ContactLaw(const rheology::Rheology& material, double radius, double friction, std::size_t elements,
                double half_width, double time_step);
 
-    /// Doubles of one contact's state for N elements and M relaxation branches: M^2 + 8 M + 21 + N (3 M + 4).
+    /// Doubles of one contact's state for N elements and M relaxation branches: 2 M^2 + 16 M + 31 + N (3 M + 4).
     static std::size_t state_size(std::size_t elements, std::size_t branches);
     /// state_size for this law's N and M.
     std::size_t state_size() const { return state_size_; }
@@ -64,12 +67,20 @@ public:
     /// composed normal step's header, the overlap, normal force and element count): all that a held step without
     /// friction touches (a code may prefetch them; docs/dem.md, "Is the step memory-bound?").
     std::size_t held_step_size() const { return normal_offset_ + 3; }
+    /// With friction, a held step whose elements all stick touches besides these held_tangential_size() doubles
+    /// from held_tangential_offset(): the composed tangential step's header, the layer's force and element count
+    /// (0 doubles for a law without friction, whose layer stays at rest).
+    std::size_t held_tangential_offset() const { return tangential_header_offset_; }
+    /// See held_tangential_offset().
+    std::size_t held_tangential_size() const { return friction_ > 0.0 ? tangential_size_ + 3 : 0; }
     /// Zeroes a contact's state at first touch (state_size() doubles).
     void initialise(std::span<double> state) const;
     /// Throws mdr::InvalidInput (key `state[i]`) unless `state` is a state this law could have written: state_size()
     /// doubles, all finite, element counts within N, contact flags 0 or 1 and as many as the header counts, the
     /// header's flag "composed" 0 or 1 with composition factors in (0, 1] and a summary of the written elements
-    /// that is theirs (ComposedNormalStep::summary_mismatch), a unit frame axis with handedness +-1
+    /// that is theirs (ComposedNormalStep::summary_mismatch), the same of the tangential header
+    /// (ComposedTangentialStep::summary_mismatch; while it composes, the layer touched what the Foundation did and
+    /// no more elements are in contact than the normal header counts), a unit frame axis with handedness +-1
     /// (or all zero before the first advance_spatial). For states read back from a file (a restart).
     void check(std::span<const double> state) const;
     /// Turns a contact's state into the same contact seen with the two bodies swapped (a code that stores a
@@ -93,7 +104,9 @@ public:
     /// when the contact would grow beyond the half-width, (key `overlap`) for an overlap that is not finite.
     void advance_normal(double overlap);
     /// Tangential force [N] if the step ended at tangential displacement `displacement` [m] (after
-    /// advance_normal); the state is not changed.
+    /// advance_normal), to the bit the force advance_tangential would give. The state keeps its values; where an
+    /// element would slip out of a composed tangential step the elements are brought up to date first (the maps
+    /// applied, as advance_tangential does).
     PlanarVector tangential_trial(PlanarVector displacement) const;
     /// Advances the tangential problem to `displacement` [m] (after advance_normal); throws mdr::InvalidInput (key
     /// `displacement`) unless it is finite. A layer never touched stays at rest, unstepped, while the law has no
@@ -118,7 +131,7 @@ public:
     /// Normal force F_N [N] (eq. 21) of the workspace after the last advance_normal.
     double normal_force() const { return normal_force_; }
     /// Tangential force [N] (eq. 46) of the workspace after the last advance_tangential.
-    PlanarVector tangential_force() const { return layer_.total_force(); }
+    PlanarVector tangential_force() const { return tangential_force_; }
     /// Where inside the last normal step (0..1) the last element to leave contact left; 0 when none left.
     double latest_exit() const { return composed_step_ ? 0.0 : foundation_.latest_exit(); }
     /// Number of elements in normal contact after the last advance_normal (0: the contact has ended).
@@ -138,9 +151,10 @@ public:
 
     /// Normal force [N] stored in a contact's state (after end()).
     double normal_force(std::span<const double> state) const { return state[normal_offset_ + 1]; }
-    /// Tangential force [N] stored in a contact's state.
+    /// Tangential force [N] stored in a contact's state (in the composed tangential step's header).
     PlanarVector tangential_force(std::span<const double> state) const {
-        return {state[tangential_offset_], state[tangential_offset_ + 1]};
+        const std::size_t force = tangential_header_offset_ + foundation::ComposedTangentialStep::force_offset;
+        return {state[force], state[force + 1]};
     }
     /// Tangential force [N] on the second body stored in a contact's state, as a vector for the contact's unit
     /// `normal` (that of its last advance_spatial); zero before the first.
@@ -154,12 +168,24 @@ private:
     // The state: [0, 2) the tangential displacement, [2, 5) the frame's first axis, [5] its handedness (e2 =
     // handedness normal x e1; 0 before the first advance_spatial), then the composed normal step's header (first, so
     // that a step without an entry or exit touches the state's first cache lines only), the Foundation's attached
-    // state and the layer's.
+    // state, the composed tangential step's header (just before the layer's force and count, which every step reads:
+    // a held step with every element sticking touches those lines besides the first, one without friction not) and
+    // the layer's state (whose own force is that of its last element-by-element step; the contact's is in the
+    // tangential header).
     static constexpr std::size_t frame_offset = 2;
     static constexpr std::size_t handedness_offset = 5;
     static constexpr std::size_t header_offset = 6;
     std::span<double> header() const { return {state_ + header_offset, header_size_}; }
+    std::span<double> tangential_header() const { return {state_ + tangential_header_offset_, tangential_size_}; }
     foundation::AttachedElements elements() const;
+    foundation::PlanarElements tangential_elements() const;
+    bool tangential_composes() const;
+    bool tangential_sticks(PlanarVector increment, foundation::ComposedTangentialStep::Step& step) const;
+    void require_loads() const;
+    void require_layer() const;
+    void write_tangential() const;
+    void check_tangential_header(std::span<const double> state, std::size_t active, std::size_t touched,
+                                 std::size_t contacts) const;
     void prepare_foundation(bool summarise);
     std::span<const double> loads() const;
     std::span<const double> contact_flags() const;
@@ -171,15 +197,21 @@ private:
 
     foundation::Foundation foundation_;
     foundation::ComposedNormalStep composed_;
-    foundation::PlanarTangentialLayer layer_;
+    foundation::ComposedTangentialStep tangential_;
+    mutable foundation::PlanarTangentialLayer layer_;  ///< attached and prepared where a step needs it
     foundation::StepCoefficients coefficients_;
     rheology::Rheology material_;
-    std::vector<double> loads_;  ///< q_z,i of the last normal step
+    mutable std::vector<double> loads_;  ///< q_z,i of the last normal step (derived when needed: require_loads)
+    mutable bool loads_ready_ = false;   ///< loads_ holds the last normal step's
+    mutable bool layer_ready_ = false;   ///< layer_ is attached to this step's state and prepared (require_layer)
+    std::size_t layer_touched_ = 0;      ///< the layer's touched elements at begin
     double friction_;
     bool tangential_idle_ = false;  ///< the layer stays at rest this step (tangential_at_rest): nothing to step
     std::size_t branches_;
     std::size_t header_size_;
+    std::size_t tangential_size_;           ///< the composed tangential step's header
     std::size_t normal_offset_;  ///< the Foundation's attached state: depth, force, touched count, the elements
+    std::size_t tangential_header_offset_;  ///< the composed tangential step's header, before the layer's state
     std::size_t tangential_offset_;
     std::size_t state_size_;
     PlanarVector displacement_{0.0, 0.0};  ///< tangential displacement at the start of the step
@@ -188,6 +220,8 @@ private:
     double overlap_ = 0.0;  ///< overlap at the start of the step
     double* state_ = nullptr;  ///< the contact's state from begin() on
     bool composed_step_ = false;  ///< the last normal step was composed (no entry or exit)
+    double least_stress_ = 0.0;   ///< a lower bound of its end stresses in contact (ComposedNormalStep::advance)
+    PlanarVector tangential_force_{0.0, 0.0};  ///< F_t after the last advance_tangential
     double normal_force_ = 0.0;   ///< F_N after the last advance_normal
     std::size_t contact_count_ = 0;  ///< elements in contact after the last advance_normal
     std::size_t touched_ = 0;        ///< elements touched after the last advance_normal

@@ -62,9 +62,11 @@ public:
     void set_step(const StepCoefficients& coefficients);
     /// Steps from `depth_start` to `depth_end` [m] in the composed form and returns true, writing the header only
     /// (but see write), when no element enters or leaves contact, none is reached for the first time and the depth
-    /// stays within the foundation; else returns false and changes nothing. `force` is then F_N at the end (eq. 21).
+    /// stays within the foundation; else returns false and changes nothing. `force` is then F_N at the end (eq. 21)
+    /// and `least_stress` a lower bound [Pa] of the end stresses sigma_i of the elements in contact (from the
+    /// header's summary; +infinity when none is in contact; it may be negative though none is).
     bool advance(std::span<double> header, const AttachedElements& elements, double depth_start, double depth_end,
-                 double& force) const;
+                 double& force, double& least_stress) const;
     /// F_N [N] if the step went from `depth_start` to `depth_end`, when advance would take it; false otherwise.
     bool trial_force(std::span<const double> header, const AttachedElements& elements, double depth_start,
                      double depth_end, double& force) const;

@@ -50,6 +50,8 @@ public:
                  std::span<const double> contact);
     /// Total tangential force [N] after the last step (eq. 46, both halves).
     PlanarVector total_force() const { return total_force_; }
+    /// Whether every element in normal contact stuck in the last advance (none slipped, eq. 50).
+    bool stuck() const { return stuck_; }
     /// Number of elements.
     std::size_t size() const { return count_; }
     /// Elements [0, touched()) have been in normal contact during a step; the others have u = h = 0.
@@ -93,6 +95,7 @@ private:
     EntryShares share_;                 ///< part of the prepared step's increment each element takes
     StepCoefficients step_;
     bool prepared_ = false;             ///< step_ and weight_ hold a step's (begin_step)
+    bool stuck_ = false;                ///< no element in contact slipped in the last advance
     std::size_t touched_ = 0;           ///< elements [touched_, n) have never been in contact: u = h = 0
     std::size_t high_water_ = 0;        ///< the largest touched_ any loaded or stepped state had
     PlanarVector total_force_{0.0, 0.0};

@@ -45,11 +45,12 @@ namespace mdr::dem {
 namespace {
 
 // The state's layout for make_law's N = 50, M = 2 (contact_law.hpp): the law's 6 doubles, the composed normal step's
-// header, the Foundation's depth, force and touched count, then its w, flags and h (50 (2 + 2)), then the layer's.
+// header, the Foundation's depth, force and touched count, then its w, flags and h (50 (2 + 2)), the composed
+// tangential step's header, then the layer's.
 constexpr std::size_t law_header = 6;
 const std::size_t normal_start = law_header + foundation::ComposedNormalStep::header_size(2);
 const std::size_t normal_touched = normal_start + 2;
-const std::size_t layer_start = normal_start + 3 + 50 * 4;
+const std::size_t layer_start = normal_start + 3 + 50 * 4 + foundation::ComposedTangentialStep::header_size(2);
 
 ContactLaw make_law() {
     return ContactLaw(rheology::Rheology::prony(1e6, {{3e6, 1e-3}, {1e6, 3e-5}}), 0.005, 0.3, 50, 1e-3, 2e-6);
@@ -184,10 +185,10 @@ TEST(DemContactLaw, AStepAllocatesNothing) {
 #endif
 
 TEST(DemContactLaw, StateSizeAndBadParameters) {
-    // M^2 + 8 M + 21 + N (3 M + 4): at N = 20, M = 1 no more than the 12 + N (3 M + 5) = 172 before the composed
-    // normal step's header (18 doubles) took the place of the element stresses (20).
-    EXPECT_EQ(ContactLaw::state_size(20, 1), 30u + 20u * 7u);
-    EXPECT_LE(ContactLaw::state_size(20, 1), 172u);
+    // 2 M^2 + 16 M + 31 + N (3 M + 4): the composed normal step's header (18 doubles at M = 1, in the place of the
+    // element stresses) and the composed tangential step's (19) beside the elements.
+    EXPECT_EQ(ContactLaw::state_size(20, 1), 49u + 20u * 7u);
+    EXPECT_EQ(ContactLaw::state_size(50, 2), 2u * 4u + 32u + 31u + 50u * 10u);
     EXPECT_EQ(make_law().state_size(), ContactLaw::state_size(50, 2));
     const auto material = rheology::Rheology::standard(1e6, 3e6, 1e-3);
     EXPECT_THROW(ContactLaw(material, 0.0, 0.3, 20, 1e-3, 1e-6), InvalidInput);
