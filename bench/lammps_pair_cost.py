@@ -161,7 +161,7 @@ def run(law):
     return pair / (STEPS * contacts), contacts, memory, forces
 
 
-state = TERMS * TERMS + 8 * TERMS + 21 + ELEMENTS * (3 * TERMS + 4)
+state = 2 * TERMS * TERMS + 16 * TERMS + 31 + ELEMENTS * (3 * TERMS + 4)  # ContactLaw::state_size
 unit, scale = ("L2-missed bytes", 1.0) if CACHE_SIM else ("instructions", 1.0) if CALLGRIND else ("ns", 1e9)
 sliding = f" {'F_N [N]':>9s} {'|F_t|/(mu F_N)':>14s}" if SLIDE is not None else ""
 print(f"{'law':72s} {unit + '/contact-step':>24s} {'ratio':>6s} {'contacts':>9s} {'MB/rank':>8s}" + sliding)
@@ -173,4 +173,4 @@ for mu, (base_name, base_law), (name, law) in PAIRS:
             normal, tangential = forces
             row += f" {normal:9.4g} {f'{tangential / (mu * normal):.4f}' if mu else '-':>14s}"
         print(row)
-print(f"mdr/visco history per contact: {state} doubles = {state * 8} bytes (M^2 + 8M + 21 + N (3M + 4))")
+print(f"mdr/visco history per contact: {state} doubles = {state * 8} bytes (2 M^2 + 16 M + 31 + N (3 M + 4))")
