@@ -291,11 +291,12 @@ void PairMdrVisco::compute(int eflag, int vflag)
   std::size_t leading = 1;
   for (const auto &law : laws)
     if (law) leading = std::max(leading, law->held_step_size());
-  // with friction also the composed tangential step's header and the layer's count (ContactLaw::
-  // held_tangential_offset and _size): the span that covers every law's, empty without friction
+  // and those further on (ContactLaw::held_tangential_offset and _size: with friction the composed tangential
+  // step's header and the layer's force and count, without friction the layer's count): the span that covers
+  // every law's
   std::size_t tangential_first = static_cast<std::size_t>(size_history), tangential_last = 0;
   for (const auto &law : laws) {
-    if (!law || law->held_tangential_size() == 0) continue;
+    if (!law) continue;
     tangential_first = std::min(tangential_first, law->held_tangential_offset());
     tangential_last = std::max(tangential_last, law->held_tangential_offset() + law->held_tangential_size());
   }

@@ -67,12 +67,16 @@ public:
     /// composed normal step's header, the overlap, normal force and element count): all that a held step without
     /// friction touches (a code may prefetch them; docs/dem.md, "Is the step memory-bound?").
     std::size_t held_step_size() const { return normal_offset_ + 3; }
-    /// With friction, a held step whose elements all stick touches besides these held_tangential_size() doubles
-    /// from held_tangential_offset(): the composed tangential step's header, the layer's force and element count
-    /// (0 doubles for a law without friction, whose layer stays at rest).
-    std::size_t held_tangential_offset() const { return tangential_header_offset_; }
+    /// Besides these, a held step touches held_tangential_size() doubles from held_tangential_offset() (a code may
+    /// prefetch them too): with friction, where every element sticks, the composed tangential step's header and the
+    /// layer's force and element count; without friction the layer's element count alone (begin reads it: a layer
+    /// never touched stays at rest).
+    std::size_t held_tangential_offset() const {
+        return friction_ > 0.0 ? tangential_header_offset_
+                               : tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset;
+    }
     /// See held_tangential_offset().
-    std::size_t held_tangential_size() const { return friction_ > 0.0 ? tangential_size_ + 3 : 0; }
+    std::size_t held_tangential_size() const { return friction_ > 0.0 ? tangential_size_ + 3 : 1; }
     /// Zeroes a contact's state at first touch (state_size() doubles).
     void initialise(std::span<double> state) const;
     /// Throws mdr::InvalidInput (key `state[i]`) unless `state` is a state this law could have written: state_size()

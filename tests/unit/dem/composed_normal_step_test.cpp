@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -116,6 +117,43 @@ TEST(DemComposedNormalStep, AHeldFrictionlessStepTouchesItsLeadingDoublesOnly) {
     for (std::size_t i = law.held_step_size(); i < state.size(); ++i) EXPECT_EQ(state[i], before[i]) << i;
     EXPECT_LT(law.normal_force(state), law.normal_force(std::span<const double>(before)));  // relaxed
     EXPECT_EQ(law.held_step_size(), 6 + foundation::ComposedNormalStep::header_size(1) + 3);  // contact_law.hpp
+}
+
+// A held step without friction reads nothing beyond held_step_size() and the held_tangential range (the layer's
+// count): every other double of its state made NaN, the step gives the force, the element count and the leading
+// doubles to the bit, and writes nothing else (what a pair style prefetches covers what the step reads).
+TEST(DemComposedNormalStep, AHeldFrictionlessStepReadsItsHeldRangesOnly) {
+    const auto material = rheology::Rheology::prony(1e6, {{1e6, 1e-4}, {1e6, 1.3e-3}});
+    ContactLaw law(material, radius, 0.0, elements, half_width, time_step);
+    std::vector<double> state(law.state_size());
+    law.initialise(state);
+    for (int n = 1; n <= 100; ++n) {
+        law.advance_spatial(state, peak_overlap * n / 100.0, {0.0, 0.0, 1.0}, {0.0, 0.0, 0.0});
+    }
+    for (int n = 0; n < 5; ++n) law.advance_spatial(state, peak_overlap, {0.0, 0.0, 1.0}, {1e-9, 0.0, 0.0});
+    const std::size_t leading = law.held_step_size(), first = law.held_tangential_offset();
+    const std::size_t last = first + law.held_tangential_size();
+    ASSERT_GT(first, leading);
+    ASSERT_LE(last, state.size());
+    auto poisoned = state;
+    for (std::size_t i = leading; i < state.size(); ++i) {
+        if (i < first || i >= last) poisoned[i] = std::numeric_limits<double>::quiet_NaN();
+    }
+    for (int n = 0; n < 20; ++n) {
+        law.advance_spatial(state, peak_overlap, {0.0, 0.0, 1.0}, {1e-9, 0.0, 0.0});
+        const double force = law.normal_force(state);
+        const std::size_t contacts = law.contact_count();
+        law.advance_spatial(poisoned, peak_overlap, {0.0, 0.0, 1.0}, {1e-9, 0.0, 0.0});
+        ASSERT_EQ(law.normal_force(std::span<const double>(poisoned)), force) << "step " << n;
+        ASSERT_EQ(law.contact_count(), contacts) << "step " << n;
+    }
+    for (std::size_t i = 0; i < state.size(); ++i) {
+        if (i < leading || (i >= first && i < last)) {
+            EXPECT_EQ(poisoned[i], state[i]) << i;
+        } else {
+            EXPECT_TRUE(std::isnan(poisoned[i])) << i;
+        }
+    }
 }
 
 // A DEM code may change its time step between steps (LAMMPS's fix dt/reset) while a contact is held in the composed
