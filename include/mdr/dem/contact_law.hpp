@@ -198,6 +198,7 @@ private:
     bool tangential_at_rest(PlanarVector increment) const;
     void skip_resting_layer(PlanarVector displacement);
     void require_state_size(std::span<const double> state) const;
+    void take_state(std::span<double> state);
     [[noreturn, gnu::noinline, gnu::cold]] void refuse_state_size(std::size_t size) const;
 
     foundation::Foundation foundation_;
