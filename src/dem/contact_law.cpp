@@ -261,8 +261,9 @@ void ContactLaw::check_tangential_header(std::span<const double> state, std::siz
     std::vector<double> written(state.begin() + static_cast<std::ptrdiff_t>(tangential_offset_ + 3),
                                 state.begin() + static_cast<std::ptrdiff_t>(state_size_));
     const double* flags = state.data() + normal_offset_ + 3 + n;
-    const std::size_t mismatch = tangential_.summary_mismatch(
-        state.subspan(tangential_header_offset_, tangential_size_), {written.data(), written.data() + 2 * n, flags, n, active});
+    const std::size_t mismatch =
+        tangential_.summary_mismatch(state.subspan(tangential_header_offset_, tangential_size_),
+                                     {written.data(), written.data() + 2 * n, flags, n, active});
     if (mismatch < tangential_size_) {
         throw InvalidInput(entry(tangential_header_offset_ + mismatch),
                            format_value(state[tangential_header_offset_ + mismatch]),

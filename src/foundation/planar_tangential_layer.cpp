@@ -129,9 +129,12 @@ void PlanarTangentialLayer::advance(PlanarVector increment, std::span<const doub
     double* u = displacements();
     const double* t_x = stress_.data();
     const double* t_y = stress_.data() + n;
-    stuck_ = stick_or_slip(count, weight_.size(), n, increment, material_.equilibrium_modulus(), step_.stiffness, per_load_,
-                  weight_.data(), step_.decay.data(), step_.gain.data(), contact.data(), normal_line_loads.data(),
-                  share_.data(), u, u + n, memories(), stress_.data(), stress_.data() + n) == 0;
+    const std::int64_t slips =
+        stick_or_slip(count, weight_.size(), n, increment, material_.equilibrium_modulus(), step_.stiffness,
+                      per_load_, weight_.data(), step_.decay.data(), step_.gain.data(), contact.data(),
+                      normal_line_loads.data(), share_.data(), u, u + n, memories(), stress_.data(),
+                      stress_.data() + n);
+    stuck_ = slips == 0;
     double sum_x = 0.0, sum_y = 0.0;
     for (std::size_t i = 0; i < count; ++i) {
         sum_x += t_x[i];
