@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "mdr/error.hpp"
+#include "thrown_key.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/planar_tangential_layer.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
@@ -180,16 +181,7 @@ TEST(DemComposedTangentialStep, AHeldStickingStepTouchesItsHeldRangesOnly) {
     }
 }
 
-// The key of an InvalidInput that `body` throws ("" when it throws none).
-template <typename Body>
-std::string thrown_key(Body&& body) {
-    try {
-        body();
-    } catch (const InvalidInput& error) {
-        return error.key();
-    }
-    return "";
-}
+using testing::thrown_key;
 
 // check() (a restart) validates the tangential header: its flag, its count of the elements in contact, its
 // composition factors, and its summary of the written elements, which the composed steps read in their place.

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "mdr/error.hpp"
+#include "thrown_key.hpp"
 
 // AddressSanitizer replaces the global allocation functions itself: the counting replacement below (and the test
 // that reads it) exist in builds without it.
@@ -197,16 +198,7 @@ TEST(DemContactLaw, StateSizeAndBadParameters) {
     EXPECT_THROW(ContactLaw(material, 0.01, 0.3, 20, 1e-3, 0.0), InvalidInput);
 }
 
-// The key of an InvalidInput that `body` throws ("" when it throws none).
-template <typename Body>
-std::string thrown_key(Body&& body) {
-    try {
-        body();
-    } catch (const InvalidInput& error) {
-        return error.key();
-    }
-    return "";
-}
+using testing::thrown_key;
 
 TEST(DemContactLaw, ACorruptedStateRaisesNamingTheEntry) {
     auto law = make_law();

@@ -14,6 +14,7 @@
 #include "mdr/drivers/oblique_sphere.hpp"
 #include "mdr/drivers/shore.hpp"
 #include "mdr/error.hpp"
+#include "thrown_key.hpp"
 #include "mdr/profile/profile.hpp"
 #include "mdr/rheology/contact_bodies.hpp"
 #include "mdr/rheology/power_law.hpp"
@@ -32,20 +33,11 @@ ContactCase creep_test() {
     return contact_case;
 }
 
-// The key of the InvalidInput that `call` throws ("" when it throws none).
-template <typename Call>
-std::string key_of(Call call) {
-    try {
-        call();
-    } catch (const InvalidInput& error) {
-        return error.key();
-    }
-    return "";
-}
+using testing::thrown_key;
 
 TEST(CaseValidation, AValidCaseRuns) {
     const auto contact_case = creep_test();
-    EXPECT_EQ(key_of([&] { validate(contact_case); }), "");
+    EXPECT_EQ(thrown_key([&] { validate(contact_case); }), "");
     EXPECT_GT(run_case(contact_case).force.back(), 0.0);
 }
 
@@ -65,38 +57,38 @@ ContactCase power_law_creep_test(const rheology::TimeWindow& window) {
 // require_certified_over): the creep test lasts 1 s, so a series certified to 0.1 s only is refused naming
 // `material`, by validate and by the driver, before anything runs.
 TEST(CaseValidation, ASeriesCertifiedOverFewerLagsThanTheCaseNeedsIsRefusedNamingTheMaterial) {
-    EXPECT_EQ(key_of([&] { validate(power_law_creep_test({1e-4, 1.0})); }), "");
-    EXPECT_EQ(key_of([&] { validate(power_law_creep_test({1e-5, 10.0})); }), "");
+    EXPECT_EQ(thrown_key([&] { validate(power_law_creep_test({1e-4, 1.0})); }), "");
+    EXPECT_EQ(thrown_key([&] { validate(power_law_creep_test({1e-5, 10.0})); }), "");
     const auto short_series = power_law_creep_test({1e-4, 0.1});
-    EXPECT_EQ(key_of([&] { validate(short_series); }), "material");
-    EXPECT_EQ(key_of([&] { run_case(short_series); }), "material");
-    EXPECT_EQ(key_of([&] { validate(power_law_creep_test({1e-3, 1.0})); }), "material");  // steps below its start
+    EXPECT_EQ(thrown_key([&] { validate(short_series); }), "material");
+    EXPECT_EQ(thrown_key([&] { run_case(short_series); }), "material");
+    EXPECT_EQ(thrown_key([&] { validate(power_law_creep_test({1e-3, 1.0})); }), "material");  // steps below its start
     // An impact has no window without load.end: a converted series there is refused naming it.
     auto impact = power_law_creep_test({1e-4, 1.0});
     impact.control = ImpactControl{.mass = 1e-3, .velocity = 0.1};
     impact.load.history = LoadHistory({{0.0, 0.0}}, "load.history");
     impact.end_time = std::numeric_limits<double>::infinity();
-    EXPECT_EQ(key_of([&] { validate(impact); }), "load.end");
+    EXPECT_EQ(thrown_key([&] { validate(impact); }), "load.end");
 }
 
 TEST(CaseValidation, ANegativeForceIsRefusedNotANaNDepth) {
     auto contact_case = creep_test();
     contact_case.load.history = LoadHistory({{0.0, 0.0}, {0.1, -0.5}}, "load.history");
-    EXPECT_EQ(key_of([&] { validate(contact_case); }), "load.history[1].F");
-    EXPECT_EQ(key_of([&] { run_case(contact_case); }), "load.history[1].F");
+    EXPECT_EQ(thrown_key([&] { validate(contact_case); }), "load.history[1].F");
+    EXPECT_EQ(thrown_key([&] { run_case(contact_case); }), "load.history[1].F");
 }
 
 TEST(CaseValidation, AForgottenEndTimeIsRefusedNotARunOfNoSteps) {
     auto contact_case = creep_test();
     contact_case.end_time = 0.0;
-    EXPECT_EQ(key_of([&] { run_case(contact_case); }), "load.end");
+    EXPECT_EQ(thrown_key([&] { run_case(contact_case); }), "load.end");
 }
 
 TEST(CaseValidation, AHistoryWhoseRateOverflowsIsRefusedNotANaNForce) {
     // 1e308 m over 0.5 s: the rate 2e308 m/s is beyond a double (the fuzzer's approach that ended in F = nan).
-    EXPECT_EQ(key_of([] { LoadHistory({{0.0, -1e308}, {0.5, 5e-5}}, "load.history"); }), "load.history[1].value");
-    EXPECT_EQ(key_of([] { LoadHistory({{0.0, -1e307}, {0.5, 5e-5}}, "load.history"); }), "");
-    EXPECT_EQ(key_of([] { LoadHistory({{0.0, 0.0}, {0.0, 1.0}}, "load.history"); }), "");  // a jump has no rate
+    EXPECT_EQ(thrown_key([] { LoadHistory({{0.0, -1e308}, {0.5, 5e-5}}, "load.history"); }), "load.history[1].value");
+    EXPECT_EQ(thrown_key([] { LoadHistory({{0.0, -1e307}, {0.5, 5e-5}}, "load.history"); }), "");
+    EXPECT_EQ(thrown_key([] { LoadHistory({{0.0, 0.0}, {0.0, 1.0}}, "load.history"); }), "");  // a jump has no rate
 }
 
 ContactCase oblique_impact(std::shared_ptr<const profile::Profile> indenter) {
@@ -120,7 +112,7 @@ ObliqueSphere sphere_of(const ContactCase& contact_case) {
 
 TEST(CaseValidation, AnObliqueImpactTakesItsLeverFromTheSphereAndRefusesOtherShapes) {
     auto contact_case = oblique_impact(profile::make_sphere(0.01));
-    EXPECT_EQ(key_of([&] { validate(contact_case); }), "");
+    EXPECT_EQ(thrown_key([&] { validate(contact_case); }), "");
     EXPECT_DOUBLE_EQ(sphere_of(contact_case).radius, 0.01);
     EXPECT_DOUBLE_EQ(sphere_of(contact_case).moment_of_inertia, 0.4 * 0.03 * 0.01 * 0.01);  // a solid sphere
     EXPECT_GT(run_case(contact_case).impact->oblique->impulse_ratio, 0.0);
@@ -128,11 +120,11 @@ TEST(CaseValidation, AnObliqueImpactTakesItsLeverFromTheSphereAndRefusesOtherSha
     oblique.moment_of_inertia = 2e-6;
     EXPECT_DOUBLE_EQ(sphere_of(contact_case).moment_of_inertia, 2e-6);
     oblique.moment_of_inertia = 0.0;
-    EXPECT_EQ(key_of([&] { validate(contact_case); }), "indenter.moment_of_inertia");
-    EXPECT_EQ(key_of([&] { validate(oblique_impact(profile::make_cone(10.0))); }), "indenter.shape");
+    EXPECT_EQ(thrown_key([&] { validate(contact_case); }), "indenter.moment_of_inertia");
+    EXPECT_EQ(thrown_key([&] { validate(oblique_impact(profile::make_cone(10.0))); }), "indenter.shape");
     auto compressible = oblique_impact(profile::make_sphere(0.01));
     compressible.tangential_exact = false;  // as rheology::contact_material gives for K or a second body
-    EXPECT_EQ(key_of([&] { validate(compressible); }), "load.tangential_velocity");
+    EXPECT_EQ(thrown_key([&] { validate(compressible); }), "load.tangential_velocity");
 }
 
 // A smooth indenter of its own type (a sphere under another name, as a new shape would be): what decides an oblique
@@ -153,7 +145,7 @@ private:
 
 TEST(CaseValidation, AnObliqueImpactAsksTheIndentersTypeForItsLeverNotItsName) {
     const auto renamed = oblique_impact(std::make_shared<RenamedSphere>(0.01));
-    EXPECT_EQ(key_of([&] { validate(renamed); }), "");
+    EXPECT_EQ(thrown_key([&] { validate(renamed); }), "");
     EXPECT_DOUBLE_EQ(sphere_of(renamed).radius, 0.01);
     const auto outcome = run_case(renamed).impact->oblique;  // the same profile under its own name: the same run
     const auto expected = run_case(oblique_impact(profile::make_sphere(0.01))).impact->oblique;
@@ -165,7 +157,7 @@ TEST(CaseValidation, EveryRuleNamesItsKey) {
     const auto expect_key = [](const std::string& key, auto change) {
         auto contact_case = creep_test();
         change(contact_case);
-        EXPECT_EQ(key_of([&] { validate(contact_case); }), key);
+        EXPECT_EQ(thrown_key([&] { validate(contact_case); }), key);
     };
     expect_key("indenter", [](ContactCase& c) { c.indenter.reset(); });
     expect_key("output.snapshots[0]", [](ContactCase& c) { c.snapshots = {2.0}; });
@@ -194,18 +186,18 @@ TEST(CaseValidation, AMaterialApartFromItsBodiesIsRefused) {
     ContactCase with_bodies = creep_test();
     set_bodies(with_bodies, {rheology::Body{rheology::ModelMaterial{rheology::Rheology::standard(1e6, 2e6, 0.1),
                                                                     {.description = "standard"}}}});
-    EXPECT_EQ(key_of([&] { validate(with_bodies); }), "");
+    EXPECT_EQ(thrown_key([&] { validate(with_bodies); }), "");
 
     ContactCase other_material = with_bodies;
     other_material.material = rheology::Rheology::standard(1e6, 3e6, 0.1);
-    EXPECT_EQ(key_of([&] { validate(other_material); }), "material");
+    EXPECT_EQ(thrown_key([&] { validate(other_material); }), "material");
 
     ContactCase other_origin = with_bodies;
     other_origin.material_origin.description = "a fitted candidate";
-    EXPECT_EQ(key_of([&] { validate(other_origin); }), "material_origin");
+    EXPECT_EQ(thrown_key([&] { validate(other_origin); }), "material_origin");
 
     other_material.bodies.reset();
-    EXPECT_EQ(key_of([&] { validate(other_material); }), "");
+    EXPECT_EQ(thrown_key([&] { validate(other_material); }), "");
 }
 
 // A Shore test's spring is the durometer's (its ShoreTest's spring rate, ASTM D2240): another constant is refused
@@ -216,7 +208,7 @@ TEST(CaseValidation, AShoreTestsSpringIsTheDurometers) {
     shore_case.indenter = durometer_indenter(ShoreScale::A);
     shore_case.load.history = shore_base_history(test);
     shore_case.control = SpringControl{.spring_constant = test.instrument.spring_rate, .shore = test};
-    EXPECT_EQ(key_of([&] { validate(shore_case); }), "");
+    EXPECT_EQ(thrown_key([&] { validate(shore_case); }), "");
     for (const double spring_constant : {5.0, 0.0}) {
         shore_case.control = SpringControl{.spring_constant = spring_constant, .shore = test};
         try {
