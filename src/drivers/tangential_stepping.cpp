@@ -80,8 +80,7 @@ void TangentialStepper::jump(double time) {
     const bool in_contact = foundation_.total_force() > 0.0 && foundation_.contact_count() > 0;
     const double target = load_.load.value(time);
     const bool force_control = load_.control == TangentialControl::force;
-    // The rule of a step (the foundation's flags; a jump to zero keeps them, and F_x then slides at no force).
-    if (force_control && target != 0.0 && foundation_.contact_count() == 0) refuse_without_contact(time);
+    if (force_control && target != 0.0 && !in_contact) refuse_without_contact(time);
     const auto loads = foundation_.line_loads();
     const auto q = std::span<const double>(loads).first(foundation_.touched());
     const std::vector<double> none(in_contact ? 0 : foundation_.touched(), 0.0);

@@ -31,9 +31,9 @@ public:
     /// (Foundation::jump; TangentialLayer::begin_jump, eq. T1): no element moves; an element out of normal contact
     /// after the jump is force-free, one in contact is held within mu times its new normal force. Under
     /// displacement control the indenter's rate is kept (a tangential history has no jumps); under force control
-    /// the rate changes so that F_x is the load's value (eq. T2; gross sliding where mu F_N' cannot carry it, as
-    /// after a jump to zero force, which leaves no element in contact). Throws mdr::InvalidInput (key `tangential`)
-    /// as step does: a tangential force while no element is in normal contact.
+    /// the rate changes so that F_x is the load's value (eq. T2; gross sliding where mu F_N' cannot carry it).
+    /// Throws mdr::InvalidInput (key `tangential`) when the tangential force is not zero while the jump leaves no
+    /// element in normal contact (a jump to zero force).
     void jump(double time);
     /// Appends u, F_x and c of the current state to the result's rows.
     void record(IndentationResult& result) const;
