@@ -139,8 +139,12 @@ __attribute__((target_clones("avx2", "default"))) void TangentialLayer::advance(
     const double viscous = dt > 0.0 ? material_.viscosity() / dt : 0.0;
     const double g_inf = material_.equilibrium_modulus();
     const double stiffness = step_.stiffness;
-    // In a jump (begin_jump) no element moves: the increment is a stress, and u_i stays (eq. T1).
-    const double moves = jump_ ? 0.0 : 1.0;
+    if (jump_) {
+        // In a jump (begin_jump) no element moves (eq. T1): the increment, a stress, goes into each trial, and the
+        // pass below takes no increment and no compliance (a slipping element does not move either).
+        for (std::size_t i = 0; i < count; ++i) relaxed_[i] += stiffness * (increment * share_[i]);
+        increment = 0.0;
+    }
     // The contact flags as doubles, so that the element pass below has one element width: GCC vectorises it four
     // elements to a register (with the bytes in it, 32 elements at a time, spilling registers).
     double* __restrict mask = contact_mask_.data();
@@ -177,7 +181,7 @@ __attribute__((target_clones("avx2", "default"))) void TangentialLayer::advance(
             const double trial = relaxed[i] + stiffness * moved;
             const double stress = in * std::min(std::max(trial, -bound), bound);  // the trial within the limit
             const double step_increment =
-                in != 0.0 && std::abs(trial) <= bound ? moves * moved : (stress - relaxed[i]) * compliance;
+                in != 0.0 && std::abs(trial) <= bound ? moved : (stress - relaxed[i]) * compliance;
             // The mean stress over the step, int t dt / dt, times du (see material_work()).
             double element_work = (g_inf * (u[i] + 0.5 * step_increment) + viscous * step_increment) * step_increment;
             if constexpr (fused) {
@@ -185,7 +189,7 @@ __attribute__((target_clones("avx2", "default"))) void TangentialLayer::advance(
                 h[i] = decay * h[i] + gain * step_increment;
             }
             work[i] = element_work;
-            slip_work[i] = in * (0.5 * (t[i] + stress) * (moves * moved - step_increment));
+            slip_work[i] = in * (0.5 * (t[i] + stress) * (moved - step_increment));
             u[i] += step_increment;
             if constexpr (keep_increments) du[i] = step_increment;
             t[i] = stress;
