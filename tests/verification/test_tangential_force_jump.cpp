@@ -31,7 +31,6 @@ constexpr double held = 1.0e-8;     // F' [N] from the jump on
 constexpr double jump_time = 0.5, end_time = 1.0;
 constexpr double sphere_radius = 1.0e-5;  // R [m]
 constexpr double friction = 0.3;          // mu
-constexpr double time_step = 5.0e-4;      // the default time step of these cases [s]
 
 const std::string kelvin_voigt = fmt::format("[material]\nmodel = \"kelvin_voigt\"\nG = {}\neta = {}\n", shear,
                                              viscosity);
@@ -105,7 +104,8 @@ TEST(TangentialForceJump, KelvinVoigtHeldDisplacementIsCattaneoMindlinOfTheNewFo
         const double peak_pressure = hertz_pressure(closed.a, 0.0);
         double tau_error = 0.0;
         for (std::size_t j = 0; j < snapshot.radius.size(); ++j) {
-            tau_error = std::max(tau_error, std::abs(snapshot.shear_stress[j] - closed.shear_stress(snapshot.radius[j])));
+            const double difference = snapshot.shear_stress[j] - closed.shear_stress(snapshot.radius[j]);
+            tau_error = std::max(tau_error, std::abs(difference));
         }
         tau_error /= friction * peak_pressure;
         RecordProperty(fmt::format("errors_{}", elements),
@@ -181,7 +181,7 @@ TEST(TangentialForceJump, IsTheLimitOfEverShorterRamps) {
         const auto jump = run_toml(creep_recovery(material, 0.0, tangential, elements));
         std::vector<RampDifference> differences;
         for (const double fraction : {1e-2, 1e-3, 1e-4}) {
-            const double duration = fraction * time_step;
+            const double duration = fraction * jump.numerics.time_step;
             const auto ramp = run_toml(creep_recovery(material, duration, tangential, elements));
             differences.push_back(ramp_difference(jump, ramp, duration));
             const RampDifference& difference = differences.back();
