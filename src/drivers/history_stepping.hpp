@@ -116,7 +116,8 @@ public:
     }
 
     /// The step to node `n` (1, 2, ...): the control's depth (a jump against a dashpot keeps it), then the
-    /// tangential layer's step; the last node ends the run.
+    /// tangential layer's step (its jump, TangentialStepper::jump, at a jump against a dashpot); the last node ends
+    /// the run.
     StepState step(std::size_t n) {
         const double time_step = nodes_[n].time - nodes_[n - 1].time;
         control_.begin_step(nodes_[n - 1].time, nodes_[n].time);
@@ -132,6 +133,8 @@ public:
                 const auto rate_change = foundation_.jump(force);
                 rate_ = rate_change ? std::optional<double>(*rate_ + *rate_change) : std::nullopt;
             }
+            // The tangential layer takes the same jump with the normal state after it (eq. T1, T2).
+            if (tangential_) tangential_->jump(nodes_[n].time);
         } else {
             if (sine_rate_) {
                 // A prescribed depth under a harmonic with a dashpot: the depth is not linear inside a step, and

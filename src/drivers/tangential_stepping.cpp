@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "mdr/contact/stress.hpp"
 #include "mdr/error.hpp"
@@ -26,15 +27,30 @@ TangentialStepper::TangentialStepper(const TangentialLoad& load, const rheology:
     if (cycle_) outcome_.dissipated_energy_per_cycle = 0.0;
 }
 
-double TangentialStepper::solve_increment(double target, std::span<const double> q,
-                                          std::span<const double> contact) const {
+void TangentialStepper::refuse_without_contact(double time) const {
+    throw InvalidInput("tangential", "t = " + format_value(time),
+                       load_.control == TangentialControl::force
+                           ? "a tangential force needs a normal contact, and there is none then"
+                           : "the tangential displacement changes while there is no normal contact; apply it while "
+                             "the normal load holds the contact");
+}
+
+double TangentialStepper::force_increment(double target, std::span<const double> q, std::span<const double> contact,
+                                          double time, double start, double bracket) {
+    const double capacity = layer_.sliding_force(q, contact);
+    // Within round-off of the capacity the force is reached only by sliding as a whole (the layer's own sum
+    // at saturation may fall short of `capacity` by an ulp, and the solve would find no bracket).
+    if (std::abs(target) >= capacity * (1.0 - 1e-12)) {
+        // Gross sliding: every element at its friction limit; u is where the sliding sets in.
+        if (!outcome_.sliding_from) outcome_.sliding_from = time;
+        return layer_.sliding_increment(target > 0.0 ? 1.0 : -1.0, q, contact);
+    }
     // F_x(du) is continuous, piecewise linear and non-decreasing (each element clamps its force to +-mu F_N):
-    // the shared bracket and Illinois regula falsi from the last increment (exact on a linear piece).
+    // the shared bracket and Illinois regula falsi from `start` (exact on a linear piece).
     const auto residual = [&](double increment) { return layer_.trial_force(increment, q, contact) - target; };
-    const double tolerance = 1e-13 * std::max(std::abs(target), layer_.sliding_force(q, contact));
-    double step = std::max({std::abs(last_increment_), std::abs(displacement_) * 1e-6, 1e-12 * foundation_.half_width()});
-    return numerics::monotone_root(residual, last_increment_, residual(last_increment_), step, tolerance,
-                                   1e-15 * std::max(std::abs(last_increment_), step), false);
+    const double tolerance = 1e-13 * std::max(std::abs(target), capacity);
+    return numerics::monotone_root(residual, start, residual(start), bracket, tolerance,
+                                   1e-15 * std::max(std::abs(start), bracket), false);
 }
 
 void TangentialStepper::step(const foundation::StepCoefficients& coefficients, double time_start, double time_end) {
@@ -45,30 +61,47 @@ void TangentialStepper::step(const foundation::StepCoefficients& coefficients, d
     const double target = load_.load.value(time_end);
     const bool force_control = load_.control == TangentialControl::force;
     const bool loaded = force_control ? target != 0.0 : target != displacement_;
-    if (loaded && foundation_.contact_count() == 0) {
-        throw InvalidInput("tangential", "t = " + format_value(time_end),
-                           force_control ? "a tangential force needs a normal contact, and there is none then"
-                                         : "the tangential displacement changes while there is no normal contact; "
-                                           "apply it while the normal load holds the contact");
-    }
+    if (loaded && foundation_.contact_count() == 0) refuse_without_contact(time_end);
     layer_.begin_step(coefficients, foundation_.entries());
     double increment = target - displacement_;
     if (force_control) {
-        const double capacity = layer_.sliding_force(q, contact);
-        // Within round-off of the capacity the force is reached only by sliding as a whole (the layer's own sum
-        // at saturation may fall short of `capacity` by an ulp, and the solve would find no bracket).
-        if (std::abs(target) >= capacity * (1.0 - 1e-12)) {
-            // Gross sliding: every element at its friction limit; u is where the sliding sets in.
-            if (!outcome_.sliding_from) outcome_.sliding_from = time_end;
-            increment = layer_.sliding_increment(target > 0.0 ? 1.0 : -1.0, q, contact);
-        } else {
-            increment = solve_increment(target, q, contact);
-        }
+        const double bracket = std::max(
+            {std::abs(last_increment_), std::abs(displacement_) * 1e-6, 1e-12 * foundation_.half_width()});
+        increment = force_increment(target, q, contact, time_end, last_increment_, bracket);
     }
     layer_.advance(increment, q, contact);
-    const double previous_force = force_;
     displacement_ += increment;
     last_increment_ = increment;
+    settle(time_start, time_end, increment);
+}
+
+void TangentialStepper::jump(double time) {
+    // A jump to zero force leaves no element in contact (eq. J1; the foundation keeps its flags, its force 0).
+    const bool in_contact = foundation_.total_force() > 0.0 && foundation_.contact_count() > 0;
+    const double target = load_.load.value(time);
+    const bool force_control = load_.control == TangentialControl::force;
+    if (force_control && target != 0.0 && !in_contact) refuse_without_contact(time);
+    const auto loads = foundation_.line_loads();
+    const auto q = std::span<const double>(loads).first(foundation_.touched());
+    const std::vector<double> none(in_contact ? 0 : foundation_.touched(), 0.0);
+    const auto contact = in_contact ? foundation_.contact_flags().first(foundation_.touched()) : std::span(none);
+    layer_.begin_jump();
+    // The increment is the stress eta du' of the indenter's rate change du' (eq. T1): none under displacement
+    // control; under force control F_x(increment) is monotone, saturating in either direction at the layer's
+    // sliding increment, whose size is the bracket's scale (eq. T2).
+    double increment = 0.0;
+    if (force_control) {
+        const double direction = target >= layer_.trial_force(0.0, q, contact) ? 1.0 : -1.0;
+        const double bracket = std::max(std::abs(layer_.sliding_increment(direction, q, contact)),
+                                        std::numeric_limits<double>::min());
+        increment = force_increment(target, q, contact, time, 0.0, bracket);
+    }
+    layer_.advance(increment, q, contact);
+    settle(time, time, 0.0);  // the indenter has not moved
+}
+
+void TangentialStepper::settle(double time_start, double time_end, double increment) {
+    const double previous_force = force_;
     force_ = layer_.total_force();
     stick_radius_ = layer_.stick_radius(foundation_.contact_radius());
     outcome_.max_force = std::max(outcome_.max_force, std::abs(force_));

@@ -27,6 +27,14 @@ public:
     /// `coefficients`. Throws mdr::InvalidInput (key `tangential`) when the tangential load changes (displacement
     /// control) or is not zero (force control) while no element is in normal contact.
     void step(const foundation::StepCoefficients& coefficients, double time_start, double time_end);
+    /// The tangential step of no time at `time` after a normal force jump against a parallel dashpot
+    /// (Foundation::jump; TangentialLayer::begin_jump, eq. T1): no element moves; an element out of normal contact
+    /// after the jump is force-free, one in contact is held within mu times its new normal force. Under
+    /// displacement control the indenter's rate is kept (a tangential history has no jumps); under force control
+    /// the rate changes so that F_x is the load's value (eq. T2; gross sliding where mu F_N' cannot carry it).
+    /// Throws mdr::InvalidInput (key `tangential`) when the tangential force is not zero while the jump leaves no
+    /// element in normal contact (a jump to zero force).
+    void jump(double time);
     /// Appends u, F_x and c of the current state to the result's rows.
     void record(IndentationResult& result) const;
     /// Fills the snapshot's shear stress tau_xz(r) (eq. 47) from the tangential line load, 0 at the contact edge.
@@ -35,8 +43,14 @@ public:
     const TangentialOutcome& outcome() const { return outcome_; }
 
 private:
-    double solve_increment(double target, std::span<const double> normal_line_loads,
-                           std::span<const double> contact) const;
+    // Throws mdr::InvalidInput (key `tangential`) for a tangential load at `time` while there is no normal contact.
+    void refuse_without_contact(double time) const;
+    // The prepared step's increment under force control that makes F_x = `target` (gross sliding from `time` on
+    // when the contact cannot carry it): the layer's solve from `start`, its bracket growing from `bracket`.
+    double force_increment(double target, std::span<const double> normal_line_loads, std::span<const double> contact,
+                           double time, double start, double bracket);
+    // F_x, c and the outcomes after a step over [time_start, time_end] in which the indenter moved by `increment`.
+    void settle(double time_start, double time_end, double increment);
 
     const TangentialLoad& load_;
     const foundation::Foundation& foundation_;

@@ -51,6 +51,7 @@ TangentialLayer::TangentialLayer(const rheology::Rheology& material, double fric
 __attribute__((target_clones("avx2", "default"))) void TangentialLayer::begin_step(const StepCoefficients& coefficients,
                                                                                     std::span<const Entry> entries) {
     copy_step_coefficients(coefficients, step_);
+    jump_ = false;
     share_.set(entries);
     const std::size_t n = displacement_.size();
     relaxed_sums(material_, step_, displacement_.data(), memory_.data(), n, touched_, relaxed_.data());
@@ -60,6 +61,15 @@ __attribute__((target_clones("avx2", "default"))) void TangentialLayer::begin_st
         const double r = step_.time_step / terms[k].relaxation_time;
         rate_gain_[k] = r < 1e-3 ? 0.5 - r / 6.0 + r * r / 24.0 - r * r * r / 120.0 : (1.0 - step_.gain[k]) / r;
     }
+}
+
+void TangentialLayer::begin_jump() {
+    // No time: E_k = B_k = 1 (numerics notes eq. 16, 18), so h_k keeps its value with du_i = 0; no element enters.
+    begin_step(step_coefficients(material_, 0.0));
+    jump_ = true;
+    // Eq. T1: the trial is the stress before the jump (its dashpot's part included) plus the increment, a stress.
+    step_.stiffness = 1.0;
+    std::copy_n(stress_.begin(), touched_, relaxed_.begin());
 }
 
 inline double TangentialLayer::limit(double normal_line_load) const {
@@ -129,6 +139,12 @@ __attribute__((target_clones("avx2", "default"))) void TangentialLayer::advance(
     const double viscous = dt > 0.0 ? material_.viscosity() / dt : 0.0;
     const double g_inf = material_.equilibrium_modulus();
     const double stiffness = step_.stiffness;
+    if (jump_) {
+        // In a jump (begin_jump) no element moves (eq. T1): the increment, a stress, goes into each trial, and the
+        // pass below takes no increment and no compliance (a slipping element does not move either).
+        for (std::size_t i = 0; i < count; ++i) relaxed_[i] += stiffness * (increment * share_[i]);
+        increment = 0.0;
+    }
     // The contact flags as doubles, so that the element pass below has one element width: GCC vectorises it four
     // elements to a register (with the bytes in it, 32 elements at a time, spilling registers).
     double* __restrict mask = contact_mask_.data();
@@ -152,7 +168,7 @@ __attribute__((target_clones("avx2", "default"))) void TangentialLayer::advance(
         double* __restrict work = work_.data();
         double* __restrict slip_work = slip_work_.data();
         double* __restrict h = memory_.data();  // branch 0
-        const double compliance = 1.0 / stiffness;
+        const double compliance = jump_ ? 0.0 : 1.0 / stiffness;
         const double per_load = per_load_;
         const double modulus = fused ? terms[0].modulus : 0.0, decay = fused ? step_.decay[0] : 0.0;
         const double gain = fused ? step_.gain[0] : 0.0, rate_gain = fused ? rate_gain_[0] : 0.0;

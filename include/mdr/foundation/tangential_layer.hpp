@@ -46,6 +46,14 @@ public:
     /// Prepares a step of the given coefficients from the current state (call before trial_force/advance), with
     /// the elements that enter normal contact inside it (Foundation::entries after its step).
     void begin_step(const StepCoefficients& coefficients, std::span<const Entry> entries = {});
+    /// Prepares a step of no time against a parallel dashpot (a normal force jump, Foundation::jump; call after it,
+    /// in place of begin_step, then trial_force/sliding_force/sliding_increment/advance as for a step): a dashpot
+    /// does not move in no time, so every u_i and h_{k,i} stays and only the rates jump (docs/theory.md section 4b,
+    /// eq. T1). The increment those take is then not a displacement but the stress eta du' [Pa] the indenter's rate
+    /// change du' adds to each element in contact: t_i' = clamp(t_i + increment, +-mu F_N,i') in contact, 0 out of
+    /// it (rule 50 with the new normal loads, from the stress t_i before the jump, its dashpot's part included).
+    /// Needs a material with a parallel dashpot (eta > 0).
+    void begin_jump();
     /// Total tangential force [N] (eq. 46, both halves) the layer would carry after the prepared step with the
     /// indenter moving by `increment` [m]; `normal_line_loads` q_z,i = F_N,i/dx [N/m] and `contact` are those of
     /// the normal foundation at the end of the step, of the same length, at most size(): the elements from there
@@ -117,6 +125,7 @@ private:
     std::vector<double> contact_mask_;      ///< 1 for an element in contact in the step being taken, else 0
     std::vector<double> rate_gain_;         ///< (1 - B_k) tau_k / dt of the prepared step, one per branch
     StepCoefficients step_;
+    bool jump_ = false;                     ///< the prepared step is a jump (begin_jump): no element moves
     std::size_t touched_ = 0;               ///< elements [touched_, n) have never been in contact: u = h = 0
     std::size_t high_water_ = 0;            ///< the largest touched_ any loaded or stepped state had
     std::size_t sticking_ = 0;              ///< elements that stuck in the last step
