@@ -69,9 +69,10 @@ struct StepWork {
 // solves a step (LayerContact::at_radius; measured 2.4 under force control, a creep-recovery by callgrind, 1.2 to 3.6
 // under displacement control, docs/performance.md "A layer of finite thickness") on n Gauss nodes, each n^3 / 3
 // multiply-adds of the Cholesky factoring counted at multiply_adds_per_element_step: the time of a half-space
-// element-step (10 ns, docs/performance.md "Scaling") against 0.1 to 0.3 ns a multiply-add measured at 400 to 96
-// nodes (the fill and the triangular solves included). n is the least (layer_nodes): a thin layer's contacts wider
-// than 12 thicknesses take 4 nodes a thickness, not counted.
+// element-step (10 ns, docs/performance.md "Scaling") against 0.10 to 0.17 ns a multiply-add measured at 400 to 96
+// nodes (a solve's time over its n^3/3: the fill and the triangular solves included). n is the least, as capped
+// within 12 thicknesses of contact (layer_nodes): a thin layer's wider contacts take 4 nodes a thickness and more,
+// not counted; counted on every [layer] case, the harmonic ones too (which run on the cells alone: an upper bound).
 constexpr double layer_solves_per_step = 4.0;
 constexpr double multiply_adds_per_element_step = 32.0;
 
