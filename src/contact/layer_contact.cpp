@@ -116,12 +116,13 @@ LayerContact::LayerContact(const Layer& layer, double poisson_ratio, std::shared
         throw InvalidInput("numerics.elements", std::to_string(nodes.least), "must be >= 2 on a layer");
     }
     // Every rule that at_radius asks for, made once: a smooth profile's single rule at each contact radius up to the
-    // widest (layer_gauss_points at each count of thicknesses: a thin layer's grow by nodes_per_thickness), a kinked profile's
-    // panels up to the widest's nodes (its larger panels are made as they come). Making a rule of ~100 nodes costs
-    // about a solve of eq. L3, so a thin layer made them more often than it solved (42 % of a load-unload's time at
-    // a/h ~ 19).
+    // widest (layer_gauss_points at each count of thicknesses: a thin layer's grow by nodes_per_thickness), a kinked
+    // profile's panels up to the widest's nodes (its larger panels are made as they come). Making a rule of ~100
+    // nodes costs about a solve of eq. L3, so a thin layer made them more often than it solved (42 % of a
+    // load-unload's time at a/h ~ 19).
+    const double thickness = layer_.thickness;
     const auto widest = static_cast<std::size_t>(
-        std::ceil(std::fmin(max_contact_radius_, max_layer_radius_over_thickness * layer_.thickness) / layer_.thickness));
+        std::ceil(std::fmin(max_contact_radius_, max_layer_radius_over_thickness * thickness) / thickness));
     const std::size_t largest = layer_gauss_points(widest, nodes_);  // non-decreasing in the thicknesses
     rules_.resize(largest + 1);
     if (kinks_.empty()) {
@@ -130,7 +131,8 @@ LayerContact::LayerContact(const Layer& layer, double poisson_ratio, std::shared
             if (rules_[size].nodes.empty()) rules_[size] = numerics::make_gauss_rule(size);
         }
     } else {
-        for (std::size_t size = std::min(min_panel_nodes, nodes.least); size <= std::min(nodes.least, largest); ++size) {
+        const std::size_t most = std::min(nodes.least, largest);
+        for (std::size_t size = std::min(min_panel_nodes, nodes.least); size <= most; ++size) {
             rules_[size] = numerics::make_gauss_rule(size);
         }
     }

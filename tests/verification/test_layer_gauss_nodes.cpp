@@ -1,7 +1,7 @@
 // `[numerics] elements` on a layer's run of Ting's class (docs/case-format.md, "On a sheet of finite thickness"):
 // the least Gauss nodes of the elastic layer's Nystroem solution (eq. L3), which converges spectrally in them, up to
 // twice the default rule's at each contact radius (contact::LayerNodes::capped, contact::most_nodes_over_default).
-// Before the cap 400 nodes took 60 times the default's time (each solve O(n^3)) for the same result to round-off.
+// Before the cap 400 nodes took 120 times the default's time (each solve O(n^3)) for the same result to round-off.
 
 #include <gtest/gtest.h>
 

@@ -27,11 +27,12 @@ inline constexpr std::size_t nodes_per_thickness = 4;
 
 /// A run's `[numerics] elements` raises the Gauss nodes (LayerNodes::capped) to at most this many times the default
 /// rule's at the contact's radius (default_layer_nodes, nodes_per_thickness a thickness beyond): the Nystroem solution
-/// converges spectrally in the nodes, and twice the rule's reaches the kernel table's floor. Measured
-/// (docs/performance.md, "A layer of finite thickness"): at a = 64 h the depth 9.0e-8 off with 4 nodes a thickness,
-/// 1.1e-10 with 8 and 3.0e-11 with 12; a creep-recovery at a/h up to 0.55 and 6.7 within 3e-14 and 7e-13 of 512
-/// nodes' depth at 48 nodes and every count above. More nodes only cost time (a solve is O(n^3)): 400 nodes took 60
-/// times the 48 nodes' time for the same result to round-off.
+/// converges spectrally in the nodes, and twice the rule's reaches the kernel table's floor, within 3.3e-11 of the
+/// depth and force of 10 nodes a thickness at a/h 0.5 to 64 where the rule is 9.0e-8 off
+/// (tests/verification/test_layer_contact.cpp, NodesCappedAtTwiceTheDefaultRuleMeetTheConvergedSolution); a
+/// creep-recovery at a/h up to 0.56 and 6.7 runs within 4e-14 and 7e-13 of 512 nodes' depth at 48 nodes and every
+/// count above. More only cost time (a solve is O(n^3)): 400 nodes took 120 times the 48 nodes' time for the same
+/// result to round-off (docs/performance.md, "A layer's `elements`").
 inline constexpr std::size_t most_nodes_over_default = 2;
 
 /// How LayerContact takes its Gauss-Legendre nodes over a contact of radius a on a layer of thickness h.
@@ -97,7 +98,7 @@ public:
         : LayerContact(layer, poisson_ratio, std::move(indenter), max_contact_radius, LayerNodes{nodes, false}) {}
 
     /// The equilibrium with contact radius 0 < a <= max_contact_radius (a flat punch: its radius, at depth 1), on
-    /// about max(nodes, 4 ceil(a/h)) Gauss-Legendre nodes (the kernel's width is h), in panels split at the indenter's
+    /// about layer_gauss_points Gauss-Legendre nodes (the kernel's width is h), in panels split at the indenter's
     /// kinks (contact_quadrature).
     LayerContactState at_radius(double contact_radius) const;
     /// The equilibrium at depth d (d <= 0: no contact): the contact radius solved from depth(a) = d (increasing in

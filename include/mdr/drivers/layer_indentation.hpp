@@ -66,8 +66,8 @@ void validate_layer(const ContactCase& contact_case);
 /// or with snapshots (or NumericsOptions::cells_from_start) LayerCellsImpactStepping on cells from the start
 /// (src/drivers/layer_cells_impact.hpp: the surface outside its receding contact is theirs alone). Every way runs its
 /// stepping class in the half-space's one loop (src/drivers/run_loop.hpp), with its observers and progress report.
-/// `numerics.elements` is the least number of Gauss nodes over the contact (layer_nodes: up to twice the default rule's,
-/// default contact::default_layer_nodes). A
+/// `numerics.elements` is the least number of Gauss nodes over the contact (layer_nodes: up to twice the default
+/// rule's, default contact::default_layer_nodes). A
 /// Shore test (`control = "shore"`) is that spring control with the durometer's spring, its base step at the landing
 /// and the half-space's reading columns (ShoreRecorder); the layer solves the durometer's tip (layer_indenter); a
 /// contact that reaches the rod is refused (layer_shore_refusal), which comes before the stop. A case whose contact
