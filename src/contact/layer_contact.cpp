@@ -102,7 +102,7 @@ void check_layer_contact_radius(const Layer& layer, double largest_radius) {
 }
 
 LayerContact::LayerContact(const Layer& layer, double poisson_ratio, std::shared_ptr<const profile::Profile> indenter,
-                           double max_contact_radius, std::size_t nodes)
+                           double max_contact_radius, const LayerNodes& nodes)
     : layer_(layer),
       indenter_(std::move(indenter)),
       max_contact_radius_(indenter_->is_flat_punch() ? indenter_->max_radius() : max_contact_radius),
@@ -112,28 +112,42 @@ LayerContact::LayerContact(const Layer& layer, double poisson_ratio, std::shared
               (layer.thickness > 0.0 && std::isfinite(layer.thickness))
                   ? 2.0 * max_contact_radius_ / layer.thickness
                   : throw InvalidInput("layer.thickness", format_value(layer.thickness), "must be finite and > 0")) {
-    if (nodes < 2) throw InvalidInput("numerics.elements", std::to_string(nodes), "must be >= 2 on a layer");
-    // Every rule that at_radius asks for, made once: a smooth profile's single rule at each contact radius up to the
-    // widest (nodes_ and the multiples of nodes_per_thickness above it: a thin layer's), a kinked profile's panels up
-    // to nodes_ (its larger panels are made as they come). Making a rule of ~100 nodes costs about a solve of eq. L3,
-    // so a thin layer made them more often than it solved (42 % of a load-unload's time at a/h ~ 19).
-    const std::size_t largest =
-        points_at(std::fmin(max_contact_radius_, max_layer_radius_over_thickness * layer_.thickness));
-    rules_.resize(largest + 1);
-    for (std::size_t size = kinks_.empty() ? nodes : std::min(min_panel_nodes, nodes); size <= nodes; ++size) {
-        rules_[size] = numerics::make_gauss_rule(size);
+    if (nodes.least < 2) {
+        throw InvalidInput("numerics.elements", std::to_string(nodes.least), "must be >= 2 on a layer");
     }
+    // Every rule that at_radius asks for, made once: a smooth profile's single rule at each contact radius up to the
+    // widest (layer_gauss_points at each count of thicknesses: a thin layer's grow by nodes_per_thickness), a kinked
+    // profile's panels up to the widest's nodes (its larger panels are made as they come). Making a rule of ~100
+    // nodes costs about a solve of eq. L3, so a thin layer made them more often than it solved (42 % of a
+    // load-unload's time at a/h ~ 19).
+    const double thickness = layer_.thickness;
+    const auto widest = static_cast<std::size_t>(
+        std::ceil(std::fmin(max_contact_radius_, max_layer_radius_over_thickness * thickness) / thickness));
+    const std::size_t largest = layer_gauss_points(widest, nodes_);  // non-decreasing in the thicknesses
+    rules_.resize(largest + 1);
     if (kinks_.empty()) {
-        for (std::size_t size = nodes_per_thickness * (nodes / nodes_per_thickness + 1); size <= largest;
-             size += nodes_per_thickness) {
+        for (std::size_t thicknesses = 0; thicknesses <= widest; ++thicknesses) {
+            const std::size_t size = layer_gauss_points(thicknesses, nodes_);
+            if (rules_[size].nodes.empty()) rules_[size] = numerics::make_gauss_rule(size);
+        }
+    } else {
+        const std::size_t most = std::min(nodes.least, largest);
+        for (std::size_t size = std::min(min_panel_nodes, nodes.least); size <= most; ++size) {
             rules_[size] = numerics::make_gauss_rule(size);
         }
     }
 }
 
+std::size_t layer_gauss_points(std::size_t thicknesses, const LayerNodes& nodes) {
+    const std::size_t by_thickness = nodes_per_thickness * thicknesses;
+    const std::size_t least =
+        nodes.capped ? std::min(nodes.least, most_nodes_over_default * std::max(default_layer_nodes, by_thickness))
+                     : nodes.least;
+    return std::max(least, by_thickness);
+}
+
 std::size_t LayerContact::points_at(double contact_radius) const {
-    const double thicknesses = std::ceil(contact_radius / layer_.thickness);
-    return std::max(nodes_, nodes_per_thickness * static_cast<std::size_t>(thicknesses));
+    return layer_gauss_points(static_cast<std::size_t>(std::ceil(contact_radius / layer_.thickness)), nodes_);
 }
 
 // The Nystroem solution of eq. L3 (E* = 1) on the Gauss nodes of the contact [0, a]: q_d of the unit depth and q_g

@@ -23,8 +23,8 @@ namespace mdr::drivers {
 
 namespace {
 
-// `numerics.elements` on a layer is a number of Gauss nodes, each solve O(n^3) (the cells have their own count,
-// layer_cell_count, at most max_layer_cells).
+// `numerics.elements` on a layer: the least Gauss nodes of a run of Ting's class (layer_nodes, each solve O(n^3)),
+// and the cells' count where `numerics.layer_cells` is not given (layer_cell_count, at most max_layer_cells).
 constexpr std::size_t max_layer_nodes = 512;
 
 // The largest contact radius a run may reach: a flat punch's radius, else the margin times the half-space's radius
@@ -43,6 +43,10 @@ double largest_contact_radius(const ContactCase& contact_case, const LayerLoadin
 }
 
 }  // namespace
+
+contact::LayerNodes layer_nodes(const ContactCase& contact_case) {
+    return {.least = contact_case.numerics.elements.value_or(contact::default_layer_nodes), .capped = true};
+}
 
 std::size_t layer_cell_count(const ContactCase& contact_case) {
     const auto& numerics = contact_case.numerics;
@@ -123,9 +127,11 @@ IndentationResult run_tings_class(const ContactCase& contact_case, const LayerLo
     IndentationResult result;
     const ResolvedNumerics resolved = resolve_numerics(contact_case);  // as its bounds were checked
     result.numerics = resolved;
-    const std::size_t nodes = contact_case.numerics.elements.value_or(contact::default_layer_nodes);
-    result.numerics.elements = nodes;
-    result.numerics.half_width = largest_radius;  // reported: the largest contact radius prepared for
+    const contact::LayerNodes nodes = layer_nodes(contact_case);
+    // Reported: the least nodes, as capped at a vanishing contact (`numerics.elements`, up to twice the default), and
+    // the largest contact radius prepared for.
+    result.numerics.elements = contact::layer_gauss_points(0, nodes);
+    result.numerics.half_width = largest_radius;
     // Unit effective shear modulus: E* = 2 G / (1 - nu) = 4 G_eff (eq. 21, 56), the kernel with the body's constant nu
     // (eq. L1; `material` is G_eff(t) = G(t) / (2 (1 - nu)), so the layer separates as the incompressible one).
     constexpr double unit_plane_modulus = 4.0;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/control_end.hpp"
 #include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/error.hpp"
@@ -53,9 +54,9 @@ std::string counted_in(const ContactCase& contact_case, const ResolvedNumerics& 
     return fmt::format("{} elements{}", numerics.elements, contact_case.tangential ? " x 2 layers" : "");
 }
 
-// The key that sets the count of counted_in.
+// The keys that set the counts of counted_in (on a [layer] with its run of Ting's class: work_counted_in).
 const char* count_key(const ContactCase& contact_case) {
-    return contact_case.layer ? "numerics.layer_cells" : "numerics.elements";
+    return contact_case.layer ? "numerics.layer_cells or numerics.elements" : "numerics.elements";
 }
 
 // The element-steps a run counts: `per_step` each step, and `once` before its first.
@@ -64,16 +65,46 @@ struct StepWork {
     double once = 0.0;
 };
 
+// A run of Ting's class on a [layer] (LayerTingStepping, LayerImpactStepping): at most layer_solves_per_step elastic
+// solves a step (LayerContact::at_radius; measured 2.4 under force control, a creep-recovery by callgrind, 1.2 to 3.6
+// under displacement control, docs/performance.md "A layer of finite thickness") on n Gauss nodes, each n^3 / 3
+// multiply-adds of the Cholesky factoring counted at multiply_adds_per_element_step: the time of a half-space
+// element-step (10 ns, docs/performance.md "Scaling") against 0.10 to 0.17 ns a multiply-add measured at 400 to 96
+// nodes (a solve's time over its n^3/3: the fill and the triangular solves included). n is the least, as capped
+// within 12 thicknesses of contact (layer_nodes): a thin layer's wider contacts take 4 nodes a thickness and more,
+// not counted; counted on every [layer] case, the harmonic ones too (which run on the cells alone: an upper bound).
+constexpr double layer_solves_per_step = 4.0;
+constexpr double multiply_adds_per_element_step = 32.0;
+
+std::size_t tings_class_nodes(const ContactCase& contact_case) {
+    return contact::layer_gauss_points(0, layer_nodes(contact_case));
+}
+
+double tings_class_step_work(const ContactCase& contact_case) {
+    const double nodes = static_cast<double>(tings_class_nodes(contact_case));
+    return layer_solves_per_step * nodes * nodes * nodes / 3.0 / multiply_adds_per_element_step;
+}
+
+// What a run's work is counted in (counted_in), on a [layer] with the Gauss nodes of its run of Ting's class and how
+// each count enters.
+std::string work_counted_in(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
+    if (!contact_case.layer) return counted_in(contact_case, numerics);
+    return fmt::format("{} and n = {} Gauss nodes of its run of Ting's class (m^2 a step for its solve, m^3/3 for the "
+                       "factoring of I - K, {:g} n^3/{:g} a step for the elastic solves)",
+                       counted_in(contact_case, numerics), tings_class_nodes(contact_case),
+                       layer_solves_per_step, 3.0 * multiply_adds_per_element_step);
+}
+
 // Every element a step (x 2 layers with tangential loading: its layer steps every element). On a [layer], its coupled
-// time-stepping on m cells (LayerCells, eq. L16 to L19), which a harmonic load and a contact that grows again run
-// (the run of Ting's class costs less: its Gauss nodes are at most 512): I - K factored once (Cholesky, m^3 / 3
-// multiply-adds), then a step's solve on its contact's cells (forward and back substitution, at most m^2
-// multiply-adds; the trial sets of a step share most of it, and a step's updates of the cells' branches, O(m), are
-// smaller), each multiply-add counted as an element-step.
+// time-stepping on m cells (LayerCells, eq. L16 to L19), which a harmonic load and a contact that grows again run: I
+// - K factored once (Cholesky, m^3 / 3 multiply-adds), then a step's solve on its contact's cells (forward and back
+// substitution, at most m^2 multiply-adds; the trial sets of a step share most of it, and a step's updates of the
+// cells' branches, O(m), are smaller), each multiply-add counted as an element-step; and a history's run of Ting's
+// class before it (tings_class_step_work), which finds the regrowth where the cells take over.
 StepWork step_work(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
     if (contact_case.layer) {
         const double cells = static_cast<double>(layer_cell_count(contact_case));
-        return {cells * cells, cells * cells * cells / 3.0};
+        return {cells * cells + tings_class_step_work(contact_case), cells * cells * cells / 3.0};
     }
     return {static_cast<double>(numerics.elements) * (contact_case.tangential ? 2.0 : 1.0), 0.0};
 }
@@ -123,13 +154,11 @@ void require_bounded_work(const ContactCase& contact_case, const ResolvedNumeric
     if (!(estimate.element_steps <= max_element_steps)) {
         throw InvalidInput(
             "numerics.max_element_steps", fmt::format("{:.3g}", max_element_steps),
-            fmt::format("exceeded: {:.3g} steps (time step {:.4g} s over [{}, {}] s) on {}{} = {:.3g} "
+            fmt::format("exceeded: {:.3g} steps (time step {:.4g} s over [{}, {}] s) on {} = {:.3g} "
                         "element-steps; lengthen numerics.time_step, shorten the simulated time, use fewer "
                         "{}, or raise numerics.max_element_steps if that is meant",
                         estimate.steps, numerics.time_step, start, numerics.time_limit,
-                        counted_in(contact_case, numerics),
-                        contact_case.layer ? " (m^2 a step for its solve, m^3/3 for the factoring of I - K)" : "",
-                        estimate.element_steps, count_key(contact_case)));
+                        work_counted_in(contact_case, numerics), estimate.element_steps, count_key(contact_case)));
     }
     const double max_memory = memory_bound(contact_case);
     if (!(estimate.memory <= max_memory)) {

@@ -203,8 +203,8 @@ HARMONIC = (0.3e-6, 2.0, 0.5, 3.5)  # amplitude [m], frequency [Hz], start, end 
 def test_a_reload_meets_the_coupled_time_stepping(kernel):
     material, _ = CASES["triangle"]
     errors = []
-    # The run of Ting's class up to the reload solves on as many Gauss nodes as mdr has cells: 50 to 200 keep it
-    # short; the reference on twice as many cells, so that both errors halve together.
+    # The run of Ting's class up to the reload solves on as many Gauss nodes as mdr has cells (up to 96, twice the
+    # default); the reference on twice as many cells, so that both errors halve together.
     for cells in (50, 100, 200):
         # 750 steps: the two time schemes differ by ~(dt/tau)^2/12 ~ 3e-5, below the cells' errors.
         result = run_mdr(material, RELOAD, elements=cells, time_step=0.004)
@@ -247,7 +247,7 @@ def test_a_harmonic_depth_converges_at_second_order_in_the_time_step(kernel):
 # reference likewise (q is affine in d on a contact set). A force that falls to a third and rises again, and a force
 # after the contact was lost (the indenter riding on the recovering surface meanwhile); a spring's base that
 # withdraws beyond the surface and comes back. mdr on 50 to 200 cells (its run of Ting's class up to the regrowth
-# solves on as many Gauss nodes), the reference on twice as many.
+# solves on as many Gauss nodes, up to 96), the reference on twice as many.
 REGROWING_UNDER_LOAD = {
     "force_reload": ("force", [[0.0, 0.0], [0.5, 3.0e-8], [0.75, 1.0e-8], [1.25, 3.0e-8], [2.0, 0.0]], None),
     "force_after_loss": ("force", [[0.0, 0.0], [0.5, 3.0e-8], [1.0, 0.0], [1.5, 0.0], [1.75, 2.0e-8],
@@ -290,7 +290,7 @@ def test_a_force_pause_meets_the_coupled_time_stepping(kernel, name):
     history, pauses = PAUSED[name]
     errors = []
     for cells in (50, 100, 200):
-        # 375 steps, as above; mdr on 50 to 200 Gauss nodes or cells, the reference on twice as many cells.
+        # 375 steps, as above; mdr on 50 to 200 cells or Gauss nodes (up to 96), the reference on twice as many cells.
         result = run_mdr(material, history, "spring", 0.05, pauses=pauses, elements=cells, time_step=0.004)
         times = result.history["t"]
         start, end = (int(np.flatnonzero(times == t)[0]) for t in pauses[0])

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "mdr/contact/layer.hpp"
@@ -23,6 +24,31 @@ inline constexpr std::size_t default_layer_nodes = 48;
 /// in them: at a/h 64 (bonded, incompressible) the depth at a radius is 1.8e-4 off with 3, 9e-8 with 4, 2.5e-10 with 5
 /// (tests/verification/test_layer_contact.cpp, ThinFilmConvergesInTheNodesPerThickness): 4, the force 1.1e-8 off.
 inline constexpr std::size_t nodes_per_thickness = 4;
+
+/// A run's `[numerics] elements` raises the Gauss nodes (LayerNodes::capped) to at most this many times the default
+/// rule's at the contact's radius (default_layer_nodes, nodes_per_thickness a thickness beyond): the Nystroem solution
+/// converges spectrally in the nodes, and twice the rule's reaches the kernel table's floor, within 3.3e-11 of the
+/// depth and force of 10 nodes a thickness at a/h 0.5 to 64 where the rule is 9.0e-8 off
+/// (tests/verification/test_layer_contact.cpp, NodesCappedAtTwiceTheDefaultRuleMeetTheConvergedSolution); a
+/// creep-recovery at a/h up to 0.56 and 6.7 runs within 4e-14 and 7e-13 of 512 nodes' depth at 48 nodes and every
+/// count above. More only cost time (a solve is O(n^3)): 400 nodes took 120 times the 48 nodes' time for the same
+/// result to round-off (docs/performance.md, "A layer's `elements`").
+inline constexpr std::size_t most_nodes_over_default = 2;
+
+/// How LayerContact takes its Gauss-Legendre nodes over a contact of radius a on a layer of thickness h.
+struct LayerNodes {
+    /// At least this many at every radius (a run's `[numerics] elements`), and nodes_per_thickness ceil(a/h).
+    std::size_t least = default_layer_nodes;
+    /// Where true (a run), `least` counts up to most_nodes_over_default times the default rule's at the radius,
+    /// max(default_layer_nodes, nodes_per_thickness ceil(a/h)); false (as given) for a study of the convergence in
+    /// the nodes.
+    bool capped = false;
+};
+
+/// The Gauss-Legendre nodes LayerContact takes by `nodes` over a contact of `thicknesses` = ceil(a/h) layer
+/// thicknesses: max(least, nodes_per_thickness ceil(a/h)), `least` capped as LayerNodes says (the kernel's width is
+/// h).
+std::size_t layer_gauss_points(std::size_t thicknesses, const LayerNodes& nodes);
 
 /// The contact radius on a layer exceeds the half-space's at the same depth by at most 3 pi / 4 (a cone on a thin
 /// bonded incompressible layer, whose displaced volume stays under the indenter; a sphere: 2, docs/theory.md eq.
@@ -63,12 +89,16 @@ struct LayerContactProfile {
 /// max_contact_radius. h -> infinity gives the half-space's MDR exactly (K = 0).
 class LayerContact {
 public:
-    /// Throws mdr::InvalidInput (key `layer.thickness`) unless h > 0 is finite; `nodes` >= 2.
+    /// Throws mdr::InvalidInput (key `layer.thickness`) unless h > 0 is finite; `nodes.least` >= 2.
     LayerContact(const Layer& layer, double poisson_ratio, std::shared_ptr<const profile::Profile> indenter,
-                 double max_contact_radius, std::size_t nodes = default_layer_nodes);
+                 double max_contact_radius, const LayerNodes& nodes);
+    /// As above with at least `nodes` Gauss nodes, as given (LayerNodes::capped false).
+    LayerContact(const Layer& layer, double poisson_ratio, std::shared_ptr<const profile::Profile> indenter,
+                 double max_contact_radius, std::size_t nodes = default_layer_nodes)
+        : LayerContact(layer, poisson_ratio, std::move(indenter), max_contact_radius, LayerNodes{nodes, false}) {}
 
     /// The equilibrium with contact radius 0 < a <= max_contact_radius (a flat punch: its radius, at depth 1), on
-    /// about max(nodes, 4 ceil(a/h)) Gauss-Legendre nodes (the kernel's width is h), in panels split at the indenter's
+    /// about layer_gauss_points Gauss-Legendre nodes (the kernel's width is h), in panels split at the indenter's
     /// kinks (contact_quadrature).
     LayerContactState at_radius(double contact_radius) const;
     /// The equilibrium at depth d (d <= 0: no contact): the contact radius solved from depth(a) = d (increasing in
@@ -101,17 +131,16 @@ private:
     Solution solve(double contact_radius) const;
     // K(x - s) + K(x + s) (eq. L4: K(y) = k(y/h)/h).
     double kernel_sum(double x, double s) const;
-    /// Gauss-Legendre nodes over a contact of radius a: max(nodes_, nodes_per_thickness ceil(a/h)) (the kernel's
-    /// width is h).
+    /// Gauss-Legendre nodes over a contact of radius a: layer_gauss_points with nodes_.
     std::size_t points_at(double contact_radius) const;
 
     Layer layer_;
     std::shared_ptr<const profile::Profile> indenter_;
     double max_contact_radius_;
-    std::size_t nodes_;
+    LayerNodes nodes_;
     std::vector<double> kinks_;  ///< the indenter's (profile::Profile::kinks): the quadrature's panels end there
     /// rules_[k]: the k-point Gauss-Legendre rule for every k = points_at(a) and, with kinks, for each panel's k up to
-    /// nodes_ (empty elsewhere)
+    /// the largest points_at (empty elsewhere)
     std::vector<numerics::GaussRule> rules_;
     LayerKernel kernel_;
 };

@@ -4,6 +4,7 @@
 /// impact, an incompressible layer or a compressible one of constant Poisson ratio, a contact that grows and then
 /// recedes (docs/theory.md, "Layers").
 
+#include "mdr/contact/layer_contact.hpp"
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/drivers/indentation.hpp"
 
@@ -25,6 +26,11 @@ inline constexpr std::size_t default_layer_cells_with_dashpot = 800;
 /// O(m^3)), 4096 cells at most about 1 GB (540 MB measured) and 2.3e10 multiply-adds (3 s), a fifth of the default
 /// numerics.max_element_steps before the first step (estimate_work, work_estimate.hpp).
 inline constexpr std::size_t max_layer_cells = 4096;
+
+/// The Gauss nodes of a layer's run of Ting's class (contact::LayerContact): at least `numerics.elements` (else
+/// contact::default_layer_nodes), up to contact::most_nodes_over_default times the default rule's at each contact
+/// radius, beyond which the solution no longer changes (LayerNodes::capped).
+contact::LayerNodes layer_nodes(const ContactCase& contact_case);
 
 /// The cells of a layer's coupled time-stepping (eq. L16 to L19): `numerics.layer_cells`, else `numerics.elements`
 /// (so that a case without the key runs as before it existed), else default_layer_cells, or
@@ -60,7 +66,8 @@ void validate_layer(const ContactCase& contact_case);
 /// or with snapshots (or NumericsOptions::cells_from_start) LayerCellsImpactStepping on cells from the start
 /// (src/drivers/layer_cells_impact.hpp: the surface outside its receding contact is theirs alone). Every way runs its
 /// stepping class in the half-space's one loop (src/drivers/run_loop.hpp), with its observers and progress report.
-/// `numerics.elements` is the least number of Gauss nodes over the contact (default contact::default_layer_nodes). A
+/// `numerics.elements` is the least number of Gauss nodes over the contact (layer_nodes: up to twice the default
+/// rule's, default contact::default_layer_nodes). A
 /// Shore test (`control = "shore"`) is that spring control with the durometer's spring, its base step at the landing
 /// and the half-space's reading columns (ShoreRecorder); the layer solves the durometer's tip (layer_indenter); a
 /// contact that reaches the rod is refused (layer_shore_refusal), which comes before the stop. A case whose contact
