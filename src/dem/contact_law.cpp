@@ -312,13 +312,17 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
 // begin's body, inlined into the one-call steps (advance, advance_spatial): a held step saves the call and the
 // reloads of the members it sets (15 instructions, docs/dem.md).
 [[gnu::always_inline]] inline void ContactLaw::take_state(std::span<double> state) {
+    take_normal_state(state);
+    take_frame(state);
+}
+
+// All of take_state but the tangential displacement and the frame, which a step with an idle layer does not read
+// when it writes no frame either (advance_spatial).
+[[gnu::always_inline]] inline void ContactLaw::take_normal_state(std::span<double> state) {
     require_state_size(state);
-    count_at(state, normal_offset_ + 2);  // the two element counts decide where the loads below read and write
+    touched_ = count_at(state, normal_offset_ + 2);  // the two element counts decide where the steps read and write
     layer_touched_ = count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
     state_ = state.data();
-    displacement_ = {state[0], state[1]};
-    frame_ = {state[frame_offset], state[frame_offset + 1], state[frame_offset + 2]};
-    handedness_ = state[handedness_offset];
     overlap_ = state[normal_offset_];
     layer_ready_ = false;  // attached where a step needs it (require_layer): a composed tangential step does not
     tangential_idle_ = friction_ == 0.0 && layer_touched_ == 0;
@@ -327,6 +331,13 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
     start_tangential_force_ = tangential_idle_ ? PlanarVector{0.0, 0.0} : tangential_force(state);
     tangential_force_ = start_tangential_force_;
     normal_work_ = tangential_work_ = 0.0;
+}
+
+// The tangential displacement and the frame at the step's start (end writes them back).
+[[gnu::always_inline]] inline void ContactLaw::take_frame(std::span<const double> state) {
+    displacement_ = {state[0], state[1]};
+    frame_ = {state[frame_offset], state[frame_offset + 1], state[frame_offset + 2]};
+    handedness_ = state[handedness_offset];
 }
 
 void ContactLaw::begin(std::span<double> state) { take_state(state); }
@@ -357,30 +368,23 @@ double ContactLaw::normal_trial(double overlap) {
     return foundation_.trial_force(overlap_, overlap);
 }
 
-void ContactLaw::advance_normal(double overlap) {
+// advance_normal's body, inlined into it and into the one-call steps (advance, advance_spatial: a held step then
+// makes no call for it but the composed step's): the composed form where no element enters or leaves, else the
+// Foundation's step (step_normal_by_elements, out of line).
+[[gnu::always_inline]] inline void ContactLaw::step_normal(double overlap) {
     if (!std::isfinite(overlap)) require_finite("overlap", overlap);  // the key's string only when it throws
-    double force = 0.0;
     const foundation::AttachedElements start = elements();
-    composed_step_ = composed_.advance(header(), start, overlap_, overlap, force, least_stress_);
+    composed_step_ = composed_.advance(header(), start, overlap_, overlap, normal_force_, least_stress_);
     if (composed_step_) {
         state_[normal_offset_] = overlap;
-        state_[normal_offset_ + 1] = force;
+        state_[normal_offset_ + 1] = normal_force_;
     } else {
-        // Refused before the elements are written, so that the contact's state stays as it was, bytes included.
-        if (std::max(overlap_, overlap) > composed_.deepest()) {
-            throw InvalidInput("half_width", format_value(foundation_.half_width()),
-                               "the contact grows beyond the law's half-width at overlap " + format_value(overlap) +
-                                   "; give a larger half-width (at least sqrt(R d) for the largest overlap d)");
-        }
-        // The tangential elements are written while the flags are still those of the steps they compose.
-        write_tangential();
-        prepare_foundation(false);
-        foundation_.advance(overlap_, overlap);
-        composed_.summarise(header(), elements(), (overlap - overlap_) / coefficients_.time_step);
+        step_normal_by_elements(overlap);
     }
-    normal_force_ = state_[normal_offset_ + 1];
-    touched_ = static_cast<std::size_t>(state_[normal_offset_ + 2]);
-    contact_count_ = static_cast<std::size_t>(header()[foundation::ComposedNormalStep::contacts_offset]);
+    // A whole number in [0, N] (the state's count was checked, the steps keep it so): the signed conversion is
+    // one instruction.
+    contact_count_ = static_cast<std::size_t>(
+        static_cast<std::int64_t>(header()[foundation::ComposedNormalStep::contacts_offset]));
     normal_work_ = 0.5 * (start_normal_force_ + normal_force_) * (overlap - overlap_);
     loads_ready_ = false;
     if (tangential_idle_) return;
@@ -395,6 +399,25 @@ void ContactLaw::advance_normal(double overlap) {
         loads_ready_ = true;
     }
 }
+
+// The normal step with an entry or exit: the Foundation's, the header summarised again after it.
+void ContactLaw::step_normal_by_elements(double overlap) {
+    // Refused before the elements are written, so that the contact's state stays as it was, bytes included.
+    if (std::max(overlap_, overlap) > composed_.deepest()) {
+        throw InvalidInput("half_width", format_value(foundation_.half_width()),
+                           "the contact grows beyond the law's half-width at overlap " + format_value(overlap) +
+                               "; give a larger half-width (at least sqrt(R d) for the largest overlap d)");
+    }
+    // The tangential elements are written while the flags are still those of the steps they compose.
+    write_tangential();
+    prepare_foundation(false);
+    foundation_.advance(overlap_, overlap);
+    composed_.summarise(header(), elements(), (overlap - overlap_) / coefficients_.time_step);
+    normal_force_ = state_[normal_offset_ + 1];
+    touched_ = static_cast<std::size_t>(state_[normal_offset_ + 2]);
+}
+
+void ContactLaw::advance_normal(double overlap) { step_normal(overlap); }
 
 // The layer attached to the contact's state (the elements step in place there) and its step prepared, with the
 // elements that entered contact in the normal step (none when it was composed).
@@ -526,7 +549,7 @@ void ContactLaw::advance(std::span<double> state, double overlap, PlanarVector d
     require_finite_components("displacement", displacement);  // before the normal step writes the state
     take_state(state);
     skip_resting_layer(displacement);
-    advance_normal(overlap);
+    step_normal(overlap);
     advance_tangential(displacement);
     end(state);
 }
@@ -545,12 +568,12 @@ SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overla
                                           const SpatialVector& increment) {
     require_finite_components("normal", normal);  // before the normal step writes the state
     require_finite_components("increment", increment);
-    take_state(state);
+    take_normal_state(state);
     if (tangential_idle_) {  // no friction (begin): the layer stays at rest and carries no force, so no frame is needed
-        advance_normal(overlap);
-        tangential_work_ = 0.0;
+        step_normal(overlap);
         return {0.0, 0.0, 0.0};
     }
+    take_frame(state);
     const SpatialVector slip = in_plane(increment, normal);
     // The frame turns with the normal: its axis projected into the new tangent plane and rescaled (LAMMPS's
     // granular history does the same to its tangential vector). At first touch, or should the normal have turned
@@ -568,7 +591,7 @@ SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overla
     const SpatialVector second{handedness_ * turned[0], handedness_ * turned[1], handedness_ * turned[2]};
     const PlanarVector displacement{displacement_[0] + dot(slip, frame_), displacement_[1] + dot(slip, second)};
     skip_resting_layer(displacement);
-    advance_normal(overlap);
+    step_normal(overlap);
     advance_tangential(displacement);
     end(state);
     const PlanarVector force = tangential_force_;
