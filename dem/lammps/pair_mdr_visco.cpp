@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <utility>
 
 #include "atom.h"
 #include "comm.h"
@@ -45,31 +46,40 @@ void cross(const double *a, const double *b, double *out)
   out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-// Prefetches for writing the lines at `base` + `offsets`[k] [bytes], k < count, unrolled up to twelve lines (a
-// loop per range cost 46 instructions a contact-step without friction, docs/dem.md); a prefetch never faults, and
-// the addresses are formed as integers, since they may lie past the history page.
-inline void prefetch_lines(std::uintptr_t base, const std::uintptr_t *offsets, std::size_t count)
+// Prefetches for writing the line at `address`: a prefetch never faults, and the address is formed as an integer,
+// since it may lie past the history page.
+[[gnu::always_inline]] inline void prefetch_line(std::uintptr_t address)
 {
-  const auto line = [base, offsets](std::size_t k) {
-    __builtin_prefetch(reinterpret_cast<const void *>(base + offsets[k]), 1);
-  };
+  __builtin_prefetch(reinterpret_cast<const void *>(address), 1);
+}
+
+// The lines at `base` + `offsets`[k] [bytes], k < Count, without a loop.
+template <std::size_t... k>
+[[gnu::always_inline]] inline void prefetch_lines(std::uintptr_t base, const std::uintptr_t *offsets, std::index_sequence<k...>)
+{
+  (prefetch_line(base + offsets[k]), ...);
+}
+
+// The lines at `base` + `offsets`[k], k < count: a loop per range cost 46 instructions a contact-step without
+// friction (docs/dem.md), so up to twelve lines each count has its own sequence (GCC 12 drops every prefetch of a
+// switch whose cases fall through, and unrolls a loop over the count into a chain of compares).
+[[gnu::always_inline]] inline void prefetch_lines(std::uintptr_t base, const std::uintptr_t *offsets, std::size_t count)
+{
   switch (count) {
+    case 1: return prefetch_lines(base, offsets, std::make_index_sequence<1>{});
+    case 2: return prefetch_lines(base, offsets, std::make_index_sequence<2>{});
+    case 3: return prefetch_lines(base, offsets, std::make_index_sequence<3>{});
+    case 4: return prefetch_lines(base, offsets, std::make_index_sequence<4>{});
+    case 5: return prefetch_lines(base, offsets, std::make_index_sequence<5>{});
+    case 6: return prefetch_lines(base, offsets, std::make_index_sequence<6>{});
+    case 7: return prefetch_lines(base, offsets, std::make_index_sequence<7>{});
+    case 8: return prefetch_lines(base, offsets, std::make_index_sequence<8>{});
+    case 9: return prefetch_lines(base, offsets, std::make_index_sequence<9>{});
+    case 10: return prefetch_lines(base, offsets, std::make_index_sequence<10>{});
+    case 11: return prefetch_lines(base, offsets, std::make_index_sequence<11>{});
+    case 12: return prefetch_lines(base, offsets, std::make_index_sequence<12>{});
     default:
-      for (std::size_t k = 12; k < count; k++) line(k);
-      [[fallthrough]];
-    case 12: line(11); [[fallthrough]];
-    case 11: line(10); [[fallthrough]];
-    case 10: line(9); [[fallthrough]];
-    case 9: line(8); [[fallthrough]];
-    case 8: line(7); [[fallthrough]];
-    case 7: line(6); [[fallthrough]];
-    case 6: line(5); [[fallthrough]];
-    case 5: line(4); [[fallthrough]];
-    case 4: line(3); [[fallthrough]];
-    case 3: line(2); [[fallthrough]];
-    case 2: line(1); [[fallthrough]];
-    case 1: line(0); [[fallthrough]];
-    case 0: break;
+      for (std::size_t k = 0; k < count; k++) prefetch_line(base + offsets[k]);
   }
 }
 
@@ -331,15 +341,17 @@ void PairMdrVisco::compute(int eflag, int vflag)
     tangential_last = std::max(tangential_last, law->held_tangential_offset() + law->held_tangential_size());
   }
   // their lines, from a state four entries on, as byte offsets: every eighth double of each range and its last
-  // (beyond the L3 the hardware prefetchers miss them: 4 lines of every 22, docs/dem.md)
+  // where that is not the eighth before it (beyond the L3 the hardware prefetchers miss them: 4 lines of every 22,
+  // docs/dem.md)
   const std::uintptr_t ahead_bytes = 4 * static_cast<std::uintptr_t>(size_history) * sizeof(double);
   std::vector<std::uintptr_t> lines;
   const auto range = [&](std::size_t first, std::size_t last) {
     for (std::size_t k = first; k < last; k += 8) lines.push_back(ahead_bytes + k * sizeof(double));
-    lines.push_back(ahead_bytes + (last - 1) * sizeof(double));
+    if ((last - 1 - first) % 8 != 0) lines.push_back(ahead_bytes + (last - 1) * sizeof(double));
   };
   range(0, leading);
   if (tangential_last > 0) range(tangential_first, tangential_last);
+  std::reverse(lines.begin(), lines.end());    // prefetch_lines takes the last first: the state's order
   const std::uintptr_t *line_offsets = lines.data();
   const std::size_t line_count = lines.size();
   // the contacts' energy for compute pair (docs/dem.md): a contact computed on two ranks (newton off, j a ghost)
