@@ -68,6 +68,8 @@ void require_finite_components(const char* key, const Vector& vector) {
 
 std::string entry(std::size_t index) { return "state[" + std::to_string(index) + "]"; }
 
+constexpr double line_load_factor = 4.0;  // q_z = 4 sigma, eq. (22)
+
 }  // namespace
 
 std::size_t ContactLaw::state_size(std::size_t elements, std::size_t branches) {
@@ -466,7 +468,6 @@ bool ContactLaw::tangential_composes() const {
 // bound against the least line load 4 sigma_min (eq. 22; the composed normal step's lower bound), else element by
 // element against the line loads.
 bool ContactLaw::tangential_sticks(PlanarVector increment, foundation::ComposedTangentialStep::Step& step) const {
-    constexpr double line_load_factor = 4.0;  // q_z = 4 sigma, eq. (22)
     if (tangential_.prepare(tangential_header(), increment, line_load_factor * least_stress_, step)) return true;
     require_loads();
     return tangential_.sticks(tangential_elements(), step, loads_.data());
@@ -500,7 +501,40 @@ PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
     return layer_.trial_force(increment, loads(), contact_flags());
 }
 
-void ContactLaw::advance_tangential(PlanarVector displacement) {
+// Takes the composed tangential step of `increment` where every element in contact sticks (tangential_sticks' tests:
+// the bound first, in the same call as the step) and returns whether it did.
+[[gnu::always_inline]] inline bool ContactLaw::step_composed_tangential(PlanarVector increment) {
+    foundation::ComposedTangentialStep::Step step;
+    const foundation::PlanarElements elements = tangential_elements();
+    if (!tangential_.advance_if_certain(tangential_header(), elements, increment, line_load_factor * least_stress_,
+                                        step)) {
+        require_loads();
+        if (!tangential_.sticks(elements, step, loads_.data())) return false;
+        tangential_.advance(tangential_header(), elements, step);
+    }
+    tangential_force_ = tangential_force(std::span<const double>(state_, state_size_));
+    return true;
+}
+
+// The layer's own step, where the tangential step cannot be composed (an element slips, enters or leaves): the
+// elements written first where the header composed them.
+void ContactLaw::step_tangential_by_elements(PlanarVector increment) {
+    write_tangential();
+    require_loads();
+    require_layer();
+    layer_.advance(increment, loads(), contact_flags());
+    tangential_force_ = layer_.total_force();
+    // After a step in which every element in contact stuck (and no element entered or left) the following steps are
+    // composed; a sliding contact's are not (nothing to summarise).
+    if (composed_step_ && layer_.stuck()) {
+        tangential_.summarise(tangential_header(), tangential_elements(), tangential_force_);
+    } else {
+        foundation::ComposedTangentialStep::keep(tangential_header(), tangential_force_);
+    }
+}
+
+// advance_tangential's body, inlined into it and into the one-call steps (as step_normal).
+[[gnu::always_inline]] inline void ContactLaw::step_tangential(PlanarVector displacement) {
     require_finite_components("displacement", displacement);
     const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};
     if (tangential_at_rest(increment)) {  // the layer's state stays zero (its force too, as begin found it)
@@ -508,29 +542,14 @@ void ContactLaw::advance_tangential(PlanarVector displacement) {
         displacement_ = displacement;
         return;
     }
-    foundation::ComposedTangentialStep::Step step;
-    if (tangential_composes() && tangential_sticks(increment, step)) {
-        tangential_.advance(tangential_header(), tangential_elements(), step);
-        tangential_force_ = tangential_force(std::span<const double>(state_, state_size_));
-    } else {
-        write_tangential();
-        require_loads();
-        require_layer();
-        layer_.advance(increment, loads(), contact_flags());
-        tangential_force_ = layer_.total_force();
-        // After a step in which every element in contact stuck (and no element entered or left) the following
-        // steps are composed; a sliding contact's are not (nothing to summarise).
-        if (composed_step_ && layer_.stuck()) {
-            tangential_.summarise(tangential_header(), tangential_elements(), tangential_force_);
-        } else {
-            foundation::ComposedTangentialStep::keep(tangential_header(), tangential_force_);
-        }
-    }
+    if (!(tangential_composes() && step_composed_tangential(increment))) step_tangential_by_elements(increment);
     const PlanarVector& end_force = tangential_force_;
     tangential_work_ = 0.5 * ((start_tangential_force_[0] + end_force[0]) * increment[0] +
                               (start_tangential_force_[1] + end_force[1]) * increment[1]);
     displacement_ = displacement;
 }
+
+void ContactLaw::advance_tangential(PlanarVector displacement) { step_tangential(displacement); }
 
 void ContactLaw::end(std::span<double> state) const {
     state[0] = displacement_[0];
@@ -550,7 +569,7 @@ void ContactLaw::advance(std::span<double> state, double overlap, PlanarVector d
     take_state(state);
     skip_resting_layer(displacement);
     step_normal(overlap);
-    advance_tangential(displacement);
+    step_tangential(displacement);
     end(state);
 }
 
@@ -592,7 +611,7 @@ SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overla
     const PlanarVector displacement{displacement_[0] + dot(slip, frame_), displacement_[1] + dot(slip, second)};
     skip_resting_layer(displacement);
     step_normal(overlap);
-    advance_tangential(displacement);
+    step_tangential(displacement);
     end(state);
     const PlanarVector force = tangential_force_;
     return {force[0] * frame_[0] + force[1] * second[0], force[0] * frame_[1] + force[1] * second[1],

@@ -203,6 +203,9 @@ private:
     void take_frame(std::span<const double> state);
     void step_normal(double overlap);
     void step_normal_by_elements(double overlap);
+    void step_tangential(PlanarVector displacement);
+    bool step_composed_tangential(PlanarVector increment);
+    void step_tangential_by_elements(PlanarVector increment);
     [[noreturn, gnu::noinline, gnu::cold]] void refuse_state_size(std::size_t size) const;
 
     foundation::Foundation foundation_;
