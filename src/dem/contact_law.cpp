@@ -88,6 +88,7 @@ ContactLaw::ContactLaw(const rheology::Rheology& material, double radius, double
       layer_(material, friction, half_width / static_cast<double>(elements), elements),
       material_(material),
       loads_(elements, 0.0),
+      elements_(elements),
       friction_(friction),
       branches_(material.terms().size()),
       header_size_(foundation::ComposedNormalStep::header_size(branches_)),
@@ -344,10 +345,11 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
 
 void ContactLaw::begin(std::span<double> state) { take_state(state); }
 
+// The elements as the state holds them: touched_ is the state's count from begin on (the Foundation's step alone
+// changes it, and step_normal_by_elements reads it back).
 foundation::AttachedElements ContactLaw::elements() const {
-    const std::size_t n = loads_.size();
     double* w = state_ + normal_offset_ + 3;
-    return {w, w + n, w + 2 * n, n, static_cast<std::size_t>(state_[normal_offset_ + 2])};
+    return {w, w + elements_, w + 2 * elements_, elements_, touched_};
 }
 
 // The Foundation takes the step: the elements brought up to date (the header's maps applied), attached, their
@@ -414,9 +416,9 @@ void ContactLaw::step_normal_by_elements(double overlap) {
     write_tangential();
     prepare_foundation(false);
     foundation_.advance(overlap_, overlap);
-    composed_.summarise(header(), elements(), (overlap - overlap_) / coefficients_.time_step);
-    normal_force_ = state_[normal_offset_ + 1];
     touched_ = static_cast<std::size_t>(state_[normal_offset_ + 2]);
+    normal_force_ = state_[normal_offset_ + 1];
+    composed_.summarise(header(), elements(), (overlap - overlap_) / coefficients_.time_step);
 }
 
 void ContactLaw::advance_normal(double overlap) { step_normal(overlap); }
@@ -441,12 +443,11 @@ void ContactLaw::require_loads() const {
     loads_ready_ = true;
 }
 
+// The Foundation's touched count (touched_): that of the steps the header composes until the normal step changes it
+// (the layer's is the same while the header composes).
 foundation::PlanarElements ContactLaw::tangential_elements() const {
-    const std::size_t n = loads_.size();
     double* u = state_ + tangential_offset_ + 3;
-    // The Foundation's touched count in the state: that of the steps the header composes until the normal step
-    // writes it (the layer's is the same while the header composes).
-    return {u, u + 2 * n, state_ + normal_offset_ + 3 + n, n, static_cast<std::size_t>(state_[normal_offset_ + 2])};
+    return {u, u + 2 * elements_, state_ + normal_offset_ + 3 + elements_, elements_, touched_};
 }
 
 // The tangential elements written (the header's maps applied) where the header composes.

@@ -218,6 +218,7 @@ private:
     mutable bool loads_ready_ = false;   ///< loads_ holds the last normal step's
     mutable bool layer_ready_ = false;   ///< layer_ is attached to this step's state and prepared (require_layer)
     std::size_t layer_touched_ = 0;      ///< the layer's touched elements at begin
+    std::size_t elements_;  ///< N
     double friction_;
     bool tangential_idle_ = false;  ///< the layer stays at rest this step (tangential_at_rest): nothing to step
     std::size_t branches_;
