@@ -135,7 +135,7 @@ std::size_t ContactLaw::count_at(std::span<const double> state, std::size_t offs
     const double count = state[offset];
     // A whole number in range: its conversion back is exact (no call of floor, which is not inlined for x86-64's
     // baseline instruction set, and a signed conversion, one instruction there; this runs twice a step).
-    if (count >= 0.0 && count <= static_cast<double>(loads_.size()) &&
+    if (count >= 0.0 && count <= static_cast<double>(elements_) &&
         static_cast<double>(static_cast<std::int64_t>(count)) == count) [[likely]] {
         return static_cast<std::size_t>(static_cast<std::int64_t>(count));
     }
@@ -145,7 +145,7 @@ std::size_t ContactLaw::count_at(std::span<const double> state, std::size_t offs
 void ContactLaw::refuse_count(std::size_t offset, double count) const {
     throw InvalidInput(entry(offset), format_value(count),
                        "a contact state's element count must be a whole number in [0, " +
-                           std::to_string(loads_.size()) + "] (a corrupted or foreign state)");
+                           std::to_string(elements_) + "] (a corrupted or foreign state)");
 }
 
 void ContactLaw::check(std::span<const double> state) const {
@@ -155,7 +155,7 @@ void ContactLaw::check(std::span<const double> state) const {
             throw InvalidInput(entry(i), format_value(state[i]), "a contact state holds finite numbers");
         }
     }
-    const std::size_t n = loads_.size();
+    const std::size_t n = elements_;
     const std::size_t active = count_at(state, normal_offset_ + 2);
     const std::size_t touched =
         count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
@@ -260,7 +260,7 @@ void ContactLaw::check_tangential_header(std::span<const double> state, std::siz
         }
     }
     // A copy of the elements: the summary is made on writable ones.
-    const std::size_t n = loads_.size();
+    const std::size_t n = elements_;
     std::vector<double> written(state.begin() + static_cast<std::ptrdiff_t>(tangential_offset_ + 3),
                                 state.begin() + static_cast<std::ptrdiff_t>(state_size_));
     const double* flags = state.data() + normal_offset_ + 3 + n;
@@ -277,7 +277,7 @@ void ContactLaw::check_tangential_header(std::span<const double> state, std::siz
 
 double ContactLaw::stored_energy(std::span<const double> state) const {
     require_state_size(state);
-    const std::size_t n = loads_.size();
+    const std::size_t n = elements_;
     const auto& terms = material_.terms();
     // The Foundation's attached state: depth, force, count, then w_i, flags, h_k,i, composed (the header's maps
     // applied, foundation::ComposedNormalStep::element); the layer's: force (2), count, then u_x, u_y, and h_x, h_y
@@ -485,7 +485,7 @@ bool ContactLaw::tangential_at_rest(PlanarVector increment) const {
 std::span<const double> ContactLaw::loads() const { return std::span<const double>(loads_).first(touched_); }
 
 std::span<const double> ContactLaw::contact_flags() const {
-    return {state_ + normal_offset_ + 3 + loads_.size(), touched_};  // the Foundation's flags (elements())
+    return {state_ + normal_offset_ + 3 + elements_, touched_};  // the Foundation's flags (elements())
 }
 
 PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
