@@ -47,7 +47,8 @@ void cross(const double *a, const double *b, double *out)
 }
 
 // Prefetches for writing the line at `address`: a prefetch never faults, and the address is formed as an integer,
-// since it may lie past the history page.
+// since it may lie past the history page. These helpers are always inlined: GCC 12 takes a function that only
+// prefetches for one without effect and drops its calls.
 [[gnu::always_inline]] inline void prefetch_line(std::uintptr_t address)
 {
   __builtin_prefetch(reinterpret_cast<const void *>(address), 1);
@@ -55,15 +56,17 @@ void cross(const double *a, const double *b, double *out)
 
 // The lines at `base` + `offsets`[k] [bytes], k < Count, without a loop.
 template <std::size_t... k>
-[[gnu::always_inline]] inline void prefetch_lines(std::uintptr_t base, const std::uintptr_t *offsets, std::index_sequence<k...>)
+[[gnu::always_inline]] inline void prefetch_lines(std::uintptr_t base, const std::uintptr_t *offsets,
+                                                  std::index_sequence<k...>)
 {
   (prefetch_line(base + offsets[k]), ...);
 }
 
-// The lines at `base` + `offsets`[k], k < count: a loop per range cost 46 instructions a contact-step without
-// friction (docs/dem.md), so up to twelve lines each count has its own sequence (GCC 12 drops every prefetch of a
-// switch whose cases fall through, and unrolls a loop over the count into a chain of compares).
-[[gnu::always_inline]] inline void prefetch_lines(std::uintptr_t base, const std::uintptr_t *offsets, std::size_t count)
+// The lines at `base` + `offsets`[k], k < count: each count up to twelve has its own sequence (a loop per range
+// cost 46 instructions a contact-step without friction, these 24, docs/dem.md; GCC 12 unrolls a loop over the count
+// into a chain of compares).
+[[gnu::always_inline]] inline void prefetch_lines(std::uintptr_t base, const std::uintptr_t *offsets,
+                                                  std::size_t count)
 {
   switch (count) {
     case 1: return prefetch_lines(base, offsets, std::make_index_sequence<1>{});
@@ -252,7 +255,8 @@ void PairMdrVisco::build_laws()
   // the law of types (i, j) in either order, read once per contact-step (no min, max and ntypes there)
   law_of_types.assign(resolutions.size(), nullptr);
   for (int i = 1; i <= n; i++)
-    for (int j = 1; j <= n; j++) law_of_types[pair_index(i, j)] = laws[pair_index(std::min(i, j), std::max(i, j))].get();
+    for (int j = 1; j <= n; j++)
+      law_of_types[pair_index(i, j)] = laws[pair_index(std::min(i, j), std::max(i, j))].get();
   if (fix_history && largest != size_history)
     error->all(FLERR,
                "pair mdr/visco: the coefficients changed the contact state's size ({} to {} doubles) between "

@@ -111,8 +111,10 @@ void ComposedNormalStep::set_step(const StepCoefficients& coefficients) {
 
 // Inlined into its two callers (trial_force, advance_with), so that a step dispatches on M once.
 template <class Branches>
-[[gnu::always_inline]] inline bool ComposedNormalStep::prepare_with(std::span<const double> header, const AttachedElements& elements,
-                                      double depth_start, double depth_end, Step& step, Branches m) const {
+[[gnu::always_inline]] inline bool ComposedNormalStep::prepare_with(std::span<const double> header,
+                                                                   const AttachedElements& elements,
+                                                                   double depth_start, double depth_end, Step& step,
+                                                                   Branches m) const {
     const std::size_t order = m + 1, touched = elements.touched;
     const double deepest = std::max(depth_start, depth_end);
     // The Foundation's step: an element reached for the first time (Foundation::reach), the end of the foundation.
