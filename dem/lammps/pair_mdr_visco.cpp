@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <utility>
 
 #include "atom.h"
 #include "comm.h"
@@ -43,6 +44,46 @@ void cross(const double *a, const double *b, double *out)
   out[0] = a[1] * b[2] - a[2] * b[1];
   out[1] = a[2] * b[0] - a[0] * b[2];
   out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// Prefetches for writing the line at `address`: a prefetch never faults, and the address is formed as an integer,
+// since it may lie past the history page. These helpers are always inlined: GCC 12 takes a function that only
+// prefetches for one without effect and drops its calls.
+[[gnu::always_inline]] inline void prefetch_line(std::uintptr_t address)
+{
+  __builtin_prefetch(reinterpret_cast<const void *>(address), 1);
+}
+
+// The lines at `base` + `offsets`[k] [bytes], k < Count, without a loop.
+template <std::size_t... k>
+[[gnu::always_inline]] inline void prefetch_lines(std::uintptr_t base, const std::uintptr_t *offsets,
+                                                  std::index_sequence<k...>)
+{
+  (prefetch_line(base + offsets[k]), ...);
+}
+
+// The lines at `base` + `offsets`[k], k < count: each count up to twelve has its own sequence (a loop per range
+// cost 46 instructions a contact-step without friction, these 24, docs/dem.md; GCC 12 unrolls a loop over the count
+// into a chain of compares).
+[[gnu::always_inline]] inline void prefetch_lines(std::uintptr_t base, const std::uintptr_t *offsets,
+                                                  std::size_t count)
+{
+  switch (count) {
+    case 1: return prefetch_lines(base, offsets, std::make_index_sequence<1>{});
+    case 2: return prefetch_lines(base, offsets, std::make_index_sequence<2>{});
+    case 3: return prefetch_lines(base, offsets, std::make_index_sequence<3>{});
+    case 4: return prefetch_lines(base, offsets, std::make_index_sequence<4>{});
+    case 5: return prefetch_lines(base, offsets, std::make_index_sequence<5>{});
+    case 6: return prefetch_lines(base, offsets, std::make_index_sequence<6>{});
+    case 7: return prefetch_lines(base, offsets, std::make_index_sequence<7>{});
+    case 8: return prefetch_lines(base, offsets, std::make_index_sequence<8>{});
+    case 9: return prefetch_lines(base, offsets, std::make_index_sequence<9>{});
+    case 10: return prefetch_lines(base, offsets, std::make_index_sequence<10>{});
+    case 11: return prefetch_lines(base, offsets, std::make_index_sequence<11>{});
+    case 12: return prefetch_lines(base, offsets, std::make_index_sequence<12>{});
+    default:
+      for (std::size_t k = 0; k < count; k++) prefetch_line(base + offsets[k]);
+  }
 }
 
 }    // namespace
@@ -211,6 +252,11 @@ void PairMdrVisco::build_laws()
       largest = std::max(largest, static_cast<int>(laws[pair_index(i, j)]->state_size()));
     }
   }
+  // the law of types (i, j) in either order, read once per contact-step (no min, max and ntypes there)
+  law_of_types.assign(resolutions.size(), nullptr);
+  for (int i = 1; i <= n; i++)
+    for (int j = 1; j <= n; j++)
+      law_of_types[pair_index(i, j)] = laws[pair_index(std::min(i, j), std::max(i, j))].get();
   if (fix_history && largest != size_history)
     error->all(FLERR,
                "pair mdr/visco: the coefficients changed the contact state's size ({} to {} doubles) between "
@@ -287,20 +333,31 @@ void PairMdrVisco::compute(int eflag, int vflag)
       }
     }
   }
-  // the doubles at a state's start that every step touches (ContactLaw::held_step_size), the most of any law
+  // the doubles at a state's start that every step touches (ContactLaw::held_step_size), the most of any law, and
+  // those further on (ContactLaw::held_tangential_offset and _size: with friction the composed tangential step's
+  // header and the layer's force and count, without friction the layer's count): the span that covers every law's
   std::size_t leading = 1;
-  for (const auto &law : laws)
-    if (law) leading = std::max(leading, law->held_step_size());
-  // and those further on (ContactLaw::held_tangential_offset and _size: with friction the composed tangential
-  // step's header and the layer's force and count, without friction the layer's count): the span that covers
-  // every law's
   std::size_t tangential_first = static_cast<std::size_t>(size_history), tangential_last = 0;
   for (const auto &law : laws) {
     if (!law) continue;
+    leading = std::max(leading, law->held_step_size());
     tangential_first = std::min(tangential_first, law->held_tangential_offset());
     tangential_last = std::max(tangential_last, law->held_tangential_offset() + law->held_tangential_size());
   }
+  // their lines, from a state four entries on, as byte offsets: every eighth double of each range and its last
+  // where that is not the eighth before it (beyond the L3 the hardware prefetchers miss them: 4 lines of every 22,
+  // docs/dem.md)
   const std::uintptr_t ahead_bytes = 4 * static_cast<std::uintptr_t>(size_history) * sizeof(double);
+  std::vector<std::uintptr_t> lines;
+  const auto range = [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; k += 8) lines.push_back(ahead_bytes + k * sizeof(double));
+    if ((last - 1 - first) % 8 != 0) lines.push_back(ahead_bytes + (last - 1) * sizeof(double));
+  };
+  range(0, leading);
+  if (tangential_last > 0) range(tangential_first, tangential_last);
+  std::reverse(lines.begin(), lines.end());    // prefetch_lines takes the last first: the state's order
+  const std::uintptr_t *line_offsets = lines.data();
+  const std::size_t line_count = lines.size();
   // the contacts' energy for compute pair (docs/dem.md): a contact computed on two ranks (newton off, j a ghost)
   // counts half on each
   double work = 0.0, stored = 0.0;
@@ -319,20 +376,11 @@ void PairMdrVisco::compute(int eflag, int vflag)
     double torquei[3] = {torque[i][0], torque[i][1], torque[i][2]};
     const double radiusi = radius[i];
     const int itype = type[i];
+    mdr::dem::ContactLaw *const *laws_of_i = law_of_types.data() + pair_index(itype, 0);
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       double *history = &allhistory[size_history * jj];
-      // the held step's leading doubles of the state four entries on, a cache line (8 doubles) at a time: beyond
-      // the L3 the hardware prefetchers miss them (4 lines of every 22), docs/dem.md; a prefetch never faults, and
-      // its address is formed as an integer, since it may lie past the history page
-      const std::uintptr_t ahead = reinterpret_cast<std::uintptr_t>(history) + ahead_bytes;
-      for (std::size_t k = 0; k < leading; k += 8)
-        __builtin_prefetch(reinterpret_cast<const void *>(ahead + k * sizeof(double)), 1);
-      __builtin_prefetch(reinterpret_cast<const void *>(ahead + (leading - 1) * sizeof(double)), 1);
-      for (std::size_t k = tangential_first; k < tangential_last; k += 8)
-        __builtin_prefetch(reinterpret_cast<const void *>(ahead + k * sizeof(double)), 1);
-      if (tangential_last > 0)
-        __builtin_prefetch(reinterpret_cast<const void *>(ahead + (tangential_last - 1) * sizeof(double)), 1);
+      prefetch_lines(reinterpret_cast<std::uintptr_t>(history), line_offsets, line_count);    // the held lines ahead
       const double del[3] = {x[j][0] - xi[0], x[j][1] - xi[1], x[j][2] - xi[2]};
       const double rsq = dot(del, del);
       const double radsum = radiusi + radius[j];
@@ -352,8 +400,7 @@ void PairMdrVisco::compute(int eflag, int vflag)
       double spin[3], turned[3];
       for (int k = 0; k < 3; k++) spin[k] = radiusi * omegai[k] + radius[j] * omega[j][k];
       cross(spin, normal, turned);
-      const int jtype = type[j];
-      mdr::dem::ContactLaw &contact = *laws[pair_index(std::min(itype, jtype), std::max(itype, jtype))];
+      mdr::dem::ContactLaw &contact = *laws_of_i[type[j]];
       const std::span<double> state(history, contact.state_size());
       mdr::dem::SpatialVector tangential;
       double normal_force = 0.0;
@@ -380,23 +427,24 @@ void PairMdrVisco::compute(int eflag, int vflag)
           error->one(FLERR,
                      "pair mdr/visco: atoms {} and {} overlap by d/R = {:.4g} (R = {:.4g}): beyond the law's "
                      "half_width {} of types {} {}; give pair_coeff ... half_width >= sqrt(d/R) = {:.3g}",
-                     tag[i], tag[j], relative, scale, e.value(), itype, jtype, std::sqrt(relative));
+                     tag[i], tag[j], relative, scale, e.value(), itype, type[j], std::sqrt(relative));
         error->one(FLERR, "pair mdr/visco: atoms {} and {}: {}", tag[i], tag[j], e.what());
       }
       const double area = scale * scale;
-      double fj[3], tj[3];
+      double fj[3];
       for (int k = 0; k < 3; k++) fj[k] = area * (normal_force * normal[k] + tangential[k]);
-      const double tangential_force[3] = {area * tangential[0], area * tangential[1], area * tangential[2]};
-      cross(normal, tangential_force, tj);    // n x F_t; the torques are -r_i n x F_t and -r_j n x F_t
-      for (int k = 0; k < 3; k++) {
-        fi[k] -= fj[k];
-        torquei[k] -= radiusi * tj[k];
-      }
-      if (whole) {
-        for (int k = 0; k < 3; k++) {
-          f[j][k] += fj[k];
-          torque[j][k] -= radius[j] * tj[k];
-        }
+      for (int k = 0; k < 3; k++) fi[k] -= fj[k];
+      if (whole)
+        for (int k = 0; k < 3; k++) f[j][k] += fj[k];
+      // the torques are -r_i n x F_t and -r_j n x F_t; a tangential force of zero (no friction, or none yet) leaves
+      // them as they are (x - 0 = x; only a torque of -0, which no step of this style leaves, would become +0)
+      if (tangential[0] != 0.0 || tangential[1] != 0.0 || tangential[2] != 0.0) {
+        const double tangential_force[3] = {area * tangential[0], area * tangential[1], area * tangential[2]};
+        double tj[3];
+        cross(normal, tangential_force, tj);    // n x F_t
+        for (int k = 0; k < 3; k++) torquei[k] -= radiusi * tj[k];
+        if (whole)
+          for (int k = 0; k < 3; k++) torque[j][k] -= radius[j] * tj[k];
       }
       if (evflag)    // the force on i and x_i - x_j
         ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, -fj[0], -fj[1], -fj[2], -del[0], -del[1], -del[2]);

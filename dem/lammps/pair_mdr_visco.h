@@ -61,6 +61,7 @@ class PairMdrVisco : public Pair {
   std::vector<char> material_given;                         // per type
   std::vector<Resolution> resolutions;                      // per type pair, pair_index
   std::vector<std::unique_ptr<mdr::dem::ContactLaw>> laws;  // per type pair, pair_index (i <= j)
+  std::vector<mdr::dem::ContactLaw *> law_of_types;         // per type pair, pair_index, both orders
   std::vector<double> largest_radius;                       // per type, for the cutoff
   class FixNeighHistory *fix_history;
   int size_history;    // doubles of history per contact: the largest state of the type pairs' laws

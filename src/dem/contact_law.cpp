@@ -68,6 +68,8 @@ void require_finite_components(const char* key, const Vector& vector) {
 
 std::string entry(std::size_t index) { return "state[" + std::to_string(index) + "]"; }
 
+constexpr double line_load_factor = 4.0;  // q_z = 4 sigma, eq. (22)
+
 }  // namespace
 
 std::size_t ContactLaw::state_size(std::size_t elements, std::size_t branches) {
@@ -86,6 +88,7 @@ ContactLaw::ContactLaw(const rheology::Rheology& material, double radius, double
       layer_(material, friction, half_width / static_cast<double>(elements), elements),
       material_(material),
       loads_(elements, 0.0),
+      elements_(elements),
       friction_(friction),
       branches_(material.terms().size()),
       header_size_(foundation::ComposedNormalStep::header_size(branches_)),
@@ -132,7 +135,7 @@ std::size_t ContactLaw::count_at(std::span<const double> state, std::size_t offs
     const double count = state[offset];
     // A whole number in range: its conversion back is exact (no call of floor, which is not inlined for x86-64's
     // baseline instruction set, and a signed conversion, one instruction there; this runs twice a step).
-    if (count >= 0.0 && count <= static_cast<double>(loads_.size()) &&
+    if (count >= 0.0 && count <= static_cast<double>(elements_) &&
         static_cast<double>(static_cast<std::int64_t>(count)) == count) [[likely]] {
         return static_cast<std::size_t>(static_cast<std::int64_t>(count));
     }
@@ -142,7 +145,7 @@ std::size_t ContactLaw::count_at(std::span<const double> state, std::size_t offs
 void ContactLaw::refuse_count(std::size_t offset, double count) const {
     throw InvalidInput(entry(offset), format_value(count),
                        "a contact state's element count must be a whole number in [0, " +
-                           std::to_string(loads_.size()) + "] (a corrupted or foreign state)");
+                           std::to_string(elements_) + "] (a corrupted or foreign state)");
 }
 
 void ContactLaw::check(std::span<const double> state) const {
@@ -152,7 +155,7 @@ void ContactLaw::check(std::span<const double> state) const {
             throw InvalidInput(entry(i), format_value(state[i]), "a contact state holds finite numbers");
         }
     }
-    const std::size_t n = loads_.size();
+    const std::size_t n = elements_;
     const std::size_t active = count_at(state, normal_offset_ + 2);
     const std::size_t touched =
         count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
@@ -257,7 +260,7 @@ void ContactLaw::check_tangential_header(std::span<const double> state, std::siz
         }
     }
     // A copy of the elements: the summary is made on writable ones.
-    const std::size_t n = loads_.size();
+    const std::size_t n = elements_;
     std::vector<double> written(state.begin() + static_cast<std::ptrdiff_t>(tangential_offset_ + 3),
                                 state.begin() + static_cast<std::ptrdiff_t>(state_size_));
     const double* flags = state.data() + normal_offset_ + 3 + n;
@@ -274,7 +277,7 @@ void ContactLaw::check_tangential_header(std::span<const double> state, std::siz
 
 double ContactLaw::stored_energy(std::span<const double> state) const {
     require_state_size(state);
-    const std::size_t n = loads_.size();
+    const std::size_t n = elements_;
     const auto& terms = material_.terms();
     // The Foundation's attached state: depth, force, count, then w_i, flags, h_k,i, composed (the header's maps
     // applied, foundation::ComposedNormalStep::element); the layer's: force (2), count, then u_x, u_y, and h_x, h_y
@@ -312,13 +315,17 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
 // begin's body, inlined into the one-call steps (advance, advance_spatial): a held step saves the call and the
 // reloads of the members it sets (15 instructions, docs/dem.md).
 [[gnu::always_inline]] inline void ContactLaw::take_state(std::span<double> state) {
+    take_normal_state(state);
+    take_frame(state);
+}
+
+// All of take_state but the tangential displacement and the frame, which a step with an idle layer does not read
+// when it writes no frame either (advance_spatial).
+[[gnu::always_inline]] inline void ContactLaw::take_normal_state(std::span<double> state) {
     require_state_size(state);
-    count_at(state, normal_offset_ + 2);  // the two element counts decide where the loads below read and write
+    touched_ = count_at(state, normal_offset_ + 2);  // the two element counts decide where the steps read and write
     layer_touched_ = count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
     state_ = state.data();
-    displacement_ = {state[0], state[1]};
-    frame_ = {state[frame_offset], state[frame_offset + 1], state[frame_offset + 2]};
-    handedness_ = state[handedness_offset];
     overlap_ = state[normal_offset_];
     layer_ready_ = false;  // attached where a step needs it (require_layer): a composed tangential step does not
     tangential_idle_ = friction_ == 0.0 && layer_touched_ == 0;
@@ -329,12 +336,20 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
     normal_work_ = tangential_work_ = 0.0;
 }
 
+// The tangential displacement and the frame at the step's start (end writes them back).
+[[gnu::always_inline]] inline void ContactLaw::take_frame(std::span<const double> state) {
+    displacement_ = {state[0], state[1]};
+    frame_ = {state[frame_offset], state[frame_offset + 1], state[frame_offset + 2]};
+    handedness_ = state[handedness_offset];
+}
+
 void ContactLaw::begin(std::span<double> state) { take_state(state); }
 
+// The elements as the state holds them: touched_ is the state's count from begin on (the Foundation's step alone
+// changes it, and step_normal_by_elements reads it back).
 foundation::AttachedElements ContactLaw::elements() const {
-    const std::size_t n = loads_.size();
     double* w = state_ + normal_offset_ + 3;
-    return {w, w + n, w + 2 * n, n, static_cast<std::size_t>(state_[normal_offset_ + 2])};
+    return {w, w + elements_, w + 2 * elements_, elements_, touched_};
 }
 
 // The Foundation takes the step: the elements brought up to date (the header's maps applied), attached, their
@@ -357,30 +372,23 @@ double ContactLaw::normal_trial(double overlap) {
     return foundation_.trial_force(overlap_, overlap);
 }
 
-void ContactLaw::advance_normal(double overlap) {
+// advance_normal's body, inlined into it and into the one-call steps (advance, advance_spatial: a held step then
+// makes no call for it but the composed step's): the composed form where no element enters or leaves, else the
+// Foundation's step (step_normal_by_elements, out of line).
+[[gnu::always_inline]] inline void ContactLaw::step_normal(double overlap) {
     if (!std::isfinite(overlap)) require_finite("overlap", overlap);  // the key's string only when it throws
-    double force = 0.0;
     const foundation::AttachedElements start = elements();
-    composed_step_ = composed_.advance(header(), start, overlap_, overlap, force, least_stress_);
+    composed_step_ = composed_.advance(header(), start, overlap_, overlap, normal_force_, least_stress_);
     if (composed_step_) {
         state_[normal_offset_] = overlap;
-        state_[normal_offset_ + 1] = force;
+        state_[normal_offset_ + 1] = normal_force_;
     } else {
-        // Refused before the elements are written, so that the contact's state stays as it was, bytes included.
-        if (std::max(overlap_, overlap) > composed_.deepest()) {
-            throw InvalidInput("half_width", format_value(foundation_.half_width()),
-                               "the contact grows beyond the law's half-width at overlap " + format_value(overlap) +
-                                   "; give a larger half-width (at least sqrt(R d) for the largest overlap d)");
-        }
-        // The tangential elements are written while the flags are still those of the steps they compose.
-        write_tangential();
-        prepare_foundation(false);
-        foundation_.advance(overlap_, overlap);
-        composed_.summarise(header(), elements(), (overlap - overlap_) / coefficients_.time_step);
+        step_normal_by_elements(overlap);
     }
-    normal_force_ = state_[normal_offset_ + 1];
-    touched_ = static_cast<std::size_t>(state_[normal_offset_ + 2]);
-    contact_count_ = static_cast<std::size_t>(header()[foundation::ComposedNormalStep::contacts_offset]);
+    // A whole number in [0, N] (the state's count was checked, the steps keep it so): the signed conversion is
+    // one instruction.
+    contact_count_ = static_cast<std::size_t>(
+        static_cast<std::int64_t>(header()[foundation::ComposedNormalStep::contacts_offset]));
     normal_work_ = 0.5 * (start_normal_force_ + normal_force_) * (overlap - overlap_);
     loads_ready_ = false;
     if (tangential_idle_) return;
@@ -395,6 +403,25 @@ void ContactLaw::advance_normal(double overlap) {
         loads_ready_ = true;
     }
 }
+
+// The normal step with an entry or exit: the Foundation's, the header summarised again after it.
+void ContactLaw::step_normal_by_elements(double overlap) {
+    // Refused before the elements are written, so that the contact's state stays as it was, bytes included.
+    if (std::max(overlap_, overlap) > composed_.deepest()) {
+        throw InvalidInput("half_width", format_value(foundation_.half_width()),
+                           "the contact grows beyond the law's half-width at overlap " + format_value(overlap) +
+                               "; give a larger half-width (at least sqrt(R d) for the largest overlap d)");
+    }
+    // The tangential elements are written while the flags are still those of the steps they compose.
+    write_tangential();
+    prepare_foundation(false);
+    foundation_.advance(overlap_, overlap);
+    touched_ = static_cast<std::size_t>(state_[normal_offset_ + 2]);
+    normal_force_ = state_[normal_offset_ + 1];
+    composed_.summarise(header(), elements(), (overlap - overlap_) / coefficients_.time_step);
+}
+
+void ContactLaw::advance_normal(double overlap) { step_normal(overlap); }
 
 // The layer attached to the contact's state (the elements step in place there) and its step prepared, with the
 // elements that entered contact in the normal step (none when it was composed).
@@ -416,12 +443,11 @@ void ContactLaw::require_loads() const {
     loads_ready_ = true;
 }
 
+// The Foundation's touched count (touched_): that of the steps the header composes until the normal step changes it
+// (the layer's is the same while the header composes).
 foundation::PlanarElements ContactLaw::tangential_elements() const {
-    const std::size_t n = loads_.size();
     double* u = state_ + tangential_offset_ + 3;
-    // The Foundation's touched count in the state: that of the steps the header composes until the normal step
-    // writes it (the layer's is the same while the header composes).
-    return {u, u + 2 * n, state_ + normal_offset_ + 3 + n, n, static_cast<std::size_t>(state_[normal_offset_ + 2])};
+    return {u, u + 2 * elements_, state_ + normal_offset_ + 3 + elements_, elements_, touched_};
 }
 
 // The tangential elements written (the header's maps applied) where the header composes.
@@ -443,7 +469,6 @@ bool ContactLaw::tangential_composes() const {
 // bound against the least line load 4 sigma_min (eq. 22; the composed normal step's lower bound), else element by
 // element against the line loads.
 bool ContactLaw::tangential_sticks(PlanarVector increment, foundation::ComposedTangentialStep::Step& step) const {
-    constexpr double line_load_factor = 4.0;  // q_z = 4 sigma, eq. (22)
     if (tangential_.prepare(tangential_header(), increment, line_load_factor * least_stress_, step)) return true;
     require_loads();
     return tangential_.sticks(tangential_elements(), step, loads_.data());
@@ -460,7 +485,7 @@ bool ContactLaw::tangential_at_rest(PlanarVector increment) const {
 std::span<const double> ContactLaw::loads() const { return std::span<const double>(loads_).first(touched_); }
 
 std::span<const double> ContactLaw::contact_flags() const {
-    return {state_ + normal_offset_ + 3 + loads_.size(), touched_};  // the Foundation's flags (elements())
+    return {state_ + normal_offset_ + 3 + elements_, touched_};  // the Foundation's flags (elements())
 }
 
 PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
@@ -477,7 +502,40 @@ PlanarVector ContactLaw::tangential_trial(PlanarVector displacement) const {
     return layer_.trial_force(increment, loads(), contact_flags());
 }
 
-void ContactLaw::advance_tangential(PlanarVector displacement) {
+// Takes the composed tangential step of `increment` where every element in contact sticks (tangential_sticks' tests:
+// the bound first, in the same call as the step) and returns whether it did.
+[[gnu::always_inline]] inline bool ContactLaw::step_composed_tangential(PlanarVector increment) {
+    foundation::ComposedTangentialStep::Step step;
+    const foundation::PlanarElements elements = tangential_elements();
+    if (!tangential_.advance_if_certain(tangential_header(), elements, increment, line_load_factor * least_stress_,
+                                        step)) {
+        require_loads();
+        if (!tangential_.sticks(elements, step, loads_.data())) return false;
+        tangential_.advance(tangential_header(), elements, step);
+    }
+    tangential_force_ = tangential_force(std::span<const double>(state_, state_size_));
+    return true;
+}
+
+// The layer's own step, where the tangential step cannot be composed (an element slips, enters or leaves): the
+// elements written first where the header composed them.
+void ContactLaw::step_tangential_by_elements(PlanarVector increment) {
+    write_tangential();
+    require_loads();
+    require_layer();
+    layer_.advance(increment, loads(), contact_flags());
+    tangential_force_ = layer_.total_force();
+    // After a step in which every element in contact stuck (and no element entered or left) the following steps are
+    // composed; a sliding contact's are not (nothing to summarise).
+    if (composed_step_ && layer_.stuck()) {
+        tangential_.summarise(tangential_header(), tangential_elements(), tangential_force_);
+    } else {
+        foundation::ComposedTangentialStep::keep(tangential_header(), tangential_force_);
+    }
+}
+
+// advance_tangential's body, inlined into it and into the one-call steps (as step_normal).
+[[gnu::always_inline]] inline void ContactLaw::step_tangential(PlanarVector displacement) {
     require_finite_components("displacement", displacement);
     const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};
     if (tangential_at_rest(increment)) {  // the layer's state stays zero (its force too, as begin found it)
@@ -485,29 +543,14 @@ void ContactLaw::advance_tangential(PlanarVector displacement) {
         displacement_ = displacement;
         return;
     }
-    foundation::ComposedTangentialStep::Step step;
-    if (tangential_composes() && tangential_sticks(increment, step)) {
-        tangential_.advance(tangential_header(), tangential_elements(), step);
-        tangential_force_ = tangential_force(std::span<const double>(state_, state_size_));
-    } else {
-        write_tangential();
-        require_loads();
-        require_layer();
-        layer_.advance(increment, loads(), contact_flags());
-        tangential_force_ = layer_.total_force();
-        // After a step in which every element in contact stuck (and no element entered or left) the following
-        // steps are composed; a sliding contact's are not (nothing to summarise).
-        if (composed_step_ && layer_.stuck()) {
-            tangential_.summarise(tangential_header(), tangential_elements(), tangential_force_);
-        } else {
-            foundation::ComposedTangentialStep::keep(tangential_header(), tangential_force_);
-        }
-    }
+    if (!(tangential_composes() && step_composed_tangential(increment))) step_tangential_by_elements(increment);
     const PlanarVector& end_force = tangential_force_;
     tangential_work_ = 0.5 * ((start_tangential_force_[0] + end_force[0]) * increment[0] +
                               (start_tangential_force_[1] + end_force[1]) * increment[1]);
     displacement_ = displacement;
 }
+
+void ContactLaw::advance_tangential(PlanarVector displacement) { step_tangential(displacement); }
 
 void ContactLaw::end(std::span<double> state) const {
     state[0] = displacement_[0];
@@ -526,8 +569,8 @@ void ContactLaw::advance(std::span<double> state, double overlap, PlanarVector d
     require_finite_components("displacement", displacement);  // before the normal step writes the state
     take_state(state);
     skip_resting_layer(displacement);
-    advance_normal(overlap);
-    advance_tangential(displacement);
+    step_normal(overlap);
+    step_tangential(displacement);
     end(state);
 }
 
@@ -545,12 +588,12 @@ SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overla
                                           const SpatialVector& increment) {
     require_finite_components("normal", normal);  // before the normal step writes the state
     require_finite_components("increment", increment);
-    take_state(state);
+    take_normal_state(state);
     if (tangential_idle_) {  // no friction (begin): the layer stays at rest and carries no force, so no frame is needed
-        advance_normal(overlap);
-        tangential_work_ = 0.0;
+        step_normal(overlap);
         return {0.0, 0.0, 0.0};
     }
+    take_frame(state);
     const SpatialVector slip = in_plane(increment, normal);
     // The frame turns with the normal: its axis projected into the new tangent plane and rescaled (LAMMPS's
     // granular history does the same to its tangential vector). At first touch, or should the normal have turned
@@ -568,8 +611,8 @@ SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overla
     const SpatialVector second{handedness_ * turned[0], handedness_ * turned[1], handedness_ * turned[2]};
     const PlanarVector displacement{displacement_[0] + dot(slip, frame_), displacement_[1] + dot(slip, second)};
     skip_resting_layer(displacement);
-    advance_normal(overlap);
-    advance_tangential(displacement);
+    step_normal(overlap);
+    step_tangential(displacement);
     end(state);
     const PlanarVector force = tangential_force_;
     return {force[0] * frame_[0] + force[1] * second[0], force[0] * frame_[1] + force[1] * second[1],

@@ -109,16 +109,12 @@ void ComposedNormalStep::set_step(const StepCoefficients& coefficients) {
     }
 }
 
-bool ComposedNormalStep::prepare(std::span<const double> header, const AttachedElements& elements,
-                                 double depth_start, double depth_end, Step& step) const {
-    return with_branches(branches_, [&](auto branches) {
-        return prepare_with(header, elements, depth_start, depth_end, step, branches);
-    });
-}
-
+// Inlined into its two callers (trial_force, advance_with), so that a step dispatches on M once.
 template <class Branches>
-bool ComposedNormalStep::prepare_with(std::span<const double> header, const AttachedElements& elements,
-                                      double depth_start, double depth_end, Step& step, Branches m) const {
+[[gnu::always_inline]] inline bool ComposedNormalStep::prepare_with(std::span<const double> header,
+                                                                   const AttachedElements& elements,
+                                                                   double depth_start, double depth_end, Step& step,
+                                                                   Branches m) const {
     const std::size_t order = m + 1, touched = elements.touched;
     const double deepest = std::max(depth_start, depth_end);
     // The Foundation's step: an element reached for the first time (Foundation::reach), the end of the foundation.
@@ -183,27 +179,39 @@ bool ComposedNormalStep::prepare_with(std::span<const double> header, const Atta
 
 bool ComposedNormalStep::trial_force(std::span<const double> header, const AttachedElements& elements,
                                      double depth_start, double depth_end, double& force) const {
-    Step step;
-    if (!prepare(header, elements, depth_start, depth_end, step)) return false;
-    force = sum_force(header, step);
-    return true;
+    return with_branches(branches_, [&](auto m) {
+        Step step;
+        if (!prepare_with(header, elements, depth_start, depth_end, step, m)) return false;
+        force = sum_force(header, step, m);
+        return true;
+    });
 }
 
-double ComposedNormalStep::sum_force(std::span<const double> header, const Step& step) const {
-    const double* hat_sum = header.data() + scale_offset + 2 * branches_;
+template <class Branches>
+double ComposedNormalStep::sum_force(std::span<const double> header, const Step& step, Branches m) const {
+    const double* hat_sum = header.data() + scale_offset + 2 * m;
     // F_N = 8 dx sum_i sigma_i (eq. 21, both halves) over the elements in contact.
     double sum = header[contacts_offset] * step.common - g_inf_ * header[profile_sum_offset];
-    for (std::size_t k = 0; k < branches_; ++k) sum += step.weight[k] * hat_sum[k];
+    for (std::size_t k = 0; k < m; ++k) sum += step.weight[k] * hat_sum[k];
     return 2.0 * normal_stiffness_factor * spacing_ * sum;
 }
 
 bool ComposedNormalStep::advance(std::span<double> header, const AttachedElements& elements, double depth_start,
                                  double depth_end, double& force, double& least_stress) const {
+    return with_branches(branches_, [&](auto m) {
+        return advance_with(header, elements, depth_start, depth_end, force, least_stress, m);
+    });
+}
+
+template <class Branches>
+bool ComposedNormalStep::advance_with(std::span<double> header, const AttachedElements& elements,
+                                      double depth_start, double depth_end, double& force, double& least_stress,
+                                      Branches m) const {
     Step step;
-    if (!prepare(header, elements, depth_start, depth_end, step)) return false;
-    force = sum_force(header, step);
+    if (!prepare_with(header, elements, depth_start, depth_end, step, m)) return false;
+    force = sum_force(header, step, m);
     least_stress = step.least_stress;
-    const std::size_t m = branches_, order = m + 1;
+    const std::size_t order = m + 1;
     const bool composed = header[composed_offset] != 0.0;
     double* scale = header.data() + scale_offset;
     double* shift = scale + m;

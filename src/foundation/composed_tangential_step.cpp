@@ -78,9 +78,11 @@ bool ComposedTangentialStep::prepare(std::span<const double> header, PlanarVecto
     return with_branches(branches_, [&](auto m) { return prepare_with(header, increment, least_load, step, m); });
 }
 
+// Inlined into its callers (prepare, advance_if_certain), so that a held step dispatches on M once.
 template <class Branches>
-bool ComposedTangentialStep::prepare_with(std::span<const double> header, PlanarVector increment, double least_load,
-                                          Step& step, Branches m) const {
+[[gnu::always_inline]] inline bool ComposedTangentialStep::prepare_with(std::span<const double> header,
+                                                                       PlanarVector increment, double least_load,
+                                                                       Step& step, Branches m) const {
     const double* __restrict scale = header.data() + scale_offset;
     const double* __restrict shift = scale + m;  // C_k,x then C_k,y
     const double* __restrict largest = scale + 5 * m;
@@ -131,9 +133,20 @@ void ComposedTangentialStep::advance(std::span<double> header, const PlanarEleme
     with_branches(branches_, [&](auto m) { advance_with(header, elements, step, m); });
 }
 
+bool ComposedTangentialStep::advance_if_certain(std::span<double> header, const PlanarElements& elements,
+                                                PlanarVector increment, double least_load, Step& step) const {
+    return with_branches(branches_, [&](auto m) {
+        if (!prepare_with(header, increment, least_load, step, m)) return false;
+        advance_with(header, elements, step, m);
+        return true;
+    });
+}
+
+// Inlined into its callers (advance, advance_if_certain), as prepare_with.
 template <class Branches>
-void ComposedTangentialStep::advance_with(std::span<double> header, const PlanarElements& elements, const Step& step,
-                                          Branches m) const {
+[[gnu::always_inline]] inline void ComposedTangentialStep::advance_with(std::span<double> header,
+                                                                       const PlanarElements& elements,
+                                                                       const Step& step, Branches m) const {
     const std::size_t order = m + 1;
     const PlanarVector total = force_with(header, step, m);
     header[force_offset] = total[0];

@@ -199,6 +199,13 @@ private:
     void skip_resting_layer(PlanarVector displacement);
     void require_state_size(std::span<const double> state) const;
     void take_state(std::span<double> state);
+    void take_normal_state(std::span<double> state);
+    void take_frame(std::span<const double> state);
+    void step_normal(double overlap);
+    void step_normal_by_elements(double overlap);
+    void step_tangential(PlanarVector displacement);
+    bool step_composed_tangential(PlanarVector increment);
+    void step_tangential_by_elements(PlanarVector increment);
     [[noreturn, gnu::noinline, gnu::cold]] void refuse_state_size(std::size_t size) const;
 
     foundation::Foundation foundation_;
@@ -211,6 +218,7 @@ private:
     mutable bool loads_ready_ = false;   ///< loads_ holds the last normal step's
     mutable bool layer_ready_ = false;   ///< layer_ is attached to this step's state and prepared (require_layer)
     std::size_t layer_touched_ = 0;      ///< the layer's touched elements at begin
+    std::size_t elements_;  ///< N
     double friction_;
     bool tangential_idle_ = false;  ///< the layer stays at rest this step (tangential_at_rest): nothing to step
     std::size_t branches_;
@@ -230,7 +238,7 @@ private:
     PlanarVector tangential_force_{0.0, 0.0};  ///< F_t after the last advance_tangential
     double normal_force_ = 0.0;   ///< F_N after the last advance_normal
     std::size_t contact_count_ = 0;  ///< elements in contact after the last advance_normal
-    std::size_t touched_ = 0;        ///< elements touched after the last advance_normal
+    std::size_t touched_ = 0;        ///< elements touched (from begin on; after the last advance_normal)
     mutable std::vector<double> memories_;  ///< one element's h_k (stored_energy)
     double start_normal_force_ = 0.0;           ///< F_N at the start of the step
     PlanarVector start_tangential_force_{0.0, 0.0};  ///< F_t at the start of the step

@@ -93,12 +93,14 @@ public:
 
 private:
     struct Step;
-    bool prepare(std::span<const double> header, const AttachedElements& elements, double depth_start,
-                 double depth_end, Step& step) const;
     template <class Branches>
     bool prepare_with(std::span<const double> header, const AttachedElements& elements, double depth_start,
                       double depth_end, Step& step, Branches branches) const;
-    double sum_force(std::span<const double> header, const Step& step) const;
+    template <class Branches>
+    double sum_force(std::span<const double> header, const Step& step, Branches branches) const;
+    template <class Branches>
+    bool advance_with(std::span<double> header, const AttachedElements& elements, double depth_start,
+                      double depth_end, double& force, double& least_stress, Branches branches) const;
     std::size_t map_offset() const { return 6 + 4 * branches_; }
 
     std::size_t branches_;

@@ -79,6 +79,10 @@ public:
     /// Takes the prepared step in the header (every element in contact sticks) and stores its force there. Where a
     /// composition factor falls below 1e-150 the elements are written and summarised again.
     void advance(std::span<double> header, const PlanarElements& elements, const Step& step) const;
+    /// prepare and, where it returns true (every element in contact certainly sticks), advance: one call for a held
+    /// step. Returns prepare's answer; where false, `step` is prepared for sticks and advance.
+    bool advance_if_certain(std::span<double> header, const PlanarElements& elements, PlanarVector increment,
+                            double least_load, Step& step) const;
     /// Writes the elements' current u and h (the composed maps applied) and returns true when the header composes,
     /// which it then no longer does (the flags must be those of the composed steps: before a normal step changes
     /// them).

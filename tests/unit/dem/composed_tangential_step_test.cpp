@@ -15,6 +15,7 @@
 
 #include "mdr/error.hpp"
 #include "thrown_key.hpp"
+#include "mdr/foundation/composed_tangential_step.hpp"
 #include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/planar_tangential_layer.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
@@ -178,6 +179,53 @@ TEST(DemComposedTangentialStep, AHeldStickingStepTouchesItsHeldRangesOnly) {
         }
         EXPECT_NE(law.tangential_force(state), law.tangential_force(std::span<const double>(before)));
         EXPECT_NO_THROW(law.check(state));
+    }
+}
+
+// advance_if_certain is prepare and, where its bound holds, advance in one call: the same bytes of the state as the
+// two calls where every element in contact certainly sticks (a large least line load), the state untouched and the
+// answer false where the bound fails (a least line load of zero), for M = 0 to 3 on a held contact's header.
+TEST(DemComposedTangentialStep, AdvanceIfCertainIsPrepareThenAdvance) {
+    for (const auto& material : materials()) {
+        const std::string name = "M = " + std::to_string(material.terms().size());
+        ContactLaw law(material, radius, friction, elements, half_width, time_step);
+        std::vector<double> state(law.state_size());
+        law.initialise(state);
+        for (int n = 1; n <= 220; ++n) law.advance(state, overlap_at(n), displacement_at(n, 2e-8));
+        // The layout from the law's public sizes: the tangential header (held_tangential_offset, with friction)
+        // before the layer's force and count, u_x, u_y and h; the Foundation's depth, force and count end the
+        // leading doubles, its w and flags follow.
+        const std::size_t m = material.terms().size();
+        const std::size_t header = law.held_tangential_offset();
+        const std::size_t header_size = foundation::ComposedTangentialStep::header_size(m);
+        const std::size_t normal = law.held_step_size() - 3;
+        ASSERT_EQ(state[header + foundation::ComposedTangentialStep::composed_offset], 1.0) << name;
+        foundation::ComposedTangentialStep step(material, friction, spacing);
+        foundation::StepCoefficients coefficients;
+        foundation::fill_step_coefficients(material, time_step, coefficients);
+        step.set_step(coefficients);
+        const auto elements_of = [&](std::vector<double>& s) {
+            double* u = s.data() + header + header_size + 3;
+            return foundation::PlanarElements{u, u + 2 * elements, s.data() + normal + 3 + elements, elements,
+                                              static_cast<std::size_t>(s[normal + 2])};
+        };
+        const PlanarVector increment{3e-9, -2e-9};
+        for (const double least_load : {1e12, 0.0}) {
+            std::vector<double> two_calls = state, one_call = state;
+            foundation::ComposedTangentialStep::Step prepared, certain;
+            const std::span<double> first(two_calls.data() + header, header_size);
+            const bool sticks = step.prepare(first, increment, least_load, prepared);
+            if (sticks) step.advance(first, elements_of(two_calls), prepared);
+            const bool advanced = step.advance_if_certain(std::span<double>(one_call.data() + header, header_size),
+                                                          elements_of(one_call), increment, least_load, certain);
+            EXPECT_EQ(advanced, least_load > 0.0) << name;
+            EXPECT_EQ(advanced, sticks) << name;
+            EXPECT_EQ(certain.common, prepared.common) << name;
+            EXPECT_EQ(one_call, two_calls) << name << ", least load " << least_load;
+            if (!advanced) {
+                EXPECT_EQ(one_call, state) << name;
+            }
+        }
     }
 }
 
