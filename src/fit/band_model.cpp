@@ -26,9 +26,9 @@ public:
           memory_bound_(!(material.equilibrium_modulus() > 0.0)), floor_(memory_bound_ ? count : 0, 0.0) {
         for (std::size_t i = 0; i < count; ++i) g_[i] = indenter.equivalent((static_cast<double>(i) + 0.5) * spacing);
         beyond_ = foundation::deepest_depth(indenter, spacing * static_cast<double>(count));
-        instantaneous_ = material.equilibrium_modulus();
-        for (const auto& term : material.terms()) instantaneous_ += term.modulus;
-        ratio_ = instantaneous_ / material.equilibrium_modulus();
+        double instantaneous = material.equilibrium_modulus();
+        for (const auto& term : material.terms()) instantaneous += term.modulus;
+        ratio_ = instantaneous / material.equilibrium_modulus();
     }
 
     // Prepares a step of length `time_step` (call before force and step).
@@ -138,15 +138,19 @@ private:
 
     // The band of a step over [t0, t1] from d0 to d1 with the running maximum `peak` at its end (running_ still at t0).
     // The margins cover the round-off of an element's stress, so that the element model's own test (sigma >= 0)
-    // cannot disagree.
+    // cannot disagree: 1e-9 of the peak depth, and of the stress's terms' magnitudes (not G(0) D: a series' closing
+    // term below its window has a G_k that dwarfs its stress G_k Q_k).
     Band band_at(double peak, double d0, double d1) const {
         if (!memory_bound_) return {peak - ratio_ * (peak - d1) - 1e-9 * peak, 0.0};
         double stress = material_.equilibrium_modulus() * d1;
+        double magnitude = material_.equilibrium_modulus() * peak;
         const auto& terms = material_.terms();
         for (std::size_t k = 0; k < branches_; ++k) {
-            stress += terms[k].modulus * (coefficients_.decay[k] * running_[k] + coefficients_.gain[k] * (d1 - d0));
+            const double memory = coefficients_.decay[k] * running_[k] + coefficients_.gain[k] * (d1 - d0);
+            stress += terms[k].modulus * memory;
+            magnitude += terms[k].modulus * std::abs(memory);
         }
-        return {0.0, stress - 1e-9 * instantaneous_ * peak};
+        return {0.0, stress - 1e-9 * magnitude};
     }
 
     // Folded element i, and with it every folded element before it, stays in contact in the band.
@@ -346,7 +350,7 @@ private:
     std::vector<double> floor_;      // the memory bound: the largest floor of the folded prefix [0, i]
     double folded_profile_ = 0.0;    // sum of the folded elements' g
     std::size_t folded_ = 0, touched_ = 0, element_steps_ = 0;
-    double peak_ = 0.0, ratio_ = 1.0, beyond_ = 0.0, instantaneous_ = 0.0;
+    double peak_ = 0.0, ratio_ = 1.0, beyond_ = 0.0;
     foundation::StepCoefficients coefficients_;
 };
 
