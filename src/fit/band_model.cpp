@@ -47,6 +47,7 @@ public:
         if (!(deepest <= beyond_)) return std::nullopt;
         peak_ = std::max(peak_, d1);
         const Band band = band_at(peak_, d0, d1);
+        if (memory_bound_) renew(t0, band);
         while (folded_ > 0 && !inside(folded_ - 1, band)) unfold(t0, d0);
         while (touched_ < g_.size() && g_[touched_] < deepest) ++touched_;
         double sum = 0.0;
@@ -180,6 +181,28 @@ private:
             if (!(h_[i * branches_ + k] >= depth - peak_)) return false;
         }
         return true;
+    }
+
+    // The memory bound: renews the floors that no longer hold in the band, each from its element's exact delta_k at
+    // `time` (its deficit has decayed since its fold), as unfolding and folding it again would, without stepping it;
+    // stops at the first whose floor still does not hold (it and those after it are unfolded).
+    void renew(double time, const Band& band) {
+        std::size_t first = folded_;
+        while (first > 0 && !(floor_[first - 1] <= band.stress)) --first;
+        const auto& terms = material_.terms();
+        for (std::size_t i = first; i < folded_; ++i) {
+            const double* decays = decays_since(fold_time_[i], time);
+            double* delta = h_.data() + i * branches_;
+            double deficit = 0.0;
+            for (std::size_t k = 0; k < branches_; ++k) {
+                delta[k] *= decays[k];
+                deficit += terms[k].modulus * std::max(-delta[k], 0.0);
+            }
+            fold_time_[i] = time;
+            const double own = material_.equilibrium_modulus() * g_[i] + deficit;
+            floor_[i] = i == 0 ? own : std::max(floor_[i - 1], own);
+            if (!(floor_[i] <= band.stress)) return;
+        }
     }
 
     // Folds element folded_ at time t: its h_k - Q_k is kept (it decays as exp(-(t' - t)/tau_k) from here on), and

@@ -23,7 +23,9 @@
 /// delta_k: both follow the same update), so from its fold on sigma = G_inf (d - g) + S + sum_k G_k delta_k >=
 /// G_inf (d - g) + S - m with S = sum_k G_k Q_k and m = sum_k G_k max(-delta_k, 0) at the fold. The element stays in
 /// contact while its floor G_inf g + m <= G_inf d + S at each step's end; the folded prefix keeps the largest floor
-/// of its elements, so that it unfolds from its end as with the band (tests/verification/test_band_model.cpp).
+/// of its elements, so that it unfolds from its end as with the band. A floor that no longer holds is first renewed
+/// from the element's decayed delta_k (a fold afresh), and the element unfolded only if that floor fails too
+/// (tests/verification/test_band_model.cpp).
 ///
 /// Under force control (band_depths) each step's depth is solved as the drivers solve it (solve_force_balance on the
 /// force of a trial step): a trial depth below the band of a folded element unfolds it in a copy, so that every
