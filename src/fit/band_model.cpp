@@ -22,7 +22,8 @@ public:
         : material_(material), spacing_(spacing), branches_(material.terms().size()), g_(count), w_(count, 0.0),
           stress_(count, 0.0), contact_(count, 0), h_(count * branches_, 0.0), fold_time_(count, 0.0),
           running_(branches_, 0.0), folded_memory_(branches_, 0.0), scratch_(branches_, 0.0),
-          trial_memory_(branches_, 0.0), trial_element_(branches_, 0.0), trial_unfolded_(branches_, 0.0) {
+          trial_memory_(branches_, 0.0), trial_element_(branches_, 0.0), trial_unfolded_(branches_, 0.0),
+          memory_bound_(!(material.equilibrium_modulus() > 0.0)), floor_(memory_bound_ ? count : 0, 0.0) {
         for (std::size_t i = 0; i < count; ++i) g_[i] = indenter.equivalent((static_cast<double>(i) + 0.5) * spacing);
         beyond_ = foundation::deepest_depth(indenter, spacing * static_cast<double>(count));
         double instantaneous = material.equilibrium_modulus();
@@ -45,8 +46,9 @@ public:
         const double deepest = std::max(d0, d1);
         if (!(deepest <= beyond_)) return std::nullopt;
         peak_ = std::max(peak_, d1);
-        const double limit = band_limit(peak_, d1);
-        while (folded_ > 0 && !(g_[folded_ - 1] <= limit)) unfold(t0, d0);
+        const Band band = band_at(peak_, d0, d1);
+        if (memory_bound_) renew(t0, band);
+        while (folded_ > 0 && !inside(folded_ - 1, band)) unfold(t0, d0);
         while (touched_ < g_.size() && g_[touched_] < deepest) ++touched_;
         double sum = 0.0;
         for (std::size_t i = folded_; i < touched_; ++i) {
@@ -63,19 +65,19 @@ public:
             running_[k] = decay * running_[k] + gain * (d1 - d0);
             folded_stress += terms[k].modulus * folded_memory_[k];
         }
-        while (folded_ < touched_ && foldable(folded_, d1, limit)) fold(t1);
+        while (folded_ < touched_ && foldable(folded_, d1, band)) fold(t1);
         return force_per_stress * spacing_ * (sum + folded_stress);
     }
 
     // The force step(t0, t1, d0, d1) would give, without changing the state (the drivers' Foundation::trial_force): the
     // folded elements beyond the band of d1 are unfolded in a copy, the others' stresses taken without stepping them.
     double force(double t0, double d0, double d1) const {
-        const double limit = band_limit(std::max(peak_, d1), d1);
+        const Band band = band_at(std::max(peak_, d1), d0, d1);
         std::copy(folded_memory_.begin(), folded_memory_.end(), trial_memory_.begin());
         double profile = folded_profile_;
         std::size_t folded = folded_;
         double sum = 0.0;
-        while (folded > 0 && !(g_[folded - 1] <= limit)) {
+        while (folded > 0 && !inside(folded - 1, band)) {
             const std::size_t i = --folded;
             const double stress = unfolded_state(i, t0, d0, trial_unfolded_.data());
             for (std::size_t k = 0; k < branches_; ++k) trial_memory_[k] -= trial_unfolded_[k];
@@ -128,23 +130,86 @@ public:
     }
 
 private:
-    // Below this g a folded element stays in contact at depth d with the running maximum `peak` (band_model.hpp); the
-    // margin covers the round-off of its stress, so that the element model's own test (sigma >= 0) cannot disagree.
-    double band_limit(double peak, double depth) const { return peak - ratio_ * (peak - depth) - 1e-9 * peak; }
+    // Where the folded elements stay in contact at the end of a step (band_model.hpp), by the rule of the material:
+    // G_inf > 0, the band g <= limit; G_inf = 0, the memory bound floor_[i] <= stress.
+    struct Band {
+        double limit = 0.0;   // L(t) = D - (G(0) / G_inf)(D - d), less a margin
+        double stress = 0.0;  // G_inf d + S(t), S = sum_k G_k Q_k, less a margin
+    };
 
-    // Element i follows the indenter from here on for sure (band_model.hpp): in contact, g <= limit and every
-    // h_k >= d - D.
-    bool foldable(std::size_t i, double depth, double limit) const {
-        if (!contact_[i] || !(g_[i] <= limit) || !(stress_[i] >= 0.0)) return false;
+    // The band of a step over [t0, t1] from d0 to d1 with the running maximum `peak` at its end (running_ still at t0).
+    // The margins cover the round-off of an element's stress, so that the element model's own test (sigma >= 0)
+    // cannot disagree: 1e-9 of the peak depth, and of the stress's terms' magnitudes (not G(0) D: a series' closing
+    // term below its window has a G_k that dwarfs its stress G_k Q_k).
+    Band band_at(double peak, double d0, double d1) const {
+        if (!memory_bound_) return {peak - ratio_ * (peak - d1) - 1e-9 * peak, 0.0};
+        double stress = material_.equilibrium_modulus() * d1;
+        double magnitude = material_.equilibrium_modulus() * peak;
+        const auto& terms = material_.terms();
+        for (std::size_t k = 0; k < branches_; ++k) {
+            const double memory = coefficients_.decay[k] * running_[k] + coefficients_.gain[k] * (d1 - d0);
+            stress += terms[k].modulus * memory;
+            magnitude += terms[k].modulus * std::abs(memory);
+        }
+        return {0.0, stress - 1e-9 * magnitude};
+    }
+
+    // Folded element i, and with it every folded element before it, stays in contact in the band.
+    bool inside(std::size_t i, const Band& band) const {
+        return memory_bound_ ? floor_[i] <= band.stress : g_[i] <= band.limit;
+    }
+
+    // The memory bound's floor of element i from its memories h_k (running_ at the same time): G_inf g + m with
+    // m = sum_k G_k max(Q_k - h_k, 0); its stress is >= G_inf (d - g) + S - m from here on while it follows the
+    // indenter (band_model.hpp).
+    double memory_floor(std::size_t i) const {
+        const auto& terms = material_.terms();
+        double deficit = 0.0;
+        for (std::size_t k = 0; k < branches_; ++k) {
+            deficit += terms[k].modulus * std::max(running_[k] - h_[i * branches_ + k], 0.0);
+        }
+        return material_.equilibrium_modulus() * g_[i] + deficit;
+    }
+
+    // Element i follows the indenter from here on for sure (band_model.hpp): in contact, sigma >= 0, and in the band:
+    // g <= limit and every h_k >= d - D (G_inf > 0), or its memory floor below the band's stress (G_inf = 0).
+    bool foldable(std::size_t i, double depth, const Band& band) const {
+        if (!contact_[i] || !(stress_[i] >= 0.0)) return false;
+        if (memory_bound_) return memory_floor(i) <= band.stress;
+        if (!(g_[i] <= band.limit)) return false;
         for (std::size_t k = 0; k < branches_; ++k) {
             if (!(h_[i * branches_ + k] >= depth - peak_)) return false;
         }
         return true;
     }
 
-    // Folds element folded_ at time t: its h_k - Q_k is kept (it decays as exp(-(t' - t)/tau_k) from here on).
+    // The memory bound: renews the floors that no longer hold in the band, each from its element's exact delta_k at
+    // `time` (its deficit has decayed since its fold), as unfolding and folding it again would, without stepping it;
+    // stops at the first whose floor still does not hold (it and those after it are unfolded).
+    void renew(double time, const Band& band) {
+        std::size_t first = folded_;
+        while (first > 0 && !(floor_[first - 1] <= band.stress)) --first;
+        const auto& terms = material_.terms();
+        for (std::size_t i = first; i < folded_; ++i) {
+            const double* decays = decays_since(fold_time_[i], time);
+            double* delta = h_.data() + i * branches_;
+            double deficit = 0.0;
+            for (std::size_t k = 0; k < branches_; ++k) {
+                delta[k] *= decays[k];
+                deficit += terms[k].modulus * std::max(-delta[k], 0.0);
+            }
+            fold_time_[i] = time;
+            const double own = material_.equilibrium_modulus() * g_[i] + deficit;
+            floor_[i] = i == 0 ? own : std::max(floor_[i - 1], own);
+            if (!(floor_[i] <= band.stress)) return;
+        }
+    }
+
+    // Folds element folded_ at time t: its h_k - Q_k is kept (it decays as exp(-(t' - t)/tau_k) from here on), and
+    // under the memory bound its floor, the largest of the folded prefix.
     void fold(double time) {
         const std::size_t i = folded_++;
+        if (memory_bound_) floor_[i] = i == 0 ? memory_floor(i) : std::max(floor_[i - 1], memory_floor(i));
         for (std::size_t k = 0; k < branches_; ++k) {
             folded_memory_[k] += h_[i * branches_ + k];
             h_[i * branches_ + k] -= running_[k];
@@ -157,13 +222,28 @@ private:
     // stress returned.
     double unfolded_state(std::size_t i, double time, double depth, double* memory) const {
         const auto& terms = material_.terms();
+        const double* decays = decays_since(fold_time_[i], time);
         double stress = material_.equilibrium_modulus() * (depth - g_[i]);
         for (std::size_t k = 0; k < branches_; ++k) {
-            memory[k] = running_[k] + std::exp(-(time - fold_time_[i]) / terms[k].relaxation_time) *
-                                          h_[i * branches_ + k];
+            memory[k] = running_[k] + decays[k] * h_[i * branches_ + k];
             stress += terms[k].modulus * memory[k];
         }
         return stress;
+    }
+
+    // exp(-(time - fold_time) / tau_k) per branch, kept for the next call with the same times: the elements unfolded
+    // one after the other were mostly folded in one step.
+    const double* decays_since(double fold_time, double time) const {
+        if (decays_.empty() || fold_time != decays_from_ || time != decays_to_) {
+            const auto& terms = material_.terms();
+            decays_.resize(branches_);
+            for (std::size_t k = 0; k < branches_; ++k) {
+                decays_[k] = std::exp(-(time - fold_time) / terms[k].relaxation_time);
+            }
+            decays_from_ = fold_time;
+            decays_to_ = time;
+        }
+        return decays_.data();
     }
 
     // Unfolds the last folded element with its state at time t, depth d.
@@ -287,6 +367,10 @@ private:
     mutable std::vector<double> trial_memory_;   // force(): the folded elements' H_k after the trial's unfolds
     mutable std::vector<double> trial_element_;  // force(): one element's h_k, stepped in a copy
     mutable std::vector<double> trial_unfolded_; // force(): an unfolded element's h_k
+    mutable std::vector<double> decays_;         // decays_since: the last decays, from decays_from_ to decays_to_
+    mutable double decays_from_ = 0.0, decays_to_ = 0.0;
+    bool memory_bound_;              // G_inf = 0: the memory bound in place of the band g <= L
+    std::vector<double> floor_;      // the memory bound: the largest floor of the folded prefix [0, i]
     double folded_profile_ = 0.0;    // sum of the folded elements' g
     std::size_t folded_ = 0, touched_ = 0, element_steps_ = 0;
     double peak_ = 0.0, ratio_ = 1.0, beyond_ = 0.0;
@@ -296,9 +380,12 @@ private:
 }  // namespace
 
 bool band_model_applies(const rheology::Rheology& material) {
-    if (material.viscosity() != 0.0 || !(material.equilibrium_modulus() > 0.0)) return false;
-    return std::all_of(material.terms().begin(), material.terms().end(),
-                       [](const auto& term) { return term.modulus >= 0.0 && term.relaxation_time > 0.0; });
+    if (material.viscosity() != 0.0 || !(material.equilibrium_modulus() >= 0.0)) return false;
+    const auto& terms = material.terms();
+    const bool nonnegative = std::all_of(terms.begin(), terms.end(), [](const auto& term) {
+        return term.modulus >= 0.0 && term.relaxation_time > 0.0;
+    });
+    return nonnegative && material.instantaneous_modulus() > 0.0;
 }
 
 std::optional<BandResponse> band_forces(const rheology::Rheology& material, const profile::Profile& indenter,
@@ -312,7 +399,9 @@ std::optional<BandResponse> band_forces(const rheology::Rheology& material, cons
     BandResponse response{std::vector<double>(time.size(), 0.0), 0};
     double preload_force = 0.0;
     if (depth.front() > 0.0 && preloaded) {
-        if (!(depth.front() <= foundation::deepest_depth(indenter, spacing * static_cast<double>(count)))) {
+        // A relaxed preload needs G_inf > 0 (with G_inf = 0 no force holds it: fit.cpp refuses it by name).
+        if (!(material.equilibrium_modulus() > 0.0) ||
+            !(depth.front() <= foundation::deepest_depth(indenter, spacing * static_cast<double>(count)))) {
             return std::nullopt;
         }
         preload_force = run.rest_under(depth.front());

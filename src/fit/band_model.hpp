@@ -18,6 +18,15 @@
 /// dip), it is unfolded with its exact state and stepped again. The other elements take the foundation's steps,
 /// entry and exit located inside the step as there.
 ///
+/// Without an equilibrium modulus (G_inf = 0: a power law's series, a fluid) the band is empty in every dip, and the
+/// memory bound takes its place. A folded element keeps delta_k = h_k - Q_k, which only decays (delta_k <- E_k
+/// delta_k: both follow the same update), so from its fold on sigma = G_inf (d - g) + S + sum_k G_k delta_k >=
+/// G_inf (d - g) + S - m with S = sum_k G_k Q_k and m = sum_k G_k max(-delta_k, 0) at the fold. The element stays in
+/// contact while its floor G_inf g + m <= G_inf d + S at each step's end; the folded prefix keeps the largest floor
+/// of its elements, so that it unfolds from its end as with the band. A floor that no longer holds is first renewed
+/// from the element's decayed delta_k (a fold afresh), and the element unfolded only if that floor fails too
+/// (tests/verification/test_band_model.cpp).
+///
 /// Under force control (band_depths) each step's depth is solved as the drivers solve it (solve_force_balance on the
 /// force of a trial step): a trial depth below the band of a folded element unfolds it in a copy, so that every
 /// trial force is the element model's.
@@ -33,7 +42,8 @@
 
 namespace mdr::fit {
 
-/// True when the band model covers this material: no parallel dashpot, G_inf > 0 and every Prony modulus >= 0.
+/// True when the band model covers this material: no parallel dashpot, G_inf >= 0, every Prony modulus >= 0 and
+/// G(0) > 0 (G_inf > 0: the band g <= L; G_inf = 0: the memory bound).
 bool band_model_applies(const rheology::Rheology& material);
 
 /// What the band model gives for one depth history.
@@ -50,9 +60,10 @@ struct BandResponse {
 /// drivers' Foundation would refuse `count` elements as too many (its message then names the key).
 /// `check_interrupt`, when set, is called every 4096 steps (it may throw mdr::Interrupted).
 ///
-/// `preloaded`: a first depth d_0 = depth[0] > 0 is a relaxed preload instead of a jump (docs/theory.md §4d): the
-/// foundation has rested under d_0 long enough for every branch to relax, so each element with g < d_0 starts in
-/// contact at w = d_0 - g with h_k = 0 (stress G_inf w), and the force returned is the change since time[0],
+/// `preloaded`: a first depth d_0 = depth[0] > 0 is a relaxed preload instead of a jump (docs/theory.md §4d; nullopt
+/// for G_inf = 0, which holds no preload): the foundation has rested under d_0 long enough for every branch to relax,
+/// so each element with g < d_0 starts in contact at w = d_0 - g with h_k = 0 (stress G_inf w), and the force
+/// returned is the change since time[0],
 /// F(t) - G_inf F_el(d_0) = int_{t_0}^t G(t - s) dF_el(d(s)) while the contact grows (Lee-Radok, eq. 21), and the
 /// foundation's own force less its preload once it shrinks. The band bound holds from the start (h_k = 0 = d_0 - D).
 std::optional<BandResponse> band_forces(const rheology::Rheology& material, const profile::Profile& indenter,

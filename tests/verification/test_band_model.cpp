@@ -27,6 +27,7 @@
 #include "mdr/foundation/foundation.hpp"
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/profile/profile.hpp"
+#include "mdr/rheology/power_law.hpp"
 #include "mdr/rheology/rheology.hpp"
 
 namespace mdr::fit {
@@ -321,6 +322,54 @@ TEST(BandModel, AdversarialHistoriesAgreeWithTheElementModel) {
     }
 }
 
+// Materials without an equilibrium modulus (G_inf = 0: the power law's series, random fluids of one to four branches)
+// have no band g <= L; the memory bound (band_model.hpp) folds the elements instead. On the measured-like and the
+// adversarial histories the forces are the element model's to 1e-9 of the peak, and on the measured-like ones the
+// band model steps a small share of the elements (printed).
+rheology::Rheology fluid_material(std::mt19937& random, int trial) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    if (trial % 2 == 0) {  // G0 (t/t0)^(-beta) over the history's lags, as a fit's power_law candidate converts it
+        const rheology::PowerLaw power{.G0 = 1e5 * (0.5 + unit(random)), .beta = 0.05 + 0.6 * unit(random), .t0 = 1.0};
+        return rheology::approximate(power, {.shortest = 1e-4, .longest = 10.0}, 1e-4).series;
+    }
+    std::vector<rheology::RelaxationTerm> terms;
+    for (int k = 0; k < 1 + trial % 4; ++k) {
+        terms.push_back({1e5 * std::pow(10.0, unit(random)), std::pow(10.0, -4.0 + 5.0 * unit(random))});
+    }
+    return rheology::Rheology::prony(0.0, terms);
+}
+
+TEST(BandModel, MaterialsWithoutAnEquilibriumModulusAgreeWithTheElementModel) {
+    std::mt19937 random(31);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int trial = 0; trial < 24; ++trial) {
+        const auto material = fluid_material(random, trial);
+        ASSERT_EQ(material.equilibrium_modulus(), 0.0);
+        const auto indenter = indenter_of(trial);
+        const bool measured = trial < 12;
+        const History history = measured ? measured_like(random, 1e-5, std::pow(10.0, -4.0 + unit(random)))
+                                         : adversarial(random, 1e-5);
+        const std::size_t elements = 2000;
+        const auto [expected, spacing] = element_forces(material, indenter, history, elements);
+        const auto band = band_forces(material, *indenter, spacing, elements, history.time, history.depth);
+        ASSERT_TRUE(band.has_value()) << "trial " << trial;
+        expect_same_forces(history, band->force, expected, 1e-9, trial);
+        const double all = static_cast<double>(elements) * static_cast<double>(history.time.size());
+        std::cout << "trial " << trial << (measured ? " (measured-like)" : " (adversarial)") << ": "
+                  << material.terms().size() << " branches, element steps "
+                  << static_cast<double>(band->element_steps) / all << " of the element model's\n";
+    }
+}
+
+// A relaxed preload needs G_inf > 0: with G_inf = 0 the band model hands it back.
+TEST(BandModel, RefusesARelaxedPreloadWithoutAnEquilibriumModulus) {
+    const auto material = rheology::Rheology::prony(0.0, {{1e5, 0.1}});
+    const std::shared_ptr<const profile::Profile> sphere = profile::make_sphere(1e-3);
+    const std::vector<double> time{0.0, 1e-3, 2e-3}, depth{1e-6, 1.1e-6, 1.2e-6};
+    EXPECT_FALSE(band_forces(material, *sphere, 1e-6, 1000, time, depth, {}, true).has_value());
+    EXPECT_TRUE(band_forces(material, *sphere, 1e-6, 1000, time, depth, {}, false).has_value());
+}
+
 // A fast unloading by delta (one step of tau/20) after a hold of 14 tau at the peak D (the memory relaxed to 1e-6):
 // an element stays in contact while G_inf (D - delta - g) - (G(0) - G_inf) delta >= 0 nearly, i.e. g <= L =
 // D - (G(0)/G_inf) delta (band_model.hpp); those beyond leave contact in the step. G(0)/G_inf = 11: a band rule with
@@ -529,6 +578,19 @@ TEST(BandModel, AdversarialMaterialsUnderForceAgreeWithTheElementModel) {
         const auto material = adversarial_material(random);
         const auto indenter = indenter_of(trial);
         const History history = force_like(random, 1e-3, 1e-3);
+        const double difference = force_driven_difference(force_case(material, indenter, history, 1000), history);
+        EXPECT_LT(difference, 1e-9) << "trial " << trial;
+        std::cout << "trial " << trial << ": " << material.terms().size() << " branches, " << difference << "\n";
+    }
+}
+
+// The materials without an equilibrium modulus above (the memory bound) under the measured-like force histories.
+TEST(BandModel, MaterialsWithoutAnEquilibriumModulusUnderForceAgreeWithTheElementModel) {
+    std::mt19937 random(2527);
+    for (int trial = 0; trial < 8; ++trial) {
+        const auto material = fluid_material(random, trial);
+        const auto indenter = indenter_of(trial);
+        const History history = force_like(random, 1e-4, 3e-4);
         const double difference = force_driven_difference(force_case(material, indenter, history, 1000), history);
         EXPECT_LT(difference, 1e-9) << "trial " << trial;
         std::cout << "trial " << trial << ": " << material.terms().size() << " branches, " << difference << "\n";
