@@ -532,8 +532,9 @@ double Foundation::contact_radius() const {
     const double g_in = equivalent_[j], g_out = equivalent_[j + 1];
     const double outside = std::min(free_gap(j + 1), 0.0);
     // The free gap d - g - w vanishes at the edge and is linear in g beyond it (exactly d - g where the surface
-    // was never touched; (d' - w')(t - t_exit) where it left contact): extrapolated in g from the two free
-    // neighbours, the edge is where it reaches zero, and x is interpolated linearly in g between the centres.
+    // was never touched; (d' - w')(t - t_exit) where it left contact, d' - w' != 0 there without a parallel dashpot;
+    // with one it opens quadratically and this is first order, docs/theory.md section 3): extrapolated in g from the
+    // two free neighbours, the edge is where it reaches zero, and x is interpolated linearly in g between the centres.
     if (j + 2 < size() && std::isfinite(equivalent_[j + 2]) && flags[j + 2] == 0.0 && g_out > g_in) {
         const double further = free_gap(j + 2);
         const double rise = equivalent_[j + 2] - g_out;

@@ -7,9 +7,10 @@
 // a^3 = 3 F R / (16 G) (Hertz, E* = 4 G). An element leaves where its stress reaches zero with its rate continuous
 // (its free rate -G w/eta is then the indenter's), so the free gap of the elements that left opens from zero with no
 // slope (quadratic in g - g(a)), and in the step in which an element left its gap is second order small in the time
-// since and of either sign: the edge lands at the centre of the first free element (the gap's extrapolation from
-// the two free neighbours clamped there) or short of it, a + (0 .. 1) dx. Without a dashpot the free element's rate
-// breaks at the exit, its gap opens with a slope, linear in g, and its extrapolation is second order.
+// since and of either sign: the edge lands within dx, up to the centre of the first free element (the gap's
+// extrapolation from the two free neighbours clamped there), and at the end of a fast fall on that centre. Without
+// a dashpot the free element's rate breaks at the exit, its gap opens with a slope, linear in g, and its
+// extrapolation is second order.
 
 #include <gtest/gtest.h>
 

@@ -120,8 +120,9 @@ public:
     /// sigma + eta dr < 0) crosses zero, interpolated linearly (eq. J2). Otherwise the edge between the outermost
     /// element in contact and its free neighbour, where the free gap d - g - w, extrapolated linearly in g from the
     /// two free neighbours, reaches zero (exact in g where the surface was never touched, second order in dx where
-    /// it left contact); x is interpolated linearly in g between the two centres. 0 when the total force is 0:
-    /// nothing carries a load.
+    /// it left contact without a parallel dashpot; with one a receding edge's gap opens quadratically and the edge is
+    /// first order, within dx: docs/theory.md section 3); x is interpolated linearly in g between the two centres. 0
+    /// when the total force is 0: nothing carries a load.
     double contact_radius() const;
     /// The weight lambda <= 0 of the linear extrapolation in g from the two innermost elements to the axis,
     /// (g(0) - g_0) / (g_1 - g_0) (0 for a flat profile): a quantity q linear in g near the axis is
