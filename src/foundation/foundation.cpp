@@ -529,24 +529,53 @@ double Foundation::contact_radius() const {
         return position(j) + (inside > 0.0 ? inside / (inside - outside) : 0.0) * spacing_;
     }
     if (j + 1 >= size() || !std::isfinite(equivalent_[j + 1])) return position(j) + 0.5 * spacing_;
+    // The nearer of the two zeros (docs/theory.md section 3, as the layer's L19c): each meets the edge to second
+    // order where its side leaves zero with a slope and lies beyond it where that side does not.
+    return position(j) + std::min(gap_edge(j), stress_edge(j)) * spacing_;
+}
+
+double Foundation::gap_edge(std::size_t j) const {
+    const double* flags = element_flags();
     const double g_in = equivalent_[j], g_out = equivalent_[j + 1];
     const double outside = std::min(free_gap(j + 1), 0.0);
     // The free gap d - g - w vanishes at the edge and is linear in g beyond it (exactly d - g where the surface
-    // was never touched; (d' - w')(t - t_exit) where it left contact): extrapolated in g from the two free
-    // neighbours, the edge is where it reaches zero, and x is interpolated linearly in g between the centres.
+    // was never touched; (d' - w')(t - t_exit) where it left contact, d' - w' != 0 there without a parallel
+    // dashpot; with one it opens quadratically, and its zero lies beyond the edge: stress_edge): extrapolated in g
+    // from the two free neighbours, the edge is where it reaches zero, and x is interpolated linearly in g between
+    // the centres.
     if (j + 2 < size() && std::isfinite(equivalent_[j + 2]) && flags[j + 2] == 0.0 && g_out > g_in) {
         const double further = free_gap(j + 2);
         const double rise = equivalent_[j + 2] - g_out;
         if (further < outside && rise > 0.0) {
             const double edge = g_out + outside * rise / (outside - further);
-            return position(j) + std::clamp((edge - g_in) / (g_out - g_in), 0.0, 1.0) * spacing_;
+            return std::clamp((edge - g_in) / (g_out - g_in), 0.0, 1.0);
         }
     }
     // Otherwise (a free element between two in contact, a flat profile) between the two centres, where the
     // displacement the element could still give up (inside) and the free gap (outside) cross zero.
     const double inside = element_stresses()[j] / contact_stiffness_;
     const double fraction = inside > 0.0 ? inside / (inside - outside) : 0.0;
-    return position(j) + std::clamp(fraction, 0.0, 1.0) * spacing_;
+    return std::clamp(fraction, 0.0, 1.0);
+}
+
+double Foundation::stress_edge(std::size_t j) const {
+    // With a parallel dashpot an element leaves where its stress reaches zero with its rate continuous, so the
+    // stresses inside a receding edge fall to zero with a slope, linearly in g (G (D - g) on a Kelvin-Voigt body):
+    // extrapolated in g from the two outermost elements in contact, where they fall towards the edge. At a growing
+    // edge the stress jumps by eta times the rate (the zero lies beyond the gap's), except on an element that entered
+    // in the last step with its own rate (RateAtEntry::breaks: its stress grows from zero), which is not taken. 1 (no
+    // bound) without a dashpot, with fewer than two elements in contact at the edge, after an entry at j, or where the
+    // zero lies beyond the neighbour.
+    const auto entered = [&](const Entry& entry) { return entry.element == j; };
+    if (!(material_.viscosity() > 0.0) || j == 0 || element_flags()[j - 1] == 0.0 ||
+        std::any_of(entries_.begin(), entries_.end(), entered)) {
+        return 1.0;
+    }
+    const double g_before = equivalent_[j - 1], g_in = equivalent_[j], g_out = equivalent_[j + 1];
+    const double before = element_stresses()[j - 1], inside = element_stresses()[j];
+    if (!(before > inside && inside >= 0.0 && g_in > g_before && g_out > g_in)) return 1.0;
+    const double edge = g_in + (g_in - g_before) * inside / (before - inside);
+    return std::min((edge - g_in) / (g_out - g_in), 1.0);
 }
 
 void Foundation::save_state(std::span<double> out) const {

@@ -143,9 +143,9 @@ RampDifference ramp_difference(const drivers::IndentationResult& jump, const dri
     difference.force = std::abs(jump.tangential_force[j] - ramp.tangential_force[r]) / (friction * held);
     difference.stick_radius = std::abs(jump.stick_radius[j] - ramp.stick_radius[r]) / a;
     // The shear stress at the jump's radii inside 0.8 c, the ramp's interpolated there. A snapshot's radii are
-    // those of its row's contact radius, and at the ramp's end that (the edge of an ordinary step, from the free gaps
-    // of elements that have only just left) differs from J2's by element resolution whatever tau: the two grids
-    // differ, and near the peak of tau at c the interpolation between them would be the difference.
+    // those of its row's contact radius, which at the ramp's end is J2's to 1e-4 dx (an ordinary step's receding
+    // edge from the stresses inside, test_receding_edge_dashpot.cpp); before, from the free gaps of elements that had
+    // only just left, it differed by element resolution whatever tau, and so did the two grids.
     const auto& at_jump = jump.snapshots.front();
     const auto& at_ramp = ramp.snapshots.front();
     const double stick = 0.8 * jump.stick_radius[j];
@@ -166,8 +166,9 @@ TEST(TangentialForceJump, IsTheLimitOfEverShorterRamps) {
     // the jump keeps). Observed at 1e-2, 1e-3, 1e-4: held force u 3.8e-5, 3.8e-6, 3.8e-7, c 1.6e-6, 1.6e-7, 2.2e-8;
     // moving displacement F_x 2.3e-6, 2.3e-7, 2.2e-8, c 8.2e-7, 8.2e-8, 8.5e-9 (u 2.5e-5, ...: the load's own motion
     // over tau); held displacement to rounding only (F_x 5.0e-10, c 5.3e-9 at most: the ramp keeps every sticking
-    // u_i, and its normal solve with eta/dt loses digits as tau shrinks); the shear stress 2.9e-6 to 7.3e-6 whatever
-    // tau (see ramp_difference). Fails before TangentialStepper::jump: the jump's row kept the state before it, c
+    // u_i, and its normal solve with eta/dt loses digits as tau shrinks); the shear stress 2.5e-6, 2.3e-7, 1.8e-8
+    // (held force), 1.3e-6, 1.3e-7, 1.3e-8 (moving displacement), to rounding (held displacement; 2.9e-6 to 7.3e-6
+    // whatever tau before Foundation::stress_edge, see ramp_difference). Fails before TangentialStepper::jump: the jump's row kept the state before it, c
     // 0.47, 0.49, 0.45 a' off and the shear stress 0.097, 1.16, 0.14 mu p0' for every tau.
     const std::vector<RampCase> cases = {
         {"held displacement", kelvin_voigt, held_displacement},

@@ -120,8 +120,10 @@ public:
     /// sigma + eta dr < 0) crosses zero, interpolated linearly (eq. J2). Otherwise the edge between the outermost
     /// element in contact and its free neighbour, where the free gap d - g - w, extrapolated linearly in g from the
     /// two free neighbours, reaches zero (exact in g where the surface was never touched, second order in dx where
-    /// it left contact); x is interpolated linearly in g between the two centres. 0 when the total force is 0:
-    /// nothing carries a load.
+    /// it left contact without a parallel dashpot); with one, the nearer of that and the zero of the stresses inside,
+    /// extrapolated in g from the two outermost elements in contact (a receding edge's gap opens quadratically, its
+    /// stresses fall linearly: docs/theory.md section 3); x is interpolated linearly in g between the two centres. 0
+    /// when the total force is 0: nothing carries a load.
     double contact_radius() const;
     /// The weight lambda <= 0 of the linear extrapolation in g from the two innermost elements to the axis,
     /// (g(0) - g_0) / (g_1 - g_0) (0 for a flat profile): a quantity q linear in g near the axis is
@@ -220,6 +222,12 @@ private:
     void free_substep(double time_step, double& w, double* h) const;
     double contact_substep(double time_step, double new_displacement, double end_rate, double& w, double* h) const;
     double free_gap(std::size_t i) const;
+    // Where between the centres of the outermost element in contact j and its free neighbour (0..1) the free gap,
+    // extrapolated in g, reaches zero (contact_radius).
+    double gap_edge(std::size_t j) const;
+    // With a parallel dashpot, where between the same centres (0..1) the stress inside, extrapolated in g from j - 1
+    // and j, reaches zero; 1 where it gives no bound (contact_radius).
+    double stress_edge(std::size_t j) const;
     double free_relaxed_of(std::size_t i) const { return free_relaxed_.empty() ? relaxed_[i] : free_relaxed_[i]; }
     std::size_t reach(double depth) const;
 
