@@ -28,14 +28,15 @@ constexpr double narrow_strip = 1.0 / 32.0;
 // alpha > 2/3 (delta = pi (1 - alpha) < alpha pi / 2): the integrand has simple poles at v = +-i delta, where
 // s^2 + 2 s cos(alpha pi) + 1 = 0 (s = exp(+-i delta)), closer to the real axis than the growth of
 // exp(-scale s^(1/alpha)) at |Im v| = alpha pi / 2; as alpha -> 1 a peak of width delta that holds nearly all the
-// integral. On the grid v = (k + 1/2) h the trapezoidal sum misses it by exactly the poles' terms, -2 pi i (R - conj R) /
-// (exp(2 pi delta / h) + 1) (residue R at i delta, its conjugate at -i delta: the residue theorem with the
-// trapezoidal rule's kernel, cf. Trefethen and Weideman, SIAM Rev. 56 (2014); for 1 / (v^2 + delta^2) on this grid
-// the sum is exactly (pi / delta) tanh(pi delta / h)). Added back, the spacing is set by the next singularity, the
-// growth of exp(-scale s^(1/alpha)) at |Im v| = alpha pi / 2, whatever delta is: ~300 nodes where the plain rule's
-// spacing delta / 6 needs 80 / h (15 000 at alpha = 0.99; docs/performance.md, "The fractional candidates"); the
-// half-step grid keeps the sum and the poles' term of one sign (no cancellation however small delta is). The
-// denominator is written as (s - 1)^2 + 4 s sin^2(delta / 2), free of the cancellation of 2 + 2 cos(alpha pi) at s = 1.
+// integral. On the grid v = (k + 1/2) h the trapezoidal sum misses it by exactly the poles' terms,
+// -2 pi i (R - conj R) / (exp(2 pi delta / h) + 1) (residue R at i delta, its conjugate at -i delta: the residue
+// theorem with the trapezoidal rule's kernel, cf. Trefethen and Weideman, SIAM Rev. 56 (2014); for
+// 1 / (v^2 + delta^2) on this grid the sum is exactly (pi / delta) tanh(pi delta / h)). Added back, the spacing is
+// set by the next singularity, the growth of exp(-scale s^(1/alpha)) at |Im v| = alpha pi / 2, whatever delta is:
+// ~300 nodes where the plain rule's spacing delta / 6 needs 80 / h (15 000 at alpha = 0.99; docs/performance.md,
+// "The fractional and springpot candidates"); the half-step grid keeps the sum and the poles' term of one sign (no
+// cancellation however small delta is). The denominator is written as (s - 1)^2 + 4 s sin^2(delta / 2), free of
+// the cancellation of 2 + 2 cos(alpha pi) at s = 1.
 double mittag_leffler_with_poles(double alpha, double x) {
     const double delta = std::numbers::pi * (1.0 - alpha);
     const double phi = alpha * std::numbers::pi;
