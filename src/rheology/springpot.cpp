@@ -22,19 +22,22 @@ void FractionalModel::validate() const {
 namespace {
 
 // Below this strip of analyticity the uniform grid of the spectral quadrature needs more than 15 000 nodes (minutes
-// for a certificate near alpha = 0 or 1), and one of the two rules below takes over.
+// for a certificate near alpha = 0), and the rule near 0 below takes over.
 constexpr double narrow_strip = 1.0 / 32.0;
 
-// alpha -> 1 (delta = pi (1 - alpha) small): the integrand has simple poles at v = +-i delta, where
-// s^2 + 2 s cos(alpha pi) + 1 = 0 (s = exp(+-i delta)), a peak of width delta that holds nearly all the integral. On
-// the grid v = (k + 1/2) h the trapezoidal sum misses it by exactly the poles' terms, -2 pi i (R - conj R) /
-// (exp(2 pi delta / h) + 1) (residue R at i delta, its conjugate at -i delta: the residue theorem with the
-// trapezoidal rule's kernel, cf. Trefethen and Weideman, SIAM Rev. 56 (2014); for 1 / (v^2 + delta^2) on this grid
-// the sum is exactly (pi / delta) tanh(pi delta / h)). Added back, the spacing is set by the next singularity, the
-// growth of exp(-scale s^(1/alpha)) at |Im v| = alpha pi / 2; the half-step grid keeps the sum and the poles' term
-// of one sign (no cancellation however small delta is). The denominator is written as
-// (s - 1)^2 + 4 s sin^2(delta / 2), free of the cancellation of 2 + 2 cos(alpha pi) at s = 1.
-double mittag_leffler_near_one(double alpha, double x) {
+// alpha > 2/3 (delta = pi (1 - alpha) < alpha pi / 2): the integrand has simple poles at v = +-i delta, where
+// s^2 + 2 s cos(alpha pi) + 1 = 0 (s = exp(+-i delta)), closer to the real axis than the growth of
+// exp(-scale s^(1/alpha)) at |Im v| = alpha pi / 2; as alpha -> 1 a peak of width delta that holds nearly all the
+// integral. On the grid v = (k + 1/2) h the trapezoidal sum misses it by exactly the poles' terms,
+// -2 pi i (R - conj R) / (exp(2 pi delta / h) + 1) (residue R at i delta, its conjugate at -i delta: the residue
+// theorem with the trapezoidal rule's kernel, cf. Trefethen and Weideman, SIAM Rev. 56 (2014); for
+// 1 / (v^2 + delta^2) on this grid the sum is exactly (pi / delta) tanh(pi delta / h)). Added back, the spacing is
+// set by the next singularity, the growth of exp(-scale s^(1/alpha)) at |Im v| = alpha pi / 2, whatever delta is:
+// ~300 nodes where the plain rule's spacing delta / 6 needs 80 / h (15 000 at alpha = 0.99; docs/performance.md,
+// "The fractional and springpot candidates"); the half-step grid keeps the sum and the poles' term of one sign (no
+// cancellation however small delta is). The denominator is written as (s - 1)^2 + 4 s sin^2(delta / 2), free of
+// the cancellation of 2 + 2 cos(alpha pi) at s = 1.
+double mittag_leffler_with_poles(double alpha, double x) {
     const double delta = std::numbers::pi * (1.0 - alpha);
     const double phi = alpha * std::numbers::pi;
     const double h = 0.5 * phi / 6.0;
@@ -88,18 +91,19 @@ double mittag_leffler_near_zero(double alpha, double x) {
 
 double mittag_leffler_decay(double alpha, double x) {
     if (x == 0.0) return 1.0;
-    if (std::numbers::pi * (1.0 - alpha) < narrow_strip) return mittag_leffler_near_one(alpha, x);
+    if (std::numbers::pi * (1.0 - alpha) < 0.5 * alpha * std::numbers::pi) return mittag_leffler_with_poles(alpha, x);
     // Also where scale = x^(1/alpha) underflows or overflows (x < 1e-308^alpha or > 1e308^alpha): scale s^(1/alpha)
-    // would be 0 * inf below; the rule near 0 works in ln(scale) + v / alpha. (For alpha >= 2/3, the poles' strip,
+    // would be 0 * inf below; the rule near 0 works in ln(scale) + v / alpha. (In the poles' rule, alpha > 2/3,
     // s^(1/alpha) stays within e^+-60 and the product is 0 or inf, never NaN.)
     const double scale = std::pow(x, 1.0 / alpha);
-    const bool out_of_range = alpha < 2.0 / 3.0 && !(scale > 0.0 && std::isfinite(scale));
+    const bool out_of_range = !(scale > 0.0 && std::isfinite(scale));
     if (0.5 * alpha * std::numbers::pi < narrow_strip || out_of_range) return mittag_leffler_near_zero(alpha, x);
     // s = exp(v): the integrand exp(v - x^(1/alpha) exp(v/alpha)) / (exp(2v) + 2 exp(v) cos + 1) decays as exp(v)
     // for v -> -inf and at least as exp(-v) for v -> +inf.
     const double phi = alpha * std::numbers::pi;
-    const double strip = std::min(std::numbers::pi - phi, 0.5 * phi);
-    const double h = strip / 6.0;  // trapezoidal error ~ exp(-2 pi strip / h) = exp(-12 pi)
+    // The poles at |Im v| = pi - phi lie beyond the strip alpha pi / 2 here (alpha <= 2/3): trapezoidal error
+    // ~ exp(-2 pi (phi / 2) / h) = exp(-12 pi).
+    const double h = 0.5 * phi / 6.0;
     const double lower = -40.0;
     // Beyond v_max the integrand is below exp(-v) and exp(-scale exp(v/alpha)) both tiny.
     const double upper = std::min(40.0, alpha * std::log(60.0 / scale) + 1.0);

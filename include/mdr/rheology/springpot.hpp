@@ -34,10 +34,10 @@ struct FractionalModel {
 /// E_alpha(-x) for x >= 0 and 0 < alpha < 1, from its spectral representation
 ///   E_alpha(-x) = sin(alpha pi) / (alpha pi) int_0^inf exp(-x^(1/alpha) s^(1/alpha)) / (s^2 + 2 s cos(alpha pi) + 1) ds
 /// (completely monotone: a non-negative spectrum), by the trapezoidal rule in ln s with a spacing set by the strip
-/// of analyticity min(pi (1 - alpha), alpha pi / 2); ~1e-12 relative. Where that strip is narrower than 1/32 (alpha
-/// within ~0.02 of 0 or 1), rules whose cost does not grow there: near 1 the trapezoidal sum on a half-step grid
-/// with its two poles' terms added, near 0 (and where x^(1/alpha) leaves the doubles) Gauss-Legendre in
-/// ln(s^(1/alpha) x^(1/alpha)) with the tail in closed form (springpot.cpp).
+/// of analyticity alpha pi / 2; ~1e-12 relative. For alpha > 2/3 the integrand's poles at ln s = +-i pi (1 - alpha)
+/// lie inside that strip: the sum on a half-step grid with the two poles' terms added (a cost that does not grow as
+/// alpha -> 1). Where the strip is narrower than 1/32 (alpha below ~0.02) and where x^(1/alpha) leaves the doubles,
+/// Gauss-Legendre in ln(s^(1/alpha) x^(1/alpha)) with the tail in closed form (springpot.cpp).
 double mittag_leffler_decay(double alpha, double x);
 
 /// The Prony series of a fractional model over `window`, certified to `tolerance` (relative, G(t) and G^(omega)):
