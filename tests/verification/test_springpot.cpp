@@ -152,14 +152,14 @@ TEST(SpringpotModels, MittagLefflerAboveTwoThirdsByThePolesRuleIsExactAndFast) {
         }
     }
     // The certificates of a fractional standard solid near alpha = 1 over the JPK record's window (4.9e-6 .. 32 s):
-    // 20 took 6-7 s before, ~0.25 s now.
+    // 20 took 5-7 s before, ~0.25 s now; the bound leaves room for a sanitized build on a loaded host.
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < 20; ++i) {
         const rheology::FractionalModel model{0.05, 300.0, 300.0, 0.99 - 0.0002 * i};
         const auto approximation = rheology::approximate(model, rheology::TimeWindow{4.88e-6, 32.0});
         EXPECT_LE(approximation.certificate.error, rheology::default_material_tolerance);
     }
-    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.5);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 3.0);
 }
 
 }  // namespace
