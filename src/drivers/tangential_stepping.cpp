@@ -38,6 +38,9 @@ void TangentialStepper::refuse_without_contact(double time) const {
 double TangentialStepper::force_increment(double target, std::span<const double> q, std::span<const double> contact,
                                           double time, double start, double bracket) {
     const double capacity = layer_.sliding_force(q, contact);
+    // No normal force to hold it and none asked for (a tangential force needs a contact: refuse_without_contact):
+    // the indenter stays where it is, and nothing slides.
+    if (capacity == 0.0 && target == 0.0) return 0.0;
     // Within round-off of the capacity the force is reached only by sliding as a whole (the layer's own sum
     // at saturation may fall short of `capacity` by an ulp, and the solve would find no bracket).
     if (std::abs(target) >= capacity * (1.0 - 1e-12)) {

@@ -168,8 +168,9 @@ TEST(TangentialForceJump, IsTheLimitOfEverShorterRamps) {
     // over tau); held displacement to rounding only (F_x 5.0e-10, c 5.3e-9 at most: the ramp keeps every sticking
     // u_i, and its normal solve with eta/dt loses digits as tau shrinks); the shear stress 2.5e-6, 2.3e-7, 1.8e-8
     // (held force), 1.3e-6, 1.3e-7, 1.3e-8 (moving displacement), to rounding (held displacement; 2.9e-6 to 7.3e-6
-    // whatever tau before Foundation::stress_edge, see ramp_difference). Fails before TangentialStepper::jump: the jump's row kept the state before it, c
-    // 0.47, 0.49, 0.45 a' off and the shear stress 0.097, 1.16, 0.14 mu p0' for every tau.
+    // whatever tau before Foundation::stress_edge, see ramp_difference). Fails before TangentialStepper::jump: the
+    // jump's row kept the state before it, c 0.47, 0.49, 0.45 a' off and the shear stress 0.097, 1.16, 0.14 mu p0'
+    // for every tau.
     const std::vector<RampCase> cases = {
         {"held displacement", kelvin_voigt, held_displacement},
         {"held force", standard_solid,
@@ -239,6 +240,25 @@ TEST(TangentialForceJump, AJumpToZeroForceLeavesNoTangentialStress) {
                                    "[1.0, 1.0e-9]]"));
               }),
               "tangential");
+}
+
+TEST(TangentialForceJump, NothingSlidesWhereNeitherForceIsLeft) {
+    // A tangential force back to zero at 0.45 s, then the normal force to zero at 0.5 s, by a jump or by a ramp of
+    // 0.05 s: no contact holds the indenter and no tangential force is asked for, so nothing slides (review of session
+    // 18: the zero capacity met the zero force, and `sliding_from` said 0.5 s, or 0.55 s after the ramp).
+    for (const double duration : {0.0, 0.05}) {
+        std::string text = creep_recovery(kelvin_voigt, duration,
+                                          "control = \"force\"\nhistory = [[0.0, 0.0], [0.3, 2.0e-9], [0.45, 0.0], "
+                                          "[1.0, 0.0]]",
+                                          1009);
+        const std::string receded = fmt::format("[{}, {}], [{}, {}]", jump_time + duration, held, end_time, held);
+        text.replace(text.find(receded), receded.size(),
+                     fmt::format("[{}, 0.0], [{}, 0.0]", jump_time + duration, end_time));
+        const auto result = run_toml(text);
+        ASSERT_TRUE(result.tangential);
+        EXPECT_FALSE(result.tangential->sliding_from) << duration << ": " << *result.tangential->sliding_from;
+        EXPECT_EQ(result.tangential_force.back(), 0.0) << duration;
+    }
 }
 
 }  // namespace
