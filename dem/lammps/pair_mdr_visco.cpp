@@ -355,7 +355,8 @@ void PairMdrVisco::compute(int eflag, int vflag)
   };
   range(0, leading);
   if (tangential_last > 0) range(tangential_first, tangential_last);
-  std::reverse(lines.begin(), lines.end());    // prefetch_lines takes the last first: the state's order
+  // from the far end of the state to its start: the order session 18 measured
+  std::reverse(lines.begin(), lines.end());
   const std::uintptr_t *line_offsets = lines.data();
   const std::size_t line_count = lines.size();
   // the contacts' energy for compute pair (docs/dem.md): a contact computed on two ranks (newton off, j a ghost)

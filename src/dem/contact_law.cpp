@@ -385,8 +385,8 @@ double ContactLaw::normal_trial(double overlap) {
     } else {
         step_normal_by_elements(overlap);
     }
-    // A whole number in [0, N] (the state's count was checked, the steps keep it so): the signed conversion is
-    // one instruction.
+    // A whole number in [0, N]: the steps keep the header's count so, and ContactLaw::check validates a state
+    // from elsewhere (a restart file); the signed conversion is one instruction.
     contact_count_ = static_cast<std::size_t>(
         static_cast<std::int64_t>(header()[foundation::ComposedNormalStep::contacts_offset]));
     normal_work_ = 0.5 * (start_normal_force_ + normal_force_) * (overlap - overlap_);

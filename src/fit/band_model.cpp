@@ -26,9 +26,7 @@ public:
           memory_bound_(!(material.equilibrium_modulus() > 0.0)), floor_(memory_bound_ ? count : 0, 0.0) {
         for (std::size_t i = 0; i < count; ++i) g_[i] = indenter.equivalent((static_cast<double>(i) + 0.5) * spacing);
         beyond_ = foundation::deepest_depth(indenter, spacing * static_cast<double>(count));
-        double instantaneous = material.equilibrium_modulus();
-        for (const auto& term : material.terms()) instantaneous += term.modulus;
-        ratio_ = instantaneous / material.equilibrium_modulus();
+        if (!memory_bound_) ratio_ = material.instantaneous_modulus() / material.equilibrium_modulus();  // G(0)/G_inf
     }
 
     // Prepares a step of length `time_step` (call before force and step).
@@ -388,6 +386,10 @@ bool band_model_applies(const rheology::Rheology& material) {
     return nonnegative && material.instantaneous_modulus() > 0.0;
 }
 
+bool band_model_rests_preloaded(const rheology::Rheology& material) {
+    return band_model_applies(material) && material.equilibrium_modulus() > 0.0;
+}
+
 std::optional<BandResponse> band_forces(const rheology::Rheology& material, const profile::Profile& indenter,
                                         double spacing, std::size_t count, const std::vector<double>& time,
                                         const std::vector<double>& depth,
@@ -399,8 +401,8 @@ std::optional<BandResponse> band_forces(const rheology::Rheology& material, cons
     BandResponse response{std::vector<double>(time.size(), 0.0), 0};
     double preload_force = 0.0;
     if (depth.front() > 0.0 && preloaded) {
-        // A relaxed preload needs G_inf > 0 (with G_inf = 0 no force holds it: fit.cpp refuses it by name).
-        if (!(material.equilibrium_modulus() > 0.0) ||
+        // fit.cpp refuses a material that cannot rest preloaded by name.
+        if (!band_model_rests_preloaded(material) ||
             !(depth.front() <= foundation::deepest_depth(indenter, spacing * static_cast<double>(count)))) {
             return std::nullopt;
         }

@@ -46,6 +46,10 @@ namespace mdr::fit {
 /// G(0) > 0 (G_inf > 0: the band g <= L; G_inf = 0: the memory bound).
 bool band_model_applies(const rheology::Rheology& material);
 
+/// True when the band model can start from a relaxed preload of this material (band_forces' `preloaded`): it
+/// applies and G_inf > 0 (with G_inf = 0 no force holds a preload).
+bool band_model_rests_preloaded(const rheology::Rheology& material);
+
 /// What the band model gives for one depth history.
 struct BandResponse {
     std::vector<double> force;       ///< F [N] at each time (eq. 21, both halves)

@@ -83,7 +83,7 @@ void require_a_material_that_can_rest_preloaded(const FitProblem& problem) {
     const drivers::ContactCase model = problem.model(values);
     if (model.layer) return;
     const bool flat_punch = model.indenter && model.indenter->is_flat_punch();
-    if (band_model_applies(model.material) && model.material.equilibrium_modulus() > 0.0 && !flat_punch) return;
+    if (band_model_rests_preloaded(model.material) && !flat_punch) return;
     const auto c = static_cast<std::size_t>(preloaded - problem.curves.begin());
     throw InvalidInput(
         fmt::format("fit.data[{}].start", c), "\"preloaded\"",
