@@ -52,6 +52,12 @@ void add_run_command(CLI::App& app, int& exit_code) {
             fmt::print("  {} steps x {} elements (half-width {:.4g} {}, time step {:.4g} {}) in {:.3f} s\n",
                        result.steps, result.numerics.elements, result.numerics.half_width, units.length,
                        result.numerics.time_step, units.time, wall);
+            const auto& asked = contact_case.numerics.elements;
+            if (contact_case.layer && asked && result.numerics.elements < *asked) {
+                fmt::print("  numerics.elements = {} ran as {} Gauss nodes: on a layer they stop at twice the default "
+                           "rule, where the result no longer changes (docs/case-format.md, Layers)\n",
+                           *asked, result.numerics.elements);
+            }
             fmt::print("  max force {:.6g} {}, max depth {:.6g} {}, max contact radius {:.6g} {}\n", max_force,
                        units.force, max_depth, units.length, max_radius, units.length);
             if (result.impact) {

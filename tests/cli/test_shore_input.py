@@ -130,3 +130,15 @@ def test_shore_on_a_sheet_writes_the_readings(run_case):
         rows = list(csv.DictReader(file))
     assert list(rows[0]) == ["t", "d", "F", "a", "shore"]
     assert float(rows[-1]["shore"]) == pytest.approx(summary["shore_15s"], abs=1e-9)
+
+
+def test_a_layers_elements_beyond_the_cap_are_said(run_case):
+    """`numerics.elements` above a layer's cap (twice the default rule, 96 Gauss nodes within 12 thicknesses) runs on
+    the cap: stdout says so, naming the key, the value asked for and the count taken (review of session 18: only the
+    count showed)."""
+    asked = run_case(MATERIAL + SHORE + SHEET + "[numerics]\nelements = 200\n")
+    assert asked.returncode == 0, asked.stderr
+    assert "numerics.elements = 200 ran as 96 Gauss nodes" in asked.stdout
+    within = run_case(MATERIAL + SHORE + SHEET + "[numerics]\nelements = 64\n")
+    assert within.returncode == 0, within.stderr
+    assert "numerics.elements" not in within.stdout
