@@ -9,6 +9,7 @@
 #include "mdr/drivers/work_estimate.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
+#include "check_refusal.hpp"
 
 namespace {
 
@@ -25,15 +26,7 @@ double element_steps(const std::string& numerics) {
     return mdr::drivers::estimate_work(contact_case, mdr::drivers::resolve_numerics(contact_case)).element_steps;
 }
 
-// The refusal of `text` read and checked (mdr check: the rules and the bounds), or "(accepted)".
-mdr::InvalidInput refusal(const std::string& text) {
-    try {
-        mdr::io::check(mdr::io::parse_case(text));
-    } catch (const mdr::InvalidInput& error) {
-        return error;
-    }
-    return mdr::InvalidInput("(accepted)", "", "");
-}
+using mdr::testing::check_refusal;
 
 TEST(LayerWork, TheBoundCountsTheSolvesOfTingsRunOnItsCappedNodes) {
     // Two cells, so that Ting's solves dominate: n = 96 costs 4 x 96^3 / 96 = 36864 element-steps a step, 4 cells'
@@ -45,12 +38,13 @@ TEST(LayerWork, TheBoundCountsTheSolvesOfTingsRunOnItsCappedNodes) {
     EXPECT_DOUBLE_EQ(element_steps("layer_cells = 2\nelements = 400\n"), cells_only + steps * 36864.0);
     EXPECT_DOUBLE_EQ(element_steps("layer_cells = 2\n"), cells_only + steps * 4.0 * 48.0 * 48.0 * 48.0 / 96.0);
     // Refused with the count and the keys that change it.
-    const auto refused = refusal(force_ramp("layer_cells = 2\nelements = 400\nmax_element_steps = 1.0e7\n"));
+    const auto refused = check_refusal(force_ramp("layer_cells = 2\nelements = 400\nmax_element_steps = 1.0e7\n"));
     EXPECT_EQ(refused.key(), "numerics.max_element_steps");
     const std::string message = refused.what();
     EXPECT_NE(message.find("n = 96 Gauss nodes of its run of Ting's class"), std::string::npos) << message;
     EXPECT_NE(message.find("use fewer numerics.layer_cells or numerics.elements"), std::string::npos) << message;
-    EXPECT_EQ(refusal(force_ramp("layer_cells = 2\nelements = 24\nmax_element_steps = 1.0e7\n")).key(), "(accepted)");
+    EXPECT_EQ(check_refusal(force_ramp("layer_cells = 2\nelements = 24\nmax_element_steps = 1.0e7\n")).key(),
+              "(accepted)");
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "mdr/drivers/layer_indentation.hpp"
 #include "mdr/error.hpp"
 #include "mdr/io/case_file.hpp"
+#include "check_refusal.hpp"
 
 namespace {
 
@@ -22,15 +23,7 @@ std::string on_layer(const std::string& numerics, const std::string& layer = "[l
            "[numerics]\n" + numerics;
 }
 
-// The refusal of `text` read and checked (mdr check: the rules and the bounds), or "(accepted)".
-mdr::InvalidInput refusal(const std::string& text) {
-    try {
-        mdr::io::check(mdr::io::parse_case(text));
-    } catch (const mdr::InvalidInput& error) {
-        return error;
-    }
-    return mdr::InvalidInput("(accepted)", "", "");
-}
+using mdr::testing::check_refusal;
 
 TEST(LayerCellsKey, IsReadAndDefaultsToTheElementsElseFourHundredElseEightHundredWithADashpot) {
     EXPECT_EQ(mdr::io::parse_case(on_layer("layer_cells = 1600\n")).numerics.layer_cells, 1600u);
@@ -71,36 +64,38 @@ TEST(LayerCellsKey, EveryRunOnCellsTakesIt) {
 TEST(LayerCellsKey, RefusesACountOutOfItsRangeOrNotAnInteger) {
     for (const char* bad : {"layer_cells = 1\n", "layer_cells = 0\n", "layer_cells = 4097\n", "layer_cells = 1.5\n",
                             "layer_cells = -3\n", "layer_cells = \"800\"\n"}) {
-        EXPECT_EQ(refusal(on_layer(bad)).key(), "numerics.layer_cells") << bad;
+        EXPECT_EQ(check_refusal(on_layer(bad)).key(), "numerics.layer_cells") << bad;
     }
-    const std::string message = refusal(on_layer("layer_cells = 4097\n")).what();
+    const std::string message = check_refusal(on_layer("layer_cells = 4097\n")).what();
     EXPECT_NE(message.find("4097"), std::string::npos) << message;
     EXPECT_NE(message.find("must be an integer from 2 to 4096"), std::string::npos) << message;
-    EXPECT_EQ(refusal(on_layer("layer_cells = 2\n")).key(), "(accepted)");
-    EXPECT_EQ(refusal(on_layer("layer_cells = 4096\n")).key(), "(accepted)");
+    EXPECT_EQ(check_refusal(on_layer("layer_cells = 2\n")).key(), "(accepted)");
+    EXPECT_EQ(check_refusal(on_layer("layer_cells = 4096\n")).key(), "(accepted)");
     // Without a [layer] the key would do nothing: refused, not ignored.
-    const auto half_space = refusal(on_layer("layer_cells = 800\n", ""));
+    const auto half_space = check_refusal(on_layer("layer_cells = 800\n", ""));
     EXPECT_EQ(half_space.key(), "numerics.layer_cells");
     EXPECT_NE(std::string(half_space.what()).find("only with a [layer]"), std::string::npos) << half_space.what();
 }
 
 TEST(LayerCellsKey, TheElementsPastTheNodesCapPointToTheCellsKey) {
-    const auto refused = refusal(on_layer("elements = 1600\n"));
+    const auto refused = check_refusal(on_layer("elements = 1600\n"));
     EXPECT_EQ(refused.key(), "numerics.elements");
     EXPECT_NE(std::string(refused.what()).find("numerics.layer_cells"), std::string::npos) << refused.what();
 }
 
 TEST(LayerCellsKey, TheBoundsCountTheDenseOperatorAndItsSolves) {
     // 4096 cells: I - K, its factor and transpose, the record and the unit loads, 7.5 m^2 doubles (~1.0e9 bytes).
-    const auto memory = refusal(on_layer("layer_cells = 4096\nmax_memory = 5.0e8\n"));
+    const auto memory = check_refusal(on_layer("layer_cells = 4096\nmax_memory = 5.0e8\n"));
     EXPECT_EQ(memory.key(), "numerics.max_memory");
-    EXPECT_NE(std::string(memory.what()).find("m = 4096 cells of the [layer], its dense I - K"), std::string::npos) << memory.what();
-    EXPECT_EQ(refusal(on_layer("layer_cells = 2048\nmax_memory = 5.0e8\n")).key(), "(accepted)");  // ~2.5e8
+    EXPECT_NE(std::string(memory.what()).find("m = 4096 cells of the [layer], its dense I - K"), std::string::npos)
+        << memory.what();
+    EXPECT_EQ(check_refusal(on_layer("layer_cells = 2048\nmax_memory = 5.0e8\n")).key(), "(accepted)");  // 2.5e8
     // ~2000 steps x 4096^2 + 4096^3 / 3 = 5.7e10 element-steps (a step's solve and the factoring).
-    const auto work = refusal(on_layer("layer_cells = 4096\nmax_element_steps = 1.0e10\n"));
+    const auto work = check_refusal(on_layer("layer_cells = 4096\nmax_element_steps = 1.0e10\n"));
     EXPECT_EQ(work.key(), "numerics.max_element_steps");
     EXPECT_NE(std::string(work.what()).find("use fewer numerics.layer_cells"), std::string::npos) << work.what();
-    EXPECT_EQ(refusal(on_layer("layer_cells = 1024\nmax_element_steps = 1.0e10\n")).key(), "(accepted)");  // 2.5e9
+    // 1024 cells: 2.5e9
+    EXPECT_EQ(check_refusal(on_layer("layer_cells = 1024\nmax_element_steps = 1.0e10\n")).key(), "(accepted)");
 }
 
 }  // namespace
