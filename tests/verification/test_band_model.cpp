@@ -424,9 +424,10 @@ TEST(BandModel, UnloadingAfterARelaxedHoldReleasesExactlyTheElementsBeyondTheBan
 }
 
 // Two properties of the drivers' Foundation (every element stepped) on any history. Every update of the foundation
-// (contact step, free step, and both parts of a split one) is the exact memory of a w linear over the (sub)step, so h_k(t) = int exp(-(t - s)/tau_k) w'(s) ds >= w(t) - max_s<=t w(s)
-// (integration by parts, any history); a free element's w never grows (sigma = 0 after a history of sigma >= 0 and a
-// creep compliance with a decreasing slope, Prony moduli >= 0), so max w <= D - g, and in contact h_k >= d - D.
+// (contact step, free step, and both parts of a split one) is the exact memory of a w linear over the (sub)step, so
+// h_k(t) = int exp(-(t - s)/tau_k) w'(s) ds >= w(t) - max_s<=t w(s) (integration by parts, any history); a free
+// element's w never grows (sigma = 0 after a history of sigma >= 0 and a creep compliance with a decreasing slope,
+// Prony moduli >= 0), so max w <= D - g, and in contact h_k >= d - D.
 // Checked on the adversarial histories: after every step, w <= D - g for each element touched, and h_k >= d - D for
 // each one in contact.
 TEST(BandModel, TheElementModelNeverLetsASurfaceSinkBelowTheDeepestIndentation) {
