@@ -23,10 +23,9 @@ public:
           stress_(count, 0.0), contact_(count, 0), h_(count * branches_, 0.0), fold_time_(count, 0.0),
           running_(branches_, 0.0), folded_memory_(branches_, 0.0), scratch_(branches_, 0.0),
           trial_memory_(branches_, 0.0), trial_element_(branches_, 0.0), trial_unfolded_(branches_, 0.0),
-          memory_bound_(!(material.equilibrium_modulus() > 0.0)), floor_(memory_bound_ ? count : 0, 0.0) {
+          floor_(count, 0.0) {
         for (std::size_t i = 0; i < count; ++i) g_[i] = indenter.equivalent((static_cast<double>(i) + 0.5) * spacing);
         beyond_ = foundation::deepest_depth(indenter, spacing * static_cast<double>(count));
-        if (!memory_bound_) ratio_ = material.instantaneous_modulus() / material.equilibrium_modulus();  // G(0)/G_inf
     }
 
     // Prepares a step of length `time_step` (call before force and step).
@@ -45,7 +44,7 @@ public:
         if (!(deepest <= beyond_)) return std::nullopt;
         peak_ = std::max(peak_, d1);
         const Band band = band_at(peak_, d0, d1);
-        if (memory_bound_) renew(t0, band);
+        renew(t0, band);
         while (folded_ > 0 && !inside(folded_ - 1, band)) unfold(t0, d0);
         while (touched_ < g_.size() && g_[touched_] < deepest) ++touched_;
         double sum = 0.0;
@@ -63,7 +62,7 @@ public:
             running_[k] = decay * running_[k] + gain * (d1 - d0);
             folded_stress += terms[k].modulus * folded_memory_[k];
         }
-        while (folded_ < touched_ && foldable(folded_, d1, band)) fold(t1);
+        while (folded_ < touched_ && foldable(folded_, band)) fold(t1);
         return force_per_stress * spacing_ * (sum + folded_stress);
     }
 
@@ -128,10 +127,9 @@ public:
     }
 
 private:
-    // Where the folded elements stay in contact at the end of a step (band_model.hpp), by the rule of the material:
-    // G_inf > 0, the band g <= limit; G_inf = 0, the memory bound floor_[i] <= stress.
+    // Where the folded elements stay in contact at the end of a step (band_model.hpp): the memory bound
+    // floor_[i] <= stress.
     struct Band {
-        double limit = 0.0;   // L(t) = D - (G(0) / G_inf)(D - d), less a margin
         double stress = 0.0;  // G_inf d + S(t), S = sum_k G_k Q_k, less a margin
     };
 
@@ -140,7 +138,6 @@ private:
     // cannot disagree: 1e-9 of the peak depth, and of the stress's terms' magnitudes (not G(0) D: a series' closing
     // term below its window has a G_k that dwarfs its stress G_k Q_k).
     Band band_at(double peak, double d0, double d1) const {
-        if (!memory_bound_) return {peak - ratio_ * (peak - d1) - 1e-9 * peak, 0.0};
         double stress = material_.equilibrium_modulus() * d1;
         double magnitude = material_.equilibrium_modulus() * peak;
         const auto& terms = material_.terms();
@@ -149,12 +146,12 @@ private:
             stress += terms[k].modulus * memory;
             magnitude += terms[k].modulus * std::abs(memory);
         }
-        return {0.0, stress - 1e-9 * magnitude};
+        return {stress - 1e-9 * magnitude};
     }
 
     // Folded element i, and with it every folded element before it, stays in contact in the band.
     bool inside(std::size_t i, const Band& band) const {
-        return memory_bound_ ? floor_[i] <= band.stress : g_[i] <= band.limit;
+        return floor_[i] <= band.stress;
     }
 
     // The memory bound's floor of element i from its memories h_k (running_ at the same time): G_inf g + m with
@@ -169,16 +166,10 @@ private:
         return material_.equilibrium_modulus() * g_[i] + deficit;
     }
 
-    // Element i follows the indenter from here on for sure (band_model.hpp): in contact, sigma >= 0, and in the band:
-    // g <= limit and every h_k >= d - D (G_inf > 0), or its memory floor below the band's stress (G_inf = 0).
-    bool foldable(std::size_t i, double depth, const Band& band) const {
-        if (!contact_[i] || !(stress_[i] >= 0.0)) return false;
-        if (memory_bound_) return memory_floor(i) <= band.stress;
-        if (!(g_[i] <= band.limit)) return false;
-        for (std::size_t k = 0; k < branches_; ++k) {
-            if (!(h_[i * branches_ + k] >= depth - peak_)) return false;
-        }
-        return true;
+    // Element i follows the indenter from here on for sure (band_model.hpp): in contact, sigma >= 0, and its memory
+    // floor below the band's stress.
+    bool foldable(std::size_t i, const Band& band) const {
+        return contact_[i] && stress_[i] >= 0.0 && memory_floor(i) <= band.stress;
     }
 
     // The memory bound: renews the floors that no longer hold in the band, each from its element's exact delta_k at
@@ -204,10 +195,10 @@ private:
     }
 
     // Folds element folded_ at time t: its h_k - Q_k is kept (it decays as exp(-(t' - t)/tau_k) from here on), and
-    // under the memory bound its floor, the largest of the folded prefix.
+    // its floor, the largest of the folded prefix.
     void fold(double time) {
         const std::size_t i = folded_++;
-        if (memory_bound_) floor_[i] = i == 0 ? memory_floor(i) : std::max(floor_[i - 1], memory_floor(i));
+        floor_[i] = i == 0 ? memory_floor(i) : std::max(floor_[i - 1], memory_floor(i));
         for (std::size_t k = 0; k < branches_; ++k) {
             folded_memory_[k] += h_[i * branches_ + k];
             h_[i * branches_ + k] -= running_[k];
@@ -367,11 +358,10 @@ private:
     mutable std::vector<double> trial_unfolded_; // force(): an unfolded element's h_k
     mutable std::vector<double> decays_;         // decays_since: the last decays, from decays_from_ to decays_to_
     mutable double decays_from_ = 0.0, decays_to_ = 0.0;
-    bool memory_bound_;              // G_inf = 0: the memory bound in place of the band g <= L
     std::vector<double> floor_;      // the memory bound: the largest floor of the folded prefix [0, i]
     double folded_profile_ = 0.0;    // sum of the folded elements' g
     std::size_t folded_ = 0, touched_ = 0, element_steps_ = 0;
-    double peak_ = 0.0, ratio_ = 1.0, beyond_ = 0.0;
+    double peak_ = 0.0, beyond_ = 0.0;
     foundation::StepCoefficients coefficients_;
 };
 

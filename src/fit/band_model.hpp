@@ -4,28 +4,23 @@
 /// stepped (internal to mdr_fit): the same elements, the same updates and the same forces as the drivers' element
 /// model (foundation.hpp), at a cost of O(steps x (branches + elements near the contact edge)).
 ///
-/// The bound that lets an element be summed (docs/performance.md, "Real curves"): let D(t) be the running maximum
-/// of the depth d(t). An element of MDR profile g in contact has w = d - g (eq. 13) and, per Prony branch k, the
-/// memory h_k(t) = exp(-(t - t0)/tau_k) h_k(t0) + int_t0^t exp(-(t - s)/tau_k) d'(s) ds (eq. 16). Integrating by
-/// parts, h_k(t) >= d(t) - D(t) + exp(-(t - t0)/tau_k) (h_k(t0) - d(t0) + D(t0)), so h_k >= d - D, once true, stays
-/// true while the element is in contact (it holds from the entry on, where h_k = 0 and d = D). Its stress is then
-/// sigma = G_inf (d - g) + sum_k G_k h_k >= G_inf (d - g) - (G(0) - G_inf) (D - d) (G_k >= 0), which is >= 0, so
-/// that the element stays in contact, while g <= L(t) = D - (G(0) / G_inf) (D - d). The elements of a prefix
-/// [0, folded) with g <= L and every h_k >= d - D are "folded": all follow the indenter with the same increment, so
-/// their stresses add up to G_inf (n d - sum g) + sum_k G_k H_k with H_k = sum h_k updated as one element
-/// (h_k <- E_k h_k + B_k dd, step_coefficients.hpp). Each keeps h_k - Q_k, which decays as exp(-t/tau_k), Q_k the
-/// memory of an element that followed the indenter from the undeformed state: when L falls below its g (a deeper
-/// dip), it is unfolded with its exact state and stepped again. The other elements take the foundation's steps,
-/// entry and exit located inside the step as there.
+/// The bound that lets an element be summed (docs/performance.md, "Real curves"): an element of MDR profile g in
+/// contact has w = d - g (eq. 13) and, per Prony branch k, the memory h_k (eq. 16), updated as h_k <- E_k h_k + B_k dd
+/// (step_coefficients.hpp) while it follows the indenter; Q_k is the memory of an element that followed the indenter
+/// from the undeformed state (the same update). A folded element keeps delta_k = h_k - Q_k, which only decays
+/// (delta_k <- E_k delta_k), so from its fold on sigma = G_inf (d - g) + S + sum_k G_k delta_k >= G_inf (d - g) + S - m
+/// with S = sum_k G_k Q_k and m = sum_k G_k max(-delta_k, 0) at the fold (G_k >= 0). The element stays in contact
+/// while its floor G_inf g + m <= G_inf d + S at each step's end. The elements of a prefix [0, folded) are "folded":
+/// all follow the indenter with the same increment, so their stresses add up to G_inf (n d - sum g) + sum_k G_k H_k
+/// with H_k = sum h_k updated as one element. The folded prefix keeps the largest floor of its elements, so that it
+/// unfolds from its end: a floor that no longer holds is first renewed from the element's decayed delta_k (a fold
+/// afresh), and the element unfolded with its exact state, and stepped again, only if that floor fails too. The other
+/// elements take the foundation's steps, entry and exit located inside the step as there.
 ///
-/// Without an equilibrium modulus (G_inf = 0: a power law's series, a fluid) the band is empty in every dip, and the
-/// memory bound takes its place. A folded element keeps delta_k = h_k - Q_k, which only decays (delta_k <- E_k
-/// delta_k: both follow the same update), so from its fold on sigma = G_inf (d - g) + S + sum_k G_k delta_k >=
-/// G_inf (d - g) + S - m with S = sum_k G_k Q_k and m = sum_k G_k max(-delta_k, 0) at the fold. The element stays in
-/// contact while its floor G_inf g + m <= G_inf d + S at each step's end; the folded prefix keeps the largest floor
-/// of its elements, so that it unfolds from its end as with the band. A floor that no longer holds is first renewed
-/// from the element's decayed delta_k (a fold afresh), and the element unfolded only if that floor fails too
-/// (tests/verification/test_band_model.cpp).
+/// The bound holds for every material the band model covers, with or without an equilibrium modulus. It replaced the
+/// band g <= L(t) = D - (G(0)/G_inf)(D - d) (D the running maximum of d), which for a large G(0)/G_inf (a spring with
+/// a springpot's series) unfolds nearly every element at each dip of a measured depth; the memory bound folds
+/// about as many (the Prony fits of the examples: within 0.02 %) or far more (docs/performance.md).
 ///
 /// Under force control (band_depths) each step's depth is solved as the drivers solve it (solve_force_balance on the
 /// force of a trial step): a trial depth below the band of a folded element unfolds it in a copy, so that every
@@ -43,7 +38,7 @@
 namespace mdr::fit {
 
 /// True when the band model covers this material: no parallel dashpot, G_inf >= 0, every Prony modulus >= 0 and
-/// G(0) > 0 (G_inf > 0: the band g <= L; G_inf = 0: the memory bound).
+/// G(0) > 0.
 bool band_model_applies(const rheology::Rheology& material);
 
 /// True when the band model can start from a relaxed preload of this material (band_forces' `preloaded`): it
@@ -69,7 +64,7 @@ struct BandResponse {
 /// so each element with g < d_0 starts in contact at w = d_0 - g with h_k = 0 (stress G_inf w), and the force
 /// returned is the change since time[0],
 /// F(t) - G_inf F_el(d_0) = int_{t_0}^t G(t - s) dF_el(d(s)) while the contact grows (Lee-Radok, eq. 21), and the
-/// foundation's own force less its preload once it shrinks. The band bound holds from the start (h_k = 0 = d_0 - D).
+/// foundation's own force less its preload once it shrinks. The memory bound holds from the start (h_k = 0 = Q_k).
 std::optional<BandResponse> band_forces(const rheology::Rheology& material, const profile::Profile& indenter,
                                         double spacing, std::size_t count, const std::vector<double>& time,
                                         const std::vector<double>& depth,
