@@ -85,7 +85,8 @@ std::vector<PythonObserver> python_observers(const py::object& observers) {
 
 // Runs with the GIL released; at each report of the driver, Ctrl-C (a pending signal) stops the run with
 // KeyboardInterrupt, and `progress` (None or a callable of the fraction done) is called; an exception it raises
-// stops the run and propagates. `progress` is called with 1.0 once the run is done. `observers` (None or a sequence
+// stops the run and propagates. `progress` is called with 1.0 once the run is done, where the driver's last report
+// was less (a run an observer stopped). `observers` (None or a sequence
 // of callables) see every state (PythonObserver).
 py::dict run_contact_case(const drivers::ContactCase& contact_case, const py::object& progress,
                           const py::object& observers) {
@@ -94,20 +95,22 @@ py::dict run_contact_case(const drivers::ContactCase& contact_case, const py::ob
     for (PythonObserver& observer : wrapped) attached.push_back(&observer);
     drivers::IndentationResult result;
     double wall = 0.0;
+    double reported = 0.0;
     {
         py::gil_scoped_release release;
         const auto start = std::chrono::steady_clock::now();
         result = drivers::run_case(
             contact_case,
-            [&progress](double fraction) {
+            [&progress, &reported](double fraction) {
                 py::gil_scoped_acquire acquire;
                 if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+                reported = fraction;
                 if (!progress.is_none()) progress(fraction);
             },
             attached);
         wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-    if (!progress.is_none()) progress(1.0);
+    if (!progress.is_none() && reported < 1.0) progress(1.0);
     py::dict history;
     for (const io::HistoryColumn& column : io::history_columns(result)) {
         py::array_t<double> values(static_cast<py::ssize_t>(result.time.size()));

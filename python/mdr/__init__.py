@@ -146,8 +146,9 @@ def run(case: Optional[RunCase] = None, *, material: Union[Material, Mapping[str
     title : str, optional
         The case's title.
     progress : callable, optional
-        Called as ``progress(fraction)`` with the fraction of the simulated time done (0 to 1) as the run goes
-        on, and with 1.0 at its end. An exception it raises stops the run and propagates.
+        Called as ``progress(fraction)`` with the fraction of the simulated time done (0 to 1; in an impact, whose
+        end is not known beforehand, 0.9 at its expected end of contact) as the run goes on, and with 1.0 at its
+        end. An exception it raises stops the run and propagates.
     observers : sequence of callables, optional
         Each is called as ``observer(step)`` with an ``mdr.Step`` (time, depth, force, contact radius, ...) for
         every state of the run, the initial one first, in time order. A true return value ends the run with that

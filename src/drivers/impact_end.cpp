@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "mdr/error.hpp"
@@ -13,6 +15,15 @@ void require_before_end(double time, double time_limit, double velocity) {
     throw InvalidInput("load.end", format_value(time_limit),
                        "the contact has not ended by then (velocity v = " + format_value(velocity) +
                            "): the indenter does not rebound in time; give a later load.end");
+}
+
+double impact_progress(double time, bool ended, const ResolvedNumerics& numerics) {
+    if (ended) return 1.0;
+    constexpr double by_expected_end = 0.9;
+    const double expected = numerics.expected_end, limit = numerics.time_limit;
+    if (time < expected) return by_expected_end * time / expected;
+    const double beyond = limit > expected ? (time - expected) / (limit - expected) : 1.0;
+    return std::min(by_expected_end + (1.0 - by_expected_end) * beyond, std::nextafter(1.0, 0.0));
 }
 
 ImpactOutcome impact_outcome(const ImpactEnd& end) {

@@ -19,6 +19,11 @@ inline double trapezoidal_velocity(double depth, double new_depth, double veloci
 /// ResolvedNumerics::time_limit) still in contact, the indenter at `velocity` [m/s].
 void require_before_end(double time, double time_limit, double velocity);
 
+/// The part of an impact done at `time` [s] (StepState::fraction, its progress reports): 1 once it has `ended`;
+/// before, 0.9 of it over the expected end of contact (ResolvedNumerics::expected_end) and the rest from there to the
+/// time limit, so that it keeps moving, and stays below 1, in a contact that lasts longer than expected.
+double impact_progress(double time, bool ended, const ResolvedNumerics& numerics);
+
 /// The step of an impact in which its last contact was lost.
 struct ImpactEnd {
     double mass = 0.0;       ///< m [kg]

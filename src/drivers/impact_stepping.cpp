@@ -92,6 +92,7 @@ ResolvedNumerics resolve_impact_numerics(const ContactCase& contact_case, const 
     resolved.time_limit = std::isfinite(contact_case.end_time)
                               ? contact_case.end_time
                               : std::min(10.0 * soft.duration, 200.0 * stiff.duration);
+    resolved.expected_end = std::min(soft.duration, resolved.time_limit);
     return resolved;
 }
 
@@ -124,7 +125,7 @@ FoundationSnapshots::ShearStress ImpactStepping::shear_stress() {
 
 StepState ImpactStepping::state(std::size_t step, bool ended) const {
     return {.step = step, .time = clock_.time(), .depth = depth_, .force = force_, .velocity = velocity_,
-            .fraction = std::min(clock_.time() / numerics_.time_limit, 1.0), .last = ended,
+            .fraction = impact_progress(clock_.time(), ended, numerics_), .last = ended,
             .foundation = &foundation_};
 }
 

@@ -24,7 +24,7 @@ StepState LayerCellsImpactStepping::state(std::size_t n) const {
             .depth = depth_,
             .force = force_,
             .velocity = velocity_,
-            .fraction = std::min(clock_.time() / numerics_.time_limit, 1.0),
+            .fraction = impact_progress(clock_.time(), outcome_.has_value(), numerics_),
             .last = outcome_.has_value(),
             .layer_contact_radius = contact_radius_};
 }

@@ -29,7 +29,7 @@ StepState LayerImpactStepping::state(std::size_t n, const LayerStep& step) const
             .depth = depth_,
             .force = force_,
             .velocity = velocity_,
-            .fraction = std::min(time_ / numerics_.time_limit, 1.0),
+            .fraction = impact_progress(time_, outcome_.has_value(), numerics_),
             .last = outcome_.has_value(),
             .layer_contact_radius = step.contact.contact_radius};
 }

@@ -47,6 +47,9 @@ struct ResolvedNumerics {
     double half_width = 0.0;     ///< half-width L [m]
     std::size_t output_every = 1;
     double time_limit = 0.0;     ///< last time simulated [s]; for an impact the latest end allowed
+    /// An impact's expected end of contact [s]: that of the elastic impact on the softest modulus (the one the
+    /// half-width is sized for), at most time_limit; the scale of its progress (impact_progress). 0 elsewhere.
+    double expected_end = 0.0;
     /// Smallest number of steps per history segment: min_steps_per_segment for a history written by hand; a dense
     /// one (a measured curve, more than default_steps / min_steps_per_segment segments) needs fewer, as its own
     /// points resolve it: enough that the history has default_steps steps in all, at least one per segment.

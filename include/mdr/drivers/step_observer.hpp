@@ -24,7 +24,7 @@ struct StepState {
                             ///< its harmonic part); 0 in an impact
     double velocity = 0.0;  ///< indenter velocity dd/dt [m/s] (impact only, else 0)
     double fraction = 0.0;  ///< part of the run done, 0..1: the steps of the time grid of a loading history, the
-                            ///< time over its bound (numerics time_limit) in an impact
+                            ///< time over its expected end of contact in an impact (impact_progress)
     bool settled = true;    ///< no further step follows at this time (false inside a jump of the load; the initial
                             ///< state counts as settled)
     bool row = false;       ///< a written row of the result: the initial state, every numerics.output_every-th
