@@ -259,8 +259,8 @@ def heat_map(values: np.ndarray, name: str, status: np.ndarray | None = None):
     """A figure of a (ny, nx) map (pixels without a value left white), the heat maps of CurveMap.write_files.
 
     With `status`, the pixels that are no results are marked as on the heat maps of ``mdr fit --map``
-    (mdr.map_figures.mark_pixels) and counted in the title: a FAILED pixel crossed in red, a NOT_CONVERGED one
-    (drawn with the values where its fit stopped) with an orange plus.
+    (mdr.map_figures.mark_pixels) and counted in the title where there are any: a FAILED pixel crossed in red, a
+    NOT_CONVERGED one (drawn with the values where its fit stopped) with an orange plus.
 
     Parameters
     ----------
@@ -302,8 +302,9 @@ def heat_map(values: np.ndarray, name: str, status: np.ndarray | None = None):
         rows, cols = np.indices(status.shape)
         failed, not_converged = status == FAILED, status == NOT_CONVERGED
         mark_pixels(axes, cols.ravel(), rows.ravel(), failed.ravel(), not_converged.ravel())
-        counts = f", {np.count_nonzero(failed)} failed" + (f", {np.count_nonzero(not_converged)} not converged"
-                                                           if not_converged.any() else "")
+        counts = "".join(f", {np.count_nonzero(where)} {label}" for where, label in ((failed, "failed"),
+                                                                                     (not_converged, "not converged"))
+                         if where.any())
     axes.set(xlabel="col", ylabel="row", title=f"{name} ({np.count_nonzero(np.isfinite(values))} of {values.size} "
                                                    f"pixels{counts})")
     figure.tight_layout()
