@@ -319,16 +319,15 @@ def map_curves(per_curve: Callable[[Any], Mapping[str, float]], stack: Any, *, s
 
     A pixel whose function raises is FAILED with the reason ("ExceptionType: message") and does not stop the map; one
     whose function returns a `MapRow` with a `stopped` (a fit that did not converge: `mdr.fit_maps.fit_curve`) is
-    NOT_CONVERGED with its values and that reason. The pixels run locally on `jobs` processes, or with `scheduler` on the workers of a Dask cluster, with the same
-    values bit for bit (docs/distributed.md).
+    NOT_CONVERGED with its values and that reason. The pixels run locally on `jobs` processes, or with `scheduler`
+    on the workers of a Dask cluster, with the same values bit for bit (docs/distributed.md).
 
     Parameters
     ----------
     per_curve : callable
         ``per_curve(curve)`` returns a dict {name: number or text} or a `MapRow` for one pixel's curve (as
-        `open_stack` reads it). It
-        must be picklable: a function of an installed module (``functools.partial`` for settings), or one defined
-        in ``__main__`` with a scheduler.
+        `open_stack` reads it). It must be picklable: a function of an installed module (``functools.partial`` for
+        settings), or one defined in ``__main__`` with a scheduler.
     stack : array-like, str or os.PathLike
         The curves: anything `open_stack` takes (an array (ny, nx, nt[, channels]), an HDF5 file, a directory with
         positions.csv), or a stack it returned.
