@@ -9,6 +9,7 @@ from __future__ import annotations
 import csv
 import json
 import math
+import subprocess
 
 import numpy as np
 import pytest
@@ -76,9 +77,19 @@ def expect_the_file_maps_pixels(fits: mdr.curve_maps.CurveMap, table: mdr.fit_ma
         assert ours.view(np.int64).tolist() == column.view(np.int64).tolist(), name
 
 
-def test_a_fit_that_stops_short_is_the_same_pixel_from_an_array_as_from_the_instrument_file(file_map, stack):
+def test_a_fit_that_stops_short_is_the_same_pixel_from_an_array_as_from_the_instrument_file(mdr_binary, file_map,
+                                                                                           stack, tmp_path):
     curves, tip_heights = stack
     expect_the_file_maps_pixels(mdr.fit_map(CASE, curves, jobs=1), file_map, tip_heights)
+    # The file route is the command line's: the same map.csv, and exit code 1 (a pixel did not converge).
+    (tmp_path / "case.toml").write_text('[material]\nmodel = "elastic"\nG = 1000.0\n\n[indenter]\nshape = "sphere"\n'
+                                        'R = 5.0e-6\n\n[fit]\nfree = ["material.G"]\nmax_iterations = 12\n\n'
+                                        '[[fit.data]]\nfile = "map.jpk-force-map"\nsegments = ["extend"]\n')
+    run = subprocess.run([mdr_binary, "fit", "case.toml", "--map", MAP, "--out", "cli"], cwd=tmp_path,
+                         capture_output=True, timeout=300)
+    assert run.returncode == 1
+    mdr.fit_map(FILE_CASE, MAP, jobs=1, out=tmp_path / "py", figures=False)
+    assert (tmp_path / "cli" / "map.csv").read_text() == (tmp_path / "py" / "map.csv").read_text()
 
 
 def test_directories_hdf5_files_and_local_processes_give_the_same_pixels(file_map, stack, tmp_path):
