@@ -4,7 +4,9 @@ the status of every pixel and the reason of every failure; `CurveMap.write` stor
 
 The hook for fits: `mdr.fit_map` is `map_curves` with a per-curve function that fits one curve with `mdr.fit` and
 returns {parameter: value, parameter + "_stderr": standard error, ...}; a fit that fails raises, and its reason is
-kept for the pixel. docs/distributed.md shows the contract with a closed-form fit.
+kept for the pixel; a fit that stops without converging returns its values in a `MapRow` that says why it stopped
+(`MapRow.stopped`), and the pixel keeps them as NOT_CONVERGED. docs/distributed.md shows the contract with a
+closed-form fit.
 
 Stacks (`open_stack`):
 - a numpy array (ny, nx, nt) or (ny, nx, nt, channels): the curve of pixel (row, col) is `array[row, col]`;
@@ -28,9 +30,10 @@ import numpy as np
 from . import distributed
 from ._jobs import check_jobs
 
-#: Pixel status codes of `CurveMap.status` (status.npy).
-OK, FAILED, NO_CURVE = 0, 1, 2
-STATUS_NAMES = {OK: "ok", FAILED: "failed", NO_CURVE: "no curve"}
+#: Pixel status codes of `CurveMap.status` (status.npy): a result; no values (the per-curve function raised); no
+#: curve; the values where a fit stopped without converging (not a result: `MapRow.stopped` says why).
+OK, FAILED, NO_CURVE, NOT_CONVERGED = 0, 1, 2, 3
+STATUS_NAMES = {OK: "ok", FAILED: "failed", NO_CURVE: "no curve", NOT_CONVERGED: "not converged"}
 
 
 class ArrayStack:
@@ -162,20 +165,24 @@ def open_stack(source: Any, dataset: str = "curves"):
 
 class MapRow(dict):
     """The values of one pixel, {name: number or text}, with the SI unit of each (`units`, as map.json's
-    ``column_units`` states them: "" for no quantity, "1" for a ratio) and the unit system of the numbers
-    (`unit_system`): what `mdr.fit_maps.fit_curve` returns. A per-curve function may return a plain dict instead (its
-    values without units, in SI)."""
+    ``column_units`` states them: "" for no quantity, "1" for a ratio), the unit system of the numbers
+    (`unit_system`) and, for the values where a fit stopped without converging, why it stopped (`stopped`, the
+    fit's status; "" for a result): what `mdr.fit_maps.fit_curve` returns. `map_curves` keeps a row with a
+    `stopped` as a NOT_CONVERGED pixel with its values and that reason. A per-curve function may return a plain
+    dict instead (its values without units, in SI; a result)."""
 
-    def __init__(self, values: Mapping[str, Any], units: Mapping[str, str], unit_system: str = "SI"):
+    def __init__(self, values: Mapping[str, Any], units: Mapping[str, str], unit_system: str = "SI",
+                 stopped: str = ""):
         super().__init__(values)
-        self.units, self.unit_system = dict(units), unit_system
+        self.units, self.unit_system, self.stopped = dict(units), unit_system, stopped
 
 
 @dataclass
 class CurveMap:
     """Per-pixel results: `values[name]` (ny, nx) arrays, float (nan where a pixel has no value) or, for a value that
-    is text, str ("" where a pixel has none), `status` (ny, nx) codes (OK, FAILED, NO_CURVE), `reasons` (ny, nx)
-    strings ("" where ok), `batch` how the map ran (mdr.distributed.MapOutcome without outputs), `units` the SI unit
+    is text, str ("" where a pixel has none), `status` (ny, nx) codes (OK, FAILED, NO_CURVE, NOT_CONVERGED: values
+    where the fit stopped, no result), `reasons` (ny, nx) strings ("" where ok or no curve; why a pixel failed or
+    why its fit stopped), `batch` how the map ran (mdr.distributed.MapOutcome without outputs), `units` the SI unit
     of each value ("" where unknown), `unit_system` that of the numbers and `source` what the stack was read from."""
 
     values: dict[str, np.ndarray]
@@ -189,8 +196,9 @@ class CurveMap:
     def summary(self) -> dict[str, Any]:
         """map.json as a dict: the layout of the command line's map.json (``mdr fit CASE --map FILE``), written by
         the same C++: the grid's ``columns`` and ``rows`` (nx, ny; ``size`` and ``pixel_size`` 0: a stack states no
-        positions), ``pixels``, ``failed`` (pixels without values: failed or without a curve), ``source``, the unit
-        system and ``column_units`` (the unit of every value). How the map ran is ``batch``."""
+        positions), ``pixels``, ``failed`` (pixels without values: failed or without a curve; a pixel that did not
+        converge has its values, as a row of map.csv does), ``source``, the unit system and ``column_units`` (the
+        unit of every value). How the map ran is ``batch``."""
         return json.loads(self._summary_json())
 
     def _summary_json(self) -> str:
@@ -200,13 +208,14 @@ class CurveMap:
         names = list(self.values)
         return _mdr._map_summary_json(int(nx), int(ny), self.unit_system, self.source, names,
                                       [self.units.get(name, "") for name in names], int(self.status.size),
-                                      int(np.count_nonzero(self.status != OK)))
+                                      int(np.count_nonzero((self.status == FAILED) | (self.status == NO_CURVE))))
 
     def write_files(self, directory: str, figures: bool = True) -> list[str]:
         """Writes NAME.npy per value that is a number, texts.csv (row,col and the values that are text, if any),
-        status.npy (the codes), failures.csv (row,col,status,reason), map.json (`summary`) and, with `figures`, a heat
-        map NAME.png per value that is a number and no pixel's place (mdr.map_figures.NOT_DRAWN) into an existing
-        directory; returns the file names."""
+        status.npy (the codes), failures.csv (row,col,status,reason of every pixel that is not OK: "failed", "no
+        curve", "not converged"), map.json (`summary`) and, with `figures`, a heat map NAME.png per value that is a
+        number and no pixel's place (mdr.map_figures.NOT_DRAWN; `heat_map` with the pixels that are no results
+        marked) into an existing directory; returns the file names."""
         from .map_figures import NOT_DRAWN
 
         names = []
@@ -241,13 +250,17 @@ class CurveMap:
             for name, array in self.values.items():
                 if name in NOT_DRAWN or array.dtype.kind != "f":
                     continue
-                heat_map(array, name).savefig(os.path.join(directory, f"{name}.png"), dpi=120)
+                heat_map(array, name, self.status).savefig(os.path.join(directory, f"{name}.png"), dpi=120)
                 names.append(f"{name}.png")
         return names
 
 
-def heat_map(values: np.ndarray, name: str):
+def heat_map(values: np.ndarray, name: str, status: np.ndarray | None = None):
     """A figure of a (ny, nx) map (pixels without a value left white), the heat maps of CurveMap.write_files.
+
+    With `status`, the pixels that are no results are marked as on the heat maps of ``mdr fit --map``
+    (mdr.map_figures.mark_pixels) and counted in the title where there are any: a FAILED pixel crossed in red, a
+    NOT_CONVERGED one (drawn with the values where its fit stopped) with an orange plus.
 
     Parameters
     ----------
@@ -255,6 +268,8 @@ def heat_map(values: np.ndarray, name: str):
         The (ny, nx) map; nan where a pixel has no value.
     name : str
         The value's name, for the colour bar and the title.
+    status : numpy.ndarray, optional
+        The (ny, nx) codes of the pixels (`CurveMap.status`).
 
     Returns
     -------
@@ -267,15 +282,31 @@ def heat_map(values: np.ndarray, name: str):
     >>> figure = mdr.curve_maps.heat_map(values, "material.G")
     >>> figure.axes[0].get_title()
     'material.G (5 of 6 pixels)'
+    >>> from mdr.curve_maps import OK, FAILED, NOT_CONVERGED
+    >>> status = np.array([[OK, OK, NOT_CONVERGED], [OK, FAILED, OK]])
+    >>> figure = mdr.curve_maps.heat_map(values, "material.G", status)
+    >>> figure.axes[0].get_title()
+    'material.G (5 of 6 pixels, 1 failed, 1 not converged)'
+    >>> [(marks.get_label(), marks.get_offsets().tolist()) for marks in figure.axes[0].collections]   # (col, row)
+    [('failed', [[1.0, 1.0]]), ('not converged', [[2.0, 0.0]])]
     """
     from matplotlib.figure import Figure  # no pyplot: no GUI backend, safe in any thread
+    from .map_figures import mark_pixels
 
     figure = Figure(figsize=(5.5, 4.5))
     axes = figure.add_subplot()
     image = axes.imshow(np.ma.masked_invalid(values), origin="upper", interpolation="nearest", cmap="viridis")
     figure.colorbar(image, ax=axes, label=name)
+    counts = ""
+    if status is not None:
+        rows, cols = np.indices(status.shape)
+        failed, not_converged = status == FAILED, status == NOT_CONVERGED
+        mark_pixels(axes, cols.ravel(), rows.ravel(), failed.ravel(), not_converged.ravel())
+        counts = "".join(f", {np.count_nonzero(where)} {label}" for where, label in ((failed, "failed"),
+                                                                                     (not_converged, "not converged"))
+                         if where.any())
     axes.set(xlabel="col", ylabel="row", title=f"{name} ({np.count_nonzero(np.isfinite(values))} of {values.size} "
-                                                   f"pixels)")
+                                                   f"pixels{counts})")
     figure.tight_layout()
     return figure
 
@@ -286,16 +317,17 @@ def map_curves(per_curve: Callable[[Any], Mapping[str, float]], stack: Any, *, s
     """Runs `per_curve(curve)` for every pixel of `stack` and collects a map per value, the status of every pixel
     and the reason of every failure.
 
-    A pixel whose function raises is FAILED with the reason ("ExceptionType: message") and does not stop the map.
-    The pixels run locally on `jobs` processes, or with `scheduler` on the workers of a Dask cluster, with the same
-    values bit for bit (docs/distributed.md).
+    A pixel whose function raises is FAILED with the reason ("ExceptionType: message") and does not stop the map; one
+    whose function returns a `MapRow` with a `stopped` (a fit that did not converge: `mdr.fit_maps.fit_curve`) is
+    NOT_CONVERGED with its values and that reason. The pixels run locally on `jobs` processes, or with `scheduler`
+    on the workers of a Dask cluster, with the same values bit for bit (docs/distributed.md).
 
     Parameters
     ----------
     per_curve : callable
-        ``per_curve(curve)`` returns a dict {name: number} for one pixel's curve (as `open_stack` reads it). It
-        must be picklable: a function of an installed module (``functools.partial`` for settings), or one defined
-        in ``__main__`` with a scheduler.
+        ``per_curve(curve)`` returns a dict {name: number or text} or a `MapRow` for one pixel's curve (as
+        `open_stack` reads it). It must be picklable: a function of an installed module (``functools.partial`` for
+        settings), or one defined in ``__main__`` with a scheduler.
     stack : array-like, str or os.PathLike
         The curves: anything `open_stack` takes (an array (ny, nx, nt[, channels]), an HDF5 file, a directory with
         positions.csv), or a stack it returned.
@@ -316,7 +348,8 @@ def map_curves(per_curve: Callable[[Any], Mapping[str, float]], stack: Any, *, s
     -------
     CurveMap
         ``values[name]`` (ny, nx) per name the function returned (nan where a pixel failed or has no curve),
-        ``status`` (``OK``, ``FAILED``, ``NO_CURVE``), ``reasons`` ("" where ok) and ``batch`` (how the map ran).
+        ``status`` (``OK``, ``FAILED``, ``NO_CURVE``, ``NOT_CONVERGED``), ``reasons`` ("" where ok or no curve) and
+        ``batch`` (how the map ran).
 
     Examples
     --------
@@ -355,7 +388,7 @@ def map_curves(per_curve: Callable[[Any], Mapping[str, float]], stack: Any, *, s
     for result in results:
         if result is None:
             continue
-        values_of, units_of, unit_system = result
+        values_of, units_of, unit_system, _ = result
         units.update(units_of)
         for name in values_of:
             if name not in names:
@@ -371,7 +404,10 @@ def map_curves(per_curve: Callable[[Any], Mapping[str, float]], stack: Any, *, s
             status[row, col] = NO_CURVE if error == _NO_CURVE else FAILED
             reasons[row, col] = "" if error == _NO_CURVE else error
             continue
-        for name, value in result[0].items():
+        values_of, _, _, stopped = result
+        if stopped:
+            status[row, col], reasons[row, col] = NOT_CONVERGED, stopped
+        for name, value in values_of.items():
             values[name][row, col] = value
     values = {name: array.astype(str) if name in texts else array for name, array in values.items()}
     curve_map = CurveMap(values=values, status=status, reasons=reasons.astype(str), batch=batch, units=units,
@@ -391,12 +427,13 @@ class NoCurve(Exception):
 
 
 class _Guarded:
-    """The per-curve function, with the checks of its output (a mapping of names to finite-or-nan numbers)."""
+    """The per-curve function, with the checks of its output (a mapping of names to numbers or texts): its values,
+    units, unit system and why its fit stopped short ("" for a result)."""
 
     def __init__(self, per_curve: Callable[[Any], Mapping[str, float]]):
         self.per_curve = per_curve
 
-    def __call__(self, curve: Any) -> tuple[dict[str, float | str], dict[str, str], str]:
+    def __call__(self, curve: Any) -> tuple[dict[str, float | str], dict[str, str], str, str]:
         if curve is None:
             raise NoCurve("no curve at this position")
         result = self.per_curve(curve)
@@ -405,8 +442,8 @@ class _Guarded:
         values = {str(name): value if isinstance(value, str) else math.nan if value is None else float(value)
                   for name, value in result.items()}
         if isinstance(result, MapRow):
-            return values, result.units, result.unit_system
-        return values, {}, "SI"
+            return values, result.units, result.unit_system, str(result.stopped)
+        return values, {}, "SI", ""
 
 
 class _LazyCurves(Sequence):

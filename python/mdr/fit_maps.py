@@ -20,15 +20,16 @@ from .fit_map_files import MapTable, fit_map_file, is_instrument_file
 CHANNELS = ("time", "depth", "force")
 
 
-class FitNotConverged(Exception):
-    """A pixel whose fit stopped without converging (its reason is the fit's status)."""
-
-
 def fit_curve(curve: Any, case: Mapping[str, Any], time: Sequence[float] | None = None,
               depth: Sequence[float] | None = None, columns: Mapping[str, str] | None = None,
               pixel: tuple[int, int, int] = (0, 0, 0)) -> MapRow:
     """Fits one curve as a pixel of a map: the per-curve function of `fit_map`, the same C++ as a pixel of ``mdr fit
     CASE --map FILE`` (mdr/fitcase/map_fit.hpp), whose row of map.csv it returns.
+
+    A fit that stops without converging returns its row too, as ``mdr fit --map`` writes it and `mdr.fit` returns
+    it: the values and errors where the fit stopped, ``status`` saying why, and that reason as the row's
+    `MapRow.stopped` ("" for a result: ``converged``, or ``converged, misfit`` with its flag), so that `map_curves`
+    keeps the pixel as ``NOT_CONVERGED`` with its values.
 
     Parameters
     ----------
@@ -50,12 +51,10 @@ def fit_curve(curve: Any, case: Mapping[str, Any], time: Sequence[float] | None 
         The row of map.csv (docs/instrument-to-map.md): ``index``, ``column``, ``row``, ``x``, ``y`` (0: a stack
         states no positions), every free key and ``KEY_stderr``, ``E_KEY`` and ``E_KEY_stderr`` for every Young
         modulus, ``contact_height`` (-contact point), ``residual_to_noise``, ``noise``, ``status``, ``flags`` and
-        ``failure``, with the unit of each (``units``) and the case's unit system.
+        ``failure``, with the unit of each (``units``), the case's unit system and `MapRow.stopped`.
 
     Raises
     ------
-    FitNotConverged
-        With the fit's status, when it stopped without converging.
     ValueError
         For a bad curve or case (the fit's message).
 
@@ -67,8 +66,12 @@ def fit_curve(curve: Any, case: Mapping[str, Any], time: Sequence[float] | None 
     >>> case = {"material": {"model": "elastic", "G": 3e5}, "indenter": {"shape": "sphere", "R": 1e-3},
     ...         "fit": {"free": ["material.G"], "contact_point": "fixed", "baseline": "fixed"}}
     >>> values = mdr.fit_maps.fit_curve(F, case, time=t, depth=d)
-    >>> round(values["material.G"] / 1e6, 4), values["status"], values.units["material.G"]
-    (1.0, 'converged', 'Pa')
+    >>> round(values["material.G"] / 1e6, 4), values["status"], values.units["material.G"], values.stopped
+    (1.0, 'converged', 'Pa', '')
+    >>> case["fit"]["max_iterations"] = 2                                   # too few: the fit stops short
+    >>> values = mdr.fit_maps.fit_curve(F, case, time=t, depth=d)
+    >>> values["status"], values.stopped, values["material.G"] > 0
+    ('did not converge in 2 iterations', 'did not converge in 2 iterations', True)
     """
     from . import _mdr
 
@@ -88,9 +91,9 @@ def fit_curve(curve: Any, case: Mapping[str, Any], time: Sequence[float] | None 
     index, column, row = pixel
     values, units, unit_system = _mdr._fit_map_curve(plain_tree(case), "case", os.getcwd(), *arrays, index, column,
                                                      row)
-    if not values["status"].startswith("converged"):  # "converged, misfit" is a result: its flag says so
-        raise FitNotConverged(values["status"])
-    return MapRow(values, units, unit_system)
+    # "converged, misfit" is a result: its flag says so; any other status is why the fit stopped short.
+    stopped = "" if values["status"].startswith("converged") else values["status"]
+    return MapRow(values, units, unit_system, stopped)
 
 
 class _NumberedStack:
@@ -120,8 +123,10 @@ def fit_map(case: str | os.PathLike | Mapping[str, Any], stack: Any, *, time: Se
             progress: Callable[[int, int], None] | None = None) -> CurveMap | MapTable:
     """Fits every curve of `stack` with the fit case `case`: `mdr.map_curves` with `fit_curve` for every pixel.
 
-    A pixel whose fit fails or does not converge is FAILED with the reason; the map goes on. Locally on `jobs`
-    processes or on the workers of a Dask `scheduler`, with the same values bit for bit (docs/distributed.md).
+    A pixel whose fit fails is FAILED with the reason and no values; one whose fit stops without converging is
+    NOT_CONVERGED with the values and errors where it stopped and the fit's status as its reason (the row ``mdr fit
+    CASE --map FILE`` writes for it); the map goes on. Locally on `jobs` processes or on the workers of a Dask
+    `scheduler`, with the same values bit for bit (docs/distributed.md).
 
     Parameters
     ----------
@@ -148,8 +153,9 @@ def fit_map(case: str | os.PathLike | Mapping[str, Any], stack: Any, *, time: Se
     Returns
     -------
     CurveMap
-        Per free key a map of values and one of standard errors (``KEY_stderr``), ``rms_residual`` and
-        ``evaluations``; ``status`` and ``reasons`` per pixel.
+        ``values``: the columns of `fit_curve`'s row (those of map.csv) as (ny, nx) maps: per free key a map of
+        values and one of standard errors (``KEY_stderr``), ``residual_to_noise``, the fit's ``status`` (text), ...;
+        ``status`` the pixels' codes (``OK``, ``FAILED``, ``NO_CURVE``, ``NOT_CONVERGED``) and ``reasons``.
 
     Examples
     --------
@@ -168,6 +174,15 @@ def fit_map(case: str | os.PathLike | Mapping[str, Any], stack: Any, *, time: Se
            [ 3., nan]])
     >>> fits.status[1, 1] == mdr.curve_maps.FAILED, fits.reasons[1, 1]
     (True, 'InvalidInput: force = nan: at index 20: must be a finite number')
+
+    With 10 iterations at most, the fit of G = 2 MPa (from 0.3 MPa) stops short: its pixel keeps where it stopped.
+
+    >>> case["fit"]["max_iterations"] = 10
+    >>> fits = mdr.fit_map(case, forces[:1], time=t, depth=d, jobs=1)
+    >>> fits.status.tolist(), fits.reasons[0, 1], fits.values["status"][0, 1]
+    ([[0, 3]], 'did not converge in 10 iterations', 'did not converge in 10 iterations')
+    >>> bool(np.isfinite(fits.values["material.G"][0, 1]))
+    True
     """
     if is_instrument_file(stack):
         given = {"time": time, "depth": depth, "columns": columns, "scheduler": scheduler}

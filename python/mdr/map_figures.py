@@ -52,7 +52,6 @@ def map_heat_maps(directory: str) -> list[tuple[str, object]]:
     # "converged" and "converged, misfit" are results (the misfit's flag says so); any other status is why the fit
     # stopped short.
     stopped = ~all_failed & ~np.char.startswith(status.astype(str), "converged")
-    marks = ((failed, "x", "red", "failed"), (stopped[placed], "+", "orange", "not converged"))
     figures = []
     for name, values in table.items():
         if name in NOT_DRAWN or name.endswith("_stderr"):
@@ -65,12 +64,7 @@ def map_heat_maps(directory: str) -> list[tuple[str, object]]:
                             extent=extent)
         unit = units.get(name, "")  # "1": a ratio or an exponent, drawn without a unit
         figure.colorbar(image, ax=axes, label=f"{name} [{unit}]" if unit not in ("", "1") else name)
-        for where, marker, colour, label in marks:
-            if where.any():
-                axes.scatter(x[where] if extent else column_index[where], y[where] if extent else row_index[where],
-                             marker=marker, color=colour, s=30, label=label)
-        if failed.any() or stopped.any():
-            axes.legend(loc="upper right", fontsize="small")
+        mark_pixels(axes, x if extent else column_index, y if extent else row_index, failed, stopped[placed])
         drawn = np.count_nonzero(np.isfinite(grid))
         short = f", {int(stopped.sum())} not converged" if stopped.any() else ""
         axes.set(xlabel="x [µm]" if extent else "column", ylabel="y [µm]" if extent else "row",
@@ -78,3 +72,16 @@ def map_heat_maps(directory: str) -> list[tuple[str, object]]:
         figure.tight_layout()
         figures.append((name, figure))
     return figures
+
+
+def mark_pixels(axes, x: np.ndarray, y: np.ndarray, failed: np.ndarray, not_converged: np.ndarray) -> None:
+    """Marks the pixels that are no results on the heat map `axes`, as every heat map of mdr does (map_heat_maps,
+    mdr.curve_maps.heat_map): a red cross where `failed` (no values), an orange plus where `not_converged` (the
+    values where the fit stopped), at the pixels' `x`, `y` (arrays, one entry a pixel, like the two masks), with a
+    legend when any pixel is marked."""
+    for where, marker, colour, label in ((failed, "x", "red", "failed"), (not_converged, "+", "orange",
+                                                                           "not converged")):
+        if where.any():
+            axes.scatter(x[where], y[where], marker=marker, color=colour, s=30, label=label)
+    if failed.any() or not_converged.any():
+        axes.legend(loc="upper right", fontsize="small")

@@ -37,16 +37,24 @@ def test_a_force_map_gives_back_its_moduli_and_keeps_failures():
     np.testing.assert_array_equal(again.values["material.G"], result.values["material.G"])
 
 
-def test_a_fit_map_through_the_scheduler_is_the_local_map(cluster):
+@pytest.mark.parametrize("max_iterations", [200, 10])
+def test_a_fit_map_through_the_scheduler_is_the_local_map(cluster, max_iterations):
+    # 10 iterations: the fits of the stiffer pixels (from 0.3 MPa) stop short; their pixels keep where they stopped.
+    case = dict(CASE, fit=dict(CASE["fit"], max_iterations=max_iterations))
     forces, _ = force_map()
-    local = mdr.fit_map(CASE, forces, time=TIME, depth=DEPTH, jobs=2)
-    remote = mdr.fit_map(CASE, forces, time=TIME, depth=DEPTH, scheduler=cluster.address)
+    local = mdr.fit_map(case, forces, time=TIME, depth=DEPTH, jobs=2)
+    remote = mdr.fit_map(case, forces, time=TIME, depth=DEPTH, scheduler=cluster.address)
     for name, values in local.values.items():
         if values.dtype.kind == "f":
             assert np.array_equal(values.view(np.int64), remote.values[name].view(np.int64)), name
         else:  # status, flags, failure
             np.testing.assert_array_equal(values, remote.values[name])
     np.testing.assert_array_equal(local.status, remote.status)
+    np.testing.assert_array_equal(local.reasons, remote.reasons)
+    stopped = local.status == curve_maps.NOT_CONVERGED
+    assert stopped.any() == (max_iterations == 10) and np.all(local.status[~stopped] == curve_maps.OK)
+    assert np.all(np.isfinite(local.values["material.G"])) and np.all(local.reasons[stopped] == "did not converge "
+                                                                       "in 10 iterations")
 
 
 def test_a_curve_without_time_and_depth_is_a_failed_pixel_with_the_reason():
