@@ -15,6 +15,7 @@ from ._arrays import real_array
 from ._case_tree import plain_tree
 from .curve_maps import CurveMap, MapRow, map_curves, open_stack
 from .fit_map_files import MapTable, fit_map_file, is_instrument_file
+from .map_figures import is_result
 
 #: The channels of a curve, in the order of the last axis of a stack (ny, nx, nt, 3), and the names of its columns.
 CHANNELS = ("time", "depth", "force")
@@ -91,8 +92,7 @@ def fit_curve(curve: Any, case: Mapping[str, Any], time: Sequence[float] | None 
     index, column, row = pixel
     values, units, unit_system = _mdr._fit_map_curve(plain_tree(case), "case", os.getcwd(), *arrays, index, column,
                                                      row)
-    # "converged, misfit" is a result: its flag says so; any other status is why the fit stopped short.
-    stopped = "" if values["status"].startswith("converged") else values["status"]
+    stopped = "" if is_result(values["status"]) else values["status"]
     return MapRow(values, units, unit_system, stopped)
 
 

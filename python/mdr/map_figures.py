@@ -15,6 +15,13 @@ import numpy as np
 NOT_DRAWN = ("index", "column", "row", "x", "y", "status", "flags", "failure")
 
 
+def is_result(status):
+    """Whether a fit's `status` (a str, or an array of them: True per entry) is a result: "converged", or
+    "converged, misfit" (its flag says so); any other status says why the fit stopped short, where its values are not
+    a result."""
+    return np.char.startswith(np.asarray(status, dtype=str), "converged")
+
+
 def map_heat_maps(directory: str) -> list[tuple[str, object]]:
     """The heat maps of the map fit in `directory`: ``[(name, figure)]``, one per drawn column of map.csv (every
     free key, ``E_`` key, ``contact_height``, ``residual_to_noise``, ``noise``; NOT_DRAWN and ``_stderr`` columns
@@ -49,9 +56,7 @@ def map_heat_maps(directory: str) -> list[tuple[str, object]]:
     status = np.asarray(table["status"])
     all_failed = status == "failed"
     failed = all_failed[placed]
-    # "converged" and "converged, misfit" are results (the misfit's flag says so); any other status is why the fit
-    # stopped short.
-    stopped = ~all_failed & ~np.char.startswith(status.astype(str), "converged")
+    stopped = ~all_failed & ~is_result(status)
     figures = []
     for name, values in table.items():
         if name in NOT_DRAWN or name.endswith("_stderr"):
