@@ -3,8 +3,8 @@
 // zero at T = 2 t_p, then a ride on the recovering surface, on the half-space driver against its closed form.
 //
 // While the contact grows (d' >= 0, a = g^-1(d)): G F_el(d) + eta dF_el(d)/dt = F(t) (test_layer_regrowing_dashpot's),
-// F_el the elastic force at unit modulus, F_el(d) = c d^m (E* = 4 G: the sphere c = 16 sqrt(R) / 3, m = 3/2; the cone
-// c = 8 / (pi tan(theta)), m = 2, as g = (pi/2) tan(theta) |x|); F_el(t) is exact for the piecewise-linear F. The creep stops at t_s, F(t_s) = G F_el(t_s).
+// F_el the elastic force at unit modulus, F_el(d) = c d^m (E* = 4 G: the sphere c = 16 sqrt(R) / 3, m = 3/2); F_el(t)
+// is exact for the piecewise-linear F. The creep stops at t_s, F(t_s) = G F_el(t_s).
 // Then the contact recedes: every element in contact has w_i = d - g_i and stress G (D - g_i), D = d + tau d', those
 // with g_i <= D carry it (test_receding_edge_dashpot.cpp), so F = G F_el(D): D(t) = (F(t) / (G c))^(1/m), and
 //     d(t) = d_s exp(-(t - t_s)/tau) + (1/tau) int_{t_s}^{min(t, T)} exp(-(t - u)/tau) D(u) du
@@ -14,13 +14,12 @@
 // The driver steps the dashpot by the trapezoidal rule, so the depth at the nodes is the trapezoidal rule on
 // d + tau d' = D(t) with the exact D at each node (to the elements' spatial error), and its quadrature of D ~ (T -
 // u)^(1/m) on a uniform grid has the error zeta(-1/m) h^(1 + 1/m) (generalised Euler-Maclaurin, Navot 1961): order
-// 5/3 for the sphere, 3/2 for the cone, concentrated at T and not in the last step alone (docs/theory.md).
+// 5/3 for the sphere (3/2 for a cone, m = 2), concentrated at T and not in the last step alone (docs/theory.md).
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -42,7 +41,6 @@ constexpr double peak_force = 3.0e-8;  // P [N]
 constexpr double peak_time = 0.5;      // t_p [s]
 constexpr double zero_time = 1.0;      // T [s]: the force reaches zero
 constexpr double sphere_radius = 1.0e-5;  // R [m]
-constexpr double cone_slope_deg = 20.0;   // theta
 
 // An indenter's elastic force at unit modulus, F_el(d) = c d^m, and its [indenter] table.
 struct ElasticLaw {
@@ -53,16 +51,14 @@ struct ElasticLaw {
 
 const ElasticLaw sphere{16.0 / 3.0 * std::sqrt(sphere_radius), 1.5,
                         fmt::format("shape = \"sphere\"\nR = {}\n", sphere_radius)};
-const ElasticLaw cone{8.0 / (std::numbers::pi * std::tan(cone_slope_deg * std::numbers::pi / 180.0)), 2.0,
-                      fmt::format("shape = \"cone\"\nslope_deg = {}\n", cone_slope_deg)};
 
 double force(double t) {
     if (t <= peak_time) return peak_force * t / peak_time;
     return std::max(peak_force * (zero_time - t) / (zero_time - peak_time), 0.0);
 }
 
-// F_el(t) while the contact grows: on [t0, t1], F_el(t0) e^{-x} + (1/eta) int_t0^t1 e^{-(t1 - u)/tau} (a + b (u - t0)) du, x = (t1 -
-// t0)/tau, for the force a + b (u - t0) there.
+// F_el(t) while the contact grows: on [t0, t1] under the force a + b (u - t0), F_el(t1) = F_el(t0) e^{-x} + (1/eta)
+// int_t0^t1 e^{-(t1 - u)/tau} (a + b (u - t0)) du, x = (t1 - t0)/tau.
 double growing_elastic_force(double t) {
     const auto linear = [](double start_value, double t0, double t1, double a, double b) {
         const double decay = -std::expm1(-(t1 - t0) / relaxation);
@@ -125,7 +121,7 @@ std::string ramp_case(const ElasticLaw& law, const std::string& numerics) {
                        shear, viscosity, law.indenter, peak_time, peak_force, zero_time, numerics);
 }
 
-// The errors of a run over the deepest closed-form depth: the largest over the rows before T - 10 ms, and the row at T.
+// The errors of a run over the deepest closed-form depth: the largest over the rows up to T - 20 ms, and the row at T.
 struct RampErrors {
     double before = 0.0;
     double at_zero = 0.0;
@@ -144,24 +140,22 @@ RampErrors ramp_errors(const ElasticLaw& law, const drivers::IndentationResult& 
 }
 
 TEST(ForceRampToZero, TheDepthIsSecondOrderBeforeTheZeroAndOfTheSingularitysOrderAtIt) {
-    // 4, 2, 1 ms (T on a node: a piecewise-linear force reaches zero at a history point). Before T - 10 ms second
-    // order; at T the order of the trapezoidal rule's quadrature of D ~ (T - t)^(1/m): 5/3 (a ratio of 3.17) for the
-    // sphere, 3/2 (2.83) for the cone. Observed (sphere) before 4.0e-5, 1.0e-5, 2.5e-6; at T 4.8e-4, 1.7e-4, 5.6e-5
-    // (ratios 2.87, 2.95; 3.00 at 0.5 ms); (cone) ... The ratios at T below 3.5: where this fails, the end of the
-    // contact has become second order, and docs/theory.md's paragraph with it should change.
-    for (const ElasticLaw& law : {sphere}) {
-        std::vector<RampErrors> errors;
-        for (const double step : {4e-3, 2e-3, 1e-3}) {
-            errors.push_back(ramp_errors(law, run_toml(ramp_case(law, fmt::format("time_step = {}\n", step)))));
-            RecordProperty(fmt::format("{}_{}", law.exponent, step),
-                           fmt::format("{:.2e} {:.2e}", errors.back().before, errors.back().at_zero));
-        }
-        for (std::size_t i = 1; i < errors.size(); ++i) {
-            EXPECT_GT(errors[i - 1].before / errors[i].before, 3.5) << law.exponent;
-            const double ratio = errors[i - 1].at_zero / errors[i].at_zero;
-            EXPECT_GT(ratio, 2.5) << law.exponent;
-            EXPECT_LT(ratio, 3.5) << law.exponent;
-        }
+    // 4, 2, 1 ms (T on a node: a piecewise-linear force reaches zero at a history point). Up to T - 20 ms second
+    // order; at T the order of the trapezoidal rule's quadrature of D ~ (T - t)^(2/3), 5/3 (a ratio of 3.17).
+    // Observed up to T - 20 ms 2.8e-5, 6.9e-6, 1.7e-6 (ratios 4.01, 4.03); at T 4.8e-4, 1.7e-4, 5.6e-5 (ratios 2.87,
+    // 2.95; 1.9e-5 at 0.5 ms, 3.00). The ratios at T are bounded above by 3.5 too: where that fails, the end of the
+    // contact has become second order, and docs/theory.md's paragraph on it should change with this test.
+    std::vector<RampErrors> errors;
+    for (const double step : {4e-3, 2e-3, 1e-3}) {
+        errors.push_back(ramp_errors(sphere, run_toml(ramp_case(sphere, fmt::format("time_step = {}\n", step)))));
+        RecordProperty(fmt::format("errors_at_{}", step),
+                       fmt::format("{:.2e} {:.2e}", errors.back().before, errors.back().at_zero));
+    }
+    for (std::size_t i = 1; i < errors.size(); ++i) {
+        EXPECT_GT(errors[i - 1].before / errors[i].before, 3.5);
+        const double ratio = errors[i - 1].at_zero / errors[i].at_zero;
+        EXPECT_GT(ratio, 2.5);
+        EXPECT_LT(ratio, 3.5);
     }
 }
 
