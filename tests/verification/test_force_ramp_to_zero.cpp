@@ -154,7 +154,8 @@ TEST(ForceRampToZero, TheDepthIsSecondOrderBeforeTheZeroAndOfTheSingularitysOrde
     // 7.6e-6, 1.9e-6 (cone), ratios 4.0 to 4.1; at T 4.8e-4, 1.7e-4, 5.6e-5 (sphere: ratios 2.87, 2.95; 1.9e-5 at 0.5
     // ms, 3.00) and 1.6e-3, 6.0e-4, 2.2e-4 (cone: 2.65, 2.71; 8.1e-5 at 0.5 ms, 2.76). The ratios at T are bounded
     // above too: where that fails, the end of the contact has become second order, and docs/theory.md's paragraph on
-    // it should change with this test.
+    // it should change with this test. With the secant rate in the dashpots (the trapezoidal rule off) every test here
+    // fails: first order, 3.0e-3, 1.5e-3, 7.2e-4 at T (sphere), the rule's depth 1.8e-3 off, the defaults 5.3e-4.
     for (const auto& [law, lowest, highest] : {std::tuple{sphere, 2.7, 3.4}, std::tuple{cone, 2.5, 3.1}}) {
         std::vector<RampErrors> errors;
         for (const double step : {4e-3, 2e-3, 1e-3}) {
