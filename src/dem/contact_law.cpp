@@ -134,8 +134,9 @@ void ContactLaw::refuse_state_size(std::size_t size) const {
 std::size_t ContactLaw::count_at(std::span<const double> state, std::size_t offset) const {
     const double count = state[offset];
     // A whole number in range: its conversion back is exact (no call of floor, which is not inlined for x86-64's
-    // baseline instruction set, and a signed conversion, one instruction there; this runs twice a step).
-    if (count >= 0.0 && count <= static_cast<double>(elements_) &&
+    // baseline instruction set, and signed conversions, one instruction each there, N being far below 2^63; this
+    // runs twice a step).
+    if (count >= 0.0 && count <= static_cast<double>(static_cast<std::int64_t>(elements_)) &&
         static_cast<double>(static_cast<std::int64_t>(count)) == count) [[likely]] {
         return static_cast<std::size_t>(static_cast<std::int64_t>(count));
     }
@@ -534,11 +535,11 @@ void ContactLaw::step_tangential_by_elements(PlanarVector increment) {
     }
 }
 
-// advance_tangential's body, inlined into it and into the one-call steps (as step_normal).
+// advance_tangential's body, inlined into it and into the one-call steps (as step_normal): each caller has checked
+// `displacement` and found whether the layer stays at rest (skip_resting_layer) before.
 [[gnu::always_inline]] inline void ContactLaw::step_tangential(PlanarVector displacement) {
-    require_finite_components("displacement", displacement);
     const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};
-    if (tangential_at_rest(increment)) {  // the layer's state stays zero (its force too, as begin found it)
+    if (tangential_idle_) {  // the layer's state stays zero (its force too, as begin found it)
         tangential_work_ = 0.0;
         displacement_ = displacement;
         return;
@@ -550,7 +551,11 @@ void ContactLaw::step_tangential_by_elements(PlanarVector increment) {
     displacement_ = displacement;
 }
 
-void ContactLaw::advance_tangential(PlanarVector displacement) { step_tangential(displacement); }
+void ContactLaw::advance_tangential(PlanarVector displacement) {
+    require_finite_components("displacement", displacement);
+    skip_resting_layer(displacement);
+    step_tangential(displacement);
+}
 
 void ContactLaw::end(std::span<double> state) const {
     state[0] = displacement_[0];
@@ -610,6 +615,7 @@ SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overla
     const SpatialVector turned = cross(normal, frame_);
     const SpatialVector second{handedness_ * turned[0], handedness_ * turned[1], handedness_ * turned[2]};
     const PlanarVector displacement{displacement_[0] + dot(slip, frame_), displacement_[1] + dot(slip, second)};
+    require_finite_components("displacement", displacement);  // before the normal step writes the state
     skip_resting_layer(displacement);
     step_normal(overlap);
     step_tangential(displacement);
