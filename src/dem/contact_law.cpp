@@ -66,6 +66,15 @@ void require_finite_components(const char* key, const Vector& vector) {
     if (!finite) refuse_non_finite(key, vector);
 }
 
+// advance_spatial's refusal: the first of its vectors that is not finite, named (`displacement` only where the
+// other two are finite: a normal far from unit length can make it overflow).
+[[noreturn, gnu::noinline, gnu::cold]] void refuse_spatial(const SpatialVector& normal, const SpatialVector& increment,
+                                                          const PlanarVector& displacement) {
+    require_finite_components("normal", normal);
+    require_finite_components("increment", increment);
+    refuse_non_finite("displacement", displacement);
+}
+
 std::string entry(std::size_t index) { return "state[" + std::to_string(index) + "]"; }
 
 constexpr double line_load_factor = 4.0;  // q_z = 4 sigma, eq. (22)
@@ -591,10 +600,10 @@ SpatialVector ContactLaw::tangential_force(std::span<const double> state, const 
 
 SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
                                           const SpatialVector& increment) {
-    require_finite_components("normal", normal);  // before the normal step writes the state
-    require_finite_components("increment", increment);
     take_normal_state(state);
     if (tangential_idle_) {  // no friction (begin): the layer stays at rest and carries no force, so no frame is needed
+        require_finite_components("normal", normal);  // before the normal step writes the state
+        require_finite_components("increment", increment);
         step_normal(overlap);
         return {0.0, 0.0, 0.0};
     }
@@ -615,7 +624,13 @@ SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overla
     const SpatialVector turned = cross(normal, frame_);
     const SpatialVector second{handedness_ * turned[0], handedness_ * turned[1], handedness_ * turned[2]};
     const PlanarVector displacement{displacement_[0] + dot(slip, frame_), displacement_[1] + dot(slip, second)};
-    require_finite_components("displacement", displacement);  // before the normal step writes the state
+    // A component of `normal` or `increment` that is not finite (inf or NaN) makes `along` in in_plane, and so every
+    // component of `slip`, non-finite (a sum with a non-finite term and a product with a non-finite factor are:
+    // inf - inf = inf 0 = NaN), and with them dot(slip, frame_), whatever the frame: this one test covers the three
+    // vectors, before the normal step writes the state (refuse_spatial names the first that is not finite).
+    if (!(std::isfinite(displacement[0]) & std::isfinite(displacement[1]))) [[unlikely]] {
+        refuse_spatial(normal, increment, displacement);
+    }
     skip_resting_layer(displacement);
     step_normal(overlap);
     step_tangential(displacement);
