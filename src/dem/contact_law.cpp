@@ -341,8 +341,9 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
     tangential_idle_ = friction_ == 0.0 && layer_touched_ == 0;
     start_normal_force_ = state[normal_offset_ + 1];
     // An idle layer was never touched: its force is zero, and a frictionless step need not read its header's line.
-    start_tangential_force_ = tangential_idle_ ? PlanarVector{0.0, 0.0} : tangential_force(state);
-    tangential_force_ = start_tangential_force_;
+    const PlanarVector start_force = tangential_idle_ ? PlanarVector{0.0, 0.0} : tangential_force(state);
+    start_tangential_force_ = start_force;
+    tangential_force_ = start_force;  // from the registers: no wide reload of the two stores just made
     normal_work_ = tangential_work_ = 0.0;
 }
 
