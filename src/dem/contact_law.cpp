@@ -575,7 +575,8 @@ void ContactLaw::end(std::span<double> state) const {
 }
 
 // The one-call steps know the tangential increment before the normal step: a layer that will stay at rest then needs
-// no preparation either (its line loads and relaxed sums in advance_normal).
+// no preparation either (its line loads and relaxed sums in advance_normal). advance_tangential asks here too: the
+// one answer step_tangential reads.
 void ContactLaw::skip_resting_layer(PlanarVector displacement) {
     tangential_idle_ = tangential_at_rest({displacement[0] - displacement_[0], displacement[1] - displacement_[1]});
 }
