@@ -66,6 +66,15 @@ void require_finite_components(const char* key, const Vector& vector) {
     if (!finite) refuse_non_finite(key, vector);
 }
 
+// advance_spatial's refusal: the first of its vectors that is not finite, named (`displacement` only where the
+// other two are finite: a normal far from unit length can make it overflow).
+[[noreturn, gnu::noinline, gnu::cold]] void refuse_spatial(const SpatialVector& normal, const SpatialVector& increment,
+                                                          const PlanarVector& displacement) {
+    require_finite_components("normal", normal);
+    require_finite_components("increment", increment);
+    refuse_non_finite("displacement", displacement);
+}
+
 std::string entry(std::size_t index) { return "state[" + std::to_string(index) + "]"; }
 
 constexpr double line_load_factor = 4.0;  // q_z = 4 sigma, eq. (22)
@@ -134,8 +143,9 @@ void ContactLaw::refuse_state_size(std::size_t size) const {
 std::size_t ContactLaw::count_at(std::span<const double> state, std::size_t offset) const {
     const double count = state[offset];
     // A whole number in range: its conversion back is exact (no call of floor, which is not inlined for x86-64's
-    // baseline instruction set, and a signed conversion, one instruction there; this runs twice a step).
-    if (count >= 0.0 && count <= static_cast<double>(elements_) &&
+    // baseline instruction set, and signed conversions, one instruction each there, N being far below 2^63; this
+    // runs twice a step).
+    if (count >= 0.0 && count <= static_cast<double>(static_cast<std::int64_t>(elements_)) &&
         static_cast<double>(static_cast<std::int64_t>(count)) == count) [[likely]] {
         return static_cast<std::size_t>(static_cast<std::int64_t>(count));
     }
@@ -331,8 +341,9 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
     tangential_idle_ = friction_ == 0.0 && layer_touched_ == 0;
     start_normal_force_ = state[normal_offset_ + 1];
     // An idle layer was never touched: its force is zero, and a frictionless step need not read its header's line.
-    start_tangential_force_ = tangential_idle_ ? PlanarVector{0.0, 0.0} : tangential_force(state);
-    tangential_force_ = start_tangential_force_;
+    const PlanarVector start_force = tangential_idle_ ? PlanarVector{0.0, 0.0} : tangential_force(state);
+    start_tangential_force_ = start_force;
+    tangential_force_ = start_force;  // from the registers: no wide reload of the two stores just made
     normal_work_ = tangential_work_ = 0.0;
 }
 
@@ -534,11 +545,11 @@ void ContactLaw::step_tangential_by_elements(PlanarVector increment) {
     }
 }
 
-// advance_tangential's body, inlined into it and into the one-call steps (as step_normal).
+// advance_tangential's body, inlined into it and into the one-call steps (as step_normal): each caller has checked
+// `displacement` and found whether the layer stays at rest (skip_resting_layer) before.
 [[gnu::always_inline]] inline void ContactLaw::step_tangential(PlanarVector displacement) {
-    require_finite_components("displacement", displacement);
     const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};
-    if (tangential_at_rest(increment)) {  // the layer's state stays zero (its force too, as begin found it)
+    if (tangential_idle_) {  // the layer's state stays zero (its force too, as begin found it)
         tangential_work_ = 0.0;
         displacement_ = displacement;
         return;
@@ -550,7 +561,11 @@ void ContactLaw::step_tangential_by_elements(PlanarVector increment) {
     displacement_ = displacement;
 }
 
-void ContactLaw::advance_tangential(PlanarVector displacement) { step_tangential(displacement); }
+void ContactLaw::advance_tangential(PlanarVector displacement) {
+    require_finite_components("displacement", displacement);
+    skip_resting_layer(displacement);
+    step_tangential(displacement);
+}
 
 void ContactLaw::end(std::span<double> state) const {
     state[0] = displacement_[0];
@@ -560,7 +575,8 @@ void ContactLaw::end(std::span<double> state) const {
 }
 
 // The one-call steps know the tangential increment before the normal step: a layer that will stay at rest then needs
-// no preparation either (its line loads and relaxed sums in advance_normal).
+// no preparation either (its line loads and relaxed sums in advance_normal). advance_tangential asks here too: the
+// one answer step_tangential reads.
 void ContactLaw::skip_resting_layer(PlanarVector displacement) {
     tangential_idle_ = tangential_at_rest({displacement[0] - displacement_[0], displacement[1] - displacement_[1]});
 }
@@ -586,10 +602,10 @@ SpatialVector ContactLaw::tangential_force(std::span<const double> state, const 
 
 SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
                                           const SpatialVector& increment) {
-    require_finite_components("normal", normal);  // before the normal step writes the state
-    require_finite_components("increment", increment);
     take_normal_state(state);
     if (tangential_idle_) {  // no friction (begin): the layer stays at rest and carries no force, so no frame is needed
+        require_finite_components("normal", normal);  // before the normal step writes the state
+        require_finite_components("increment", increment);
         step_normal(overlap);
         return {0.0, 0.0, 0.0};
     }
@@ -610,6 +626,13 @@ SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overla
     const SpatialVector turned = cross(normal, frame_);
     const SpatialVector second{handedness_ * turned[0], handedness_ * turned[1], handedness_ * turned[2]};
     const PlanarVector displacement{displacement_[0] + dot(slip, frame_), displacement_[1] + dot(slip, second)};
+    // A component of `normal` or `increment` that is not finite (inf or NaN) makes `along` in in_plane, and so every
+    // component of `slip`, non-finite (a sum with a non-finite term and a product with a non-finite factor are:
+    // inf - inf = inf 0 = NaN), and with them dot(slip, frame_), whatever the frame: this one test covers the three
+    // vectors, before the normal step writes the state (refuse_spatial names the first that is not finite).
+    if (!(std::isfinite(displacement[0]) & std::isfinite(displacement[1]))) [[unlikely]] {
+        refuse_spatial(normal, increment, displacement);
+    }
     skip_resting_layer(displacement);
     step_normal(overlap);
     step_tangential(displacement);

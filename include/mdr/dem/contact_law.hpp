@@ -128,7 +128,8 @@ public:
     /// touch its axis is the increment's direction. Returns the tangential force [N] on the second body. A law
     /// without friction (mu = 0) steps the normal problem only: its tangential force is zero, and the state's
     /// displacement and frame stay as they are (zero from initialise). Throws mdr::InvalidInput (key `normal`,
-    /// `increment`) for a vector that is not finite, the state unchanged.
+    /// `increment`) for a vector that is not finite, (key `displacement`) where the displacement in the frame
+    /// overflows from finite ones (a normal far from unit length), the state unchanged.
     SpatialVector advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
                                   const SpatialVector& increment);
 
@@ -220,7 +221,8 @@ private:
     std::size_t layer_touched_ = 0;      ///< the layer's touched elements at begin
     std::size_t elements_;  ///< N
     double friction_;
-    bool tangential_idle_ = false;  ///< the layer stays at rest this step (tangential_at_rest): nothing to step
+    bool tangential_idle_ = false;  ///< the layer stays at rest this step (tangential_at_rest): nothing to step;
+                                    ///< skip_resting_layer decides it for step_tangential
     std::size_t branches_;
     std::size_t header_size_;
     std::size_t tangential_size_;           ///< the composed tangential step's header

@@ -286,5 +286,53 @@ TEST(DemContactLaw, MessagesNameTheLawsParameters) {
     EXPECT_EQ(thrown_key([&] { ContactLaw(material, 0.01, 0.3, std::size_t{1} << 40, 1e-3, 1e-6); }), "elements");
 }
 
+// advance_spatial with friction tests the frame's displacement alone: a component of the normal or the increment that
+// is not finite makes it non-finite, and the refusal names the first vector that is not finite. Every component of
+// either vector, each of +inf, -inf and NaN, at first touch and on a held contact (its frame set), with friction and
+// without: the key is that vector's (the normal's where both are bad), and the state stays as it was.
+TEST(DemContactLaw, ASpatialStepNamesTheVectorThatIsNotFinite) {
+    const double inf = std::numeric_limits<double>::infinity(), nan = std::nan("");
+    const SpatialVector normal{0.6, 0.0, 0.8}, increment{1e-9, -2e-9, 5e-10};
+    for (const double friction : {0.3, 0.0}) {
+        ContactLaw law(rheology::Rheology::prony(1e6, {{3e6, 1e-3}, {1e6, 3e-5}}), 0.005, friction, 50, 1e-3, 2e-6);
+        std::vector<double> fresh(law.state_size());
+        law.initialise(fresh);
+        std::vector<double> held = fresh;
+        for (int n = 1; n < 20; ++n) law.advance_spatial(held, overlap_at(n, 1.0), normal, increment);
+        for (const auto* start : {&fresh, &held}) {
+            for (std::size_t component = 0; component < 3; ++component) {
+                for (const double bad : {inf, -inf, nan}) {
+                    SpatialVector bad_normal = normal, bad_increment = increment;
+                    bad_normal[component] = bad;
+                    bad_increment[component] = bad;
+                    auto state = *start;
+                    EXPECT_EQ(thrown_key([&] { law.advance_spatial(state, overlap_at(20, 1.0), bad_normal, increment); }),
+                              "normal");
+                    EXPECT_EQ(
+                        thrown_key([&] { law.advance_spatial(state, overlap_at(20, 1.0), normal, bad_increment); }),
+                        "increment");
+                    EXPECT_EQ(thrown_key(
+                                  [&] { law.advance_spatial(state, overlap_at(20, 1.0), bad_normal, bad_increment); }),
+                              "normal");
+                    EXPECT_EQ(state, *start) << "friction " << friction << ", component " << component << ", " << bad;
+                }
+            }
+        }
+    }
+}
+
+// A displacement that overflows from finite vectors (a normal far from unit length) is refused as `displacement`
+// before the normal step: the state stays as it was (the normal part was stepped before session 19).
+TEST(DemContactLaw, ASpatialStepRefusesAnOverflowingDisplacementBeforeTheNormalStep) {
+    auto law = make_law();
+    std::vector<double> state(law.state_size());
+    law.initialise(state);
+    for (int n = 1; n < 20; ++n) law.advance_spatial(state, overlap_at(n, 1.0), {0.0, 0.0, 1.0}, {1e-9, 0.0, 0.0});
+    const auto before = state;
+    EXPECT_EQ(thrown_key([&] { law.advance_spatial(state, overlap_at(20, 1.0), {0.0, 0.0, 1e200}, {0.0, 0.0, 1e200}); }),
+              "displacement");
+    EXPECT_EQ(state, before);
+}
+
 }  // namespace
 }  // namespace mdr::dem
