@@ -278,7 +278,8 @@ struct HistoryControlTraits {
     }
     static ResolvedNumerics resolve_numerics(const ContactCase& contact_case, const Control& control) {
         return resolve_history_numerics(
-            contact_case, Step::solves_depth, Step::graded_towards_zeros, [&](double peak, const ForceRadiusBound& force_bound) {
+            contact_case, Step::solves_depth, Step::graded_towards_zeros,
+            [&](double peak, const ForceRadiusBound& force_bound) {
                 return ControlTraits<Control>::largest_contact_radius(contact_case, control, peak, force_bound);
             });
     }

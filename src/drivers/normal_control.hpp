@@ -23,9 +23,9 @@
 
 namespace mdr::drivers {
 
-/// Common defaults: no z column, no grid cuts or extra observers, no grading towards zeros, the grid as made, the indenter starting at the
-/// surface and never moving free of the body, the depth shown as stepped and the prescribed value as the load,
-/// nothing to do at a settled node.
+/// Common defaults: no z column, no grid cuts or extra observers, no grading towards zeros, the grid as made, the
+/// indenter starting at the surface and never moving free of the body, the depth shown as stepped and the prescribed
+/// value as the load, nothing to do at a settled node.
 class HistoryControl {
 public:
     /// The steps are graded towards each time the history falls to zero (only a force's: the contact ends there).

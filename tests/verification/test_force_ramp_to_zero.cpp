@@ -154,11 +154,12 @@ TEST(ForceRampToZero, TheDepthIsSecondOrderUpToAndAtTheZero) {
     // 4, 2, 1 ms (T on a node: a piecewise-linear force reaches zero at a history point), the steps graded towards T
     // over the last 0.1 s (zero_graded_fraction of the fall). Up to T - 20 ms and at T second order. Observed up to
     // T - 20 ms 2.8e-5, 6.9e-6, 1.7e-6 (sphere) and 2.1e-5, 5.2e-6, 1.3e-6 (cone); at T 3.7e-5, 9.4e-6, 2.3e-6
-    // (sphere: ratios 3.92, 4.03) and 2.9e-5, 7.2e-6, 1.7e-6 (cone: 4.07, 4.18), on 1083, 1470, 2245 and 1095, 1495, 2295
-    // steps (the uniform grid's 1070, 1445, 2195; 690 of them graded after the start). On the uniform grid (main before the grading) the row at T was of the
-    // singularity's order 1 + 1/m: 4.8e-4, 1.7e-4, 5.6e-5 (sphere: ratios 2.87, 2.95) and 1.6e-3, 6.0e-4, 2.2e-4
-    // (cone: 2.65, 2.71), and this test failed. With the secant rate in the dashpots (the trapezoidal rule off) it
-    // fails too: first order, 3.0e-3, 1.5e-3, 7.2e-4 at T (sphere, uniform grid).
+    // (sphere: ratios 3.92, 4.03) and 2.9e-5, 7.2e-6, 1.7e-6 (cone: 4.07, 4.18), on 1083, 1470, 2245 and 1095,
+    // 1495, 2295 steps (the uniform grid's 1070, 1445, 2195; 690 of them graded after the start). On the uniform grid
+    // (main before the grading) the row at T was of the singularity's order 1 + 1/m: 4.8e-4, 1.7e-4, 5.6e-5 (sphere:
+    // ratios 2.87, 2.95) and 1.6e-3, 6.0e-4, 2.2e-4 (cone: 2.65, 2.71), and this test failed. With the secant rate
+    // in the dashpots (the trapezoidal rule off) it fails too: first order, 3.0e-3, 1.5e-3, 7.2e-4 at T (sphere,
+    // uniform grid).
     for (const auto& law : {sphere, cone}) {
         std::vector<RampErrors> errors;
         for (const double step : {4e-3, 2e-3, 1e-3}) {
@@ -176,7 +177,7 @@ TEST(ForceRampToZero, TheDepthIsSecondOrderUpToAndAtTheZero) {
 }
 
 // The depth at T at 4, 2, 1 ms over the deepest depth, against the same case at 62.5 us: `material` and `layer`
-// are the case's tables after their headers.
+// are the case's tables after their headers (each error recorded).
 std::vector<double> errors_at_zero_against_finer(const std::string& material, const std::string& layer) {
     const auto run = [&](double step) {
         return run_toml(fmt::format("[material]\n{}[indenter]\n{}{}[load]\ncontrol = \"force\"\nhistory = [[0.0, 0.0], "
@@ -192,6 +193,7 @@ std::vector<double> errors_at_zero_against_finer(const std::string& material, co
     std::vector<double> errors;
     for (const double step : {4e-3, 2e-3, 1e-3}) {
         errors.push_back(std::abs(at_zero(run(step)) - at_zero(reference)) / deepest);
+        ::testing::Test::RecordProperty(fmt::format("at_zero_{}", step), fmt::format("{:.2e}", errors.back()));
     }
     return errors;
 }
@@ -199,9 +201,9 @@ std::vector<double> errors_at_zero_against_finer(const std::string& material, co
 TEST(ForceRampToZero, AStandardSolidWithoutADashpotIsSecondOrderAtTheZero) {
     // G_inf = 1 kPa, G_1 = 3 kPa, tau_1 = 0.2 s, no dashpot: on the uniform grid the row at T was of order 5/3 too,
     // 4.6e-5, 1.4e-5, 4.3e-6 (ratios 3.25, 3.24; the rows before T - 20 ms 1.4e-5, 3.8e-6, 1.0e-6); graded, observed
-    // 1.4e-5, 3.6e-6, 9.0e-7 (ratios 3.87, 4.01), on 390, 777, 1552 steps (uniform 377, 752, 1502).
-    const auto errors = errors_at_zero_against_finer("model = \"standard\"\nG_inf = 1e3\nG1 = 3e3\ntau1 = 0.2\n", "");
-    for (std::size_t i = 0; i < errors.size(); ++i) RecordProperty(fmt::format("at_zero_{}", i), fmt::format("{:.2e}", errors[i]));
+    // 1.4e-5, 3.7e-6, 9.4e-7 (ratios 3.86, 3.89), on 390, 777, 1552 steps (uniform 377, 752, 1502).
+    const auto errors =
+        errors_at_zero_against_finer("model = \"standard\"\nG_inf = 1e3\nG1 = 3e3\ntau1 = 0.2\n", "");
     for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_GT(errors[i - 1] / errors[i], 3.5);
 }
 
@@ -212,7 +214,6 @@ TEST(ForceRampToZero, TheLayersCellsAreSecondOrderAtTheZero) {
     const auto errors = errors_at_zero_against_finer(
         "model = \"prony\"\nG_inf = 1e3\nterms = [[3e3, 0.2]]\neta = 50\n",
         "[layer]\nthickness = 1e3\ninterface = \"bonded\"\n");
-    for (std::size_t i = 0; i < errors.size(); ++i) RecordProperty(fmt::format("at_zero_{}", i), fmt::format("{:.2e}", errors[i]));
     for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_GT(errors[i - 1] / errors[i], 3.5);
 }
 
@@ -222,8 +223,8 @@ TEST(ForceRampToZero, TheDriverIsTheTrapezoidalRuleOnTheClosedFormsEquation) {
     // the driver's depth at every node before T within 5e-8 of the deepest (observed 1.2e-8: the elements' spatial
     // error), so its error there is the rule's quadrature of D alone (on the graded nodes). At T the row shows the
     // touching depth of the elements that left in the last step, their exits located by linear interpolation of
-    // stresses that fall as (T - t)^(2/3): 3.7e-6 below the rule's depth on the graded grid's last step of 0.43 ms (1.0e-4
-    // on the uniform grid's 4 ms; the depth stepped on, which the rows after T follow).
+    // stresses that fall as (T - t)^(2/3): 3.7e-6 below the rule's depth on the graded grid's last step of 0.43 ms
+    // (1.0e-4 on the uniform grid's 4 ms; the depth stepped on, which the rows after T follow).
     const auto result = run_toml(ramp_case(sphere, "time_step = 4e-3\n"));
     const double receding_start = creep_end();
     const auto elastic_depth = [](double t) {
