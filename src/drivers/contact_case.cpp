@@ -72,9 +72,9 @@ double elastic_work(const profile::Profile& indenter, double modulus, double rad
 // t = T - L s^p, s uniform). The contact ends at T, and its depth recedes as D ~ (T - t)^(1/m), where F_el ~ D^m
 // at small depth (a profile g ~ |x|^n: m = 1 + 1/n; docs/theory.md section 3). The trapezoidal rule on the graded
 // nodes errs by O(h^(p (1 + 1/m))) in the step ending at T and by sum h^3 s^(p (1 + 1/m) - 3) over the others:
-// second order for p >= 2m / (m + 1). p = m makes D linear in s (its increments uniform) and meets that bound for
-// every m; at most 2 (a profile sharper than a cone), and 2 where the profile is no power law (2 meets the bound for
-// every m). 0 for a flat end (F_el ~ D: nothing singular).
+// second order for p > 2m / (m + 1) (at equality h^2 ln h). p = m makes D linear in s (its increments uniform) and
+// exceeds that bound for every m > 1; at most 2 (a profile sharper than a cone), and 2 where the profile is no power
+// law (2 exceeds the bound for every m). 0 for a flat end (m = 1, F_el ~ D: nothing singular).
 double zero_grading_exponent(const profile::Profile& indenter) {
     if (indenter.is_flat_punch() || indenter.flat_radius() > 0.0) return 0.0;
     const auto n = indenter.power_law_exponent();
