@@ -18,9 +18,11 @@ using ForceRadiusBound = std::function<double(double force)>;
 using ContactRadiusBound = std::function<double(double peak, const ForceRadiusBound& force_bound)>;
 
 /// The default numerics of a history-driven control (resolve_numerics): steps graded after the start and fast load
-/// changes when `graded` (a control that solves for the depth: its creep is singular there), the half-width from
-/// `largest_contact_radius` unless the indenter is a flat punch or `[numerics] half_width` is given.
-ResolvedNumerics resolve_history_numerics(const ContactCase& contact_case, bool graded,
+/// changes when `graded` (a control that solves for the depth: its creep is singular there), towards each zero of a
+/// falling force when `graded_towards_zeros` (force control: the contact ends there; ResolvedNumerics::
+/// zero_grading_exponent), the half-width from `largest_contact_radius` unless the indenter is a flat punch or
+/// `[numerics] half_width` is given.
+ResolvedNumerics resolve_history_numerics(const ContactCase& contact_case, bool graded, bool graded_towards_zeros,
                                           const ContactRadiusBound& largest_contact_radius);
 
 /// The shortest material time (relaxation or retardation) that is at least `floor` [s]; infinity if none.

@@ -52,6 +52,12 @@ std::vector<GridNode> history_grid(const ContactCase& contact_case, const Resolv
         }
     }
     control.add_cuts(cuts, contact_case.end_time);
+    if (numerics.zero_grading_exponent > 0.0) {
+        const auto towards_zeros =
+            cuts_towards_zeros(*contact_case.load.history, contact_case.end_time, numerics.time_step,
+                               numerics.min_segment_steps, zero_graded_fraction, numerics.zero_grading_exponent);
+        cuts.insert(cuts.end(), towards_zeros.begin(), towards_zeros.end());
+    }
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
     auto nodes = make_time_grid(*contact_case.load.history, contact_case.end_time, numerics.time_step,
@@ -243,7 +249,8 @@ std::string describe_history(const ContactCase& contact_case, const std::string&
 
 /// What the ControlTraits (control_traits.hpp) of every history-driven control `Control` share: HistoryStepping over
 /// its step class `Step` (normal_control.hpp, made from the control's data), its grid (history_grid), its default
-/// numerics (resolve_history_numerics: graded steps when Step solves for the depth, the half-width from
+/// numerics (resolve_history_numerics: graded steps when Step solves for the depth, towards a falling force's zeros
+/// when Step::graded_towards_zeros, the half-width from
 /// `ControlTraits<Control>::largest_contact_radius`), its description by its row's name (describe_history) and no
 /// rules within the run unless its traits have some.
 template <class Control, class Step>
@@ -271,7 +278,8 @@ struct HistoryControlTraits {
     }
     static ResolvedNumerics resolve_numerics(const ContactCase& contact_case, const Control& control) {
         return resolve_history_numerics(
-            contact_case, Step::solves_depth, [&](double peak, const ForceRadiusBound& force_bound) {
+            contact_case, Step::solves_depth, Step::graded_towards_zeros,
+            [&](double peak, const ForceRadiusBound& force_bound) {
                 return ControlTraits<Control>::largest_contact_radius(contact_case, control, peak, force_bound);
             });
     }

@@ -145,4 +145,21 @@ std::vector<GridNode> grade_after_changes(const std::vector<GridNode>& nodes, co
     return graded;
 }
 
+std::vector<double> cuts_towards_zeros(const LoadHistory& history, double end, double max_step,
+                                       std::size_t min_steps_per_segment, double fraction, double exponent) {
+    const auto& points = history.points();
+    std::vector<double> cuts;
+    for (std::size_t i = 1; i < points.size() && points[i].time <= end; ++i) {
+        const LoadPoint& a = points[i - 1];
+        const LoadPoint& b = points[i];
+        if (!(b.time > a.time && a.value > 0.0 && b.value == 0.0)) continue;
+        const double segment = b.time - a.time;
+        const double step = segment / segment_step_count(segment, max_step, min_steps_per_segment);
+        const double graded = fraction * segment;
+        const double nodes = std::ceil(exponent * graded / step - 1e-9);
+        for (double k = 1.0; k <= nodes; k += 1.0) cuts.push_back(b.time - graded * std::pow(k / nodes, exponent));
+    }
+    return cuts;
+}
+
 }  // namespace mdr::drivers

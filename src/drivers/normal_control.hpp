@@ -23,11 +23,13 @@
 
 namespace mdr::drivers {
 
-/// Common defaults: no z column, no grid cuts or extra observers, the grid as made, the indenter starting at the
-/// surface and never moving free of the body, the depth shown as stepped and the prescribed value as the load,
-/// nothing to do at a settled node.
+/// Common defaults: no z column, no grid cuts or extra observers, no grading towards zeros, the grid as made, the
+/// indenter starting at the surface and never moving free of the body, the depth shown as stepped and the prescribed
+/// value as the load, nothing to do at a settled node.
 class HistoryControl {
 public:
+    /// The steps are graded towards each time the history falls to zero (only a force's: the contact ends there).
+    static constexpr bool graded_towards_zeros = false;
     bool base_column() const { return false; }  ///< z is a column of the result
     void add_cuts(std::vector<double>& /*cuts*/, double /*end_time*/) const {}
     void shape_grid(std::vector<GridNode>& /*nodes*/) const {}
@@ -80,6 +82,7 @@ class ForceStepping : public HistoryControl {
 public:
     explicit ForceStepping(const ForceControl& /*control*/) {}
     static constexpr bool solves_depth = true;
+    static constexpr bool graded_towards_zeros = true;
     /// The sine's round-off at a zero of the validated (>= 0) prescribed force is no pull.
     double target(double history_value) const { return std::max(history_value, 0.0); }
     /// A jump against a dashpot: the dashpot takes the prescribed force at once.

@@ -14,8 +14,8 @@ namespace mdr::drivers {
 namespace {
 
 // Steps of the time grid of a displacement- or force-controlled run (make_time_grid): each history segment, the
-// hold up to the end, one more for each snapshot or tangential or harmonic breakpoint that may cut a step, and the graded
-// steps after jumps where the grid has them.
+// hold up to the end, one more for each snapshot or tangential or harmonic breakpoint that may cut a step, the graded
+// steps after jumps and towards a falling force's zeros where the grid has them.
 double indentation_steps(const ContactCase& contact_case, const ResolvedNumerics& numerics) {
     const auto& points = contact_case.load.history->points();
     double steps = 0.0;
@@ -38,6 +38,13 @@ double indentation_steps(const ContactCase& contact_case, const ResolvedNumerics
         const double graded = std::ceil(std::log(std::max(numerics.time_step / numerics.first_graded_step, 1.0)) /
                                         std::log1p(numerics.grading_ratio));
         steps += graded * static_cast<double>(points.size() + 1);
+    }
+    if (numerics.zero_grading_exponent > 0.0) {
+        // cuts_towards_zeros: one more step for each of its cuts, at most.
+        steps += static_cast<double>(cuts_towards_zeros(*contact_case.load.history, contact_case.end_time,
+                                                        numerics.time_step, numerics.min_segment_steps,
+                                                        zero_graded_fraction, numerics.zero_grading_exponent)
+                                         .size());
     }
     return steps;
 }

@@ -58,6 +58,9 @@ struct ResolvedNumerics {
     /// ratio times the time since the change (grade_after_changes); 0: a uniform grid.
     double grading_ratio = 0.0;
     double first_graded_step = 0.0;  ///< the first step after a fast load change [s] (with grading_ratio > 0)
+    /// > 0: the steps before each time the force falls linearly to zero are graded towards it with this exponent
+    /// (cuts_towards_zeros over zero_graded_fraction of the falling segment); 0: not graded.
+    double zero_grading_exponent = 0.0;
 };
 
 /// A normal indentation problem: a rigid axisymmetric indenter on a viscoelastic half-space. An aggregate: build
@@ -127,6 +130,9 @@ inline constexpr double jump_first_step = 1e-6;
 /// it (tau = 1e-300 s, say) is resolved no further (it has relaxed within that step), so that the graded steps after
 /// each change stay about ln(1e9) / jump_grading_ratio, and the grid of a record with many changes stays bounded.
 inline constexpr double finest_graded_step = 1e-9;
+/// The fraction of a segment on which the force falls to zero whose steps are graded towards the zero
+/// (cuts_towards_zeros), where the depth is singular as the contact ends (docs/theory.md section 3).
+inline constexpr double zero_graded_fraction = 0.2;
 /// Steps per braking time m / (8 eta a) of an impact on a body with a parallel dashpot (resolve_numerics).
 inline constexpr std::size_t braking_steps = 20;
 /// Smallest number of steps per history segment.

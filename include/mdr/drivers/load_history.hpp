@@ -73,4 +73,16 @@ std::vector<double> fast_change_times(const LoadHistory& history, double end, do
 std::vector<GridNode> grade_after_changes(const std::vector<GridNode>& nodes, const std::vector<double>& changes,
                                           double ratio, double first_step);
 
+/// Cuts that grade the grid's steps towards each time T up to `end` at which the load falls linearly to zero from
+/// above (a segment from a positive value to 0, not a jump; under force control the contact ends there): on the last
+/// `fraction` of the falling segment, L = fraction (T - t_a), the nodes t_k = T - L (k/n)^exponent, k = 1 .. n,
+/// n = ceil(exponent L / h) with h the segment's own step on the grid (segment_step_count with `max_step`,
+/// `min_steps_per_segment`), so that no graded step is longer than h (the longest, at T - L, is at most exponent L /
+/// n) and the grid between them takes one step each (make_time_grid with these cuts). About (exponent - 1) L / h more
+/// steps per zero. Where the contact ends at T the depth is singular, D ~ (T - t)^(1/m) (docs/theory.md section 3,
+/// "The end of the contact under a falling force"): on these nodes with exponent > 2m / (m + 1) the trapezoidal rule
+/// is second order up to and at T.
+std::vector<double> cuts_towards_zeros(const LoadHistory& history, double end, double max_step,
+                                       std::size_t min_steps_per_segment, double fraction, double exponent);
+
 }  // namespace mdr::drivers

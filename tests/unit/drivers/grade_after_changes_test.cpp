@@ -66,5 +66,29 @@ TEST(GradeAfterChanges, AJumpInTheGridIsKept) {
     EXPECT_DOUBLE_EQ(graded[2].time, 1e-2);
 }
 
+TEST(CutsTowardsZeros, NodesGradedAsAPowerOnTheLastFractionOfEachFallToZero) {
+    // A fall from 1 to 0 over [1, 2] on steps of 0.01 (100 a segment): the last 0.2 s on t_k = 2 - 0.2 (k/n)^1.5,
+    // n = ceil(1.5 0.2 / 0.01) = 30; a jump to zero and a fall after the end are not graded.
+    const auto load = history({{0.0, 0.0}, {1.0, 1.0}, {2.0, 0.0}, {3.0, 1.0}, {3.0, 0.0}, {4.0, 1.0}, {5.0, 0.0}});
+    const auto cuts = cuts_towards_zeros(load, 4.5, 0.01, 20, 0.2, 1.5);
+    ASSERT_EQ(cuts.size(), 30u);
+    for (std::size_t k = 1; k <= cuts.size(); ++k) {
+        EXPECT_DOUBLE_EQ(cuts[k - 1], 2.0 - 0.2 * std::pow(static_cast<double>(k) / 30.0, 1.5));
+    }
+    EXPECT_DOUBLE_EQ(cuts.back(), 1.8);
+    // No graded step longer than the segment's own step.
+    EXPECT_LE(cuts[cuts.size() - 2] - cuts.back(), 0.01);
+    // The grid with these cuts takes one step between them: 80 uniform steps up to 1.8, then the 30 graded ones.
+    const auto nodes = make_time_grid(load, 2.0, 0.01, 20, cuts);
+    EXPECT_EQ(nodes.size(), 1u + 100u + 80u + 30u);
+    EXPECT_DOUBLE_EQ(nodes[nodes.size() - 2].time, cuts.front());
+}
+
+TEST(CutsTowardsZeros, ASegmentsLeastStepCountSetsTheGradedStep) {
+    // A short fall (0.1 s, 20 steps of 5 ms at least, against a time step of 1 s): n = ceil(2 x 0.02 / 0.005) = 8.
+    const auto load = history({{0.0, 0.0}, {1.0, 1.0}, {1.1, 0.0}});
+    EXPECT_EQ(cuts_towards_zeros(load, 2.0, 1.0, 20, 0.2, 2.0).size(), 8u);
+}
+
 }  // namespace
 }  // namespace mdr::drivers
