@@ -140,7 +140,8 @@ template <class Branches>
     }
     step.common = common;
     const double contacts = header[contacts_offset];
-    step.free = static_cast<double>(touched) > contacts;
+    // A signed conversion (one instruction; touched <= N elements).
+    step.free = static_cast<double>(static_cast<std::int64_t>(touched)) > contacts;
     bool certain = true;
     // Lower bounds of the end stresses in contact (G_k E_k A_k > 0: each is at least common - G_inf max g_i +
     // sum_k G_k E_k A_k min h^_k,i) and of the free surfaces' clearance g_i + w_i - d1 (from the extremes of w^, h^

@@ -163,7 +163,8 @@ template <class Branches>
         shift[m + k] = decay * shift[m + k] + gain * step.increment[1];
         smallest = std::min(smallest, scale[k]);
     }
-    if (static_cast<double>(elements.touched) > header[contacts_offset]) {
+    // A signed conversion (one instruction; touched <= N elements), as the normal step's.
+    if (static_cast<double>(static_cast<std::int64_t>(elements.touched)) > header[contacts_offset]) {
         // F P = D P + b (c^T P), D = diag(1, E_k), b = (1, B_k), c the free increment (the same for x and y).
         double* map = header.data() + map_offset();
         double* next = scratch_.data() + m;

@@ -11,8 +11,8 @@ namespace mdr::foundation {
 /// loop over the elements vectorised), else as a number.
 template <class Kernel>
 inline __attribute__((always_inline)) auto with_branches(std::size_t branches, Kernel kernel) {
+    if (branches == 1) return kernel(std::integral_constant<std::size_t, 1>{});
     switch (branches) {
-        case 1: return kernel(std::integral_constant<std::size_t, 1>{});
         case 2: return kernel(std::integral_constant<std::size_t, 2>{});
         case 3: return kernel(std::integral_constant<std::size_t, 3>{});
         default: return kernel(branches);
