@@ -145,10 +145,13 @@ std::vector<GridNode> grade_after_changes(const std::vector<GridNode>& nodes, co
     return graded;
 }
 
-std::vector<double> cuts_towards_zeros(const LoadHistory& history, double end, double max_step,
-                                       std::size_t min_steps_per_segment, double fraction, double exponent) {
+namespace {
+
+// Each zero of cuts_towards_zeros: visit(T, L, n) for each segment up to `end` that falls linearly to zero from above.
+template <class Visit>
+void for_each_zero_grading(const LoadHistory& history, double end, double max_step, std::size_t min_steps_per_segment,
+                           double fraction, double exponent, Visit visit) {
     const auto& points = history.points();
-    std::vector<double> cuts;
     for (std::size_t i = 1; i < points.size() && points[i].time <= end; ++i) {
         const LoadPoint& a = points[i - 1];
         const LoadPoint& b = points[i];
@@ -156,10 +159,30 @@ std::vector<double> cuts_towards_zeros(const LoadHistory& history, double end, d
         const double segment = b.time - a.time;
         const double step = segment / segment_step_count(segment, max_step, min_steps_per_segment);
         const double graded = fraction * segment;
-        const double nodes = std::ceil(exponent * graded / step - 1e-9);
-        for (double k = 1.0; k <= nodes; k += 1.0) cuts.push_back(b.time - graded * std::pow(k / nodes, exponent));
+        visit(b.time, graded, std::ceil(exponent * graded / step - 1e-9));
     }
+}
+
+}  // namespace
+
+std::vector<double> cuts_towards_zeros(const LoadHistory& history, double end, double max_step,
+                                       std::size_t min_steps_per_segment, double fraction, double exponent) {
+    std::vector<double> cuts;
+    for_each_zero_grading(history, end, max_step, min_steps_per_segment, fraction, exponent,
+                          [&](double zero, double graded, double nodes) {
+                              for (double k = 1.0; k <= nodes; k += 1.0) {
+                                  cuts.push_back(zero - graded * std::pow(k / nodes, exponent));
+                              }
+                          });
     return cuts;
+}
+
+double count_cuts_towards_zeros(const LoadHistory& history, double end, double max_step,
+                                std::size_t min_steps_per_segment, double fraction, double exponent) {
+    double count = 0.0;
+    for_each_zero_grading(history, end, max_step, min_steps_per_segment, fraction, exponent,
+                          [&](double /*zero*/, double /*graded*/, double nodes) { count += nodes; });
+    return count;
 }
 
 }  // namespace mdr::drivers

@@ -41,10 +41,9 @@ double indentation_steps(const ContactCase& contact_case, const ResolvedNumerics
     }
     if (numerics.zero_grading_exponent > 0.0) {
         // cuts_towards_zeros: one more step for each of its cuts, at most.
-        steps += static_cast<double>(cuts_towards_zeros(*contact_case.load.history, contact_case.end_time,
-                                                        numerics.time_step, numerics.min_segment_steps,
-                                                        zero_graded_fraction, numerics.zero_grading_exponent)
-                                         .size());
+        steps += count_cuts_towards_zeros(*contact_case.load.history, contact_case.end_time, numerics.time_step,
+                                          numerics.min_segment_steps, zero_graded_fraction,
+                                          numerics.zero_grading_exponent);
     }
     return steps;
 }

@@ -44,6 +44,12 @@ REFUSED = [
      ["load.history[1].value = 5e-05", "rate from the previous point", "larger than a double can hold"]),
     ("time-step-of-1e-15-s", case_text(numerics="[numerics]\ntime_step = 1e-15\n"),
      ["numerics.max_element_steps", "1e+15 steps", "numerics.time_step"]),
+    # The steps graded towards a force's zero (cuts_towards_zeros) are counted before they are made: made first,
+    # these 1.5e12 cuts ended in std::bad_alloc after seconds.
+    ("force-ramp-to-zero-at-a-1e-13-s-step",
+     case_text(load='[load]\ncontrol = "force"\nhistory = [[0.0, 0.0], [0.5, 0.1], [1.0, 0.0]]\n',
+               numerics="[numerics]\ntime_step = 1e-13\n"),
+     ["numerics.max_element_steps", "steps", "numerics.time_step"]),
     # Depths of 1e-240 m: the forces underflow and the indenter never rebounds within the default time limit.
     ("impact-at-1e-300-m/s", case_text(indenter=SPHERE_WITH_MASS, load=IMPACT_LOAD.format(v="1e-300"), numerics=""),
      ["load.end", "the contact has not ended"]),

@@ -85,4 +85,9 @@ std::vector<GridNode> grade_after_changes(const std::vector<GridNode>& nodes, co
 std::vector<double> cuts_towards_zeros(const LoadHistory& history, double end, double max_step,
                                        std::size_t min_steps_per_segment, double fraction, double exponent);
 
+/// The number of cuts cuts_towards_zeros makes with the same arguments, counted without making them (the work bound
+/// counts them before the grid is built: a tiny time step asks for more cuts than memory holds).
+double count_cuts_towards_zeros(const LoadHistory& history, double end, double max_step,
+                                std::size_t min_steps_per_segment, double fraction, double exponent);
+
 }  // namespace mdr::drivers

@@ -90,5 +90,19 @@ TEST(CutsTowardsZeros, ASegmentsLeastStepCountSetsTheGradedStep) {
     EXPECT_EQ(cuts_towards_zeros(load, 2.0, 1.0, 20, 0.2, 2.0).size(), 8u);
 }
 
+TEST(CutsTowardsZeros, CountedWithoutBeingMadeAsMany) {
+    // Two falls to zero (a ramp and a dense fall) and a jump to zero, which is not graded.
+    const auto load = history({{0.0, 0.0}, {1.0, 2.0}, {2.0, 0.0}, {3.0, 1.0}, {3.0, 0.0}, {4.0, 1.0}, {4.5, 0.0}});
+    for (const double step : {0.1, 0.013, 1e-3}) {
+        for (const double exponent : {1.5, 2.0}) {
+            const auto cuts = cuts_towards_zeros(load, 4.5, step, 2, 0.2, exponent);
+            EXPECT_EQ(count_cuts_towards_zeros(load, 4.5, step, 2, 0.2, exponent), static_cast<double>(cuts.size()))
+                << step << " " << exponent;
+        }
+    }
+    // A step that would make 4.5e12 cuts is counted at once (the work bound refuses it before any is made).
+    EXPECT_NEAR(count_cuts_towards_zeros(load, 4.5, 1e-13, 2, 0.2, 1.5), 4.5e12, 1e9);
+}
+
 }  // namespace
 }  // namespace mdr::drivers
