@@ -163,7 +163,7 @@ Material spectrum(const SpectrumSettings& settings, double modulus, const Window
 // springpot candidate's order, fitted linearly") reached alpha ~0.01 at its second step, where every Gauss-Newton step
 // ran to alpha's upper bound 0.99 and the projected line search cut it to 1e-3 of its length; such a step still counts
 // as successful (its decrease 0.002 of the model's > Ceres' min_relative_decrease 1e-3), so the trust region only
-// halved per iteration: 16 runs at 0.99 of ~2.7 s each, 44 s of the fit's 45.
+// halved per iteration: 16 runs at 0.99 of ~2.6 s each, 42 s of the 44.5 s fit.
 Material registry_material(const rheology::MaterialModel& model, double modulus, const Window& window,
                            const rheology::TimeWindow& lags) {
     const double middle = std::sqrt(window.shortest * window.longest);

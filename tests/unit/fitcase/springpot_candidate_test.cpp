@@ -29,9 +29,10 @@ TEST(SpringpotCandidate, ReachesTheMinimumsNeighbourhoodWithoutStalling) {
                              "bounds = { \"indenter.n\" = [1.05, 6.0] }\n"
                              "[[fit.data]]\nfile = \"" + data.generic_string() + "\"\n"
                              "time = \"t_s\"\npiezo = \"z_measured_m\"\ndeflection = \"deflection_m\"\n"
-                             "spring_constant = 1.0677\nsegment_column = \"segment\"\nsegments = [\"0\", \"1\", \"2\"]\n";
+                             "spring_constant = 1.0677\nsegment_column = \"segment\"\n"
+                             "segments = [\"0\", \"1\", \"2\"]\n";
     FitCase fit_case = parse_fit_case(text, "case", ".");
-    std::vector<std::pair<std::size_t, double>> iterations;  // (iteration, chi^2) of the elastic fit, then the springpot's
+    std::vector<std::pair<std::size_t, double>> iterations;  // (iteration, chi^2): the elastic fit's, the springpot's
     fit_case.settings.on_iteration = [&](std::size_t iteration, double chi_square) {
         iterations.emplace_back(iteration, chi_square);
     };
