@@ -682,11 +682,11 @@ template <class Branches>
                                                              Branches m) {
     using foundation::ComposedNormalStep;
     using foundation::ComposedTangentialStep;
-    // The general path's tests before a composed tangential step, in its order: the state's size and counts (each
-    // refusal raised by the general path), a layer that takes steps (friction: take_normal_state), the frame and a
-    // finite displacement (refuse_spatial), one that moves or was touched (tangential_at_rest), a finite overlap
-    // (step_normal), a tangential header that composes (tangential_composes).
-    if (state.size() < state_size_ || friction_ == 0.0 || !std::isfinite(overlap)) return false;
+    // The general path's tests before a composed tangential step (with friction: advance_spatial): the state's size
+    // and counts (each refusal raised by the general path), a finite displacement in the turned frame
+    // (refuse_spatial), a layer that moves or was touched (tangential_at_rest), a finite overlap (step_normal), a
+    // tangential header that composes (tangential_composes).
+    if (state.size() < state_size_ || !std::isfinite(overlap)) return false;
     double* const values = state.data();
     const std::span<double> normal_header{values + header_offset, header_size_};
     const std::span<double> tangential_header{values + tangential_header_offset_, tangential_size_};
@@ -738,16 +738,16 @@ template <class Branches>
     return true;
 }
 
-SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
-                                          const SpatialVector& increment) {
-    SpatialVector held_force;
-    if (step_held(state, overlap, normal, increment, held_force)) return held_force;
-    return step_spatial(state, overlap, normal, increment);
-}
-
-// advance_spatial's general path: any step, out of line (the held step's registers are not saved for it).
+// advance_spatial's general path: inline into it without friction, out of line after the held step's tests (its
+// registers are not saved for the held step).
 SpatialVector ContactLaw::step_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
                                        const SpatialVector& increment) {
+    return step_spatial_inline(state, overlap, normal, increment);
+}
+
+[[gnu::always_inline]] inline SpatialVector ContactLaw::step_spatial_inline(std::span<double> state, double overlap,
+                                                                           const SpatialVector& normal,
+                                                                           const SpatialVector& increment) {
     take_normal_state(state);
     if (tangential_idle_) {  // no friction (begin): the layer stays at rest and carries no force, so no frame is needed
         require_finite_components("normal", normal);  // before the normal step writes the state
@@ -772,6 +772,16 @@ SpatialVector ContactLaw::step_spatial(std::span<double> state, double overlap, 
     step_tangential(displacement);
     end(state);
     return in_space(tangential_force_, frame);
+}
+
+SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
+                                          const SpatialVector& increment) {
+    if (friction_ > 0.0) {
+        SpatialVector held_force;
+        if (step_held(state, overlap, normal, increment, held_force)) return held_force;
+        return step_spatial(state, overlap, normal, increment);
+    }
+    return step_spatial_inline(state, overlap, normal, increment);  // a step without friction: no frame
 }
 
 }  // namespace mdr::dem

@@ -202,6 +202,8 @@ private:
     static bool untouched_and_still(std::size_t touched, PlanarVector increment);
     [[gnu::noinline]] SpatialVector step_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
                                                  const SpatialVector& increment);
+    SpatialVector step_spatial_inline(std::span<double> state, double overlap, const SpatialVector& normal,
+                                      const SpatialVector& increment);
     bool step_held(std::span<double> state, double overlap, const SpatialVector& normal, const SpatialVector& increment,
                    SpatialVector& force);
     template <class Branches>
