@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "../foundation/composed_held_steps.hpp"
@@ -50,51 +51,6 @@ SpatialVector any_normal_to(const SpatialVector& normal) {
     const auto result = cross(normal, unit);
     const double length = std::sqrt(dot(result, result));
     return {result[0] / length, result[1] / length, result[2] / length};
-}
-
-// The contact frame at the end of a step (advance_spatial): its first axis, its handedness (+-1), its second axis
-// (handedness normal x first) and the tangential displacement's increment in it.
-struct TurnedFrame {
-    SpatialVector first;
-    double handedness;
-    SpatialVector second;
-    PlanarVector slip;
-};
-
-// The frame turns with the normal: its axis `axis` projected into the tangent plane of `normal` and rescaled
-// (LAMMPS's granular history does the same to its tangential vector). At first touch (`handedness` 0), or should the
-// normal have turned by a right angle within a step, the axis starts afresh: the increment's direction in the plane,
-// else any. `increment` is the contact point's over the step (its normal part ignored).
-[[gnu::always_inline]] inline TurnedFrame turn_frame(const SpatialVector& axis, double handedness, const SpatialVector& normal,
-                       const SpatialVector& increment) {
-    const SpatialVector slip = in_plane(increment, normal);
-    SpatialVector first = handedness == 0.0 ? slip : in_plane(axis, normal);
-    double length = std::sqrt(dot(first, first));
-    const double scale = handedness == 0.0 ? std::sqrt(dot(increment, increment)) : 1.0;
-    if (!(length > 1e-6 * scale)) {
-        first = any_normal_to(normal);
-        length = 1.0;
-    }
-    TurnedFrame frame;
-    frame.first = {first[0] / length, first[1] / length, first[2] / length};
-    frame.handedness = handedness == 0.0 ? 1.0 : handedness;
-    const SpatialVector turned = cross(normal, frame.first);
-    frame.second = {frame.handedness * turned[0], frame.handedness * turned[1], frame.handedness * turned[2]};
-    frame.slip = {dot(slip, frame.first), dot(slip, frame.second)};
-    return frame;
-}
-
-// A tangential force's components in `frame` as a vector.
-SpatialVector in_space(const PlanarVector& force, const TurnedFrame& frame) {
-    return {force[0] * frame.first[0] + force[1] * frame.second[0], force[0] * frame.first[1] + force[1] * frame.second[1],
-            force[0] * frame.first[2] + force[1] * frame.second[2]};
-}
-
-// The work [J] of a force over a step by the trapezoidal rule (step_work): the mean of its values at the start and
-// the end times the displacement's increment.
-double trapezoidal_work(double start, double end, double increment) { return 0.5 * (start + end) * increment; }
-double trapezoidal_work(const PlanarVector& start, const PlanarVector& end, const PlanarVector& increment) {
-    return 0.5 * ((start[0] + end[0]) * increment[0] + (start[1] + end[1]) * increment[1]);
 }
 
 // Throws mdr::InvalidInput naming `key` for the first component of `vector` that is not finite.
@@ -405,12 +361,9 @@ void ContactLaw::begin(std::span<double> state) { take_state(state); }
 
 // The elements as the state holds them: touched_ is the state's count from begin on (the Foundation's step alone
 // changes it, and step_normal_by_elements reads it back).
-foundation::AttachedElements ContactLaw::elements() const { return elements(state_, touched_); }
-
-// A state's normal elements, `touched` of them.
-foundation::AttachedElements ContactLaw::elements(double* state, std::size_t touched) const {
-    double* w = state + normal_offset_ + 3;
-    return {w, w + elements_, w + 2 * elements_, elements_, touched};
+foundation::AttachedElements ContactLaw::elements() const {
+    double* w = state_ + normal_offset_ + 3;
+    return {w, w + elements_, w + 2 * elements_, elements_, touched_};
 }
 
 // The Foundation takes the step: the elements brought up to date (the header's maps applied), attached, their
@@ -441,17 +394,11 @@ double ContactLaw::normal_trial(double overlap) {
     const foundation::AttachedElements start = elements();
     composed_step_ = composed_.advance(header(), start, overlap_, overlap, normal_force_, least_stress_);
     if (composed_step_) {
-        state_[normal_offset_] = overlap;
-        state_[normal_offset_ + 1] = normal_force_;
+        end_composed_normal(overlap);
     } else {
         step_normal_by_elements(overlap);
+        end_normal(overlap);
     }
-    // A whole number in [0, N]: the steps keep the header's count so, and ContactLaw::check validates a state
-    // from elsewhere (a restart file); the signed conversion is one instruction.
-    contact_count_ = static_cast<std::size_t>(
-        static_cast<std::int64_t>(header()[foundation::ComposedNormalStep::contacts_offset]));
-    normal_work_ = trapezoidal_work(start_normal_force_, normal_force_, overlap - overlap_);
-    loads_ready_ = false;
     if (tangential_idle_) return;
     if (composed_step_) {
         // The line loads now unless the tangential step may be composed (then only where its bound fails).
@@ -463,6 +410,23 @@ double ContactLaw::normal_trial(double overlap) {
         foundation_.line_loads(loads_);
         loads_ready_ = true;
     }
+}
+
+// A composed normal step's overlap and force into the state.
+[[gnu::always_inline]] inline void ContactLaw::end_composed_normal(double overlap) {
+    state_[normal_offset_] = overlap;
+    state_[normal_offset_ + 1] = normal_force_;
+    end_normal(overlap);
+}
+
+// The normal step's element count and work, after either form.
+[[gnu::always_inline]] inline void ContactLaw::end_normal(double overlap) {
+    // A whole number in [0, N]: the steps keep the header's count so, and ContactLaw::check validates a state
+    // from elsewhere (a restart file); the signed conversion is one instruction.
+    contact_count_ = static_cast<std::size_t>(
+        static_cast<std::int64_t>(header()[foundation::ComposedNormalStep::contacts_offset]));
+    normal_work_ = 0.5 * (start_normal_force_ + normal_force_) * (overlap - overlap_);
+    loads_ready_ = false;
 }
 
 // The normal step with an entry or exit: the Foundation's, the header summarised again after it.
@@ -506,12 +470,9 @@ void ContactLaw::require_loads() const {
 
 // The Foundation's touched count (touched_): that of the steps the header composes until the normal step changes it
 // (the layer's is the same while the header composes).
-foundation::PlanarElements ContactLaw::tangential_elements() const { return tangential_elements(state_, touched_); }
-
-// A state's tangential elements, the first `touched` with the normal ones' flags.
-foundation::PlanarElements ContactLaw::tangential_elements(double* state, std::size_t touched) const {
-    double* u = state + tangential_offset_ + 3;
-    return {u, u + 2 * elements_, state + normal_offset_ + 3 + elements_, elements_, touched};
+foundation::PlanarElements ContactLaw::tangential_elements() const {
+    double* u = state_ + tangential_offset_ + 3;
+    return {u, u + 2 * elements_, state_ + normal_offset_ + 3 + elements_, elements_, touched_};
 }
 
 // The tangential elements written (the header's maps applied) where the header composes.
@@ -543,12 +504,7 @@ bool ContactLaw::tangential_sticks(PlanarVector increment, foundation::ComposedT
 // stays zero and, starting unloaded, so do u and h) or the step moves the elements by nothing (a stuck element's
 // stress is relaxed + k du = 0, a free one's zero). Head-on collisions and frictionless contacts skip the layer.
 bool ContactLaw::tangential_at_rest(PlanarVector increment) const {
-    return tangential_idle_ || untouched_and_still(layer_touched_, increment);
-}
-
-// Whether a layer with `touched` elements touched is never touched and this step does not move it.
-bool ContactLaw::untouched_and_still(std::size_t touched, PlanarVector increment) {
-    return touched == 0 && increment[0] == 0.0 && increment[1] == 0.0;
+    return tangential_idle_ || (layer_touched_ == 0 && increment[0] == 0.0 && increment[1] == 0.0);
 }
 
 std::span<const double> ContactLaw::loads() const { return std::span<const double>(loads_).first(touched_); }
@@ -613,8 +569,60 @@ void ContactLaw::step_tangential_by_elements(PlanarVector increment) {
         return;
     }
     if (!(tangential_composes() && step_composed_tangential(increment))) step_tangential_by_elements(increment);
-    tangential_work_ = trapezoidal_work(start_tangential_force_, tangential_force_, increment);
+    end_tangential(displacement, increment);
+}
+
+// The tangential step's work (the trapezoidal rule, step_work) and its displacement, after either form.
+[[gnu::always_inline]] inline void ContactLaw::end_tangential(PlanarVector displacement, PlanarVector increment) {
+    const PlanarVector& end_force = tangential_force_;
+    tangential_work_ = 0.5 * ((start_tangential_force_[0] + end_force[0]) * increment[0] +
+                              (start_tangential_force_[1] + end_force[1]) * increment[1]);
     displacement_ = displacement;
+}
+
+// advance_spatial's held step (issue 29; docs/dem.md, "The held step as one kernel"): where the normal step composes
+// (no element enters or leaves contact) and every element in contact certainly sticks (the tangential header composes
+// and its bound holds), both composed steps for one dispatch on M, their bodies inlined (composed_held_steps.hpp), each
+// prepared before either writes; the state and the workspace as step_normal and step_tangential leave them. Returns
+// false, having written nothing, for any other step (step_normal and step_tangential then take it) and for M > 3.
+// After skip_resting_layer. advance and the two-call steps take the general path (the test
+// AHeldSpatialStepIsThePlanarStepToTheBit compares the two).
+[[gnu::always_inline]] inline bool ContactLaw::step_held(double overlap, PlanarVector displacement) {
+    return foundation::with_branches(branches_, [&](auto m) {
+        if constexpr (std::is_same_v<decltype(m), std::size_t>) {
+            return false;
+        } else {
+            return step_held_with(overlap, displacement, m);
+        }
+    });
+}
+
+template <class Branches>
+[[gnu::always_inline]] inline bool ContactLaw::step_held_with(double overlap, PlanarVector displacement, Branches m) {
+    // A layer that steps (tangential_at_rest), a finite overlap (step_normal refuses it), a tangential header that
+    // composes (tangential_composes; the normal step's form is prepare_with's answer).
+    if (tangential_idle_ || !std::isfinite(overlap) ||
+        state_[tangential_header_offset_ + foundation::ComposedTangentialStep::composed_offset] == 0.0) {
+        return false;
+    }
+    const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};
+    const foundation::AttachedElements start = elements();
+    foundation::ComposedNormalStep::Step normal;
+    if (!composed_.prepare_with(header(), start, overlap_, overlap, normal, m)) return false;
+    foundation::ComposedTangentialStep::Step tangential;
+    if (!tangential_.prepare_with(tangential_header(), increment, line_load_factor * normal.least_stress, tangential,
+                                  m)) {
+        return false;
+    }
+    // Taken: as step_normal's composed step, then step_composed_tangential's.
+    composed_step_ = true;
+    least_stress_ = normal.least_stress;
+    normal_force_ = composed_.take_with(header(), start, overlap, normal, m);
+    end_composed_normal(overlap);
+    tangential_.advance_with(tangential_header(), tangential_elements(), tangential, m);
+    tangential_force_ = tangential_force(std::span<const double>(state_, state_size_));
+    end_tangential(displacement, increment);
+    return true;
 }
 
 void ContactLaw::advance_tangential(PlanarVector displacement) {
@@ -656,98 +664,8 @@ SpatialVector ContactLaw::tangential_force(std::span<const double> state, const 
     return result;
 }
 
-// advance_spatial's held step (issue 29): where the normal step composes (no element enters or leaves contact) and
-// every element in contact certainly sticks (the tangential header composes and its bound holds), the frame and both
-// composed steps from locals read once from the state, one dispatch on M, the steps' bodies inlined
-// (composed_held_steps.hpp) and both prepared before either writes. Returns false, having written nothing (state or
-// workspace), for any other step and for M > 3: advance_spatial's general path takes it (and raises where the state
-// or a vector is refused). Else the state as the general path writes it, `force` its return value and the workspace
-// as it leaves it.
-[[gnu::always_inline]] inline bool ContactLaw::step_held(std::span<double> state, double overlap,
-                                                        const SpatialVector& normal, const SpatialVector& increment,
-                                                        SpatialVector& force) {
-    return foundation::with_branches(branches_, [&](auto m) {
-        if constexpr (std::is_same_v<decltype(m), std::size_t>) {
-            return false;
-        } else {
-            return step_held_with(state, overlap, normal, increment, force, m);
-        }
-    });
-}
-
-template <class Branches>
-[[gnu::always_inline]] inline bool ContactLaw::step_held_with(std::span<double> state, double overlap,
-                                                             const SpatialVector& normal,
-                                                             const SpatialVector& increment, SpatialVector& force,
-                                                             Branches m) {
-    using foundation::ComposedNormalStep;
-    using foundation::ComposedTangentialStep;
-    // The general path's tests before a composed tangential step (with friction: advance_spatial): the state's size
-    // and counts (each refusal raised by the general path), a finite displacement in the turned frame
-    // (refuse_spatial), a layer that moves or was touched (tangential_at_rest), a finite overlap (step_normal), a
-    // tangential header that composes (tangential_composes).
-    if (state.size() < state_size_ || !std::isfinite(overlap)) return false;
-    double* const values = state.data();
-    const std::span<double> normal_header{values + header_offset, header_size_};
-    const std::span<double> tangential_header{values + tangential_header_offset_, tangential_size_};
-    if (tangential_header[ComposedTangentialStep::composed_offset] == 0.0) return false;
-    const std::size_t touched = count_at(state, normal_offset_ + 2);
-    const std::size_t layer_touched =
-        count_at(state, tangential_offset_ + foundation::PlanarTangentialLayer::touched_offset);
-    const PlanarVector start_displacement{values[0], values[1]};
-    const TurnedFrame frame =
-        turn_frame({values[frame_offset], values[frame_offset + 1], values[frame_offset + 2]},
-                   values[handedness_offset], normal, increment);
-    const PlanarVector displacement{start_displacement[0] + frame.slip[0], start_displacement[1] + frame.slip[1]};
-    const PlanarVector slip{displacement[0] - start_displacement[0], displacement[1] - start_displacement[1]};
-    if (!(std::isfinite(displacement[0]) & std::isfinite(displacement[1])) || untouched_and_still(layer_touched, slip)) {
-        return false;
-    }
-    // Both steps prepared (read only): the normal one composes, and every element in contact certainly sticks.
-    const double start_overlap = values[normal_offset_];
-    const foundation::AttachedElements normal_elements = elements(values, touched);
-    ComposedNormalStep::Step normal_step;
-    if (!composed_.prepare_with(normal_header, normal_elements, start_overlap, overlap, normal_step, m)) return false;
-    ComposedTangentialStep::Step tangential_step;
-    if (!tangential_.prepare_with(tangential_header, slip, line_load_factor * normal_step.least_stress,
-                                  tangential_step, m)) {
-        return false;
-    }
-    // Taken: the state written once.
-    const double start_normal_force = values[normal_offset_ + 1];
-    const PlanarVector start_tangential_force = tangential_force(state);
-    const double normal_force = composed_.take_with(normal_header, normal_elements, overlap, normal_step, m);
-    values[normal_offset_] = overlap;
-    values[normal_offset_ + 1] = normal_force;
-    tangential_.advance_with(tangential_header, tangential_elements(values, touched), tangential_step, m);
-    const PlanarVector tangential_force_end = tangential_force(state);
-    values[0] = displacement[0];
-    values[1] = displacement[1];
-    for (std::size_t i = 0; i < 3; ++i) values[frame_offset + i] = frame.first[i];
-    values[handedness_offset] = frame.handedness;
-    // The workspace's results as the general path leaves them (its accessors; the other members are a step's own,
-    // set anew by the next begin, advance or advance_spatial).
-    composed_step_ = true;
-    normal_force_ = normal_force;
-    contact_count_ = static_cast<std::size_t>(
-        static_cast<std::int64_t>(normal_header[ComposedNormalStep::contacts_offset]));
-    normal_work_ = trapezoidal_work(start_normal_force, normal_force, overlap - start_overlap);
-    tangential_force_ = tangential_force_end;
-    tangential_work_ = trapezoidal_work(start_tangential_force, tangential_force_end, slip);
-    force = in_space(tangential_force_end, frame);
-    return true;
-}
-
-// advance_spatial's general path: inline into it without friction, out of line after the held step's tests (its
-// registers are not saved for the held step).
-SpatialVector ContactLaw::step_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
-                                       const SpatialVector& increment) {
-    return step_spatial_inline(state, overlap, normal, increment);
-}
-
-[[gnu::always_inline]] inline SpatialVector ContactLaw::step_spatial_inline(std::span<double> state, double overlap,
-                                                                           const SpatialVector& normal,
-                                                                           const SpatialVector& increment) {
+SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
+                                          const SpatialVector& increment) {
     take_normal_state(state);
     if (tangential_idle_) {  // no friction (begin): the layer stays at rest and carries no force, so no frame is needed
         require_finite_components("normal", normal);  // before the normal step writes the state
@@ -756,32 +674,38 @@ SpatialVector ContactLaw::step_spatial(std::span<double> state, double overlap, 
         return {0.0, 0.0, 0.0};
     }
     take_frame(state);
-    const TurnedFrame frame = turn_frame(frame_, handedness_, normal, increment);
-    frame_ = frame.first;
-    handedness_ = frame.handedness;
-    const PlanarVector displacement{displacement_[0] + frame.slip[0], displacement_[1] + frame.slip[1]};
+    const SpatialVector slip = in_plane(increment, normal);
+    // The frame turns with the normal: its axis projected into the new tangent plane and rescaled (LAMMPS's
+    // granular history does the same to its tangential vector). At first touch, or should the normal have turned
+    // by a right angle within a step, the axis starts afresh.
+    SpatialVector axis = handedness_ == 0.0 ? slip : in_plane(frame_, normal);
+    double length = std::sqrt(dot(axis, axis));
+    const double scale = handedness_ == 0.0 ? std::sqrt(dot(increment, increment)) : 1.0;
+    if (!(length > 1e-6 * scale)) {
+        axis = any_normal_to(normal);
+        length = 1.0;
+    }
+    frame_ = {axis[0] / length, axis[1] / length, axis[2] / length};
+    if (handedness_ == 0.0) handedness_ = 1.0;
+    const SpatialVector turned = cross(normal, frame_);
+    const SpatialVector second{handedness_ * turned[0], handedness_ * turned[1], handedness_ * turned[2]};
+    const PlanarVector displacement{displacement_[0] + dot(slip, frame_), displacement_[1] + dot(slip, second)};
     // A component of `normal` or `increment` that is not finite (inf or NaN) makes `along` in in_plane, and so every
-    // component of the projected increment, non-finite (a sum with a non-finite term and a product with a non-finite
-    // factor are: inf - inf = inf 0 = NaN), and with them the frame's slip, whatever the frame: this one test covers
-    // the three vectors, before the normal step writes the state (refuse_spatial names the first that is not finite).
+    // component of `slip`, non-finite (a sum with a non-finite term and a product with a non-finite factor are:
+    // inf - inf = inf 0 = NaN), and with them dot(slip, frame_), whatever the frame: this one test covers the three
+    // vectors, before the normal step writes the state (refuse_spatial names the first that is not finite).
     if (!(std::isfinite(displacement[0]) & std::isfinite(displacement[1]))) [[unlikely]] {
         refuse_spatial(normal, increment, displacement);
     }
     skip_resting_layer(displacement);
-    step_normal(overlap);
-    step_tangential(displacement);
-    end(state);
-    return in_space(tangential_force_, frame);
-}
-
-SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
-                                          const SpatialVector& increment) {
-    if (friction_ > 0.0) {
-        SpatialVector held_force;
-        if (step_held(state, overlap, normal, increment, held_force)) return held_force;
-        return step_spatial(state, overlap, normal, increment);
+    if (!step_held(overlap, displacement)) {
+        step_normal(overlap);
+        step_tangential(displacement);
     }
-    return step_spatial_inline(state, overlap, normal, increment);  // a step without friction: no frame
+    end(state);
+    const PlanarVector force = tangential_force_;
+    return {force[0] * frame_[0] + force[1] * second[0], force[0] * frame_[1] + force[1] * second[1],
+            force[0] * frame_[2] + force[1] * second[2]};
 }
 
 }  // namespace mdr::dem

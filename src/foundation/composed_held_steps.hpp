@@ -105,7 +105,8 @@ template <class Branches>
 }
 
 template <class Branches>
-[[gnu::always_inline]] inline double ComposedNormalStep::sum_force(std::span<const double> header, const Step& step, Branches m) const {
+[[gnu::always_inline]] inline double ComposedNormalStep::sum_force(std::span<const double> header, const Step& step,
+                                                                   Branches m) const {
     using namespace composed_normal;
     const double* hat_sum = header.data() + scale_offset + 2 * m;
     // F_N = 8 dx sum_i sigma_i (eq. 21, both halves) over the elements in contact.
@@ -137,7 +138,8 @@ template <class Branches>
         std::copy(step.next, step.next + order * order, header.data() + composed_normal::map_offset(m));
         smallest = std::min(smallest, largest);
     } else if (!composed) {
-        std::copy(unit_.data() + 2 * m, unit_.data() + 2 * m + order * order, header.data() + composed_normal::map_offset(m));
+        std::copy(unit_.data() + 2 * m, unit_.data() + 2 * m + order * order,
+                  header.data() + composed_normal::map_offset(m));
     }
     header[composed_offset] = 1.0;
     header[rate_offset] = step.rate;
@@ -176,7 +178,8 @@ template <class Branches>
 }
 
 template <class Branches>
-[[gnu::always_inline]] inline PlanarVector ComposedTangentialStep::force_with(std::span<const double> header, const Step& step, Branches m) const {
+[[gnu::always_inline]] inline PlanarVector ComposedTangentialStep::force_with(std::span<const double> header,
+                                                                             const Step& step, Branches m) const {
     using namespace composed_tangential;
     const double* hat_sum = header.data() + scale_offset + 3 * m;  // x then y
     const double contacts = header[contacts_offset];

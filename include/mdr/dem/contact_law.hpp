@@ -183,9 +183,7 @@ private:
     std::span<double> header() const { return {state_ + header_offset, header_size_}; }
     std::span<double> tangential_header() const { return {state_ + tangential_header_offset_, tangential_size_}; }
     foundation::AttachedElements elements() const;
-    foundation::AttachedElements elements(double* state, std::size_t touched) const;
     foundation::PlanarElements tangential_elements() const;
-    foundation::PlanarElements tangential_elements(double* state, std::size_t touched) const;
     bool tangential_composes() const;
     bool tangential_sticks(PlanarVector increment, foundation::ComposedTangentialStep::Step& step) const;
     void require_loads() const;
@@ -199,22 +197,18 @@ private:
     std::size_t count_at(std::span<const double> state, std::size_t offset) const;
     [[noreturn, gnu::noinline, gnu::cold]] void refuse_count(std::size_t offset, double count) const;
     bool tangential_at_rest(PlanarVector increment) const;
-    static bool untouched_and_still(std::size_t touched, PlanarVector increment);
-    [[gnu::noinline]] SpatialVector step_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
-                                                 const SpatialVector& increment);
-    SpatialVector step_spatial_inline(std::span<double> state, double overlap, const SpatialVector& normal,
-                                      const SpatialVector& increment);
-    bool step_held(std::span<double> state, double overlap, const SpatialVector& normal, const SpatialVector& increment,
-                   SpatialVector& force);
-    template <class Branches>
-    bool step_held_with(std::span<double> state, double overlap, const SpatialVector& normal,
-                        const SpatialVector& increment, SpatialVector& force, Branches branches);
     void skip_resting_layer(PlanarVector displacement);
     void require_state_size(std::span<const double> state) const;
     void take_state(std::span<double> state);
     void take_normal_state(std::span<double> state);
     void take_frame(std::span<const double> state);
     void step_normal(double overlap);
+    void end_composed_normal(double overlap);
+    void end_normal(double overlap);
+    void end_tangential(PlanarVector displacement, PlanarVector increment);
+    bool step_held(double overlap, PlanarVector displacement);
+    template <class Branches>
+    bool step_held_with(double overlap, PlanarVector displacement, Branches branches);
     void step_normal_by_elements(double overlap);
     void step_tangential(PlanarVector displacement);
     bool step_composed_tangential(PlanarVector increment);
