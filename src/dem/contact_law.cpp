@@ -4,8 +4,11 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
+#include "../foundation/composed_held_steps.hpp"
+#include "../foundation/with_branches.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::dem {
@@ -391,17 +394,11 @@ double ContactLaw::normal_trial(double overlap) {
     const foundation::AttachedElements start = elements();
     composed_step_ = composed_.advance(header(), start, overlap_, overlap, normal_force_, least_stress_);
     if (composed_step_) {
-        state_[normal_offset_] = overlap;
-        state_[normal_offset_ + 1] = normal_force_;
+        end_composed_normal(overlap);
     } else {
         step_normal_by_elements(overlap);
+        end_normal(overlap);
     }
-    // A whole number in [0, N]: the steps keep the header's count so, and ContactLaw::check validates a state
-    // from elsewhere (a restart file); the signed conversion is one instruction.
-    contact_count_ = static_cast<std::size_t>(
-        static_cast<std::int64_t>(header()[foundation::ComposedNormalStep::contacts_offset]));
-    normal_work_ = 0.5 * (start_normal_force_ + normal_force_) * (overlap - overlap_);
-    loads_ready_ = false;
     if (tangential_idle_) return;
     if (composed_step_) {
         // The line loads now unless the tangential step may be composed (then only where its bound fails).
@@ -413,6 +410,23 @@ double ContactLaw::normal_trial(double overlap) {
         foundation_.line_loads(loads_);
         loads_ready_ = true;
     }
+}
+
+// A composed normal step's overlap and force into the state.
+[[gnu::always_inline]] inline void ContactLaw::end_composed_normal(double overlap) {
+    state_[normal_offset_] = overlap;
+    state_[normal_offset_ + 1] = normal_force_;
+    end_normal(overlap);
+}
+
+// The normal step's element count and work, after either form.
+[[gnu::always_inline]] inline void ContactLaw::end_normal(double overlap) {
+    // A whole number in [0, N]: the steps keep the header's count so, and ContactLaw::check validates a state
+    // from elsewhere (a restart file); the signed conversion is one instruction.
+    contact_count_ = static_cast<std::size_t>(
+        static_cast<std::int64_t>(header()[foundation::ComposedNormalStep::contacts_offset]));
+    normal_work_ = 0.5 * (start_normal_force_ + normal_force_) * (overlap - overlap_);
+    loads_ready_ = false;
 }
 
 // The normal step with an entry or exit: the Foundation's, the header summarised again after it.
@@ -555,10 +569,60 @@ void ContactLaw::step_tangential_by_elements(PlanarVector increment) {
         return;
     }
     if (!(tangential_composes() && step_composed_tangential(increment))) step_tangential_by_elements(increment);
+    end_tangential(displacement, increment);
+}
+
+// The tangential step's work (the trapezoidal rule, step_work) and its displacement, after either form.
+[[gnu::always_inline]] inline void ContactLaw::end_tangential(PlanarVector displacement, PlanarVector increment) {
     const PlanarVector& end_force = tangential_force_;
     tangential_work_ = 0.5 * ((start_tangential_force_[0] + end_force[0]) * increment[0] +
                               (start_tangential_force_[1] + end_force[1]) * increment[1]);
     displacement_ = displacement;
+}
+
+// advance_spatial's held step (issue 29; docs/dem.md, "The held step as one kernel"): where the normal step composes
+// (no element enters or leaves contact) and every element in contact certainly sticks (the tangential header composes
+// and its bound holds), both composed steps for one dispatch on M, their bodies inlined (composed_held_steps.hpp), each
+// prepared before either writes; the state and the workspace as step_normal and step_tangential leave them. Returns
+// false, having written nothing, for any other step (step_normal and step_tangential then take it) and for M > 3.
+// After skip_resting_layer. advance and the two-call steps take the general path (the test
+// AHeldSpatialStepIsThePlanarStepToTheBit compares the two).
+[[gnu::always_inline]] inline bool ContactLaw::step_held(double overlap, PlanarVector displacement) {
+    return foundation::with_branches(branches_, [&](auto m) {
+        if constexpr (std::is_same_v<decltype(m), std::size_t>) {
+            return false;
+        } else {
+            return step_held_with(overlap, displacement, m);
+        }
+    });
+}
+
+template <class Branches>
+[[gnu::always_inline]] inline bool ContactLaw::step_held_with(double overlap, PlanarVector displacement, Branches m) {
+    // A layer that steps (tangential_at_rest), a finite overlap (step_normal refuses it), a tangential header that
+    // composes (tangential_composes; the normal step's form is prepare_with's answer).
+    if (tangential_idle_ || !std::isfinite(overlap) ||
+        state_[tangential_header_offset_ + foundation::ComposedTangentialStep::composed_offset] == 0.0) {
+        return false;
+    }
+    const PlanarVector increment{displacement[0] - displacement_[0], displacement[1] - displacement_[1]};
+    const foundation::AttachedElements start = elements();
+    foundation::ComposedNormalStep::Step normal;
+    if (!composed_.prepare_with(header(), start, overlap_, overlap, normal, m)) return false;
+    foundation::ComposedTangentialStep::Step tangential;
+    if (!tangential_.prepare_with(tangential_header(), increment, line_load_factor * normal.least_stress, tangential,
+                                  m)) {
+        return false;
+    }
+    // Taken: as step_normal's composed step, then step_composed_tangential's.
+    composed_step_ = true;
+    least_stress_ = normal.least_stress;
+    normal_force_ = composed_.take_with(header(), start, overlap, normal, m);
+    end_composed_normal(overlap);
+    tangential_.advance_with(tangential_header(), tangential_elements(), tangential, m);
+    tangential_force_ = tangential_force(std::span<const double>(state_, state_size_));
+    end_tangential(displacement, increment);
+    return true;
 }
 
 void ContactLaw::advance_tangential(PlanarVector displacement) {
@@ -634,8 +698,10 @@ SpatialVector ContactLaw::advance_spatial(std::span<double> state, double overla
         refuse_spatial(normal, increment, displacement);
     }
     skip_resting_layer(displacement);
-    step_normal(overlap);
-    step_tangential(displacement);
+    if (!step_held(overlap, displacement)) {
+        step_normal(overlap);
+        step_tangential(displacement);
+    }
     end(state);
     const PlanarVector force = tangential_force_;
     return {force[0] * frame_[0] + force[1] * second[0], force[0] * frame_[1] + force[1] * second[1],

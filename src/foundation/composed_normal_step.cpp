@@ -6,23 +6,20 @@
 #include <limits>
 #include <vector>
 
+#include "composed_held_steps.hpp"
 #include "with_branches.hpp"
 
 namespace mdr::foundation {
+
+using namespace composed_normal;  // the header's entries and constants
+
 namespace {
-
-constexpr double normal_stiffness_factor = 4.0;  // k_z = 4 G dx, eq. (11)
-constexpr double smallest_factor = 1e-150;       // a composition factor below: the elements are written
-
-// Header entries (see the class's comment).
-constexpr std::size_t profile_sum_offset = 3, outermost_offset = 4, innermost_free_offset = 5;
-constexpr std::size_t scale_offset = ComposedNormalStep::factors_offset;
 
 // Whether no element i < count enters or leaves contact over the step: one in contact keeps a compressive end
 // stress, common - G_inf g_i + sum_k weight_k h^_k,i >= 0 (eq. 20), a free one stays clear of the indenter,
 // g_i + row_0 w^_i + sum_k row_(k+1) h^_k,i >= depth (eq. 14). Read only; an integer count, so that it vectorises
 // (GCC leaves a floating-point min reduction scalar).
-__attribute__((target_clones("avx2", "default"))) bool no_event(
+__attribute__((target_clones("avx2", "default"))) bool no_event_pass(
     std::size_t count, std::size_t branches, const double* __restrict w, const double* __restrict flags,
     const double* __restrict h, std::size_t stride, double g_inf, double common, double depth,
     const double* __restrict g, const double* __restrict weight, const double* __restrict row) {
@@ -68,17 +65,6 @@ __attribute__((target_clones("avx2", "default"))) void stress_pass(
 
 }  // namespace
 
-// What a step in the composed form derives before it is taken (prepare).
-struct ComposedNormalStep::Step {
-    double common = 0.0;     ///< the end stress common to the elements in contact, eq. (16): G_inf d1 + eta rate + ...
-    double increment = 0.0;  ///< d1 - d0
-    double rate = 0.0;       ///< the dashpots' (secant) rate
-    bool free = false;       ///< some touched element is out of contact
-    double least_stress = std::numeric_limits<double>::infinity();  ///< a lower bound of the end stresses in contact
-    double* weight = nullptr;  ///< G_k E_k A_k (M)
-    double* next = nullptr;    ///< F P, row-major (order M + 1)
-};
-
 ComposedNormalStep::ComposedNormalStep(const rheology::Rheology& material, std::span<const double> profile,
                                        double spacing, double deepest)
     : branches_(material.terms().size()),
@@ -95,6 +81,8 @@ ComposedNormalStep::ComposedNormalStep(const rheology::Rheology& material, std::
     for (std::size_t r = 0; r <= branches_; ++r) unit_[2 * branches_ + r * (branches_ + 1) + r] = 1.0;
 }
 
+std::size_t ComposedNormalStep::map_offset() const { return composed_normal::map_offset(branches_); }
+
 std::size_t ComposedNormalStep::header_size(std::size_t branches) { return branches * branches + 8 * branches + 9; }
 
 void ComposedNormalStep::set_step(const StepCoefficients& coefficients) {
@@ -109,75 +97,6 @@ void ComposedNormalStep::set_step(const StepCoefficients& coefficients) {
     }
 }
 
-// Inlined into its two callers (trial_force, advance_with), so that a step dispatches on M once.
-template <class Branches>
-[[gnu::always_inline]] inline bool ComposedNormalStep::prepare_with(std::span<const double> header,
-                                                                   const AttachedElements& elements,
-                                                                   double depth_start, double depth_end, Step& step,
-                                                                   Branches m) const {
-    const std::size_t order = m + 1, touched = elements.touched;
-    const double deepest = std::max(depth_start, depth_end);
-    // The Foundation's step: an element reached for the first time (Foundation::reach), the end of the foundation.
-    if ((touched < profile_.size() && profile_[touched] < deepest) || deepest > deepest_) return false;
-    // Not composed: A_k = 1, C_k = 0, P = I (unit_).
-    const bool composed = header[composed_offset] != 0.0;
-    const double* __restrict decay = coefficients_.decay.data();
-    const double* __restrict gain = coefficients_.gain.data();
-    const double* __restrict moduli = moduli_.data();
-    const double* __restrict scale = composed ? header.data() + scale_offset : unit_.data();
-    const double* __restrict shift = scale + m;
-    const double* __restrict map = composed ? header.data() + map_offset() : unit_.data() + 2 * m;
-    double* __restrict weight = scratch_.data();
-    double* __restrict next = weight + m;
-    step.weight = weight;
-    step.next = next;
-    step.increment = depth_end - depth_start;
-    step.rate = step.increment / coefficients_.time_step;
-    double common = g_inf_ * depth_end + viscosity_ * step.rate;
-    for (std::size_t k = 0; k < m; ++k) {
-        common += moduli[k] * (decay[k] * shift[k] + gain[k] * step.increment);
-        weight[k] = moduli[k] * decay[k] * scale[k];
-    }
-    step.common = common;
-    const double contacts = header[contacts_offset];
-    // A signed conversion (one instruction; touched <= N elements).
-    step.free = static_cast<double>(static_cast<std::int64_t>(touched)) > contacts;
-    bool certain = true;
-    // Lower bounds of the end stresses in contact (G_k E_k A_k > 0: each is at least common - G_inf max g_i +
-    // sum_k G_k E_k A_k min h^_k,i) and of the free surfaces' clearance g_i + w_i - d1 (from the extremes of w^, h^
-    // by the signs of F P's first row); where one is negative, each element's (no_event).
-    if (contacts > 0.0) {
-        const double* __restrict floor = header.data() + scale_offset + 3 * m;
-        double lower = common - g_inf_ * header[outermost_offset];
-        for (std::size_t k = 0; k < m; ++k) lower += weight[k] * floor[k];
-        step.least_stress = lower;
-        certain = lower >= 0.0;
-    }
-    if (step.free) {
-        // F P = D P + u (c^T P), D = diag(1, E_k), u = (1, B_k), c the free increment (Foundation::begin_step).
-        const double* __restrict increment = free_increment_.data();
-        for (std::size_t j = 0; j < order; ++j) {
-            double projection = 0.0;
-            for (std::size_t l = 0; l < order; ++l) projection += increment[l] * map[l * order + j];
-            next[j] = map[j] + projection;
-            for (std::size_t r = 1; r < order; ++r) {
-                next[r * order + j] = decay[r - 1] * map[r * order + j] + gain[r - 1] * projection;
-            }
-        }
-        if (certain) {
-            const double* __restrict free_floor = header.data() + map_offset() + order * order;
-            const double* __restrict free_ceiling = free_floor + order;
-            double lower = header[innermost_free_offset] - depth_end;
-            for (std::size_t j = 0; j < order; ++j) {
-                lower += next[j] * (next[j] >= 0.0 ? free_floor[j] : free_ceiling[j]);
-            }
-            certain = lower >= 0.0;
-        }
-    }
-    return certain || no_event(touched, m, elements.w, elements.flags, elements.h, elements.stride, g_inf_, common,
-                               depth_end, profile_.data(), weight, step.free ? next : map);
-}
-
 bool ComposedNormalStep::trial_force(std::span<const double> header, const AttachedElements& elements,
                                      double depth_start, double depth_end, double& force) const {
     return with_branches(branches_, [&](auto m) {
@@ -188,56 +107,21 @@ bool ComposedNormalStep::trial_force(std::span<const double> header, const Attac
     });
 }
 
-template <class Branches>
-double ComposedNormalStep::sum_force(std::span<const double> header, const Step& step, Branches m) const {
-    const double* hat_sum = header.data() + scale_offset + 2 * m;
-    // F_N = 8 dx sum_i sigma_i (eq. 21, both halves) over the elements in contact.
-    double sum = header[contacts_offset] * step.common - g_inf_ * header[profile_sum_offset];
-    for (std::size_t k = 0; k < m; ++k) sum += step.weight[k] * hat_sum[k];
-    return 2.0 * normal_stiffness_factor * spacing_ * sum;
-}
-
 bool ComposedNormalStep::advance(std::span<double> header, const AttachedElements& elements, double depth_start,
                                  double depth_end, double& force, double& least_stress) const {
     return with_branches(branches_, [&](auto m) {
-        return advance_with(header, elements, depth_start, depth_end, force, least_stress, m);
+        Step step;
+        if (!prepare_with(header, elements, depth_start, depth_end, step, m)) return false;
+        force = take_with(header, elements, depth_end, step, m);
+        least_stress = step.least_stress;
+        return true;
     });
 }
 
-template <class Branches>
-bool ComposedNormalStep::advance_with(std::span<double> header, const AttachedElements& elements,
-                                      double depth_start, double depth_end, double& force, double& least_stress,
-                                      Branches m) const {
-    Step step;
-    if (!prepare_with(header, elements, depth_start, depth_end, step, m)) return false;
-    force = sum_force(header, step, m);
-    least_stress = step.least_stress;
-    const std::size_t order = m + 1;
-    const bool composed = header[composed_offset] != 0.0;
-    double* scale = header.data() + scale_offset;
-    double* shift = scale + m;
-    double smallest = 1.0;
-    for (std::size_t k = 0; k < m; ++k) {
-        const double decay = coefficients_.decay[k];
-        scale[k] = decay * (composed ? scale[k] : 1.0);
-        shift[k] = decay * (composed ? shift[k] : 0.0) + coefficients_.gain[k] * step.increment;
-        smallest = std::min(smallest, scale[k]);
-    }
-    if (step.free) {
-        double largest = 0.0;
-        for (std::size_t j = 0; j < order * order; ++j) largest = std::max(largest, std::abs(step.next[j]));
-        std::copy(step.next, step.next + order * order, header.data() + map_offset());
-        smallest = std::min(smallest, largest);
-    } else if (!composed) {
-        std::copy(unit_.data() + 2 * m, unit_.data() + 2 * m + order * order, header.data() + map_offset());
-    }
-    header[composed_offset] = 1.0;
-    header[rate_offset] = step.rate;
-    // A composition factor this small would lose the written values' digits: the elements are written again.
-    if (smallest < smallest_factor && write(header, elements, depth_end)) {
-        summarise(header, elements, header[rate_offset]);
-    }
-    return true;
+bool ComposedNormalStep::no_event(const AttachedElements& elements, double common, double depth,
+                                  const double* weight, const double* row) const {
+    return no_event_pass(elements.touched, branches_, elements.w, elements.flags, elements.h, elements.stride,
+                                g_inf_, common, depth, profile_.data(), weight, row);
 }
 
 void ComposedNormalStep::element(std::span<const double> header, const double* w, const double* flags,

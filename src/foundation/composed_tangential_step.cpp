@@ -5,17 +5,14 @@
 #include <cstdint>
 #include <limits>
 
+#include "composed_held_steps.hpp"
 #include "with_branches.hpp"
 
 namespace mdr::foundation {
+
+using namespace composed_tangential;  // the header's entries and constants
+
 namespace {
-
-constexpr double tangential_stiffness_factor = 8.0 / 3.0;  // k_x = (8/3) G dx, eq. (11), (41)
-constexpr double smallest_factor = 1e-150;  // a composition factor below: the elements are written (as the normal's)
-
-// Header entries (see the class's comment).
-constexpr std::size_t shift_offset = 4, hat_sum_offset = 6, hat_largest_offset = 8;
-constexpr std::size_t scale_offset = ComposedTangentialStep::factors_offset;
 
 // Whether every element i < count in contact (flag 1) sticks at the end of the step: its stress t_i = common +
 // G_inf u^_i + sum_k weight_k h^_k,i lies inside the friction circle of radius per_load max(q_i, 0) (eq. 50, the
@@ -57,6 +54,8 @@ ComposedTangentialStep::ComposedTangentialStep(const rheology::Rheology& materia
     for (const auto& term : material.terms()) moduli_.push_back(term.modulus);
 }
 
+std::size_t ComposedTangentialStep::map_offset() const { return composed_tangential::map_offset(branches_); }
+
 std::size_t ComposedTangentialStep::header_size(std::size_t branches) {
     return branches * branches + 8 * branches + 10;
 }
@@ -78,33 +77,6 @@ bool ComposedTangentialStep::prepare(std::span<const double> header, PlanarVecto
     return with_branches(branches_, [&](auto m) { return prepare_with(header, increment, least_load, step, m); });
 }
 
-// Inlined into its callers (prepare, advance_if_certain), so that a held step dispatches on M once.
-template <class Branches>
-[[gnu::always_inline]] inline bool ComposedTangentialStep::prepare_with(std::span<const double> header,
-                                                                       PlanarVector increment, double least_load,
-                                                                       Step& step, Branches m) const {
-    const double* __restrict scale = header.data() + scale_offset;
-    const double* __restrict shift = scale + m;  // C_k,x then C_k,y
-    const double* __restrict largest = scale + 5 * m;
-    const double* __restrict weight = weight_.data();
-    double* __restrict composed_weight = scratch_.data();
-    // S = G_inf U + sum_k G_k E_k C_k + k du: the relaxed stress of u = u^ + U, h_k = A_k h^_k + C_k less its
-    // element's part, plus the stick branch's k du (eq. 50; the layer's relaxed_stress in its order); the bound of
-    // |t_i|: |S| + G_inf max |u^| + sum_k G_k E_k A_k max |h^_k|.
-    double x = g_inf_ * header[shift_offset], y = g_inf_ * header[shift_offset + 1];
-    double bound = g_inf_ * header[hat_largest_offset];
-    for (std::size_t k = 0; k < m; ++k) {
-        x += weight[k] * shift[k];
-        y += weight[k] * shift[m + k];
-        composed_weight[k] = weight[k] * scale[k];
-        bound += composed_weight[k] * largest[k];
-    }
-    step.increment = increment;
-    step.common = {x + coefficients_.stiffness * increment[0], y + coefficients_.stiffness * increment[1]};
-    bound += std::sqrt(step.common[0] * step.common[0] + step.common[1] * step.common[1]);
-    return bound <= per_load_ * least_load;
-}
-
 bool ComposedTangentialStep::sticks(const PlanarElements& elements, const Step& step, const double* loads) const {
     return all_stick(elements.touched, branches_, elements.stride, step.common[0], step.common[1], g_inf_, per_load_,
                      scratch_.data(), elements.flags, loads, elements.u, elements.h);
@@ -112,20 +84,6 @@ bool ComposedTangentialStep::sticks(const PlanarElements& elements, const Step& 
 
 PlanarVector ComposedTangentialStep::force(std::span<const double> header, const Step& step) const {
     return with_branches(branches_, [&](auto m) { return force_with(header, step, m); });
-}
-
-template <class Branches>
-PlanarVector ComposedTangentialStep::force_with(std::span<const double> header, const Step& step, Branches m) const {
-    const double* hat_sum = header.data() + scale_offset + 3 * m;  // x then y
-    const double contacts = header[contacts_offset];
-    double x = contacts * step.common[0] + g_inf_ * header[hat_sum_offset];
-    double y = contacts * step.common[1] + g_inf_ * header[hat_sum_offset + 1];
-    for (std::size_t k = 0; k < m; ++k) {
-        x += scratch_[k] * hat_sum[k];
-        y += scratch_[k] * hat_sum[m + k];
-    }
-    const double factor = 2.0 * tangential_stiffness_factor * spacing_;  // eq. (46), both halves
-    return {factor * x, factor * y};
 }
 
 void ComposedTangentialStep::advance(std::span<double> header, const PlanarElements& elements,
@@ -140,54 +98,6 @@ bool ComposedTangentialStep::advance_if_certain(std::span<double> header, const 
         advance_with(header, elements, step, m);
         return true;
     });
-}
-
-// Inlined into its callers (advance, advance_if_certain), as prepare_with.
-template <class Branches>
-[[gnu::always_inline]] inline void ComposedTangentialStep::advance_with(std::span<double> header,
-                                                                       const PlanarElements& elements,
-                                                                       const Step& step, Branches m) const {
-    const std::size_t order = m + 1;
-    const PlanarVector total = force_with(header, step, m);
-    header[force_offset] = total[0];
-    header[force_offset + 1] = total[1];
-    header[shift_offset] += step.increment[0];
-    header[shift_offset + 1] += step.increment[1];
-    double* scale = header.data() + scale_offset;
-    double* shift = scale + m;
-    double smallest = 1.0;
-    for (std::size_t k = 0; k < m; ++k) {
-        const double decay = coefficients_.decay[k], gain = coefficients_.gain[k];
-        scale[k] *= decay;
-        shift[k] = decay * shift[k] + gain * step.increment[0];
-        shift[m + k] = decay * shift[m + k] + gain * step.increment[1];
-        smallest = std::min(smallest, scale[k]);
-    }
-    // A signed conversion (one instruction; touched <= N elements), as the normal step's.
-    if (static_cast<double>(static_cast<std::int64_t>(elements.touched)) > header[contacts_offset]) {
-        // F P = D P + b (c^T P), D = diag(1, E_k), b = (1, B_k), c the free increment (the same for x and y).
-        double* map = header.data() + map_offset();
-        double* next = scratch_.data() + m;
-        const double* increment = free_increment_.data();
-        double largest = 0.0;
-        for (std::size_t j = 0; j < order; ++j) {
-            double projection = 0.0;
-            for (std::size_t l = 0; l < order; ++l) projection += increment[l] * map[l * order + j];
-            next[j] = map[j] + projection;
-            for (std::size_t r = 1; r < order; ++r) {
-                next[r * order + j] = coefficients_.decay[r - 1] * map[r * order + j] +
-                                      coefficients_.gain[r - 1] * projection;
-            }
-        }
-        for (std::size_t j = 0; j < order * order; ++j) largest = std::max(largest, std::abs(next[j]));
-        std::copy(next, next + order * order, map);
-        if (largest > 0.0) smallest = std::min(smallest, largest);  // a map of zeros is exact (an elastic element)
-    }
-    // A composition factor this small would lose the written values' digits: the elements are written again.
-    if (smallest < smallest_factor) {
-        write(header, elements);
-        summarise(header, elements, total);
-    }
 }
 
 void ComposedTangentialStep::element(std::span<const double> header, const double* u, const double* h,

@@ -203,6 +203,12 @@ private:
     void take_normal_state(std::span<double> state);
     void take_frame(std::span<const double> state);
     void step_normal(double overlap);
+    void end_composed_normal(double overlap);
+    void end_normal(double overlap);
+    void end_tangential(PlanarVector displacement, PlanarVector increment);
+    bool step_held(double overlap, PlanarVector displacement);
+    template <class Branches>
+    bool step_held_with(double overlap, PlanarVector displacement, Branches branches);
     void step_normal_by_elements(double overlap);
     void step_tangential(PlanarVector displacement);
     bool step_composed_tangential(PlanarVector increment);

@@ -4,6 +4,7 @@
 /// DEM contact holds its overlap for most steps): the elements' updates are composed instead of applied.
 
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -91,17 +92,37 @@ public:
     void line_loads(std::span<const double> header, const AttachedElements& elements, double depth,
                     std::span<double> out) const;
 
-private:
-    struct Step;
+    /// What a step in the composed form derives before it is taken (prepare_with).
+    struct Step {
+        double common = 0.0;     ///< the end stress common to the elements in contact, eq. (16): G_inf d1 + ...
+        double increment = 0.0;  ///< d1 - d0
+        double rate = 0.0;       ///< the dashpots' (secant) rate
+        bool free = false;       ///< some touched element is out of contact
+        double least_stress = std::numeric_limits<double>::infinity();  ///< a lower bound of the end stresses in
+                                                                        ///< contact (+infinity when none is)
+        double* weight = nullptr;   ///< G_k E_k A_k (M; in this object until the next prepare_with)
+        double* next = nullptr;     ///< F P, row-major (order M + 1)
+    };
+    // The held step's bodies for a branch count `branches` M (a std::integral_constant for M = 1, 2, 3: with_branches),
+    // defined inline in src/foundation/composed_held_steps.hpp, for a caller that dispatches on M once for more than
+    // one step (the DEM contact law's held step): advance is prepare_with and, where it returns true, take_with.
+    /// Derives the step from `depth_start` to `depth_end` [m] into `step` and returns whether advance takes it in the
+    /// composed form (no entry or exit, the depth within the foundation). Writes no header or element.
     template <class Branches>
     bool prepare_with(std::span<const double> header, const AttachedElements& elements, double depth_start,
                       double depth_end, Step& step, Branches branches) const;
+    /// Takes the step prepare_with derived (and found composable) to `depth_end` in the header and returns F_N [N]
+    /// at its end (eq. 21).
+    template <class Branches>
+    double take_with(std::span<double> header, const AttachedElements& elements, double depth_end, const Step& step,
+                     Branches branches) const;
+
+private:
     template <class Branches>
     double sum_force(std::span<const double> header, const Step& step, Branches branches) const;
-    template <class Branches>
-    bool advance_with(std::span<double> header, const AttachedElements& elements, double depth_start,
-                      double depth_end, double& force, double& least_stress, Branches branches) const;
-    std::size_t map_offset() const { return 6 + 4 * branches_; }
+    bool no_event(const AttachedElements& elements, double common, double depth, const double* weight,
+                  const double* row) const;
+    std::size_t map_offset() const;
 
     std::size_t branches_;
     double g_inf_;

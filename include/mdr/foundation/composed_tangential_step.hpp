@@ -104,17 +104,23 @@ public:
     void element(std::span<const double> header, const double* u, const double* h, const double* flags,
                  std::size_t stride, std::size_t i, double* current) const;
 
-private:
-    // The steps with the branch count M a constant for M = 1, 2, 3 (with_branches.hpp).
+    // The steps' bodies for a branch count `branches` M (a std::integral_constant for M = 1, 2, 3: with_branches),
+    // defined inline in src/foundation/composed_held_steps.hpp, for a caller that dispatches on M once for more than
+    // one step (the DEM contact law's held step): prepare, force and advance dispatch on M and call them.
+    /// prepare for a given M.
     template <class Branches>
     bool prepare_with(std::span<const double> header, PlanarVector increment, double least_load, Step& step,
                       Branches branches) const;
+    /// force for a given M.
     template <class Branches>
     PlanarVector force_with(std::span<const double> header, const Step& step, Branches branches) const;
+    /// advance for a given M.
     template <class Branches>
     void advance_with(std::span<double> header, const PlanarElements& elements, const Step& step,
                       Branches branches) const;
-    std::size_t map_offset() const { return factors_offset + 6 * branches_; }
+
+private:
+    std::size_t map_offset() const;
 
     std::size_t branches_;
     double g_inf_;

@@ -166,6 +166,55 @@ TEST(DemContactLaw, AFrictionlessSpatialStepIsTheNormalStepAlone) {
     EXPECT_NO_THROW(spatial.check(a));
 }
 
+// advance_spatial with the normal along z and the frame's axis along x (exactly: the first increment is along x) is the
+// planar step of the increment's x and y components, bit for bit: the held step (ContactLaw::step_held, the normal
+// and tangential steps composed for one dispatch on M) writes the state and gives the force and work the general
+// path gives, as do the steps it leaves to the general path (entries and exits, slip). M = 1 and 2.
+TEST(DemContactLaw, AHeldSpatialStepIsThePlanarStepToTheBit) {
+    for (const std::size_t branches : {1, 2}) {
+        const auto material = branches == 1 ? rheology::Rheology::prony(1e6, {{3e6, 1e-3}})
+                                            : rheology::Rheology::prony(1e6, {{3e6, 1e-3}, {1e6, 3e-5}});
+        ContactLaw spatial(material, 0.005, 0.3, 50, 1e-3, 2e-6), planar(material, 0.005, 0.3, 50, 1e-3, 2e-6);
+        std::vector<double> a(spatial.state_size()), b(planar.state_size());
+        spatial.initialise(a);
+        planar.initialise(b);
+        // The composed tangential step's flag (contact_law.hpp's layout): held steps find it set before and after.
+        const std::size_t tangential_flag = law_header + foundation::ComposedNormalStep::header_size(branches) + 3 +
+                                            50 * (2 + branches) + foundation::ComposedTangentialStep::composed_offset;
+        PlanarVector displacement{0.0, 0.0};
+        int held = 0, slipping = 0;
+        for (int n = 1; n < 1200; ++n) {
+            // Loaded over 250 steps, then held with a small wobble; the tangential motion sticks, then slides.
+            const double overlap = overlap_at(std::min(n, 250), 1.0) * (1.0 + 1e-3 * std::sin(0.05 * n));
+            const double scale = n < 800 ? 0.02 : 3.0;
+            const PlanarVector increment{displacement_at(n, scale) - displacement_at(n - 1, scale),
+                                         displacement_at(n, 0.7 * scale) - displacement_at(n - 3, 0.7 * scale)};
+            displacement = {displacement[0] + increment[0], displacement[1] + increment[1]};
+            const bool composed_before = a[tangential_flag] != 0.0;
+            const SpatialVector force = spatial.advance_spatial(
+                a, overlap, {0.0, 0.0, 1.0}, {increment[0], n == 1 ? 0.0 : increment[1], 1e-7 * std::sin(0.1 * n)});
+            if (n == 1) displacement[1] -= increment[1];  // the first increment along x: the frame's axis
+            planar.advance(b, overlap, displacement);
+            const PlanarVector expected = planar.tangential_force();
+            ASSERT_EQ(force, (SpatialVector{expected[0], expected[1], 0.0})) << "M = " << branches << ", step " << n;
+            ASSERT_EQ(spatial.normal_force(), planar.normal_force()) << "M = " << branches << ", step " << n;
+            ASSERT_EQ(spatial.step_work(), planar.step_work()) << "M = " << branches << ", step " << n;
+            ASSERT_EQ(spatial.contact_count(), planar.contact_count()) << "M = " << branches << ", step " << n;
+            for (std::size_t i = 0; i < a.size(); ++i) {
+                if (i < 2 || i >= law_header) {
+                    ASSERT_EQ(a[i], b[i]) << "M = " << branches << ", state[" << i << "], step " << n;
+                }
+            }
+            ASSERT_EQ((std::vector<double>(a.begin() + 2, a.begin() + law_header)),
+                      (std::vector<double>{1.0, 0.0, 0.0, 1.0}));  // the frame's axis and handedness stay
+            held += composed_before && a[tangential_flag] != 0.0 ? 1 : 0;
+            slipping += a[tangential_flag] == 0.0 ? 1 : 0;
+        }
+        EXPECT_GT(held, 500) << "M = " << branches;  // both paths taken
+        EXPECT_GT(slipping, 100) << "M = " << branches;
+    }
+}
+
 #if MDR_COUNTS_ALLOCATIONS
 TEST(DemContactLaw, AStepAllocatesNothing) {
     auto law = make_law();
