@@ -38,6 +38,14 @@ struct FreeParameter {
     double domain_lower = -std::numeric_limits<double>::infinity();
 };
 
+/// The coordinate a free parameter of a case or a candidate is fitted on, the one rule for both (docs/case-format.md,
+/// "[fit]"): its logarithm for a parameter > 0 at its start and lower bound whose domain is unbounded above (a
+/// modulus, a time, a viscosity, a length); linearly otherwise, in particular for a key of a bounded domain
+/// (0, domain_upper) (an exponent, a springpot's order, a cone's angle), whose model does not flatten towards 0 while
+/// its Jacobian column on the logarithm, x dr/dx, vanishes there (docs/performance.md, "The springpot candidate's
+/// order, fitted linearly"). The value for FreeParameter::logarithmic.
+bool fitted_on_logarithm(const FreeParameter& parameter);
+
 
 /// How each curve's contact point (the data's depth at first contact) is found.
 enum class ContactPointMode {
