@@ -107,9 +107,7 @@ std::string material_text(const Material& material, const double* values) {
     return fmt::format("model = \"prony\"\nG_inf = {}\nterms = [{}]\n", rheology.equilibrium_modulus(), terms);
 }
 
-// A candidate's free parameter, on the coordinate of the one rule for a case's and a candidate's keys
-// (fitted_on_logarithm): its logarithm for a modulus, a time, a viscosity; linearly for a key of a bounded domain
-// (0, domain_upper) or a lower bound 0.
+// A candidate's free parameter, on the coordinate of a case's keys (fitted_on_logarithm).
 FreeParameter free_parameter(std::string key, double start, double lower, double upper,
                              double domain_upper = std::numeric_limits<double>::infinity(),
                              double domain_lower = -std::numeric_limits<double>::infinity()) {
@@ -169,13 +167,14 @@ Material spectrum(const SpectrumSettings& settings, double modulus, const Window
 // it; a key of a bounded domain (0, L) (ModelParameter::upper_limit: an exponent alpha, beta < 1) L/2 in
 // [0.01, 0.99] L. Optional keys keep their defaults. A model that stands as a series is converted over `lags`.
 // Moduli, times and viscosities are fitted on their logarithm; a key of a bounded domain linearly (its scale L/2,
-// ParameterScales), by the rule of a case's keys too (fitted_on_logarithm, through free_parameter): its model does not flatten towards 0 (a springpot's G(t) = c t^-alpha / Gamma(1 - alpha) has
-// dG/dalpha = G (psi(1 - alpha) - ln t), -> c (-gamma - ln t) as alpha -> 0), but on ln(alpha) its Jacobian column
-// alpha dr/dalpha vanishes there. On ln(alpha) the springpot candidate of the JPK record (docs/performance.md, "The
-// springpot candidate's order, fitted linearly") reached alpha ~0.01 at its second step, where every Gauss-Newton step
-// ran to alpha's upper bound 0.99 and the projected line search cut it to 1e-3 of its length; such a step still counts
-// as successful (its decrease 0.002 of the model's > Ceres' min_relative_decrease 1e-3), so the trust region only
-// halved per iteration: 16 runs at 0.99 of ~2.6 s each, 42 s of the 44.5 s fit.
+// ParameterScales), by the rule of a case's keys (fitted_on_logarithm, through free_parameter): its model does not
+// flatten towards 0 (a springpot's G(t) = c t^-alpha / Gamma(1 - alpha) has dG/dalpha = G (psi(1 - alpha) - ln t),
+// -> c (-gamma - ln t) as alpha -> 0), but on ln(alpha) its Jacobian column alpha dr/dalpha vanishes there. On
+// ln(alpha) the springpot candidate of the JPK record (docs/performance.md, "The springpot candidate's order, fitted
+// linearly") reached alpha ~0.01 at its second step, where every Gauss-Newton step ran to alpha's upper bound 0.99 and
+// the projected line search cut it to 1e-3 of its length; such a step still counts as successful (its decrease 0.002
+// of the model's > Ceres' min_relative_decrease 1e-3), so the trust region only halved per iteration: 16 runs at 0.99
+// of ~2.6 s each, 42 s of the 44.5 s fit.
 Material registry_material(const rheology::MaterialModel& model, double modulus, const Window& window,
                            const rheology::TimeWindow& lags) {
     const double middle = std::sqrt(window.shortest * window.longest);
