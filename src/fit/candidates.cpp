@@ -107,21 +107,31 @@ std::string material_text(const Material& material, const double* values) {
     return fmt::format("model = \"prony\"\nG_inf = {}\nterms = [{}]\n", rheology.equilibrium_modulus(), terms);
 }
 
+// A candidate's free parameter, on the coordinate of a case's keys (fitted_on_logarithm).
+FreeParameter free_parameter(std::string key, double start, double lower, double upper,
+                             double domain_upper = std::numeric_limits<double>::infinity(),
+                             double domain_lower = -std::numeric_limits<double>::infinity()) {
+    FreeParameter parameter{std::move(key), start, lower, upper, true, domain_upper, domain_lower};
+    parameter.logarithmic = fitted_on_logarithm(parameter);
+    return parameter;
+}
+
 Material elastic(double start) {
-    return {"elastic", {{"material.G", start, 1e-6 * start, 1e6 * start, true}}, 0, {}, nullptr, {}};
+    return {"elastic", {free_parameter("material.G", start, 1e-6 * start, 1e6 * start)}, 0, {}, nullptr, {}};
 }
 
 // N terms: G_inf = G_e / 2, G_k = G_e / N, times evenly spread in log over the window.
 Material prony(const std::string& name, std::size_t terms, double modulus, const Window& window) {
     Material material{
-        name, {{"material.G_inf", 0.5 * modulus, 1e-6 * modulus, 1e4 * modulus, true}}, terms, {}, nullptr, {}};
+        name, {free_parameter("material.G_inf", 0.5 * modulus, 1e-6 * modulus, 1e4 * modulus)}, terms, {}, nullptr, {}};
     for (std::size_t k = 0; k < terms; ++k) {
         const double x = (static_cast<double>(k) + 0.5) / static_cast<double>(terms);
         const double tau = std::pow(window.shortest, 1.0 - x) * std::pow(window.longest, x);
-        material.parameters.push_back({fmt::format("material.terms[{}][0]", k), modulus / static_cast<double>(terms),
-                                       1e-6 * modulus, 1e4 * modulus, true});
-        material.parameters.push_back(
-            {fmt::format("material.terms[{}][1]", k), tau, 1e-2 * window.shortest, 1e2 * window.longest, true});
+        material.parameters.push_back(free_parameter(fmt::format("material.terms[{}][0]", k),
+                                                     modulus / static_cast<double>(terms), 1e-6 * modulus,
+                                                     1e4 * modulus));
+        material.parameters.push_back(free_parameter(fmt::format("material.terms[{}][1]", k), tau,
+                                                     1e-2 * window.shortest, 1e2 * window.longest));
     }
     return material;
 }
@@ -143,10 +153,10 @@ Material spectrum(const SpectrumSettings& settings, double modulus, const Window
     }
     const double start = 0.5 * modulus / static_cast<double>(material.grid.size());
     constexpr double infinite = std::numeric_limits<double>::infinity();  // moduli >= 0: the domain [0, infinity)
-    material.parameters.push_back({"material.G_inf", 0.5 * modulus, 0.0, 1e3 * modulus, false, infinite, 0.0});
+    material.parameters.push_back(free_parameter("material.G_inf", 0.5 * modulus, 0.0, 1e3 * modulus, infinite, 0.0));
     for (std::size_t j = 0; j < material.grid.size(); ++j) {
         material.parameters.push_back(
-            {fmt::format("spectrum.G[{}]", j), start, 0.0, 1e3 * modulus, false, infinite, 0.0});
+            free_parameter(fmt::format("spectrum.G[{}]", j), start, 0.0, 1e3 * modulus, infinite, 0.0));
     }
     return material;
 }
@@ -157,13 +167,14 @@ Material spectrum(const SpectrumSettings& settings, double modulus, const Window
 // it; a key of a bounded domain (0, L) (ModelParameter::upper_limit: an exponent alpha, beta < 1) L/2 in
 // [0.01, 0.99] L. Optional keys keep their defaults. A model that stands as a series is converted over `lags`.
 // Moduli, times and viscosities are fitted on their logarithm; a key of a bounded domain linearly (its scale L/2,
-// ParameterScales): its model does not flatten towards 0 (a springpot's G(t) = c t^-alpha / Gamma(1 - alpha) has
-// dG/dalpha = G (psi(1 - alpha) - ln t), -> c (-gamma - ln t) as alpha -> 0), but on ln(alpha) its Jacobian column
-// alpha dr/dalpha vanishes there. On ln(alpha) the springpot candidate of the JPK record (docs/performance.md, "The
-// springpot candidate's order, fitted linearly") reached alpha ~0.01 at its second step, where every Gauss-Newton step
-// ran to alpha's upper bound 0.99 and the projected line search cut it to 1e-3 of its length; such a step still counts
-// as successful (its decrease 0.002 of the model's > Ceres' min_relative_decrease 1e-3), so the trust region only
-// halved per iteration: 16 runs at 0.99 of ~2.6 s each, 42 s of the 44.5 s fit.
+// ParameterScales), by the rule of a case's keys (fitted_on_logarithm, through free_parameter): its model does not
+// flatten towards 0 (a springpot's G(t) = c t^-alpha / Gamma(1 - alpha) has dG/dalpha = G (psi(1 - alpha) - ln t),
+// -> c (-gamma - ln t) as alpha -> 0), but on ln(alpha) its Jacobian column alpha dr/dalpha vanishes there. On
+// ln(alpha) the springpot candidate of the JPK record (docs/performance.md, "The springpot candidate's order, fitted
+// linearly") reached alpha ~0.01 at its second step, where every Gauss-Newton step ran to alpha's upper bound 0.99 and
+// the projected line search cut it to 1e-3 of its length; such a step still counts as successful (its decrease 0.002
+// of the model's > Ceres' min_relative_decrease 1e-3), so the trust region only halved per iteration: 16 runs at 0.99
+// of ~2.6 s each, 42 s of the 44.5 s fit.
 Material registry_material(const rheology::MaterialModel& model, double modulus, const Window& window,
                            const rheology::TimeWindow& lags) {
     const double middle = std::sqrt(window.shortest * window.longest);
@@ -172,15 +183,15 @@ Material registry_material(const rheology::MaterialModel& model, double modulus,
         if (!parameter.required) continue;
         const std::string key = "material." + parameter.key;
         if (parameter.unit == "Pa") {
-            material.parameters.push_back({key, 0.5 * modulus, 1e-6 * modulus, 1e4 * modulus, true});
+            material.parameters.push_back(free_parameter(key, 0.5 * modulus, 1e-6 * modulus, 1e4 * modulus));
         } else if (parameter.unit == "s") {
-            material.parameters.push_back({key, middle, 1e-2 * window.shortest, 1e2 * window.longest, true});
+            material.parameters.push_back(free_parameter(key, middle, 1e-2 * window.shortest, 1e2 * window.longest));
         } else if (std::isfinite(parameter.upper_limit)) {
             const double limit = parameter.upper_limit;
-            material.parameters.push_back({key, 0.5 * limit, 0.01 * limit, 0.99 * limit, false, limit});
+            material.parameters.push_back(free_parameter(key, 0.5 * limit, 0.01 * limit, 0.99 * limit, limit));
         } else {
             const double start = parameter.unit == "Pa s" ? modulus * middle : modulus * std::sqrt(middle);
-            material.parameters.push_back({key, start, 1e-8 * start, 1e8 * start, true});
+            material.parameters.push_back(free_parameter(key, start, 1e-8 * start, 1e8 * start));
         }
     }
     return material;

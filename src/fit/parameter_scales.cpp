@@ -5,6 +5,10 @@
 
 namespace mdr::fit {
 
+bool fitted_on_logarithm(const FreeParameter& parameter) {
+    return parameter.lower > 0.0 && parameter.start > 0.0 && !std::isfinite(parameter.domain_upper);
+}
+
 double ParameterScales::to_internal(std::size_t j, double value) const {
     return scale[j] == 0.0 ? std::log(value) : value / scale[j];
 }

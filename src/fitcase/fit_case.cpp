@@ -101,7 +101,6 @@ fit::FreeParameter read_parameter(const toml::table& fit, const io::CaseTemplate
         if (pair.size() != 2) throw InvalidInput("fit.bounds." + key, bounds.text(key), "must be [lower, upper]");
         parameter.lower = pair[0];
         parameter.upper = pair[1];
-        parameter.logarithmic = parameter.lower > 0.0 && parameter.start > 0.0;
     } else if (parameter.start > 0.0) {
         // Four decades either side of the start, within the key's physical domain (0, limit) of its registry row:
         // the lower bound keeps 1e-4 of the start's distance to 0, the upper 1e-4 of its distance to a finite limit
@@ -114,6 +113,7 @@ fit::FreeParameter read_parameter(const toml::table& fit, const io::CaseTemplate
         throw InvalidInput("fit.bounds." + key, "(missing)",
                            fmt::format("is required: the start value {} is not > 0", format_value(parameter.start)));
     }
+    parameter.logarithmic = fit::fitted_on_logarithm(parameter);
     return parameter;
 }
 

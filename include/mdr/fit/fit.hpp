@@ -25,8 +25,8 @@ struct FreeParameter {
     double start = 0.0;  ///< start value
     double lower = 0.0;  ///< lower bound (> 0 for a parameter fitted on a logarithmic scale)
     double upper = 0.0;  ///< upper bound
-    /// Fitted on a logarithmic scale: moduli, times, radii (every parameter that must stay > 0). The standard
-    /// error is then first order in the relative change, and the bounds are > 0.
+    /// Fitted on a logarithmic scale (a case's and a candidate's keys: fitted_on_logarithm; moduli, times, radii).
+    /// The standard error is then first order in the relative change, and the bounds are > 0.
     bool logarithmic = true;
     /// The open upper end of the physical domain (0, domain_upper) of a parameter bounded above (its registry row,
     /// io::free_key_upper_limit: 1 for an exponent or a springpot order, 90 for a cone's angle); infinity otherwise.
@@ -37,6 +37,14 @@ struct FreeParameter {
     /// -infinity (the default) for a signed parameter of a caller's own model.
     double domain_lower = -std::numeric_limits<double>::infinity();
 };
+
+/// The coordinate a free parameter of a case or a candidate is fitted on, the one rule for both (docs/case-format.md,
+/// "Coordinates"): its logarithm for a parameter > 0 at its start and lower bound whose domain is unbounded above (a
+/// modulus, a time, a viscosity, a length); linearly otherwise, in particular for a key of a bounded domain
+/// (0, domain_upper) (an exponent, a springpot's order, a cone's angle), whose model does not flatten towards 0 while
+/// its Jacobian column on the logarithm, x dr/dx, vanishes there (docs/performance.md, "The springpot candidate's
+/// order, fitted linearly"). The value for FreeParameter::logarithmic.
+bool fitted_on_logarithm(const FreeParameter& parameter);
 
 
 /// How each curve's contact point (the data's depth at first contact) is found.

@@ -74,5 +74,21 @@ force = "F"
     EXPECT_EQ(parameter(fit_case, "indenter.half_angle_deg").domain_upper, 90.0);
 }
 
+TEST(FitCaseDefaultBounds, AKeyOfABoundedDomainIsFittedLinearlyWithOrWithoutBounds) {
+    // fit::fitted_on_logarithm, the rule of the candidates' keys too: a modulus on its logarithm; an exponent and a
+    // cone's angle linearly, with default bounds (beta, the angle) or a user's bounds inside the domain (beta).
+    for (const std::string bounds : {"", "bounds = {\"material.beta\" = [0.01, 0.9]}\n"}) {
+        const FitCase fit_case = parse_fit_case(
+            "[material]\nmodel = \"power_law\"\nG0 = 1000.0\nbeta = 0.2\n"
+            "[indenter]\nshape = \"cone\"\nhalf_angle_deg = 35.0\n"
+            "[fit]\nfree = [\"material.G0\", \"material.beta\", \"indenter.half_angle_deg\"]\n" + bounds +
+                "[[fit.data]]\nfile = \"curve.csv\"\ntime = \"t\"\ndepth = \"d\"\nforce = \"F\"\n",
+            "case.toml", ".");
+        EXPECT_TRUE(parameter(fit_case, "material.G0").logarithmic) << bounds;
+        EXPECT_FALSE(parameter(fit_case, "material.beta").logarithmic) << bounds;  // before: on ln(beta)
+        EXPECT_FALSE(parameter(fit_case, "indenter.half_angle_deg").logarithmic) << bounds;
+    }
+}
+
 }  // namespace
 }  // namespace mdr::fitcase
