@@ -44,6 +44,8 @@ set_target_properties(mdrviscoplugin PROPERTIES PREFIX "")
 # symbols hidden) and, within a file, inlined where GCC would (not interposable).
 target_compile_options(mdrviscoplugin PRIVATE -fno-semantic-interposition)
 target_link_options(mdrviscoplugin PRIVATE -Wl,--exclude-libs,ALL)
+# every symbol resolved at the link (mdr, LAMMPS, MPI), not first at `plugin load`
+target_link_options(mdrviscoplugin PRIVATE -Wl,--no-undefined)
 add_dependencies(mdrviscoplugin mdr_lammps)
 set(MDR_LAMMPS_BINARY ${mdr_lammps_prefix}/bin/lmp)
 set(MDR_LAMMPS_LIBRARY_DIR ${mdr_lammps_prefix}/lib)
