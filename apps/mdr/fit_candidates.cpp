@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "interrupt.hpp"
@@ -43,10 +44,17 @@ bool run_model_choice(const fitcase::FitCase& fit_case, const std::vector<fit::C
         fmt::print("spectrum of {} relaxation times ({:.4g} s to {:.4g} s): {}\n", spectrum.relaxation_times.size(),
                    spectrum.relaxation_times.front(), spectrum.relaxation_times.back(), spectrum.result.status);
     } else {
-        fmt::print("{} candidate model(s), ranked by BIC (preferred: {}):\n", choice.fits.size(),
-                   choice.fits[choice.preferred].name);
-        fmt::print("  {:<10} {:>5} {:>12} {:>10} {:>10}  {}\n", "model", "free", "residual/noise", "dAIC", "dBIC",
-                   "status");
+        const auto& preferred = choice.fits[choice.preferred];
+        fmt::print("{} candidate model(s), ranked by BIC (preferred: {}, {}):\n", choice.fits.size(), preferred.name,
+                   preferred.preferable() ? "the best converged fit without undetermined parameters"
+                                          : "the best; no fit converged without undetermined parameters");
+    }
+    // the model column as wide as the longest name (fractional_kelvin_voigt), so that the columns stay aligned
+    std::size_t name_width = 5;
+    for (const auto& fitted : choice.fits) name_width = std::max(name_width, fitted.name.size());
+    if (!fit_case.model_choice.candidates.empty()) {
+        fmt::print("  {:<{}} {:>5} {:>14} {:>10} {:>10}  {}\n", "model", name_width, "free", "residual/noise", "dAIC",
+                   "dBIC", "status");
     }
     for (const auto& fitted : choice.fits) {
         const auto& result = fitted.result;
@@ -55,7 +63,7 @@ bool run_model_choice(const fitcase::FitCase& fit_case, const std::vector<fit::C
         const std::string flags = result.undetermined.empty()
                                       ? ""
                                       : fmt::format(", {} undetermined", result.undetermined.size());
-        fmt::print("  {:<10} {:>5} {:>12} {:>10.1f} {:>10.1f}  {}{}\n", fitted.name, result.free_count,
+        fmt::print("  {:<{}} {:>5} {:>14} {:>10.1f} {:>10.1f}  {}{}\n", fitted.name, name_width, result.free_count,
                    residual_to_noise_text(result), fitted.delta_aic, fitted.delta_bic, result.status, flags);
     }
     for (const auto& entry : choice.fits[choice.preferred].result.undetermined) {

@@ -449,8 +449,7 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
         auto& fitted = choice.fits[i];
         fitted.delta_aic = fitted.result.aic - aic;
         fitted.delta_bic = fitted.result.bic - choice.fits.front().result.bic;
-        const bool sound = fitted.result.converged && fitted.result.undetermined.empty();
-        if (sound && choice.preferred == choice.fits.size()) choice.preferred = i;
+        if (fitted.preferable() && choice.preferred == choice.fits.size()) choice.preferred = i;
     }
     if (choice.preferred == choice.fits.size()) choice.preferred = 0;
     return choice;

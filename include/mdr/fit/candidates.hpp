@@ -24,6 +24,8 @@ struct CandidateFit {
     std::vector<double> relaxation_times;  ///< spectrum: the fixed grid [s], ascending (empty otherwise)
     double delta_aic = 0.0;    ///< AIC minus the smallest AIC of the candidates
     double delta_bic = 0.0;    ///< BIC minus the smallest BIC of the candidates
+    /// Whether this fit may be preferred: converged, with no undetermined parameter.
+    bool preferable() const { return result.converged && result.undetermined.empty(); }
 };
 
 /// The candidates' fits, ranked.
