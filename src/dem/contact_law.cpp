@@ -584,7 +584,8 @@ void ContactLaw::step_tangential_by_elements(PlanarVector increment) {
 // (no element enters or leaves contact) and every element in contact certainly sticks (the tangential header composes
 // and its bound holds), both composed steps for one dispatch on M, their bodies inlined (composed_held_steps.hpp), each
 // prepared before either writes; the state and the workspace as step_normal and step_tangential leave them. Returns
-// false, having written nothing, for any other step (step_normal and step_tangential then take it) and for M > 3.
+// false, having written nothing, for any other step (step_normal and step_tangential then take it) and for M = 0 (an
+// elastic law) or M > 3 (with_branches' std::size_t).
 // After skip_resting_layer. advance and the two-call steps take the general path (the test
 // AHeldSpatialStepIsThePlanarStepToTheBit compares the two).
 [[gnu::always_inline]] inline bool ContactLaw::step_held(double overlap, PlanarVector displacement) {

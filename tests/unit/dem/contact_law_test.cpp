@@ -169,11 +169,14 @@ TEST(DemContactLaw, AFrictionlessSpatialStepIsTheNormalStepAlone) {
 // advance_spatial with the normal along z and the frame's axis along x (exactly: the first increment is along x) is the
 // planar step of the increment's x and y components, bit for bit: the held step (ContactLaw::step_held, the normal
 // and tangential steps composed for one dispatch on M) writes the state and gives the force and work the general
-// path gives, as do the steps it leaves to the general path (entries and exits, slip). M = 1 and 2.
+// path gives, as do the steps it leaves to the general path (entries and exits, slip). M = 1, 2 and 3 (the third
+// branch's tau 1e-7 s against dt 2e-6 s: the composition factors fall below 1e-150 within a few held steps, and both
+// composed steps write their elements again).
 TEST(DemContactLaw, AHeldSpatialStepIsThePlanarStepToTheBit) {
-    for (const std::size_t branches : {1, 2}) {
-        const auto material = branches == 1 ? rheology::Rheology::prony(1e6, {{3e6, 1e-3}})
-                                            : rheology::Rheology::prony(1e6, {{3e6, 1e-3}, {1e6, 3e-5}});
+    for (const std::size_t branches : {1, 2, 3}) {
+        const auto material = branches == 1   ? rheology::Rheology::prony(1e6, {{3e6, 1e-3}})
+                              : branches == 2 ? rheology::Rheology::prony(1e6, {{3e6, 1e-3}, {1e6, 3e-5}})
+                                              : rheology::Rheology::prony(1e6, {{3e6, 1e-3}, {1e6, 3e-5}, {2e6, 1e-7}});
         ContactLaw spatial(material, 0.005, 0.3, 50, 1e-3, 2e-6), planar(material, 0.005, 0.3, 50, 1e-3, 2e-6);
         std::vector<double> a(spatial.state_size()), b(planar.state_size());
         spatial.initialise(a);
