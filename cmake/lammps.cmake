@@ -44,8 +44,11 @@ set_target_properties(mdrviscoplugin PROPERTIES PREFIX "")
 # symbols hidden) and, within a file, inlined where GCC would (not interposable).
 target_compile_options(mdrviscoplugin PRIVATE -fno-semantic-interposition)
 target_link_options(mdrviscoplugin PRIVATE -Wl,--exclude-libs,ALL)
-# every symbol resolved at the link (mdr, LAMMPS, MPI), not first at `plugin load`
-target_link_options(mdrviscoplugin PRIVATE -Wl,--no-undefined)
+# every symbol resolved at the link (mdr, LAMMPS, MPI), not first at `plugin load`; not with the sanitizers, whose
+# runtime clang leaves to the executable
+if(NOT MDR_SANITIZE)
+  target_link_options(mdrviscoplugin PRIVATE -Wl,--no-undefined)
+endif()
 add_dependencies(mdrviscoplugin mdr_lammps)
 set(MDR_LAMMPS_BINARY ${mdr_lammps_prefix}/bin/lmp)
 set(MDR_LAMMPS_LIBRARY_DIR ${mdr_lammps_prefix}/lib)

@@ -120,8 +120,8 @@ bool ComposedNormalStep::advance(std::span<double> header, const AttachedElement
 
 bool ComposedNormalStep::no_event(const AttachedElements& elements, double common, double depth,
                                   const double* weight, const double* row) const {
-    return no_event_pass(elements.touched, branches_, elements.w, elements.flags, elements.h, elements.stride,
-                                g_inf_, common, depth, profile_.data(), weight, row);
+    return no_event_pass(elements.touched, branches_, elements.w, elements.flags, elements.h, elements.stride, g_inf_,
+                         common, depth, profile_.data(), weight, row);
 }
 
 void ComposedNormalStep::element(std::span<const double> header, const double* w, const double* flags,

@@ -11,6 +11,10 @@
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/rheology/rheology.hpp"
 
+namespace mdr::dem {
+class ContactLaw;
+}
+
 namespace mdr::foundation {
 
 /// The elements of a state in the layout of Foundation::attach: `touched` elements with displacements `w`, contact
@@ -103,21 +107,25 @@ public:
         double* weight = nullptr;   ///< G_k E_k A_k (M; in this object until the next prepare_with)
         double* next = nullptr;     ///< F P, row-major (order M + 1)
     };
+
+private:
+    friend class dem::ContactLaw;  // its held step calls the bodies below for one dispatch on M
     // The held step's bodies for a branch count `branches` M (a std::integral_constant for M = 1, 2, 3: with_branches),
-    // defined inline in src/foundation/composed_held_steps.hpp, for a caller that dispatches on M once for more than
-    // one step (the DEM contact law's held step): advance is prepare_with and, where it returns true, take_with.
+    // defined inline in src/foundation/composed_held_steps.hpp (so callable only from the library's own sources), for
+    // a caller that dispatches on M once for more than one step (the DEM contact law's held step): advance is
+    // prepare_with and, where it returns true, take_with.
     /// Derives the step from `depth_start` to `depth_end` [m] into `step` and returns whether advance takes it in the
     /// composed form (no entry or exit, the depth within the foundation). Writes no header or element.
     template <class Branches>
     bool prepare_with(std::span<const double> header, const AttachedElements& elements, double depth_start,
                       double depth_end, Step& step, Branches branches) const;
     /// Takes the step prepare_with derived (and found composable) to `depth_end` in the header and returns F_N [N]
-    /// at its end (eq. 21).
+    /// at its end (eq. 21); where a composition factor falls below 1e-150 it writes the elements and summarises them
+    /// again (as advance).
     template <class Branches>
     double take_with(std::span<double> header, const AttachedElements& elements, double depth_end, const Step& step,
                      Branches branches) const;
 
-private:
     template <class Branches>
     double sum_force(std::span<const double> header, const Step& step, Branches branches) const;
     bool no_event(const AttachedElements& elements, double common, double depth, const double* weight,

@@ -12,6 +12,10 @@
 #include "mdr/foundation/step_coefficients.hpp"
 #include "mdr/rheology/rheology.hpp"
 
+namespace mdr::dem {
+class ContactLaw;
+}
+
 namespace mdr::foundation {
 
 /// The tangential elements of a state in the layout of PlanarTangentialLayer::attach, with the normal contact flags
@@ -104,9 +108,12 @@ public:
     void element(std::span<const double> header, const double* u, const double* h, const double* flags,
                  std::size_t stride, std::size_t i, double* current) const;
 
+private:
+    friend class dem::ContactLaw;  // its held step calls the bodies below for one dispatch on M
     // The steps' bodies for a branch count `branches` M (a std::integral_constant for M = 1, 2, 3: with_branches),
-    // defined inline in src/foundation/composed_held_steps.hpp, for a caller that dispatches on M once for more than
-    // one step (the DEM contact law's held step): prepare, force and advance dispatch on M and call them.
+    // defined inline in src/foundation/composed_held_steps.hpp (so callable only from the library's own sources), for
+    // a caller that dispatches on M once for more than one step (the DEM contact law's held step): prepare, force and
+    // advance dispatch on M and call them.
     /// prepare for a given M.
     template <class Branches>
     bool prepare_with(std::span<const double> header, PlanarVector increment, double least_load, Step& step,
@@ -119,7 +126,6 @@ public:
     void advance_with(std::span<double> header, const PlanarElements& elements, const Step& step,
                       Branches branches) const;
 
-private:
     std::size_t map_offset() const;
 
     std::size_t branches_;
