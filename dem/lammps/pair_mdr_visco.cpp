@@ -15,8 +15,6 @@
 #include <string>
 #include <utility>
 
-#include <unistd.h>
-
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
@@ -86,17 +84,6 @@ template <std::size_t... k>
     default:
       for (std::size_t k = 0; k < count; k++) prefetch_line(base + offsets[k]);
   }
-}
-
-// This core's L2 [bytes]; 0 where the system does not say (then the step always prefetches).
-std::size_t level2_cache_bytes()
-{
-#ifdef _SC_LEVEL2_CACHE_SIZE
-  static const long bytes = sysconf(_SC_LEVEL2_CACHE_SIZE);
-  return bytes > 0 ? static_cast<std::size_t>(bytes) : 0;
-#else
-  return 0;
-#endif
 }
 
 }    // namespace
@@ -370,14 +357,8 @@ void PairMdrVisco::compute(int eflag, int vflag)
   if (tangential_last > 0) range(tangential_first, tangential_last);
   // from the far end of the state to its start: the order session 18 measured
   std::reverse(lines.begin(), lines.end());
-  // the prefetches only where the listed neighbours' states do not fit in this core's L2: within it they bring
-  // nothing and cost time (session 20, friction 0.3, ns a contact-step: 5^3 lattice, 0.5 MB, 77.1 with them, 75.8
-  // without), beyond it they are needed (20^3, 33 MB: 84.2 with them, 87.5 without); a count of 0 prefetches none
-  std::size_t history_bytes = 0;
-  for (int ii = 0; ii < list->inum; ii++) history_bytes += list->numneigh[list->ilist[ii]];
-  history_bytes *= static_cast<std::size_t>(size_history) * sizeof(double);
   const std::uintptr_t *line_offsets = lines.data();
-  const std::size_t line_count = history_bytes > level2_cache_bytes() ? lines.size() : 0;
+  const std::size_t line_count = lines.size();
   // the contacts' energy for compute pair (docs/dem.md): a contact computed on two ranks (newton off, j a ghost)
   // counts half on each
   double work = 0.0, stored = 0.0;
