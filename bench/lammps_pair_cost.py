@@ -4,7 +4,7 @@ model linear_nohistory with mu = 0), each ratio to the hertz/material variant of
 same machine: a periodic simple-cubic lattice of 8000 spheres, each pressed into its six
 neighbours (24000 contacts, all alive every step), with random velocities but no integrator, so that every contact
 is stepped with a tangential increment and the contact set never changes (a tiny one: `velocity all create 1e-6` is
-1 uK, about 1e-13 m/s, so every contact sticks; docs/dem.md). Pair time from LAMMPS's timing
+1 uK, about 1e-13 m/s, so every contact sticks; docs/dem-performance.md). Pair time from LAMMPS's timing
 breakdown over steps x contacts; memory per rank from its log.
 
     LMP=.../lmp MDR_LAMMPS_PLUGIN=.../mdrviscoplugin.so python3 bench/lammps_pair_cost.py [N] [M] [--callgrind]
@@ -20,8 +20,8 @@ write-allocates) per contact-step: the bytes a step touches where its data is no
 
 --side=S --steps=T time an S^3 lattice (3 S^3 contacts) over T steps instead of the 20^3 one over 200: with S = 5
 (375 contacts, 0.5 MB of mdr/visco history at N = 20, M = 1) every contact's state stays in a core's 2 MB L2
-cache, with S = 20 (33 MB) it does not, with S = 40 (261 MB) it exceeds the L3 too (docs/dem.md, "Is the step
-memory-bound?"). --warmup=K runs K steps before the timed ones (every contact's first, non-composed steps and the
+cache, with S = 20 (33 MB) it does not, with S = 40 (261 MB) it exceeds the L3 too (docs/dem-performance.md, "Is
+the step memory-bound?"). --warmup=K runs K steps before the timed ones (every contact's first, non-composed steps and the
 history pages' first touch then fall outside the timing: a held contact's step). --skin=S sets the
 neighbour skin [m] (0.0005: only the six touching neighbours are listed; 0.005 lists the twelve face-diagonal ones
 too, out of contact, as a packing lists more neighbours than contacts). --plugin=PATH times that mdr/visco plugin instead of $MDR_LAMMPS_PLUGIN.
@@ -35,8 +35,8 @@ F_N and, with friction, |F_t| / (mu F_N) (1: gross slip; below 1: stick or parti
 tensor and the lattice's symmetry (spacing d, S^3 contacts along each axis in a volume S^3 d^3): the contacts along
 x alone give P_xx = F_N / d^2 and |P_xy| = |P_xz| = |F_t| / (sqrt(2) d^2), the tangential force being along
 (0, 1, -1) / sqrt(2) (so F_N = d^2 (P_xx + P_yy + P_zz) / 3, |F_t| = sqrt(2) d^2 (|P_xy| + |P_xz| + |P_yz|) / 3).
-With mu = 0.3, N = 20, M = 1 (docs/dem.md, "Sliding contacts"), mdr/visco's contacts with --slide=1 stick for two
-steps, slip partially in steps 3-21 and slip grossly from step 22 (hertz/material's from step 1, its tangential
+With mu = 0.3, N = 20, M = 1 (docs/dem-performance.md, "Sliding contacts"), mdr/visco's contacts with --slide=1
+stick for two steps, slip partially in steps 3-21 and slip grossly from step 22 (hertz/material's from step 1, its tangential
 damping alone above mu F_N); with --slide=0.07 they stick for 27 steps and slip partially from step 28 to step 254
 (hertz/material's stick until step 24 and slip grossly from step 25).
 """

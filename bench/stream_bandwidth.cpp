@@ -1,4 +1,4 @@
-// One core's memory bandwidth for the working sets of bench/lammps_pair_cost.py (docs/dem.md, "Is the step
+// One core's memory bandwidth for the working sets of bench/lammps_pair_cost.py (docs/dem-performance.md, "Is the step
 // memory-bound?"): a read pass (a sum) and a read-modify-write pass (x <- a x + b, in place, as a contact law steps
 // its state) over arrays of 0.5 MB (a core's L2 holds it), 33 MB (the 20^3 lattice's mdr/visco histories) and
 // 512 MB (beyond the L3). Bytes per second counts bytes read plus bytes written; take the best of repetitions (the

@@ -63,8 +63,8 @@ template <std::size_t... k>
 }
 
 // The lines at `base` + `offsets`[k], k < count: each count up to twelve has its own sequence (a loop per range
-// cost 46 instructions a contact-step without friction, these 24, docs/dem.md; GCC 12 unrolls a loop over the count
-// into a chain of compares).
+// cost 46 instructions a contact-step without friction, these 24, docs/dem-performance.md; GCC 12 unrolls a loop
+// over the count into a chain of compares).
 [[gnu::always_inline]] inline void prefetch_lines(std::uintptr_t base, const std::uintptr_t *offsets,
                                                   std::size_t count)
 {
@@ -346,7 +346,7 @@ void PairMdrVisco::compute(int eflag, int vflag)
   }
   // their lines, from a state four entries on, as byte offsets: every eighth double of each range and its last
   // where that is not the eighth before it (beyond the L3 the hardware prefetchers miss them: 4 lines of every 22,
-  // docs/dem.md)
+  // docs/dem-performance.md)
   const std::uintptr_t ahead_bytes = 4 * static_cast<std::uintptr_t>(size_history) * sizeof(double);
   std::vector<std::uintptr_t> lines;
   const auto range = [&](std::size_t first, std::size_t last) {

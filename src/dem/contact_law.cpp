@@ -326,7 +326,7 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
 }
 
 // begin's body, inlined into the one-call steps (advance, advance_spatial): a held step saves the call and the
-// reloads of the members it sets (15 instructions, docs/dem.md).
+// reloads of the members it sets (15 instructions, docs/dem-performance.md).
 [[gnu::always_inline]] inline void ContactLaw::take_state(std::span<double> state) {
     take_normal_state(state);
     take_frame(state);
@@ -580,13 +580,13 @@ void ContactLaw::step_tangential_by_elements(PlanarVector increment) {
     displacement_ = displacement;
 }
 
-// advance_spatial's held step (issue 29; docs/dem.md, "The held step as one kernel"): where the normal step composes
-// (no element enters or leaves contact) and every element in contact certainly sticks (the tangential header composes
-// and its bound holds), both composed steps for one dispatch on M, their bodies inlined (composed_held_steps.hpp), each
-// prepared before either writes; the state and the workspace as step_normal and step_tangential leave them. Returns
-// false, having written nothing, for any other step (step_normal and step_tangential then take it) and for M = 0 (an
-// elastic law) or M > 3 (with_branches' std::size_t).
-// After skip_resting_layer. advance and the two-call steps take the general path (the test
+// advance_spatial's held step (issue 29; docs/dem-performance.md, "the held step as one kernel"): where the normal
+// step composes (no element enters or leaves contact) and every element in contact certainly sticks (the tangential
+// header composes and its bound holds), both composed steps for one dispatch on M, their bodies inlined
+// (composed_held_steps.hpp), each prepared before either writes; the state and the workspace as step_normal and
+// step_tangential leave them. Returns false, having written nothing, for any other step (step_normal and
+// step_tangential then take it) and for M = 0 (an elastic law) or M > 3 (with_branches' std::size_t). After
+// skip_resting_layer. advance and the two-call steps take the general path (the test
 // AHeldSpatialStepIsThePlanarStepToTheBit compares the two).
 [[gnu::always_inline]] inline bool ContactLaw::step_held(double overlap, PlanarVector displacement) {
     return foundation::with_branches(branches_, [&](auto m) {

@@ -39,7 +39,8 @@ def bench(*options):
 
 
 def test_gross_slip_reads_hertz_force_and_coulomb_limit():
-    # --slide=1: hertz/material slides grossly from step 1, mdr/visco from step 22 (docs/dem.md, "Sliding contacts")
+    # --slide=1: hertz/material slides grossly from step 1, mdr/visco from step 22 (docs/dem-performance.md,
+    # "Sliding contacts")
     rows = bench("--steps=30", "--slide=1")
     hertz = rows["granular hertz/material, damping tsuji, tangential mindlin mu 0.3"]
     assert abs(hertz[0] - HERTZ_FORCE) <= 5e-6 * HERTZ_FORCE / 0.01    # printed to 4 digits: 0.04653

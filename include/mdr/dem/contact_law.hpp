@@ -65,7 +65,7 @@ public:
     std::size_t state_size() const { return state_size_; }
     /// Doubles at the start of a contact's state that every step reads and writes (the displacement, the frame, the
     /// composed normal step's header, the overlap, normal force and element count): all that a held step without
-    /// friction writes (a code may prefetch them; docs/dem.md, "Is the step memory-bound?").
+    /// friction writes (a code may prefetch them; docs/dem-performance.md, "Is the step memory-bound?").
     std::size_t held_step_size() const { return normal_offset_ + 3; }
     /// Besides these, a held step touches held_tangential_size() doubles from held_tangential_offset() (a code may
     /// prefetch them too): with friction, where every element sticks, the composed tangential step's header and the
