@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "../foundation/composed_held_steps.hpp"
+#include "../foundation/element_stiffness.hpp"
 #include "../foundation/with_branches.hpp"
 #include "mdr/error.hpp"
 
@@ -80,7 +81,7 @@ void require_finite_components(const char* key, const Vector& vector) {
 
 std::string entry(std::size_t index) { return "state[" + std::to_string(index) + "]"; }
 
-constexpr double line_load_factor = 4.0;  // q_z = 4 sigma, eq. (22)
+constexpr double line_load_factor = foundation::normal_stiffness_factor;  // q_z = 4 sigma (eq. 22), as Foundation
 
 }  // namespace
 
@@ -321,8 +322,8 @@ double ContactLaw::stored_energy(std::span<const double> state) const {
             }
         }
     }
-    constexpr double normal_factor = 4.0, tangential_factor = 8.0 / 3.0;  // k = c G dx, eq. (11), (41)
-    return foundation_.spacing() * (normal_factor * normal_sum + tangential_factor * tangential_sum);
+    return foundation_.spacing() * (foundation::normal_stiffness_factor * normal_sum +
+                                    foundation::tangential_stiffness_factor * tangential_sum);
 }
 
 // begin's body, inlined into the one-call steps (advance, advance_spatial): a held step saves the call and the

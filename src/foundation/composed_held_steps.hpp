@@ -13,13 +13,30 @@
 
 #include "mdr/foundation/composed_normal_step.hpp"
 #include "mdr/foundation/composed_tangential_step.hpp"
+#include "element_stiffness.hpp"
 
 namespace mdr::foundation {
 
+// A composition factor below this would lose the written values' digits: the elements are written again.
+constexpr double smallest_factor = 1e-150;
+
+// F P = D P + b (c^T P) into `next`: a free element's force-free update (D = diag(1, E_k), b = (1, B_k), c the free
+// increment: Foundation::begin_step, the tangential layer's) composed onto the map P (row-major, order M + 1).
+[[gnu::always_inline]] inline void compose_free_map(std::size_t order, const double* __restrict increment,
+                                                    const double* __restrict decay, const double* __restrict gain,
+                                                    const double* __restrict map, double* __restrict next) {
+    for (std::size_t j = 0; j < order; ++j) {
+        double projection = 0.0;
+        for (std::size_t l = 0; l < order; ++l) projection += increment[l] * map[l * order + j];
+        next[j] = map[j] + projection;
+        for (std::size_t r = 1; r < order; ++r) {
+            next[r * order + j] = decay[r - 1] * map[r * order + j] + gain[r - 1] * projection;
+        }
+    }
+}
+
 // The normal header's entries (ComposedNormalStep's comment) and constants.
 namespace composed_normal {
-constexpr double normal_stiffness_factor = 4.0;  // k_z = 4 G dx, eq. (11)
-constexpr double smallest_factor = 1e-150;       // a composition factor below: the elements are written
 constexpr std::size_t profile_sum_offset = 3, outermost_offset = 4, innermost_free_offset = 5;
 constexpr std::size_t scale_offset = ComposedNormalStep::factors_offset;
 /// Offset of the map P for M branches: after A_k, C_k, S_k and the least h^_k.
@@ -28,8 +45,6 @@ constexpr std::size_t map_offset(std::size_t branches) { return scale_offset + 4
 
 // The tangential header's entries (ComposedTangentialStep's comment) and constants.
 namespace composed_tangential {
-constexpr double tangential_stiffness_factor = 8.0 / 3.0;  // k_x = (8/3) G dx, eq. (11), (41)
-constexpr double smallest_factor = 1e-150;  // a composition factor below: the elements are written (as the normal's)
 constexpr std::size_t shift_offset = 4, hat_sum_offset = 6, hat_largest_offset = 8;
 constexpr std::size_t scale_offset = ComposedTangentialStep::factors_offset;
 /// Offset of the map P for M branches: after A_k, C_k (x, y), the sums of h^_k (x, y) and the largest |h^_k|.
@@ -81,16 +96,7 @@ template <class Branches>
         certain = lower >= 0.0;
     }
     if (step.free) {
-        // F P = D P + u (c^T P), D = diag(1, E_k), u = (1, B_k), c the free increment (Foundation::begin_step).
-        const double* __restrict increment = free_increment_.data();
-        for (std::size_t j = 0; j < order; ++j) {
-            double projection = 0.0;
-            for (std::size_t l = 0; l < order; ++l) projection += increment[l] * map[l * order + j];
-            next[j] = map[j] + projection;
-            for (std::size_t r = 1; r < order; ++r) {
-                next[r * order + j] = decay[r - 1] * map[r * order + j] + gain[r - 1] * projection;
-            }
-        }
+        compose_free_map(order, free_increment_.data(), decay, gain, map, next);
         if (certain) {
             const double* __restrict free_floor = header.data() + composed_normal::map_offset(m) + order * order;
             const double* __restrict free_ceiling = free_floor + order;
@@ -216,20 +222,12 @@ template <class Branches>
     }
     // A signed conversion (one instruction; touched <= N elements), as the normal step's.
     if (static_cast<double>(static_cast<std::int64_t>(elements.touched)) > header[contacts_offset]) {
-        // F P = D P + b (c^T P), D = diag(1, E_k), b = (1, B_k), c the free increment (the same for x and y).
+        // the same map for x and y
         double* map = header.data() + composed_tangential::map_offset(m);
         double* next = scratch_.data() + m;
-        const double* increment = free_increment_.data();
+        compose_free_map(order, free_increment_.data(), coefficients_.decay.data(), coefficients_.gain.data(), map,
+                         next);
         double largest = 0.0;
-        for (std::size_t j = 0; j < order; ++j) {
-            double projection = 0.0;
-            for (std::size_t l = 0; l < order; ++l) projection += increment[l] * map[l * order + j];
-            next[j] = map[j] + projection;
-            for (std::size_t r = 1; r < order; ++r) {
-                next[r * order + j] = coefficients_.decay[r - 1] * map[r * order + j] +
-                                      coefficients_.gain[r - 1] * projection;
-            }
-        }
         for (std::size_t j = 0; j < order * order; ++j) largest = std::max(largest, std::abs(next[j]));
         std::copy(next, next + order * order, map);
         if (largest > 0.0) smallest = std::min(smallest, largest);  // a map of zeros is exact (an elastic element)

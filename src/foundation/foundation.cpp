@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "branch_sums.hpp"
+#include "element_stiffness.hpp"
 #include "mdr/error.hpp"
 
 namespace mdr::foundation {
@@ -43,7 +44,6 @@ double deepest_depth(const profile::Profile& profile, double half_width) {
 
 namespace {
 
-constexpr double normal_stiffness_factor = 4.0;  // k_z = 4 G dx, eq. (11)
 
 
 // An element's step when no entry or exit splits it: w follows the indenter in contact (eq. 13) and is

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <cstdint>
 
+#include "element_stiffness.hpp"
 #include "with_branches.hpp"
 
 namespace mdr::foundation {
 namespace {
 
-constexpr double tangential_stiffness_factor = 8.0 / 3.0;  // k_x = (8/3) G dx, eq. (11), (41)
 
 // Element i's stress at the end of a step with no increment, G_inf u_i + sum_k G_k E_k h_k,i (`weight` G_k E_k;
 // memory branch-major, x then y: h_k,x at memory[2 k n + i], h_k,y at memory[(2 k + 1) n + i]); the order of

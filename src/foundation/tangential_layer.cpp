@@ -6,11 +6,11 @@
 #include <type_traits>
 
 #include "branch_sums.hpp"
+#include "element_stiffness.hpp"
 
 namespace mdr::foundation {
 namespace {
 
-constexpr double tangential_stiffness_factor = 8.0 / 3.0;  // k_x = (8/3) G dx, eq. (11), (41)
 constexpr double at_limit = 1e-9;                           // |t| within this fraction of the limit: at the limit
 
 // Partial sums of a reduction: the sum of x[j] for j < size kept as partial[j % 8] (the last size % 8 values in

@@ -1,0 +1,12 @@
+#pragma once
+// The stiffnesses of the MDR foundation's elements per unit shear modulus and spacing, for an incompressible body
+// (eq. 11, 41): one definition for the foundation, the layers, the composed steps and the DEM law's energy.
+
+namespace mdr::foundation {
+
+/// k_z / (G dx): a normal element's stiffness, E* dx with E* = 4 G (eq. 11).
+inline constexpr double normal_stiffness_factor = 4.0;
+/// k_x / (G dx): a tangential element's stiffness, G* dx with G* = (8/3) G (eq. 11, 41).
+inline constexpr double tangential_stiffness_factor = 8.0 / 3.0;
+
+}  // namespace mdr::foundation
