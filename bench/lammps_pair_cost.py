@@ -21,8 +21,8 @@ write-allocates) per contact-step: the bytes a step touches where its data is no
 --side=S --steps=T time an S^3 lattice (3 S^3 contacts) over T steps instead of the 20^3 one over 200: with S = 5
 (375 contacts, 0.5 MB of mdr/visco history at N = 20, M = 1) every contact's state stays in a core's 2 MB L2
 cache, with S = 20 (33 MB) it does not, with S = 40 (261 MB) it exceeds the L3 too (docs/dem-performance.md, "Is
-the step memory-bound?"). --warmup=K runs K steps before the timed ones (every contact's first, non-composed steps and the
-history pages' first touch then fall outside the timing: a held contact's step). --skin=S sets the
+the step memory-bound?"). --warmup=K runs K steps before the timed ones (every contact's first, non-composed steps
+and the history pages' first touch then fall outside the timing: a held contact's step). --skin=S sets the
 neighbour skin [m] (0.0005: only the six touching neighbours are listed; 0.005 lists the twelve face-diagonal ones
 too, out of contact, as a packing lists more neighbours than contacts). --plugin=PATH times that mdr/visco plugin instead of $MDR_LAMMPS_PLUGIN.
 
@@ -36,8 +36,8 @@ tensor and the lattice's symmetry (spacing d, S^3 contacts along each axis in a 
 x alone give P_xx = F_N / d^2 and |P_xy| = |P_xz| = |F_t| / (sqrt(2) d^2), the tangential force being along
 (0, 1, -1) / sqrt(2) (so F_N = d^2 (P_xx + P_yy + P_zz) / 3, |F_t| = sqrt(2) d^2 (|P_xy| + |P_xz| + |P_yz|) / 3).
 With mu = 0.3, N = 20, M = 1 (docs/dem-performance.md, "Sliding contacts"), mdr/visco's contacts with --slide=1
-stick for two steps, slip partially in steps 3-21 and slip grossly from step 22 (hertz/material's from step 1, its tangential
-damping alone above mu F_N); with --slide=0.07 they stick for 27 steps and slip partially from step 28 to step 254
+stick for two steps, slip partially in steps 3-21 and slip grossly from step 22 (hertz/material's from step 1, its
+tangential damping alone above mu F_N); with --slide=0.07 they stick for 27 steps and slip partially from step 28 to step 254
 (hertz/material's stick until step 24 and slip grossly from step 25).
 """
 
