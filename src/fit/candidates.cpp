@@ -166,15 +166,8 @@ Material spectrum(const SpectrumSettings& settings, double modulus, const Window
 // T in [1e-2 shortest, 1e2 longest]; a viscosity G_e T and a quasi-property G_e T^(1/2), each in [1e-8, 1e8] times
 // it; a key of a bounded domain (0, L) (ModelParameter::upper_limit: an exponent alpha, beta < 1) L/2 in
 // [0.01, 0.99] L. Optional keys keep their defaults. A model that stands as a series is converted over `lags`.
-// Moduli, times and viscosities are fitted on their logarithm; a key of a bounded domain linearly (its scale L/2,
-// ParameterScales), by the rule of a case's keys (fitted_on_logarithm, through free_parameter): its model does not
-// flatten towards 0 (a springpot's G(t) = c t^-alpha / Gamma(1 - alpha) has dG/dalpha = G (psi(1 - alpha) - ln t),
-// -> c (-gamma - ln t) as alpha -> 0), but on ln(alpha) its Jacobian column alpha dr/dalpha vanishes there. On
-// ln(alpha) the springpot candidate of the JPK record (docs/performance.md, "The springpot candidate's order, fitted
-// linearly") reached alpha ~0.01 at its second step, where every Gauss-Newton step ran to alpha's upper bound 0.99 and
-// the projected line search cut it to 1e-3 of its length; such a step still counts as successful (its decrease 0.002
-// of the model's > Ceres' min_relative_decrease 1e-3), so the trust region only halved per iteration: 16 runs at 0.99
-// of ~2.6 s each, 42 s of the 44.5 s fit.
+// Each key on the coordinate of a case's keys (free_parameter: fitted_on_logarithm, whose comment says why): moduli,
+// times and viscosities on their logarithm, a key of a bounded domain linearly (its scale L/2, ParameterScales).
 Material registry_material(const rheology::MaterialModel& model, double modulus, const Window& window,
                            const rheology::TimeWindow& lags) {
     const double middle = std::sqrt(window.shortest * window.longest);
