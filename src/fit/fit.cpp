@@ -122,7 +122,8 @@ void validate(const FitProblem& problem) {
                                "the lower bound must be below the upper bound");
         }
         if (on_logarithm(parameter) && !(parameter.lower > 0.0)) {
-            throw InvalidInput(key, format_value(parameter.lower), "must be > 0 (the parameter is fitted on its logarithm)");
+            throw InvalidInput(key, format_value(parameter.lower),
+                               "must be > 0 (the parameter is fitted on its logarithm)");
         }
         if (parameter.start < parameter.lower || parameter.start > parameter.upper) {
             throw InvalidInput(parameter.name, format_value(parameter.start),
