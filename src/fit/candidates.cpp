@@ -107,13 +107,16 @@ std::string material_text(const Material& material, const double* values) {
     return fmt::format("model = \"prony\"\nG_inf = {}\nterms = [{}]\n", rheology.equilibrium_modulus(), terms);
 }
 
-// A candidate's free parameter, on the coordinate of a case's keys (fitted_on_logarithm).
+// A candidate's free parameter, its coordinate left unset: the rule of a case's keys (fitted_on_logarithm).
 FreeParameter free_parameter(std::string key, double start, double lower, double upper,
                              double domain_upper = std::numeric_limits<double>::infinity(),
                              double domain_lower = -std::numeric_limits<double>::infinity()) {
-    FreeParameter parameter{std::move(key), start, lower, upper, true, domain_upper, domain_lower};
-    parameter.logarithmic = fitted_on_logarithm(parameter);
-    return parameter;
+    return {.name = std::move(key),
+            .start = start,
+            .lower = lower,
+            .upper = upper,
+            .domain_upper = domain_upper,
+            .domain_lower = domain_lower};
 }
 
 Material elastic(double start) {

@@ -121,8 +121,9 @@ void validate(const FitProblem& problem) {
             throw InvalidInput(key, fmt::format("[{}, {}]", format_value(parameter.lower), format_value(parameter.upper)),
                                "the lower bound must be below the upper bound");
         }
-        if (parameter.logarithmic && !(parameter.lower > 0.0)) {
-            throw InvalidInput(key, format_value(parameter.lower), "must be > 0 (the parameter is positive)");
+        if (on_logarithm(parameter) && !(parameter.lower > 0.0)) {
+            throw InvalidInput(key, format_value(parameter.lower),
+                               "must be > 0 (the parameter is fitted on its logarithm)");
         }
         if (parameter.start < parameter.lower || parameter.start > parameter.upper) {
             throw InvalidInput(parameter.name, format_value(parameter.start),

@@ -8,7 +8,7 @@ namespace mdr::fit {
 
 IntervalScale interval_scale(const FreeParameter& parameter) {
     if (std::isfinite(parameter.domain_upper)) return IntervalScale::logit;
-    return parameter.logarithmic ? IntervalScale::log : IntervalScale::linear;
+    return on_logarithm(parameter) ? IntervalScale::log : IntervalScale::linear;
 }
 
 std::string interval_scale_name(IntervalScale scale) {

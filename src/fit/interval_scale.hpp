@@ -18,8 +18,8 @@ enum class IntervalScale {
     logit,   ///< (0, L), L = FreeParameter::domain_upper finite: g(x) = ln(x / (L - x))
 };
 
-/// The scale of `parameter`'s interval: logit when its domain has a finite upper end, log when it is positive
-/// (fitted on a logarithmic scale), else linear.
+/// The scale of `parameter`'s interval: logit when its domain has a finite upper end, log when it is fitted on its
+/// logarithm (on_logarithm), else linear.
 IntervalScale interval_scale(const FreeParameter& parameter);
 
 /// Its name in fit.json's `interval_scales`: "linear", "log" or "logit".

@@ -9,6 +9,10 @@ bool fitted_on_logarithm(const FreeParameter& parameter) {
     return parameter.lower > 0.0 && parameter.start > 0.0 && !std::isfinite(parameter.domain_upper);
 }
 
+bool on_logarithm(const FreeParameter& parameter) {
+    return parameter.logarithmic.value_or(fitted_on_logarithm(parameter));
+}
+
 double ParameterScales::to_internal(std::size_t j, double value) const {
     return scale[j] == 0.0 ? std::log(value) : value / scale[j];
 }
@@ -26,7 +30,7 @@ std::vector<double> ParameterScales::values(const double* u) const {
 ParameterScales make_scales(const FitProblem& problem) {
     ParameterScales scales;
     for (const auto& parameter : problem.parameters) {
-        scales.scale.push_back(parameter.logarithmic
+        scales.scale.push_back(on_logarithm(parameter)
                                    ? 0.0
                                    : std::max({std::abs(parameter.start), 0.5 * (parameter.upper - parameter.lower),
                                                1e-300}));

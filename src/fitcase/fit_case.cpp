@@ -91,7 +91,11 @@ fit::FreeParameter read_parameter(const toml::table& fit, const io::CaseTemplate
         throw InvalidInput("fit.free", key, "must name a number of [material] or [indenter], or layer.thickness");
     }
     if (!model.has_number(key)) throw InvalidInput("fit.free", key, "the case has no number under this key");
-    fit::FreeParameter parameter{key, model.number(key), 0.0, 0.0, true, io::free_key_upper_limit(model, key), 0.0};
+    // Its coordinate left unset: the rule fit::fitted_on_logarithm, on the bounds below.
+    fit::FreeParameter parameter{.name = key,
+                                 .start = model.number(key),
+                                 .domain_upper = io::free_key_upper_limit(model, key),
+                                 .domain_lower = 0.0};
     // The numbers of a TOML case's rules (TableReader: finite, an integer exactly a double).
     if (per_key(fit, "start", key)) parameter.start = TableReader(*fit["start"].as_table(), "fit.start").number(key);
     require_finite(key, parameter.start);
@@ -113,7 +117,6 @@ fit::FreeParameter read_parameter(const toml::table& fit, const io::CaseTemplate
         throw InvalidInput("fit.bounds." + key, "(missing)",
                            fmt::format("is required: the start value {} is not > 0", format_value(parameter.start)));
     }
-    parameter.logarithmic = fit::fitted_on_logarithm(parameter);
     return parameter;
 }
 

@@ -25,9 +25,10 @@ struct FreeParameter {
     double start = 0.0;  ///< start value
     double lower = 0.0;  ///< lower bound (> 0 for a parameter fitted on a logarithmic scale)
     double upper = 0.0;  ///< upper bound
-    /// Fitted on a logarithmic scale (a case's and a candidate's keys: fitted_on_logarithm; moduli, times, radii).
-    /// The standard error is then first order in the relative change, and the bounds are > 0.
-    bool logarithmic = true;
+    /// The coordinate it is fitted on, read through on_logarithm: unset (the default, and a case's and a candidate's
+    /// keys), the rule fitted_on_logarithm; true, its logarithm (the bounds must then be > 0, and the standard error
+    /// is first order in the relative change); false, linearly.
+    std::optional<bool> logarithmic = std::nullopt;
     /// The open upper end of the physical domain (0, domain_upper) of a parameter bounded above (its registry row,
     /// io::free_key_upper_limit: 1 for an exponent or a springpot order, 90 for a cone's angle); infinity otherwise.
     /// The 95 % interval is built on the scale on which the domain is the whole line (FitResult::interval_scales).
@@ -43,8 +44,12 @@ struct FreeParameter {
 /// modulus, a time, a viscosity, a length); linearly otherwise, in particular for a key of a bounded domain
 /// (0, domain_upper) (an exponent, a springpot's order, a cone's angle), whose model does not flatten towards 0 while
 /// its Jacobian column on the logarithm, x dr/dx, vanishes there (docs/performance.md, "The springpot candidate's
-/// order, fitted linearly"). The value for FreeParameter::logarithmic.
+/// order, fitted linearly"). The coordinate of a FreeParameter whose `logarithmic` is unset.
 bool fitted_on_logarithm(const FreeParameter& parameter);
+
+/// Whether a free parameter is fitted on its logarithm: its FreeParameter::logarithmic where the caller set it, else
+/// the rule fitted_on_logarithm. The one reader of the flag.
+bool on_logarithm(const FreeParameter& parameter);
 
 
 /// How each curve's contact point (the data's depth at first contact) is found.

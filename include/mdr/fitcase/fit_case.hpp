@@ -36,8 +36,8 @@ struct FitCase {
 
 /// Parses a fit case. A free key must name a number of `[material]` or `[indenter]`; its start value is
 /// `fit.start.KEY` or the case's value; its default bounds are 1e-4 to 1e4 times the start (the upper within a
-/// bounded key's domain), its coordinate fit::fitted_on_logarithm's (a logarithmic scale for a start and lower
-/// bound > 0 and a domain unbounded above, else linear). Throws mdr::InvalidInput
+/// bounded key's domain), its coordinate unset: fit::fitted_on_logarithm's (a logarithmic scale for a start
+/// and lower bound > 0 and a domain unbounded above, else linear). Throws mdr::InvalidInput
 /// (keys `fit.*`) for an unknown key, a free key the model does not have, bounds that are inverted or exclude
 /// the start, a `[load] control` that contradicts `fit.fitted`, and every rule of the case itself. With
 /// `fit.candidates` or `[fit.spectrum]`, `free` is optional and may name indenter keys only.

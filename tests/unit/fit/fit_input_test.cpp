@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "fit/result_check.hpp"
 #include "mdr/error.hpp"
@@ -88,6 +90,40 @@ TEST(Fit, RecoversTheModulusOfTheHertzCurve) {  // the rules above leave a sound
     const FitResult result = fit(hertz_problem());
     EXPECT_TRUE(result.converged) << result.status;
     EXPECT_NEAR(result.values[0], 2e5, 2e5 * 1e-6);
+}
+
+// A C++ caller's FreeParameter with its coordinate unset takes the rule of a case's keys (fitted_on_logarithm);
+// set, the caller's choice. Before, `logarithmic` defaulted to true: every caller's parameter went on its logarithm.
+TEST(FreeParameterCoordinate, UnsetIsTheRuleSetIsTheCallersChoice) {
+    const FreeParameter modulus{.name = "material.G", .start = 1e5, .lower = 1e3, .upper = 1e7};
+    const FreeParameter from_zero{.name = "material.G", .start = 1e5, .lower = 0.0, .upper = 1e7};
+    const FreeParameter exponent{.name = "material.beta", .start = 0.01, .lower = 1e-6, .upper = 0.99,
+                                 .domain_upper = 1.0};
+    EXPECT_TRUE(on_logarithm(modulus));
+    EXPECT_FALSE(on_logarithm(from_zero));
+    EXPECT_FALSE(on_logarithm(exponent));
+    for (FreeParameter parameter : {modulus, from_zero, exponent}) {
+        parameter.logarithmic = true;
+        EXPECT_TRUE(on_logarithm(parameter)) << parameter.name;
+        parameter.logarithmic = false;
+        EXPECT_FALSE(on_logarithm(parameter)) << parameter.name;
+    }
+}
+
+// A lower bound 0 with the coordinate unset is fitted linearly (before: refused, "must be > 0"), and the Hertz
+// curve's closed-form modulus is recovered; asked for on its logarithm, it is refused, naming the key. The caller's
+// own parameter: the modulus's excess over 1e5 Pa (>= 0; G itself must be > 0 at every bound).
+TEST(FreeParameterCoordinate, ALowerBoundZeroIsFittedLinearlyUnlessTheLogarithmIsAsked) {
+    FitProblem problem = hertz_problem();
+    problem.model = [hertz = problem.model](const std::vector<double>& values) { return hertz({1e5 + values[0]}); };
+    problem.parameters = {{.name = "G_excess", .start = 5e4, .lower = 0.0, .upper = 1e7}};
+    const FitResult result = fit(problem);
+    EXPECT_TRUE(result.converged) << result.status;
+    EXPECT_NEAR(result.values[0], 1e5, 2e5 * 1e-6);  // G = 2e5
+    EXPECT_EQ(result.interval_scales, std::vector<std::string>{"linear"});
+    problem.parameters[0].logarithmic = true;
+    EXPECT_EQ(message_of([&] { fit(problem); }),
+              "fit.bounds.G_excess = 0: must be > 0 (the parameter is fitted on its logarithm)");
 }
 
 // NaN marks an undetermined parameter's error, interval, correlation and band limits; every other number must be

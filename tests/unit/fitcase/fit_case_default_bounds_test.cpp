@@ -84,9 +84,9 @@ TEST(FitCaseDefaultBounds, AKeyOfABoundedDomainIsFittedLinearlyWithOrWithoutBoun
             "[fit]\nfree = [\"material.G0\", \"material.beta\", \"indenter.half_angle_deg\"]\n" + bounds +
                 "[[fit.data]]\nfile = \"curve.csv\"\ntime = \"t\"\ndepth = \"d\"\nforce = \"F\"\n",
             "case.toml", ".");
-        EXPECT_TRUE(parameter(fit_case, "material.G0").logarithmic) << bounds;
-        EXPECT_FALSE(parameter(fit_case, "material.beta").logarithmic) << bounds;  // before: on ln(beta)
-        EXPECT_FALSE(parameter(fit_case, "indenter.half_angle_deg").logarithmic) << bounds;
+        EXPECT_TRUE(fit::on_logarithm(parameter(fit_case, "material.G0"))) << bounds;
+        EXPECT_FALSE(fit::on_logarithm(parameter(fit_case, "material.beta"))) << bounds;  // before: on ln(beta)
+        EXPECT_FALSE(fit::on_logarithm(parameter(fit_case, "indenter.half_angle_deg"))) << bounds;
     }
 }
 
