@@ -69,23 +69,40 @@ void apply_holds(ceres::Problem& problem, const std::vector<BoundedCoordinate>& 
 
 }  // namespace
 
-double second_block_gradient(const ceres::CostFunction& cost, const double* first,
-                             const BoundedCoordinate& coordinate) {
-    const auto n = static_cast<std::size_t>(cost.num_residuals());
+double coordinate_gradient(const ceres::Problem& problem, const BoundedCoordinate& coordinate) {
     const auto size = static_cast<std::size_t>(coordinate.block_size);
-    std::vector<double> residuals(n);
-    std::vector<double> jacobian(n * size);
-    const double* parameters[] = {first, coordinate.block};
-    double* jacobians[] = {nullptr, jacobian.data()};
-    if (!cost.Evaluate(parameters, residuals.data(), jacobians)) return 0.0;  // no evidence to release it
-    double slope = 0.0;
     const auto column = static_cast<std::size_t>(coordinate.index);
-    for (std::size_t i = 0; i < n; ++i) slope += residuals[i] * jacobian[i * size + column];
+    std::vector<ceres::ResidualBlockId> residual_blocks;
+    problem.GetResidualBlocksForParameterBlock(coordinate.block, &residual_blocks);
+    double slope = 0.0;
+    for (const ceres::ResidualBlockId id : residual_blocks) {
+        const ceres::CostFunction& cost = *problem.GetCostFunctionForResidualBlock(id);
+        std::vector<double*> blocks;
+        problem.GetParameterBlocksForResidualBlock(id, &blocks);
+        const auto n = static_cast<std::size_t>(cost.num_residuals());
+        std::vector<double> residuals(n);
+        std::vector<double> jacobian(n * size);
+        std::vector<double*> jacobians(blocks.size(), nullptr);
+        for (std::size_t b = 0; b < blocks.size(); ++b) {
+            if (blocks[b] == coordinate.block) jacobians[b] = jacobian.data();
+        }
+        if (!cost.Evaluate(blocks.data(), residuals.data(), jacobians.data())) return 0.0;
+        double block_slope = 0.0;
+        for (std::size_t i = 0; i < n; ++i) block_slope += residuals[i] * jacobian[i * size + column];
+        if (const ceres::LossFunction* loss = problem.GetLossFunctionForResidualBlock(id)) {
+            double squared = 0.0;
+            for (const double r : residuals) squared += r * r;
+            double rho[3];
+            loss->Evaluate(squared, rho);
+            block_slope *= rho[1];
+        }
+        slope += block_slope;
+    }
     return slope;
 }
 
 ActiveBoundsSolve solve_with_active_bounds(ceres::Solver::Options options, ceres::Problem& problem,
-                                           std::vector<BoundedCoordinate>& bounded, const CoordinateGradient& gradient,
+                                           std::vector<BoundedCoordinate>& bounded,
                                            const FreshCallback& fresh_callback) {
     ActiveBoundsSolve result;
     const int budget = options.max_num_iterations;
@@ -122,7 +139,7 @@ ActiveBoundsSolve solve_with_active_bounds(ceres::Solver::Options options, ceres
                 continue;
             }
             if (!coordinate.held) continue;
-            const double slope = gradient(coordinate);
+            const double slope = coordinate_gradient(problem, coordinate);
             const double value = coordinate.block[coordinate.index];
             if ((value == coordinate.lower && slope < 0.0) || (value == coordinate.upper && slope > 0.0)) {
                 coordinate.held = false;

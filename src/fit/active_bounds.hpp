@@ -24,13 +24,13 @@ struct BoundedCoordinate {
     bool held = false;        ///< held on a bound (its value equals that bound; may be set before the solve)
 };
 
-/// d cost / d coordinate at the current values.
-using CoordinateGradient = std::function<double(const BoundedCoordinate&)>;
-
-/// d (1/2 |r|^2) / d coordinate for a cost of two parameter blocks, `first` and the coordinate's block (one run of
-/// the cost with that block's Jacobian only).
-double second_block_gradient(const ceres::CostFunction& cost, const double* first,
-                             const BoundedCoordinate& coordinate);
+/// d (1/2 sum_b rho_b(|r_b|^2)) / d coordinate at the current values: over every residual block b of `problem`
+/// that has the coordinate's block, rho_b'(|r_b|^2) r_b . (the column of the coordinate in r_b's Jacobian) (rho_b' = 1
+/// without a loss function; Ceres' cost, Triggs et al., "Bundle adjustment: a modern synthesis", eq. 10), each cost
+/// run once with that block's Jacobian only. 0 where a cost cannot be evaluated (no evidence to release a held
+/// coordinate). Problem::Evaluate is no substitute: it gives the gradient in a manifold's tangent space, which drops
+/// a held coordinate.
+double coordinate_gradient(const ceres::Problem& problem, const BoundedCoordinate& coordinate);
 
 /// Builds a callback that keeps state for one solve.
 using FreshCallback = std::function<std::unique_ptr<ceres::IterationCallback>()>;
@@ -42,17 +42,20 @@ struct ActiveBoundsSolve {
     std::size_t solves = 0;          ///< Ceres solves (1 where no coordinate reached a bound)
 };
 
-/// Solves `problem` with Ceres' bounded Levenberg-Marquardt and an active set for the coordinates in `bounded`.
+/// Solves `problem` with Ceres' bounded Levenberg-Marquardt and an active set for the coordinates in `bounded` (the
+/// fit gives every bounded coordinate: each shared parameter of the material and each curve's contact point).
 /// Ceres projects each step onto the bounds; where the cost pushes a coordinate beyond its bound the step, computed
 /// as if it moved, shrinks the trust region at every iteration and the fit crawls (a contact point on the record's
-/// bound: 65 iterations, gradient fixed at the bound's reaction). A solve therefore ends once a free coordinate has
-/// sat on a bound for `patience` successful steps; it is held there (a Ceres SubsetManifold) and the solve goes on
-/// without it. At the end each held coordinate's gradient is checked (Karush-Kuhn-Tucker: d cost/dx >= 0 on a lower
-/// bound, <= 0 on an upper one); one the cost pulls inward is released and the solve goes on. `options`'
-/// max_num_iterations bounds all solves together; its callbacks serve every solve, and `fresh_callback` builds one
-/// that keeps state per solve (the statistical convergence).
+/// bound: 65 iterations, gradient fixed at the bound's reaction; a modulus on its upper bound: Ceres stopped on its
+/// function tolerance short of the constrained minimum, docs/performance.md, "A shared parameter on its bound"). A
+/// solve therefore ends once a free coordinate has sat on a bound for `patience` successful steps; it is held there
+/// (a Ceres SubsetManifold) and the solve goes on without it. At the end each held coordinate's gradient
+/// (coordinate_gradient) is checked (Karush-Kuhn-Tucker: d cost/dx >= 0 on a lower bound, <= 0 on an upper one); one
+/// the cost pulls inward is released and the solve goes on. `options`' max_num_iterations bounds all solves
+/// together; its callbacks serve every solve, and `fresh_callback` builds one that keeps state per solve (the
+/// statistical convergence).
 ActiveBoundsSolve solve_with_active_bounds(ceres::Solver::Options options, ceres::Problem& problem,
-                                           std::vector<BoundedCoordinate>& bounded, const CoordinateGradient& gradient,
+                                           std::vector<BoundedCoordinate>& bounded,
                                            const FreshCallback& fresh_callback);
 
 }  // namespace mdr::fit
