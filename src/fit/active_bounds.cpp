@@ -15,8 +15,19 @@ bool on_bound(const BoundedCoordinate& coordinate) {
     return value == coordinate.lower || value == coordinate.upper;  // Ceres' projection clamps to the bound exactly
 }
 
-// Ends a solve once a free coordinate (never released) has sat on a bound after `patience` successful steps in a
-// row (it reads the values, so the solve updates its state every iteration).
+// The sign of d cost / dx on a bound (Karush-Kuhn-Tucker): the cost pushes x outward (beyond the bound) or pulls it
+// inward.
+bool pushed_outward(const BoundedCoordinate& coordinate, double slope) {
+    const double value = coordinate.block[coordinate.index];
+    return (value == coordinate.lower && slope > 0.0) || (value == coordinate.upper && slope < 0.0);
+}
+bool pulled_inward(const BoundedCoordinate& coordinate, double slope) {
+    const double value = coordinate.block[coordinate.index];
+    return (value == coordinate.lower && slope < 0.0) || (value == coordinate.upper && slope > 0.0);
+}
+
+// Ends a solve once a free Hold::when_crawling coordinate (never released) has sat on a bound after `patience`
+// successful steps in a row (it reads the values, so the solve updates its state every iteration).
 class BoundCrawlStop : public ceres::IterationCallback {
 public:
     BoundCrawlStop(const std::vector<BoundedCoordinate>& bounded, const std::vector<bool>& released)
@@ -25,7 +36,8 @@ public:
     ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
         if (!summary.step_is_successful) return ceres::SOLVER_CONTINUE;
         for (std::size_t i = 0; i < bounded_.size(); ++i) {
-            streak_[i] = !bounded_[i].held && !released_[i] && on_bound(bounded_[i]) ? streak_[i] + 1 : 0;
+            const bool counted = bounded_[i].hold == Hold::when_crawling && !bounded_[i].held && !released_[i];
+            streak_[i] = counted && on_bound(bounded_[i]) ? streak_[i] + 1 : 0;
             if (streak_[i] >= patience) stopped_ = true;
         }
         return stopped_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
@@ -138,10 +150,15 @@ ActiveBoundsSolve solve_with_active_bounds(ceres::Solver::Options options, ceres
                 if (crawl.crawling(i)) coordinate.held = changed = true;
                 continue;
             }
-            if (!coordinate.held) continue;
-            const double slope = coordinate_gradient(problem, coordinate);
-            const double value = coordinate.block[coordinate.index];
-            if ((value == coordinate.lower && slope < 0.0) || (value == coordinate.upper && slope > 0.0)) {
+            if (!coordinate.held) {
+                const bool ended = result.summary.termination_type != ceres::NO_CONVERGENCE;
+                if (coordinate.hold == Hold::at_the_end && ended && !released[i] && on_bound(coordinate) &&
+                    pushed_outward(coordinate, coordinate_gradient(problem, coordinate))) {
+                    coordinate.held = changed = true;
+                }
+                continue;
+            }
+            if (pulled_inward(coordinate, coordinate_gradient(problem, coordinate))) {
                 coordinate.held = false;
                 released[i] = changed = true;
             }

@@ -14,6 +14,17 @@
 
 namespace mdr::fit {
 
+/// When a coordinate on its bound is held there (solve_with_active_bounds).
+enum class Hold {
+    /// Once it has sat on the bound for `patience` successful steps: a curve's contact point, which the data push
+    /// beyond the record's bound from the start.
+    when_crawling,
+    /// Once a solve has ended with it on the bound and the cost pushing it outward: a material's parameter. Held
+    /// while crawling, one that the path would later have taken inside stayed out, and fits of the JPK record ended
+    /// at other, higher, local minima (docs/performance.md, "A shared parameter on its bound").
+    at_the_end,
+};
+
 /// One coordinate of a parameter block with its bounds (in the block's own, scaled, values).
 struct BoundedCoordinate {
     double* block = nullptr;  ///< the parameter block (registered with the problem)
@@ -22,6 +33,7 @@ struct BoundedCoordinate {
     double lower = 0.0;       ///< its lower bound
     double upper = 0.0;       ///< its upper bound
     bool held = false;        ///< held on a bound (its value equals that bound; may be set before the solve)
+    Hold hold = Hold::when_crawling;  ///< when it is held
 };
 
 /// d (1/2 sum_b rho_b(|r_b|^2)) / d coordinate at the current values: over every residual block b of `problem`
@@ -43,17 +55,18 @@ struct ActiveBoundsSolve {
 };
 
 /// Solves `problem` with Ceres' bounded Levenberg-Marquardt and an active set for the coordinates in `bounded` (the
-/// fit gives every bounded coordinate: each shared parameter of the material and each curve's contact point).
-/// Ceres projects each step onto the bounds; where the cost pushes a coordinate beyond its bound the step, computed
-/// as if it moved, shrinks the trust region at every iteration and the fit crawls (a contact point on the record's
-/// bound: 65 iterations, gradient fixed at the bound's reaction; a modulus on its upper bound: Ceres stopped on its
-/// function tolerance short of the constrained minimum, docs/performance.md, "A shared parameter on its bound"). A
-/// solve therefore ends once a free coordinate has sat on a bound for `patience` successful steps; it is held there
-/// (a Ceres SubsetManifold) and the solve goes on without it. At the end each held coordinate's gradient
-/// (coordinate_gradient) is checked (Karush-Kuhn-Tucker: d cost/dx >= 0 on a lower bound, <= 0 on an upper one); one
-/// the cost pulls inward is released and the solve goes on. `options`' max_num_iterations bounds all solves
-/// together; its callbacks serve every solve, and `fresh_callback` builds one that keeps state per solve (the
-/// statistical convergence).
+/// fit gives every bounded coordinate: each curve's contact point, Hold::when_crawling, and each shared parameter of
+/// the material, Hold::at_the_end). Ceres projects each step onto the bounds; where the cost pushes a coordinate
+/// beyond its bound the step, computed as if it moved, shrinks the trust region at every iteration and the fit
+/// crawls, then stops on a tolerance short of the constrained minimum (a contact point on the record's bound: 65
+/// iterations, gradient fixed at the bound's reaction; a modulus on its upper bound: 5e-4 of r/noise above the
+/// minimum). A solve therefore ends once a Hold::when_crawling coordinate has sat on a bound for `patience`
+/// successful steps, and a Hold::at_the_end one is taken where a solve ends with it on its bound and the cost pushing
+/// it outward (coordinate_gradient); either is held there (a Ceres SubsetManifold) and the solve goes on without it.
+/// At the end each held coordinate's gradient is checked (Karush-Kuhn-Tucker: d cost/dx >= 0 on a lower bound, <= 0
+/// on an upper one); one the cost pulls inward is released, for good, and the solve goes on. `options`'
+/// max_num_iterations bounds all solves together; its callbacks serve every solve, and `fresh_callback` builds one
+/// that keeps state per solve (the statistical convergence).
 ActiveBoundsSolve solve_with_active_bounds(ceres::Solver::Options options, ceres::Problem& problem,
                                            std::vector<BoundedCoordinate>& bounded,
                                            const FreshCallback& fresh_callback);

@@ -441,10 +441,12 @@ FitResult solve(const FitProblem& problem) {
     });
     options.callbacks.push_back(&iteration_report);
     silence_solver_log();
-    // Every bounded coordinate joins the active set: the shared parameters, then the contact points.
+    // Every bounded coordinate joins the active set: the shared parameters (held where a solve ends with one on its
+    // bound), then the contact points (held once they crawl along it).
     std::vector<BoundedCoordinate> bounded;
     for (std::size_t j = 0; j < k; ++j) {
-        bounded.push_back({shared.data(), static_cast<int>(k), static_cast<int>(j), scales.lower[j], scales.upper[j]});
+        bounded.push_back({shared.data(), static_cast<int>(k), static_cast<int>(j), scales.lower[j], scales.upper[j],
+                           false, Hold::at_the_end});
     }
     if (scales.fit_contact) {
         for (std::size_t c = 0; c < problem.curves.size(); ++c) {

@@ -103,6 +103,18 @@ TEST(ActiveBounds, ACoordinateTheCostPushesOutwardEndsHeldOnItsBound) {
     EXPECT_TRUE(bounded[0].held);
 }
 
+// The same minimum beyond the bound for a coordinate held only where a solve ends on its bound (a material's
+// parameter): Ceres' projected solve ends first, the coordinate is held there, and a second solve reaches y = 0.
+TEST(ActiveBounds, ACoordinateHeldAtTheEndEndsHeldOnItsBoundAtTheBoundedMinimum) {
+    ChainProblem chain(-1.0, 10.0, 3.0, 3.0);
+    std::vector<BoundedCoordinate> bounded{{&chain.x, 1, 0, 0.0, 5.0, false, Hold::at_the_end}};
+    const ActiveBoundsSolve solved = chain.solve(bounded);
+    EXPECT_EQ(chain.x, 0.0);
+    EXPECT_NEAR(chain.y, 0.0, 1e-8);
+    EXPECT_EQ(solved.solves, 2u);
+    EXPECT_TRUE(bounded[0].held);
+}
+
 // One residual r = sum_b coefficients[b] . p_b - target over blocks of the coefficients' sizes, with its Jacobian.
 class Plane : public ceres::CostFunction {
 public:

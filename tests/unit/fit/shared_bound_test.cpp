@@ -72,9 +72,11 @@ FitProblem kelvin_voigt_problem(std::optional<double> modulus_fixed, double uppe
 // independent ways give: the fit of eta alone with G fixed at the bound (the same model: to 1e-6 of eta and 1e-9 of
 // the residual), and the closed form's normal equation for eta with G fixed, eta = sum (F - G a) b / sum b^2 (to
 // 1e-3: the element model's discretisation). Before the shared parameters joined the active set (main at 4d24c41),
-// Ceres' projected steps crawled along the bound and its tolerances stopped them short, "converged": 61 iterations
-// and 253 runs, eta 1.9 % below the bounded minimum's and the residual RMS 1.2 % above it. Now 12 iterations and 110
-// runs, eta within 2e-9.
+// Ceres' projected steps crawled along the bound and the statistical convergence stopped them short, "converged":
+// 61 iterations and 253 runs, eta 1.9 % below the bounded minimum's and the residual RMS 1.2 % above it. Now G is
+// held where that solve ends (Hold::at_the_end) and a second solve reaches the minimum: 63 iterations, 267 runs, eta
+// within 2.3e-8. (Held once it crawled, as a contact point is, the fit took 12 iterations, but that rule ended
+// three of the JPK record's candidates at higher minima: docs/performance.md, "A shared parameter on its bound".)
 TEST(SharedBound, ParameterPushedBeyondItsBoundEndsHeldThereAtTheBoundedMinimum) {
     const FitResult result = fit(kelvin_voigt_problem(std::nullopt));
     ASSERT_TRUE(result.converged) << result.status;
@@ -92,7 +94,6 @@ TEST(SharedBound, ParameterPushedBeyondItsBoundEndsHeldThereAtTheBoundedMinimum)
         sbb += b * b;
     }
     EXPECT_NEAR(result.values[1], sfb / sbb, 1e-3 * sfb / sbb);
-    EXPECT_LE(result.iterations, 20u);
 
     // Held on its bound, it is still reported as at its bound.
     bool at_bound = false;
@@ -104,11 +105,11 @@ TEST(SharedBound, ParameterPushedBeyondItsBoundEndsHeldThereAtTheBoundedMinimum)
 }
 
 // G starts on an upper bound 10 % above the truth (2.2e3 Pa) with eta far below its own (1 Pa s): the force falls
-// short and the cost pushes G beyond the bound while eta grows, so G is held there; with eta fitted, the cost pulls G
-// inward (Karush-Kuhn-Tucker), it is released, and the fit ends inside, at the minimum of a fit whose bound lies far
-// away (1e5 Pa), to 1e-6. With the release taken out (the slope taken as 0) it ends held at 2.2e3 Pa, "converged,
-// misfit", eta 311 Pa s against 400.
-TEST(SharedBound, ParameterHeldOnItsBoundWhileThePullIsOutwardIsReleasedAndEndsInside) {
+// short and the cost pushes G beyond the bound while eta grows, for more than `patience` steps; with eta fitted, the
+// cost pulls G inward, and the fit ends inside, at the minimum of a fit whose bound lies far away (1e5 Pa), to 1e-6.
+// Held once it crawled (Hold::when_crawling) and never released, G ended at 2.2e3 Pa, "converged, misfit", eta
+// 311 Pa s against 400 (checked with the release taken out); held until the end, the KKT release frees it.
+TEST(SharedBound, ParameterOnItsBoundWhileTheCostPushesItOutwardEndsInsideWhereItsMinimumIs) {
     const FitResult result = fit(kelvin_voigt_problem(std::nullopt, 2.2e3, 2.2e3, 1.0));
     ASSERT_TRUE(result.converged) << result.status;
     const FitResult wide = fit(kelvin_voigt_problem(std::nullopt, 1e5));
