@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// A Ceres solve that holds a bounded coordinate on its bound while the cost pushes it outward (internal to
-/// mdr_fit; docs/performance.md, "Real curves": a contact point on the record's bound).
+/// mdr_fit; docs/performance.md, "Real curves": a contact point on the record's bound, and "A shared parameter on
+/// its bound").
 
 #include <ceres/cost_function.h>
 #include <ceres/iteration_callback.h>

@@ -121,7 +121,9 @@ public:
     Plane(std::vector<std::vector<double>> coefficients, double target)
         : coefficients_(std::move(coefficients)), target_(target) {
         set_num_residuals(1);
-        for (const auto& block : coefficients_) mutable_parameter_block_sizes()->push_back(static_cast<int>(block.size()));
+        for (const auto& block : coefficients_) {
+            mutable_parameter_block_sizes()->push_back(static_cast<int>(block.size()));
+        }
     }
 
     bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
