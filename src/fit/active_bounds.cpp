@@ -15,8 +15,19 @@ bool on_bound(const BoundedCoordinate& coordinate) {
     return value == coordinate.lower || value == coordinate.upper;  // Ceres' projection clamps to the bound exactly
 }
 
-// Ends a solve once a free coordinate (never released) has sat on a bound after `patience` successful steps in a
-// row (it reads the values, so the solve updates its state every iteration).
+// The sign of d cost / dx on a bound (Karush-Kuhn-Tucker): the cost pushes x outward (beyond the bound) or pulls it
+// inward.
+bool pushed_outward(const BoundedCoordinate& coordinate, double slope) {
+    const double value = coordinate.block[coordinate.index];
+    return (value == coordinate.lower && slope > 0.0) || (value == coordinate.upper && slope < 0.0);
+}
+bool pulled_inward(const BoundedCoordinate& coordinate, double slope) {
+    const double value = coordinate.block[coordinate.index];
+    return (value == coordinate.lower && slope < 0.0) || (value == coordinate.upper && slope > 0.0);
+}
+
+// Ends a solve once a free Hold::when_crawling coordinate (never released) has sat on a bound after `patience`
+// successful steps in a row (it reads the values, so the solve updates its state every iteration).
 class BoundCrawlStop : public ceres::IterationCallback {
 public:
     BoundCrawlStop(const std::vector<BoundedCoordinate>& bounded, const std::vector<bool>& released)
@@ -25,7 +36,8 @@ public:
     ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
         if (!summary.step_is_successful) return ceres::SOLVER_CONTINUE;
         for (std::size_t i = 0; i < bounded_.size(); ++i) {
-            streak_[i] = !bounded_[i].held && !released_[i] && on_bound(bounded_[i]) ? streak_[i] + 1 : 0;
+            const bool counted = bounded_[i].hold == Hold::when_crawling && !bounded_[i].held && !released_[i];
+            streak_[i] = counted && on_bound(bounded_[i]) ? streak_[i] + 1 : 0;
             if (streak_[i] >= patience) stopped_ = true;
         }
         return stopped_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
@@ -69,23 +81,40 @@ void apply_holds(ceres::Problem& problem, const std::vector<BoundedCoordinate>& 
 
 }  // namespace
 
-double second_block_gradient(const ceres::CostFunction& cost, const double* first,
-                             const BoundedCoordinate& coordinate) {
-    const auto n = static_cast<std::size_t>(cost.num_residuals());
+double coordinate_gradient(const ceres::Problem& problem, const BoundedCoordinate& coordinate) {
     const auto size = static_cast<std::size_t>(coordinate.block_size);
-    std::vector<double> residuals(n);
-    std::vector<double> jacobian(n * size);
-    const double* parameters[] = {first, coordinate.block};
-    double* jacobians[] = {nullptr, jacobian.data()};
-    if (!cost.Evaluate(parameters, residuals.data(), jacobians)) return 0.0;  // no evidence to release it
-    double slope = 0.0;
     const auto column = static_cast<std::size_t>(coordinate.index);
-    for (std::size_t i = 0; i < n; ++i) slope += residuals[i] * jacobian[i * size + column];
+    std::vector<ceres::ResidualBlockId> residual_blocks;
+    problem.GetResidualBlocksForParameterBlock(coordinate.block, &residual_blocks);
+    double slope = 0.0;
+    for (const ceres::ResidualBlockId id : residual_blocks) {
+        const ceres::CostFunction& cost = *problem.GetCostFunctionForResidualBlock(id);
+        std::vector<double*> blocks;
+        problem.GetParameterBlocksForResidualBlock(id, &blocks);
+        const auto n = static_cast<std::size_t>(cost.num_residuals());
+        std::vector<double> residuals(n);
+        std::vector<double> jacobian(n * size);
+        std::vector<double*> jacobians(blocks.size(), nullptr);
+        for (std::size_t b = 0; b < blocks.size(); ++b) {
+            if (blocks[b] == coordinate.block) jacobians[b] = jacobian.data();
+        }
+        if (!cost.Evaluate(blocks.data(), residuals.data(), jacobians.data())) return 0.0;
+        double block_slope = 0.0;
+        for (std::size_t i = 0; i < n; ++i) block_slope += residuals[i] * jacobian[i * size + column];
+        if (const ceres::LossFunction* loss = problem.GetLossFunctionForResidualBlock(id)) {
+            double squared = 0.0;
+            for (const double r : residuals) squared += r * r;
+            double rho[3];
+            loss->Evaluate(squared, rho);
+            block_slope *= rho[1];
+        }
+        slope += block_slope;
+    }
     return slope;
 }
 
 ActiveBoundsSolve solve_with_active_bounds(ceres::Solver::Options options, ceres::Problem& problem,
-                                           std::vector<BoundedCoordinate>& bounded, const CoordinateGradient& gradient,
+                                           std::vector<BoundedCoordinate>& bounded,
                                            const FreshCallback& fresh_callback) {
     ActiveBoundsSolve result;
     const int budget = options.max_num_iterations;
@@ -121,10 +150,15 @@ ActiveBoundsSolve solve_with_active_bounds(ceres::Solver::Options options, ceres
                 if (crawl.crawling(i)) coordinate.held = changed = true;
                 continue;
             }
-            if (!coordinate.held) continue;
-            const double slope = gradient(coordinate);
-            const double value = coordinate.block[coordinate.index];
-            if ((value == coordinate.lower && slope < 0.0) || (value == coordinate.upper && slope > 0.0)) {
+            if (!coordinate.held) {
+                const bool ended = result.summary.termination_type != ceres::NO_CONVERGENCE;
+                if (coordinate.hold == Hold::at_the_end && ended && !released[i] && on_bound(coordinate) &&
+                    pushed_outward(coordinate, coordinate_gradient(problem, coordinate))) {
+                    coordinate.held = changed = true;
+                }
+                continue;
+            }
+            if (pulled_inward(coordinate, coordinate_gradient(problem, coordinate))) {
                 coordinate.held = false;
                 released[i] = changed = true;
             }

@@ -442,22 +442,22 @@ FitResult solve(const FitProblem& problem) {
     });
     options.callbacks.push_back(&iteration_report);
     silence_solver_log();
-    std::vector<BoundedCoordinate> contact_points;
+    // Every bounded coordinate joins the active set: the shared parameters (held where a solve ends with one on its
+    // bound), then the contact points (held once they crawl along it).
+    std::vector<BoundedCoordinate> bounded;
+    for (std::size_t j = 0; j < k; ++j) {
+        bounded.push_back({shared.data(), static_cast<int>(k), static_cast<int>(j), scales.lower[j], scales.upper[j],
+                           false, Hold::at_the_end});
+    }
     if (scales.fit_contact) {
         for (std::size_t c = 0; c < problem.curves.size(); ++c) {
             const auto bounds = contact_bounds(problem, c);
-            contact_points.push_back({nuisance[c].data(), static_cast<int>(m), 0, bounds[0] / scales.depth[c],
-                                      bounds[1] / scales.depth[c]});
+            bounded.push_back({nuisance[c].data(), static_cast<int>(m), 0, bounds[0] / scales.depth[c],
+                               bounds[1] / scales.depth[c]});
         }
     }
-    const auto contact_gradient = [&](const BoundedCoordinate& coordinate) {
-        std::size_t c = 0;
-        while (nuisance[c].data() != coordinate.block) ++c;
-        return second_block_gradient(*costs[c], shared.data(), coordinate);
-    };
     const ActiveBoundsSolve solved = solve_with_active_bounds(
-        options, solver_problem, contact_points, contact_gradient,
-        [] { return std::make_unique<StatisticalConvergence>(); });
+        options, solver_problem, bounded, [] { return std::make_unique<StatisticalConvergence>(); });
     const ceres::Solver::Summary& summary = solved.summary;
     if (summary.termination_type == ceres::FAILURE && summary.num_successful_steps == 0) {
         require_evaluable_start(problem, costs, rebounds, shared, nuisance);
