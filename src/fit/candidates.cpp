@@ -13,6 +13,7 @@
 #include "mdr/fit/curve_window.hpp"
 #include "pre_contact_baseline.hpp"
 #include "mdr/fit/plausibility.hpp"
+#include "mdr/fit/special_cases.hpp"
 #include <Eigen/Dense>
 
 #include "mdr/numerics/nonnegative_least_squares.hpp"
@@ -229,7 +230,7 @@ CandidateFit fit_material(const CandidateProblem& base, const Material& material
     } catch (const InvalidInput& error) {  // a rule the candidate breaks (the case's are checked before): name it
         throw InvalidInput(error.key(), error.value(), error.rule() + " (candidate " + material.name + ")");
     }
-    CandidateFit fitted{material.name, std::move(result), "", material.grid, 0.0, 0.0};
+    CandidateFit fitted{material.name, std::move(result), "", material.grid, 0.0, 0.0, ""};
     add_plausibility_flags(problem, base.units, fitted.result);
     fitted.material_table = material_text(material, fitted.result.values.data() + offset);
     return fitted;
@@ -356,7 +357,55 @@ std::vector<double> linear_start(const CandidateProblem& base, const Material& m
     return start;
 }
 
+// The chi-square of a fit: its noise-weighted residual sum of squares, n (RSS / n) from log_residual.
+double chi_square(const FitResult& result) {
+    const auto n = static_cast<double>(result.points);
+    return n * std::exp(log_residual(result) / n);
+}
+
 }  // namespace
+
+std::string local_minimum_flag(const CandidateFit& fitted, const CandidateFit& better) {
+    const double mine = fitted.result.residual_to_noise;
+    const double theirs = better.result.residual_to_noise;
+    const bool ratios = std::isfinite(mine) && std::isfinite(theirs);
+    return fmt::format("a local minimum: its special case `{}` fits better ({} {:.6g} < {:.6g})", better.name,
+                       ratios ? "r/noise" : "chi-square", ratios ? theirs : chi_square(better.result),
+                       ratios ? mine : chi_square(fitted.result));
+}
+
+void flag_local_minima(std::vector<CandidateFit>& fits) {
+    for (auto& fitted : fits) {
+        const std::vector<std::string> cases = special_cases(fitted.name);
+        const CandidateFit* best = nullptr;
+        for (const auto& other : fits) {
+            if (std::find(cases.begin(), cases.end(), other.name) == cases.end()) continue;
+            if (other.result.points != fitted.result.points) continue;
+            if (!best || chi_square(other.result) < chi_square(best->result)) best = &other;
+        }
+        if (!best) continue;
+        const double special = chi_square(best->result);
+        if (chi_square(fitted.result) - special <= 1.0 + local_minimum_relative_margin * special) continue;
+        fitted.better_special_case = best->name;
+        fitted.result.flags.push_back(local_minimum_flag(fitted, *best));
+    }
+}
+
+void rank_candidates(ModelChoice& choice) {
+    flag_local_minima(choice.fits);
+    std::stable_sort(choice.fits.begin(), choice.fits.end(),
+                     [](const CandidateFit& a, const CandidateFit& b) { return a.result.bic < b.result.bic; });
+    double aic = std::numeric_limits<double>::infinity();
+    for (const auto& fitted : choice.fits) aic = std::min(aic, fitted.result.aic);
+    choice.preferred = choice.fits.size();
+    for (std::size_t i = 0; i < choice.fits.size(); ++i) {
+        auto& fitted = choice.fits[i];
+        fitted.delta_aic = fitted.result.aic - aic;
+        fitted.delta_bic = fitted.result.bic - choice.fits.front().result.bic;
+        if (fitted.preferable() && choice.preferred == choice.fits.size()) choice.preferred = i;
+    }
+    if (choice.preferred == choice.fits.size()) choice.preferred = 0;
+}
 
 std::vector<double> spectrum_grid(double shortest, double longest, double per_decade) {
     std::vector<double> grid{longest};
@@ -435,19 +484,7 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
         }
         choice.fits.push_back(std::move(fitted));
     }
-
-    std::stable_sort(choice.fits.begin(), choice.fits.end(),
-                     [](const CandidateFit& a, const CandidateFit& b) { return a.result.bic < b.result.bic; });
-    double aic = std::numeric_limits<double>::infinity();
-    for (const auto& fitted : choice.fits) aic = std::min(aic, fitted.result.aic);
-    choice.preferred = choice.fits.size();
-    for (std::size_t i = 0; i < choice.fits.size(); ++i) {
-        auto& fitted = choice.fits[i];
-        fitted.delta_aic = fitted.result.aic - aic;
-        fitted.delta_bic = fitted.result.bic - choice.fits.front().result.bic;
-        if (fitted.preferable() && choice.preferred == choice.fits.size()) choice.preferred = i;
-    }
-    if (choice.preferred == choice.fits.size()) choice.preferred = 0;
+    rank_candidates(choice);
     return choice;
 }
 
