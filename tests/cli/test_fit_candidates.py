@@ -5,11 +5,40 @@ from __future__ import annotations
 
 import csv
 import json
+import pathlib
 
 import pytest
 
 from test_bad_input import assert_bad_input
 from test_fit import G_TRUE, write_curve
+
+REPO_ROOT = pathlib.Path(__file__).resolve().parents[2]
+
+# The JPK stress-relaxation record on its power-law probe (examples/fit/jpk-relaxation-power.toml with an elastic
+# body and only the probe's n free; docs/performance.md, "A shared parameter on its bound"), two candidates:
+# fractional_standard, which contains elastic (G1 -> 0), ends in a local minimum above it (r/noise 770.5 > 767.0).
+JPK_CANDIDATES = f"""
+title = "JPK cell 1, curve 1: power-law probe, elastic and fractional_standard"
+[material]
+model = "elastic"
+G = 300.0
+[indenter]
+shape = "power"
+c = 5.0e4
+n = 2.0
+[fit]
+free = ["indenter.n"]
+bounds = {{ "indenter.n" = [1.05, 6.0] }}
+candidates = ["elastic", "fractional_standard"]
+[[fit.data]]
+file = "{REPO_ROOT / 'examples' / 'data' / 'jpk_sr_cell1-0001.csv'}"
+time = "t_s"
+piezo = "z_measured_m"
+deflection = "deflection_m"
+spring_constant = 1.0677
+segment_column = "segment"
+segments = ["0", "1", "2"]
+"""
 
 CASE = """
 [material]
@@ -54,6 +83,9 @@ def test_candidates_are_ranked_and_written_in_folders(run_mdr, case, workdir):
         rows = list(csv.DictReader(handle))
     assert [row["candidate"] for row in rows] == ["elastic", "standard"]
     assert float(rows[0]["delta_bic"]) == 0.0 and float(rows[1]["delta_bic"]) > 0.0
+    # standard, which contains elastic, fits at least as well: no local minimum
+    assert [row["better_special_case"] for row in rows] == ["", ""]
+    assert [entry["better_special_case"] for entry in ranking["candidates"]] == [None, None]
     for name in ("elastic", "standard"):
         assert {"fit.json", "fitted.toml", "curves.csv"} <= {p.name for p in (out / name).iterdir()}
     elastic = json.loads((out / "elastic" / "fit.json").read_text())
@@ -106,3 +138,28 @@ def test_a_candidates_fit_replaces_its_own_result_directory(run_mdr, case, workd
     assert refused.returncode == 2, refused.stderr
     assert "holds elastic/notes.txt, which mdr did not write" in refused.stderr, refused.stderr
     assert (workdir / "out" / "elastic" / "notes.txt").read_text(encoding="utf-8") == "mine"
+
+
+def test_a_fit_above_its_special_case_is_flagged_a_local_minimum_in_every_output(run_mdr, workdir):
+    path = workdir / "jpk.toml"
+    path.write_text(JPK_CANDIDATES, encoding="utf-8")
+    result = run_mdr("fit", path, "--out", workdir / "out", timeout=300)
+    assert result.returncode == 0, result.stderr
+    out = workdir / "out"
+    ranking = json.loads((out / "ranking.json").read_text())
+    entries = {entry["name"]: entry for entry in ranking["candidates"]}
+    elastic, fractional = entries["elastic"], entries["fractional_standard"]
+    assert fractional["converged"]  # the solver's word, which the flag corrects
+    assert fractional["residual_to_noise"] > 1.001 * elastic["residual_to_noise"]
+    assert fractional["better_special_case"] == "elastic" and elastic["better_special_case"] is None
+    assert ranking["preferred"] == "elastic"
+    flag = (f"a local minimum: its special case `elastic` fits better "
+            f"(r/noise {elastic['residual_to_noise']:.6g} < {fractional['residual_to_noise']:.6g})")
+    assert f"fractional_standard: {flag}" in result.stdout, result.stdout
+    table_row = next(line for line in result.stdout.splitlines() if line.startswith("  fractional_standard "))
+    assert table_row.endswith(", a local minimum (note below)"), table_row
+    with open(out / "models.csv", newline="", encoding="utf-8") as handle:
+        rows = {row["candidate"]: row for row in csv.DictReader(handle)}
+    assert rows["fractional_standard"]["better_special_case"] == "elastic"
+    assert rows["elastic"]["better_special_case"] == ""
+    assert flag in json.loads((out / "fractional_standard" / "fit.json").read_text())["flags"]

@@ -3,6 +3,7 @@ form, G = 1 MPa) with Gaussian noise: the elastic model is preferred, the spectr
 
 from __future__ import annotations
 
+import pathlib
 import tomllib
 
 import numpy as np
@@ -37,6 +38,26 @@ def test_candidates_are_ranked_and_the_simplest_sufficient_model_preferred():
     assert result.ranking[0]["delta_bic"] == 0.0 and result.ranking[1]["delta_bic"] > 0.0
     assert tomllib.loads(result.fitted_case)["material"] == {"model": "elastic", "G": result.parameters["material.G"]}
     assert result.candidates["standard"].summary["undetermined"]  # its relaxation term is not needed
+    assert [entry["better_special_case"] for entry in result.ranking] == [None, None]  # standard contains elastic
+
+
+def test_a_fit_above_its_special_case_is_a_local_minimum_and_not_preferred(tmp_path):
+    """The JPK record on its power-law probe (tests/cli/test_fit_candidates.py, JPK_CANDIDATES): fractional_standard
+    ends above elastic, its special case as G1 -> 0."""
+    data = pathlib.Path(__file__).resolve().parents[2] / "examples" / "data" / "jpk_sr_cell1-0001.csv"
+    result = mdr.fit({
+        "material": {"model": "elastic", "G": 300.0},
+        "indenter": {"shape": "power", "c": 5.0e4, "n": 2.0},
+        "fit": {"free": ["indenter.n"], "bounds": {"indenter.n": [1.05, 6.0]},
+                "candidates": ["elastic", "fractional_standard"],
+                "data": [{"file": str(data), "time": "t_s", "piezo": "z_measured_m", "deflection": "deflection_m",
+                          "spring_constant": 1.0677, "segment_column": "segment", "segments": ["0", "1", "2"]}]}})
+    entries = {entry["name"]: entry for entry in result.ranking}
+    assert entries["fractional_standard"]["better_special_case"] == "elastic"
+    assert entries["elastic"]["better_special_case"] is None
+    assert result is result.candidates["elastic"]
+    flags = result.candidates["fractional_standard"].summary["flags"]
+    assert any(flag.startswith("a local minimum: its special case `elastic` fits better (r/noise ") for flag in flags)
 
 
 def test_spectrum_of_an_elastic_body_is_flat():
