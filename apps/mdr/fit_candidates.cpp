@@ -64,6 +64,7 @@ bool run_model_choice(const fitcase::FitCase& fit_case, const std::vector<fit::C
         std::string flags = result.undetermined.empty()
                                 ? ""
                                 : fmt::format(", {} undetermined", result.undetermined.size());
+        if (!fitted.refitted_from.empty()) flags += ", refitted from " + fitted.refitted_from;
         if (!fitted.better_special_case.empty()) flags += ", a local minimum (note below)";
         fmt::print("  {:<{}} {:>5} {:>14} {:>10.1f} {:>10.1f}  {}{}\n", fitted.name, name_width, result.free_count,
                    residual_to_noise_text(result), fitted.delta_aic, fitted.delta_bic, result.status, flags);

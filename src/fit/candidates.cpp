@@ -230,7 +230,7 @@ CandidateFit fit_material(const CandidateProblem& base, const Material& material
     } catch (const InvalidInput& error) {  // a rule the candidate breaks (the case's are checked before): name it
         throw InvalidInput(error.key(), error.value(), error.rule() + " (candidate " + material.name + ")");
     }
-    CandidateFit fitted{material.name, std::move(result), "", material.grid, 0.0, 0.0, ""};
+    CandidateFit fitted{material.name, std::move(result), "", material.grid, 0.0, 0.0, "", ""};
     add_plausibility_flags(problem, base.units, fitted.result);
     fitted.material_table = material_text(material, fitted.result.values.data() + offset);
     return fitted;
@@ -363,6 +363,45 @@ double chi_square(const FitResult& result) {
     return n * std::exp(log_residual(result) / n);
 }
 
+// The fitted special case of `fitted`'s model among `fits` (special_cases) of the smallest chi-square, when that
+// chi-square is below `fitted`'s by more than 1 + local_minimum_relative_margin of it (flag_local_minima); null
+// otherwise. Fits of different residual counts are not compared.
+const CandidateFit* clearly_better_special_case(const std::vector<CandidateFit>& fits, const CandidateFit& fitted) {
+    const std::vector<std::string> cases = special_cases(fitted.name);
+    const CandidateFit* best = nullptr;
+    for (const auto& other : fits) {
+        if (std::find(cases.begin(), cases.end(), other.name) == cases.end()) continue;
+        if (other.result.points != fitted.result.points) continue;
+        if (!best || chi_square(other.result) < chi_square(best->result)) best = &other;
+    }
+    if (!best) return nullptr;
+    const double special = chi_square(best->result);
+    return chi_square(fitted.result) - special > 1.0 + local_minimum_relative_margin * special ? best : nullptr;
+}
+
+// `material` started from the fitted values of `special`, a direct special case of it, by `keys`
+// (start_from_special_case): a key the limit puts on a bound starts there, the others at the special case's value
+// of their key (inside their bounds) where it has one.
+Material started_from(Material material, const CandidateFit& special, const std::vector<KeyStart>& keys) {
+    const std::vector<std::string>& names = special.result.names;
+    for (auto& parameter : material.parameters) {
+        const std::string key = parameter.name.substr(std::string("material.").size());
+        const auto rule = std::find_if(keys.begin(), keys.end(), [&](const KeyStart& k) { return k.key == key; });
+        std::string source = key;
+        if (rule != keys.end()) {
+            if (rule->from == KeyStart::From::lower_bound) parameter.start = parameter.lower;
+            if (rule->from == KeyStart::From::upper_bound) parameter.start = parameter.upper;
+            if (rule->from != KeyStart::From::value) continue;
+            source = rule->value_of;
+        }
+        const auto found = std::find(names.begin(), names.end(), "material." + source);
+        if (found == names.end()) continue;
+        const double value = special.result.values[static_cast<std::size_t>(found - names.begin())];
+        parameter.start = std::clamp(value, parameter.lower, parameter.upper);
+    }
+    return material;
+}
+
 }  // namespace
 
 std::string local_minimum_flag(const CandidateFit& fitted, const CandidateFit& better) {
@@ -376,16 +415,8 @@ std::string local_minimum_flag(const CandidateFit& fitted, const CandidateFit& b
 
 void flag_local_minima(std::vector<CandidateFit>& fits) {
     for (auto& fitted : fits) {
-        const std::vector<std::string> cases = special_cases(fitted.name);
-        const CandidateFit* best = nullptr;
-        for (const auto& other : fits) {
-            if (std::find(cases.begin(), cases.end(), other.name) == cases.end()) continue;
-            if (other.result.points != fitted.result.points) continue;
-            if (!best || chi_square(other.result) < chi_square(best->result)) best = &other;
-        }
+        const CandidateFit* best = clearly_better_special_case(fits, fitted);
         if (!best) continue;
-        const double special = chi_square(best->result);
-        if (chi_square(fitted.result) - special <= 1.0 + local_minimum_relative_margin * special) continue;
         fitted.better_special_case = best->name;
         fitted.result.flags.push_back(local_minimum_flag(fitted, *best));
     }
@@ -483,6 +514,33 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
             if (log_residual(again.result) < log_residual(fitted.result)) fitted = std::move(again);
         }
         choice.fits.push_back(std::move(fitted));
+    }
+    // A fit that ended clearly above a direct special case of its model is fitted once more from that special
+    // case's solution (start_from_special_case: the limit's keys on their bounds); the lower of the two is kept.
+    for (auto& fitted : choice.fits) {
+        const CandidateFit* better = clearly_better_special_case(choice.fits, fitted);
+        const auto keys = better ? start_from_special_case(fitted.name, better->name) : std::nullopt;
+        if (!keys) continue;
+        announce(fitted.name + " from " + better->name);
+        const Material material =
+            started_from(candidate(fitted.name, choice.modulus_scale, window, lags), *better, *keys);
+        const std::vector<double> from_indenter(better->result.values.begin(),
+                                                better->result.values.begin() + static_cast<std::ptrdiff_t>(offset));
+        CandidateFit again =
+            fit_material(base, material, from_indenter, curves, nuisance_starts(base, better->result), {});
+        const double first = fitted.result.residual_to_noise;
+        const double second = again.result.residual_to_noise;
+        if (chi_square(again.result) < chi_square(fitted.result)) {
+            again.result.flags.push_back(fmt::format("refitted from its special case `{}`'s solution: the first fit "
+                                                     "ended in a local minimum (r/noise {:.6g})",
+                                                     better->name, first));
+            fitted = std::move(again);
+        } else {
+            fitted.result.flags.push_back(fmt::format("refitted from its special case `{}`'s solution, which ended "
+                                                      "no lower (r/noise {:.6g}): the first fit is kept",
+                                                      better->name, second));
+        }
+        fitted.refitted_from = better->name;
     }
     rank_candidates(choice);
     return choice;

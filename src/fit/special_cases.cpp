@@ -33,18 +33,35 @@ namespace {
 // E_0.99's power-law tail, ~1e-2 of G1); springpot, power_law -> elastic as alpha, beta -> 0 (the bound 0.01 leaves
 // t^(-0.01), ~1e-2 per decade); maxwell -> elastic as tau -> inf (the bound 1e2 times the longest record leaves
 // exp(-1e-2)).
-constexpr std::pair<std::string_view, std::string_view> direct[] = {
-    {"standard", "elastic"},
-    {"standard", "maxwell"},
-    {"spectrum", "elastic"},
-    {"kelvin_voigt", "elastic"},
-    {"kelvin_voigt", "viscous"},
-    {"fractional_kelvin_voigt", "springpot"},
-    {"fractional_kelvin_voigt", "elastic"},
-    {"fractional_maxwell", "elastic"},
-    {"fractional_standard", "fractional_maxwell"},
-    {"fractional_standard", "elastic"},
+
+using From = KeyStart::From;
+
+// A direct pair, and the start of start_from_special_case by its limit (none for a spectrum, whose moduli are
+// on a grid).
+struct PairStart {
+    std::string_view model;
+    std::string_view special;
+    std::optional<std::vector<KeyStart>> keys;
 };
+
+using Keys = std::vector<KeyStart>;
+
+const std::vector<PairStart>& pair_starts() {
+    static const std::vector<PairStart> starts = {
+        {"standard", "elastic", Keys{{"terms[0][0]", From::lower_bound, ""}, {"G_inf", From::value, "G"}}},
+        {"standard", "maxwell",
+         Keys{{"G_inf", From::lower_bound, ""}, {"terms[0][0]", From::value, "G"}, {"terms[0][1]", From::value, "tau"}}},
+        {"spectrum", "elastic", std::nullopt},
+        {"kelvin_voigt", "elastic", Keys{{"eta", From::lower_bound, ""}}},
+        {"kelvin_voigt", "viscous", Keys{{"G", From::lower_bound, ""}}},
+        {"fractional_kelvin_voigt", "springpot", Keys{{"G", From::lower_bound, ""}}},
+        {"fractional_kelvin_voigt", "elastic", Keys{{"c", From::lower_bound, ""}, {"alpha", From::lower_bound, ""}}},
+        {"fractional_maxwell", "elastic", Keys{{"c", From::upper_bound, ""}, {"alpha", From::lower_bound, ""}}},
+        {"fractional_standard", "fractional_maxwell", Keys{{"G_inf", From::lower_bound, ""}, {"G1", From::value, "G"}}},
+        {"fractional_standard", "elastic", Keys{{"G1", From::lower_bound, ""}, {"G_inf", From::value, "G"}}},
+    };
+    return starts;
+}
 
 // The terms N of "pronyN" (0 when `name` is not one): prony1 is the standard solid; pronyN -> prony(N-1) or
 // standard, and -> maxwell.
@@ -63,13 +80,30 @@ std::vector<std::string> direct_special_cases(const std::string& candidate) {
         cases.emplace_back("maxwell");
         return cases;
     }
-    for (const auto& [model, special] : direct) {
-        if (model == candidate) cases.emplace_back(special);
+    for (const auto& pair : pair_starts()) {
+        if (pair.model == candidate) cases.emplace_back(pair.special);
     }
     return cases;
 }
 
 }  // namespace
+
+std::optional<std::vector<KeyStart>> start_from_special_case(const std::string& candidate,
+                                                              const std::string& special) {
+    const std::size_t terms = prony_terms(candidate);
+    if (terms == 1) return start_from_special_case("standard", special == "prony1" ? "standard" : special);
+    if (terms >= 2) {  // from prony(N-1): its terms kept, the new one's modulus on its lower bound
+        if (special != (terms == 2 ? "standard" : "prony" + std::to_string(terms - 1)) &&
+            !(terms == 2 && special == "prony1")) {
+            return std::nullopt;
+        }
+        return std::vector<KeyStart>{{"terms[" + std::to_string(terms - 1) + "][0]", From::lower_bound, ""}};
+    }
+    for (const auto& start : pair_starts()) {
+        if (start.model == candidate && start.special == special) return start.keys;
+    }
+    return std::nullopt;
+}
 
 std::vector<std::string> special_cases(const std::string& candidate) {
     std::vector<std::string> found;

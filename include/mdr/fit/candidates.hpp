@@ -27,6 +27,10 @@ struct CandidateFit {
     /// The fitted special case of this model (special_cases) that fits clearly better than this fit
     /// (flag_local_minima): this fit ended in a local minimum, not at its model's best. Empty when there is none.
     std::string better_special_case;
+    /// The special case from whose fitted values this model was fitted again, once, after its first fit ended clearly
+    /// above that special case (fit_candidates); the result is the lower of the two fits, and a flag says which.
+    /// Empty when it was not.
+    std::string refitted_from;
     /// Whether this fit may be preferred: converged, with no undetermined parameter, and not a local minimum above a
     /// special case of its model (better_special_case).
     bool preferable() const {

@@ -9,6 +9,7 @@
 
 #include "mdr/fit/candidates.hpp"
 #include "mdr/fit/special_cases.hpp"
+#include "mdr/fitcase/model_choice_files.hpp"
 
 namespace mdr::fit {
 namespace {
@@ -69,6 +70,38 @@ TEST(SpecialCases, LimitsWithinTheBoundsAndTheirClosure) {
     EXPECT_TRUE(special_cases("springpot").empty());
     EXPECT_TRUE(special_cases("power_law").empty());
     EXPECT_TRUE(special_cases("elastic").empty());
+}
+
+TEST(SpecialCases, AStartFromASpecialCasePutsTheLimitsKeysOnTheirBounds) {
+    using From = KeyStart::From;
+    const auto maxwell = start_from_special_case("fractional_standard", "fractional_maxwell");
+    ASSERT_TRUE(maxwell);
+    ASSERT_EQ(maxwell->size(), 2U);
+    EXPECT_EQ((*maxwell)[0].key, "G_inf");
+    EXPECT_EQ((*maxwell)[0].from, From::lower_bound);
+    EXPECT_EQ((*maxwell)[1].key, "G1");
+    EXPECT_EQ((*maxwell)[1].value_of, "G");  // c and alpha: their own names
+    const auto prony3 = start_from_special_case("prony3", "prony2");
+    ASSERT_TRUE(prony3);
+    ASSERT_EQ(prony3->size(), 1U);
+    EXPECT_EQ(prony3->front().key, "terms[2][0]");
+    EXPECT_EQ(prony3->front().from, From::lower_bound);
+    EXPECT_TRUE(start_from_special_case("prony2", "prony1"));
+    EXPECT_TRUE(start_from_special_case("prony1", "elastic"));
+    // an indirect or a missing special case, a spectrum's grid, maxwell in a series of two terms: no start
+    EXPECT_FALSE(start_from_special_case("prony3", "elastic"));
+    EXPECT_FALSE(start_from_special_case("fractional_standard", "fractional_kelvin_voigt"));
+    EXPECT_FALSE(start_from_special_case("spectrum", "elastic"));
+    EXPECT_FALSE(start_from_special_case("prony2", "maxwell"));
+    // every direct special case of a registry model has one
+    for (const char* model : {"standard", "kelvin_voigt", "fractional_kelvin_voigt", "fractional_maxwell",
+                              "fractional_standard"}) {
+        for (const auto& special : special_cases(model)) {
+            const auto start = start_from_special_case(model, special);
+            if (!start) continue;
+            for (const auto& key : *start) EXPECT_FALSE(key.key.empty()) << model << " from " << special;
+        }
+    }
 }
 
 // The JPK power-law-probe candidates (docs/performance.md, "A shared parameter on its bound"): fractional_standard
@@ -144,6 +177,18 @@ TEST(LocalMinimum, AFlaggedFitIsNotPreferred) {
     EXPECT_EQ(choice.fits[1].better_special_case, "fractional_maxwell");
     EXPECT_EQ(choice.fits[choice.preferred].name, "elastic");
     EXPECT_DOUBLE_EQ(choice.fits[0].delta_bic, 0.0);
+}
+
+TEST(LocalMinimum, RankingJsonNamesTheBetterSpecialCaseAndTheRefit) {
+    ModelChoice choice;
+    choice.fits = {fit_of("elastic", 766.96, 2), fit_of("fractional_standard", 770.48, 5),
+                   fit_of("fractional_maxwell", 101.76, 4)};
+    choice.fits[2].refitted_from = "elastic";
+    rank_candidates(choice);
+    const std::string json = fitcase::ranking_json(choice);
+    EXPECT_NE(json.find("\"better_special_case\": \"fractional_maxwell\""), std::string::npos) << json;
+    EXPECT_NE(json.find("\"refitted_from\": \"elastic\""), std::string::npos) << json;
+    EXPECT_NE(json.find("\"better_special_case\": null"), std::string::npos) << json;
 }
 
 }  // namespace
