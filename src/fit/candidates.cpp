@@ -530,6 +530,7 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
             fit_material(base, material, from_indenter, curves, nuisance_starts(base, better->result), {});
         const double first = fitted.result.residual_to_noise;
         const double second = again.result.residual_to_noise;
+        const double both_seconds = fitted.result.wall_seconds + again.result.wall_seconds;  // the candidate's cost
         if (chi_square(again.result) < chi_square(fitted.result)) {
             again.result.flags.push_back(fmt::format("refitted from its special case `{}`'s solution: the first fit "
                                                      "ended in a local minimum (r/noise {:.6g})",
@@ -541,6 +542,7 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
                                                       better->name, second));
         }
         fitted.refitted_from = better->name;
+        fitted.result.wall_seconds = both_seconds;
     }
     rank_candidates(choice);
     return choice;

@@ -50,7 +50,9 @@ const std::vector<PairStart>& pair_starts() {
     static const std::vector<PairStart> starts = {
         {"standard", "elastic", Keys{{"terms[0][0]", From::lower_bound, ""}, {"G_inf", From::value, "G"}}},
         {"standard", "maxwell",
-         Keys{{"G_inf", From::lower_bound, ""}, {"terms[0][0]", From::value, "G"}, {"terms[0][1]", From::value, "tau"}}},
+         Keys{{"G_inf", From::lower_bound, ""},
+              {"terms[0][0]", From::value, "G"},
+              {"terms[0][1]", From::value, "tau"}}},
         {"spectrum", "elastic", std::nullopt},
         {"kelvin_voigt", "elastic", Keys{{"eta", From::lower_bound, ""}}},
         {"kelvin_voigt", "viscous", Keys{{"G", From::lower_bound, ""}}},

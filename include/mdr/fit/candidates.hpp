@@ -98,8 +98,10 @@ struct CandidateProblem {
 /// terms start at G_inf = G_e / 2, G_k = G_e / N with bounds [1e-6, 1e4] G_e, and times spread evenly in log
 /// between the finest sampling interval and the longest record with bounds 1e-2 and 1e2 times those; a spectrum
 /// starts at G_inf = G_e / 2 and G_j = G_e / (2 M) for M times, all with bounds [0, 1e3 G_e]. The indenter's free
-/// keys start from the elastic fit. Throws mdr::InvalidInput as fit() does, and (key `fit.data`) when there is no
-/// curve.
+/// keys start from the elastic fit. A fit that ends clearly above a direct special case of its model
+/// (flag_local_minima's rule) is fitted once more from that special case's solution (start_from_special_case) and
+/// the lower of the two is kept (CandidateFit::refitted_from); then rank_candidates. Throws mdr::InvalidInput as
+/// fit() does, and (key `fit.data`) when there is no curve.
 ModelChoice fit_candidates(const CandidateProblem& problem, const std::vector<Curve>& curves);
 
 }  // namespace mdr::fit
