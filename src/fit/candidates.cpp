@@ -413,6 +413,16 @@ std::string local_minimum_flag(const CandidateFit& fitted, const CandidateFit& b
                        ratios ? mine : chi_square(fitted.result));
 }
 
+namespace {
+
+// A fit's misfit for a message: "r/noise X", or "chi-square X" where a curve has no noise (r/noise NaN).
+std::string misfit_text(const FitResult& result) {
+    return std::isfinite(result.residual_to_noise) ? fmt::format("r/noise {:.6g}", result.residual_to_noise)
+                                                   : fmt::format("chi-square {:.6g}", chi_square(result));
+}
+
+}  // namespace
+
 void flag_local_minima(std::vector<CandidateFit>& fits) {
     for (auto& fitted : fits) {
         const CandidateFit* best = clearly_better_special_case(fits, fitted);
@@ -528,17 +538,16 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
                                                 better->result.values.begin() + static_cast<std::ptrdiff_t>(offset));
         CandidateFit again =
             fit_material(base, material, from_indenter, curves, nuisance_starts(base, better->result), {});
-        const double first = fitted.result.residual_to_noise;
-        const double second = again.result.residual_to_noise;
+        const std::string first = misfit_text(fitted.result), second = misfit_text(again.result);
         const double both_seconds = fitted.result.wall_seconds + again.result.wall_seconds;  // the candidate's cost
         if (chi_square(again.result) < chi_square(fitted.result)) {
             again.result.flags.push_back(fmt::format("refitted from its special case `{}`'s solution: the first fit "
-                                                     "ended in a local minimum (r/noise {:.6g})",
+                                                     "ended in a local minimum ({})",
                                                      better->name, first));
             fitted = std::move(again);
         } else {
             fitted.result.flags.push_back(fmt::format("refitted from its special case `{}`'s solution, which ended "
-                                                      "no lower (r/noise {:.6g}): the first fit is kept",
+                                                      "no lower ({}): the first fit is kept",
                                                       better->name, second));
         }
         fitted.refitted_from = better->name;

@@ -41,9 +41,10 @@ def test_candidates_are_ranked_and_the_simplest_sufficient_model_preferred():
     assert [entry["better_special_case"] for entry in result.ranking] == [None, None]  # standard contains elastic
 
 
-def test_a_fit_above_its_special_case_is_refitted_from_it(tmp_path):
-    """The JPK record on its power-law probe (tests/cli/test_fit_candidates.py, JPK_CANDIDATES): fractional_standard's
-    first fit ends above elastic, its special case as G1 -> 0, and is fitted again from elastic's solution."""
+def test_no_candidate_ends_clearly_above_a_special_case_of_its_model():
+    """The JPK record on its power-law probe (tests/cli/test_fit_candidates.py, JPK_CANDIDATES): fractional_standard
+    contains elastic (G1 -> 0), so it ends no higher, whichever basin its first fit falls into (today a local minimum
+    above elastic, refitted from elastic's solution: the CLI test follows that path through every output)."""
     data = pathlib.Path(__file__).resolve().parents[2] / "examples" / "data" / "jpk_sr_cell1-0001.csv"
     result = mdr.fit({
         "material": {"model": "elastic", "G": 300.0},
@@ -53,12 +54,14 @@ def test_a_fit_above_its_special_case_is_refitted_from_it(tmp_path):
                 "data": [{"file": str(data), "time": "t_s", "piezo": "z_measured_m", "deflection": "deflection_m",
                           "spring_constant": 1.0677, "segment_column": "segment", "segments": ["0", "1", "2"]}]}})
     entries = {entry["name"]: entry for entry in result.ranking}
-    assert entries["fractional_standard"]["refitted_from"] == "elastic"
-    assert entries["fractional_standard"]["better_special_case"] is None
-    assert entries["elastic"]["refitted_from"] is None
-    assert result is result.candidates["fractional_standard"]
+    fractional, elastic = entries["fractional_standard"], entries["elastic"]
+    assert fractional["residual_to_noise"] <= elastic["residual_to_noise"]
+    assert fractional["better_special_case"] is None and elastic["better_special_case"] is None
+    assert elastic["refitted_from"] is None and fractional["refitted_from"] in (None, "elastic")
     flags = result.candidates["fractional_standard"].summary["flags"]
-    assert any(flag.startswith("refitted from its special case `elastic`'s solution") for flag in flags)
+    refit_flags = [flag for flag in flags if flag.startswith("refitted from its special case `elastic`'s solution")]
+    assert len(refit_flags) == (fractional["refitted_from"] is not None)
+
 
 def test_spectrum_of_an_elastic_body_is_flat():
     curve, _ = hertz_curve(4)
