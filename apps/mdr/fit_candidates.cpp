@@ -46,8 +46,9 @@ bool run_model_choice(const fitcase::FitCase& fit_case, const std::vector<fit::C
     } else {
         const auto& preferred = choice.fits[choice.preferred];
         fmt::print("{} candidate model(s), ranked by BIC (preferred: {}, {}):\n", choice.fits.size(), preferred.name,
-                   preferred.preferable() ? "the best converged fit without undetermined parameters"
-                                          : "the best; no fit converged without undetermined parameters");
+                   preferred.preferable()
+                       ? "the best converged fit with no undetermined parameter, not a local minimum"
+                       : "the best; no fit converged with no undetermined parameter and no local minimum");
     }
     // the model column as wide as the longest name (fractional_kelvin_voigt), so that the columns stay aligned
     std::size_t name_width = 5;
@@ -60,11 +61,20 @@ bool run_model_choice(const fitcase::FitCase& fit_case, const std::vector<fit::C
         const auto& result = fitted.result;
         seconds += result.wall_seconds;
         if (fit_case.model_choice.candidates.empty()) continue;
-        const std::string flags = result.undetermined.empty()
-                                      ? ""
-                                      : fmt::format(", {} undetermined", result.undetermined.size());
+        std::string flags = result.undetermined.empty()
+                                ? ""
+                                : fmt::format(", {} undetermined", result.undetermined.size());
+        if (!fitted.refitted_from.empty()) flags += ", refitted from " + fitted.refitted_from;
+        if (!fitted.better_special_case.empty()) flags += ", a local minimum (note below)";
         fmt::print("  {:<{}} {:>5} {:>14} {:>10.1f} {:>10.1f}  {}{}\n", fitted.name, name_width, result.free_count,
                    residual_to_noise_text(result), fitted.delta_aic, fitted.delta_bic, result.status, flags);
+    }
+    for (const auto& fitted : choice.fits) {  // the preferred fit's flags follow (print_flags)
+        if (fitted.better_special_case.empty() || &fitted == &choice.fits[choice.preferred]) continue;
+        const auto better = std::find_if(choice.fits.begin(), choice.fits.end(), [&](const fit::CandidateFit& other) {
+            return other.name == fitted.better_special_case;
+        });
+        fmt::print("  {}: {}\n", fitted.name, fit::local_minimum_flag(fitted, *better));
     }
     for (const auto& entry : choice.fits[choice.preferred].result.undetermined) {
         fmt::print("  undetermined ({}): {}: {}\n", choice.fits[choice.preferred].name, entry.name, entry.reason);

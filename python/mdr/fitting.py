@@ -45,8 +45,11 @@ class FitResult:
         runs (with its ``[load]`` replaced), and what :func:`mdr.run` takes as a case.
     ranking : list of dict
         With ``fit.candidates``: one entry per candidate model in ascending BIC (``name``, ``free_count``,
-        ``residual_to_noise``, ``aic``, ``bic``, ``delta_aic``, ``delta_bic``, ``undetermined``, ...: the
-        ``candidates`` of ranking.json; one entry in spectrum mode); this result is the preferred candidate's.
+        ``residual_to_noise``, ``aic``, ``bic``, ``delta_aic``, ``delta_bic``, ``undetermined``,
+        ``better_special_case`` (the special case of that model that fits clearly better: this fit is a local
+        minimum, flagged in its ``summary["flags"]``; None when none), ``refitted_from`` (the special case from
+        whose solution it was fitted once more, the lower fit kept; None when none), ...: the ``candidates`` of
+        ranking.json; one entry in spectrum mode); this result is the preferred candidate's.
         Empty for a single model.
     candidates : dict
         With ``fit.candidates`` or ``[fit.spectrum]``: every candidate's own :class:`FitResult`, by name.

@@ -13,6 +13,7 @@
 #include "mdr/fit/curve_window.hpp"
 #include "pre_contact_baseline.hpp"
 #include "mdr/fit/plausibility.hpp"
+#include "mdr/fit/special_cases.hpp"
 #include <Eigen/Dense>
 
 #include "mdr/numerics/nonnegative_least_squares.hpp"
@@ -229,7 +230,7 @@ CandidateFit fit_material(const CandidateProblem& base, const Material& material
     } catch (const InvalidInput& error) {  // a rule the candidate breaks (the case's are checked before): name it
         throw InvalidInput(error.key(), error.value(), error.rule() + " (candidate " + material.name + ")");
     }
-    CandidateFit fitted{material.name, std::move(result), "", material.grid, 0.0, 0.0};
+    CandidateFit fitted{material.name, std::move(result), "", material.grid, 0.0, 0.0, "", ""};
     add_plausibility_flags(problem, base.units, fitted.result);
     fitted.material_table = material_text(material, fitted.result.values.data() + offset);
     return fitted;
@@ -356,7 +357,96 @@ std::vector<double> linear_start(const CandidateProblem& base, const Material& m
     return start;
 }
 
+// The chi-square of a fit: its noise-weighted residual sum of squares, n (RSS / n) from log_residual.
+double chi_square(const FitResult& result) {
+    const auto n = static_cast<double>(result.points);
+    return n * std::exp(log_residual(result) / n);
+}
+
+// The fitted special case of `fitted`'s model among `fits` (special_cases) of the smallest chi-square, when that
+// chi-square is below `fitted`'s by more than 1 + local_minimum_relative_margin of it (flag_local_minima); null
+// otherwise. Fits of different residual counts are not compared.
+const CandidateFit* clearly_better_special_case(const std::vector<CandidateFit>& fits, const CandidateFit& fitted) {
+    const std::vector<std::string> cases = special_cases(fitted.name);
+    const CandidateFit* best = nullptr;
+    for (const auto& other : fits) {
+        if (std::find(cases.begin(), cases.end(), other.name) == cases.end()) continue;
+        if (other.result.points != fitted.result.points) continue;
+        if (!best || chi_square(other.result) < chi_square(best->result)) best = &other;
+    }
+    if (!best) return nullptr;
+    const double special = chi_square(best->result);
+    return chi_square(fitted.result) - special > 1.0 + local_minimum_relative_margin * special ? best : nullptr;
+}
+
+// `material` started from the fitted values of `special`, a direct special case of it, by `keys`
+// (start_from_special_case): a key the limit puts on a bound starts there, the others at the special case's value
+// of their key (inside their bounds) where it has one.
+Material started_from(Material material, const CandidateFit& special, const std::vector<KeyStart>& keys) {
+    const std::vector<std::string>& names = special.result.names;
+    for (auto& parameter : material.parameters) {
+        const std::string key = parameter.name.substr(std::string("material.").size());
+        const auto rule = std::find_if(keys.begin(), keys.end(), [&](const KeyStart& k) { return k.key == key; });
+        std::string source = key;
+        if (rule != keys.end()) {
+            if (rule->from == KeyStart::From::lower_bound) parameter.start = parameter.lower;
+            if (rule->from == KeyStart::From::upper_bound) parameter.start = parameter.upper;
+            if (rule->from != KeyStart::From::value) continue;
+            source = rule->value_of;
+        }
+        const auto found = std::find(names.begin(), names.end(), "material." + source);
+        if (found == names.end()) continue;
+        const double value = special.result.values[static_cast<std::size_t>(found - names.begin())];
+        parameter.start = std::clamp(value, parameter.lower, parameter.upper);
+    }
+    return material;
+}
+
 }  // namespace
+
+std::string local_minimum_flag(const CandidateFit& fitted, const CandidateFit& better) {
+    const double mine = fitted.result.residual_to_noise;
+    const double theirs = better.result.residual_to_noise;
+    const bool ratios = std::isfinite(mine) && std::isfinite(theirs);
+    return fmt::format("a local minimum: its special case `{}` fits better ({} {:.6g} < {:.6g})", better.name,
+                       ratios ? "r/noise" : "chi-square", ratios ? theirs : chi_square(better.result),
+                       ratios ? mine : chi_square(fitted.result));
+}
+
+namespace {
+
+// A fit's misfit for a message: "r/noise X", or "chi-square X" where a curve has no noise (r/noise NaN).
+std::string misfit_text(const FitResult& result) {
+    return std::isfinite(result.residual_to_noise) ? fmt::format("r/noise {:.6g}", result.residual_to_noise)
+                                                   : fmt::format("chi-square {:.6g}", chi_square(result));
+}
+
+}  // namespace
+
+void flag_local_minima(std::vector<CandidateFit>& fits) {
+    for (auto& fitted : fits) {
+        const CandidateFit* best = clearly_better_special_case(fits, fitted);
+        if (!best) continue;
+        fitted.better_special_case = best->name;
+        fitted.result.flags.push_back(local_minimum_flag(fitted, *best));
+    }
+}
+
+void rank_candidates(ModelChoice& choice) {
+    flag_local_minima(choice.fits);
+    std::stable_sort(choice.fits.begin(), choice.fits.end(),
+                     [](const CandidateFit& a, const CandidateFit& b) { return a.result.bic < b.result.bic; });
+    double aic = std::numeric_limits<double>::infinity();
+    for (const auto& fitted : choice.fits) aic = std::min(aic, fitted.result.aic);
+    choice.preferred = choice.fits.size();
+    for (std::size_t i = 0; i < choice.fits.size(); ++i) {
+        auto& fitted = choice.fits[i];
+        fitted.delta_aic = fitted.result.aic - aic;
+        fitted.delta_bic = fitted.result.bic - choice.fits.front().result.bic;
+        if (fitted.preferable() && choice.preferred == choice.fits.size()) choice.preferred = i;
+    }
+    if (choice.preferred == choice.fits.size()) choice.preferred = 0;
+}
 
 std::vector<double> spectrum_grid(double shortest, double longest, double per_decade) {
     std::vector<double> grid{longest};
@@ -435,19 +525,35 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
         }
         choice.fits.push_back(std::move(fitted));
     }
-
-    std::stable_sort(choice.fits.begin(), choice.fits.end(),
-                     [](const CandidateFit& a, const CandidateFit& b) { return a.result.bic < b.result.bic; });
-    double aic = std::numeric_limits<double>::infinity();
-    for (const auto& fitted : choice.fits) aic = std::min(aic, fitted.result.aic);
-    choice.preferred = choice.fits.size();
-    for (std::size_t i = 0; i < choice.fits.size(); ++i) {
-        auto& fitted = choice.fits[i];
-        fitted.delta_aic = fitted.result.aic - aic;
-        fitted.delta_bic = fitted.result.bic - choice.fits.front().result.bic;
-        if (fitted.preferable() && choice.preferred == choice.fits.size()) choice.preferred = i;
+    // A fit that ended clearly above a direct special case of its model is fitted once more from that special
+    // case's solution (start_from_special_case: the limit's keys on their bounds); the lower of the two is kept.
+    for (auto& fitted : choice.fits) {
+        const CandidateFit* better = clearly_better_special_case(choice.fits, fitted);
+        const auto keys = better ? start_from_special_case(fitted.name, better->name) : std::nullopt;
+        if (!keys) continue;
+        announce(fitted.name + " from " + better->name);
+        const Material material =
+            started_from(candidate(fitted.name, choice.modulus_scale, window, lags), *better, *keys);
+        const std::vector<double> from_indenter(better->result.values.begin(),
+                                                better->result.values.begin() + static_cast<std::ptrdiff_t>(offset));
+        CandidateFit again =
+            fit_material(base, material, from_indenter, curves, nuisance_starts(base, better->result), {});
+        const std::string first = misfit_text(fitted.result), second = misfit_text(again.result);
+        const double both_seconds = fitted.result.wall_seconds + again.result.wall_seconds;  // the candidate's cost
+        if (chi_square(again.result) < chi_square(fitted.result)) {
+            again.result.flags.push_back(fmt::format("refitted from its special case `{}`'s solution: the first fit "
+                                                     "ended in a local minimum ({})",
+                                                     better->name, first));
+            fitted = std::move(again);
+        } else {
+            fitted.result.flags.push_back(fmt::format("refitted from its special case `{}`'s solution, which ended "
+                                                      "no lower ({}): the first fit is kept",
+                                                      better->name, second));
+        }
+        fitted.refitted_from = better->name;
+        fitted.result.wall_seconds = both_seconds;
     }
-    if (choice.preferred == choice.fits.size()) choice.preferred = 0;
+    rank_candidates(choice);
     return choice;
 }
 

@@ -36,6 +36,12 @@ void write_candidate(const std::filesystem::path& directory, const FitCase& fit_
     if (!fitted.relaxation_times.empty()) write_spectrum(directory, fitted);
 }
 
+// A candidate's name (CandidateFit::better_special_case, refitted_from), or null when empty.
+Document name_or_null(const std::string& name) {
+    if (name.empty()) return {};
+    return {name};
+}
+
 }  // namespace
 
 Document ranking_document(const fit::ModelChoice& choice) {
@@ -56,6 +62,8 @@ Document ranking_document(const fit::ModelChoice& choice) {
                                               {"delta_aic", number_or_null(fitted.delta_aic)},
                                               {"delta_bic", number_or_null(fitted.delta_bic)},
                                               {"undetermined", {std::move(undetermined)}},
+                                              {"better_special_case", name_or_null(fitted.better_special_case)},
+                                              {"refitted_from", name_or_null(fitted.refitted_from)},
                                               {"evaluations", {result.evaluations}},
                                               {"wall_seconds", {result.wall_seconds}}}});
     }
@@ -79,13 +87,14 @@ void write_model_choice(const std::filesystem::path& directory, const FitCase& f
     }
     auto csv = OutputFile(directory / "models.csv");
     csv.print("rank,candidate,free_count,rms_residual,residual_to_noise,aic,bic,delta_aic,delta_bic,converged,"
-              "undetermined,wall_seconds\n");
+              "undetermined,wall_seconds,better_special_case,refitted_from\n");
     for (std::size_t i = 0; i < choice.fits.size(); ++i) {
         const auto& fitted = choice.fits[i];
         const auto& result = fitted.result;
-        csv.print("{},{},{},{},{},{},{},{},{},{},{},{}\n", i + 1, csv_field(fitted.name), result.free_count,
+        csv.print("{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", i + 1, csv_field(fitted.name), result.free_count,
                   result.rms_residual, result.residual_to_noise, result.aic, result.bic, fitted.delta_aic,
-                  fitted.delta_bic, result.converged, result.undetermined.size(), result.wall_seconds);
+                  fitted.delta_bic, result.converged, result.undetermined.size(), result.wall_seconds,
+                  csv_field(fitted.better_special_case), csv_field(fitted.refitted_from));
         std::filesystem::create_directory(directory / fitted.name);
         write_candidate(directory / fitted.name, fit_case, fitted);
     }

@@ -3,6 +3,7 @@ form, G = 1 MPa) with Gaussian noise: the elastic model is preferred, the spectr
 
 from __future__ import annotations
 
+import pathlib
 import tomllib
 
 import numpy as np
@@ -37,6 +38,29 @@ def test_candidates_are_ranked_and_the_simplest_sufficient_model_preferred():
     assert result.ranking[0]["delta_bic"] == 0.0 and result.ranking[1]["delta_bic"] > 0.0
     assert tomllib.loads(result.fitted_case)["material"] == {"model": "elastic", "G": result.parameters["material.G"]}
     assert result.candidates["standard"].summary["undetermined"]  # its relaxation term is not needed
+    assert [entry["better_special_case"] for entry in result.ranking] == [None, None]  # standard contains elastic
+
+
+def test_no_candidate_ends_clearly_above_a_special_case_of_its_model():
+    """The JPK record on its power-law probe (tests/cli/test_fit_candidates.py, JPK_CANDIDATES): fractional_standard
+    contains elastic (G1 -> 0), so it ends no higher, whichever basin its first fit falls into (today a local minimum
+    above elastic, refitted from elastic's solution: the CLI test follows that path through every output)."""
+    data = pathlib.Path(__file__).resolve().parents[2] / "examples" / "data" / "jpk_sr_cell1-0001.csv"
+    result = mdr.fit({
+        "material": {"model": "elastic", "G": 300.0},
+        "indenter": {"shape": "power", "c": 5.0e4, "n": 2.0},
+        "fit": {"free": ["indenter.n"], "bounds": {"indenter.n": [1.05, 6.0]},
+                "candidates": ["elastic", "fractional_standard"],
+                "data": [{"file": str(data), "time": "t_s", "piezo": "z_measured_m", "deflection": "deflection_m",
+                          "spring_constant": 1.0677, "segment_column": "segment", "segments": ["0", "1", "2"]}]}})
+    entries = {entry["name"]: entry for entry in result.ranking}
+    fractional, elastic = entries["fractional_standard"], entries["elastic"]
+    assert fractional["residual_to_noise"] <= elastic["residual_to_noise"]
+    assert fractional["better_special_case"] is None and elastic["better_special_case"] is None
+    assert elastic["refitted_from"] is None and fractional["refitted_from"] in (None, "elastic")
+    flags = result.candidates["fractional_standard"].summary["flags"]
+    refit_flags = [flag for flag in flags if flag.startswith("refitted from its special case `elastic`'s solution")]
+    assert len(refit_flags) == (fractional["refitted_from"] is not None)
 
 
 def test_spectrum_of_an_elastic_body_is_flat():

@@ -14,7 +14,9 @@ namespace mdr::fitcase {
 
 /// ranking.json as a document: `criterion` ("bic"), `preferred`, `modulus_scale`, `time_window` [s, s], and
 /// `candidates` in ascending BIC, each with `name`, `status`, `converged`, `free_count`, `rms_residual`, `noise`,
-/// `residual_to_noise`, `aic`, `bic`, `delta_aic`, `delta_bic`, `undetermined` (names), `evaluations`,
+/// `residual_to_noise`, `aic`, `bic`, `delta_aic`, `delta_bic`, `undetermined` (names), `better_special_case` (the
+/// special case that fits clearly better: fit::CandidateFit::better_special_case, or null), `refitted_from` (the
+/// special case from whose solution it was fitted again: fit::CandidateFit::refitted_from, or null), `evaluations`,
 /// `wall_seconds`.
 Document ranking_document(const fit::ModelChoice& choice);
 
@@ -23,8 +25,9 @@ std::string ranking_json(const fit::ModelChoice& choice);
 
 /// Writes the model choice into `directory`: per candidate a folder NAME/ with fit.json, fitted.toml, curves.csv
 /// (and spectrum.csv for a spectrum), models.csv (rank,candidate,free_count,rms_residual,residual_to_noise,aic,
-/// bic,delta_aic,delta_bic,converged,undetermined,wall_seconds) and ranking.json. A spectrum alone (no
-/// candidates) is written as one fit: fit.json, fitted.toml, curves.csv, spectrum.csv in `directory` itself.
+/// bic,delta_aic,delta_bic,converged,undetermined,wall_seconds,better_special_case,refitted_from: empty when none)
+/// and ranking.json. A spectrum alone (no candidates) is written as one fit: fit.json, fitted.toml, curves.csv,
+/// spectrum.csv in `directory` itself.
 void write_model_choice(const std::filesystem::path& directory, const FitCase& fit_case,
                         const fit::ModelChoice& choice);
 
