@@ -16,6 +16,7 @@
 #include "mdr/fit/fit.hpp"
 #include "mdr/fitcase/fit_case.hpp"
 #include "mdr/fitcase/fit_case_run.hpp"
+#include "power_law_ramp.hpp"
 
 namespace mdr {
 namespace {
@@ -32,8 +33,7 @@ fit::Curve springpot_ramp(double alpha) {
         const double t = 2.0 * i / 30.0;
         curve.time.push_back(t);
         curve.depth.push_back(speed * t);
-        curve.force.push_back(8.0 * std::sqrt(R) * std::pow(speed, 1.5) * c * std::tgamma(1.5) /
-                              std::tgamma(2.5 - alpha) * std::pow(t, 1.5 - alpha));
+        curve.force.push_back(testing::power_law_sphere_ramp_force(c / std::tgamma(1.0 - alpha), alpha, R, speed, t));
     }
     return curve;
 }

@@ -12,6 +12,7 @@
 #include "mdr/fit/fit.hpp"
 #include "mdr/fitcase/fit_case.hpp"
 #include "mdr/fitcase/fit_case_run.hpp"
+#include "power_law_ramp.hpp"
 
 namespace mdr {
 namespace {
@@ -22,8 +23,7 @@ constexpr double c = 1e3;       // springpot quasi-property [Pa s^alpha]
 constexpr double alpha = 0.8;   // springpot order, near the end 1 of its domain
 
 double springpot_ramp_force(double t) {
-    return 8.0 * std::sqrt(R) * std::pow(speed, 1.5) * c * std::tgamma(1.5) / std::tgamma(2.5 - alpha) *
-           std::pow(t, 1.5 - alpha);
+    return testing::power_law_sphere_ramp_force(c / std::tgamma(1.0 - alpha), alpha, R, speed, t);
 }
 
 // 31 rows of the ramp over 2 s with white force noise of `noise` [N] (the peak force is ~2.4e-8 N).

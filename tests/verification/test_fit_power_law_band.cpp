@@ -19,6 +19,7 @@
 #include "mdr/fitcase/fit_case.hpp"
 #include "mdr/fitcase/fit_case_run.hpp"
 #include "reference/quadrature.hpp"
+#include "power_law_ramp.hpp"
 
 namespace mdr {
 namespace {
@@ -34,7 +35,7 @@ constexpr double t0 = 1.0;          // [s]
 double lee_radok_force(double t) {
     const double scale = 8.0 * std::sqrt(R) * std::pow(speed, 1.5) * G0 * std::pow(t0, beta);
     if (t <= ramp_time) {
-        return scale * std::tgamma(1.5) * std::tgamma(1.0 - beta) / std::tgamma(2.5 - beta) * std::pow(t, 1.5 - beta);
+        return testing::power_law_sphere_ramp_force(G0 * std::pow(t0, beta), beta, R, speed, t);
     }
     const double T = ramp_time;
     const auto integrand = [&](double u) { return 2.0 * std::pow(T, 1.5) * u * u * std::pow(t - T * u * u, -beta); };

@@ -20,13 +20,13 @@
 
 #include "mdr/io/case_file.hpp"
 #include "run_case.hpp"
+#include "power_law_ramp.hpp"
 
 namespace mdr {
 namespace {
 
 double sphere_force(double G0, double beta, double t0, double R, double v, double t) {
-    return 8.0 * std::sqrt(R) * G0 * std::pow(t0, beta) * std::pow(v, 1.5) * std::tgamma(1.5) * std::tgamma(1.0 - beta) /
-           std::tgamma(2.5 - beta) * std::pow(t, 1.5 - beta);
+    return testing::power_law_sphere_ramp_force(G0 * std::pow(t0, beta), beta, R, v, t);
 }
 
 double cone_force(double G0, double beta, double t0, double theta, double v, double t) {

@@ -15,6 +15,7 @@
 #include "mdr/drivers/contact_case.hpp"
 #include "mdr/io/case_file.hpp"
 #include "run_case.hpp"
+#include "power_law_ramp.hpp"
 
 namespace mdr {
 namespace {
@@ -43,8 +44,7 @@ history = [[0.0, 0.0], [{}, {}]]
 double ramp_error(const drivers::IndentationResult& result, double beta) {
     double peak = 0.0, worst = 0.0;
     for (std::size_t i = 0; i < result.time.size(); ++i) {
-        const double exact = 8.0 * std::sqrt(R) * G0 * std::pow(t0, beta) * std::pow(v, 1.5) * std::tgamma(1.5) *
-                             std::tgamma(1.0 - beta) / std::tgamma(2.5 - beta) * std::pow(result.time[i], 1.5 - beta);
+        const double exact = testing::power_law_sphere_ramp_force(G0 * std::pow(t0, beta), beta, R, v, result.time[i]);
         peak = std::max(peak, exact);
         worst = std::max(worst, std::abs(result.force[i] - exact));
     }
