@@ -74,6 +74,7 @@ bool run_model_choice(const fitcase::FitCase& fit_case, const std::vector<fit::C
         const auto better = std::find_if(choice.fits.begin(), choice.fits.end(), [&](const fit::CandidateFit& other) {
             return other.name == fitted.better_special_case;
         });
+        if (better == choice.fits.end()) continue;
         fmt::print("  {}: {}\n", fitted.name, fit::local_minimum_flag(fitted, *better));
     }
     for (const auto& entry : choice.fits[choice.preferred].result.undetermined) {
