@@ -10,6 +10,7 @@
 #include "mdr/fit/candidates.hpp"
 #include "mdr/fit/special_cases.hpp"
 #include "mdr/fitcase/model_choice_files.hpp"
+#include "mdr/rheology/material_models.hpp"
 
 namespace mdr::fit {
 namespace {
@@ -88,18 +89,40 @@ TEST(SpecialCases, AStartFromASpecialCasePutsTheLimitsKeysOnTheirBounds) {
     EXPECT_EQ(prony3->front().from, From::lower_bound);
     EXPECT_TRUE(start_from_special_case("prony2", "prony1"));
     EXPECT_TRUE(start_from_special_case("prony1", "elastic"));
+    // pronyN -> elastic is one limit (every G_k on its lower bound, G_inf from G), as docs/case-format.md lists it:
+    // a prony3 above elastic is refitted from it even without prony2 or standard among the candidates
+    const auto elastic3 = start_from_special_case("prony3", "elastic");
+    ASSERT_TRUE(elastic3);
+    ASSERT_EQ(elastic3->size(), 4U);
+    EXPECT_EQ((*elastic3)[0].key, "G_inf");
+    EXPECT_EQ((*elastic3)[0].from, From::value);
+    EXPECT_EQ((*elastic3)[0].value_of, "G");
+    for (std::size_t k = 0; k < 3; ++k) {
+        EXPECT_EQ((*elastic3)[k + 1].key, "terms[" + std::to_string(k) + "][0]");
+        EXPECT_EQ((*elastic3)[k + 1].from, From::lower_bound);
+    }
     // an indirect or a missing special case, a spectrum's grid, maxwell in a series of two terms: no start
-    EXPECT_FALSE(start_from_special_case("prony3", "elastic"));
+    EXPECT_FALSE(start_from_special_case("prony3", "standard"));
     EXPECT_FALSE(start_from_special_case("fractional_standard", "fractional_kelvin_voigt"));
     EXPECT_FALSE(start_from_special_case("spectrum", "elastic"));
     EXPECT_FALSE(start_from_special_case("prony2", "maxwell"));
-    // every direct special case of a registry model has one
-    for (const char* model : {"standard", "kelvin_voigt", "fractional_kelvin_voigt", "fractional_maxwell",
-                              "fractional_standard"}) {
+    // every special case of a registry candidate is direct and has a start, whose keys are the registry's keys of
+    // the model, and whose values come from the special case's keys (a misspelt key would leave its start unchanged)
+    const auto has_key = [](const std::string& model, const std::string& key) {
+        const auto& parameters = rheology::material_model(model).parameters;
+        return std::any_of(parameters.begin(), parameters.end(),
+                           [&](const rheology::ModelParameter& parameter) { return parameter.key == key; });
+    };
+    for (const char* model : {"kelvin_voigt", "fractional_kelvin_voigt", "fractional_maxwell", "fractional_standard"}) {
         for (const auto& special : special_cases(model)) {
             const auto start = start_from_special_case(model, special);
-            if (!start) continue;
-            for (const auto& key : *start) EXPECT_FALSE(key.key.empty()) << model << " from " << special;
+            ASSERT_TRUE(start) << model << " from " << special;
+            for (const auto& key : *start) {
+                EXPECT_TRUE(has_key(model, key.key)) << model << " from " << special << ": " << key.key;
+                if (key.from == From::value) {
+                    EXPECT_TRUE(has_key(special, key.value_of)) << model << " from " << special << ": " << key.value_of;
+                }
+            }
         }
     }
 }
