@@ -187,6 +187,31 @@ TEST(LocalMinimum, NotFlaggedAboveAModelThatIsNotItsSpecialCase) {
     EXPECT_EQ(named(fits, "fractional_kelvin_voigt").better_special_case, "elastic");
 }
 
+// fit_candidates refits a fit from a direct special case with a start that fits clearly better, even where a special
+// case without one (indirect, or maxwell for a series) fits better still: prony3 ends above prony2 (itself a local
+// minimum above standard) and above standard, which is not direct for it; it is refitted from prony2 (before, from
+// none: only the best special case, standard, was tried) and flagged above standard.
+TEST(LocalMinimum, RefittedFromTheBestDirectSpecialCaseThatHasAStart) {
+    std::vector<CandidateFit> fits{fit_of_chi_square("elastic", 1e3 * points, 2),
+                                   fit_of_chi_square("standard", 1e2 * points, 4),
+                                   fit_of_chi_square("prony2", 5e2 * points, 6),
+                                   fit_of_chi_square("prony3", 8e2 * points, 8)};
+    const CandidateFit* from = special_case_to_refit_from(fits, named(fits, "prony3"));
+    ASSERT_NE(from, nullptr);
+    EXPECT_EQ(from->name, "prony2");
+    flag_local_minima(fits);
+    EXPECT_EQ(named(fits, "prony3").better_special_case, "standard");
+    // elastic, its only direct special case with a start besides prony2, is not clearly better: none
+    std::vector<CandidateFit> above_standard{fit_of_chi_square("elastic", 1e3 * points, 2),
+                                             fit_of_chi_square("standard", 1e2 * points, 4),
+                                             fit_of_chi_square("prony3", 9.995e2 * points, 8)};
+    EXPECT_EQ(special_case_to_refit_from(above_standard, named(above_standard, "prony3")), nullptr);
+    // maxwell has no start for prony2 (which of its terms it is is not determined)
+    std::vector<CandidateFit> above_maxwell{fit_of_chi_square("maxwell", 1e2 * points, 3),
+                                            fit_of_chi_square("prony2", 5e2 * points, 6)};
+    EXPECT_EQ(special_case_to_refit_from(above_maxwell, named(above_maxwell, "prony2")), nullptr);
+}
+
 // A flagged fit is not preferred even where its better special case may not be: fractional_maxwell has the smallest
 // BIC but did not converge; fractional_standard, next, ended above it; the preferred model is the next one.
 TEST(LocalMinimum, AFlaggedFitIsNotPreferred) {
