@@ -414,7 +414,9 @@ const CandidateFit* special_case_to_refit_from(const std::vector<CandidateFit>& 
 std::string local_minimum_flag(const CandidateFit& fitted, const CandidateFit& better) {
     const double mine = fitted.result.residual_to_noise;
     const double theirs = better.result.residual_to_noise;
-    const bool ratios = std::isfinite(mine) && std::isfinite(theirs);
+    // r/noise (FitResult::residual_to_noise, the RMS residual over the RMS noise) orders two fits as chi-square does
+    // on one curve, not always over curves of different noise or without one: shown only where it agrees.
+    const bool ratios = std::isfinite(mine) && std::isfinite(theirs) && theirs < mine;
     return fmt::format("a local minimum: its special case `{}` fits better ({} {:.6g} < {:.6g})", better.name,
                        ratios ? "r/noise" : "chi-square", ratios ? theirs : chi_square(better.result),
                        ratios ? mine : chi_square(fitted.result));

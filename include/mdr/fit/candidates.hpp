@@ -70,8 +70,9 @@ void flag_local_minima(std::vector<CandidateFit>& fits);
 const CandidateFit* special_case_to_refit_from(const std::vector<CandidateFit>& fits, const CandidateFit& fitted);
 
 /// The flag of flag_local_minima for `fitted`, whose special case `better` fits better: "a local minimum: its
-/// special case `X` fits better (r/noise A < B)", with their chi-square in place of r/noise where a curve has no
-/// noise (FitResult::residual_to_noise NaN).
+/// special case `X` fits better (r/noise A < B)", with their chi-square in place of r/noise where that does not
+/// order them as chi-square does (no noise to measure against: FitResult::residual_to_noise NaN; curves of
+/// different noise, over which the RMS ratio and chi-square may disagree).
 std::string local_minimum_flag(const CandidateFit& fitted, const CandidateFit& better);
 
 /// Ranks the fitted candidates `choice.fits`: flags the local minima (flag_local_minima), sorts the fits by

@@ -150,6 +150,20 @@ TEST(LocalMinimum, FlaggedWhenClearlyAboveAFittedSpecialCaseNamingTheBestOne) {
     }
 }
 
+// The flag's r/noise (the RMS residual over the RMS noise of all curves) need not order two fits as chi-square does
+// where the curves' noises differ: chi-square 100 n against 400 n, r/noise 5.2 against 5.1 (say a curve of small
+// noise fitted better, one of large noise worse). The flag then shows chi-square, never "r/noise 5.2 < 5.1".
+TEST(LocalMinimum, TheFlagNeverShowsAnRNoiseThatContradictsIt) {
+    std::vector<CandidateFit> fits{fit_of_chi_square("elastic", 100.0 * points, 2),
+                                   fit_of_chi_square("standard", 400.0 * points, 4)};
+    fits[0].result.residual_to_noise = 5.2;
+    fits[1].result.residual_to_noise = 5.1;
+    flag_local_minima(fits);
+    ASSERT_EQ(named(fits, "standard").result.flags.size(), 1U);
+    EXPECT_EQ(named(fits, "standard").result.flags.front(),
+              "a local minimum: its special case `elastic` fits better (chi-square 1e+06 < 4e+06)");
+}
+
 // Clearly above: chi-square larger by more than 1 + local_minimum_relative_margin of the special case's.
 TEST(LocalMinimum, NotFlaggedWithinTheMargin) {
     const double margin = local_minimum_relative_margin;
