@@ -1,8 +1,10 @@
 #include "mdr/fit/special_cases.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cstddef>
 #include <string_view>
+#include <system_error>
 #include <utility>
 
 namespace mdr::fit {
@@ -69,8 +71,10 @@ const std::vector<PairStart>& pair_starts() {
 // standard, -> elastic and -> maxwell.
 std::size_t prony_terms(const std::string& name) {
     if (name.size() <= 5 || name.rfind("prony", 0) != 0) return 0;
-    if (!std::all_of(name.begin() + 5, name.end(), [](char c) { return c >= '0' && c <= '9'; })) return 0;
-    return static_cast<std::size_t>(std::stoul(name.substr(5)));
+    std::size_t terms = 0;
+    const char* end = name.data() + name.size();
+    const auto [last, error] = std::from_chars(name.data() + 5, end, terms);
+    return error == std::errc{} && last == end ? terms : 0;  // digits only, within size_t
 }
 
 std::vector<std::string> direct_special_cases(const std::string& candidate) {

@@ -71,6 +71,9 @@ TEST(SpecialCases, LimitsWithinTheBoundsAndTheirClosure) {
     EXPECT_TRUE(special_cases("springpot").empty());
     EXPECT_TRUE(special_cases("power_law").empty());
     EXPECT_TRUE(special_cases("elastic").empty());
+    // an unknown name, whatever its digits (before, std::stoul threw out_of_range beyond size_t)
+    EXPECT_TRUE(special_cases("prony99999999999999999999").empty());
+    EXPECT_TRUE(special_cases("prony2x").empty());
 }
 
 TEST(SpecialCases, AStartFromASpecialCasePutsTheLimitsKeysOnTheirBounds) {
