@@ -363,15 +363,18 @@ double chi_square(const FitResult& result) {
     return n * std::exp(log_residual(result) / n);
 }
 
-// The fitted special case of `fitted`'s model among `fits` (special_cases) of the smallest chi-square, when that
-// chi-square is below `fitted`'s by more than 1 + local_minimum_relative_margin of it (flag_local_minima); null
-// otherwise. Fits of different residual counts are not compared.
-const CandidateFit* clearly_better_special_case(const std::vector<CandidateFit>& fits, const CandidateFit& fitted) {
+// The fitted special case of `fitted`'s model among `fits` (special_cases; with `with_start`, only those from which
+// its fit can start: start_from_special_case) of the smallest chi-square, when that chi-square is below `fitted`'s
+// by more than 1 + local_minimum_relative_margin of it (flag_local_minima); null otherwise. Fits of different
+// residual counts are not compared.
+const CandidateFit* clearly_better_special_case(const std::vector<CandidateFit>& fits, const CandidateFit& fitted,
+                                                bool with_start = false) {
     const std::vector<std::string> cases = special_cases(fitted.name);
     const CandidateFit* best = nullptr;
     for (const auto& other : fits) {
         if (std::find(cases.begin(), cases.end(), other.name) == cases.end()) continue;
         if (other.result.points != fitted.result.points) continue;
+        if (with_start && !start_from_special_case(fitted.name, other.name)) continue;
         if (!best || chi_square(other.result) < chi_square(best->result)) best = &other;
     }
     if (!best) return nullptr;
@@ -404,10 +407,16 @@ Material started_from(Material material, const CandidateFit& special, const std:
 
 }  // namespace
 
+const CandidateFit* special_case_to_refit_from(const std::vector<CandidateFit>& fits, const CandidateFit& fitted) {
+    return clearly_better_special_case(fits, fitted, true);
+}
+
 std::string local_minimum_flag(const CandidateFit& fitted, const CandidateFit& better) {
     const double mine = fitted.result.residual_to_noise;
     const double theirs = better.result.residual_to_noise;
-    const bool ratios = std::isfinite(mine) && std::isfinite(theirs);
+    // r/noise (FitResult::residual_to_noise, the RMS residual over the RMS noise) orders two fits as chi-square does
+    // on one curve, not always over curves of different noise or without one: shown only where it agrees.
+    const bool ratios = std::isfinite(mine) && std::isfinite(theirs) && theirs < mine;
     return fmt::format("a local minimum: its special case `{}` fits better ({} {:.6g} < {:.6g})", better.name,
                        ratios ? "r/noise" : "chi-square", ratios ? theirs : chi_square(better.result),
                        ratios ? mine : chi_square(fitted.result));
@@ -528,9 +537,9 @@ ModelChoice fit_candidates(const CandidateProblem& base, const std::vector<Curve
     // A fit that ended clearly above a direct special case of its model is fitted once more from that special
     // case's solution (start_from_special_case: the limit's keys on their bounds); the lower of the two is kept.
     for (auto& fitted : choice.fits) {
-        const CandidateFit* better = clearly_better_special_case(choice.fits, fitted);
-        const auto keys = better ? start_from_special_case(fitted.name, better->name) : std::nullopt;
-        if (!keys) continue;
+        const CandidateFit* better = special_case_to_refit_from(choice.fits, fitted);
+        if (!better) continue;
+        const auto keys = start_from_special_case(fitted.name, better->name);
         announce(fitted.name + " from " + better->name);
         const Material material =
             started_from(candidate(fitted.name, choice.modulus_scale, window, lags), *better, *keys);

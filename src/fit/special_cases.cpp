@@ -1,8 +1,10 @@
 #include "mdr/fit/special_cases.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cstddef>
 #include <string_view>
+#include <system_error>
 #include <utility>
 
 namespace mdr::fit {
@@ -66,11 +68,13 @@ const std::vector<PairStart>& pair_starts() {
 }
 
 // The terms N of "pronyN" (0 when `name` is not one): prony1 is the standard solid; pronyN -> prony(N-1) or
-// standard, and -> maxwell.
+// standard, -> elastic and -> maxwell.
 std::size_t prony_terms(const std::string& name) {
     if (name.size() <= 5 || name.rfind("prony", 0) != 0) return 0;
-    if (!std::all_of(name.begin() + 5, name.end(), [](char c) { return c >= '0' && c <= '9'; })) return 0;
-    return static_cast<std::size_t>(std::stoul(name.substr(5)));
+    std::size_t terms = 0;
+    const char* end = name.data() + name.size();
+    const auto [last, error] = std::from_chars(name.data() + 5, end, terms);
+    return error == std::errc{} && last == end ? terms : 0;  // digits only, within size_t
 }
 
 std::vector<std::string> direct_special_cases(const std::string& candidate) {
@@ -79,6 +83,7 @@ std::vector<std::string> direct_special_cases(const std::string& candidate) {
     if (terms == 1) return direct_special_cases("standard");
     if (terms >= 2) {
         cases.push_back(terms == 2 ? "standard" : "prony" + std::to_string(terms - 1));
+        cases.emplace_back("elastic");
         cases.emplace_back("maxwell");
         return cases;
     }
@@ -94,6 +99,13 @@ std::optional<std::vector<KeyStart>> start_from_special_case(const std::string& 
                                                               const std::string& special) {
     const std::size_t terms = prony_terms(candidate);
     if (terms == 1) return start_from_special_case("standard", special == "prony1" ? "standard" : special);
+    if (terms >= 2 && special == "elastic") {  // G_inf from elastic's G, every G_k on its lower bound
+        std::vector<KeyStart> keys{{"G_inf", From::value, "G"}};
+        for (std::size_t k = 0; k < terms; ++k) {
+            keys.push_back({"terms[" + std::to_string(k) + "][0]", From::lower_bound, ""});
+        }
+        return keys;
+    }
     if (terms >= 2) {  // from prony(N-1): its terms kept, the new one's modulus on its lower bound
         if (special != (terms == 2 ? "standard" : "prony" + std::to_string(terms - 1)) &&
             !(terms == 2 && special == "prony1")) {

@@ -63,9 +63,16 @@ inline constexpr double local_minimum_relative_margin = 1e-3;
 /// case `X` fits better (r/noise A < B)". Fits of different residual counts are not compared.
 void flag_local_minima(std::vector<CandidateFit>& fits);
 
+/// The fitted special case from whose solution fit_candidates fits `fitted` once more: of the direct special cases
+/// of its model among `fits` from which its fit can start (start_from_special_case), the one of the smallest
+/// chi-square, when that is below `fitted`'s by flag_local_minima's margin; null when there is none. A special case
+/// that fits better still but has no such start (an indirect one, maxwell for a prony series) does not hide it.
+const CandidateFit* special_case_to_refit_from(const std::vector<CandidateFit>& fits, const CandidateFit& fitted);
+
 /// The flag of flag_local_minima for `fitted`, whose special case `better` fits better: "a local minimum: its
-/// special case `X` fits better (r/noise A < B)", with their chi-square in place of r/noise where a curve has no
-/// noise (FitResult::residual_to_noise NaN).
+/// special case `X` fits better (r/noise A < B)", with their chi-square in place of r/noise where that does not
+/// order them as chi-square does (no noise to measure against: FitResult::residual_to_noise NaN; curves of
+/// different noise, over which the RMS ratio and chi-square may disagree).
 std::string local_minimum_flag(const CandidateFit& fitted, const CandidateFit& better);
 
 /// Ranks the fitted candidates `choice.fits`: flags the local minima (flag_local_minima), sorts the fits by
@@ -99,9 +106,9 @@ struct CandidateProblem {
 /// between the finest sampling interval and the longest record with bounds 1e-2 and 1e2 times those; a spectrum
 /// starts at G_inf = G_e / 2 and G_j = G_e / (2 M) for M times, all with bounds [0, 1e3 G_e]. The indenter's free
 /// keys start from the elastic fit. A fit that ends clearly above a direct special case of its model
-/// (flag_local_minima's rule) is fitted once more from that special case's solution (start_from_special_case) and
-/// the lower of the two is kept (CandidateFit::refitted_from); then rank_candidates. Throws mdr::InvalidInput as
-/// fit() does, and (key `fit.data`) when there is no curve.
+/// (flag_local_minima's rule) is fitted once more from that special case's solution (special_case_to_refit_from,
+/// start_from_special_case) and the lower of the two is kept (CandidateFit::refitted_from); then rank_candidates.
+/// Throws mdr::InvalidInput as fit() does, and (key `fit.data`) when there is no curve.
 ModelChoice fit_candidates(const CandidateProblem& problem, const std::vector<Curve>& curves);
 
 }  // namespace mdr::fit
