@@ -14,8 +14,9 @@
 //   exit1_result  exit 1 (not converged) has written its result (out/fit.json or out/ranking.json)
 //   exit2_wrote   exit 2 (bad input) has written nothing: the directory holds what it held before
 //   one_line      exit 2 prints exactly one line on stderr, `mdr: error: ...`
-//   non_finite    exit 0 writes no NaN, infinity or null (but where the docs allow them for undetermined
-//                 parameters)
+//   non_finite    exit 0 writes no NaN, infinity or null (but where the docs allow them: for undetermined
+//                 parameters, a noise-free fit's residual_to_noise, a candidate's better_special_case and
+//                 refitted_from when none)
 //   unreadable    a written result (exit 0 or 1) is readable as its format: JSON, TOML, CSV with as many
 //                 fields in every row as in its header
 //   raw_bytes     stdout and stderr hold no control byte (but line ends), DEL or invalid UTF-8

@@ -130,6 +130,9 @@ private:
             const bool noise_free = value.contains("noise") && value["noise"].is_number() && value["noise"] == 0.0;
             for (const auto& [key, item] : value.items()) {
                 if (noise_free && key == "residual_to_noise" && item.is_null()) continue;
+                // A candidate's special case that fits better, and the one it was refitted from: null when none
+                // (documented: docs/case-format.md, "Model choice and spectrum"); names, not numbers.
+                if ((key == "better_special_case" || key == "refitted_from") && item.is_null()) continue;
                 if (auto where = walk(item, path + "/" + key); !where.empty()) return where;
             }
         }
