@@ -366,7 +366,7 @@ double chi_square(const FitResult& result) {
 // The fitted special case of `fitted`'s model among `fits` (special_cases; with `with_start`, only those from which
 // its fit can start: start_from_special_case) of the smallest chi-square, when that chi-square is below `fitted`'s
 // by more than 1 + local_minimum_relative_margin of it (flag_local_minima); null otherwise. Fits of different
-// residual counts are not compared.
+// residual counts, and special cases whose chi-square is not finite, are not compared.
 const CandidateFit* clearly_better_special_case(const std::vector<CandidateFit>& fits, const CandidateFit& fitted,
                                                 bool with_start = false) {
     const std::vector<std::string> cases = special_cases(fitted.name);
@@ -375,6 +375,7 @@ const CandidateFit* clearly_better_special_case(const std::vector<CandidateFit>&
         if (std::find(cases.begin(), cases.end(), other.name) == cases.end()) continue;
         if (other.result.points != fitted.result.points) continue;
         if (with_start && !start_from_special_case(fitted.name, other.name)) continue;
+        if (!std::isfinite(chi_square(other.result))) continue;  // no evidence against `fitted`
         if (!best || chi_square(other.result) < chi_square(best->result)) best = &other;
     }
     if (!best) return nullptr;

@@ -60,7 +60,8 @@ inline constexpr double local_minimum_relative_margin = 1e-3;
 /// Marks every fit of `fits` whose chi-square exceeds that of a fitted special case of its model (special_cases,
 /// by name) by more than 1 + local_minimum_relative_margin times that one's: sets CandidateFit::better_special_case
 /// to the special case with the smallest chi-square, and adds a flag to its result, "a local minimum: its special
-/// case `X` fits better (r/noise A < B)". Fits of different residual counts are not compared.
+/// case `X` fits better (r/noise A < B)". Fits of different residual counts, and special cases whose chi-square is
+/// not finite, are not compared. Once per set of fits: each call adds the flag again.
 void flag_local_minima(std::vector<CandidateFit>& fits);
 
 /// The fitted special case from whose solution fit_candidates fits `fitted` once more: of the direct special cases
@@ -77,7 +78,7 @@ std::string local_minimum_flag(const CandidateFit& fitted, const CandidateFit& b
 
 /// Ranks the fitted candidates `choice.fits`: flags the local minima (flag_local_minima), sorts the fits by
 /// ascending BIC, sets their delta_aic and delta_bic, and `choice.preferred` (ModelChoice::preferred). At least one
-/// fit.
+/// fit; once per choice (flag_local_minima).
 void rank_candidates(ModelChoice& choice);
 
 /// The spectrum's relaxation times [s]: T 10^(-j / per_decade) for j = 0, 1, ... down to the finest sampling

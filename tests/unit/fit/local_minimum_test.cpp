@@ -153,6 +153,19 @@ TEST(LocalMinimum, FlaggedWhenClearlyAboveAFittedSpecialCaseNamingTheBestOne) {
     }
 }
 
+// A special case whose chi-square is not finite (an AIC that is not) is no evidence: it neither flags the fit nor
+// masks a finite special case that fits better.
+TEST(LocalMinimum, ASpecialCaseWithoutAFiniteChiSquareIsPassedOver) {
+    CandidateFit broken = fit_of("fractional_maxwell", 101.76, 4);
+    broken.result.aic = std::nan("");
+    std::vector<CandidateFit> fits{broken, fit_of("elastic", 766.96, 2), fit_of("fractional_standard", 770.48, 5)};
+    flag_local_minima(fits);
+    EXPECT_EQ(named(fits, "fractional_standard").better_special_case, "elastic");
+    std::vector<CandidateFit> alone{broken, fit_of("fractional_standard", 770.48, 5)};
+    flag_local_minima(alone);
+    EXPECT_TRUE(named(alone, "fractional_standard").better_special_case.empty());
+}
+
 // The flag's r/noise (the RMS residual over the RMS noise of all curves) need not order two fits as chi-square does
 // where the curves' noises differ: chi-square 100 n against 400 n, r/noise 5.2 against 5.1 (say a curve of small
 // noise fitted better, one of large noise worse). The flag then shows chi-square, never "r/noise 5.2 < 5.1".

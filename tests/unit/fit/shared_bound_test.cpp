@@ -108,7 +108,8 @@ TEST(SharedBound, ParameterPushedBeyondItsBoundEndsHeldThereAtTheBoundedMinimum)
 // short and the cost pushes G beyond the bound while eta grows, for more than `patience` steps; with eta fitted, the
 // cost pulls G inward, and the fit ends inside, at the minimum of a fit whose bound lies far away (1e5 Pa), to 1e-6.
 // Held once it crawled (Hold::when_crawling) and never released, G ended at 2.2e3 Pa, "converged, misfit", eta
-// 311 Pa s against 400 (checked with the release taken out); held until the end, the KKT release frees it.
+// 311 Pa s against 400 (checked with the release taken out); with Hold::at_the_end G is held only where a solve ends
+// with it on the bound pushed outward, and here the fit ends inside.
 TEST(SharedBound, ParameterOnItsBoundWhileTheCostPushesItOutwardEndsInsideWhereItsMinimumIs) {
     const FitResult result = fit(kelvin_voigt_problem(std::nullopt, 2.2e3, 2.2e3, 1.0));
     ASSERT_TRUE(result.converged) << result.status;
