@@ -363,6 +363,12 @@ double chi_square(const FitResult& result) {
     return n * std::exp(log_residual(result) / n);
 }
 
+// A fit's misfit for a message: "r/noise X", or "chi-square X" where a curve has no noise (r/noise NaN).
+std::string misfit_text(const FitResult& result) {
+    return std::isfinite(result.residual_to_noise) ? fmt::format("r/noise {:.6g}", result.residual_to_noise)
+                                                   : fmt::format("chi-square {:.6g}", chi_square(result));
+}
+
 // The fitted special case of `fitted`'s model among `fits` (special_cases; with `with_start`, only those from which
 // its fit can start: start_from_special_case) of the smallest chi-square, when that chi-square is below `fitted`'s
 // by more than 1 + local_minimum_relative_margin of it (flag_local_minima); null otherwise. Fits of different
@@ -422,16 +428,6 @@ std::string local_minimum_flag(const CandidateFit& fitted, const CandidateFit& b
                        ratios ? "r/noise" : "chi-square", ratios ? theirs : chi_square(better.result),
                        ratios ? mine : chi_square(fitted.result));
 }
-
-namespace {
-
-// A fit's misfit for a message: "r/noise X", or "chi-square X" where a curve has no noise (r/noise NaN).
-std::string misfit_text(const FitResult& result) {
-    return std::isfinite(result.residual_to_noise) ? fmt::format("r/noise {:.6g}", result.residual_to_noise)
-                                                   : fmt::format("chi-square {:.6g}", chi_square(result));
-}
-
-}  // namespace
 
 void flag_local_minima(std::vector<CandidateFit>& fits) {
     for (auto& fitted : fits) {
