@@ -77,12 +77,16 @@ std::size_t prony_terms(const std::string& name) {
     return error == std::errc{} && last == end ? terms : 0;  // digits only, within size_t
 }
 
+// The Prony series of one term fewer than `terms` >= 2 by its candidate name: "standard" for two (prony1 is the
+// standard solid).
+std::string one_term_fewer(std::size_t terms) { return terms == 2 ? "standard" : "prony" + std::to_string(terms - 1); }
+
 std::vector<std::string> direct_special_cases(const std::string& candidate) {
     std::vector<std::string> cases;
     const std::size_t terms = prony_terms(candidate);
     if (terms == 1) return direct_special_cases("standard");
     if (terms >= 2) {
-        cases.push_back(terms == 2 ? "standard" : "prony" + std::to_string(terms - 1));
+        cases.push_back(one_term_fewer(terms));
         cases.emplace_back("elastic");
         cases.emplace_back("maxwell");
         return cases;
@@ -107,10 +111,7 @@ std::optional<std::vector<KeyStart>> start_from_special_case(const std::string& 
         return keys;
     }
     if (terms >= 2) {  // from prony(N-1): its terms kept, the new one's modulus on its lower bound
-        if (special != (terms == 2 ? "standard" : "prony" + std::to_string(terms - 1)) &&
-            !(terms == 2 && special == "prony1")) {
-            return std::nullopt;
-        }
+        if (special != one_term_fewer(terms) && !(terms == 2 && special == "prony1")) return std::nullopt;
         return std::vector<KeyStart>{{"terms[" + std::to_string(terms - 1) + "][0]", From::lower_bound, ""}};
     }
     for (const auto& start : pair_starts()) {
