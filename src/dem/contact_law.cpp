@@ -145,15 +145,9 @@ void ContactLaw::refuse_state_size(std::size_t size) const {
 }
 
 std::size_t ContactLaw::count_at(std::span<const double> state, std::size_t offset) const {
-    const double count = state[offset];
-    // A whole number in range: its conversion back is exact (no call of floor, which is not inlined for x86-64's
-    // baseline instruction set, and signed conversions, one instruction each there, N being far below 2^63; this
-    // runs twice a step).
-    if (count >= 0.0 && count <= static_cast<double>(static_cast<std::int64_t>(elements_)) &&
-        static_cast<double>(static_cast<std::int64_t>(count)) == count) [[likely]] {
-        return static_cast<std::size_t>(static_cast<std::int64_t>(count));
-    }
-    refuse_count(offset, count);
+    std::size_t count = 0;
+    if (read_count(state, offset, count)) [[likely]] return count;
+    refuse_count(offset, state[offset]);
 }
 
 void ContactLaw::refuse_count(std::size_t offset, double count) const {
@@ -362,9 +356,11 @@ void ContactLaw::begin(std::span<double> state) { take_state(state); }
 
 // The elements as the state holds them: touched_ is the state's count from begin on (the Foundation's step alone
 // changes it, and step_normal_by_elements reads it back).
-foundation::AttachedElements ContactLaw::elements() const {
-    double* w = state_ + normal_offset_ + 3;
-    return {w, w + elements_, w + 2 * elements_, elements_, touched_};
+foundation::AttachedElements ContactLaw::elements() const { return elements_at(state_, touched_); }
+
+foundation::AttachedElements ContactLaw::elements_at(double* state, std::size_t touched) const {
+    double* w = state + normal_offset_ + 3;
+    return {w, w + elements_, w + 2 * elements_, elements_, touched};
 }
 
 // The Foundation takes the step: the elements brought up to date (the header's maps applied), attached, their
@@ -471,9 +467,11 @@ void ContactLaw::require_loads() const {
 
 // The Foundation's touched count (touched_): that of the steps the header composes until the normal step changes it
 // (the layer's is the same while the header composes).
-foundation::PlanarElements ContactLaw::tangential_elements() const {
-    double* u = state_ + tangential_offset_ + 3;
-    return {u, u + 2 * elements_, state_ + normal_offset_ + 3 + elements_, elements_, touched_};
+foundation::PlanarElements ContactLaw::tangential_elements() const { return tangential_elements_at(state_, touched_); }
+
+foundation::PlanarElements ContactLaw::tangential_elements_at(double* state, std::size_t touched) const {
+    double* u = state + tangential_offset_ + 3;
+    return {u, u + 2 * elements_, state + normal_offset_ + 3 + elements_, elements_, touched};
 }
 
 // The tangential elements written (the header's maps applied) where the header composes.

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -133,6 +134,28 @@ public:
     SpatialVector advance_spatial(std::span<double> state, double overlap, const SpatialVector& normal,
                                   const SpatialVector& increment);
 
+    /// One contact's step for advance_spatial_pair: advance_spatial's arguments.
+    struct SpatialStep {
+        std::span<double> state;
+        double overlap = 0.0;
+        SpatialVector normal{0.0, 0.0, 0.0};
+        SpatialVector increment{0.0, 0.0, 0.0};
+    };
+    /// A contact's step as its caller reads it: advance_spatial's tangential force [N] and step_work() [J].
+    struct SpatialOutcome {
+        SpatialVector tangential_force{0.0, 0.0, 0.0};
+        double work = 0.0;
+    };
+    /// Two contacts' steps at once, each contact in one lane of the processor's vector registers, where both are held
+    /// steps: with friction, no element entering or leaving normal contact and every element in contact certainly
+    /// sticking (a settled packing's contacts; docs/dem-performance.md, "two contacts a step"). Returns false,
+    /// having written nothing, for any other pair (and for M = 0 or M > 3): step each with advance_spatial then.
+    /// Where it returns true the two states and `outcomes` are, to the bit, those two advance_spatial calls give;
+    /// the workspace's accessors (normal_force(), step_work() and the others) keep their values. Never throws: a
+    /// state that advance_spatial would refuse makes it return false.
+    bool advance_spatial_pair(const SpatialStep& first, const SpatialStep& second,
+                              std::array<SpatialOutcome, 2>& outcomes);
+
     /// Normal force F_N [N] (eq. 21) of the workspace after the last advance_normal.
     double normal_force() const { return normal_force_; }
     /// Tangential force [N] (eq. 46) of the workspace after the last advance_tangential.
@@ -184,6 +207,23 @@ private:
     std::span<double> tangential_header() const { return {state_ + tangential_header_offset_, tangential_size_}; }
     foundation::AttachedElements elements() const;
     foundation::PlanarElements tangential_elements() const;
+    foundation::AttachedElements elements_at(double* state, std::size_t touched) const;
+    foundation::PlanarElements tangential_elements_at(double* state, std::size_t touched) const;
+    /// Whether the count at `offset` is a whole number in [0, N] (into `count` where it is): its conversion back is
+    /// exact (signed conversions, one instruction each on x86-64, N being far below 2^63; no call of floor, which
+    /// is not inlined for its baseline instruction set). Every step reads two.
+    bool read_count(std::span<const double> state, std::size_t offset, std::size_t& count) const {
+        const double value = state[offset];
+        if (value >= 0.0 && value <= static_cast<double>(static_cast<std::int64_t>(elements_)) &&
+            static_cast<double>(static_cast<std::int64_t>(value)) == value) [[likely]] {
+            count = static_cast<std::size_t>(static_cast<std::int64_t>(value));
+            return true;
+        }
+        return false;
+    }
+    template <class Branches>
+    bool held_pair_with(const SpatialStep& first, const SpatialStep& second, std::array<SpatialOutcome, 2>& outcomes,
+                        Branches branches);
     bool tangential_composes() const;
     bool tangential_sticks(PlanarVector increment, foundation::ComposedTangentialStep::Step& step) const;
     void require_loads() const;
