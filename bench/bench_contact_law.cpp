@@ -1,10 +1,14 @@
 // The DEM contact law (include/mdr/dem/contact_law.hpp): cost per contact-step for N = 20, M = 1 and N = 50, M = 4
 // over whole collisions (the overlap a half sine over 200 steps, the tangential displacement sliding and
-// reversing), beside a Hertz spring F = (16/3) G sqrt(R) d^{3/2} for scale. Reported as time per contact-step.
+// reversing), beside a Hertz spring F = (16/3) G sqrt(R) d^{3/2} for scale; and of a settled packing's held steps
+// (374 contacts, N = 20, M = 1, friction 0.3) one by one (advance_spatial) and two at a time
+// (advance_spatial_pair). Reported as time per contact-step.
 
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "mdr/dem/contact_law.hpp"
@@ -62,5 +66,56 @@ void hertz_spring(benchmark::State& state) {
         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(hertz_spring)->Unit(benchmark::kMicrosecond);
+
+// A settled packing's contacts: each loaded to its overlap along its own normal, then held (the overlap wobbling by
+// 1e-9 of itself, a tangential increment of 1e-10 m a step: every element sticks), stepped one by one (pairs 0) or
+// in pairs (pairs 1).
+void held_packing(benchmark::State& state) {
+    const bool pairs = state.range(0) != 0;
+    constexpr int contacts = 374;
+    mdr::dem::ContactLaw law(prony(1), 1.0, 0.3, 20, 0.2, 1e-6);
+    const std::size_t size = law.state_size();
+    std::vector<double> states(size * contacts, 0.0);
+    std::vector<mdr::dem::SpatialVector> normals(contacts);
+    std::vector<double> overlaps(contacts);
+    std::mt19937 random(1);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    const mdr::dem::SpatialVector increment{1e-10, -1e-10, 0.0};
+    for (int c = 0; c < contacts; ++c) {
+        const mdr::dem::SpatialVector direction{uniform(random), uniform(random), uniform(random)};
+        const double length = std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
+                                        direction[2] * direction[2]);
+        normals[c] = {direction[0] / length, direction[1] / length, direction[2] / length};
+        overlaps[c] = 5e-3 * (1.0 + 0.1 * uniform(random));
+        const std::span<double> contact(states.data() + c * size, size);
+        law.initialise(contact);
+        for (int n = 1; n <= 200; ++n) {
+            law.advance_spatial(contact, overlaps[c] * std::min(1.0, n / 100.0), normals[c], increment);
+        }
+    }
+    double sum = 0.0;
+    int step = 0;
+    for (auto _ : state) {
+        const double wobble = (++step % 2 == 0 ? 1e-9 : -1e-9);
+        for (int c = 0; c < contacts; c += 2) {
+            const mdr::dem::ContactLaw::SpatialStep first{{states.data() + c * size, size}, overlaps[c] * (1 + wobble),
+                                                          normals[c], increment};
+            const mdr::dem::ContactLaw::SpatialStep second{{states.data() + (c + 1) * size, size},
+                                                           overlaps[c + 1] * (1 + wobble), normals[c + 1], increment};
+            std::array<mdr::dem::ContactLaw::SpatialOutcome, 2> outcomes;
+            if (!(pairs && law.advance_spatial_pair(first, second, outcomes))) {
+                for (const auto* one : {&first, &second}) {
+                    sum += law.advance_spatial(one->state, one->overlap, one->normal, one->increment)[0];
+                }
+                continue;
+            }
+            sum += outcomes[0].tangential_force[0] + outcomes[1].tangential_force[0];
+        }
+    }
+    benchmark::DoNotOptimize(sum);
+    state.counters["per_contact_step"] = benchmark::Counter(static_cast<double>(state.iterations()) * contacts,
+                                                            benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(held_packing)->ArgNames({"pairs"})->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

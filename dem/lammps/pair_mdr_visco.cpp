@@ -41,13 +41,10 @@ const char *const dummy_fix = "NEIGH_HISTORY_MDR_VISCO_DUMMY";
 // A contact as the pair loop's first pass leaves it for the law's step and the forces.
 struct Contact {
   int i, j;
-  double *history;
-  mdr::dem::ContactLaw *law;    // of the two atoms' types
-  double del[3];                // x_j - x_i
-  mdr::dem::SpatialVector normal;       // the unit normal from i to j
-  double scale;                         // R
-  double overlap;                       // d / R
-  mdr::dem::SpatialVector increment;    // the contact points' relative displacement over the step, / R
+  mdr::dem::ContactLaw *law;              // of the two atoms' types
+  double del[3];                          // x_j - x_i
+  double scale;                           // R
+  mdr::dem::ContactLaw::SpatialStep step;    // the state, d / R, the unit normal from i to j, the increment / R
 };
 
 // Contacts per chunk of the pair loop (on the stack; 8 measured a little faster than 4, 16 or 32 beyond the L2,
@@ -390,26 +387,16 @@ void PairMdrVisco::compute(int eflag, int vflag)
     std::array<bool, chunk_size> stepped{};
     if (history_update) {
       for (int c = 0; c + 1 < count; c += 2) {
-        const Contact &first = chunk[c], &second = chunk[c + 1];
-        if (first.law != second.law) continue;
-        const std::size_t size = first.law->state_size();
-        const mdr::dem::ContactLaw::SpatialStep one{{first.history, size}, first.overlap, first.normal,
-                                                    first.increment};
-        const mdr::dem::ContactLaw::SpatialStep other{{second.history, size}, second.overlap, second.normal,
-                                                      second.increment};
-        std::array<mdr::dem::ContactLaw::SpatialOutcome, 2> pair;
-        if (first.law->advance_spatial_pair(one, other, pair)) {
-          outcomes[c] = pair[0];
-          outcomes[c + 1] = pair[1];
-          stepped[c] = stepped[c + 1] = true;
-        }
+        if (chunk[c].law != chunk[c + 1].law) continue;
+        const std::span<mdr::dem::ContactLaw::SpatialOutcome, 2> pair(outcomes.data() + c, 2);
+        stepped[c] = stepped[c + 1] = chunk[c].law->advance_spatial_pair(chunk[c].step, chunk[c + 1].step, pair);
       }
     }
     for (int c = 0; c < count; c++) {
       const Contact &contact = chunk[c];
       const int i = contact.i, j = contact.j;
       mdr::dem::ContactLaw &law = *contact.law;
-      const std::span<double> state(contact.history, law.state_size());
+      const mdr::dem::ContactLaw::SpatialStep &step = contact.step;
       const bool whole = newton_pair || j < nlocal;    // this rank applies the contact to j as well
       mdr::dem::SpatialVector tangential;
       double normal_force = 0.0;
@@ -417,29 +404,29 @@ void PairMdrVisco::compute(int eflag, int vflag)
         if (stepped[c]) {
           tangential = outcomes[c].tangential_force;
         } else if (history_update) {
-          tangential = law.advance_spatial(state, contact.overlap, contact.normal, contact.increment);
+          tangential = law.advance_spatial(step.state, step.overlap, step.normal, step.increment);
           outcomes[c].work = law.step_work();
         } else {
-          law.check(state);    // a state read from a restart file is checked once
-          tangential = law.tangential_force(state, contact.normal);
+          law.check(step.state);    // a state read from a restart file is checked once
+          tangential = law.tangential_force(step.state, step.normal);
         }
-        normal_force = law.normal_force(state);
+        normal_force = law.normal_force(step.state);
         const double share = whole ? 1.0 : 0.5;
         const double volume = contact.scale * contact.scale * contact.scale;    // the unit contact's energies are R^3
         if (history_update) work += share * volume * outcomes[c].work;
-        if (eflag_global) stored += share * volume * law.stored_energy(state);
+        if (eflag_global) stored += share * volume * law.stored_energy(step.state);
       } catch (const mdr::InvalidInput &e) {
         if (e.key() == "half_width")
           error->one(FLERR,
                      "pair mdr/visco: atoms {} and {} overlap by d/R = {:.4g} (R = {:.4g}): beyond the law's "
                      "half_width {} of types {} {}; give pair_coeff ... half_width >= sqrt(d/R) = {:.3g}",
-                     tag[i], tag[j], contact.overlap, contact.scale, e.value(), type[i], type[j],
-                     std::sqrt(contact.overlap));
+                     tag[i], tag[j], step.overlap, contact.scale, e.value(), type[i], type[j],
+                     std::sqrt(step.overlap));
         error->one(FLERR, "pair mdr/visco: atoms {} and {}: {}", tag[i], tag[j], e.what());
       }
       const double area = contact.scale * contact.scale;
       double fj[3];
-      for (int k = 0; k < 3; k++) fj[k] = area * (normal_force * contact.normal[k] + tangential[k]);
+      for (int k = 0; k < 3; k++) fj[k] = area * (normal_force * step.normal[k] + tangential[k]);
       for (int k = 0; k < 3; k++) f[i][k] -= fj[k];
       if (whole)
         for (int k = 0; k < 3; k++) f[j][k] += fj[k];
@@ -448,7 +435,7 @@ void PairMdrVisco::compute(int eflag, int vflag)
       if (tangential[0] != 0.0 || tangential[1] != 0.0 || tangential[2] != 0.0) {
         const double tangential_force[3] = {area * tangential[0], area * tangential[1], area * tangential[2]};
         double tj[3];
-        cross(contact.normal.data(), tangential_force, tj);    // n x F_t
+        cross(step.normal.data(), tangential_force, tj);    // n x F_t
         for (int k = 0; k < 3; k++) torque[i][k] -= radius[i] * tj[k];
         if (whole)
           for (int k = 0; k < 3; k++) torque[j][k] -= radius[j] * tj[k];
@@ -490,18 +477,19 @@ void PairMdrVisco::compute(int eflag, int vflag)
       Contact &contact = chunk[count++];
       contact.i = i;
       contact.j = j;
-      contact.history = history;
       contact.law = laws_of_i[type[j]];
+      mdr::dem::ContactLaw::SpatialStep &step = contact.step;
+      step.state = {history, contact.law->state_size()};
       const double r = std::sqrt(rsq);
       for (int k = 0; k < 3; k++) contact.del[k] = del[k];
-      for (int k = 0; k < 3; k++) contact.normal[k] = del[k] / r;    // from i to j
-      contact.scale = radiusi * radius[j] / radsum;                   // R: the law is that of R = 1
-      contact.overlap = (radsum - r) / contact.scale;
+      for (int k = 0; k < 3; k++) step.normal[k] = del[k] / r;    // from i to j
+      contact.scale = radiusi * radius[j] / radsum;                // R: the law is that of R = 1
+      step.overlap = (radsum - r) / contact.scale;
       // the contact points' relative velocity: v_i + w_i x (r_i n) - v_j - w_j x (-r_j n)
       double spin[3], turned[3];
       for (int k = 0; k < 3; k++) spin[k] = radiusi * omegai[k] + radius[j] * omega[j][k];
-      cross(spin, contact.normal.data(), turned);
-      for (int k = 0; k < 3; k++) contact.increment[k] = (vi[k] - v[j][k] + turned[k]) * dt / contact.scale;
+      cross(spin, step.normal.data(), turned);
+      for (int k = 0; k < 3; k++) step.increment[k] = (vi[k] - v[j][k] + turned[k]) * dt / contact.scale;
       if (count == chunk_size) take_steps();
     }
   }

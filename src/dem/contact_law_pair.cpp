@@ -102,7 +102,7 @@ constexpr std::size_t most_branches = 3, largest_map = (most_branches + 1) * (mo
 }  // namespace
 
 bool ContactLaw::advance_spatial_pair(const SpatialStep& first, const SpatialStep& second,
-                                      std::array<SpatialOutcome, 2>& outcomes) {
+                                      std::span<SpatialOutcome, 2> outcomes) {
     return foundation::with_branches(branches_, [&](auto m) {
         if constexpr (std::is_same_v<decltype(m), std::size_t>) {
             return false;  // M = 0 or M > 3: advance_spatial's general path
@@ -114,7 +114,7 @@ bool ContactLaw::advance_spatial_pair(const SpatialStep& first, const SpatialSte
 
 template <class Branches>
 bool ContactLaw::held_pair_with(const SpatialStep& first, const SpatialStep& second,
-                                std::array<SpatialOutcome, 2>& outcomes, Branches m) {
+                                std::span<SpatialOutcome, 2> outcomes, Branches m) {
     using foundation::ComposedNormalStep;
     using foundation::ComposedTangentialStep;
     static_assert(Branches::value <= most_branches);

@@ -154,7 +154,7 @@ public:
     /// the workspace's accessors (normal_force(), step_work() and the others) keep their values. Never throws: a
     /// state that advance_spatial would refuse makes it return false.
     bool advance_spatial_pair(const SpatialStep& first, const SpatialStep& second,
-                              std::array<SpatialOutcome, 2>& outcomes);
+                              std::span<SpatialOutcome, 2> outcomes);
 
     /// Normal force F_N [N] (eq. 21) of the workspace after the last advance_normal.
     double normal_force() const { return normal_force_; }
@@ -222,7 +222,7 @@ private:
         return false;
     }
     template <class Branches>
-    bool held_pair_with(const SpatialStep& first, const SpatialStep& second, std::array<SpatialOutcome, 2>& outcomes,
+    bool held_pair_with(const SpatialStep& first, const SpatialStep& second, std::span<SpatialOutcome, 2> outcomes,
                         Branches branches);
     bool tangential_composes() const;
     bool tangential_sticks(PlanarVector increment, foundation::ComposedTangentialStep::Step& step) const;
