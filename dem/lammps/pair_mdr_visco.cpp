@@ -47,7 +47,7 @@ struct Contact {
   mdr::dem::ContactLaw::SpatialStep step;    // the state, d / R, the unit normal from i to j, the increment / R
 };
 
-// Contacts per chunk of the pair loop (on the stack; 8 measured a little faster than 4, 16 or 32 beyond the L2,
+// Contacts per chunk of the pair loop (on the stack; 8 measured a little faster than 16 or 32 beyond the L2,
 // docs/dem-performance.md).
 constexpr int chunk_size = 8;
 
