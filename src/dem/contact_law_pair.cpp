@@ -73,19 +73,6 @@ struct LaneVector {
 
 [[gnu::always_inline]] inline bool both(bool first, bool second) { return first & second; }
 
-/// compose_free_map (composed_held_steps.hpp) lane by lane: F P = D P + b (c^T P) of order M + 1 into `next`.
-[[gnu::always_inline]] inline void compose_free_map(std::size_t order, const double* increment, const double* decay,
-                                                    const double* gain, const Lanes* map, Lanes* next) {
-    for (std::size_t j = 0; j < order; ++j) {
-        Lanes projection = {0.0, 0.0};
-        for (std::size_t l = 0; l < order; ++l) projection += increment[l] * map[l * order + j];
-        next[j] = map[j] + projection;
-        for (std::size_t r = 1; r < order; ++r) {
-            next[r * order + j] = decay[r - 1] * map[r * order + j] + gain[r - 1] * projection;
-        }
-    }
-}
-
 /// The largest magnitude of lane `lane` of `count` values (take_with's and advance_with's test of a composed map).
 [[gnu::always_inline]] inline double largest_magnitude(const Lanes* values, std::size_t count, int lane) {
     double largest = 0.0;
@@ -224,7 +211,7 @@ bool ContactLaw::held_pair_with(const SpatialStep& first, const SpatialStep& sec
     if (free[0] || free[1]) {
         std::array<Lanes, largest_map> map;
         for (std::size_t j = 0; j < order * order; ++j) map[j] = gather(na, nb, normal_map + j);
-        compose_free_map(order, normal_step.free_increment_.data(), decay, gain, map.data(), next.data());
+        foundation::compose_free_map(order, normal_step.free_increment_.data(), decay, gain, map.data(), next.data());
         Lanes clearance = gather(na, nb, normal_header::innermost_free_offset) - depth_end;
         for (std::size_t j = 0; j < order; ++j) {
             const Lanes floor = gather(na, nb, normal_map + order * order + j);
@@ -352,8 +339,8 @@ bool ContactLaw::held_pair_with(const SpatialStep& first, const SpatialStep& sec
             const std::size_t tangential_map = tangential_header::map_offset(m);
             std::array<Lanes, largest_map> map, composed_map;
             for (std::size_t j = 0; j < order * order; ++j) map[j] = gather(ta, tb, tangential_map + j);
-            compose_free_map(order, tangential_step.free_increment_.data(), tangential_decay, tangential_gain,
-                             map.data(), composed_map.data());
+            foundation::compose_free_map(order, tangential_step.free_increment_.data(), tangential_decay,
+                                         tangential_gain, map.data(), composed_map.data());
             for (int lane = 0; lane < 2; ++lane) {
                 if (!tangential_free[lane]) continue;
                 double* target = (lane == 0 ? ta : tb) + tangential_map;

@@ -22,11 +22,13 @@ constexpr double smallest_factor = 1e-150;
 
 // F P = D P + b (c^T P) into `next`: a free element's force-free update (D = diag(1, E_k), b = (1, B_k), c the free
 // increment: Foundation::begin_step, the tangential layer's) composed onto the map P (row-major, order M + 1).
+// `Value` a double, or two contacts' doubles in the lanes of a vector (ContactLaw::advance_spatial_pair).
+template <class Value>
 [[gnu::always_inline]] inline void compose_free_map(std::size_t order, const double* __restrict increment,
                                                     const double* __restrict decay, const double* __restrict gain,
-                                                    const double* __restrict map, double* __restrict next) {
+                                                    const Value* __restrict map, Value* __restrict next) {
     for (std::size_t j = 0; j < order; ++j) {
-        double projection = 0.0;
+        Value projection{};
         for (std::size_t l = 0; l < order; ++l) projection += increment[l] * map[l * order + j];
         next[j] = map[j] + projection;
         for (std::size_t r = 1; r < order; ++r) {
