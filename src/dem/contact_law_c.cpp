@@ -1,6 +1,7 @@
 #include "mdr/dem/contact_law_c.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <exception>
 #include <string>
@@ -92,6 +93,38 @@ int mdr_contact_law_step(mdr_contact_law* law, double* state, double time_step, 
             for (int i = 0; i < 3; ++i) force[i] = normal_force * n[static_cast<std::size_t>(i)] +
                                                    tangential[static_cast<std::size_t>(i)];
             std::copy_n(law->scratch.data(), size, state);
+        },
+        message, message_size);
+}
+
+int mdr_contact_law_step_pair(mdr_contact_law* law, double* first_state, double* second_state, double time_step,
+                              const double overlaps[2], const double normals[2][3], const double increments[2][3],
+                              double forces[2][3], double works[2], int* stepped, char* message,
+                              std::size_t message_size) {
+    return guarded(
+        [&] {
+            *stepped = 0;
+            law->law.set_time_step(time_step);
+            const std::size_t size = law->law.state_size();
+            std::array<mdr::dem::ContactLaw::SpatialStep, 2> steps;
+            double* states[2] = {first_state, second_state};
+            for (std::size_t c = 0; c < 2; ++c) {
+                steps[c] = {{states[c], size},
+                            overlaps[c],
+                            {normals[c][0], normals[c][1], normals[c][2]},
+                            {increments[c][0], increments[c][1], increments[c][2]}};
+            }
+            std::array<mdr::dem::ContactLaw::SpatialOutcome, 2> outcomes;
+            if (!law->law.advance_spatial_pair(steps[0], steps[1], outcomes)) return;
+            for (std::size_t c = 0; c < 2; ++c) {
+                // the total force as mdr_contact_law_step's: F_N n + F_t
+                const double normal_force = law->law.normal_force(steps[c].state);
+                for (std::size_t i = 0; i < 3; ++i) {
+                    forces[c][i] = normal_force * steps[c].normal[i] + outcomes[c].tangential_force[i];
+                }
+                works[c] = outcomes[c].work;
+            }
+            *stepped = 1;
         },
         message, message_size);
 }

@@ -46,6 +46,16 @@ void mdr_contact_law_initialise(const mdr_contact_law* law, double* state);
  *  increment that is not finite, or a contact beyond the half-width. */
 int mdr_contact_law_step(mdr_contact_law* law, double* state, double time_step, double overlap, const double normal[3],
                          const double increment[3], double force[3], char* message, size_t message_size);
+/** Two contacts' steps of length `time_step` [s] at once where both are held (no element entering or leaving normal
+ *  contact and, with friction, every element in contact certainly sticking: a settled packing's contacts), each
+ *  contact in one lane of the vector registers: `overlaps` [2], `normals` and `increments` [2][3] as
+ *  mdr_contact_law_step's, the two contacts' total forces into `forces` [2][3] and their step works [J] into
+ *  `works` [2], to the bit those of two mdr_contact_law_step calls. `*stepped` 1 where it stepped both, 0 where it
+ *  wrote nothing (step each with mdr_contact_law_step then, which reports bad input). MDR_INVALID_INPUT (nothing
+ *  written) for a bad time step. */
+int mdr_contact_law_step_pair(mdr_contact_law* law, double* first_state, double* second_state, double time_step,
+                              const double overlaps[2], const double normals[2][3], const double increments[2][3],
+                              double forces[2][3], double works[2], int* stepped, char* message, size_t message_size);
 /** Turns a contact's state into that of the same contact with the two bodies swapped. */
 void mdr_contact_law_mirror(double* state);
 /** MDR_OK when `state` (`size` doubles) is one this law could have written (e.g. read back from a restart). */

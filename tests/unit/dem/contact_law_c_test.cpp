@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,71 @@ TEST(DemContactLawC, StepsAsTheCppLaw) {
     }
     EXPECT_EQ(state, expected);
     EXPECT_EQ(mdr_contact_law_check(law, state.data(), state.size(), message, sizeof message), MDR_OK);
+    mdr_contact_law_destroy(law);
+}
+
+// Two held contacts stepped at once give the states, forces and works of two single steps; a pair it does not take
+// (here the first step, at first touch) is left as it was.
+TEST(DemContactLawC, APairStepsAsTwoSteps) {
+    char message[256] = "";
+    mdr_contact_law* law = mdr_contact_law_create(&standard, &elastic, 0.005, 0.3, 40, 1e-3, 2e-6, message,
+                                                  sizeof message);
+    ASSERT_NE(law, nullptr) << message;
+    const std::size_t size = mdr_contact_law_state_size(law);
+    std::vector<double> first(size), second(size);
+    mdr_contact_law_initialise(law, first.data());
+    mdr_contact_law_initialise(law, second.data());
+    std::vector<double> single_first = first, single_second = second;
+    const double normals[2][3] = {{0.0, 0.6, 0.8}, {0.8, 0.0, -0.6}};
+    int paired = 0;
+    for (int n = 1; n < 400; ++n) {
+        const double overlaps[2] = {2e-7 * std::min(n, 150), 1.5e-7 * std::min(n, 150)};
+        const double increments[2][3] = {{1e-12, 4e-13, -3e-13}, {-2e-13, 1e-12, 0.0}};
+        double forces[2][3], works[2], expected[2][3], expected_works[2];
+        std::vector<double>* singles[2] = {&single_first, &single_second};
+        for (int c = 0; c < 2; ++c) {
+            ASSERT_EQ(mdr_contact_law_step(law, singles[c]->data(), 2e-6, overlaps[c], normals[c], increments[c],
+                                           expected[c], message, sizeof message),
+                      MDR_OK)
+                << message;
+            expected_works[c] = mdr_contact_law_step_work(law);
+        }
+        const std::vector<double> before_first = first, before_second = second;
+        int stepped = -1;
+        ASSERT_EQ(mdr_contact_law_step_pair(law, first.data(), second.data(), 2e-6, overlaps, normals, increments,
+                                            forces, works, &stepped, message, sizeof message),
+                  MDR_OK)
+            << message;
+        if (stepped == 1) {
+            ++paired;
+            for (int c = 0; c < 2; ++c) {
+                for (int i = 0; i < 3; ++i) ASSERT_EQ(forces[c][i], expected[c][i]) << "step " << n;
+                ASSERT_EQ(works[c], expected_works[c]) << "step " << n;
+            }
+        } else {
+            ASSERT_EQ(stepped, 0);
+            ASSERT_EQ(first, before_first) << "step " << n;
+            ASSERT_EQ(second, before_second) << "step " << n;
+            double force[3];
+            ASSERT_EQ(mdr_contact_law_step(law, first.data(), 2e-6, overlaps[0], normals[0], increments[0], force,
+                                           message, sizeof message),
+                      MDR_OK);
+            ASSERT_EQ(mdr_contact_law_step(law, second.data(), 2e-6, overlaps[1], normals[1], increments[1], force,
+                                           message, sizeof message),
+                      MDR_OK);
+        }
+        ASSERT_EQ(first, single_first) << "step " << n;
+        ASSERT_EQ(second, single_second) << "step " << n;
+    }
+    EXPECT_GT(paired, 200);  // held once loaded (from step 150)
+    int stepped = -1;
+    double forces[2][3], works[2];
+    const double overlaps[2] = {1e-5, 1e-5}, increments[2][3] = {};
+    EXPECT_EQ(mdr_contact_law_step_pair(law, first.data(), second.data(), -1.0, overlaps, normals, increments, forces,
+                                        works, &stepped, message, sizeof message),
+              MDR_INVALID_INPUT);
+    EXPECT_NE(std::string(message).find("time_step"), std::string::npos) << message;
+    EXPECT_EQ(stepped, 0);
     mdr_contact_law_destroy(law);
 }
 
