@@ -14,29 +14,17 @@
 #include <limits>
 #include <type_traits>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include "../foundation/composed_held_steps.hpp"
 #include "../foundation/element_stiffness.hpp"
+#include "../foundation/lanes.hpp"
 #include "../foundation/with_branches.hpp"
 #include "mdr/dem/contact_law.hpp"
 
 namespace mdr::dem {
 namespace {
 
-/// Two doubles, the first contact's in lane 0, the second's in lane 1; arithmetic acts lane by lane.
-typedef double Lanes __attribute__((vector_size(2 * sizeof(double))));
-
-/// The lanes' square roots (IEEE square roots: the same bits as std::sqrt's).
-[[gnu::always_inline]] inline Lanes square_root(Lanes value) {
-#if defined(__SSE2__)
-    return reinterpret_cast<Lanes>(_mm_sqrt_pd(reinterpret_cast<__m128d>(value)));
-#else
-    return Lanes{std::sqrt(value[0]), std::sqrt(value[1])};
-#endif
-}
+using foundation::Lanes;
+using foundation::square_root;
 
 /// The two contacts' values at `offset` of their states (or of any two arrays).
 [[gnu::always_inline]] inline Lanes gather(const double* first, const double* second, std::size_t offset) {
@@ -179,18 +167,18 @@ bool ContactLaw::held_pair_with(const SpatialStep& first, const SpatialStep& sec
     double* const nb = b + header_offset;
     const double* decay = normal_step.coefficients_.decay.data();
     const double* gain = normal_step.coefficients_.gain.data();
-    const double* moduli = normal_step.moduli_.data();
     const Lanes depth_start = gather(a, b, normal_offset_), depth_end = {first.overlap, second.overlap};
     const Lanes increment = depth_end - depth_start;
     const Lanes rate = increment / normal_step.coefficients_.time_step;
-    Lanes common = normal_step.g_inf_ * depth_end + normal_step.viscosity_ * rate;
-    std::array<Lanes, most_branches> scale, shift, weight;
+    std::array<Lanes, most_branches> scale, shift, weight, floor, hat_sum;
     for (std::size_t k = 0; k < m; ++k) {
         scale[k] = gather(na, nb, normal_header::scale_offset + k);
         shift[k] = gather(na, nb, normal_header::scale_offset + m + k);
-        common += moduli[k] * (decay[k] * shift[k] + gain[k] * increment);
-        weight[k] = moduli[k] * decay[k] * scale[k];
+        hat_sum[k] = gather(na, nb, normal_header::scale_offset + 2 * m + k);
+        floor[k] = gather(na, nb, normal_header::scale_offset + 3 * m + k);
     }
+    const Lanes common =
+        normal_step.common_stress(scale.data(), shift.data(), depth_end, rate, increment, weight.data(), m);
     const Lanes contacts = gather(na, nb, ComposedNormalStep::contacts_offset);
     const std::array<bool, 2> free{static_cast<double>(static_cast<std::int64_t>(touched[0])) > contacts[0],
                                    static_cast<double>(static_cast<std::int64_t>(touched[1])) > contacts[1]};
@@ -198,8 +186,8 @@ bool ContactLaw::held_pair_with(const SpatialStep& first, const SpatialStep& sec
     // element's test (no_event), as prepare_with.
     Lanes least_stress = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     std::array<bool, 2> certain{true, true};
-    Lanes lower = common - normal_step.g_inf_ * gather(na, nb, normal_header::outermost_offset);
-    for (std::size_t k = 0; k < m; ++k) lower += weight[k] * gather(na, nb, normal_header::scale_offset + 3 * m + k);
+    const Lanes lower = normal_step.least_stress(common, gather(na, nb, normal_header::outermost_offset), weight.data(),
+                                                 floor.data(), m);
     for (int lane = 0; lane < 2; ++lane) {
         if (contacts[lane] > 0.0) {
             least_stress[lane] = lower[lane];
@@ -210,15 +198,16 @@ bool ContactLaw::held_pair_with(const SpatialStep& first, const SpatialStep& sec
     std::array<Lanes, largest_map> next;  // F P, where an element is free (written before it is read)
     if (free[0] || free[1]) {
         std::array<Lanes, largest_map> map;
+        std::array<Lanes, most_branches + 1> free_floor, free_ceiling;
         for (std::size_t j = 0; j < order * order; ++j) map[j] = gather(na, nb, normal_map + j);
-        foundation::compose_free_map(order, normal_step.free_increment_.data(), decay, gain, map.data(), next.data());
-        Lanes clearance = gather(na, nb, normal_header::innermost_free_offset) - depth_end;
         for (std::size_t j = 0; j < order; ++j) {
-            const Lanes floor = gather(na, nb, normal_map + order * order + j);
-            const Lanes ceiling = gather(na, nb, normal_map + order * order + order + j);
-            clearance +=
-                next[j] * Lanes{next[j][0] >= 0.0 ? floor[0] : ceiling[0], next[j][1] >= 0.0 ? floor[1] : ceiling[1]};
+            free_floor[j] = gather(na, nb, normal_map + order * order + j);
+            free_ceiling[j] = gather(na, nb, normal_map + order * order + order + j);
         }
+        foundation::compose_free_map(order, normal_step.free_increment_.data(), decay, gain, map.data(), next.data());
+        const Lanes clearance =
+            ComposedNormalStep::free_clearance(gather(na, nb, normal_header::innermost_free_offset), depth_end,
+                                               next.data(), free_floor.data(), free_ceiling.data(), order);
         for (int lane = 0; lane < 2; ++lane) {
             if (free[lane] && certain[lane]) certain[lane] = clearance[lane] >= 0.0;
         }
@@ -244,35 +233,28 @@ bool ContactLaw::held_pair_with(const SpatialStep& first, const SpatialStep& sec
     const ComposedTangentialStep& tangential_step = tangential_;
     double* const ta = a + tangential_header_offset_;
     double* const tb = b + tangential_header_offset_;
-    const double* tangential_weight = tangential_step.weight_.data();
-    const double g_inf = tangential_step.g_inf_;
     std::array<Lanes, most_branches> tangential_scale{}, shift_x{}, shift_y{}, composed_weight{};
     Lanes common_x{}, common_y{};
     if (sticking) {
-        Lanes x = g_inf * gather(ta, tb, tangential_header::shift_offset);
-        Lanes y = g_inf * gather(ta, tb, tangential_header::shift_offset + 1);
-        Lanes bound = g_inf * gather(ta, tb, tangential_header::hat_largest_offset);
+        std::array<Lanes, most_branches> largest;
         for (std::size_t k = 0; k < m; ++k) {
             tangential_scale[k] = gather(ta, tb, tangential_header::scale_offset + k);
             shift_x[k] = gather(ta, tb, tangential_header::scale_offset + m + k);
             shift_y[k] = gather(ta, tb, tangential_header::scale_offset + 2 * m + k);
-            x += tangential_weight[k] * shift_x[k];
-            y += tangential_weight[k] * shift_y[k];
-            composed_weight[k] = tangential_weight[k] * tangential_scale[k];
-            bound += composed_weight[k] * gather(ta, tb, tangential_header::scale_offset + 5 * m + k);
+            largest[k] = gather(ta, tb, tangential_header::scale_offset + 5 * m + k);
         }
-        const double stiffness = tangential_step.coefficients_.stiffness;
-        common_x = x + stiffness * du;
-        common_y = y + stiffness * dv;
-        bound += square_root(common_x * common_x + common_y * common_y);
+        Lanes bound{};
+        tangential_step.relaxed_stress(
+            gather(ta, tb, tangential_header::shift_offset), gather(ta, tb, tangential_header::shift_offset + 1),
+            gather(ta, tb, tangential_header::hat_largest_offset), tangential_scale.data(), shift_x.data(),
+            shift_y.data(), largest.data(), du, dv, common_x, common_y, bound, composed_weight.data(), m);
         const Lanes limit = tangential_step.per_load_ * (line_load_factor * least_stress);
         if (!both(bound[0] <= limit[0], bound[1] <= limit[1])) return false;  // sticks decides: the general path
     }
 
     // Taken: the normal step (ComposedNormalStep::take_with, composed).
-    Lanes sum = contacts * common - normal_step.g_inf_ * gather(na, nb, normal_header::profile_sum_offset);
-    for (std::size_t k = 0; k < m; ++k) sum += weight[k] * gather(na, nb, normal_header::scale_offset + 2 * m + k);
-    const Lanes normal_force = 2.0 * foundation::normal_stiffness_factor * normal_step.spacing_ * sum;
+    const Lanes normal_force = normal_step.force_of(contacts, common, gather(na, nb, normal_header::profile_sum_offset),
+                                                    weight.data(), hat_sum.data(), m);
     std::array<double, 2> smallest{1.0, 1.0};
     for (std::size_t k = 0; k < m; ++k) {
         const Lanes scaled = decay[k] * scale[k];
@@ -304,14 +286,16 @@ bool ContactLaw::held_pair_with(const SpatialStep& first, const SpatialStep& sec
     // With friction, the tangential step (ComposedTangentialStep::advance_with).
     if (sticking) {
         const Lanes tangential_contacts = gather(ta, tb, ComposedTangentialStep::contacts_offset);
-        Lanes sum_x = tangential_contacts * common_x + g_inf * gather(ta, tb, tangential_header::hat_sum_offset);
-        Lanes sum_y = tangential_contacts * common_y + g_inf * gather(ta, tb, tangential_header::hat_sum_offset + 1);
+        std::array<Lanes, most_branches> hat_x, hat_y;
         for (std::size_t k = 0; k < m; ++k) {
-            sum_x += composed_weight[k] * gather(ta, tb, tangential_header::scale_offset + 3 * m + k);
-            sum_y += composed_weight[k] * gather(ta, tb, tangential_header::scale_offset + 4 * m + k);
+            hat_x[k] = gather(ta, tb, tangential_header::scale_offset + 3 * m + k);
+            hat_y[k] = gather(ta, tb, tangential_header::scale_offset + 4 * m + k);
         }
-        const double factor = 2.0 * foundation::tangential_stiffness_factor * tangential_step.spacing_;
-        const Lanes force_x = factor * sum_x, force_y = factor * sum_y;
+        Lanes force_x{}, force_y{};
+        tangential_step.force_of(tangential_contacts, common_x, common_y,
+                                 gather(ta, tb, tangential_header::hat_sum_offset),
+                                 gather(ta, tb, tangential_header::hat_sum_offset + 1), composed_weight.data(),
+                                 hat_x.data(), hat_y.data(), force_x, force_y, m);
         const Lanes start_force_x = gather(ta, tb, ComposedTangentialStep::force_offset);
         const Lanes start_force_y = gather(ta, tb, ComposedTangentialStep::force_offset + 1);
         scatter(ta, tb, ComposedTangentialStep::force_offset, force_x);

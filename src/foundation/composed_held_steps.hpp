@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <span>
 
+#include "lanes.hpp"
 #include "mdr/foundation/composed_normal_step.hpp"
 #include "mdr/foundation/composed_tangential_step.hpp"
 #include "element_stiffness.hpp"
@@ -53,6 +54,55 @@ constexpr std::size_t scale_offset = ComposedTangentialStep::factors_offset;
 constexpr std::size_t map_offset(std::size_t branches) { return scale_offset + 6 * branches; }
 }  // namespace composed_tangential
 
+template <class Value, class Branches>
+[[gnu::always_inline]] inline Value ComposedNormalStep::common_stress(const Value* __restrict scale,
+                                                                     const Value* __restrict shift, Value depth_end,
+                                                                     Value rate, Value increment,
+                                                                     Value* __restrict weight, Branches m) const {
+    const double* __restrict decay = coefficients_.decay.data();
+    const double* __restrict gain = coefficients_.gain.data();
+    const double* __restrict moduli = moduli_.data();
+    Value common = g_inf_ * depth_end + viscosity_ * rate;
+    for (std::size_t k = 0; k < m; ++k) {
+        common += moduli[k] * (decay[k] * shift[k] + gain[k] * increment);
+        weight[k] = moduli[k] * decay[k] * scale[k];
+    }
+    return common;
+}
+
+// G_k E_k A_k > 0: each end stress in contact is at least common - G_inf max g_i + sum_k G_k E_k A_k min h^_k,i.
+template <class Value, class Branches>
+[[gnu::always_inline]] inline Value ComposedNormalStep::least_stress(Value common, Value outermost,
+                                                                    const Value* __restrict weight,
+                                                                    const Value* __restrict floor, Branches m) const {
+    Value lower = common - g_inf_ * outermost;
+    for (std::size_t k = 0; k < m; ++k) lower += weight[k] * floor[k];
+    return lower;
+}
+
+// The free surfaces' clearance g_i + w_i - d1 is at least g_min - d1 + the extremes of w^, h^ by the signs of F P's
+// first row (`next`).
+template <class Value>
+[[gnu::always_inline]] inline Value ComposedNormalStep::free_clearance(Value innermost, Value depth_end,
+                                                                      const Value* __restrict next,
+                                                                      const Value* __restrict floor,
+                                                                      const Value* __restrict ceiling,
+                                                                      std::size_t order) {
+    Value lower = innermost - depth_end;
+    for (std::size_t j = 0; j < order; ++j) lower += next[j] * by_sign(next[j], floor[j], ceiling[j]);
+    return lower;
+}
+
+// F_N = 8 dx sum_i sigma_i (eq. 21, both halves) over the elements in contact.
+template <class Value, class Branches>
+[[gnu::always_inline]] inline Value ComposedNormalStep::force_of(Value contacts, Value common, Value profile_sum,
+                                                                const Value* __restrict weight,
+                                                                const Value* __restrict hat_sum, Branches m) const {
+    Value sum = contacts * common - g_inf_ * profile_sum;
+    for (std::size_t k = 0; k < m; ++k) sum += weight[k] * hat_sum[k];
+    return 2.0 * normal_stiffness_factor * spacing_ * sum;
+}
+
 template <class Branches>
 [[gnu::always_inline]] inline bool ComposedNormalStep::prepare_with(std::span<const double> header,
                                                                    const AttachedElements& elements,
@@ -65,9 +115,6 @@ template <class Branches>
     if ((touched < profile_.size() && profile_[touched] < deepest) || deepest > deepest_) return false;
     // Not composed: A_k = 1, C_k = 0, P = I (unit_).
     const bool composed = header[composed_offset] != 0.0;
-    const double* __restrict decay = coefficients_.decay.data();
-    const double* __restrict gain = coefficients_.gain.data();
-    const double* __restrict moduli = moduli_.data();
     const double* __restrict scale = composed ? header.data() + scale_offset : unit_.data();
     const double* __restrict shift = scale + m;
     const double* __restrict map = composed ? header.data() + composed_normal::map_offset(m) : unit_.data() + 2 * m;
@@ -77,11 +124,7 @@ template <class Branches>
     step.next = next;
     step.increment = depth_end - depth_start;
     step.rate = step.increment / coefficients_.time_step;
-    double common = g_inf_ * depth_end + viscosity_ * step.rate;
-    for (std::size_t k = 0; k < m; ++k) {
-        common += moduli[k] * (decay[k] * shift[k] + gain[k] * step.increment);
-        weight[k] = moduli[k] * decay[k] * scale[k];
-    }
+    const double common = common_stress(scale, shift, depth_end, step.rate, step.increment, weight, m);
     step.common = common;
     const double contacts = header[contacts_offset];
     // A signed conversion (one instruction; touched <= N elements).
@@ -91,22 +134,17 @@ template <class Branches>
     // sum_k G_k E_k A_k min h^_k,i) and of the free surfaces' clearance g_i + w_i - d1 (from the extremes of w^, h^
     // by the signs of F P's first row); where one is negative, each element's (no_event).
     if (contacts > 0.0) {
-        const double* __restrict floor = header.data() + scale_offset + 3 * m;
-        double lower = common - g_inf_ * header[outermost_offset];
-        for (std::size_t k = 0; k < m; ++k) lower += weight[k] * floor[k];
-        step.least_stress = lower;
-        certain = lower >= 0.0;
+        const double* floor = header.data() + scale_offset + 3 * m;  // the least h^_k
+        step.least_stress = least_stress(common, header[outermost_offset], weight, floor, m);
+        certain = step.least_stress >= 0.0;
     }
     if (step.free) {
-        compose_free_map(order, free_increment_.data(), decay, gain, map, next);
+        compose_free_map(order, free_increment_.data(), coefficients_.decay.data(), coefficients_.gain.data(), map,
+                         next);
         if (certain) {
-            const double* __restrict free_floor = header.data() + composed_normal::map_offset(m) + order * order;
-            const double* __restrict free_ceiling = free_floor + order;
-            double lower = header[innermost_free_offset] - depth_end;
-            for (std::size_t j = 0; j < order; ++j) {
-                lower += next[j] * (next[j] >= 0.0 ? free_floor[j] : free_ceiling[j]);
-            }
-            certain = lower >= 0.0;
+            const double* free_floor = header.data() + composed_normal::map_offset(m) + order * order;
+            certain = free_clearance(header[innermost_free_offset], depth_end, next, free_floor, free_floor + order,
+                                     order) >= 0.0;
         }
     }
     return certain || no_event(elements, common, depth_end, weight, step.free ? next : map);
@@ -116,11 +154,8 @@ template <class Branches>
 [[gnu::always_inline]] inline double ComposedNormalStep::sum_force(std::span<const double> header, const Step& step,
                                                                    Branches m) const {
     using namespace composed_normal;
-    const double* hat_sum = header.data() + scale_offset + 2 * m;
-    // F_N = 8 dx sum_i sigma_i (eq. 21, both halves) over the elements in contact.
-    double sum = header[contacts_offset] * step.common - g_inf_ * header[profile_sum_offset];
-    for (std::size_t k = 0; k < m; ++k) sum += step.weight[k] * hat_sum[k];
-    return 2.0 * normal_stiffness_factor * spacing_ * sum;
+    return force_of(header[contacts_offset], step.common, header[profile_sum_offset], step.weight,
+                    header.data() + scale_offset + 2 * m, m);
 }
 
 template <class Branches>
@@ -158,30 +193,58 @@ template <class Branches>
     return force;
 }
 
+// S = G_inf U + sum_k G_k E_k C_k + k du: the relaxed stress of u = u^ + U, h_k = A_k h^_k + C_k less its element's
+// part, plus the stick branch's k du (eq. 50; the layer's relaxed_stress in its order); the bound of |t_i|: |S| +
+// G_inf max |u^| + sum_k G_k E_k A_k max |h^_k|.
+template <class Value, class Branches>
+[[gnu::always_inline]] inline void ComposedTangentialStep::relaxed_stress(
+    Value shift_x, Value shift_y, Value hat_largest, const Value* __restrict scale, const Value* __restrict shift_x_k,
+    const Value* __restrict shift_y_k, const Value* __restrict largest, Value du, Value dv, Value& stress_x,
+    Value& stress_y, Value& bound, Value* __restrict composed_weight, Branches m) const {
+    const double* __restrict weight = weight_.data();
+    Value x = g_inf_ * shift_x, y = g_inf_ * shift_y;
+    bound = g_inf_ * hat_largest;
+    for (std::size_t k = 0; k < m; ++k) {
+        x += weight[k] * shift_x_k[k];
+        y += weight[k] * shift_y_k[k];
+        composed_weight[k] = weight[k] * scale[k];
+        bound += composed_weight[k] * largest[k];
+    }
+    stress_x = x + coefficients_.stiffness * du;
+    stress_y = y + coefficients_.stiffness * dv;
+    bound += square_root(stress_x * stress_x + stress_y * stress_y);
+}
+
+// F_t (eq. 46, both halves) over the elements in contact, every one sticking.
+template <class Value, class Branches>
+[[gnu::always_inline]] inline void ComposedTangentialStep::force_of(Value contacts, Value stress_x, Value stress_y,
+                                                                   Value hat_sum_x, Value hat_sum_y,
+                                                                   const Value* __restrict composed_weight,
+                                                                   const Value* __restrict hat_x,
+                                                                   const Value* __restrict hat_y, Value& force_x,
+                                                                   Value& force_y, Branches m) const {
+    Value x = contacts * stress_x + g_inf_ * hat_sum_x;
+    Value y = contacts * stress_y + g_inf_ * hat_sum_y;
+    for (std::size_t k = 0; k < m; ++k) {
+        x += composed_weight[k] * hat_x[k];
+        y += composed_weight[k] * hat_y[k];
+    }
+    const double factor = 2.0 * tangential_stiffness_factor * spacing_;
+    force_x = factor * x;
+    force_y = factor * y;
+}
+
 template <class Branches>
 [[gnu::always_inline]] inline bool ComposedTangentialStep::prepare_with(std::span<const double> header,
                                                                        PlanarVector increment, double least_load,
                                                                        Step& step, Branches m) const {
     using namespace composed_tangential;
-    const double* __restrict scale = header.data() + scale_offset;
-    const double* __restrict shift = scale + m;  // C_k,x then C_k,y
-    const double* __restrict largest = scale + 5 * m;
-    const double* __restrict weight = weight_.data();
-    double* __restrict composed_weight = scratch_.data();
-    // S = G_inf U + sum_k G_k E_k C_k + k du: the relaxed stress of u = u^ + U, h_k = A_k h^_k + C_k less its
-    // element's part, plus the stick branch's k du (eq. 50; the layer's relaxed_stress in its order); the bound of
-    // |t_i|: |S| + G_inf max |u^| + sum_k G_k E_k A_k max |h^_k|.
-    double x = g_inf_ * header[shift_offset], y = g_inf_ * header[shift_offset + 1];
-    double bound = g_inf_ * header[hat_largest_offset];
-    for (std::size_t k = 0; k < m; ++k) {
-        x += weight[k] * shift[k];
-        y += weight[k] * shift[m + k];
-        composed_weight[k] = weight[k] * scale[k];
-        bound += composed_weight[k] * largest[k];
-    }
+    const double* scale = header.data() + scale_offset;  // A_k, then C_k,x, C_k,y, ..., the largest |h^_k|
+    double bound = 0.0;
+    relaxed_stress(header[shift_offset], header[shift_offset + 1], header[hat_largest_offset], scale, scale + m,
+                   scale + 2 * m, scale + 5 * m, increment[0], increment[1], step.common[0], step.common[1], bound,
+                   scratch_.data(), m);
     step.increment = increment;
-    step.common = {x + coefficients_.stiffness * increment[0], y + coefficients_.stiffness * increment[1]};
-    bound += std::sqrt(step.common[0] * step.common[0] + step.common[1] * step.common[1]);
     return bound <= per_load_ * least_load;
 }
 
@@ -190,15 +253,10 @@ template <class Branches>
                                                                              const Step& step, Branches m) const {
     using namespace composed_tangential;
     const double* hat_sum = header.data() + scale_offset + 3 * m;  // x then y
-    const double contacts = header[contacts_offset];
-    double x = contacts * step.common[0] + g_inf_ * header[hat_sum_offset];
-    double y = contacts * step.common[1] + g_inf_ * header[hat_sum_offset + 1];
-    for (std::size_t k = 0; k < m; ++k) {
-        x += scratch_[k] * hat_sum[k];
-        y += scratch_[k] * hat_sum[m + k];
-    }
-    const double factor = 2.0 * tangential_stiffness_factor * spacing_;  // eq. (46), both halves
-    return {factor * x, factor * y};
+    PlanarVector force{0.0, 0.0};
+    force_of(header[contacts_offset], step.common[0], step.common[1], header[hat_sum_offset],
+             header[hat_sum_offset + 1], scratch_.data(), hat_sum, hat_sum + m, force[0], force[1], m);
+    return force;
 }
 
 template <class Branches>

@@ -128,6 +128,21 @@ private:
 
     template <class Branches>
     double sum_force(std::span<const double> header, const Step& step, Branches branches) const;
+    // The formulas of a composed step, for a double or two contacts' lanes (`Value`, ContactLaw::advance_spatial_pair):
+    // the end stress common to the elements in contact (eq. 16) from the factors A_k (`scale`) and shifts C_k, with
+    // the weights G_k E_k A_k into `weight`; lower bounds of the end stresses in contact and of the free surfaces'
+    // clearance; F_N (eq. 21). Defined in composed_held_steps.hpp.
+    template <class Value, class Branches>
+    Value common_stress(const Value* scale, const Value* shift, Value depth_end, Value rate, Value increment,
+                        Value* weight, Branches branches) const;
+    template <class Value, class Branches>
+    Value least_stress(Value common, Value outermost, const Value* weight, const Value* floor, Branches branches) const;
+    template <class Value>
+    static Value free_clearance(Value innermost, Value depth_end, const Value* next, const Value* floor,
+                                const Value* ceiling, std::size_t order);
+    template <class Value, class Branches>
+    Value force_of(Value contacts, Value common, Value profile_sum, const Value* weight, const Value* hat_sum,
+                   Branches branches) const;
     bool no_event(const AttachedElements& elements, double common, double depth, const double* weight,
                   const double* row) const;
     std::size_t map_offset() const;

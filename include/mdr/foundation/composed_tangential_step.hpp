@@ -126,6 +126,19 @@ private:
     void advance_with(std::span<double> header, const PlanarElements& elements, const Step& step,
                       Branches branches) const;
 
+    // The formulas of a composed step, for a double or two contacts' lanes (`Value`, ContactLaw::advance_spatial_pair):
+    // the relaxed stress S (x, y; eq. 50) for the increment (du, dv) from the shift U, the factors A_k (`scale`) and
+    // shifts C_k, with the weights G_k E_k A_k into `composed_weight`, and the bound of the element stresses |t_i|;
+    // F_t (eq. 46). Defined in composed_held_steps.hpp.
+    template <class Value, class Branches>
+    void relaxed_stress(Value shift_x, Value shift_y, Value hat_largest, const Value* scale, const Value* shift_x_k,
+                        const Value* shift_y_k, const Value* largest, Value du, Value dv, Value& stress_x,
+                        Value& stress_y, Value& bound, Value* composed_weight, Branches branches) const;
+    template <class Value, class Branches>
+    void force_of(Value contacts, Value stress_x, Value stress_y, Value hat_sum_x, Value hat_sum_y,
+                  const Value* composed_weight, const Value* hat_x, const Value* hat_y, Value& force_x, Value& force_y,
+                  Branches branches) const;
+
     std::size_t map_offset() const;
 
     std::size_t branches_;
