@@ -1,10 +1,12 @@
 // ContactLaw::advance_spatial_pair: the held step of two contacts at once, each contact's values in one lane of a
-// vector of two doubles (SSE2's registers on x86-64; GCC's and Clang's vector extensions elsewhere). A held step is a
-// few hundred arithmetic operations on values of one contact with no element loop (composed_held_steps.hpp), so two
-// contacts share each instruction (docs/dem-performance.md, "two contacts a step"). Each lane performs
-// advance_spatial's held step (step_held_with, the bodies of composed_held_steps.hpp and advance_spatial's frame) in
-// the same operations and order, correctly rounded as they are (no contraction in ISO C++ mode): the same bits, which
-// test ContactLawPair.* checks against advance_spatial over held, entering, slipping and sliding contacts.
+// vector of two doubles (foundation::Lanes: SSE2's registers on x86-64). A held step is a few hundred arithmetic
+// operations on values of one contact with no element loop, so two contacts share each instruction
+// (docs/dem-performance.md, "Two contacts a step"). The composed steps' formulas are the held step's own, generic
+// over the value (composed_held_steps.hpp: common_stress, least_stress, free_clearance, force_of, relaxed_stress,
+// compose_free_map); the frame turned as advance_spatial turns it, the factors composed as take_with and
+// advance_with compose them. Each lane performs the held step's operations in its order, correctly rounded as they
+// are (no contraction in ISO C++ mode): the same bits, which test ContactLawPair.* checks against advance_spatial over
+// held, free, entering, slipping and sliding contacts.
 
 #include <algorithm>
 #include <array>
