@@ -147,9 +147,9 @@ public:
         double work = 0.0;
     };
     /// Two contacts' steps at once, each contact in one lane of the processor's vector registers, where both are held
-    /// steps: with friction, no element entering or leaving normal contact and every element in contact certainly
-    /// sticking (a settled packing's contacts; docs/dem-performance.md, "two contacts a step"). Returns false,
-    /// having written nothing, for any other pair (and for M = 0 or M > 3): step each with advance_spatial then.
+    /// steps: no element entering or leaving normal contact and, with friction, every element in contact certainly
+    /// sticking (a settled packing's contacts; docs/dem-performance.md, "Two contacts a step"). Returns false, having
+    /// written nothing, for any other pair (and for M = 0 or M > 3): step each with advance_spatial then.
     /// Where it returns true the two states and `outcomes` are, to the bit, those two advance_spatial calls give;
     /// the workspace's accessors (normal_force(), step_work() and the others) keep their values. Never throws: a
     /// state that advance_spatial would refuse makes it return false.
