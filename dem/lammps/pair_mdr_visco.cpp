@@ -381,9 +381,9 @@ void PairMdrVisco::compute(int eflag, int vflag)
   // once where both are held: ContactLaw::advance_spatial_pair), then the forces, torques and energies in the list's
   // order (so the sums are those of one contact after the other).
   Contact chunk[chunk_size];
+  std::array<mdr::dem::ContactLaw::SpatialOutcome, chunk_size> outcomes;    // each written before it is read
   int count = 0;
   const auto take_steps = [&]() {
-    std::array<mdr::dem::ContactLaw::SpatialOutcome, chunk_size> outcomes;
     std::array<bool, chunk_size> stepped{};
     if (history_update) {
       for (int c = 0; c + 1 < count; c += 2) {
