@@ -38,18 +38,6 @@ namespace {
 const char *const history_fix = "NEIGH_HISTORY_MDR_VISCO";
 const char *const dummy_fix = "NEIGH_HISTORY_MDR_VISCO_DUMMY";
 
-// A contact as the pair loop's first pass leaves it for the law's step and the forces.
-struct Contact {
-  int i, j;
-  mdr::dem::ContactLaw *law;              // of the two atoms' types
-  double del[3];                          // x_j - x_i
-  double scale;                           // R
-  mdr::dem::ContactLaw::SpatialStep step;    // the state, d / R, the unit normal from i to j, the increment / R
-};
-
-// Contacts per chunk of the pair loop (on the stack; 8 measured a little faster than 16 or 32 beyond the L2,
-// docs/dem-performance.md).
-constexpr int chunk_size = 8;
 
 double dot(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
@@ -100,7 +88,20 @@ template <std::size_t... k>
   }
 }
 
+// Contacts per chunk of the pair loop (on the stack; 8 measured a little faster than 16 or 32 beyond the L2,
+// docs/dem-performance.md).
+constexpr int chunk_size = 8;
+
 }    // namespace
+
+// A contact as the pair loop's first pass leaves it for the law's step and the forces (take_steps).
+struct PairMdrVisco::Contact {
+  int i, j;
+  mdr::dem::ContactLaw *law;                 // of the two atoms' types
+  double del[3];                             // x_j - x_i
+  double scale;                              // R
+  mdr::dem::ContactLaw::SpatialStep step;    // the state, d / R, the unit normal from i to j, the increment / R
+};
 
 PairMdrVisco::PairMdrVisco(LAMMPS *lmp) : Pair(lmp), fix_history(nullptr), size_history(0)
 {
@@ -327,12 +328,9 @@ void PairMdrVisco::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   const bool history_update = !update->setupflag;    // setup: the forces of the stored states (as pair granular)
 
-  double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
+  double **x = atom->x, **v = atom->v, **omega = atom->omega;
   const double *radius = atom->radius;
   const int *type = atom->type;
-  const tagint *tag = atom->tag;
-  const int nlocal = atom->nlocal;
-  const int newton_pair = force->newton_pair;
   const double dt = update->dt;
   int **firsttouch = fix_history->firstflag;
   double **firsthistory = fix_history->firstvalue;
@@ -377,75 +375,10 @@ void PairMdrVisco::compute(int eflag, int vflag)
   // counts half on each
   double work = 0.0, stored = 0.0;
 
-  // The contacts in chunks of the list's order: first the geometry of each, then the laws' steps (two contacts at
-  // once where both are held: ContactLaw::advance_spatial_pair), then the forces, torques and energies in the list's
-  // order (so the sums are those of one contact after the other).
-  Contact chunk[chunk_size];
-  std::array<mdr::dem::ContactLaw::SpatialOutcome, chunk_size> outcomes;    // each written before it is read
+  // The contacts in chunks of the list's order: first the geometry of each (here), then the laws' steps and the
+  // forces (take_steps).
+  std::array<Contact, chunk_size> chunk;
   int count = 0;
-  const auto take_steps = [&]() {
-    std::array<bool, chunk_size> stepped{};
-    if (history_update) {
-      for (int c = 0; c + 1 < count; c += 2) {
-        if (chunk[c].law != chunk[c + 1].law) continue;
-        const std::span<mdr::dem::ContactLaw::SpatialOutcome, 2> pair(outcomes.data() + c, 2);
-        stepped[c] = stepped[c + 1] = chunk[c].law->advance_spatial_pair(chunk[c].step, chunk[c + 1].step, pair);
-      }
-    }
-    for (int c = 0; c < count; c++) {
-      const Contact &contact = chunk[c];
-      const int i = contact.i, j = contact.j;
-      mdr::dem::ContactLaw &law = *contact.law;
-      const mdr::dem::ContactLaw::SpatialStep &step = contact.step;
-      const bool whole = newton_pair || j < nlocal;    // this rank applies the contact to j as well
-      mdr::dem::SpatialVector tangential;
-      double normal_force = 0.0;
-      try {
-        if (stepped[c]) {
-          tangential = outcomes[c].tangential_force;
-        } else if (history_update) {
-          tangential = law.advance_spatial(step.state, step.overlap, step.normal, step.increment);
-          outcomes[c].work = law.step_work();
-        } else {
-          law.check(step.state);    // a state read from a restart file is checked once
-          tangential = law.tangential_force(step.state, step.normal);
-        }
-        normal_force = law.normal_force(step.state);
-        const double share = whole ? 1.0 : 0.5;
-        const double volume = contact.scale * contact.scale * contact.scale;    // the unit contact's energies are R^3
-        if (history_update) work += share * volume * outcomes[c].work;
-        if (eflag_global) stored += share * volume * law.stored_energy(step.state);
-      } catch (const mdr::InvalidInput &e) {
-        if (e.key() == "half_width")
-          error->one(FLERR,
-                     "pair mdr/visco: atoms {} and {} overlap by d/R = {:.4g} (R = {:.4g}): beyond the law's "
-                     "half_width {} of types {} {}; give pair_coeff ... half_width >= sqrt(d/R) = {:.3g}",
-                     tag[i], tag[j], step.overlap, contact.scale, e.value(), type[i], type[j],
-                     std::sqrt(step.overlap));
-        error->one(FLERR, "pair mdr/visco: atoms {} and {}: {}", tag[i], tag[j], e.what());
-      }
-      const double area = contact.scale * contact.scale;
-      double fj[3];
-      for (int k = 0; k < 3; k++) fj[k] = area * (normal_force * step.normal[k] + tangential[k]);
-      for (int k = 0; k < 3; k++) f[i][k] -= fj[k];
-      if (whole)
-        for (int k = 0; k < 3; k++) f[j][k] += fj[k];
-      // the torques are -r_i n x F_t and -r_j n x F_t; a tangential force of zero (no friction, or none yet) leaves
-      // them as they are (x - 0 = x; only a torque of -0, which no step of this style leaves, would become +0)
-      if (tangential[0] != 0.0 || tangential[1] != 0.0 || tangential[2] != 0.0) {
-        const double tangential_force[3] = {area * tangential[0], area * tangential[1], area * tangential[2]};
-        double tj[3];
-        cross(step.normal.data(), tangential_force, tj);    // n x F_t
-        for (int k = 0; k < 3; k++) torque[i][k] -= radius[i] * tj[k];
-        if (whole)
-          for (int k = 0; k < 3; k++) torque[j][k] -= radius[j] * tj[k];
-      }
-      if (evflag)    // the force on i and x_i - x_j
-        ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, -fj[0], -fj[1], -fj[2], -contact.del[0], -contact.del[1],
-                     -contact.del[2]);
-    }
-    count = 0;
-  };
 
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
@@ -490,12 +423,88 @@ void PairMdrVisco::compute(int eflag, int vflag)
       for (int k = 0; k < 3; k++) spin[k] = radiusi * omegai[k] + radius[j] * omega[j][k];
       cross(spin, step.normal.data(), turned);
       for (int k = 0; k < 3; k++) step.increment[k] = (vi[k] - v[j][k] + turned[k]) * dt / contact.scale;
-      if (count == chunk_size) take_steps();
+      if (count == chunk_size) {
+        take_steps(chunk.data(), count, history_update, work, stored);
+        count = 0;
+      }
     }
   }
-  take_steps();
+  take_steps(chunk.data(), count, history_update, work, stored);
   if (eflag_global) pvector[0] = stored;
   pvector[1] += work;
+}
+
+// The laws' steps of `count` contacts (two contacts at once where both are held: ContactLaw::advance_spatial_pair),
+// then their forces, torques and energies in the list's order (so the sums are those of one contact after the other).
+void PairMdrVisco::take_steps(const Contact *chunk, int count, bool history_update, double &work, double &stored)
+{
+  double **f = atom->f, **torque = atom->torque;
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  const tagint *tag = atom->tag;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  std::array<mdr::dem::ContactLaw::SpatialOutcome, chunk_size> outcomes;    // each written before it is read
+  std::array<bool, chunk_size> stepped{};
+  if (history_update) {
+    for (int c = 0; c + 1 < count; c += 2) {
+      if (chunk[c].law != chunk[c + 1].law) continue;
+      const std::span<mdr::dem::ContactLaw::SpatialOutcome, 2> pair(outcomes.data() + c, 2);
+      stepped[c] = stepped[c + 1] = chunk[c].law->advance_spatial_pair(chunk[c].step, chunk[c + 1].step, pair);
+    }
+  }
+  for (int c = 0; c < count; c++) {
+    const Contact &contact = chunk[c];
+    const int i = contact.i, j = contact.j;
+    mdr::dem::ContactLaw &law = *contact.law;
+    const mdr::dem::ContactLaw::SpatialStep &step = contact.step;
+    const bool whole = newton_pair || j < nlocal;    // this rank applies the contact to j as well
+    mdr::dem::SpatialVector tangential;
+    double normal_force = 0.0;
+    try {
+      if (stepped[c]) {
+        tangential = outcomes[c].tangential_force;
+      } else if (history_update) {
+        tangential = law.advance_spatial(step.state, step.overlap, step.normal, step.increment);
+        outcomes[c].work = law.step_work();
+      } else {
+        law.check(step.state);    // a state read from a restart file is checked once
+        tangential = law.tangential_force(step.state, step.normal);
+      }
+      normal_force = law.normal_force(step.state);
+      const double share = whole ? 1.0 : 0.5;
+      const double volume = contact.scale * contact.scale * contact.scale;    // the unit contact's energies are R^3
+      if (history_update) work += share * volume * outcomes[c].work;
+      if (eflag_global) stored += share * volume * law.stored_energy(step.state);
+    } catch (const mdr::InvalidInput &e) {
+      if (e.key() == "half_width")
+        error->one(FLERR,
+                   "pair mdr/visco: atoms {} and {} overlap by d/R = {:.4g} (R = {:.4g}): beyond the law's "
+                   "half_width {} of types {} {}; give pair_coeff ... half_width >= sqrt(d/R) = {:.3g}",
+                   tag[i], tag[j], step.overlap, contact.scale, e.value(), type[i], type[j],
+                   std::sqrt(step.overlap));
+      error->one(FLERR, "pair mdr/visco: atoms {} and {}: {}", tag[i], tag[j], e.what());
+    }
+    const double area = contact.scale * contact.scale;
+    double fj[3];
+    for (int k = 0; k < 3; k++) fj[k] = area * (normal_force * step.normal[k] + tangential[k]);
+    for (int k = 0; k < 3; k++) f[i][k] -= fj[k];
+    if (whole)
+      for (int k = 0; k < 3; k++) f[j][k] += fj[k];
+    // the torques are -r_i n x F_t and -r_j n x F_t; a tangential force of zero (no friction, or none yet) leaves
+    // them as they are (x - 0 = x; only a torque of -0, which no step of this style leaves, would become +0)
+    if (tangential[0] != 0.0 || tangential[1] != 0.0 || tangential[2] != 0.0) {
+      const double tangential_force[3] = {area * tangential[0], area * tangential[1], area * tangential[2]};
+      double tj[3];
+      cross(step.normal.data(), tangential_force, tj);    // n x F_t
+      for (int k = 0; k < 3; k++) torque[i][k] -= radius[i] * tj[k];
+      if (whole)
+        for (int k = 0; k < 3; k++) torque[j][k] -= radius[j] * tj[k];
+    }
+    if (evflag)    // the force on i and x_i - x_j
+      ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, -fj[0], -fj[1], -fj[2], -contact.del[0], -contact.del[1],
+                   -contact.del[2]);
+  }
 }
 
 void PairMdrVisco::transfer_history(double *source, double *target)

@@ -52,6 +52,8 @@ class PairMdrVisco : public Pair {
     bool given = false;
   };
 
+  struct Contact;
+  void take_steps(const Contact *, int, bool, double &, double &);
   void allocate();
   void build_laws();
   Resolution resolution(int, int) const;
