@@ -48,12 +48,13 @@ void cross(const double *a, const double *b, double *out)
   out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-// Prefetches for writing the line at `address`: a prefetch never faults, and the address is formed as an integer,
-// since it may lie past the history page. These helpers are always inlined: GCC 12 takes a function that only
-// prefetches for one without effect and drops its calls.
+// Prefetches for writing the line at `address` into the L2 (locality 2: x86-64's prefetcht1; into the L1 as well
+// measured 1-2 ns slower beyond the L2 with the chunks, docs/dem-performance.md): a prefetch never faults, and the
+// address is formed as an integer, since it may lie past the history page. These helpers are always inlined: GCC 12
+// takes a function that only prefetches for one without effect and drops its calls.
 [[gnu::always_inline]] inline void prefetch_line(std::uintptr_t address)
 {
-  __builtin_prefetch(reinterpret_cast<const void *>(address), 1);
+  __builtin_prefetch(reinterpret_cast<const void *>(address), 1, 2);
 }
 
 // The lines at `base` + `offsets`[k] [bytes], k < Count, without a loop.
