@@ -3,7 +3,9 @@
 // for M = 1, 2, 3, else std::size_t: with_branches.hpp), inline: the classes' own methods dispatch on M and call
 // them, and so does a caller that dispatches on M once for both steps (the DEM contact law's held step,
 // ContactLaw::step_held). The formulas are those of the classes' comments (composed_normal_step.hpp,
-// composed_tangential_step.hpp).
+// composed_tangential_step.hpp), written once for a value that is a double or two contacts' lanes (lanes.hpp:
+// common_stress, least_stress, free_clearance, force_of, relaxed_stress, compose_free_map), so that the held step of
+// two contacts at once (ContactLaw::advance_spatial_pair) uses them too.
 
 #include <algorithm>
 #include <cmath>
