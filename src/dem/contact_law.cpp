@@ -81,7 +81,7 @@ void require_finite_components(const char* key, const Vector& vector) {
 
 std::string entry(std::size_t index) { return "state[" + std::to_string(index) + "]"; }
 
-constexpr double line_load_factor = foundation::normal_stiffness_factor;  // q_z = 4 sigma (eq. 22), as Foundation
+using foundation::line_load_factor;
 
 }  // namespace
 

@@ -26,6 +26,7 @@ namespace mdr::dem {
 namespace {
 
 using foundation::Lanes;
+using foundation::line_load_factor;
 using foundation::square_root;
 
 /// The two contacts' values at `offset` of their states (or of any two arrays).
@@ -69,9 +70,6 @@ struct LaneVector {
     for (std::size_t j = 0; j < count; ++j) largest = std::max(largest, std::abs(values[j][lane]));
     return largest;
 }
-
-// q_z = 4 sigma (eq. 22), as the Foundation's
-constexpr double line_load_factor = foundation::normal_stiffness_factor;
 
 // The largest map: M = 3, order 4.
 constexpr std::size_t most_branches = 3, largest_map = (most_branches + 1) * (most_branches + 1);
